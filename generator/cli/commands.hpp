@@ -1,0 +1,26 @@
+/// @file The subcommands of the eomgen command line; each registers its
+/// options on the app and returns the exit status when run.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace eomgen::cli {
+
+/// Exit statuses of DESIGN.md.
+enum ExitStatus { exit_success = 0, exit_internal_error = 1, exit_user_error = 2, exit_numerical_failure = 3 };
+
+using Command = std::function<int()>;
+
+Command add_derive_command(CLI::App& app);
+Command add_run_command(CLI::App& app);
+
+/// The model `eomgen run` uses when none is named.
+std::string default_model_path();
+
+/// Derives `model_path` and writes it in `format` to `output` (stdout when empty).
+int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output);
+
+}  // namespace eomgen::cli

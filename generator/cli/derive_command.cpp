@@ -1,0 +1,51 @@
+#include <chrono>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "common/output_file.hpp"
+#include "emit/formats.hpp"
+#include "pipeline.hpp"
+
+namespace eomgen::cli {
+
+int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output) {
+  auto started = std::chrono::steady_clock::now();
+  Derivation d = derive_model_file(model_path);
+  if (!d.diagnostics.empty()) {
+    std::cerr << d.diagnostics.format();
+    std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", d.diagnostics.size(),
+                             d.diagnostics.size() == 1 ? "" : "s", model_path);
+    return exit_user_error;
+  }
+  std::string text = (*find_equation_format(format))(*d.equations);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (output.empty() || output == "-") {
+    std::cout << text;
+  } else if (std::string failure = write_file_atomically(output, text); !failure.empty()) {
+    std::cerr << "eomgen: " << failure << "\n";
+    return exit_user_error;
+  }
+  std::cerr << fmt::format("eomgen: derived {} ({}, {} degree{} of freedom) in {:.3f} s\n", d.equations->model_name,
+                           d.equations->method, d.equations->degrees_of_freedom,
+                           d.equations->degrees_of_freedom == 1 ? "" : "s", seconds);
+  return exit_success;
+}
+
+Command add_derive_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("derive", "Derive the equations of motion of a model file");
+  auto model = std::make_shared<std::string>();
+  auto format = std::make_shared<std::string>("text");
+  auto output = std::make_shared<std::string>();
+  cmd->add_option("MODEL", *model, "Model file (TOML)")->required();
+  cmd->add_option("--format", *format, "Output format: text (canonical, one equation per line), latex or json")
+      ->check(CLI::IsMember(equation_format_names()));
+  cmd->add_option("-o,--output", *output, "Write to this file instead of standard output (written only on success)");
+  return [cmd, model, format, output]() -> int {
+    if (!cmd->parsed()) return -1;
+    return derive_and_write(*model, *format, *output);
+  };
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,28 @@
+/// @file The eomgen command line: one subcommand per job, exit statuses as in DESIGN.md.
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "common/version.hpp"
+
+int main(int argc, char** argv) {
+  using namespace eomgen::cli;
+  CLI::App app{"eomgen: equations of motion from a model file, derived symbolically"};
+  app.set_version_flag("--version", std::string("eomgen ") + eomgen::version_string);
+  app.require_subcommand(1);
+  std::vector<Command> commands = {add_derive_command(app), add_run_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int status = app.exit(e);
+    return status == 0 ? exit_success : exit_user_error;
+  }
+  try {
+    for (const Command& command : commands)
+      if (int status = command(); status >= 0) return status;
+    return exit_user_error;
+  } catch (const std::exception& e) {
+    std::cerr << "eomgen: internal error: " << e.what()
+              << "\nThis is a bug in eomgen. Please report it with the model file and the command line.\n";
+    return exit_internal_error;
+  }
+}

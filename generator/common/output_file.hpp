@@ -1,0 +1,12 @@
+/// @file All-or-nothing output: a file appears complete or not at all.
+#pragma once
+
+#include <string>
+
+namespace eomgen {
+
+/// Writes `text` to a temporary file beside `path`, then renames it into place.
+/// Returns an empty string on success, else what went wrong.
+std::string write_file_atomically(const std::string& path, const std::string& text);
+
+}  // namespace eomgen

@@ -1,0 +1,25 @@
+/// @file The derived equations of motion M(q,t)·q̈ = f(q,q̇,u,t), with what
+/// the output formats need to name things; the plain result of every method.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "model/model.hpp"
+
+namespace eomgen {
+
+struct Equations {
+  std::string model_name, title, method;
+  std::string source;  // the model file's path as given
+  Symbols symbols;
+  std::size_t degrees_of_freedom = 0;
+  GiNaC::matrix mass_matrix;           // n × n, symmetric
+  std::vector<GiNaC::ex> forcing;      // n
+  GiNaC::ex kinetic_energy, potential_energy, dissipation;
+  std::vector<NamedSymbolic> outputs;
+};
+
+}  // namespace eomgen

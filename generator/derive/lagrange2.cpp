@@ -1,0 +1,104 @@
+/// @file Lagrange's equations of the second kind, d/dt ∂T/∂q̇ − ∂T/∂q + ∂V/∂q + ∂R/∂q̇ = Q
+/// (Hiller §3.3), in the form M(q,t)·q̈ = f(q,q̇,u,t).
+///
+/// For the bodies the inertia terms are formed from their Jacobians, which is the
+/// same as differentiating their T twice (Lagrange's identity) but keeps each term
+/// small: M = Σ m JᵀJ + J_ωᵀ I J_ω and the velocity terms Σ m Jᵀa_b + J_ωᵀ(I α_b + ω×Iω).
+/// A kinetic energy given directly in [energy] goes through the general formula
+/// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
+#include "derive/methods.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+// Σ_a x_a · y_a for three-vectors held in columns of matrices or arrays
+template <class X, class Y>
+ex dot3(const X& x, const Y& y) {
+  return x(0) * y(0) + x(1) * y(1) + x(2) * y(2);
+}
+
+void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f, const MotionSymbols& motion) {
+  std::size_t n = f.size();
+  const GiNaC::matrix& J = b.velocity_jacobian;
+  for (unsigned j = 0; j < n; ++j) {
+    auto Jj = [&](int a) { return J(a, j); };
+    for (unsigned k = j; k < n; ++k) {
+      auto Jk = [&](int a) { return J(a, k); };
+      ex m = tidy(b.mass * dot3(Jj, Jk), motion);
+      if (b.rotates) {
+        const GiNaC::matrix& W = b.angular_velocity_jacobian;
+        for (unsigned a = 0; a < 3; ++a)
+          for (unsigned c = 0; c < 3; ++c)
+            if (!b.inertia(a, c).is_zero()) m += tidy(W(a, j) * b.inertia(a, c) * W(c, k), motion);
+      }
+      M(j, k) += m;
+    }
+    auto bias = [&](int a) { return b.bias_acceleration[a]; };
+    ex inertia_force = b.mass * dot3(Jj, bias);
+    if (b.rotates) {
+      // Euler: I α + ω × I ω, with α = J_ω q̈ + α_b
+      const Vector3& w = b.angular_velocity;
+      Vector3 Iw{0, 0, 0}, Ia{0, 0, 0};
+      for (unsigned a = 0; a < 3; ++a)
+        for (unsigned c = 0; c < 3; ++c) {
+          Iw[a] += b.inertia(a, c) * w[c];
+          Ia[a] += b.inertia(a, c) * b.bias_angular_acceleration[c];
+        }
+      Vector3 moment{Ia[0] + w[1] * Iw[2] - w[2] * Iw[1], Ia[1] + w[2] * Iw[0] - w[0] * Iw[2],
+                     Ia[2] + w[0] * Iw[1] - w[1] * Iw[0]};
+      for (unsigned a = 0; a < 3; ++a) inertia_force += b.angular_velocity_jacobian(a, j) * moment[a];
+    }
+    f[j] -= tidy(inertia_force, motion);
+  }
+}
+
+void add_kinetic_energy(const ex& T, const Symbols& s, GiNaC::matrix& M, std::vector<ex>& f) {
+  if (T.is_zero()) return;
+  std::size_t n = f.size();
+  for (unsigned j = 0; j < n; ++j) {
+    ex p = T.diff(s.velocities[j]);  // generalized momentum of T
+    for (unsigned k = j; k < n; ++k) M(j, k) += p.diff(s.velocities[k]);
+    ex rest = T.diff(s.coordinates[j]) - p.diff(s.time);
+    for (unsigned k = 0; k < n; ++k) rest -= p.diff(s.coordinates[k]) * s.velocities[k];
+    f[j] += rest;
+  }
+}
+
+}  // namespace
+
+Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
+  const Symbols& s = model.symbols;
+  std::size_t n = s.coordinates.size();
+  GiNaC::matrix M(n, n);
+  std::vector<ex> f(n, 0);
+  for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, mech.motion);
+  add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
+  for (unsigned j = 0; j < n; ++j) {
+    f[j] += mech.generalized_force[j] - mech.potential_energy.diff(s.coordinates[j]) -
+            mech.dissipation.diff(s.velocities[j]);
+    f[j] = tidy(f[j], mech.motion);
+    for (unsigned k = j; k < n; ++k) {
+      M(j, k) = tidy(M(j, k), mech.motion);
+      M(k, j) = M(j, k);
+    }
+  }
+  Equations e;
+  e.model_name = model.name;
+  e.title = model.title;
+  e.method = "lagrange2";
+  e.source = model.source;
+  e.symbols = s;
+  e.degrees_of_freedom = n;
+  e.mass_matrix = M;
+  e.forcing = f;
+  e.kinetic_energy = mech.kinetic_energy;
+  e.potential_energy = mech.potential_energy;
+  e.dissipation = mech.dissipation;
+  for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});
+  return e;
+}
+
+}  // namespace eomgen

@@ -1,0 +1,30 @@
+#include "derive/methods.hpp"
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+std::optional<DerivationMethod> find_method(const std::string& name) {
+  if (name == "lagrange2") return &derive_lagrange2;
+  return std::nullopt;
+}
+
+std::string method_refusal(const Model& model) {
+  if (!model.constraints.empty()) {
+    bool nonholonomic = false;
+    for (const Constraint& c : model.constraints) nonholonomic = nonholonomic || !c.holonomic;
+    return fmt::format(
+        "the model has {} constraint{}; constrained systems are derived by method = \"lagrange1\"{}, "
+        "which this version of eomgen does not have yet",
+        model.constraints.size(), model.constraints.size() == 1 ? "" : "s",
+        nonholonomic ? " or \"appell\"" : "");
+  }
+  if (!model.pseudo_velocities.empty())
+    return "[pseudo_velocities] are used by method = \"appell\", which this version of eomgen does not have yet";
+  if (!find_method(model.method))
+    return fmt::format("method \"{}\" is not available in this version of eomgen; use method = \"lagrange2\"",
+                       model.method);
+  return {};
+}
+
+}  // namespace eomgen

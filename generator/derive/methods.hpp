@@ -1,0 +1,24 @@
+/// @file The derivation methods; each is one file with the same signature.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "derive/equations.hpp"
+#include "kinematics/mechanics.hpp"
+
+namespace eomgen {
+
+using DerivationMethod = Equations (*)(const Model&, const Mechanics&);
+
+/// Lagrange's equations of the second kind (Hiller §3.3).
+Equations derive_lagrange2(const Model& model, const Mechanics& mechanics);
+
+/// The method a model file names, if this version of eomgen has it.
+std::optional<DerivationMethod> find_method(const std::string& name);
+
+/// Why a model cannot be derived by its method yet (constraints, pseudo-velocities,
+/// a method that is still to come), or empty when it can.
+std::string method_refusal(const Model& model);
+
+}  // namespace eomgen

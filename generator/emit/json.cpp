@@ -1,0 +1,71 @@
+#include <fmt/format.h>
+
+#include "emit/formats.hpp"
+#include "symbolic/canonical_print.hpp"
+
+namespace eomgen {
+
+namespace {
+
+std::string quote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        else out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string expression(const GiNaC::ex& e) { return quote(canonical_text(e)); }
+
+std::string string_array(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) s += (s.empty() ? "" : ", ") + quote(x);
+  return "[" + s + "]";
+}
+
+std::string number_object(const std::vector<std::string>& names, const std::vector<double>& values) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) s += (s.empty() ? "" : ", ") + quote(names[i]) + ": " + format_number(values[i]);
+  return "{" + s + "}";
+}
+
+}  // namespace
+
+std::string emit_json(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.forcing.size();
+  std::vector<std::string> velocities;
+  for (const auto& v : s.velocities) velocities.push_back(v.get_name());
+  std::string out = "{\n";
+  out += fmt::format("  \"model\": {},\n  \"title\": {},\n  \"method\": {},\n  \"time\": \"t\",\n", quote(e.model_name),
+                     quote(e.title), quote(e.method));
+  out += fmt::format("  \"coordinates\": {},\n  \"velocities\": {},\n", string_array(s.coordinate_names),
+                     string_array(velocities));
+  out += fmt::format("  \"parameters\": {},\n  \"inputs\": {},\n", number_object(s.parameter_names, s.parameter_defaults),
+                     number_object(s.input_names, s.input_defaults));
+  out += fmt::format("  \"degrees_of_freedom\": {},\n  \"mass_matrix\": [", e.degrees_of_freedom);
+  for (unsigned j = 0; j < n; ++j) {
+    out += j ? ",\n    [" : "\n    [";
+    for (unsigned k = 0; k < n; ++k) out += (k ? ", " : "") + expression(e.mass_matrix(j, k));
+    out += "]";
+  }
+  out += "\n  ],\n  \"forcing\": [";
+  for (unsigned j = 0; j < n; ++j) out += (j ? ",\n    " : "\n    ") + expression(e.forcing[j]);
+  out += "\n  ],\n";
+  out += fmt::format("  \"kinetic_energy\": {},\n  \"potential_energy\": {},\n  \"dissipation\": {},\n",
+                     expression(e.kinetic_energy), expression(e.potential_energy), expression(e.dissipation));
+  std::string outputs;
+  for (const NamedSymbolic& o : e.outputs) outputs += (outputs.empty() ? "" : ", ") + quote(o.name) + ": " + expression(o.expression);
+  out += "  \"outputs\": {" + outputs + "}\n}\n";
+  return out;
+}
+
+}  // namespace eomgen

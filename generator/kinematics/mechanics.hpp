@@ -1,0 +1,55 @@
+/// @file What kinematics gives the derivation methods: each body's velocity
+/// Jacobians and bias accelerations, the energies and the generalized forces.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "model/model.hpp"
+#include "symbolic/simplify.hpp"
+
+namespace eomgen {
+
+/// One particle or rigid body. With v = J q̇ + ∂r/∂t the velocity of its centre of
+/// mass, its acceleration is a = J q̈ + bias_acceleration; likewise for the body-frame
+/// angular velocity ω = J_ω q̇ + ω_t and angular acceleration α = J_ω q̈ + bias_angular_acceleration.
+struct BodyKinematics {
+  std::string name;
+  GiNaC::ex mass;
+  GiNaC::matrix velocity_jacobian;  // J: 3 × n, inertial components
+  Vector3 velocity;                 // v, inertial
+  Vector3 bias_acceleration;        // a − J q̈, inertial
+  bool rotates = false;
+  GiNaC::matrix angular_velocity_jacobian;  // J_ω: 3 × n, body frame
+  Vector3 angular_velocity;                 // ω, body frame
+  Vector3 bias_angular_acceleration;        // α − J_ω q̈, body frame
+  GiNaC::matrix inertia{3, 3};              // body frame, about the centre of mass
+};
+
+struct Mechanics {
+  MotionSymbols motion;              // q, q̇, t, u
+  std::vector<BodyKinematics> bodies;
+  GiNaC::ex kinetic_energy;          // T of the bodies plus [energy] kinetic
+  GiNaC::ex extra_kinetic_energy;    // [energy] kinetic alone
+  GiNaC::ex potential_energy;        // V: gravity plus [energy] potential
+  GiNaC::ex dissipation;             // R, Rayleigh's function
+  std::vector<GiNaC::ex> generalized_force;  // Q of the applied forces and torques (without gravity and R)
+};
+
+/// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,
+/// ω from skew(ω_B) = Rᵀ·dR/dt, energies, and Q_j = Σ F·∂v/∂q̇_j + M·∂ω/∂q̇_j.
+Mechanics compute_mechanics(const Model& model);
+
+/// dx/dt along the motion, without the q̈ terms: Σ ∂x/∂q_k q̇_k + ∂x/∂t
+/// (for x linear in q̇ this is the bias term of its time derivative).
+GiNaC::ex time_derivative(const GiNaC::ex& x, const Symbols& symbols);
+
+/// Body-frame angular velocity of R = R1·…·Rk: Σ_i (R_{i+1}⋯R_k)ᵀ e_i · d(angle_i)/dt.
+Vector3 angular_velocity_of_sequence(const std::vector<ElementaryRotation>& sequence, const Symbols& symbols);
+
+/// Body-frame angular velocity from skew(ω) = Rᵀ·dR/dt, for a rotation given as a matrix.
+Vector3 angular_velocity_of_matrix(const GiNaC::matrix& R, const Symbols& symbols, const MotionSymbols& motion);
+
+}  // namespace eomgen

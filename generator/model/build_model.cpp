@@ -1,0 +1,359 @@
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "model/model.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+const std::vector<std::string>& known_methods() {
+  static const std::vector<std::string> methods = {"lagrange2", "lagrange1", "appell", "hamilton"};
+  return methods;
+}
+
+GiNaC::matrix elementary_rotation(int axis, const ex& a) {
+  ex c = GiNaC::cos(a), s = GiNaC::sin(a);
+  switch (axis) {
+    case 0: return GiNaC::matrix(3, 3, GiNaC::lst{1, 0, 0, 0, c, -s, 0, s, c});
+    case 1: return GiNaC::matrix(3, 3, GiNaC::lst{c, 0, s, 0, 1, 0, -s, 0, c});
+    default: return GiNaC::matrix(3, 3, GiNaC::lst{c, -s, 0, s, c, 0, 0, 0, 1});
+  }
+}
+
+namespace {
+
+/// The value of a constant expression with parameters at their defaults.
+std::optional<double> constant_value(const ex& e, const Symbols& symbols) {
+  ex v = e.subs(symbols.default_parameter_values()).evalf();
+  if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return std::nullopt;
+  double x = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+  if (!std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
+class Builder {
+ public:
+  Builder(const ModelFile& file, Diagnostics& d) : f_(file), d_(d) {}
+
+  Model build() {
+    m_.name = f_.name;
+    m_.title = f_.title;
+    m_.method = f_.method;
+    m_.source = f_.path;
+    check_header();
+    declare_symbols();
+    read_initial_state();
+    read_bodies();
+    read_energies_and_forces();
+    read_constraints();
+    read_outputs();
+    check_complete();
+    return m_;
+  }
+
+ private:
+  std::optional<ex> parse(const ExpressionText& text, unsigned allowed, const char* context) {
+    return parse_expression(text, m_.symbols, {allowed, context}, d_);
+  }
+
+  void check_header() {
+    if (f_.name.empty()) return;  // reported by the parser
+    if (!is_cpp_identifier(f_.name))
+      d_.error(f_.name_where, "model.name", fmt::format("'{}' is not a C++ identifier", f_.name),
+               "the name becomes the header's file name and namespace: use letters, digits and _, e.g. double_pendulum");
+    const auto& methods = known_methods();
+    if (std::find(methods.begin(), methods.end(), f_.method) == methods.end())
+      d_.error(f_.method_where, "model.method", fmt::format("unknown method '{}'", f_.method),
+               suggest(f_.method, methods, "methods"));
+  }
+
+  void declare(const std::string& name, SourceLocation where, const std::string& key,
+               SymbolKind kind, std::size_t index, const char* what) {
+    static const char* kind_names[] = {"a parameter", "a coordinate", "an input"};
+    if (!is_identifier(name)) {
+      d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
+      return;
+    }
+    if (is_reserved_name(name)) {
+      d_.error(where, key, fmt::format("'{}' is reserved and cannot name {}", name, what),
+               "t is time, der() a velocity, Pi is pi; the others are functions");
+      return;
+    }
+    auto [it, fresh] = m_.symbols.by_name.emplace(name, SymbolInfo{kind, index});
+    if (!fresh) {
+      SourceLocation first = declared_at_[name];
+      d_.error(where, key,
+               fmt::format("symbol '{}' is defined twice: as {} (line {}) and as {}", name,
+                           kind_names[static_cast<int>(it->second.kind)], first.line, what),
+               "give each parameter, coordinate and input its own name");
+      return;
+    }
+    declared_at_[name] = where;
+  }
+
+  void declare_symbols() {
+    Symbols& s = m_.symbols;
+    for (const ParameterEntry& p : f_.parameters) {
+      declare(p.name, p.where, p.key, SymbolKind::parameter, s.parameters.size(), "a parameter");
+      s.parameter_names.push_back(p.name);
+      s.parameters.emplace_back(p.name);
+      s.parameter_defaults.push_back(p.value);
+    }
+    for (const CoordinateEntry& c : f_.coordinates) {
+      declare(c.name, c.where, c.key, SymbolKind::coordinate, s.coordinates.size(), "a coordinate");
+      s.coordinate_names.push_back(c.name);
+      s.coordinates.emplace_back(c.name);
+      s.velocities.emplace_back("der(" + c.name + ")");
+    }
+    for (const ParameterEntry& u : f_.inputs) {
+      declare(u.name, u.where, u.key, SymbolKind::input, s.inputs.size(), "an input");
+      s.input_names.push_back(u.name);
+      s.inputs.emplace_back(u.name);
+      s.input_defaults.push_back(u.value);
+    }
+    m_.generalized_force.assign(s.coordinates.size(), 0);
+  }
+
+  double constant(const ExpressionText& text, const char* context) {
+    auto e = parse(text, allow_parameters, context);
+    if (!e) return 0;
+    auto v = constant_value(*e, m_.symbols);
+    if (!v) d_.error(text.where, text.key, "the value is not a finite real number");
+    return v.value_or(0);
+  }
+
+  void read_initial_state() {
+    for (const CoordinateEntry& c : f_.coordinates) {
+      m_.symbols.initial_coordinates.push_back(constant(c.initial, "an initial value"));
+      m_.symbols.initial_velocities.push_back(constant(c.rate, "an initial rate"));
+    }
+  }
+
+  ex mass(const ExpressionText& text) {
+    auto e = parse(text, allow_parameters, "a mass");
+    if (!e) return 1;
+    auto v = constant_value(*e, m_.symbols);
+    if (!v || *v <= 0)
+      d_.error(text.where, text.key,
+               v ? fmt::format("the mass is {} with the default parameters; a mass must be positive", *v)
+                 : std::string("the mass is not a finite real number"),
+               "check the sign of the mass parameter's default in [parameters]");
+    return *e;
+  }
+
+  Vector3 vector(const std::vector<ExpressionText>& texts, unsigned allowed, const char* context) {
+    Vector3 v{0, 0, 0};
+    for (std::size_t i = 0; i < texts.size() && i < 3; ++i)
+      if (auto e = parse(texts[i], allowed, context)) v[i] = *e;
+    return v;
+  }
+
+  void check_body_name(const std::string& name, const SourceLocation& where, const std::string& key) {
+    if (name.empty()) return;
+    if (!is_identifier(name))
+      d_.error(where, key + ".name", fmt::format("'{}' is not a valid body name", name), "use letters, digits and _");
+    if (!body_names_.emplace(name, where.line).second)
+      d_.error(where, key + ".name", fmt::format("duplicate body name '{}' (first on line {})", name, body_names_[name]),
+               "give every particle and rigid body its own name");
+  }
+
+  void read_bodies() {
+    for (const ParticleEntry& p : f_.particles) {
+      check_body_name(p.name, p.where, p.key);
+      m_.particles.push_back({p.name, mass(p.mass), vector(p.position, allow_configuration, "a position")});
+    }
+    for (const RigidBodyEntry& b : f_.rigid_bodies) {
+      check_body_name(b.name, b.where, b.key);
+      RigidBody body{b.name, mass(b.mass), vector(b.center, allow_configuration, "a position"), {}, {3, 3}};
+      body.rotation = rotation(b);
+      body.inertia = inertia(b);
+      m_.rigid_bodies.push_back(body);
+    }
+  }
+
+  Rotation rotation(const RigidBodyEntry& b) {
+    Rotation r;
+    r.matrix = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
+    if (!b.rotation) return r;
+    if (b.rotation->product) {
+      auto sequence = parse_rotation_product(*b.rotation->product, m_.symbols, {allow_configuration, "a rotation"}, d_);
+      if (!sequence) return r;
+      r.sequence = *sequence;
+      for (const ElementaryRotation& e : r.sequence) r.matrix = r.matrix.mul(elementary_rotation(e.axis, e.angle));
+      return r;
+    }
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j)
+        if (i < b.rotation->matrix.size() && j < b.rotation->matrix[i].size())
+          if (auto e = parse(b.rotation->matrix[i][j], allow_configuration, "a rotation")) r.matrix(i, j) = *e;
+    check_orthogonal(r.matrix, *b.rotation);
+    return r;
+  }
+
+  // R^T R = I at the initial state, a cheap guard against a mistyped entry
+  void check_orthogonal(const GiNaC::matrix& R, const RotationEntry& where) {
+    GiNaC::exmap at = m_.symbols.default_parameter_values();
+    for (std::size_t i = 0; i < m_.symbols.coordinates.size() && i < m_.symbols.initial_coordinates.size(); ++i)
+      at[m_.symbols.coordinates[i]] = m_.symbols.initial_coordinates[i];
+    at[m_.symbols.time] = 0;
+    GiNaC::matrix RtR = R.transpose().mul(R);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        auto v = constant_value(RtR(i, j).subs(at), m_.symbols);
+        if (!v || std::abs(*v - (i == j ? 1.0 : 0.0)) > 1e-9) {
+          d_.error(where.where, where.key, "the rotation matrix is not orthogonal at the initial state (R^T R != I)",
+                   "check the entries, or write it as a product such as rot_z(a)*rot_x(b)");
+          return;
+        }
+      }
+  }
+
+  GiNaC::matrix inertia(const RigidBodyEntry& b) {
+    GiNaC::matrix I(3, 3);
+    if (!b.principal_inertia.empty()) {
+      Vector3 moments = vector(b.principal_inertia, allow_parameters, "an inertia");
+      for (std::size_t i = 0; i < 3; ++i) {
+        I(i, i) = moments[i];
+        auto v = constant_value(moments[i], m_.symbols);
+        if (v && *v < 0)
+          d_.error(b.principal_inertia[i].where, b.principal_inertia[i].key,
+                   fmt::format("the principal moment is {} with the default parameters; it must not be negative", *v));
+      }
+    } else if (b.inertia.size() == 3) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        Vector3 row = vector(b.inertia[i], allow_parameters, "an inertia");
+        for (std::size_t j = 0; j < 3; ++j) I(i, j) = row[j];
+      }
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i + 1; j < 3; ++j)
+          if (!(I(i, j) - I(j, i)).expand().is_zero())
+            d_.error(b.inertia[i][j].where, b.inertia[i][j].key,
+                     fmt::format("the inertia tensor is not symmetric: entry ({},{}) differs from ({},{})", i, j, j, i),
+                     "an inertia tensor equals its transpose");
+    }
+    return I;
+  }
+
+  std::optional<std::size_t> coordinate_index(const NamedExpression& g, const std::string& key) {
+    auto found = m_.symbols.by_name.find(g.name);
+    if (found != m_.symbols.by_name.end() && found->second.kind == SymbolKind::coordinate) return found->second.index;
+    d_.error(g.where, key + "." + g.name, fmt::format("'{}' is not a coordinate", g.name),
+             suggest(g.name, m_.symbols.coordinate_names, "coordinates"));
+    return std::nullopt;
+  }
+
+  void read_energies_and_forces() {
+    if (!f_.gravity.empty()) m_.gravity = vector(f_.gravity, allow_parameters | allow_time, "gravity");
+    if (f_.kinetic) m_.kinetic = parse(*f_.kinetic, allow_configuration | allow_velocities, "the kinetic energy").value_or(0);
+    if (f_.potential) m_.potential = parse(*f_.potential, allow_configuration, "the potential energy").value_or(0);
+    if (f_.dissipation) m_.dissipation = parse(*f_.dissipation, allow_configuration | allow_velocities, "the dissipation function").value_or(0);
+    for (const ForceEntry& f : f_.forces) {
+      switch (f.kind) {
+        case ForceEntry::Kind::generalized:
+          for (const NamedExpression& g : f.generalized) {
+            auto index = coordinate_index(g, f.key + ".generalized");
+            auto e = parse(g.expression, allow_everything, "a force");
+            if (index && e) m_.generalized_force[*index] += *e;
+          }
+          break;
+        case ForceEntry::Kind::point:
+          m_.point_forces.push_back({vector(f.at, allow_configuration, "a position"), vector(f.force, allow_everything, "a force")});
+          break;
+        case ForceEntry::Kind::torque: read_torque(f); break;
+      }
+    }
+  }
+
+  void read_torque(const ForceEntry& f) {
+    Vector3 torque = vector(f.torque, allow_everything, "a torque");
+    for (std::size_t i = 0; i < f_.rigid_bodies.size(); ++i)
+      if (f_.rigid_bodies[i].name == f.body) {
+        m_.torques.push_back({i, torque, f.inertial_frame});
+        return;
+      }
+    std::vector<std::string> names;
+    for (const RigidBodyEntry& b : f_.rigid_bodies) names.push_back(b.name);
+    d_.error(f.body_where, f.key + ".body", fmt::format("'{}' is not a rigid body", f.body),
+             suggest(f.body, names, "rigid bodies"));
+  }
+
+  void read_constraints() {
+    for (const ConstraintEntry& c : f_.constraints) {
+      bool holonomic = c.kind == ConstraintEntry::Kind::holonomic;
+      auto e = holonomic ? parse(c.expression, allow_configuration, "a holonomic constraint")
+                         : parse(c.expression, allow_configuration | allow_velocities, "a nonholonomic constraint");
+      if (!e) continue;
+      if (!holonomic) check_linear_in_velocities(*e, c.expression, "a nonholonomic constraint");
+      m_.constraints.push_back({holonomic, *e, c.key});
+    }
+    for (const NamedExpression& p : f_.pseudo_velocities) {
+      std::string key = "pseudo_velocities." + p.name;
+      if (!is_identifier(p.name) || is_reserved_name(p.name) || m_.symbols.by_name.count(p.name))
+        d_.error(p.where, key, fmt::format("'{}' cannot name a pseudo-velocity", p.name),
+                 "use a new name that is not a parameter, coordinate, input or function");
+      auto e = parse(p.expression, allow_configuration | allow_velocities, "a pseudo-velocity");
+      if (!e) continue;
+      check_linear_in_velocities(*e, p.expression, "a pseudo-velocity");
+      m_.pseudo_velocities.push_back({p.name, *e});
+    }
+  }
+
+  // a(q,t)·der(q) + b(q,t): every second derivative in the velocities vanishes
+  void check_linear_in_velocities(const ex& e, const ExpressionText& text, const char* what) {
+    const auto& v = m_.symbols.velocities;
+    bool has_velocity = false;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      ex di = e.diff(v[i]);
+      has_velocity = has_velocity || !di.is_zero();
+      for (std::size_t j = i; j < v.size(); ++j)
+        if (!di.diff(v[j]).expand().is_zero()) {
+          d_.error(text.where, text.key,
+                   fmt::format("{} must be linear in the velocities; it is not, in der({}){}", what,
+                               m_.symbols.coordinate_names[i],
+                               i == j ? "" : " and der(" + m_.symbols.coordinate_names[j] + ")"),
+                   "write it as a(q,t)*der(q) + b(q,t)");
+          return;
+        }
+    }
+    if (!has_velocity)
+      d_.error(text.where, text.key, fmt::format("{} without any velocity", what),
+               "a relation between coordinates alone is holonomic: write holonomic = \"...\"");
+  }
+
+  void read_outputs() {
+    for (const NamedExpression& o : f_.outputs) {
+      std::string key = "outputs." + o.name;
+      if (!is_cpp_identifier(o.name))
+        d_.error(o.where, key, fmt::format("'{}' is not a C++ identifier", o.name), "output names become C++ names");
+      auto e = parse(o.expression, allow_everything, "an output");
+      if (e) m_.outputs.push_back({o.name, *e});
+    }
+  }
+
+  void check_complete() {
+    SourceLocation top{f_.path, 1, 1};
+    if (f_.coordinates.empty())
+      d_.error(top, "coordinates", "the model has no coordinates",
+               "add a [coordinates] section, e.g. phi = { initial = 0.1, rate = 0 }");
+    bool has_mass = !f_.particles.empty() || !f_.rigid_bodies.empty() || f_.kinetic;
+    if (!f_.coordinates.empty() && !has_mass)
+      d_.error(top, "", "nothing in the model has mass or kinetic energy",
+               "add [[particles]], [[rigid_bodies]] or [energy] kinetic = \"...\"");
+  }
+
+  const ModelFile& f_;
+  Diagnostics& d_;
+  Model m_;
+  std::map<std::string, SourceLocation> declared_at_;
+  std::map<std::string, int> body_names_;
+};
+
+}  // namespace
+
+Model build_model(const ModelFile& file, Diagnostics& diagnostics) {
+  return Builder(file, diagnostics).build();
+}
+
+}  // namespace eomgen

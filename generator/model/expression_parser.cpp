@@ -1,0 +1,323 @@
+#include "model/expression_parser.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+namespace eomgen {
+namespace {
+
+using GiNaC::ex;
+
+struct ParseFailure {};
+
+const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
+                                                  "atan", "atan2", "sinh", "cosh", "tanh",
+                                                  "exp",  "log",  "sqrt", "abs",  "der"};
+const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "euler313", "cardan123"};
+
+ex apply_function(const std::string& name, const std::vector<ex>& a) {
+  if (name == "sin") return GiNaC::sin(a[0]);
+  if (name == "cos") return GiNaC::cos(a[0]);
+  if (name == "tan") return GiNaC::tan(a[0]);
+  if (name == "asin") return GiNaC::asin(a[0]);
+  if (name == "acos") return GiNaC::acos(a[0]);
+  if (name == "atan") return GiNaC::atan(a[0]);
+  if (name == "atan2") return GiNaC::atan2(a[0], a[1]);
+  if (name == "sinh") return GiNaC::sinh(a[0]);
+  if (name == "cosh") return GiNaC::cosh(a[0]);
+  if (name == "tanh") return GiNaC::tanh(a[0]);
+  if (name == "exp") return GiNaC::exp(a[0]);
+  if (name == "log") return GiNaC::log(a[0]);
+  if (name == "sqrt") return GiNaC::sqrt(a[0]);
+  return GiNaC::abs(a[0]);
+}
+
+std::size_t arity(const std::string& name) { return name == "atan2" ? 2 : 1; }
+
+class Parser {
+ public:
+  Parser(const ExpressionText& text, const Symbols& symbols, ExpressionRules rules, Diagnostics& d)
+      : s_(text.text), text_(text), symbols_(symbols), rules_(rules), d_(d) {}
+
+  // expression := term (('+' | '-') term)*
+  ex expression() {
+    ex value = term();
+    for (;;) {
+      skip_space();
+      if (peek() == '+') { ++pos_; value += term(); }
+      else if (peek() == '-') { ++pos_; value -= term(); }
+      else return value;
+    }
+  }
+
+  // rotation := factor ('*' factor)* ; factor := name '(' expression {',' expression} ')'
+  std::vector<ElementaryRotation> rotation() {
+    std::vector<ElementaryRotation> sequence;
+    for (;;) {
+      skip_space();
+      std::size_t start = pos_;
+      std::string name = identifier();
+      if (name.empty()) fail(start, "expected a rotation such as rot_z(a) or euler313(psi, theta, phi)");
+      auto known = std::find(rotation_names.begin(), rotation_names.end(), name);
+      if (known == rotation_names.end())
+        fail(start, fmt::format("unknown rotation function '{}'", name),
+             suggest(name, rotation_names, "rotations"));
+      std::vector<ex> args = arguments(start, name, name.rfind("rot_", 0) == 0 ? 1 : 3);
+      if (name == "rot_x") sequence.push_back({0, args[0]});
+      else if (name == "rot_y") sequence.push_back({1, args[0]});
+      else if (name == "rot_z") sequence.push_back({2, args[0]});
+      else if (name == "euler313") sequence.insert(sequence.end(), {{2, args[0]}, {0, args[1]}, {2, args[2]}});
+      else sequence.insert(sequence.end(), {{0, args[0]}, {1, args[1]}, {2, args[2]}});
+      skip_space();
+      if (peek() == '*') { ++pos_; continue; }
+      return sequence;
+    }
+  }
+
+  void expect_end() {
+    skip_space();
+    if (pos_ < s_.size())
+      fail(pos_, fmt::format("unexpected '{}' after the end of the expression", s_[pos_]),
+           "check for a missing operator or an unbalanced parenthesis");
+  }
+
+  void fail(std::size_t at, const std::string& message, const std::string& hint = {}) {
+    d_.error(location(at), text_.key, message, hint);
+    throw ParseFailure{};
+  }
+
+ private:
+  // term := unary (('*' | '/') unary)*
+  ex term() {
+    ex value = unary();
+    for (;;) {
+      skip_space();
+      if (peek() == '*' && peek(1) != '*') { ++pos_; value *= unary(); }
+      else if (peek() == '/') {
+        std::size_t at = pos_++;
+        ex divisor = unary();
+        if (divisor.is_zero()) fail(at, "division by zero");
+        value /= divisor;
+      } else return value;
+    }
+  }
+
+  // unary := ('-' | '+') unary | power
+  ex unary() {
+    skip_space();
+    if (peek() == '-') { ++pos_; return -unary(); }
+    if (peek() == '+') { ++pos_; return unary(); }
+    return power();
+  }
+
+  // power := primary (('^' | '**') unary)?    right-associative, binds tighter than unary minus
+  ex power() {
+    ex base = primary();
+    skip_space();
+    if (peek() == '^') { ++pos_; return GiNaC::pow(base, unary()); }
+    if (peek() == '*' && peek(1) == '*') { pos_ += 2; return GiNaC::pow(base, unary()); }
+    return base;
+  }
+
+  // primary := number | identifier | identifier '(' arguments ')' | '(' expression ')'
+  ex primary() {
+    skip_space();
+    std::size_t start = pos_;
+    char c = peek();
+    if (c == '(') {
+      ++pos_;
+      ex inner = expression();
+      skip_space();
+      if (peek() != ')') fail(pos_, "expected ')'", fmt::format("the '(' at column {} is not closed", location(start).column));
+      ++pos_;
+      return inner;
+    }
+    if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))))
+      return number();
+    std::string name = identifier();
+    if (name.empty()) {
+      if (pos_ >= s_.size()) fail(pos_, "the expression ends too early", "an operand is missing");
+      fail(pos_, fmt::format("unexpected '{}'", s_[pos_]), "expected a number, a name or '('");
+    }
+    skip_space();
+    if (peek() == '(') return call(start, name);
+    return symbol(start, name);
+  }
+
+  ex call(std::size_t start, const std::string& name) {
+    if (name == "der") return derivative(start);
+    if (std::find(rotation_names.begin(), rotation_names.end(), name) != rotation_names.end())
+      fail(start, fmt::format("'{}' is a rotation, not a scalar", name),
+           "rotations go in a rigid body's rotation = \"...\"");
+    if (std::find(function_names.begin(), function_names.end(), name) == function_names.end())
+      fail(start, fmt::format("unknown function '{}'", name), suggest(name, function_names, "functions"));
+    return apply_function(name, arguments(start, name, arity(name)));
+  }
+
+  std::vector<ex> arguments(std::size_t start, const std::string& name, std::size_t count) {
+    skip_space();
+    if (peek() != '(') fail(pos_, fmt::format("expected '(' after '{}'", name));
+    ++pos_;
+    std::vector<ex> args;
+    for (;;) {
+      args.push_back(expression());
+      skip_space();
+      if (peek() == ',') { ++pos_; continue; }
+      if (peek() == ')') { ++pos_; break; }
+      fail(pos_, "expected ',' or ')' in the argument list");
+    }
+    if (args.size() != count)
+      fail(start, fmt::format("'{}' takes {} argument{}, got {}", name, count, count == 1 ? "" : "s", args.size()));
+    return args;
+  }
+
+  // der '(' coordinate ')'
+  ex derivative(std::size_t start) {
+    ++pos_;  // '('
+    skip_space();
+    std::size_t at = pos_;
+    std::string inner = identifier();
+    skip_space();
+    if (inner == "der" && peek() == '(')
+      fail(start, "der(der(...)) is an acceleration, which cannot appear in a model file",
+           "write der(q) for the velocity of coordinate q; accelerations follow from the equations");
+    if (inner.empty() || peek() != ')')
+      fail(at, "der() takes the name of a coordinate", "write der(q) for the velocity of coordinate q");
+    ++pos_;
+    auto found = symbols_.by_name.find(inner);
+    if (inner == "t") fail(at, "der(t) is 1; time is not a coordinate");
+    if (found == symbols_.by_name.end())
+      fail(at, fmt::format("unknown coordinate '{}' in der()", inner), suggest(inner, symbols_.coordinate_names, "coordinates"));
+    if (found->second.kind != SymbolKind::coordinate)
+      fail(at, fmt::format("der() of {} '{}': only coordinates have velocities",
+                           found->second.kind == SymbolKind::parameter ? "parameter" : "input", inner),
+           "parameters are constant; inputs are given functions of time");
+    if (!(rules_.allowed & allow_velocities))
+      fail(start, fmt::format("velocity der({}) in {}", inner, rules_.context),
+           fmt::format("{} may depend on the coordinates and time only", rules_.context));
+    return symbols_.velocities[found->second.index];
+  }
+
+  ex symbol(std::size_t start, const std::string& name) {
+    if (name == "Pi") return GiNaC::Pi;
+    if (name == "t") {
+      if (!(rules_.allowed & allow_time))
+        fail(start, fmt::format("time t in {}", rules_.context), fmt::format("{} must be constant", rules_.context));
+      return symbols_.time;
+    }
+    auto found = symbols_.by_name.find(name);
+    if (found == symbols_.by_name.end()) {
+      if (std::find(function_names.begin(), function_names.end(), name) != function_names.end())
+        fail(start, fmt::format("function '{}' needs an argument", name), fmt::format("write {}(x)", name));
+      fail(start, fmt::format("unknown symbol '{}'", name), suggest(name, symbols_.all_names(), "symbols"));
+    }
+    const SymbolInfo& info = found->second;
+    switch (info.kind) {
+      case SymbolKind::parameter:
+        if (!(rules_.allowed & allow_parameters))
+          fail(start, fmt::format("parameter '{}' in {}", name, rules_.context), "only numbers are allowed here");
+        return symbols_.parameters[info.index];
+      case SymbolKind::coordinate:
+        if (!(rules_.allowed & allow_coordinates))
+          fail(start, fmt::format("coordinate '{}' in {}", name, rules_.context),
+               fmt::format("{} must not depend on the motion", rules_.context));
+        return symbols_.coordinates[info.index];
+      case SymbolKind::input:
+        if (!(rules_.allowed & allow_inputs))
+          fail(start, fmt::format("input '{}' in {}", name, rules_.context),
+               "inputs may appear in forces, the potential's forces and outputs");
+        return symbols_.inputs[info.index];
+    }
+    return 0;
+  }
+
+  // digits ['.' digits] [('e'|'E') ['+'|'-'] digits], read as an exact rational
+  ex number() {
+    std::size_t start = pos_;
+    std::string digits;
+    int scale = 0;
+    while (std::isdigit(static_cast<unsigned char>(peek()))) digits += s_[pos_++];
+    if (peek() == '.') {
+      ++pos_;
+      while (std::isdigit(static_cast<unsigned char>(peek()))) { digits += s_[pos_++]; ++scale; }
+    }
+    if (peek() == 'e' || peek() == 'E') {
+      std::size_t mark = pos_++;
+      int sign = 1;
+      if (peek() == '+' || peek() == '-') sign = s_[pos_++] == '-' ? -1 : 1;
+      std::string exponent;
+      while (std::isdigit(static_cast<unsigned char>(peek()))) exponent += s_[pos_++];
+      if (exponent.empty()) fail(mark, "malformed exponent in a number", "write e.g. 1.5e-3");
+      if (exponent.size() > 4) fail(start, "number out of range");
+      scale -= sign * std::stoi(exponent);
+    }
+    if (std::isalpha(static_cast<unsigned char>(peek())) || peek() == '_')
+      fail(start, fmt::format("a name cannot start with a digit"), "write the product explicitly, e.g. 2*x");
+    GiNaC::numeric value(digits.c_str());
+    return value / GiNaC::pow(GiNaC::numeric(10), scale);
+  }
+
+  std::string identifier() {
+    std::size_t start = pos_;
+    if (pos_ < s_.size() && (std::isalpha(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_'))
+      while (pos_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_')) ++pos_;
+    return s_.substr(start, pos_ - start);
+  }
+
+  void skip_space() {
+    while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+  }
+  char peek(std::size_t ahead = 0) const { return pos_ + ahead < s_.size() ? s_[pos_ + ahead] : '\0'; }
+
+  SourceLocation location(std::size_t offset) const {
+    SourceLocation where = text_.where;
+    for (std::size_t i = 0; i < offset && i < s_.size(); ++i) {
+      if (s_[i] == '\n') { ++where.line; where.column = 1; }
+      else if ((static_cast<unsigned char>(s_[i]) & 0xC0) != 0x80) ++where.column;
+    }
+    return where;
+  }
+
+  const std::string& s_;
+  const ExpressionText& text_;
+  const Symbols& symbols_;
+  ExpressionRules rules_;
+  Diagnostics& d_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::optional<GiNaC::ex> parse_expression(const ExpressionText& text, const Symbols& symbols,
+                                          ExpressionRules rules, Diagnostics& diagnostics) {
+  Parser parser(text, symbols, rules, diagnostics);
+  try {
+    ex value = parser.expression();
+    parser.expect_end();
+    return value;
+  } catch (const ParseFailure&) {
+    return std::nullopt;
+  } catch (const std::exception& e) {  // GiNaC refuses e.g. 0^(-1) or log(0)
+    try {
+      parser.fail(0, fmt::format("the expression cannot be evaluated: {}", e.what()));
+    } catch (const ParseFailure&) {
+    }
+    return std::nullopt;
+  }
+}
+
+std::optional<std::vector<ElementaryRotation>> parse_rotation_product(
+    const ExpressionText& text, const Symbols& symbols, ExpressionRules rules,
+    Diagnostics& diagnostics) {
+  Parser parser(text, symbols, rules, diagnostics);
+  try {
+    auto sequence = parser.rotation();
+    parser.expect_end();
+    return sequence;
+  } catch (const ParseFailure&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace eomgen

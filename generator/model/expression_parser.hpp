@@ -1,0 +1,50 @@
+/// @file Expressions of the model file (GiNaC syntax) into GiNaC, with exact
+/// columns for every mistake. Written here rather than using GiNaC's own
+/// parser so that any identifier can name a symbol (I, E, beta, gamma ...),
+/// decimals become exact rationals, and der(q) is checked where it is read.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "model/symbols.hpp"
+#include "parse/model_file.hpp"
+
+namespace eomgen {
+
+/// What an expression may depend on; a bit set.
+enum Allow : unsigned {
+  allow_parameters = 1,
+  allow_coordinates = 2,
+  allow_velocities = 4,
+  allow_time = 8,
+  allow_inputs = 16,
+  allow_constants_only = 0,
+  allow_configuration = allow_parameters | allow_coordinates | allow_time,
+  allow_everything = allow_parameters | allow_coordinates | allow_velocities | allow_time | allow_inputs,
+};
+
+struct ExpressionRules {
+  unsigned allowed = allow_everything;
+  const char* context = "an expression";  // e.g. "a position", for messages
+};
+
+/// One elementary rotation rot_axis(angle) of a product of rotations.
+struct ElementaryRotation {
+  int axis;  // 0 = x, 1 = y, 2 = z
+  GiNaC::ex angle;
+};
+
+/// Parses a scalar expression; on a mistake reports it and returns nothing.
+std::optional<GiNaC::ex> parse_expression(const ExpressionText& text, const Symbols& symbols,
+                                          ExpressionRules rules, Diagnostics& diagnostics);
+
+/// Parses a rotation written as a product of rot_x/rot_y/rot_z/euler313/cardan123,
+/// left to right, into its elementary rotations (R = R1·R2·…).
+std::optional<std::vector<ElementaryRotation>> parse_rotation_product(
+    const ExpressionText& text, const Symbols& symbols, ExpressionRules rules,
+    Diagnostics& diagnostics);
+
+}  // namespace eomgen

@@ -1,0 +1,86 @@
+/// @file The symbolic model: a checked model file with every expression
+/// parsed into GiNaC. Nothing here is derived yet.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "model/expression_parser.hpp"
+#include "model/symbols.hpp"
+
+namespace eomgen {
+
+using Vector3 = std::array<GiNaC::ex, 3>;
+
+struct Particle {
+  std::string name;
+  GiNaC::ex mass;
+  Vector3 position;  // inertial frame
+};
+
+/// R = R1·R2·…·Rk maps body components to inertial ones (r_I = R·r_B).
+struct Rotation {
+  std::vector<ElementaryRotation> sequence;  // when given as a product; empty otherwise
+  GiNaC::matrix matrix{3, 3};                // always the full R
+};
+
+struct RigidBody {
+  std::string name;
+  GiNaC::ex mass;
+  Vector3 center;  // centre of mass, inertial frame
+  Rotation rotation;
+  GiNaC::matrix inertia{3, 3};  // about the centre of mass, body frame
+};
+
+struct PointForce {
+  Vector3 at;     // point of application, inertial
+  Vector3 force;  // inertial components
+};
+
+struct BodyTorque {
+  std::size_t body;  // index into rigid_bodies
+  Vector3 torque;
+  bool inertial_frame = false;
+};
+
+struct Constraint {
+  bool holonomic = true;
+  GiNaC::ex expression;  // = 0
+  std::string key;
+};
+
+struct NamedSymbolic {
+  std::string name;
+  GiNaC::ex expression;
+};
+
+struct Model {
+  std::string name, title, method;
+  std::string source;  // the model file's path as given
+  Symbols symbols;
+  std::vector<Particle> particles;
+  std::vector<RigidBody> rigid_bodies;
+  Vector3 gravity{0, 0, 0};
+  GiNaC::ex kinetic = 0, potential = 0, dissipation = 0;  // the [energy] section
+  std::vector<GiNaC::ex> generalized_force;               // one per coordinate
+  std::vector<PointForce> point_forces;
+  std::vector<BodyTorque> torques;
+  std::vector<Constraint> constraints;
+  std::vector<NamedSymbolic> pseudo_velocities;
+  std::vector<NamedSymbolic> outputs;
+};
+
+/// The derivation methods a model file may name, in the order documented.
+const std::vector<std::string>& known_methods();
+
+/// Checks a parsed model file and builds its symbolic model.
+/// Mistakes go to `diagnostics`; the result is meaningful only when it stays empty.
+Model build_model(const ModelFile& file, Diagnostics& diagnostics);
+
+/// Elementary rotation matrices of the book: rot_x, rot_y, rot_z (axis 0, 1, 2).
+GiNaC::matrix elementary_rotation(int axis, const GiNaC::ex& angle);
+
+}  // namespace eomgen

@@ -1,0 +1,48 @@
+/// @file The symbols of a model: time, parameters, coordinates with their
+/// velocities, and inputs, created in model-file order.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace eomgen {
+
+enum class SymbolKind { parameter, coordinate, input };
+
+struct SymbolInfo {
+  SymbolKind kind;
+  std::size_t index;
+};
+
+struct Symbols {
+  GiNaC::realsymbol time{"t"};
+  std::vector<std::string> parameter_names;
+  std::vector<GiNaC::realsymbol> parameters;
+  std::vector<double> parameter_defaults;
+  std::vector<std::string> coordinate_names;
+  std::vector<GiNaC::realsymbol> coordinates;  // q
+  std::vector<GiNaC::realsymbol> velocities;   // der(q), printed as such
+  std::vector<double> initial_coordinates, initial_velocities;
+  std::vector<std::string> input_names;
+  std::vector<GiNaC::realsymbol> inputs;
+  std::vector<double> input_defaults;
+  std::map<std::string, SymbolInfo> by_name;
+
+  std::size_t num_coordinates() const { return coordinates.size(); }
+  /// Every name that may appear in an expression, for hints.
+  std::vector<std::string> all_names() const;
+  /// parameter symbol -> default value
+  GiNaC::exmap default_parameter_values() const;
+};
+
+/// Names a model may not use for its own symbols: time, der, Pi and the functions.
+bool is_reserved_name(const std::string& name);
+/// [A-Za-z_][A-Za-z0-9_]*
+bool is_identifier(const std::string& name);
+/// An identifier that is also not a C++ keyword.
+bool is_cpp_identifier(const std::string& name);
+
+}  // namespace eomgen

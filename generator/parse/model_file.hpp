@@ -1,0 +1,117 @@
+/// @file The model file as written: every value still text, each with the
+/// place it came from, so that later stages can point at mistakes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/diagnostic.hpp"
+
+namespace eomgen {
+
+/// An expression as written, with the location of its first character.
+struct ExpressionText {
+  std::string text;
+  SourceLocation where;
+  std::string key;  // key path, e.g. particles[0].position[1]
+};
+
+struct ParameterEntry {
+  std::string name;
+  double value = 0;
+  SourceLocation where;
+  std::string key;
+};
+
+struct CoordinateEntry {
+  std::string name;
+  ExpressionText initial;  // a constant expression
+  ExpressionText rate;     // a constant expression
+  SourceLocation where;
+  std::string key;
+};
+
+struct ParticleEntry {
+  std::string name;
+  ExpressionText mass;
+  std::vector<ExpressionText> position;  // three components, inertial frame
+  SourceLocation where;
+  std::string key;
+};
+
+/// `rotation`: either a product such as "rot_z(psi)*rot_x(theta)" or a 3×3 array.
+struct RotationEntry {
+  std::optional<ExpressionText> product;
+  std::vector<std::vector<ExpressionText>> matrix;  // rows, when given as an array
+  SourceLocation where;
+  std::string key;
+};
+
+struct RigidBodyEntry {
+  std::string name;
+  ExpressionText mass;
+  std::vector<ExpressionText> center;               // three components, inertial frame
+  std::optional<RotationEntry> rotation;            // identity when absent
+  std::vector<ExpressionText> principal_inertia;    // three moments, or empty
+  std::vector<std::vector<ExpressionText>> inertia; // 3×3 body-frame tensor, or empty
+  SourceLocation where;
+  std::string key;
+};
+
+struct NamedExpression {
+  std::string name;
+  ExpressionText expression;
+  SourceLocation where;  // of the name
+};
+
+struct ForceEntry {
+  enum class Kind { generalized, point, torque };
+  Kind kind = Kind::generalized;
+  std::vector<NamedExpression> generalized;  // coordinate name = expression
+  std::vector<ExpressionText> at, force;     // point of application and force, inertial
+  std::string body;                          // torque: the rigid body
+  SourceLocation body_where;
+  std::vector<ExpressionText> torque;
+  bool inertial_frame = false;               // torque components in the inertial frame
+  SourceLocation where;
+  std::string key;
+};
+
+struct ConstraintEntry {
+  enum class Kind { holonomic, nonholonomic };
+  Kind kind = Kind::holonomic;
+  ExpressionText expression;
+  SourceLocation where;
+  std::string key;
+};
+
+struct ModelFile {
+  std::string path;
+  std::string name, title, method = "lagrange2";
+  SourceLocation name_where, method_where;
+  std::vector<ParameterEntry> parameters;
+  std::vector<CoordinateEntry> coordinates;
+  std::vector<ParameterEntry> inputs;
+  std::vector<ParticleEntry> particles;
+  std::vector<RigidBodyEntry> rigid_bodies;
+  std::vector<ExpressionText> gravity;  // empty when there is no [gravity]
+  std::optional<ExpressionText> kinetic, potential, dissipation;
+  std::vector<ForceEntry> forces;
+  std::vector<ConstraintEntry> constraints;
+  std::vector<NamedExpression> pseudo_velocities;
+  std::vector<NamedExpression> outputs;
+};
+
+/// Largest model file accepted; anything bigger is refused before parsing.
+inline constexpr std::size_t max_model_file_bytes = 1 << 20;
+
+/// Reads and checks the structure of a model file (types, keys, lengths).
+/// Mistakes go to `diagnostics`; the result is meaningful only when it stays empty.
+ModelFile parse_model_file(const std::string& path, Diagnostics& diagnostics);
+
+/// Same, from text already in memory; `path` names it in diagnostics.
+ModelFile parse_model_text(const std::string& text, const std::string& path,
+                           Diagnostics& diagnostics);
+
+}  // namespace eomgen

@@ -1,0 +1,189 @@
+#include "symbolic/simplify.hpp"
+
+#include <map>
+
+#include "symbolic/canonical_print.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+using GiNaC::ex_is_less;
+
+bool MotionSymbols::depends(const ex& e) const {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return symbols.count(e) > 0;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (depends(e.op(i))) return true;
+  return false;
+}
+
+namespace {
+
+std::vector<ex> terms_of(const ex& e) {
+  std::vector<ex> terms;
+  if (GiNaC::is_a<GiNaC::add>(e))
+    for (std::size_t i = 0; i < e.nops(); ++i) terms.push_back(e.op(i));
+  else if (!e.is_zero())
+    terms.push_back(e);
+  return terms;
+}
+
+std::vector<ex> factors_of(const ex& term) {
+  std::vector<ex> factors;
+  if (GiNaC::is_a<GiNaC::mul>(term))
+    for (std::size_t i = 0; i < term.nops(); ++i) factors.push_back(term.op(i));
+  else
+    factors.push_back(term);
+  return factors;
+}
+
+ex product(const std::vector<ex>& factors, std::size_t skip_a = SIZE_MAX, std::size_t skip_b = SIZE_MAX) {
+  ex p = 1;
+  for (std::size_t i = 0; i < factors.size(); ++i)
+    if (i != skip_a && i != skip_b) p *= factors[i];
+  return p;
+}
+
+bool is_sin(const ex& e) { return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e); }
+bool is_cos(const ex& e) { return GiNaC::is_the_function<GiNaC::cos_SERIAL>(e); }
+
+ex sum(const std::vector<ex>& terms) {
+  GiNaC::exvector v(terms.begin(), terms.end());
+  return GiNaC::add(v);
+}
+
+}  // namespace
+
+ex apply_pythagoras(const ex& expanded) {
+  std::vector<ex> terms = terms_of(expanded);
+  for (bool changed = true; changed;) {
+    changed = false;
+    // key: (cofactor, angle) of a term c·sin(a)^2 or c·cos(a)^2 → index of the term
+    std::map<std::pair<ex, ex>, std::size_t, bool (*)(const std::pair<ex, ex>&, const std::pair<ex, ex>&)> sines(
+        [](const std::pair<ex, ex>& x, const std::pair<ex, ex>& y) {
+          int c = x.first.compare(y.first);
+          return c != 0 ? c < 0 : x.second.compare(y.second) < 0;
+        });
+    std::vector<std::pair<std::size_t, std::pair<ex, ex>>> cosines;
+    for (std::size_t t = 0; t < terms.size(); ++t) {
+      std::vector<ex> f = factors_of(terms[t]);
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        if (!GiNaC::is_a<GiNaC::power>(f[i]) || f[i].op(1) != 2) continue;
+        const ex base = f[i].op(0);
+        if (is_sin(base)) sines.emplace(std::make_pair(product(f, i), base.op(0)), t);
+        else if (is_cos(base)) cosines.push_back({t, {product(f, i), base.op(0)}});
+      }
+    }
+    std::vector<bool> used(terms.size(), false);
+    for (const auto& [t, key] : cosines) {
+      auto s = sines.find(key);
+      if (s == sines.end() || used[t] || used[s->second] || s->second == t) continue;
+      used[t] = used[s->second] = true;
+      terms[t] = key.first;  // c·cos² + c·sin² = c
+      terms[s->second] = 0;
+      changed = true;
+    }
+    if (changed) terms = terms_of(sum(terms).expand());
+  }
+  return sum(terms);
+}
+
+namespace {
+
+// A term c·X·f(a)·g(b) with f, g ∈ {sin, cos}, seen as one monomial of the pair (a, b).
+struct PairTerm {
+  std::size_t term;
+  int kind;  // 0 cos a cos b, 1 sin a sin b, 2 sin a cos b, 3 cos a sin b
+  ex coefficient;
+};
+
+struct PairKey {
+  ex cofactor, a, b;
+};
+
+bool pair_key_less(const PairKey& x, const PairKey& y) {
+  if (int c = x.cofactor.compare(y.cofactor)) return c < 0;
+  if (int c = x.a.compare(y.a)) return c < 0;
+  return x.b.compare(y.b) < 0;
+}
+
+int nonzero(const std::array<ex, 4>& v) {
+  int n = 0;
+  for (const ex& x : v) n += !x.is_zero();
+  return n;
+}
+
+}  // namespace
+
+ex combine_trig_products(const ex& expanded) {
+  std::vector<ex> terms = terms_of(expanded);
+  std::map<PairKey, std::vector<PairTerm>, bool (*)(const PairKey&, const PairKey&)> groups(pair_key_less);
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    std::vector<ex> f;
+    ex coefficient = 1;
+    for (const ex& x : factors_of(terms[t])) {
+      if (GiNaC::is_a<GiNaC::numeric>(x)) coefficient *= x;
+      else f.push_back(x);
+    }
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (!is_sin(f[i]) && !is_cos(f[i])) continue;
+      for (std::size_t j = i + 1; j < f.size(); ++j) {
+        if (!is_sin(f[j]) && !is_cos(f[j])) continue;
+        ex a = f[i].op(0), b = f[j].op(0);
+        bool si = is_sin(f[i]), sj = is_sin(f[j]);
+        if (a.is_equal(b)) continue;
+        // orient the pair by the canonical text of its angles, so the result does not depend on GiNaC's order
+        if (canonical_less(b, a)) { std::swap(a, b); std::swap(si, sj); }
+        int kind = !si && !sj ? 0 : (si && sj ? 1 : (si ? 2 : 3));
+        groups[{product(f, i, j), a, b}].push_back({t, kind, coefficient});
+      }
+    }
+  }
+  std::vector<bool> used(terms.size(), false);
+  std::vector<ex> extra;
+  // groups are visited in the order of their keys' canonical text, for determinism
+  std::vector<std::pair<std::string, const std::pair<const PairKey, std::vector<PairTerm>>*>> order;
+  for (const auto& g : groups)
+    if (g.second.size() > 1) order.push_back({canonical_text(g.first.cofactor * GiNaC::sin(g.first.a) * GiNaC::cos(g.first.b)), &g});
+  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [text, group] : order) {
+    const PairKey& key = group->first;
+    std::array<ex, 4> c{0, 0, 0, 0};
+    bool free = true;
+    for (const PairTerm& p : group->second) free = free && !used[p.term];
+    if (!free) continue;
+    for (const PairTerm& p : group->second) c[p.kind] += p.coefficient;
+    // cc·cos a cos b + ss·sin a sin b + sc·sin a cos b + cs·cos a sin b
+    //   = x·cos(a−b) + y·cos(a+b) + z·sin(a−b) + w·sin(a+b)
+    std::array<ex, 4> folded{(c[0] + c[1]) / 2, (c[0] - c[1]) / 2, (c[2] - c[3]) / 2, (c[2] + c[3]) / 2};
+    if (nonzero(folded) >= nonzero(c)) continue;
+    for (const PairTerm& p : group->second) used[p.term] = true;
+    ex d = key.a - key.b, s = key.a + key.b;
+    extra.push_back(key.cofactor * (folded[0] * GiNaC::cos(d) + folded[1] * GiNaC::cos(s) +
+                                    folded[2] * GiNaC::sin(d) + folded[3] * GiNaC::sin(s)));
+  }
+  if (extra.empty()) return expanded;
+  for (std::size_t t = 0; t < terms.size(); ++t)
+    if (!used[t]) extra.push_back(terms[t]);
+  return sum(extra).expand();
+}
+
+ex collect_by_motion(const ex& expanded, const MotionSymbols& motion) {
+  std::map<ex, ex, ex_is_less> groups;
+  for (const ex& term : terms_of(expanded)) {
+    ex moving = 1, fixed = 1;
+    for (const ex& f : factors_of(term)) (motion.depends(f) ? moving : fixed) *= f;
+    auto [it, fresh] = groups.emplace(moving, fixed);
+    if (!fresh) it->second += fixed;
+  }
+  ex result = 0;
+  for (const auto& [moving, coefficient] : groups) result += coefficient * moving;
+  return result;
+}
+
+ex tidy(const ex& e, const MotionSymbols& motion) {
+  ex x = apply_pythagoras(e.expand());
+  x = combine_trig_products(x);
+  return collect_by_motion(x, motion);
+}
+
+}  // namespace eomgen
