@@ -1,6 +1,7 @@
 #include "common/diagnostic.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -12,8 +13,12 @@ void Diagnostics::error(SourceLocation where, std::string key, std::string messa
 }
 
 std::string Diagnostics::format() const {
+  std::vector<Diagnostic> sorted = list_;
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::tie(a.where.line, a.where.column) < std::tie(b.where.line, b.where.column);
+  });
   std::string out;
-  for (const Diagnostic& d : list_) {
+  for (const Diagnostic& d : sorted) {
     std::string place = d.where.file;
     if (d.where.line > 0) place += fmt::format(":{}:{}", d.where.line, std::max(d.where.column, 1));
     out += fmt::format("{}: error: {}{}\n", place, d.key.empty() ? "" : d.key + ": ", d.message);
@@ -39,7 +44,7 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 std::string nearest_name(const std::string& word, const std::vector<std::string>& candidates) {
   std::string best;
-  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  std::size_t best_distance = std::max<std::size_t>(1, word.size() / 3) + 1;
   for (const std::string& c : candidates) {
     std::size_t d = edit_distance(word, c);
     if (d < best_distance) {

@@ -165,6 +165,8 @@ class Parser {
       skip_space();
       if (peek() == ',') { ++pos_; continue; }
       if (peek() == ')') { ++pos_; break; }
+      if (pos_ >= s_.size())
+        fail(start, fmt::format("the '(' of '{}' is not closed", name), "add the missing ')'");
       fail(pos_, "expected ',' or ')' in the argument list");
     }
     if (args.size() != count)

@@ -90,14 +90,35 @@ class Printer {
     return {out, 1};
   }
 
+  // GiNaC may hold c·(a − b) as (−c)·(b − a), depending on its hash order, which
+  // changes between processes; a sum inside a product is printed with its first
+  // term positive, the sign going to the coefficient.
+  bool leads_negative(const ex& sum_or_other) const {
+    return GiNaC::is_a<GiNaC::add>(sum_or_other) && negative_text(sum(sum_or_other).text);
+  }
+
+  ex normalized_factor(const ex& f, GiNaC::numeric& coefficient) const {
+    if (leads_negative(f)) {
+      coefficient = -coefficient;
+      return -f;
+    }
+    if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_integer() && leads_negative(f.op(0))) {
+      if (GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_odd()) coefficient = -coefficient;
+      return GiNaC::power(-f.op(0), f.op(1));
+    }
+    return f;
+  }
+
   Printed product(const ex& e) const {
     GiNaC::numeric coefficient = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) coefficient *= GiNaC::ex_to<GiNaC::numeric>(e.op(i));
     std::vector<std::string> numerator, denominator;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      const ex f = e.op(i);
-      if (GiNaC::is_a<GiNaC::numeric>(f)) {
-        coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
-      } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
+      if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) continue;
+      const ex f = normalized_factor(e.op(i), coefficient);
+      if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
                  GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
         denominator.push_back(wrap(print(GiNaC::pow(f.op(0), -f.op(1))), latex_ ? 1 : 3));
       } else {
@@ -138,6 +159,12 @@ class Printer {
       Printed positive = print(GiNaC::pow(base, -exponent));
       if (latex_) return {"\\frac{1}{" + positive.text + "}", 4};
       return {"1/" + wrap(positive, 3), 2};
+    }
+    if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer() &&
+        leads_negative(base)) {
+      Printed flipped = power(GiNaC::power(-base, exponent));
+      if (GiNaC::ex_to<GiNaC::numeric>(exponent).is_even()) return flipped;
+      return {"-" + flipped.text, 2};
     }
     std::string b = wrap(print(base), 4);
     Printed x = print(exponent);

@@ -73,8 +73,14 @@ ex apply_pythagoras(const ex& expanded) {
         else if (is_cos(base)) cosines.push_back({t, {product(f, i), base.op(0)}});
       }
     }
+    // visit candidates in canonical order: GiNaC's term order changes between processes
+    std::vector<std::pair<std::string, std::size_t>> order;
+    for (std::size_t c = 0; c < cosines.size(); ++c)
+      order.push_back({canonical_text(cosines[c].second.first * GiNaC::cos(cosines[c].second.second)), c});
+    std::sort(order.begin(), order.end());
     std::vector<bool> used(terms.size(), false);
-    for (const auto& [t, key] : cosines) {
+    for (const auto& [text, c] : order) {
+      const auto& [t, key] = cosines[c];
       auto s = sines.find(key);
       if (s == sines.end() || used[t] || used[s->second] || s->second == t) continue;
       used[t] = used[s->second] = true;

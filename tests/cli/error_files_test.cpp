@@ -1,0 +1,109 @@
+// tests/errors/NAME.toml holds one mistake each, with the expected diagnostic in
+// its second line (`# expect: LINE:COLUMN: message`), and tests/errors/fixed/NAME.toml
+// its corrected twin. `eomgen derive` must exit 2 on the first with that
+// diagnostic and write nothing, and exit 0 on the second.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string errors_dir = std::string(EOMGEN_SOURCE_DIR) + "/tests/errors";
+
+std::vector<std::string> error_files() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(errors_dir))
+    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+struct DeriveRun {
+  int status;
+  std::string errors;
+  bool wrote;
+};
+
+DeriveRun derive(const std::string& model, const std::string& scratch) {
+  std::string out = scratch + "/out.txt", err = scratch + "/stderr.txt";
+  fs::remove(out);
+  int status = run_command("cd " + errors_dir + " && '" + std::string(EOMGEN_EXECUTABLE) + "' derive " + model +
+                           " -o '" + out + "' 2> '" + err + "' > /dev/null");
+  return {status, read_file(err), fs::exists(out)};
+}
+
+std::string line_starting(const std::string& file, const std::string& prefix) {
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+  return {};
+}
+
+class ErrorFile : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ErrorFile, IsReportedWithItsLocationAndNothingIsWritten) {
+  std::string scratch = temporary_directory();
+  std::string name = GetParam() + ".toml";
+  std::string expected = line_starting(errors_dir + "/" + name, "# expect: ");
+  ASSERT_FALSE(expected.empty()) << name << " has no '# expect:' line";
+  std::size_t colon = expected.find(':', expected.find(':') + 1);
+  std::string diagnostic = name + ":" + expected.substr(0, colon) + ": error:" + expected.substr(colon + 1);
+  DeriveRun run = derive(name, scratch);
+  EXPECT_EQ(run.status, 2) << run.errors;
+  EXPECT_NE(run.errors.find(diagnostic), std::string::npos) << "expected: " << diagnostic << "\ngot:\n" << run.errors;
+  EXPECT_FALSE(run.wrote) << "an output file was written despite the error";
+}
+
+TEST_P(ErrorFile, CorrectedTwinIsAccepted) {
+  std::string scratch = temporary_directory();
+  std::string name = "fixed/" + GetParam() + ".toml";
+  ASSERT_TRUE(fs::exists(errors_dir + "/" + name)) << name << " is missing";
+  DeriveRun run = derive(name, scratch);
+  std::string refused_until = line_starting(errors_dir + "/" + name, "# refused-until: ");
+  if (!refused_until.empty()) {
+    // valid, but its method comes in a later version: exactly one diagnostic, the refusal
+    std::string method = refused_until.substr(0, refused_until.find(' '));
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.errors.find("method = \"" + method + "\""), std::string::npos) << run.errors;
+    EXPECT_NE(run.errors.find("1 error in"), std::string::npos) << run.errors;
+    return;
+  }
+  EXPECT_EQ(run.status, 0) << run.errors;
+  EXPECT_TRUE(run.wrote);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFile, ErrorFile, ::testing::ValuesIn(error_files()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST(ErrorFiles, AtLeastTwentyMistakesAreCovered) { EXPECT_GE(error_files().size(), 20u); }
+
+TEST(ErrorFiles, HugeFileIsRefusedWithoutParsing) {
+  std::string scratch = temporary_directory();
+  std::string path = scratch + "/huge.toml";
+  {
+    std::ofstream out(path);
+    out << "[model]\nname = \"huge\"\n[parameters]\n";
+    for (int i = 0; out.tellp() < (1 << 20) + 1000; ++i) out << "p" << i << " = 1.0\n";
+  }
+  int status = run_command("'" + std::string(EOMGEN_EXECUTABLE) + "' derive '" + path + "' -o '" + scratch +
+                           "/out.txt' 2> '" + scratch + "/stderr.txt'");
+  std::string errors = read_file(scratch + "/stderr.txt");
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(errors.find("model files are limited to 1048576 bytes"), std::string::npos) << errors;
+  EXPECT_FALSE(fs::exists(scratch + "/out.txt"));
+}
+
+TEST(ErrorFiles, CommandLineMistakeExitsTwo) {
+  EXPECT_EQ(run_command("'" + std::string(EOMGEN_EXECUTABLE) + "' derive --format pdf x.toml 2>/dev/null"), 2);
+  EXPECT_EQ(run_command("'" + std::string(EOMGEN_EXECUTABLE) + "' derive /no/such/model.toml 2>/dev/null"), 2);
+  EXPECT_EQ(run_command("'" + std::string(EOMGEN_EXECUTABLE) + "' derive --help >/dev/null"), 0);
+}
+
+}  // namespace
+}  // namespace eomgen::test

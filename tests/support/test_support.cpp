@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+
+#include "support/test_support.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include "pipeline.hpp"
+
+namespace eomgen::test {
+
+std::string model_path(const std::string& name) { return std::string(EOMGEN_SOURCE_DIR) + "/models/" + name + ".toml"; }
+
+Equations derive_model(const std::string& name) {
+  Derivation d = derive_model_file(model_path(name));
+  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format();
+  if (!d.equations) throw std::runtime_error("model " + name + " did not derive");
+  return *d.equations;
+}
+
+GiNaC::ex closed_form(const Equations& e, const std::string& text) {
+  const Symbols& s = e.symbols;
+  GiNaC::symtab table;
+  table["t"] = s.time;
+  for (std::size_t i = 0; i < s.parameters.size(); ++i) table[s.parameter_names[i]] = s.parameters[i];
+  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
+    table[s.coordinate_names[i]] = s.coordinates[i];
+    table["d_" + s.coordinate_names[i]] = s.velocities[i];
+  }
+  for (std::size_t i = 0; i < s.inputs.size(); ++i) table[s.input_names[i]] = s.inputs[i];
+  GiNaC::parser reader(table, true);
+  return reader(text);
+}
+
+std::vector<GiNaC::exmap> random_points(const Symbols& s, int count, unsigned seed) {
+  std::mt19937 generator(seed);
+  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(generator); };
+  std::vector<GiNaC::exmap> points;
+  for (int k = 0; k < count; ++k) {
+    GiNaC::exmap p;
+    for (const auto& x : s.parameters) p[x] = uniform(0.5, 2.0);
+    for (const auto& x : s.coordinates) p[x] = uniform(-3.0, 3.0);
+    for (const auto& x : s.velocities) p[x] = uniform(-2.0, 2.0);
+    for (const auto& x : s.inputs) p[x] = uniform(-1.0, 1.0);
+    p[s.time] = uniform(0.0, 2.0);
+    points.push_back(p);
+  }
+  return points;
+}
+
+double value_at(const GiNaC::ex& e, const GiNaC::exmap& point) {
+  GiNaC::ex v = e.subs(point).evalf();
+  if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+    ADD_FAILURE() << "not a real number: " << v;
+    return NAN;
+  }
+  return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+}
+
+::testing::AssertionResult agree_at_points(const GiNaC::ex& actual, const GiNaC::ex& expected,
+                                           const std::vector<GiNaC::exmap>& points, double tolerance) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    double a = value_at(actual, points[k]), b = value_at(expected, points[k]);
+    double scale = std::max({1.0, std::abs(a), std::abs(b)});
+    if (!(std::abs(a - b) <= tolerance * scale))
+      return ::testing::AssertionFailure() << "at point " << k << ": " << a << " vs " << b << "\n  actual:   "
+                                           << actual << "\n  expected: " << expected;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+int run_command(const std::string& command) {
+  int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string temporary_directory() {
+  std::string pattern = ::testing::TempDir() + "eomgen_XXXXXX";
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back('\0');
+  if (!mkdtemp(buffer.data())) throw std::runtime_error("mkdtemp failed");
+  return buffer.data();
+}
+
+}  // namespace eomgen::test

@@ -1,0 +1,45 @@
+/// @file Helpers shared by the tests: deriving the models in models/, writing
+/// closed forms over a model's symbols, and comparing at random points.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+#include <gtest/gtest.h>
+
+#include "derive/equations.hpp"
+
+namespace eomgen::test {
+
+/// The source tree's models/NAME.toml.
+std::string model_path(const std::string& name);
+
+/// Derives models/NAME.toml; fails the test on any diagnostic.
+Equations derive_model(const std::string& name);
+
+/// Parses a closed form with GiNaC's own parser; the symbols are the model's,
+/// with the velocity of q written d_q (so the parser is independent of ours).
+GiNaC::ex closed_form(const Equations& e, const std::string& text);
+
+/// Random values for every symbol of the model (parameters in [0.5, 2],
+/// coordinates in [-3, 3], velocities in [-2, 2], inputs in [-1, 1], t in [0, 2]).
+std::vector<GiNaC::exmap> random_points(const Symbols& s, int count, unsigned seed = 12345);
+
+/// The value of e at a point, as a double; fails the test if it is not a real number.
+double value_at(const GiNaC::ex& e, const GiNaC::exmap& point);
+
+/// |a − b| ≤ tolerance · max(1, |a|, |b|) at every point.
+::testing::AssertionResult agree_at_points(const GiNaC::ex& actual, const GiNaC::ex& expected,
+                                           const std::vector<GiNaC::exmap>& points, double tolerance = 1e-12);
+
+/// Runs a shell command; returns its exit status (or −1 when it did not exit normally).
+int run_command(const std::string& command);
+
+/// Reads a whole file; empty when it does not exist.
+std::string read_file(const std::string& path);
+
+/// A fresh temporary directory.
+std::string temporary_directory();
+
+}  // namespace eomgen::test
