@@ -29,8 +29,10 @@ std::string emit_canonical_text(const Equations& e) {
   std::vector<std::string> velocities;
   for (const auto& v : s.velocities) velocities.push_back(v.get_name());
   out += fmt::format("coordinates: {}\nvelocities: {}\n", list(s.coordinate_names), list(velocities));
-  out += fmt::format("parameters: {}\ninputs: {}\n", assignments(s.parameter_names, s.parameter_defaults),
-                     assignments(s.input_names, s.input_defaults));
+  std::string parameters = assignments(s.parameter_names, s.parameter_defaults);
+  std::string inputs = assignments(s.input_names, s.input_defaults);
+  out += fmt::format("parameters:{}{}\ninputs:{}{}\n", parameters.empty() ? "" : " ", parameters,
+                     inputs.empty() ? "" : " ", inputs);
   out += fmt::format("degrees_of_freedom: {}\n\n", e.degrees_of_freedom);
   std::size_t n = e.forcing.size();
   for (unsigned j = 0; j < n; ++j)
