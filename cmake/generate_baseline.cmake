@@ -1,7 +1,7 @@
 cmake_minimum_required(VERSION 3.25)
 # Writes or checks the regression baseline: for every models/NAME.toml, the
 # canonical equations NAME.txt and the JSON NAME.json, each from its own
-# eomgen process (as a user would run it).
+# eomgen process (as a user would run it), and the C++ header NAME.hpp.
 #
 #   cmake -DEOMGEN=path/to/eomgen -DMODELS_DIR=models -DOUT_DIR=generated -P generate_baseline.cmake
 #   cmake ... -DCHECK_AGAINST=generated -P generate_baseline.cmake   # regression test
@@ -21,12 +21,17 @@ set(failures 0)
 set(expected_files "")
 foreach(model_file IN LISTS models)
   get_filename_component(name "${model_file}" NAME_WE)
-  foreach(format_ext "text;txt" "json;json")
+  foreach(format_ext "text;txt" "json;json" "header;hpp")
     list(GET format_ext 0 format)
     list(GET format_ext 1 ext)
     list(APPEND expected_files "${name}.${ext}")
+    if(format STREQUAL "header")
+      set(command "${EOMGEN}" generate "models/${model_file}" -o "${OUT_DIR}")
+    else()
+      set(command "${EOMGEN}" derive "models/${model_file}" --format ${format} -o "${OUT_DIR}/${name}.${ext}")
+    endif()
     execute_process(
-      COMMAND "${EOMGEN}" derive "models/${model_file}" --format ${format} -o "${OUT_DIR}/${name}.${ext}"
+      COMMAND ${command}
       WORKING_DIRECTORY "${MODELS_DIR}/.."
       RESULT_VARIABLE status ERROR_VARIABLE errors OUTPUT_QUIET)
     if(NOT status EQUAL 0)
@@ -52,7 +57,7 @@ foreach(model_file IN LISTS models)
 endforeach()
 
 if(DEFINED CHECK_AGAINST)
-  file(GLOB committed RELATIVE "${CHECK_AGAINST}" "${CHECK_AGAINST}/*.txt" "${CHECK_AGAINST}/*.json")
+  file(GLOB committed RELATIVE "${CHECK_AGAINST}" "${CHECK_AGAINST}/*.txt" "${CHECK_AGAINST}/*.json" "${CHECK_AGAINST}/*.hpp")
   foreach(file IN LISTS committed)
     if(NOT file IN_LIST expected_files)
       message(SEND_ERROR "generated/${file} has no model in models/: delete it")

@@ -18,7 +18,7 @@ esac
 packages=(g++ cmake make pkg-config diffutils python3 python3-sympy
           libginac-dev libcln-dev libeigen3-dev libsundials-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox
-          libgtest-dev libgmock-dev libbenchmark-dev)
+          libgtest-dev libgmock-dev libbenchmark-dev clang)
 
 missing=()
 for p in "${packages[@]}"; do

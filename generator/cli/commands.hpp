@@ -15,7 +15,11 @@ enum ExitStatus { exit_success = 0, exit_internal_error = 1, exit_user_error = 2
 using Command = std::function<int()>;
 
 Command add_derive_command(CLI::App& app);
+Command add_generate_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
+
+/// Derives `model_path` and writes NAME.hpp into `directory`; the path written goes to `header_path`.
+int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path);
 
 /// The model `eomgen run` uses when none is named.
 std::string default_model_path();

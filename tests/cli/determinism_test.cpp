@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
 #include "pipeline.hpp"
 #include "support/test_support.hpp"
@@ -42,6 +43,16 @@ TEST(Determinism, SameBytesInSeveralProcesses) {
     }
     // and this process, which derived other models first, agrees with a fresh one
     EXPECT_EQ(first, emit_json(derive_model(model))) << model;
+    std::string header;
+    for (int run = 0; run < 4; ++run) {
+      std::string dir = scratch + "/" + model + "_h" + std::to_string(run);
+      ASSERT_EQ(run_command("'" + std::string(EOMGEN_EXECUTABLE) + "' generate '" + entry.path().string() + "' -o '" +
+                            dir + "' 2>/dev/null"),
+                0);
+      if (run == 0) header = read_file(dir + "/" + model + ".hpp");
+      else EXPECT_EQ(header, read_file(dir + "/" + model + ".hpp")) << model << ".hpp run " << run;
+    }
+    EXPECT_EQ(header, emit_cpp_header(derive_model(model))) << model << ".hpp";
   }
 }
 

@@ -1,0 +1,50 @@
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "common/output_file.hpp"
+#include "emit/cpp_header.hpp"
+#include "pipeline.hpp"
+
+namespace eomgen::cli {
+
+int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path) {
+  auto started = std::chrono::steady_clock::now();
+  Derivation d = derive_model_file(model_path);
+  if (!d.diagnostics.empty()) {
+    std::cerr << d.diagnostics.format();
+    std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", d.diagnostics.size(),
+                             d.diagnostics.size() == 1 ? "" : "s", model_path);
+    return exit_user_error;
+  }
+  std::string text = emit_cpp_header(*d.equations);
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  std::string path = (std::filesystem::path(directory) / (d.equations->model_name + ".hpp")).string();
+  if (std::string failure = write_file_atomically(path, text); !failure.empty()) {
+    std::cerr << "eomgen: " << failure << "\n";
+    return exit_user_error;
+  }
+  if (header_path) *header_path = path;
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::cerr << fmt::format("eomgen: generated {} ({} lines) in {:.3f} s\n", path,
+                           std::count(text.begin(), text.end(), '\n'), seconds);
+  return exit_success;
+}
+
+Command add_generate_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("generate", "Write the model's self-contained C++ header (NAME.hpp)");
+  auto model = std::make_shared<std::string>();
+  auto directory = std::make_shared<std::string>(".");
+  cmd->add_option("MODEL", *model, "Model file (TOML)")->required();
+  cmd->add_option("-o,--output-dir", *directory, "Folder for NAME.hpp (default: the current folder)");
+  return [cmd, model, directory]() -> int {
+    if (!cmd->parsed()) return -1;
+    return generate_header(*model, *directory, nullptr);
+  };
+}
+
+}  // namespace eomgen::cli

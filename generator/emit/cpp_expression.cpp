@@ -1,0 +1,166 @@
+#include "emit/cpp_expression.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+const char* cpp_math_usings() {
+  return "using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;\n"
+         "  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;\n"
+         "  using std::sqrt; using std::pow; using std::abs;";
+}
+
+namespace {
+
+// precedence: 1 sum, 2 product, 4 atom or call
+struct Code {
+  std::string text;
+  int precedence;
+};
+
+std::string text_of(const GiNaC::numeric& n) {
+  std::ostringstream s;
+  s << n;
+  return s.str();
+}
+
+class CppPrinter {
+ public:
+  explicit CppPrinter(const std::function<std::string(const GiNaC::symbol&)>& name_of) : name_of_(name_of) {}
+
+  Code print(const ex& e) const {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return number(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return {name_of_(GiNaC::ex_to<GiNaC::symbol>(e)), 4};
+    if (e.is_equal(GiNaC::Pi)) return {"T(3.141592653589793238462643383279502884L)", 4};
+    if (GiNaC::is_a<GiNaC::add>(e)) return sum(e);
+    if (GiNaC::is_a<GiNaC::mul>(e)) return product(e);
+    if (GiNaC::is_a<GiNaC::power>(e)) return power(e.op(0), e.op(1));
+    if (GiNaC::is_a<GiNaC::function>(e)) return call(e);
+    throw std::runtime_error(fmt::format("cannot write {} as C++", static_cast<const void*>(&e)));
+  }
+
+ private:
+  static std::string wrap(const Code& c, int at_least) {
+    return c.precedence >= at_least && c.text[0] != '-' ? c.text : "(" + c.text + ")";
+  }
+
+  Code number(const GiNaC::numeric& n) const {
+    std::string sign = n.is_negative() ? "-" : "";
+    GiNaC::numeric a = GiNaC::abs(n);
+    if (a.is_integer()) return {sign + "T(" + text_of(a) + ")", sign.empty() ? 4 : 2};
+    if (a.is_rational()) return {sign + "T(" + text_of(a.numer()) + ")/T(" + text_of(a.denom()) + ")", 2};
+    if (a.is_real()) return {sign + fmt::format("T({:.17g})", a.to_double()), sign.empty() ? 4 : 2};
+    throw std::runtime_error("a complex number cannot be written as a real scalar");
+  }
+
+  Code sum(const ex& e) const {
+    std::vector<std::string> terms;
+    for (std::size_t i = 0; i < e.nops(); ++i) terms.push_back(print(e.op(i)).text);
+    std::sort(terms.begin(), terms.end(), [](const std::string& a, const std::string& b) {
+      std::string ka = a[0] == '-' ? a.substr(1) : a, kb = b[0] == '-' ? b.substr(1) : b;
+      return ka != kb ? ka < kb : a < b;
+    });
+    std::string out;
+    for (const std::string& t : terms) {
+      if (out.empty()) out = t;
+      else if (t[0] == '-') out += " - " + t.substr(1);
+      else out += " + " + t;
+    }
+    return {out, 1};
+  }
+
+  // x^k as x*x*…, x^(-k) in the denominator, x^(1/2) as sqrt
+  Code power(const ex& base, const ex& exponent) const {
+    if (exponent.is_equal(GiNaC::numeric(1, 2))) return {"sqrt(" + print(base).text + ")", 4};
+    if (exponent.is_equal(GiNaC::numeric(-1, 2))) return {"T(1)/sqrt(" + print(base).text + ")", 2};
+    if (exponent.info(GiNaC::info_flags::integer)) {
+      int k = GiNaC::ex_to<GiNaC::numeric>(exponent).to_int();
+      if (k < 0) return {"T(1)/" + wrap(power(base, -k), 4), 2};
+      if (k <= 4) {
+        std::string b = wrap(print(base), 4), out = b;
+        for (int i = 1; i < k; ++i) out += "*" + b;
+        return {out, k == 1 ? 4 : 2};
+      }
+    }
+    return {"pow(" + print(base).text + ", " + print(exponent).text + ")", 4};
+  }
+
+  // a sum inside a product is written with its first term positive (GiNaC's
+  // choice of sign there follows an order that changes between processes)
+  ex oriented(const ex& f, GiNaC::numeric& coefficient) const {
+    if (GiNaC::is_a<GiNaC::add>(f) && sum(f).text[0] == '-') {
+      coefficient = -coefficient;
+      return -f;
+    }
+    if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::add>(f.op(0)) && f.op(1).info(GiNaC::info_flags::integer) &&
+        sum(f.op(0)).text[0] == '-') {
+      if (GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_odd()) coefficient = -coefficient;
+      return GiNaC::power(-f.op(0), f.op(1));
+    }
+    return f;
+  }
+
+  Code product(const ex& e) const {
+    GiNaC::numeric coefficient = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) coefficient *= GiNaC::ex_to<GiNaC::numeric>(e.op(i));
+    std::vector<std::string> numerator, denominator;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) continue;
+      const ex f = oriented(e.op(i), coefficient);
+      if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::negint)) {
+        denominator.push_back(wrap(power(f.op(0), -f.op(1)), 2));
+      } else {
+        numerator.push_back(wrap(print(f), 2));
+      }
+    }
+    std::sort(numerator.begin(), numerator.end());
+    std::sort(denominator.begin(), denominator.end());
+    std::string sign = coefficient.is_negative() ? "-" : "";
+    coefficient = GiNaC::abs(coefficient);
+    if (coefficient != 1) {
+      if (coefficient.is_rational() && coefficient.denom() != 1) {
+        if (coefficient.numer() != 1) numerator.insert(numerator.begin(), "T(" + text_of(coefficient.numer()) + ")");
+        denominator.insert(denominator.begin(), "T(" + text_of(coefficient.denom()) + ")");
+      } else {
+        numerator.insert(numerator.begin(), number(coefficient).text);
+      }
+    }
+    std::string out;
+    for (const std::string& f : numerator) out += (out.empty() ? "" : "*") + f;
+    if (out.empty()) out = "T(1)";
+    if (!denominator.empty()) {
+      std::string den;
+      for (const std::string& f : denominator) den += (den.empty() ? "" : "*") + f;
+      out += "/" + (denominator.size() == 1 ? den : "(" + den + ")");
+    }
+    return {sign + out, 2};
+  }
+
+  Code call(const ex& e) const {
+    std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    static const std::vector<std::string> known = {"sin", "cos",  "tan",  "asin", "acos", "atan", "atan2",
+                                                   "sinh", "cosh", "tanh", "exp", "log", "abs"};
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw std::runtime_error("no C++ for the function " + name);
+    std::string args;
+    for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + print(e.op(i)).text;
+    return {name + "(" + args + ")", 4};
+  }
+
+  const std::function<std::string(const GiNaC::symbol&)>& name_of_;
+};
+
+}  // namespace
+
+std::string cpp_expression(const ex& e, const std::function<std::string(const GiNaC::symbol&)>& name_of) {
+  return CppPrinter(name_of).print(e).text;
+}
+
+}  // namespace eomgen

@@ -1,0 +1,373 @@
+/// @file The generated C++ header: DESIGN.md's contract, one self-contained
+/// header per model that needs only the C++17 standard library.
+#include <fmt/format.h>
+
+#include "common/version.hpp"
+#include "emit/cpp_expression.hpp"
+#include "emit/cpp_header.hpp"
+#include "emit/formats.hpp"
+#include "model/symbols.hpp"
+#include "symbolic/cse.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+std::string cpp_name(const std::string& name) { return is_cpp_identifier(name) ? name : name + "_"; }
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + ("\"" + n + "\"");
+  return s;
+}
+
+std::string number_list(const std::vector<double>& values) {
+  std::string s;
+  for (double v : values) s += (s.empty() ? "" : ", ") + format_number(v);
+  return s;
+}
+
+void collect_symbols(const ex& e, GiNaC::exset& out) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
+}
+
+bool calls_functions(const ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e) || (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)))
+    return true;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (calls_functions(e.op(i))) return true;
+  return false;
+}
+
+/// Writes the body of one generated function from CSE batches.
+class BodyWriter {
+ public:
+  explicit BodyWriter(const Equations& e) : e_(e), n_(e.symbols.num_coordinates()) {
+    const Symbols& s = e.symbols;
+    for (std::size_t i = 0; i < n_; ++i) {
+      inputs_.push_back({s.coordinates[i], "q_" + s.coordinate_names[i], fmt::format("x[{}]", i)});
+      inputs_.push_back({s.velocities[i], "dq_" + s.coordinate_names[i], fmt::format("x[{}]", n_ + i)});
+    }
+    for (std::size_t i = 0; i < s.parameters.size(); ++i)
+      inputs_.push_back({s.parameters[i], "p_" + s.parameter_names[i], fmt::format("p[{}]", i)});
+    for (std::size_t i = 0; i < s.inputs.size(); ++i)
+      inputs_.push_back({s.inputs[i], "u_" + s.input_names[i], fmt::format("u[{}]", i)});
+    for (std::size_t i = 0; i < n_; ++i) accelerations_.emplace_back(fmt::format("ddq{}", i));
+  }
+
+  const std::vector<GiNaC::symbol>& accelerations() const { return accelerations_; }
+
+  /// The statements computing a batch's temporaries; the outputs are returned as C++ text.
+  std::vector<std::string> batch(const std::vector<ex>& expressions) {
+    CseBatch b = cse_.add(expressions);
+    for (const Temporary& t : b.temporaries) {
+      names_[t.name] = t.name.get_name();
+      note(t.definition);
+      statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
+    }
+    std::vector<std::string> out;
+    for (const ex& o : b.outputs) {
+      note(o);
+      out.push_back(code(o));
+    }
+    return out;
+  }
+
+  void line(const std::string& text) { statements_ += "  " + text + "\n"; }
+
+  /// Declarations of the model symbols used, then the statements.
+  std::string finish(const std::string& unused) {
+    std::string head = "  " + unused + "\n";
+    if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
+    for (const auto& in : inputs_)
+      if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
+    return head + statements_;
+  }
+
+ private:
+  struct Input {
+    ex symbol;
+    std::string name, source;
+  };
+
+  void note(const ex& e) {
+    collect_symbols(e, used_);
+    uses_functions_ = uses_functions_ || calls_functions(e);
+  }
+
+  std::string code(const ex& e) {
+    return cpp_expression(e, [this](const GiNaC::symbol& s) -> std::string {
+      if (ex(s).is_equal(e_.symbols.time)) return "t";
+      for (const auto& in : inputs_)
+        if (in.symbol.is_equal(ex(s))) return in.name;
+      for (std::size_t i = 0; i < accelerations_.size(); ++i)
+        if (accelerations_[i].is_equal(s)) return fmt::format("ddq[{}]", i);
+      auto found = names_.find(s);
+      if (found != names_.end()) return found->second;
+      throw std::runtime_error("no C++ name for symbol " + s.get_name());
+    });
+  }
+
+  const Equations& e_;
+  std::size_t n_;
+  std::vector<Input> inputs_;
+  std::vector<GiNaC::symbol> accelerations_;
+  std::map<ex, std::string, GiNaC::ex_is_less> names_;
+  GiNaC::exset used_;
+  bool uses_functions_ = false;
+  CommonSubexpressions cse_;
+  std::string statements_;
+};
+
+std::vector<ex> upper_triangle(const GiNaC::matrix& M, std::size_t n) {
+  std::vector<ex> entries;
+  for (unsigned j = 0; j < n; ++j)
+    for (unsigned k = j; k < n; ++k) entries.push_back(M(j, k));
+  return entries;
+}
+
+// writes M (n×n, row-major) from its upper triangle into `target`
+void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target) {
+  std::size_t at = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = j; k < n; ++k, ++at) {
+      w.line(fmt::format("{}[{}] = {};", target, j * n + k, upper[at]));
+      if (k != j) w.line(fmt::format("{}[{}] = {}[{}];", target, k * n + j, target, j * n + k));
+    }
+}
+
+std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
+  return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
+}
+
+const char* all_unused = "(void)t; (void)x; (void)u; (void)p;";
+
+std::string mass_matrix_function(const Equations& e) {
+  std::size_t n = e.forcing.size();
+  BodyWriter w(e);
+  write_symmetric(w, w.batch(upper_triangle(e.mass_matrix, n)), n, "M");
+  return function(fmt::format("/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.\n"
+                              "/// x: num_states; p: num_parameters; M: {}x{}, row-major.\n", n, n),
+                  "void mass_matrix(T t, const T* x, const T* p, T* M)", w.finish("(void)t; (void)x; (void)p;"));
+}
+
+std::string forcing_function(const Equations& e) {
+  BodyWriter w(e);
+  auto f = w.batch(e.forcing);
+  for (std::size_t i = 0; i < f.size(); ++i) w.line(fmt::format("f[{}] = {};", i, f[i]));
+  return function(fmt::format("/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.\n"
+                              "/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: {}.\n", f.size()),
+                  "void forcing(T t, const T* x, const T* u, const T* p, T* f)", w.finish(all_unused));
+}
+
+// M and f into local arrays, M = L D L^T, then q'' = M^-1 f into `ddq`
+void accelerations(BodyWriter& w, const Equations& e) {
+  std::size_t n = e.forcing.size();
+  std::vector<ex> exprs = upper_triangle(e.mass_matrix, n);
+  exprs.insert(exprs.end(), e.forcing.begin(), e.forcing.end());
+  auto code = w.batch(exprs);
+  w.line(fmt::format("T M[{}];", n * n));
+  write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + n * (n + 1) / 2), n, "M");
+  w.line(fmt::format("T ddq[{}];", n));
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("ddq[{}] = {};", i, code[n * (n + 1) / 2 + i]));
+  w.line(fmt::format("T L[{}];", n * n));
+  w.line(fmt::format("T D[{}];", n));
+  w.line("detail::ldlt_factor(M, L, D);");
+  w.line("detail::ldlt_solve(L, D, ddq);");
+}
+
+std::string rhs_function(const Equations& e) {
+  std::size_t n = e.forcing.size();
+  BodyWriter w(e);
+  accelerations(w, e);
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
+  return function(fmt::format("/// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].\n"
+                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n", 2 * n),
+                  "void rhs(T t, const T* x, const T* u, const T* p, T* xdot)", w.finish(all_unused));
+}
+
+// dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
+std::string jacobian_state_function(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.forcing.size(), N = 2 * n;
+  BodyWriter w(e);
+  accelerations(w, e);
+  std::vector<ex> columns;
+  for (std::size_t j = 0; j < N; ++j) {
+    const GiNaC::symbol x = j < n ? s.coordinates[j] : s.velocities[j - n];
+    for (unsigned i = 0; i < n; ++i) {
+      ex k = e.forcing[i].diff(x);
+      if (j < n)
+        for (unsigned c = 0; c < n; ++c) k -= e.mass_matrix(i, c).diff(x) * w.accelerations()[c];
+      columns.push_back(k);
+    }
+  }
+  auto code = w.batch(columns);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == n + i ? 1 : 0));
+  w.line(fmt::format("T column[{}];", n));
+  for (std::size_t j = 0; j < N; ++j) {
+    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * n + i]));
+    w.line("detail::ldlt_solve(L, D, column);");
+    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("J[{}] = column[{}];", (n + i) * N + j, i));
+  }
+  return function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is\n"
+                              "/// M^-1 (df/dx - (dM/dx) q''). J: {}x{}, row-major.\n", N, N),
+                  "void jacobian_state(T t, const T* x, const T* u, const T* p, T* J)", w.finish(all_unused));
+}
+
+std::string jacobian_input_function(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.forcing.size(), m = s.inputs.size();
+  BodyWriter w(e);
+  if (m > 0) {
+    auto Mcode = w.batch(upper_triangle(e.mass_matrix, n));
+    w.line(fmt::format("T M[{}];", n * n));
+    write_symmetric(w, Mcode, n, "M");
+    w.line(fmt::format("T L[{}];", n * n));
+    w.line(fmt::format("T D[{}];", n));
+    w.line("detail::ldlt_factor(M, L, D);");
+    std::vector<ex> columns;
+    for (std::size_t j = 0; j < m; ++j)
+      for (std::size_t i = 0; i < n; ++i) columns.push_back(e.forcing[i].diff(s.inputs[j]));
+    auto code = w.batch(columns);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = T(0);", i * m + j));
+    w.line(fmt::format("T column[{}];", n));
+    for (std::size_t j = 0; j < m; ++j) {
+      for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * n + i]));
+      w.line("detail::ldlt_solve(L, D, column);");
+      for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("B[{}] = column[{}];", (n + i) * m + j, i));
+    }
+  }
+  return function(fmt::format("/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.\n"
+                              "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, m),
+                  "void jacobian_input(T t, const T* x, const T* u, const T* p, T* B)", w.finish(all_unused + std::string(" (void)B;")));
+}
+
+std::string scalar_function(const Equations& e, const char* name, const ex& value, const char* doc) {
+  BodyWriter w(e);
+  auto code = w.batch({value});
+  w.line("return " + code[0] + ";");
+  return function(doc, fmt::format("T {}(T t, const T* x, const T* p)", name), w.finish("(void)t; (void)x; (void)p;"));
+}
+
+std::string outputs_function(const Equations& e) {
+  BodyWriter w(e);
+  std::vector<ex> values;
+  for (const NamedSymbolic& o : e.outputs) values.push_back(o.expression);
+  auto code = w.batch(values);
+  for (std::size_t i = 0; i < code.size(); ++i) w.line(fmt::format("y[{}] = {};", i, code[i]));
+  return function(fmt::format("/// The model's [outputs], in output_names order. y: {}.\n", code.size()),
+                  "void outputs(T t, const T* x, const T* u, const T* p, T* y)", w.finish(all_unused + std::string(" (void)y;")));
+}
+
+// L D L^T of a symmetric positive definite n×n matrix, unrolled:
+// D_j = M_jj − Σ_{k<j} L_jk² D_k,  L_ij = (M_ij − Σ_{k<j} L_ik L_jk D_k) / D_j
+std::string ldlt_functions(std::size_t n) {
+  std::string factor, solve;
+  for (std::size_t j = 0; j < n; ++j) {
+    std::string d = fmt::format("M[{}]", j * n + j);
+    for (std::size_t k = 0; k < j; ++k) d += fmt::format(" - L[{0}]*L[{0}]*D[{1}]", j * n + k, k);
+    factor += fmt::format("  D[{}] = {};\n", j, d);
+    for (std::size_t i = j + 1; i < n; ++i) {
+      std::string l = fmt::format("M[{}]", i * n + j);
+      for (std::size_t k = 0; k < j; ++k) l += fmt::format(" - L[{}]*L[{}]*D[{}]", i * n + k, j * n + k, k);
+      factor += fmt::format("  L[{}] = ({})/D[{}];\n", i * n + j, l, j);
+    }
+  }
+  for (std::size_t i = 1; i < n; ++i) {
+    std::string y = fmt::format("b[{}]", i);
+    for (std::size_t k = 0; k < i; ++k) y += fmt::format(" - L[{}]*b[{}]", i * n + k, k);
+    solve += fmt::format("  b[{}] = {};\n", i, y);
+  }
+  for (std::size_t i = 0; i < n; ++i) solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
+  for (std::size_t i = n - 1; i-- > 0;) {
+    std::string x = fmt::format("b[{}]", i);
+    for (std::size_t k = i + 1; k < n; ++k) x += fmt::format(" - L[{}]*b[{}]", k * n + i, k);
+    solve += fmt::format("  b[{}] = {};\n", i, x);
+  }
+  return fmt::format(
+      "namespace detail {{\n\n"
+      "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix, unrolled.\n"
+      "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n"
+      "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
+      "/// Solves L D L^T x = b in place. b: {0}.\n"
+      "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n"
+      "}}  // namespace detail\n\n",
+      n, factor, solve);
+}
+
+std::string source_name(const std::string& path) {
+  std::string base = path.substr(path.find_last_of('/') + 1);
+  return path.find("models/") != std::string::npos || path.rfind("models", 0) == 0 ? "models/" + base : base;
+}
+
+}  // namespace
+
+std::string emit_cpp_header(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = s.num_coordinates();
+  std::vector<std::string> velocities, states = s.coordinate_names, outputs;
+  for (const auto& name : s.coordinate_names) velocities.push_back("der(" + name + ")");
+  states.insert(states.end(), velocities.begin(), velocities.end());
+  for (const NamedSymbolic& o : e.outputs) outputs.push_back(o.name);
+  std::vector<double> state = s.initial_coordinates;
+  state.insert(state.end(), s.initial_velocities.begin(), s.initial_velocities.end());
+
+  std::string members, values;
+  for (std::size_t i = 0; i < s.parameters.size(); ++i) {
+    members += fmt::format("  Scalar {} = Scalar({});\n", cpp_name(s.parameter_names[i]), format_number(s.parameter_defaults[i]));
+    values += (values.empty() ? "" : ", ") + cpp_name(s.parameter_names[i]);
+  }
+
+  std::string out = fmt::format(
+      "// Generated by eomgen {0} from {1}. Do not edit: change the model file and regenerate.\n"
+      "// {2}: {3} (method {4}, {5} degree{6} of freedom).\n"
+      "// Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n"
+      "#pragma once\n\n#include <array>\n#include <cmath>\n#include <cstddef>\n\n"
+      "namespace eomgen::models::{2} {{\n\n"
+      "inline constexpr std::size_t num_coordinates = {7};\n"
+      "inline constexpr std::size_t num_velocities = {7};\n"
+      "inline constexpr std::size_t num_states = {8};\n"
+      "inline constexpr std::size_t num_parameters = {9};\n"
+      "inline constexpr std::size_t num_inputs = {10};\n"
+      "inline constexpr std::size_t num_outputs = {11};\n\n",
+      version_string, source_name(e.source), e.model_name, e.title, e.method, e.degrees_of_freedom,
+      e.degrees_of_freedom == 1 ? "" : "s", n, 2 * n, s.parameters.size(), s.inputs.size(), e.outputs.size());
+  out += fmt::format(
+      "inline constexpr std::array<const char*, num_parameters> parameter_names{{{{{}}}}};\n"
+      "inline constexpr std::array<const char*, num_coordinates> coordinate_names{{{{{}}}}};\n"
+      "inline constexpr std::array<const char*, num_velocities> velocity_names{{{{{}}}}};\n"
+      "inline constexpr std::array<const char*, num_states> state_names{{{{{}}}}};\n"
+      "inline constexpr std::array<const char*, num_inputs> input_names{{{{{}}}}};\n"
+      "inline constexpr std::array<const char*, num_outputs> output_names{{{{{}}}}};\n\n"
+      "inline constexpr std::array<double, num_parameters> default_parameters{{{{{}}}}};\n"
+      "inline constexpr std::array<double, num_states> default_state{{{{{}}}}};\n"
+      "inline constexpr std::array<double, num_inputs> default_inputs{{{{{}}}}};\n\n",
+      quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(states),
+      quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
+      number_list(s.input_defaults));
+  out += fmt::format(
+      "/// The parameters by name, with the model's defaults; values() gives them in\n"
+      "/// parameter_names order, as the functions below take them.\n"
+      "template <class Scalar>\nstruct Parameters {{\n{}"
+      "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
+      members, values);
+  out += ldlt_functions(n);
+  out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
+         jacobian_input_function(e);
+  out += scalar_function(e, "kinetic_energy", e.kinetic_energy,
+                         "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n");
+  out += scalar_function(e, "potential_energy", e.potential_energy,
+                         "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
+  out += outputs_function(e);
+  out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
+  return out;
+}
+
+}  // namespace eomgen
