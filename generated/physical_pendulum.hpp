@@ -27,6 +27,10 @@ inline constexpr std::array<double, num_parameters> default_parameters{{2, 0.3, 
 inline constexpr std::array<double, num_states> default_state{{1, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{0}};
 
+/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
+/// scleronomic): what an energy-drift check may rely on.
+inline constexpr bool conserves_energy_without_inputs = true;
+
 /// The parameters by name, with the model's defaults; values() gives them in
 /// parameter_names order, as the functions below take them.
 template <class Scalar>

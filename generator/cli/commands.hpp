@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "simulation.hpp"
+
 namespace eomgen::cli {
 
 /// Exit statuses of DESIGN.md.
@@ -16,7 +18,21 @@ using Command = std::function<int()>;
 
 Command add_derive_command(CLI::App& app);
 Command add_generate_command(CLI::App& app);
+Command add_simulate_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
+
+struct SimulationOptions {
+  std::string model;
+  runtime::SimulationSettings settings;
+  std::vector<std::string> sets, initials;
+  std::string csv, plot, header_dir;
+  bool json = false;
+};
+
+/// Derives, generates, compiles (cached) and simulates; writes the CSV and charts asked for.
+int simulate_model(const SimulationOptions& options);
+
+std::string json_escape(const std::string& s);
 
 /// Derives `model_path` and writes NAME.hpp into `directory`; the path written goes to `header_path`.
 int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path);

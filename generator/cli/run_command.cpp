@@ -13,14 +13,30 @@ std::string default_model_path() {
 
 Command add_run_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
-      "run", "The main job on a model (default: the double pendulum): derive its equations and print them");
+      "run",
+      "The main job on a model (default: the double pendulum): derive and print its equations, generate its header, "
+      "compile it, simulate it and draw its charts");
   auto model = std::make_shared<std::string>();
+  auto directory = std::make_shared<std::string>("eomgen-run");
   cmd->add_option("MODEL", *model, "Model file (TOML); default models/double_pendulum.toml");
-  return [cmd, model]() -> int {
+  cmd->add_option("-o,--output-dir", *directory, "Folder for the header, the trajectory and the charts (default eomgen-run)");
+  return [cmd, model, directory]() -> int {
     if (!cmd->parsed()) return -1;
     std::string path = model->empty() ? default_model_path() : *model;
     std::cerr << "eomgen run: " << path << "\n";
-    return derive_and_write(path, "text", "");
+    if (int status = derive_and_write(path, "text", ""); status != exit_success) return status;
+    std::filesystem::create_directories(*directory);
+    std::string stem = std::filesystem::path(path).stem().string();
+    SimulationOptions o;
+    o.model = path;
+    o.header_dir = *directory;
+    o.csv = *directory + "/" + stem + ".csv";
+    o.plot = *directory + "/" + stem + ".png";
+    o.settings.rtol = 1e-10;
+    o.settings.atol = 1e-12;
+    int status = simulate_model(o);
+    std::cerr << "eomgen run: header, trajectory and charts are in " << *directory << "/\n";
+    return status;
   };
 }
 

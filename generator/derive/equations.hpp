@@ -20,6 +20,9 @@ struct Equations {
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;
   std::vector<NamedSymbolic> outputs;
+  /// T + V is a first integral when the inputs are zero: no dissipation, no applied
+  /// forces at u = 0, and no explicit time dependence (Hiller §3.6).
+  bool conserves_energy_without_inputs = false;
 };
 
 }  // namespace eomgen

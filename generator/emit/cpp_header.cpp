@@ -348,10 +348,13 @@ std::string emit_cpp_header(const Equations& e) {
       "inline constexpr std::array<const char*, num_outputs> output_names{{{{{}}}}};\n\n"
       "inline constexpr std::array<double, num_parameters> default_parameters{{{{{}}}}};\n"
       "inline constexpr std::array<double, num_states> default_state{{{{{}}}}};\n"
-      "inline constexpr std::array<double, num_inputs> default_inputs{{{{{}}}}};\n\n",
+      "inline constexpr std::array<double, num_inputs> default_inputs{{{{{}}}}};\n\n"
+      "/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,\n"
+      "/// scleronomic): what an energy-drift check may rely on.\n"
+      "inline constexpr bool conserves_energy_without_inputs = {};\n\n",
       quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
-      number_list(s.input_defaults));
+      number_list(s.input_defaults), e.conserves_energy_without_inputs ? "true" : "false");
   out += fmt::format(
       "/// The parameters by name, with the model's defaults; values() gives them in\n"
       "/// parameter_names order, as the functions below take them.\n"

@@ -114,6 +114,16 @@ Mechanics compute_mechanics(const Model& model) {
   for (const BodyTorque& t : model.torques)
     add_torque(m.generalized_force, t, m.bodies[first_rigid + t.body], model.rigid_bodies[t.body]);
   for (ex& q : m.generalized_force) q = tidy(q, m.motion);
+  // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t
+  GiNaC::exmap at_rest;
+  for (const auto& v : s.velocities) at_rest[v] = 0;
+  m.scleronomic = !m.kinetic_energy.has(s.time) && !m.potential_energy.has(s.time);
+  for (const BodyKinematics& b : m.bodies)
+    for (unsigned a = 0; a < 3; ++a) {
+      bool moves = !b.velocity[a].subs(at_rest).expand().is_zero();
+      bool turns = b.rotates && !b.angular_velocity[a].subs(at_rest).expand().is_zero();
+      m.scleronomic = m.scleronomic && !moves && !turns;
+    }
   return m;
 }
 

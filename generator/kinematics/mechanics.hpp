@@ -36,6 +36,7 @@ struct Mechanics {
   GiNaC::ex potential_energy;        // V: gravity plus [energy] potential
   GiNaC::ex dissipation;             // R, Rayleigh's function
   std::vector<GiNaC::ex> generalized_force;  // Q of the applied forces and torques (without gravity and R)
+  bool scleronomic = true;                   // no body position, rotation, energy or gravity depends on t
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -1,0 +1,204 @@
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "common/output_file.hpp"
+#include "compile/compile_cache.hpp"
+#include "emit/cpp_header.hpp"
+#include "emit/formats.hpp"
+#include "pipeline.hpp"
+#include "report/reports.hpp"
+#include "simulation.hpp"
+
+namespace eomgen::cli {
+
+namespace {
+
+struct Assignment {
+  std::string name;
+  double value;
+};
+
+// "name=value", one per flag; the value a number
+bool parse_assignments(const std::vector<std::string>& texts, const char* flag, std::vector<Assignment>& out) {
+  for (const std::string& text : texts) {
+    std::size_t eq = text.find('=');
+    char* end = nullptr;
+    double value = eq == std::string::npos ? 0 : std::strtod(text.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || eq == 0 || end == text.c_str() + eq + 1 || *end != '\0' || !std::isfinite(value)) {
+      std::cerr << fmt::format("eomgen: error: {} '{}': expected NAME=NUMBER, e.g. {} m=2.5\n", flag, text, flag);
+      return false;
+    }
+    out.push_back({text.substr(0, eq), value});
+  }
+  return true;
+}
+
+std::vector<std::string> names_of(const char* const* names, std::size_t count) {
+  return std::vector<std::string>(names, names + count);
+}
+
+int find_name(const std::vector<std::string>& names, const std::string& name) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+double relative_energy_drift(const runtime::Trajectory& t) {
+  double e0 = t.energies.front(), worst = 0;
+  for (double e : t.energies) worst = std::max(worst, std::abs(e - e0));
+  return worst / std::max(std::abs(e0), 1e-300);
+}
+
+void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const runtime::SimulationResult& r,
+                   bool conservative, bool json) {
+  const runtime::SolverStatistics& s = r.statistics;
+  double drift = relative_energy_drift(r.trajectory);
+  if (json) {
+    std::string failure = r.failed ? fmt::format("{{\"time\": {:.17g}, \"flag\": {}, \"reason\": \"{}\"}}", r.failure_time,
+                                                 r.solver_flag, json_escape(r.failure))
+                                   : "null";
+    std::cout << fmt::format(
+        "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "
+        "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
+        "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
+        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}, \"failure\": {}}}\n",
+        m.name, o.settings.integrator, o.settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
+        s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
+        conservative ? "true" : "false", drift, failure);
+    return;
+  }
+  std::cout << fmt::format("{}: {} from t = {:g} to {:.9g}, {} output rows\n", m.name, o.settings.integrator,
+                           o.settings.t_start, r.trajectory.times.back(), r.trajectory.times.size());
+  std::cout << fmt::format("  steps {}, rhs evaluations {}, Jacobian evaluations {}, error-test failures {}, "
+                           "convergence failures {}, wall time {:.4f} s\n",
+                           s.steps, s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures,
+                           s.convergence_failures, s.wall_seconds);
+  std::cout << fmt::format("  max |E(t) - E(0)| / |E(0)| = {:.3e}{}\n", drift,
+                           conservative ? " (energy is conserved by this model: this is the integration error)"
+                                        : " (the model does not conserve T + V)");
+}
+
+}  // namespace
+
+std::string json_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out;
+}
+
+int simulate_model(const SimulationOptions& o) {
+  Derivation d = derive_model_file(o.model);
+  if (!d.diagnostics.empty()) {
+    std::cerr << d.diagnostics.format();
+    return exit_user_error;
+  }
+  std::string header = emit_cpp_header(*d.equations);
+  if (!o.header_dir.empty()) {
+    std::filesystem::create_directories(o.header_dir);
+    write_file_atomically(o.header_dir + "/" + d.equations->model_name + ".hpp", header);
+  }
+  std::string error;
+  auto loaded = runtime::load_compiled_model(header, d.equations->model_name, error);
+  if (!loaded) {
+    std::cerr << "eomgen: internal error: " << error << "\n";
+    return exit_internal_error;
+  }
+  const eomgen_model_abi& m = *loaded->abi();
+  runtime::Problem problem{&m, std::vector<double>(m.default_parameters, m.default_parameters + m.num_parameters),
+                           std::vector<double>(m.default_inputs, m.default_inputs + m.num_inputs)};
+  std::vector<double> x0(m.default_state, m.default_state + m.num_states);
+  std::vector<Assignment> sets, initials;
+  if (!parse_assignments(o.sets, "--set", sets) || !parse_assignments(o.initials, "--initial", initials))
+    return exit_user_error;
+  auto parameters = names_of(m.parameter_names, m.num_parameters), inputs = names_of(m.input_names, m.num_inputs);
+  for (const Assignment& a : sets) {
+    if (int i = find_name(parameters, a.name); i >= 0) problem.parameters[i] = a.value;
+    else if (int k = find_name(inputs, a.name); k >= 0) problem.inputs[k] = a.value;
+    else {
+      auto all = parameters;
+      all.insert(all.end(), inputs.begin(), inputs.end());
+      std::cerr << fmt::format("eomgen: error: --set {}: no parameter or input of that name; {}\n", a.name,
+                               suggest(a.name, all, "names"));
+      return exit_user_error;
+    }
+  }
+  auto states = names_of(m.state_names, m.num_states);
+  for (const Assignment& a : initials) {
+    int i = find_name(states, a.name);
+    if (i < 0) {
+      std::cerr << fmt::format("eomgen: error: --initial {}: not a coordinate or der(coordinate); {}\n", a.name,
+                               suggest(a.name, states, "states"));
+      return exit_user_error;
+    }
+    x0[i] = a.value;
+  }
+  if (!(o.settings.t_end > o.settings.t_start) || !(o.settings.dt_out > 0) || !(o.settings.rtol > 0) ||
+      !(o.settings.atol > 0) || o.settings.step < 0) {
+    std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";
+    return exit_user_error;
+  }
+  std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, o.settings.integrator, o.settings.t_end);
+  runtime::SimulationResult result = runtime::simulate(problem, x0, o.settings);
+  bool conservative = m.conserves_energy_without_inputs &&
+                      std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
+  if (!o.csv.empty()) {
+    if (std::string failure = write_file_atomically(o.csv, runtime::trajectory_csv(m, result.trajectory)); !failure.empty()) {
+      std::cerr << "eomgen: " << failure << "\n";
+      return exit_user_error;
+    }
+  }
+  if (!o.plot.empty()) {
+    if (std::string failure = runtime::draw_charts(m, result.trajectory, o.plot, conservative); !failure.empty())
+      std::cerr << "eomgen: warning: no chart: " << failure << "\n";
+    else
+      std::cerr << fmt::format("eomgen: charts in {}{}\n", o.plot, conservative ? " and " + runtime::energy_chart_path(o.plot) : "");
+  }
+  print_summary(o, m, result, conservative, o.json);
+  if (result.failed) {
+    std::cerr << fmt::format("eomgen: the simulation failed: {}\n", result.failure);
+    if (!o.csv.empty()) std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the failure\n", o.csv, result.trajectory.times.size());
+    return exit_numerical_failure;
+  }
+  return exit_success;
+}
+
+void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
+  cmd->add_option("--t-end", o.settings.t_end, "End time [s] (default 10)");
+  cmd->add_option("--dt-out", o.settings.dt_out, "Output interval [s] (default 0.01)");
+  cmd->add_option("--integrator", o.settings.integrator, "cvode-bdf (default), cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet")
+      ->check(CLI::IsMember(runtime::integrator_names()));
+  cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
+  cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");
+  cmd->add_option("--step", o.settings.step, "Fixed step of rk4 and verlet [s] (default dt-out/10)");
+  cmd->add_option("--set", o.sets, "Parameter or input value, one per flag: --set m=2.5")->allow_extra_args(false);
+  cmd->add_option("--initial", o.initials, "Initial value, one per flag: --initial phi=0.3 --initial 'der(phi)=1'")->allow_extra_args(false);
+  cmd->add_option("-o,--output", o.csv, "Trajectory CSV file");
+  cmd->add_option("--plot", o.plot, "Chart of the coordinates (PNG); conservative models also get NAME_energy.png");
+}
+
+Command add_simulate_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("simulate", "Generate, compile (cached) and simulate a model");
+  auto o = std::make_shared<SimulationOptions>();
+  cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
+  add_simulation_options(cmd, *o);
+  auto format = std::make_shared<std::string>("text");
+  cmd->add_option("--format", *format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
+  return [cmd, o, format]() -> int {
+    if (!cmd->parsed()) return -1;
+    o->json = *format == "json";
+    return simulate_model(*o);
+  };
+}
+
+}  // namespace eomgen::cli

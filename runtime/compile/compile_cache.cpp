@@ -1,0 +1,121 @@
+#include "compile/compile_cache.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace eomgen::runtime {
+
+extern const char* const model_abi_text;
+
+namespace fs = std::filesystem;
+
+LoadedModel::~LoadedModel() {
+  if (library_) dlclose(library_);
+}
+
+std::string cache_directory() {
+  if (const char* dir = std::getenv("EOMGEN_CACHE_DIR"); dir && *dir) return dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/eomgen";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/eomgen";
+  return fmt::format("/tmp/eomgen-cache-{}", ::getuid());
+}
+
+namespace {
+
+const char* compile_flags = "-std=c++17 -O2 -fPIC -shared";
+
+std::string content_key(const std::string& header_text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const std::string& part : {std::string(EOMGEN_VERSION), std::string(EOMGEN_CXX_COMPILER),
+                                  std::string(compile_flags), std::string(model_abi_text), header_text})
+    for (unsigned char c : part + '\x1f') {
+      h ^= c;
+      h *= 1099511628211ull;
+    }
+  return fmt::format("{:016x}", h);
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// loads and checks an entry; null when it is missing or not what the key promises
+std::unique_ptr<LoadedModel> open_entry(const fs::path& library, const std::string& key, bool compiled_now) {
+  if (!fs::exists(library)) return nullptr;
+  void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) return nullptr;
+  auto entry = reinterpret_cast<const eomgen_model_abi* (*)()>(dlsym(handle, "eomgen_model"));
+  const eomgen_model_abi* abi = entry ? entry() : nullptr;
+  if (!abi || abi->abi_version != EOMGEN_MODEL_ABI_VERSION || key != abi->build_key) {
+    dlclose(handle);
+    return nullptr;
+  }
+  return std::make_unique<LoadedModel>(handle, abi, library.string(), compiled_now);
+}
+
+// builds in a private folder, then renames it into place: all or nothing
+bool build_entry(const fs::path& entry, const std::string& header_text, const std::string& name,
+                 const std::string& key, std::string& error) {
+  std::mt19937_64 random(std::random_device{}());
+  fs::path work = entry.parent_path() / fmt::format(".build-{}-{}-{:x}", key, ::getpid(), random());
+  fs::create_directories(work);
+  std::ofstream(work / "model_abi.h") << model_abi_text;
+  std::ofstream(work / (name + ".hpp")) << header_text;
+  std::ofstream(work / "driver.cpp") << fmt::format(
+      "// built by eomgen {} around {}.hpp\n#include \"model_abi.h\"\n#include \"{}.hpp\"\nEOMGEN_MODEL_ENTRY({}, \"{}\")\n",
+      EOMGEN_VERSION, name, name, name, key);
+  std::string command = fmt::format("cd '{}' && '{}' {} -o model.so driver.cpp > compile.log 2>&1", work.string(),
+                                    EOMGEN_CXX_COMPILER, compile_flags);
+  if (std::system(command.c_str()) != 0) {
+    error = fmt::format("compiling the generated code failed (this is a bug in eomgen; please report it):\n{}",
+                        read_text(work / "compile.log"));
+    fs::remove_all(work);
+    return false;
+  }
+  std::error_code ec;
+  fs::rename(work, entry, ec);
+  if (ec) fs::remove_all(work);  // another process finished first; its entry is used
+  return true;
+}
+
+}  // namespace
+
+std::unique_ptr<LoadedModel> load_compiled_model(const std::string& header_text, const std::string& name,
+                                                 std::string& error) {
+  std::string key = content_key(header_text);
+  fs::path root = cache_directory();
+  std::error_code ec;
+  fs::create_directories(root, ec);
+  if (ec) {
+    error = fmt::format("cannot create the cache folder {}: {} (set EOMGEN_CACHE_DIR to another folder)", root.string(),
+                        ec.message());
+    return nullptr;
+  }
+  fs::path entry = root / fmt::format("{}-{}", name, key);
+  if (auto loaded = open_entry(entry / "model.so", key, false)) return loaded;
+  if (fs::exists(entry)) {
+    // corrupt or foreign: move it aside (atomic), then remove it
+    fs::path trash = root / fmt::format(".stale-{}-{}", key, ::getpid());
+    fs::rename(entry, trash, ec);
+    fs::remove_all(trash, ec);
+  }
+  std::cerr << fmt::format("eomgen: compiling {} with {} (cached in {})\n", name, EOMGEN_CXX_COMPILER, root.string());
+  if (!build_entry(entry, header_text, name, key, error)) return nullptr;
+  if (auto loaded = open_entry(entry / "model.so", key, true)) return loaded;
+  error = fmt::format("the compiled model in {} cannot be loaded: {}", entry.string(), dlerror() ? dlerror() : "unknown");
+  return nullptr;
+}
+
+}  // namespace eomgen::runtime

@@ -1,0 +1,109 @@
+/// @file CVODE: variable-order BDF with the generated dense Jacobian (stiff), or
+/// Adams–Moulton with fixed-point iteration (non-stiff).
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "integrate/stepper.hpp"
+
+namespace eomgen::runtime {
+namespace {
+
+int cvode_rhs(realtype t, N_Vector x, N_Vector xdot, void* data) {
+  return (*static_cast<RightHandSide*>(data))(t, N_VGetArrayPointer(x), N_VGetArrayPointer(xdot));
+}
+
+// SUNDIALS dense matrices are column-major; the generated Jacobian is row-major
+int cvode_jacobian(realtype t, N_Vector x, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
+  auto& f = *static_cast<RightHandSide*>(data);
+  std::vector<double> rows(f.size() * f.size());
+  if (int status = f.jacobian(t, N_VGetArrayPointer(x), rows.data())) return status;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    for (std::size_t j = 0; j < f.size(); ++j) SM_ELEMENT_D(J, i, j) = rows[i * f.size() + j];
+  return 0;
+}
+
+class Cvode : public Stepper {
+ public:
+  Cvode(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool adams) : adams_(adams) {
+    SUNContext_Create(nullptr, &context_);
+    x_ = N_VNew_Serial(static_cast<sunindextype>(f.size()), context_);
+    std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(x_));
+    memory_ = CVodeCreate(adams ? CV_ADAMS : CV_BDF, context_);
+    CVodeInit(memory_, cvode_rhs, s.t_start, x_);
+    CVodeSStolerances(memory_, s.rtol, s.atol);
+    CVodeSetUserData(memory_, &f);
+    CVodeSetErrHandlerFn(memory_, quiet_sundials_messages, nullptr);
+    CVodeSetMaxNumSteps(memory_, s.max_steps);
+    CVodeSetStopTime(memory_, s.t_end);
+    if (adams) {
+      nonlinear_ = SUNNonlinSol_FixedPoint(x_, 0, context_);
+      CVodeSetNonlinearSolver(memory_, nonlinear_);
+      CVodeSetMaxOrd(memory_, 12);
+    } else {
+      matrix_ = SUNDenseMatrix(static_cast<sunindextype>(f.size()), static_cast<sunindextype>(f.size()), context_);
+      linear_ = SUNLinSol_Dense(x_, matrix_, context_);
+      CVodeSetLinearSolver(memory_, linear_, matrix_);
+      CVodeSetJacFn(memory_, cvode_jacobian);
+    }
+    started_ = std::chrono::steady_clock::now();
+  }
+
+  ~Cvode() override {
+    CVodeFree(&memory_);
+    if (linear_) SUNLinSolFree(linear_);
+    if (matrix_) SUNMatDestroy(matrix_);
+    if (nonlinear_) SUNNonlinSolFree(nonlinear_);
+    N_VDestroy(x_);
+    SUNContext_Free(&context_);
+  }
+
+  bool advance(double t_out, std::vector<double>& x) override {
+    realtype reached = 0;
+    int status = CVode(memory_, t_out, x_, &reached, CV_NORMAL);
+    double* data = N_VGetArrayPointer(x_);
+    x.assign(data, data + x.size());
+    if (status >= 0) return true;
+    failure_time = reached;
+    flag = status;
+    reason = fmt::format("CVODE {} stopped with {} ({})", adams_ ? "Adams" : "BDF", CVodeGetReturnFlagName(status), status);
+    return false;
+  }
+
+  SolverStatistics statistics() const override {
+    SolverStatistics s;
+    long value = 0;
+    CVodeGetNumSteps(memory_, &value), s.steps = value;
+    CVodeGetNumRhsEvals(memory_, &value), s.rhs_evaluations = value;
+    if (!adams_) CVodeGetNumJacEvals(memory_, &value), s.jacobian_evaluations = value;
+    CVodeGetNumErrTestFails(memory_, &value), s.error_test_failures = value;
+    CVodeGetNumNonlinSolvConvFails(memory_, &value), s.convergence_failures = value;
+    s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    return s;
+  }
+
+ private:
+  bool adams_;
+  SUNContext context_ = nullptr;
+  N_Vector x_ = nullptr;
+  void* memory_ = nullptr;
+  SUNMatrix matrix_ = nullptr;
+  SUNLinearSolver linear_ = nullptr;
+  SUNNonlinearSolver nonlinear_ = nullptr;
+  std::chrono::steady_clock::time_point started_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stepper> make_cvode(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool adams) {
+  return std::make_unique<Cvode>(f, x0, s, adams);
+}
+
+}  // namespace eomgen::runtime

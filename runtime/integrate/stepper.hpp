@@ -1,0 +1,58 @@
+/// @file What every integrator offers the simulation loop: advance to the next
+/// output time, report statistics, and say why it stopped.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+/// The right-hand side with the checks every integrator needs: a non-finite
+/// value is reported as a recoverable failure (return 1), and remembered.
+class RightHandSide {
+ public:
+  explicit RightHandSide(const Problem& problem) : p_(problem) {}
+  int operator()(double t, const double* x, double* xdot);
+  int jacobian(double t, const double* x, double* J);  // row-major num_states²
+  std::size_t size() const { return p_.model->num_states; }
+  long evaluations() const { return evaluations_; }
+  bool saw_non_finite() const { return non_finite_; }
+  double non_finite_time() const { return non_finite_time_; }
+  const std::vector<double>& non_finite_state() const { return non_finite_state_; }
+
+ private:
+  const Problem& p_;
+  long evaluations_ = 0;
+  bool non_finite_ = false;
+  double non_finite_time_ = 0;
+  std::vector<double> non_finite_state_;
+};
+
+/// SUNDIALS' own messages are dropped: a failure is reported once, by the simulation.
+void quiet_sundials_messages(int error_code, const char* module, const char* function, char* message, void* data);
+
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  /// Advances to t_out; x then holds the state there. On failure returns false,
+  /// with x the state at the time reached, and failure_time/flag/reason set.
+  virtual bool advance(double t_out, std::vector<double>& x) = 0;
+  virtual SolverStatistics statistics() const = 0;
+
+  double failure_time = 0;
+  int flag = 0;
+  std::string reason;
+};
+
+std::unique_ptr<Stepper> make_cvode(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool adams);
+/// Explicit Runge–Kutta: `table` is an ARKODE ERK table id.
+std::unique_ptr<Stepper> make_arkode_explicit(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, int table);
+/// Diagonally implicit Runge–Kutta with the generated Jacobian.
+std::unique_ptr<Stepper> make_arkode_dirk(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
+/// Fixed-step classical RK4, or Störmer–Verlet (leapfrog) on x = [q; v].
+std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool verlet);
+
+}  // namespace eomgen::runtime

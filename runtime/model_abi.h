@@ -1,0 +1,73 @@
+/* @file The plain-C interface of a compiled model: what `eomgen simulate`
+ * loads from the shared object it builds around a generated header. The same
+ * text is embedded in eomgen and written beside each driver, so a driver
+ * needs nothing but the generated header and this file. */
+#ifndef EOMGEN_MODEL_ABI_H
+#define EOMGEN_MODEL_ABI_H
+
+#include <stddef.h>
+
+#define EOMGEN_MODEL_ABI_VERSION 1
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef void (*eomgen_state_function)(double t, const double* x, const double* u, const double* p, double* out);
+typedef void (*eomgen_configuration_function)(double t, const double* x, const double* p, double* out);
+typedef double (*eomgen_energy_function)(double t, const double* x, const double* p);
+
+struct eomgen_model_abi {
+  int abi_version;
+  const char* name;
+  const char* build_key; /* the cache key the shared object was built for */
+  size_t num_coordinates, num_velocities, num_states, num_parameters, num_inputs, num_outputs;
+  const char* const* parameter_names;
+  const char* const* coordinate_names;
+  const char* const* state_names;
+  const char* const* input_names;
+  const char* const* output_names;
+  const double* default_parameters;
+  const double* default_state;
+  const double* default_inputs;
+  int conserves_energy_without_inputs;
+  eomgen_state_function rhs, jacobian_state, jacobian_input, forcing, outputs;
+  eomgen_configuration_function mass_matrix;
+  eomgen_energy_function kinetic_energy, potential_energy;
+};
+
+#ifdef __cplusplus
+}
+
+/* Defines `eomgen_model()` for the model in namespace eomgen::models::NAME. */
+#define EOMGEN_MODEL_ENTRY(NAME, KEY)                                                                  \
+  extern "C" const eomgen_model_abi* eomgen_model() {                                                  \
+    namespace m = eomgen::models::NAME;                                                                \
+    static const eomgen_model_abi abi = {EOMGEN_MODEL_ABI_VERSION, #NAME, KEY, m::num_coordinates,     \
+        m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,            \
+        m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                  \
+        m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                   \
+        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, \
+        m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>, m::forcing<double>,      \
+        m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,                         \
+        m::potential_energy<double>};                                                                   \
+    return &abi;                                                                                       \
+  }
+
+/* The same, as a function with another name, for linking a model into a program. */
+#define EOMGEN_MODEL_FUNCTION(FUNCTION, NAME)                                                          \
+  inline const eomgen_model_abi* FUNCTION() {                                                          \
+    namespace m = eomgen::models::NAME;                                                                \
+    static const eomgen_model_abi abi = {EOMGEN_MODEL_ABI_VERSION, #NAME, "", m::num_coordinates,      \
+        m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,            \
+        m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                  \
+        m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                   \
+        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, \
+        m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>, m::forcing<double>,      \
+        m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,                         \
+        m::potential_energy<double>};                                                                   \
+    return &abi;                                                                                       \
+  }
+#endif
+
+#endif /* EOMGEN_MODEL_ABI_H */

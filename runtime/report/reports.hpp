@@ -1,0 +1,23 @@
+/// @file Reports of a simulation: the trajectory as CSV, and charts drawn by gnuplot.
+#pragma once
+
+#include <string>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+/// Header line, then one row per output time: t, the coordinates, the velocities,
+/// T + V, the outputs; numbers with 17 significant digits.
+std::string trajectory_csv(const eomgen_model_abi& model, const Trajectory& trajectory);
+
+/// Draws the coordinates over time into `png_path`, and when `energy_chart` is set
+/// the relative energy error |E(t) − E(0)|/|E(0)| into the same name with _energy.
+/// Returns an empty string on success, else what went wrong.
+std::string draw_charts(const eomgen_model_abi& model, const Trajectory& trajectory, const std::string& png_path,
+                        bool energy_chart);
+
+/// The path of the energy chart that belongs to `png_path`.
+std::string energy_chart_path(const std::string& png_path);
+
+}  // namespace eomgen::runtime

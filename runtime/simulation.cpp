@@ -1,0 +1,112 @@
+#include "simulation.hpp"
+
+#include <arkode/arkode_butcher_erk.h>
+
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include "integrate/stepper.hpp"
+
+namespace eomgen::runtime {
+
+const std::vector<std::string>& integrator_names() {
+  static const std::vector<std::string> names = {"cvode-bdf", "cvode-adams", "arkode-dp5", "arkode-verner",
+                                                 "arkode-dirk", "rk4", "verlet"};
+  return names;
+}
+
+namespace {
+
+std::unique_ptr<Stepper> make_stepper(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s) {
+  const std::string& name = s.integrator;
+  if (name == "cvode-bdf") return make_cvode(f, x0, s, false);
+  if (name == "cvode-adams") return make_cvode(f, x0, s, true);
+  if (name == "arkode-dp5") return make_arkode_explicit(f, x0, s, ARKODE_DORMAND_PRINCE_7_4_5);
+  // ARKODE 5.4 has no Verner 8(7); Fehlberg's 13-stage 8(7) is its highest-order embedded pair
+  if (name == "arkode-verner") return make_arkode_explicit(f, x0, s, ARKODE_FEHLBERG_13_7_8);
+  if (name == "arkode-dirk") return make_arkode_dirk(f, x0, s);
+  if (name == "rk4") return make_fixed_step(f, x0, s, false);
+  if (name == "verlet") return make_fixed_step(f, x0, s, true);
+  throw std::invalid_argument("unknown integrator " + name);
+}
+
+void record(const Problem& p, double t, const std::vector<double>& x, Trajectory& out) {
+  const eomgen_model_abi& m = *p.model;
+  const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+  out.times.push_back(t);
+  out.states.push_back(x);
+  out.energies.push_back(m.kinetic_energy(t, x.data(), p.parameters.data()) +
+                         m.potential_energy(t, x.data(), p.parameters.data()));
+  std::vector<double> y(m.num_outputs);
+  if (m.num_outputs) m.outputs(t, x.data(), u, p.parameters.data(), y.data());
+  out.outputs.push_back(y);
+}
+
+std::string configuration(const eomgen_model_abi& m, const std::vector<double>& x) {
+  std::string s;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+    s += fmt::format("{}{} = {:.6g}", i ? ", " : "", m.coordinate_names[i], x[i]);
+  return s;
+}
+
+// smallest and largest eigenvalue of the mass matrix at x
+std::pair<double, double> mass_matrix_range(const Problem& p, double t, const std::vector<double>& x) {
+  std::size_t n = p.model->num_coordinates;
+  Eigen::MatrixXd M(n, n);
+  std::vector<double> rows(n * n);
+  p.model->mass_matrix(t, x.data(), p.parameters.data(), rows.data());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) M(i, j) = rows[i * n + j];
+  if (!M.allFinite()) return {NAN, NAN};
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M, Eigen::EigenvaluesOnly);
+  return {eigen.eigenvalues().minCoeff(), eigen.eigenvalues().maxCoeff()};
+}
+
+// why the run stopped, in the words of mechanics where possible
+std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& stepper, const std::vector<double>& x,
+                     double scale) {
+  std::string why = stepper.reason + fmt::format(" at t = {:.9g}", stepper.failure_time);
+  auto [smallest, largest] = mass_matrix_range(p, stepper.failure_time, x);
+  if (std::isnan(smallest) || smallest <= 1e-8 * scale)
+    return why + fmt::format(": the mass matrix is singular (smallest eigenvalue {:.3g}) at {}", smallest,
+                             configuration(*p.model, x));
+  if (f.saw_non_finite())
+    return why + fmt::format(": the right-hand side is not finite (a division by zero, or a function outside "
+                             "its domain) at t = {:.9g}, {}",
+                             f.non_finite_time(), configuration(*p.model, f.non_finite_state()));
+  (void)largest;
+  return why + fmt::format(" at {}", configuration(*p.model, x));
+}
+
+}  // namespace
+
+SimulationResult simulate(const Problem& problem, const std::vector<double>& x0, const SimulationSettings& settings) {
+  SimulationResult result;
+  RightHandSide f(problem);
+  std::vector<double> x = x0;
+  double scale = mass_matrix_range(problem, settings.t_start, x0).second;
+  record(problem, settings.t_start, x, result.trajectory);
+  auto stepper = make_stepper(f, x0, settings);
+  // output times are exact multiples of dt_out, then the final time
+  for (long k = 1;; ++k) {
+    double t = settings.t_start + k * settings.dt_out;
+    bool last = t >= settings.t_end * (1 - 1e-14) - 1e-300;
+    if (last) t = settings.t_end;
+    if (!stepper->advance(t, x)) {
+      result.failed = true;
+      result.failure_time = stepper->failure_time;
+      result.solver_flag = stepper->flag;
+      result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0);
+      if (stepper->failure_time > result.trajectory.times.back()) record(problem, stepper->failure_time, x, result.trajectory);
+      break;
+    }
+    record(problem, t, x, result.trajectory);
+    if (last) break;
+  }
+  result.statistics = stepper->statistics();
+  return result;
+}
+
+}  // namespace eomgen::runtime

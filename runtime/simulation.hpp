@@ -1,0 +1,57 @@
+/// @file Simulating a compiled model: settings, statistics and the result,
+/// plain data shared by the integrators, the reports and the command line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model_abi.h"
+
+namespace eomgen::runtime {
+
+/// A model with its parameter and input values: x' = rhs(t, x, u, p).
+struct Problem {
+  const eomgen_model_abi* model = nullptr;
+  std::vector<double> parameters;  // num_parameters, in parameter_names order
+  std::vector<double> inputs;      // num_inputs, held constant over the run
+};
+
+struct SimulationSettings {
+  double t_start = 0, t_end = 10, dt_out = 0.01;
+  std::string integrator = "cvode-bdf";
+  double rtol = 1e-8, atol = 1e-10;
+  double step = 0;               // fixed step of rk4 and verlet; 0: dt_out/10
+  long max_steps = 200'000;      // between two output times
+};
+
+struct SolverStatistics {
+  long steps = 0, rhs_evaluations = 0, jacobian_evaluations = 0;
+  long error_test_failures = 0, convergence_failures = 0;
+  double wall_seconds = 0;
+};
+
+/// One row per output time: exact multiples of dt_out and the final time.
+struct Trajectory {
+  std::vector<double> times;
+  std::vector<std::vector<double>> states;   // num_states each
+  std::vector<double> energies;              // T + V
+  std::vector<std::vector<double>> outputs;  // num_outputs each
+};
+
+struct SimulationResult {
+  Trajectory trajectory;
+  SolverStatistics statistics;
+  bool failed = false;
+  double failure_time = 0;
+  int solver_flag = 0;
+  std::string failure;  // what went wrong, for the user
+};
+
+/// The integrators by command-line name, the default first.
+const std::vector<std::string>& integrator_names();
+
+/// Integrates from x0 over [t_start, t_end], recording at the output times.
+/// A failure ends the run with `failed` set; the rows before it are kept.
+SimulationResult simulate(const Problem& problem, const std::vector<double>& x0, const SimulationSettings& settings);
+
+}  // namespace eomgen::runtime

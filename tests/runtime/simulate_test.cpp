@@ -1,0 +1,225 @@
+// `eomgen simulate` end to end: energy conservation, an analytic solution for
+// every integrator, the CSV layout, the compile cache, and failures that end
+// with exit status 3 and the trajectory up to the failure.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandRun {
+  int status;
+  std::string out, err;
+};
+
+CommandRun eomgen(const std::string& arguments, const std::string& cache) {
+  std::string scratch = temporary_directory();
+  int status = run_command("EOMGEN_CACHE_DIR='" + cache + "' '" + std::string(EOMGEN_EXECUTABLE) + "' " + arguments +
+                           " > '" + scratch + "/out' 2> '" + scratch + "/err'");
+  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
+}
+
+// the cache shared by these tests, so each model is compiled once per test run
+std::string shared_cache() { return std::string(EOMGEN_BINARY_DIR) + "/test-cache"; }
+
+double json_number(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-+0-9.eE]+)"))) return NAN;
+  return std::stod(m[1]);
+}
+
+std::string write_model(const std::string& name, const std::string& text) {
+  std::string path = temporary_directory() + "/" + name + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::vector<std::vector<double>> read_csv(const std::string& path, std::string& header) {
+  std::ifstream in(path);
+  std::getline(in, header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(Simulate, DoublePendulumConservesEnergyWithTightTolerances) {
+  for (const char* integrator : {"cvode-bdf", "arkode-dp5", "arkode-verner"}) {
+    CommandRun r = eomgen("simulate '" + model_path("double_pendulum") + "' --t-end 10 --rtol 1e-10 --atol 1e-12 --format json --integrator " +
+                       integrator,
+                   shared_cache());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_LT(json_number(r.out, "relative_energy_drift"), 1e-8) << integrator << "\n" << r.out;
+    EXPECT_GT(json_number(r.out, "steps"), 100) << r.out;
+    EXPECT_GT(json_number(r.out, "rhs_evaluations"), 100) << r.out;
+  }
+}
+
+// m x'' = −k x: x(t) = x0 cos(ω t) + v0/ω sin(ω t), ω² = k/m
+TEST(Simulate, EveryIntegratorFollowsTheHarmonicOscillator) {
+  std::string model = write_model("oscillator", R"toml([model]
+name = "oscillator"
+[parameters]
+m = 2.0
+k = 8.0
+[coordinates]
+x = { initial = 0.5, rate = 1.0 }
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*x^2/2"
+)toml");
+  const double omega = 2.0, t_end = 3.0;
+  double exact = 0.5 * std::cos(omega * t_end) + 1.0 / omega * std::sin(omega * t_end);
+  struct Case {
+    const char* integrator;
+    double tolerance;
+  } cases[] = {{"cvode-bdf", 1e-7},   {"cvode-adams", 1e-7}, {"arkode-dp5", 1e-8}, {"arkode-verner", 1e-8},
+               {"arkode-dirk", 1e-7}, {"rk4", 1e-9},         {"verlet", 1e-5}};
+  for (const Case& c : cases) {
+    std::string csv = temporary_directory() + "/x.csv";
+    CommandRun r = eomgen("simulate '" + model + "' --t-end 3 --dt-out 0.5 --rtol 1e-11 --atol 1e-12 --step 1e-3 --integrator " +
+                       c.integrator + " -o '" + csv + "'",
+                   shared_cache());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string header;
+    auto rows = read_csv(csv, header);
+    ASSERT_EQ(rows.size(), 7u);
+    EXPECT_NEAR(rows.back()[1], exact, c.tolerance) << c.integrator;
+  }
+}
+
+TEST(Simulate, CsvHasAHeaderAndARowPerOutputTime) {
+  std::string csv = temporary_directory() + "/dp.csv";
+  CommandRun r = eomgen("simulate '" + model_path("double_pendulum") + "' --t-end 1.005 --dt-out 0.1 -o '" + csv + "'", shared_cache());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::string header;
+  auto rows = read_csv(csv, header);
+  EXPECT_EQ(header, "t,phi1,phi2,der(phi1),der(phi2),energy,tip_x,tip_y");
+  ASSERT_EQ(rows.size(), 12u);  // 0, 0.1, …, 1.0 and the final time
+  for (std::size_t k = 0; k + 1 < rows.size(); ++k) EXPECT_EQ(rows[k][0], k * 0.1);
+  EXPECT_EQ(rows.back()[0], 1.005);
+  EXPECT_EQ(rows[0][1], 0.5);  // the model's initial phi1
+  for (const auto& row : rows) EXPECT_EQ(row.size(), 8u);
+}
+
+TEST(Simulate, SetAndInitialOverrideTheModel) {
+  std::string csv = temporary_directory() + "/p.csv";
+  CommandRun r = eomgen("simulate '" + model_path("pendulum") + "' --t-end 0.1 --set l=2 --initial phi=0.25 --initial 'der(phi)=1' -o '" + csv + "'",
+                 shared_cache());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::string header;
+  auto rows = read_csv(csv, header);
+  EXPECT_EQ(rows[0][1], 0.25);
+  EXPECT_EQ(rows[0][2], 1.0);
+  CommandRun bad = eomgen("simulate '" + model_path("pendulum") + "' --set gg=2", shared_cache());
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("did you mean"), std::string::npos) << bad.err;
+}
+
+TEST(Simulate, SecondRunCompilesNothing) {
+  std::string cache = temporary_directory();
+  CommandRun first = eomgen("simulate '" + model_path("spherical_pendulum") + "' --t-end 0.1", cache);
+  CommandRun second = eomgen("simulate '" + model_path("spherical_pendulum") + "' --t-end 0.1", cache);
+  ASSERT_EQ(first.status, 0) << first.err;
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_NE(first.err.find("compiling spherical_pendulum"), std::string::npos) << first.err;
+  EXPECT_EQ(second.err.find("compiling"), std::string::npos) << second.err;
+  // the same numbers either way, apart from the wall time
+  auto without_time = [](std::string s) { return std::regex_replace(s, std::regex("wall time [0-9.]+ s"), ""); };
+  EXPECT_EQ(without_time(first.out), without_time(second.out));
+}
+
+TEST(Simulate, CorruptCacheEntryIsRebuiltNotLoaded) {
+  std::string cache = temporary_directory();
+  ASSERT_EQ(eomgen("simulate '" + model_path("pendulum") + "' --t-end 0.1", cache).status, 0);
+  int corrupted = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(cache))
+    if (entry.path().filename() == "model.so") {
+      std::ofstream(entry.path(), std::ios::trunc) << "not a shared object";
+      ++corrupted;
+    }
+  ASSERT_EQ(corrupted, 1);
+  CommandRun again = eomgen("simulate '" + model_path("pendulum") + "' --t-end 0.1", cache);
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.err.find("compiling pendulum"), std::string::npos) << again.err;
+}
+
+TEST(Simulate, ConcurrentRunsShareOneCacheEntry) {
+  std::string cache = temporary_directory();
+  std::string command = "EOMGEN_CACHE_DIR='" + cache + "' '" + std::string(EOMGEN_EXECUTABLE) + "' simulate '" +
+                        model_path("cart_pendulum") + "' --t-end 0.1 > /dev/null 2>&1";
+  EXPECT_EQ(run_command("(" + command + " & " + command + " & " + command + " & wait) && " + command), 0);
+  int entries = 0;
+  for (const auto& entry : fs::directory_iterator(cache)) entries += entry.path().filename().string()[0] != '.';
+  EXPECT_EQ(entries, 1);
+}
+
+TEST(Simulate, DivisionByZeroEndsWithExitThreeAndKeepsTheTrajectory) {
+  std::string model = write_model("runaway", R"toml([model]
+name = "runaway"
+[coordinates]
+x = { initial = 0.0, rate = 1.0 }
+[[particles]]
+name = "p"
+mass = "1"
+position = ["x", "0", "0"]
+[[forces]]
+generalized = { x = "1/sqrt(1 - x)" }
+)toml");
+  std::string csv = temporary_directory() + "/runaway.csv";
+  CommandRun r = eomgen("simulate '" + model + "' --t-end 2 --dt-out 0.01 -o '" + csv + "'", shared_cache());
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("the right-hand side is not finite"), std::string::npos) << r.err;
+  std::string header;
+  auto rows = read_csv(csv, header);
+  ASSERT_GT(rows.size(), 50u);
+  EXPECT_LT(rows.back()[0], 2.0);
+  for (std::size_t k = 0; k + 1 < rows.size(); ++k) EXPECT_DOUBLE_EQ(rows[k][0], k * 0.01);
+}
+
+TEST(Simulate, SingularMassMatrixEndsWithExitThreeNamingTheConfiguration) {
+  // T = ½ x² ẋ²: M = x² vanishes at x = 0, reached at t = ½ from x = 1, ẋ = −1
+  std::string model = write_model("vanishing_mass", R"toml([model]
+name = "vanishing_mass"
+[coordinates]
+x = { initial = 1.0, rate = -1.0 }
+[energy]
+kinetic = "x^2*der(x)^2/2"
+)toml");
+  std::string csv = temporary_directory() + "/v.csv";
+  CommandRun r = eomgen("simulate '" + model + "' --t-end 2 -o '" + csv + "'", shared_cache());
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("the mass matrix is singular"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("at x = "), std::string::npos) << r.err;
+  std::string header;
+  auto rows = read_csv(csv, header);
+  EXPECT_NEAR(rows.back()[0], 0.5, 1e-3);
+}
+
+TEST(RunCommand, MainJobDrawsTheCharts) {
+  std::string dir = temporary_directory();
+  CommandRun r = eomgen("run -o '" + dir + "'", shared_cache());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("M[0][1] = l1*l2*m2*cos(phi1 - phi2)"), std::string::npos);
+  for (const char* file : {"double_pendulum.hpp", "double_pendulum.csv", "double_pendulum.png", "double_pendulum_energy.png"})
+    EXPECT_TRUE(fs::exists(dir + "/" + file) && fs::file_size(dir + "/" + file) > 1000) << file;
+}
+
+}  // namespace
+}  // namespace eomgen::test
