@@ -44,6 +44,15 @@ struct Parameters {
 
 namespace detail {
 
+/// The input pointer does not take part in deducing T, so a model without
+/// inputs can be called with u = nullptr.
+template <class T>
+struct input_type {
+  using type = T;
+};
+template <class T>
+using input_t = typename input_type<T>::type;
+
 /// M = L D L^T for the symmetric positive definite 1x1 mass matrix, unrolled.
 /// M, L: 1x1, row-major (L unit lower triangular, only below the diagonal written); D: 1.
 template <class T>
@@ -74,7 +83,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
 /// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 1.
 template <class T>
-void forcing(T t, const T* x, const T* u, const T* p, T* f) {
+void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -91,7 +100,7 @@ void forcing(T t, const T* x, const T* u, const T* p, T* f) {
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
 /// x, xdot: num_states = 2; u: num_inputs (may be null if none); p: num_parameters.
 template <class T>
-void rhs(T t, const T* x, const T* u, const T* p, T* xdot) {
+void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -117,7 +126,7 @@ void rhs(T t, const T* x, const T* u, const T* p, T* xdot) {
 /// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is
 /// M^-1 (df/dx - (dM/dx) q''). J: 2x2, row-major.
 template <class T>
-void jacobian_state(T t, const T* x, const T* u, const T* p, T* J) {
+void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -151,7 +160,7 @@ void jacobian_state(T t, const T* x, const T* u, const T* p, T* J) {
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
 /// B: 2x0, row-major (nothing is written when the model has no inputs).
 template <class T>
-void jacobian_input(T t, const T* x, const T* u, const T* p, T* B) {
+void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
 }
 
@@ -186,7 +195,7 @@ T potential_energy(T t, const T* x, const T* p) {
 
 /// The model's [outputs], in output_names order. y: 0.
 template <class T>
-void outputs(T t, const T* x, const T* u, const T* p, T* y) {
+void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
 }
 

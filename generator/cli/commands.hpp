@@ -34,7 +34,7 @@ int simulate_model(const SimulationOptions& options);
 
 std::string json_escape(const std::string& s);
 
-/// Derives `model_path` and writes NAME.hpp into `directory`; the path written goes to `header_path`.
+/// Derives `model_path` and writes NAME.hpp into `directory`, or to `*header_path` when that is not empty.
 int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path);
 
 /// The model `eomgen run` uses when none is named.

@@ -22,8 +22,11 @@ int generate_header(const std::string& model_path, const std::string& directory,
   }
   std::string text = emit_cpp_header(*d.equations);
   std::error_code ec;
-  std::filesystem::create_directories(directory, ec);
-  std::string path = (std::filesystem::path(directory) / (d.equations->model_name + ".hpp")).string();
+  std::string path = header_path && !header_path->empty()
+                         ? *header_path
+                         : (std::filesystem::path(directory) / (d.equations->model_name + ".hpp")).string();
+  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
   if (std::string failure = write_file_atomically(path, text); !failure.empty()) {
     std::cerr << "eomgen: " << failure << "\n";
     return exit_user_error;
@@ -40,10 +43,12 @@ Command add_generate_command(CLI::App& app) {
   auto model = std::make_shared<std::string>();
   auto directory = std::make_shared<std::string>(".");
   cmd->add_option("MODEL", *model, "Model file (TOML)")->required();
-  cmd->add_option("-o,--output-dir", *directory, "Folder for NAME.hpp (default: the current folder)");
-  return [cmd, model, directory]() -> int {
+  auto header = std::make_shared<std::string>();
+  auto* folder = cmd->add_option("-o,--output-dir", *directory, "Folder for NAME.hpp, NAME the model's name (default: the current folder)");
+  cmd->add_option("--header", *header, "Write the header to exactly this file instead")->excludes(folder);
+  return [cmd, model, directory, header]() -> int {
     if (!cmd->parsed()) return -1;
-    return generate_header(*model, *directory, nullptr);
+    return generate_header(*model, *directory, header.get());
   };
 }
 

@@ -160,7 +160,7 @@ std::string forcing_function(const Equations& e) {
   for (std::size_t i = 0; i < f.size(); ++i) w.line(fmt::format("f[{}] = {};", i, f[i]));
   return function(fmt::format("/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.\n"
                               "/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: {}.\n", f.size()),
-                  "void forcing(T t, const T* x, const T* u, const T* p, T* f)", w.finish(all_unused));
+                  "void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f)", w.finish(all_unused));
 }
 
 // M and f into local arrays, M = L D L^T, then q'' = M^-1 f into `ddq`
@@ -187,7 +187,7 @@ std::string rhs_function(const Equations& e) {
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
   return function(fmt::format("/// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].\n"
                               "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n", 2 * n),
-                  "void rhs(T t, const T* x, const T* u, const T* p, T* xdot)", w.finish(all_unused));
+                  "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
@@ -217,7 +217,7 @@ std::string jacobian_state_function(const Equations& e) {
   }
   return function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is\n"
                               "/// M^-1 (df/dx - (dM/dx) q''). J: {}x{}, row-major.\n", N, N),
-                  "void jacobian_state(T t, const T* x, const T* u, const T* p, T* J)", w.finish(all_unused));
+                  "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
 }
 
 std::string jacobian_input_function(const Equations& e) {
@@ -246,7 +246,7 @@ std::string jacobian_input_function(const Equations& e) {
   }
   return function(fmt::format("/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.\n"
                               "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, m),
-                  "void jacobian_input(T t, const T* x, const T* u, const T* p, T* B)", w.finish(all_unused + std::string(" (void)B;")));
+                  "void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B)", w.finish(all_unused + std::string(" (void)B;")));
 }
 
 std::string scalar_function(const Equations& e, const char* name, const ex& value, const char* doc) {
@@ -263,7 +263,7 @@ std::string outputs_function(const Equations& e) {
   auto code = w.batch(values);
   for (std::size_t i = 0; i < code.size(); ++i) w.line(fmt::format("y[{}] = {};", i, code[i]));
   return function(fmt::format("/// The model's [outputs], in output_names order. y: {}.\n", code.size()),
-                  "void outputs(T t, const T* x, const T* u, const T* p, T* y)", w.finish(all_unused + std::string(" (void)y;")));
+                  "void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y)", w.finish(all_unused + std::string(" (void)y;")));
 }
 
 // L D L^T of a symmetric positive definite n×n matrix, unrolled:
@@ -293,6 +293,10 @@ std::string ldlt_functions(std::size_t n) {
   }
   return fmt::format(
       "namespace detail {{\n\n"
+      "/// The input pointer does not take part in deducing T, so a model without\n"
+      "/// inputs can be called with u = nullptr.\n"
+      "template <class T>\nstruct input_type {{\n  using type = T;\n}};\n"
+      "template <class T>\nusing input_t = typename input_type<T>::type;\n\n"
       "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix, unrolled.\n"
       "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n"
       "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
