@@ -12,22 +12,10 @@
 #include <fmt/format.h>
 
 #include "integrate/stepper.hpp"
+#include "integrate/sundials_callbacks.hpp"
 
 namespace eomgen::runtime {
 namespace {
-
-int ark_rhs(realtype t, N_Vector x, N_Vector xdot, void* data) {
-  return (*static_cast<RightHandSide*>(data))(t, N_VGetArrayPointer(x), N_VGetArrayPointer(xdot));
-}
-
-int ark_jacobian(realtype t, N_Vector x, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
-  auto& f = *static_cast<RightHandSide*>(data);
-  std::vector<double> rows(f.size() * f.size());
-  if (int status = f.jacobian(t, N_VGetArrayPointer(x), rows.data())) return status;
-  for (std::size_t i = 0; i < f.size(); ++i)
-    for (std::size_t j = 0; j < f.size(); ++j) SM_ELEMENT_D(J, i, j) = rows[i * f.size() + j];
-  return 0;
-}
 
 class Arkode : public Stepper {
  public:
@@ -37,7 +25,7 @@ class Arkode : public Stepper {
     x_ = N_VNew_Serial(static_cast<sunindextype>(f.size()), context_);
     std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(x_));
     if (implicit) {
-      memory_ = ARKStepCreate(nullptr, ark_rhs, s.t_start, x_, context_);
+      memory_ = ARKStepCreate(nullptr, sundials_rhs, s.t_start, x_, context_);
       ARKStepSetTableNum(memory_, static_cast<ARKODE_DIRKTableID>(table), ARKODE_ERK_NONE);
       ARKStepSStolerances(memory_, s.rtol, s.atol);
       ARKStepSetUserData(memory_, &f);
@@ -47,9 +35,9 @@ class Arkode : public Stepper {
       matrix_ = SUNDenseMatrix(static_cast<sunindextype>(f.size()), static_cast<sunindextype>(f.size()), context_);
       linear_ = SUNLinSol_Dense(x_, matrix_, context_);
       ARKStepSetLinearSolver(memory_, linear_, matrix_);
-      ARKStepSetJacFn(memory_, ark_jacobian);
+      ARKStepSetJacFn(memory_, sundials_dense_jacobian);
     } else {
-      memory_ = ERKStepCreate(ark_rhs, s.t_start, x_, context_);
+      memory_ = ERKStepCreate(sundials_rhs, s.t_start, x_, context_);
       ERKStepSetTableNum(memory_, static_cast<ARKODE_ERKTableID>(table));
       ERKStepSStolerances(memory_, s.rtol, s.atol);
       ERKStepSetUserData(memory_, &f);

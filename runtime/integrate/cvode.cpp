@@ -12,23 +12,10 @@
 #include <fmt/format.h>
 
 #include "integrate/stepper.hpp"
+#include "integrate/sundials_callbacks.hpp"
 
 namespace eomgen::runtime {
 namespace {
-
-int cvode_rhs(realtype t, N_Vector x, N_Vector xdot, void* data) {
-  return (*static_cast<RightHandSide*>(data))(t, N_VGetArrayPointer(x), N_VGetArrayPointer(xdot));
-}
-
-// SUNDIALS dense matrices are column-major; the generated Jacobian is row-major
-int cvode_jacobian(realtype t, N_Vector x, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
-  auto& f = *static_cast<RightHandSide*>(data);
-  std::vector<double> rows(f.size() * f.size());
-  if (int status = f.jacobian(t, N_VGetArrayPointer(x), rows.data())) return status;
-  for (std::size_t i = 0; i < f.size(); ++i)
-    for (std::size_t j = 0; j < f.size(); ++j) SM_ELEMENT_D(J, i, j) = rows[i * f.size() + j];
-  return 0;
-}
 
 class Cvode : public Stepper {
  public:
@@ -37,7 +24,7 @@ class Cvode : public Stepper {
     x_ = N_VNew_Serial(static_cast<sunindextype>(f.size()), context_);
     std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(x_));
     memory_ = CVodeCreate(adams ? CV_ADAMS : CV_BDF, context_);
-    CVodeInit(memory_, cvode_rhs, s.t_start, x_);
+    CVodeInit(memory_, sundials_rhs, s.t_start, x_);
     CVodeSStolerances(memory_, s.rtol, s.atol);
     CVodeSetUserData(memory_, &f);
     CVodeSetErrHandlerFn(memory_, quiet_sundials_messages, nullptr);
@@ -51,7 +38,7 @@ class Cvode : public Stepper {
       matrix_ = SUNDenseMatrix(static_cast<sunindextype>(f.size()), static_cast<sunindextype>(f.size()), context_);
       linear_ = SUNLinSol_Dense(x_, matrix_, context_);
       CVodeSetLinearSolver(memory_, linear_, matrix_);
-      CVodeSetJacFn(memory_, cvode_jacobian);
+      CVodeSetJacFn(memory_, sundials_dense_jacobian);
     }
     started_ = std::chrono::steady_clock::now();
   }

@@ -47,7 +47,7 @@ std::string draw_charts(const eomgen_model_abi& m, const Trajectory& trajectory,
   plot += "\n";
   if (energy_chart)
     plot += fmt::format(
-        "set output {}\nset title {}\nset ylabel '|E(t) - E(0)| / |E(0)|'\nset logscale y\nset format y '%.0e'\n"
+        "set output {}\nset title {}\nset key inside top left\nset ylabel '|E(t) - E(0)| / |E(0)|'\nset logscale y\nset format y '%.0e'\n"
         "plot {} using 1:{} with lines lw 2 title 'relative energy error'\n",
         quoted(energy_chart_path(png_path)), quoted(fmt::format("{}: energy error", m.name)), quoted(data),
         m.num_coordinates + 2);

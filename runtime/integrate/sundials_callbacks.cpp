@@ -1,0 +1,22 @@
+#include "integrate/sundials_callbacks.hpp"
+
+#include <vector>
+
+#include "integrate/stepper.hpp"
+
+namespace eomgen::runtime {
+
+int sundials_rhs(realtype t, N_Vector x, N_Vector xdot, void* data) {
+  return (*static_cast<RightHandSide*>(data))(t, N_VGetArrayPointer(x), N_VGetArrayPointer(xdot));
+}
+
+int sundials_dense_jacobian(realtype t, N_Vector x, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
+  auto& f = *static_cast<RightHandSide*>(data);
+  std::vector<double> rows(f.size() * f.size());
+  if (int status = f.jacobian(t, N_VGetArrayPointer(x), rows.data())) return status;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    for (std::size_t j = 0; j < f.size(); ++j) SM_ELEMENT_D(J, i, j) = rows[i * f.size() + j];
+  return 0;
+}
+
+}  // namespace eomgen::runtime

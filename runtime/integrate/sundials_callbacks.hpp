@@ -1,0 +1,14 @@
+/// @file The callbacks CVODE and ARKODE share: the right-hand side and the
+/// generated Jacobian, copied from row-major into SUNDIALS' column-major dense matrix.
+#pragma once
+
+#include <nvector/nvector_serial.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+namespace eomgen::runtime {
+
+/// `data` is the RightHandSide.
+int sundials_rhs(realtype t, N_Vector x, N_Vector xdot, void* data);
+int sundials_dense_jacobian(realtype t, N_Vector x, N_Vector fx, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector);
+
+}  // namespace eomgen::runtime
