@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{0.1, 0.5
 inline constexpr std::array<double, num_states> default_state{{0.3, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = false;
@@ -162,6 +165,25 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 1x1; B: 1x0; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[0];
+  const T p_m = p[0];
+  const T p_r = p[1];
+  const T p_g = p[2];
+  const T p_Omega = p[3];
+  const T c0 = cos(q_theta);
+  P[0] = T(0);
+  Q[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c0*p_g*p_m*p_r + p_Omega*p_Omega*p_m*p_r*p_r*sin(q_theta)*sin(q_theta);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

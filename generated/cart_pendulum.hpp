@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{1, 0.2, 
 inline constexpr std::array<double, num_states> default_state{{0, 3, 0, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{0}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;
@@ -234,6 +237,33 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, column);
   B[2] = column[0];
   B[3] = column[1];
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 2x2; B: 2x1; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[1];
+  const T dq_theta = x[3];
+  const T p_m = p[1];
+  const T p_l = p[2];
+  const T p_g = p[3];
+  const T c0 = cos(q_theta);
+  P[0] = T(0);
+  P[1] = -T(2)*dq_theta*p_l*p_m*sin(q_theta);
+  Q[0] = T(0);
+  Q[1] = -c0*dq_theta*dq_theta*p_l*p_m;
+  B[0] = T(1);
+  P[2] = T(0);
+  P[3] = T(0);
+  Q[2] = T(0);
+  Q[3] = c0*p_g*p_l*p_m;
+  B[1] = T(0);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{1, 1, 1,
 inline constexpr std::array<double, num_states> default_state{{0.5, 0, 0, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{0}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;
@@ -253,6 +256,39 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, column);
   B[2] = column[0];
   B[3] = column[1];
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 2x2; B: 2x1; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi1 = x[0];
+  const T dq_phi1 = x[2];
+  const T q_phi2 = x[1];
+  const T dq_phi2 = x[3];
+  const T p_m1 = p[0];
+  const T p_m2 = p[1];
+  const T p_l1 = p[2];
+  const T p_l2 = p[3];
+  const T p_g = p[4];
+  const T c0 = q_phi1 - q_phi2;
+  const T c1 = sin(c0);
+  const T c2 = cos(c0);
+  P[0] = T(0);
+  P[1] = T(2)*c1*dq_phi2*p_l1*p_l2*p_m2;
+  Q[0] = (p_g*p_l1*p_m1 + p_g*p_l1*p_m2)*cos(q_phi1) + c2*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
+  Q[1] = -c2*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
+  B[0] = T(1);
+  P[2] = -T(2)*c1*dq_phi1*p_l1*p_l2*p_m2;
+  P[3] = T(0);
+  Q[2] = -c2*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
+  Q[3] = c2*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 + cos(q_phi2)*p_g*p_l2*p_m2;
+  B[1] = T(0);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

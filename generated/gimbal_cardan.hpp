@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{1, 2, 3,
 inline constexpr std::array<double, num_states> default_state{{0.1, 0.2, 0.3, 0.2, -0.1, 1}};
 inline constexpr std::array<double, num_inputs> default_inputs{{0, 0, 0}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, false, false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;
@@ -379,6 +382,72 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   B[11] = column[0];
   B[14] = column[1];
   B[17] = column[2];
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 3x3; B: 3x3; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T dq_alpha = x[3];
+  const T q_beta = x[1];
+  const T dq_beta = x[4];
+  const T q_gamma = x[2];
+  const T dq_gamma = x[5];
+  const T p_A = p[0];
+  const T p_B = p[1];
+  const T p_C = p[2];
+  const T u_Mx = u[0];
+  const T u_My = u[1];
+  const T u_Mz = u[2];
+  const T c0 = cos(q_beta);
+  const T c1 = c0*c0;
+  const T c2 = -p_A + p_B;
+  const T c3 = cos(q_gamma);
+  const T c4 = sin(q_gamma);
+  const T c5 = sin(q_beta);
+  const T c6 = c3*c3;
+  const T c7 = c4*c4;
+  const T c8 = T(2)*c0*c5*c7*dq_alpha*p_B;
+  const T c9 = -T(2)*c0*c5*dq_alpha*p_C;
+  const T c10 = T(2)*c0*c5*c6*dq_alpha*p_A;
+  const T c11 = -c0*dq_gamma*p_C;
+  const T c12 = -c0*c2*c7*dq_beta;
+  const T c13 = -T(2)*c1*c2*c3*c4*dq_alpha;
+  const T c14 = c0*c2*c6*dq_beta;
+  const T c15 = c5*c5;
+  const T c16 = T(2)*c2*c3*c4*dq_beta + c0*c2*c6*dq_alpha - c0*c2*c7*dq_alpha + c0*dq_alpha*p_C;
+  P[0] = -T(2)*c0*c5*c6*dq_beta*p_A - T(2)*c0*c5*c7*dq_beta*p_B + T(2)*c0*c5*dq_beta*p_C + T(2)*c1*c2*c3*c4*dq_gamma;
+  P[1] = T(2)*c2*c3*c4*c5*dq_beta - c0*c2*c6*dq_gamma + c0*c2*c7*dq_gamma - c10 - c11 - c8 - c9;
+  P[2] = c0*dq_beta*p_C - c12 - c13 - c14;
+  Q[0] = T(0);
+  Q[1] = -T(2)*c1*c6*dq_alpha*dq_beta*p_A - T(2)*c1*c7*dq_alpha*dq_beta*p_B + T(2)*c1*dq_alpha*dq_beta*p_C + T(2)*c15*c6*dq_alpha*dq_beta*p_A + T(2)*c15*c7*dq_alpha*dq_beta*p_B - T(2)*c15*dq_alpha*dq_beta*p_C - T(4)*c0*c2*c3*c4*c5*dq_alpha*dq_gamma + c0*c2*c3*c4*dq_beta*dq_beta - c0*u_Mz + c2*c5*c6*dq_beta*dq_gamma - c2*c5*c7*dq_beta*dq_gamma + c3*c5*u_Mx - c4*c5*u_My - c5*dq_beta*dq_gamma*p_C;
+  Q[2] = T(2)*c1*c2*c6*dq_alpha*dq_gamma - T(2)*c1*c2*c7*dq_alpha*dq_gamma + T(4)*c0*c2*c3*c4*dq_beta*dq_gamma + T(4)*c0*c3*c4*c5*dq_alpha*dq_beta*p_A - T(4)*c0*c3*c4*c5*dq_alpha*dq_beta*p_B + c0*c3*u_My + c0*c4*u_Mx + c2*c5*c6*dq_beta*dq_beta - c2*c5*c7*dq_beta*dq_beta;
+  B[0] = c0*c3;
+  B[1] = -c0*c4;
+  B[2] = c5;
+  P[3] = -c0*c2*c6*dq_gamma + c0*c2*c7*dq_gamma + c10 + c11 + c8 + c9;
+  P[4] = -T(2)*c2*c3*c4*dq_gamma;
+  P[5] = -c16;
+  Q[3] = T(0);
+  Q[4] = c1*c6*dq_alpha*dq_alpha*p_A + c1*c7*dq_alpha*dq_alpha*p_B - c1*dq_alpha*dq_alpha*p_C - c15*c6*dq_alpha*dq_alpha*p_A - c15*c7*dq_alpha*dq_alpha*p_B + c15*dq_alpha*dq_alpha*p_C + c2*c5*c6*dq_alpha*dq_gamma - c2*c5*c7*dq_alpha*dq_gamma + c5*dq_alpha*dq_gamma*p_C;
+  Q[5] = -T(2)*c0*c3*c4*c5*dq_alpha*dq_alpha*p_A + T(2)*c0*c3*c4*c5*dq_alpha*dq_alpha*p_B - T(2)*c2*c6*dq_beta*dq_gamma + T(2)*c2*c7*dq_beta*dq_gamma + T(4)*c0*c2*c3*c4*dq_alpha*dq_gamma - c3*u_Mx + c4*u_My;
+  B[3] = c4;
+  B[4] = c3;
+  B[5] = T(0);
+  P[6] = c0*dq_beta*p_C + c12 + c13 + c14;
+  P[7] = c16;
+  P[8] = T(0);
+  Q[6] = T(0);
+  Q[7] = T(2)*c0*c2*c3*c4*c5*dq_alpha*dq_alpha - c2*c5*c6*dq_alpha*dq_beta + c2*c5*c7*dq_alpha*dq_beta - c5*dq_alpha*dq_beta*p_C;
+  Q[8] = -T(4)*c0*c2*c3*c4*dq_alpha*dq_beta - c1*c2*c6*dq_alpha*dq_alpha + c1*c2*c7*dq_alpha*dq_alpha + c2*c6*dq_beta*dq_beta - c2*c7*dq_beta*dq_beta;
+  B[6] = T(0);
+  B[7] = T(0);
+  B[8] = T(1);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

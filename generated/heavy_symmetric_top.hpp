@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{0.5, 0.0
 inline constexpr std::array<double, num_states> default_state{{0, 0.3, 0, 0, 0, 100}};
 inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, false, true}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;
@@ -293,6 +296,51 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 3x3; B: 3x0; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T dq_psi = x[3];
+  const T q_theta = x[1];
+  const T dq_theta = x[4];
+  const T dq_phi = x[5];
+  const T p_m = p[0];
+  const T p_s = p[1];
+  const T p_A = p[2];
+  const T p_C = p[3];
+  const T p_g = p[4];
+  const T c0 = sin(q_theta);
+  const T c1 = p_A - p_C + p_m*p_s*p_s;
+  const T c2 = cos(q_theta);
+  const T c3 = T(2)*c0*c1*c2*dq_psi - c0*dq_phi*p_C;
+  const T c4 = -c0*dq_theta*p_C;
+  const T c5 = c2*c2;
+  const T c6 = c0*c0;
+  P[0] = T(2)*c0*c1*c2*dq_theta;
+  P[1] = c3;
+  P[2] = c4;
+  Q[0] = T(0);
+  Q[1] = T(2)*c1*c5*dq_psi*dq_theta - T(2)*c1*c6*dq_psi*dq_theta - c2*dq_phi*dq_theta*p_C;
+  Q[2] = T(0);
+  P[3] = -c3;
+  P[4] = T(0);
+  P[5] = c0*dq_psi*p_C;
+  Q[3] = T(0);
+  Q[4] = -c1*c5*dq_psi*dq_psi + c1*c6*dq_psi*dq_psi + c2*dq_phi*dq_psi*p_C - c2*p_g*p_m*p_s;
+  Q[5] = T(0);
+  P[6] = c4;
+  P[7] = -c0*dq_psi*p_C;
+  P[8] = T(0);
+  Q[6] = T(0);
+  Q[7] = -c2*dq_psi*dq_theta*p_C;
+  Q[8] = T(0);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{1, 1, 1,
 inline constexpr std::array<double, num_states> default_state{{0.1, 0.2, 0.3, 0.4, 0, 0, 0, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false, false, false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;
@@ -457,6 +460,89 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 4x4; B: 4x0; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi1 = x[0];
+  const T dq_phi1 = x[4];
+  const T q_phi2 = x[1];
+  const T dq_phi2 = x[5];
+  const T q_phi3 = x[2];
+  const T dq_phi3 = x[6];
+  const T q_phi4 = x[3];
+  const T dq_phi4 = x[7];
+  const T p_m1 = p[0];
+  const T p_m2 = p[1];
+  const T p_m3 = p[2];
+  const T p_m4 = p[3];
+  const T p_l1 = p[4];
+  const T p_l2 = p[5];
+  const T p_l3 = p[6];
+  const T p_l4 = p[7];
+  const T p_g = p[8];
+  const T c0 = -q_phi2;
+  const T c1 = c0 + q_phi1;
+  const T c2 = sin(c1);
+  const T c3 = p_l1*p_l2*p_m2 + p_l1*p_l2*p_m3 + p_l1*p_l2*p_m4;
+  const T c4 = p_l1*p_l3*p_m3 + p_l1*p_l3*p_m4;
+  const T c5 = -q_phi3;
+  const T c6 = c5 + q_phi1;
+  const T c7 = sin(c6);
+  const T c8 = -q_phi1 + q_phi4;
+  const T c9 = sin(-c8);
+  const T c10 = cos(c6);
+  const T c11 = cos(-c8);
+  const T c12 = cos(c1);
+  const T c13 = c0 + q_phi3;
+  const T c14 = sin(-c13);
+  const T c15 = p_l2*p_l3*p_m3 + p_l2*p_l3*p_m4;
+  const T c16 = c0 + q_phi4;
+  const T c17 = sin(-c16);
+  const T c18 = cos(-c13);
+  const T c19 = cos(-c16);
+  const T c20 = c5 + q_phi4;
+  const T c21 = sin(-c20);
+  const T c22 = cos(-c20);
+  P[0] = T(0);
+  P[1] = T(2)*c2*c3*dq_phi2;
+  P[2] = T(2)*c4*c7*dq_phi3;
+  P[3] = T(2)*c9*dq_phi4*p_l1*p_l4*p_m4;
+  Q[0] = (p_g*p_l1*p_m1 + p_g*p_l1*p_m2 + p_g*p_l1*p_m3 + p_g*p_l1*p_m4)*cos(q_phi1) + c10*c4*dq_phi3*dq_phi3 + c11*dq_phi4*dq_phi4*p_l1*p_l4*p_m4 + c12*c3*dq_phi2*dq_phi2;
+  Q[1] = -c12*c3*dq_phi2*dq_phi2;
+  Q[2] = -c10*c4*dq_phi3*dq_phi3;
+  Q[3] = -c11*dq_phi4*dq_phi4*p_l1*p_l4*p_m4;
+  P[4] = -T(2)*c2*c3*dq_phi1;
+  P[5] = T(0);
+  P[6] = T(2)*c14*c15*dq_phi3;
+  P[7] = T(2)*c17*dq_phi4*p_l2*p_l4*p_m4;
+  Q[4] = -c12*c3*dq_phi1*dq_phi1;
+  Q[5] = (p_g*p_l2*p_m2 + p_g*p_l2*p_m3 + p_g*p_l2*p_m4)*cos(q_phi2) + c12*c3*dq_phi1*dq_phi1 + c15*c18*dq_phi3*dq_phi3 + c19*dq_phi4*dq_phi4*p_l2*p_l4*p_m4;
+  Q[6] = -c15*c18*dq_phi3*dq_phi3;
+  Q[7] = -c19*dq_phi4*dq_phi4*p_l2*p_l4*p_m4;
+  P[8] = -T(2)*c4*c7*dq_phi1;
+  P[9] = -T(2)*c14*c15*dq_phi2;
+  P[10] = T(0);
+  P[11] = T(2)*c21*dq_phi4*p_l3*p_l4*p_m4;
+  Q[8] = -c10*c4*dq_phi1*dq_phi1;
+  Q[9] = -c15*c18*dq_phi2*dq_phi2;
+  Q[10] = (p_g*p_l3*p_m3 + p_g*p_l3*p_m4)*cos(q_phi3) + c10*c4*dq_phi1*dq_phi1 + c15*c18*dq_phi2*dq_phi2 + c22*dq_phi4*dq_phi4*p_l3*p_l4*p_m4;
+  Q[11] = -c22*dq_phi4*dq_phi4*p_l3*p_l4*p_m4;
+  P[12] = -T(2)*c9*dq_phi1*p_l1*p_l4*p_m4;
+  P[13] = -T(2)*c17*dq_phi2*p_l2*p_l4*p_m4;
+  P[14] = -T(2)*c21*dq_phi3*p_l3*p_l4*p_m4;
+  P[15] = T(0);
+  Q[12] = -c11*dq_phi1*dq_phi1*p_l1*p_l4*p_m4;
+  Q[13] = -c19*dq_phi2*dq_phi2*p_l2*p_l4*p_m4;
+  Q[14] = -c22*dq_phi3*dq_phi3*p_l3*p_l4*p_m4;
+  Q[15] = c11*dq_phi1*dq_phi1*p_l1*p_l4*p_m4 + c19*dq_phi2*dq_phi2*p_l2*p_l4*p_m4 + c22*dq_phi3*dq_phi3*p_l3*p_l4*p_m4 + cos(q_phi4)*p_g*p_l4*p_m4;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

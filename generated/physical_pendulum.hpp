@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{2, 0.3, 
 inline constexpr std::array<double, num_states> default_state{{1, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{0}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;
@@ -176,6 +179,24 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   column[0] = T(1);
   detail::ldlt_solve(L, D, column);
   B[1] = column[0];
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 1x1; B: 1x1; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi = x[0];
+  const T p_m = p[0];
+  const T p_s = p[1];
+  const T p_g = p[5];
+  P[0] = T(0);
+  Q[0] = cos(q_phi)*p_g*p_m*p_s;
+  B[0] = T(1);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{1, 0.5, 
 inline constexpr std::array<double, num_states> default_state{{0.01, 0, 0, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{0}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = false;
@@ -224,6 +227,30 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, column);
   B[2] = column[0];
   B[3] = column[1];
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 2x2; B: 2x1; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  const T p_k1 = p[2];
+  const T p_k2 = p[3];
+  const T p_d1 = p[4];
+  const T p_d2 = p[5];
+  const T c0 = -p_d2;
+  const T c1 = -p_k2;
+  P[0] = p_d1 + p_d2;
+  P[1] = c0;
+  Q[0] = p_k1 + p_k2;
+  Q[1] = c1;
+  B[0] = T(0);
+  P[2] = c0;
+  P[3] = p_d2;
+  Q[2] = c1;
+  Q[3] = p_k2;
+  B[1] = T(1);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

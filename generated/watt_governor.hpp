@@ -27,6 +27,9 @@ inline constexpr std::array<double, num_parameters> default_parameters{{1, 0.25,
 inline constexpr std::array<double, num_states> default_state{{0, 0.5235987755982988, 3.3658, 0}};
 inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
+/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, false}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = false;
@@ -232,6 +235,38 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
+}
+
+/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
+/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
+/// mass_matrix. P, Q: 2x2; B: 2x0; all row-major.
+template <class T>
+void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T dq_phi = x[2];
+  const T q_theta = x[1];
+  const T dq_theta = x[3];
+  const T p_m = p[0];
+  const T p_l = p[1];
+  const T p_n = p[2];
+  const T p_b = p[4];
+  const T p_kappa = p[5];
+  const T p_g = p[7];
+  const T c0 = sin(q_theta);
+  const T c1 = cos(q_theta);
+  const T c2 = c1*c1;
+  const T c3 = c0*c0;
+  P[0] = T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
+  P[1] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  Q[0] = T(0);
+  Q[1] = T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + c0*p_kappa;
+  P[2] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  P[3] = p_b;
+  Q[2] = T(0);
+  Q[3] = T(2)*c1*p_g*p_l*p_m - T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n + T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

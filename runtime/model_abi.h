@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define EOMGEN_MODEL_ABI_VERSION 1
+#define EOMGEN_MODEL_ABI_VERSION 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -16,6 +16,8 @@ extern "C" {
 typedef void (*eomgen_state_function)(double t, const double* x, const double* u, const double* p, double* out);
 typedef void (*eomgen_configuration_function)(double t, const double* x, const double* p, double* out);
 typedef double (*eomgen_energy_function)(double t, const double* x, const double* p);
+typedef void (*eomgen_linearization_function)(double t, const double* x, const double* u, const double* p, double* P,
+                                              double* Q, double* B);
 
 struct eomgen_model_abi {
   int abi_version;
@@ -31,9 +33,11 @@ struct eomgen_model_abi {
   const double* default_state;
   const double* default_inputs;
   int conserves_energy_without_inputs;
+  const bool* is_cyclic;
   eomgen_state_function rhs, jacobian_state, jacobian_input, forcing, outputs;
   eomgen_configuration_function mass_matrix;
   eomgen_energy_function kinetic_energy, potential_energy;
+  eomgen_linearization_function linearization;
 };
 
 #ifdef __cplusplus
@@ -47,10 +51,10 @@ struct eomgen_model_abi {
         m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,            \
         m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                  \
         m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                   \
-        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, \
+        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, m::is_cyclic.data(), \
         m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>, m::forcing<double>,      \
         m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,                         \
-        m::potential_energy<double>};                                                                   \
+        m::potential_energy<double>, m::linearization<double>};                                         \
     return &abi;                                                                                       \
   }
 
@@ -62,10 +66,10 @@ struct eomgen_model_abi {
         m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,            \
         m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                  \
         m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                   \
-        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, \
+        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, m::is_cyclic.data(), \
         m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>, m::forcing<double>,      \
         m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,                         \
-        m::potential_energy<double>};                                                                   \
+        m::potential_energy<double>, m::linearization<double>};                                         \
     return &abi;                                                                                       \
   }
 #endif

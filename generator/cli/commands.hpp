@@ -19,6 +19,7 @@ using Command = std::function<int()>;
 Command add_derive_command(CLI::App& app);
 Command add_generate_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
+Command add_stability_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
 
 struct SimulationOptions {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/loaded_model.hpp"
 #include "common/output_file.hpp"
 #include "compile/compile_cache.hpp"
 #include "emit/cpp_header.hpp"
@@ -16,36 +17,6 @@
 namespace eomgen::cli {
 
 namespace {
-
-struct Assignment {
-  std::string name;
-  double value;
-};
-
-// "name=value", one per flag; the value a number
-bool parse_assignments(const std::vector<std::string>& texts, const char* flag, std::vector<Assignment>& out) {
-  for (const std::string& text : texts) {
-    std::size_t eq = text.find('=');
-    char* end = nullptr;
-    double value = eq == std::string::npos ? 0 : std::strtod(text.c_str() + eq + 1, &end);
-    if (eq == std::string::npos || eq == 0 || end == text.c_str() + eq + 1 || *end != '\0' || !std::isfinite(value)) {
-      std::cerr << fmt::format("eomgen: error: {} '{}': expected NAME=NUMBER, e.g. {} m=2.5\n", flag, text, flag);
-      return false;
-    }
-    out.push_back({text.substr(0, eq), value});
-  }
-  return true;
-}
-
-std::vector<std::string> names_of(const char* const* names, std::size_t count) {
-  return std::vector<std::string>(names, names + count);
-}
-
-int find_name(const std::vector<std::string>& names, const std::string& name) {
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<int>(i);
-  return -1;
-}
 
 double relative_energy_drift(const runtime::Trajectory& t) {
   double e0 = t.energies.front(), worst = 0;
@@ -98,44 +69,20 @@ std::string json_escape(const std::string& s) {
 }
 
 int simulate_model(const SimulationOptions& o) {
-  Derivation d = derive_model_file(o.model);
-  if (!d.diagnostics.empty()) {
-    std::cerr << d.diagnostics.format();
-    return exit_user_error;
-  }
-  std::string header = emit_cpp_header(*d.equations);
+  LoadedProblem loaded;
+  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   if (!o.header_dir.empty()) {
     std::filesystem::create_directories(o.header_dir);
-    write_file_atomically(o.header_dir + "/" + d.equations->model_name + ".hpp", header);
+    write_file_atomically(o.header_dir + "/" + loaded.equations.model_name + ".hpp", loaded.header);
   }
-  std::string error;
-  auto loaded = runtime::load_compiled_model(header, d.equations->model_name, error);
-  if (!loaded) {
-    std::cerr << "eomgen: internal error: " << error << "\n";
-    return exit_internal_error;
-  }
-  const eomgen_model_abi& m = *loaded->abi();
-  runtime::Problem problem{&m, std::vector<double>(m.default_parameters, m.default_parameters + m.num_parameters),
-                           std::vector<double>(m.default_inputs, m.default_inputs + m.num_inputs)};
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  runtime::Problem& problem = loaded.problem;
   std::vector<double> x0(m.default_state, m.default_state + m.num_states);
-  std::vector<Assignment> sets, initials;
-  if (!parse_assignments(o.sets, "--set", sets) || !parse_assignments(o.initials, "--initial", initials))
-    return exit_user_error;
-  auto parameters = names_of(m.parameter_names, m.num_parameters), inputs = names_of(m.input_names, m.num_inputs);
-  for (const Assignment& a : sets) {
-    if (int i = find_name(parameters, a.name); i >= 0) problem.parameters[i] = a.value;
-    else if (int k = find_name(inputs, a.name); k >= 0) problem.inputs[k] = a.value;
-    else {
-      auto all = parameters;
-      all.insert(all.end(), inputs.begin(), inputs.end());
-      std::cerr << fmt::format("eomgen: error: --set {}: no parameter or input of that name; {}\n", a.name,
-                               suggest(a.name, all, "names"));
-      return exit_user_error;
-    }
-  }
-  auto states = names_of(m.state_names, m.num_states);
+  std::vector<Assignment> initials;
+  if (!parse_assignments(o.initials, "--initial", initials)) return exit_user_error;
+  std::vector<std::string> states(m.state_names, m.state_names + m.num_states);
   for (const Assignment& a : initials) {
-    int i = find_name(states, a.name);
+    int i = index_of(m.state_names, m.num_states, a.name);
     if (i < 0) {
       std::cerr << fmt::format("eomgen: error: --initial {}: not a coordinate or der(coordinate); {}\n", a.name,
                                suggest(a.name, states, "states"));

@@ -25,4 +25,7 @@ struct Equations {
   bool conserves_energy_without_inputs = false;
 };
 
+/// Coordinates on which neither the mass matrix nor the forcing depends (Hiller §3.8).
+std::vector<bool> cyclic_coordinates(const Equations& equations);
+
 }  // namespace eomgen

@@ -4,6 +4,20 @@
 
 namespace eomgen {
 
+std::vector<bool> cyclic_coordinates(const Equations& e) {
+  std::vector<bool> cyclic;
+  std::size_t n = e.forcing.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    bool free = true;
+    for (unsigned i = 0; i < n && free; ++i) {
+      free = !e.forcing[i].has(e.symbols.coordinates[k]);
+      for (unsigned j = 0; j < n && free; ++j) free = !e.mass_matrix(i, j).has(e.symbols.coordinates[k]);
+    }
+    cyclic.push_back(free);
+  }
+  return cyclic;
+}
+
 std::optional<DerivationMethod> find_method(const std::string& name) {
   if (name == "lagrange2") return &derive_lagrange2;
   return std::nullopt;

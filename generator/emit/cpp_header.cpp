@@ -249,6 +249,31 @@ std::string jacobian_input_function(const Equations& e) {
                   "void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B)", w.finish(all_unused + std::string(" (void)B;")));
 }
 
+// M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3): P = -df/dq', Q = -df/dq, B = df/du
+std::string linearization_function(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.forcing.size(), m = s.inputs.size();
+  BodyWriter w(e);
+  std::vector<ex> entries;
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = 0; j < n; ++j) entries.push_back(-e.forcing[i].diff(s.velocities[j]));
+    for (unsigned j = 0; j < n; ++j) entries.push_back(-e.forcing[i].diff(s.coordinates[j]));
+    for (unsigned j = 0; j < m; ++j) entries.push_back(e.forcing[i].diff(s.inputs[j]));
+  }
+  auto code = w.batch(entries);
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = {};", i * n + j, code[at++]));
+    for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("Q[{}] = {};", i * n + j, code[at++]));
+    for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", i * m + j, code[at++]));
+  }
+  return function(fmt::format("/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0\n"
+                              "/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from\n"
+                              "/// mass_matrix. P, Q: {0}x{0}; B: {0}x{1}; all row-major.\n", n, m),
+                  "void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B)",
+                  w.finish(all_unused + std::string(" (void)B;")));
+}
+
 std::string scalar_function(const Equations& e, const char* name, const ex& value, const char* doc) {
   BodyWriter w(e);
   auto code = w.batch({value});
@@ -306,6 +331,12 @@ std::string ldlt_functions(std::size_t n) {
       n, factor, solve);
 }
 
+std::string cyclic_list(const Equations& e) {
+  std::string out;
+  for (bool c : cyclic_coordinates(e)) out += std::string(out.empty() ? "" : ", ") + (c ? "true" : "false");
+  return out;
+}
+
 std::string source_name(const std::string& path) {
   std::string base = path.substr(path.find_last_of('/') + 1);
   return path.find("models/") != std::string::npos || path.rfind("models", 0) == 0 ? "models/" + base : base;
@@ -353,12 +384,14 @@ std::string emit_cpp_header(const Equations& e) {
       "inline constexpr std::array<double, num_parameters> default_parameters{{{{{}}}}};\n"
       "inline constexpr std::array<double, num_states> default_state{{{{{}}}}};\n"
       "inline constexpr std::array<double, num_inputs> default_inputs{{{{{}}}}};\n\n"
+      "/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).\n"
+      "inline constexpr std::array<bool, num_coordinates> is_cyclic{{{{{}}}}};\n\n"
       "/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,\n"
       "/// scleronomic): what an energy-drift check may rely on.\n"
       "inline constexpr bool conserves_energy_without_inputs = {};\n\n",
       quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
-      number_list(s.input_defaults), e.conserves_energy_without_inputs ? "true" : "false");
+      number_list(s.input_defaults), cyclic_list(e), e.conserves_energy_without_inputs ? "true" : "false");
   out += fmt::format(
       "/// The parameters by name, with the model's defaults; values() gives them in\n"
       "/// parameter_names order, as the functions below take them.\n"
@@ -367,7 +400,7 @@ std::string emit_cpp_header(const Equations& e) {
       members, values);
   out += ldlt_functions(n);
   out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
-         jacobian_input_function(e);
+         jacobian_input_function(e) + linearization_function(e);
   out += scalar_function(e, "kinetic_energy", e.kinetic_energy,
                          "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n");
   out += scalar_function(e, "potential_energy", e.potential_energy,

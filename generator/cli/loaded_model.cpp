@@ -1,0 +1,66 @@
+#include "cli/loaded_model.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "emit/cpp_header.hpp"
+
+namespace eomgen::cli {
+
+bool parse_assignments(const std::vector<std::string>& texts, const char* flag, std::vector<Assignment>& out) {
+  for (const std::string& text : texts) {
+    std::size_t eq = text.find('=');
+    char* end = nullptr;
+    double value = eq == std::string::npos ? 0 : std::strtod(text.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || eq == 0 || end == text.c_str() + eq + 1 || *end != '\0' || !std::isfinite(value)) {
+      std::cerr << fmt::format("eomgen: error: {} '{}': expected NAME=NUMBER, e.g. {} m=2.5\n", flag, text, flag);
+      return false;
+    }
+    out.push_back({text.substr(0, eq), value});
+  }
+  return true;
+}
+
+int index_of(const char* const* names, std::size_t count, const std::string& name) {
+  for (std::size_t i = 0; i < count; ++i)
+    if (name == names[i]) return static_cast<int>(i);
+  return -1;
+}
+
+std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out) {
+  Derivation d = derive_model_file(model);
+  if (!d.diagnostics.empty()) {
+    std::cerr << d.diagnostics.format();
+    return exit_user_error;
+  }
+  out.equations = *d.equations;
+  out.header = emit_cpp_header(out.equations);
+  std::string error;
+  out.compiled = runtime::load_compiled_model(out.header, out.equations.model_name, error);
+  if (!out.compiled) {
+    std::cerr << "eomgen: internal error: " << error << "\n";
+    return exit_internal_error;
+  }
+  const eomgen_model_abi& m = *out.compiled->abi();
+  out.problem = {&m, std::vector<double>(m.default_parameters, m.default_parameters + m.num_parameters),
+                 std::vector<double>(m.default_inputs, m.default_inputs + m.num_inputs)};
+  std::vector<Assignment> assignments;
+  if (!parse_assignments(sets, "--set", assignments)) return exit_user_error;
+  for (const Assignment& a : assignments) {
+    if (int i = index_of(m.parameter_names, m.num_parameters, a.name); i >= 0) out.problem.parameters[i] = a.value;
+    else if (int k = index_of(m.input_names, m.num_inputs, a.name); k >= 0) out.problem.inputs[k] = a.value;
+    else {
+      std::vector<std::string> all(m.parameter_names, m.parameter_names + m.num_parameters);
+      all.insert(all.end(), m.input_names, m.input_names + m.num_inputs);
+      std::cerr << fmt::format("eomgen: error: --set {}: no parameter or input of that name; {}\n", a.name,
+                               suggest(a.name, all, "names"));
+      return exit_user_error;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,38 @@
+/// @file What the numeric commands share: derive a model file, compile its
+/// header (cached), load it, and apply --set assignments.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compile/compile_cache.hpp"
+#include "pipeline.hpp"
+#include "simulation.hpp"
+
+namespace eomgen::cli {
+
+struct Assignment {
+  std::string name;
+  double value;
+};
+
+/// "name=value", one per flag, the value a number; reports mistakes on stderr.
+bool parse_assignments(const std::vector<std::string>& texts, const char* flag, std::vector<Assignment>& out);
+
+struct LoadedProblem {
+  Equations equations;
+  std::unique_ptr<runtime::LoadedModel> compiled;
+  runtime::Problem problem;  // parameters and inputs with --set applied
+  std::string header;        // the generated header text
+};
+
+/// Derives, compiles and loads; applies --set to parameters or inputs. Returns the
+/// exit status on failure (2 for the user's mistakes, 1 for internal errors).
+std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out);
+
+/// Index of `name` in a C name table, or −1.
+int index_of(const char* const* names, std::size_t count, const std::string& name);
+
+}  // namespace eomgen::cli

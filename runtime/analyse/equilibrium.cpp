@@ -1,0 +1,81 @@
+#include "analyse/equilibrium.hpp"
+
+#include <cmath>
+
+#include <Eigen/Dense>
+
+namespace eomgen::runtime {
+
+namespace {
+
+struct Derivatives {
+  Eigen::VectorXd f;
+  Eigen::MatrixXd P, Q;  // −∂f/∂q', −∂f/∂q
+};
+
+Derivatives evaluate(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_coordinates;
+  const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+  std::vector<double> f(n), P(n * n), Q(n * n), B(n * m.num_inputs + 1);
+  m.forcing(0.0, x.data(), u, p.parameters.data(), f.data());
+  m.linearization(0.0, x.data(), u, p.parameters.data(), P.data(), Q.data(), B.data());
+  Derivatives d{Eigen::Map<Eigen::VectorXd>(f.data(), n),
+                Eigen::Map<Eigen::Matrix<double, -1, -1, Eigen::RowMajor>>(P.data(), n, n),
+                Eigen::Map<Eigen::Matrix<double, -1, -1, Eigen::RowMajor>>(Q.data(), n, n)};
+  return d;
+}
+
+// zero, for this model: relative to the size of its generalized stiffness at the state
+double tolerance_for(const Derivatives& d) { return 1e-9 * std::max(1.0, d.Q.cwiseAbs().maxCoeff()); }
+
+}  // namespace
+
+Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state) {
+  Derivatives d = evaluate(problem, state);
+  Equilibrium e;
+  e.state = std::move(state);
+  e.residual = d.f.cwiseAbs().maxCoeff();
+  e.tolerance = tolerance_for(d);
+  e.converged = e.residual <= e.tolerance;
+  return e;
+}
+
+Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
+  const eomgen_model_abi& m = *problem.model;
+  std::size_t n = m.num_coordinates;
+  std::vector<double> x = start;
+  std::vector<int> unknowns;  // index into x
+  for (std::size_t i = 0; i < n; ++i) {
+    if (m.is_cyclic[i]) unknowns.push_back(static_cast<int>(n + i));
+    else {
+      unknowns.push_back(static_cast<int>(i));
+      x[n + i] = 0;
+    }
+  }
+  Equilibrium e;
+  for (e.iterations = 0; e.iterations < 100; ++e.iterations) {
+    Derivatives d = evaluate(problem, x);
+    e.residual = d.f.cwiseAbs().maxCoeff();
+    e.tolerance = tolerance_for(d);
+    if (!std::isfinite(e.residual)) break;
+    if (e.residual <= 1e-3 * e.tolerance) break;
+    // ∂f/∂q = −Q, ∂f/∂q' = −P; Newton step on the unknowns (least squares when rank deficient)
+    Eigen::MatrixXd J(n, unknowns.size());
+    for (std::size_t k = 0; k < unknowns.size(); ++k) {
+      int i = unknowns[k];
+      J.col(k) = i < static_cast<int>(n) ? Eigen::VectorXd(-d.Q.col(i)) : Eigen::VectorXd(-d.P.col(i - n));
+    }
+    Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-d.f);
+    // damped: never move an angle by more than half a radian at once
+    double largest = step.cwiseAbs().maxCoeff(), scale = largest > 0.5 ? 0.5 / largest : 1.0;
+    for (std::size_t k = 0; k < unknowns.size(); ++k) x[unknowns[k]] += scale * step[k];
+    if (scale == 1.0 && largest <= 1e-14 * (1 + Eigen::Map<Eigen::VectorXd>(x.data(), x.size()).cwiseAbs().maxCoeff()))
+      break;
+  }
+  Equilibrium checked = check_equilibrium(problem, x);
+  checked.iterations = e.iterations;
+  return checked;
+}
+
+}  // namespace eomgen::runtime

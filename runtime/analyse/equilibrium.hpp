@@ -1,0 +1,29 @@
+/// @file Equilibria and steady motions: states with q' = 0 for the non-cyclic
+/// coordinates, constant velocities of the cyclic ones, and f(q, q', u) = 0
+/// (Hiller §7.1), found by Newton's method with the generated derivatives.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+struct Equilibrium {
+  std::vector<double> state;  // x = [q; q']
+  double residual = 0;        // max |f| at the state
+  double tolerance = 0;       // what counts as zero for this model
+  bool converged = false;
+  int iterations = 0;
+};
+
+/// Checks a fully given state: named values, other coordinates at `start`, other velocities zero.
+Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state);
+
+/// Newton's method on f = 0 from `start`; the unknowns are the non-cyclic coordinates
+/// and the velocities of the cyclic ones; the other velocities are zero.
+Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start);
+
+}  // namespace eomgen::runtime

@@ -1,0 +1,238 @@
+#include "analyse/linear_stability.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace eomgen::runtime {
+
+namespace {
+
+using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
+
+struct SecondOrder {
+  Eigen::MatrixXd M, P, Q, B;
+};
+
+SecondOrder linearize(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_coordinates, k = m.num_inputs;
+  const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+  std::vector<double> M(n * n), P(n * n), Q(n * n), B(n * k + 1);
+  m.mass_matrix(0.0, x.data(), p.parameters.data(), M.data());
+  m.linearization(0.0, x.data(), u, p.parameters.data(), P.data(), Q.data(), B.data());
+  return {Eigen::Map<RowMajor>(M.data(), n, n), Eigen::Map<RowMajor>(P.data(), n, n),
+          Eigen::Map<RowMajor>(Q.data(), n, n), Eigen::Map<RowMajor>(B.data(), n, k)};
+}
+
+// reduced state: the non-cyclic coordinates, then all velocities
+// A = [[0, S], [−M⁻¹Q_r, −M⁻¹P]], with S picking the non-cyclic velocities
+void first_order(const eomgen_model_abi& m, const SecondOrder& s, Eigen::MatrixXd& A, Eigen::MatrixXd& B,
+                 std::vector<std::string>* names) {
+  std::size_t n = m.num_coordinates;
+  std::vector<int> kept;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!m.is_cyclic[i]) kept.push_back(static_cast<int>(i));
+  std::size_t r = kept.size(), N = r + n;
+  A = Eigen::MatrixXd::Zero(N, N);
+  B = Eigen::MatrixXd::Zero(N, s.B.cols());
+  Eigen::LDLT<Eigen::MatrixXd> mass(s.M);
+  Eigen::MatrixXd Qr(n, r);
+  for (std::size_t k = 0; k < r; ++k) {
+    A(k, r + kept[k]) = 1;
+    Qr.col(k) = s.Q.col(kept[k]);
+  }
+  A.block(r, 0, n, r) = -mass.solve(Qr);
+  A.block(r, r, n, n) = -mass.solve(s.P);
+  if (s.B.cols()) B.block(r, 0, n, s.B.cols()) = mass.solve(s.B);
+  if (names) {
+    names->clear();
+    for (int k : kept) names->push_back(m.coordinate_names[k]);
+    for (std::size_t i = 0; i < n; ++i) names->push_back(m.state_names[n + i]);
+  }
+}
+
+struct Spectrum {
+  std::vector<std::complex<double>> eigenvalues;
+  double tolerance;
+};
+
+Spectrum spectrum(const Eigen::MatrixXd& A) {
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, false);
+  Spectrum s{{}, 1e-9 * std::max(1.0, A.cwiseAbs().maxCoeff())};
+  for (Eigen::Index i = 0; i < A.rows(); ++i) s.eigenvalues.push_back(solver.eigenvalues()[i]);
+  std::sort(s.eigenvalues.begin(), s.eigenvalues.end(), [](auto a, auto b) {
+    return a.real() != b.real() ? a.real() > b.real() : a.imag() > b.imag();
+  });
+  return s;
+}
+
+// geometric multiplicity of λ: the dimension of the null space of A − λI
+int null_space_dimension(const Eigen::MatrixXd& A, std::complex<double> lambda, double tolerance) {
+  Eigen::MatrixXcd shifted = A.cast<std::complex<double>>();
+  shifted.diagonal().array() -= lambda;
+  Eigen::FullPivLU<Eigen::MatrixXcd> lu(shifted);
+  lu.setThreshold(std::sqrt(tolerance));
+  return static_cast<int>(A.rows() - lu.rank());
+}
+
+struct Verdict {
+  std::string verdict;
+  double degree;
+  int cyclic_zeros;
+};
+
+Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
+  Verdict v{"asymptotically_stable", -INFINITY, 0};
+  std::vector<std::complex<double>> on_axis;
+  for (auto l : s.eigenvalues) {
+    bool zero = std::abs(l) <= std::sqrt(s.tolerance);
+    if (zero && v.cyclic_zeros < cyclic) {  // a conserved cyclic momentum
+      ++v.cyclic_zeros;
+      continue;
+    }
+    v.degree = std::max(v.degree, l.real());
+    if (l.real() > s.tolerance) v.verdict = "unstable";
+    else if (std::abs(l.real()) <= s.tolerance) on_axis.push_back(l);
+  }
+  if (v.degree == -INFINITY) v.degree = 0;
+  if (v.verdict == "unstable") return v;
+  for (auto l : on_axis) {
+    int algebraic = 0;
+    for (auto k : s.eigenvalues) algebraic += std::abs(k - l) <= std::sqrt(s.tolerance);
+    if (null_space_dimension(A, l, s.tolerance) < algebraic) return {"unstable", v.degree, v.cyclic_zeros};
+  }
+  if (!on_axis.empty()) v.verdict = "marginally_stable";
+  return v;
+}
+
+std::vector<double> polynomial_from_roots(const std::vector<std::complex<double>>& roots) {
+  std::vector<std::complex<double>> c{1.0};
+  for (auto r : roots) {
+    c.push_back(0.0);
+    for (std::size_t k = c.size() - 1; k > 0; --k) c[k] -= r * c[k - 1];
+  }
+  std::vector<double> real;
+  for (auto x : c) real.push_back(x.real());
+  return real;
+}
+
+bool positive_definite(const Eigen::MatrixXd& S, double tolerance) {
+  return S.rows() == 0 || Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S).eigenvalues().minCoeff() > tolerance;
+}
+
+int negative_eigenvalues(const Eigen::MatrixXd& S, double tolerance) {
+  auto values = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S).eigenvalues();
+  return static_cast<int>((values.array() < -tolerance).count());
+}
+
+// Hiller §8.2: what the structure M q'' + (D+G) q' + (K+N) q = 0 decides by itself
+std::vector<std::string> theorems(const StabilityReport& r, bool has_cyclic) {
+  if (has_cyclic)
+    return {"force-structure theorems not applied: the reduced system has cyclic coordinates (their velocities stay "
+            "in the state)"};
+  double scale = 1e-10 * std::max({1.0, r.K.cwiseAbs().maxCoeff(), r.D.cwiseAbs().maxCoeff(), r.G.cwiseAbs().maxCoeff()});
+  bool d0 = r.D.cwiseAbs().maxCoeff() <= scale, g0 = r.G.cwiseAbs().maxCoeff() <= scale,
+       n0 = r.N.cwiseAbs().maxCoeff() <= scale;
+  bool k_pd = positive_definite(r.K, scale), d_pd = positive_definite(r.D, scale);
+  int unstable_dof = negative_eigenvalues(r.K, scale);
+  std::vector<std::string> out;
+  if (!n0) {
+    if (d0 && g0)
+      out.push_back("Merkin: potential and circulatory forces alone cannot make an equilibrium asymptotically stable");
+    out.push_back("circulatory forces (N != 0) present: the force structure does not decide, the eigenvalues do "
+                  "(divergence or flutter possible)");
+    return out;
+  }
+  if (d0 && g0) {
+    if (k_pd) out.push_back("Lagrange-Dirichlet: K positive definite with only potential forces: stable");
+    else if (unstable_dof > 0)
+      out.push_back(fmt::format("Lyapunov-Chetaev: conservative system with {} negative eigenvalue(s) of K: unstable", unstable_dof));
+    return out;
+  }
+  if (k_pd && d_pd)
+    out.push_back("Thomson-Tait-Chetaev: complete damping added to a positive definite K makes the equilibrium "
+                  "asymptotically stable, gyroscopic forces or not");
+  else if (k_pd)
+    out.push_back("Kelvin-Tait: damping and gyroscopic forces cannot destroy the stability of a positive definite K");
+  if (!k_pd && unstable_dof > 0 && !g0 && d0) {
+    if (unstable_dof % 2 == 1)
+      out.push_back(fmt::format("Kelvin-Thomson-Tait: gyroscopic forces cannot stabilize an odd number ({}) of unstable "
+                                "degrees of freedom: unstable", unstable_dof));
+    else
+      out.push_back(fmt::format("Kelvin-Thomson-Tait: gyroscopic stabilization of an even number ({}) of unstable "
+                                "degrees of freedom is possible; the eigenvalues decide", unstable_dof));
+  }
+  if (!k_pd && unstable_dof > 0 && d_pd)
+    out.push_back("Thomson-Tait-Chetaev: with complete damping, an equilibrium with K not positive definite is "
+                  "unstable (damping destroys gyroscopic stabilization)");
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> hurwitz_determinants(const std::vector<double>& c) {
+  int n = static_cast<int>(c.size()) - 1;
+  auto at = [&](int k) { return k >= 0 && k <= n ? c[k] : 0.0; };
+  Eigen::MatrixXd H(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) H(i, j) = at(2 * j - i + 1);
+  std::vector<double> minors;
+  for (int k = 1; k <= n; ++k) minors.push_back(H.topLeftCorner(k, k).determinant());
+  return minors;
+}
+
+std::string phase_plane_type(const Eigen::Matrix2d& A) {
+  double tr = A.trace(), det = A.determinant(), scale = std::max(1.0, A.cwiseAbs().maxCoeff());
+  double eps = 1e-12 * scale * scale, disc = tr * tr - 4 * det;
+  auto sense = [&](const char* stable, const char* unstable) { return tr < 0 ? stable : unstable; };
+  if (std::abs(det) <= eps)
+    return std::abs(tr) <= 1e-12 * scale ? "degenerate: zero matrix or uniform motion (double zero eigenvalue)"
+                                         : "degenerate: a line of equilibria (one zero eigenvalue)";
+  if (det < 0) return "saddle";
+  if (std::abs(disc) <= eps)
+    return (A - 0.5 * tr * Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff() <= 1e-12 * scale
+               ? sense("stable star (proper node)", "unstable star (proper node)")
+               : sense("stable degenerate node", "unstable degenerate node");
+  if (disc > 0) return sense("stable node", "unstable node");
+  if (std::abs(tr) <= 1e-12 * scale) return "centre";
+  return sense("stable focus", "unstable focus");
+}
+
+StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *problem.model;
+  StabilityReport r;
+  SecondOrder s = linearize(problem, x);
+  r.M = s.M, r.P = s.P, r.Q = s.Q, r.B = s.B;
+  r.D = (s.P + s.P.transpose()) / 2, r.G = (s.P - s.P.transpose()) / 2;
+  r.K = (s.Q + s.Q.transpose()) / 2, r.N = (s.Q - s.Q.transpose()) / 2;
+  first_order(m, s, r.A, r.B_state, &r.state_names);
+  int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
+  Spectrum sp = spectrum(r.A);
+  r.eigenvalues = sp.eigenvalues;
+  Verdict v = judge(r.A, sp, cyclic);
+  r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
+  for (auto l : r.eigenvalues)
+    if (l.imag() >= 0) {
+      double size = std::abs(l);
+      r.modes.push_back({l, std::abs(l.imag()), size > 0 ? -l.real() / size : 0.0});
+    }
+  r.characteristic_polynomial = polynomial_from_roots(r.eigenvalues);
+  r.hurwitz = hurwitz_determinants(r.characteristic_polynomial);
+  r.theorems = theorems(r, cyclic > 0);
+  if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
+  return r;
+}
+
+double stability_degree(const Problem& problem, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *problem.model;
+  SecondOrder s = linearize(problem, x);
+  Eigen::MatrixXd A, B;
+  first_order(m, s, A, B, nullptr);
+  int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
+  Spectrum sp = spectrum(A);
+  return judge(A, sp, cyclic).degree;
+}
+
+}  // namespace eomgen::runtime

@@ -1,0 +1,53 @@
+/// @file Stability of an equilibrium from its linearization (Hiller §5.3, §7,
+/// §8): M q'' + (D + G) q' + (K + N) q = B u, the state matrix A of the reduced
+/// system (positions of cyclic coordinates dropped), its eigenvalues, the
+/// verdict, the modes, the characteristic polynomial with its Hurwitz
+/// determinants, the classical results on the force structure, and the
+/// phase-plane type of a two-state system.
+#pragma once
+
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+struct Mode {
+  std::complex<double> eigenvalue;
+  double frequency;      // |Im λ|, rad/s
+  double damping_ratio;  // −Re λ / |λ| (1 for a real negative eigenvalue, 0 on the imaginary axis)
+};
+
+struct StabilityReport {
+  std::vector<std::string> state_names;  // of the reduced state
+  Eigen::MatrixXd M, P, Q, D, G, K, N, B;  // second-order form, all coordinates
+  Eigen::MatrixXd A, B_state;              // reduced first-order form
+  std::vector<std::complex<double>> eigenvalues;  // sorted by decreasing real part
+  std::string verdict;                            // asymptotically_stable | marginally_stable | unstable
+  double stability_degree = 0;                    // largest real part that counts for the verdict
+  int cyclic_zero_eigenvalues = 0;                // zero eigenvalues of conserved cyclic momenta, left out
+  std::vector<Mode> modes;
+  std::vector<double> characteristic_polynomial;  // det(λI − A), highest power first (leading 1)
+  std::vector<double> hurwitz;                    // leading principal minors of the Hurwitz matrix
+  std::vector<std::string> theorems;
+  std::string phase_plane;                        // two-state systems only
+};
+
+/// Analyses the equilibrium x (from find_equilibrium or check_equilibrium).
+StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x);
+
+/// Only the largest real part of the reduced system's eigenvalues that counts for the
+/// verdict: the quantity of a stability map.
+double stability_degree(const Problem& problem, const std::vector<double>& x);
+
+/// Hurwitz determinants of a polynomial given highest power first.
+std::vector<double> hurwitz_determinants(const std::vector<double>& coefficients);
+
+/// The classification of x' = A x for 2×2 A (node, focus, saddle, centre, ...).
+std::string phase_plane_type(const Eigen::Matrix2d& A);
+
+}  // namespace eomgen::runtime
