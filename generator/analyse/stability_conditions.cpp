@@ -191,6 +191,7 @@ StabilityConditions stability_conditions(const Equations& e, const std::vector<s
     c.push_back((polynomial.coeff(out.lambda, k) * scale).expand());
     out.characteristic_polynomial += c.back() * GiNaC::pow(out.lambda, k);
   }
+  out.characteristic_polynomial = out.characteristic_polynomial.expand();
   // all coefficients positive, and the inner Hurwitz determinants Δ_2 … Δ_{n−1} (Liénard–Chipart would need fewer)
   auto at = [&](int k) { return k >= 0 && k <= degree ? c[k] : ex(0); };
   for (int k = 0; k <= degree; ++k) {

@@ -43,6 +43,7 @@ std::string json_numbers(const std::vector<double>& v) {
 }
 
 std::string complex_text(std::complex<double> z) {
+  z += std::complex<double>(0.0, 0.0);  // no "-0"
   if (std::abs(z.imag()) < 1e-300) return fmt::format("{:.6g}", z.real());
   return fmt::format("{:.6g} {} {:.6g}i", z.real(), z.imag() < 0 ? "-" : "+", std::abs(z.imag()));
 }
@@ -52,7 +53,7 @@ std::string matrix_text(const char* name, const Eigen::MatrixXd& A) {
   s << "  " << name << " =\n";
   for (Eigen::Index i = 0; i < A.rows(); ++i) {
     s << "   ";
-    for (Eigen::Index j = 0; j < A.cols(); ++j) s << fmt::format(" {:>12.6g}", A(i, j));
+    for (Eigen::Index j = 0; j < A.cols(); ++j) s << fmt::format(" {:>12.6g}", A(i, j) + 0.0);
     s << "\n";
   }
   return s.str();
@@ -118,7 +119,7 @@ void print_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
   std::cout << "  eigenvalues and modes:\n";
   for (const runtime::Mode& mode : r.modes)
     std::cout << fmt::format("    {:<28} frequency {:.6g} rad/s, damping ratio {:.6g}\n", complex_text(mode.eigenvalue),
-                             mode.frequency, mode.damping_ratio);
+                             mode.frequency + 0.0, mode.damping_ratio + 0.0);
   if (r.cyclic_zero_eigenvalues)
     std::cout << fmt::format("  {} zero eigenvalue(s) of conserved cyclic momenta left out of the verdict\n",
                              r.cyclic_zero_eigenvalues);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "model_abi.h"
+
 namespace eomgen::test {
 
 template <class T>
@@ -22,7 +24,11 @@ struct GeneratedModel {
   StateFunction<double> forcing, rhs, jacobian_state, jacobian_input, outputs;
   EnergyFunction<double> kinetic_energy, potential_energy;
   StateFunction<std::complex<double>> rhs_complex, jacobian_state_complex;
+  const eomgen_model_abi* abi;  // the same functions through the C interface the runtime uses
 };
+
+/// The compiled-in model of this name (fails the test when there is none).
+const GeneratedModel& generated_model(const std::string& name);
 
 std::vector<GeneratedModel> generated_models();
 
