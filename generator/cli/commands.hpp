@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "analyse/equilibrium.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::cli {
@@ -20,6 +21,7 @@ Command add_derive_command(CLI::App& app);
 Command add_generate_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
 Command add_stability_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
 
 struct SimulationOptions {
@@ -34,6 +36,11 @@ struct SimulationOptions {
 int simulate_model(const SimulationOptions& options);
 
 std::string json_escape(const std::string& s);
+
+/// The equilibrium of `problem`: checked when --at names one, else searched for.
+/// Returns the exit status when there is none.
+std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at,
+                                  runtime::Equilibrium& out);
 
 /// Derives `model_path` and writes NAME.hpp into `directory`, or to `*header_path` when that is not empty.
 int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path);

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "analyse/stability_map.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::runtime {
@@ -16,6 +17,13 @@ std::string trajectory_csv(const eomgen_model_abi& model, const Trajectory& traj
 /// Returns an empty string on success, else what went wrong.
 std::string draw_charts(const eomgen_model_abi& model, const Trajectory& trajectory, const std::string& png_path,
                         bool energy_chart);
+
+/// Draws a stability map: the stability degree as colours about zero, its zero contour,
+/// and when `symbolic_margin` is given (one value per grid point, > 0 where every
+/// symbolic condition holds) the symbolic boundary over it.
+std::string draw_stability_map(const StabilityMap& map, const std::string& x_name, const std::string& y_name,
+                               const std::string& title, const std::vector<double>& symbolic_margin,
+                               const std::string& png_path);
 
 /// The path of the energy chart that belongs to `png_path`.
 std::string energy_chart_path(const std::string& png_path);

@@ -1,0 +1,178 @@
+/// @file `eomgen sweep`: a stability map over two parameters, on all cores,
+/// with the symbolic boundary over it when asked.
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "analyse/equilibrium.hpp"
+#include "analyse/stability_conditions.hpp"
+#include "analyse/stability_map.hpp"
+#include "cli/commands.hpp"
+#include "cli/loaded_model.hpp"
+#include "common/output_file.hpp"
+#include "report/reports.hpp"
+#include "symbolic/evaluate.hpp"
+
+namespace eomgen::cli {
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+extern "C" void on_interrupt(int) { interrupted = true; }
+
+struct Options {
+  std::string model;
+  std::vector<std::string> params, at, sets;
+  std::string csv, plot;
+  bool symbolic = false, json = false;
+  unsigned threads = 0;
+};
+
+// "name=LO:HI:N"
+std::optional<runtime::SweepAxis> parse_axis(const eomgen_model_abi& m, const std::string& text, std::string& name) {
+  std::size_t eq = text.find('='), c1 = text.find(':', eq), c2 = text.find(':', c1 + 1);
+  if (eq == std::string::npos || c1 == std::string::npos || c2 == std::string::npos) {
+    std::cerr << fmt::format("eomgen: error: --param '{}': expected NAME=LOW:HIGH:COUNT, e.g. --param b=0.1:2:200\n", text);
+    return std::nullopt;
+  }
+  name = text.substr(0, eq);
+  int index = index_of(m.parameter_names, m.num_parameters, name);
+  if (index < 0) {
+    std::cerr << fmt::format("eomgen: error: --param {}: not a parameter; {}\n", name,
+                             suggest(name, std::vector<std::string>(m.parameter_names, m.parameter_names + m.num_parameters), "parameters"));
+    return std::nullopt;
+  }
+  try {
+    runtime::SweepAxis axis{index, std::stod(text.substr(eq + 1, c1 - eq - 1)), std::stod(text.substr(c1 + 1, c2 - c1 - 1)),
+                            std::stoi(text.substr(c2 + 1))};
+    if (axis.count < 2 || axis.count > 100000 || !(axis.high > axis.low)) throw std::invalid_argument("range");
+    return axis;
+  } catch (const std::exception&) {
+    std::cerr << fmt::format("eomgen: error: --param '{}': need LOW < HIGH and 2 <= COUNT <= 100000\n", text);
+    return std::nullopt;
+  }
+}
+
+// > 0 where every symbolic condition holds: the smallest condition, scaled by its size
+std::vector<double> symbolic_margin(const LoadedProblem& loaded, const runtime::StabilityMap& map,
+                                    const std::string& x_name, const std::string& y_name, const std::vector<double>& state) {
+  StabilityConditions c = stability_conditions(loaded.equations, {x_name, y_name}, loaded.problem.parameters,
+                                               loaded.problem.inputs, state);
+  const Symbols& s = loaded.equations.symbols;
+  std::vector<double> margin(map.degree.size(), NAN);
+  for (int j = 0; j < map.y.count; ++j)
+    for (int i = 0; i < map.x.count; ++i) {
+      std::size_t at = static_cast<std::size_t>(j) * map.x.count + i;
+      const std::vector<double>& x = map.states[at].empty() ? state : map.states[at];
+      auto value_of = [&](const GiNaC::symbol& y) -> double {
+        if (y.get_name() == x_name) return map.x.value(i);
+        if (y.get_name() == y_name) return map.y.value(j);
+        for (std::size_t k = 0; k < s.coordinates.size(); ++k) {
+          if (GiNaC::ex(y).is_equal(s.coordinates[k])) return x[k];
+          if (GiNaC::ex(y).is_equal(s.velocities[k])) return x[s.coordinates.size() + k];
+        }
+        throw std::runtime_error("unexpected symbol " + y.get_name());
+      };
+      double smallest = INFINITY;
+      for (const GiNaC::ex& condition : c.conditions) smallest = std::min(smallest, evaluate(condition, value_of));
+      margin[at] = smallest;
+    }
+  return margin;
+}
+
+int run_sweep(const Options& o) {
+  LoadedProblem loaded;
+  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  std::string x_name, y_name;
+  if (o.params.size() != 2) {
+    std::cerr << "eomgen: error: give exactly two --param NAME=LOW:HIGH:COUNT\n";
+    return exit_user_error;
+  }
+  auto x = parse_axis(m, o.params[0], x_name), y = parse_axis(m, o.params[1], y_name);
+  if (!x || !y) return exit_user_error;
+  runtime::Equilibrium eq;
+  if (auto status = equilibrium_of(loaded.problem, o.at, eq)) return *status;
+  interrupted = false;
+  auto previous = std::signal(SIGINT, on_interrupt);
+  auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  auto started = std::chrono::steady_clock::now();
+  bool finished = false;
+  auto progress = [&](long done, long total) {
+    auto now = std::chrono::steady_clock::now();
+    if (finished || (now - last_print < std::chrono::milliseconds(500) && done < total)) return;
+    finished = done == total;
+    last_print = now;
+    double elapsed = std::chrono::duration<double>(now - started).count();
+    double left = done > 0 ? elapsed * (total - done) / done : 0;
+    std::cerr << fmt::format("\reomgen sweep: {:3.0f}% ({}/{} points), about {:.1f} s left   ", 100.0 * done / total, done,
+                             total, left)
+              << (done == total ? "\n" : "") << std::flush;
+  };
+  runtime::StabilityMap map = runtime::sweep(loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress, interrupted);
+  std::signal(SIGINT, previous);
+  if (map.interrupted) std::cerr << "\neomgen sweep: interrupted; keeping the points computed so far\n";
+  std::vector<double> margin;
+  if (o.symbolic) margin = symbolic_margin(loaded, map, x_name, y_name, eq.state);
+  if (!o.csv.empty()) {
+    std::string text = fmt::format("{},{},stability_degree{}\n", x_name, y_name, o.symbolic ? ",symbolic_margin" : "");
+    for (int j = 0; j < map.y.count; ++j)
+      for (int i = 0; i < map.x.count; ++i) {
+        std::size_t at = static_cast<std::size_t>(j) * map.x.count + i;
+        text += fmt::format("{:.17g},{:.17g},{:.17g}", map.x.value(i), map.y.value(j), map.degree[at]);
+        text += o.symbolic ? fmt::format(",{:.17g}\n", margin[at]) : "\n";
+      }
+    if (std::string failure = write_file_atomically(o.csv, text); !failure.empty()) {
+      std::cerr << "eomgen: " << failure << "\n";
+      return exit_user_error;
+    }
+  }
+  if (!o.plot.empty()) {
+    std::string title = fmt::format("{}: stability map (blue stable, red unstable)", m.name);
+    if (std::string failure = runtime::draw_stability_map(map, x_name, y_name, title, margin, o.plot); !failure.empty())
+      std::cerr << "eomgen: warning: no chart: " << failure << "\n";
+  }
+  long stable = 0;
+  for (double d : map.degree) stable += d < 0;
+  long total = static_cast<long>(map.x.count) * map.y.count;
+  double rate = map.computed / std::max(map.seconds, 1e-9);
+  if (o.json)
+    std::cout << fmt::format("{{\"model\": \"{}\", \"x\": \"{}\", \"y\": \"{}\", \"points\": {}, \"computed\": {}, "
+                             "\"asymptotically_stable\": {}, \"seconds\": {:.6g}, \"points_per_second\": {:.6g}, "
+                             "\"interrupted\": {}}}\n",
+                             m.name, x_name, y_name, total, map.computed, stable, map.seconds, rate,
+                             map.interrupted ? "true" : "false");
+  else
+    std::cout << fmt::format("{}: {} x {} map of the stability degree over {} and {}: {} of {} points computed in "
+                             "{:.3f} s ({:.0f} points/s), {} asymptotically stable\n",
+                             m.name, map.x.count, map.y.count, x_name, y_name, map.computed, total, map.seconds, rate, stable);
+  return map.interrupted ? exit_numerical_failure : exit_success;
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("sweep", "Stability map over two parameters");
+  auto o = std::make_shared<Options>();
+  cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
+  cmd->add_option("--param", o->params, "Swept parameter, twice: --param b=0.05:2:200 --param J=0.05:3:200");
+  cmd->add_option("--at", o->at, "A fixed equilibrium, one value per flag (default: re-found at every point)");
+  cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
+  cmd->add_flag("--symbolic", o->symbolic, "Draw the boundary of the symbolic Hurwitz conditions over the map");
+  cmd->add_option("--threads", o->threads, "Threads (default: all cores)");
+  cmd->add_option("-o,--output", o->csv, "Map as CSV: x, y, stability degree");
+  cmd->add_option("--plot", o->plot, "Map as PNG");
+  auto format = std::make_shared<std::string>("text");
+  cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  return [cmd, o, format]() -> int {
+    if (!cmd->parsed()) return -1;
+    o->json = *format == "json";
+    return run_sweep(*o);
+  };
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,38 @@
+/// @file Stability maps (Hiller §7.4, stability regions): the stability degree,
+/// the largest real part of the eigenvalues that counts for the verdict, over a
+/// grid of two parameters, with the equilibrium re-found at every point.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+struct SweepAxis {
+  int parameter;  // index in parameter_names
+  double low, high;
+  int count;
+  double value(int k) const { return count == 1 ? low : low + (high - low) * k / (count - 1); }
+};
+
+struct StabilityMap {
+  SweepAxis x, y;
+  std::vector<double> degree;               // y.count rows of x.count, NaN where not computed or no equilibrium
+  std::vector<std::vector<double>> states;  // the equilibrium at each point (empty where none)
+  long computed = 0;
+  bool interrupted = false;
+  double seconds = 0;
+};
+
+/// Sweeps on `threads` threads (0: all cores). `start` is the equilibrium at the base
+/// parameters; `fixed` keeps it (an --at equilibrium that does not move) instead of
+/// re-finding it. `progress(done, total)` is called from the calling thread; setting
+/// `stop` ends the sweep early, keeping what was computed.
+StabilityMap sweep(const Problem& base, const std::vector<double>& start, bool fixed, SweepAxis x, SweepAxis y,
+                   unsigned threads, const std::function<void(long, long)>& progress, const std::atomic<bool>& stop);
+
+}  // namespace eomgen::runtime

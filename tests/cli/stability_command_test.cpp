@@ -1,0 +1,73 @@
+// `eomgen stability` and `eomgen sweep` on the command line: the documented
+// JSON keys, equilibria given and searched for, mistakes, and the map's files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+struct Output {
+  int status;
+  std::string out, err;
+};
+
+Output eomgen(const std::string& arguments) {
+  std::string scratch = temporary_directory();
+  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                           std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" +
+                           scratch + "/err'");
+  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
+}
+
+TEST(StabilityCommand, JsonHasTheDocumentedKeys) {
+  Output r = eomgen("stability '" + model_path("pendulum") + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* key : {"\"equilibrium\"", "\"A\"", "\"B\"", "\"M\"", "\"D\"", "\"G\"", "\"K\"", "\"N\"", "\"eigenvalues\"",
+                          "\"verdict\": \"marginally_stable\"", "\"stability_degree\"", "\"modes\"",
+                          "\"characteristic_polynomial\"", "\"hurwitz\"", "\"theorems\"", "\"conditions\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one JSON object on one line";
+}
+
+TEST(StabilityCommand, AStateThatIsNotAnEquilibriumIsRefused) {
+  Output r = eomgen("stability '" + model_path("pendulum") + "' --at phi=0.3");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("is not an equilibrium"), std::string::npos) << r.err;
+  Output upright = eomgen("stability '" + model_path("pendulum") + "' --at phi=3.141592653589793");
+  EXPECT_EQ(upright.status, 0) << upright.err;
+  EXPECT_NE(upright.out.find("verdict: unstable"), std::string::npos) << upright.out;
+}
+
+TEST(StabilityCommand, SteadyMotionOfTheGovernorWithSymbolicConditions) {
+  Output r = eomgen("stability '" + model_path("watt_governor") + "' --symbolic b,J");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("verdict: asymptotically_stable"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("b - 0.395866 + 0.615385*J*b > 0"), std::string::npos) << r.out;
+  Output bad = eomgen("stability '" + model_path("watt_governor") + "' --symbolic damping");
+  EXPECT_EQ(bad.status, 2);
+}
+
+TEST(SweepCommand, WritesTheMapAndItsChart) {
+  std::string dir = temporary_directory();
+  Output r = eomgen("sweep '" + model_path("watt_governor") + "' --param b=0.05:1.2:20 --param J=0.05:3:20 --symbolic -o '" +
+                    dir + "/map.csv' --plot '" + dir + "/map.png' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"points\": 400"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"computed\": 400"), std::string::npos) << r.out;
+  std::ifstream csv(dir + "/map.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "b,J,stability_degree,symbolic_margin");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 400);
+  EXPECT_GT(std::filesystem::file_size(dir + "/map.png"), 10000u);
+  EXPECT_EQ(eomgen("sweep '" + model_path("watt_governor") + "' --param b=1:0:20 --param J=0.05:3:20").status, 2);
+}
+
+}  // namespace
+}  // namespace eomgen::test
