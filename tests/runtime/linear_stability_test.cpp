@@ -244,3 +244,64 @@ TEST(LinearStability, VerdictAgreesWithASimulatedPerturbation) {
 
 }  // namespace
 }  // namespace eomgen::test
+
+namespace eomgen::test {
+namespace {
+
+// Ziegler: flutter at P = (7/2 − √2) c/l for masses 2m and m
+TEST(KnownStabilityResults, ZieglerPendulumFluttersAtTheClassicalLoad) {
+  double critical = 3.5 - std::sqrt(2.0);  // c = l = 1
+  for (double factor : {1 - 1e-4, 1 + 1e-4}) {
+    Problem p = problem_of("follower_force_pendulum", {{"P", critical * factor}});
+    auto r = runtime::analyse_stability(p, {0, 0, 0, 0});
+    EXPECT_EQ(r.verdict, factor < 1 ? "marginally_stable" : "unstable") << factor;
+    EXPECT_TRUE(has_theorem(r, "Merkin"));
+    if (factor > 1) {
+      EXPECT_GT(std::abs(r.eigenvalues[0].imag()), 0.1) << "flutter: an oscillating instability";
+    }
+  }
+}
+
+// rotating frame: eigenvalues ±i(Ω ± √(k/m)) without damping, below and above the critical speed
+TEST(KnownStabilityResults, JeffcottRotorGyroscopicStabilizationAndItsLoss) {
+  for (double Omega : {4.0, 17.0}) {
+    Problem p = problem_of("jeffcott_rotor", {{"Omega", Omega}, {"d", 0.0}});
+    auto r = runtime::analyse_stability(p, {0, 0, 0, 0});
+    std::vector<double> frequencies;
+    for (const auto& mode : r.modes) frequencies.push_back(mode.frequency);
+    std::sort(frequencies.begin(), frequencies.end());
+    double omega0 = std::sqrt(parameter(p, "k") / parameter(p, "m"));
+    ASSERT_EQ(frequencies.size(), 2u);
+    EXPECT_NEAR(frequencies[0], std::abs(Omega - omega0), 1e-9);
+    EXPECT_NEAR(frequencies[1], Omega + omega0, 1e-9);
+    EXPECT_EQ(r.verdict, "marginally_stable");
+  }
+  Problem damped = problem_of("jeffcott_rotor", {{"Omega", 17.0}, {"d", 0.5}});
+  auto r = runtime::analyse_stability(damped, {0, 0, 0, 0});
+  EXPECT_EQ(r.verdict, "unstable");
+  EXPECT_TRUE(has_theorem(r, "Thomson-Tait-Chetaev: with complete damping"));
+  EXPECT_EQ(runtime::analyse_stability(problem_of("jeffcott_rotor", {{"Omega", 5.0}}), {0, 0, 0, 0}).verdict,
+            "asymptotically_stable");
+}
+
+// gravity gradient: stable in the Lagrange region B > A > C, unstable with the pitch inertia smallest
+TEST(KnownStabilityResults, SatelliteGravityGradientLagrangeRegion) {
+  EXPECT_EQ(runtime::analyse_stability(problem_of("satellite_gravity_gradient"), {0, 0, 0, 0, 0, 0}).verdict,
+            "marginally_stable");
+  EXPECT_EQ(runtime::analyse_stability(problem_of("satellite_gravity_gradient", {{"B", 40.0}}), {0, 0, 0, 0, 0, 0}).verdict,
+            "unstable");
+}
+
+// pervasive damping: asymptotically stable for every positive choice
+TEST(KnownStabilityResults, DampedAbsorberIsAsymptoticallyStable) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniform(0.1, 10.0);
+  for (int k = 0; k < 20; ++k) {
+    Problem p = problem_of("damped_two_mass_oscillator", {{"m1", uniform(random)}, {"k1", uniform(random)},
+                                                           {"m2", uniform(random)}, {"k2", uniform(random)}, {"d", uniform(random)}});
+    EXPECT_EQ(runtime::analyse_stability(p, {0, 0, 0, 0}).verdict, "asymptotically_stable");
+  }
+}
+
+}  // namespace
+}  // namespace eomgen::test

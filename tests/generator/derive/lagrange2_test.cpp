@@ -125,12 +125,60 @@ TEST(Lagrange2KnownAnswers, FourLinkPendulum) {
   expect_equations("n_link_pendulum_4", M, f);
 }
 
+
+TEST(Lagrange2KnownAnswers, FollowerForcePendulum) {
+  expect_equations("follower_force_pendulum",
+                   {{"3*m*l^2", "m*l^2*cos(phi1-phi2)"}, {"m*l^2*cos(phi1-phi2)", "m*l^2"}},
+                   {"-m*l^2*d_phi2^2*sin(phi1-phi2) - c*phi1 + c*(phi2-phi1) + P*l*sin(phi1-phi2)",
+                    "m*l^2*d_phi1^2*sin(phi1-phi2) - c*(phi2-phi1)"});
+}
+
+// T = ½ m ((ξ' − Ωη)² + (η' + Ωξ)²) in the frame turning with the shaft
+TEST(Lagrange2KnownAnswers, JeffcottRotorInTheRotatingFrame) {
+  expect_equations("jeffcott_rotor", {{"m", "0"}, {"0", "m"}},
+                   {"2*m*Omega*d_eta + m*Omega^2*xi - k*xi - d*d_xi", "-2*m*Omega*d_xi + m*Omega^2*eta - k*eta - d*d_eta"});
+}
+
+TEST(Lagrange2KnownAnswers, DampedTwoMassOscillator) {
+  expect_equations("damped_two_mass_oscillator", {{"m1", "0"}, {"0", "m2"}},
+                   {"-k1*x1 + k2*(x2-x1) + d*(d_x2-d_x1) + F", "-k2*(x2-x1) - d*(d_x2-d_x1)"});
+}
+
+// ω_B = Cardan rates (as for the gimbal) plus the orbit rate −Ω e_y seen in the body:
+// R_OBᵀ(0, −Ω, 0) with R_OB = rot_x(φ) rot_y(θ) rot_z(ψ); T = ½ ωᵀ diag(A,B,C) ω, V as in the model
+TEST(Lagrange2KnownAnswers, SatelliteAgainstDirectLagrange) {
+  Equations e = derive_model("satellite_gravity_gradient");
+  const Symbols& s = e.symbols;
+  auto c = [&](const std::string& text) { return closed_form(e, text); };
+  // second row of R_OB: (cφ sψ + sφ sθ cψ, cφ cψ − sφ sθ sψ, −sφ cθ)
+  std::vector<GiNaC::ex> row2 = {c("cos(phi)*sin(psi) + sin(phi)*sin(theta)*cos(psi)"),
+                                 c("cos(phi)*cos(psi) - sin(phi)*sin(theta)*sin(psi)"), c("-sin(phi)*cos(theta)")};
+  std::vector<GiNaC::ex> w = {c("d_phi*cos(theta)*cos(psi) + d_theta*sin(psi)"),
+                              c("-d_phi*cos(theta)*sin(psi) + d_theta*cos(psi)"), c("d_phi*sin(theta) + d_psi")};
+  for (int a = 0; a < 3; ++a) w[a] += -c("Omega") * row2[a];
+  std::vector<GiNaC::ex> inertia = {c("A"), c("B"), c("C")};
+  GiNaC::ex T = 0;
+  for (int a = 0; a < 3; ++a) T += inertia[a] * w[a] * w[a] / 2;
+  GiNaC::ex V = c("3/2*Omega^2*(A*(sin(phi)*sin(psi) - cos(phi)*sin(theta)*cos(psi))^2 + "
+                  "B*(sin(phi)*cos(psi) + cos(phi)*sin(theta)*sin(psi))^2 + C*(cos(phi)*cos(theta))^2)");
+  auto points = random_points(s, 20);
+  for (unsigned j = 0; j < 3; ++j) {
+    GiNaC::ex p = T.diff(s.velocities[j]);
+    GiNaC::ex f = T.diff(s.coordinates[j]) - V.diff(s.coordinates[j]);
+    for (unsigned k = 0; k < 3; ++k) {
+      EXPECT_TRUE(agree_at_points(e.mass_matrix(j, k), p.diff(s.velocities[k]), points));
+      f -= p.diff(s.coordinates[k]) * s.velocities[k];
+    }
+    EXPECT_TRUE(agree_at_points(e.forcing[j], f, points)) << "f[" << j << "]";
+  }
+}
+
 // For every scleronomic model, T = ½ q̇ᵀ M q̇: the kinetic energy printed and the
 // mass matrix derived agree (Hiller §3.5).
 TEST(Lagrange2Consistency, KineticEnergyIsQuadraticFormOfMassMatrix) {
   for (const char* name : {"pendulum", "double_pendulum", "spherical_pendulum", "cart_pendulum", "physical_pendulum",
                            "watt_governor", "heavy_symmetric_top", "gimbal_cardan", "n_link_pendulum_4",
-                           "two_mass_spring_damper"}) {
+                           "two_mass_spring_damper", "follower_force_pendulum", "damped_two_mass_oscillator"}) {
     Equations e = derive_model(name);
     GiNaC::ex quadratic = 0;
     std::size_t n = e.forcing.size();
