@@ -15,7 +15,7 @@ case "$action" in
   *) echo "usage: bash cmake/setup.sh run|test|build" >&2; exit 2 ;;
 esac
 
-packages=(g++ cmake make pkg-config diffutils python3 python3-sympy
+packages=(g++ cmake make pkg-config diffutils python3 python3-sympy python3-numpy
           libginac-dev libcln-dev libeigen3-dev libsundials-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox
           libgtest-dev libgmock-dev libbenchmark-dev clang)

@@ -52,7 +52,7 @@ StabilityMap sweep(const Problem& base, const std::vector<double>& start, bool f
     });
   long total = static_cast<long>(x.count) * y.count;
   while (rows_done < y.count && !stop) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
     if (progress) progress(rows_done * x.count, total);
   }
   for (auto& t : workers) t.join();
