@@ -49,6 +49,7 @@ int generate_header(const std::string& model_path, const std::string& directory,
 std::string default_model_path();
 
 /// Derives `model_path` and writes it in `format` to `output` (stdout when empty).
-int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output);
+int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
+                     bool linearize = false);
 
 }  // namespace eomgen::cli

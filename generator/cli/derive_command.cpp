@@ -10,7 +10,8 @@
 
 namespace eomgen::cli {
 
-int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output) {
+int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
+                     bool linearize) {
   auto started = std::chrono::steady_clock::now();
   Derivation d = derive_model_file(model_path);
   if (!d.diagnostics.empty()) {
@@ -19,6 +20,7 @@ int derive_and_write(const std::string& model_path, const std::string& format, c
                              d.diagnostics.size() == 1 ? "" : "s", model_path);
     return exit_user_error;
   }
+  if (linearize) add_linearization(*d.equations);
   std::string text = (*find_equation_format(format))(*d.equations);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (output.empty() || output == "-") {
@@ -42,9 +44,11 @@ Command add_derive_command(CLI::App& app) {
   cmd->add_option("--format", *format, "Output format: text (canonical, one equation per line), latex or json")
       ->check(CLI::IsMember(equation_format_names()));
   cmd->add_option("-o,--output", *output, "Write to this file instead of standard output (written only on success)");
-  return [cmd, model, format, output]() -> int {
+  auto linearize = std::make_shared<bool>(false);
+  cmd->add_flag("--linearize", *linearize, "Also print P = -df/dq', Q = -df/dq, B = df/du of M q'' + P q' + Q q = B u");
+  return [cmd, model, format, output, linearize]() -> int {
     if (!cmd->parsed()) return -1;
-    return derive_and_write(*model, *format, *output);
+    return derive_and_write(*model, *format, *output, *linearize);
   };
 }
 

@@ -23,7 +23,14 @@ struct Equations {
   /// T + V is a first integral when the inputs are zero: no dissipation, no applied
   /// forces at u = 0, and no explicit time dependence (Hiller §3.6).
   bool conserves_energy_without_inputs = false;
+  /// Linearization M q'' + P q' + Q q = B u about states with q'' = 0 (Hiller §5.3),
+  /// in the coordinates and velocities of the state: filled by add_linearization().
+  bool has_linearization = false;
+  GiNaC::matrix linear_damping_gyroscopic, linear_stiffness_circulatory, linear_input;  // P, Q, B
 };
+
+/// P = −∂f/∂q', Q = −∂f/∂q, B = ∂f/∂u, each entry kept compact.
+void add_linearization(Equations& equations);
 
 /// Coordinates on which neither the mass matrix nor the forcing depends (Hiller §3.8).
 std::vector<bool> cyclic_coordinates(const Equations& equations);

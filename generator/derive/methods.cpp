@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "symbolic/simplify.hpp"
+
 namespace eomgen {
 
 std::vector<bool> cyclic_coordinates(const Equations& e) {
@@ -16,6 +18,26 @@ std::vector<bool> cyclic_coordinates(const Equations& e) {
     cyclic.push_back(free);
   }
   return cyclic;
+}
+
+void add_linearization(Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.forcing.size(), m = s.inputs.size();
+  MotionSymbols motion;
+  motion.symbols.insert(s.time);
+  for (std::size_t i = 0; i < n; ++i) motion.symbols.insert(s.coordinates[i]), motion.symbols.insert(s.velocities[i]);
+  for (const auto& u : s.inputs) motion.symbols.insert(u);
+  e.linear_damping_gyroscopic = GiNaC::matrix(n, n);
+  e.linear_stiffness_circulatory = GiNaC::matrix(n, n);
+  e.linear_input = GiNaC::matrix(n, std::max<std::size_t>(m, 1));
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = 0; j < n; ++j) {
+      e.linear_damping_gyroscopic(i, j) = tidy(-e.forcing[i].diff(s.velocities[j]), motion);
+      e.linear_stiffness_circulatory(i, j) = tidy(-e.forcing[i].diff(s.coordinates[j]), motion);
+    }
+    for (unsigned j = 0; j < m; ++j) e.linear_input(i, j) = tidy(e.forcing[i].diff(s.inputs[j]), motion);
+  }
+  e.has_linearization = true;
 }
 
 std::optional<DerivationMethod> find_method(const std::string& name) {

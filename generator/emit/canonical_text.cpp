@@ -41,6 +41,18 @@ std::string emit_canonical_text(const Equations& e) {
   out += fmt::format("T = {}\nV = {}\nR = {}\n", canonical_text(e.kinetic_energy), canonical_text(e.potential_energy),
                      canonical_text(e.dissipation));
   for (const NamedSymbolic& o : e.outputs) out += fmt::format("y[{}] = {}\n", o.name, canonical_text(o.expression));
+  if (e.has_linearization) {
+    out += "\n# linearization M q'' + P q' + Q q = B u about a state with q'' = 0\n";
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < n; ++k)
+        out += fmt::format("P[{}][{}] = {}\n", j, k, canonical_text(e.linear_damping_gyroscopic(j, k)));
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < n; ++k)
+        out += fmt::format("Q[{}][{}] = {}\n", j, k, canonical_text(e.linear_stiffness_circulatory(j, k)));
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < e.symbols.inputs.size(); ++k)
+        out += fmt::format("B[{}][{}] = {}\n", j, k, canonical_text(e.linear_input(j, k)));
+  }
   return out;
 }
 

@@ -64,7 +64,22 @@ std::string emit_json(const Equations& e) {
                      expression(e.kinetic_energy), expression(e.potential_energy), expression(e.dissipation));
   std::string outputs;
   for (const NamedSymbolic& o : e.outputs) outputs += (outputs.empty() ? "" : ", ") + quote(o.name) + ": " + expression(o.expression);
-  out += "  \"outputs\": {" + outputs + "}\n}\n";
+  out += "  \"outputs\": {" + outputs + "}";
+  if (e.has_linearization) {
+    auto matrix = [&](const GiNaC::matrix& A, std::size_t rows, std::size_t cols) {
+      std::string m = "[";
+      for (unsigned j = 0; j < rows; ++j) {
+        m += j ? ", [" : "[";
+        for (unsigned k = 0; k < cols; ++k) m += (k ? ", " : "") + expression(A(j, k));
+        m += "]";
+      }
+      return m + "]";
+    };
+    out += fmt::format(",\n  \"linearization\": {{\"P\": {}, \"Q\": {}, \"B\": {}}}",
+                       matrix(e.linear_damping_gyroscopic, n, n), matrix(e.linear_stiffness_circulatory, n, n),
+                       matrix(e.linear_input, n, s.inputs.size()));
+  }
+  out += "\n}\n";
   return out;
 }
 

@@ -71,6 +71,18 @@ std::string emit_latex(const Equations& e) {
   out += fmt::format("T &= {} \\\\\nV &= {} \\\\\nR &= {}", tex(e.kinetic_energy), tex(e.potential_energy),
                      tex(e.dissipation));
   for (const NamedSymbolic& o : e.outputs) out += fmt::format(" \\\\\n{} &= {}", tex_name(o.name), tex(o.expression));
+  if (e.has_linearization) {
+    out += " \\\\\n% linearization M q'' + P q' + Q q = B u about a state with q'' = 0";
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < n; ++k)
+        out += fmt::format(" \\\\\nP_{{{}{}}} &= {}", j + 1, k + 1, tex(e.linear_damping_gyroscopic(j, k)));
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < n; ++k)
+        out += fmt::format(" \\\\\nQ_{{{}{}}} &= {}", j + 1, k + 1, tex(e.linear_stiffness_circulatory(j, k)));
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < e.symbols.inputs.size(); ++k)
+        out += fmt::format(" \\\\\nB_{{{}{}}} &= {}", j + 1, k + 1, tex(e.linear_input(j, k)));
+  }
   out += "\n\\end{align*}\n";
   return out;
 }

@@ -197,3 +197,23 @@ TEST(Lagrange2Consistency, MassMatrixIsSymmetric) {
 
 }  // namespace
 }  // namespace eomgen::test
+
+namespace eomgen::test {
+namespace {
+
+// rotating-frame rotor: P = d I + 2mΩ [[0, −1], [1, 0]], Q = (k − mΩ²) I (Hiller §8.2)
+TEST(Linearization, JeffcottRotorSplitsIntoDampingGyroscopicAndStiffness) {
+  Equations e = derive_model("jeffcott_rotor");
+  add_linearization(e);
+  ASSERT_TRUE(e.has_linearization);
+  const char* P[2][2] = {{"d", "-2*m*Omega"}, {"2*m*Omega", "d"}};
+  const char* Q[2][2] = {{"k - m*Omega^2", "0"}, {"0", "k - m*Omega^2"}};
+  for (unsigned i = 0; i < 2; ++i)
+    for (unsigned j = 0; j < 2; ++j) {
+      EXPECT_TRUE((e.linear_damping_gyroscopic(i, j) - closed_form(e, P[i][j])).expand().is_zero()) << i << j;
+      EXPECT_TRUE((e.linear_stiffness_circulatory(i, j) - closed_form(e, Q[i][j])).expand().is_zero()) << i << j;
+    }
+}
+
+}  // namespace
+}  // namespace eomgen::test
