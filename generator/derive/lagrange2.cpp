@@ -20,19 +20,20 @@ ex dot3(const X& x, const Y& y) {
   return x(0) * y(0) + x(1) * y(1) + x(2) * y(2);
 }
 
-void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f, const MotionSymbols& motion) {
+// adds the body's raw (not yet simplified) terms; every entry is simplified once, at the end
+void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f) {
   std::size_t n = f.size();
   const GiNaC::matrix& J = b.velocity_jacobian;
   for (unsigned j = 0; j < n; ++j) {
     auto Jj = [&](int a) { return J(a, j); };
     for (unsigned k = j; k < n; ++k) {
       auto Jk = [&](int a) { return J(a, k); };
-      ex m = tidy(b.mass * dot3(Jj, Jk), motion);
+      ex m = b.mass * dot3(Jj, Jk);
       if (b.rotates) {
         const GiNaC::matrix& W = b.angular_velocity_jacobian;
         for (unsigned a = 0; a < 3; ++a)
           for (unsigned c = 0; c < 3; ++c)
-            if (!b.inertia(a, c).is_zero()) m += tidy(W(a, j) * b.inertia(a, c) * W(c, k), motion);
+            if (!b.inertia(a, c).is_zero()) m += W(a, j) * b.inertia(a, c) * W(c, k);
       }
       M(j, k) += m;
     }
@@ -51,7 +52,7 @@ void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f, con
                      Ia[2] + w[0] * Iw[1] - w[1] * Iw[0]};
       for (unsigned a = 0; a < 3; ++a) inertia_force += b.angular_velocity_jacobian(a, j) * moment[a];
     }
-    f[j] -= tidy(inertia_force, motion);
+    f[j] -= inertia_force;
   }
 }
 
@@ -67,6 +68,25 @@ void add_kinetic_energy(const ex& T, const Symbols& s, GiNaC::matrix& M, std::ve
   }
 }
 
+// T = ½ q'ᵀ M q' + b·q' + T0 (Hiller §3.5) from the finished mass matrix; M already holds
+// the Hessian of [energy] kinetic, so only that energy's remaining (linear, constant) parts are added
+ex kinetic_energy(const GiNaC::matrix& M, const Mechanics& mech, const Symbols& s) {
+  std::size_t n = s.coordinates.size();
+  ex T = mech.kinetic_at_rest;
+  for (unsigned j = 0; j < n; ++j) {
+    T += mech.kinetic_linear[j] * s.velocities[j] + M(j, j) * GiNaC::pow(s.velocities[j], 2) / 2;
+    for (unsigned k = j + 1; k < n; ++k) T += M(j, k) * s.velocities[j] * s.velocities[k];
+  }
+  if (!mech.extra_kinetic_energy.is_zero()) {
+    ex quadratic = 0;
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned k = 0; k < n; ++k)
+        quadratic += mech.extra_kinetic_energy.diff(s.velocities[j]).diff(s.velocities[k]) * s.velocities[j] * s.velocities[k] / 2;
+    T += mech.extra_kinetic_energy - quadratic;
+  }
+  return tidy(T, mech.motion);
+}
+
 }  // namespace
 
 Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
@@ -74,7 +94,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   std::size_t n = s.coordinates.size();
   GiNaC::matrix M(n, n);
   std::vector<ex> f(n, 0);
-  for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, mech.motion);
+  for (const BodyKinematics& b : mech.bodies) add_body(b, M, f);
   add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
   for (unsigned j = 0; j < n; ++j) {
     f[j] += mech.generalized_force[j] - mech.potential_energy.diff(s.coordinates[j]) -
@@ -94,7 +114,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.degrees_of_freedom = n;
   e.mass_matrix = M;
   e.forcing = f;
-  e.kinetic_energy = mech.kinetic_energy;
+  e.kinetic_energy = kinetic_energy(M, mech, s);
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});

@@ -8,6 +8,7 @@
 #include "emit/formats.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/cse.hpp"
+#include "symbolic/gradient.hpp"
 
 namespace eomgen {
 
@@ -196,16 +197,22 @@ std::string jacobian_state_function(const Equations& e) {
   std::size_t n = e.forcing.size(), N = 2 * n;
   BodyWriter w(e);
   accelerations(w, e);
-  std::vector<ex> columns;
-  for (std::size_t j = 0; j < N; ++j) {
-    const GiNaC::symbol x = j < n ? s.coordinates[j] : s.velocities[j - n];
-    for (unsigned i = 0; i < n; ++i) {
-      ex k = e.forcing[i].diff(x);
-      if (j < n)
-        for (unsigned c = 0; c < n; ++c) k -= e.mass_matrix(i, c).diff(x) * w.accelerations()[c];
-      columns.push_back(k);
+  std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
+  state.insert(state.end(), s.velocities.begin(), s.velocities.end());
+  // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c  (M depends on q only)
+  std::vector<std::vector<ex>> rows;
+  for (unsigned i = 0; i < n; ++i) {
+    rows.push_back(gradient(e.forcing[i], state));
+    for (unsigned c = 0; c < n; ++c) {
+      if (e.mass_matrix(i, c).info(GiNaC::info_flags::numeric)) continue;
+      std::vector<ex> dM = gradient(e.mass_matrix(i, c), coordinates);
+      for (unsigned j = 0; j < n; ++j)
+        if (!dM[j].is_zero()) rows[i][j] -= dM[j] * w.accelerations()[c];
     }
   }
+  std::vector<ex> columns;
+  for (std::size_t j = 0; j < N; ++j)
+    for (unsigned i = 0; i < n; ++i) columns.push_back(rows[i][j]);
   auto code = w.batch(columns);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == n + i ? 1 : 0));
@@ -231,9 +238,12 @@ std::string jacobian_input_function(const Equations& e) {
     w.line(fmt::format("T L[{}];", n * n));
     w.line(fmt::format("T D[{}];", n));
     w.line("detail::ldlt_factor(M, L, D);");
+    std::vector<ex> inputs(s.inputs.begin(), s.inputs.end());
+    std::vector<std::vector<ex>> rows;
+    for (std::size_t i = 0; i < n; ++i) rows.push_back(gradient(e.forcing[i], inputs));
     std::vector<ex> columns;
     for (std::size_t j = 0; j < m; ++j)
-      for (std::size_t i = 0; i < n; ++i) columns.push_back(e.forcing[i].diff(s.inputs[j]));
+      for (std::size_t i = 0; i < n; ++i) columns.push_back(rows[i][j]);
     auto code = w.batch(columns);
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = T(0);", i * m + j));
@@ -254,11 +264,12 @@ std::string linearization_function(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = e.forcing.size(), m = s.inputs.size();
   BodyWriter w(e);
-  std::vector<ex> entries;
+  std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
+      coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
   for (unsigned i = 0; i < n; ++i) {
-    for (unsigned j = 0; j < n; ++j) entries.push_back(-e.forcing[i].diff(s.velocities[j]));
-    for (unsigned j = 0; j < n; ++j) entries.push_back(-e.forcing[i].diff(s.coordinates[j]));
-    for (unsigned j = 0; j < m; ++j) entries.push_back(e.forcing[i].diff(s.inputs[j]));
+    for (const ex& d : gradient(e.forcing[i], velocities)) entries.push_back(-d);
+    for (const ex& d : gradient(e.forcing[i], coordinates)) entries.push_back(-d);
+    for (const ex& d : gradient(e.forcing[i], inputs)) entries.push_back(d);
   }
   auto code = w.batch(entries);
   std::size_t at = 0;

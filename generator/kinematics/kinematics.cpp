@@ -1,13 +1,17 @@
 #include "kinematics/mechanics.hpp"
+#include "symbolic/gradient.hpp"
 
 namespace eomgen {
 
 using GiNaC::ex;
 
 ex time_derivative(const ex& x, const Symbols& s) {
-  ex d = x.diff(s.time);
-  for (std::size_t k = 0; k < s.coordinates.size(); ++k) d += x.diff(s.coordinates[k]) * s.velocities[k];
-  return d;
+  std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
+  variables.push_back(s.time);
+  std::vector<ex> d = gradient(x, variables);
+  ex total = d.back();
+  for (std::size_t k = 0; k < s.coordinates.size(); ++k) total += d[k] * s.velocities[k];
+  return total;
 }
 
 namespace {
@@ -25,8 +29,10 @@ MotionSymbols motion_symbols(const Symbols& s) {
 void translate(BodyKinematics& b, const Vector3& r, const Symbols& s) {
   std::size_t n = s.coordinates.size();
   b.velocity_jacobian = GiNaC::matrix(3, n);
+  std::vector<ex> coordinates(s.coordinates.begin(), s.coordinates.end());
   for (unsigned a = 0; a < 3; ++a) {
-    for (unsigned j = 0; j < n; ++j) b.velocity_jacobian(a, j) = r[a].diff(s.coordinates[j]);
+    std::vector<ex> column = gradient(r[a], coordinates);
+    for (unsigned j = 0; j < n; ++j) b.velocity_jacobian(a, j) = column[j];
     b.velocity[a] = time_derivative(r[a], s);
     b.bias_acceleration[a] = time_derivative(b.velocity[a], s);
   }
@@ -43,14 +49,26 @@ void rotate(BodyKinematics& b, const Vector3& omega, const Symbols& s) {
   }
 }
 
-// ½ m v·v + ½ ω·I ω
-ex kinetic_energy_of(const BodyKinematics& b, const MotionSymbols& motion) {
-  ex T = 0;
-  for (unsigned a = 0; a < 3; ++a) T += b.mass * b.velocity[a] * b.velocity[a] / 2;
-  if (b.rotates)
-    for (unsigned a = 0; a < 3; ++a)
-      for (unsigned c = 0; c < 3; ++c) T += b.angular_velocity[a] * b.inertia(a, c) * b.angular_velocity[c] / 2;
-  return tidy(T, motion);
+// the parts of T = ½ m v·v + ½ ω·I ω that explicit time dependence adds, with v = J q' + v0,
+// ω = J_ω q' + ω0: b += m Jᵀ v0 + J_ωᵀ I ω0 and T0 += ½ m v0·v0 + ½ ω0·I ω0
+void add_rheonomic_kinetic(const BodyKinematics& b, const Symbols& s, Mechanics& m) {
+  GiNaC::exmap at_rest;
+  for (const auto& v : s.velocities) at_rest[v] = 0;
+  Vector3 v0, w0{0, 0, 0};
+  for (unsigned a = 0; a < 3; ++a) {
+    v0[a] = b.velocity[a].subs(at_rest);
+    if (b.rotates) w0[a] = b.angular_velocity[a].subs(at_rest);
+  }
+  Vector3 Iw0{0, 0, 0};
+  for (unsigned a = 0; a < 3; ++a)
+    for (unsigned c = 0; c < 3; ++c) Iw0[a] += b.inertia(a, c) * w0[c];
+  for (unsigned a = 0; a < 3; ++a) {
+    m.kinetic_at_rest += b.mass * v0[a] * v0[a] / 2 + w0[a] * Iw0[a] / 2;
+    for (unsigned j = 0; j < s.coordinates.size(); ++j) {
+      m.kinetic_linear[j] += b.mass * b.velocity_jacobian(a, j) * v0[a];
+      if (b.rotates) m.kinetic_linear[j] += b.angular_velocity_jacobian(a, j) * Iw0[a];
+    }
+  }
 }
 
 ex gravity_potential(const ex& mass, const Vector3& r, const Vector3& g) {
@@ -80,13 +98,15 @@ Mechanics compute_mechanics(const Model& model) {
   const Symbols& s = model.symbols;
   Mechanics m;
   m.motion = motion_symbols(s);
-  ex T = 0, V = model.potential;
+  m.kinetic_linear.assign(s.coordinates.size(), 0);
+  m.kinetic_at_rest = 0;
+  ex V = model.potential;
   for (const Particle& p : model.particles) {
     BodyKinematics b;
     b.name = p.name;
     b.mass = p.mass;
     translate(b, p.position, s);
-    T += kinetic_energy_of(b, m.motion);
+    add_rheonomic_kinetic(b, s, m);
     V += gravity_potential(p.mass, p.position, model.gravity);
     m.bodies.push_back(b);
   }
@@ -101,12 +121,13 @@ Mechanics compute_mechanics(const Model& model) {
                   ? angular_velocity_of_matrix(r.rotation.matrix, s, m.motion)
                   : angular_velocity_of_sequence(r.rotation.sequence, s),
            s);
-    T += kinetic_energy_of(b, m.motion);
+    add_rheonomic_kinetic(b, s, m);
     V += gravity_potential(r.mass, r.center, model.gravity);
     m.bodies.push_back(b);
   }
   m.extra_kinetic_energy = model.kinetic;
-  m.kinetic_energy = tidy(T + model.kinetic, m.motion);
+  for (ex& b : m.kinetic_linear) b = tidy(b, m.motion);
+  m.kinetic_at_rest = tidy(m.kinetic_at_rest, m.motion);
   m.potential_energy = tidy(V, m.motion);
   m.dissipation = tidy(model.dissipation, m.motion);
   m.generalized_force = model.generalized_force;
@@ -117,7 +138,7 @@ Mechanics compute_mechanics(const Model& model) {
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t
   GiNaC::exmap at_rest;
   for (const auto& v : s.velocities) at_rest[v] = 0;
-  m.scleronomic = !m.kinetic_energy.has(s.time) && !m.potential_energy.has(s.time);
+  m.scleronomic = !m.extra_kinetic_energy.has(s.time) && !m.potential_energy.has(s.time);
   for (const BodyKinematics& b : m.bodies)
     for (unsigned a = 0; a < 3; ++a) {
       bool moves = !b.velocity[a].subs(at_rest).expand().is_zero();

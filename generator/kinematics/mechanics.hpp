@@ -31,8 +31,11 @@ struct BodyKinematics {
 struct Mechanics {
   MotionSymbols motion;              // q, q̇, t, u
   std::vector<BodyKinematics> bodies;
-  GiNaC::ex kinetic_energy;          // T of the bodies plus [energy] kinetic
-  GiNaC::ex extra_kinetic_energy;    // [energy] kinetic alone
+  // T = ½ q'ᵀ M q' + b·q' + T0 + [energy] kinetic, with M the bodies' mass matrix: b and T0
+  // come from explicit time dependence (∂r/∂t, ω at rest) and vanish for scleronomic bodies
+  std::vector<GiNaC::ex> kinetic_linear;  // b, one per coordinate
+  GiNaC::ex kinetic_at_rest;              // T0
+  GiNaC::ex extra_kinetic_energy;         // [energy] kinetic alone
   GiNaC::ex potential_energy;        // V: gravity plus [energy] potential
   GiNaC::ex dissipation;             // R, Rayleigh's function
   std::vector<GiNaC::ex> generalized_force;  // Q of the applied forces and torques (without gravity and R)

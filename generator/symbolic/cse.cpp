@@ -7,6 +7,9 @@ namespace eomgen {
 
 using GiNaC::ex;
 
+thread_local std::map<ex, std::uint64_t, GiNaC::ex_is_less> CommonSubexpressions::hashes_;
+thread_local std::map<ex, bool, GiNaC::ex_is_less> CommonSubexpressions::orientation_;
+
 bool is_atom(const ex& e) {
   return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e);
 }

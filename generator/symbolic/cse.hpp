@@ -50,8 +50,10 @@ class CommonSubexpressions {
 
   std::string prefix_;
   std::size_t next_ = 0;
-  std::map<GiNaC::ex, std::uint64_t, GiNaC::ex_is_less> hashes_;
-  std::map<GiNaC::ex, bool, GiNaC::ex_is_less> orientation_;
+  // depend only on an expression's structure and names, so they are shared by every
+  // instance in the thread (the functions of a header share most subexpressions)
+  static thread_local std::map<GiNaC::ex, std::uint64_t, GiNaC::ex_is_less> hashes_;
+  static thread_local std::map<GiNaC::ex, bool, GiNaC::ex_is_less> orientation_;
   std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> known_;  // subexpression → its temporary
 };
 

@@ -1,5 +1,6 @@
 #include "symbolic/simplify.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "symbolic/canonical_print.hpp"
@@ -122,6 +123,13 @@ int nonzero(const std::array<ex, 4>& v) {
 
 ex combine_trig_products(const ex& expanded) {
   std::vector<ex> terms = terms_of(expanded);
+  // canonical text of each angle, computed once: it orients the pairs independently of GiNaC's order
+  std::map<ex, std::string, ex_is_less> angle_text;
+  auto text_of = [&](const ex& a) -> const std::string& {
+    auto found = angle_text.find(a);
+    if (found == angle_text.end()) found = angle_text.emplace(a, canonical_text(a)).first;
+    return found->second;
+  };
   std::map<PairKey, std::vector<PairTerm>, bool (*)(const PairKey&, const PairKey&)> groups(pair_key_less);
   for (std::size_t t = 0; t < terms.size(); ++t) {
     std::vector<ex> f;
@@ -138,7 +146,7 @@ ex combine_trig_products(const ex& expanded) {
         bool si = is_sin(f[i]), sj = is_sin(f[j]);
         if (a.is_equal(b)) continue;
         // orient the pair by the canonical text of its angles, so the result does not depend on GiNaC's order
-        if (canonical_less(b, a)) { std::swap(a, b); std::swap(si, sj); }
+        if (text_of(b) < text_of(a)) { std::swap(a, b); std::swap(si, sj); }
         int kind = !si && !sj ? 0 : (si && sj ? 1 : (si ? 2 : 3));
         groups[{product(f, i, j), a, b}].push_back({t, kind, coefficient});
       }
@@ -146,11 +154,18 @@ ex combine_trig_products(const ex& expanded) {
   }
   std::vector<bool> used(terms.size(), false);
   std::vector<ex> extra;
-  // groups are visited in the order of their keys' canonical text, for determinism
+  // when a term belongs to several groups, which group takes it depends on the visiting order:
+  // then the groups are visited in the order of their keys' canonical text, for determinism
+  std::vector<int> memberships(terms.size(), 0);
+  for (const auto& g : groups)
+    if (g.second.size() > 1)
+      for (const PairTerm& p : g.second) ++memberships[p.term];
+  bool overlapping = std::any_of(memberships.begin(), memberships.end(), [](int m) { return m > 1; });
   std::vector<std::pair<std::string, const std::pair<const PairKey, std::vector<PairTerm>>*>> order;
   for (const auto& g : groups)
-    if (g.second.size() > 1) order.push_back({canonical_text(g.first.cofactor * GiNaC::sin(g.first.a) * GiNaC::cos(g.first.b)), &g});
-  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (g.second.size() > 1)
+      order.push_back({overlapping ? canonical_text(g.first.cofactor * GiNaC::sin(g.first.a) * GiNaC::cos(g.first.b)) : "", &g});
+  if (overlapping) std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   for (const auto& [text, group] : order) {
     const PairKey& key = group->first;
     std::array<ex, 4> c{0, 0, 0, 0};
@@ -187,7 +202,9 @@ ex collect_by_motion(const ex& expanded, const MotionSymbols& motion) {
 }
 
 ex tidy(const ex& e, const MotionSymbols& motion) {
-  ex x = apply_pythagoras(e.expand());
+  // collecting first sums the parameters of equal motion-dependent parts (the masses
+  // along a chain), so that the trigonometric passes see n times fewer terms
+  ex x = apply_pythagoras(collect_by_motion(e.expand(), motion));
   x = combine_trig_products(x);
   return collect_by_motion(x, motion);
 }
