@@ -178,7 +178,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c3 = -p_d;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1);
@@ -198,13 +197,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, column);
   J[9] = column[0];
   J[13] = column[1];
-  column[0] = c3;
+  column[0] = -p_d;
   column[1] = p_d;
   detail::ldlt_solve(L, D, column);
   J[10] = column[0];
   J[14] = column[1];
   column[0] = p_d;
-  column[1] = c3;
+  column[1] = -p_d;
   detail::ldlt_solve(L, D, column);
   J[11] = column[0];
   J[15] = column[1];
@@ -244,16 +243,14 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T p_k1 = p[1];
   const T p_k2 = p[3];
   const T p_d = p[4];
-  const T c0 = -p_d;
-  const T c1 = -p_k2;
   P[0] = p_d;
-  P[1] = c0;
+  P[1] = -p_d;
   Q[0] = p_k1 + p_k2;
-  Q[1] = c1;
+  Q[1] = -p_k2;
   B[0] = T(1);
-  P[2] = c0;
+  P[2] = -p_d;
   P[3] = p_d;
-  Q[2] = c1;
+  Q[2] = -p_k2;
   Q[3] = p_k2;
   B[1] = T(0);
 }

@@ -166,7 +166,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = -p_d;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1);
@@ -186,13 +185,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, column);
   J[9] = column[0];
   J[13] = column[1];
-  column[0] = c1;
+  column[0] = -p_d;
   column[1] = -T(2)*p_Omega*p_m;
   detail::ldlt_solve(L, D, column);
   J[10] = column[0];
   J[14] = column[1];
   column[0] = T(2)*p_Omega*p_m;
-  column[1] = c1;
+  column[1] = -p_d;
   detail::ldlt_solve(L, D, column);
   J[11] = column[0];
   J[15] = column[1];

@@ -239,16 +239,14 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T p_k2 = p[3];
   const T p_d1 = p[4];
   const T p_d2 = p[5];
-  const T c0 = -p_d2;
-  const T c1 = -p_k2;
   P[0] = p_d1 + p_d2;
-  P[1] = c0;
+  P[1] = -p_d2;
   Q[0] = p_k1 + p_k2;
-  Q[1] = c1;
+  Q[1] = -p_k2;
   B[0] = T(0);
-  P[2] = c0;
+  P[2] = -p_d2;
   P[3] = p_d2;
-  Q[2] = c1;
+  Q[2] = -p_k2;
   Q[3] = p_k2;
   B[1] = T(1);
 }

@@ -162,17 +162,61 @@ ex CommonSubexpressions::reduce(const ex& original, const std::map<ex, int, GiNa
   }
   auto used = uses.find(e);
   bool shared = used != uses.end() && used->second > 1;
-  if (!shared || is_cheap_power(e)) return rebuilt;
+  // a number times an atom (−x, 2·x) costs no more than reading a temporary
+  bool scaled_atom = GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 &&
+                     ((GiNaC::is_a<GiNaC::numeric>(e.op(0)) && is_atom(e.op(1))) ||
+                      (GiNaC::is_a<GiNaC::numeric>(e.op(1)) && is_atom(e.op(0))));
+  if (!shared || is_cheap_power(e) || scaled_atom) return rebuilt;
   GiNaC::symbol name(prefix_ + std::to_string(next_++));
   batch.temporaries.push_back({name, rebuilt});
   known_.emplace(e, name);
   return name;
 }
 
+// Sums of atoms that share terms, such as the tail masses m_k + … + m_n of a chain,
+// are not common subexpressions of each other; each shared one becomes a temporary
+// built on the largest shared sum it contains: m_k + (m_{k+1} + … + m_n).
+void CommonSubexpressions::nest_shared_sums(const std::map<ex, int, GiNaC::ex_is_less>& uses, CseBatch& batch) {
+  std::vector<ex> candidates;
+  for (const auto& [e, n] : uses) {
+    if (n < 2 || !GiNaC::is_a<GiNaC::add>(e) || known_.count(e)) continue;
+    bool flat = true;
+    for (std::size_t i = 0; i < e.nops() && flat; ++i) {
+      const ex t = e.op(i);
+      flat = is_atom(t) || (GiNaC::is_a<GiNaC::mul>(t) && t.nops() == 2 && is_atom(t.op(0)) && is_atom(t.op(1)));
+    }
+    if (flat) candidates.push_back(e);
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](const ex& a, const ex& b) {
+    return a.nops() != b.nops() ? a.nops() < b.nops() : structural_hash(a) < structural_hash(b);
+  });
+  for (const ex& e : candidates) {
+    GiNaC::exset terms;
+    for (std::size_t i = 0; i < e.nops(); ++i) terms.insert(e.op(i));
+    const NestedSum* inner = nullptr;
+    for (const NestedSum& s : sums_)
+      if (s.terms.size() < terms.size() && (!inner || s.terms.size() > inner->terms.size()) &&
+          std::includes(terms.begin(), terms.end(), s.terms.begin(), s.terms.end(), GiNaC::ex_is_less()))
+        inner = &s;
+    ex definition = e;
+    if (inner) {
+      GiNaC::exvector rest{inner->temporary};
+      for (const ex& t : terms)
+        if (!inner->terms.count(t)) rest.push_back(t);
+      definition = GiNaC::add(rest);
+    }
+    GiNaC::symbol name(prefix_ + std::to_string(next_++));
+    batch.temporaries.push_back({name, definition});
+    known_.emplace(e, name);
+    sums_.push_back({terms, name});
+  }
+}
+
 CseBatch CommonSubexpressions::add(const std::vector<ex>& expressions) {
   std::map<ex, int, GiNaC::ex_is_less> uses;
   for (const ex& e : expressions) count(e, uses);
   CseBatch batch;
+  nest_shared_sums(uses, batch);
   for (const ex& e : expressions) batch.outputs.push_back(reduce(e, uses, batch));
   return batch;
 }

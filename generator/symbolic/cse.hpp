@@ -47,6 +47,7 @@ class CommonSubexpressions {
   std::uint64_t orientation_free_hash(const GiNaC::ex& e);
   void count(const GiNaC::ex& e, std::map<GiNaC::ex, int, GiNaC::ex_is_less>& uses);
   GiNaC::ex reduce(const GiNaC::ex& e, const std::map<GiNaC::ex, int, GiNaC::ex_is_less>& uses, CseBatch& batch);
+  void nest_shared_sums(const std::map<GiNaC::ex, int, GiNaC::ex_is_less>& uses, CseBatch& batch);
 
   std::string prefix_;
   std::size_t next_ = 0;
@@ -55,6 +56,11 @@ class CommonSubexpressions {
   static thread_local std::map<GiNaC::ex, std::uint64_t, GiNaC::ex_is_less> hashes_;
   static thread_local std::map<GiNaC::ex, bool, GiNaC::ex_is_less> orientation_;
   std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> known_;  // subexpression → its temporary
+  struct NestedSum {
+    GiNaC::exset terms;
+    GiNaC::ex temporary;
+  };
+  std::vector<NestedSum> sums_;  // shared sums of atoms, for nesting larger sums around them
 };
 
 /// True for expressions that are never worth a temporary: symbols and numbers.

@@ -188,6 +188,46 @@ ex combine_trig_products(const ex& expanded) {
   return sum(extra).expand();
 }
 
+namespace {
+
+// the largest product of symbol powers that divides every term: Σ l1 l2 m_k → l1 l2 · Σ m_k,
+// so that sums of parameters (the masses beyond a link) stand alone and can be shared
+ex pull_common_factors(const ex& sum) {
+  std::vector<ex> terms = terms_of(sum);
+  if (terms.size() < 2) return sum;
+  std::map<ex, GiNaC::numeric, ex_is_less> common;
+  bool first = true;
+  for (const ex& term : terms) {
+    std::map<ex, GiNaC::numeric, ex_is_less> powers;
+    for (const ex& f : factors_of(term)) {
+      if (GiNaC::is_a<GiNaC::symbol>(f)) powers[f] += 1;
+      else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) && f.op(1).info(GiNaC::info_flags::posint))
+        powers[f.op(0)] += GiNaC::ex_to<GiNaC::numeric>(f.op(1));
+    }
+    if (first) {
+      common = powers;
+      first = false;
+      continue;
+    }
+    for (auto it = common.begin(); it != common.end();) {
+      auto found = powers.find(it->first);
+      if (found == powers.end()) it = common.erase(it);
+      else {
+        it->second = std::min(it->second, found->second);
+        ++it;
+      }
+    }
+  }
+  if (common.empty()) return sum;
+  ex factor = 1;
+  for (const auto& [base, exponent] : common) factor *= GiNaC::pow(base, exponent);
+  GiNaC::exvector rest;
+  for (const ex& term : terms) rest.push_back((term / factor).expand());
+  return factor * GiNaC::add(rest);
+}
+
+}  // namespace
+
 ex collect_by_motion(const ex& expanded, const MotionSymbols& motion) {
   std::map<ex, ex, ex_is_less> groups;
   for (const ex& term : terms_of(expanded)) {
@@ -197,7 +237,7 @@ ex collect_by_motion(const ex& expanded, const MotionSymbols& motion) {
     if (!fresh) it->second += fixed;
   }
   ex result = 0;
-  for (const auto& [moving, coefficient] : groups) result += coefficient * moving;
+  for (const auto& [moving, coefficient] : groups) result += pull_common_factors(coefficient) * moving;
   return result;
 }
 

@@ -1,0 +1,113 @@
+// Right-hand-side speed of one generated model against its peers, in one
+// process with interleaved repetitions and medians: the generated rhs,
+// MuJoCo's mj_forward on the equivalent MJCF, a hand-written Eigen version
+// (planar chains: M_jk = (Σ_{i≥max(j,k)} m_i) l_j l_k cos(φ_j − φ_k), LDLT solve),
+// and jacobian_state against central differences of rhs.
+// Built by peer_benchmark.py: c++ -O2 -DMODEL=NAME -DPLANAR=0|1 -I DIR rhs_benchmark.cpp -lmujoco
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <mujoco/mujoco.h>
+
+#define EOMGEN_STRING2(x) #x
+#define EOMGEN_STRING(x) EOMGEN_STRING2(x)
+#include EOMGEN_STRING(MODEL.hpp)
+
+namespace model = eomgen::models::MODEL;
+constexpr int N = static_cast<int>(model::num_states), n = static_cast<int>(model::num_coordinates);
+
+// planar chain by hand: parameters m1, l1, m2, l2, ..., g
+struct HandWritten {
+  Eigen::MatrixXd M = Eigen::MatrixXd(n, n);
+  Eigen::VectorXd f = Eigen::VectorXd(n), tail = Eigen::VectorXd(n + 1);
+  Eigen::LDLT<Eigen::MatrixXd> ldlt = Eigen::LDLT<Eigen::MatrixXd>(n);
+  void rhs(const double* x, const double* p, double* xdot) {
+    const double g = p[2 * n];
+    tail[n] = 0;
+    for (int i = n - 1; i >= 0; --i) tail[i] = tail[i + 1] + p[2 * i];  // Σ_{k≥i} m_k
+    for (int j = 0; j < n; ++j) {
+      const double lj = p[2 * j + 1];
+      double fj = -tail[j] * g * lj * std::sin(x[j]);
+      for (int k = 0; k < n; ++k) {
+        const double lk = p[2 * k + 1], mass = tail[std::max(j, k)], d = x[j] - x[k];
+        M(j, k) = mass * lj * lk * std::cos(d);
+        fj -= mass * lj * lk * std::sin(d) * x[n + k] * x[n + k];
+      }
+      f[j] = fj;
+    }
+    ldlt.compute(M);
+    Eigen::Map<Eigen::VectorXd> a(xdot + n, n);
+    a = ldlt.solve(f);
+    for (int i = 0; i < n; ++i) xdot[i] = x[n + i];
+  }
+};
+
+template <class F>
+double time_batch(F&& call, int calls) {
+  auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < calls; ++i) call();
+  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / calls;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) return 2;
+  char error[1000] = "";
+  mjModel* mj = mj_loadXML(argv[1], nullptr, error, sizeof error);
+  if (!mj) {
+    std::fprintf(stderr, "MuJoCo: %s\n", error);
+    return 1;
+  }
+  mjData* data = mj_makeData(mj);
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> uniform(-0.5, 0.5);
+  std::vector<double> x(N), xdot(N), xdot_hand(N), J(N * N), fd(N * N), plus(N), minus(N), u(model::num_inputs + 1, 0.0);
+  for (double& v : x) v = uniform(random);
+  for (int i = 0; i < mj->nq; ++i) data->qpos[i] = uniform(random);
+  for (int i = 0; i < mj->nv; ++i) data->qvel[i] = uniform(random);
+  auto p = model::Parameters<double>().values();
+  HandWritten hand;
+  volatile double sink = 0;
+  int calls = std::max(20, 200000 / (n * n + 10));
+  std::vector<double> ours, theirs, mujoco, jacobian, differences;
+  for (int rep = 0; rep < 15; ++rep) {
+    ours.push_back(time_batch([&] { model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data()); sink = sink + xdot[N - 1]; }, calls));
+    mujoco.push_back(time_batch([&] { mj_forward(mj, data); sink = sink + data->qacc[0]; }, calls));
+    if (PLANAR) theirs.push_back(time_batch([&] { hand.rhs(x.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
+    jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; }, std::max(5, calls / N)));
+    differences.push_back(time_batch([&] {
+      for (int j = 0; j < N; ++j) {
+        double h = 1e-7 * std::max(1.0, std::abs(x[j])), keep = x[j];
+        x[j] = keep + h;
+        model::rhs(0.0, x.data(), u.data(), p.data(), plus.data());
+        x[j] = keep - h;
+        model::rhs(0.0, x.data(), u.data(), p.data(), minus.data());
+        x[j] = keep;
+        for (int i = 0; i < N; ++i) fd[i * N + j] = (plus[i] - minus[i]) / (2 * h);
+      }
+      sink = sink + fd[0];
+    }, std::max(5, calls / N)));
+  }
+  double agreement = 0;
+  if (PLANAR) {
+    model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data());
+    hand.rhs(x.data(), p.data(), xdot_hand.data());
+    for (int i = 0; i < N; ++i) agreement = std::max(agreement, std::abs(xdot[i] - xdot_hand[i]) / std::max(1.0, std::abs(xdot[i])));
+  }
+  std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %.1f, \"eigen_ns\": %s, \"jacobian_ns\": %.1f, "
+              "\"finite_difference_ns\": %.1f, \"hand_written_difference\": %.2g}\n",
+              median(ours), median(mujoco), PLANAR ? std::to_string(median(theirs)).c_str() : "null", median(jacobian),
+              median(differences), agreement);
+  mj_deleteData(data);
+  mj_deleteModel(mj);
+  return sink == 12345.678 ? 3 : 0;
+}
