@@ -9,6 +9,7 @@
 #include "model/symbols.hpp"
 #include "symbolic/cse.hpp"
 #include "symbolic/gradient.hpp"
+#include "symbolic/trig_expansion.hpp"
 
 namespace eomgen {
 
@@ -63,7 +64,9 @@ class BodyWriter {
 
   /// The statements computing a batch's temporaries; the outputs are returned as C++ text.
   std::vector<std::string> batch(const std::vector<ex>& expressions) {
-    CseBatch b = cse_.add(expressions);
+    std::vector<ex> for_code;
+    for (const ex& e : expressions) for_code.push_back(expand_trig_of_sums(e));
+    CseBatch b = cse_.add(for_code);
     for (const Temporary& t : b.temporaries) {
       names_[t.name] = t.name.get_name();
       note(t.definition);
