@@ -43,35 +43,26 @@ struct eomgen_model_abi {
 #ifdef __cplusplus
 }
 
-/* Defines `eomgen_model()` for the model in namespace eomgen::models::NAME. */
-#define EOMGEN_MODEL_ENTRY(NAME, KEY)                                                                  \
-  extern "C" const eomgen_model_abi* eomgen_model() {                                                  \
-    namespace m = eomgen::models::NAME;                                                                \
-    static const eomgen_model_abi abi = {EOMGEN_MODEL_ABI_VERSION, #NAME, KEY, m::num_coordinates,     \
-        m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,            \
-        m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                  \
-        m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                   \
-        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, m::is_cyclic.data(), \
-        m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>, m::forcing<double>,      \
-        m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,                         \
-        m::potential_energy<double>, m::linearization<double>};                                         \
-    return &abi;                                                                                       \
-  }
+/* The interface of the model in namespace eomgen::models::NAME, built for cache key KEY. */
+#define EOMGEN_MODEL_ABI_OF(NAME, KEY)                                                                 \
+  namespace m = eomgen::models::NAME;                                                                  \
+  static const eomgen_model_abi abi = {EOMGEN_MODEL_ABI_VERSION, #NAME, KEY, m::num_coordinates,       \
+      m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,              \
+      m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                    \
+      m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                     \
+      m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0,   \
+      m::is_cyclic.data(), m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>,       \
+      m::forcing<double>, m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,       \
+      m::potential_energy<double>, m::linearization<double>};                                          \
+  return &abi;
+
+/* Defines `eomgen_model()`, the entry point of a compiled model's shared object. */
+#define EOMGEN_MODEL_ENTRY(NAME, KEY) \
+  extern "C" const eomgen_model_abi* eomgen_model() { EOMGEN_MODEL_ABI_OF(NAME, KEY) }
 
 /* The same, as a function with another name, for linking a model into a program. */
-#define EOMGEN_MODEL_FUNCTION(FUNCTION, NAME)                                                          \
-  inline const eomgen_model_abi* FUNCTION() {                                                          \
-    namespace m = eomgen::models::NAME;                                                                \
-    static const eomgen_model_abi abi = {EOMGEN_MODEL_ABI_VERSION, #NAME, "", m::num_coordinates,      \
-        m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,            \
-        m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                  \
-        m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                   \
-        m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0, m::is_cyclic.data(), \
-        m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>, m::forcing<double>,      \
-        m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,                         \
-        m::potential_energy<double>, m::linearization<double>};                                         \
-    return &abi;                                                                                       \
-  }
+#define EOMGEN_MODEL_FUNCTION(FUNCTION, NAME) \
+  inline const eomgen_model_abi* FUNCTION() { EOMGEN_MODEL_ABI_OF(NAME, "") }
 #endif
 
 #endif /* EOMGEN_MODEL_ABI_H */

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analyse/equilibrium.hpp"
+#include "common/diagnostic.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::cli {
@@ -36,6 +37,9 @@ struct SimulationOptions {
 int simulate_model(const SimulationOptions& options);
 
 std::string json_escape(const std::string& s);
+
+/// Prints a derivation's diagnostics and the closing "nothing written" line; true when there were any.
+bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model_path);
 
 /// The equilibrium of `problem`: checked when --at names one, else searched for.
 /// Returns the exit status when there is none.

@@ -10,16 +10,19 @@
 
 namespace eomgen::cli {
 
+bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model_path) {
+  if (diagnostics.empty()) return false;
+  std::cerr << diagnostics.format();
+  std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", diagnostics.size(),
+                           diagnostics.size() == 1 ? "" : "s", model_path);
+  return true;
+}
+
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
                      bool linearize) {
   auto started = std::chrono::steady_clock::now();
   Derivation d = derive_model_file(model_path);
-  if (!d.diagnostics.empty()) {
-    std::cerr << d.diagnostics.format();
-    std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", d.diagnostics.size(),
-                             d.diagnostics.size() == 1 ? "" : "s", model_path);
-    return exit_user_error;
-  }
+  if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   if (linearize) add_linearization(*d.equations);
   std::string text = (*find_equation_format(format))(*d.equations);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

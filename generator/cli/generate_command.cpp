@@ -14,12 +14,7 @@ namespace eomgen::cli {
 int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path) {
   auto started = std::chrono::steady_clock::now();
   Derivation d = derive_model_file(model_path);
-  if (!d.diagnostics.empty()) {
-    std::cerr << d.diagnostics.format();
-    std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", d.diagnostics.size(),
-                             d.diagnostics.size() == 1 ? "" : "s", model_path);
-    return exit_user_error;
-  }
+  if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   std::string text = emit_cpp_header(*d.equations);
   std::error_code ec;
   std::string path = header_path && !header_path->empty()
