@@ -46,8 +46,8 @@ bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at,
                                   runtime::Equilibrium& out);
 
-/// Derives `model_path` and writes NAME.hpp into `directory`, or to `*header_path` when that is not empty.
-int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path);
+/// Derives `model_path` and writes NAME.hpp into `directory`, or to `header_file` when that is not empty.
+int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file);
 
 /// The model `eomgen run` uses when none is named.
 std::string default_model_path();

@@ -11,14 +11,14 @@
 
 namespace eomgen::cli {
 
-int generate_header(const std::string& model_path, const std::string& directory, std::string* header_path) {
+int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file) {
   auto started = std::chrono::steady_clock::now();
   Derivation d = derive_model_file(model_path);
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   std::string text = emit_cpp_header(*d.equations);
   std::error_code ec;
-  std::string path = header_path && !header_path->empty()
-                         ? *header_path
+  std::string path = !header_file.empty()
+                         ? header_file
                          : (std::filesystem::path(directory) / (d.equations->model_name + ".hpp")).string();
   std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
@@ -26,7 +26,6 @@ int generate_header(const std::string& model_path, const std::string& directory,
     std::cerr << "eomgen: " << failure << "\n";
     return exit_user_error;
   }
-  if (header_path) *header_path = path;
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::cerr << fmt::format("eomgen: generated {} ({} lines) in {:.3f} s\n", path,
                            std::count(text.begin(), text.end(), '\n'), seconds);
@@ -43,7 +42,7 @@ Command add_generate_command(CLI::App& app) {
   cmd->add_option("--header", *header, "Write the header to exactly this file instead")->excludes(folder);
   return [cmd, model, directory, header]() -> int {
     if (!cmd->parsed()) return -1;
-    return generate_header(*model, *directory, header.get());
+    return generate_header(*model, *directory, *header);
   };
 }
 

@@ -23,10 +23,7 @@ std::vector<bool> cyclic_coordinates(const Equations& e) {
 void add_linearization(Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = e.forcing.size(), m = s.inputs.size();
-  MotionSymbols motion;
-  motion.symbols.insert(s.time);
-  for (std::size_t i = 0; i < n; ++i) motion.symbols.insert(s.coordinates[i]), motion.symbols.insert(s.velocities[i]);
-  for (const auto& u : s.inputs) motion.symbols.insert(u);
+  MotionSymbols motion = motion_symbols(s);
   e.linear_damping_gyroscopic = GiNaC::matrix(n, n);
   e.linear_stiffness_circulatory = GiNaC::matrix(n, n);
   e.linear_input = GiNaC::matrix(n, std::max<std::size_t>(m, 1));

@@ -47,7 +47,7 @@ bool calls_functions(const ex& e) {
 /// Writes the body of one generated function from CSE batches.
 class BodyWriter {
  public:
-  explicit BodyWriter(const Equations& e) : e_(e), n_(e.symbols.num_coordinates()) {
+  explicit BodyWriter(const Equations& e) : n_(e.symbols.num_coordinates()) {
     const Symbols& s = e.symbols;
     for (std::size_t i = 0; i < n_; ++i) {
       inputs_.push_back({s.coordinates[i], "q_" + s.coordinate_names[i], fmt::format("x[{}]", i)});
@@ -58,6 +58,10 @@ class BodyWriter {
     for (std::size_t i = 0; i < s.inputs.size(); ++i)
       inputs_.push_back({s.inputs[i], "u_" + s.input_names[i], fmt::format("u[{}]", i)});
     for (std::size_t i = 0; i < n_; ++i) accelerations_.emplace_back(fmt::format("ddq{}", i));
+    // every symbol's C++ name, looked up once per printed symbol
+    names_[s.time] = "t";
+    for (const Input& in : inputs_) names_[in.symbol] = in.name;
+    for (std::size_t i = 0; i < n_; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
   }
 
   const std::vector<GiNaC::symbol>& accelerations() const { return accelerations_; }
@@ -104,18 +108,12 @@ class BodyWriter {
 
   std::string code(const ex& e) {
     return cpp_expression(e, [this](const GiNaC::symbol& s) -> std::string {
-      if (ex(s).is_equal(e_.symbols.time)) return "t";
-      for (const auto& in : inputs_)
-        if (in.symbol.is_equal(ex(s))) return in.name;
-      for (std::size_t i = 0; i < accelerations_.size(); ++i)
-        if (accelerations_[i].is_equal(s)) return fmt::format("ddq[{}]", i);
       auto found = names_.find(s);
       if (found != names_.end()) return found->second;
       throw std::runtime_error("no C++ name for symbol " + s.get_name());
     });
   }
 
-  const Equations& e_;
   std::size_t n_;
   std::vector<Input> inputs_;
   std::vector<GiNaC::symbol> accelerations_;

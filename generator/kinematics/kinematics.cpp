@@ -5,6 +5,15 @@ namespace eomgen {
 
 using GiNaC::ex;
 
+MotionSymbols motion_symbols(const Symbols& s) {
+  MotionSymbols m;
+  m.symbols.insert(s.time);
+  for (const auto& q : s.coordinates) m.symbols.insert(q);
+  for (const auto& v : s.velocities) m.symbols.insert(v);
+  for (const auto& u : s.inputs) m.symbols.insert(u);
+  return m;
+}
+
 ex time_derivative(const ex& x, const Symbols& s) {
   std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
   variables.push_back(s.time);
@@ -16,14 +25,6 @@ ex time_derivative(const ex& x, const Symbols& s) {
 
 namespace {
 
-MotionSymbols motion_symbols(const Symbols& s) {
-  MotionSymbols m;
-  m.symbols.insert(s.time);
-  for (const auto& q : s.coordinates) m.symbols.insert(q);
-  for (const auto& v : s.velocities) m.symbols.insert(v);
-  for (const auto& u : s.inputs) m.symbols.insert(u);
-  return m;
-}
 
 // J = ∂r/∂q (3 × n); v = J q̇ + ∂r/∂t; a − J q̈ = Σ ∂v/∂q_k q̇_k + ∂v/∂t
 void translate(BodyKinematics& b, const Vector3& r, const Symbols& s) {

@@ -46,6 +46,9 @@ struct Mechanics {
 /// ω from skew(ω_B) = Rᵀ·dR/dt, energies, and Q_j = Σ F·∂v/∂q̇_j + M·∂ω/∂q̇_j.
 Mechanics compute_mechanics(const Model& model);
 
+/// The symbols that change along a motion: q, q', t and u.
+MotionSymbols motion_symbols(const Symbols& symbols);
+
 /// dx/dt along the motion, without the q̈ terms: Σ ∂x/∂q_k q̇_k + ∂x/∂t
 /// (for x linear in q̇ this is the bias term of its time derivative).
 GiNaC::ex time_derivative(const GiNaC::ex& x, const Symbols& symbols);

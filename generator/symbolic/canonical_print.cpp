@@ -208,6 +208,4 @@ std::string latex_text(const ex& e, const std::function<std::string(const GiNaC:
   return Printer(true, symbol_name).print(e).text;
 }
 
-bool canonical_less(const ex& a, const ex& b) { return canonical_text(a) < canonical_text(b); }
-
 }  // namespace eomgen

@@ -17,7 +17,4 @@ std::string canonical_text(const GiNaC::ex& e);
 /// LaTeX; `symbol_name` gives the TeX of each symbol.
 std::string latex_text(const GiNaC::ex& e, const std::function<std::string(const GiNaC::symbol&)>& symbol_name);
 
-/// A total order on expressions that depends only on their canonical text.
-bool canonical_less(const GiNaC::ex& a, const GiNaC::ex& b);
-
 }  // namespace eomgen

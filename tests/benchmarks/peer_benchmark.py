@@ -28,20 +28,11 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from chain_models import planar_chain  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 LIMIT = 120.0
-
-
-def planar_model(n):
-    lines = ['[model]', f'name = "chain{n}"', f'title = "Planar {n}-link pendulum"', '[parameters]']
-    lines += [f"m{i} = 1.0\nl{i} = 0.5" for i in range(1, n + 1)] + ["g = 9.81", "[coordinates]"]
-    lines += [f"phi{i} = {0.1 * i:.1f}" for i in range(1, n + 1)]
-    for i in range(1, n + 1):
-        x = " + ".join(f"l{j}*sin(phi{j})" for j in range(1, i + 1))
-        y = " - ".join(f"l{j}*cos(phi{j})" for j in range(1, i + 1))
-        lines.append(f'[[particles]]\nname = "b{i}"\nmass = "m{i}"\nposition = ["{x}", "-{y}", "0"]')
-    lines.append('[gravity]\nacceleration = ["0", "-g", "0"]')
-    return "\n".join(lines) + "\n"
 
 
 def spatial_model(n):
@@ -164,7 +155,7 @@ def main():
             name = f"chain{n}" if kind == "planar" else f"spatial{n}"
             model = os.path.join(work, name + ".toml")
             with open(model, "w") as f:
-                f.write(planar_model(n) if kind == "planar" else spatial_model(n))
+                f.write(planar_chain(n) if kind == "planar" else spatial_model(n))
             print(f"peer benchmark: {name} ...", file=sys.stderr, flush=True)
             derive = timed_generate(eomgen, model, work, 3 if n <= 16 else 1)
             with open(os.path.join(work, name + ".hpp")) as f:

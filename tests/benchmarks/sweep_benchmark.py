@@ -22,6 +22,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from chain_models import planar_chain  # noqa: E402
+
 try:
     import numpy as np
     import sympy as sp
@@ -31,19 +34,6 @@ except ImportError:
     sys.exit(77)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-
-
-def chain_model(n, path):
-    lines = ['[model]', f'name = "chain{n}"', f'title = "Planar {n}-link pendulum"', '[parameters]']
-    lines += [f"m{i} = 1.0\nl{i} = 0.5" for i in range(1, n + 1)] + ["g = 9.81", "[coordinates]"]
-    lines += [f"phi{i} = 0.0" for i in range(1, n + 1)]
-    for i in range(1, n + 1):
-        x = " + ".join(f"l{j}*sin(phi{j})" for j in range(1, i + 1))
-        y = " - ".join(f"l{j}*cos(phi{j})" for j in range(1, i + 1))
-        lines.append(f'[[particles]]\nname = "b{i}"\nmass = "m{i}"\nposition = ["{x}", "-{y}", "0"]')
-    lines.append('[gravity]\nacceleration = ["0", "-g", "0"]')
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
 
 
 def run(eomgen, *args):
@@ -129,7 +119,8 @@ def main():
     eomgen, quick = sys.argv[1], "--quick" in sys.argv
     work = tempfile.mkdtemp()
     chain = os.path.join(work, "chain6.toml")
-    chain_model(6, chain)
+    with open(chain, "w") as f:
+        f.write(planar_chain(6, name="chain6"))
     size = 4 if quick else 200
     stride = 2 if quick else 13
     cases = [("watt_governor", os.path.join(ROOT, "models", "watt_governor.toml"), "b=0.05:1.2:{}", "J=0.05:3:{}"),

@@ -28,10 +28,7 @@ TEST(AngularVelocity, SequenceAgreesWithMatrixRoute) {
       {0, s.coordinates[0]}, {1, s.coordinates[1]}, {2, s.coordinates[2] + 3 * s.time}, {0, s.coordinates[0] * s.coordinates[1]}};
   GiNaC::matrix R = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
   for (const ElementaryRotation& r : sequence) R = R.mul(elementary_rotation(r.axis, r.angle));
-  MotionSymbols motion;
-  for (const auto& x : s.coordinates) motion.symbols.insert(x);
-  for (const auto& x : s.velocities) motion.symbols.insert(x);
-  motion.symbols.insert(s.time);
+  MotionSymbols motion = motion_symbols(s);
   Vector3 a = angular_velocity_of_sequence(sequence, s);
   Vector3 b = angular_velocity_of_matrix(R, s, motion);
   auto points = random_points(s, 20);
