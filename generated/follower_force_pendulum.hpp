@@ -15,6 +15,7 @@ inline constexpr std::size_t num_states = 4;
 inline constexpr std::size_t num_parameters = 4;
 inline constexpr std::size_t num_inputs = 0;
 inline constexpr std::size_t num_outputs = 0;
+inline constexpr const char* method = "lagrange2";
 
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m", "l", "c", "P"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"phi1", "phi2"}};
@@ -44,6 +45,18 @@ struct Parameters {
   Scalar P = Scalar(1);
   std::array<Scalar, num_parameters> values() const { return {{m, l, c, P}}; }
 };
+
+/// Constraints C(q,t) q' + b(q,t) = 0, the holonomic ones g(q,t) = 0 differentiated once.
+inline constexpr std::size_t num_constraints = 0;
+/// Lagrange I: one multiplier per constraint, M q'' = f + C^T lambda; none otherwise.
+inline constexpr std::size_t num_multipliers = 0;
+inline constexpr std::array<const char*, num_constraints> constraint_names{{}};
+inline constexpr std::array<bool, num_constraints> constraint_is_holonomic{{}};
+inline constexpr std::array<const char*, num_multipliers> multiplier_names{{}};
+/// Baumgarte's stabilization of Lagrange I: C q'' + gamma = -2 alpha (C q' + b) - beta^2 g,
+/// so that a constraint error e obeys e'' + 2 alpha e' + beta^2 e = 0; rhs uses these gains [1/s].
+inline constexpr double baumgarte_alpha = 10;
+inline constexpr double baumgarte_beta = 10;
 
 namespace detail {
 
@@ -105,8 +118,8 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
   const T q_phi1 = x[0];
-  const T dq_phi1 = x[2];
   const T q_phi2 = x[1];
+  const T dq_phi1 = x[2];
   const T dq_phi2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
@@ -127,8 +140,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
   const T q_phi1 = x[0];
-  const T dq_phi1 = x[2];
   const T q_phi2 = x[1];
+  const T dq_phi1 = x[2];
   const T dq_phi2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
@@ -167,8 +180,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
   const T q_phi1 = x[0];
-  const T dq_phi1 = x[2];
   const T q_phi2 = x[1];
+  const T dq_phi1 = x[2];
   const T dq_phi2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
@@ -237,7 +250,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0
 /// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from
-/// mass_matrix. P, Q: 2x2; B: 2x0; all row-major.
+/// mass_matrix. P: 2x2; Q: 2x2; B: 2x0; all row-major.
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
@@ -245,8 +258,8 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
   const T q_phi1 = x[0];
-  const T dq_phi1 = x[2];
   const T q_phi2 = x[1];
+  const T dq_phi1 = x[2];
   const T dq_phi2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
@@ -279,8 +292,8 @@ T kinetic_energy(T t, const T* x, const T* p) {
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
   const T q_phi1 = x[0];
-  const T dq_phi1 = x[2];
   const T q_phi2 = x[1];
+  const T dq_phi1 = x[2];
   const T dq_phi2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
@@ -301,6 +314,39 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
+}
+
+/// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x2, row-major.
+template <class T>
+void constraint_jacobian(T t, const T* x, const T* p, T* C) {
+  (void)t; (void)x; (void)p; (void)C;
+}
+
+/// Constraint residuals: g(q,t) of the holonomic constraints (0 for the others) and
+/// C q' + b of all, with q' from the state. position, velocity: 0.
+template <class T>
+void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity) {
+  (void)t; (void)x; (void)p; (void)position; (void)velocity;
+}
+
+/// The same as rhs: Baumgarte's gains apply to Lagrange I models only.
+template <class T>
+void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* xdot) {
+  (void)alpha; (void)beta;
+  rhs(t, x, u, p, xdot);
+}
+
+/// The same as jacobian_state: Baumgarte's gains apply to Lagrange I models only.
+template <class T>
+void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
+  (void)alpha; (void)beta;
+  jacobian_state(t, x, u, p, J);
+}
+
+/// Only Lagrange I models have multipliers: nothing is written.
+template <class T>
+void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* lambda) {
+  (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
 }  // namespace eomgen::models::follower_force_pendulum

@@ -1,5 +1,7 @@
 #include "pipeline.hpp"
 
+#include <stdexcept>
+
 #include "derive/methods.hpp"
 #include "kinematics/mechanics.hpp"
 #include "parse/model_file.hpp"
@@ -16,7 +18,12 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics) {
         diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", refusal);
       } else {
         Mechanics mechanics = compute_mechanics(model);
-        result.equations = (*find_method(model.method))(model, mechanics);
+        try {
+          result.equations = (*find_method(model.method))(model, mechanics);
+        } catch (const std::invalid_argument& why) {
+          diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", why.what(),
+                            "choose pseudo-velocities that, with the constraints, determine every velocity");
+        }
       }
     }
   }

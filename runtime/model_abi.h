@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define EOMGEN_MODEL_ABI_VERSION 2
+#define EOMGEN_MODEL_ABI_VERSION 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -16,6 +16,9 @@ extern "C" {
 typedef void (*eomgen_state_function)(double t, const double* x, const double* u, const double* p, double* out);
 typedef void (*eomgen_configuration_function)(double t, const double* x, const double* p, double* out);
 typedef double (*eomgen_energy_function)(double t, const double* x, const double* p);
+typedef void (*eomgen_stabilized_function)(double t, const double* x, const double* u, const double* p, double alpha,
+                                           double beta, double* out);
+typedef void (*eomgen_residual_function)(double t, const double* x, const double* p, double* position, double* velocity);
 typedef void (*eomgen_linearization_function)(double t, const double* x, const double* u, const double* p, double* P,
                                               double* Q, double* B);
 
@@ -38,6 +41,17 @@ struct eomgen_model_abi {
   eomgen_configuration_function mass_matrix;
   eomgen_energy_function kinetic_energy, potential_energy;
   eomgen_linearization_function linearization;
+  /* constraints (num_constraints = 0 without them); multipliers of Lagrange I */
+  const char* method;
+  size_t num_constraints, num_multipliers;
+  const char* const* constraint_names;
+  const bool* constraint_is_holonomic;
+  const char* const* multiplier_names;
+  double baumgarte_alpha, baumgarte_beta;
+  eomgen_configuration_function constraint_jacobian;
+  eomgen_residual_function constraint_residuals;
+  eomgen_state_function multipliers;
+  eomgen_stabilized_function rhs_stabilized, jacobian_state_stabilized;
 };
 
 #ifdef __cplusplus
@@ -53,7 +67,11 @@ struct eomgen_model_abi {
       m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0,   \
       m::is_cyclic.data(), m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>,       \
       m::forcing<double>, m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,       \
-      m::potential_energy<double>, m::linearization<double>};                                          \
+      m::potential_energy<double>, m::linearization<double>, m::method, m::num_constraints,             \
+      m::num_multipliers, m::constraint_names.data(), m::constraint_is_holonomic.data(),               \
+      m::multiplier_names.data(), m::baumgarte_alpha, m::baumgarte_beta, m::constraint_jacobian<double>, \
+      m::constraint_residuals<double>, m::multipliers<double>, m::rhs_stabilized<double>,              \
+      m::jacobian_state_stabilized<double>};                                                           \
   return &abi;
 
 /* Defines `eomgen_model()`, the entry point of a compiled model's shared object. */

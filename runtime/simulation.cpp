@@ -3,19 +3,23 @@
 #include <arkode/arkode_butcher_erk.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "integrate/projection.hpp"
 #include "integrate/stepper.hpp"
 
 namespace eomgen::runtime {
 
 const std::vector<std::string>& integrator_names() {
   static const std::vector<std::string> names = {"cvode-bdf", "cvode-adams", "arkode-dp5", "arkode-verner",
-                                                 "arkode-dirk", "rk4", "verlet"};
+                                                 "arkode-dirk", "rk4", "verlet", "ida"};
   return names;
 }
+
+bool is_dae_integrator(const std::string& name) { return name == "ida"; }
 
 namespace {
 
@@ -29,10 +33,12 @@ std::unique_ptr<Stepper> make_stepper(RightHandSide& f, const std::vector<double
   if (name == "arkode-dirk") return make_arkode_dirk(f, x0, s);
   if (name == "rk4") return make_fixed_step(f, x0, s, false);
   if (name == "verlet") return make_fixed_step(f, x0, s, true);
+  if (name == "ida") return make_ida(f, x0, s);
   throw std::invalid_argument("unknown integrator " + name);
 }
 
 void record(const Problem& p, double t, const std::vector<double>& x, Trajectory& out) {
+  const ConstraintProjection measure(p);
   const eomgen_model_abi& m = *p.model;
   const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
   out.times.push_back(t);
@@ -42,6 +48,13 @@ void record(const Problem& p, double t, const std::vector<double>& x, Trajectory
   std::vector<double> y(m.num_outputs);
   if (m.num_outputs) m.outputs(t, x.data(), u, p.parameters.data(), y.data());
   out.outputs.push_back(y);
+  if (m.num_constraints == 0) return;
+  std::vector<double> lambda(m.num_multipliers);
+  if (m.num_multipliers) m.multipliers(t, x.data(), u, p.parameters.data(), lambda.data());
+  out.multipliers.push_back(lambda);
+  auto [position, velocity] = measure.residuals(t, x.data());
+  out.position_residuals.push_back(position);
+  out.velocity_residuals.push_back(velocity);
 }
 
 std::string configuration(const eomgen_model_abi& m, const std::vector<double>& x) {
@@ -82,13 +95,38 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
 
 }  // namespace
 
-SimulationResult simulate(const Problem& problem, const std::vector<double>& x0, const SimulationSettings& settings) {
+SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_given, const SimulationSettings& settings) {
   SimulationResult result;
-  RightHandSide f(problem);
-  std::vector<double> x = x0;
-  double scale = mass_matrix_range(problem, settings.t_start, x0).second;
+  const eomgen_model_abi& m = *problem.model;
+  bool lagrange1 = m.num_multipliers > 0;
+  if (is_dae_integrator(settings.integrator) && !lagrange1)
+    throw std::invalid_argument("the integrator ida solves Lagrange I models (method = \"lagrange1\") only");
+  if (settings.integrator == "verlet" && m.num_coordinates != m.num_velocities)
+    throw std::invalid_argument("Störmer–Verlet needs q' = v; the state of Appell's equations holds pseudo-velocities: "
+                                "use rk4 or an adaptive integrator");
+  bool baumgarte = lagrange1 && settings.baumgarte && !is_dae_integrator(settings.integrator);
+  RightHandSide f(problem, baumgarte ? (settings.baumgarte_alpha >= 0 ? settings.baumgarte_alpha : m.baumgarte_alpha) : 0,
+                  baumgarte ? (settings.baumgarte_beta >= 0 ? settings.baumgarte_beta : m.baumgarte_beta) : 0);
+  ConstraintProjection projection(problem);
+  std::vector<double> x = x0_given;
+  // a consistent initial state: the model's, moved onto the constraints (always, for every integrator)
+  if (m.num_constraints && !projection.project(settings.t_start, x.data())) {
+    auto [position, velocity] = projection.residuals(settings.t_start, x0_given.data());
+    result.failed = true;
+    result.failure = fmt::format("no consistent initial state near the given one: Newton's method on the position "
+                                 "constraints did not converge from {} (largest |g| = {:.3g}); start closer to a "
+                                 "configuration that meets the constraints",
+                                 configuration(m, x0_given), position);
+    (void)velocity;
+    return result;
+  }
+  // Appell's pseudo-velocities meet velocity constraints by construction; holonomic ones may drift
+  bool holonomic = false;
+  for (std::size_t i = 0; i < m.num_constraints; ++i) holonomic = holonomic || m.constraint_is_holonomic[i];
+  if ((lagrange1 || holonomic) && settings.projection && !is_dae_integrator(settings.integrator)) f.projection = &projection;
+  double scale = mass_matrix_range(problem, settings.t_start, x).second;
   record(problem, settings.t_start, x, result.trajectory);
-  auto stepper = make_stepper(f, x0, settings);
+  auto stepper = make_stepper(f, x, settings);
   // output times are exact multiples of dt_out, then the final time
   for (long k = 1;; ++k) {
     double t = settings.t_start + k * settings.dt_out;
@@ -106,6 +144,10 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0,
     if (last) break;
   }
   result.statistics = stepper->statistics();
+  const Trajectory& tr = result.trajectory;
+  for (double r : tr.position_residuals) result.max_position_residual = std::max(result.max_position_residual, r);
+  for (double r : tr.velocity_residuals) result.max_velocity_residual = std::max(result.max_velocity_residual, r);
+  result.projections = projection.projections();
   return result;
 }
 

@@ -22,7 +22,14 @@ struct SimulationSettings {
   double rtol = 1e-8, atol = 1e-10;
   double step = 0;               // fixed step of rk4 and verlet; 0: dt_out/10
   long max_steps = 200'000;      // between two output times
+  // constrained models: Baumgarte's stabilization (Lagrange I) and projection onto the
+  // constraint manifold after every step; gains < 0 take the model's defaults
+  bool baumgarte = true, projection = true;
+  double baumgarte_alpha = -1, baumgarte_beta = -1;
 };
+
+/// The integrators that solve Lagrange I as a differential-algebraic system.
+bool is_dae_integrator(const std::string& name);
 
 struct SolverStatistics {
   long steps = 0, rhs_evaluations = 0, jacobian_evaluations = 0;
@@ -36,6 +43,8 @@ struct Trajectory {
   std::vector<std::vector<double>> states;   // num_states each
   std::vector<double> energies;              // T + V
   std::vector<std::vector<double>> outputs;  // num_outputs each
+  std::vector<std::vector<double>> multipliers;  // num_multipliers each (Lagrange I)
+  std::vector<double> position_residuals, velocity_residuals;  // largest |g|, |C q' + b| (constrained models)
 };
 
 struct SimulationResult {
@@ -45,6 +54,8 @@ struct SimulationResult {
   double failure_time = 0;
   int solver_flag = 0;
   std::string failure;  // what went wrong, for the user
+  double max_position_residual = 0, max_velocity_residual = 0;
+  long projections = 0;
 };
 
 /// The integrators by command-line name, the default first.

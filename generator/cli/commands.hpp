@@ -30,6 +30,7 @@ struct SimulationOptions {
   runtime::SimulationSettings settings;
   std::vector<std::string> sets, initials;
   std::string csv, plot, header_dir;
+  std::string stabilization = "both";  // constrained models: both, baumgarte, projection or none
   bool json = false;
 };
 

@@ -24,6 +24,32 @@ double relative_energy_drift(const runtime::Trajectory& t) {
   return worst / std::max(std::abs(e0), 1e-300);
 }
 
+// the largest |λ| of each multiplier over the run
+std::vector<double> largest_multipliers(const eomgen_model_abi& m, const runtime::Trajectory& t) {
+  std::vector<double> largest(m.num_multipliers, 0.0);
+  for (const auto& row : t.multipliers)
+    for (std::size_t i = 0; i < row.size(); ++i) largest[i] = std::max(largest[i], std::abs(row[i]));
+  return largest;
+}
+
+std::string constraint_summary(const eomgen_model_abi& m, const runtime::SimulationResult& r, bool json) {
+  std::vector<double> largest = largest_multipliers(m, r.trajectory);
+  if (json) {
+    std::string multipliers;
+    for (std::size_t i = 0; i < largest.size(); ++i)
+      multipliers += fmt::format("{}\"{}\": {:.6g}", i ? ", " : "", m.multiplier_names[i], largest[i]);
+    return fmt::format(", \"constraints\": {{\"count\": {}, \"max_position_residual\": {:.6g}, "
+                       "\"max_velocity_residual\": {:.6g}, \"projections\": {}, \"max_abs_multipliers\": {{{}}}}}",
+                       m.num_constraints, r.max_position_residual, r.max_velocity_residual, r.projections, multipliers);
+  }
+  std::string out = fmt::format("  constraints: largest |g| = {:.3e}, largest |C q' + b| = {:.3e} over the output times{}\n",
+                                r.max_position_residual, r.max_velocity_residual,
+                                r.projections ? fmt::format(" ({} projections)", r.projections) : "");
+  for (std::size_t i = 0; i < largest.size(); ++i)
+    out += fmt::format("  constraint force: max |{}| = {:.6g}\n", m.multiplier_names[i], largest[i]);
+  return out;
+}
+
 void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const runtime::SimulationResult& r,
                    bool conservative, bool json) {
   const runtime::SolverStatistics& s = r.statistics;
@@ -36,10 +62,10 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
         "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
-        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}, \"failure\": {}}}\n",
+        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}, \"failure\": {}}}\n",
         m.name, o.settings.integrator, o.settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
-        conservative ? "true" : "false", drift, failure);
+        conservative ? "true" : "false", drift, m.num_constraints ? constraint_summary(m, r, true) : "", failure);
     return;
   }
   std::cout << fmt::format("{}: {} from t = {:g} to {:.9g}, {} output rows\n", m.name, o.settings.integrator,
@@ -51,6 +77,7 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
   std::cout << fmt::format("  max |E(t) - E(0)| / |E(0)| = {:.3e}{}\n", drift,
                            conservative ? " (energy is conserved by this model: this is the integration error)"
                                         : " (the model does not conserve T + V)");
+  if (m.num_constraints) std::cout << constraint_summary(m, r, false);
 }
 
 }  // namespace
@@ -96,7 +123,20 @@ int simulate_model(const SimulationOptions& o) {
     return exit_user_error;
   }
   std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, o.settings.integrator, o.settings.t_end);
-  runtime::SimulationResult result = runtime::simulate(problem, x0, o.settings);
+  runtime::SimulationSettings settings = o.settings;
+  settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
+  settings.projection = o.stabilization == "both" || o.stabilization == "projection";
+  runtime::SimulationResult result;
+  try {
+    result = runtime::simulate(problem, x0, settings);
+  } catch (const std::invalid_argument& why) {
+    std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", o.settings.integrator, why.what());
+    return exit_user_error;
+  }
+  if (result.failed && result.trajectory.times.empty()) {
+    std::cerr << fmt::format("eomgen: the simulation cannot start: {}\n", result.failure);
+    return exit_numerical_failure;
+  }
   bool conservative = m.conserves_energy_without_inputs &&
                       std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
   if (!o.csv.empty()) {
@@ -123,11 +163,18 @@ int simulate_model(const SimulationOptions& o) {
 void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   cmd->add_option("--t-end", o.settings.t_end, "End time [s] (default 10)");
   cmd->add_option("--dt-out", o.settings.dt_out, "Output interval [s] (default 0.01)");
-  cmd->add_option("--integrator", o.settings.integrator, "cvode-bdf (default), cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet")
+  cmd->add_option("--integrator", o.settings.integrator,
+                  "cvode-bdf (default), cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet, "
+                  "ida (Lagrange I models, as a differential-algebraic system)")
       ->check(CLI::IsMember(runtime::integrator_names()));
   cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
   cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");
   cmd->add_option("--step", o.settings.step, "Fixed step of rk4 and verlet [s] (default dt-out/10)");
+  cmd->add_option("--stabilization", o.stabilization,
+                  "Constrained models: both (default), baumgarte (Lagrange I), projection (after every step) or none")
+      ->check(CLI::IsMember({"both", "baumgarte", "projection", "none"}));
+  cmd->add_option("--baumgarte-alpha", o.settings.baumgarte_alpha, "Baumgarte's damping gain [1/s] (default: the model's, 10)");
+  cmd->add_option("--baumgarte-beta", o.settings.baumgarte_beta, "Baumgarte's stiffness gain [1/s] (default: the model's, 10)");
   cmd->add_option("--set", o.sets, "Parameter or input value, one per flag: --set m=2.5")->allow_extra_args(false);
   cmd->add_option("--initial", o.initials, "Initial value, one per flag: --initial phi=0.3 --initial 'der(phi)=1'")->allow_extra_args(false);
   cmd->add_option("-o,--output", o.csv, "Trajectory CSV file");

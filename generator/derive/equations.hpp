@@ -11,6 +11,24 @@
 
 namespace eomgen {
 
+/// The constraints at velocity level, C(q,t)·q' + b(q,t) = 0 (Hiller §2.2); the holonomic
+/// ones g(q,t) = 0 differentiated once, so C = ∂g/∂q and b = ∂g/∂t for them. At acceleration
+/// level C q'' + acceleration_bias = 0.
+struct ConstraintSet {
+  std::vector<std::string> names;
+  std::vector<bool> holonomic;
+  std::vector<GiNaC::ex> position;           // g(q,t); 0 for nonholonomic rows
+  GiNaC::matrix jacobian;                    // C: m × n (coordinates)
+  std::vector<GiNaC::ex> bias;               // b(q,t)
+  std::vector<GiNaC::ex> acceleration_bias;  // d/dt(C q' + b) − C q'', in q, q', t
+  std::size_t size() const { return names.size(); }
+  std::size_t num_holonomic() const;
+};
+
+/// The derived equations of motion M·v' = f with q' = v, or, for Appell's equations,
+/// q' = coordinate_rates(q, s, t) with the pseudo-velocities s as v (then M and f are
+/// in s, and `symbols.velocities` are the pseudo-velocities). Lagrange I adds the
+/// constraint forces: M q'' = f + Cᵀλ.
 struct Equations {
   std::string model_name, title, method;
   std::string source;  // the model file's path as given
@@ -20,6 +38,16 @@ struct Equations {
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;
   std::vector<NamedSymbolic> outputs;
+  ConstraintSet constraints;
+  bool has_multipliers = false;  // Lagrange I: M q'' = f + Cᵀλ, solved together with C q'' + γ = 0
+  /// Appell (Hiller §4.3): q' = W(q,t)·s + w(q,t); empty when q' = v.
+  std::vector<GiNaC::ex> coordinate_rates;
+  std::vector<GiNaC::realsymbol> coordinate_velocities;      // the model's der(q), when v are pseudo-velocities
+  std::vector<NamedSymbolic> pseudo_velocity_definitions;    // s = Y q' + y, as given or chosen
+  GiNaC::ex acceleration_energy;                             // S(q, s, s', t), without terms free of s'
+  std::vector<GiNaC::realsymbol> pseudo_accelerations;       // s', as they appear in S
+  std::size_t num_velocities() const { return symbols.velocities.size(); }
+  bool uses_pseudo_velocities() const { return !coordinate_rates.empty(); }
   /// T + V is a first integral when the inputs are zero: no dissipation, no applied
   /// forces at u = 0, and no explicit time dependence (Hiller §3.6).
   bool conserves_energy_without_inputs = false;

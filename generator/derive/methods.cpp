@@ -39,24 +39,29 @@ void add_linearization(Equations& e) {
 
 std::optional<DerivationMethod> find_method(const std::string& name) {
   if (name == "lagrange2") return &derive_lagrange2;
+  if (name == "lagrange1") return &derive_lagrange1;
+  if (name == "appell") return &derive_appell;
   return std::nullopt;
 }
 
 std::string method_refusal(const Model& model) {
-  if (!model.constraints.empty()) {
+  if (!find_method(model.method))
+    return fmt::format("method \"{}\" is not available in this version of eomgen; use \"lagrange2\", "
+                       "\"lagrange1\" (constraints with multipliers) or \"appell\" (pseudo-velocities)",
+                       model.method);
+  if (model.method == "lagrange2" && !model.constraints.empty()) {
     bool nonholonomic = false;
     for (const Constraint& c : model.constraints) nonholonomic = nonholonomic || !c.holonomic;
-    return fmt::format(
-        "the model has {} constraint{}; constrained systems are derived by method = \"lagrange1\"{}, "
-        "which this version of eomgen does not have yet",
-        model.constraints.size(), model.constraints.size() == 1 ? "" : "s",
-        nonholonomic ? " or \"appell\"" : "");
+    return fmt::format("the model has {} constraint{}; Lagrange's equations of the second kind need independent "
+                       "coordinates: use method = \"lagrange1\" (multipliers){}",
+                       model.constraints.size(), model.constraints.size() == 1 ? "" : "s",
+                       nonholonomic ? " or \"appell\" (pseudo-velocities)" : " or \"appell\"");
   }
-  if (!model.pseudo_velocities.empty())
-    return "[pseudo_velocities] are used by method = \"appell\", which this version of eomgen does not have yet";
-  if (!find_method(model.method))
-    return fmt::format("method \"{}\" is not available in this version of eomgen; use method = \"lagrange2\"",
-                       model.method);
+  if (model.method != "appell" && !model.pseudo_velocities.empty())
+    return "[pseudo_velocities] are used by Appell's equations: use method = \"appell\", or remove the section";
+  if (model.constraints.size() >= model.symbols.coordinates.size())
+    return fmt::format("{} constraints leave no degree of freedom of the {} coordinates", model.constraints.size(),
+                       model.symbols.coordinates.size());
   return {};
 }
 

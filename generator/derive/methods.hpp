@@ -14,6 +14,13 @@ using DerivationMethod = Equations (*)(const Model&, const Mechanics&);
 /// Lagrange's equations of the second kind (Hiller §3.3).
 Equations derive_lagrange2(const Model& model, const Mechanics& mechanics);
 
+/// Lagrange's equations of the first kind, with multipliers (Hiller §2.4, §4.2).
+Equations derive_lagrange1(const Model& model, const Mechanics& mechanics);
+
+/// Appell's equations with pseudo-velocities (Hiller §4.3). Throws std::invalid_argument
+/// with the reason when the pseudo-velocities do not determine the velocities.
+Equations derive_appell(const Model& model, const Mechanics& mechanics);
+
 /// The method a model file names, if this version of eomgen has it.
 std::optional<DerivationMethod> find_method(const std::string& name);
 

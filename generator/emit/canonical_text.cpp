@@ -19,12 +19,41 @@ std::string assignments(const std::vector<std::string>& names, const std::vector
     s += (s.empty() ? "" : ", ") + names[i] + " = " + format_number(values[i]);
   return s;
 }
+// constraints, and for Appell's equations the pseudo-velocities and the acceleration energy
+std::string constrained_text(const Equations& e) {
+  std::string out;
+  const ConstraintSet& c = e.constraints;
+  if (c.size()) out += "\n# constraints C(q,t)*der(q) + b(q,t) = 0, the holonomic ones g(q,t) = 0 differentiated\n";
+  for (unsigned i = 0; i < c.size(); ++i) {
+    if (c.holonomic[i]) out += fmt::format("g[{}] = {}\n", c.names[i], canonical_text(c.position[i]));
+    for (unsigned j = 0; j < c.jacobian.cols(); ++j)
+      out += fmt::format("C[{}][{}] = {}\n", c.names[i], e.symbols.coordinate_names[j], canonical_text(c.jacobian(i, j)));
+    out += fmt::format("b[{}] = {}\n", c.names[i], canonical_text(c.bias[i]));
+  }
+  if (e.has_multipliers) {
+    out += "multipliers:";
+    for (const std::string& name : c.names) out += " lambda_" + name;
+    out += "\n";
+  }
+  if (!e.uses_pseudo_velocities()) return out;
+  out += "\n# pseudo-velocities s = Y(q,t)*der(q) + y(q,t) and the kinematic equations\n";
+  for (const NamedSymbolic& p : e.pseudo_velocity_definitions)
+    out += fmt::format("s[{}] = {}\n", p.name, canonical_text(p.expression));
+  for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j)
+    out += fmt::format("{} = {}\n", e.coordinate_velocities[j].get_name(), canonical_text(e.coordinate_rates[j]));
+  out += fmt::format("# acceleration energy (terms with der(s)); Appell: d S / d der(s) = Pi\nS = {}\n",
+                     canonical_text(e.acceleration_energy));
+  return out;
+}
+
 }  // namespace
 
 std::string emit_canonical_text(const Equations& e) {
   const Symbols& s = e.symbols;
-  std::string out = fmt::format("# equations of motion by eomgen {}: M(q,t)*der(der(q)) = f(q,der(q),u,t); do not edit\n",
-                                version_string);
+  const char* form = e.uses_pseudo_velocities() ? "M(q,t)*der(s) = f(q,s,u,t), der(q) = W(q,t)*s + w(q,t)"
+                     : e.has_multipliers        ? "M(q,t)*der(der(q)) = f(q,der(q),u,t) + C(q,t)^T*lambda"
+                                                : "M(q,t)*der(der(q)) = f(q,der(q),u,t)";
+  std::string out = fmt::format("# equations of motion by eomgen {}: {}; do not edit\n", version_string, form);
   out += fmt::format("model: {}\ntitle: {}\nmethod: {}\ntime: t\n", e.model_name, e.title, e.method);
   std::vector<std::string> velocities;
   for (const auto& v : s.velocities) velocities.push_back(v.get_name());
@@ -41,6 +70,7 @@ std::string emit_canonical_text(const Equations& e) {
   out += fmt::format("T = {}\nV = {}\nR = {}\n", canonical_text(e.kinetic_energy), canonical_text(e.potential_energy),
                      canonical_text(e.dissipation));
   for (const NamedSymbolic& o : e.outputs) out += fmt::format("y[{}] = {}\n", o.name, canonical_text(o.expression));
+  out += constrained_text(e);
   if (e.has_linearization) {
     out += "\n# linearization M q'' + P q' + Q q = B u about a state with q'' = 0\n";
     for (unsigned j = 0; j < n; ++j)

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "common/version.hpp"
+#include "emit/cpp_body_writer.hpp"
+#include "emit/cpp_constraints.hpp"
 #include "emit/cpp_expression.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
@@ -17,8 +19,6 @@ using GiNaC::ex;
 
 namespace {
 
-std::string cpp_name(const std::string& name) { return is_cpp_identifier(name) ? name : name + "_"; }
-
 std::string quoted_list(const std::vector<std::string>& names) {
   std::string s;
   for (const std::string& n : names) s += (s.empty() ? "" : ", ") + ("\"" + n + "\"");
@@ -31,121 +31,6 @@ std::string number_list(const std::vector<double>& values) {
   return s;
 }
 
-void collect_symbols(const ex& e, GiNaC::exset& out) {
-  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
-}
-
-bool calls_functions(const ex& e) {
-  if (GiNaC::is_a<GiNaC::function>(e) || (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)))
-    return true;
-  for (std::size_t i = 0; i < e.nops(); ++i)
-    if (calls_functions(e.op(i))) return true;
-  return false;
-}
-
-/// Writes the body of one generated function from CSE batches.
-class BodyWriter {
- public:
-  explicit BodyWriter(const Equations& e) : n_(e.symbols.num_coordinates()) {
-    const Symbols& s = e.symbols;
-    for (std::size_t i = 0; i < n_; ++i) {
-      inputs_.push_back({s.coordinates[i], "q_" + s.coordinate_names[i], fmt::format("x[{}]", i)});
-      inputs_.push_back({s.velocities[i], "dq_" + s.coordinate_names[i], fmt::format("x[{}]", n_ + i)});
-    }
-    for (std::size_t i = 0; i < s.parameters.size(); ++i)
-      inputs_.push_back({s.parameters[i], "p_" + s.parameter_names[i], fmt::format("p[{}]", i)});
-    for (std::size_t i = 0; i < s.inputs.size(); ++i)
-      inputs_.push_back({s.inputs[i], "u_" + s.input_names[i], fmt::format("u[{}]", i)});
-    for (std::size_t i = 0; i < n_; ++i) accelerations_.emplace_back(fmt::format("ddq{}", i));
-    // every symbol's C++ name, looked up once per printed symbol
-    names_[s.time] = "t";
-    for (const Input& in : inputs_) names_[in.symbol] = in.name;
-    for (std::size_t i = 0; i < n_; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
-  }
-
-  const std::vector<GiNaC::symbol>& accelerations() const { return accelerations_; }
-
-  /// The statements computing a batch's temporaries; the outputs are returned as C++ text.
-  std::vector<std::string> batch(const std::vector<ex>& expressions) {
-    std::vector<ex> for_code;
-    for (const ex& e : expressions) for_code.push_back(expand_trig_of_sums(e));
-    CseBatch b = cse_.add(for_code);
-    for (const Temporary& t : b.temporaries) {
-      names_[t.name] = t.name.get_name();
-      note(t.definition);
-      statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
-    }
-    std::vector<std::string> out;
-    for (const ex& o : b.outputs) {
-      note(o);
-      out.push_back(code(o));
-    }
-    return out;
-  }
-
-  void line(const std::string& text) { statements_ += "  " + text + "\n"; }
-
-  /// Declarations of the model symbols used, then the statements.
-  std::string finish(const std::string& unused) {
-    std::string head = "  " + unused + "\n";
-    if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
-    for (const auto& in : inputs_)
-      if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
-    return head + statements_;
-  }
-
- private:
-  struct Input {
-    ex symbol;
-    std::string name, source;
-  };
-
-  void note(const ex& e) {
-    collect_symbols(e, used_);
-    uses_functions_ = uses_functions_ || calls_functions(e);
-  }
-
-  std::string code(const ex& e) {
-    return cpp_expression(e, [this](const GiNaC::symbol& s) -> std::string {
-      auto found = names_.find(s);
-      if (found != names_.end()) return found->second;
-      throw std::runtime_error("no C++ name for symbol " + s.get_name());
-    });
-  }
-
-  std::size_t n_;
-  std::vector<Input> inputs_;
-  std::vector<GiNaC::symbol> accelerations_;
-  std::map<ex, std::string, GiNaC::ex_is_less> names_;
-  GiNaC::exset used_;
-  bool uses_functions_ = false;
-  CommonSubexpressions cse_;
-  std::string statements_;
-};
-
-std::vector<ex> upper_triangle(const GiNaC::matrix& M, std::size_t n) {
-  std::vector<ex> entries;
-  for (unsigned j = 0; j < n; ++j)
-    for (unsigned k = j; k < n; ++k) entries.push_back(M(j, k));
-  return entries;
-}
-
-// writes M (n×n, row-major) from its upper triangle into `target`
-void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target) {
-  std::size_t at = 0;
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t k = j; k < n; ++k, ++at) {
-      w.line(fmt::format("{}[{}] = {};", target, j * n + k, upper[at]));
-      if (k != j) w.line(fmt::format("{}[{}] = {}[{}];", target, k * n + j, target, j * n + k));
-    }
-}
-
-std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
-  return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
-}
-
-const char* all_unused = "(void)t; (void)x; (void)u; (void)p;";
 
 std::string mass_matrix_function(const Equations& e) {
   std::size_t n = e.forcing.size();
@@ -165,37 +50,35 @@ std::string forcing_function(const Equations& e) {
                   "void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f)", w.finish(all_unused));
 }
 
-// M and f into local arrays, M = L D L^T, then q'' = M^-1 f into `ddq`
-void accelerations(BodyWriter& w, const Equations& e) {
-  std::size_t n = e.forcing.size();
-  std::vector<ex> exprs = upper_triangle(e.mass_matrix, n);
-  exprs.insert(exprs.end(), e.forcing.begin(), e.forcing.end());
-  auto code = w.batch(exprs);
-  w.line(fmt::format("T M[{}];", n * n));
-  write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + n * (n + 1) / 2), n, "M");
-  w.line(fmt::format("T ddq[{}];", n));
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("ddq[{}] = {};", i, code[n * (n + 1) / 2 + i]));
-  w.line(fmt::format("T L[{}];", n * n));
-  w.line(fmt::format("T D[{}];", n));
-  w.line("detail::ldlt_factor(M, L, D);");
-  w.line("detail::ldlt_solve(L, D, ddq);");
+// q' = v, or the kinematic equations q' = W s + w of Appell's equations
+void coordinate_rates(BodyWriter& w, const Equations& e, const std::string& target) {
+  std::size_t n = e.symbols.num_coordinates();
+  if (!e.uses_pseudo_velocities()) {
+    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("{}[{}] = x[{}];", target, i, n + i));
+    return;
+  }
+  auto rates = w.batch(e.coordinate_rates);
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("{}[{}] = {};", target, i, rates[i]));
 }
 
 std::string rhs_function(const Equations& e) {
-  std::size_t n = e.forcing.size();
+  if (e.has_multipliers) return constrained_rhs_function(e);
+  std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
   accelerations(w, e);
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
-  return function(fmt::format("/// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].\n"
-                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n", 2 * n),
+  coordinate_rates(w, e, "xdot");
+  for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
+  return function(fmt::format("/// Explicit first-order form x' = [{}; M^-1 f] with x = [q; {}].\n"
+                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
+                              e.uses_pseudo_velocities() ? "W s + w" : "q'", e.uses_pseudo_velocities() ? "s" : "q'", n + k),
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
 std::string jacobian_state_function(const Equations& e) {
+  if (e.has_multipliers) return constrained_jacobian_state_function(e);
   const Symbols& s = e.symbols;
-  std::size_t n = e.forcing.size(), N = 2 * n;
+  std::size_t nq = s.num_coordinates(), n = e.num_velocities(), N = nq + n;
   BodyWriter w(e);
   accelerations(w, e);
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
@@ -207,7 +90,7 @@ std::string jacobian_state_function(const Equations& e) {
     for (unsigned c = 0; c < n; ++c) {
       if (e.mass_matrix(i, c).info(GiNaC::info_flags::numeric)) continue;
       std::vector<ex> dM = gradient(e.mass_matrix(i, c), coordinates);
-      for (unsigned j = 0; j < n; ++j)
+      for (unsigned j = 0; j < nq; ++j)
         if (!dM[j].is_zero()) rows[i][j] -= dM[j] * w.accelerations()[c];
     }
   }
@@ -215,22 +98,32 @@ std::string jacobian_state_function(const Equations& e) {
   for (std::size_t j = 0; j < N; ++j)
     for (unsigned i = 0; i < n; ++i) columns.push_back(rows[i][j]);
   auto code = w.batch(columns);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == n + i ? 1 : 0));
+  if (e.uses_pseudo_velocities()) {
+    std::vector<ex> top;
+    for (const ex& rate : e.coordinate_rates)
+      for (const ex& d : gradient(rate, state)) top.push_back(d);
+    auto top_code = w.batch(top);
+    for (std::size_t i = 0; i < nq * N; ++i) w.line(fmt::format("J[{}] = {};", i, top_code[i]));
+  } else {
+    for (std::size_t i = 0; i < nq; ++i)
+      for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == nq + i ? 1 : 0));
+  }
   w.line(fmt::format("T column[{}];", n));
   for (std::size_t j = 0; j < N; ++j) {
     for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * n + i]));
     w.line("detail::ldlt_solve(L, D, column);");
-    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("J[{}] = column[{}];", (n + i) * N + j, i));
+    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("J[{}] = column[{}];", (nq + i) * N + j, i));
   }
   return function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is\n"
-                              "/// M^-1 (df/dx - (dM/dx) q''). J: {}x{}, row-major.\n", N, N),
+                              "/// M^-1 (df/dx - (dM/dx) {}'). J: {}x{}, row-major.\n",
+                              e.uses_pseudo_velocities() ? "s" : "q'", N, N),
                   "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
 }
 
 std::string jacobian_input_function(const Equations& e) {
+  if (e.has_multipliers) return constrained_jacobian_input_function(e);
   const Symbols& s = e.symbols;
-  std::size_t n = e.forcing.size(), m = s.inputs.size();
+  std::size_t nq = s.num_coordinates(), n = e.forcing.size(), m = s.inputs.size();
   BodyWriter w(e);
   if (m > 0) {
     auto Mcode = w.batch(upper_triangle(e.mass_matrix, n));
@@ -246,24 +139,24 @@ std::string jacobian_input_function(const Equations& e) {
     for (std::size_t j = 0; j < m; ++j)
       for (std::size_t i = 0; i < n; ++i) columns.push_back(rows[i][j]);
     auto code = w.batch(columns);
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = T(0);", i * m + j));
     w.line(fmt::format("T column[{}];", n));
     for (std::size_t j = 0; j < m; ++j) {
       for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * n + i]));
       w.line("detail::ldlt_solve(L, D, column);");
-      for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("B[{}] = column[{}];", (n + i) * m + j, i));
+      for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("B[{}] = column[{}];", (nq + i) * m + j, i));
     }
   }
   return function(fmt::format("/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.\n"
-                              "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, m),
+                              "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", nq + n, m),
                   "void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B)", w.finish(all_unused + std::string(" (void)B;")));
 }
 
 // M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3): P = -df/dq', Q = -df/dq, B = df/du
 std::string linearization_function(const Equations& e) {
   const Symbols& s = e.symbols;
-  std::size_t n = e.forcing.size(), m = s.inputs.size();
+  std::size_t n = e.forcing.size(), nq = s.num_coordinates(), m = s.inputs.size();
   BodyWriter w(e);
   std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
       coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
@@ -276,12 +169,14 @@ std::string linearization_function(const Equations& e) {
   std::size_t at = 0;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = {};", i * n + j, code[at++]));
-    for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("Q[{}] = {};", i * n + j, code[at++]));
+    for (std::size_t j = 0; j < nq; ++j) w.line(fmt::format("Q[{}] = {};", i * nq + j, code[at++]));
     for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", i * m + j, code[at++]));
   }
   return function(fmt::format("/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0\n"
                               "/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from\n"
-                              "/// mass_matrix. P, Q: {0}x{0}; B: {0}x{1}; all row-major.\n", n, m),
+                              "/// mass_matrix{3}. P: {0}x{0}; Q: {0}x{2}; B: {0}x{1}; all row-major.\n", n, m, nq,
+                              e.has_multipliers ? " (of the system without its constraints)"
+                              : e.uses_pseudo_velocities() ? " (q' = s stands for the pseudo-velocities)" : ""),
                   "void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B)",
                   w.finish(all_unused + std::string(" (void)B;")));
 }
@@ -358,9 +253,9 @@ std::string source_name(const std::string& path) {
 
 std::string emit_cpp_header(const Equations& e) {
   const Symbols& s = e.symbols;
-  std::size_t n = s.num_coordinates();
+  std::size_t n = s.num_coordinates(), k = e.num_velocities();
   std::vector<std::string> velocities, states = s.coordinate_names, outputs;
-  for (const auto& name : s.coordinate_names) velocities.push_back("der(" + name + ")");
+  for (const auto& v : s.velocities) velocities.push_back(v.get_name());
   states.insert(states.end(), velocities.begin(), velocities.end());
   for (const NamedSymbolic& o : e.outputs) outputs.push_back(o.name);
   std::vector<double> state = s.initial_coordinates;
@@ -375,17 +270,24 @@ std::string emit_cpp_header(const Equations& e) {
   std::string out = fmt::format(
       "// Generated by eomgen {0} from {1}. Do not edit: change the model file and regenerate.\n"
       "// {2}: {3} (method {4}, {5} degree{6} of freedom).\n"
-      "// Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n"
+      "// {12}\n"
       "#pragma once\n\n#include <array>\n#include <cmath>\n#include <cstddef>\n\n"
       "namespace eomgen::models::{2} {{\n\n"
       "inline constexpr std::size_t num_coordinates = {7};\n"
-      "inline constexpr std::size_t num_velocities = {7};\n"
+      "inline constexpr std::size_t num_velocities = {13};\n"
       "inline constexpr std::size_t num_states = {8};\n"
       "inline constexpr std::size_t num_parameters = {9};\n"
       "inline constexpr std::size_t num_inputs = {10};\n"
-      "inline constexpr std::size_t num_outputs = {11};\n\n",
+      "inline constexpr std::size_t num_outputs = {11};\n"
+      "inline constexpr const char* method = \"{4}\";\n\n",
       version_string, source_name(e.source), e.model_name, e.title, e.method, e.degrees_of_freedom,
-      e.degrees_of_freedom == 1 ? "" : "s", n, 2 * n, s.parameters.size(), s.inputs.size(), e.outputs.size());
+      e.degrees_of_freedom == 1 ? "" : "s", n, n + k, s.parameters.size(), s.inputs.size(), e.outputs.size(),
+      e.uses_pseudo_velocities()
+          ? "Appell's equations M(q,t) s' = f(q, s, u, t) with q' = W(q,t) s + w(q,t); state x = [q; s]."
+      : e.has_multipliers
+          ? "Lagrange I: M(q,t) q'' = f(q, q', u, t) + C(q,t)^T lambda with C q'' + gamma = 0; state x = [q; q']."
+          : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
+      k);
   out += fmt::format(
       "inline constexpr std::array<const char*, num_parameters> parameter_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_coordinates> coordinate_names{{{{{}}}}};\n"
@@ -410,7 +312,9 @@ std::string emit_cpp_header(const Equations& e) {
       "template <class Scalar>\nstruct Parameters {{\n{}"
       "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
       members, values);
-  out += ldlt_functions(n);
+  out += constraint_declarations(e);
+  out += ldlt_functions(k);
+  out += constrained_solver(e);
   out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
          jacobian_input_function(e) + linearization_function(e);
   out += scalar_function(e, "kinetic_energy", e.kinetic_energy,
@@ -418,6 +322,7 @@ std::string emit_cpp_header(const Equations& e) {
   out += scalar_function(e, "potential_energy", e.potential_energy,
                          "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
   out += outputs_function(e);
+  out += constraint_functions(e);
   out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
   return out;
 }

@@ -37,6 +37,44 @@ std::string number_object(const std::vector<std::string>& names, const std::vect
   return "{" + s + "}";
 }
 
+std::string expression_array(const std::vector<GiNaC::ex>& v) {
+  std::string s;
+  for (const GiNaC::ex& x : v) s += (s.empty() ? "" : ", ") + expression(x);
+  return "[" + s + "]";
+}
+
+// "constraints" (every model that has them), "multipliers" (Lagrange I), and for
+// Appell's equations "pseudo_velocities", "coordinate_rates" and "acceleration_energy"
+std::string constrained_json(const Equations& e) {
+  const ConstraintSet& c = e.constraints;
+  std::string out;
+  if (c.size()) {
+    out += ",\n  \"constraints\": [";
+    for (unsigned i = 0; i < c.size(); ++i) {
+      std::vector<GiNaC::ex> row;
+      for (unsigned j = 0; j < c.jacobian.cols(); ++j) row.push_back(c.jacobian(i, j));
+      out += fmt::format("{}\n    {{\"name\": {}, \"holonomic\": {}, \"position\": {}, \"jacobian\": {}, \"bias\": {}}}",
+                         i ? "," : "", quote(c.names[i]), c.holonomic[i] ? "true" : "false",
+                         c.holonomic[i] ? expression(c.position[i]) : "null", expression_array(row),
+                         expression(c.bias[i]));
+    }
+    out += "\n  ]";
+  }
+  if (e.has_multipliers) {
+    std::vector<std::string> names;
+    for (const std::string& n : c.names) names.push_back("lambda_" + n);
+    out += ",\n  \"multipliers\": " + string_array(names);
+  }
+  if (!e.uses_pseudo_velocities()) return out;
+  std::string definitions;
+  for (const NamedSymbolic& p : e.pseudo_velocity_definitions)
+    definitions += (definitions.empty() ? "" : ", ") + quote(p.name) + ": " + expression(p.expression);
+  out += ",\n  \"pseudo_velocities\": {" + definitions + "}";
+  out += ",\n  \"coordinate_rates\": " + expression_array(e.coordinate_rates);
+  out += ",\n  \"acceleration_energy\": " + expression(e.acceleration_energy);
+  return out;
+}
+
 }  // namespace
 
 std::string emit_json(const Equations& e) {
@@ -65,6 +103,7 @@ std::string emit_json(const Equations& e) {
   std::string outputs;
   for (const NamedSymbolic& o : e.outputs) outputs += (outputs.empty() ? "" : ", ") + quote(o.name) + ": " + expression(o.expression);
   out += "  \"outputs\": {" + outputs + "}";
+  out += constrained_json(e);
   if (e.has_linearization) {
     auto matrix = [&](const GiNaC::matrix& A, std::size_t rows, std::size_t cols) {
       std::string m = "[";

@@ -47,10 +47,13 @@ std::string tex_name(const std::string& name) {
 
 std::string tex_symbol(const GiNaC::symbol& s) {
   std::string name = s.get_name();
-  if (name.rfind("der(", 0) == 0) {
+  // der(x) → \dot{x}; der(der(x)), a pseudo-acceleration of an independent velocity → \ddot{x}
+  const char* accent = name.rfind("der(der(", 0) == 0 ? "\\ddot{" : name.rfind("der(", 0) == 0 ? "\\dot{" : nullptr;
+  if (accent) {
+    std::size_t depth = accent[2] == 'd' ? 2 : 1;
     std::string sub;
-    std::string base = tex_base(name.substr(4, name.size() - 5), sub);
-    return "\\dot{" + base + "}" + (sub.empty() ? "" : "_{" + sub + "}");
+    std::string base = tex_base(name.substr(4 * depth, name.size() - 5 * depth), sub);
+    return accent + base + "}" + (sub.empty() ? "" : "_{" + sub + "}");
   }
   return tex_name(name);
 }
@@ -71,6 +74,22 @@ std::string emit_latex(const Equations& e) {
   out += fmt::format("T &= {} \\\\\nV &= {} \\\\\nR &= {}", tex(e.kinetic_energy), tex(e.potential_energy),
                      tex(e.dissipation));
   for (const NamedSymbolic& o : e.outputs) out += fmt::format(" \\\\\n{} &= {}", tex_name(o.name), tex(o.expression));
+  for (unsigned i = 0; i < e.constraints.size(); ++i) {
+    const ConstraintSet& c = e.constraints;
+    std::string velocity;
+    for (unsigned j = 0; j < c.jacobian.cols(); ++j)
+      if (!c.jacobian(i, j).is_zero())
+        velocity += fmt::format("{}\\left({}\\right) \\dot {{{}}}", velocity.empty() ? "" : " + ", tex(c.jacobian(i, j)),
+                                tex_name(e.symbols.coordinate_names[j]));
+    if (!c.bias[i].is_zero()) velocity += " + " + tex(c.bias[i]);
+    out += fmt::format(" \\\\\n0 &= {} & \\text{{({})}}", c.holonomic[i] ? tex(c.position[i]) : velocity,
+                       tex_name(c.names[i]));
+  }
+  if (e.uses_pseudo_velocities()) {
+    for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j)
+      out += fmt::format(" \\\\\n\\dot {{{}}} &= {}", tex_name(e.symbols.coordinate_names[j]), tex(e.coordinate_rates[j]));
+    out += fmt::format(" \\\\\nS &= {}", tex(e.acceleration_energy));
+  }
   if (e.has_linearization) {
     out += " \\\\\n% linearization M q'' + P q' + Q q = B u about a state with q'' = 0";
     for (unsigned j = 0; j < n; ++j)

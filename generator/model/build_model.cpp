@@ -286,7 +286,15 @@ class Builder {
                          : parse(c.expression, allow_configuration | allow_velocities, "a nonholonomic constraint");
       if (!e) continue;
       if (!holonomic) check_linear_in_velocities(*e, c.expression, "a nonholonomic constraint");
-      m_.constraints.push_back({holonomic, *e, c.key});
+      std::string name = c.name.empty() ? fmt::format("c{}", m_.constraints.size() + 1) : c.name;
+      if (!is_cpp_identifier(name))
+        d_.error(c.name_where, c.key + ".name", fmt::format("'{}' is not a C++ identifier", name),
+                 "a constraint's name becomes part of its multiplier's name, lambda_NAME");
+      for (const Constraint& other : m_.constraints)
+        if (other.name == name)
+          d_.error(c.name_where.line ? c.name_where : c.where, c.key + ".name",
+                   fmt::format("two constraints are named '{}'", name), "give each constraint its own name");
+      m_.constraints.push_back({holonomic, *e, c.key, name});
     }
     for (const NamedExpression& p : f_.pseudo_velocities) {
       std::string key = "pseudo_velocities." + p.name;

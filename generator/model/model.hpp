@@ -50,6 +50,7 @@ struct Constraint {
   bool holonomic = true;
   GiNaC::ex expression;  // = 0
   std::string key;
+  std::string name;  // the file's name, or c1, c2, … in file order
 };
 
 struct NamedSymbolic {

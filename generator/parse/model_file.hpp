@@ -84,6 +84,8 @@ struct ConstraintEntry {
   ExpressionText expression;
   SourceLocation where;
   std::string key;
+  std::string name;  // optional; names the multiplier lambda_NAME
+  SourceLocation name_where;
 };
 
 struct ModelFile {

@@ -246,8 +246,16 @@ void read_constraints(Reader& r, const toml::node& node, ModelFile& m) {
     std::string key = fmt::format("constraints[{}]", i);
     const toml::table* t = r.table((*a)[i], key, "holonomic or nonholonomic");
     if (!t) continue;
-    r.check_keys(*t, key, {"holonomic", "nonholonomic"});
+    r.check_keys(*t, key, {"holonomic", "nonholonomic", "name"});
     ConstraintEntry c;
+    if (const toml::node* name = t->get("name")) {
+      if (auto text = name->value<std::string>()) {
+        c.name = *text;
+        c.name_where = r.at(*name);
+      } else {
+        r.error(r.at(*name), key + ".name", "a constraint's name is a string", "write name = \"rod\"");
+      }
+    }
     c.key = key;
     c.where = r.at((*a)[i]);
     const toml::node* h = t->get("holonomic");

@@ -36,6 +36,7 @@ class Arkode : public Stepper {
       linear_ = SUNLinSol_Dense(x_, matrix_, context_);
       ARKStepSetLinearSolver(memory_, linear_, matrix_);
       ARKStepSetJacFn(memory_, sundials_dense_jacobian);
+      if (f.projection) ARKStepSetPostprocessStepFn(memory_, sundials_project_in_place);
     } else {
       memory_ = ERKStepCreate(sundials_rhs, s.t_start, x_, context_);
       ERKStepSetTableNum(memory_, static_cast<ARKODE_ERKTableID>(table));
@@ -44,6 +45,7 @@ class Arkode : public Stepper {
       ERKStepSetErrHandlerFn(memory_, quiet_sundials_messages, nullptr);
       ERKStepSetMaxNumSteps(memory_, s.max_steps);
       ERKStepSetStopTime(memory_, s.t_end);
+      if (f.projection) ERKStepSetPostprocessStepFn(memory_, sundials_project_in_place);
     }
     started_ = std::chrono::steady_clock::now();
   }

@@ -1,6 +1,7 @@
 /// @file CVODE: variable-order BDF with the generated dense Jacobian (stiff), or
 /// Adams–Moulton with fixed-point iteration (non-stiff).
 #include <cvode/cvode.h>
+#include <cvode/cvode_proj.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
@@ -40,6 +41,9 @@ class Cvode : public Stepper {
       CVodeSetLinearSolver(memory_, linear_, matrix_);
       CVodeSetJacFn(memory_, sundials_dense_jacobian);
     }
+    // CVODE projects after every step with BDF only; Adams is projected at the output times
+    if (f.projection && !adams) CVodeSetProjFn(memory_, sundials_projection_correction);
+    f_ = &f;
     started_ = std::chrono::steady_clock::now();
   }
 
@@ -56,11 +60,18 @@ class Cvode : public Stepper {
     realtype reached = 0;
     int status = CVode(memory_, t_out, x_, &reached, CV_NORMAL);
     double* data = N_VGetArrayPointer(x_);
+    bool projection_failed = false;
+    if (status >= 0 && adams_ && f_->projection) {
+      if (f_->projection->project(reached, data)) CVodeReInit(memory_, reached, x_);
+      else projection_failed = true;
+    }
     x.assign(data, data + x.size());
-    if (status >= 0) return true;
+    if (status >= 0 && !projection_failed) return true;
     failure_time = reached;
     flag = status;
-    reason = fmt::format("CVODE {} stopped with {} ({})", adams_ ? "Adams" : "BDF", CVodeGetReturnFlagName(status), status);
+    reason = projection_failed ? std::string("the projection onto the constraints failed (Newton's method did not converge)")
+                               : fmt::format("CVODE {} stopped with {} ({})", adams_ ? "Adams" : "BDF",
+                                             CVodeGetReturnFlagName(status), status);
     return false;
   }
 
@@ -78,6 +89,7 @@ class Cvode : public Stepper {
 
  private:
   bool adams_;
+  RightHandSide* f_ = nullptr;
   SUNContext context_ = nullptr;
   N_Vector x_ = nullptr;
   void* memory_ = nullptr;

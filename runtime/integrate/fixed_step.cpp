@@ -25,11 +25,15 @@ class FixedStep : public Stepper {
       // land exactly on the output time; a step within roundoff of it is merged
       double h = std::min(h_, t_out - t_);
       if (t_out - (t_ + h) < 1e-12 * std::max(1.0, std::abs(t_out))) h = t_out - t_;
-      if (!(verlet_ ? verlet_step(h) : rk4_step(h))) {
+      bool projected = true;
+      if (!(verlet_ ? verlet_step(h) : rk4_step(h)) ||
+          !(projected = !f_.projection || f_.projection->project(t_ + h, x_.data()))) {
         x = x_;
         failure_time = t_;
         flag = -1;
-        reason = fmt::format("{} stopped: the right-hand side is not finite", verlet_ ? "Störmer–Verlet" : "RK4");
+        reason = fmt::format("{} stopped: {}", verlet_ ? "Störmer–Verlet" : "RK4",
+                             projected ? "the right-hand side is not finite"
+                                       : "the projection onto the constraints failed (Newton's method did not converge)");
         return false;
       }
       t_ = (t_out - (t_ + h) < 1e-12 * std::max(1.0, std::abs(t_out))) ? t_out : t_ + h;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "integrate/projection.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::runtime {
@@ -14,7 +15,8 @@ namespace eomgen::runtime {
 /// value is reported as a recoverable failure (return 1), and remembered.
 class RightHandSide {
  public:
-  explicit RightHandSide(const Problem& problem) : p_(problem) {}
+  /// alpha, beta: Baumgarte's gains, used by Lagrange I models only.
+  RightHandSide(const Problem& problem, double alpha = 0, double beta = 0) : p_(problem), alpha_(alpha), beta_(beta) {}
   int operator()(double t, const double* x, double* xdot);
   int jacobian(double t, const double* x, double* J);  // row-major num_states²
   std::size_t size() const { return p_.model->num_states; }
@@ -22,9 +24,13 @@ class RightHandSide {
   bool saw_non_finite() const { return non_finite_; }
   double non_finite_time() const { return non_finite_time_; }
   const std::vector<double>& non_finite_state() const { return non_finite_state_; }
+  const Problem& problem() const { return p_; }
+  /// Set when the state is to be projected onto the constraints after every step.
+  ConstraintProjection* projection = nullptr;
 
  private:
   const Problem& p_;
+  double alpha_, beta_;
   long evaluations_ = 0;
   bool non_finite_ = false;
   double non_finite_time_ = 0;
@@ -53,6 +59,8 @@ std::unique_ptr<Stepper> make_arkode_explicit(RightHandSide& f, const std::vecto
 /// Diagonally implicit Runge–Kutta with the generated Jacobian.
 std::unique_ptr<Stepper> make_arkode_dirk(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
 /// Fixed-step classical RK4, or Störmer–Verlet (leapfrog) on x = [q; v].
+/// IDA on the stabilized index-2 form of Gear, Gupta and Leimkuhler (Lagrange I models).
+std::unique_ptr<Stepper> make_ida(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
 std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool verlet);
 
 }  // namespace eomgen::runtime

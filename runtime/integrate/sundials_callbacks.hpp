@@ -9,6 +9,9 @@ namespace eomgen::runtime {
 
 /// `data` is the RightHandSide.
 int sundials_rhs(realtype t, N_Vector x, N_Vector xdot, void* data);
+/// ARKODE's step post-processing and CVODE's projection: onto the constraints.
+int sundials_project_in_place(realtype t, N_Vector x, void* data);
+int sundials_projection_correction(realtype t, N_Vector x, N_Vector correction, realtype tolerance, N_Vector error, void* data);
 int sundials_dense_jacobian(realtype t, N_Vector x, N_Vector fx, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector);
 
 }  // namespace eomgen::runtime

@@ -9,12 +9,21 @@ std::string trajectory_csv(const eomgen_model_abi& m, const Trajectory& trajecto
   for (std::size_t i = 0; i < m.num_states; ++i) out += fmt::format(",{}", m.state_names[i]);
   out += ",energy";
   for (std::size_t i = 0; i < m.num_outputs; ++i) out += fmt::format(",{}", m.output_names[i]);
+  bool constrained = m.num_constraints > 0 && trajectory.position_residuals.size() == trajectory.times.size();
+  if (constrained) {
+    for (std::size_t i = 0; i < m.num_multipliers; ++i) out += fmt::format(",{}", m.multiplier_names[i]);
+    out += ",position_residual,velocity_residual";
+  }
   out += "\n";
   for (std::size_t k = 0; k < trajectory.times.size(); ++k) {
     out += fmt::format("{:.17g}", trajectory.times[k]);
     for (double v : trajectory.states[k]) out += fmt::format(",{:.17g}", v);
     out += fmt::format(",{:.17g}", trajectory.energies[k]);
     for (double v : trajectory.outputs[k]) out += fmt::format(",{:.17g}", v);
+    if (constrained) {
+      for (double v : trajectory.multipliers[k]) out += fmt::format(",{:.17g}", v);
+      out += fmt::format(",{:.17g},{:.17g}", trajectory.position_residuals[k], trajectory.velocity_residuals[k]);
+    }
     out += "\n";
   }
   return out;

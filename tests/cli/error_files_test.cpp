@@ -65,15 +65,6 @@ TEST_P(ErrorFile, CorrectedTwinIsAccepted) {
   std::string name = "fixed/" + GetParam() + ".toml";
   ASSERT_TRUE(fs::exists(errors_dir + "/" + name)) << name << " is missing";
   DeriveRun run = derive(name, scratch);
-  std::string refused_until = line_starting(errors_dir + "/" + name, "# refused-until: ");
-  if (!refused_until.empty()) {
-    // valid, but its method comes in a later version: exactly one diagnostic, the refusal
-    std::string method = refused_until.substr(0, refused_until.find(' '));
-    EXPECT_EQ(run.status, 2);
-    EXPECT_NE(run.errors.find("method = \"" + method + "\""), std::string::npos) << run.errors;
-    EXPECT_NE(run.errors.find("1 error in"), std::string::npos) << run.errors;
-    return;
-  }
   EXPECT_EQ(run.status, 0) << run.errors;
   EXPECT_TRUE(run.wrote);
 }

@@ -28,7 +28,7 @@ std::vector<State> random_states(const GeneratedModel& m, int count) {
   for (int k = 0; k < count; ++k) {
     State s{uniform(0, 2), {}, {}, {}};
     for (std::size_t i = 0; i < m.num_coordinates; ++i) s.x.push_back((uniform(0, 1) < 0.5 ? -1 : 1) * uniform(0.2, 1.3));
-    for (std::size_t i = 0; i < m.num_coordinates; ++i) s.x.push_back(uniform(-2, 2));
+    for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) s.x.push_back(uniform(-2, 2));
     for (std::size_t i = 0; i < m.num_inputs; ++i) s.u.push_back(uniform(-1, 1));
     s.u.push_back(0);
     for (std::size_t i = 0; i < m.num_parameters; ++i) s.p.push_back(m.default_parameters[i] * uniform(0.7, 1.3));
@@ -41,10 +41,8 @@ GiNaC::exmap point_of(const Equations& e, const State& s) {
   const Symbols& y = e.symbols;
   GiNaC::exmap point{{y.time, GiNaC::numeric(s.t)}};
   std::size_t n = y.num_coordinates();
-  for (std::size_t i = 0; i < n; ++i) {
-    point[y.coordinates[i]] = GiNaC::numeric(s.x[i]);
-    point[y.velocities[i]] = GiNaC::numeric(s.x[n + i]);
-  }
+  for (std::size_t i = 0; i < n; ++i) point[y.coordinates[i]] = GiNaC::numeric(s.x[i]);
+  for (std::size_t i = 0; i < y.velocities.size(); ++i) point[y.velocities[i]] = GiNaC::numeric(s.x[n + i]);
   for (std::size_t i = 0; i < y.parameters.size(); ++i) point[y.parameters[i]] = GiNaC::numeric(s.p[i]);
   for (std::size_t i = 0; i < y.inputs.size(); ++i) point[y.inputs[i]] = GiNaC::numeric(s.u[i]);
   return point;
@@ -57,34 +55,64 @@ double real_value(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(e.ev
   return ::testing::AssertionFailure() << actual << " vs " << expected << " (tolerance " << tolerance << ")";
 }
 
+// q'' (and λ) solved exactly: M q'' = f, or for Lagrange I the augmented system
+// [M −Cᵀ; C 0][q''; λ] = [f; −γ − 2α(C q' + b) − β² g] with the header's default gains
+GiNaC::matrix exact_accelerations(const Equations& e, const GiNaC::exmap& point, double alpha, double beta) {
+  std::size_t n = e.forcing.size(), m = e.has_multipliers ? e.constraints.size() : 0;
+  const ConstraintSet& c = e.constraints;
+  GiNaC::matrix K(n + m, n + m), right(n + m, 1), unknown(n + m, 1);
+  for (unsigned i = 0; i < n; ++i) {
+    right(i, 0) = e.forcing[i].subs(point).evalf();
+    for (unsigned j = 0; j < n; ++j) K(i, j) = e.mass_matrix(i, j).subs(point).evalf();
+  }
+  for (unsigned r = 0; r < m; ++r) {
+    GiNaC::ex velocity = c.bias[r];
+    for (unsigned j = 0; j < n; ++j) {
+      K(n + r, j) = c.jacobian(r, j).subs(point).evalf();
+      K(j, n + r) = -K(n + r, j);
+      velocity += c.jacobian(r, j) * e.symbols.velocities[j];
+    }
+    GiNaC::ex gamma = c.acceleration_bias[r] + 2 * alpha * velocity + beta * beta * c.position[r];
+    right(n + r, 0) = (-gamma).subs(point).evalf();
+  }
+  for (unsigned i = 0; i < n + m; ++i) unknown(i, 0) = GiNaC::symbol("a" + std::to_string(i));
+  return K.solve(unknown, right);
+}
+
 class GeneratedHeader : public ::testing::TestWithParam<GeneratedModel> {};
 
 TEST_P(GeneratedHeader, AgreesWithGinacEvaluation) {
   const GeneratedModel& m = GetParam();
   Equations e = derive_model(m.name);
-  std::size_t n = m.num_coordinates;
+  std::size_t nq = m.num_coordinates, n = m.num_states - nq;
   GiNaC::Digits = 30;
   for (const State& s : random_states(m, 20)) {
     GiNaC::exmap point = point_of(e, s);
-    GiNaC::matrix M(n, n), f(n, 1), a(n, 1);
-    for (unsigned i = 0; i < n; ++i) {
-      f(i, 0) = e.forcing[i].subs(point).evalf();
-      a(i, 0) = GiNaC::symbol("a" + std::to_string(i));
-      for (unsigned j = 0; j < n; ++j) M(i, j) = e.mass_matrix(i, j).subs(point).evalf();
-    }
-    GiNaC::matrix accelerations = M.solve(a, f);
-    std::vector<double> xdot(2 * n), Mh(n * n), fh(n), y(m.num_outputs + 1);
+    GiNaC::matrix accelerations = exact_accelerations(e, point, m.abi->baumgarte_alpha, m.abi->baumgarte_beta);
+    std::vector<double> xdot(nq + n), Mh(n * n), fh(n), y(m.num_outputs + 1), lambda(m.abi->num_multipliers + 1);
     m.rhs(s.t, s.x.data(), s.u.data(), s.p.data(), xdot.data());
     m.mass_matrix(s.t, s.x.data(), s.p.data(), Mh.data());
     m.forcing(s.t, s.x.data(), s.u.data(), s.p.data(), fh.data());
     m.outputs(s.t, s.x.data(), s.u.data(), s.p.data(), y.data());
     double size = 0;
     for (unsigned i = 0; i < n; ++i) size = std::max(size, std::abs(real_value(accelerations(i, 0))));
+    for (unsigned i = 0; i < nq; ++i) {
+      if (e.uses_pseudo_velocities())
+        EXPECT_TRUE(close(xdot[i], real_value(e.coordinate_rates[i].subs(point)), 1e-12)) << m.name << " q'[" << i << "]";
+      else
+        EXPECT_EQ(xdot[i], s.x[nq + i]);
+    }
     for (unsigned i = 0; i < n; ++i) {
-      EXPECT_EQ(xdot[i], s.x[n + i]);
-      EXPECT_TRUE(close(xdot[n + i], real_value(accelerations(i, 0)), 1e-12, size)) << m.name << " q''[" << i << "]";
-      EXPECT_TRUE(close(fh[i], real_value(f(i, 0)), 1e-12)) << m.name << " f[" << i << "]";
-      for (unsigned j = 0; j < n; ++j) EXPECT_TRUE(close(Mh[i * n + j], real_value(M(i, j)), 1e-12)) << m.name;
+      EXPECT_TRUE(close(xdot[nq + i], real_value(accelerations(i, 0)), 1e-12, size)) << m.name << " q''[" << i << "]";
+      EXPECT_TRUE(close(fh[i], real_value(e.forcing[i].subs(point)), 1e-12)) << m.name << " f[" << i << "]";
+      for (unsigned j = 0; j < n; ++j)
+        EXPECT_TRUE(close(Mh[i * n + j], real_value(e.mass_matrix(i, j).subs(point)), 1e-12)) << m.name;
+    }
+    if (e.has_multipliers) {  // the multipliers have no Baumgarte terms
+      GiNaC::matrix plain = exact_accelerations(e, point, 0, 0);
+      m.abi->multipliers(s.t, s.x.data(), s.u.data(), s.p.data(), lambda.data());
+      for (unsigned r = 0; r < e.constraints.size(); ++r)
+        EXPECT_TRUE(close(lambda[r], real_value(plain(n + r, 0)), 1e-11)) << m.name << " lambda[" << r << "]";
     }
     EXPECT_TRUE(close(m.kinetic_energy(s.t, s.x.data(), s.p.data()), real_value(e.kinetic_energy.subs(point)), 1e-12));
     EXPECT_TRUE(close(m.potential_energy(s.t, s.x.data(), s.p.data()), real_value(e.potential_energy.subs(point)), 1e-12));

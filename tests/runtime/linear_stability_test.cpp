@@ -157,13 +157,13 @@ TEST(Linearization, MatchesCentralDifferencesForEveryModel) {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (const GeneratedModel& g : generated_models()) {
     const eomgen_model_abi& m = *g.abi;
-    std::size_t n = m.num_coordinates;
+    std::size_t nq = m.num_coordinates, n = m.num_velocities;  // Appell: Q is n × nq
     std::vector<double> x(m.num_states), u(m.num_inputs + 1), p(m.default_parameters, m.default_parameters + m.num_parameters);
     for (double& v : x) v = uniform(random);
     for (double& v : u) v = uniform(random);
-    std::vector<double> P(n * n), Q(n * n), B(n * m.num_inputs + 1), plus(n), minus(n);
+    std::vector<double> P(n * n), Q(n * nq), B(n * m.num_inputs + 1), plus(n), minus(n);
     m.linearization(0.3, x.data(), u.data(), p.data(), P.data(), Q.data(), B.data());
-    for (std::size_t j = 0; j < 2 * n; ++j) {
+    for (std::size_t j = 0; j < nq + n; ++j) {
       std::vector<double> xp = x, xm = x;
       double h = 1e-6;
       xp[j] += h, xm[j] -= h;
@@ -171,7 +171,7 @@ TEST(Linearization, MatchesCentralDifferencesForEveryModel) {
       m.forcing(0.3, xm.data(), u.data(), p.data(), minus.data());
       for (std::size_t i = 0; i < n; ++i) {
         double derivative = (plus[i] - minus[i]) / (2 * h);
-        double analytic = j < n ? -Q[i * n + j] : -P[i * n + (j - n)];
+        double analytic = j < nq ? -Q[i * nq + j] : -P[i * n + (j - nq)];
         EXPECT_NEAR(analytic, derivative, 1e-6 * std::max(1.0, std::abs(derivative))) << g.name << " (" << i << ", " << j << ")";
       }
     }

@@ -1,0 +1,15 @@
+/// @file The constraint set of a model, shared by Lagrange I and Appell.
+#pragma once
+
+#include "derive/equations.hpp"
+#include "kinematics/mechanics.hpp"
+
+namespace eomgen {
+
+/// C, b, g and the acceleration bias of every [[constraints]] entry, in file order.
+ConstraintSet constraint_set(const Model& model, const MotionSymbols& motion);
+
+/// No constraint depends on time: ideal constraints then do no work, and T + V stays.
+bool constraints_scleronomic(const ConstraintSet& constraints, const Symbols& symbols);
+
+}  // namespace eomgen

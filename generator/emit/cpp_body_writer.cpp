@@ -1,0 +1,129 @@
+#include "emit/cpp_body_writer.hpp"
+
+#include <fmt/format.h>
+
+#include "emit/cpp_expression.hpp"
+#include "model/symbols.hpp"
+#include "symbolic/trig_expansion.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+std::string cpp_name(const std::string& name) { return is_cpp_identifier(name) ? name : name + "_"; }
+
+namespace {
+
+void collect_symbols(const ex& e, GiNaC::exset& out) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
+}
+
+bool calls_functions(const ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e) || (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)))
+    return true;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (calls_functions(e.op(i))) return true;
+  return false;
+}
+
+// der(q) → dq_q; a pseudo-velocity s → s_s
+std::string velocity_name(const std::string& name) {
+  if (name.rfind("der(", 0) == 0) return "dq_" + name.substr(4, name.size() - 5);
+  return "s_" + name;
+}
+
+}  // namespace
+
+BodyWriter::BodyWriter(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = s.num_coordinates(), k = s.velocities.size();
+  for (std::size_t i = 0; i < n; ++i) inputs_.push_back({s.coordinates[i], "q_" + s.coordinate_names[i], fmt::format("x[{}]", i)});
+  for (std::size_t i = 0; i < k; ++i)
+    inputs_.push_back({s.velocities[i], velocity_name(s.velocities[i].get_name()), fmt::format("x[{}]", n + i)});
+  for (std::size_t i = 0; i < s.parameters.size(); ++i)
+    inputs_.push_back({s.parameters[i], "p_" + s.parameter_names[i], fmt::format("p[{}]", i)});
+  for (std::size_t i = 0; i < s.inputs.size(); ++i)
+    inputs_.push_back({s.inputs[i], "u_" + s.input_names[i], fmt::format("u[{}]", i)});
+  for (std::size_t i = 0; i < k; ++i) accelerations_.emplace_back(fmt::format("ddq{}", i));
+  // every symbol's C++ name, looked up once per printed symbol
+  names_[s.time] = "t";
+  for (const Input& in : inputs_) names_[in.symbol] = in.name;
+  for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
+}
+
+std::vector<std::string> BodyWriter::batch(const std::vector<ex>& expressions) {
+  std::vector<ex> for_code;
+  for (const ex& e : expressions) for_code.push_back(expand_trig_of_sums(e));
+  CseBatch b = cse_.add(for_code);
+  for (const Temporary& t : b.temporaries) {
+    names_[t.name] = t.name.get_name();
+    note(t.definition);
+    statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
+  }
+  std::vector<std::string> out;
+  for (const ex& o : b.outputs) {
+    note(o);
+    out.push_back(code(o));
+  }
+  return out;
+}
+
+std::string BodyWriter::finish(const std::string& unused) {
+  std::string head = "  " + unused + "\n";
+  if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
+  for (const auto& in : inputs_)
+    if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
+  return head + statements_;
+}
+
+void BodyWriter::note(const ex& e) {
+  collect_symbols(e, used_);
+  uses_functions_ = uses_functions_ || calls_functions(e);
+}
+
+std::string BodyWriter::code(const ex& e) {
+  return cpp_expression(e, [this](const GiNaC::symbol& s) -> std::string {
+    auto found = names_.find(s);
+    if (found != names_.end()) return found->second;
+    throw std::runtime_error("no C++ name for symbol " + s.get_name());
+  });
+}
+
+std::vector<ex> upper_triangle(const GiNaC::matrix& M, std::size_t n) {
+  std::vector<ex> entries;
+  for (unsigned j = 0; j < n; ++j)
+    for (unsigned k = j; k < n; ++k) entries.push_back(M(j, k));
+  return entries;
+}
+
+// writes M (n×n, row-major) from its upper triangle into `target`
+void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target) {
+  std::size_t at = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = j; k < n; ++k, ++at) {
+      w.line(fmt::format("{}[{}] = {};", target, j * n + k, upper[at]));
+      if (k != j) w.line(fmt::format("{}[{}] = {}[{}];", target, k * n + j, target, j * n + k));
+    }
+}
+
+std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
+  return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
+}
+
+void accelerations(BodyWriter& w, const Equations& e) {
+  std::size_t n = e.forcing.size();
+  std::vector<ex> exprs = upper_triangle(e.mass_matrix, n);
+  exprs.insert(exprs.end(), e.forcing.begin(), e.forcing.end());
+  auto code = w.batch(exprs);
+  w.line(fmt::format("T M[{}];", n * n));
+  write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + n * (n + 1) / 2), n, "M");
+  w.line(fmt::format("T ddq[{}];", n));
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("ddq[{}] = {};", i, code[n * (n + 1) / 2 + i]));
+  w.line(fmt::format("T L[{}];", n * n));
+  w.line(fmt::format("T D[{}];", n));
+  w.line("detail::ldlt_factor(M, L, D);");
+  w.line("detail::ldlt_solve(L, D, ddq);");
+}
+
+}  // namespace eomgen

@@ -1,0 +1,60 @@
+/// @file Writing the body of one generated C++ function: the model's symbols read
+/// from the plain arrays x, p and u, common subexpressions as local constants.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "derive/equations.hpp"
+#include "symbolic/cse.hpp"
+
+namespace eomgen {
+
+/// C++ name of a model name that may be a C++ keyword.
+std::string cpp_name(const std::string& name);
+
+class BodyWriter {
+ public:
+  explicit BodyWriter(const Equations& e);
+
+  /// Symbols q'' (one per velocity), printed as ddq[i].
+  const std::vector<GiNaC::symbol>& accelerations() const { return accelerations_; }
+  /// Prints `symbol` as `text` (a local array entry, a function argument).
+  void name(const GiNaC::symbol& symbol, const std::string& text) { names_[symbol] = text; }
+
+  /// The statements computing a batch's temporaries; the outputs are returned as C++ text.
+  std::vector<std::string> batch(const std::vector<GiNaC::ex>& expressions);
+  void line(const std::string& text) { statements_ += "  " + text + "\n"; }
+  /// Declarations of the model symbols used, then the statements.
+  std::string finish(const std::string& unused);
+
+ private:
+  struct Input {
+    GiNaC::ex symbol;
+    std::string name, source;
+  };
+  void note(const GiNaC::ex& e);
+  std::string code(const GiNaC::ex& e);
+
+  std::vector<Input> inputs_;
+  std::vector<GiNaC::symbol> accelerations_;
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_;
+  GiNaC::exset used_;
+  bool uses_functions_ = false;
+  CommonSubexpressions cse_;
+  std::string statements_;
+};
+
+/// The entries M(j,k), k >= j, row by row.
+std::vector<GiNaC::ex> upper_triangle(const GiNaC::matrix& M, std::size_t n);
+/// Writes M (n×n, row-major) from its upper triangle into the array `target`.
+void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target);
+/// A documented function template with the given signature and body.
+std::string function(const std::string& doc, const std::string& signature, const std::string& body);
+/// M and f into local arrays, M = L D L^T, then the accelerations M^-1 f into `ddq`.
+void accelerations(BodyWriter& w, const Equations& e);
+
+inline const char* all_unused = "(void)t; (void)x; (void)u; (void)p;";
+
+}  // namespace eomgen

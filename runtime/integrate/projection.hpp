@@ -1,0 +1,28 @@
+/// @file Projection of a state onto the constraint manifold: positions onto
+/// g(q,t) = 0, then (Lagrange I) velocities onto C q' + b = 0.
+#pragma once
+
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+class ConstraintProjection {
+ public:
+  explicit ConstraintProjection(const Problem& problem) : p_(problem) {}
+  /// Projects x in place; false when Newton's method on g(q) = 0 does not converge
+  /// or the constraint Jacobian is rank deficient there.
+  bool project(double t, double* x);
+  long projections() const { return projections_; }
+  /// Largest |g| and |C q' + b| at x.
+  std::pair<double, double> residuals(double t, const double* x) const;
+
+ private:
+  bool project_positions(double t, double* x);
+  bool project_velocities(double t, double* x);
+  const Problem& p_;
+  long projections_ = 0;
+};
+
+}  // namespace eomgen::runtime
