@@ -110,7 +110,7 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   ConstraintProjection projection(problem);
   std::vector<double> x = x0_given;
   // a consistent initial state: the model's, moved onto the constraints (always, for every integrator)
-  if (m.num_constraints && !projection.project(settings.t_start, x.data())) {
+  if (m.num_constraints && !projection.make_consistent(settings.t_start, x.data())) {
     auto [position, velocity] = projection.residuals(settings.t_start, x0_given.data());
     result.failed = true;
     result.failure = fmt::format("no consistent initial state near the given one: Newton's method on the position "

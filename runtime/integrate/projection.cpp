@@ -18,7 +18,57 @@ Matrix constraint_jacobian(const Problem& p, double t, const double* x) {
   return C;
 }
 
+// the last columns of C, from the end, that have full rank together: the dependent coordinates
+std::vector<long> dependent_columns(const Matrix& C) {
+  std::vector<long> chosen;
+  for (long j = C.cols() - 1; j >= 0 && static_cast<long>(chosen.size()) < C.rows(); --j) {
+    Eigen::MatrixXd block(C.rows(), static_cast<long>(chosen.size()) + 1);
+    for (std::size_t k = 0; k < chosen.size(); ++k) block.col(static_cast<long>(k)) = C.col(chosen[k]);
+    block.col(static_cast<long>(chosen.size())) = C.col(j);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(block);
+    lu.setThreshold(1e-10);
+    if (lu.rank() == block.cols()) chosen.push_back(j);
+  }
+  return chosen;
+}
+
 }  // namespace
+
+bool ConstraintProjection::make_consistent(double t, double* x) {
+  const eomgen_model_abi& m = *p_.model;
+  std::size_t mc = m.num_constraints, n = m.num_coordinates;
+  std::vector<double> position(mc), velocity(mc);
+  std::vector<long> holonomic;
+  for (std::size_t i = 0; i < mc; ++i)
+    if (m.constraint_is_holonomic[i]) holonomic.push_back(static_cast<long>(i));
+  // Newton on g(q) = 0 in the dependent coordinates only
+  for (int iteration = 0; !holonomic.empty(); ++iteration) {
+    m.constraint_residuals(t, x, p_.parameters.data(), position.data(), velocity.data());
+    Eigen::VectorXd g(holonomic.size());
+    for (std::size_t r = 0; r < holonomic.size(); ++r) g[static_cast<long>(r)] = position[static_cast<std::size_t>(holonomic[r])];
+    if (!g.allFinite() || iteration == 50) return false;
+    if (g.lpNorm<Eigen::Infinity>() < 1e-14) break;
+    Matrix C = constraint_jacobian(p_, t, x), Ch(holonomic.size(), n);
+    for (std::size_t r = 0; r < holonomic.size(); ++r) Ch.row(static_cast<long>(r)) = C.row(holonomic[r]);
+    std::vector<long> dependent = dependent_columns(Ch);
+    if (dependent.size() != holonomic.size()) return project_positions(t, x);  // dependent constraints here
+    Eigen::MatrixXd block(Ch.rows(), Ch.rows());
+    for (std::size_t k = 0; k < dependent.size(); ++k) block.col(static_cast<long>(k)) = Ch.col(dependent[k]);
+    Eigen::VectorXd step = block.partialPivLu().solve(g);
+    for (std::size_t k = 0; k < dependent.size(); ++k) x[dependent[k]] -= step[static_cast<long>(k)];
+  }
+  if (m.num_multipliers == 0) return true;
+  // the dependent velocities from C v + b = 0 with the others as given
+  m.constraint_residuals(t, x, p_.parameters.data(), position.data(), velocity.data());
+  Matrix C = constraint_jacobian(p_, t, x);
+  std::vector<long> dependent = dependent_columns(C);
+  if (dependent.size() != mc) return project_velocities(t, x);
+  Eigen::MatrixXd block(mc, mc);
+  for (std::size_t k = 0; k < mc; ++k) block.col(static_cast<long>(k)) = C.col(dependent[k]);
+  Eigen::VectorXd step = block.partialPivLu().solve(Eigen::Map<Eigen::VectorXd>(velocity.data(), static_cast<long>(mc)));
+  for (std::size_t k = 0; k < mc; ++k) x[n + static_cast<std::size_t>(dependent[k])] -= step[static_cast<long>(k)];
+  return true;
+}
 
 std::pair<double, double> ConstraintProjection::residuals(double t, const double* x) const {
   const eomgen_model_abi& m = *p_.model;

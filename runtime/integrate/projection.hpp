@@ -14,6 +14,9 @@ class ConstraintProjection {
   /// Projects x in place; false when Newton's method on g(q) = 0 does not converge
   /// or the constraint Jacobian is rank deficient there.
   bool project(double t, double* x);
+  /// A consistent initial state: the first coordinates and velocities (in file order)
+  /// are kept as given, the last ones that the constraints determine are solved for.
+  bool make_consistent(double t, double* x);
   long projections() const { return projections_; }
   /// Largest |g| and |C q' + b| at x.
   std::pair<double, double> residuals(double t, const double* x) const;

@@ -28,9 +28,11 @@ GiNaC::ex closed_form(const Equations& e, const std::string& text) {
   GiNaC::symtab table;
   table["t"] = s.time;
   for (std::size_t i = 0; i < s.parameters.size(); ++i) table[s.parameter_names[i]] = s.parameters[i];
-  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-    table[s.coordinate_names[i]] = s.coordinates[i];
-    table["d_" + s.coordinate_names[i]] = s.velocities[i];
+  for (std::size_t i = 0; i < s.coordinates.size(); ++i) table[s.coordinate_names[i]] = s.coordinates[i];
+  // der(q) is written d_q; Appell's pseudo-velocities by their own names
+  for (const auto& v : s.velocities) {
+    std::string name = v.get_name();
+    table[name.rfind("der(", 0) == 0 ? "d_" + name.substr(4, name.size() - 5) : name] = v;
   }
   for (std::size_t i = 0; i < s.inputs.size(); ++i) table[s.input_names[i]] = s.inputs[i];
   GiNaC::parser reader(table, true);
