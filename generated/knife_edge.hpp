@@ -29,7 +29,7 @@ inline constexpr std::array<double, num_states> default_state{{0, 0, 0, 1, 0.5}}
 inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
 /// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
-inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, true}};
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, true, true}};
 
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.

@@ -29,7 +29,7 @@ inline constexpr std::array<double, num_states> default_state{{0.5, -0.16, 0.375
 inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
 /// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
-inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false, true}};
+inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false, false}};
 
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.

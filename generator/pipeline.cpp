@@ -22,7 +22,8 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics) {
           result.equations = (*find_method(model.method))(model, mechanics);
         } catch (const std::invalid_argument& why) {
           diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", why.what(),
-                            "choose pseudo-velocities that, with the constraints, determine every velocity");
+                            "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
+                            "determine every velocity");
         }
       }
     }

@@ -84,7 +84,7 @@ std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, cons
   for (const Assignment& a : at) {
     int i = index_of(m.state_names, m.num_states, a.name);
     if (i < 0) {
-      std::cerr << fmt::format("eomgen: error: --at {}: not a coordinate or der(coordinate); {}\n", a.name,
+      std::cerr << fmt::format("eomgen: error: --at {}: not a coordinate or a velocity of the state; {}\n", a.name,
                                suggest(a.name, std::vector<std::string>(m.state_names, m.state_names + m.num_states), "states"));
       return std::nullopt;
     }
@@ -111,10 +111,15 @@ void print_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
   std::string state;
   for (const std::string& s : r.state_names) state += (state.empty() ? "" : ", ") + s;
   std::cout << "  reduced state: " << state << "\n";
-  std::cout << "  M q'' + (D + G) q' + (K + N) q = B u:\n"
-            << matrix_text("M", r.M) << matrix_text("D", r.D) << matrix_text("G", r.G) << matrix_text("K", r.K)
-            << matrix_text("N", r.N);
-  if (r.B.cols()) std::cout << matrix_text("B", r.B);
+  if (r.M.size()) {
+    std::cout << "  M q'' + (D + G) q' + (K + N) q = B u:\n"
+              << matrix_text("M", r.M) << matrix_text("D", r.D) << matrix_text("G", r.G) << matrix_text("K", r.K)
+              << matrix_text("N", r.N);
+    if (r.B.cols()) std::cout << matrix_text("B", r.B);
+  } else {
+    std::cout << "  x' = A x + B u on the reduced state (Appell's equations, first order in the pseudo-velocities):\n";
+    if (r.B_state.cols()) std::cout << matrix_text("B", r.B_state);
+  }
   std::cout << matrix_text("A", r.A);
   std::cout << "  eigenvalues and modes:\n";
   for (const runtime::Mode& mode : r.modes)
@@ -215,6 +220,17 @@ Command add_stability_command(CLI::App& app) {
     LoadedProblem loaded;
     if (auto status = load_problem(o->model, o->sets, loaded)) return *status;
     const eomgen_model_abi& m = *loaded.compiled->abi();
+    if (m.num_multipliers) {
+      std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent, and the "
+                               "constraint directions would show as spurious eigenvalues\n  hint: derive it with method = "
+                               "\"appell\" (independent pseudo-velocities) for a stability analysis\n", o->model);
+      return exit_user_error;
+    }
+    if (!o->symbolic.empty() && loaded.equations.uses_pseudo_velocities()) {
+      std::cerr << "eomgen: error: --symbolic needs the second-order form M q'' + P q' + Q q; Appell models are analysed "
+                   "numerically (leave out --symbolic, or use eomgen sweep for a stability map)\n";
+      return exit_user_error;
+    }
     runtime::Equilibrium eq;
     if (auto status = equilibrium_of(loaded.problem, o->at, eq)) return *status;
     std::optional<StabilityConditions> conditions;

@@ -107,6 +107,7 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   const Symbols& s = model.symbols;
   std::size_t n = s.coordinates.size();
   ConstraintSet constraints = constraint_set(model, mech.motion);
+  require_independent(constraints, s);
   auto chosen = pseudo_velocities(model, constraints, mech.motion);
   if (auto* why = std::get_if<std::string>(&chosen)) throw std::invalid_argument(*why);
   const PseudoVelocities& p = std::get<PseudoVelocities>(chosen);

@@ -3,6 +3,12 @@
 /// a(q,t)·q' + b(q,t) = 0 gives C = a directly.
 #include "derive/constraints.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "symbolic/evaluate.hpp"
 #include "symbolic/gradient.hpp"
 
 namespace eomgen {
@@ -45,6 +51,56 @@ bool constraints_scleronomic(const ConstraintSet& c, const Symbols& s) {
       if (c.jacobian(i, j).has(s.time)) return false;
   }
   return true;
+}
+
+std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s) {
+  auto value_of = [&](const GiNaC::symbol& x) -> double {
+    for (std::size_t i = 0; i < s.coordinates.size(); ++i)
+      if (x == s.coordinates[i]) return s.initial_coordinates[i];
+    for (std::size_t i = 0; i < s.parameters.size(); ++i)
+      if (x == s.parameters[i]) return s.parameter_defaults[i];
+    for (std::size_t i = 0; i < s.inputs.size(); ++i)
+      if (x == s.inputs[i]) return s.input_defaults[i];
+    return 0;  // time
+  };
+  // Gram–Schmidt over the rows of C in file order: a row (nearly) in the span of the
+  // rows before it adds no restriction
+  std::vector<std::vector<double>> basis;
+  std::vector<std::string> dependent;
+  for (unsigned i = 0; i < c.size(); ++i) {
+    std::vector<double> row;
+    double size = 0;
+    for (unsigned j = 0; j < c.jacobian.cols(); ++j) {
+      row.push_back(evaluate(c.jacobian(i, j), value_of));
+      size = std::max(size, std::abs(row.back()));
+    }
+    for (const auto& b : basis) {
+      double dot = 0;
+      for (std::size_t j = 0; j < row.size(); ++j) dot += row[j] * b[j];
+      for (std::size_t j = 0; j < row.size(); ++j) row[j] -= dot * b[j];
+    }
+    double norm = 0;
+    for (double v : row) norm += v * v;
+    norm = std::sqrt(norm);
+    if (!(norm > 1e-9 * std::max(size, 1e-300))) {
+      dependent.push_back(c.names[i]);
+      continue;
+    }
+    for (double& v : row) v /= norm;
+    basis.push_back(row);
+  }
+  return dependent;
+}
+
+void require_independent(const ConstraintSet& c, const Symbols& s) {
+  std::vector<std::string> dependent = dependent_constraints(c, s);
+  if (dependent.empty()) return;
+  std::string names;
+  for (const std::string& d : dependent) names += (names.empty() ? "'" : ", '") + d + "'";
+  throw std::invalid_argument(fmt::format(
+      "the constraint Jacobian does not have full rank at the initial state: {} depend{} on the constraints before "
+      "{} in the file, so the model has more degrees of freedom than {} coordinates minus {} constraints",
+      names, dependent.size() == 1 ? "s" : "", dependent.size() == 1 ? "it" : "them", s.coordinates.size(), c.size()));
 }
 
 }  // namespace eomgen

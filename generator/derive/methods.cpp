@@ -6,32 +6,45 @@
 
 namespace eomgen {
 
+// Cyclic: no equation depends on the coordinate. With Appell's equations that includes
+// the kinematic equations of the coordinates that are not cyclic themselves, and with
+// Lagrange I the constraints (the multipliers depend on them).
 std::vector<bool> cyclic_coordinates(const Equations& e) {
+  std::size_t n = e.symbols.num_coordinates(), k = e.forcing.size();
+  const ConstraintSet& c = e.constraints;
   std::vector<bool> cyclic;
-  std::size_t n = e.forcing.size();
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t q = 0; q < n; ++q) {
+    const auto& x = e.symbols.coordinates[q];
     bool free = true;
-    for (unsigned i = 0; i < n && free; ++i) {
-      free = !e.forcing[i].has(e.symbols.coordinates[k]);
-      for (unsigned j = 0; j < n && free; ++j) free = !e.mass_matrix(i, j).has(e.symbols.coordinates[k]);
+    for (unsigned i = 0; i < k && free; ++i) {
+      free = !e.forcing[i].has(x);
+      for (unsigned j = 0; j < k && free; ++j) free = !e.mass_matrix(i, j).has(x);
+    }
+    for (unsigned i = 0; e.has_multipliers && i < c.size() && free; ++i) {
+      free = !c.position[i].has(x) && !c.bias[i].has(x) && !c.acceleration_bias[i].has(x);
+      for (unsigned j = 0; j < n && free; ++j) free = !c.jacobian(i, j).has(x);
     }
     cyclic.push_back(free);
+  }
+  for (bool changed = true; changed && e.uses_pseudo_velocities();) {
+    changed = false;
+    for (std::size_t q = 0; q < n; ++q)
+      for (std::size_t j = 0; j < n && cyclic[q]; ++j)
+        if (!cyclic[j] && e.coordinate_rates[j].has(e.symbols.coordinates[q])) cyclic[q] = false, changed = true;
   }
   return cyclic;
 }
 
 void add_linearization(Equations& e) {
   const Symbols& s = e.symbols;
-  std::size_t n = e.forcing.size(), m = s.inputs.size();
+  std::size_t n = e.forcing.size(), nq = s.num_coordinates(), m = s.inputs.size();
   MotionSymbols motion = motion_symbols(s);
   e.linear_damping_gyroscopic = GiNaC::matrix(n, n);
-  e.linear_stiffness_circulatory = GiNaC::matrix(n, n);
+  e.linear_stiffness_circulatory = GiNaC::matrix(n, nq);
   e.linear_input = GiNaC::matrix(n, std::max<std::size_t>(m, 1));
   for (unsigned i = 0; i < n; ++i) {
-    for (unsigned j = 0; j < n; ++j) {
-      e.linear_damping_gyroscopic(i, j) = tidy(-e.forcing[i].diff(s.velocities[j]), motion);
-      e.linear_stiffness_circulatory(i, j) = tidy(-e.forcing[i].diff(s.coordinates[j]), motion);
-    }
+    for (unsigned j = 0; j < n; ++j) e.linear_damping_gyroscopic(i, j) = tidy(-e.forcing[i].diff(s.velocities[j]), motion);
+    for (unsigned j = 0; j < nq; ++j) e.linear_stiffness_circulatory(i, j) = tidy(-e.forcing[i].diff(s.coordinates[j]), motion);
     for (unsigned j = 0; j < m; ++j) e.linear_input(i, j) = tidy(e.forcing[i].diff(s.inputs[j]), motion);
   }
   e.has_linearization = true;

@@ -87,9 +87,9 @@ std::variant<PseudoVelocities, std::string> pseudo_velocities(const Model& model
   } else {
     if (model.pseudo_velocities.size() != k)
       return fmt::format("[pseudo_velocities] has {} entr{}, but the model has {} degree{} of freedom ({} coordinates, "
-                         "{} constraints): give one pseudo-velocity per degree of freedom",
+                         "{} constraint{}): give one pseudo-velocity per degree of freedom",
                          model.pseudo_velocities.size(), model.pseudo_velocities.size() == 1 ? "y" : "ies", k,
-                         k == 1 ? "" : "s", n, m);
+                         k == 1 ? "" : "s", n, m, m == 1 ? "" : "s");
     for (const NamedSymbolic& d : model.pseudo_velocities) {
       p.symbols.emplace_back(d.name);
       p.definitions.push_back(d);

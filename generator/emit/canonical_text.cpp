@@ -77,7 +77,7 @@ std::string emit_canonical_text(const Equations& e) {
       for (unsigned k = 0; k < n; ++k)
         out += fmt::format("P[{}][{}] = {}\n", j, k, canonical_text(e.linear_damping_gyroscopic(j, k)));
     for (unsigned j = 0; j < n; ++j)
-      for (unsigned k = 0; k < n; ++k)
+      for (unsigned k = 0; k < e.linear_stiffness_circulatory.cols(); ++k)
         out += fmt::format("Q[{}][{}] = {}\n", j, k, canonical_text(e.linear_stiffness_circulatory(j, k)));
     for (unsigned j = 0; j < n; ++j)
       for (unsigned k = 0; k < e.symbols.inputs.size(); ++k)

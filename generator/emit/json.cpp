@@ -115,7 +115,7 @@ std::string emit_json(const Equations& e) {
       return m + "]";
     };
     out += fmt::format(",\n  \"linearization\": {{\"P\": {}, \"Q\": {}, \"B\": {}}}",
-                       matrix(e.linear_damping_gyroscopic, n, n), matrix(e.linear_stiffness_circulatory, n, n),
+                       matrix(e.linear_damping_gyroscopic, n, n), matrix(e.linear_stiffness_circulatory, n, e.linear_stiffness_circulatory.cols()),
                        matrix(e.linear_input, n, s.inputs.size()));
   }
   out += "\n}\n";

@@ -96,7 +96,7 @@ std::string emit_latex(const Equations& e) {
       for (unsigned k = 0; k < n; ++k)
         out += fmt::format(" \\\\\nP_{{{}{}}} &= {}", j + 1, k + 1, tex(e.linear_damping_gyroscopic(j, k)));
     for (unsigned j = 0; j < n; ++j)
-      for (unsigned k = 0; k < n; ++k)
+      for (unsigned k = 0; k < e.linear_stiffness_circulatory.cols(); ++k)
         out += fmt::format(" \\\\\nQ_{{{}{}}} &= {}", j + 1, k + 1, tex(e.linear_stiffness_circulatory(j, k)));
     for (unsigned j = 0; j < n; ++j)
       for (unsigned k = 0; k < e.symbols.inputs.size(); ++k)

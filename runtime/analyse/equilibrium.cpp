@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 
+#include "analyse/first_order_form.hpp"
+
 namespace eomgen::runtime {
 
 namespace {
@@ -29,9 +31,42 @@ Derivatives evaluate(const Problem& p, const std::vector<double>& x) {
 // zero, for this model: relative to the size of its generalized stiffness at the state
 double tolerance_for(const Derivatives& d) { return 1e-9 * std::max(1.0, d.Q.cwiseAbs().maxCoeff()); }
 
+// Appell's equations: a steady motion has x' = 0 on the reduced state (the non-cyclic
+// coordinates stand still, the pseudo-velocities are constant)
+Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
+  Equilibrium e;
+  e.residual = reduced_rate(problem, state).cwiseAbs().maxCoeff();
+  e.tolerance = 1e-9 * std::max(1.0, reduced_jacobian(problem, state).cwiseAbs().maxCoeff());
+  e.converged = e.residual <= e.tolerance;
+  e.state = std::move(state);
+  return e;
+}
+
+// Newton on the non-cyclic coordinates, the pseudo-velocities as given
+Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
+  const eomgen_model_abi& m = *problem.model;
+  std::vector<int> kept = reduced_state(m), unknowns;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+    if (!m.is_cyclic[i]) unknowns.push_back(static_cast<int>(i));
+  int iterations = 0;
+  for (; iterations < 100 && !unknowns.empty(); ++iterations) {
+    Eigen::VectorXd r = reduced_rate(problem, x);
+    if (!r.allFinite() || r.cwiseAbs().maxCoeff() <= 1e-15) break;
+    Eigen::MatrixXd J = reduced_jacobian(problem, x).leftCols(static_cast<long>(unknowns.size()));
+    Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
+    double largest = step.cwiseAbs().maxCoeff(), scale = largest > 0.5 ? 0.5 / largest : 1.0;
+    for (std::size_t k = 0; k < unknowns.size(); ++k) x[unknowns[k]] += scale * step[static_cast<long>(k)];
+    if (scale == 1.0 && largest <= 1e-14) break;
+  }
+  Equilibrium e = check_first_order(problem, std::move(x));
+  e.iterations = iterations;
+  return e;
+}
+
 }  // namespace
 
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state) {
+  if (has_pseudo_velocities(*problem.model)) return check_first_order(problem, std::move(state));
   Derivatives d = evaluate(problem, state);
   Equilibrium e;
   e.state = std::move(state);
@@ -43,6 +78,7 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
 
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
   const eomgen_model_abi& m = *problem.model;
+  if (has_pseudo_velocities(m)) return find_first_order(problem, start);
   std::size_t n = m.num_coordinates;
   std::vector<double> x = start;
   std::vector<int> unknowns;  // index into x

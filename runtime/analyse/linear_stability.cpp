@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "analyse/first_order_form.hpp"
+
 namespace eomgen::runtime {
 
 namespace {
@@ -200,8 +202,34 @@ std::string phase_plane_type(const Eigen::Matrix2d& A) {
   return sense("stable focus", "unstable focus");
 }
 
+// Appell's equations: A is the Jacobian of the first-order form on the reduced state;
+// zero eigenvalues (families of steady motions) count as on the imaginary axis
+StabilityReport analyse_first_order(const Problem& problem, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *problem.model;
+  StabilityReport r;
+  r.A = reduced_jacobian(problem, x);
+  r.B_state = reduced_input_jacobian(problem, x);
+  for (int i : reduced_state(m)) r.state_names.push_back(m.state_names[i]);
+  Spectrum sp = spectrum(r.A);
+  r.eigenvalues = sp.eigenvalues;
+  Verdict v = judge(r.A, sp, 0);
+  r.verdict = v.verdict, r.stability_degree = v.degree;
+  for (auto l : r.eigenvalues)
+    if (l.imag() >= 0) {
+      double size = std::abs(l);
+      r.modes.push_back({l, std::abs(l.imag()), size > 0 ? -l.real() / size : 0.0});
+    }
+  r.characteristic_polynomial = polynomial_from_roots(r.eigenvalues);
+  r.hurwitz = hurwitz_determinants(r.characteristic_polynomial);
+  r.theorems.push_back("the force classification (D, G, K, N) needs M q'' + P q' + Q q = 0; Appell's equations are of "
+                       "first order in the pseudo-velocities, so A is analysed directly");
+  if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
+  return r;
+}
+
 StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x) {
   const eomgen_model_abi& m = *problem.model;
+  if (has_pseudo_velocities(m)) return analyse_first_order(problem, x);
   StabilityReport r;
   SecondOrder s = linearize(problem, x);
   r.M = s.M, r.P = s.P, r.Q = s.Q, r.B = s.B;
@@ -227,6 +255,10 @@ StabilityReport analyse_stability(const Problem& problem, const std::vector<doub
 
 double stability_degree(const Problem& problem, const std::vector<double>& x) {
   const eomgen_model_abi& m = *problem.model;
+  if (has_pseudo_velocities(m)) {
+    Eigen::MatrixXd A = reduced_jacobian(problem, x);
+    return judge(A, spectrum(A), 0).degree;
+  }
   SecondOrder s = linearize(problem, x);
   Eigen::MatrixXd A, B;
   first_order(m, s, A, B, nullptr);

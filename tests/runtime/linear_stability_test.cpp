@@ -305,3 +305,39 @@ TEST(KnownStabilityResults, DampedAbsorberIsAsymptoticallyStable) {
 
 }  // namespace
 }  // namespace eomgen::test
+
+namespace eomgen::test {
+namespace {
+
+// Upright straight rolling of the thin disk (theta = pi/2, der(psi) = 0, der(phi) = Omega),
+// linearized by hand from Appell's equations: theta = pi/2 + d, then d' = s_theta,
+// s_psi' = 2 Omega s_theta, s_theta' = (4/5)(g/R) d − (6/5) Omega s_psi, s_phi' = 0, so
+// lambda² = (4/5)(g/R − 3 Omega²) besides zeros: stable above Omega² = g/(3R) (Routh).
+TEST(AppellStability, RollingDiskIsStableAboveItsCriticalSpeed) {
+  const GeneratedModel& g = generated_model("rolling_disk");
+  runtime::Problem problem{g.abi, g.default_parameters, g.default_inputs};
+  double R = g.default_parameters[1], gravity = g.default_parameters[2], critical = std::sqrt(gravity / (3 * R));
+  for (double ratio : {0.5, 0.9, 1.1, 3.0}) {
+    double omega = ratio * critical;
+    std::vector<double> x = {0.3, -0.2, 0.7, M_PI / 2, 1.0, 0, 0, omega};
+    runtime::Equilibrium eq = runtime::check_equilibrium(problem, x);
+    ASSERT_TRUE(eq.converged) << eq.residual;
+    runtime::StabilityReport r = runtime::analyse_stability(problem, x);
+    EXPECT_EQ(r.verdict, ratio > 1 ? "marginally_stable" : "unstable") << "Omega/Omega_c = " << ratio;
+    double lambda2 = 0.8 * (gravity / R - 3 * omega * omega), largest = 0;
+    for (auto l : r.eigenvalues) largest = std::max(largest, std::abs(l));
+    EXPECT_NEAR(largest, std::sqrt(std::abs(lambda2)), 1e-9 * largest) << ratio;
+  }
+}
+
+TEST(AppellStability, FindsTheUprightTiltFromNearby) {
+  const GeneratedModel& g = generated_model("rolling_disk");
+  runtime::Problem problem{g.abi, g.default_parameters, g.default_inputs};
+  std::vector<double> x = {0, 0, 0, 1.4, 0, 0, 0, 20};
+  runtime::Equilibrium eq = runtime::find_equilibrium(problem, x);
+  ASSERT_TRUE(eq.converged);
+  EXPECT_NEAR(eq.state[3], M_PI / 2, 1e-12);
+}
+
+}  // namespace
+}  // namespace eomgen::test

@@ -1,0 +1,27 @@
+/// @file The first-order form x' = F(x) for models whose equations are not of
+/// second order in the coordinates: Appell's equations with pseudo-velocities,
+/// where q' = W(q) s. Their steady motions and linearization come from the
+/// generated jacobian_state, on the state without the cyclic coordinates.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+/// Appell models: the state holds pseudo-velocities, not q'.
+bool has_pseudo_velocities(const eomgen_model_abi& m);
+
+/// Indices into x of the reduced state: the non-cyclic coordinates, then all velocities.
+std::vector<int> reduced_state(const eomgen_model_abi& m);
+
+/// x' at x, and ∂x'/∂x, both restricted to the reduced state (rows and columns).
+Eigen::VectorXd reduced_rate(const Problem& p, const std::vector<double>& x);
+Eigen::MatrixXd reduced_jacobian(const Problem& p, const std::vector<double>& x);
+/// ∂x'/∂u on the rows of the reduced state.
+Eigen::MatrixXd reduced_input_jacobian(const Problem& p, const std::vector<double>& x);
+
+}  // namespace eomgen::runtime
