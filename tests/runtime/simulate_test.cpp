@@ -212,6 +212,32 @@ kinetic = "x^2*der(x)^2/2"
   EXPECT_NEAR(rows.back()[0], 0.5, 1e-3);
 }
 
+TEST(Simulate, SliderCrankUnderIdaReportsResidualsAndConstraintForces) {
+  std::string csv = temporary_directory() + "/slider.csv";
+  CommandRun run = eomgen("simulate " + model_path("slider_crank") + " --integrator ida --t-end 2 --format json -o " + csv, shared_cache());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_LT(json_number(run.out, "max_position_residual"), 1e-7) << run.out;
+  EXPECT_LT(json_number(run.out, "max_velocity_residual"), 1e-6) << run.out;
+  EXPECT_GT(json_number(run.out, "lambda_loop_x"), 1.0) << run.out;
+  std::string header;
+  auto rows = read_csv(csv, header);
+  EXPECT_EQ(header, "t,phi,beta,x,der(phi),der(beta),der(x),energy,lambda_loop_x,lambda_loop_y,position_residual,velocity_residual");
+  EXPECT_EQ(rows.size(), 201u);
+}
+
+TEST(Simulate, RollingDiskRunsAHundredSecondsOnItsConstraints) {
+  CommandRun run = eomgen("simulate " + model_path("rolling_disk") + " --t-end 100 --format json", shared_cache());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_LT(json_number(run.out, "max_velocity_residual"), 1e-8) << run.out;
+  EXPECT_NE(run.out.find("\"count\": 2"), std::string::npos) << run.out;
+}
+
+TEST(Simulate, IdaOnAModelWithoutMultipliersIsAUsageError) {
+  CommandRun run = eomgen("simulate " + model_path("knife_edge") + " --integrator ida", shared_cache());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("lagrange1"), std::string::npos) << run.err;
+}
+
 TEST(RunCommand, MainJobDrawsTheCharts) {
   std::string dir = temporary_directory();
   CommandRun r = eomgen("run -o '" + dir + "'", shared_cache());
