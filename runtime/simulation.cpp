@@ -15,7 +15,7 @@ namespace eomgen::runtime {
 
 const std::vector<std::string>& integrator_names() {
   static const std::vector<std::string> names = {"cvode-bdf", "cvode-adams", "arkode-dp5", "arkode-verner",
-                                                 "arkode-dirk", "rk4", "verlet", "ida"};
+                                                 "arkode-dirk", "rk4", "verlet", "ida", "reference"};
   return names;
 }
 
@@ -34,6 +34,7 @@ std::unique_ptr<Stepper> make_stepper(RightHandSide& f, const std::vector<double
   if (name == "rk4") return make_fixed_step(f, x0, s, false);
   if (name == "verlet") return make_fixed_step(f, x0, s, true);
   if (name == "ida") return make_ida(f, x0, s);
+  if (name == "reference") return make_reference(f, x0, s);
   throw std::invalid_argument("unknown integrator " + name);
 }
 
@@ -144,6 +145,8 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
     if (last) break;
   }
   result.statistics = stepper->statistics();
+  result.error_estimate = stepper->error_estimate();
+  result.reference_step = stepper->reference_step();
   const Trajectory& tr = result.trajectory;
   for (double r : tr.position_residuals) result.max_position_residual = std::max(result.max_position_residual, r);
   for (double r : tr.velocity_residuals) result.max_velocity_residual = std::max(result.max_velocity_residual, r);

@@ -2,6 +2,7 @@
 /// plain data shared by the integrators, the reports and the command line.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -9,11 +10,18 @@
 
 namespace eomgen::runtime {
 
+/// The reference integrator of a compiled model: extrapolation in a wide scalar from
+/// (t0, x0) to `count` output times with macro steps of at most `step`; writes the
+/// states to `out`; returns the right-hand sides used, or −1 − k if output k is not finite.
+using ReferenceFunction = long (*)(const double* p, const double* u, double t0, const double* x0, const double* times,
+                                   std::size_t count, double step, double* out);
+
 /// A model with its parameter and input values: x' = rhs(t, x, u, p).
 struct Problem {
   const eomgen_model_abi* model = nullptr;
   std::vector<double> parameters;  // num_parameters, in parameter_names order
   std::vector<double> inputs;      // num_inputs, held constant over the run
+  ReferenceFunction reference = nullptr;  // set when the model was compiled with one
 };
 
 struct SimulationSettings {
@@ -56,6 +64,8 @@ struct SimulationResult {
   std::string failure;  // what went wrong, for the user
   double max_position_residual = 0, max_velocity_residual = 0;
   long projections = 0;
+  double error_estimate = NAN;  // the reference integrator's estimate of its own error
+  double reference_step = 0;    // and its final macro step
 };
 
 /// The integrators by command-line name, the default first.

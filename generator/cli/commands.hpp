@@ -30,7 +30,8 @@ struct SimulationOptions {
   runtime::SimulationSettings settings;
   std::vector<std::string> sets, initials;
   std::string csv, plot, header_dir;
-  std::string stabilization = "both";  // constrained models: both, baumgarte, projection or none
+  std::string stabilization = "both";
+  std::string reference_scalar;  // filled in by simulate_model from the compiled model  // constrained models: both, baumgarte, projection or none
   bool json = false;
 };
 

@@ -51,7 +51,7 @@ std::string constraint_summary(const eomgen_model_abi& m, const runtime::Simulat
 }
 
 void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const runtime::SimulationResult& r,
-                   bool conservative, bool json) {
+                   bool conservative, bool json, const std::string& reference_scalar) {
   const runtime::SolverStatistics& s = r.statistics;
   double drift = relative_energy_drift(r.trajectory);
   if (json) {
@@ -62,10 +62,14 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
         "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
-        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}, \"failure\": {}}}\n",
+        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}, \"failure\": {}}}\n",
         m.name, o.settings.integrator, o.settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
-        conservative ? "true" : "false", drift, m.num_constraints ? constraint_summary(m, r, true) : "", failure);
+        conservative ? "true" : "false", drift, m.num_constraints ? constraint_summary(m, r, true) : "",
+        std::isnan(r.error_estimate) ? std::string()
+                                     : fmt::format(", \"reference_error_estimate\": {:.6g}, \"reference_step\": {:.6g}",
+                                                   r.error_estimate, r.reference_step),
+        failure);
     return;
   }
   std::cout << fmt::format("{}: {} from t = {:g} to {:.9g}, {} output rows\n", m.name, o.settings.integrator,
@@ -78,6 +82,10 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
                            conservative ? " (energy is conserved by this model: this is the integration error)"
                                         : " (the model does not conserve T + V)");
   if (m.num_constraints) std::cout << constraint_summary(m, r, false);
+  if (!std::isnan(r.error_estimate))
+    std::cout << fmt::format("  reference: Gragg–Bulirsch–Stoer extrapolation of order 16 in {}, macro step {:.3g} s; "
+                             "estimated error {:.2e} (largest difference from the run at twice the step, relative to "
+                             "each state's scale)\n", reference_scalar, r.reference_step, r.error_estimate);
 }
 
 }  // namespace
@@ -151,7 +159,7 @@ int simulate_model(const SimulationOptions& o) {
     else
       std::cerr << fmt::format("eomgen: charts in {}{}\n", o.plot, conservative ? " and " + runtime::energy_chart_path(o.plot) : "");
   }
-  print_summary(o, m, result, conservative, o.json);
+  print_summary(o, m, result, conservative, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
     std::cerr << fmt::format("eomgen: the simulation failed: {}\n", result.failure);
     if (!o.csv.empty()) std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the failure\n", o.csv, result.trajectory.times.size());
@@ -165,7 +173,8 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   cmd->add_option("--dt-out", o.settings.dt_out, "Output interval [s] (default 0.01)");
   cmd->add_option("--integrator", o.settings.integrator,
                   "cvode-bdf (default), cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet, "
-                  "ida (Lagrange I models, as a differential-algebraic system)")
+                  "ida (Lagrange I models, as a differential-algebraic system), reference (extrapolation in a wide scalar, "
+                  "with its own error estimate)")
       ->check(CLI::IsMember(runtime::integrator_names()));
   cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
   cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");

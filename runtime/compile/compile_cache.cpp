@@ -15,6 +15,7 @@
 namespace eomgen::runtime {
 
 extern const char* const model_abi_text;
+extern const char* const reference_solution_text;
 
 namespace fs = std::filesystem;
 
@@ -31,12 +32,13 @@ std::string cache_directory() {
 
 namespace {
 
-const char* compile_flags = "-std=c++17 -O2 -fPIC -shared";
+const std::string compile_flags = std::string("-std=c++17 -O2 -fPIC -shared ") + EOMGEN_DRIVER_REFERENCE_FLAGS;
 
 std::string content_key(const std::string& header_text) {
   std::uint64_t h = 1469598103934665603ull;
   for (const std::string& part : {std::string(EOMGEN_VERSION), std::string(EOMGEN_CXX_COMPILER),
-                                  std::string(compile_flags), std::string(model_abi_text), header_text})
+                                  compile_flags, std::string(model_abi_text),
+                                  std::string(reference_solution_text), header_text})
     for (unsigned char c : part + '\x1f') {
       h ^= c;
       h *= 1099511628211ull;
@@ -62,7 +64,11 @@ std::unique_ptr<LoadedModel> open_entry(const fs::path& library, const std::stri
     dlclose(handle);
     return nullptr;
   }
-  return std::make_unique<LoadedModel>(handle, abi, library.string(), compiled_now);
+  auto loaded = std::make_unique<LoadedModel>(handle, abi, library.string(), compiled_now);
+  loaded->reference = reinterpret_cast<ReferenceFunction>(dlsym(handle, "eomgen_reference"));
+  auto scalar = reinterpret_cast<const char* (*)()>(dlsym(handle, "eomgen_reference_scalar"));
+  loaded->reference_scalar = scalar ? scalar() : "";
+  return loaded;
 }
 
 // builds in a private folder, then renames it into place: all or nothing
@@ -72,12 +78,14 @@ bool build_entry(const fs::path& entry, const std::string& header_text, const st
   fs::path work = entry.parent_path() / fmt::format(".build-{}-{}-{:x}", key, ::getpid(), random());
   fs::create_directories(work);
   std::ofstream(work / "model_abi.h") << model_abi_text;
+  std::ofstream(work / "reference_solution.hpp") << reference_solution_text;
   std::ofstream(work / (name + ".hpp")) << header_text;
   std::ofstream(work / "driver.cpp") << fmt::format(
-      "// built by eomgen {} around {}.hpp\n#include \"model_abi.h\"\n#include \"{}.hpp\"\nEOMGEN_MODEL_ENTRY({}, \"{}\")\n",
-      EOMGEN_VERSION, name, name, name, key);
-  std::string command = fmt::format("cd '{}' && '{}' {} -o model.so driver.cpp > compile.log 2>&1", work.string(),
-                                    EOMGEN_CXX_COMPILER, compile_flags);
+      "// built by eomgen {} around {}.hpp\n#include \"model_abi.h\"\n#include \"reference_solution.hpp\"\n"
+      "#include \"{}.hpp\"\nEOMGEN_MODEL_ENTRY({}, \"{}\")\nEOMGEN_REFERENCE_ENTRY({})\n",
+      EOMGEN_VERSION, name, name, name, key, name);
+  std::string command = fmt::format("cd '{}' && '{}' {} -o model.so driver.cpp {} > compile.log 2>&1", work.string(),
+                                    EOMGEN_CXX_COMPILER, compile_flags, EOMGEN_DRIVER_REFERENCE_LIBRARIES);
   if (std::system(command.c_str()) != 0) {
     error = fmt::format("compiling the generated code failed (this is a bug in eomgen; please report it):\n{}",
                         read_text(work / "compile.log"));

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "model_abi.h"
+#include "simulation.hpp"
 
 namespace eomgen::runtime {
 
@@ -19,6 +20,9 @@ class LoadedModel {
   LoadedModel& operator=(const LoadedModel&) = delete;
 
   const eomgen_model_abi* abi() const { return abi_; }
+  /// The model's reference integrator in a wide scalar (see reference/reference_solution.hpp).
+  ReferenceFunction reference = nullptr;
+  std::string reference_scalar;
   const std::string& path() const { return path_; }
   bool compiled_now() const { return compiled_now_; }
 

@@ -2,6 +2,7 @@
 /// output time, report statistics, and say why it stopped.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ class Stepper {
   /// with x the state at the time reached, and failure_time/flag/reason set.
   virtual bool advance(double t_out, std::vector<double>& x) = 0;
   virtual SolverStatistics statistics() const = 0;
+  /// The integrator's own estimate of its global error (the reference integrator only).
+  virtual double error_estimate() const { return NAN; }
+  virtual double reference_step() const { return 0; }
 
   double failure_time = 0;
   int flag = 0;
@@ -61,6 +65,8 @@ std::unique_ptr<Stepper> make_arkode_dirk(RightHandSide& f, const std::vector<do
 /// Fixed-step classical RK4, or Störmer–Verlet (leapfrog) on x = [q; v].
 /// IDA on the stabilized index-2 form of Gear, Gupta and Leimkuhler (Lagrange I models).
 std::unique_ptr<Stepper> make_ida(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
+/// Extrapolation in a wide scalar with its own error estimate (Problem::reference).
+std::unique_ptr<Stepper> make_reference(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
 std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool verlet);
 
 }  // namespace eomgen::runtime
