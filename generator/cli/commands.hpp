@@ -24,6 +24,7 @@ Command add_simulate_command(CLI::App& app);
 Command add_stability_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
 
 struct SimulationOptions {
   std::string model;

@@ -1,8 +1,7 @@
 /// @file Fixed-step integrators: the classical fourth-order Runge–Kutta method,
 /// and Störmer–Verlet (leapfrog, kick–drift–kick) on x = [q; v]. Verlet is
-/// symplectic and of second order when the acceleration depends on q alone
-/// (conservative forces, constant mass matrix); with velocity-dependent terms
-/// the second kick uses the half-step velocity, keeping it explicit.
+/// symplectic when the acceleration depends on q alone (conservative forces,
+/// constant mass matrix), and symmetric and of second order in general.
 #include <chrono>
 #include <cmath>
 
@@ -69,15 +68,29 @@ class FixedStep : public Stepper {
     return true;
   }
 
-  // kick (h/2) – drift (h) – kick (h/2)
+  // kick (h/2, explicit) – drift (h) – kick (h/2, implicit): v½ = v + h/2 a(q, v),
+  // q' = q + h v½, v' = v½ + h/2 a(q', v'). With a = a(q) this is Störmer–Verlet; when
+  // the accelerations depend on the velocities (a mass matrix M(q) brings q'² terms)
+  // the last kick is solved by fixed-point iteration, which keeps the method symmetric
+  // and of second order (an explicit last kick at v½ would be of first order only)
   bool verlet_step(double h) {
     std::size_t n = x_.size(), half = n / 2;
-    std::vector<double> xdot(n);
+    std::vector<double> xdot(n), v_half(half);
     if (f_(t_, x_.data(), xdot.data())) return false;
-    for (std::size_t i = 0; i < half; ++i) x_[half + i] += h / 2 * xdot[half + i];
-    for (std::size_t i = 0; i < half; ++i) x_[i] += h * x_[half + i];
-    if (f_(t_ + h, x_.data(), xdot.data())) return false;
-    for (std::size_t i = 0; i < half; ++i) x_[half + i] += h / 2 * xdot[half + i];
+    for (std::size_t i = 0; i < half; ++i) v_half[i] = x_[half + i] + h / 2 * xdot[half + i];
+    for (std::size_t i = 0; i < half; ++i) x_[i] += h * v_half[i];
+    for (std::size_t i = 0; i < half; ++i) x_[half + i] = v_half[i];
+    for (int iteration = 0; iteration < 8; ++iteration) {
+      if (f_(t_ + h, x_.data(), xdot.data())) return false;
+      double change = 0, size = 0;
+      for (std::size_t i = 0; i < half; ++i) {
+        double v = v_half[i] + h / 2 * xdot[half + i];
+        change = std::max(change, std::abs(v - x_[half + i]));
+        size = std::max(size, std::abs(v));
+        x_[half + i] = v;
+      }
+      if (change <= 1e-15 * std::max(size, 1e-300)) break;
+    }
     return true;
   }
 

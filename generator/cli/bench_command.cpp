@@ -1,0 +1,144 @@
+/// @file `eomgen bench`: every integrator at a range of tolerances against a reference
+/// solution; writes the work-precision charts, the runs and a report with the verdict.
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "analyse/work_precision.hpp"
+#include "cli/commands.hpp"
+#include "cli/loaded_model.hpp"
+#include "common/output_file.hpp"
+#include "report/work_precision_report.hpp"
+
+namespace eomgen::cli {
+
+namespace {
+
+struct Options {
+  std::string model, directory, integrators = "all", tolerances = "1e-3:1e-12:10";
+  double t_end = 10, dt_out = 0, energy_horizon = 0, energy_tolerance = 1e-6, energy_step = 0;
+  int step_count = 8;
+  std::vector<std::string> sets;
+};
+
+// "1e-3:1e-12:10": from the first to the second, dividing by the third
+std::optional<std::vector<double>> tolerance_range(const std::string& text) {
+  std::vector<double> parts;
+  std::stringstream s(text);
+  for (std::string part; std::getline(s, part, ':');) {
+    try {
+      parts.push_back(std::stod(part));
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+  if (parts.size() != 3 || !(parts[0] > 0) || !(parts[1] > 0) || !(parts[0] >= parts[1]) || !(parts[2] > 1))
+    return std::nullopt;
+  std::vector<double> out;
+  for (double t = parts[0]; t >= parts[1] * (1 - 1e-9); t /= parts[2]) out.push_back(t);
+  return out;
+}
+
+std::vector<std::string> applicable_integrators(const eomgen_model_abi& m) {
+  std::vector<std::string> names;
+  for (const std::string& name : runtime::integrator_names()) {
+    if (name == "reference") continue;
+    if (name == "ida" && m.num_multipliers == 0) continue;
+    if (name == "verlet" && m.num_coordinates != m.num_velocities) continue;
+    names.push_back(name);
+  }
+  return names;
+}
+
+std::optional<std::vector<std::string>> chosen_integrators(const std::string& list, const eomgen_model_abi& m) {
+  std::vector<std::string> applicable = applicable_integrators(m);
+  if (list == "all") return applicable;
+  std::vector<std::string> chosen;
+  std::stringstream s(list);
+  for (std::string name; std::getline(s, name, ',');) {
+    if (std::find(applicable.begin(), applicable.end(), name) == applicable.end()) {
+      std::cerr << fmt::format("eomgen: error: --integrators: '{}' is not an integrator for this model; {}\n", name,
+                               suggest(name, applicable, "integrators"));
+      return std::nullopt;
+    }
+    chosen.push_back(name);
+  }
+  return chosen;
+}
+
+int bench(const Options& o) {
+  LoadedProblem loaded;
+  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  auto tolerances = tolerance_range(o.tolerances);
+  if (!tolerances) {
+    std::cerr << "eomgen: error: --tolerances takes FROM:TO:FACTOR, e.g. 1e-3:1e-12:10 (FROM >= TO > 0, FACTOR > 1)\n";
+    return exit_user_error;
+  }
+  auto integrators = chosen_integrators(o.integrators, m);
+  if (!integrators) return exit_user_error;
+  if (!(o.t_end > 0) || o.dt_out < 0 || o.step_count < 2) {
+    std::cerr << "eomgen: error: need --t-end > 0, --dt-out >= 0 and --step-count >= 2\n";
+    return exit_user_error;
+  }
+  runtime::WorkPrecisionSettings s;
+  s.t_end = o.t_end;
+  s.dt_out = o.dt_out > 0 ? o.dt_out : o.t_end / 200;
+  s.integrators = *integrators;
+  s.tolerances = *tolerances;
+  // fixed steps from a quarter of the output interval (larger ones are cut at every output time)
+  for (int k = 0; k < o.step_count; ++k) s.steps.push_back(s.dt_out / 4 / std::pow(2.0, k));
+  s.energy_histories = m.conserves_energy_without_inputs &&
+                       std::all_of(loaded.problem.inputs.begin(), loaded.problem.inputs.end(), [](double u) { return u == 0; });
+  s.energy_horizon = o.energy_horizon > 0 ? o.energy_horizon : 100 * o.t_end;
+  s.energy_tolerance = o.energy_tolerance;
+  s.energy_step = o.energy_step > 0 ? o.energy_step : s.dt_out / 5;
+  std::string directory = o.directory.empty() ? "bench-" + std::string(m.name) : o.directory;
+  std::filesystem::create_directories(directory);
+  std::vector<double> x0(m.default_state, m.default_state + m.num_states);
+  std::cerr << fmt::format("eomgen: bench {}: {} integrators, reference first\n", m.name, integrators->size());
+  runtime::WorkPrecision result;
+  try {
+    result = runtime::work_precision(loaded.problem, x0, s,
+                                     [](const std::string& line) { std::cerr << "eomgen: bench: " << line << "\n"; });
+  } catch (const std::runtime_error& why) {
+    std::cerr << "eomgen: " << why.what() << "\n";
+    return exit_numerical_failure;
+  }
+  std::string report = runtime::work_precision_markdown(m.name, result, s, loaded.compiled->reference_scalar);
+  write_file_atomically(directory + "/report.md", report);
+  write_file_atomically(directory + "/runs.csv", runtime::work_precision_csv(result));
+  if (std::string failure = runtime::draw_work_precision(m.name, result, directory); !failure.empty())
+    std::cerr << "eomgen: warning: no charts: " << failure << "\n";
+  std::string verdict = report.substr(report.find("## Verdict"));
+  verdict = verdict.substr(0, verdict.find("\n## Runs"));
+  std::cout << verdict << fmt::format("\nReport, runs and charts in {}/\n", directory);
+  return exit_success;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("bench", "Work against precision of every integrator, against a reference solution");
+  auto o = std::make_shared<Options>();
+  cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
+  cmd->add_option("--t-end", o->t_end, "End time [s] (default 10)");
+  cmd->add_option("--dt-out", o->dt_out, "Output interval the errors are taken at [s] (default t-end/200)");
+  cmd->add_option("--integrators", o->integrators, "Comma-separated list, or all (default: every one that applies)");
+  cmd->add_option("--tolerances", o->tolerances, "Relative tolerances FROM:TO:FACTOR (default 1e-3:1e-12:10); atol = rtol/100");
+  cmd->add_option("--step-count", o->step_count, "Fixed steps of rk4 and verlet: dt-out/4 halved this many times less one (default 8)");
+  cmd->add_option("--energy-horizon", o->energy_horizon, "Long run for the energy chart [s] (default 100 t-end)");
+  cmd->add_option("--energy-tolerance", o->energy_tolerance, "rtol of the long run (default 1e-6)");
+  cmd->add_option("--energy-step", o->energy_step, "Fixed step of the long run (default dt-out/5)");
+  cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
+  cmd->add_option("-o,--output", o->directory, "Folder for report.md, runs.csv and the charts (default bench-MODEL)");
+  return [cmd, o]() -> int {
+    if (!cmd->parsed()) return -1;
+    return bench(*o);
+  };
+}
+
+}  // namespace eomgen::cli

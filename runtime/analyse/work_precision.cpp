@@ -1,0 +1,166 @@
+#include "analyse/work_precision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include "analyse/accuracy.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+bool fixed_step(const std::string& name) { return name == "rk4" || name == "verlet"; }
+
+double cpu_now() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+// runs a short simulation several times so that its CPU time is not just clock resolution
+SimulationResult timed(const Problem& p, const std::vector<double>& x0, const SimulationSettings& s, double& seconds) {
+  double start = cpu_now();
+  SimulationResult r = simulate(p, x0, s);
+  seconds = cpu_now() - start;
+  int repeats = 1;
+  while (seconds * repeats < 0.05 && repeats < 64 && !r.failed) {
+    double again = cpu_now();
+    simulate(p, x0, s);
+    seconds = std::min(seconds, cpu_now() - again);
+    ++repeats;
+  }
+  return r;
+}
+
+WorkPrecisionRun measure(const Problem& p, const std::vector<double>& x0, SimulationSettings s, const Trajectory& reference) {
+  WorkPrecisionRun run;
+  run.integrator = s.integrator;
+  run.tolerance = fixed_step(s.integrator) ? 0 : s.rtol;
+  run.step = fixed_step(s.integrator) ? s.step : 0;
+  SimulationResult r = timed(p, x0, s, run.cpu_seconds);
+  run.rhs_evaluations = r.statistics.rhs_evaluations;
+  run.jacobian_evaluations = r.statistics.jacobian_evaluations;
+  run.steps = r.statistics.steps;
+  run.error = r.failed ? NAN : trajectory_error(r.trajectory.states, reference.states);
+  run.failure = r.failure;
+  return run;
+}
+
+double stiffness_ratio(const Problem& p, const std::vector<double>& x0, double t0) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
+  m.jacobian_state(t0, x0.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), J.data());
+  if (!J.allFinite()) return NAN;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(J, false);
+  double largest = 0, smallest = INFINITY;
+  for (Eigen::Index i = 0; i < J.rows(); ++i) largest = std::max(largest, std::abs(solver.eigenvalues()[i]));
+  for (Eigen::Index i = 0; i < J.rows(); ++i) {
+    double size = std::abs(solver.eigenvalues()[i]);
+    if (size > 1e-9 * largest) smallest = std::min(smallest, size);
+  }
+  return largest > 0 ? largest / smallest : NAN;
+}
+
+EnergyHistory energy_history(const Problem& p, const std::vector<double>& x0, const WorkPrecisionSettings& w,
+                             const std::string& integrator) {
+  SimulationSettings s;
+  s.t_start = w.t_start;
+  s.t_end = w.t_start + w.energy_horizon;
+  s.dt_out = w.energy_horizon / 500;
+  s.integrator = integrator;
+  s.rtol = w.energy_tolerance;
+  s.atol = w.energy_tolerance / 100;
+  s.step = w.energy_step;
+  s.max_steps = 10'000'000;
+  SimulationResult r = simulate(p, x0, s);
+  EnergyHistory h;
+  h.integrator = integrator;
+  h.failure = r.failure;
+  double e0 = r.trajectory.energies.front();
+  for (std::size_t k = 1; k < r.trajectory.times.size(); ++k) {
+    h.times.push_back(r.trajectory.times[k]);
+    h.relative_error.push_back(std::max(std::abs(r.trajectory.energies[k] - e0) / std::max(std::abs(e0), 1e-300), 1e-17));
+  }
+  return h;
+}
+
+}  // namespace
+
+WorkPrecision work_precision(const Problem& problem, const std::vector<double>& x0, const WorkPrecisionSettings& w,
+                             const std::function<void(const std::string&)>& progress) {
+  WorkPrecision out;
+  SimulationSettings base;
+  base.t_start = w.t_start;
+  base.t_end = w.t_end;
+  base.dt_out = w.dt_out;
+  base.max_steps = 2'000'000;
+  {
+    SimulationSettings s = base;
+    s.integrator = "reference";
+    double start = cpu_now();
+    SimulationResult r = simulate(problem, x0, s);
+    out.reference_seconds = cpu_now() - start;
+    if (r.failed) throw std::runtime_error("the reference solution failed: " + r.failure);
+    out.reference = r.trajectory;
+    out.reference_error_estimate = r.error_estimate;
+    progress(fmt::format("reference: estimated error {:.1e}, {:.2f} s", r.error_estimate, out.reference_seconds));
+  }
+  out.stiffness_ratio = stiffness_ratio(problem, x0, w.t_start);
+  for (const std::string& integrator : w.integrators) {
+    SimulationSettings s = base;
+    s.integrator = integrator;
+    for (double value : fixed_step(integrator) ? w.steps : w.tolerances) {
+      if (fixed_step(integrator)) s.step = value;
+      else s.rtol = value, s.atol = value / 100;
+      WorkPrecisionRun run = measure(problem, x0, s, out.reference);
+      progress(fmt::format("{} {} {:.0e}: error {:.2e}, {:.4f} s CPU, {} rhs evaluations{}", integrator,
+                           fixed_step(integrator) ? "step" : "rtol", value, run.error, run.cpu_seconds,
+                           run.rhs_evaluations, run.failure.empty() ? "" : " (failed: " + run.failure + ")"));
+      out.runs.push_back(run);
+    }
+  }
+  if (w.energy_histories)
+    for (const std::string& integrator : w.integrators) {
+      out.energy.push_back(energy_history(problem, x0, w, integrator));
+      progress(fmt::format("energy over {:g} s, {}: final relative error {:.2e}", w.energy_horizon, integrator,
+                           out.energy.back().relative_error.empty() ? NAN : out.energy.back().relative_error.back()));
+    }
+  return out;
+}
+
+double observed_order(const std::vector<WorkPrecisionRun>& runs, const std::string& integrator, double low, double high) {
+  std::vector<const WorkPrecisionRun*> own;
+  for (const WorkPrecisionRun& r : runs)
+    if (r.integrator == integrator && r.step > 0 && std::isfinite(r.error)) own.push_back(&r);
+  std::sort(own.begin(), own.end(), [](auto a, auto b) { return a->step > b->step; });
+  // from the largest step down, while the error still falls clearly (below that, roundoff rules)
+  std::vector<double> x, y;
+  double previous = INFINITY;
+  for (const WorkPrecisionRun* r : own) {
+    if (r->error > high) continue;
+    if (r->error < low || !(r->error < previous / 2)) break;
+    previous = r->error;
+    x.push_back(std::log10(r->step));
+    y.push_back(std::log10(r->error));
+  }
+  if (x.size() < 2) return NAN;
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / x.size(), my += y[i] / x.size();
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+  return sxy / sxx;
+}
+
+std::vector<const WorkPrecisionRun*> cheapest_at(const std::vector<WorkPrecisionRun>& runs, const std::vector<double>& levels) {
+  std::vector<const WorkPrecisionRun*> best;
+  for (double level : levels) {
+    const WorkPrecisionRun* pick = nullptr;
+    for (const WorkPrecisionRun& r : runs)
+      if (std::isfinite(r.error) && r.error <= level && (!pick || r.cpu_seconds < pick->cpu_seconds)) pick = &r;
+    best.push_back(pick);
+  }
+  return best;
+}
+
+}  // namespace eomgen::runtime

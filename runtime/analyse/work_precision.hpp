@@ -1,0 +1,61 @@
+/// @file Work against precision: every integrator at a range of tolerances (or
+/// step sizes for the fixed-step methods), each run's error against a reference
+/// solution and its cost, and the long-horizon energy error of each method.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+struct WorkPrecisionRun {
+  std::string integrator;
+  double tolerance = 0;  // rtol of the adaptive methods
+  double step = 0;       // step of the fixed-step methods
+  double error = 0;      // trajectory_error against the reference; NaN when the run failed
+  double cpu_seconds = 0;
+  long rhs_evaluations = 0, jacobian_evaluations = 0, steps = 0;
+  std::string failure;
+};
+
+struct EnergyHistory {
+  std::string integrator;
+  std::vector<double> times, relative_error;  // |E(t) − E(0)| / |E(0)|
+  std::string failure;
+};
+
+struct WorkPrecisionSettings {
+  double t_start = 0, t_end = 10, dt_out = 0.05;
+  std::vector<std::string> integrators;
+  std::vector<double> tolerances;  // rtol; atol = rtol/100
+  std::vector<double> steps;       // fixed steps of rk4 and verlet
+  bool energy_histories = false;   // conservative models: the long-horizon energy error
+  double energy_horizon = 1000, energy_tolerance = 1e-6, energy_step = 0.01;
+};
+
+struct WorkPrecision {
+  Trajectory reference;
+  double reference_error_estimate = 0, reference_seconds = 0;
+  std::vector<WorkPrecisionRun> runs;
+  std::vector<EnergyHistory> energy;
+  double stiffness_ratio = 0;  // largest over smallest nonzero |eigenvalue| of ∂f/∂x at the start
+};
+
+/// `progress` is called with a line after every run (for the user's terminal).
+WorkPrecision work_precision(const Problem& problem, const std::vector<double>& x0, const WorkPrecisionSettings& settings,
+                             const std::function<void(const std::string&)>& progress);
+
+/// The least-squares slope of log10(error) against log10(step) over the runs of one
+/// fixed-step integrator, from the largest step whose error is below `high` down to
+/// where the error falls below `low` or stops halving: the observed order.
+double observed_order(const std::vector<WorkPrecisionRun>& runs, const std::string& integrator, double low = 1e-12,
+                      double high = 1e-3);
+
+/// For each accuracy 10^-k in `levels`: the run (any integrator) with the least CPU time
+/// whose error is at most that accuracy; null entries where no run reached it.
+std::vector<const WorkPrecisionRun*> cheapest_at(const std::vector<WorkPrecisionRun>& runs, const std::vector<double>& levels);
+
+}  // namespace eomgen::runtime

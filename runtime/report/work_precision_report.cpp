@@ -1,0 +1,180 @@
+#include "report/work_precision_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+
+#include <fmt/format.h>
+
+namespace eomgen::runtime {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+std::vector<std::string> integrators_of(const std::vector<WorkPrecisionRun>& runs) {
+  std::vector<std::string> names;
+  for (const WorkPrecisionRun& r : runs)
+    if (names.empty() || names.back() != r.integrator) names.push_back(r.integrator);
+  return names;
+}
+
+std::string setting(const WorkPrecisionRun& r) {
+  return r.step > 0 ? fmt::format("step {:.3g} s", r.step) : fmt::format("rtol {:.0e}", r.tolerance);
+}
+
+int run_gnuplot(const std::string& script_text, const std::string& stem, std::string& why) {
+  std::string script = stem + ".gp.tmp", log = stem + ".gp.log";
+  std::ofstream(script) << script_text;
+  int status = std::system(fmt::format("gnuplot {} 2> {}", quoted(script), quoted(log)).c_str());
+  std::ifstream in(log);
+  why.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::remove(script.c_str());
+  std::remove(log.c_str());
+  return status;
+}
+
+// one chart as PNG and SVG from the same plot command
+std::string both_terminals(const std::string& path_stem, const std::string& settings, const std::string& plot) {
+  std::string text;
+  for (const char* terminal : {"pngcairo size 1000,600 noenhanced", "svg size 1000,600 noenhanced"}) {
+    std::string extension = std::string(terminal).rfind("svg", 0) == 0 ? "svg" : "png";
+    text += fmt::format("set terminal {}\nset output {}\n{}\n{}\n", terminal, quoted(path_stem + "." + extension),
+                        settings, plot);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::vector<double> verdict_levels(const std::vector<WorkPrecisionRun>& runs) {
+  double best = INFINITY;
+  for (const WorkPrecisionRun& r : runs)
+    if (std::isfinite(r.error)) best = std::min(best, r.error);
+  std::vector<double> levels;
+  for (int k = 2; k <= 14 && std::pow(10.0, -k) >= best; k += 2) levels.push_back(std::pow(10.0, -k));
+  return levels;
+}
+
+std::string work_precision_markdown(const std::string& model, const WorkPrecision& w, const WorkPrecisionSettings& s,
+                                    const std::string& reference_scalar) {
+  std::string out = fmt::format("# Work against precision: {}\n\n", model);
+  out += fmt::format(
+      "From t = {:g} to {:g} s; the error of a run is the largest difference from the reference over the output "
+      "times (every {:g} s), each state relative to its own scale. Reference: order-16 extrapolation in {}, estimated "
+      "error {:.1e}. Stiffness ratio at the start (largest over smallest nonzero |eigenvalue| of the Jacobian): {:.3g}.\n\n",
+      s.t_start, s.t_end, s.dt_out, reference_scalar, w.reference_error_estimate, w.stiffness_ratio);
+  std::vector<double> levels = verdict_levels(w.runs);
+  std::vector<const WorkPrecisionRun*> best = cheapest_at(w.runs, levels);
+  out += "## Verdict\n\n| accuracy | cheapest method | setting | CPU time [s] | rhs evaluations |\n| --- | --- | --- | --- | --- |\n";
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    if (!best[i]) continue;
+    out += fmt::format("| {:.0e} | {} | {} | {:.3g} | {} |\n", levels[i], best[i]->integrator, setting(*best[i]),
+                       best[i]->cpu_seconds, best[i]->rhs_evaluations);
+  }
+  std::set<std::string> winners;
+  for (const WorkPrecisionRun* b : best)
+    if (b) winners.insert(b->integrator);
+  std::string names;
+  for (const std::string& n : winners) names += (names.empty() ? "" : ", ") + n;
+  out += fmt::format("\nIn short: for this model the cheapest methods are {}.\n", names.empty() ? "(none reached 1e-2)" : names);
+  // the order is read off above the floor every method reaches (roundoff amplified by the model)
+  double floor = INFINITY;
+  for (const WorkPrecisionRun& r : w.runs)
+    if (std::isfinite(r.error) && r.error > 0) floor = std::min(floor, r.error);
+  for (const char* fixed : {"rk4", "verlet"}) {
+    double order = observed_order(w.runs, fixed, 10 * floor, 1e-3);
+    if (std::isfinite(order))
+      out += fmt::format("Observed order of {} (slope of log error against log step, errors from {:.0e} to 1e-3): {:.2f}.\n",
+                         fixed, 10 * floor, order);
+  }
+  out += "\n## Runs\n\n| integrator | setting | error | CPU time [s] | rhs evaluations | Jacobian evaluations | steps |\n"
+         "| --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const WorkPrecisionRun& r : w.runs)
+    out += fmt::format("| {} | {} | {} | {:.3g} | {} | {} | {} |\n", r.integrator, setting(r),
+                       std::isfinite(r.error) ? fmt::format("{:.2e}", r.error) : "failed", r.cpu_seconds,
+                       r.rhs_evaluations, r.jacobian_evaluations, r.steps);
+  if (!w.energy.empty()) {
+    out += fmt::format("\n## Energy over {:g} s (rtol {:.0e}; fixed steps {:g} s)\n\n| integrator | largest relative energy "
+                       "error |\n| --- | --- |\n",
+                       s.energy_horizon, s.energy_tolerance, s.energy_step);
+    for (const EnergyHistory& h : w.energy) {
+      double largest = 0;
+      for (double e : h.relative_error) largest = std::max(largest, e);
+      out += fmt::format("| {} | {:.2e}{} |\n", h.integrator, largest, h.failure.empty() ? "" : " (failed)");
+    }
+  }
+  out += "\nCharts: work_precision.png (error against CPU time), error_vs_evaluations.png, energy_error.png (conservative models); also as SVG.\n";
+  return out;
+}
+
+std::string work_precision_csv(const WorkPrecision& w) {
+  std::string out = "integrator,rtol,step,error,cpu_seconds,rhs_evaluations,jacobian_evaluations,steps\n";
+  for (const WorkPrecisionRun& r : w.runs)
+    out += fmt::format("{},{:.3g},{:.6g},{:.6g},{:.6g},{},{},{}\n", r.integrator, r.tolerance, r.step, r.error, r.cpu_seconds,
+                       r.rhs_evaluations, r.jacobian_evaluations, r.steps);
+  return out;
+}
+
+std::string draw_work_precision(const std::string& model, const WorkPrecision& w, const std::string& directory) {
+  std::string data = directory + "/work_precision.data.tmp";
+  std::vector<std::string> names = integrators_of(w.runs);
+  {
+    std::ofstream out(data);
+    for (const std::string& name : names) {
+      for (const WorkPrecisionRun& r : w.runs)
+        if (r.integrator == name && std::isfinite(r.error))
+          out << fmt::format("{:.6g} {:.6g} {}\n", r.cpu_seconds, std::max(r.error, 1e-17), r.rhs_evaluations);
+      out << "\n\n";
+    }
+  }
+  auto curves = [&](const char* columns) {
+    std::string plot = "plot ";
+    for (std::size_t i = 0; i < names.size(); ++i)
+      plot += fmt::format("{}{} index {} using {} with linespoints lw 2 pt 7 title {}", i ? ", " : "", quoted(data), i,
+                          columns, quoted(names[i]));
+    return plot;
+  };
+  std::string common = "set grid\nset logscale xy\nset format x '%.0e'\nset format y '%.0e'\nset key outside right\n"
+                       "set ylabel 'error (largest, relative to each state)'";
+  std::string script =
+      both_terminals(directory + "/work_precision",
+                     common + fmt::format("\nset title {}\nset xlabel 'CPU time [s]'", quoted(model + ": work against precision")),
+                     curves("1:2")) +
+      both_terminals(directory + "/error_vs_evaluations",
+                     common + fmt::format("\nset title {}\nset xlabel 'right-hand-side evaluations'",
+                                          quoted(model + ": error against right-hand sides")),
+                     curves("3:2"));
+  std::string energy = directory + "/energy.data.tmp";
+  if (!w.energy.empty()) {
+    std::ofstream out(energy);
+    for (const EnergyHistory& h : w.energy) {
+      for (std::size_t k = 0; k < h.times.size(); ++k) out << fmt::format("{:.6g} {:.6g}\n", h.times[k], h.relative_error[k]);
+      out << "\n\n";
+    }
+    out.close();
+    std::string plot = "plot ";
+    for (std::size_t i = 0; i < w.energy.size(); ++i)
+      plot += fmt::format("{}{} index {} using 1:2 with lines lw 2 title {}", i ? ", " : "", quoted(energy), i,
+                          quoted(w.energy[i].integrator));
+    script += both_terminals(directory + "/energy_error",
+                             fmt::format("set grid\nunset logscale\nset logscale y\nset format x '%g'\nset format y '%.0e'\nset key outside right\n"
+                                         "set title {}\nset xlabel 't [s]'\nset ylabel '|E(t) - E(0)| / |E(0)|'",
+                                         quoted(model + ": energy error over a long run")),
+                             plot);
+  }
+  std::string why;
+  int status = run_gnuplot(script, directory + "/work_precision", why);
+  std::remove(data.c_str());
+  std::remove(energy.c_str());
+  if (status != 0) return "gnuplot failed" + (why.empty() ? std::string(" (is gnuplot installed?)") : ": " + why);
+  return {};
+}
+
+}  // namespace eomgen::runtime
