@@ -121,6 +121,13 @@ int bench(const Options& o) {
 
 }  // namespace
 
+int bench_model(const std::string& model, const std::string& directory) {
+  Options o;
+  o.model = model;
+  o.directory = directory;
+  return bench(o);
+}
+
 Command add_bench_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bench", "Work against precision of every integrator, against a reference solution");
   auto o = std::make_shared<Options>();

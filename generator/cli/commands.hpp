@@ -26,6 +26,11 @@ Command add_sweep_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 
+/// `eomgen bench MODEL -o DIRECTORY` with the default settings.
+int bench_model(const std::string& model, const std::string& directory);
+/// `eomgen stability MODEL` (equilibrium searched from the initial values), as text.
+int stability_of_model(const std::string& model);
+
 struct SimulationOptions {
   std::string model;
   runtime::SimulationSettings settings;

@@ -15,7 +15,7 @@ Command add_run_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "run",
       "The main job on a model (default: the double pendulum): derive and print its equations, generate its header, "
-      "compile it, simulate it and draw its charts");
+      "compile it, simulate it, check the stability of its equilibrium, draw its charts and the work-precision chart");
   auto model = std::make_shared<std::string>();
   auto directory = std::make_shared<std::string>("eomgen-run");
   cmd->add_option("MODEL", *model, "Model file (TOML); default models/double_pendulum.toml");
@@ -34,8 +34,13 @@ Command add_run_command(CLI::App& app) {
     o.plot = *directory + "/" + stem + ".png";
     o.settings.rtol = 1e-10;
     o.settings.atol = 1e-12;
-    int status = simulate_model(o);
-    std::cerr << "eomgen run: header, trajectory and charts are in " << *directory << "/\n";
+    if (int status = simulate_model(o); status != exit_success) return status;
+    std::cerr << "eomgen run: stability of the equilibrium nearest the initial values\n";
+    if (int status = stability_of_model(path); status != exit_success)
+      std::cerr << "eomgen run: (no stability report for this model)\n";
+    std::cerr << "eomgen run: work against precision of every integrator\n";
+    int status = bench_model(path, *directory + "/bench");
+    std::cerr << "eomgen run: header, trajectory, charts and the work-precision report are in " << *directory << "/\n";
     return status;
   };
 }

@@ -205,6 +205,46 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
   return std::nullopt;
 }
 
+namespace {
+
+// the whole `eomgen stability` job for one set of options
+int stability(const Options& options) {
+  const Options* o = &options;
+  LoadedProblem loaded;
+  if (auto status = load_problem(o->model, o->sets, loaded)) return *status;
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  if (m.num_multipliers) {
+    std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent, and the "
+                             "constraint directions would show as spurious eigenvalues\n  hint: derive it with method = "
+                             "\"appell\" (independent pseudo-velocities) for a stability analysis\n", o->model);
+    return exit_user_error;
+  }
+  if (!o->symbolic.empty() && loaded.equations.uses_pseudo_velocities()) {
+    std::cerr << "eomgen: error: --symbolic needs the second-order form M q'' + P q' + Q q; Appell models are analysed "
+                 "numerically (leave out --symbolic, or use eomgen sweep for a stability map)\n";
+    return exit_user_error;
+  }
+  runtime::Equilibrium eq;
+  if (auto status = equilibrium_of(loaded.problem, o->at, eq)) return *status;
+  std::optional<StabilityConditions> conditions;
+  if (!o->symbolic.empty()) {
+    std::vector<std::string> kept = split_names(o->symbolic);
+    for (const std::string& k : kept)
+      if (index_of(m.parameter_names, m.num_parameters, k) < 0) {
+        std::cerr << fmt::format("eomgen: error: --symbolic {}: not a parameter; {}\n", k,
+                                 suggest(k, std::vector<std::string>(m.parameter_names, m.parameter_names + m.num_parameters), "parameters"));
+        return exit_user_error;
+      }
+    conditions = stability_conditions(loaded.equations, kept, loaded.problem.parameters, loaded.problem.inputs, eq.state);
+  }
+  runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
+  if (o->json) print_json(m, eq, report, conditions);
+  else print_text(m, eq, report, conditions);
+  return exit_success;
+}
+
+}  // namespace
+
 Command add_stability_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("stability", "Equilibrium, linearization and stability of a model");
   auto o = std::make_shared<Options>();
@@ -217,38 +257,14 @@ Command add_stability_command(CLI::App& app) {
   return [cmd, o, format]() -> int {
     if (!cmd->parsed()) return -1;
     o->json = *format == "json";
-    LoadedProblem loaded;
-    if (auto status = load_problem(o->model, o->sets, loaded)) return *status;
-    const eomgen_model_abi& m = *loaded.compiled->abi();
-    if (m.num_multipliers) {
-      std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent, and the "
-                               "constraint directions would show as spurious eigenvalues\n  hint: derive it with method = "
-                               "\"appell\" (independent pseudo-velocities) for a stability analysis\n", o->model);
-      return exit_user_error;
-    }
-    if (!o->symbolic.empty() && loaded.equations.uses_pseudo_velocities()) {
-      std::cerr << "eomgen: error: --symbolic needs the second-order form M q'' + P q' + Q q; Appell models are analysed "
-                   "numerically (leave out --symbolic, or use eomgen sweep for a stability map)\n";
-      return exit_user_error;
-    }
-    runtime::Equilibrium eq;
-    if (auto status = equilibrium_of(loaded.problem, o->at, eq)) return *status;
-    std::optional<StabilityConditions> conditions;
-    if (!o->symbolic.empty()) {
-      std::vector<std::string> kept = split_names(o->symbolic);
-      for (const std::string& k : kept)
-        if (index_of(m.parameter_names, m.num_parameters, k) < 0) {
-          std::cerr << fmt::format("eomgen: error: --symbolic {}: not a parameter; {}\n", k,
-                                   suggest(k, std::vector<std::string>(m.parameter_names, m.parameter_names + m.num_parameters), "parameters"));
-          return exit_user_error;
-        }
-      conditions = stability_conditions(loaded.equations, kept, loaded.problem.parameters, loaded.problem.inputs, eq.state);
-    }
-    runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
-    if (o->json) print_json(m, eq, report, conditions);
-    else print_text(m, eq, report, conditions);
-    return exit_success;
+    return stability(*o);
   };
+}
+
+int stability_of_model(const std::string& model) {
+  Options o;
+  o.model = model;
+  return stability(o);
 }
 
 }  // namespace eomgen::cli
