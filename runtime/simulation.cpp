@@ -78,14 +78,48 @@ std::pair<double, double> mass_matrix_range(const Problem& p, double t, const st
   return {eigen.eigenvalues().minCoeff(), eigen.eigenvalues().maxCoeff()};
 }
 
+// the mass matrix's conditioning (smallest over largest eigenvalue) and the coordinates that
+// take part in its weakest direction
+struct Conditioning {
+  double ratio = 1;
+  std::string coordinates;
+};
+
+Conditioning conditioning(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_velocities;
+  Eigen::MatrixXd M(n, n);
+  std::vector<double> rows(n * n);
+  m.mass_matrix(t, x.data(), p.parameters.data(), rows.data());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) M(i, j) = rows[i * n + j];
+  Conditioning c;
+  if (!M.allFinite() || n == 0) return c;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M);
+  double largest = std::abs(eigen.eigenvalues().maxCoeff());
+  c.ratio = largest > 0 ? eigen.eigenvalues().minCoeff() / largest : 1;
+  Eigen::VectorXd weakest = eigen.eigenvectors().col(0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::abs(weakest[static_cast<long>(i)]) > 0.2)
+      c.coordinates += (c.coordinates.empty() ? "" : ", ") + std::string(m.state_names[m.num_coordinates + i]);
+  return c;
+}
+
 // why the run stopped, in the words of mechanics where possible
 std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& stepper, const std::vector<double>& x,
-                     double scale) {
+                     double scale, double start_size) {
   std::string why = stepper.reason + fmt::format(" at t = {:.9g}", stepper.failure_time);
   auto [smallest, largest] = mass_matrix_range(p, stepper.failure_time, x);
   if (std::isnan(smallest) || smallest <= 1e-8 * scale)
     return why + fmt::format(": the mass matrix is singular (smallest eigenvalue {:.3g}) at {}", smallest,
                              configuration(*p.model, x));
+  double size = 0;
+  for (double v : x) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
+  if (size > 1e12 * (1 + start_size))
+    return why + fmt::format(": the state grows without bound (largest |x| = {:.3g}, from {:.3g} at the start): the "
+                             "solution escapes to infinity in finite time near t = {:.9g}, and no integrator can pass "
+                             "that time",
+                             size, start_size, stepper.failure_time);
   if (f.saw_non_finite())
     return why + fmt::format(": the right-hand side is not finite (a division by zero, or a function outside "
                              "its domain) at t = {:.9g}, {}",
@@ -125,8 +159,11 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   bool holonomic = false;
   for (std::size_t i = 0; i < m.num_constraints; ++i) holonomic = holonomic || m.constraint_is_holonomic[i];
   if ((lagrange1 || holonomic) && settings.projection && !is_dae_integrator(settings.integrator)) f.projection = &projection;
-  double scale = mass_matrix_range(problem, settings.t_start, x).second;
+  double scale = mass_matrix_range(problem, settings.t_start, x).second, start_size = 0;
+  for (double v : x) start_size = std::max(start_size, std::abs(v));
   record(problem, settings.t_start, x, result.trajectory);
+  Conditioning start = conditioning(problem, settings.t_start, x);
+  bool warned_singular = false;
   auto stepper = make_stepper(f, x, settings);
   // output times are exact multiples of dt_out, then the final time
   for (long k = 1;; ++k) {
@@ -137,11 +174,24 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       result.failed = true;
       result.failure_time = stepper->failure_time;
       result.solver_flag = stepper->flag;
-      result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0);
+      result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0, start_size);
       if (stepper->failure_time > result.trajectory.times.back()) record(problem, stepper->failure_time, x, result.trajectory);
       break;
     }
     record(problem, t, x, result.trajectory);
+    // a coordinate singularity ahead: M a thousand times worse conditioned than at the start
+    if (!warned_singular) {
+      Conditioning now = conditioning(problem, t, x);
+      if (now.ratio < 1e-3 * start.ratio) {
+        warned_singular = true;
+        result.warnings.push_back(fmt::format(
+            "the mass matrix is nearly singular at t = {:.9g} (smallest over largest eigenvalue {:.2e}, {:.2e} at the "
+            "start) at {}: the velocities {} are losing their independence. This is a singularity of the coordinates "
+            "(Euler angles at nutation 0 or pi, Cardan angles at beta = ±pi/2), not of the mechanics: expect large "
+            "rates and small steps; choose coordinates that are regular along this motion",
+            t, now.ratio, start.ratio, configuration(*problem.model, x), now.coordinates));
+      }
+    }
     if (last) break;
   }
   result.statistics = stepper->statistics();

@@ -64,6 +64,7 @@ struct SimulationResult {
   std::string failure;  // what went wrong, for the user
   double max_position_residual = 0, max_velocity_residual = 0;
   long projections = 0;
+  std::vector<std::string> warnings;  // things the user should know although the run went on
   double error_estimate = NAN;  // the reference integrator's estimate of its own error
   double reference_step = 0;    // and its final macro step
 };

@@ -21,7 +21,8 @@ struct Options {
   std::string model, directory, integrators = "all", tolerances = "1e-3:1e-12:10";
   double t_end = 10, dt_out = 0, energy_horizon = 0, energy_tolerance = 1e-6, energy_step = 0;
   int step_count = 8;
-  std::vector<std::string> sets;
+  std::string horizon_integrator;
+  std::vector<std::string> sets, initials;
 };
 
 // "1e-3:1e-12:10": from the first to the second, dividing by the third
@@ -99,6 +100,25 @@ int bench(const Options& o) {
   std::string directory = o.directory.empty() ? "bench-" + std::string(m.name) : o.directory;
   std::filesystem::create_directories(directory);
   std::vector<double> x0(m.default_state, m.default_state + m.num_states);
+  std::vector<Assignment> initials;
+  if (!parse_assignments(o.initials, "--initial", initials)) return exit_user_error;
+  for (const Assignment& a : initials) {
+    int i = index_of(m.state_names, m.num_states, a.name);
+    if (i < 0) {
+      std::cerr << fmt::format("eomgen: error: --initial {}: not a coordinate or a velocity of the state; {}\n", a.name,
+                               suggest(a.name, std::vector<std::string>(m.state_names, m.state_names + m.num_states), "states"));
+      return exit_user_error;
+    }
+    x0[i] = a.value;
+  }
+  if (!o.horizon_integrator.empty()) {
+    if (std::find(integrators->begin(), integrators->end(), o.horizon_integrator) == integrators->end() ||
+        o.horizon_integrator == "rk4" || o.horizon_integrator == "verlet") {
+      std::cerr << "eomgen: error: --horizon needs one of the adaptive integrators of the run\n";
+      return exit_user_error;
+    }
+    s.horizon_integrator = o.horizon_integrator;
+  }
   std::cerr << fmt::format("eomgen: bench {}: {} integrators, reference first\n", m.name, integrators->size());
   runtime::WorkPrecision result;
   try {
@@ -111,6 +131,8 @@ int bench(const Options& o) {
   std::string report = runtime::work_precision_markdown(m.name, result, s, loaded.compiled->reference_scalar);
   write_file_atomically(directory + "/report.md", report);
   write_file_atomically(directory + "/runs.csv", runtime::work_precision_csv(result));
+  if (!result.energy.empty()) write_file_atomically(directory + "/energy.csv", runtime::energy_csv(result));
+  if (!result.horizons.empty()) write_file_atomically(directory + "/horizons.csv", runtime::horizons_csv(result));
   if (std::string failure = runtime::draw_work_precision(m.name, result, directory); !failure.empty())
     std::cerr << "eomgen: warning: no charts: " << failure << "\n";
   std::string verdict = report.substr(report.find("## Verdict"));
@@ -141,6 +163,10 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--energy-tolerance", o->energy_tolerance, "rtol of the long run (default 1e-6)");
   cmd->add_option("--energy-step", o->energy_step, "Fixed step of the long run (default dt-out/5)");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
+  cmd->add_option("--initial", o->initials, "Initial value, one per flag: --initial phi1=2 --initial 'der(phi1)=0'");
+  cmd->add_option("--horizon", o->horizon_integrator,
+                  "Also the accuracy horizon with this integrator: for each tolerance, the time until the runs at rtol "
+                  "and rtol/10 differ by 1e-2 (for chaotic motions)");
   cmd->add_option("-o,--output", o->directory, "Folder for report.md, runs.csv and the charts (default bench-MODEL)");
   return [cmd, o]() -> int {
     if (!cmd->parsed()) return -1;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/work_precision.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
 #include "common/output_file.hpp"
@@ -88,6 +89,19 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
                              "each state's scale)\n", reference_scalar, r.reference_step, r.error_estimate);
 }
 
+// an explicit method on a stiff model: its steps are set by stability, not by accuracy
+void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0, const runtime::SimulationSettings& s,
+                       const runtime::SimulationResult& r) {
+  static const std::vector<std::string> explicit_methods = {"cvode-adams", "arkode-dp5", "arkode-verner", "rk4", "verlet"};
+  if (std::find(explicit_methods.begin(), explicit_methods.end(), s.integrator) == explicit_methods.end()) return;
+  double ratio = runtime::stiffness_ratio(p, x0, s.t_start);
+  if (!(ratio > 1e3)) return;
+  std::cerr << fmt::format("eomgen: warning: the model is stiff (stiffness ratio {:.2g} at the start: its fastest decay "
+                           "is that many times quicker than its slowest motion); {} is limited by stability there, not by "
+                           "accuracy, and took {} steps: cvode-bdf or arkode-dirk take far fewer\n",
+                           ratio, s.integrator, r.statistics.steps);
+}
+
 }  // namespace
 
 std::string json_escape(const std::string& s) {
@@ -141,6 +155,8 @@ int simulate_model(const SimulationOptions& o) {
     std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", o.settings.integrator, why.what());
     return exit_user_error;
   }
+  for (const std::string& w : result.warnings) std::cerr << "eomgen: warning: " << w << "\n";
+  stiffness_warning(problem, x0, o.settings, result);
   if (result.failed && result.trajectory.times.empty()) {
     std::cerr << fmt::format("eomgen: the simulation cannot start: {}\n", result.failure);
     return exit_numerical_failure;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/critical_case.hpp"
 #include "analyse/equilibrium.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/stability_conditions.hpp"
@@ -101,6 +102,15 @@ std::vector<std::string> split_names(const std::string& list) {
   return names;
 }
 
+void print_critical_case(const runtime::CriticalCase& c) {
+  if (!c.critical) return;
+  std::cout << "  first approximation: inconclusive: eigenvalues on the imaginary axis and none to the right are "
+               "Lyapunov's critical case (Hiller §7.5); the nonlinear terms decide\n";
+  std::cout << "    energy function: " << c.energy << "\n";
+  if (!c.simulation.empty()) std::cout << "    long simulation: " << c.simulation << "\n";
+  std::cout << "    nonlinear verdict: " << c.nonlinear_verdict << "\n";
+}
+
 void print_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const runtime::StabilityReport& r,
                 const std::optional<StabilityConditions>& conditions) {
   std::string where;
@@ -147,7 +157,7 @@ void print_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
 }
 
 void print_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const runtime::StabilityReport& r,
-                const std::optional<StabilityConditions>& conditions) {
+                const std::optional<StabilityConditions>& conditions, const runtime::CriticalCase& critical) {
   std::string equilibrium;
   for (std::size_t i = 0; i < m.num_states; ++i)
     equilibrium += fmt::format("{}\"{}\": {}", equilibrium.empty() ? "" : ", ", json_escape(m.state_names[i]), number(eq.state[i]));
@@ -167,12 +177,16 @@ void print_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"residual\": {}, \"state\": {}, \"A\": {}, \"B\": {}, \"M\": {}, "
       "\"D\": {}, \"G\": {}, \"K\": {}, \"N\": {}, \"eigenvalues\": [{}], \"verdict\": \"{}\", \"stability_degree\": {}, "
       "\"cyclic_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, "
-      "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"equilibrium_conditions\": {}}}\n",
+      "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"equilibrium_conditions\": {}, \"critical_case\": {}}}\n",
       m.name, equilibrium, number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
       number(r.stability_degree), r.cyclic_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
       json_numbers(r.hurwitz), json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
-      json_strings(condition_texts), json_strings(equations));
+      json_strings(condition_texts), json_strings(equations),
+      critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": \"{}\", \"simulation\": \"{}\", "
+                                      "\"nonlinear_verdict\": \"{}\"}}",
+                                      json_escape(critical.energy), json_escape(critical.simulation), critical.nonlinear_verdict)
+                        : "null");
 }
 
 }  // namespace
@@ -238,8 +252,13 @@ int stability(const Options& options) {
     conditions = stability_conditions(loaded.equations, kept, loaded.problem.parameters, loaded.problem.inputs, eq.state);
   }
   runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
-  if (o->json) print_json(m, eq, report, conditions);
-  else print_text(m, eq, report, conditions);
+  runtime::CriticalCase critical = runtime::check_critical_case(loaded.problem, eq.state, report);
+  if (o->json) {
+    print_json(m, eq, report, conditions, critical);
+  } else {
+    print_text(m, eq, report, conditions);
+    print_critical_case(critical);
+  }
   return exit_success;
 }
 

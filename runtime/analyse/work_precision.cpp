@@ -47,21 +47,6 @@ WorkPrecisionRun measure(const Problem& p, const std::vector<double>& x0, Simula
   return run;
 }
 
-double stiffness_ratio(const Problem& p, const std::vector<double>& x0, double t0) {
-  const eomgen_model_abi& m = *p.model;
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
-  m.jacobian_state(t0, x0.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), J.data());
-  if (!J.allFinite()) return NAN;
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(J, false);
-  double largest = 0, smallest = INFINITY;
-  for (Eigen::Index i = 0; i < J.rows(); ++i) largest = std::max(largest, std::abs(solver.eigenvalues()[i]));
-  for (Eigen::Index i = 0; i < J.rows(); ++i) {
-    double size = std::abs(solver.eigenvalues()[i]);
-    if (size > 1e-9 * largest) smallest = std::min(smallest, size);
-  }
-  return largest > 0 ? largest / smallest : NAN;
-}
-
 EnergyHistory energy_history(const Problem& p, const std::vector<double>& x0, const WorkPrecisionSettings& w,
                              const std::string& integrator) {
   SimulationSettings s;
@@ -85,7 +70,64 @@ EnergyHistory energy_history(const Problem& p, const std::vector<double>& x0, co
   return h;
 }
 
+// the first output time at which two trajectories differ by more than 1e-2 (states relative to
+// the reference's scale, as trajectory_error does), or their end when they never do
+double parting_time(const Trajectory& a, const Trajectory& b) {
+  for (std::size_t k = 1; k <= std::min(a.times.size(), b.times.size()); ++k) {
+    std::vector<std::vector<double>> one(a.states.begin(), a.states.begin() + static_cast<long>(k)),
+        two(b.states.begin(), b.states.begin() + static_cast<long>(k));
+    if (!(trajectory_error(one, two) <= 1e-2)) return a.times[k - 1];
+  }
+  return std::min(a.times.back(), b.times.back());
+}
+
+void accuracy_horizons(const Problem& p, const std::vector<double>& x0, const WorkPrecisionSettings& w, WorkPrecision& out,
+                       const std::function<void(const std::string&)>& progress) {
+  SimulationSettings s;
+  s.t_start = w.t_start;
+  s.t_end = w.t_end;
+  s.dt_out = w.dt_out;
+  s.integrator = w.horizon_integrator;
+  s.max_steps = 2'000'000;
+  for (double tolerance : w.tolerances) {
+    s.rtol = tolerance, s.atol = tolerance / 100;
+    SimulationResult loose = simulate(p, x0, s);
+    s.rtol = tolerance / 10, s.atol = tolerance / 1000;
+    SimulationResult tight = simulate(p, x0, s);
+    out.horizons.push_back({tolerance, parting_time(loose.trajectory, tight.trajectory)});
+    progress(fmt::format("accuracy horizon at rtol {:.0e} ({}): {:.3g} s", tolerance, s.integrator, out.horizons.back().horizon));
+  }
+  // horizon ≈ a + b·log10(1/tol) for a chaotic flow with errors growing like e^(λt): λ = ln 10 / b
+  std::vector<double> x, y;
+  for (const AccuracyHorizon& h : out.horizons)
+    if (h.horizon < w.t_end * (1 - 1e-9)) x.push_back(-std::log10(h.tolerance)), y.push_back(h.horizon);
+  if (x.size() >= 3) {
+    double mx = 0, my = 0, sxy = 0, sxx = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / x.size(), my += y[i] / x.size();
+    for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+    if (sxy > 0) out.lyapunov_estimate = std::log(10.0) / (sxy / sxx);
+  }
+}
+
 }  // namespace
+
+double stiffness_ratio(const Problem& p, const std::vector<double>& x0, double t0) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
+  m.jacobian_state(t0, x0.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), J.data());
+  if (!J.allFinite()) return NAN;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(J, false);
+  double largest = 0, fastest_decay = 0, slowest = INFINITY;
+  for (Eigen::Index i = 0; i < J.rows(); ++i) {
+    largest = std::max(largest, std::abs(solver.eigenvalues()[i]));
+    fastest_decay = std::max(fastest_decay, -solver.eigenvalues()[i].real());
+  }
+  for (Eigen::Index i = 0; i < J.rows(); ++i) {
+    double size = std::abs(solver.eigenvalues()[i]);
+    if (size > 1e-9 * largest) slowest = std::min(slowest, size);
+  }
+  return std::isfinite(slowest) && slowest > 0 ? fastest_decay / slowest : 0;
+}
 
 WorkPrecision work_precision(const Problem& problem, const std::vector<double>& x0, const WorkPrecisionSettings& w,
                              const std::function<void(const std::string&)>& progress) {
@@ -120,6 +162,7 @@ WorkPrecision work_precision(const Problem& problem, const std::vector<double>& 
       out.runs.push_back(run);
     }
   }
+  if (!w.horizon_integrator.empty()) accuracy_horizons(problem, x0, w, out, progress);
   if (w.energy_histories)
     for (const std::string& integrator : w.integrators) {
       out.energy.push_back(energy_history(problem, x0, w, integrator));

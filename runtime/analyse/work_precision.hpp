@@ -27,6 +27,11 @@ struct EnergyHistory {
   std::string failure;
 };
 
+/// How long a run at one tolerance stays within 1e-2 of the run at a tenth of it.
+struct AccuracyHorizon {
+  double tolerance = 0, horizon = 0;  // horizon = t_end when they never part
+};
+
 struct WorkPrecisionSettings {
   double t_start = 0, t_end = 10, dt_out = 0.05;
   std::vector<std::string> integrators;
@@ -34,6 +39,7 @@ struct WorkPrecisionSettings {
   std::vector<double> steps;       // fixed steps of rk4 and verlet
   bool energy_histories = false;   // conservative models: the long-horizon energy error
   double energy_horizon = 1000, energy_tolerance = 1e-6, energy_step = 0.01;
+  std::string horizon_integrator;  // non-empty: also the accuracy horizons with this integrator
 };
 
 struct WorkPrecision {
@@ -41,8 +47,14 @@ struct WorkPrecision {
   double reference_error_estimate = 0, reference_seconds = 0;
   std::vector<WorkPrecisionRun> runs;
   std::vector<EnergyHistory> energy;
-  double stiffness_ratio = 0;  // largest over smallest nonzero |eigenvalue| of ∂f/∂x at the start
+  std::vector<AccuracyHorizon> horizons;
+  double lyapunov_estimate = NAN;  // ln 10 over the horizon gained per decade of tolerance
+  double stiffness_ratio = 0;  // see stiffness_ratio()
 };
+
+/// The fastest decay rate (largest −Re λ) over the slowest rate (smallest nonzero |λ|) of
+/// ∂x'/∂x at x0: large for stiff systems, about zero for undamped oscillations however fast.
+double stiffness_ratio(const Problem& problem, const std::vector<double>& x0, double t0);
 
 /// `progress` is called with a line after every run (for the user's terminal).
 WorkPrecision work_precision(const Problem& problem, const std::vector<double>& x0, const WorkPrecisionSettings& settings,

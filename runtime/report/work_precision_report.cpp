@@ -68,7 +68,7 @@ std::string work_precision_markdown(const std::string& model, const WorkPrecisio
   out += fmt::format(
       "From t = {:g} to {:g} s; the error of a run is the largest difference from the reference over the output "
       "times (every {:g} s), each state relative to its own scale. Reference: order-16 extrapolation in {}, estimated "
-      "error {:.1e}. Stiffness ratio at the start (largest over smallest nonzero |eigenvalue| of the Jacobian): {:.3g}.\n\n",
+      "error {:.1e}. Stiffness ratio at the start (fastest decay rate, largest -Re of the Jacobian's eigenvalues, over the slowest rate, smallest nonzero |eigenvalue|): {:.3g}.\n\n",
       s.t_start, s.t_end, s.dt_out, reference_scalar, w.reference_error_estimate, w.stiffness_ratio);
   std::vector<double> levels = verdict_levels(w.runs);
   std::vector<const WorkPrecisionRun*> best = cheapest_at(w.runs, levels);
@@ -110,6 +110,16 @@ std::string work_precision_markdown(const std::string& model, const WorkPrecisio
       out += fmt::format("| {} | {:.2e}{} |\n", h.integrator, largest, h.failure.empty() ? "" : " (failed)");
     }
   }
+  if (!w.horizons.empty()) {
+    out += fmt::format("\n## Accuracy horizon ({})\n\nThe time until the runs at rtol and rtol/10 differ by 1e-2: beyond "
+                       "it the trajectory is not known to two digits.\n\n| rtol | horizon [s] |\n| --- | --- |\n",
+                       s.horizon_integrator);
+    for (const AccuracyHorizon& h : w.horizons)
+      out += fmt::format("| {:.0e} | {:.3g}{} |\n", h.tolerance, h.horizon, h.horizon >= s.t_end * (1 - 1e-9) ? " (the whole run)" : "");
+    if (std::isfinite(w.lyapunov_estimate))
+      out += fmt::format("\nEach tenfold tighter tolerance buys ln(10)/λ more seconds: the horizons give λ ≈ {:.3g} 1/s, "
+                         "the largest Lyapunov exponent of this motion.\n", w.lyapunov_estimate);
+  }
   out += "\nCharts: work_precision.png (error against CPU time), error_vs_evaluations.png, energy_error.png (conservative models); also as SVG.\n";
   return out;
 }
@@ -119,6 +129,26 @@ std::string work_precision_csv(const WorkPrecision& w) {
   for (const WorkPrecisionRun& r : w.runs)
     out += fmt::format("{},{:.3g},{:.6g},{:.6g},{:.6g},{},{},{}\n", r.integrator, r.tolerance, r.step, r.error, r.cpu_seconds,
                        r.rhs_evaluations, r.jacobian_evaluations, r.steps);
+  return out;
+}
+
+std::string energy_csv(const WorkPrecision& w) {
+  if (w.energy.empty()) return {};
+  std::string out = "t";
+  for (const EnergyHistory& h : w.energy) out += "," + h.integrator;
+  out += "\n";
+  for (std::size_t k = 0; k < w.energy.front().times.size(); ++k) {
+    out += fmt::format("{:.6g}", w.energy.front().times[k]);
+    for (const EnergyHistory& h : w.energy) out += k < h.relative_error.size() ? fmt::format(",{:.6g}", h.relative_error[k]) : ",nan";
+    out += "\n";
+  }
+  return out;
+}
+
+std::string horizons_csv(const WorkPrecision& w) {
+  if (w.horizons.empty()) return {};
+  std::string out = "rtol,horizon\n";
+  for (const AccuracyHorizon& h : w.horizons) out += fmt::format("{:.3g},{:.6g}\n", h.tolerance, h.horizon);
   return out;
 }
 
@@ -169,8 +199,21 @@ std::string draw_work_precision(const std::string& model, const WorkPrecision& w
                                          quoted(model + ": energy error over a long run")),
                              plot);
   }
+  std::string horizon = directory + "/horizon.data.tmp";
+  if (!w.horizons.empty()) {
+    std::ofstream out(horizon);
+    for (const AccuracyHorizon& h : w.horizons) out << fmt::format("{:.6g} {:.6g}\n", h.tolerance, h.horizon);
+    out.close();
+    script += both_terminals(directory + "/accuracy_horizon",
+                             fmt::format("set grid\nunset logscale\nset logscale x\nset format x '%.0e'\nset format y '%g'\n"
+                                         "set key off\nset title {}\nset xlabel 'relative tolerance'\n"
+                                         "set ylabel 'accuracy horizon [s]'",
+                                         quoted(model + ": time until rtol and rtol/10 differ by 1e-2")),
+                             fmt::format("plot {} using 1:2 with linespoints lw 2 pt 7", quoted(horizon)));
+  }
   std::string why;
   int status = run_gnuplot(script, directory + "/work_precision", why);
+  std::remove(horizon.c_str());
   std::remove(data.c_str());
   std::remove(energy.c_str());
   if (status != 0) return "gnuplot failed" + (why.empty() ? std::string(" (is gnuplot installed?)") : ": " + why);

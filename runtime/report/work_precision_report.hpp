@@ -16,6 +16,10 @@ std::vector<double> verdict_levels(const std::vector<WorkPrecisionRun>& runs);
 std::string work_precision_markdown(const std::string& model, const WorkPrecision& result, const WorkPrecisionSettings& settings,
                                     const std::string& reference_scalar);
 std::string work_precision_csv(const WorkPrecision& result);
+/// The long-horizon energy errors, one column per integrator (empty without them).
+std::string energy_csv(const WorkPrecision& result);
+/// rtol, horizon (empty without accuracy horizons).
+std::string horizons_csv(const WorkPrecision& result);
 
 /// Writes DIR/work_precision.{png,svg}, DIR/error_vs_evaluations.{png,svg} and, with energy
 /// histories, DIR/energy_error.{png,svg}. Empty on success, else what went wrong.

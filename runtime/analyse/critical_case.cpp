@@ -1,0 +1,135 @@
+#include "analyse/critical_case.hpp"
+
+#include <cmath>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "analyse/first_order_form.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+
+// V(q + δ) − V(q) > 0 along every coordinate direction and random ones, at two radii
+bool strict_minimum_of_potential(const Problem& p, const std::vector<double>& x, std::string& where) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_coordinates;
+  double v0 = m.potential_energy(0.0, x.data(), p.parameters.data());
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  std::vector<std::vector<double>> directions;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (m.is_cyclic[i]) continue;
+    std::vector<double> d(n, 0.0);
+    d[i] = 1;
+    directions.push_back(d);
+    d[i] = -1;
+    directions.push_back(d);
+  }
+  for (int k = 0; k < 20; ++k) {
+    std::vector<double> d(n, 0.0);
+    double size = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!m.is_cyclic[i]) d[i] = normal(random), size += d[i] * d[i];
+    if (size > 0) {
+      for (double& v : d) v /= std::sqrt(size);
+      directions.push_back(d);
+    }
+  }
+  for (double radius : {1e-2, 1e-3})
+    for (const auto& d : directions) {
+      std::vector<double> y = x;
+      for (std::size_t i = 0; i < n; ++i) y[i] += radius * d[i];
+      double dv = m.potential_energy(0.0, y.data(), p.parameters.data()) - v0;
+      if (!(dv > 1e-14 * std::max(1.0, std::abs(v0)))) {
+        std::string moved;
+        for (std::size_t i = 0; i < n; ++i)
+          if (d[i] != 0) moved += fmt::format("{}{} {:+.3g}", moved.empty() ? "" : ", ", m.coordinate_names[i], radius * d[i]);
+        where = fmt::format("V does not increase when moving {} (ΔV = {:.3g})", moved, dv);
+        return false;
+      }
+    }
+  return true;
+}
+
+// the largest deviation (over the non-cyclic coordinates and the velocities) from x
+double deviation(const eomgen_model_abi& m, const std::vector<double>& y, const std::vector<double>& x) {
+  double d = 0;
+  for (int i : reduced_state(m)) d = std::max(d, std::abs(y[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>(i)]));
+  return d;
+}
+
+std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const StabilityReport& r, std::string& verdict) {
+  const eomgen_model_abi& m = *p.model;
+  double slowest = INFINITY;
+  for (auto l : r.eigenvalues)
+    if (std::abs(l.imag()) > 1e-9) slowest = std::min(slowest, std::abs(l.imag()));
+  double horizon = std::isfinite(slowest) ? std::min(200 * 2 * M_PI / slowest, 1000.0) : 100.0;
+  SimulationSettings s;
+  s.t_end = horizon;
+  s.dt_out = horizon / 2000;
+  s.rtol = 1e-10;
+  s.atol = 1e-13;
+  s.max_steps = 1'000'000;
+  double worst = 0, epsilon = 0, when = 0;
+  std::string worst_start;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i) {
+    if (m.is_cyclic[i]) continue;
+    for (double sign : {1.0, -1.0}) {
+      std::vector<double> y = x;
+      epsilon = 1e-3 * std::max(1.0, std::abs(x[i]));
+      y[i] += sign * epsilon;
+      SimulationResult run = simulate(p, y, s);
+      double grown = run.failed ? INFINITY : 0;
+      for (std::size_t k = 0; k < run.trajectory.times.size(); ++k) {
+        double d = deviation(m, run.trajectory.states[k], x) / epsilon;
+        if (d > grown || !std::isfinite(d)) grown = std::isfinite(d) ? d : INFINITY;
+        if (d > 100 && when == 0) when = run.trajectory.times[k];
+      }
+      if (run.failed && when == 0) when = run.failure_time;
+      if (grown > worst) worst = grown, worst_start = fmt::format("{} {:+.1e}", m.coordinate_names[i], sign * epsilon);
+    }
+  }
+  if (worst > 100) {
+    verdict = "unstable";
+    return fmt::format("a perturbation of {} grew more than a hundredfold{} (by t = {:.4g} s of a {:.4g} s run): unstable",
+                       worst_start, std::isfinite(worst) ? fmt::format(", to {:.3g} times its size", worst) : " (the run broke off)",
+                       when, horizon);
+  }
+  verdict = "stable";
+  return fmt::format("perturbations of ±1e-3 in each coordinate stayed within {:.3g} times their size over {:.4g} s "
+                     "(about 200 periods of the slowest mode): stable as far as a simulation can tell",
+                     worst, horizon);
+}
+
+}  // namespace
+
+CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x, const StabilityReport& r) {
+  CriticalCase c;
+  double largest = -INFINITY, scale = std::max(1.0, r.A.cwiseAbs().maxCoeff()), tolerance = 1e-9 * scale;
+  for (auto l : r.eigenvalues) largest = std::max(largest, l.real());
+  c.critical = !r.eigenvalues.empty() && std::abs(largest) <= tolerance;
+  if (!c.critical) return c;
+  const eomgen_model_abi& m = *p.model;
+  bool at_rest = true;
+  for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) at_rest = at_rest && x[i] == 0;
+  bool unforced = true;
+  for (double u : p.inputs) unforced = unforced && u == 0;
+  std::string where;
+  if (!m.conserves_energy_without_inputs || !unforced || !at_rest || has_pseudo_velocities(m)) {
+    c.energy = "not applicable: Lagrange–Dirichlet needs a conservative system at rest";
+  } else if (strict_minimum_of_potential(p, x, where)) {
+    c.energy = "T + V is a Lyapunov function: V has a strict minimum at the equilibrium and T is positive definite, "
+               "so the equilibrium is stable (Lagrange–Dirichlet)";
+    c.nonlinear_verdict = "stable";
+    return c;
+  } else {
+    c.energy = "decides nothing: " + where;
+  }
+  c.simulation = perturbed_runs(p, x, r, c.nonlinear_verdict);
+  return c;
+}
+
+}  // namespace eomgen::runtime

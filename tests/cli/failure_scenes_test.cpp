@@ -1,0 +1,146 @@
+// The places where methods fail, each detected and reported rather than hidden:
+// stiffness (explicit methods warned, step counts against BDF), energy drift of
+// non-symplectic methods on a long run against Störmer–Verlet's bounded error, the
+// accuracy horizon of a chaotic motion, a coordinate singularity of Euler angles
+// (warned before it, named, and absent in Cardan angles), the first approximation
+// failing (critical case decided by the energy function or a long simulation), and
+// an integrator stopping at a finite escape time with the trajectory kept.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+struct Output {
+  int status;
+  std::string out, err;
+};
+
+Output eomgen(const std::string& arguments) {
+  std::string scratch = temporary_directory();
+  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                           std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" +
+                           scratch + "/err'");
+  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-+0-9.eE]+)"))) return NAN;
+  return std::stod(m[1]);
+}
+
+std::vector<std::vector<double>> numeric_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(Stiffness, ExplicitMethodsAreWarnedAndTakeFarMoreSteps) {
+  Output bdf = eomgen("simulate '" + model_path("stiff_chain") + "' --rtol 1e-6 --format json");
+  Output dp5 = eomgen("simulate '" + model_path("stiff_chain") + "' --rtol 1e-6 --integrator arkode-dp5 --format json");
+  ASSERT_EQ(bdf.status, 0) << bdf.err;
+  ASSERT_EQ(dp5.status, 0) << dp5.err;
+  EXPECT_GT(json_number(dp5.out, "steps"), 100 * json_number(bdf.out, "steps"));
+  EXPECT_NE(dp5.err.find("the model is stiff (stiffness ratio"), std::string::npos) << dp5.err;
+  EXPECT_EQ(bdf.err.find("is stiff"), std::string::npos);
+  Output calm = eomgen("simulate '" + model_path("double_pendulum") + "' --integrator arkode-dp5 --format json");
+  EXPECT_EQ(calm.err.find("is stiff"), std::string::npos) << "an oscillating model is not stiff";
+}
+
+TEST(EnergyDrift, VerletStaysBoundedWhereTheOthersDrift) {
+  std::string dir = temporary_directory() + "/drift";
+  Output run = eomgen("bench '" + model_path("double_pendulum") + "' --t-end 2 --dt-out 0.05 --tolerances 1e-4:1e-5:10 "
+                      "--integrators cvode-bdf,rk4,verlet --step-count 2 --energy-tolerance 1e-6 --energy-step 0.01 -o '" + dir + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  auto rows = numeric_csv(dir + "/energy.csv");  // t, cvode-bdf, rk4, verlet
+  ASSERT_GT(rows.size(), 100u);
+  auto largest = [&](int column, std::size_t from, std::size_t to) {
+    double m = 0;
+    for (std::size_t k = from; k < to; ++k) m = std::max(m, rows[k][static_cast<std::size_t>(column)]);
+    return m;
+  };
+  std::size_t half = rows.size() / 2;
+  for (int drifting : {1, 2}) EXPECT_GT(largest(drifting, half, rows.size()), 1.5 * largest(drifting, 0, half)) << drifting;
+  EXPECT_LT(largest(3, half, rows.size()), 2 * largest(3, 0, half)) << "Störmer–Verlet's energy error should stay bounded";
+}
+
+TEST(Chaos, AccuracyHorizonGrowsWithTheTolerance) {
+  std::string dir = temporary_directory() + "/chaos";
+  Output run = eomgen("bench '" + model_path("double_pendulum") + "' --t-end 20 --initial phi1=2 --initial phi2=2.5 "
+                      "--integrators arkode-dp5 --horizon arkode-dp5 --tolerances 1e-4:1e-10:10 --step-count 2 -o '" + dir + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
+  auto rows = numeric_csv(dir + "/horizons.csv");
+  ASSERT_EQ(rows.size(), 7u);
+  EXPECT_LT(rows.front()[1], 8.0) << "at rtol 1e-4 the chaotic motion is lost within seconds";
+  EXPECT_GT(rows.back()[1], rows.front()[1] + 5.0) << "six decades of tolerance should buy several seconds";
+  std::string report = read_file(dir + "/report.md");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(report, m, std::regex("λ ≈ ([0-9.]+)"))) << report;
+  EXPECT_GT(std::stod(m[1]), 0.3);
+  EXPECT_LT(std::stod(m[1]), 5.0);
+}
+
+TEST(CoordinateSingularity, EulerAnglesAreWarnedBeforeNutationZeroAndCardanAnglesRunThrough) {
+  Output euler = eomgen("simulate '" + model_path("euler_angle_singularity") + "' --t-end 1 --format json");
+  ASSERT_EQ(euler.status, 0) << euler.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(euler.err, m, std::regex("nearly singular at t = ([0-9.]+)"))) << euler.err;
+  EXPECT_LT(std::stod(m[1]), 0.5) << "the warning must come before the singular configuration";
+  EXPECT_NE(euler.err.find("theta = "), std::string::npos);
+  EXPECT_NE(euler.err.find("der(psi), der(phi)"), std::string::npos) << euler.err;
+  EXPECT_NE(euler.err.find("Euler angles at nutation 0"), std::string::npos);
+  Output cardan = eomgen("simulate '" + model_path("cardan_through_euler_singularity") + "' --t-end 1 --format json");
+  ASSERT_EQ(cardan.status, 0) << cardan.err;
+  EXPECT_EQ(cardan.err.find("warning"), std::string::npos) << cardan.err;
+  EXPECT_LT(json_number(cardan.out, "relative_energy_drift"), 1e-8);
+  EXPECT_LT(json_number(cardan.out, "steps"), json_number(euler.out, "steps") / 5);
+}
+
+TEST(FirstApproximation, CriticalCaseIsDecidedByTheEnergyFunction) {
+  Output r = eomgen("stability '" + model_path("quartic_oscillator") + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("first approximation: inconclusive"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Lagrange–Dirichlet"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nonlinear verdict: stable"), std::string::npos) << r.out;
+}
+
+TEST(FirstApproximation, CriticalCaseIsDecidedByALongSimulation) {
+  Output r = eomgen("stability '" + model_path("quadratic_force") + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"first_approximation\": \"inconclusive\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"nonlinear_verdict\": \"unstable\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("grew more than a hundredfold"), std::string::npos) << r.out;
+  Output hyperbolic = eomgen("stability '" + model_path("watt_governor") + "' --format json");
+  EXPECT_NE(hyperbolic.out.find("\"critical_case\": null"), std::string::npos) << "no critical case off the axis";
+}
+
+TEST(IntegratorFailure, FiniteEscapeEndsWithTheReasonAndKeepsTheTrajectory) {
+  std::string csv = temporary_directory() + "/escape.csv";
+  Output r = eomgen("simulate '" + model_path("finite_escape") + "' --t-end 2 -o '" + csv + "'");
+  EXPECT_EQ(r.status, 3);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex("escapes to infinity in finite time near t = ([0-9.]+)"))) << r.err;
+  // t* = ∫_1^∞ dx / sqrt(1/2 + x⁴/2) = 1.3110287771 (quadrature)
+  EXPECT_NEAR(std::stod(m[1]), 1.3110287771, 1e-4);
+  auto rows = numeric_csv(csv);
+  EXPECT_GE(rows.size(), 131u);
+  EXPECT_NEAR(rows[100][0], 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace eomgen::test
