@@ -2,12 +2,14 @@
 
 #include <arkode/arkode_butcher_erk.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "analyse/work_precision.hpp"
 #include "integrate/projection.hpp"
 #include "integrate/stepper.hpp"
 
@@ -107,7 +109,8 @@ Conditioning conditioning(const Problem& p, double t, const std::vector<double>&
 
 // why the run stopped, in the words of mechanics where possible
 std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& stepper, const std::vector<double>& x,
-                     double scale, double start_size) {
+                     double scale, double start_size, const std::vector<double>& start_state, double t_start,
+                     const std::string& integrator) {
   std::string why = stepper.reason + fmt::format(" at t = {:.9g}", stepper.failure_time);
   auto [smallest, largest] = mass_matrix_range(p, stepper.failure_time, x);
   if (std::isnan(smallest) || smallest <= 1e-8 * scale)
@@ -115,11 +118,17 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
                              configuration(*p.model, x));
   double size = 0;
   for (double v : x) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
-  if (size > 1e12 * (1 + start_size))
-    return why + fmt::format(": the state grows without bound (largest |x| = {:.3g}, from {:.3g} at the start): the "
-                             "solution escapes to infinity in finite time near t = {:.9g}, and no integrator can pass "
-                             "that time",
-                             size, start_size, stepper.failure_time);
+  if (size > 1e12 * (1 + start_size)) {
+    why += fmt::format(": the state grows without bound (largest |x| = {:.3g}, from {:.3g} at the start)", size, start_size);
+    static const std::vector<std::string> explicit_methods = {"cvode-adams", "arkode-dp5", "arkode-verner", "rk4", "verlet"};
+    double stiffness = stiffness_ratio(p, start_state, t_start);
+    if (std::find(explicit_methods.begin(), explicit_methods.end(), integrator) != explicit_methods.end() && stiffness > 1e3)
+      return why + fmt::format(": a numerical instability, not the mechanics: the model is stiff (stiffness ratio {:.2g}) "
+                               "and {} is beyond its stability limit; use cvode-bdf or arkode-dirk, or a much smaller step",
+                               stiffness, integrator);
+    return why + fmt::format(": the solution escapes to infinity in finite time near t = {:.9g}, and no integrator can "
+                             "pass that time", stepper.failure_time);
+  }
   if (f.saw_non_finite())
     return why + fmt::format(": the right-hand side is not finite (a division by zero, or a function outside "
                              "its domain) at t = {:.9g}, {}",
@@ -174,7 +183,8 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       result.failed = true;
       result.failure_time = stepper->failure_time;
       result.solver_flag = stepper->flag;
-      result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0, start_size);
+      result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0, start_size,
+                                result.trajectory.states.front(), settings.t_start, settings.integrator);
       if (stepper->failure_time > result.trajectory.times.back()) record(problem, stepper->failure_time, x, result.trajectory);
       break;
     }

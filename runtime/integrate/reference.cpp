@@ -26,18 +26,29 @@ class Reference : public Stepper {
       times_.push_back(last ? s.t_end : t);
       if (last) break;
     }
+    // halve until two successive runs agree; a run that is not finite (an explicit method on a
+    // stiff model at too long a step) is only a reason to halve again
     double step = std::min(s.dt_out, (s.t_end - s.t_start) / 50);
-    std::vector<std::vector<double>> coarse;
-    ok_ = run(p, x0, s.t_start, step, coarse);
-    for (int halving = 0; ok_ && halving < 6; ++halving) {
-      step /= 2;
-      ok_ = run(p, x0, s.t_start, step, rows_);
-      if (!ok_) break;
-      estimate_ = trajectory_error(coarse, rows_);
-      if (estimate_ <= 1e-14) break;
-      coarse = rows_;
+    std::vector<std::vector<double>> previous;
+    bool have_previous = false;
+    for (int halving = 0; halving < 16; ++halving, step /= 2) {
+      std::vector<std::vector<double>> rows;
+      if (!run(p, x0, s.t_start, step, rows)) {
+        have_previous = false;
+        continue;
+      }
+      ok_ = true;
+      rows_ = rows;
+      step_ = step;
+      if (have_previous) {
+        estimate_ = trajectory_error(previous, rows_);
+        if (estimate_ <= 1e-14 || halving >= 6 + first_finite_) break;
+      } else {
+        first_finite_ = halving;
+      }
+      previous = std::move(rows);
+      have_previous = true;
     }
-    step_ = step;
     wall_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
 
@@ -85,6 +96,7 @@ class Reference : public Stepper {
   std::vector<std::vector<double>> rows_;
   bool ok_ = false;
   double estimate_ = NAN, step_ = 0, wall_ = 0, failure_at_ = 0;
+  int first_finite_ = 0;
   long evaluations_ = 0, steps_ = 0;
 };
 

@@ -142,5 +142,14 @@ TEST(IntegratorFailure, FiniteEscapeEndsWithTheReasonAndKeepsTheTrajectory) {
   EXPECT_NEAR(rows[100][0], 1.0, 1e-12);
 }
 
+TEST(IntegratorFailure, ExplicitStepBeyondTheStabilityLimitIsNamedAsSuch) {
+  std::string csv = temporary_directory() + "/unstable.csv";
+  Output r = eomgen("simulate '" + model_path("stiff_chain") + "' --integrator rk4 --step 0.003 -o '" + csv + "'");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.err.find("a numerical instability, not the mechanics"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("escapes to infinity"), std::string::npos) << r.err;
+  EXPECT_GE(numeric_csv(csv).size(), 10u) << "the rows before the failure are kept";
+}
+
 }  // namespace
 }  // namespace eomgen::test
