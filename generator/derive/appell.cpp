@@ -173,12 +173,7 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   e.potential_energy = mech.potential_energy;
   e.dissipation = tidy(mech.dissipation.subs(a.rates), motion);
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression.subs(a.rates), motion)});
-  GiNaC::exmap no_inputs;
-  for (const auto& u : s.inputs) no_inputs[u] = 0;
-  bool unforced = true;
-  for (const ex& q : mech.generalized_force) unforced = unforced && q.subs(no_inputs).expand().is_zero();
-  e.conserves_energy_without_inputs =
-      unforced && mech.dissipation.is_zero() && mech.scleronomic && constraints_scleronomic(constraints, s);
+  e.conserves_energy_without_inputs = conserves_energy_without_inputs(mech, s) && constraints_scleronomic(constraints, s);
   return e;
 }
 

@@ -53,16 +53,21 @@ bool constraints_scleronomic(const ConstraintSet& c, const Symbols& s) {
   return true;
 }
 
-std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s) {
-  auto value_of = [&](const GiNaC::symbol& x) -> double {
-    for (std::size_t i = 0; i < s.coordinates.size(); ++i)
+double initial_value(const GiNaC::ex& e, const Symbols& s) {
+  return evaluate(e, [&](const GiNaC::symbol& x) -> double {
+    for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
       if (x == s.coordinates[i]) return s.initial_coordinates[i];
+      if (x == s.velocities[i]) return s.initial_velocities[i];
+    }
     for (std::size_t i = 0; i < s.parameters.size(); ++i)
       if (x == s.parameters[i]) return s.parameter_defaults[i];
     for (std::size_t i = 0; i < s.inputs.size(); ++i)
       if (x == s.inputs[i]) return s.input_defaults[i];
     return 0;  // time
-  };
+  });
+}
+
+std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s) {
   // Gram–Schmidt over the rows of C in file order: a row (nearly) in the span of the
   // rows before it adds no restriction
   std::vector<std::vector<double>> basis;
@@ -71,7 +76,7 @@ std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Sym
     std::vector<double> row;
     double size = 0;
     for (unsigned j = 0; j < c.jacobian.cols(); ++j) {
-      row.push_back(evaluate(c.jacobian(i, j), value_of));
+      row.push_back(initial_value(c.jacobian(i, j), s));
       size = std::max(size, std::abs(row.back()));
     }
     for (const auto& b : basis) {

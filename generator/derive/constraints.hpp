@@ -12,6 +12,9 @@ ConstraintSet constraint_set(const Model& model, const MotionSymbols& motion);
 /// No constraint depends on time: ideal constraints then do no work, and T + V stays.
 bool constraints_scleronomic(const ConstraintSet& constraints, const Symbols& symbols);
 
+/// The value of e at the model's initial state, default parameters and inputs, t = 0.
+double initial_value(const GiNaC::ex& e, const Symbols& symbols);
+
 /// The constraints whose row of C, at the model's initial state and default parameters,
 /// depends on the rows before it (empty when C has full rank there).
 std::vector<std::string> dependent_constraints(const ConstraintSet& constraints, const Symbols& symbols);

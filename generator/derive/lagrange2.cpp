@@ -118,11 +118,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});
-  GiNaC::exmap no_inputs;
-  for (const auto& u : s.inputs) no_inputs[u] = 0;
-  bool unforced = true;
-  for (const ex& q : mech.generalized_force) unforced = unforced && q.subs(no_inputs).expand().is_zero();
-  e.conserves_energy_without_inputs = unforced && mech.dissipation.is_zero() && mech.scleronomic;
+  e.conserves_energy_without_inputs = conserves_energy_without_inputs(mech, s);
   return e;
 }
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "symbolic/evaluate.hpp"
+#include "derive/constraints.hpp"
 #include "symbolic/simplify.hpp"
 
 namespace eomgen {
@@ -12,21 +12,6 @@ namespace eomgen {
 using GiNaC::ex;
 
 namespace {
-
-// value at the model's initial state with the default parameters
-double initial_value(const ex& e, const Symbols& s) {
-  return evaluate(e, [&](const GiNaC::symbol& x) -> double {
-    for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-      if (x == s.coordinates[i]) return s.initial_coordinates[i];
-      if (x == s.velocities[i]) return s.initial_velocities[i];
-    }
-    for (std::size_t i = 0; i < s.parameters.size(); ++i)
-      if (x == s.parameters[i]) return s.parameter_defaults[i];
-    for (std::size_t i = 0; i < s.inputs.size(); ++i)
-      if (x == s.inputs[i]) return s.input_defaults[i];
-    return 0;  // time
-  });
-}
 
 // a rational expression with trigonometric identities applied to numerator and denominator
 ex tidy_ratio(const ex& e, const MotionSymbols& motion) {

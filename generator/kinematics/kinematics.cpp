@@ -14,6 +14,14 @@ MotionSymbols motion_symbols(const Symbols& s) {
   return m;
 }
 
+bool conserves_energy_without_inputs(const Mechanics& mech, const Symbols& s) {
+  GiNaC::exmap no_inputs;
+  for (const auto& u : s.inputs) no_inputs[u] = 0;
+  bool unforced = true;
+  for (const ex& q : mech.generalized_force) unforced = unforced && q.subs(no_inputs).expand().is_zero();
+  return unforced && mech.dissipation.is_zero() && mech.scleronomic;
+}
+
 ex time_derivative(const ex& x, const Symbols& s) {
   std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
   variables.push_back(s.time);

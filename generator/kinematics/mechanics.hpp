@@ -46,6 +46,10 @@ struct Mechanics {
 /// ω from skew(ω_B) = Rᵀ·dR/dt, energies, and Q_j = Σ F·∂v/∂q̇_j + M·∂ω/∂q̇_j.
 Mechanics compute_mechanics(const Model& model);
 
+/// T + V is a first integral at zero inputs (Hiller §3.6): no applied forces then, no
+/// dissipation, and nothing depends on time explicitly.
+bool conserves_energy_without_inputs(const Mechanics& mechanics, const Symbols& symbols);
+
 /// The symbols that change along a motion: q, q', t and u.
 MotionSymbols motion_symbols(const Symbols& symbols);
 

@@ -202,6 +202,21 @@ std::string phase_plane_type(const Eigen::Matrix2d& A) {
   return sense("stable focus", "unstable focus");
 }
 
+// eigenvalues, verdict, modes, characteristic polynomial and Hurwitz determinants of r.A
+void describe_spectrum(StabilityReport& r, int cyclic) {
+  Spectrum sp = spectrum(r.A);
+  r.eigenvalues = sp.eigenvalues;
+  Verdict v = judge(r.A, sp, cyclic);
+  r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
+  for (auto l : r.eigenvalues)
+    if (l.imag() >= 0) {
+      double size = std::abs(l);
+      r.modes.push_back({l, std::abs(l.imag()), size > 0 ? -l.real() / size : 0.0});
+    }
+  r.characteristic_polynomial = polynomial_from_roots(r.eigenvalues);
+  r.hurwitz = hurwitz_determinants(r.characteristic_polynomial);
+}
+
 // Appell's equations: A is the Jacobian of the first-order form on the reduced state;
 // zero eigenvalues (families of steady motions) count as on the imaginary axis
 StabilityReport analyse_first_order(const Problem& problem, const std::vector<double>& x) {
@@ -210,17 +225,7 @@ StabilityReport analyse_first_order(const Problem& problem, const std::vector<do
   r.A = reduced_jacobian(problem, x);
   r.B_state = reduced_input_jacobian(problem, x);
   for (int i : reduced_state(m)) r.state_names.push_back(m.state_names[i]);
-  Spectrum sp = spectrum(r.A);
-  r.eigenvalues = sp.eigenvalues;
-  Verdict v = judge(r.A, sp, 0);
-  r.verdict = v.verdict, r.stability_degree = v.degree;
-  for (auto l : r.eigenvalues)
-    if (l.imag() >= 0) {
-      double size = std::abs(l);
-      r.modes.push_back({l, std::abs(l.imag()), size > 0 ? -l.real() / size : 0.0});
-    }
-  r.characteristic_polynomial = polynomial_from_roots(r.eigenvalues);
-  r.hurwitz = hurwitz_determinants(r.characteristic_polynomial);
+  describe_spectrum(r, 0);
   r.theorems.push_back("the force classification (D, G, K, N) needs M q'' + P q' + Q q = 0; Appell's equations are of "
                        "first order in the pseudo-velocities, so A is analysed directly");
   if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
@@ -237,17 +242,7 @@ StabilityReport analyse_stability(const Problem& problem, const std::vector<doub
   r.K = (s.Q + s.Q.transpose()) / 2, r.N = (s.Q - s.Q.transpose()) / 2;
   first_order(m, s, r.A, r.B_state, &r.state_names);
   int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
-  Spectrum sp = spectrum(r.A);
-  r.eigenvalues = sp.eigenvalues;
-  Verdict v = judge(r.A, sp, cyclic);
-  r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
-  for (auto l : r.eigenvalues)
-    if (l.imag() >= 0) {
-      double size = std::abs(l);
-      r.modes.push_back({l, std::abs(l.imag()), size > 0 ? -l.real() / size : 0.0});
-    }
-  r.characteristic_polynomial = polynomial_from_roots(r.eigenvalues);
-  r.hurwitz = hurwitz_determinants(r.characteristic_polynomial);
+  describe_spectrum(r, cyclic);
   r.theorems = theorems(r, cyclic > 0);
   if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
   return r;

@@ -17,18 +17,8 @@
 namespace eomgen::test {
 namespace {
 
-struct Output {
-  int status;
-  std::string out, err;
-};
-
-Output eomgen(const std::string& arguments) {
-  std::string scratch = temporary_directory();
-  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
-                           std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" +
-                           scratch + "/err'");
-  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
-}
+using Output = CommandOutput;
+Output eomgen(const std::string& arguments) { return run_eomgen(arguments); }
 
 double json_number(const std::string& json, const std::string& key) {
   std::smatch m;
@@ -36,19 +26,6 @@ double json_number(const std::string& json, const std::string& key) {
   return std::stod(m[1]);
 }
 
-std::vector<std::vector<double>> numeric_csv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream s(line);
-    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 TEST(Stiffness, ExplicitMethodsAreWarnedAndTakeFarMoreSteps) {
   Output bdf = eomgen("simulate '" + model_path("stiff_chain") + "' --rtol 1e-6 --format json");
@@ -67,7 +44,7 @@ TEST(EnergyDrift, VerletStaysBoundedWhereTheOthersDrift) {
   Output run = eomgen("bench '" + model_path("double_pendulum") + "' --t-end 2 --dt-out 0.05 --tolerances 1e-4:1e-5:10 "
                       "--integrators cvode-bdf,rk4,verlet --step-count 2 --energy-tolerance 1e-6 --energy-step 0.01 -o '" + dir + "'");
   ASSERT_EQ(run.status, 0) << run.err;
-  auto rows = numeric_csv(dir + "/energy.csv");  // t, cvode-bdf, rk4, verlet
+  auto rows = read_numeric_csv(dir + "/energy.csv");  // t, cvode-bdf, rk4, verlet
   ASSERT_GT(rows.size(), 100u);
   auto largest = [&](int column, std::size_t from, std::size_t to) {
     double m = 0;
@@ -84,7 +61,7 @@ TEST(Chaos, AccuracyHorizonGrowsWithTheTolerance) {
   Output run = eomgen("bench '" + model_path("double_pendulum") + "' --t-end 20 --initial phi1=2 --initial phi2=2.5 "
                       "--integrators arkode-dp5 --horizon arkode-dp5 --tolerances 1e-4:1e-10:10 --step-count 2 -o '" + dir + "'");
   ASSERT_EQ(run.status, 0) << run.err;
-  auto rows = numeric_csv(dir + "/horizons.csv");
+  auto rows = read_numeric_csv(dir + "/horizons.csv");
   ASSERT_EQ(rows.size(), 7u);
   EXPECT_LT(rows.front()[1], 8.0) << "at rtol 1e-4 the chaotic motion is lost within seconds";
   EXPECT_GT(rows.back()[1], rows.front()[1] + 5.0) << "six decades of tolerance should buy several seconds";
@@ -137,7 +114,7 @@ TEST(IntegratorFailure, FiniteEscapeEndsWithTheReasonAndKeepsTheTrajectory) {
   ASSERT_TRUE(std::regex_search(r.err, m, std::regex("escapes to infinity in finite time near t = ([0-9.]+)"))) << r.err;
   // t* = ∫_1^∞ dx / sqrt(1/2 + x⁴/2) = 1.3110287771 (quadrature)
   EXPECT_NEAR(std::stod(m[1]), 1.3110287771, 1e-4);
-  auto rows = numeric_csv(csv);
+  auto rows = read_numeric_csv(csv);
   EXPECT_GE(rows.size(), 131u);
   EXPECT_NEAR(rows[100][0], 1.0, 1e-12);
 }
@@ -148,7 +125,7 @@ TEST(IntegratorFailure, ExplicitStepBeyondTheStabilityLimitIsNamedAsSuch) {
   EXPECT_EQ(r.status, 3);
   EXPECT_NE(r.err.find("a numerical instability, not the mechanics"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("escapes to infinity"), std::string::npos) << r.err;
-  EXPECT_GE(numeric_csv(csv).size(), 10u) << "the rows before the failure are kept";
+  EXPECT_GE(read_numeric_csv(csv).size(), 10u) << "the rows before the failure are kept";
 }
 
 }  // namespace

@@ -11,18 +11,8 @@
 namespace eomgen::test {
 namespace {
 
-struct Output {
-  int status;
-  std::string out, err;
-};
-
-Output eomgen(const std::string& arguments) {
-  std::string scratch = temporary_directory();
-  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
-                           std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" +
-                           scratch + "/err'");
-  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
-}
+using Output = CommandOutput;
+Output eomgen(const std::string& arguments) { return run_eomgen(arguments); }
 
 TEST(StabilityCommand, JsonHasTheDocumentedKeys) {
   Output r = eomgen("stability '" + model_path("pendulum") + "' --format json");

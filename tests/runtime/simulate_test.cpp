@@ -44,16 +44,7 @@ std::string write_model(const std::string& name, const std::string& text) {
 }
 
 std::vector<std::vector<double>> read_csv(const std::string& path, std::string& header) {
-  std::ifstream in(path);
-  std::getline(in, header);
-  std::vector<std::vector<double>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<double> row;
-    std::stringstream s(line);
-    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
+  return read_numeric_csv(path, &header);
 }
 
 TEST(Simulate, DoublePendulumConservesEnergyWithTightTolerances) {

@@ -96,4 +96,27 @@ std::string temporary_directory() {
   return buffer.data();
 }
 
+CommandOutput run_eomgen(const std::string& arguments) {
+  std::string scratch = temporary_directory();
+  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                           std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" +
+                           scratch + "/err'");
+  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
+}
+
+std::vector<std::vector<double>> read_numeric_csv(const std::string& path, std::string* header) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  if (header) *header = line;
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace eomgen::test

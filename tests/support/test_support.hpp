@@ -42,4 +42,14 @@ std::string read_file(const std::string& path);
 /// A fresh temporary directory.
 std::string temporary_directory();
 
+struct CommandOutput {
+  int status;
+  std::string out, err;
+};
+/// Runs the eomgen executable with these arguments and the tests' shared compile cache.
+CommandOutput run_eomgen(const std::string& arguments);
+
+/// The numbers of a CSV file, row by row after its header line (returned in `header`).
+std::vector<std::vector<double>> read_numeric_csv(const std::string& path, std::string* header = nullptr);
+
 }  // namespace eomgen::test
