@@ -1,6 +1,7 @@
 #include "analyse/stability_conditions.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -123,6 +124,9 @@ ex without_positive_factors(const ex& condition, const GiNaC::exset& positive) {
 StabilityConditions stability_conditions(const Equations& e, const std::vector<std::string>& kept,
                                          const std::vector<double>& parameters, const std::vector<double>& inputs,
                                          const std::vector<double>& state) {
+  // M q'' + P q' + Q q = 0 in independent coordinates: not Lagrange I, not Appell's first-order form
+  if (e.has_multipliers || e.uses_pseudo_velocities())
+    throw std::invalid_argument("symbolic stability conditions need independent coordinates and q' as velocities");
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates();
   StabilityConditions out;

@@ -26,6 +26,11 @@ Command add_sweep_command(CLI::App& app);
 Command add_run_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 
+struct LoadedProblem;
+/// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic
+/// conditions of Appell models), printed; nothing when they can.
+std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic);
+
 /// `eomgen bench MODEL -o DIRECTORY` with the default settings.
 int bench_model(const std::string& model, const std::string& directory);
 /// `eomgen stability MODEL` (equilibrium searched from the initial values), as text.

@@ -191,6 +191,21 @@ void print_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
 
 }  // namespace
 
+std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic) {
+  if (loaded.equations.has_multipliers) {
+    std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent, and the "
+                             "constraint directions would show as spurious eigenvalues\n  hint: derive it with method = "
+                             "\"appell\" (independent pseudo-velocities) for a stability analysis\n", model);
+    return exit_user_error;
+  }
+  if (symbolic && loaded.equations.uses_pseudo_velocities()) {
+    std::cerr << "eomgen: error: symbolic stability conditions need the second-order form M q'' + P q' + Q q; Appell "
+                 "models are analysed numerically (leave out --symbolic)\n";
+    return exit_user_error;
+  }
+  return std::nullopt;
+}
+
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at_texts,
                                   runtime::Equilibrium& out) {
   const eomgen_model_abi& m = *problem.model;
@@ -227,17 +242,7 @@ int stability(const Options& options) {
   LoadedProblem loaded;
   if (auto status = load_problem(o->model, o->sets, loaded)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();
-  if (m.num_multipliers) {
-    std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent, and the "
-                             "constraint directions would show as spurious eigenvalues\n  hint: derive it with method = "
-                             "\"appell\" (independent pseudo-velocities) for a stability analysis\n", o->model);
-    return exit_user_error;
-  }
-  if (!o->symbolic.empty() && loaded.equations.uses_pseudo_velocities()) {
-    std::cerr << "eomgen: error: --symbolic needs the second-order form M q'' + P q' + Q q; Appell models are analysed "
-                 "numerically (leave out --symbolic, or use eomgen sweep for a stability map)\n";
-    return exit_user_error;
-  }
+  if (auto status = stability_refusal(loaded, o->model, !o->symbolic.empty())) return *status;
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o->at, eq)) return *status;
   std::optional<StabilityConditions> conditions;

@@ -87,6 +87,7 @@ std::vector<double> symbolic_margin(const LoadedProblem& loaded, const runtime::
 int run_sweep(const Options& o) {
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  if (auto status = stability_refusal(loaded, o.model, o.symbolic)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();
   std::string x_name, y_name;
   if (o.params.size() != 2) {

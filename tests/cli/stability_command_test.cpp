@@ -63,5 +63,25 @@ TEST(SweepCommand, WritesTheMapAndItsChart) {
   EXPECT_EQ(eomgen("sweep '" + model_path("watt_governor") + "' --param b=1:0:20 --param J=0.05:3:20").status, 2);
 }
 
+TEST(StabilityCommand, ConstrainedModelsAreRefusedWhereTheAnalysisDoesNotApply) {
+  Output lagrange1 = eomgen("stability '" + model_path("slider_crank") + "'");
+  EXPECT_EQ(lagrange1.status, 2);
+  EXPECT_NE(lagrange1.err.find("Lagrange I model"), std::string::npos) << lagrange1.err;
+  Output sweep = eomgen("sweep '" + model_path("slider_crank") + "' --param r=0.05:0.2:3 --param l=0.3:0.5:3");
+  EXPECT_EQ(sweep.status, 2);
+  Output symbolic = eomgen("sweep '" + model_path("rolling_disk") + "' --param R=0.05:0.2:3 --param m=0.5:2:3 "
+                           "--at theta=1.5707963267948966 --at 'der(phi)=6' --symbolic");
+  EXPECT_EQ(symbolic.status, 2) << symbolic.err;
+  EXPECT_NE(symbolic.err.find("Appell models are analysed numerically"), std::string::npos) << symbolic.err;
+}
+
+TEST(StabilityCommand, RollingDiskFromTheCommandLine) {
+  Output fast = eomgen("stability '" + model_path("rolling_disk") + "' --at theta=1.5707963267948966 --at 'der(phi)=8'");
+  Output slow = eomgen("stability '" + model_path("rolling_disk") + "' --at theta=1.5707963267948966 --at 'der(phi)=4'");
+  ASSERT_EQ(fast.status, 0) << fast.err;
+  EXPECT_NE(fast.out.find("verdict: marginally_stable"), std::string::npos) << fast.out;
+  EXPECT_NE(slow.out.find("verdict: unstable"), std::string::npos) << slow.out;
+}
+
 }  // namespace
 }  // namespace eomgen::test
