@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"mc", "m", "l", "g"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"x", "theta"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(x)", "der(theta)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(x)", "der(theta)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"x", "theta", "der(x)", "der(theta)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{"F"}};
 inline constexpr std::array<const char*, num_outputs> output_names{{"bob_height"}};

@@ -20,6 +20,8 @@ inline constexpr const char* method = "appell";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m", "J", "a"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"x", "y", "phi"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"v", "w"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"cos(phi)*der(x) + der(y)*sin(phi)", "der(phi)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"x", "y", "phi", "v", "w"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{}};

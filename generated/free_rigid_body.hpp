@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"A", "B", "C"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"alpha", "beta", "gamma"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(alpha)", "der(beta)", "der(gamma)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(alpha)", "der(beta)", "der(gamma)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"alpha", "beta", "gamma", "der(alpha)", "der(beta)", "der(gamma)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{"omega_x", "omega_y", "omega_z"}};

@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m1", "m2", "m3", "m4", "l1", "l2", "l3", "l4", "g"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"phi1", "phi2", "phi3", "phi4"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(phi1)", "der(phi2)", "der(phi3)", "der(phi4)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(phi1)", "der(phi2)", "der(phi3)", "der(phi4)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"phi1", "phi2", "phi3", "phi4", "der(phi1)", "der(phi2)", "der(phi3)", "der(phi4)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{}};

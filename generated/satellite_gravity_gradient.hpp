@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m", "A", "B", "C", "Omega"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"phi", "theta", "psi"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(phi)", "der(theta)", "der(psi)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(phi)", "der(theta)", "der(psi)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"phi", "theta", "psi", "der(phi)", "der(theta)", "der(psi)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{"nadir_angle"}};

@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange1";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"r", "l", "m1", "m2", "m3", "g"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"phi", "beta", "x"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(phi)", "der(beta)", "der(x)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(phi)", "der(beta)", "der(x)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"phi", "beta", "x", "der(phi)", "der(beta)", "der(x)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{}};

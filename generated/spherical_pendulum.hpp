@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m", "l", "g"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"theta", "phi"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(theta)", "der(phi)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(theta)", "der(phi)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"theta", "phi", "der(theta)", "der(phi)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{}};

@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m", "k", "K", "c"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"x1", "x2", "x3"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(x1)", "der(x2)", "der(x3)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(x1)", "der(x2)", "der(x3)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"x1", "x2", "x3", "der(x1)", "der(x2)", "der(x3)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{}};
 inline constexpr std::array<const char*, num_outputs> output_names{{}};

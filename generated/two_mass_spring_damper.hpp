@@ -20,6 +20,8 @@ inline constexpr const char* method = "lagrange2";
 inline constexpr std::array<const char*, num_parameters> parameter_names{{"m1", "m2", "k1", "k2", "d1", "d2"}};
 inline constexpr std::array<const char*, num_coordinates> coordinate_names{{"x1", "x2"}};
 inline constexpr std::array<const char*, num_velocities> velocity_names{{"der(x1)", "der(x2)"}};
+/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).
+inline constexpr std::array<const char*, num_velocities> velocity_definitions{{"der(x1)", "der(x2)"}};
 inline constexpr std::array<const char*, num_states> state_names{{"x1", "x2", "der(x1)", "der(x2)"}};
 inline constexpr std::array<const char*, num_inputs> input_names{{"F"}};
 inline constexpr std::array<const char*, num_outputs> output_names{{"spring2_force"}};

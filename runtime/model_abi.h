@@ -30,6 +30,7 @@ struct eomgen_model_abi {
   const char* const* parameter_names;
   const char* const* coordinate_names;
   const char* const* state_names;
+  const char* const* velocity_definitions; /* each velocity of the state in der(q): der(q), or a pseudo-velocity's definition */
   const char* const* input_names;
   const char* const* output_names;
   const double* default_parameters;
@@ -63,6 +64,7 @@ struct eomgen_model_abi {
   static const eomgen_model_abi abi = {EOMGEN_MODEL_ABI_VERSION, #NAME, KEY, m::num_coordinates,       \
       m::num_velocities, m::num_states, m::num_parameters, m::num_inputs, m::num_outputs,              \
       m::parameter_names.data(), m::coordinate_names.data(), m::state_names.data(),                    \
+      m::velocity_definitions.data(),                                                                  \
       m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                     \
       m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0,   \
       m::is_cyclic.data(), m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>,       \

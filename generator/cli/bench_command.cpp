@@ -100,17 +100,7 @@ int bench(const Options& o) {
   std::string directory = o.directory.empty() ? "bench-" + std::string(m.name) : o.directory;
   std::filesystem::create_directories(directory);
   std::vector<double> x0(m.default_state, m.default_state + m.num_states);
-  std::vector<Assignment> initials;
-  if (!parse_assignments(o.initials, "--initial", initials)) return exit_user_error;
-  for (const Assignment& a : initials) {
-    int i = index_of(m.state_names, m.num_states, a.name);
-    if (i < 0) {
-      std::cerr << fmt::format("eomgen: error: --initial {}: not a coordinate or a velocity of the state; {}\n", a.name,
-                               suggest(a.name, std::vector<std::string>(m.state_names, m.state_names + m.num_states), "states"));
-      return exit_user_error;
-    }
-    x0[i] = a.value;
-  }
+  if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!o.horizon_integrator.empty()) {
     if (std::find(integrators->begin(), integrators->end(), o.horizon_integrator) == integrators->end() ||
         o.horizon_integrator == "rk4" || o.horizon_integrator == "verlet") {

@@ -30,6 +30,38 @@ int index_of(const char* const* names, std::size_t count, const std::string& nam
   return -1;
 }
 
+int state_index(const eomgen_model_abi& m, const std::string& name) {
+  if (int i = index_of(m.state_names, m.num_states, name); i >= 0) return i;
+  // der(q) names a pseudo-velocity that is defined as der(q)
+  for (std::size_t i = 0; i < m.num_velocities; ++i)
+    if (name == m.velocity_definitions[i]) return static_cast<int>(m.num_coordinates + i);
+  return -1;
+}
+
+bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& texts, const char* flag,
+                   std::vector<double>& x) {
+  std::vector<Assignment> assignments;
+  if (!parse_assignments(texts, flag, assignments)) return false;
+  std::vector<std::string> states(m.state_names, m.state_names + m.num_states);
+  for (const Assignment& a : assignments) {
+    int i = state_index(m, a.name);
+    if (i >= 0) {
+      x[static_cast<std::size_t>(i)] = a.value;
+      continue;
+    }
+    bool rate = a.name.rfind("der(", 0) == 0 && index_of(m.coordinate_names, m.num_coordinates, a.name.substr(4, a.name.size() - 5)) >= 0;
+    if (rate && m.num_velocities != m.num_coordinates)
+      std::cerr << fmt::format("eomgen: error: {} {}: the state of this Appell model holds the pseudo-velocities, and "
+                               "{} follows from them and the constraints; {}\n", flag, a.name, a.name,
+                               suggest(a.name, states, "states"));
+    else
+      std::cerr << fmt::format("eomgen: error: {} {}: not a coordinate or a velocity of the state; {}\n", flag, a.name,
+                               suggest(a.name, states, "states"));
+    return false;
+  }
+  return true;
+}
+
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out) {
   Derivation d = derive_model_file(model);
   if (!d.diagnostics.empty()) {

@@ -30,6 +30,14 @@ struct LoadedProblem {
 
 /// Derives, compiles and loads; applies --set to parameters or inputs. Returns the
 /// exit status on failure (2 for the user's mistakes, 1 for internal errors).
+/// The index in the state of a coordinate, a velocity of the state, or der(q) where a
+/// pseudo-velocity is defined as der(q); −1 when there is none.
+int state_index(const eomgen_model_abi& m, const std::string& name);
+
+/// Applies NAME=VALUE flags (--initial, --at) to the state x; prints the mistake and
+/// returns false when a name is not part of the state.
+bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& texts, const char* flag, std::vector<double>& x);
+
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out);
 
 /// Index of `name` in a C name table, or −1.

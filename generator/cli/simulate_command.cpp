@@ -127,18 +127,7 @@ int simulate_model(const SimulationOptions& o) {
   const eomgen_model_abi& m = *loaded.compiled->abi();
   runtime::Problem& problem = loaded.problem;
   std::vector<double> x0(m.default_state, m.default_state + m.num_states);
-  std::vector<Assignment> initials;
-  if (!parse_assignments(o.initials, "--initial", initials)) return exit_user_error;
-  std::vector<std::string> states(m.state_names, m.state_names + m.num_states);
-  for (const Assignment& a : initials) {
-    int i = index_of(m.state_names, m.num_states, a.name);
-    if (i < 0) {
-      std::cerr << fmt::format("eomgen: error: --initial {}: not a coordinate or der(coordinate); {}\n", a.name,
-                               suggest(a.name, states, "states"));
-      return exit_user_error;
-    }
-    x0[i] = a.value;
-  }
+  if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!(o.settings.t_end > o.settings.t_start) || !(o.settings.dt_out > 0) || !(o.settings.rtol > 0) ||
       !(o.settings.atol > 0) || o.settings.step < 0) {
     std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";

@@ -79,18 +79,10 @@ struct Options {
 };
 
 // the state an --at list names: given values, other coordinates as in the model, other velocities zero
-std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, const std::vector<Assignment>& at) {
+std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, const std::vector<std::string>& at) {
   std::vector<double> x(m.default_state, m.default_state + m.num_states);
   for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) x[i] = 0;
-  for (const Assignment& a : at) {
-    int i = index_of(m.state_names, m.num_states, a.name);
-    if (i < 0) {
-      std::cerr << fmt::format("eomgen: error: --at {}: not a coordinate or a velocity of the state; {}\n", a.name,
-                               suggest(a.name, std::vector<std::string>(m.state_names, m.state_names + m.num_states), "states"));
-      return std::nullopt;
-    }
-    x[i] = a.value;
-  }
+  if (!assign_states(m, at, "--at", x)) return std::nullopt;
   return x;
 }
 
@@ -209,10 +201,8 @@ std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::str
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at_texts,
                                   runtime::Equilibrium& out) {
   const eomgen_model_abi& m = *problem.model;
-  std::vector<Assignment> at;
-  if (!parse_assignments(at_texts, "--at", at)) return exit_user_error;
-  if (!at.empty()) {
-    auto x = state_from_at(m, at);
+  if (!at_texts.empty()) {
+    auto x = state_from_at(m, at_texts);
     if (!x) return exit_user_error;
     out = runtime::check_equilibrium(problem, *x);
     if (!out.converged) {

@@ -9,6 +9,7 @@
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
 #include "model/symbols.hpp"
+#include "symbolic/canonical_print.hpp"
 #include "symbolic/cse.hpp"
 #include "symbolic/gradient.hpp"
 #include "symbolic/trig_expansion.hpp"
@@ -256,6 +257,9 @@ std::string emit_cpp_header(const Equations& e) {
   std::size_t n = s.num_coordinates(), k = e.num_velocities();
   std::vector<std::string> velocities, states = s.coordinate_names, outputs;
   for (const auto& v : s.velocities) velocities.push_back(v.get_name());
+  std::vector<std::string> definitions = velocities;
+  for (std::size_t i = 0; i < e.pseudo_velocity_definitions.size(); ++i)
+    definitions[i] = canonical_text(e.pseudo_velocity_definitions[i].expression);
   states.insert(states.end(), velocities.begin(), velocities.end());
   for (const NamedSymbolic& o : e.outputs) outputs.push_back(o.name);
   std::vector<double> state = s.initial_coordinates;
@@ -292,6 +296,8 @@ std::string emit_cpp_header(const Equations& e) {
       "inline constexpr std::array<const char*, num_parameters> parameter_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_coordinates> coordinate_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_velocities> velocity_names{{{{{}}}}};\n"
+      "/// What each velocity of the state is in terms of der(q) (the definitions of pseudo-velocities).\n"
+      "inline constexpr std::array<const char*, num_velocities> velocity_definitions{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_states> state_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_inputs> input_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_outputs> output_names{{{{{}}}}};\n\n"
@@ -303,7 +309,8 @@ std::string emit_cpp_header(const Equations& e) {
       "/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,\n"
       "/// scleronomic): what an energy-drift check may rely on.\n"
       "inline constexpr bool conserves_energy_without_inputs = {};\n\n",
-      quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(states),
+      quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(definitions),
+      quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
       number_list(s.input_defaults), cyclic_list(e), e.conserves_energy_without_inputs ? "true" : "false");
   out += fmt::format(

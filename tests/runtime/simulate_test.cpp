@@ -223,6 +223,21 @@ TEST(Simulate, RollingDiskRunsAHundredSecondsOnItsConstraints) {
   EXPECT_NE(run.out.find("\"count\": 2"), std::string::npos) << run.out;
 }
 
+TEST(Simulate, PseudoVelocitiesAreSetByNameOrByTheirDefinition) {
+  std::string csv = temporary_directory() + "/knife.csv";
+  CommandRun run = eomgen("simulate " + model_path("knife_edge") + " --t-end 0.1 --initial v=3 --initial 'der(phi)=2' -o " + csv,
+                          shared_cache());
+  ASSERT_EQ(run.status, 0) << run.err;
+  std::string header;
+  auto rows = read_csv(csv, header);
+  EXPECT_EQ(header.substr(0, 14), "t,x,y,phi,v,w,");
+  EXPECT_EQ(rows[0][4], 3.0);
+  EXPECT_EQ(rows[0][5], 2.0);
+  CommandRun dependent = eomgen("simulate " + model_path("knife_edge") + " --initial 'der(x)=1'", shared_cache());
+  EXPECT_EQ(dependent.status, 2);
+  EXPECT_NE(dependent.err.find("follows from them and the constraints"), std::string::npos) << dependent.err;
+}
+
 TEST(Simulate, IdaOnAModelWithoutMultipliersIsAUsageError) {
   CommandRun run = eomgen("simulate " + model_path("knife_edge") + " --integrator ida", shared_cache());
   EXPECT_EQ(run.status, 2);
