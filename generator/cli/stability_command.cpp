@@ -227,17 +227,16 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
 namespace {
 
 // the whole `eomgen stability` job for one set of options
-int stability(const Options& options) {
-  const Options* o = &options;
+int stability(const Options& o) {
   LoadedProblem loaded;
-  if (auto status = load_problem(o->model, o->sets, loaded)) return *status;
+  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();
-  if (auto status = stability_refusal(loaded, o->model, !o->symbolic.empty())) return *status;
+  if (auto status = stability_refusal(loaded, o.model, !o.symbolic.empty())) return *status;
   runtime::Equilibrium eq;
-  if (auto status = equilibrium_of(loaded.problem, o->at, eq)) return *status;
+  if (auto status = equilibrium_of(loaded.problem, o.at, eq)) return *status;
   std::optional<StabilityConditions> conditions;
-  if (!o->symbolic.empty()) {
-    std::vector<std::string> kept = split_names(o->symbolic);
+  if (!o.symbolic.empty()) {
+    std::vector<std::string> kept = split_names(o.symbolic);
     for (const std::string& k : kept)
       if (index_of(m.parameter_names, m.num_parameters, k) < 0) {
         std::cerr << fmt::format("eomgen: error: --symbolic {}: not a parameter; {}\n", k,
@@ -248,7 +247,7 @@ int stability(const Options& options) {
   }
   runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
   runtime::CriticalCase critical = runtime::check_critical_case(loaded.problem, eq.state, report);
-  if (o->json) {
+  if (o.json) {
     print_json(m, eq, report, conditions, critical);
   } else {
     print_text(m, eq, report, conditions);
