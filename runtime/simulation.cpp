@@ -2,7 +2,6 @@
 
 #include <arkode/arkode_butcher_erk.h>
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -22,6 +21,21 @@ const std::vector<std::string>& integrator_names() {
 }
 
 bool is_dae_integrator(const std::string& name) { return name == "ida"; }
+
+std::string integrator_refusal(const eomgen_model_abi& m, const std::string& name) {
+  if (is_dae_integrator(name) && m.num_multipliers == 0)
+    return "the integrator ida solves Lagrange I models (method = \"lagrange1\") only";
+  if (name == "verlet" && m.num_coordinates != m.num_velocities)
+    return "Störmer–Verlet needs q' = v; the state of Appell's equations holds pseudo-velocities: use rk4 or an "
+           "adaptive integrator";
+  return {};
+}
+
+bool is_explicit_integrator(const std::string& name) {
+  for (const char* e : {"cvode-adams", "arkode-dp5", "arkode-verner", "rk4", "verlet"})
+    if (name == e) return true;
+  return false;
+}
 
 namespace {
 
@@ -120,9 +134,8 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
   for (double v : x) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
   if (size > 1e12 * (1 + start_size)) {
     why += fmt::format(": the state grows without bound (largest |x| = {:.3g}, from {:.3g} at the start)", size, start_size);
-    static const std::vector<std::string> explicit_methods = {"cvode-adams", "arkode-dp5", "arkode-verner", "rk4", "verlet"};
     double stiffness = stiffness_ratio(p, start_state, t_start);
-    if (std::find(explicit_methods.begin(), explicit_methods.end(), integrator) != explicit_methods.end() && stiffness > 1e3)
+    if (is_explicit_integrator(integrator) && stiffness > 1e3)
       return why + fmt::format(": a numerical instability, not the mechanics: the model is stiff (stiffness ratio {:.2g}) "
                                "and {} is beyond its stability limit; use cvode-bdf or arkode-dirk, or a much smaller step",
                                stiffness, integrator);
@@ -143,11 +156,7 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   SimulationResult result;
   const eomgen_model_abi& m = *problem.model;
   bool lagrange1 = m.num_multipliers > 0;
-  if (is_dae_integrator(settings.integrator) && !lagrange1)
-    throw std::invalid_argument("the integrator ida solves Lagrange I models (method = \"lagrange1\") only");
-  if (settings.integrator == "verlet" && m.num_coordinates != m.num_velocities)
-    throw std::invalid_argument("Störmer–Verlet needs q' = v; the state of Appell's equations holds pseudo-velocities: "
-                                "use rk4 or an adaptive integrator");
+  if (std::string why = integrator_refusal(m, settings.integrator); !why.empty()) throw std::invalid_argument(why);
   bool baumgarte = lagrange1 && settings.baumgarte && !is_dae_integrator(settings.integrator);
   RightHandSide f(problem, baumgarte ? (settings.baumgarte_alpha >= 0 ? settings.baumgarte_alpha : m.baumgarte_alpha) : 0,
                   baumgarte ? (settings.baumgarte_beta >= 0 ? settings.baumgarte_beta : m.baumgarte_beta) : 0);

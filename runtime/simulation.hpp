@@ -39,6 +39,12 @@ struct SimulationSettings {
 /// The integrators that solve Lagrange I as a differential-algebraic system.
 bool is_dae_integrator(const std::string& name);
 
+/// Why an integrator cannot run this model, or empty when it can.
+std::string integrator_refusal(const eomgen_model_abi& model, const std::string& integrator);
+
+/// The explicit integrators: on a stiff model their step is set by stability, not accuracy.
+bool is_explicit_integrator(const std::string& name);
+
 struct SolverStatistics {
   long steps = 0, rhs_evaluations = 0, jacobian_evaluations = 0;
   long error_test_failures = 0, convergence_failures = 0;

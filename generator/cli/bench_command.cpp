@@ -46,10 +46,7 @@ std::optional<std::vector<double>> tolerance_range(const std::string& text) {
 std::vector<std::string> applicable_integrators(const eomgen_model_abi& m) {
   std::vector<std::string> names;
   for (const std::string& name : runtime::integrator_names()) {
-    if (name == "reference") continue;
-    if (name == "ida" && m.num_multipliers == 0) continue;
-    if (name == "verlet" && m.num_coordinates != m.num_velocities) continue;
-    names.push_back(name);
+    if (name != "reference" && runtime::integrator_refusal(m, name).empty()) names.push_back(name);
   }
   return names;
 }
@@ -102,8 +99,8 @@ int bench(const Options& o) {
   std::vector<double> x0(m.default_state, m.default_state + m.num_states);
   if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!o.horizon_integrator.empty()) {
-    if (std::find(integrators->begin(), integrators->end(), o.horizon_integrator) == integrators->end() ||
-        o.horizon_integrator == "rk4" || o.horizon_integrator == "verlet") {
+    bool fixed_step = o.horizon_integrator == "rk4" || o.horizon_integrator == "verlet";
+    if (std::find(integrators->begin(), integrators->end(), o.horizon_integrator) == integrators->end() || fixed_step) {
       std::cerr << "eomgen: error: --horizon needs one of the adaptive integrators of the run\n";
       return exit_user_error;
     }

@@ -92,8 +92,7 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
 // an explicit method on a stiff model: its steps are set by stability, not by accuracy
 void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0, const runtime::SimulationSettings& s,
                        const runtime::SimulationResult& r) {
-  static const std::vector<std::string> explicit_methods = {"cvode-adams", "arkode-dp5", "arkode-verner", "rk4", "verlet"};
-  if (std::find(explicit_methods.begin(), explicit_methods.end(), s.integrator) == explicit_methods.end()) return;
+  if (!runtime::is_explicit_integrator(s.integrator)) return;
   double ratio = runtime::stiffness_ratio(p, x0, s.t_start);
   if (!(ratio > 1e3)) return;
   std::cerr << fmt::format("eomgen: warning: the model is stiff (stiffness ratio {:.2g} at the start: its fastest decay "

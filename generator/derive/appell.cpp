@@ -21,6 +21,7 @@ struct AppellKinematics {
   GiNaC::matrix W;                 // n × k
   std::vector<ex> rate_bias;       // q'' − W s' = d/dt(W s + w) at constant s
   std::vector<GiNaC::realsymbol> accelerations;  // s'
+  std::vector<ex> coordinate_accelerations;      // q'' = W s' + rate_bias
 };
 
 AppellKinematics appell_kinematics(const Symbols& s, const PseudoVelocities& p) {
@@ -35,6 +36,11 @@ AppellKinematics appell_kinematics(const Symbols& s, const PseudoVelocities& p) 
     a.rate_bias.push_back(bias);
   }
   for (const auto& x : p.symbols) a.accelerations.emplace_back("der(" + x.get_name() + ")");
+  for (unsigned j = 0; j < n; ++j) {
+    ex qdd = a.rate_bias[j];
+    for (unsigned c = 0; c < k; ++c) qdd += a.W(j, c) * a.accelerations[c];
+    a.coordinate_accelerations.push_back(qdd);
+  }
   return a;
 }
 
@@ -43,12 +49,8 @@ Vector3 body_acceleration(const GiNaC::matrix& J, const Vector3& bias, const App
   Vector3 out;
   for (unsigned r = 0; r < 3; ++r) {
     ex value = bias[r].subs(a.rates);
-    for (unsigned j = 0; j < J.cols(); ++j) {
-      if (J(r, j).is_zero()) continue;
-      ex qdd = a.rate_bias[j];
-      for (unsigned c = 0; c < a.accelerations.size(); ++c) qdd += a.W(j, c) * a.accelerations[c];
-      value += J(r, j).subs(a.rates) * qdd;
-    }
+    for (unsigned j = 0; j < J.cols(); ++j)
+      if (!J(r, j).is_zero()) value += J(r, j).subs(a.rates) * a.coordinate_accelerations[j];
     out[r] = value;
   }
   return out;
@@ -135,11 +137,7 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   // M_T q'' + g_T enter as S_T = q''ᵀ(½ M_T q'' + g_T), whose ∂/∂s' is Wᵀ(M_T q'' + g_T)
   ex S = acceleration_energy(mech, a);
   if (const ex& T = mech.extra_kinetic_energy; !T.is_zero()) {
-    std::vector<ex> qdd(n);
-    for (unsigned i = 0; i < n; ++i) {
-      qdd[i] = a.rate_bias[i];
-      for (unsigned c = 0; c < k; ++c) qdd[i] += a.W(i, c) * a.accelerations[c];
-    }
+    const std::vector<ex>& qdd = a.coordinate_accelerations;
     for (unsigned j = 0; j < n; ++j) {
       ex p_j = T.diff(s.velocities[j]), inertia = 0;
       ex g = p_j.diff(s.time) - T.diff(s.coordinates[j]);
@@ -154,6 +152,12 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   for (const auto& x : a.accelerations) no_acceleration[x] = 0;
   e.mass_matrix = GiNaC::matrix(k, k);
   e.forcing.assign(k, 0);
+  // the generalized forces of the coordinates, Q − ∂V/∂q − ∂R/∂q', with q' = W s + w (once each)
+  std::vector<ex> applied(n);
+  for (unsigned j = 0; j < n; ++j)
+    applied[j] = (mech.generalized_force[j] - mech.potential_energy.diff(s.coordinates[j]) -
+                  mech.dissipation.diff(s.velocities[j]))
+                     .subs(a.rates);
   for (unsigned c = 0; c < k; ++c) {
     ex dS = S.diff(a.accelerations[c]);
     for (unsigned d = c; d < k; ++d) {
@@ -162,10 +166,7 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
     }
     ex force = -dS.subs(no_acceleration);
     for (unsigned j = 0; j < n; ++j)
-      if (!a.W(j, c).is_zero())
-        force += a.W(j, c) * (mech.generalized_force[j] - mech.potential_energy.diff(s.coordinates[j]) -
-                              mech.dissipation.diff(s.velocities[j]))
-                                 .subs(a.rates);
+      if (!a.W(j, c).is_zero()) force += a.W(j, c) * applied[j];
     e.forcing[c] = tidy(force, motion);
   }
   e.acceleration_energy = terms_with(tidy(S, motion), a.accelerations);

@@ -12,6 +12,12 @@ using GiNaC::ex;
 
 std::string cpp_name(const std::string& name) { return is_cpp_identifier(name) ? name : name + "_"; }
 
+std::string quoted_list(const std::vector<std::string>& names, const std::string& prefix) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + ("\"" + prefix + n + "\"");
+  return s;
+}
+
 namespace {
 
 void collect_symbols(const ex& e, GiNaC::exset& out) {

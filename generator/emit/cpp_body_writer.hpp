@@ -14,6 +14,9 @@ namespace eomgen {
 /// C++ name of a model name that may be a C++ keyword.
 std::string cpp_name(const std::string& name);
 
+/// "a", "b", … as the initializer of a std::array of const char*, each name with `prefix`.
+std::string quoted_list(const std::vector<std::string>& names, const std::string& prefix = "");
+
 class BodyWriter {
  public:
   explicit BodyWriter(const Equations& e);

@@ -27,11 +27,6 @@ const GiNaC::realsymbol& gain_beta() {
 // the default gains, 1/s: a constraint error decays with time constant 0.1 s
 constexpr double default_gain = 10;
 
-std::string quoted(const std::vector<std::string>& names, const std::string& prefix = "") {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + ("\"" + prefix + n + "\"");
-  return s;
-}
 
 // γ_stab = γ + 2α (C q' + b) + β² g, the right side of C q'' = −γ_stab
 std::vector<ex> stabilized_bias(const Equations& e) {
@@ -106,8 +101,8 @@ std::string constraint_declarations(const Equations& e) {
       "/// so that a constraint error e obeys e'' + 2 alpha e' + beta^2 e = 0; rhs uses these gains [1/s].\n"
       "inline constexpr double baumgarte_alpha = {5};\n"
       "inline constexpr double baumgarte_beta = {5};\n\n",
-      c.size(), e.has_multipliers ? c.size() : 0, quoted(c.names), holonomic,
-      e.has_multipliers ? quoted(c.names, "lambda_") : "", format_number(default_gain));
+      c.size(), e.has_multipliers ? c.size() : 0, quoted_list(c.names), holonomic,
+      e.has_multipliers ? quoted_list(c.names, "lambda_") : "", format_number(default_gain));
 }
 
 std::string constrained_solver(const Equations& e) {

@@ -20,11 +20,6 @@ using GiNaC::ex;
 
 namespace {
 
-std::string quoted_list(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + ("\"" + n + "\"");
-  return s;
-}
 
 std::string number_list(const std::vector<double>& values) {
   std::string s;

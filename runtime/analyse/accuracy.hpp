@@ -12,4 +12,10 @@ namespace eomgen::runtime {
 /// compared up to the shorter of the two; NaN when a value is not finite.
 double trajectory_error(const std::vector<std::vector<double>>& states, const std::vector<std::vector<double>>& reference);
 
+/// The scales s_i of trajectory_error, from the reference's rows.
+std::vector<double> state_scales(const std::vector<std::vector<double>>& reference);
+
+/// max over i of |x_i − r_i| / s_i for one row; NaN when a value is not finite.
+double row_error(const std::vector<double>& x, const std::vector<double>& r, const std::vector<double>& scales);
+
 }  // namespace eomgen::runtime

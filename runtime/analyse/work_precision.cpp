@@ -71,14 +71,13 @@ EnergyHistory energy_history(const Problem& p, const std::vector<double>& x0, co
 }
 
 // the first output time at which two trajectories differ by more than 1e-2 (states relative to
-// the reference's scale, as trajectory_error does), or their end when they never do
+// the scales of the second, as trajectory_error takes them), or their end when they never do
 double parting_time(const Trajectory& a, const Trajectory& b) {
-  for (std::size_t k = 1; k <= std::min(a.times.size(), b.times.size()); ++k) {
-    std::vector<std::vector<double>> one(a.states.begin(), a.states.begin() + static_cast<long>(k)),
-        two(b.states.begin(), b.states.begin() + static_cast<long>(k));
-    if (!(trajectory_error(one, two) <= 1e-2)) return a.times[k - 1];
-  }
-  return std::min(a.times.back(), b.times.back());
+  std::vector<double> scales = state_scales(b.states);
+  std::size_t rows = std::min(a.times.size(), b.times.size());
+  for (std::size_t k = 0; k < rows; ++k)
+    if (!(row_error(a.states[k], b.states[k], scales) <= 1e-2)) return a.times[k];
+  return a.times[rows - 1];
 }
 
 void accuracy_horizons(const Problem& p, const std::vector<double>& x0, const WorkPrecisionSettings& w, WorkPrecision& out,

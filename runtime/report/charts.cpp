@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "report/gnuplot.hpp"
 #include "report/reports.hpp"
 
 namespace eomgen::runtime {
@@ -16,17 +17,10 @@ std::string energy_chart_path(const std::string& png_path) {
   return base + "_energy.png";
 }
 
-namespace {
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-}  // namespace
 
 std::string draw_charts(const eomgen_model_abi& m, const Trajectory& trajectory, const std::string& png_path,
                         bool energy_chart) {
-  std::string data = png_path + ".data.tmp", script = png_path + ".gp.tmp";
+  std::string data = png_path + ".data.tmp";
   {
     std::ofstream out(data);
     double e0 = trajectory.energies.empty() ? 0 : trajectory.energies.front();
@@ -40,30 +34,20 @@ std::string draw_charts(const eomgen_model_abi& m, const Trajectory& trajectory,
   std::string plot = fmt::format(
       "set terminal pngcairo size 1000,560 noenhanced\nset output {}\nset title {}\nset xlabel 't [s]'\n"
       "set ylabel 'coordinates'\nset grid\nset key outside right\nplot ",
-      quoted(png_path), quoted(fmt::format("{}: coordinates", m.name)));
+      gnuplot_quoted(png_path), gnuplot_quoted(fmt::format("{}: coordinates", m.name)));
   for (std::size_t i = 0; i < m.num_coordinates; ++i)
-    plot += fmt::format("{}{} using 1:{} with lines lw 2 title {}", i ? ", " : "", quoted(data), i + 2,
-                        quoted(m.coordinate_names[i]));
+    plot += fmt::format("{}{} using 1:{} with lines lw 2 title {}", i ? ", " : "", gnuplot_quoted(data), i + 2,
+                        gnuplot_quoted(m.coordinate_names[i]));
   plot += "\n";
   if (energy_chart)
     plot += fmt::format(
         "set output {}\nset title {}\nset key inside top left\nset ylabel '|E(t) - E(0)| / |E(0)|'\nset logscale y\nset format y '%.0e'\n"
         "plot {} using 1:{} with lines lw 2 title 'relative energy error'\n",
-        quoted(energy_chart_path(png_path)), quoted(fmt::format("{}: energy error", m.name)), quoted(data),
+        gnuplot_quoted(energy_chart_path(png_path)), gnuplot_quoted(fmt::format("{}: energy error", m.name)), gnuplot_quoted(data),
         m.num_coordinates + 2);
-  std::ofstream(script) << plot;
-  int status = std::system(fmt::format("gnuplot {} 2> {}.log", quoted(script), quoted(script)).c_str());
+  std::string failure = run_gnuplot(plot, png_path);
   std::remove(data.c_str());
-  std::string log = script + ".log";
-  std::remove(script.c_str());
-  if (status != 0) {
-    std::ifstream in(log);
-    std::string why((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::remove(log.c_str());
-    return "gnuplot failed" + (why.empty() ? std::string(" (is gnuplot installed?)") : ": " + why);
-  }
-  std::remove(log.c_str());
-  return {};
+  return failure;
 }
 
 }  // namespace eomgen::runtime

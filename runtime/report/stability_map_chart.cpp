@@ -5,12 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "report/gnuplot.hpp"
 #include "report/reports.hpp"
 
 namespace eomgen::runtime {
 
 namespace {
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 void write_grid(const std::string& path, const StabilityMap& map, const std::vector<double>& values) {
   std::ofstream out(path);
@@ -28,7 +28,7 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
                                const std::string& title, const std::vector<double>& symbolic_margin,
                                const std::string& png_path) {
   std::string base = png_path + ".tmp", data = base + ".map", boundary = base + ".boundary", symbolic = base + ".symbolic",
-              symbolic_boundary = base + ".symbolic_boundary", script = base + ".gp";
+              symbolic_boundary = base + ".symbolic_boundary";
   write_grid(data, map, map.degree);
   bool with_symbolic = !symbolic_margin.empty();
   if (with_symbolic) write_grid(symbolic, map, symbolic_margin);
@@ -39,10 +39,10 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
   std::string contour = fmt::format(
       "set contour base\nset cntrparam levels discrete 0\nunset surface\nset view map\n"
       "set table {}\nsplot {} using 1:2:3 with lines\nunset table\n",
-      quoted(boundary), quoted(data));
+      gnuplot_quoted(boundary), gnuplot_quoted(data));
   if (with_symbolic)
-    contour += fmt::format("set table {}\nsplot {} using 1:2:3 with lines\nunset table\n", quoted(symbolic_boundary),
-                           quoted(symbolic));
+    contour += fmt::format("set table {}\nsplot {} using 1:2:3 with lines\nunset table\n", gnuplot_quoted(symbolic_boundary),
+                           gnuplot_quoted(symbolic));
   std::string plot = fmt::format(
       "set terminal pngcairo size 900,720 noenhanced\nset output {}\n{}"
       "unset contour\nset title {}\nset xlabel {}\nset ylabel {}\n"
@@ -50,18 +50,15 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
       "set cbrange [{}:{}]\nset cblabel 'largest real part of the eigenvalues'\nset key outside top center horizontal\n"
       "set xrange [{}:{}]\nset yrange [{}:{}]\n"
       "plot {} using 1:2:3 with image notitle, {} using 1:2 with lines lw 2 lc rgb 'black' title 'stability boundary (eigenvalues)'",
-      quoted(png_path), contour, quoted(title), quoted(x_name), quoted(y_name), -largest, largest, map.x.low, map.x.high,
-      map.y.low, map.y.high, quoted(data), quoted(boundary));
+      gnuplot_quoted(png_path), contour, gnuplot_quoted(title), gnuplot_quoted(x_name), gnuplot_quoted(y_name), -largest, largest, map.x.low, map.x.high,
+      map.y.low, map.y.high, gnuplot_quoted(data), gnuplot_quoted(boundary));
   if (with_symbolic)
     plot += fmt::format(", {} using 1:2 with lines lw 3 dt 2 lc rgb '#1b7837' title 'Hurwitz conditions (symbolic)'",
-                        quoted(symbolic_boundary));
+                        gnuplot_quoted(symbolic_boundary));
   plot += "\n";
-  std::ofstream(script) << plot;
-  int status = std::system(fmt::format("gnuplot {} 2> {}.log", quoted(script), quoted(script)).c_str());
-  std::ifstream in(script + ".log");
-  std::string why((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const std::string& f : {data, boundary, symbolic, symbolic_boundary, script, script + ".log"}) std::remove(f.c_str());
-  return status == 0 ? std::string() : "gnuplot failed: " + why;
+  std::string failure = run_gnuplot(plot, png_path);
+  for (const std::string& f : {data, boundary, symbolic, symbolic_boundary}) std::remove(f.c_str());
+  return failure;
 }
 
 }  // namespace eomgen::runtime

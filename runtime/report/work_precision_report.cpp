@@ -1,5 +1,7 @@
 #include "report/work_precision_report.hpp"
 
+#include "report/gnuplot.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,11 +14,6 @@ namespace eomgen::runtime {
 
 namespace {
 
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
 
 std::vector<std::string> integrators_of(const std::vector<WorkPrecisionRun>& runs) {
   std::vector<std::string> names;
@@ -29,23 +26,13 @@ std::string setting(const WorkPrecisionRun& r) {
   return r.step > 0 ? fmt::format("step {:.3g} s", r.step) : fmt::format("rtol {:.0e}", r.tolerance);
 }
 
-int run_gnuplot(const std::string& script_text, const std::string& stem, std::string& why) {
-  std::string script = stem + ".gp.tmp", log = stem + ".gp.log";
-  std::ofstream(script) << script_text;
-  int status = std::system(fmt::format("gnuplot {} 2> {}", quoted(script), quoted(log)).c_str());
-  std::ifstream in(log);
-  why.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  std::remove(script.c_str());
-  std::remove(log.c_str());
-  return status;
-}
 
 // one chart as PNG and SVG from the same plot command
 std::string both_terminals(const std::string& path_stem, const std::string& settings, const std::string& plot) {
   std::string text;
   for (const char* terminal : {"pngcairo size 1000,600 noenhanced", "svg size 1000,600 noenhanced"}) {
     std::string extension = std::string(terminal).rfind("svg", 0) == 0 ? "svg" : "png";
-    text += fmt::format("set terminal {}\nset output {}\n{}\n{}\n", terminal, quoted(path_stem + "." + extension),
+    text += fmt::format("set terminal {}\nset output {}\n{}\n{}\n", terminal, gnuplot_quoted(path_stem + "." + extension),
                         settings, plot);
   }
   return text;
@@ -167,19 +154,19 @@ std::string draw_work_precision(const std::string& model, const WorkPrecision& w
   auto curves = [&](const char* columns) {
     std::string plot = "plot ";
     for (std::size_t i = 0; i < names.size(); ++i)
-      plot += fmt::format("{}{} index {} using {} with linespoints lw 2 pt 7 title {}", i ? ", " : "", quoted(data), i,
-                          columns, quoted(names[i]));
+      plot += fmt::format("{}{} index {} using {} with linespoints lw 2 pt 7 title {}", i ? ", " : "", gnuplot_quoted(data), i,
+                          columns, gnuplot_quoted(names[i]));
     return plot;
   };
   std::string common = "set grid\nset logscale xy\nset format x '%.0e'\nset format y '%.0e'\nset key outside right\n"
                        "set ylabel 'error (largest, relative to each state)'";
   std::string script =
       both_terminals(directory + "/work_precision",
-                     common + fmt::format("\nset title {}\nset xlabel 'CPU time [s]'", quoted(model + ": work against precision")),
+                     common + fmt::format("\nset title {}\nset xlabel 'CPU time [s]'", gnuplot_quoted(model + ": work against precision")),
                      curves("1:2")) +
       both_terminals(directory + "/error_vs_evaluations",
                      common + fmt::format("\nset title {}\nset xlabel 'right-hand-side evaluations'",
-                                          quoted(model + ": error against right-hand sides")),
+                                          gnuplot_quoted(model + ": error against right-hand sides")),
                      curves("3:2"));
   std::string energy = directory + "/energy.data.tmp";
   if (!w.energy.empty()) {
@@ -191,12 +178,12 @@ std::string draw_work_precision(const std::string& model, const WorkPrecision& w
     out.close();
     std::string plot = "plot ";
     for (std::size_t i = 0; i < w.energy.size(); ++i)
-      plot += fmt::format("{}{} index {} using 1:2 with lines lw 2 title {}", i ? ", " : "", quoted(energy), i,
-                          quoted(w.energy[i].integrator));
+      plot += fmt::format("{}{} index {} using 1:2 with lines lw 2 title {}", i ? ", " : "", gnuplot_quoted(energy), i,
+                          gnuplot_quoted(w.energy[i].integrator));
     script += both_terminals(directory + "/energy_error",
                              fmt::format("set grid\nunset logscale\nset logscale y\nset format x '%g'\nset format y '%.0e'\nset key outside right\n"
                                          "set title {}\nset xlabel 't [s]'\nset ylabel '|E(t) - E(0)| / |E(0)|'",
-                                         quoted(model + ": energy error over a long run")),
+                                         gnuplot_quoted(model + ": energy error over a long run")),
                              plot);
   }
   std::string horizon = directory + "/horizon.data.tmp";
@@ -208,16 +195,14 @@ std::string draw_work_precision(const std::string& model, const WorkPrecision& w
                              fmt::format("set grid\nunset logscale\nset logscale x\nset format x '%.0e'\nset format y '%g'\n"
                                          "set key off\nset title {}\nset xlabel 'relative tolerance'\n"
                                          "set ylabel 'accuracy horizon [s]'",
-                                         quoted(model + ": time until rtol and rtol/10 differ by 1e-2")),
-                             fmt::format("plot {} using 1:2 with linespoints lw 2 pt 7", quoted(horizon)));
+                                         gnuplot_quoted(model + ": time until rtol and rtol/10 differ by 1e-2")),
+                             fmt::format("plot {} using 1:2 with linespoints lw 2 pt 7", gnuplot_quoted(horizon)));
   }
-  std::string why;
-  int status = run_gnuplot(script, directory + "/work_precision", why);
+  std::string failure = run_gnuplot(script, directory + "/work_precision");
   std::remove(horizon.c_str());
   std::remove(data.c_str());
   std::remove(energy.c_str());
-  if (status != 0) return "gnuplot failed" + (why.empty() ? std::string(" (is gnuplot installed?)") : ": " + why);
-  return {};
+  return failure;
 }
 
 }  // namespace eomgen::runtime

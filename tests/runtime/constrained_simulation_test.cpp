@@ -40,7 +40,10 @@ TEST(LagrangeOne, CartesianPendulumFollowsTheAnglePendulum) {
   ASSERT_FALSE(cartesian.failed) << cartesian.failure;
   ASSERT_FALSE(angle.failed) << angle.failure;
   ASSERT_EQ(cartesian.trajectory.times.size(), angle.trajectory.times.size());
-  double l = 1.0, worst = 0;
+  const auto& pendulum = generated_model("pendulum").default_parameters;  // m, l, g, d
+  ASSERT_EQ(generated_model("pendulum_cartesian").default_parameters, std::vector<double>(pendulum.begin(), pendulum.begin() + 3));
+  ASSERT_EQ(pendulum[3], 0.0);
+  double l = pendulum[1], worst = 0;
   for (std::size_t k = 0; k < angle.trajectory.times.size(); ++k) {
     double phi = angle.trajectory.states[k][0];
     worst = std::max({worst, std::abs(cartesian.trajectory.states[k][0] - l * std::sin(phi)),
@@ -50,13 +53,15 @@ TEST(LagrangeOne, CartesianPendulumFollowsTheAnglePendulum) {
 }
 
 TEST(LagrangeOne, RodForceIsTheCentripetalPlusGravityForce) {
-  // tension −2 l λ = m l φ'² + m g cos φ along the motion
+  // rod tension −2 l λ (the force on the bob is 2λ (x, y)) = m v²/l + m g cos φ, with cos φ = −y/l
   runtime::SimulationResult r = run("pendulum_cartesian", accurate(2));
   ASSERT_FALSE(r.failed);
+  const auto& p = generated_model("pendulum_cartesian").default_parameters;  // m, l, g
+  double m = p[0], l = p[1], g = p[2];
   for (std::size_t k = 0; k < r.trajectory.times.size(); ++k) {
     const auto& x = r.trajectory.states[k];
-    double speed2 = x[2] * x[2] + x[3] * x[3], cos_phi = -x[1];
-    EXPECT_NEAR(-2 * r.trajectory.multipliers[k][0], speed2 + 9.81 * cos_phi, 1e-8);
+    double speed2 = x[2] * x[2] + x[3] * x[3], cos_phi = -x[1] / l;
+    EXPECT_NEAR(-2 * l * r.trajectory.multipliers[k][0], m * speed2 / l + m * g * cos_phi, 1e-8);
   }
 }
 
@@ -79,11 +84,13 @@ TEST(LagrangeOne, ResidualsStaySmallWithStabilizationAndDriftWithout) {
 TEST(LagrangeOne, ConsistentStartKeepsTheGivenCrankAngleAndRate) {
   runtime::SimulationResult r = run("slider_crank", accurate(0.1));
   ASSERT_FALSE(r.failed);
+  const GeneratedModel& g = generated_model("slider_crank");
+  double r_crank = g.default_parameters[0], l = g.default_parameters[1];  // r, l
   const auto& x0 = r.trajectory.states.front();
-  EXPECT_EQ(x0[0], 0.5);   // phi as in the model file
-  EXPECT_EQ(x0[3], 10.0);  // der(phi)
-  EXPECT_NEAR(x0[1], -std::asin(0.1 * std::sin(0.5) / 0.3), 1e-13);
-  EXPECT_NEAR(x0[2], 0.1 * std::cos(0.5) + 0.3 * std::cos(x0[1]), 1e-13);
+  EXPECT_EQ(x0[0], g.default_state[0]);  // phi as in the model file
+  EXPECT_EQ(x0[3], g.default_state[3]);  // der(phi)
+  EXPECT_NEAR(x0[1], -std::asin(r_crank * std::sin(x0[0]) / l), 1e-13);
+  EXPECT_NEAR(x0[2], r_crank * std::cos(x0[0]) + l * std::cos(x0[1]), 1e-13);
 }
 
 TEST(LagrangeOne, IdaRunsTheSliderCrankWithSmallResiduals) {
@@ -118,15 +125,18 @@ TEST_P(ConservativeNonholonomic, EnergyIsConservedAndConstraintsHold) {
 INSTANTIATE_TEST_SUITE_P(Models, ConservativeNonholonomic, ::testing::Values("knife_edge", "chaplygin_sleigh", "rolling_disk"));
 
 TEST(Appell, KnifeEdgeMovesOnACircle) {
-  // v = 1, w = 0.5 from the model's initial rates: x = v/w sin(w t), y = v/w (1 − cos(w t))
+  // v, w constant: x = x0 + v/w (sin φ − sin φ0), y = y0 − v/w (cos φ − cos φ0), φ = φ0 + w t
   runtime::SimulationResult r = run("knife_edge", accurate(20));
   ASSERT_FALSE(r.failed);
-  double v = 1.0, w = 0.5, worst = 0;
+  const auto& start = r.trajectory.states.front();  // x, y, phi, v, w
+  double x0 = start[0], y0 = start[1], phi0 = start[2], v = start[3], w = start[4], worst = 0;
+  ASSERT_NE(w, 0.0);
   for (std::size_t k = 0; k < r.trajectory.times.size(); ++k) {
-    double t = r.trajectory.times[k];
+    double t = r.trajectory.times[k], phi = phi0 + w * t;
     const auto& x = r.trajectory.states[k];
-    worst = std::max({worst, std::abs(x[0] - v / w * std::sin(w * t)), std::abs(x[1] - v / w * (1 - std::cos(w * t))),
-                      std::abs(x[2] - w * t), std::abs(x[3] - v), std::abs(x[4] - w)});
+    worst = std::max({worst, std::abs(x[0] - x0 - v / w * (std::sin(phi) - std::sin(phi0))),
+                      std::abs(x[1] - y0 + v / w * (std::cos(phi) - std::cos(phi0))), std::abs(x[2] - phi),
+                      std::abs(x[3] - v), std::abs(x[4] - w)});
   }
   EXPECT_LT(worst, 1e-9);
 }
@@ -138,7 +148,8 @@ TEST(Appell, ChaplyginSleighStopsTurning) {
   const auto& end = r.trajectory.states.back();
   double energy = r.trajectory.energies.front();
   EXPECT_LT(std::abs(end[4]), 1e-3);
-  EXPECT_NEAR(end[3], std::sqrt(2 * energy / 1.0), 1e-3);
+  double m = generated_model("chaplygin_sleigh").default_parameters[0];
+  EXPECT_NEAR(end[3], std::sqrt(2 * energy / m), 1e-3);
 }
 
 }  // namespace
