@@ -182,23 +182,22 @@ std::vector<ex> differentiated_system(const Equations& e, const std::vector<ex>&
   std::size_t n = e.num_velocities(), m = c.size(), N = variables.size();
   std::vector<std::vector<ex>> rows;  // n + m rows of N entries
   std::vector<ex> gamma = stabilized_bias(e);
+  std::vector<std::vector<std::vector<ex>>> dC(m);  // ∂C_rk/∂y, used by both blocks
+  for (unsigned r = 0; r < m; ++r)
+    for (unsigned k = 0; k < n; ++k) dC[r].push_back(gradient(c.jacobian(r, k), variables));
   for (unsigned i = 0; i < n; ++i) {
     rows.push_back(gradient(e.forcing[i], variables));
     for (unsigned k = 0; k < n; ++k) {
       std::vector<ex> dM = gradient(e.mass_matrix(i, k), variables);
       for (unsigned j = 0; j < N; ++j) rows[i][j] -= dM[j] * w.accelerations()[k];
     }
-    for (unsigned r = 0; r < m; ++r) {
-      std::vector<ex> dC = gradient(c.jacobian(r, i), variables);
-      for (unsigned j = 0; j < N; ++j) rows[i][j] += dC[j] * lambda[r];
-    }
+    for (unsigned r = 0; r < m; ++r)
+      for (unsigned j = 0; j < N; ++j) rows[i][j] += dC[r][i][j] * lambda[r];
   }
   for (unsigned r = 0; r < m; ++r) {
     std::vector<ex> row = gradient(-gamma[r], variables);
-    for (unsigned k = 0; k < n; ++k) {
-      std::vector<ex> dC = gradient(c.jacobian(r, k), variables);
-      for (unsigned j = 0; j < N; ++j) row[j] -= dC[j] * w.accelerations()[k];
-    }
+    for (unsigned k = 0; k < n; ++k)
+      for (unsigned j = 0; j < N; ++j) row[j] -= dC[r][k][j] * w.accelerations()[k];
     rows.push_back(row);
   }
   std::vector<ex> columns;
