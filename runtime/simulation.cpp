@@ -2,12 +2,14 @@
 
 #include <arkode/arkode_butcher_erk.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "analyse/state_check.hpp"
 #include "analyse/work_precision.hpp"
 #include "integrate/projection.hpp"
 #include "integrate/stepper.hpp"
@@ -126,13 +128,18 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
                      double scale, double start_size, const std::vector<double>& start_state, double t_start,
                      const std::string& integrator) {
   std::string why = stepper.reason + fmt::format(" at t = {:.9g}", stepper.failure_time);
+  double size = 0;
+  for (double v : x) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
+  bool grows = size > 1e12 * (1 + start_size);
+  std::string bad = grows ? std::string() : non_finite_quantities(p, stepper.failure_time, x);
+  if (!bad.empty())
+    return why + fmt::format(": {} {} not finite (a division by zero, or a function outside its domain) at {}", bad,
+                             bad.find(',') == std::string::npos ? "is" : "are", state_text(*p.model, x));
   auto [smallest, largest] = mass_matrix_range(p, stepper.failure_time, x);
   if (std::isnan(smallest) || smallest <= 1e-8 * scale)
     return why + fmt::format(": the mass matrix is singular (smallest eigenvalue {:.3g}) at {}", smallest,
                              configuration(*p.model, x));
-  double size = 0;
-  for (double v : x) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
-  if (size > 1e12 * (1 + start_size)) {
+  if (grows) {
     why += fmt::format(": the state grows without bound (largest |x| = {:.3g}, from {:.3g} at the start)", size, start_size);
     double stiffness = stiffness_ratio(p, start_state, t_start);
     if (is_explicit_integrator(integrator) && stiffness > 1e3)

@@ -96,7 +96,7 @@ int bench(const Options& o) {
   s.energy_step = o.energy_step > 0 ? o.energy_step : s.dt_out / 5;
   std::string directory = o.directory.empty() ? "bench-" + std::string(m.name) : o.directory;
   std::filesystem::create_directories(directory);
-  std::vector<double> x0(m.default_state, m.default_state + m.num_states);
+  std::vector<double> x0 = loaded.initial_state;
   if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!o.horizon_integrator.empty()) {
     bool fixed_step = o.horizon_integrator == "rk4" || o.horizon_integrator == "verlet";

@@ -56,8 +56,10 @@ bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model
 
 /// The equilibrium of `problem`: checked when --at names one, else searched for.
 /// Returns the exit status when there is none.
+/// `initial` is the model's initial state (with --set applied): where the search starts,
+/// and the coordinates --at does not name.
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at,
-                                  runtime::Equilibrium& out);
+                                  const std::vector<double>& initial, runtime::Equilibrium& out);
 
 /// Derives `model_path` and writes NAME.hpp into `directory`, or to `header_file` when that is not empty.
 int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "derive/initial_state.hpp"
 #include "emit/cpp_header.hpp"
 
 namespace eomgen::cli {
@@ -92,6 +93,14 @@ std::optional<int> load_problem(const std::string& model, const std::vector<std:
       return exit_user_error;
     }
   }
+  std::string failed;
+  auto x0 = initial_state(out.equations, out.problem.parameters, failed);
+  if (!x0) {
+    std::cerr << fmt::format("eomgen: error: {} is not a finite real number with these parameter values\n  hint: check "
+                             "the --set values against the expression in {}\n", failed, model);
+    return exit_user_error;
+  }
+  out.initial_state = *x0;
   return std::nullopt;
 }
 

@@ -25,6 +25,7 @@ struct LoadedProblem {
   Equations equations;
   std::unique_ptr<runtime::LoadedModel> compiled;
   runtime::Problem problem;  // parameters and inputs with --set applied
+  std::vector<double> initial_state;  // the model's initial values, evaluated with the --set parameters
   std::string header;        // the generated header text
 };
 

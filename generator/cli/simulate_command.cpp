@@ -125,7 +125,7 @@ int simulate_model(const SimulationOptions& o) {
   }
   const eomgen_model_abi& m = *loaded.compiled->abi();
   runtime::Problem& problem = loaded.problem;
-  std::vector<double> x0(m.default_state, m.default_state + m.num_states);
+  std::vector<double> x0 = loaded.initial_state;
   if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!(o.settings.t_end > o.settings.t_start) || !(o.settings.dt_out > 0) || !(o.settings.rtol > 0) ||
       !(o.settings.atol > 0) || o.settings.step < 0) {

@@ -11,6 +11,7 @@
 #include "analyse/equilibrium.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/stability_conditions.hpp"
+#include "analyse/state_check.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -19,7 +20,7 @@ namespace eomgen::cli {
 
 namespace {
 
-std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v) : "null"; }
+std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v + 0.0) : "null"; }
 
 std::string json_matrix(const Eigen::MatrixXd& A) {
   std::string out = "[";
@@ -45,6 +46,8 @@ std::string json_numbers(const std::vector<double>& v) {
 
 std::string complex_text(std::complex<double> z) {
   z += std::complex<double>(0.0, 0.0);  // no "-0"
+  if (std::abs(z.real()) <= 1e-12 * std::abs(z)) z.real(0.0);  // on the axis within rounding
+  if (std::abs(z.imag()) <= 1e-12 * std::abs(z)) z.imag(0.0);
   if (std::abs(z.imag()) < 1e-300) return fmt::format("{:.6g}", z.real());
   return fmt::format("{:.6g} {} {:.6g}i", z.real(), z.imag() < 0 ? "-" : "+", std::abs(z.imag()));
 }
@@ -79,8 +82,9 @@ struct Options {
 };
 
 // the state an --at list names: given values, other coordinates as in the model, other velocities zero
-std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, const std::vector<std::string>& at) {
-  std::vector<double> x(m.default_state, m.default_state + m.num_states);
+std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, const std::vector<double>& initial,
+                                                 const std::vector<std::string>& at) {
+  std::vector<double> x = initial;
   for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) x[i] = 0;
   if (!assign_states(m, at, "--at", x)) return std::nullopt;
   return x;
@@ -125,16 +129,21 @@ void print_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
   std::cout << matrix_text("A", r.A);
   std::cout << "  eigenvalues and modes:\n";
   for (const runtime::Mode& mode : r.modes)
-    std::cout << fmt::format("    {:<28} frequency {:.6g} rad/s, damping ratio {:.6g}\n", complex_text(mode.eigenvalue),
-                             mode.frequency + 0.0, mode.damping_ratio + 0.0);
+    std::cout << fmt::format("    {:<28} undamped frequency {:.6g} rad/s, damped frequency {:.6g} rad/s, damping ratio "
+                             "{:.6g}\n", complex_text(mode.eigenvalue), mode.undamped_frequency + 0.0, mode.frequency + 0.0,
+                             mode.damping_ratio + 0.0);
   if (r.cyclic_zero_eigenvalues)
     std::cout << fmt::format("  {} zero eigenvalue(s) of conserved cyclic momenta left out of the verdict\n",
                              r.cyclic_zero_eigenvalues);
   std::cout << fmt::format("  verdict: {} (stability degree {:.6g})\n", r.verdict, r.stability_degree);
   std::cout << "  characteristic polynomial: " << polynomial_text(r.characteristic_polynomial) << "\n";
-  std::cout << "  Hurwitz determinants:";
-  for (double h : r.hurwitz) std::cout << fmt::format(" {:.6g}", h);
+  std::cout << (r.hurwitz_scale == 1.0 ? std::string("  Hurwitz determinants:")
+                                        : fmt::format("  Hurwitz determinants (of the polynomial in λ/{:.6g}):", r.hurwitz_scale));
+  for (double h : r.hurwitz) std::cout << (std::isnan(h) ? std::string(" lost") : fmt::format(" {:.6g}", h + 0.0));
   std::cout << "\n";
+  if (r.hurwitz_ill_conditioned)
+    std::cout << fmt::format("  the Hurwitz test is ill-conditioned at order {}: a determinant is lost in rounding; the "
+                             "verdict rests on the eigenvalues\n", r.hurwitz.size());
   for (const std::string& t : r.theorems) std::cout << "  theorem: " << t << "\n";
   if (!r.phase_plane.empty()) std::cout << "  phase plane: " << r.phase_plane << "\n";
   if (conditions) {
@@ -143,6 +152,8 @@ void print_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
     std::cout << fmt::format("  stability conditions in {} (parameters taken positive):\n", kept);
     std::cout << "    characteristic polynomial: " << canonical_text(rounded_for_display(conditions->characteristic_polynomial)) << "\n";
     for (const GiNaC::ex& c : conditions->conditions) std::cout << "    " << canonical_text(rounded_for_display(c)) << " > 0\n";
+    if (conditions->conditions.empty())
+      std::cout << "    none: every Hurwitz condition holds for all positive values of " << kept << "\n";
     for (const GiNaC::ex& c : conditions->equilibrium_equations)
       std::cout << "    where " << canonical_text(rounded_for_display(c)) << " = 0\n";
   }
@@ -156,8 +167,9 @@ void print_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
   std::string eigenvalues, modes;
   for (auto l : r.eigenvalues) eigenvalues += (eigenvalues.empty() ? "[" : ", [") + number(l.real()) + ", " + number(l.imag()) + "]";
   for (const auto& mode : r.modes)
-    modes += fmt::format("{}{{\"eigenvalue\": [{}, {}], \"frequency\": {}, \"damping_ratio\": {}}}", modes.empty() ? "" : ", ",
-                         number(mode.eigenvalue.real()), number(mode.eigenvalue.imag()), number(mode.frequency),
+    modes += fmt::format("{}{{\"eigenvalue\": [{}, {}], \"frequency\": {}, \"undamped_frequency\": {}, "
+                         "\"damping_ratio\": {}}}", modes.empty() ? "" : ", ", number(mode.eigenvalue.real()),
+                         number(mode.eigenvalue.imag()), number(mode.frequency), number(mode.undamped_frequency),
                          number(mode.damping_ratio));
   std::vector<std::string> condition_texts, equations;
   if (conditions) {
@@ -168,12 +180,12 @@ void print_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const
   std::cout << fmt::format(
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"residual\": {}, \"state\": {}, \"A\": {}, \"B\": {}, \"M\": {}, "
       "\"D\": {}, \"G\": {}, \"K\": {}, \"N\": {}, \"eigenvalues\": [{}], \"verdict\": \"{}\", \"stability_degree\": {}, "
-      "\"cyclic_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, "
+      "\"cyclic_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
       "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"equilibrium_conditions\": {}, \"critical_case\": {}}}\n",
       m.name, equilibrium, number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
       number(r.stability_degree), r.cyclic_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
-      json_numbers(r.hurwitz), json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
+      json_numbers(r.hurwitz), number(r.hurwitz_scale), r.hurwitz_ill_conditioned ? "true" : "false", json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
       json_strings(condition_texts), json_strings(equations),
       critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": \"{}\", \"simulation\": \"{}\", "
                                       "\"nonlinear_verdict\": \"{}\"}}",
@@ -198,13 +210,29 @@ std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::str
   return std::nullopt;
 }
 
+// a state where M or f is not finite, or M is singular, has no meaningful linearization
+std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vector<double>& x, const char* which) {
+  std::string why = runtime::unfit_state(problem, 0.0, x);
+  if (why.empty()) return std::nullopt;
+  std::cerr << fmt::format("eomgen: error: no stability analysis at {}: {}\n", which, why);
+  return exit_numerical_failure;
+}
+
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at_texts,
-                                  runtime::Equilibrium& out) {
+                                  const std::vector<double>& initial, runtime::Equilibrium& out) {
   const eomgen_model_abi& m = *problem.model;
   if (!at_texts.empty()) {
-    auto x = state_from_at(m, at_texts);
+    auto x = state_from_at(m, initial, at_texts);
     if (!x) return exit_user_error;
+    if (auto status = refuse_unfit(problem, *x, "the state given by --at")) return status;
     out = runtime::check_equilibrium(problem, *x);
+    if (!out.moving.empty()) {
+      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: {} moves a coordinate that "
+                               "is not cyclic, so the configuration and with it the forces change\n  hint: only cyclic "
+                               "coordinates (ones no equation depends on) may move in a steady motion; leave out --at "
+                               "to search for an equilibrium\n", out.moving);
+      return exit_user_error;
+    }
     if (!out.converged) {
       std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: the largest residual of "
                                "the equations of motion is {:.3g} (tolerance {:.3g})\n  hint: leave out --at to search "
@@ -213,15 +241,15 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
     }
     return std::nullopt;
   }
-  std::vector<double> start(m.default_state, m.default_state + m.num_states);
-  out = runtime::find_equilibrium(problem, start);
+  if (auto status = refuse_unfit(problem, initial, "the model's initial state (where the search starts)")) return status;
+  out = runtime::find_equilibrium(problem, initial);
   if (!out.converged) {
     std::cerr << fmt::format("eomgen: no equilibrium found near the model's initial values after {} Newton steps "
                              "(largest residual {:.3g})\n  hint: name one with --at q=VALUE (and --at 'der(q)=VALUE' for a "
                              "steady motion)\n", out.iterations, out.residual);
     return exit_numerical_failure;
   }
-  return std::nullopt;
+  return refuse_unfit(problem, out.state, "the equilibrium found");
 }
 
 namespace {
@@ -233,7 +261,7 @@ int stability(const Options& o) {
   const eomgen_model_abi& m = *loaded.compiled->abi();
   if (auto status = stability_refusal(loaded, o.model, !o.symbolic.empty())) return *status;
   runtime::Equilibrium eq;
-  if (auto status = equilibrium_of(loaded.problem, o.at, eq)) return *status;
+  if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
   std::optional<StabilityConditions> conditions;
   if (!o.symbolic.empty()) {
     std::vector<std::string> kept = split_names(o.symbolic);

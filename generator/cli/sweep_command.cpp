@@ -97,7 +97,7 @@ int run_sweep(const Options& o) {
   auto x = parse_axis(m, o.params[0], x_name), y = parse_axis(m, o.params[1], y_name);
   if (!x || !y) return exit_user_error;
   runtime::Equilibrium eq;
-  if (auto status = equilibrium_of(loaded.problem, o.at, eq)) return *status;
+  if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
   interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
   auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);

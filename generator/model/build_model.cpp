@@ -116,18 +116,23 @@ class Builder {
     m_.generalized_force.assign(s.coordinates.size(), 0);
   }
 
-  double constant(const ExpressionText& text, const char* context) {
+  double constant(const ExpressionText& text, const char* context, ex* expression = nullptr) {
     auto e = parse(text, allow_parameters, context);
     if (!e) return 0;
+    if (expression) *expression = *e;
     auto v = constant_value(*e, m_.symbols);
     if (!v) d_.error(text.where, text.key, "the value is not a finite real number");
     return v.value_or(0);
   }
 
   void read_initial_state() {
+    Symbols& s = m_.symbols;
     for (const CoordinateEntry& c : f_.coordinates) {
-      m_.symbols.initial_coordinates.push_back(constant(c.initial, "an initial value"));
-      m_.symbols.initial_velocities.push_back(constant(c.rate, "an initial rate"));
+      ex q0 = 0, rate0 = 0;
+      s.initial_coordinates.push_back(constant(c.initial, "an initial value", &q0));
+      s.initial_velocities.push_back(constant(c.rate, "an initial rate", &rate0));
+      s.initial_coordinate_expressions.push_back(q0);
+      s.initial_rate_expressions.push_back(rate0);
     }
   }
 

@@ -26,6 +26,8 @@ struct Symbols {
   std::vector<GiNaC::realsymbol> coordinates;  // q
   std::vector<GiNaC::realsymbol> velocities;   // der(q), printed as such
   std::vector<double> initial_coordinates, initial_velocities;
+  /// The initial values as written, in the parameters: evaluated again when a parameter is overridden.
+  std::vector<GiNaC::ex> initial_coordinate_expressions, initial_rate_expressions;
   std::vector<std::string> input_names;
   std::vector<GiNaC::realsymbol> inputs;
   std::vector<double> input_defaults;

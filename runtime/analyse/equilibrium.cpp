@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <Eigen/Dense>
+#include <fmt/format.h>
 
 #include "analyse/first_order_form.hpp"
 
@@ -65,14 +66,26 @@ Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
 
 }  // namespace
 
+// a non-cyclic coordinate with q' != 0 changes, and with it the equations: no equilibrium
+// however small f is there (Hiller §7.1); cyclic ones may move at constant speed
+static std::string moving_coordinates(const eomgen_model_abi& m, const std::vector<double>& x) {
+  std::string moving;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+    if (!m.is_cyclic[i] && x[m.num_coordinates + i] != 0)
+      moving += fmt::format("{}{} = {:.6g}", moving.empty() ? "" : ", ", m.state_names[m.num_coordinates + i],
+                            x[m.num_coordinates + i]);
+  return moving;
+}
+
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state) {
   if (has_pseudo_velocities(*problem.model)) return check_first_order(problem, std::move(state));
   Derivatives d = evaluate(problem, state);
   Equilibrium e;
+  e.moving = moving_coordinates(*problem.model, state);
   e.state = std::move(state);
   e.residual = d.f.cwiseAbs().maxCoeff();
   e.tolerance = tolerance_for(d);
-  e.converged = e.residual <= e.tolerance;
+  e.converged = e.residual <= e.tolerance && e.moving.empty();
   return e;
 }
 

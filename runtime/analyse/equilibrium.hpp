@@ -17,6 +17,7 @@ struct Equilibrium {
   double tolerance = 0;       // what counts as zero for this model
   bool converged = false;
   int iterations = 0;
+  std::string moving;  // non-cyclic coordinates whose velocity is not zero: the state moves
 };
 
 /// Checks a fully given state: named values, other coordinates at `start`, other velocities zero.

@@ -94,7 +94,8 @@ Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
       ++v.cyclic_zeros;
       continue;
     }
-    v.degree = std::max(v.degree, l.real());
+    // on the axis within rounding: exactly 0, so an undamped point never counts as decaying
+    v.degree = std::max(v.degree, std::abs(l.real()) <= s.tolerance ? 0.0 : l.real());
     if (l.real() > s.tolerance) v.verdict = "unstable";
     else if (std::abs(l.real()) <= s.tolerance) on_axis.push_back(l);
   }
@@ -115,8 +116,15 @@ std::vector<double> polynomial_from_roots(const std::vector<std::complex<double>
     c.push_back(0.0);
     for (std::size_t k = c.size() - 1; k > 0; --k) c[k] -= r * c[k - 1];
   }
+  // a coefficient below the rounding of the roots' elementary symmetric functions is 0
+  double size = 0;
+  for (auto r : roots) size = std::max(size, std::abs(r));
   std::vector<double> real;
-  for (auto x : c) real.push_back(x.real());
+  double bound = 1;  // binomial(n, k) size^k
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    if (k) bound *= size * static_cast<double>(roots.size() - k + 1) / static_cast<double>(k);
+    real.push_back(std::abs(c[k].real()) <= 1e-13 * bound ? 0.0 : c[k].real());
+  }
   return real;
 }
 
@@ -185,6 +193,33 @@ std::vector<double> hurwitz_determinants(const std::vector<double>& c) {
   return minors;
 }
 
+ScaledHurwitz scaled_hurwitz_determinants(const std::vector<double>& c) {
+  ScaledHurwitz out;
+  int n = static_cast<int>(c.size()) - 1;
+  if (n <= 0) return out;
+  // λ = s μ: a_k λ^(n−k) becomes a_k s^(n−k) μ^(n−k); divided by s^n the polynomial in μ is
+  // monic with constant term a_n / s^n = ±1 when s = |a_n|^(1/n)
+  double last = std::abs(c[static_cast<std::size_t>(n)]);
+  out.scale = last > 0 && std::isfinite(last) ? std::pow(last, 1.0 / n) : 1.0;
+  std::vector<double> b(c.size());
+  for (int k = 0; k <= n; ++k) b[static_cast<std::size_t>(k)] = c[static_cast<std::size_t>(k)] / std::pow(out.scale, k);
+  auto at = [&](int k) { return k >= 0 && k <= n ? b[static_cast<std::size_t>(k)] : 0.0; };
+  Eigen::MatrixXd H(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) H(i, j) = at(2 * j - i + 1);
+  // the coefficients carry the rounding of the eigenvalues they came from: relative 1e-12 or so
+  const double relative_error = 1e-11;
+  for (int k = 1; k <= n; ++k) {
+    Eigen::MatrixXd block = H.topLeftCorner(k, k);
+    double det = block.determinant(), hadamard = 1;
+    for (int i = 0; i < k; ++i) hadamard *= std::max(block.row(i).norm(), 1e-300);
+    bool lost = std::abs(det) <= relative_error * k * hadamard;
+    out.minors.push_back(lost ? 0.0 : det);
+    out.ill_conditioned = out.ill_conditioned || lost;
+  }
+  return out;
+}
+
 std::string phase_plane_type(const Eigen::Matrix2d& A) {
   double tr = A.trace(), det = A.determinant(), scale = std::max(1.0, A.cwiseAbs().maxCoeff());
   double eps = 1e-12 * scale * scale, disc = tr * tr - 4 * det;
@@ -202,6 +237,15 @@ std::string phase_plane_type(const Eigen::Matrix2d& A) {
   return sense("stable focus", "unstable focus");
 }
 
+static bool has_opposite_pair(const std::vector<std::complex<double>>& roots, double tolerance) {
+  double scale = 1;
+  for (auto l : roots) scale = std::max(scale, std::abs(l));
+  for (std::size_t i = 0; i < roots.size(); ++i)
+    for (std::size_t j = i; j < roots.size(); ++j)
+      if ((i != j || std::abs(roots[i]) <= tolerance * scale) && std::abs(roots[i] + roots[j]) <= tolerance * scale) return true;
+  return false;
+}
+
 // eigenvalues, verdict, modes, characteristic polynomial and Hurwitz determinants of r.A
 void describe_spectrum(StabilityReport& r, int cyclic) {
   Spectrum sp = spectrum(r.A);
@@ -211,10 +255,22 @@ void describe_spectrum(StabilityReport& r, int cyclic) {
   for (auto l : r.eigenvalues)
     if (l.imag() >= 0) {
       double size = std::abs(l);
-      r.modes.push_back({l, std::abs(l.imag()), size > 0 ? -l.real() / size : 0.0});
+      bool on_axis = std::abs(l.real()) <= sp.tolerance;
+      r.modes.push_back({l, std::abs(l.imag()), size, size > 0 && !on_axis ? -l.real() / size : 0.0});
     }
+  std::stable_sort(r.modes.begin(), r.modes.end(), [](const Mode& a, const Mode& b) {
+    return a.undamped_frequency != b.undamped_frequency ? a.undamped_frequency < b.undamped_frequency
+                                                        : a.frequency < b.frequency;
+  });
   r.characteristic_polynomial = polynomial_from_roots(r.eigenvalues);
-  r.hurwitz = hurwitz_determinants(r.characteristic_polynomial);
+  ScaledHurwitz h = scaled_hurwitz_determinants(r.characteristic_polynomial);
+  r.hurwitz = h.minors, r.hurwitz_scale = h.scale;
+  // a minor vanishes exactly when two roots add up to zero (λ and −λ: a pair on the imaginary
+  // axis, a saddle, a zero root); one within rounding without such a pair is lost to rounding
+  r.hurwitz_ill_conditioned = h.ill_conditioned && !has_opposite_pair(r.eigenvalues, std::sqrt(sp.tolerance));
+  if (r.hurwitz_ill_conditioned)
+    for (double& minor : r.hurwitz)
+      if (minor == 0) minor = NAN;  // its sign is lost, not zero
 }
 
 // Appell's equations: A is the Jacobian of the first-order form on the reduced state;

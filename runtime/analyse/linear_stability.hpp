@@ -18,8 +18,9 @@ namespace eomgen::runtime {
 
 struct Mode {
   std::complex<double> eigenvalue;
-  double frequency;      // |Im λ|, rad/s
-  double damping_ratio;  // −Re λ / |λ| (1 for a real negative eigenvalue, 0 on the imaginary axis)
+  double frequency;             // damped frequency |Im λ|, rad/s
+  double undamped_frequency;    // |λ|, rad/s: the natural frequency ω0 of λ² + 2ζω0 λ + ω0²
+  double damping_ratio;         // ζ = −Re λ / |λ| (1 for a real negative eigenvalue, 0 on the imaginary axis)
 };
 
 struct StabilityReport {
@@ -30,9 +31,15 @@ struct StabilityReport {
   std::string verdict;                            // asymptotically_stable | marginally_stable | unstable
   double stability_degree = 0;                    // largest real part that counts for the verdict
   int cyclic_zero_eigenvalues = 0;                // zero eigenvalues of conserved cyclic momenta, left out
-  std::vector<Mode> modes;
+  std::vector<Mode> modes;                        // by undamped frequency, then damped frequency
   std::vector<double> characteristic_polynomial;  // det(λI − A), highest power first (leading 1)
-  std::vector<double> hurwitz;                    // leading principal minors of the Hurwitz matrix
+  /// Leading principal minors of the Hurwitz matrix of the polynomial in μ = λ/s, where
+  /// s = |a_n|^(1/n) balances the coefficients (the signs, which decide, do not change);
+  /// a minor within rounding of zero is reported as 0, or NaN when no pair of eigenvalues
+  /// λ, −λ explains a zero (then its sign is lost in rounding).
+  std::vector<double> hurwitz;
+  double hurwitz_scale = 1;                       // s
+  bool hurwitz_ill_conditioned = false;           // a minor's sign is lost in rounding: the eigenvalues decide
   std::vector<std::string> theorems;
   std::string phase_plane;                        // two-state systems only
 };
@@ -46,6 +53,15 @@ double stability_degree(const Problem& problem, const std::vector<double>& x);
 
 /// Hurwitz determinants of a polynomial given highest power first.
 std::vector<double> hurwitz_determinants(const std::vector<double>& coefficients);
+
+struct ScaledHurwitz {
+  std::vector<double> minors;  // of the polynomial in λ/scale; 0 where within rounding
+  double scale = 1;
+  bool ill_conditioned = false;  // a nonzero minor is within rounding of zero
+};
+/// The Hurwitz determinants of the balanced polynomial, with the rounding of each
+/// bounded by Hadamard's inequality.
+ScaledHurwitz scaled_hurwitz_determinants(const std::vector<double>& coefficients);
 
 /// The classification of x' = A x for 2×2 A (node, focus, saddle, centre, ...).
 std::string phase_plane_type(const Eigen::Matrix2d& A);

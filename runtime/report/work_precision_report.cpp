@@ -38,6 +38,15 @@ std::string both_terminals(const std::string& path_stem, const std::string& sett
   return text;
 }
 
+// the ratio of the fastest decay rate (largest −Re λ of the Jacobian) to the slowest rate
+// (smallest nonzero |λ|) means something only when it is large
+std::string stiffness_text(double ratio) {
+  if (!(ratio >= 1)) return "not stiff (no mode decays faster than the slowest motion)";
+  if (ratio < 1e3) return fmt::format("not stiff (fastest decay rate over slowest rate {:.3g})", ratio);
+  return fmt::format("stiff (fastest decay rate, largest -Re of the Jacobian's eigenvalues, over the slowest rate, "
+                     "smallest nonzero |eigenvalue|: {:.3g})", ratio);
+}
+
 }  // namespace
 
 std::vector<double> verdict_levels(const std::vector<WorkPrecisionRun>& runs) {
@@ -55,8 +64,8 @@ std::string work_precision_markdown(const std::string& model, const WorkPrecisio
   out += fmt::format(
       "From t = {:g} to {:g} s; the error of a run is the largest difference from the reference over the output "
       "times (every {:g} s), each state relative to its own scale. Reference: order-16 extrapolation in {}, estimated "
-      "error {:.1e}. Stiffness ratio at the start (fastest decay rate, largest -Re of the Jacobian's eigenvalues, over the slowest rate, smallest nonzero |eigenvalue|): {:.3g}.\n\n",
-      s.t_start, s.t_end, s.dt_out, reference_scalar, w.reference_error_estimate, w.stiffness_ratio);
+      "error {:.1e}. Stiffness at the start: {}.\n\n",
+      s.t_start, s.t_end, s.dt_out, reference_scalar, w.reference_error_estimate, stiffness_text(w.stiffness_ratio));
   std::vector<double> levels = verdict_levels(w.runs);
   std::vector<const WorkPrecisionRun*> best = cheapest_at(w.runs, levels);
   out += "## Verdict\n\n| accuracy | cheapest method | setting | CPU time [s] | rhs evaluations |\n| --- | --- | --- | --- | --- |\n";

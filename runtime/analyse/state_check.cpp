@@ -1,0 +1,74 @@
+#include "analyse/state_check.hpp"
+
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+namespace eomgen::runtime {
+
+std::string state_text(const eomgen_model_abi& m, const std::vector<double>& x) {
+  std::string s;
+  for (std::size_t i = 0; i < m.num_states && i < x.size(); ++i)
+    s += fmt::format("{}{} = {:.6g}", i ? ", " : "", m.state_names[i], x[i]);
+  return s;
+}
+
+std::string non_finite_quantities(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t k = m.num_velocities;
+  std::vector<double> M(k * k), f(k);
+  m.mass_matrix(t, x.data(), p.parameters.data(), M.data());
+  m.forcing(t, x.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), f.data());
+  std::string out;
+  auto add = [&out](const std::string& name) { out += (out.empty() ? "" : ", ") + name; };
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = i; j < k; ++j)
+      if (!std::isfinite(M[i * k + j])) add(fmt::format("M[{}][{}]", i, j));
+  for (std::size_t i = 0; i < k; ++i)
+    if (!std::isfinite(f[i])) add(fmt::format("f[{}] (the equation of {})", i, m.state_names[m.num_coordinates + i]));
+  if (!std::isfinite(m.kinetic_energy(t, x.data(), p.parameters.data()))) add("T");
+  if (!std::isfinite(m.potential_energy(t, x.data(), p.parameters.data()))) add("V");
+  return out;
+}
+
+MassMatrixRank mass_matrix_rank(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t k = m.num_velocities;
+  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> M(k, k);
+  m.mass_matrix(t, x.data(), p.parameters.data(), M.data());
+  MassMatrixRank r;
+  r.size = r.rank = k;
+  if (k == 0 || !M.allFinite()) return r;
+  Eigen::MatrixXd dense = M;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(dense);
+  const Eigen::VectorXd& values = eigen.eigenvalues();
+  r.smallest = values.minCoeff(), r.largest = values.cwiseAbs().maxCoeff();
+  double zero = 1e-12 * std::max(r.largest, 1e-300);
+  r.rank = 0;
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(static_cast<long>(k));
+  for (long i = 0; i < values.size(); ++i) {
+    if (values[i] > zero) ++r.rank;
+    else weight += eigen.eigenvectors().col(i).cwiseAbs2();
+  }
+  for (std::size_t i = 0; i < k; ++i)
+    if (weight[static_cast<long>(i)] > 0.04)
+      r.null_velocities += (r.null_velocities.empty() ? "" : ", ") + std::string(m.state_names[m.num_coordinates + i]);
+  return r;
+}
+
+std::string unfit_state(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  if (std::string bad = non_finite_quantities(p, t, x); !bad.empty())
+    return fmt::format("{} {} not finite at t = {:g}, {} (a division by zero, or a function outside its domain)", bad,
+                       bad.find(',') == std::string::npos ? "is" : "are", t, state_text(m, x));
+  MassMatrixRank r = mass_matrix_rank(p, t, x);
+  if (r.singular())
+    return fmt::format("the mass matrix is singular at {}: rank {} of {} (eigenvalues from {:.3g} to {:.3g}); no inertia "
+                       "resists {}: a coordinate that appears in no kinetic energy, or a singularity of the coordinates "
+                       "at this configuration",
+                       state_text(m, x), r.rank, r.size, r.smallest, r.largest, r.null_velocities);
+  return {};
+}
+
+}  // namespace eomgen::runtime

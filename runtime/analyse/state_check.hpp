@@ -1,0 +1,34 @@
+/// @file What makes a state unfit for analysis or simulation, said in the terms
+/// of mechanics: quantities that are not finite there (a division by zero, a
+/// function outside its domain), and a singular mass matrix with the velocities
+/// that lose their inertia.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+/// "q1 = 0.5, der(q1) = 0" for the named state.
+std::string state_text(const eomgen_model_abi& m, const std::vector<double>& x);
+
+/// The entries of M and f, T and V that are not finite at (t, x), as "M[0][1], f[phi]";
+/// empty when all are finite.
+std::string non_finite_quantities(const Problem& p, double t, const std::vector<double>& x);
+
+struct MassMatrixRank {
+  std::size_t rank = 0, size = 0;
+  double smallest = 0, largest = 0;  // eigenvalues
+  std::string null_velocities;       // the velocities in the directions M does not see
+  bool singular() const { return rank < size; }
+};
+
+/// The rank of the (finite) mass matrix at (t, x): eigenvalues below 1e-12 of the largest count as zero.
+MassMatrixRank mass_matrix_rank(const Problem& p, double t, const std::vector<double>& x);
+
+/// Why (t, x) cannot be analysed: not-finite quantities, or a singular mass matrix; empty when it can.
+std::string unfit_state(const Problem& p, double t, const std::vector<double>& x);
+
+}  // namespace eomgen::runtime

@@ -1,0 +1,243 @@
+// Results eomgen prints must be right or say that they cannot be decided (issue
+// "trustworthy analysis"): each test reproduces one wrong or misleading result
+// of an earlier version on a small model written here, and checks the answer
+// against the closed form or the refusal with its reason.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+// writes a model file into a fresh folder and returns its path
+std::string write_model(const std::string& name, const std::string& text) {
+  std::string path = temporary_directory() + "/" + name + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* const oscillator = R"toml(
+[model]
+name = "oscillator"
+title = "one mass on a spring: omega = sqrt(k/m) = 20 rad/s"
+[parameters]
+m = 1.0
+k = 400.0
+[coordinates]
+x = { initial = 0.1, rate = 0.0 }
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*x^2/2"
+)toml";
+
+TEST(StabilityVerdicts, AMovingNonCyclicCoordinateIsNotAnEquilibrium) {
+  CommandOutput r = run_eomgen("stability '" + model_path("pendulum") + "' --at phi=0 --at 'der(phi)=1'");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.err.find("der(phi) = 1 moves a coordinate that is not cyclic"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  // a cyclic coordinate may turn at constant speed: the free body spinning about its minor axis
+  CommandOutput spin = run_eomgen("stability '" + model_path("free_rigid_body") + "' --at 'der(alpha)=2'");
+  EXPECT_EQ(spin.status, 0) << spin.err;
+  EXPECT_NE(spin.out.find("verdict: marginally_stable"), std::string::npos) << spin.out;
+}
+
+TEST(StabilityVerdicts, ASingularMassMatrixIsFoundBeforeAnyVerdict) {
+  std::string model = write_model("idle_coordinate", R"toml(
+[model]
+name = "idle_coordinate"
+title = "y appears nowhere"
+[parameters]
+m = 1.0
+k = 4.0
+[coordinates]
+x = 0.0
+y = 0.0
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*x^2/2"
+)toml");
+  CommandOutput r = run_eomgen("stability '" + model + "'");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(r.out.find("verdict"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("the mass matrix is singular"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rank 1 of 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no inertia resists der(y)"), std::string::npos) << r.err;
+}
+
+const char* const sinc_pendulum = R"toml(
+[model]
+name = "sinc_pendulum"
+title = "a position that divides by the coordinate"
+[parameters]
+m = 1.0
+l = 1.0
+g = 9.81
+[coordinates]
+phi = 0.0
+[[particles]]
+name = "bob"
+mass = "m"
+position = ["l*sin(phi)/phi", "-l*cos(phi)", "0"]
+[gravity]
+acceleration = ["0", "-g", "0"]
+)toml";
+
+TEST(StabilityVerdicts, NonFiniteValuesAreNamedAsSuch) {
+  std::string model = write_model("sinc_pendulum", sinc_pendulum);
+  CommandOutput r = run_eomgen("stability '" + model + "'");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.err.find("M[0][0], f[0] (the equation of der(phi)), T are not finite at t = 0, phi = 0, der(phi) = 0"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("nan"), std::string::npos) << r.err;
+  CommandOutput s = run_eomgen("simulate '" + model + "'");
+  EXPECT_EQ(s.status, 3);
+  EXPECT_NE(s.err.find("are not finite (a division by zero"), std::string::npos) << s.err;
+  EXPECT_EQ(s.err.find("singular"), std::string::npos) << s.err;
+}
+
+TEST(InitialValues, ExpressionsAreEvaluatedAfterTheOverrides) {
+  // the static deflection l0 + m g / k: with k = 80 the spring starts in equilibrium
+  std::string model = write_model("hanging_spring", R"toml(
+[model]
+name = "hanging_spring"
+title = "mass on a vertical spring, starting at its static deflection"
+[parameters]
+m = 1.0
+k = 40.0
+g = 9.81
+l0 = 0.5
+[coordinates]
+r = { initial = "l0 + m*g/k", rate = 0.0 }
+[[particles]]
+name = "bob"
+mass = "m"
+position = ["0", "-r", "0"]
+[gravity]
+acceleration = ["0", "-g", "0"]
+[energy]
+potential = "k*(r - l0)^2/2"
+)toml");
+  std::string csv = temporary_directory() + "/run.csv";
+  CommandOutput r = run_eomgen("simulate '" + model + "' --set k=80 --t-end 1 -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto rows = read_numeric_csv(csv);
+  ASSERT_FALSE(rows.empty());
+  double deflection = 0.5 + 9.81 / 80;
+  EXPECT_NEAR(rows.front()[1], deflection, 1e-15);
+  EXPECT_NEAR(rows.back()[1], deflection, 1e-12) << "a mass at its static deflection stays there";
+}
+
+// n masses in a row between springs k and dampers c, the first tied to the wall
+std::string damped_chain(int n) {
+  std::string text = "[model]\nname = \"damped_chain\"\ntitle = \"masses, springs and dampers in a row\"\n"
+                     "[parameters]\nm = 1.0\nk = 100.0\nc = 0.5\n[coordinates]\n";
+  std::string potential, dissipation;
+  for (int i = 1; i <= n; ++i) {
+    text += "x" + std::to_string(i) + " = " + std::to_string(0.01 * i) + "\n";
+    std::string q = "x" + std::to_string(i), previous = "x" + std::to_string(i - 1);
+    potential += (i > 1 ? " + k*(" + q + " - " + previous + ")^2/2" : "k*x1^2/2");
+    dissipation += (i > 1 ? " + c*(der(" + q + ") - der(" + previous + "))^2/2" : "c*der(x1)^2/2");
+  }
+  for (int i = 1; i <= n; ++i)
+    text += "[[particles]]\nname = \"p" + std::to_string(i) + "\"\nmass = \"m\"\nposition = [\"x" + std::to_string(i) +
+            "\", \"0\", \"0\"]\n";
+  return text + "[energy]\npotential = \"" + potential + "\"\ndissipation = \"" + dissipation + "\"\n";
+}
+
+std::vector<double> numbers_after(const std::string& text, const std::string& key) {
+  std::vector<double> out;
+  std::size_t at = text.find(key);
+  if (at == std::string::npos) return out;
+  std::size_t end = text.find(']', at);
+  std::string list = text.substr(at + key.size(), end - at - key.size());
+  for (std::size_t i = 0; i < list.size();) {
+    std::size_t comma = list.find(',', i);
+    std::string item = list.substr(i, comma == std::string::npos ? std::string::npos : comma - i);
+    out.push_back(item.find("null") != std::string::npos ? NAN : std::stod(item));
+    if (comma == std::string::npos) break;
+    i = comma + 1;
+  }
+  return out;
+}
+
+TEST(StabilityOutput, ModesAreSortedAndBothFrequenciesAreGiven) {
+  // the two-mass chain: undamped frequencies sqrt((3 -+ sqrt 5)/2 k/m) = 6.18 and 16.18 rad/s
+  std::string model = write_model("two_masses", damped_chain(2));
+  CommandOutput r = run_eomgen("stability '" + model + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<double> undamped;
+  std::regex mode(R"("frequency": ([-0-9.e+]+), "undamped_frequency": ([-0-9.e+]+), "damping_ratio": ([-0-9.e+]+))");
+  for (std::sregex_iterator i(r.out.begin(), r.out.end(), mode), end; i != end; ++i) {
+    double damped = std::stod((*i)[1]), natural = std::stod((*i)[2]), zeta = std::stod((*i)[3]);
+    EXPECT_NEAR(damped, natural * std::sqrt(1 - zeta * zeta), 1e-9 * natural);
+    undamped.push_back(natural);
+  }
+  ASSERT_EQ(undamped.size(), 2u) << r.out;
+  EXPECT_NEAR(undamped[0], std::sqrt((3 - std::sqrt(5.0)) / 2 * 100), 1e-9);
+  EXPECT_NEAR(undamped[1], std::sqrt((3 + std::sqrt(5.0)) / 2 * 100), 1e-9);
+  CommandOutput text = run_eomgen("stability '" + model + "'");
+  EXPECT_NE(text.out.find("undamped frequency 6.18034 rad/s, damped frequency"), std::string::npos) << text.out;
+}
+
+TEST(StabilityOutput, NoMinusZeroAndNoRoundingNoiseOnTheAxis) {
+  for (const char* name : {"pendulum", "double_pendulum"}) {
+    CommandOutput r = run_eomgen("stability '" + model_path(name) + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(std::regex_search(r.out, std::regex(R"((^|[ \[(])-0([ ,\]\n]|$))"))) << r.out;
+    EXPECT_FALSE(std::regex_search(r.out, std::regex(R"(e-1[4-9] [+-] )"))) << "noise in a real part:\n" << r.out;
+    EXPECT_NE(r.out.find("Hurwitz determinants"), std::string::npos);
+  }
+}
+
+TEST(StabilityOutput, HurwitzOfAHighOrderPolynomialIsScaledOrDeclared) {
+  // order 20: unscaled, the determinants were about 1e134 and their signs noise
+  std::string model = write_model("chain10", damped_chain(10));
+  CommandOutput r = run_eomgen("stability '" + model + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"verdict\": \"asymptotically_stable\""), std::string::npos);
+  std::vector<double> minors = numbers_after(r.out, "\"hurwitz\": [");
+  ASSERT_EQ(minors.size(), 20u) << r.out;
+  bool ill = r.out.find("\"hurwitz_ill_conditioned\": true") != std::string::npos;
+  for (double h : minors) {
+    if (std::isnan(h)) {
+      EXPECT_TRUE(ill) << "a lost minor without the declaration";
+    } else {
+      EXPECT_TRUE(h > 0 && h < 1e12) << h << " in a stable system's balanced Hurwitz determinants";
+    }
+  }
+  CommandOutput text = run_eomgen("stability '" + model + "'");
+  EXPECT_EQ(ill, text.out.find("the verdict rests on the eigenvalues") != std::string::npos) << text.out;
+  // a well-conditioned order: the two-mass chain's four minors are all there and positive
+  CommandOutput small = run_eomgen("stability '" + write_model("chain2", damped_chain(2)) + "' --format json");
+  EXPECT_NE(small.out.find("\"hurwitz_ill_conditioned\": false"), std::string::npos) << small.out;
+  for (double h : numbers_after(small.out, "\"hurwitz\": [")) EXPECT_GT(h, 0);
+}
+
+TEST(StabilityOutput, UndampedPointsAreNotCountedAsAsymptoticallyStable) {
+  CommandOutput r = run_eomgen("sweep '" + model_path("double_pendulum") +
+                               "' --param m1=0.5:2:6 --param l2=0.5:2:6 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"asymptotically_stable\": 0"), std::string::npos) << r.out;
+  CommandOutput damped = run_eomgen("sweep '" + model_path("pendulum") + "' --set d=0.1 --param m=0.5:2:6 "
+                                    "--param l=0.5:2:6 --format json");
+  EXPECT_NE(damped.out.find("\"asymptotically_stable\": 36"), std::string::npos) << damped.out;
+}
+
+TEST(StabilityOutput, SymbolicConditionsThatAlwaysHoldSaySo) {
+  CommandOutput r = run_eomgen("stability '" + model_path("pendulum") + "' --set d=0.1 --symbolic m,l");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("none: every Hurwitz condition holds for all positive values of m, l"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace eomgen::test
