@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analyse/state_check.hpp"
+#include "analyse/step_stability.hpp"
 #include "analyse/work_precision.hpp"
 #include "integrate/projection.hpp"
 #include "integrate/stepper.hpp"
@@ -123,10 +124,86 @@ Conditioning conditioning(const Problem& p, double t, const std::vector<double>&
   return c;
 }
 
+// the fixed step of rk4 and verlet against the method's stability limit, at the start and
+// at about a hundred output times; warns once, when it is first exceeded
+class StepLimitWatch {
+ public:
+  StepLimitWatch(const Problem& p, const SimulationSettings& s, std::vector<std::string>& warnings)
+      : p_(p), integrator_(s.integrator), warnings_(warnings) {
+    fixed_ = s.integrator == "rk4" || s.integrator == "verlet";
+    h_ = std::min(s.step > 0 ? s.step : s.dt_out / 10, s.dt_out);
+    long outputs = static_cast<long>(std::ceil((s.t_end - s.t_start) / s.dt_out));
+    stride = std::max(1L, outputs / 100);
+    if (fixed_ && s.step > s.dt_out * (1 + 1e-12))
+      warnings_.push_back(fmt::format("the step {:g} s is longer than the output interval {:g} s: {} steps at most to "
+                                      "the next output time, so its step is {:g} s; give --dt-out {:g} for steps of {:g} s",
+                                      s.step, s.dt_out, s.integrator, s.dt_out, s.step, s.step));
+  }
+  void check(double t, const std::vector<double>& x) {
+    if (!fixed_ || beyond_) return;
+    StepStability s = check_step(p_, integrator_, h_, t, x);
+    if (!s.beyond) return;
+    beyond_ = true;
+    warnings_.push_back(step_stability_warning(integrator_, h_, s, t));
+  }
+  bool beyond() const { return beyond_; }
+  long stride = 1;
+
+ private:
+  const Problem& p_;
+  std::string integrator_;
+  std::vector<std::string>& warnings_;
+  bool fixed_ = false, beyond_ = false;
+  double h_ = 0;
+};
+
+// a run that ends with a non-finite state, or that lost a conserved energy entirely, has no
+// result to show: it ends as a numerical failure with its rows kept
+void refuse_exploded(const Problem& p, double start_size, bool beyond_step_limit, SimulationResult& r) {
+  const Trajectory& tr = r.trajectory;
+  const eomgen_model_abi& m = *p.model;
+  std::string why;
+  double size = 0;
+  for (double v : tr.states.back()) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
+  bool conserved = m.conserves_energy_without_inputs &&
+                   std::all_of(p.inputs.begin(), p.inputs.end(), [](double u) { return u == 0; });
+  double e0 = tr.energies.front(), drift = 0;
+  for (double e : tr.energies) drift = std::isfinite(e) ? std::max(drift, std::abs(e - e0)) : INFINITY;
+  drift /= std::max(std::abs(e0), 1e-300);
+  if (!std::isfinite(size)) why = "the state is not finite at the end";
+  else if (conserved && drift > 1)
+    why = fmt::format("T + V, which this model conserves, changed by {:.3g} times its initial value", drift);
+  else if (beyond_step_limit && size > 1e3 * (1 + start_size))
+    why = fmt::format("the state grew from {:.3g} to {:.3g}", start_size, size);
+  if (why.empty()) return;
+  r.failed = true;
+  r.failure_time = tr.times.back();
+  r.failure = "the result is not a solution: " + why +
+              (beyond_step_limit ? ": a numerical instability of a step beyond the method's stability limit (see the "
+                                   "warning), not the mechanics"
+                                 : ": the integration is unstable; use a smaller step or tolerance, or an implicit method");
+}
+
+// what making the initial state consistent changed: the values the user gave first, by how much
+void report_consistency_changes(const eomgen_model_abi& m, const std::vector<double>& before, const std::vector<double>& after,
+                                const std::vector<bool>& given, std::vector<std::string>& warnings) {
+  std::string user, other;
+  for (std::size_t i = 0; i < m.num_states; ++i) {
+    double change = after[i] - before[i];
+    if (std::abs(change) <= 1e-12 * std::max(1.0, std::abs(before[i]))) continue;
+    bool by_user = i < given.size() && given[i];
+    (by_user ? user : other) += fmt::format("{}{} from {:.9g} to {:.9g} (by {:+.3g})", (by_user ? user : other).empty() ? "" : ", ",
+                                            m.state_names[i], before[i], after[i], change);
+  }
+  if (!user.empty())
+    warnings.push_back("the constraints do not allow the initial values you gave: changed " + user +
+                       (other.empty() ? "" : "; and " + other) + " to meet them");
+}
+
 // why the run stopped, in the words of mechanics where possible
 std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& stepper, const std::vector<double>& x,
                      double scale, double start_size, const std::vector<double>& start_state, double t_start,
-                     const std::string& integrator) {
+                     const std::string& integrator, bool beyond_step_limit) {
   std::string why = stepper.reason + fmt::format(" at t = {:.9g}", stepper.failure_time);
   double size = 0;
   for (double v : x) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
@@ -141,6 +218,10 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
                              configuration(*p.model, x));
   if (grows) {
     why += fmt::format(": the state grows without bound (largest |x| = {:.3g}, from {:.3g} at the start)", size, start_size);
+    if (beyond_step_limit)
+      return why + fmt::format(": a numerical instability, not the mechanics: the step of {} is beyond its stability "
+                               "limit for this model (see the warning); a smaller step or an adaptive integrator follows "
+                               "the motion", integrator);
     double stiffness = stiffness_ratio(p, start_state, t_start);
     if (is_explicit_integrator(integrator) && stiffness > 1e3)
       return why + fmt::format(": a numerical instability, not the mechanics: the model is stiff (stiffness ratio {:.2g}) "
@@ -170,7 +251,7 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   ConstraintProjection projection(problem);
   std::vector<double> x = x0_given;
   // a consistent initial state: the model's, moved onto the constraints (always, for every integrator)
-  if (m.num_constraints && !projection.make_consistent(settings.t_start, x.data())) {
+  if (m.num_constraints && !projection.make_consistent(settings.t_start, x.data(), settings.given_state)) {
     auto [position, velocity] = projection.residuals(settings.t_start, x0_given.data());
     result.failed = true;
     result.failure = fmt::format("no consistent initial state near the given one: Newton's method on the position "
@@ -180,6 +261,7 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
     (void)velocity;
     return result;
   }
+  if (m.num_constraints) report_consistency_changes(m, x0_given, x, settings.given_state, result.warnings);
   // Appell's pseudo-velocities meet velocity constraints by construction; holonomic ones may drift
   bool holonomic = false;
   for (std::size_t i = 0; i < m.num_constraints; ++i) holonomic = holonomic || m.constraint_is_holonomic[i];
@@ -189,6 +271,8 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   record(problem, settings.t_start, x, result.trajectory);
   Conditioning start = conditioning(problem, settings.t_start, x);
   bool warned_singular = false;
+  StepLimitWatch limit(problem, settings, result.warnings);
+  limit.check(settings.t_start, x);
   auto stepper = make_stepper(f, x, settings);
   // output times are exact multiples of dt_out, then the final time
   for (long k = 1;; ++k) {
@@ -200,11 +284,13 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       result.failure_time = stepper->failure_time;
       result.solver_flag = stepper->flag;
       result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0, start_size,
-                                result.trajectory.states.front(), settings.t_start, settings.integrator);
+                                result.trajectory.states.front(), settings.t_start, settings.integrator,
+                                limit.beyond());
       if (stepper->failure_time > result.trajectory.times.back()) record(problem, stepper->failure_time, x, result.trajectory);
       break;
     }
     record(problem, t, x, result.trajectory);
+    if (k % limit.stride == 0) limit.check(t, x);
     // a coordinate singularity ahead: M a thousand times worse conditioned than at the start
     if (!warned_singular) {
       Conditioning now = conditioning(problem, t, x);
@@ -227,6 +313,7 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   for (double r : tr.position_residuals) result.max_position_residual = std::max(result.max_position_residual, r);
   for (double r : tr.velocity_residuals) result.max_velocity_residual = std::max(result.max_velocity_residual, r);
   result.projections = projection.projections();
+  if (!result.failed) refuse_exploded(problem, start_size, limit.beyond(), result);
   return result;
 }
 

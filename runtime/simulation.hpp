@@ -33,6 +33,9 @@ struct SimulationSettings {
   // constrained models: Baumgarte's stabilization (Lagrange I) and projection onto the
   // constraint manifold after every step; gains < 0 take the model's defaults
   bool baumgarte = true, projection = true;
+  /// num_states, or empty: the entries of x0 the user gave; constrained models keep them
+  /// where the constraints allow it while making the initial state consistent
+  std::vector<bool> given_state;
   double baumgarte_alpha = -1, baumgarte_beta = -1;
 };
 

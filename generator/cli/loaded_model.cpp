@@ -40,7 +40,8 @@ int state_index(const eomgen_model_abi& m, const std::string& name) {
 }
 
 bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& texts, const char* flag,
-                   std::vector<double>& x) {
+                   std::vector<double>& x, std::vector<bool>* assigned) {
+  if (assigned) assigned->assign(m.num_states, false);
   std::vector<Assignment> assignments;
   if (!parse_assignments(texts, flag, assignments)) return false;
   std::vector<std::string> states(m.state_names, m.state_names + m.num_states);
@@ -48,6 +49,7 @@ bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& te
     int i = state_index(m, a.name);
     if (i >= 0) {
       x[static_cast<std::size_t>(i)] = a.value;
+      if (assigned) (*assigned)[static_cast<std::size_t>(i)] = true;
       continue;
     }
     bool rate = a.name.rfind("der(", 0) == 0 && index_of(m.coordinate_names, m.num_coordinates, a.name.substr(4, a.name.size() - 5)) >= 0;

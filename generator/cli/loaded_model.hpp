@@ -37,7 +37,9 @@ int state_index(const eomgen_model_abi& m, const std::string& name);
 
 /// Applies NAME=VALUE flags (--initial, --at) to the state x; prints the mistake and
 /// returns false when a name is not part of the state.
-bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& texts, const char* flag, std::vector<double>& x);
+/// `assigned`, when given, marks the entries of x that were named.
+bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& texts, const char* flag, std::vector<double>& x,
+                   std::vector<bool>* assigned = nullptr);
 
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out);
 

@@ -5,9 +5,17 @@
 
 namespace eomgen::cli {
 
+// models/ of the working directory, then the installed share/eomgen/models beside the
+// executable's bin/, and last the source tree this eomgen was built from
 std::string default_model_path() {
   const std::string name = "double_pendulum.toml";
   if (std::filesystem::exists("models/" + name)) return "models/" + name;
+  std::error_code ignored;
+  std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", ignored);
+  if (!executable.empty()) {
+    std::filesystem::path installed = executable.parent_path().parent_path() / "share" / "eomgen" / "models" / name;
+    if (std::filesystem::exists(installed, ignored)) return installed.lexically_normal().string();
+  }
   return std::string(EOMGEN_MODELS_DIR) + "/" + name;
 }
 
@@ -32,6 +40,7 @@ Command add_run_command(CLI::App& app) {
     o.header_dir = *directory;
     o.csv = *directory + "/" + stem + ".csv";
     o.plot = *directory + "/" + stem + ".png";
+    o.settings.integrator = "auto";
     o.settings.rtol = 1e-10;
     o.settings.atol = 1e-12;
     if (int status = simulate_model(o); status != exit_success) return status;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/integrator_choice.hpp"
 #include "analyse/work_precision.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
@@ -51,7 +52,7 @@ std::string constraint_summary(const eomgen_model_abi& m, const runtime::Simulat
   return out;
 }
 
-void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const runtime::SimulationResult& r,
+void print_summary(const runtime::SimulationSettings& settings, const eomgen_model_abi& m, const runtime::SimulationResult& r,
                    bool conservative, bool json, const std::string& reference_scalar) {
   const runtime::SolverStatistics& s = r.statistics;
   double drift = relative_energy_drift(r.trajectory);
@@ -64,7 +65,7 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
         "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}, \"failure\": {}}}\n",
-        m.name, o.settings.integrator, o.settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
+        m.name, settings.integrator, settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
         conservative ? "true" : "false", drift, m.num_constraints ? constraint_summary(m, r, true) : "",
         std::isnan(r.error_estimate) ? std::string()
@@ -73,8 +74,8 @@ void print_summary(const SimulationOptions& o, const eomgen_model_abi& m, const 
         failure);
     return;
   }
-  std::cout << fmt::format("{}: {} from t = {:g} to {:.9g}, {} output rows\n", m.name, o.settings.integrator,
-                           o.settings.t_start, r.trajectory.times.back(), r.trajectory.times.size());
+  std::cout << fmt::format("{}: {} from t = {:g} to {:.9g}, {} output rows\n", m.name, settings.integrator,
+                           settings.t_start, r.trajectory.times.back(), r.trajectory.times.size());
   std::cout << fmt::format("  steps {}, rhs evaluations {}, Jacobian evaluations {}, error-test failures {}, "
                            "convergence failures {}, wall time {:.4f} s\n",
                            s.steps, s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures,
@@ -126,25 +127,32 @@ int simulate_model(const SimulationOptions& o) {
   const eomgen_model_abi& m = *loaded.compiled->abi();
   runtime::Problem& problem = loaded.problem;
   std::vector<double> x0 = loaded.initial_state;
-  if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
+  std::vector<bool> given;
+  if (!assign_states(m, o.initials, "--initial", x0, &given)) return exit_user_error;
   if (!(o.settings.t_end > o.settings.t_start) || !(o.settings.dt_out > 0) || !(o.settings.rtol > 0) ||
       !(o.settings.atol > 0) || o.settings.step < 0) {
     std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";
     return exit_user_error;
   }
-  std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, o.settings.integrator, o.settings.t_end);
   runtime::SimulationSettings settings = o.settings;
+  settings.given_state = given;
+  if (settings.integrator == "auto") {
+    runtime::IntegratorChoice choice = runtime::choose_integrator(problem, x0, settings.t_start);
+    settings.integrator = choice.integrator;
+    std::cerr << fmt::format("eomgen: integrator {}: {} (--integrator chooses another)\n", choice.integrator, choice.reason);
+  }
+  std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, settings.integrator, o.settings.t_end);
   settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
   runtime::SimulationResult result;
   try {
     result = runtime::simulate(problem, x0, settings);
   } catch (const std::invalid_argument& why) {
-    std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", o.settings.integrator, why.what());
+    std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", settings.integrator, why.what());
     return exit_user_error;
   }
   for (const std::string& w : result.warnings) std::cerr << "eomgen: warning: " << w << "\n";
-  stiffness_warning(problem, x0, o.settings, result);
+  stiffness_warning(problem, x0, settings, result);
   if (result.failed && result.trajectory.times.empty()) {
     std::cerr << fmt::format("eomgen: the simulation cannot start: {}\n", result.failure);
     return exit_numerical_failure;
@@ -163,7 +171,7 @@ int simulate_model(const SimulationOptions& o) {
     else
       std::cerr << fmt::format("eomgen: charts in {}{}\n", o.plot, conservative ? " and " + runtime::energy_chart_path(o.plot) : "");
   }
-  print_summary(o, m, result, conservative, o.json, loaded.compiled->reference_scalar);
+  print_summary(settings, m, result, conservative, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
     std::cerr << fmt::format("eomgen: the simulation failed: {}\n", result.failure);
     if (!o.csv.empty()) std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the failure\n", o.csv, result.trajectory.times.size());
@@ -175,11 +183,18 @@ int simulate_model(const SimulationOptions& o) {
 void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   cmd->add_option("--t-end", o.settings.t_end, "End time [s] (default 10)");
   cmd->add_option("--dt-out", o.settings.dt_out, "Output interval [s] (default 0.01)");
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all{"auto"};
+    for (const std::string& n : runtime::integrator_names()) all.push_back(n);
+    return all;
+  }();
+  o.settings.integrator = "auto";
   cmd->add_option("--integrator", o.settings.integrator,
-                  "cvode-bdf (default), cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet, "
+                  "auto (default: cvode-bdf for constrained or stiff models, else arkode-dp5; the choice is printed), "
+                  "cvode-bdf, cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet, "
                   "ida (Lagrange I models, as a differential-algebraic system), reference (extrapolation in a wide scalar, "
                   "with its own error estimate)")
-      ->check(CLI::IsMember(runtime::integrator_names()));
+      ->check(CLI::IsMember(names));
   cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
   cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");
   cmd->add_option("--step", o.settings.step, "Fixed step of rk4 and verlet [s] (default dt-out/10)");

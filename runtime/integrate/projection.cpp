@@ -18,10 +18,16 @@ Matrix constraint_jacobian(const Problem& p, double t, const double* x) {
   return C;
 }
 
-// the last columns of C, from the end, that have full rank together: the dependent coordinates
-std::vector<long> dependent_columns(const Matrix& C) {
+// columns of C, from the end, that have full rank together: the dependent coordinates; the
+// columns the user gave values for (`given`, may be empty) are taken only when the others do not do
+std::vector<long> dependent_columns(const Matrix& C, const std::vector<bool>& given = {}) {
+  std::vector<long> order;
+  for (int pass = 0; pass < 2; ++pass)
+    for (long j = C.cols() - 1; j >= 0; --j)
+      if ((static_cast<std::size_t>(j) < given.size() && given[static_cast<std::size_t>(j)]) == (pass == 1)) order.push_back(j);
   std::vector<long> chosen;
-  for (long j = C.cols() - 1; j >= 0 && static_cast<long>(chosen.size()) < C.rows(); --j) {
+  for (long j : order) {
+    if (static_cast<long>(chosen.size()) >= C.rows()) break;
     Eigen::MatrixXd block(C.rows(), static_cast<long>(chosen.size()) + 1);
     for (std::size_t k = 0; k < chosen.size(); ++k) block.col(static_cast<long>(k)) = C.col(chosen[k]);
     block.col(static_cast<long>(chosen.size())) = C.col(j);
@@ -34,8 +40,13 @@ std::vector<long> dependent_columns(const Matrix& C) {
 
 }  // namespace
 
-bool ConstraintProjection::make_consistent(double t, double* x) {
+bool ConstraintProjection::make_consistent(double t, double* x, const std::vector<bool>& given) {
   const eomgen_model_abi& m = *p_.model;
+  std::vector<bool> given_positions, given_velocities;
+  if (given.size() == m.num_states) {
+    given_positions.assign(given.begin(), given.begin() + static_cast<long>(m.num_coordinates));
+    given_velocities.assign(given.begin() + static_cast<long>(m.num_coordinates), given.end());
+  }
   std::size_t mc = m.num_constraints, n = m.num_coordinates;
   std::vector<double> position(mc), velocity(mc);
   std::vector<long> holonomic;
@@ -50,7 +61,7 @@ bool ConstraintProjection::make_consistent(double t, double* x) {
     if (g.lpNorm<Eigen::Infinity>() < 1e-14) break;
     Matrix C = constraint_jacobian(p_, t, x), Ch(holonomic.size(), n);
     for (std::size_t r = 0; r < holonomic.size(); ++r) Ch.row(static_cast<long>(r)) = C.row(holonomic[r]);
-    std::vector<long> dependent = dependent_columns(Ch);
+    std::vector<long> dependent = dependent_columns(Ch, given_positions);
     if (dependent.size() != holonomic.size()) return project_positions(t, x);  // dependent constraints here
     Eigen::MatrixXd block(Ch.rows(), Ch.rows());
     for (std::size_t k = 0; k < dependent.size(); ++k) block.col(static_cast<long>(k)) = Ch.col(dependent[k]);
@@ -61,7 +72,7 @@ bool ConstraintProjection::make_consistent(double t, double* x) {
   // the dependent velocities from C v + b = 0 with the others as given
   m.constraint_residuals(t, x, p_.parameters.data(), position.data(), velocity.data());
   Matrix C = constraint_jacobian(p_, t, x);
-  std::vector<long> dependent = dependent_columns(C);
+  std::vector<long> dependent = dependent_columns(C, given_velocities);
   if (dependent.size() != mc) return project_velocities(t, x);
   Eigen::MatrixXd block(mc, mc);
   for (std::size_t k = 0; k < mc; ++k) block.col(static_cast<long>(k)) = C.col(dependent[k]);

@@ -15,8 +15,10 @@ class ConstraintProjection {
   /// or the constraint Jacobian is rank deficient there.
   bool project(double t, double* x);
   /// A consistent initial state: the first coordinates and velocities (in file order)
-  /// are kept as given, the last ones that the constraints determine are solved for.
-  bool make_consistent(double t, double* x);
+  /// are kept as given, the last ones that the constraints determine are solved for;
+  /// entries marked in `given` (num_states, or empty) are solved for only when the
+  /// constraints cannot be met otherwise.
+  bool make_consistent(double t, double* x, const std::vector<bool>& given = {});
   long projections() const { return projections_; }
   /// Largest |g| and |C q' + b| at x.
   std::pair<double, double> residuals(double t, const double* x) const;

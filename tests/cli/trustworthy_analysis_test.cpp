@@ -239,5 +239,86 @@ TEST(StabilityOutput, SymbolicConditionsThatAlwaysHoldSaySo) {
   EXPECT_NE(r.out.find("none: every Hurwitz condition holds for all positive values of m, l"), std::string::npos) << r.out;
 }
 
+TEST(FixedSteps, AStepBeyondTheStabilityLimitIsNamedAndNeverExitsZero) {
+  // ω = sqrt(k/m) = 20 rad/s: RK4 is stable up to h = 2√2/20 = 0.1414 s, Verlet up to 2/20 = 0.1 s
+  std::string model = write_model("oscillator", oscillator);
+  struct Case {
+    const char* integrator;
+    double step;
+    bool stable;
+  };
+  for (Case c : {Case{"rk4", 0.2, false}, Case{"rk4", 0.14, true}, Case{"verlet", 0.11, false}, Case{"verlet", 0.095, true}})
+    for (double t_end : {10.0, 100.0}) {
+      std::string step = std::to_string(c.step);
+      CommandOutput r = run_eomgen("simulate '" + model + "' --integrator " + c.integrator + " --step " + step +
+                                   " --dt-out " + step + " --t-end " + std::to_string(t_end));
+      SCOPED_TRACE(std::string(c.integrator) + " h = " + step + " to " + std::to_string(t_end));
+      EXPECT_EQ(r.err.find("escapes to infinity"), std::string::npos) << r.err;
+      if (c.stable) {
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err.find("stability limit"), std::string::npos) << r.err;
+        continue;
+      }
+      EXPECT_EQ(r.status, 3) << r.out << r.err;
+      EXPECT_NE(r.err.find(std::string("is beyond its stability limit at t = 0: h·|λ| = ") +
+                           (c.step == 0.2 ? "4 " : "2.2 ")), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(std::string("stable up to ") + (std::string(c.integrator) == "rk4" ? "2.83" : "2") +
+                           " on the imaginary axis"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(std::string("largest stable step here is ") + (std::string(c.integrator) == "rk4" ? "0.141" : "0.1")),
+                std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("not the mechanics"), std::string::npos) << r.err;
+    }
+}
+
+TEST(FixedSteps, AStepLongerThanTheOutputIntervalIsSaid) {
+  CommandOutput r = run_eomgen("simulate '" + write_model("oscillator", oscillator) +
+                               "' --integrator rk4 --step 0.2 --t-end 1");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("the step 0.2 s is longer than the output interval 0.01 s"), std::string::npos) << r.err;
+}
+
+TEST(DefaultIntegrator, ChosenFromTheModelAndSaid) {
+  std::string oscillator_model = write_model("oscillator", oscillator);
+  CommandOutput smooth = run_eomgen("simulate '" + oscillator_model + "' --t-end 10 --format json");
+  ASSERT_EQ(smooth.status, 0) << smooth.err;
+  EXPECT_NE(smooth.err.find("integrator arkode-dp5: the model is not stiff"), std::string::npos) << smooth.err;
+  EXPECT_NE(smooth.out.find("\"integrator\": \"arkode-dp5\""), std::string::npos) << smooth.out;
+  CommandOutput stiff = run_eomgen("simulate '" + model_path("stiff_chain") + "' --t-end 1");
+  EXPECT_NE(stiff.err.find("integrator cvode-bdf: the model is stiff"), std::string::npos) << stiff.err;
+  CommandOutput constrained = run_eomgen("simulate '" + model_path("slider_crank") + "' --t-end 1");
+  EXPECT_NE(constrained.err.find("integrator cvode-bdf: the model has constraints"), std::string::npos) << constrained.err;
+  // the reason for the choice: at the same tolerances the conservative oscillator keeps its
+  // energy better with the explicit method than with BDF
+  auto drift = [](const std::string& json) {
+    std::smatch m;
+    std::regex_search(json, m, std::regex(R"("relative_energy_drift": ([0-9.e+-]+))"));
+    return m.empty() ? NAN : std::stod(m[1]);
+  };
+  CommandOutput bdf = run_eomgen("simulate '" + oscillator_model + "' --t-end 10 --integrator cvode-bdf --format json");
+  EXPECT_LT(drift(smooth.out), drift(bdf.out) / 10) << smooth.out << "\n" << bdf.out;
+}
+
+TEST(ConstrainedInitialState, TheUsersVelocitiesWinWhereTheConstraintsAllow) {
+  // the rod pendulum at (x0, y0): x der(x) + y der(y) = 0 determines one velocity from the other
+  std::string csv = temporary_directory() + "/rod.csv";
+  CommandOutput r = run_eomgen("simulate '" + model_path("pendulum_cartesian") + "' --initial 'der(y)=-2' --t-end 0.1 -o '" +
+                               csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("do not allow"), std::string::npos) << r.err;
+  auto rows = read_numeric_csv(csv);
+  ASSERT_FALSE(rows.empty());
+  double x = rows[0][1], y = rows[0][2];
+  EXPECT_EQ(rows[0][4], -2.0) << "der(y) as given";
+  EXPECT_NEAR(rows[0][3], -y * -2.0 / x, 1e-12) << "der(x) from the constraint";
+  // both given: they cannot both stand; the change is said with its size
+  CommandOutput both = run_eomgen("simulate '" + model_path("pendulum_cartesian") +
+                                  "' --initial 'der(y)=-2' --initial 'der(x)=1' --t-end 0.1");
+  ASSERT_EQ(both.status, 0) << both.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(both.err, m, std::regex(R"(changed der\(y\) from -2 to ([-0-9.e]+) \(by ([-+0-9.e]+)\))")))
+      << both.err;
+  EXPECT_NEAR(std::stod(m[1]), -x * 1.0 / y, 1e-8);
+}
+
 }  // namespace
 }  // namespace eomgen::test

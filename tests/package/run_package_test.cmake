@@ -14,3 +14,14 @@ foreach(step
     message(FATAL_ERROR "package test step failed: ${step}\n${out}\n${err}")
   endif()
 endforeach()
+
+# the installed eomgen finds its default model in the install tree's share folder, not in
+# the source tree it was built from (run from a folder without models/)
+file(MAKE_DIRECTORY "${WORK_DIR}/elsewhere")
+execute_process(COMMAND "${prefix}/bin/eomgen" run -o "${WORK_DIR}/elsewhere/run"
+                WORKING_DIRECTORY "${WORK_DIR}/elsewhere" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(FIND "${err}" "eomgen run: ${prefix}/share/eomgen/models/double_pendulum.toml" installed_model)
+if(NOT status EQUAL 0 OR installed_model EQUAL -1)
+  message(FATAL_ERROR "the installed eomgen run did not use the installed default model (status ${status}):\n${err}")
+endif()
+message(STATUS "installed eomgen run used ${prefix}/share/eomgen/models/double_pendulum.toml")
