@@ -31,6 +31,16 @@ struct LoadedProblem;
 /// conditions of Appell models), printed; nothing when they can.
 std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic);
 
+struct PeriodicOptions {
+  std::vector<std::string> at;
+  std::string symbolic;
+  double period = 0;  // given with --period; 0: found from the model
+  bool json = false;
+};
+/// For a model whose equations depend on time: the refusal, or the Floquet analysis,
+/// printed, and its exit status; nothing for an autonomous model.
+std::optional<int> periodic_stability(const LoadedProblem& loaded, const PeriodicOptions& options);
+
 /// `eomgen bench MODEL -o DIRECTORY` with the default settings.
 int bench_model(const std::string& model, const std::string& directory);
 /// `eomgen stability MODEL` (equilibrium searched from the initial values), as text.

@@ -78,6 +78,7 @@ struct Options {
   std::string model;
   std::vector<std::string> at, sets;
   std::string symbolic;
+  double period = 0;
   bool json = false;
 };
 
@@ -260,6 +261,7 @@ int stability(const Options& o) {
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();
   if (auto status = stability_refusal(loaded, o.model, !o.symbolic.empty())) return *status;
+  if (auto status = periodic_stability(loaded, {o.at, o.symbolic, o.period, o.json})) return *status;
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
   std::optional<StabilityConditions> conditions;
@@ -292,6 +294,8 @@ Command add_stability_command(CLI::App& app) {
   cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
   cmd->add_option("--at", o->at, "Equilibrium value, one per flag: --at theta=0 --at 'der(phi)=8'; velocities not named are zero");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
+  cmd->add_option("--period", o->period, "Period T [s] of time-periodic equations (default: found from sin/cos(w*t) in "
+                  "the model); their stability is judged by Floquet multipliers over T")->check(CLI::PositiveNumber);
   cmd->add_option("--symbolic", o->symbolic, "Keep these parameters as symbols and print the Hurwitz conditions: --symbolic b,J");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));

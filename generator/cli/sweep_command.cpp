@@ -11,6 +11,7 @@
 #include "analyse/equilibrium.hpp"
 #include "analyse/stability_conditions.hpp"
 #include "analyse/stability_map.hpp"
+#include "analyse/time_dependence.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
 #include "common/output_file.hpp"
@@ -88,6 +89,12 @@ int run_sweep(const Options& o) {
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   if (auto status = stability_refusal(loaded, o.model, o.symbolic)) return *status;
+  if (time_dependence(loaded.equations, loaded.problem.parameters).depends_on_time) {
+    std::cerr << "eomgen: error: the equations depend on time: a map of eigenvalues at frozen t would be wrong for them\n"
+                 "  hint: judge single points with `eomgen stability MODEL --set ...` (Floquet multipliers for periodic "
+                 "equations)\n";
+    return exit_user_error;
+  }
   const eomgen_model_abi& m = *loaded.compiled->abi();
   std::string x_name, y_name;
   if (o.params.size() != 2) {

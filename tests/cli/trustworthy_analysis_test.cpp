@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <regex>
 
@@ -12,6 +13,12 @@
 
 namespace eomgen::test {
 namespace {
+
+std::string fmt_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
 
 // writes a model file into a fresh folder and returns its path
 std::string write_model(const std::string& name, const std::string& text) {
@@ -158,7 +165,7 @@ std::vector<double> numbers_after(const std::string& text, const std::string& ke
   std::vector<double> out;
   std::size_t at = text.find(key);
   if (at == std::string::npos) return out;
-  std::size_t end = text.find(']', at);
+  std::size_t end = text.find(']', at + key.size());
   std::string list = text.substr(at + key.size(), end - at - key.size());
   for (std::size_t i = 0; i < list.size();) {
     std::size_t comma = list.find(',', i);
@@ -318,6 +325,97 @@ TEST(ConstrainedInitialState, TheUsersVelocitiesWinWhereTheConstraintsAllow) {
   ASSERT_TRUE(std::regex_search(both.err, m, std::regex(R"(changed der\(y\) from -2 to ([-0-9.e]+) \(by ([-+0-9.e]+)\))")))
       << both.err;
   EXPECT_NEAR(std::stod(m[1]), -x * 1.0 / y, 1e-8);
+}
+
+std::string verdict_of(const CommandOutput& r) {
+  std::smatch m;
+  return std::regex_search(r.out, m, std::regex(R"re("verdict": "([a-z_]+)")re")) ? std::string(m[1]) : "none: " + r.err;
+}
+
+TEST(Floquet, MathieuStabilityChartAtQOne) {
+  // characteristic values at q = 1 (Abramowitz & Stegun, Table 20.1): a0 = -0.4551386,
+  // b1 = -0.1102488, a1 = 1.8591081, b2 = 3.9170248, a2 = 4.3713010; unstable in (b1, a1)
+  // and (b2, a2), stable between a0 and b1 and between a1 and b2
+  struct Point {
+    double a;
+    const char* verdict;
+  };
+  for (Point p : {Point{-0.2, "marginally_stable"}, Point{-0.1102488 - 0.005, "marginally_stable"},
+                  Point{-0.1102488 + 0.005, "unstable"}, Point{1.0, "unstable"}, Point{1.8591081 - 0.005, "unstable"},
+                  Point{1.8591081 + 0.005, "marginally_stable"}, Point{2.5, "marginally_stable"},
+                  Point{3.9170248 - 0.005, "marginally_stable"}, Point{3.9170248 + 0.005, "unstable"},
+                  Point{4.3713010 - 0.005, "unstable"}, Point{4.3713010 + 0.005, "marginally_stable"}}) {
+    CommandOutput r = run_eomgen("stability '" + model_path("mathieu") + "' --set q=1 --set a=" + fmt_number(p.a) +
+                                 " --format json");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(verdict_of(r), p.verdict) << "a = " << p.a << "\n" << r.out;
+    EXPECT_NE(r.out.find("\"analysis\": \"floquet\""), std::string::npos);
+  }
+}
+
+TEST(Floquet, MonodromyWithoutExcitationIsTheClosedForm) {
+  // q = 0: x'' + a x = 0 over T = pi, Phi = [[cos(s pi), sin(s pi)/s], [-s sin(s pi), cos(s pi)]], s = sqrt(a)
+  CommandOutput r = run_eomgen("stability '" + model_path("mathieu") + "' --set q=0 --set a=2.5 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"("period": ([0-9.e+-]+))")));
+  EXPECT_NEAR(std::stod(m[1]), M_PI, 1e-14) << "the period of cos(2 t), found from the model";
+  std::vector<double> phi = numbers_after(r.out, "\"monodromy\": [[");
+  std::vector<double> second = numbers_after(r.out.substr(r.out.find("\"monodromy\"")), "], [");
+  ASSERT_EQ(phi.size(), 2u) << r.out;
+  ASSERT_EQ(second.size(), 2u) << r.out;
+  double s = std::sqrt(2.5);
+  EXPECT_NEAR(phi[0], std::cos(s * M_PI), 1e-10);
+  EXPECT_NEAR(phi[1], std::sin(s * M_PI) / s, 1e-10);
+  EXPECT_NEAR(second[0], -s * std::sin(s * M_PI), 1e-10);
+  EXPECT_NEAR(second[1], std::cos(s * M_PI), 1e-10);
+}
+
+TEST(Floquet, KapitzaPendulumUprightAboveTheCriterion) {
+  // a² w² > 2 g l: with a = 0.1 m, l = 1 m the upright pendulum is stable above w = 44.29 rad/s
+  // (the exact boundary, from Mathieu's a0(q), lies within 0.3 % of it)
+  double critical = std::sqrt(2 * 9.81 * 1.0) / 0.1;
+  std::string upright = " --at phi=3.141592653589793 --format json";
+  CommandOutput slow = run_eomgen("stability '" + model_path("kapitza_pendulum") + "' --set w=" +
+                                  fmt_number(0.95 * critical) + upright);
+  CommandOutput fast = run_eomgen("stability '" + model_path("kapitza_pendulum") + "' --set w=" +
+                                  fmt_number(1.05 * critical) + upright);
+  EXPECT_EQ(verdict_of(slow), "unstable") << slow.out;
+  EXPECT_EQ(verdict_of(fast), "marginally_stable") << fast.out;
+  // at the model's w = 60 rad/s: the period 2 pi / w is found, and no theorem of frozen t is quoted
+  CommandOutput text = run_eomgen("stability '" + model_path("kapitza_pendulum") + "' --at phi=3.141592653589793");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("Floquet analysis over the period T = " + fmt_number(2 * M_PI / 60).substr(0, 10)), std::string::npos)
+      << text.out;
+  EXPECT_EQ(text.out.find("Lagrange-Dirichlet"), std::string::npos) << text.out;
+}
+
+TEST(Floquet, TimeDependenceThatIsNotPeriodicIsRefused) {
+  std::string model = write_model("decaying_spring", R"toml(
+[model]
+name = "decaying_spring"
+title = "a stiffness that decays in time"
+[parameters]
+k = 4.0
+[coordinates]
+x = 0.0
+[[particles]]
+name = "p"
+mass = "1"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*exp(-t)*x^2/2"
+)toml");
+  CommandOutput r = run_eomgen("stability '" + model + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("depend explicitly on time, and not periodically"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  CommandOutput forced = run_eomgen("stability '" + model + "' --period 1");
+  EXPECT_EQ(forced.status, 2);
+  EXPECT_NE(forced.err.find("not periodic with this period"), std::string::npos) << forced.err;
+  CommandOutput sweep = run_eomgen("sweep '" + model_path("mathieu") + "' --param a=0:1:3 --param q=0:1:3");
+  EXPECT_EQ(sweep.status, 2);
+  EXPECT_NE(sweep.err.find("depend on time"), std::string::npos) << sweep.err;
 }
 
 }  // namespace
