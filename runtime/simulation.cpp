@@ -23,6 +23,14 @@ const std::vector<std::string>& integrator_names() {
   return names;
 }
 
+const double* Problem::inputs_at(double t, std::vector<double>& scratch) const {
+  if (inputs.empty()) return nullptr;
+  if (!input_signal) return inputs.data();
+  scratch = inputs;
+  input_signal(t, scratch.data());
+  return scratch.data();
+}
+
 bool is_dae_integrator(const std::string& name) { return name == "ida"; }
 
 std::string integrator_refusal(const eomgen_model_abi& m, const std::string& name) {
@@ -60,7 +68,8 @@ std::unique_ptr<Stepper> make_stepper(RightHandSide& f, const std::vector<double
 void record(const Problem& p, double t, const std::vector<double>& x, Trajectory& out) {
   const ConstraintProjection measure(p);
   const eomgen_model_abi& m = *p.model;
-  const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+  std::vector<double> scratch;
+  const double* u = p.inputs_at(t, scratch);
   out.times.push_back(t);
   out.states.push_back(x);
   out.energies.push_back(m.kinetic_energy(t, x.data(), p.parameters.data()) +
@@ -165,7 +174,7 @@ void refuse_exploded(const Problem& p, double start_size, bool beyond_step_limit
   std::string why;
   double size = 0;
   for (double v : tr.states.back()) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
-  bool conserved = m.conserves_energy_without_inputs &&
+  bool conserved = m.conserves_energy_without_inputs && !p.input_signal &&
                    std::all_of(p.inputs.begin(), p.inputs.end(), [](double u) { return u == 0; });
   double e0 = tr.energies.front(), drift = 0;
   for (double e : tr.energies) drift = std::isfinite(e) ? std::max(drift, std::abs(e - e0)) : INFINITY;
@@ -245,6 +254,9 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   const eomgen_model_abi& m = *problem.model;
   bool lagrange1 = m.num_multipliers > 0;
   if (std::string why = integrator_refusal(m, settings.integrator); !why.empty()) throw std::invalid_argument(why);
+  if (problem.input_signal && settings.integrator == "reference")
+    throw std::invalid_argument("the reference integrator is compiled for constant inputs; inputs that vary in time "
+                                "need another integrator");
   bool baumgarte = lagrange1 && settings.baumgarte && !is_dae_integrator(settings.integrator);
   RightHandSide f(problem, baumgarte ? (settings.baumgarte_alpha >= 0 ? settings.baumgarte_alpha : m.baumgarte_alpha) : 0,
                   baumgarte ? (settings.baumgarte_beta >= 0 ? settings.baumgarte_beta : m.baumgarte_beta) : 0);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,12 @@ using ReferenceFunction = long (*)(const double* p, const double* u, double t0, 
 struct Problem {
   const eomgen_model_abi* model = nullptr;
   std::vector<double> parameters;  // num_parameters, in parameter_names order
-  std::vector<double> inputs;      // num_inputs, held constant over the run
+  std::vector<double> inputs;      // num_inputs, held constant over the run unless input_signal is set
   ReferenceFunction reference = nullptr;  // set when the model was compiled with one
+  /// Inputs as functions of time: writes num_inputs values u(t), starting from `inputs`.
+  std::function<void(double t, double* u)> input_signal = nullptr;
+  /// u(t): `inputs`, or the signal's values written into `scratch`; nullptr without inputs.
+  const double* inputs_at(double t, std::vector<double>& scratch) const;
 };
 
 struct SimulationSettings {

@@ -50,7 +50,10 @@ struct SimulationOptions {
   std::string model;
   runtime::SimulationSettings settings;
   std::vector<std::string> sets, initials;
+  std::vector<std::string> input_signals;  // --input NAME=EXPRESSION in t
+  std::string input_file;                  // --input-file table.csv
   std::string csv, plot, header_dir;
+  std::string plot_xy;  // "X,Y": also Y against X
   std::string stabilization = "both";
   std::string reference_scalar;  // filled in by simulate_model from the compiled model  // constrained models: both, baumgarte, projection or none
   bool json = false;

@@ -80,8 +80,11 @@ std::optional<int> load_problem(const std::string& model, const std::vector<std:
     return exit_internal_error;
   }
   const eomgen_model_abi& m = *out.compiled->abi();
-  out.problem = {&m, std::vector<double>(m.default_parameters, m.default_parameters + m.num_parameters),
-                 std::vector<double>(m.default_inputs, m.default_inputs + m.num_inputs), out.compiled->reference};
+  out.problem = runtime::Problem{};
+  out.problem.model = &m;
+  out.problem.parameters.assign(m.default_parameters, m.default_parameters + m.num_parameters);
+  out.problem.inputs.assign(m.default_inputs, m.default_inputs + m.num_inputs);
+  out.problem.reference = out.compiled->reference;
   std::vector<Assignment> assignments;
   if (!parse_assignments(sets, "--set", assignments)) return exit_user_error;
   for (const Assignment& a : assignments) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -7,6 +8,7 @@
 #include "analyse/integrator_choice.hpp"
 #include "analyse/work_precision.hpp"
 #include "cli/commands.hpp"
+#include "cli/input_signal.hpp"
 #include "cli/loaded_model.hpp"
 #include "common/output_file.hpp"
 #include "compile/compile_cache.hpp"
@@ -102,6 +104,49 @@ void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0,
                            ratio, s.integrator, r.statistics.steps);
 }
 
+// --plot-xy X,Y names two columns of the trajectory and needs --plot
+std::optional<int> check_plot_xy(const SimulationOptions& o, const eomgen_model_abi& m) {
+  if (o.plot_xy.empty()) return std::nullopt;
+  std::size_t comma = o.plot_xy.find(',');
+  std::vector<std::string> names{"t", "energy"};
+  names.insert(names.end(), m.state_names, m.state_names + m.num_states);
+  names.insert(names.end(), m.output_names, m.output_names + m.num_outputs);
+  if (o.plot.empty() || comma == std::string::npos) {
+    std::cerr << fmt::format("eomgen: error: --plot-xy {}: expected X,Y with --plot FILE.png (the chart is FILE_xy.png)\n",
+                             o.plot_xy);
+    return exit_user_error;
+  }
+  for (const std::string& name : {o.plot_xy.substr(0, comma), o.plot_xy.substr(comma + 1)})
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      std::cerr << fmt::format("eomgen: error: --plot-xy: '{}' is not a column of the trajectory; {}\n", name,
+                               suggest(name, names, "columns"));
+      return exit_user_error;
+    }
+  return std::nullopt;
+}
+
+void draw_all_charts(const SimulationOptions& o, const eomgen_model_abi& m, const runtime::Trajectory& trajectory,
+                     bool conservative) {
+  std::vector<std::string> drawn;
+  auto report = [&drawn](const std::string& failure, const std::string& path) {
+    if (failure.empty()) drawn.push_back(path);
+    else std::cerr << "eomgen: warning: no chart " << path << ": " << failure << "\n";
+  };
+  report(runtime::draw_charts(m, trajectory, o.plot, conservative), o.plot);
+  if (conservative) drawn.push_back(runtime::energy_chart_path(o.plot));
+  if (m.num_outputs)
+    report(runtime::draw_outputs_chart(m, trajectory, runtime::outputs_chart_path(o.plot)), runtime::outputs_chart_path(o.plot));
+  if (!o.plot_xy.empty()) {
+    std::size_t comma = o.plot_xy.find(',');
+    report(runtime::draw_xy_chart(m, trajectory, o.plot_xy.substr(0, comma), o.plot_xy.substr(comma + 1),
+                                  runtime::xy_chart_path(o.plot)),
+           runtime::xy_chart_path(o.plot));
+  }
+  std::string list;
+  for (const std::string& path : drawn) list += (list.empty() ? "" : ", ") + path;
+  if (!list.empty()) std::cerr << "eomgen: charts in " << list << "\n";
+}
+
 }  // namespace
 
 std::string json_escape(const std::string& s) {
@@ -126,9 +171,15 @@ int simulate_model(const SimulationOptions& o) {
   }
   const eomgen_model_abi& m = *loaded.compiled->abi();
   runtime::Problem& problem = loaded.problem;
+  double table_end = INFINITY;
+  if (auto status = set_input_signal(loaded, o.input_signals, o.input_file, table_end)) return *status;
+  if (table_end < o.settings.t_end)
+    std::cerr << fmt::format("eomgen: warning: {} ends at t = {:g}, before --t-end {:g}: its last values are held\n",
+                             o.input_file, table_end, o.settings.t_end);
   std::vector<double> x0 = loaded.initial_state;
   std::vector<bool> given;
   if (!assign_states(m, o.initials, "--initial", x0, &given)) return exit_user_error;
+  if (auto status = check_plot_xy(o, m)) return *status;
   if (!(o.settings.t_end > o.settings.t_start) || !(o.settings.dt_out > 0) || !(o.settings.rtol > 0) ||
       !(o.settings.atol > 0) || o.settings.step < 0) {
     std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";
@@ -157,7 +208,7 @@ int simulate_model(const SimulationOptions& o) {
     std::cerr << fmt::format("eomgen: the simulation cannot start: {}\n", result.failure);
     return exit_numerical_failure;
   }
-  bool conservative = m.conserves_energy_without_inputs &&
+  bool conservative = m.conserves_energy_without_inputs && !problem.input_signal &&
                       std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
   if (!o.csv.empty()) {
     if (std::string failure = write_file_atomically(o.csv, runtime::trajectory_csv(m, result.trajectory)); !failure.empty()) {
@@ -165,12 +216,7 @@ int simulate_model(const SimulationOptions& o) {
       return exit_user_error;
     }
   }
-  if (!o.plot.empty()) {
-    if (std::string failure = runtime::draw_charts(m, result.trajectory, o.plot, conservative); !failure.empty())
-      std::cerr << "eomgen: warning: no chart: " << failure << "\n";
-    else
-      std::cerr << fmt::format("eomgen: charts in {}{}\n", o.plot, conservative ? " and " + runtime::energy_chart_path(o.plot) : "");
-  }
+  if (!o.plot.empty()) draw_all_charts(o, m, result.trajectory, conservative);
   print_summary(settings, m, result, conservative, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
     std::cerr << fmt::format("eomgen: the simulation failed: {}\n", result.failure);
@@ -205,8 +251,15 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   cmd->add_option("--baumgarte-beta", o.settings.baumgarte_beta, "Baumgarte's stiffness gain [1/s] (default: the model's, 10)");
   cmd->add_option("--set", o.sets, "Parameter or input value, one per flag: --set m=2.5")->allow_extra_args(false);
   cmd->add_option("--initial", o.initials, "Initial value, one per flag: --initial phi=0.3 --initial 'der(phi)=1'")->allow_extra_args(false);
+  cmd->add_option("--input", o.input_signals, "An input as a function of time, one per flag: --input 'tau=0.5*sin(2*t)' "
+                  "(t and the parameters may appear)")->allow_extra_args(false);
+  cmd->add_option("--input-file", o.input_file, "Inputs from a CSV table: header t,NAME,..., rows with increasing t; "
+                  "linear interpolation, end values held");
   cmd->add_option("-o,--output", o.csv, "Trajectory CSV file");
-  cmd->add_option("--plot", o.plot, "Chart of the coordinates (PNG); conservative models also get NAME_energy.png");
+  cmd->add_option("--plot", o.plot, "Chart of the coordinates (PNG); conservative models also get NAME_energy.png, "
+                  "models with outputs NAME_outputs.png");
+  cmd->add_option("--plot-xy", o.plot_xy, "Also NAME_xy.png: Y against X, two columns of the trajectory (coordinates, "
+                  "velocities, outputs, energy, t): --plot-xy tip_x,tip_y");
 }
 
 Command add_simulate_command(CLI::App& app) {

@@ -107,7 +107,8 @@ class Ida : public Stepper {
     N_VConst(0.0, yp_);
     std::copy(x0.begin(), x0.end(), y);
     std::vector<double> xdot(2 * n_);
-    const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+    std::vector<double> scratch;
+    const double* u = p.inputs_at(t, scratch);
     m.rhs_stabilized(t, x0.data(), u, p.parameters.data(), 0, 0, xdot.data());
     std::copy(xdot.begin(), xdot.end(), yp);
     m.multipliers(t, x0.data(), u, p.parameters.data(), y + 2 * n_);
@@ -120,7 +121,8 @@ class Ida : public Stepper {
   int residual(double t, const double* y, const double* yp, double* r) {
     const Problem& p = f_.problem();
     const eomgen_model_abi& m = *p.model;
-    const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+    std::vector<double> scratch;
+    const double* u = p.inputs_at(t, scratch);
     const double *lambda = y + 2 * n_, *mu = lambda + mc_;
     mass_.resize(n_ * n_);
     forcing_.resize(n_);

@@ -7,7 +7,7 @@ namespace eomgen::runtime {
 int RightHandSide::operator()(double t, const double* x, double* xdot) {
   ++evaluations_;
   const eomgen_model_abi& m = *p_.model;
-  p_.model->rhs_stabilized(t, x, p_.inputs.empty() ? nullptr : p_.inputs.data(), p_.parameters.data(), alpha_, beta_, xdot);
+  p_.model->rhs_stabilized(t, x, p_.inputs_at(t, inputs_), p_.parameters.data(), alpha_, beta_, xdot);
   for (std::size_t i = 0; i < m.num_states; ++i)
     if (!std::isfinite(xdot[i])) {
       if (!non_finite_) {
@@ -24,7 +24,7 @@ void quiet_sundials_messages(int, const char*, const char*, char*, void*) {}
 
 int RightHandSide::jacobian(double t, const double* x, double* J) {
   const eomgen_model_abi& m = *p_.model;
-  m.jacobian_state_stabilized(t, x, p_.inputs.empty() ? nullptr : p_.inputs.data(), p_.parameters.data(), alpha_, beta_, J);
+  m.jacobian_state_stabilized(t, x, p_.inputs_at(t, inputs_), p_.parameters.data(), alpha_, beta_, J);
   for (std::size_t i = 0; i < m.num_states * m.num_states; ++i)
     if (!std::isfinite(J[i])) return 1;
   return 0;

@@ -36,6 +36,7 @@ class RightHandSide {
   bool non_finite_ = false;
   double non_finite_time_ = 0;
   std::vector<double> non_finite_state_;
+  std::vector<double> inputs_;  // u(t) when the inputs vary in time
 };
 
 /// SUNDIALS' own messages are dropped: a failure is reported once, by the simulation.

@@ -28,4 +28,20 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
 /// The path of the energy chart that belongs to `png_path`.
 std::string energy_chart_path(const std::string& png_path);
 
+/// The paths of the outputs chart (NAME_outputs.png) and the x–y chart (NAME_xy.png).
+std::string outputs_chart_path(const std::string& png_path);
+std::string xy_chart_path(const std::string& png_path);
+
+/// The values over the run of a column of the trajectory CSV by its header name (t, a
+/// coordinate, a velocity, energy, an output); false when there is none of that name.
+bool trajectory_column(const eomgen_model_abi& model, const Trajectory& trajectory, const std::string& name,
+                       std::vector<double>& out);
+
+/// The model's outputs over time.
+std::string draw_outputs_chart(const eomgen_model_abi& model, const Trajectory& trajectory, const std::string& png_path);
+
+/// `y_name` against `x_name` (equal scales), with the start marked.
+std::string draw_xy_chart(const eomgen_model_abi& model, const Trajectory& trajectory, const std::string& x_name,
+                          const std::string& y_name, const std::string& png_path);
+
 }  // namespace eomgen::runtime

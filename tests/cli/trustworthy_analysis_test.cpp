@@ -418,5 +418,80 @@ potential = "k*exp(-t)*x^2/2"
   EXPECT_NE(sweep.err.find("depend on time"), std::string::npos) << sweep.err;
 }
 
+const char* const pushed_mass = R"toml(
+[model]
+name = "pushed_mass"
+title = "a free mass pushed by an input force"
+[parameters]
+m = 2.0
+[inputs]
+F = 0.0
+[coordinates]
+x = 0.0
+[[particles]]
+name = "body"
+mass = "m"
+position = ["x", "0", "0"]
+[[forces]]
+at = ["x", "0", "0"]
+force = ["F", "0", "0"]
+)toml";
+
+double final_position(const std::string& csv) {
+  auto rows = read_numeric_csv(csv);
+  return rows.empty() ? NAN : rows.back()[1];
+}
+
+TEST(Inputs, AFunctionOfTimeDrivesTheModel) {
+  // m x'' = F0 sin(w t) from rest: x(t) = F0 / (m w²) (w t − sin w t)
+  std::string model = write_model("pushed_mass", pushed_mass), csv = temporary_directory() + "/run.csv";
+  CommandOutput r = run_eomgen("simulate '" + model + "' --input 'F=3*sin(2*t)/m*m' --t-end 2 --rtol 1e-11 --atol 1e-13 -o '" +
+                               csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(final_position(csv), 3.0 / (2.0 * 4.0) * (4.0 - std::sin(4.0)), 1e-9);
+  CommandOutput unknown = run_eomgen("simulate '" + model + "' --input 'G=1'");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("did you mean 'F'"), std::string::npos) << unknown.err;
+  CommandOutput broken = run_eomgen("simulate '" + model + "' --input 'F=sin(2*t'");
+  EXPECT_EQ(broken.status, 2);
+  EXPECT_NE(broken.err.find("--input:1:"), std::string::npos) << broken.err;
+  CommandOutput state = run_eomgen("simulate '" + model + "' --input 'F=x'");
+  EXPECT_EQ(state.status, 2) << "an input signal depends on t and the parameters only";
+}
+
+TEST(Inputs, ATableIsInterpolatedLinearly) {
+  // F rises linearly from 0 to 1 over the first second, then stays: m = 2, x(2) = (1/6 + 1/2 + 1/2)/m
+  std::string dir = temporary_directory();
+  std::ofstream(dir + "/u.csv") << "t,F\n0,0\n1,1\n5,1\n";
+  std::string model = write_model("pushed_mass", pushed_mass), csv = dir + "/run.csv";
+  CommandOutput r = run_eomgen("simulate '" + model + "' --input-file '" + dir + "/u.csv' --t-end 2 --rtol 1e-11 "
+                               "--atol 1e-13 -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(final_position(csv), (1.0 / 6 + 0.5 + 0.5) / 2, 1e-9);
+  std::ofstream(dir + "/bad.csv") << "t,G\n0,0\n";
+  CommandOutput bad = run_eomgen("simulate '" + model + "' --input-file '" + dir + "/bad.csv'");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("bad.csv:1: column 2 'G' is not an input"), std::string::npos) << bad.err;
+  std::ofstream(dir + "/short.csv") << "t,F\n0,0\n1,1\n";
+  CommandOutput held = run_eomgen("simulate '" + model + "' --input-file '" + dir + "/short.csv' --t-end 2");
+  EXPECT_EQ(held.status, 0);
+  EXPECT_NE(held.err.find("ends at t = 1, before --t-end 2: its last values are held"), std::string::npos) << held.err;
+}
+
+TEST(Charts, OutputsAndAnXYChart) {
+  std::string dir = temporary_directory();
+  CommandOutput r = run_eomgen("simulate '" + model_path("double_pendulum") + "' --t-end 2 --plot '" + dir +
+                               "/dp.png' --plot-xy tip_x,tip_y");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* chart : {"/dp.png", "/dp_energy.png", "/dp_outputs.png", "/dp_xy.png"})
+    EXPECT_GT(read_file(dir + chart).size(), 10000u) << chart;
+  CommandOutput wrong = run_eomgen("simulate '" + model_path("double_pendulum") + "' --plot '" + dir +
+                                   "/x.png' --plot-xy tip_x,tipy");
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find("did you mean 'tip_y'"), std::string::npos) << wrong.err;
+  EXPECT_EQ(run_eomgen("simulate '" + model_path("double_pendulum") + "' --plot-xy tip_x,tip_y").status, 2)
+      << "the x-y chart is named after --plot";
+}
+
 }  // namespace
 }  // namespace eomgen::test
