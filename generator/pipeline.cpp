@@ -5,10 +5,31 @@
 #include "derive/methods.hpp"
 #include "kinematics/mechanics.hpp"
 #include "parse/model_file.hpp"
+#include "symbolic/trig_orientation.hpp"
 
 namespace eomgen {
 
 namespace {
+
+// every derived expression with its trigonometric arguments in one orientation, so that
+// the same system written in two ways prints the same (symbolic/trig_orientation.hpp)
+void orient(Equations& e) {
+  auto each = [](GiNaC::ex& x) { x = orient_trigonometric_arguments(x); };
+  for (unsigned i = 0; i < e.mass_matrix.rows(); ++i)
+    for (unsigned j = 0; j < e.mass_matrix.cols(); ++j) each(e.mass_matrix(i, j));
+  for (GiNaC::ex& x : e.forcing) each(x);
+  each(e.kinetic_energy), each(e.potential_energy), each(e.dissipation), each(e.acceleration_energy);
+  for (NamedSymbolic& o : e.outputs) each(o.expression);
+  for (NamedSymbolic& p : e.pseudo_velocity_definitions) each(p.expression);
+  for (GiNaC::ex& x : e.coordinate_rates) each(x);
+  ConstraintSet& c = e.constraints;
+  for (GiNaC::ex& x : c.position) each(x);
+  for (GiNaC::ex& x : c.bias) each(x);
+  for (GiNaC::ex& x : c.acceleration_bias) each(x);
+  for (unsigned i = 0; i < c.jacobian.rows(); ++i)
+    for (unsigned j = 0; j < c.jacobian.cols(); ++j) each(c.jacobian(i, j));
+}
+
 Derivation derive(const ModelFile& file, Diagnostics diagnostics) {
   Derivation result;
   if (diagnostics.empty()) {
@@ -20,6 +41,7 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics) {
         Mechanics mechanics = compute_mechanics(model);
         try {
           result.equations = (*find_method(model.method))(model, mechanics);
+          orient(*result.equations);
         } catch (const std::invalid_argument& why) {
           diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", why.what(),
                             "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
