@@ -8,6 +8,7 @@
 
 #include "derive/constraints.hpp"
 #include "derive/methods.hpp"
+#include "symbolic/trig_rational.hpp"
 #include "derive/pseudo_velocities.hpp"
 
 namespace eomgen {
@@ -161,13 +162,13 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   for (unsigned c = 0; c < k; ++c) {
     ex dS = S.diff(a.accelerations[c]);
     for (unsigned d = c; d < k; ++d) {
-      e.mass_matrix(c, d) = tidy(dS.diff(a.accelerations[d]), motion);
+      e.mass_matrix(c, d) = simplify_trig_rational(tidy(dS.diff(a.accelerations[d]), motion), motion);
       e.mass_matrix(d, c) = e.mass_matrix(c, d);
     }
     ex force = -dS.subs(no_acceleration);
     for (unsigned j = 0; j < n; ++j)
       if (!a.W(j, c).is_zero()) force += a.W(j, c) * applied[j];
-    e.forcing[c] = tidy(force, motion);
+    e.forcing[c] = simplify_trig_rational(tidy(force, motion), motion);
   }
   e.acceleration_energy = terms_with(tidy(S, motion), a.accelerations);
   e.kinetic_energy = tidy(kinetic_energy(mech, a), motion);
