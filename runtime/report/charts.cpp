@@ -10,12 +10,14 @@
 
 namespace eomgen::runtime {
 
-std::string energy_chart_path(const std::string& png_path) {
+std::string chart_path(const std::string& png_path, const std::string& suffix) {
   std::string base = png_path.size() > 4 && png_path.substr(png_path.size() - 4) == ".png"
                          ? png_path.substr(0, png_path.size() - 4)
                          : png_path;
-  return base + "_energy.png";
+  return base + suffix + ".png";
 }
+
+std::string energy_chart_path(const std::string& png_path) { return chart_path(png_path, "_energy"); }
 
 
 std::string draw_charts(const eomgen_model_abi& m, const Trajectory& trajectory, const std::string& png_path,

@@ -25,6 +25,9 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
                                const std::string& title, const std::vector<double>& symbolic_margin,
                                const std::string& png_path);
 
+/// FILE.png with `suffix` before the extension: the companion charts of `png_path`.
+std::string chart_path(const std::string& png_path, const std::string& suffix);
+
 /// The path of the energy chart that belongs to `png_path`.
 std::string energy_chart_path(const std::string& png_path);
 

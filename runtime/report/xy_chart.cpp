@@ -11,19 +11,8 @@
 
 namespace eomgen::runtime {
 
-namespace {
-
-std::string with_suffix(const std::string& png_path, const std::string& suffix) {
-  std::string base = png_path.size() > 4 && png_path.substr(png_path.size() - 4) == ".png"
-                         ? png_path.substr(0, png_path.size() - 4)
-                         : png_path;
-  return base + suffix + ".png";
-}
-
-}  // namespace
-
-std::string outputs_chart_path(const std::string& png_path) { return with_suffix(png_path, "_outputs"); }
-std::string xy_chart_path(const std::string& png_path) { return with_suffix(png_path, "_xy"); }
+std::string outputs_chart_path(const std::string& png_path) { return chart_path(png_path, "_outputs"); }
+std::string xy_chart_path(const std::string& png_path) { return chart_path(png_path, "_xy"); }
 
 bool trajectory_column(const eomgen_model_abi& m, const Trajectory& tr, const std::string& name, std::vector<double>& out) {
   out.clear();
