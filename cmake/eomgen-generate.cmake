@@ -44,3 +44,34 @@ function(eomgen_generate)
   endforeach()
   target_include_directories(${EOMGEN_TARGET} PRIVATE "${EOMGEN_OUTPUT_DIR}")
 endfunction()
+
+# eomgen_add_regression_test(NAME <test> MODEL <model.toml> BASELINE <model.json>)
+#
+# A CTest test that derives the model and compares its equations with the committed
+# baseline by `eomgen diff BASELINE MODEL`: it passes when they are identical,
+# equivalent or give the same motion, and fails with the diff report (the entries
+# that changed, old and new, and by how much) when they differ. The baseline is the
+# JSON of `eomgen derive MODEL --format json`; after an intended change refresh it
+# with the target <test>_refresh (`cmake --build build --target <test>_refresh`),
+# review `git diff` of the baseline, and commit it.
+function(eomgen_add_regression_test)
+  cmake_parse_arguments(EOMGEN "" "NAME;MODEL;BASELINE" "" ${ARGN})
+  foreach(required NAME MODEL BASELINE)
+    if(NOT EOMGEN_${required})
+      message(FATAL_ERROR "eomgen_add_regression_test: ${required} is required")
+    endif()
+  endforeach()
+  if(EOMGEN_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "eomgen_add_regression_test: unknown arguments ${EOMGEN_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT TARGET eomgen::eomgen)
+    message(FATAL_ERROR "eomgen_add_regression_test: the eomgen::eomgen executable is not known; call find_package(eomgen) first")
+  endif()
+  get_filename_component(model "${EOMGEN_MODEL}" ABSOLUTE)
+  get_filename_component(baseline "${EOMGEN_BASELINE}" ABSOLUTE)
+  add_test(NAME ${EOMGEN_NAME} COMMAND eomgen::eomgen diff "${baseline}" "${model}")
+  add_custom_target(${EOMGEN_NAME}_refresh
+    COMMAND eomgen::eomgen derive "${model}" --format json -o "${baseline}"
+    COMMENT "eomgen: refreshing the baseline ${baseline} from ${model}"
+    VERBATIM)
+endfunction()

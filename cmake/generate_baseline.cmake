@@ -7,7 +7,7 @@ cmake_minimum_required(VERSION 3.25)
 #   cmake ... -DCHECK_AGAINST=generated -P generate_baseline.cmake   # regression test
 #
 # With CHECK_AGAINST, OUT_DIR is a scratch folder; any difference from the
-# committed files fails, with a unified diff of the equations that changed.
+# committed files fails, with the `eomgen diff` report of the equations that changed.
 foreach(required EOMGEN MODELS_DIR OUT_DIR)
   if(NOT DEFINED ${required})
     message(FATAL_ERROR "generate_baseline.cmake needs -D${required}=...")
@@ -45,10 +45,17 @@ foreach(model_file IN LISTS models)
         math(EXPR failures "${failures} + 1")
         continue()
       endif()
-      execute_process(COMMAND diff -u "${CHECK_AGAINST}/${name}.${ext}" "${OUT_DIR}/${name}.${ext}"
-                      RESULT_VARIABLE differs OUTPUT_VARIABLE difference)
+      execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${CHECK_AGAINST}/${name}.${ext}" "${OUT_DIR}/${name}.${ext}"
+                      RESULT_VARIABLE differs)
       if(NOT differs EQUAL 0)
-        message(NOTICE "generated/${name}.${ext} is out of date; the equations that changed:\n${difference}")
+        if(ext STREQUAL "json")
+          # the equations that changed, entry by entry, with old and new and the size of the difference
+          execute_process(COMMAND "${EOMGEN}" diff "${CHECK_AGAINST}/${name}.json" "${OUT_DIR}/${name}.json"
+                          OUTPUT_VARIABLE report ERROR_VARIABLE report_errors)
+          message(NOTICE "generated/${name}.json is out of date:\n${report}${report_errors}")
+        else()
+          message(NOTICE "generated/${name}.${ext} is out of date (the equations are compared in the report of ${name}.json)")
+        endif()
         message(SEND_ERROR "generated/${name}.${ext} differs from what eomgen derives now")
         math(EXPR failures "${failures} + 1")
       endif()

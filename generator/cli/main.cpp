@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("eomgen ") + eomgen::version_string);
   app.require_subcommand(1);
   std::vector<Command> commands = {add_derive_command(app), add_generate_command(app), add_simulate_command(app), add_stability_command(app),
-                                  add_sweep_command(app), add_bench_command(app), add_run_command(app)};
+                                  add_sweep_command(app), add_bench_command(app), add_run_command(app),
+                                  add_diff_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -15,6 +15,26 @@ foreach(step
   endif()
 endforeach()
 
+# the regression test passes on the model of its baseline, and fails, with the diff
+# report, on a model whose gravity term changed
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --output-on-failure WORKING_DIRECTORY "${WORK_DIR}/consumer"
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the regression test failed on its own baseline:\n${out}\n${err}")
+endif()
+file(READ "${SOURCE_DIR}/swing.toml" swing)
+string(REPLACE "\"-l*cos(phi)\"" "\"-1.01*l*cos(phi)\"" changed "${swing}")
+file(WRITE "${WORK_DIR}/changed_swing.toml" "${changed}")
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/consumer -DSWING_MODEL=${WORK_DIR}/changed_swing.toml
+                OUTPUT_QUIET)
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --output-on-failure WORKING_DIRECTORY "${WORK_DIR}/consumer"
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(FIND "${out}" "different: V" names_the_entry)
+if(status EQUAL 0 OR names_the_entry EQUAL -1)
+  message(FATAL_ERROR "the regression test did not fail on a changed model (status ${status}):\n${out}\n${err}")
+endif()
+message(STATUS "the regression test fails on a changed model:\n${out}")
+
 # the installed eomgen finds its default model in the install tree's share folder, not in
 # the source tree it was built from (run from a folder without models/)
 file(MAKE_DIRECTORY "${WORK_DIR}/elsewhere")

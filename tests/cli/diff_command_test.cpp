@@ -1,0 +1,62 @@
+// `eomgen diff` on the command line: exit statuses like diff and cmp, the JSON
+// report's keys, located mistakes, and --self against an eomgen executable.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+std::string changed_pendulum(const std::string& from, const std::string& to) {
+  std::string text = read_file(model_path("pendulum"));
+  text.replace(text.find(from), from.size(), to);
+  std::string path = temporary_directory() + "/pendulum.toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(DiffCommand, ExitStatusesLikeDiff) {
+  std::string baseline = std::string(EOMGEN_SOURCE_DIR) + "/generated/pendulum.json";
+  CommandOutput same = run_eomgen("diff '" + baseline + "' '" + model_path("pendulum") + "'");
+  EXPECT_EQ(same.status, 0) << same.err;
+  EXPECT_NE(same.out.find(": identical\n"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find("5 entries compared: 5 identical"), std::string::npos) << same.out;
+  CommandOutput changed = run_eomgen("diff '" + baseline + "' '" + changed_pendulum("\"-l*cos(phi)\"", "\"-l*cos(phi) + l/10\"") + "'");
+  EXPECT_EQ(changed.status, 1) << changed.err;
+  EXPECT_NE(changed.out.find("different: V"), std::string::npos) << changed.out;
+  EXPECT_NE(changed.out.find("    old: -g*l*m*cos(phi)\n    new: "), std::string::npos) << changed.out;
+  CommandOutput missing = run_eomgen("diff '" + baseline + "' /nonexistent/model.toml");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/model.toml"), std::string::npos) << missing.err;
+  EXPECT_EQ(run_eomgen("diff '" + baseline + "'").status, 2) << "two inputs are needed";
+  EXPECT_EQ(run_eomgen("diff '" + baseline + "' '" + baseline + "' --rename k").status, 2);
+}
+
+TEST(DiffCommand, JsonHasTheDocumentedKeys) {
+  CommandOutput r = run_eomgen("diff '" + model_path("pendulum") + "' '" + changed_pendulum("g = 9.81", "g = 9.80665") +
+                               "' --format json");
+  EXPECT_EQ(r.status, 1);
+  for (const char* key : {"\"verdict\": \"different\"", "\"old\":", "\"new\":", "\"symbols\": {\"added\": [], \"removed\": [], "
+                          "\"renamed\": [], \"defaults_changed\": [{\"name\": \"g\", \"old\": 9.8100000000000005, "
+                          "\"new\": 9.8066499999999994}]}", "\"entries\": [{\"entry\": \"M[0][0]\", \"status\": \"identical\", "
+                          "\"decided_by\": \"text\"", "\"max_abs_difference\"", "\"max_rel_difference\""})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one JSON object on one line";
+}
+
+TEST(DiffCommand, SelfComparesTwoExecutablesModelByModel) {
+  // the same executable on both sides: every model derives identically, one line each
+  std::string dir = temporary_directory();
+  for (const char* name : {"pendulum", "knife_edge", "mathieu"})
+    std::ofstream(dir + "/" + name + ".toml") << read_file(model_path(name));
+  CommandOutput r = run_eomgen(std::string("diff --self '") + EOMGEN_EXECUTABLE + "' '" + dir + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* name : {"knife_edge", "mathieu", "pendulum"})
+    EXPECT_NE(r.out.find(dir + "/" + name + ".toml: identical\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("3 models compared"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace eomgen::test

@@ -1,0 +1,150 @@
+// Comparing derivations without the command line: the levels that decide each entry,
+// renamed symbols, changed defaults, and the same motion from two derivation methods.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "compare/equation_diff.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen {
+namespace {
+
+const char* const pendulum_by_energy = R"toml(
+[model]
+name = "pendulum"
+title = "the pendulum by its energies"
+[parameters]
+m = 1.0
+l = 1.0
+g = 9.81
+d = 0.0
+[coordinates]
+phi = { initial = 0.5, rate = 0.0 }
+[energy]
+kinetic = "m*l^2*der(phi)^2/2"
+potential = "POTENTIAL"
+dissipation = "d*der(phi)^2/2"
+)toml";
+
+std::string write(const std::string& name, std::string text, const std::string& from = "", const std::string& to = "") {
+  if (!from.empty()) text.replace(text.find(from), from.size(), to);
+  std::string path = test::temporary_directory() + "/" + name + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string pendulum_file() { return test::read_file(test::model_path("pendulum")); }
+
+EquationDiff compare(const std::string& old_path, const std::string& new_path, DiffOptions options = {}) {
+  Diagnostics d;
+  auto a = read_derivation(old_path, d), b = read_derivation(new_path, d);
+  EXPECT_TRUE(d.empty()) << d.format();
+  if (!a || !b) return {};
+  EquationDiff out = compare_derivations(*a, *b, options, d);
+  EXPECT_TRUE(d.empty()) << d.format();
+  return out;
+}
+
+const EntryComparison* entry(const EquationDiff& d, const std::string& name) {
+  for (const EntryComparison& c : d.entries)
+    if (c.entry == name) return &c;
+  return nullptr;
+}
+
+TEST(EquationDiff, TheSameSystemWrittenThreeOtherWays) {
+  std::string original = test::model_path("pendulum");
+  // the energies instead of a particle in gravity
+  EquationDiff energy = compare(original, write("energy", pendulum_by_energy, "POTENTIAL", "-m*g*l*cos(phi)"));
+  EXPECT_EQ(energy.verdict, "identical");
+  // terms reordered
+  EquationDiff reordered = compare(original, write("reordered", pendulum_by_energy, "POTENTIAL", "-cos(phi)*l*g*m + 0"));
+  EXPECT_EQ(reordered.verdict, "identical");
+  // sin(phi) through the double-angle identity: equal only by trigonometry, decided numerically
+  EquationDiff identity = compare(original, write("identity", pendulum_file(), "\"l*sin(phi)\"", "\"2*l*sin(phi/2)*cos(phi/2)\""));
+  EXPECT_EQ(identity.verdict, "equivalent");
+  const EntryComparison* m = entry(identity, "M[0][0]");
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->status, "equivalent");
+  EXPECT_EQ(m->decided_by, "numeric");
+  EXPECT_EQ(entry(identity, "V")->decided_by, "text");
+}
+
+TEST(EquationDiff, OneChangedCoefficientNamesExactlyTheEntriesItChanges) {
+  EquationDiff d = compare(write("before", pendulum_by_energy, "POTENTIAL", "-m*g*l*cos(phi)"),
+                           write("after", pendulum_by_energy, "POTENTIAL", "-1.5*m*g*l*cos(phi)"));
+  EXPECT_EQ(d.verdict, "different");
+  std::vector<std::string> changed;
+  for (const EntryComparison& c : d.entries)
+    if (c.status == "different") changed.push_back(c.entry);
+  EXPECT_EQ(changed, (std::vector<std::string>{"f[0]", "V"}));
+  const EntryComparison* v = entry(d, "V");
+  EXPECT_GT(v->max_abs_difference, 0);
+  EXPECT_EQ(v->old_text, "-g*l*m*cos(phi)");
+  EXPECT_EQ(v->new_text, "-3*g*l*m*cos(phi)/2");
+}
+
+TEST(EquationDiff, RenamedParameterAddedOutputChangedDefault) {
+  std::string original = test::model_path("pendulum");
+  std::string renamed = write("renamed", pendulum_file(), "mass     = \"m\"", "mass     = \"bob_mass\"");
+  std::string text = test::read_file(renamed);
+  text.replace(text.find("\nm = 1.0"), 8, "\nbob_mass = 1.0");
+  std::ofstream(renamed) << text;
+  EXPECT_EQ(compare(original, renamed).verdict, "different") << "without --rename, m was removed and bob_mass added";
+  DiffOptions options;
+  options.renames = {{"m", "bob_mass"}};
+  EquationDiff with_rename = compare(original, renamed, options);
+  EXPECT_EQ(with_rename.verdict, "identical");
+  ASSERT_EQ(with_rename.renamed.size(), 1u);
+  EquationDiff output = compare(original, write("output", pendulum_file() + "\n[outputs]\nbob_x = \"l*sin(phi)\"\n"));
+  EXPECT_EQ(output.verdict, "different");
+  EXPECT_EQ(output.added, (std::vector<std::string>{"output bob_x"}));
+  EquationDiff g = compare(original, write("gravity", pendulum_file(), "g = 9.81", "g = 9.80665"));
+  EXPECT_EQ(g.verdict, "different");
+  ASSERT_EQ(g.defaults_changed.size(), 1u);
+  EXPECT_EQ(g.defaults_changed[0].name, "g");
+  EXPECT_EQ(g.defaults_changed[0].new_value, 9.80665);
+}
+
+TEST(EquationDiff, LagrangeTwoAgainstAppellIsTheSameMotion) {
+  // Appell's equations in the pseudo-velocity w = l der(phi): M and f are scaled, q'' is the same
+  std::string appell = write("appell", pendulum_file() + "\n[pseudo_velocities]\nw = \"l*der(phi)\"\n", "title = ",
+                             "method = \"appell\"\ntitle = ");
+  EquationDiff d = compare(test::model_path("pendulum"), appell);
+  EXPECT_EQ(d.verdict, "same_motion") << d.motion;
+  EXPECT_EQ(entry(d, "M[0][0]")->status, "different");
+  // and a different system in Appell's form is not
+  std::string heavier = write("heavier", pendulum_file() + "\n[pseudo_velocities]\nw = \"l*der(phi)\"\n", "title = ",
+                              "method = \"appell\"\ntitle = ");
+  std::string text = test::read_file(heavier);
+  text.replace(text.find("g = 9.81"), 8, "g = 9.81\nk = 2.0");
+  text.replace(text.find("dissipation = "), 14, "potential = \"k*phi^2/2\"\ndissipation = ");
+  std::ofstream(heavier) << text;
+  EXPECT_EQ(compare(test::model_path("pendulum"), heavier).verdict, "different");
+}
+
+TEST(EquationDiff, EveryCommittedBaselineIsIdenticalToItsModel) {
+  for (const char* name : {"pendulum", "double_pendulum", "rolling_disk", "slider_crank", "heavy_symmetric_top", "mathieu"}) {
+    EquationDiff d = compare(std::string(EOMGEN_SOURCE_DIR) + "/generated/" + name + ".json", test::model_path(name));
+    EXPECT_EQ(d.verdict, "identical") << name;
+    EXPECT_FALSE(d.entries.empty()) << name;
+  }
+}
+
+TEST(EquationDiff, InputsThatAreNotDerivationsAreLocatedMistakes) {
+  std::string dir = test::temporary_directory();
+  std::ofstream(dir + "/other.json") << "{\n  \"name\": \"not a derivation\"\n}\n";
+  std::ofstream(dir + "/broken.json") << "{\n  \"model\": \"x\",\n  \"method\" \"lagrange2\"\n}\n";
+  Diagnostics d;
+  EXPECT_FALSE(read_derivation(dir + "/other.json", d));
+  EXPECT_NE(d.format().find("other.json:1:1: error: not a derivation: the key \"model\" is missing"), std::string::npos) << d.format();
+  Diagnostics syntax;
+  EXPECT_FALSE(read_derivation(dir + "/broken.json", syntax));
+  EXPECT_NE(syntax.format().find("broken.json:3:12: error: not valid JSON: ':' was expected"), std::string::npos) << syntax.format();
+  Diagnostics missing;
+  EXPECT_FALSE(read_derivation(dir + "/nothing.json", missing));
+  EXPECT_NE(missing.format().find("cannot be read"), std::string::npos) << missing.format();
+}
+
+}  // namespace
+}  // namespace eomgen
