@@ -30,6 +30,12 @@ TEST(DiffCommand, ExitStatusesLikeDiff) {
   CommandOutput missing = run_eomgen("diff '" + baseline + "' /nonexistent/model.toml");
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("/nonexistent/model.toml"), std::string::npos) << missing.err;
+  std::string other = temporary_directory() + "/other.json";
+  std::ofstream(other) << "{\n  \"name\": \"not a derivation\"\n}\n";
+  CommandOutput malformed = run_eomgen("diff '" + other + "' '" + baseline + "'");
+  EXPECT_EQ(malformed.status, 2);
+  EXPECT_NE(malformed.err.find("other.json:1:1: error: not a derivation"), std::string::npos) << malformed.err;
+  EXPECT_EQ(malformed.out, "");
   EXPECT_EQ(run_eomgen("diff '" + baseline + "'").status, 2) << "two inputs are needed";
   EXPECT_EQ(run_eomgen("diff '" + baseline + "' '" + baseline + "' --rename k").status, 2);
 }
