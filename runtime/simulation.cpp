@@ -36,6 +36,9 @@ bool is_dae_integrator(const std::string& name) { return name == "ida"; }
 std::string integrator_refusal(const eomgen_model_abi& m, const std::string& name) {
   if (is_dae_integrator(name) && m.num_multipliers == 0)
     return "the integrator ida solves Lagrange I models (method = \"lagrange1\") only";
+  if (name == "verlet" && std::string(m.method) == "hamilton")
+    return "this Störmer–Verlet works on x = [q; q']; the state of Hamilton's equations is [q; p]: use rk4 or an "
+           "adaptive integrator";
   if (name == "verlet" && m.num_coordinates != m.num_velocities)
     return "Störmer–Verlet needs q' = v; the state of Appell's equations holds pseudo-velocities: use rk4 or an "
            "adaptive integrator";

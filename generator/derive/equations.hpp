@@ -45,6 +45,7 @@ struct Equations {
   std::vector<GiNaC::realsymbol> coordinate_velocities;      // the model's der(q), when v are pseudo-velocities
   std::vector<NamedSymbolic> pseudo_velocity_definitions;    // s = Y q' + y, as given or chosen
   GiNaC::ex acceleration_energy;                             // S(q, s, s', t), without terms free of s'
+  GiNaC::ex hamiltonian;  // Hamilton: H(q, p, t); the velocities are then the momenta p, M = I and f = p'
   std::vector<GiNaC::realsymbol> pseudo_accelerations;       // s', as they appear in S
   std::size_t num_velocities() const { return symbols.velocities.size(); }
   bool uses_pseudo_velocities() const { return !coordinate_rates.empty(); }

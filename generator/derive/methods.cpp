@@ -54,14 +54,18 @@ std::optional<DerivationMethod> find_method(const std::string& name) {
   if (name == "lagrange2") return &derive_lagrange2;
   if (name == "lagrange1") return &derive_lagrange1;
   if (name == "appell") return &derive_appell;
+  if (name == "hamilton") return &derive_hamilton;
   return std::nullopt;
 }
 
 std::string method_refusal(const Model& model) {
   if (!find_method(model.method))
     return fmt::format("method \"{}\" is not available in this version of eomgen; use \"lagrange2\", "
-                       "\"lagrange1\" (constraints with multipliers) or \"appell\" (pseudo-velocities)",
+                       "\"lagrange1\" (constraints with multipliers), \"appell\" (pseudo-velocities) or \"hamilton\"",
                        model.method);
+  if (model.method == "hamilton" && !model.constraints.empty())
+    return "Hamilton's canonical equations here need independent coordinates and no constraints: use method = "
+           "\"lagrange1\" (multipliers) or \"appell\" (pseudo-velocities) for a constrained system";
   if (model.method == "lagrange2" && !model.constraints.empty()) {
     bool nonholonomic = false;
     for (const Constraint& c : model.constraints) nonholonomic = nonholonomic || !c.holonomic;

@@ -21,6 +21,9 @@ Equations derive_lagrange1(const Model& model, const Mechanics& mechanics);
 /// with the reason when the pseudo-velocities do not determine the velocities.
 Equations derive_appell(const Model& model, const Mechanics& mechanics);
 
+/// Hamilton's canonical equations in x = [q; p] (Hiller §3.8); holonomic models.
+Equations derive_hamilton(const Model& model, const Mechanics& mechanics);
+
 /// The method a model file names, if this version of eomgen has it.
 std::optional<DerivationMethod> find_method(const std::string& name);
 

@@ -36,6 +36,16 @@ std::string constrained_text(const Equations& e) {
     out += "\n";
   }
   if (!e.uses_pseudo_velocities()) return out;
+  if (e.method == "hamilton") {
+    out += "\n# generalized momenta p = dT/d der(q), the Hamiltonian H(q,p,t) and the canonical equations\n";
+    for (const NamedSymbolic& p : e.pseudo_velocity_definitions) out += fmt::format("{} = {}\n", p.name, canonical_text(p.expression));
+    out += fmt::format("H = {}\n", canonical_text(e.hamiltonian));
+    for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j)
+      out += fmt::format("{} = {}\n", e.coordinate_velocities[j].get_name(), canonical_text(e.coordinate_rates[j]));
+    for (std::size_t j = 0; j < e.forcing.size(); ++j)
+      out += fmt::format("der({}) = {}\n", e.pseudo_velocity_definitions[j].name, canonical_text(e.forcing[j]));
+    return out;
+  }
   out += "\n# pseudo-velocities s = Y(q,t)*der(q) + y(q,t) and the kinematic equations\n";
   for (const NamedSymbolic& p : e.pseudo_velocity_definitions)
     out += fmt::format("s[{}] = {}\n", p.name, canonical_text(p.expression));
@@ -50,7 +60,8 @@ std::string constrained_text(const Equations& e) {
 
 std::string emit_canonical_text(const Equations& e) {
   const Symbols& s = e.symbols;
-  const char* form = e.uses_pseudo_velocities() ? "M(q,t)*der(s) = f(q,s,u,t), der(q) = W(q,t)*s + w(q,t)"
+  const char* form = e.method == "hamilton"         ? "der(q) = dH/dp, der(p) = -dH/dq + Q (M = I, f = der(p))"
+                     : e.uses_pseudo_velocities() ? "M(q,t)*der(s) = f(q,s,u,t), der(q) = W(q,t)*s + w(q,t)"
                      : e.has_multipliers        ? "M(q,t)*der(der(q)) = f(q,der(q),u,t) + C(q,t)^T*lambda"
                                                 : "M(q,t)*der(der(q)) = f(q,der(q),u,t)";
   std::string out = fmt::format("# equations of motion by eomgen {}: {}; do not edit\n", version_string, form);

@@ -281,7 +281,9 @@ std::string emit_cpp_header(const Equations& e) {
       "inline constexpr const char* method = \"{4}\";\n\n",
       version_string, source_name(e.source), e.model_name, e.title, e.method, e.degrees_of_freedom,
       e.degrees_of_freedom == 1 ? "" : "s", n, n + k, s.parameters.size(), s.inputs.size(), e.outputs.size(),
-      e.uses_pseudo_velocities()
+      e.method == "hamilton"
+          ? "Hamilton's canonical equations q' = dH/dp, p' = -dH/dq + Q, written as M = I, f = p'; state x = [q; p]."
+      : e.uses_pseudo_velocities()
           ? "Appell's equations M(q,t) s' = f(q, s, u, t) with q' = W(q,t) s + w(q,t); state x = [q; s]."
       : e.has_multipliers
           ? "Lagrange I: M(q,t) q'' = f(q, q', u, t) + C(q,t)^T lambda with C q'' + gamma = 0; state x = [q; q']."

@@ -43,6 +43,23 @@ std::string expression_array(const std::vector<GiNaC::ex>& v) {
   return "[" + s + "]";
 }
 
+// "momenta", "hamiltonian" and "canonical_equations" of Hamilton's equations; the kinematic
+// equations also as "coordinate_rates" and the momenta's definitions as "pseudo_velocities",
+// so that readers of Appell's form read these too
+std::string hamilton_json(const Equations& e) {
+  std::string momenta, rates, forces;
+  for (const NamedSymbolic& p : e.pseudo_velocity_definitions)
+    momenta += (momenta.empty() ? "" : ", ") + quote(p.name) + ": " + expression(p.expression);
+  for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j) {
+    rates += (rates.empty() ? "" : ", ") + quote(e.coordinate_velocities[j].get_name()) + ": " + expression(e.coordinate_rates[j]);
+    forces += (forces.empty() ? "" : ", ") + quote("der(" + e.pseudo_velocity_definitions[j].name + ")") + ": " +
+              expression(e.forcing[j]);
+  }
+  return ",\n  \"momenta\": {" + momenta + "}" + ",\n  \"hamiltonian\": " + expression(e.hamiltonian) +
+         ",\n  \"canonical_equations\": {" + rates + ", " + forces + "}" + ",\n  \"pseudo_velocities\": {" + momenta + "}" +
+         ",\n  \"coordinate_rates\": " + expression_array(e.coordinate_rates);
+}
+
 // "constraints" (every model that has them), "multipliers" (Lagrange I), and for
 // Appell's equations "pseudo_velocities", "coordinate_rates" and "acceleration_energy"
 std::string constrained_json(const Equations& e) {
@@ -66,6 +83,7 @@ std::string constrained_json(const Equations& e) {
     out += ",\n  \"multipliers\": " + string_array(names);
   }
   if (!e.uses_pseudo_velocities()) return out;
+  if (e.method == "hamilton") return out + hamilton_json(e);
   std::string definitions;
   for (const NamedSymbolic& p : e.pseudo_velocity_definitions)
     definitions += (definitions.empty() ? "" : ", ") + quote(p.name) + ": " + expression(p.expression);

@@ -88,7 +88,8 @@ std::string emit_latex(const Equations& e) {
   if (e.uses_pseudo_velocities()) {
     for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j)
       out += fmt::format(" \\\\\n\\dot {{{}}} &= {}", tex_name(e.symbols.coordinate_names[j]), tex(e.coordinate_rates[j]));
-    out += fmt::format(" \\\\\nS &= {}", tex(e.acceleration_energy));
+    if (e.method == "hamilton") out += fmt::format(" \\\\\nH &= {}", tex(e.hamiltonian));
+    else out += fmt::format(" \\\\\nS &= {}", tex(e.acceleration_energy));
   }
   if (e.has_linearization) {
     out += " \\\\\n% linearization M q'' + P q' + Q q = B u about a state with q'' = 0";

@@ -97,15 +97,22 @@ class Printer {
     return GiNaC::is_a<GiNaC::add>(sum_or_other) && negative_text(sum(sum_or_other).text);
   }
 
+  // GiNaC may evaluate the flipped factor back into −1 times the original (it pulls the
+  // sign out of (−a)^n its own way): then the factor stays as it is, or printing would
+  // flip it forever
   ex normalized_factor(const ex& f, GiNaC::numeric& coefficient) const {
     if (leads_negative(f)) {
+      ex flipped = -f;
+      if (!GiNaC::is_a<GiNaC::add>(flipped)) return f;
       coefficient = -coefficient;
-      return -f;
+      return flipped;
     }
     if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
         GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_integer() && leads_negative(f.op(0))) {
+      ex flipped = GiNaC::power(-f.op(0), f.op(1));
+      if (!GiNaC::is_a<GiNaC::power>(flipped)) return f;
       if (GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_odd()) coefficient = -coefficient;
-      return GiNaC::power(-f.op(0), f.op(1));
+      return flipped;
     }
     return f;
   }
@@ -161,7 +168,7 @@ class Printer {
       return {"1/" + wrap(positive, 3), 2};
     }
     if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer() &&
-        leads_negative(base)) {
+        leads_negative(base) && GiNaC::is_a<GiNaC::power>(ex(GiNaC::power(-base, exponent)))) {
       Printed flipped = power(GiNaC::power(-base, exponent));
       if (GiNaC::ex_to<GiNaC::numeric>(exponent).is_even()) return flipped;
       return {"-" + flipped.text, 2};

@@ -9,7 +9,9 @@ using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
 const double* inputs_of(const Problem& p) { return p.inputs.empty() ? nullptr : p.inputs.data(); }
 }  // namespace
 
-bool has_pseudo_velocities(const eomgen_model_abi& m) { return std::strcmp(m.method, "appell") == 0; }
+bool has_pseudo_velocities(const eomgen_model_abi& m) {
+  return std::strcmp(m.method, "appell") == 0 || std::strcmp(m.method, "hamilton") == 0;
+}
 
 std::vector<int> reduced_state(const eomgen_model_abi& m) {
   std::vector<int> kept;

@@ -12,7 +12,7 @@
 
 namespace eomgen::runtime {
 
-/// Appell models: the state holds pseudo-velocities, not q'.
+/// Appell and Hamilton models: the state holds pseudo-velocities or momenta, not q'.
 bool has_pseudo_velocities(const eomgen_model_abi& m);
 
 /// Indices into x of the reduced state: the non-cyclic coordinates, then all velocities.
