@@ -5,22 +5,13 @@
 
 #include <fmt/format.h>
 
+#include "emit/formats.hpp"
+
 namespace eomgen {
 
 namespace {
 
-std::string quote(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
+std::string quote(const std::string& s) { return json_quoted(s); }
 
 std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 

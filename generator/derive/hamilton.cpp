@@ -72,13 +72,13 @@ Equations derive_hamilton(const Model& model, const Mechanics& mech) {
   e.dissipation = compact(mech.dissipation.subs(velocity_of), motion);
   for (NamedSymbolic& o : e.outputs) o.expression = compact(o.expression.subs(velocity_of), motion);
   e.acceleration_energy = 0;
+  // the initial momenta from the initial state with the default parameters
+  GiNaC::exmap at = s.default_parameter_values();
+  for (unsigned j = 0; j < n; ++j) at[s.coordinates[j]] = s.initial_coordinates[j], at[s.velocities[j]] = s.initial_velocities[j];
+  at[s.time] = 0;
   e.symbols.initial_velocities.clear();
-  for (const NamedSymbolic& d : definitions) {
-    GiNaC::exmap at = s.default_parameter_values();
-    for (unsigned j = 0; j < n; ++j) at[s.coordinates[j]] = s.initial_coordinates[j], at[s.velocities[j]] = s.initial_velocities[j];
-    at[s.time] = 0;
+  for (const NamedSymbolic& d : definitions)
     e.symbols.initial_velocities.push_back(GiNaC::ex_to<GiNaC::numeric>(d.expression.subs(at).evalf()).to_double());
-  }
   return e;
 }
 

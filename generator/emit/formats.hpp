@@ -21,6 +21,9 @@ std::string emit_json(const Equations& equations);
 const std::vector<std::string>& equation_format_names();
 std::optional<EquationFormat> find_equation_format(const std::string& name);
 
+/// A JSON string literal of s, quotes and escapes included.
+std::string json_quoted(const std::string& s);
+
 /// Shortest text that reads back as the same double.
 std::string format_number(double value);
 
