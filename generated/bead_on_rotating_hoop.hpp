@@ -236,6 +236,27 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"jacobi_integral"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[0];
+  const T dq_theta = x[1];
+  const T p_m = p[0];
+  const T p_r = p[1];
+  const T p_g = p[2];
+  const T p_Omega = p[3];
+  out[0] = -cos(q_theta)*p_g*p_m*p_r + dq_theta*dq_theta*p_m*p_r*p_r/T(2) - p_Omega*p_Omega*p_m*p_r*p_r*sin(q_theta)*sin(q_theta)/T(2);
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x1, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

@@ -366,6 +366,32 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 3;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy", "p_alpha", "p_gamma"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_beta = x[1];
+  const T dq_alpha = x[3];
+  const T dq_beta = x[4];
+  const T dq_gamma = x[5];
+  const T p_A = p[0];
+  const T p_C = p[1];
+  const T c0 = cos(q_beta)*cos(q_beta);
+  const T c1 = sin(q_beta);
+  const T c2 = c1*c1;
+  out[0] = c0*dq_alpha*dq_alpha*p_A/T(2) + c1*dq_alpha*dq_gamma*p_C + c2*dq_alpha*dq_alpha*p_C/T(2) + dq_beta*dq_beta*p_A/T(2) + dq_gamma*dq_gamma*p_C/T(2);
+  out[1] = c0*dq_alpha*p_A + c1*dq_gamma*p_C + c2*dq_alpha*p_C;
+  out[2] = c1*dq_alpha*p_C + dq_gamma*p_C;
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

@@ -323,6 +323,31 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   y[0] = -cos(q_theta)*p_l;
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 2;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy", "p_x"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[1];
+  const T dq_x = x[2];
+  const T dq_theta = x[3];
+  const T p_mc = p[0];
+  const T p_m = p[1];
+  const T p_l = p[2];
+  const T p_g = p[3];
+  const T c0 = p_m + p_mc;
+  const T c1 = cos(q_theta);
+  out[0] = c0*dq_x*dq_x/T(2) + c1*dq_theta*dq_x*p_l*p_m - c1*p_g*p_l*p_m + dq_theta*dq_theta*p_l*p_l*p_m/T(2);
+  out[1] = c0*dq_x + c1*dq_theta*p_l*p_m;
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x2, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

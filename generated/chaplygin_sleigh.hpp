@@ -277,6 +277,23 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  const T s_v = x[3];
+  const T s_w = x[4];
+  const T p_m = p[0];
+  const T p_J = p[1];
+  const T p_a = p[2];
+  out[0] = (p_J + p_a*p_a*p_m)*s_w*s_w/T(2) + p_m*s_v*s_v/T(2);
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 1x3, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

@@ -240,6 +240,23 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   y[0] = atan2(q_x, -q_y);
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  const T q_y = x[1];
+  const T dq_x = x[2];
+  const T dq_y = x[3];
+  const T p_m = p[0];
+  const T p_g = p[2];
+  out[0] = dq_x*dq_x*p_m/T(2) + dq_y*dq_y*p_m/T(2) + p_g*p_m*q_y;
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 1x2, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

@@ -395,6 +395,23 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  const T s_omega_x = x[5];
+  const T s_omega_y = x[6];
+  const T s_omega_z = x[7];
+  const T p_m = p[0];
+  const T p_R = p[1];
+  out[0] = T(7)*p_R*p_R*p_m*s_omega_x*s_omega_x/T(10) + T(7)*p_R*p_R*p_m*s_omega_y*s_omega_y/T(10) + p_R*p_R*p_m*s_omega_z*s_omega_z/T(5);
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 2x5, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

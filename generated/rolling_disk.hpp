@@ -426,6 +426,29 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   y[0] = p_R*sin(q_theta);
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[3];
+  const T dq_psi = x[5];
+  const T dq_theta = x[6];
+  const T dq_phi = x[7];
+  const T p_m = p[0];
+  const T p_R = p[1];
+  const T p_g = p[2];
+  const T c0 = cos(q_theta);
+  out[0] = T(3)*c0*dq_phi*dq_psi*p_R*p_R*p_m/T(2) + T(3)*dq_phi*dq_phi*p_R*p_R*p_m/T(4) + T(5)*c0*c0*dq_psi*dq_psi*p_R*p_R*p_m/T(8) + T(5)*dq_theta*dq_theta*p_R*p_R*p_m/T(8) + dq_psi*dq_psi*p_R*p_R*p_m/T(8) + p_R*p_g*p_m*sin(q_theta);
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 2x5, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

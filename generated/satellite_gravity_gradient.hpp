@@ -514,6 +514,44 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   y[0] = acos(cos(q_phi)*cos(q_theta));
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"jacobi_integral"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi = x[0];
+  const T q_theta = x[1];
+  const T q_psi = x[2];
+  const T dq_phi = x[3];
+  const T dq_theta = x[4];
+  const T dq_psi = x[5];
+  const T p_A = p[1];
+  const T p_B = p[2];
+  const T p_C = p[3];
+  const T p_Omega = p[4];
+  const T c0 = -p_A + p_B;
+  const T c1 = sin(q_theta);
+  const T c2 = c1*c1;
+  const T c3 = cos(q_psi);
+  const T c4 = c3*c3;
+  const T c5 = cos(q_phi);
+  const T c6 = c5*c5;
+  const T c7 = sin(q_psi);
+  const T c8 = c7*c7;
+  const T c9 = cos(q_theta);
+  const T c10 = c9*c9;
+  const T c11 = sin(q_phi);
+  const T c12 = c11*c11;
+  out[0] = T(3)*c10*c6*p_C*p_Omega*p_Omega/T(2) + T(3)*c12*c4*p_B*p_Omega*p_Omega/T(2) + T(3)*c12*c8*p_A*p_Omega*p_Omega/T(2) + T(3)*c2*c4*c6*p_A*p_Omega*p_Omega/T(2) + T(3)*c2*c6*c8*p_B*p_Omega*p_Omega/T(2) + T(4)*c0*c1*c11*c3*c5*c7*p_Omega*p_Omega - c0*c3*c7*c9*dq_phi*dq_theta + c1*dq_phi*dq_psi*p_C - c10*c12*p_C*p_Omega*p_Omega/T(2) + c10*c4*dq_phi*dq_phi*p_A/T(2) + c10*c8*dq_phi*dq_phi*p_B/T(2) - c12*c2*c4*p_A*p_Omega*p_Omega/T(2) - c12*c2*c8*p_B*p_Omega*p_Omega/T(2) + c2*dq_phi*dq_phi*p_C/T(2) - c4*c6*p_B*p_Omega*p_Omega/T(2) + c4*dq_theta*dq_theta*p_B/T(2) - c6*c8*p_A*p_Omega*p_Omega/T(2) + c8*dq_theta*dq_theta*p_A/T(2) + dq_psi*dq_psi*p_C/T(2);
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

@@ -317,6 +317,33 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
 }
 
+/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic
+/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.
+inline constexpr std::size_t num_first_integrals = 1;
+inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{"energy"}};
+
+/// The first integrals' values, in first_integral_names order. out: num_first_integrals.
+template <class T>
+void first_integrals(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi = x[0];
+  const T q_beta = x[1];
+  const T dq_phi = x[3];
+  const T dq_beta = x[4];
+  const T dq_x = x[5];
+  const T p_r = p[0];
+  const T p_l = p[1];
+  const T p_m1 = p[2];
+  const T p_m2 = p[3];
+  const T p_m3 = p[4];
+  const T p_g = p[5];
+  const T c0 = sin(q_beta);
+  out[0] = (T(2)*p_m2 + p_m1)*p_g*p_r*sin(q_phi)/T(2) + (T(3)*p_m2 + p_m1)*dq_phi*dq_phi*p_r*p_r/T(6) - (c0*sin(-q_phi) - cos(-q_phi)*cos(q_beta))*dq_beta*dq_phi*p_l*p_m2*p_r/T(2) + c0*p_g*p_l*p_m2/T(2) + dq_beta*dq_beta*p_l*p_l*p_m2/T(6) + dq_x*dq_x*p_m3/T(2);
+}
+
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 2x3, row-major.
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {

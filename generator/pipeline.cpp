@@ -2,7 +2,11 @@
 
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "derive/first_integrals.hpp"
 #include "derive/methods.hpp"
+#include "derive/routh.hpp"
 #include "kinematics/mechanics.hpp"
 #include "parse/model_file.hpp"
 #include "symbolic/trig_orientation.hpp"
@@ -22,6 +26,9 @@ void orient(Equations& e) {
   for (NamedSymbolic& o : e.outputs) each(o.expression);
   for (NamedSymbolic& p : e.pseudo_velocity_definitions) each(p.expression);
   for (GiNaC::ex& x : e.coordinate_rates) each(x);
+  for (FirstIntegral& f : e.first_integrals) each(f.expression);
+  each(e.routhian);
+  for (NamedSymbolic& r : e.eliminated_coordinates) each(r.expression);
   ConstraintSet& c = e.constraints;
   for (GiNaC::ex& x : c.position) each(x);
   for (GiNaC::ex& x : c.bias) each(x);
@@ -30,17 +37,27 @@ void orient(Equations& e) {
     for (unsigned j = 0; j < c.jacobian.cols(); ++j) each(c.jacobian(i, j));
 }
 
-Derivation derive(const ModelFile& file, Diagnostics diagnostics) {
+// `reduce`: the cyclic coordinates Routh's reduction eliminates, whatever the model's method
+Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vector<std::string>& reduce = {}) {
   Derivation result;
   if (diagnostics.empty()) {
     Model model = build_model(file, diagnostics);
-    if (diagnostics.empty()) {
+    if (diagnostics.empty() && !reduce.empty()) {
+      try {
+        result.equations = derive_routh(model, compute_mechanics(model), reduce);
+        orient(*result.equations);
+      } catch (const std::invalid_argument& why) {
+        diagnostics.error({file.path, 1, 1}, "routh", fmt::format("Routh's reduction: {}", why.what()),
+                          "name only cyclic coordinates: ones that L does not contain and no force or dissipation acts on");
+      }
+    } else if (diagnostics.empty()) {
       if (std::string refusal = method_refusal(model); !refusal.empty()) {
         diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", refusal);
       } else {
         Mechanics mechanics = compute_mechanics(model);
         try {
           result.equations = (*find_method(model.method))(model, mechanics);
+          result.equations->first_integrals = find_first_integrals(*result.equations, mechanics);
           orient(*result.equations);
         } catch (const std::invalid_argument& why) {
           diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", why.what(),
@@ -59,6 +76,12 @@ Derivation derive_model_file(const std::string& path) {
   Diagnostics diagnostics;
   ModelFile file = parse_model_file(path, diagnostics);
   return derive(file, std::move(diagnostics));
+}
+
+Derivation derive_reduced_model_file(const std::string& path, const std::vector<std::string>& cyclic) {
+  Diagnostics diagnostics;
+  ModelFile file = parse_model_file(path, diagnostics);
+  return derive(file, std::move(diagnostics), cyclic);
 }
 
 Derivation derive_model_text(const std::string& text, const std::string& path) {

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "derive/equations.hpp"
 
@@ -15,6 +16,10 @@ struct Derivation {
 
 /// Reads a model file and derives its equations of motion by the method it names.
 Derivation derive_model_file(const std::string& path);
+
+/// Reads a model file and derives Routh's reduced equations with the coordinates `cyclic`
+/// eliminated, their momenta p_<coordinate> as parameters (Hiller §3.8.4).
+Derivation derive_reduced_model_file(const std::string& path, const std::vector<std::string>& cyclic);
 
 /// Same, from model text in memory; `path` names it in diagnostics.
 Derivation derive_model_text(const std::string& text, const std::string& path);

@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define EOMGEN_MODEL_ABI_VERSION 3
+#define EOMGEN_MODEL_ABI_VERSION 4
 
 #ifdef __cplusplus
 extern "C" {
@@ -53,6 +53,10 @@ struct eomgen_model_abi {
   eomgen_residual_function constraint_residuals;
   eomgen_state_function multipliers;
   eomgen_stabilized_function rhs_stabilized, jacobian_state_stabilized;
+  /* the first integrals at zero inputs: generalized energy, momenta of cyclic coordinates */
+  size_t num_first_integrals;
+  const char* const* first_integral_names;
+  eomgen_configuration_function first_integrals;
 };
 
 #ifdef __cplusplus
@@ -73,7 +77,8 @@ struct eomgen_model_abi {
       m::num_multipliers, m::constraint_names.data(), m::constraint_is_holonomic.data(),               \
       m::multiplier_names.data(), m::baumgarte_alpha, m::baumgarte_beta, m::constraint_jacobian<double>, \
       m::constraint_residuals<double>, m::multipliers<double>, m::rhs_stabilized<double>,              \
-      m::jacobian_state_stabilized<double>};                                                           \
+      m::jacobian_state_stabilized<double>, m::num_first_integrals, m::first_integral_names.data(),      \
+      m::first_integrals<double>};                                                                     \
   return &abi;
 
 /* Defines `eomgen_model()`, the entry point of a compiled model's shared object. */

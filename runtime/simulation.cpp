@@ -80,6 +80,9 @@ void record(const Problem& p, double t, const std::vector<double>& x, Trajectory
   std::vector<double> y(m.num_outputs);
   if (m.num_outputs) m.outputs(t, x.data(), u, p.parameters.data(), y.data());
   out.outputs.push_back(y);
+  std::vector<double> integrals(m.num_first_integrals);
+  if (m.num_first_integrals) m.first_integrals(t, x.data(), p.parameters.data(), integrals.data());
+  out.first_integrals.push_back(integrals);
   if (m.num_constraints == 0) return;
   std::vector<double> lambda(m.num_multipliers);
   if (m.num_multipliers) m.multipliers(t, x.data(), u, p.parameters.data(), lambda.data());

@@ -65,6 +65,7 @@ struct Trajectory {
   std::vector<std::vector<double>> states;   // num_states each
   std::vector<double> energies;              // T + V
   std::vector<std::vector<double>> outputs;  // num_outputs each
+  std::vector<std::vector<double>> first_integrals;  // num_first_integrals each
   std::vector<std::vector<double>> multipliers;  // num_multipliers each (Lagrange I)
   std::vector<double> position_residuals, velocity_residuals;  // largest |g|, |C q' + b| (constrained models)
 };

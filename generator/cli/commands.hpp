@@ -81,8 +81,9 @@ int generate_header(const std::string& model_path, const std::string& directory,
 /// The model `eomgen run` uses when none is named.
 std::string default_model_path();
 
-/// Derives `model_path` and writes it in `format` to `output` (stdout when empty).
+/// Derives `model_path` and writes it in `format` to `output` (stdout when empty); with
+/// `reduce`, the Routh-reduced equations with those cyclic coordinates eliminated.
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
-                     bool linearize = false);
+                     bool linearize = false, const std::vector<std::string>& reduce = {});
 
 }  // namespace eomgen::cli

@@ -19,9 +19,9 @@ bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model
 }
 
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
-                     bool linearize) {
+                     bool linearize, const std::vector<std::string>& reduce) {
   auto started = std::chrono::steady_clock::now();
-  Derivation d = derive_model_file(model_path);
+  Derivation d = reduce.empty() ? derive_model_file(model_path) : derive_reduced_model_file(model_path, reduce);
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   if (linearize) add_linearization(*d.equations);
   std::string text = (*find_equation_format(format))(*d.equations);
@@ -49,9 +49,12 @@ Command add_derive_command(CLI::App& app) {
   cmd->add_option("-o,--output", *output, "Write to this file instead of standard output (written only on success)");
   auto linearize = std::make_shared<bool>(false);
   cmd->add_flag("--linearize", *linearize, "Also print P = -df/dq', Q = -df/dq, B = df/du of M q'' + P q' + Q q = B u");
-  return [cmd, model, format, output, linearize]() -> int {
+  auto reduce = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("--reduce", *reduce, "Eliminate these cyclic coordinates by Routh's reduction, their momenta p_q "
+                  "becoming parameters: --reduce phi")->delimiter(',');
+  return [cmd, model, format, output, linearize, reduce]() -> int {
     if (!cmd->parsed()) return -1;
-    return derive_and_write(*model, *format, *output, *linearize);
+    return derive_and_write(*model, *format, *output, *linearize, *reduce);
   };
 }
 

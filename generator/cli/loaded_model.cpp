@@ -65,8 +65,9 @@ bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& te
   return true;
 }
 
-std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out) {
-  Derivation d = derive_model_file(model);
+std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out,
+                                const std::vector<std::string>& reduce) {
+  Derivation d = reduce.empty() ? derive_model_file(model) : derive_reduced_model_file(model, reduce);
   if (!d.diagnostics.empty()) {
     std::cerr << d.diagnostics.format();
     return exit_user_error;

@@ -41,7 +41,9 @@ int state_index(const eomgen_model_abi& m, const std::string& name);
 bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& texts, const char* flag, std::vector<double>& x,
                    std::vector<bool>* assigned = nullptr);
 
-std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out);
+/// `reduce`: cyclic coordinates to eliminate by Routh's reduction (their momenta become parameters).
+std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out,
+                                const std::vector<std::string>& reduce = {});
 
 /// Index of `name` in a C name table, or −1.
 int index_of(const char* const* names, std::size_t count, const std::string& name);

@@ -89,8 +89,9 @@ int simulate_model(const SimulationOptions& o) {
     std::cerr << fmt::format("eomgen: the simulation cannot start: {}\n", result.failure);
     return exit_numerical_failure;
   }
-  bool conservative = m.conserves_energy_without_inputs && !problem.input_signal &&
-                      std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
+  bool unforced = !problem.input_signal &&
+                  std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
+  bool conservative = m.conserves_energy_without_inputs && unforced;
   if (!o.csv.empty()) {
     if (std::string failure = write_file_atomically(o.csv, runtime::trajectory_csv(m, result.trajectory)); !failure.empty()) {
       std::cerr << "eomgen: " << failure << "\n";
@@ -98,7 +99,7 @@ int simulate_model(const SimulationOptions& o) {
     }
   }
   if (!o.plot.empty()) draw_all_charts(o, m, result.trajectory, conservative);
-  print_summary(settings, m, result, conservative, o.json, loaded.compiled->reference_scalar);
+  print_summary(settings, m, result, conservative, unforced, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
     std::cerr << fmt::format("eomgen: the simulation failed: {}\n", result.failure);
     if (!o.csv.empty()) std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the failure\n", o.csv, result.trajectory.times.size());

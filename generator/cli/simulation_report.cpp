@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/conservation.hpp"
 #include "report/reports.hpp"
 
 namespace eomgen::cli {
@@ -44,8 +45,29 @@ static std::string constraint_summary(const eomgen_model_abi& m, const runtime::
   return out;
 }
 
+// the change of every first integral over the run; with inputs acting they need not be constant
+static std::string first_integral_summary(const eomgen_model_abi& m, const runtime::Trajectory& t, bool unforced, bool json) {
+  std::vector<runtime::FirstIntegralDrift> drift = runtime::first_integral_drift(m, t);
+  auto number = [](double x) { return std::isfinite(x) ? fmt::format("{:.6g}", x) : std::string("null"); };
+  if (json) {
+    std::string list;
+    for (const runtime::FirstIntegralDrift& d : drift)
+      list += fmt::format("{}{{\"name\": \"{}\", \"initial\": {}, \"max_abs_change\": {}, \"relative_change\": {}}}",
+                          list.empty() ? "" : ", ", json_escape(d.name), number(d.initial), number(d.largest_change),
+                          number(d.relative_change));
+    return fmt::format(", \"first_integrals_conserved\": {}, \"first_integrals\": [{}]", unforced ? "true" : "false", list);
+  }
+  if (drift.empty()) return "";
+  std::string out = unforced ? "  first integrals (constant in the exact motion: their change is the integration error):\n"
+                             : "  first integrals (the inputs act, so they need not stay constant):\n";
+  for (const runtime::FirstIntegralDrift& d : drift)
+    out += fmt::format("    {}: I(0) = {:.10g}, max |I(t) - I(0)| = {:.3e}{}\n", d.name, d.initial, d.largest_change,
+                       std::isnan(d.relative_change) ? std::string() : fmt::format(" ({:.3e} of |I(0)|)", d.relative_change));
+  return out;
+}
+
 void print_summary(const runtime::SimulationSettings& settings, const eomgen_model_abi& m, const runtime::SimulationResult& r,
-                   bool conservative, bool json, const std::string& reference_scalar) {
+                   bool conservative, bool unforced, bool json, const std::string& reference_scalar) {
   const runtime::SolverStatistics& s = r.statistics;
   double drift = relative_energy_drift(r.trajectory);
   if (json) {
@@ -56,10 +78,11 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
         "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
-        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}, \"failure\": {}}}\n",
+        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}{}, \"failure\": {}}}\n",
         m.name, settings.integrator, settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
-        conservative ? "true" : "false", drift, m.num_constraints ? constraint_summary(m, r, true) : "",
+        conservative ? "true" : "false", drift, first_integral_summary(m, r.trajectory, unforced, true),
+        m.num_constraints ? constraint_summary(m, r, true) : "",
         std::isnan(r.error_estimate) ? std::string()
                                      : fmt::format(", \"reference_error_estimate\": {:.6g}, \"reference_step\": {:.6g}",
                                                    r.error_estimate, r.reference_step),
@@ -75,6 +98,7 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
   std::cout << fmt::format("  max |E(t) - E(0)| / |E(0)| = {:.3e}{}\n", drift,
                            conservative ? " (energy is conserved by this model: this is the integration error)"
                                         : " (the model does not conserve T + V)");
+  std::cout << first_integral_summary(m, r.trajectory, unforced, false);
   if (m.num_constraints) std::cout << constraint_summary(m, r, false);
   if (!std::isnan(r.error_estimate))
     std::cout << fmt::format("  reference: Gragg–Bulirsch–Stoer extrapolation of order 16 in {}, macro step {:.3g} s; "

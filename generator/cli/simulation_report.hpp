@@ -9,9 +9,9 @@
 
 namespace eomgen::cli {
 
-/// The run's statistics, energy change, constraint residuals and reference estimate, as text or JSON.
+/// The run's statistics, energy change, the change of every first integral (`unforced`: no input acts), constraint residuals and reference estimate, as text or JSON.
 void print_summary(const runtime::SimulationSettings& settings, const eomgen_model_abi& m, const runtime::SimulationResult& r,
-                   bool conservative, bool json, const std::string& reference_scalar);
+                   bool conservative, bool unforced, bool json, const std::string& reference_scalar);
 
 /// --plot-xy X,Y names two columns of the trajectory and needs --plot; prints the mistake.
 std::optional<int> check_plot_xy(const SimulationOptions& o, const eomgen_model_abi& m);

@@ -11,6 +11,7 @@
 #include "analyse/state_check.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
+#include "cli/routh_reduction.hpp"
 #include "cli/stability_report.hpp"
 
 namespace eomgen::cli {
@@ -104,9 +105,15 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
 namespace {
 
 // the whole `eomgen stability` job for one set of options
-int stability(const Options& o) {
+int stability(const Options& given) {
+  Options o = given;
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  RouthRequest routh = routh_request(*loaded.compiled->abi(), o.at);
+  if (!routh.eliminated.empty()) {
+    o.at = routh.at;
+    if (auto status = load_reduced_problem(o.model, o.sets, routh, loaded)) return *status;
+  }
   const eomgen_model_abi& m = *loaded.compiled->abi();
   if (auto status = stability_refusal(loaded, o.model, !o.symbolic.empty())) return *status;
   if (auto status = periodic_stability(loaded, {o.at, o.symbolic, o.period, o.json})) return *status;
@@ -125,9 +132,11 @@ int stability(const Options& o) {
   }
   runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
   runtime::CriticalCase critical = runtime::check_critical_case(loaded.problem, eq.state, report);
+  bool reduced = !routh.eliminated.empty();
   if (o.json) {
-    print_stability_json(m, eq, report, conditions, critical);
+    print_stability_json(m, eq, report, conditions, critical, reduced ? routh_json(loaded.equations, routh) : "");
   } else {
+    if (reduced) std::cout << routh_text(loaded.equations, routh);
     print_stability_text(m, eq, report, conditions);
     print_critical_case(critical);
   }
@@ -140,7 +149,9 @@ Command add_stability_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("stability", "Equilibrium, linearization and stability of a model");
   auto o = std::make_shared<Options>();
   cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
-  cmd->add_option("--at", o->at, "Equilibrium value, one per flag: --at theta=0 --at 'der(phi)=8'; velocities not named are zero");
+  cmd->add_option("--at", o->at, "Equilibrium value, one per flag: --at theta=0 --at 'der(phi)=8'; velocities not named "
+                  "are zero. --at p_phi=VALUE holds the momentum of the cyclic coordinate phi and analyses Routh's "
+                  "reduced system");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
   cmd->add_option("--period", o->period, "Period T [s] of time-periodic equations (default: found from sin/cos(w*t) in "
                   "the model); their stability is judged by Floquet multipliers over T")->check(CLI::PositiveNumber);

@@ -135,7 +135,8 @@ void print_stability_text(const eomgen_model_abi& m, const runtime::Equilibrium&
 }
 
 void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const runtime::StabilityReport& r,
-                const std::optional<StabilityConditions>& conditions, const runtime::CriticalCase& critical) {
+                const std::optional<StabilityConditions>& conditions, const runtime::CriticalCase& critical,
+                const std::string& extra) {
   std::string equilibrium;
   for (std::size_t i = 0; i < m.num_states; ++i)
     equilibrium += fmt::format("{}\"{}\": {}", equilibrium.empty() ? "" : ", ", json_escape(m.state_names[i]), number(eq.state[i]));
@@ -156,7 +157,7 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"residual\": {}, \"state\": {}, \"A\": {}, \"B\": {}, \"M\": {}, "
       "\"D\": {}, \"G\": {}, \"K\": {}, \"N\": {}, \"eigenvalues\": [{}], \"verdict\": \"{}\", \"stability_degree\": {}, "
       "\"cyclic_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
-      "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"equilibrium_conditions\": {}, \"critical_case\": {}}}\n",
+      "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"equilibrium_conditions\": {}, \"critical_case\": {}{}}}\n",
       m.name, equilibrium, number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
       number(r.stability_degree), r.cyclic_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
@@ -165,7 +166,8 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
       critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": \"{}\", \"simulation\": \"{}\", "
                                       "\"nonlinear_verdict\": \"{}\"}}",
                                       json_escape(critical.energy), json_escape(critical.simulation), critical.nonlinear_verdict)
-                        : "null");
+                        : "null",
+      extra);
 }
 
 }  // namespace eomgen::cli

@@ -25,6 +25,13 @@ struct ConstraintSet {
   std::size_t num_holonomic() const;
 };
 
+/// A quantity that stays constant along every motion at zero inputs (Hiller §3.6, §3.8.3).
+struct FirstIntegral {
+  std::string name;        // "energy" (T + V), "jacobi_integral", or p_<coordinate>
+  GiNaC::ex expression;    // in the state's variables
+  std::string reason;      // why it is conserved, in words
+};
+
 /// The derived equations of motion M·v' = f with q' = v, or, for Appell's equations,
 /// q' = coordinate_rates(q, s, t) with the pseudo-velocities s as v (then M and f are
 /// in s, and `symbols.velocities` are the pseudo-velocities). Lagrange I adds the
@@ -52,6 +59,10 @@ struct Equations {
   /// T + V is a first integral when the inputs are zero: no dissipation, no applied
   /// forces at u = 0, and no explicit time dependence (Hiller §3.6).
   bool conserves_energy_without_inputs = false;
+  std::vector<FirstIntegral> first_integrals;  // filled by the pipeline for every method
+  /// Routh's reduction: R(q, q', t; p) and each eliminated coordinate with its rate der(q_c)(q, q', p)
+  GiNaC::ex routhian;
+  std::vector<NamedSymbolic> eliminated_coordinates;
   /// Linearization M q'' + P q' + Q q = B u about states with q'' = 0 (Hiller §5.3),
   /// in the coordinates and velocities of the state: filled by add_linearization().
   bool has_linearization = false;

@@ -82,6 +82,14 @@ std::string emit_canonical_text(const Equations& e) {
                      canonical_text(e.dissipation));
   for (const NamedSymbolic& o : e.outputs) out += fmt::format("y[{}] = {}\n", o.name, canonical_text(o.expression));
   out += constrained_text(e);
+  if (!e.eliminated_coordinates.empty()) {
+    out += "\n# Routh's reduction: the cyclic coordinates' momenta held as parameters, R = L - p*der(q_cyclic)\n";
+    for (const NamedSymbolic& r : e.eliminated_coordinates) out += fmt::format("der({}) = {}\n", r.name, canonical_text(r.expression));
+    out += fmt::format("Routhian = {}\n", canonical_text(e.routhian));
+  }
+  if (!e.first_integrals.empty()) out += "\n# first integrals: constant along every motion\n";
+  for (const FirstIntegral& f : e.first_integrals)
+    out += fmt::format("# {}\nI[{}] = {}\n", f.reason, f.name, canonical_text(f.expression));
   if (e.has_linearization) {
     out += "\n# linearization M q'' + P q' + Q q = B u about a state with q'' = 0\n";
     for (unsigned j = 0; j < n; ++j)

@@ -194,6 +194,26 @@ std::string outputs_function(const Equations& e) {
                   "void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y)", w.finish(all_unused + std::string(" (void)y;")));
 }
 
+// each first integral in the state's variables (they hold at zero inputs, so take none)
+std::string first_integrals_function(const Equations& e) {
+  std::vector<std::string> names;
+  for (const FirstIntegral& f : e.first_integrals) names.push_back(f.name);
+  std::string out = fmt::format(
+      "/// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic\n"
+      "/// coordinates that stay constant along every motion at zero inputs, as `eomgen derive` explains.\n"
+      "inline constexpr std::size_t num_first_integrals = {};\n"
+      "inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{{{{}}}}};\n\n",
+      names.size(), quoted_list(names));
+  BodyWriter w(e);
+  std::vector<ex> values;
+  for (const FirstIntegral& f : e.first_integrals) values.push_back(f.expression);
+  auto code = w.batch(values);
+  for (std::size_t i = 0; i < code.size(); ++i) w.line(fmt::format("out[{}] = {};", i, code[i]));
+  return out + function("/// The first integrals' values, in first_integral_names order. out: num_first_integrals.\n",
+                        "void first_integrals(T t, const T* x, const T* p, T* out)",
+                        w.finish("(void)t; (void)x; (void)p; (void)out;"));
+}
+
 // L D L^T of a symmetric positive definite n×n matrix, unrolled:
 // D_j = M_jj − Σ_{k<j} L_jk² D_k,  L_ij = (M_ij − Σ_{k<j} L_ik L_jk D_k) / D_j
 std::string ldlt_functions(std::size_t n) {
@@ -326,6 +346,7 @@ std::string emit_cpp_header(const Equations& e) {
   out += scalar_function(e, "potential_energy", e.potential_energy,
                          "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
   out += outputs_function(e);
+  out += first_integrals_function(e);
   out += constraint_functions(e);
   out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
   return out;

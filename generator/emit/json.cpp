@@ -124,6 +124,19 @@ std::string emit_json(const Equations& e) {
   for (const NamedSymbolic& o : e.outputs) outputs += (outputs.empty() ? "" : ", ") + quote(o.name) + ": " + expression(o.expression);
   out += "  \"outputs\": {" + outputs + "}";
   out += constrained_json(e);
+  if (!e.eliminated_coordinates.empty()) {
+    std::string rates;
+    for (const NamedSymbolic& r : e.eliminated_coordinates)
+      rates += (rates.empty() ? "" : ", ") + quote("der(" + r.name + ")") + ": " + expression(r.expression);
+    out += ",\n  \"routh\": {\"eliminated\": {" + rates + "}, \"routhian\": " + expression(e.routhian) + "}";
+  }
+  out += ",\n  \"first_integrals\": [";
+  for (std::size_t i = 0; i < e.first_integrals.size(); ++i) {
+    const FirstIntegral& f = e.first_integrals[i];
+    out += fmt::format("{}\n    {{\"name\": {}, \"expression\": {}, \"reason\": {}}}", i ? "," : "", quote(f.name),
+                       expression(f.expression), quote(f.reason));
+  }
+  out += e.first_integrals.empty() ? "]" : "\n  ]";
   if (e.has_linearization) {
     auto matrix = [&](const GiNaC::matrix& A, std::size_t rows, std::size_t cols) {
       std::string m = "[";

@@ -91,6 +91,9 @@ std::string emit_latex(const Equations& e) {
     if (e.method == "hamilton") out += fmt::format(" \\\\\nH &= {}", tex(e.hamiltonian));
     else out += fmt::format(" \\\\\nS &= {}", tex(e.acceleration_energy));
   }
+  for (const FirstIntegral& f : e.first_integrals)
+    out += fmt::format(" \\\\\n{} &= {} & \\text{{(first integral)}}", tex_name(f.name == "jacobi_integral" ? "h" : f.name == "energy" ? "E" : f.name),
+                       tex(f.expression));
   if (e.has_linearization) {
     out += " \\\\\n% linearization M q'' + P q' + Q q = B u about a state with q'' = 0";
     for (unsigned j = 0; j < n; ++j)

@@ -22,6 +22,17 @@ bool conserves_energy_without_inputs(const Mechanics& mech, const Symbols& s) {
   return unforced && mech.dissipation.is_zero() && mech.scleronomic;
 }
 
+ex kinetic_energy_of(const Mechanics& mech) {
+  ex T = mech.extra_kinetic_energy;
+  for (const BodyKinematics& b : mech.bodies) {
+    for (unsigned a = 0; a < 3; ++a) T += b.mass * GiNaC::pow(b.velocity[a], 2) / 2;
+    if (b.rotates)
+      for (unsigned a = 0; a < 3; ++a)
+        for (unsigned c = 0; c < 3; ++c) T += b.angular_velocity[a] * b.inertia(a, c) * b.angular_velocity[c] / 2;
+  }
+  return tidy(T, mech.motion);
+}
+
 ex time_derivative(const ex& x, const Symbols& s) {
   std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
   variables.push_back(s.time);

@@ -14,6 +14,7 @@ std::string trajectory_csv(const eomgen_model_abi& m, const Trajectory& trajecto
     for (std::size_t i = 0; i < m.num_multipliers; ++i) out += fmt::format(",{}", m.multiplier_names[i]);
     out += ",position_residual,velocity_residual";
   }
+  for (std::size_t i = 0; i < m.num_first_integrals; ++i) out += fmt::format(",I[{}]", m.first_integral_names[i]);
   out += "\n";
   for (std::size_t k = 0; k < trajectory.times.size(); ++k) {
     out += fmt::format("{:.17g}", trajectory.times[k]);
@@ -24,6 +25,7 @@ std::string trajectory_csv(const eomgen_model_abi& m, const Trajectory& trajecto
       for (double v : trajectory.multipliers[k]) out += fmt::format(",{:.17g}", v);
       out += fmt::format(",{:.17g},{:.17g}", trajectory.position_residuals[k], trajectory.velocity_residuals[k]);
     }
+    for (double v : trajectory.first_integrals[k]) out += fmt::format(",{:.17g}", v);
     out += "\n";
   }
   return out;

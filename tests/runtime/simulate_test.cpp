@@ -101,12 +101,16 @@ TEST(Simulate, CsvHasAHeaderAndARowPerOutputTime) {
   ASSERT_EQ(r.status, 0) << r.err;
   std::string header;
   auto rows = read_csv(csv, header);
-  EXPECT_EQ(header, "t,phi1,phi2,der(phi1),der(phi2),energy,tip_x,tip_y");
+  // the double pendulum's only first integral is T + V: its column repeats the energy's
+  EXPECT_EQ(header, "t,phi1,phi2,der(phi1),der(phi2),energy,tip_x,tip_y,I[energy]");
   ASSERT_EQ(rows.size(), 12u);  // 0, 0.1, …, 1.0 and the final time
   for (std::size_t k = 0; k + 1 < rows.size(); ++k) EXPECT_EQ(rows[k][0], k * 0.1);
   EXPECT_EQ(rows.back()[0], 1.005);
   EXPECT_EQ(rows[0][1], 0.5);  // the model's initial phi1
-  for (const auto& row : rows) EXPECT_EQ(row.size(), 8u);
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 9u);
+    EXPECT_NEAR(row[8], row[5], 1e-12 * std::abs(row[5]));
+  }
 }
 
 TEST(Simulate, SetAndInitialOverrideTheModel) {
@@ -212,8 +216,30 @@ TEST(Simulate, SliderCrankUnderIdaReportsResidualsAndConstraintForces) {
   EXPECT_GT(json_number(run.out, "lambda_loop_x"), 1.0) << run.out;
   std::string header;
   auto rows = read_csv(csv, header);
-  EXPECT_EQ(header, "t,phi,beta,x,der(phi),der(beta),der(x),energy,lambda_loop_x,lambda_loop_y,position_residual,velocity_residual");
+  EXPECT_EQ(header, "t,phi,beta,x,der(phi),der(beta),der(x),energy,lambda_loop_x,lambda_loop_y,position_residual,velocity_residual,I[energy]");
   EXPECT_EQ(rows.size(), 201u);
+}
+
+TEST(Simulate, ReportsTheDriftOfEveryFirstIntegral) {
+  // the heavy top keeps T + V, p_psi and p_phi; each is printed with its change over the run
+  CommandRun text = eomgen("simulate " + model_path("heavy_symmetric_top") + " --t-end 5 --rtol 1e-10 --atol 1e-12",
+                           shared_cache());
+  ASSERT_EQ(text.status, 0) << text.err;
+  for (const char* name : {"    energy: I(0) = ", "    p_psi: I(0) = ", "    p_phi: I(0) = "})
+    EXPECT_NE(text.out.find(name), std::string::npos) << name << " missing from\n" << text.out;
+  EXPECT_NE(text.out.find("their change is the integration error"), std::string::npos) << text.out;
+  CommandRun json = eomgen("simulate " + model_path("heavy_symmetric_top") + " --t-end 5 --rtol 1e-10 --atol 1e-12 "
+                           "--format json", shared_cache());
+  ASSERT_EQ(json.status, 0) << json.err;
+  std::size_t p_psi = json.out.find("\"name\": \"p_psi\"");
+  ASSERT_NE(p_psi, std::string::npos) << json.out;
+  double change = json_number(json.out.substr(p_psi), "relative_change");
+  EXPECT_GT(change, 0) << json.out;
+  EXPECT_LT(change, 1e-7) << json.out;
+  // with an input acting the momentum of the cart is not conserved, and the report says so
+  CommandRun driven = eomgen("simulate " + model_path("cart_pendulum") + " --t-end 1 --set F=1", shared_cache());
+  ASSERT_EQ(driven.status, 0) << driven.err;
+  EXPECT_NE(driven.out.find("the inputs act, so they need not stay constant"), std::string::npos) << driven.out;
 }
 
 TEST(Simulate, RollingDiskRunsAHundredSecondsOnItsConstraints) {

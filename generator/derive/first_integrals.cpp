@@ -1,0 +1,116 @@
+/// @file First integrals (Hiller §3.6, §3.8.3). With L = T − V and
+///     d/dt ∂L/∂q̇ − ∂L/∂q = Q − ∂R/∂q̇ + Cᵀλ,
+/// the generalized energy h = q̇ᵀ∂L/∂q̇ − L has dh/dt = −∂L/∂t + q̇ᵀ(Q − ∂R/∂q̇ + Cᵀλ):
+/// it is conserved when L is free of t, no applied force or dissipation acts, and the
+/// constraints are scleronomic (C q̇ = 0, so the constraint forces do no work). With
+/// T = T2 + T1 + T0 (by degree in q̇), h = T2 − T0 + V, which is T + V only when T1 = T0 = 0.
+/// The momentum p_k = ∂L/∂q̇_k of a coordinate that L does not contain is conserved when
+/// nothing else acts on q_k: d/dt p_k = ∂L/∂q_k + (Q − ∂R/∂q̇ + Cᵀλ)_k.
+#include "derive/first_integrals.hpp"
+
+#include <optional>
+#include <utility>
+
+#include "derive/constraints.hpp"
+#include "symbolic/trig_rational.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+bool vanishes(const ex& e, const MotionSymbols& motion) { return tidy(e, motion).is_zero(); }
+
+// what the model's applied forces are at zero inputs
+std::vector<ex> forces_without_inputs(const Mechanics& mech, const Symbols& s) {
+  GiNaC::exmap no_inputs;
+  for (const auto& u : s.inputs) no_inputs[u] = 0;
+  std::vector<ex> Q;
+  for (const ex& q : mech.generalized_force) Q.push_back(q.subs(no_inputs));
+  return Q;
+}
+
+struct Lagrangian {
+  ex T, V;
+  std::vector<GiNaC::realsymbol> q, qdot;
+  GiNaC::realsymbol t;
+};
+
+// the text that says when a first integral holds only at zero inputs
+std::string at_zero_inputs(const Mechanics& mech, const Symbols& s) {
+  for (const ex& q : mech.generalized_force)
+    for (const auto& u : s.inputs)
+      if (q.has(u)) return " (with the inputs at zero)";
+  return "";
+}
+
+std::optional<FirstIntegral> generalized_energy(const Equations& e, const Mechanics& mech, const Lagrangian& L) {
+  const MotionSymbols& motion = mech.motion;
+  if (L.T.has(L.t) || L.V.has(L.t) || !mech.dissipation.is_zero()) return std::nullopt;
+  for (const ex& Q : forces_without_inputs(mech, e.symbols))
+    if (!vanishes(Q, motion)) return std::nullopt;
+  if (!constraints_scleronomic(e.constraints, e.symbols)) return std::nullopt;
+  ex h = L.V - L.T;
+  for (std::size_t j = 0; j < L.q.size(); ++j) h += L.qdot[j] * L.T.diff(L.qdot[j]);
+  h = tidy(h, motion);
+  std::string inputs = at_zero_inputs(mech, e.symbols);
+  if (vanishes(h - L.T - L.V, motion))
+    return FirstIntegral{"energy", L.T + L.V,
+                         "L = T - V does not depend on t, no applied force or dissipation acts" + inputs +
+                             (e.constraints.size() ? " and the constraints do not move" : "") +
+                             "; T is quadratic in the velocities, so the generalized energy is T + V (Hiller §3.6)"};
+  return FirstIntegral{"jacobi_integral", h,
+                       "L does not depend on t and no applied force or dissipation acts" + inputs +
+                           ", so h = der(q)·∂L/∂der(q) - L is conserved; T + V is not: T has terms linear in or "
+                           "free of the velocities (a prescribed motion), whose drive does work (Hiller §3.6)"};
+}
+
+// the momenta of the cyclic coordinates, each with the index of its coordinate
+std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equations& e, const Mechanics& mech,
+                                                                  const Lagrangian& L) {
+  std::vector<std::pair<std::size_t, FirstIntegral>> out;
+  std::vector<ex> Q = forces_without_inputs(mech, e.symbols);
+  const ConstraintSet& c = e.constraints;
+  for (std::size_t k = 0; k < L.q.size(); ++k) {
+    const auto& q = L.q[k];
+    if (L.T.has(q) || L.V.has(q) || !vanishes(Q[k], mech.motion) ||
+        !vanishes(mech.dissipation.diff(L.qdot[k]), mech.motion))
+      continue;
+    bool constrained = false;
+    for (unsigned i = 0; i < c.size(); ++i) constrained = constrained || !c.jacobian(i, k).is_zero();
+    if (constrained) continue;
+    std::string name = e.symbols.coordinate_names[k];
+    out.push_back({k, {"p_" + name, L.T.diff(L.qdot[k]),
+                       name + " is cyclic: L does not contain it, and no applied force" + at_zero_inputs(mech, e.symbols) +
+                           ", dissipation or constraint acts on it, so its momentum ∂L/∂der(" + name +
+                           ") is conserved (Hiller §3.8.3)"}});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<FirstIntegral> find_first_integrals(const Equations& e, const Mechanics& mech) {
+  Lagrangian L{kinetic_energy_of(mech), mech.potential_energy, e.symbols.coordinates,
+               e.uses_pseudo_velocities() ? e.coordinate_velocities : e.symbols.velocities, e.symbols.time};
+  bool hamilton = e.method == "hamilton";
+  MotionSymbols motion = motion_symbols(e.symbols);
+  GiNaC::exmap rates;  // q' = coordinate_rates(q, s, t) writes them in the state's variables
+  for (std::size_t j = 0; e.uses_pseudo_velocities() && j < L.qdot.size(); ++j) rates[L.qdot[j]] = e.coordinate_rates[j];
+  auto in_state = [&](const ex& x) {
+    return rates.empty() ? x : simplify_trig_rational(tidy(x.subs(rates), motion), motion);
+  };
+  std::vector<FirstIntegral> found;
+  if (auto h = generalized_energy(e, mech, L)) {
+    h->expression = hamilton ? e.hamiltonian : in_state(h->expression);  // h = H in canonical variables
+    found.push_back(*h);
+  }
+  for (auto& [k, p] : cyclic_momenta(e, mech, L)) {
+    p.expression = hamilton ? ex(e.symbols.velocities[k]) : in_state(p.expression);
+    found.push_back(p);
+  }
+  return found;
+}
+
+}  // namespace eomgen
