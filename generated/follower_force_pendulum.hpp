@@ -37,6 +37,9 @@ inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false}};
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = false;
 
+/// Hamilton's equations with H = T(p) + V(q): Störmer–Verlet in canonical variables is explicit.
+inline constexpr bool separable_hamiltonian = false;
+
 /// The parameters by name, with the model's defaults; values() gives them in
 /// parameter_names order, as the functions below take them.
 template <class Scalar>

@@ -57,6 +57,7 @@ struct eomgen_model_abi {
   size_t num_first_integrals;
   const char* const* first_integral_names;
   eomgen_configuration_function first_integrals;
+  int separable_hamiltonian; /* Hamilton's equations with H = T(p) + V(q) */
 };
 
 #ifdef __cplusplus
@@ -78,7 +79,7 @@ struct eomgen_model_abi {
       m::multiplier_names.data(), m::baumgarte_alpha, m::baumgarte_beta, m::constraint_jacobian<double>, \
       m::constraint_residuals<double>, m::multipliers<double>, m::rhs_stabilized<double>,              \
       m::jacobian_state_stabilized<double>, m::num_first_integrals, m::first_integral_names.data(),      \
-      m::first_integrals<double>};                                                                     \
+      m::first_integrals<double>, m::separable_hamiltonian ? 1 : 0};                                   \
   return &abi;
 
 /* Defines `eomgen_model()`, the entry point of a compiled model's shared object. */

@@ -19,7 +19,7 @@ namespace eomgen::runtime {
 
 const std::vector<std::string>& integrator_names() {
   static const std::vector<std::string> names = {"cvode-bdf", "cvode-adams", "arkode-dp5", "arkode-verner",
-                                                 "arkode-dirk", "rk4", "verlet", "ida", "reference"};
+                                                 "arkode-dirk", "rk4", "verlet", "gauss-legendre", "ida", "reference"};
   return names;
 }
 
@@ -33,12 +33,16 @@ const double* Problem::inputs_at(double t, std::vector<double>& scratch) const {
 
 bool is_dae_integrator(const std::string& name) { return name == "ida"; }
 
+bool is_fixed_step_integrator(const std::string& name) {
+  return name == "rk4" || name == "verlet" || name == "gauss-legendre";
+}
+
 std::string integrator_refusal(const eomgen_model_abi& m, const std::string& name) {
   if (is_dae_integrator(name) && m.num_multipliers == 0)
     return "the integrator ida solves Lagrange I models (method = \"lagrange1\") only";
-  if (name == "verlet" && std::string(m.method) == "hamilton")
-    return "this Störmer–Verlet works on x = [q; q']; the state of Hamilton's equations is [q; p]: use rk4 or an "
-           "adaptive integrator";
+  if (name == "verlet" && std::string(m.method) == "hamilton" && !m.separable_hamiltonian)
+    return "Störmer–Verlet in canonical variables needs a separable H = T(p) + V(q), and this H couples them (the "
+           "kinetic energy depends on the coordinates): use gauss-legendre, the implicit symplectic method";
   if (name == "verlet" && m.num_coordinates != m.num_velocities)
     return "Störmer–Verlet needs q' = v; the state of Appell's equations holds pseudo-velocities: use rk4 or an "
            "adaptive integrator";
@@ -61,8 +65,7 @@ std::unique_ptr<Stepper> make_stepper(RightHandSide& f, const std::vector<double
   // ARKODE 5.4 has no Verner 8(7); Fehlberg's 13-stage 8(7) is its highest-order embedded pair
   if (name == "arkode-verner") return make_arkode_explicit(f, x0, s, ARKODE_FEHLBERG_13_7_8);
   if (name == "arkode-dirk") return make_arkode_dirk(f, x0, s);
-  if (name == "rk4") return make_fixed_step(f, x0, s, false);
-  if (name == "verlet") return make_fixed_step(f, x0, s, true);
+  if (is_fixed_step_integrator(name)) return make_fixed_step(f, x0, s);
   if (name == "ida") return make_ida(f, x0, s);
   if (name == "reference") return make_reference(f, x0, s);
   throw std::invalid_argument("unknown integrator " + name);
@@ -145,7 +148,7 @@ class StepLimitWatch {
  public:
   StepLimitWatch(const Problem& p, const SimulationSettings& s, std::vector<std::string>& warnings)
       : p_(p), integrator_(s.integrator), warnings_(warnings) {
-    fixed_ = s.integrator == "rk4" || s.integrator == "verlet";
+    fixed_ = is_fixed_step_integrator(s.integrator);
     h_ = std::min(s.step > 0 ? s.step : s.dt_out / 10, s.dt_out);
     long outputs = static_cast<long>(std::ceil((s.t_end - s.t_start) / s.dt_out));
     stride = std::max(1L, outputs / 100);

@@ -33,7 +33,7 @@ struct SimulationSettings {
   double t_start = 0, t_end = 10, dt_out = 0.01;
   std::string integrator = "cvode-bdf";
   double rtol = 1e-8, atol = 1e-10;
-  double step = 0;               // fixed step of rk4 and verlet; 0: dt_out/10
+  double step = 0;               // fixed step of rk4, verlet and gauss-legendre; 0: dt_out/10
   long max_steps = 200'000;      // between two output times
   // constrained models: Baumgarte's stabilization (Lagrange I) and projection onto the
   // constraint manifold after every step; gains < 0 take the model's defaults
@@ -43,6 +43,9 @@ struct SimulationSettings {
   std::vector<bool> given_state;
   double baumgarte_alpha = -1, baumgarte_beta = -1;
 };
+
+/// rk4, verlet and gauss-legendre: they take the step --step, not a tolerance.
+bool is_fixed_step_integrator(const std::string& name);
 
 /// The integrators that solve Lagrange I as a differential-algebraic system.
 bool is_dae_integrator(const std::string& name);

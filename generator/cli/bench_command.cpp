@@ -99,7 +99,7 @@ int bench(const Options& o) {
   std::vector<double> x0 = loaded.initial_state;
   if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!o.horizon_integrator.empty()) {
-    bool fixed_step = o.horizon_integrator == "rk4" || o.horizon_integrator == "verlet";
+    bool fixed_step = runtime::is_fixed_step_integrator(o.horizon_integrator);
     if (std::find(integrators->begin(), integrators->end(), o.horizon_integrator) == integrators->end() || fixed_step) {
       std::cerr << "eomgen: error: --horizon needs one of the adaptive integrators of the run\n";
       return exit_user_error;

@@ -119,13 +119,14 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   o.settings.integrator = "auto";
   cmd->add_option("--integrator", o.settings.integrator,
                   "auto (default: cvode-bdf for constrained or stiff models, else arkode-dp5; the choice is printed), "
-                  "cvode-bdf, cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet, "
+                  "cvode-bdf, cvode-adams, arkode-dp5, arkode-verner, arkode-dirk, rk4, verlet (in canonical variables for a "
+                  "separable H), gauss-legendre (implicit, symplectic, order 4), "
                   "ida (Lagrange I models, as a differential-algebraic system), reference (extrapolation in a wide scalar, "
                   "with its own error estimate)")
       ->check(CLI::IsMember(names));
   cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
   cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");
-  cmd->add_option("--step", o.settings.step, "Fixed step of rk4 and verlet [s] (default dt-out/10)");
+  cmd->add_option("--step", o.settings.step, "Fixed step of rk4, verlet and gauss-legendre [s] (default dt-out/10)");
   cmd->add_option("--stabilization", o.stabilization,
                   "Constrained models: both (default), baumgarte (Lagrange I), projection (after every step) or none")
       ->check(CLI::IsMember({"both", "baumgarte", "projection", "none"}));

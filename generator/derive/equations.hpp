@@ -72,6 +72,10 @@ struct Equations {
 /// P = −∂f/∂q', Q = −∂f/∂q, B = ∂f/∂u, each entry kept compact.
 void add_linearization(Equations& equations);
 
+/// Hamilton's equations with H = T(p) + V(q): q' depends on the momenta alone and p' on
+/// the coordinates and time alone, so Störmer–Verlet in canonical variables is explicit.
+bool separable_hamiltonian(const Equations& equations);
+
 /// Coordinates on which neither the mass matrix nor the forcing depends (Hiller §3.8).
 std::vector<bool> cyclic_coordinates(const Equations& equations);
 

@@ -82,4 +82,15 @@ Equations derive_hamilton(const Model& model, const Mechanics& mech) {
   return e;
 }
 
+bool separable_hamiltonian(const Equations& e) {
+  if (e.method != "hamilton") return false;
+  for (const ex& rate : e.coordinate_rates)
+    for (const auto& q : e.symbols.coordinates)
+      if (rate.has(q) || rate.has(e.symbols.time)) return false;
+  for (const ex& force : e.forcing)
+    for (const auto& p : e.symbols.velocities)
+      if (force.has(p)) return false;
+  return true;
+}
+
 }  // namespace eomgen

@@ -325,11 +325,14 @@ std::string emit_cpp_header(const Equations& e) {
       "inline constexpr std::array<bool, num_coordinates> is_cyclic{{{{{}}}}};\n\n"
       "/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,\n"
       "/// scleronomic): what an energy-drift check may rely on.\n"
-      "inline constexpr bool conserves_energy_without_inputs = {};\n\n",
+      "inline constexpr bool conserves_energy_without_inputs = {};\n\n"
+      "/// Hamilton's equations with H = T(p) + V(q): Störmer–Verlet in canonical variables is explicit.\n"
+      "inline constexpr bool separable_hamiltonian = {};\n\n",
       quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(definitions),
       quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
-      number_list(s.input_defaults), cyclic_list(e), e.conserves_energy_without_inputs ? "true" : "false");
+      number_list(s.input_defaults), cyclic_list(e), e.conserves_energy_without_inputs ? "true" : "false",
+      separable_hamiltonian(e) ? "true" : "false");
   out += fmt::format(
       "/// The parameters by name, with the model's defaults; values() gives them in\n"
       "/// parameter_names order, as the functions below take them.\n"

@@ -14,7 +14,7 @@ namespace eomgen::runtime {
 
 namespace {
 
-bool fixed_step(const std::string& name) { return name == "rk4" || name == "verlet"; }
+bool fixed_step(const std::string& name) { return is_fixed_step_integrator(name); }
 
 double cpu_now() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 

@@ -1,5 +1,7 @@
 /// @file Fixed-step integrators: the classical fourth-order Runge–Kutta method,
-/// and Störmer–Verlet (leapfrog, kick–drift–kick) on x = [q; v]. Verlet is
+/// Störmer–Verlet (leapfrog, kick–drift–kick) on x = [q; v] or, for Hamilton's
+/// equations with a separable H = T(p) + V(q), on x = [q; p], and the implicit
+/// two-stage Gauss–Legendre method (integrate/gauss_legendre.cpp). Verlet is
 /// symplectic when the acceleration depends on q alone (conservative forces,
 /// constant mass matrix), and symmetric and of second order in general.
 #include <chrono>
@@ -7,15 +9,28 @@
 
 #include <fmt/format.h>
 
+#include "integrate/gauss_legendre.hpp"
 #include "integrate/stepper.hpp"
 
 namespace eomgen::runtime {
 namespace {
 
+enum class Method { rk4, verlet, canonical_verlet, gauss_legendre };
+
+const char* title(Method m) {
+  switch (m) {
+    case Method::rk4: return "RK4";
+    case Method::verlet: return "Störmer–Verlet";
+    case Method::canonical_verlet: return "Störmer–Verlet in canonical variables";
+    case Method::gauss_legendre: return "Gauss–Legendre";
+  }
+  return "";
+}
+
 class FixedStep : public Stepper {
  public:
-  FixedStep(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool verlet)
-      : f_(f), x_(x0), t_(s.t_start), h_(s.step > 0 ? s.step : s.dt_out / 10), verlet_(verlet) {
+  FixedStep(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, Method method)
+      : f_(f), x_(x0), t_(s.t_start), h_(s.step > 0 ? s.step : s.dt_out / 10), method_(method), gauss_(x0.size()) {
     started_ = std::chrono::steady_clock::now();
   }
 
@@ -25,14 +40,16 @@ class FixedStep : public Stepper {
       double h = std::min(h_, t_out - t_);
       if (t_out - (t_ + h) < 1e-12 * std::max(1.0, std::abs(t_out))) h = t_out - t_;
       bool projected = true;
-      if (!(verlet_ ? verlet_step(h) : rk4_step(h)) ||
+      if (!take_step(h) ||
           !(projected = !f_.projection || f_.projection->project(t_ + h, x_.data()))) {
         x = x_;
         failure_time = t_;
         flag = -1;
-        reason = fmt::format("{} stopped: {}", verlet_ ? "Störmer–Verlet" : "RK4",
-                             projected ? "the right-hand side is not finite"
-                                       : "the projection onto the constraints failed (Newton's method did not converge)");
+        reason = fmt::format("{} stopped: {}", title(method_),
+                             !projected ? "the projection onto the constraints failed (Newton's method did not converge)"
+                             : method_ == Method::gauss_legendre && !f_.saw_non_finite()
+                                 ? "Newton's method on the stage equations did not converge (try a smaller --step)"
+                                 : "the right-hand side is not finite");
         return false;
       }
       t_ = (t_out - (t_ + h) < 1e-12 * std::max(1.0, std::abs(t_out))) ? t_out : t_ + h;
@@ -46,11 +63,22 @@ class FixedStep : public Stepper {
     SolverStatistics s;
     s.steps = steps_;
     s.rhs_evaluations = f_.evaluations();
+    s.jacobian_evaluations = gauss_.jacobian_evaluations();
     s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
     return s;
   }
 
  private:
+  bool take_step(double h) {
+    switch (method_) {
+      case Method::rk4: return rk4_step(h);
+      case Method::verlet: return verlet_step(h);
+      case Method::canonical_verlet: return canonical_verlet_step(h);
+      case Method::gauss_legendre: return gauss_.step(f_, t_, h, x_);
+    }
+    return false;
+  }
+
   bool rk4_step(double h) {
     std::size_t n = x_.size();
     std::vector<double> k1(n), k2(n), k3(n), k4(n), y(n);
@@ -94,18 +122,37 @@ class FixedStep : public Stepper {
     return true;
   }
 
+  // x = [q; p] with q' = ∂H/∂p(p) and p' = −∂H/∂q(q, t): kick p by h/2, drift q by h with
+  // q'(p½), kick p by h/2 at the new q. Explicit and symplectic for a separable H.
+  bool canonical_verlet_step(double h) {
+    std::size_t n = x_.size(), half = n / 2;
+    std::vector<double> xdot(n);
+    if (f_(t_, x_.data(), xdot.data())) return false;
+    for (std::size_t i = 0; i < half; ++i) x_[half + i] += h / 2 * xdot[half + i];
+    if (f_(t_ + h / 2, x_.data(), xdot.data())) return false;
+    for (std::size_t i = 0; i < half; ++i) x_[i] += h * xdot[i];
+    if (f_(t_ + h, x_.data(), xdot.data())) return false;
+    for (std::size_t i = 0; i < half; ++i) x_[half + i] += h / 2 * xdot[half + i];
+    return true;
+  }
+
   RightHandSide& f_;
   std::vector<double> x_;
   double t_, h_;
-  bool verlet_;
+  Method method_;
+  GaussLegendreStep gauss_;
   long steps_ = 0;
   std::chrono::steady_clock::time_point started_;
 };
 
 }  // namespace
 
-std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool verlet) {
-  return std::make_unique<FixedStep>(f, x0, s, verlet);
+std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s) {
+  Method method = s.integrator == "gauss-legendre" ? Method::gauss_legendre
+                  : s.integrator != "verlet"       ? Method::rk4
+                  : std::string(f.problem().model->method) == "hamilton" ? Method::canonical_verlet
+                                                                         : Method::verlet;
+  return std::make_unique<FixedStep>(f, x0, s, method);
 }
 
 }  // namespace eomgen::runtime

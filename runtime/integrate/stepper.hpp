@@ -63,11 +63,12 @@ std::unique_ptr<Stepper> make_cvode(RightHandSide& f, const std::vector<double>&
 std::unique_ptr<Stepper> make_arkode_explicit(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, int table);
 /// Diagonally implicit Runge–Kutta with the generated Jacobian.
 std::unique_ptr<Stepper> make_arkode_dirk(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
-/// Fixed-step classical RK4, or Störmer–Verlet (leapfrog) on x = [q; v].
 /// IDA on the stabilized index-2 form of Gear, Gupta and Leimkuhler (Lagrange I models).
 std::unique_ptr<Stepper> make_ida(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
 /// Extrapolation in a wide scalar with its own error estimate (Problem::reference).
 std::unique_ptr<Stepper> make_reference(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
-std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool verlet);
+/// The fixed-step integrator s.integrator names: rk4, verlet (canonical for Hamilton's
+/// equations) or gauss-legendre.
+std::unique_ptr<Stepper> make_fixed_step(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s);
 
 }  // namespace eomgen::runtime

@@ -84,7 +84,7 @@ std::string work_precision_markdown(const std::string& model, const WorkPrecisio
   double floor = INFINITY;
   for (const WorkPrecisionRun& r : w.runs)
     if (std::isfinite(r.error) && r.error > 0) floor = std::min(floor, r.error);
-  for (const char* fixed : {"rk4", "verlet"}) {
+  for (const char* fixed : {"rk4", "verlet", "gauss-legendre"}) {
     double order = observed_order(w.runs, fixed, 10 * floor, 1e-3);
     if (std::isfinite(order))
       out += fmt::format("Observed order of {} (slope of log error against log step, errors from {:.0e} to 1e-3): {:.2f}.\n",
