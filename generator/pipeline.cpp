@@ -37,11 +37,14 @@ void orient(Equations& e) {
     for (unsigned j = 0; j < c.jacobian.cols(); ++j) each(c.jacobian(i, j));
 }
 
-// `reduce`: the cyclic coordinates Routh's reduction eliminates, whatever the model's method
-Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vector<std::string>& reduce = {}) {
+// `reduce`: the cyclic coordinates Routh's reduction eliminates, whatever the model's method;
+// `method`: the method to use instead of the model's
+Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vector<std::string>& reduce = {},
+                  const std::string& method = "") {
   Derivation result;
   if (diagnostics.empty()) {
     Model model = build_model(file, diagnostics);
+    if (!method.empty()) model.method = method;
     if (diagnostics.empty() && !reduce.empty()) {
       try {
         result.equations = derive_routh(model, compute_mechanics(model), reduce);
@@ -82,6 +85,12 @@ Derivation derive_reduced_model_file(const std::string& path, const std::vector<
   Diagnostics diagnostics;
   ModelFile file = parse_model_file(path, diagnostics);
   return derive(file, std::move(diagnostics), cyclic);
+}
+
+Derivation derive_model_file_as(const std::string& path, const std::string& method) {
+  Diagnostics diagnostics;
+  ModelFile file = parse_model_file(path, diagnostics);
+  return derive(file, std::move(diagnostics), {}, method);
 }
 
 Derivation derive_model_text(const std::string& text, const std::string& path) {

@@ -21,6 +21,9 @@ Derivation derive_model_file(const std::string& path);
 /// eliminated, their momenta p_<coordinate> as parameters (Hiller §3.8.4).
 Derivation derive_reduced_model_file(const std::string& path, const std::vector<std::string>& cyclic);
 
+/// Reads a model file and derives it by `method` instead of the method it names.
+Derivation derive_model_file_as(const std::string& path, const std::string& method);
+
 /// Same, from model text in memory; `path` names it in diagnostics.
 Derivation derive_model_text(const std::string& text, const std::string& path);
 
