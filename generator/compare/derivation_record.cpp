@@ -23,6 +23,11 @@ class RecordBuilder {
     if (root_.kind != JsonValue::object) return wrong(root_, "the file is not a JSON object");
     for (const char* key : {"model", "method", "coordinates", "velocities", "parameters", "mass_matrix", "forcing"})
       if (!root_.find(key)) return wrong(root_, fmt::format("not a derivation: the key \"{}\" is missing", key));
+    if (const JsonValue* form = root_.find("hamiltonian_form"); form && form->kind == JsonValue::string &&
+                                                                  form->text == "mass_matrix")
+      return wrong(*form, "Hamilton's equations in mass-matrix form (der(q) solved from M der(q) = p - b in the "
+                          "generated code) cannot be compared equation by equation; compare the models' lagrange2 "
+                          "derivations instead");
     r.model = text(*root_.find("model"), "model");
     r.method = text(*root_.find("method"), "method");
     r.coordinates = names(*root_.find("coordinates"), "coordinates");

@@ -53,6 +53,12 @@ struct Equations {
   std::vector<NamedSymbolic> pseudo_velocity_definitions;    // s = Y q' + y, as given or chosen
   GiNaC::ex acceleration_energy;                             // S(q, s, s', t), without terms free of s'
   GiNaC::ex hamiltonian;  // Hamilton: H(q, p, t); the velocities are then the momenta p, M = I and f = p'
+  /// Hamilton's equations of a larger model, where M⁻¹ would swell: der(q) solves
+  /// momentum_mass_matrix·der(q) = p − momentum_bias in the generated code, and H, f, T and the
+  /// outputs are written in q and der(q) (coordinate_rates are then der(q) itself). Empty otherwise.
+  GiNaC::matrix momentum_mass_matrix;
+  std::vector<GiNaC::ex> momentum_bias;
+  bool solves_for_velocities() const { return !momentum_bias.empty(); }
   std::vector<GiNaC::realsymbol> pseudo_accelerations;       // s', as they appear in S
   std::size_t num_velocities() const { return symbols.velocities.size(); }
   bool uses_pseudo_velocities() const { return !coordinate_rates.empty(); }

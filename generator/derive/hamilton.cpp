@@ -6,8 +6,8 @@
 /// taken at q̇(q, p). The state is x = [q; p]: the equations take the form of
 /// Appell's (kinematic equations q̇ = r(q,p,t), M = I, f = ṗ), so the header,
 /// the simulation and the stability analysis serve both. H is written in closed
-/// form, with M⁻¹ formed symbolically (fine for the few coordinates of a
-/// textbook system; larger models are better derived with lagrange2).
+/// form, with M⁻¹ formed symbolically, for up to three coordinates or a diagonal
+/// M; beyond that M⁻¹ swells, and the generated code solves M q̇ = p − b instead.
 #include "derive/methods.hpp"
 
 #include "symbolic/trig_rational.hpp"
@@ -19,6 +19,64 @@ using GiNaC::ex;
 namespace {
 
 ex compact(const ex& e, const MotionSymbols& motion) { return simplify_trig_rational(tidy(e, motion), motion); }
+
+// q̇ = M⁻¹(p − b) eliminated symbolically: H(q, p, t) = pᵀq̇ − T + V, ṗ = −∂H/∂q + Q − ∂R/∂q̇
+void write_closed_form(Equations& e, const Equations& lagrange, const Mechanics& mech,
+                       const std::vector<GiNaC::realsymbol>& momenta, const std::vector<ex>& bias,
+                       const MotionSymbols& motion) {
+  const Symbols& s = lagrange.symbols;
+  std::size_t n = momenta.size();
+  GiNaC::matrix shifted(n, 1);
+  for (unsigned j = 0; j < n; ++j) shifted(j, 0) = momenta[j] - bias[j];
+  GiNaC::matrix rates = lagrange.mass_matrix.inverse().mul(shifted);
+  GiNaC::exmap velocity_of;
+  for (unsigned j = 0; j < n; ++j) {
+    e.coordinate_rates.push_back(compact(rates(j, 0), motion));
+    velocity_of[s.velocities[j]] = e.coordinate_rates.back();
+  }
+  const ex& T = lagrange.kinetic_energy;
+  ex H = mech.potential_energy - T.subs(velocity_of);
+  for (unsigned j = 0; j < n; ++j) H += momenta[j] * e.coordinate_rates[j];
+  e.hamiltonian = compact(H.normal(), motion);
+  for (unsigned j = 0; j < n; ++j) {
+    ex applied = (mech.generalized_force[j] - mech.dissipation.diff(s.velocities[j])).subs(velocity_of);
+    e.forcing[j] = compact(-e.hamiltonian.diff(s.coordinates[j]) + applied, motion);
+  }
+  e.kinetic_energy = compact(T.subs(velocity_of), motion);
+  e.dissipation = compact(mech.dissipation.subs(velocity_of), motion);
+  for (NamedSymbolic& o : e.outputs) o.expression = compact(o.expression.subs(velocity_of), motion);
+}
+
+// v = q̇ is left to the generated code, which solves M v = p − b; with ∂H/∂q|_p = −∂L/∂q|_{q̇=v},
+// ṗ = ∂T/∂q − ∂V/∂q + Q − ∂R/∂q̇, and H = vᵀ∂T/∂v − T + V, all in q and v
+void write_mass_matrix_form(Equations& e, const Equations& lagrange, const Mechanics& mech, const std::vector<ex>& bias) {
+  const Symbols& s = lagrange.symbols;
+  const ex& T = lagrange.kinetic_energy;
+  std::size_t n = bias.size();
+  e.momentum_mass_matrix = lagrange.mass_matrix;
+  e.momentum_bias = bias;
+  ex H = mech.potential_energy - T;
+  for (unsigned j = 0; j < n; ++j) {
+    e.coordinate_rates.push_back(s.velocities[j]);
+    H += s.velocities[j] * T.diff(s.velocities[j]);
+    e.forcing[j] = tidy(T.diff(s.coordinates[j]) - mech.potential_energy.diff(s.coordinates[j]) +
+                            mech.generalized_force[j] - mech.dissipation.diff(s.velocities[j]), mech.motion);
+  }
+  e.hamiltonian = tidy(H, mech.motion);
+}
+
+}  // namespace
+
+namespace {
+
+// M⁻¹ in closed form swells beyond a few coordinates unless M is diagonal
+bool closed_form_fits(const GiNaC::matrix& M) {
+  if (M.rows() <= 3) return true;
+  for (unsigned i = 0; i < M.rows(); ++i)
+    for (unsigned j = 0; j < M.cols(); ++j)
+      if (i != j && !M(i, j).is_zero()) return false;
+  return true;
+}
 
 }  // namespace
 
@@ -32,46 +90,29 @@ Equations derive_hamilton(const Model& model, const Mechanics& mech) {
   MotionSymbols motion = mech.motion;
   for (const auto& p : momenta) motion.symbols.insert(p);
 
-  // p = M q̇ + b, so q̇ = M⁻¹(p − b), with b = ∂T/∂q̇ at q̇ = 0
+  // p = M q̇ + b, with b = ∂T/∂q̇ at q̇ = 0
   GiNaC::exmap at_rest;
   for (const auto& v : s.velocities) at_rest[v] = 0;
-  GiNaC::matrix shifted(n, 1);
+  std::vector<ex> bias;
   std::vector<NamedSymbolic> definitions;
   for (unsigned j = 0; j < n; ++j) {
     ex p_j = T.diff(s.velocities[j]);
     definitions.push_back({momenta[j].get_name(), tidy(p_j, mech.motion)});
-    shifted(j, 0) = momenta[j] - p_j.subs(at_rest);
+    bias.push_back(tidy(p_j.subs(at_rest), mech.motion));
   }
-  GiNaC::matrix rates = lagrange.mass_matrix.inverse().mul(shifted);
-  GiNaC::exmap velocity_of;
-  std::vector<ex> coordinate_rates;
-  for (unsigned j = 0; j < n; ++j) {
-    coordinate_rates.push_back(compact(rates(j, 0), motion));
-    velocity_of[s.velocities[j]] = coordinate_rates.back();
-  }
-
-  // H = pᵀ q̇ − T + V at q̇(q, p)
-  ex H = mech.potential_energy - T.subs(velocity_of);
-  for (unsigned j = 0; j < n; ++j) H += momenta[j] * coordinate_rates[j];
-  H = compact(H.normal(), motion);
-
   Equations e = lagrange;
   e.method = "hamilton";
   e.symbols.velocities = momenta;
   e.coordinate_velocities = s.velocities;
-  e.coordinate_rates = coordinate_rates;
   e.pseudo_velocity_definitions = definitions;
-  e.hamiltonian = H;
   e.mass_matrix = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(n));
   e.forcing.assign(n, 0);
-  for (unsigned j = 0; j < n; ++j) {
-    ex applied = (mech.generalized_force[j] - mech.dissipation.diff(s.velocities[j])).subs(velocity_of);
-    e.forcing[j] = compact(-H.diff(s.coordinates[j]) + applied, motion);
-  }
-  e.kinetic_energy = compact(T.subs(velocity_of), motion);
-  e.dissipation = compact(mech.dissipation.subs(velocity_of), motion);
-  for (NamedSymbolic& o : e.outputs) o.expression = compact(o.expression.subs(velocity_of), motion);
   e.acceleration_energy = 0;
+  if (closed_form_fits(lagrange.mass_matrix)) {
+    write_closed_form(e, lagrange, mech, momenta, bias, motion);
+  } else {
+    write_mass_matrix_form(e, lagrange, mech, bias);
+  }
   // the initial momenta from the initial state with the default parameters
   GiNaC::exmap at = s.default_parameter_values();
   for (unsigned j = 0; j < n; ++j) at[s.coordinates[j]] = s.initial_coordinates[j], at[s.velocities[j]] = s.initial_velocities[j];

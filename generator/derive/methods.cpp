@@ -20,6 +20,11 @@ std::vector<bool> cyclic_coordinates(const Equations& e) {
       free = !e.forcing[i].has(x);
       for (unsigned j = 0; j < k && free; ++j) free = !e.mass_matrix(i, j).has(x);
     }
+    // Hamilton's equations in mass-matrix form: der(q) follows from M der(q) = p − b
+    for (unsigned i = 0; i < e.momentum_bias.size() && free; ++i) {
+      free = !e.momentum_bias[i].has(x);
+      for (unsigned j = 0; j < e.momentum_bias.size() && free; ++j) free = !e.momentum_mass_matrix(i, j).has(x);
+    }
     for (unsigned i = 0; e.has_multipliers && i < c.size() && free; ++i) {
       free = !c.position[i].has(x) && !c.bias[i].has(x) && !c.acceleration_bias[i].has(x);
       for (unsigned j = 0; j < n && free; ++j) free = !c.jacobian(i, j).has(x);

@@ -41,7 +41,7 @@ std::string velocity_name(const std::string& name) {
 
 }  // namespace
 
-BodyWriter::BodyWriter(const Equations& e) {
+BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates(), k = s.velocities.size();
   for (std::size_t i = 0; i < n; ++i) inputs_.push_back({s.coordinates[i], "q_" + s.coordinate_names[i], fmt::format("x[{}]", i)});
@@ -58,7 +58,34 @@ BodyWriter::BodyWriter(const Equations& e) {
   for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
 }
 
+void BodyWriter::solve_velocities() {
+  const Equations& e = equations_;
+  if (velocities_solved_ || !e.solves_for_velocities()) return;
+  velocities_solved_ = true;
+  std::size_t n = e.momentum_bias.size();
+  std::vector<ex> exprs = upper_triangle(e.momentum_mass_matrix, n);
+  for (std::size_t i = 0; i < n; ++i) exprs.push_back(e.symbols.velocities[i] - e.momentum_bias[i]);
+  auto code = batch(exprs);
+  line(fmt::format("// der(q) from the momenta: M(q,t) der(q) = p - b(q,t)"));
+  line(fmt::format("T Mv[{}];", n * n));
+  write_symmetric(*this, std::vector<std::string>(code.begin(), code.begin() + n * (n + 1) / 2), n, "Mv");
+  line(fmt::format("T qd[{}];", n));
+  for (std::size_t i = 0; i < n; ++i) line(fmt::format("qd[{}] = {};", i, code[n * (n + 1) / 2 + i]));
+  line(fmt::format("T Lv[{}];", n * n));
+  line(fmt::format("T Dv[{}];", n));
+  line("detail::ldlt_factor(Mv, Lv, Dv);");
+  line("detail::ldlt_solve(Lv, Dv, qd);");
+  for (std::size_t i = 0; i < n; ++i) names_[e.coordinate_velocities[i]] = fmt::format("qd[{}]", i);
+}
+
 std::vector<std::string> BodyWriter::batch(const std::vector<ex>& expressions) {
+  auto needs_velocities = [&] {
+    for (const ex& x : expressions)
+      for (const auto& v : equations_.coordinate_velocities)
+        if (x.has(v)) return true;
+    return false;
+  };
+  if (equations_.solves_for_velocities() && !velocities_solved_ && needs_velocities()) solve_velocities();
   std::vector<ex> for_code;
   for (const ex& e : expressions) for_code.push_back(expand_trig_of_sums(e));
   CseBatch b = cse_.add(for_code);

@@ -27,7 +27,11 @@ class BodyWriter {
   void name(const GiNaC::symbol& symbol, const std::string& text) { names_[symbol] = text; }
 
   /// The statements computing a batch's temporaries; the outputs are returned as C++ text.
+  /// For Hamilton's equations in mass-matrix form, the first batch that needs der(q) is
+  /// preceded by the solution of M der(q) = p − b into the local array qd.
   std::vector<std::string> batch(const std::vector<GiNaC::ex>& expressions);
+  /// Solves M der(q) = p − b now (once); the factors are then in Lv and Dv.
+  void solve_velocities();
   void line(const std::string& text) { statements_ += "  " + text + "\n"; }
   /// Declarations of the model symbols used, then the statements.
   std::string finish(const std::string& unused);
@@ -40,6 +44,8 @@ class BodyWriter {
   void note(const GiNaC::ex& e);
   std::string code(const GiNaC::ex& e);
 
+  const Equations& equations_;
+  bool velocities_solved_ = false;
   std::vector<Input> inputs_;
   std::vector<GiNaC::symbol> accelerations_;
   std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_;

@@ -41,7 +41,19 @@ std::string hamilton_json(const Equations& e) {
     forces += (forces.empty() ? "" : ", ") + quote("der(" + e.pseudo_velocity_definitions[j].name + ")") + ": " +
               expression(e.forcing[j]);
   }
-  return ",\n  \"momenta\": {" + momenta + "}" + ",\n  \"hamiltonian\": " + expression(e.hamiltonian) +
+  std::string form = ",\n  \"hamiltonian_form\": \"closed\"";
+  if (e.solves_for_velocities()) {
+    // der(q) solves momentum_mass_matrix*der(q) = p - momentum_bias; H and der(p) are in q and der(q)
+    std::string rows;
+    for (unsigned j = 0; j < e.momentum_bias.size(); ++j) {
+      std::vector<GiNaC::ex> row;
+      for (unsigned k = 0; k < e.momentum_bias.size(); ++k) row.push_back(e.momentum_mass_matrix(j, k));
+      rows += (j ? ", " : "") + expression_array(row);
+    }
+    form = ",\n  \"hamiltonian_form\": \"mass_matrix\",\n  \"momentum_mass_matrix\": [" + rows +
+           "],\n  \"momentum_bias\": " + expression_array(e.momentum_bias);
+  }
+  return form + ",\n  \"momenta\": {" + momenta + "}" + ",\n  \"hamiltonian\": " + expression(e.hamiltonian) +
          ",\n  \"canonical_equations\": {" + rates + ", " + forces + "}" + ",\n  \"pseudo_velocities\": {" + momenta + "}" +
          ",\n  \"coordinate_rates\": " + expression_array(e.coordinate_rates);
 }

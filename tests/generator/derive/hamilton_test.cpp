@@ -5,7 +5,9 @@
 // canonical variables against the lagrange2 trajectories mapped through p = dT/d der(q).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <regex>
 
 #include "pipeline.hpp"
 #include "support/test_support.hpp"
@@ -94,6 +96,60 @@ TEST(Hamilton, TrajectoriesAgreeWithLagrangeTwo) {
     EXPECT_NEAR(hamilton[k][2], 2 * 0.49 * lagrange[k][2], 1e-9) << "p_phi at t = " << lagrange[k][0];
     EXPECT_NEAR(hamilton[k][3], lagrange[k][3], 1e-9) << "T + V at t = " << lagrange[k][0];
   }
+}
+
+TEST(Hamilton, LargerModelsSolveForTheVelocitiesInTheGeneratedCode) {
+  // the 4-link chain: H and der(p) in q and der(q), der(q) from M der(q) = p (b = 0, scleronomic)
+  Equations h = derive_model("n_link_pendulum_4_hamilton");
+  Equations l = derive_model("n_link_pendulum_4");
+  ASSERT_TRUE(h.solves_for_velocities());
+  // the lagrange2 expressions in the Hamilton derivation's symbols, matched by name
+  GiNaC::exmap rename;
+  for (std::size_t i = 0; i < l.symbols.parameters.size(); ++i) rename[l.symbols.parameters[i]] = h.symbols.parameters[i];
+  for (std::size_t i = 0; i < 4; ++i)
+    rename[l.symbols.coordinates[i]] = h.symbols.coordinates[i], rename[l.symbols.velocities[i]] = h.coordinate_velocities[i];
+  auto in_h = [&](const GiNaC::ex& x) { return x.subs(rename); };
+  std::vector<GiNaC::exmap> points = random_points(h.symbols, 10);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t i = 0; i < 4; ++i) points[k][h.coordinate_velocities[i]] = 0.3 * double(i + 1) - 0.2 * double(k);
+  EXPECT_TRUE(agree_at_points(h.hamiltonian, in_h(l.kinetic_energy + l.potential_energy), points)) << "H = T + V in q, der(q)";
+  for (unsigned j = 0; j < 4; ++j) {
+    EXPECT_TRUE(h.momentum_bias[j].is_zero());
+    for (unsigned k = 0; k < 4; ++k)
+      EXPECT_TRUE(agree_at_points(h.momentum_mass_matrix(j, k), in_h(l.mass_matrix(j, k)), points));
+    // der(p) = dL/dq at der(q) = v (Hiller §3.8: dH/dq|_p = -dL/dq|_v)
+    const auto& q = l.symbols.coordinates[j];
+    EXPECT_TRUE(agree_at_points(h.forcing[j], in_h(l.kinetic_energy.diff(q) - l.potential_energy.diff(q)), points)) << j;
+  }
+  // trajectories and the spectrum at the hanging equilibrium agree with lagrange2
+  std::string dir = temporary_directory();
+  std::string common = " --t-end 6 --dt-out 0.1 --integrator cvode-bdf --rtol 1e-12 --atol 1e-13";
+  ASSERT_EQ(run_eomgen("simulate '" + model_path("n_link_pendulum_4") + "'" + common + " -o '" + dir + "/l.csv'").status, 0);
+  ASSERT_EQ(run_eomgen("simulate '" + model_path("n_link_pendulum_4_hamilton") + "'" + common + " -o '" + dir + "/h.csv'").status, 0);
+  auto lagrange = read_numeric_csv(dir + "/l.csv"), hamilton = read_numeric_csv(dir + "/h.csv");
+  ASSERT_EQ(lagrange.size(), hamilton.size());
+  for (std::size_t k = 0; k < lagrange.size(); ++k)
+    for (std::size_t i = 1; i <= 4; ++i) EXPECT_NEAR(hamilton[k][i], lagrange[k][i], 1e-8) << "t = " << lagrange[k][0];
+  std::string at = " --at phi1=0 --at phi2=0 --at phi3=0 --at phi4=0 --format json";
+  CommandOutput a = run_eomgen("stability '" + model_path("n_link_pendulum_4") + "'" + at);
+  CommandOutput b = run_eomgen("stability '" + model_path("n_link_pendulum_4_hamilton") + "'" + at);
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  // the frequencies |Im λ|, sorted: the same spectrum in both forms
+  auto frequencies = [](const std::string& json) {
+    std::string list = json.substr(json.find("\"eigenvalues\""));
+    list = list.substr(0, list.find("]]") + 2);
+    std::vector<double> out;
+    std::regex pair("\\[([^,\\[\\]]+), ([^\\]]+)\\]");
+    for (auto it = std::sregex_iterator(list.begin(), list.end(), pair); it != std::sregex_iterator(); ++it)
+      out.push_back(std::abs(std::stod((*it)[2].str())));
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  std::vector<double> fa = frequencies(a.out), fb = frequencies(b.out);
+  ASSERT_EQ(fa.size(), 8u) << a.out;
+  ASSERT_EQ(fb.size(), 8u) << b.out;
+  for (std::size_t i = 0; i < fa.size(); ++i) EXPECT_NEAR(fa[i], fb[i], 1e-9 * fa.back());
 }
 
 }  // namespace
