@@ -27,6 +27,7 @@ Command add_run_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_diff_command(CLI::App& app);
 Command add_check_integral_command(CLI::App& app);
+Command add_linear_command(CLI::App& app);
 
 struct LoadedProblem;
 /// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic

@@ -1,0 +1,82 @@
+/// @file K v = ω² M v by Eigen's GeneralizedSelfAdjointEigenSolver (Cholesky of M,
+/// then a symmetric eigenproblem): real ω² and M-orthonormal modes by construction,
+/// so frequencies of a conservative system have no spurious real parts. Rayleigh
+/// damping is detected by fitting D = αM + βK in the least-squares sense.
+#include "analyse/modal_analysis.hpp"
+
+#include <cmath>
+
+namespace eomgen::runtime {
+
+namespace {
+
+double largest(const Eigen::MatrixXd& A) { return A.size() ? A.cwiseAbs().maxCoeff() : 0; }
+
+// D = αM + βK over all entries; α, β by least squares, the fit's residual relative to |D|
+void fit_rayleigh(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K, ModalAnalysis& out) {
+  Eigen::Index n2 = M.size();
+  Eigen::MatrixXd basis(n2, 2);
+  basis.col(0) = Eigen::Map<const Eigen::VectorXd>(M.data(), n2);
+  basis.col(1) = Eigen::Map<const Eigen::VectorXd>(K.data(), n2);
+  Eigen::VectorXd target = Eigen::Map<const Eigen::VectorXd>(D.data(), n2);
+  Eigen::VectorXd ab = basis.completeOrthogonalDecomposition().solve(target);
+  double residual = largest(D - ab(0) * M - ab(1) * K);
+  if (residual <= 1e-10 * largest(D)) {
+    out.damping = "proportional";
+    out.rayleigh_alpha = ab(0), out.rayleigh_beta = ab(1);
+  } else {
+    out.damping = "nonproportional";
+  }
+}
+
+}  // namespace
+
+double rayleigh_quotient(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::VectorXd& v) {
+  return v.dot(K * v) / v.dot(M * v);
+}
+
+ModalAnalysis modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K) {
+  ModalAnalysis out;
+  double scale_M = largest(M), scale_K = std::max(largest(K), 1e-300);
+  if (largest(M - M.transpose()) > 1e-12 * scale_M || largest(K - K.transpose()) > 1e-12 * scale_K) {
+    out.refusal = "M or K is not symmetric";
+    return out;
+  }
+  Eigen::LLT<Eigen::MatrixXd> cholesky(M);
+  if (cholesky.info() != Eigen::Success) {
+    out.refusal = "M is not positive definite";
+    return out;
+  }
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(K, M);
+  const Eigen::VectorXd& squares = solver.eigenvalues();
+  const Eigen::MatrixXd& shapes = solver.eigenvectors();  // M-orthonormal
+  double zero = 1e-10 * std::max(std::abs(squares.maxCoeff()), 1e-300);
+  for (Eigen::Index i = 0; i < squares.size(); ++i) {
+    if (squares(i) < -zero) {
+      out.refusal = "K is not positive semidefinite: the equilibrium is unstable, it has no natural frequencies";
+      return out;
+    }
+    NaturalMode mode;
+    mode.rigid_body = squares(i) <= zero;
+    mode.omega = mode.rigid_body ? 0 : std::sqrt(squares(i));
+    mode.shape = shapes.col(i);
+    Eigen::Index biggest;
+    mode.shape.cwiseAbs().maxCoeff(&biggest);
+    if (mode.shape(biggest) < 0) mode.shape = -mode.shape;
+    out.rigid_body_modes += mode.rigid_body;
+    out.modes.push_back(mode);
+  }
+  Eigen::MatrixXd Phi(M.rows(), static_cast<Eigen::Index>(out.modes.size()));
+  for (std::size_t i = 0; i < out.modes.size(); ++i) Phi.col(static_cast<Eigen::Index>(i)) = out.modes[i].shape;
+  out.orthonormality_error = largest(Phi.transpose() * M * Phi - Eigen::MatrixXd::Identity(Phi.cols(), Phi.cols()));
+  if (largest(D) == 0) return out;
+  fit_rayleigh(M, D, K, out);
+  Eigen::MatrixXd modal = Phi.transpose() * D * Phi;
+  double diagonal = modal.diagonal().cwiseAbs().maxCoeff();
+  out.coupling = largest(modal - Eigen::MatrixXd(modal.diagonal().asDiagonal())) / std::max(diagonal, 1e-300);
+  for (std::size_t i = 0; i < out.modes.size(); ++i)
+    if (!out.modes[i].rigid_body) out.modes[i].damping_ratio = modal(Eigen::Index(i), Eigen::Index(i)) / (2 * out.modes[i].omega);
+  return out;
+}
+
+}  // namespace eomgen::runtime

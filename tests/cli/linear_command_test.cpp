@@ -1,0 +1,143 @@
+// `eomgen linear` against closed forms written here: the two-mass chain's
+// frequencies, mass-normalized modes, Rayleigh damping ratios and Φ(t) from the
+// modal solution; the double pendulum's frequencies and mode-shape ratios from its
+// frequency equation; the space rendezvous' Jordan structure and Φ(t) against the
+// Clohessy–Wiltshire solution.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "parse/json_reader.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+JsonValue run_json(const std::string& arguments) {
+  CommandOutput r = run_eomgen(arguments + " --format json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  Diagnostics d;
+  auto json = parse_json(r.out, "stdout", d);
+  EXPECT_TRUE(json) << d.format() << r.out;
+  return json ? *json : JsonValue{};
+}
+
+double at(const JsonValue& v, const std::string& key) { return v.find(key) ? v.find(key)->value : NAN; }
+
+// Φ(t) from the JSON, row-major
+std::vector<std::vector<double>> matrix_at(const JsonValue& json, std::size_t index) {
+  std::vector<std::vector<double>> out;
+  for (const JsonValue& row : json.find("fundamental_matrix")->items[index].find("matrix")->items) {
+    out.emplace_back();
+    for (const JsonValue& x : row.items) out.back().push_back(x.value);
+  }
+  return out;
+}
+
+TEST(LinearCommand, TwoMassChainModesAndFundamentalMatrix) {
+  // m = 1, k = 100, alpha = 0.1, beta = 0.001: ω = 10, √300; modes (1, ±1)/√2
+  JsonValue json = run_json("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --times 0.25,1.5");
+  const auto& modes = json.find("modes")->items;
+  ASSERT_EQ(modes.size(), 2u);
+  const double alpha = 0.1, beta = 0.001, w[2] = {10, std::sqrt(300.0)}, sign[2] = {1, -1};
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(at(modes[i], "frequency_rad_s"), w[i], 1e-12 * w[i]);
+    EXPECT_NEAR(at(modes[i], "period_s"), 2 * M_PI / w[i], 1e-12);
+    EXPECT_NEAR(at(modes[i], "damping_ratio"), alpha / (2 * w[i]) + beta * w[i] / 2, 1e-12);
+    EXPECT_NEAR(at(*modes[i].find("shape"), "x1"), 1 / std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(at(*modes[i].find("shape"), "x2"), sign[i] / std::sqrt(2.0), 1e-12);
+  }
+  EXPECT_EQ(json.find("damping")->find("kind")->text, "proportional");
+  EXPECT_LT(at(json, "orthonormality_error"), 1e-12);
+  // Φ(t) by modes: each q_i'' + 2ζω q_i' + ω² q_i = 0 solved in closed form, then x = V q
+  for (std::size_t k = 0; k < 2; ++k) {
+    double t = k == 0 ? 0.25 : 1.5;
+    auto Phi = matrix_at(json, k);
+    double exact[4][4] = {};
+    for (int i = 0; i < 2; ++i) {
+      double z = alpha / (2 * w[i]) + beta * w[i] / 2, wd = w[i] * std::sqrt(1 - z * z), e = std::exp(-z * w[i] * t);
+      double c = std::cos(wd * t), s = std::sin(wd * t);
+      // q(t) = e(c q0 + (v0 + zω q0)/wd s), v(t) = e((−ω²/wd) s q0 + (c − zω/wd s) v0)
+      double qq = e * (c + z * w[i] / wd * s), qv = e * s / wd, vq = -e * w[i] * w[i] / wd * s, vv = e * (c - z * w[i] / wd * s);
+      double V[2] = {1 / std::sqrt(2.0), sign[i] / std::sqrt(2.0)};
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) {
+          double P = V[a] * V[b];  // V diag(...) Vᵀ with M = I
+          exact[a][b] += P * qq, exact[a][2 + b] += P * qv, exact[2 + a][b] += P * vq, exact[2 + a][2 + b] += P * vv;
+        }
+    }
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) EXPECT_NEAR(Phi[a][b], exact[a][b], 1e-12 * 100) << "Phi(" << t << ")[" << a << "][" << b << "]";
+  }
+}
+
+TEST(LinearCommand, DoublePendulumFrequenciesFromTheFrequencyEquation) {
+  // m1 l1 l2 ω⁴ − (m1 + m2) g (l1 + l2) ω² + (m1 + m2) g² = 0 (absolute angles, as the model's)
+  const std::string set = " --set m1=1.5 --set m2=0.7 --set l1=0.9 --set l2=0.6 --set g=9.81";
+  JsonValue json = run_json("linear '" + model_path("double_pendulum") + "' --at phi1=0 --at phi2=0" + set);
+  const double m1 = 1.5, m2 = 0.7, l1 = 0.9, l2 = 0.6, g = 9.81;
+  double a = m1 * l1 * l2, b = -(m1 + m2) * g * (l1 + l2), c = (m1 + m2) * g * g;
+  double roots[2] = {(-b - std::sqrt(b * b - 4 * a * c)) / (2 * a), (-b + std::sqrt(b * b - 4 * a * c)) / (2 * a)};
+  const auto& modes = json.find("modes")->items;
+  ASSERT_EQ(modes.size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    double w2 = roots[i];
+    EXPECT_NEAR(std::pow(at(modes[i], "frequency_rad_s"), 2), w2, 1e-12 * w2);
+    // phi2/phi1 = (m1 + m2)(g − ω² l1)/(ω² m2 l2)
+    const JsonValue& shape = *modes[i].find("shape");
+    EXPECT_NEAR(at(shape, "phi2") / at(shape, "phi1"), (m1 + m2) * (g - w2 * l1) / (w2 * m2 * l2), 1e-10);
+  }
+  for (const JsonValue& e : json.find("eigenvalues")->items) EXPECT_EQ(at(e, "re"), 0) << "conservative: on the axis";
+}
+
+TEST(LinearCommand, RendezvousJordanStructureAndTheClohessyWiltshireSolution) {
+  const double n = 0.0011;
+  JsonValue json = run_json("linear '" + model_path("space_rendezvous") + "' --at x=0 --times 600,3000");
+  int found = 0;
+  for (const JsonValue& e : json.find("eigenvalues")->items) {
+    double re = at(e, "re"), im = at(e, "im");
+    EXPECT_EQ(re, 0);
+    EXPECT_EQ(at(e, "algebraic_multiplicity"), 2);
+    const auto& blocks = e.find("jordan_blocks")->items;
+    if (im == 0) {
+      EXPECT_EQ(at(e, "geometric_multiplicity"), 1) << "the along-track drift";
+      ASSERT_EQ(blocks.size(), 1u);
+      EXPECT_EQ(blocks[0].value, 2);
+    } else {
+      EXPECT_NEAR(std::abs(im), n, 1e-12);
+      EXPECT_EQ(at(e, "geometric_multiplicity"), 2) << "semisimple";
+    }
+    ++found;
+  }
+  EXPECT_EQ(found, 3);
+  EXPECT_FALSE(json.find("structure_uncertain")->truth);
+  for (std::size_t k = 0; k < 2; ++k) {
+    double t = k == 0 ? 600 : 3000, c = std::cos(n * t), s = std::sin(n * t);
+    // state [x, y, z, x', y', z']
+    double cw[6][6] = {{4 - 3 * c, 0, 0, s / n, 2 * (1 - c) / n, 0},
+                       {6 * (s - n * t), 1, 0, 2 * (c - 1) / n, (4 * s - 3 * n * t) / n, 0},
+                       {0, 0, c, 0, 0, s / n},
+                       {3 * n * s, 0, 0, c, 2 * s, 0},
+                       {6 * n * (c - 1), 0, 0, -2 * s, 4 * c - 3, 0},
+                       {0, 0, -n * s, 0, 0, c}};
+    auto Phi = matrix_at(json, k);
+    double largest = 0;
+    for (auto& row : cw)
+      for (double v : row) largest = std::max(largest, std::abs(v));
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) EXPECT_NEAR(Phi[a][b], cw[a][b], 1e-10 * largest) << "t = " << t << " [" << a << "][" << b << "]";
+  }
+}
+
+TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
+  CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("mode 1: ω = 10 rad/s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("damping: proportional (Rayleigh)"), std::string::npos) << r.out;
+  CommandOutput bad = run_eomgen("linear '" + model_path("two_mass_chain") + "' --times 1,x");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("'x' is not a number"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace eomgen::test

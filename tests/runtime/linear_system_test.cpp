@@ -1,0 +1,114 @@
+// The solution of linear systems (Hiller §6, §8.1) against closed forms written here:
+// the Jordan structure of a matrix with a known block of size 3, a nearly defective
+// matrix reported as uncertain, e^{At} of a rotation, and the modes of the symmetric
+// problem K v = ω² M v: the two-mass chain with Rayleigh damping, a free-free chain
+// with its rigid-body mode, and nonproportional damping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analyse/linear_system.hpp"
+#include "analyse/modal_analysis.hpp"
+
+namespace eomgen::runtime {
+namespace {
+
+TEST(JordanStructure, ABlockOfSizeThreeAndASimpleEigenvalue) {
+  // J = J3(2) ⊕ (−1), hidden by a similarity with a well-conditioned P
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(4, 4), P(4, 4);
+  J << 2, 1, 0, 0, 0, 2, 1, 0, 0, 0, 2, 0, 0, 0, 0, -1;
+  P << 1, 0.5, 0, 0.2, 0, 1, 0.3, 0, 0.1, 0, 1, 0.4, 0, 0.2, 0, 1;
+  JordanStructure s = jordan_structure(P * J * P.inverse());
+  ASSERT_EQ(s.eigenvalues.size(), 2u);
+  EXPECT_NEAR(s.eigenvalues[0].value.real(), 2, 1e-4);
+  EXPECT_EQ(s.eigenvalues[0].algebraic_multiplicity, 3);
+  EXPECT_EQ(s.eigenvalues[0].geometric_multiplicity, 1);
+  EXPECT_EQ(s.eigenvalues[0].jordan_blocks, (std::vector<int>{3}));
+  EXPECT_EQ(s.eigenvalues[1].jordan_blocks, (std::vector<int>{1}));
+  EXPECT_FALSE(s.uncertain);
+}
+
+TEST(JordanStructure, SemisimpleDoubleEigenvaluesHaveBlocksOfSizeOne) {
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, 4);
+  A << 0, 0, 1, 0, 0, 0, 0, 1, -4, 0, 0, 0, 0, -4, 0, 0;  // two uncoupled oscillators ω = 2
+  JordanStructure s = jordan_structure(A);
+  ASSERT_EQ(s.eigenvalues.size(), 2u);
+  for (const EigenvalueStructure& e : s.eigenvalues) {
+    EXPECT_EQ(e.value.real(), 0) << "exactly on the axis";
+    EXPECT_NEAR(std::abs(e.value.imag()), 2, 1e-12);
+    EXPECT_EQ(e.algebraic_multiplicity, 2);
+    EXPECT_EQ(e.geometric_multiplicity, 2);
+    EXPECT_EQ(e.jordan_blocks, (std::vector<int>{1, 1}));
+  }
+}
+
+TEST(JordanStructure, ANearlyDefectiveMatrixIsReportedUncertain) {
+  Eigen::MatrixXd A(2, 2);
+  A << 1, 1, 1e-10, 1;  // eigenvalues 1 ± 1e-5: distinct, but a perturbation of 1e-10 from a Jordan block
+  EXPECT_TRUE(jordan_structure(A).uncertain);
+  A(1, 0) = 0.5;  // well separated: decided
+  EXPECT_FALSE(jordan_structure(A).uncertain);
+}
+
+TEST(FundamentalMatrix, OscillatorAgainstItsClosedForm) {
+  // x'' = −ω² x: Φ(t) = [[cos ωt, sin ωt/ω], [−ω sin ωt, cos ωt]]
+  const double w = 3;
+  Eigen::MatrixXd A(2, 2);
+  A << 0, 1, -w * w, 0;
+  for (double t : {0.1, 1.0, 10.0}) {
+    Eigen::MatrixXd Phi = fundamental_matrix(A, t), exact(2, 2);
+    exact << std::cos(w * t), std::sin(w * t) / w, -w * std::sin(w * t), std::cos(w * t);
+    EXPECT_LT((Phi - exact).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, w * w * t)) << t;
+  }
+}
+
+TEST(ModalAnalysis, TwoMassChainWithRayleighDamping) {
+  const double m = 2, k = 50, alpha = 0.2, beta = 0.003;
+  Eigen::MatrixXd M = m * Eigen::MatrixXd::Identity(2, 2), K(2, 2);
+  K << 2 * k, -k, -k, 2 * k;
+  ModalAnalysis a = modal_analysis(M, alpha * M + beta * K, K);
+  ASSERT_TRUE(a.refusal.empty()) << a.refusal;
+  ASSERT_EQ(a.modes.size(), 2u);
+  double w[2] = {std::sqrt(k / m), std::sqrt(3 * k / m)};
+  double shapes[2][2] = {{1, 1}, {1, -1}};
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(a.modes[i].omega, w[i], 1e-12 * w[i]);
+    EXPECT_NEAR(a.modes[i].damping_ratio, alpha / (2 * w[i]) + beta * w[i] / 2, 1e-12);
+    for (int j = 0; j < 2; ++j) EXPECT_NEAR(a.modes[i].shape(j), shapes[i][j] / std::sqrt(2 * m), 1e-12);
+  }
+  EXPECT_EQ(a.damping, "proportional");
+  EXPECT_NEAR(a.rayleigh_alpha, alpha, 1e-12);
+  EXPECT_NEAR(a.rayleigh_beta, beta, 1e-12);
+  EXPECT_LT(a.orthonormality_error, 1e-12);
+  EXPECT_EQ(a.rigid_body_modes, 0);
+  // Rayleigh's quotient bounds ω₁² from above and is exact at the first mode (§8.1.4)
+  EXPECT_NEAR(rayleigh_quotient(M, K, a.modes[0].shape), w[0] * w[0], 1e-12 * w[0] * w[0]);
+  EXPECT_GT(rayleigh_quotient(M, K, Eigen::Vector2d(1, 0.5)), w[0] * w[0]);
+}
+
+TEST(ModalAnalysis, FreeFreeChainHasARigidBodyMode) {
+  // two masses joined by one spring and nothing else: ω = 0 (translation) and √(2k/m)
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(2, 2), K(2, 2);
+  K << 3, -3, -3, 3;
+  ModalAnalysis a = modal_analysis(M, Eigen::MatrixXd::Zero(2, 2), K);
+  ASSERT_EQ(a.modes.size(), 2u);
+  EXPECT_EQ(a.rigid_body_modes, 1);
+  EXPECT_TRUE(a.modes[0].rigid_body);
+  EXPECT_EQ(a.modes[0].omega, 0);
+  EXPECT_NEAR(a.modes[1].omega, std::sqrt(6.0), 1e-12);
+  EXPECT_EQ(a.damping, "none");
+}
+
+TEST(ModalAnalysis, NonproportionalDampingIsSaidWithItsCoupling) {
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(2, 2), K(2, 2), D = Eigen::MatrixXd::Zero(2, 2);
+  K << 2, -1, -1, 2;
+  D(0, 0) = 0.1;  // a damper on the first mass only
+  ModalAnalysis a = modal_analysis(M, D, K);
+  EXPECT_EQ(a.damping, "nonproportional");
+  EXPECT_NEAR(a.coupling, 1.0, 1e-12) << "ΦᵀDΦ = 0.05 [[1, 1], [1, 1]]: off-diagonal as large as diagonal";
+  Eigen::MatrixXd unstable = -K;
+  EXPECT_FALSE(modal_analysis(M, D, unstable).refusal.empty());
+}
+
+}  // namespace
+}  // namespace eomgen::runtime
