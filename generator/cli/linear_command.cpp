@@ -15,10 +15,32 @@ namespace eomgen::cli {
 namespace {
 
 struct Options {
-  std::string model, times;
-  std::vector<std::string> at, sets;
+  std::string model, times, outputs;
+  std::vector<std::string> at, sets, transfer;
   bool json = false;
 };
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream s(list);
+  for (std::string item; std::getline(s, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// --transfer u:y pairs
+std::optional<std::vector<std::pair<std::string, std::string>>> parse_pairs(const std::vector<std::string>& texts) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const std::string& t : texts) {
+    std::size_t colon = t.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == t.size()) {
+      std::cerr << fmt::format("eomgen: error: --transfer {}: expected INPUT:OUTPUT, e.g. --transfer F:x\n", t);
+      return std::nullopt;
+    }
+    pairs.push_back({t.substr(0, colon), t.substr(colon + 1)});
+  }
+  return pairs;
+}
 
 std::optional<std::vector<double>> parse_times(const std::string& list) {
   std::vector<double> times;
@@ -37,14 +59,20 @@ std::optional<std::vector<double>> parse_times(const std::string& list) {
 
 int linear(const Options& o) {
   auto times = parse_times(o.times);
-  if (!times) return exit_user_error;
+  auto pairs = parse_pairs(o.transfer);
+  if (!times || !pairs) return exit_user_error;
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   if (auto status = stability_refusal(loaded, o.model, false)) return *status;
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
-  LinearReport report = linear_report(loaded.problem, eq.state, *times);
   const eomgen_model_abi& m = *loaded.compiled->abi();
+  LinearRequest request{*times, split(o.outputs), *pairs};
+  if (std::string unknown = unknown_names(m, request); !unknown.empty()) {
+    std::cerr << fmt::format("eomgen: error: {}: not an input, a state or an output of {}\n", unknown, m.name);
+    return exit_user_error;
+  }
+  LinearReport report = linear_report(loaded.problem, eq.state, request);
   o.json ? print_linear_json(m, eq, report) : print_linear_text(m, eq, report);
   return exit_success;
 }
@@ -59,6 +87,10 @@ Command add_linear_command(CLI::App& app) {
   cmd->add_option("--at", o->at, "Equilibrium value, one per flag, as for `stability` (default: searched from the "
                   "model's initial values)");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
+  cmd->add_option("--outputs", o->outputs, "Outputs y = C x + D u for observability: states or [outputs] by name, "
+                  "comma-separated (default: the model's [outputs])");
+  cmd->add_option("--transfer", o->transfer, "Transfer function from an input to an output (a state or an [outputs] "
+                  "entry), one pair per flag: --transfer F:x");
   cmd->add_option("--times", o->times, "Times at which to print the fundamental matrix Phi(t) = e^(At): --times 0.5,1,10");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));

@@ -1,5 +1,6 @@
 #include "cli/linear_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -36,8 +37,6 @@ std::string shape_json(const eomgen_model_abi& m, const Eigen::VectorXd& v) {
   return "{" + out + "}";
 }
 
-}  // namespace
-
 // det(λI − A) = Π (λ − λ_i), expanded; real up to rounding
 std::vector<double> characteristic_polynomial(const Eigen::MatrixXd& A) {
   Eigen::EigenSolver<Eigen::MatrixXd> solver(A, false);
@@ -52,7 +51,80 @@ std::vector<double> characteristic_polynomial(const Eigen::MatrixXd& A) {
   return real;
 }
 
-LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const std::vector<double>& times) {
+int name_index(const char* const* names, std::size_t count, const std::string& name) {
+  for (std::size_t i = 0; i < count; ++i)
+    if (name == names[i]) return static_cast<int>(i);
+  return -1;
+}
+
+// C and D: a state is read exactly; a model output is differentiated centrally (h = 1e-6
+// times the size of the variable, error about 1e-10 relative)
+void output_matrices(const runtime::Problem& p, const std::vector<double>& x, LinearReport& r) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t N = m.num_states, k = m.num_inputs, q = r.output_names.size();
+  r.C = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(N));
+  r.D = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(k));
+  std::vector<double> u = p.inputs, y_plus(m.num_outputs + 1), y_minus(m.num_outputs + 1);
+  auto outputs_at = [&](const std::vector<double>& xs, const std::vector<double>& us, std::vector<double>& y) {
+    m.outputs(0.0, xs.data(), us.empty() ? nullptr : us.data(), p.parameters.data(), y.data());
+  };
+  for (std::size_t i = 0; i < q; ++i) {
+    Eigen::Index row = static_cast<Eigen::Index>(i);
+    if (int s = name_index(m.state_names, N, r.output_names[i]); s >= 0) {
+      r.C(row, s) = 1;
+      continue;
+    }
+    int o = name_index(m.output_names, m.num_outputs, r.output_names[i]);
+    for (std::size_t j = 0; j < N + k; ++j) {
+      std::vector<double> xp = x, xm = x, up = u, um = u;
+      double& plus = j < N ? xp[j] : up[j - N];
+      double& minus = j < N ? xm[j] : um[j - N];
+      double h = 1e-6 * std::max(1.0, std::abs(plus));
+      plus += h, minus -= h;
+      outputs_at(xp, up, y_plus), outputs_at(xm, um, y_minus);
+      double slope = (y_plus[o] - y_minus[o]) / (2 * h);
+      (j < N ? r.C(row, static_cast<Eigen::Index>(j)) : r.D(row, static_cast<Eigen::Index>(j - N))) = slope;
+    }
+  }
+}
+
+}  // namespace
+
+std::string unknown_names(const eomgen_model_abi& m, const LinearRequest& request) {
+  std::string unknown;
+  auto output_known = [&](const std::string& y) {
+    return name_index(m.state_names, m.num_states, y) >= 0 || name_index(m.output_names, m.num_outputs, y) >= 0;
+  };
+  for (const std::string& y : request.outputs)
+    if (!output_known(y)) unknown += (unknown.empty() ? "" : ", ") + y;
+  for (const auto& [u, y] : request.transfer) {
+    if (name_index(m.input_names, m.num_inputs, u) < 0) unknown += (unknown.empty() ? "" : ", ") + u;
+    if (!output_known(y)) unknown += (unknown.empty() ? "" : ", ") + y;
+  }
+  return unknown;
+}
+
+namespace {
+
+std::vector<std::string> states_named(const eomgen_model_abi& m, const Eigen::VectorXcd& direction) {
+  std::vector<std::string> names;
+  if (direction.size() == 0) return names;
+  double largest = direction.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < direction.size(); ++i)
+    if (std::abs(direction(i)) >= 0.1 * largest) names.push_back(m.state_names[i]);
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request) {
+  const std::vector<double>& times = request.times;
   const eomgen_model_abi& m = *problem.model;
   std::size_t N = m.num_states, k = m.num_inputs;
   LinearReport r;
@@ -70,8 +142,82 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   r.modes.refusal = modal_refusal(r.system);
   if (r.modes.refusal.empty()) r.modes = runtime::modal_analysis(r.system.M, r.system.D, r.system.K);
   for (double t : times) r.fundamental.push_back({t, runtime::fundamental_matrix(r.A, t)});
+  r.input_names.assign(m.input_names, m.input_names + k);
+  r.output_names = request.outputs.empty() ? std::vector<std::string>(m.output_names, m.output_names + m.num_outputs)
+                                           : request.outputs;
+  for (const auto& [u, y] : request.transfer)
+    if (std::find(r.output_names.begin(), r.output_names.end(), y) == r.output_names.end()) r.output_names.push_back(y);
+  output_matrices(problem, x, r);
+  r.reach = runtime::controllability_and_observability(r.A, r.B, r.C);
+  for (const auto& [u, y] : request.transfer) {
+    auto i = std::find(r.output_names.begin(), r.output_names.end(), y) - r.output_names.begin();
+    r.transfer.push_back({u, y, runtime::transfer_function(r.A, r.B, r.C, r.D, i, name_index(m.input_names, k, u))});
+  }
   return r;
 }
+
+namespace {
+
+std::string roots_text(const std::vector<std::complex<double>>& roots) {
+  std::string out;
+  for (const auto& z : roots) out += (out.empty() ? "" : ", ") + complex_text(z);
+  return out.empty() ? "(none)" : out;
+}
+
+void print_reach_text(const eomgen_model_abi& m, const LinearReport& r) {
+  std::size_t n = m.num_states;
+  if (!r.input_names.empty())
+    std::cout << fmt::format("  controllability from {}: {} (Kalman rank {} of {})\n", joined(r.input_names),
+                             r.reach.controllable ? "controllable" : "NOT controllable", r.reach.kalman_controllability_rank, n);
+  if (!r.output_names.empty())
+    std::cout << fmt::format("  observability from {}: {} (Kalman rank {} of {})\n", joined(r.output_names),
+                             r.reach.observable ? "observable" : "NOT observable", r.reach.kalman_observability_rank, n);
+  for (const runtime::ModeReach& mode : r.reach.modes) {
+    if (!r.input_names.empty() && !mode.controllable)
+      std::cout << fmt::format("    the mode {} cannot be reached by the inputs (PBH); it lives in {}\n",
+                               complex_text(mode.eigenvalue), joined(states_named(m, mode.unreachable)));
+    if (!r.output_names.empty() && !mode.observable)
+      std::cout << fmt::format("    the mode {} cannot be seen in the outputs (PBH); it moves {}\n",
+                               complex_text(mode.eigenvalue), joined(states_named(m, mode.unseen)));
+  }
+  for (const LinearReport::Pair& p : r.transfer) {
+    std::complex<double> dc = p.g.at(0.0);
+    std::cout << fmt::format("  transfer function {} -> {}: G(s) = {:.9g} * prod(s - zeros) / prod(s - poles)\n", p.input,
+                             p.output, p.g.gain);
+    std::cout << fmt::format("    poles: {}\n    zeros: {}\n    G(0) = {}\n", roots_text(p.g.poles), roots_text(p.g.zeros),
+                             std::isfinite(std::abs(dc)) ? complex_text(dc) : "infinite (a pole at 0)");
+  }
+}
+
+std::string roots_json(const std::vector<std::complex<double>>& roots) {
+  std::string out;
+  for (const auto& z : roots) out += fmt::format("{}[{}, {}]", out.empty() ? "" : ", ", number(z.real()), number(z.imag()));
+  return "[" + out + "]";
+}
+
+std::string reach_json(const eomgen_model_abi& m, const LinearReport& r) {
+  std::string modes, transfer;
+  for (const runtime::ModeReach& mode : r.reach.modes)
+    modes += fmt::format("{}{{\"re\": {}, \"im\": {}, \"controllable\": {}, \"observable\": {}, \"unreachable_states\": {}, "
+                         "\"unseen_states\": {}}}", modes.empty() ? "" : ", ", number(mode.eigenvalue.real()),
+                         number(mode.eigenvalue.imag()), mode.controllable ? "true" : "false", mode.observable ? "true" : "false",
+                         json_strings(states_named(m, mode.unreachable)), json_strings(states_named(m, mode.unseen)));
+  for (const LinearReport::Pair& p : r.transfer) {
+    std::complex<double> dc = p.g.at(0.0);
+    transfer += fmt::format("{}{{\"input\": \"{}\", \"output\": \"{}\", \"poles\": {}, \"zeros\": {}, \"gain\": {}, "
+                            "\"dc_gain\": {}}}", transfer.empty() ? "" : ", ", json_escape(p.input), json_escape(p.output),
+                            roots_json(p.g.poles), roots_json(p.g.zeros), number(p.g.gain),
+                            std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? number(dc.real()) : "null");
+  }
+  return fmt::format(", \"inputs\": {}, \"outputs\": {}, \"C\": {}, \"D\": {}, \"controllable\": {}, \"observable\": {}, "
+                     "\"kalman_ranks\": {{\"controllability\": {}, \"observability\": {}}}, \"mode_reach\": [{}], "
+                     "\"transfer_functions\": [{}]", json_strings(r.input_names), json_strings(r.output_names),
+                     json_matrix(r.C), json_matrix(r.D), r.reach.controllable ? "true" : "false",
+                     r.reach.observable ? "true" : "false", r.reach.kalman_controllability_rank,
+                     r.reach.kalman_observability_rank, modes, transfer);
+}
+
+}  // namespace
 
 void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r) {
   std::string where;
@@ -113,6 +259,7 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
     std::cout << fmt::format("  check: the modes are M-orthonormal to {:.1e}\n", r.modes.orthonormality_error);
   }
   for (const auto& [t, Phi] : r.fundamental) std::cout << matrix_text(fmt::format("Phi({:g})", t).c_str(), Phi);
+  print_reach_text(m, r);
   if (r.A.rows() == 2)
     std::cout << "  phase plane: " << runtime::phase_plane_type(r.A) << " (Hiller §7.7; see `eomgen stability`)\n";
 }
@@ -138,13 +285,13 @@ void print_linear_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"state\": {}, \"A\": {}, \"B\": {}, \"characteristic_polynomial\": {}, "
       "\"eigenvalues\": [{}], \"rank_tolerance\": {}, \"structure_uncertain\": {}, \"modes\": [{}], \"rigid_body_modes\": {}, "
       "\"modal_refusal\": {}, \"damping\": {{\"kind\": \"{}\", \"rayleigh_alpha\": {}, \"rayleigh_beta\": {}, \"coupling\": {}}}, "
-      "\"orthonormality_error\": {}, \"fundamental_matrix\": [{}]}}\n",
+      "\"orthonormality_error\": {}, \"fundamental_matrix\": [{}]{}}}\n",
       json_escape(m.name), equilibrium, json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B),
       json_numbers(r.characteristic_polynomial), eigenvalues,
       number(r.structure.rank_tolerance), r.structure.uncertain ? "true" : "false", modes, r.modes.rigid_body_modes,
       r.modes.refusal.empty() ? "null" : "\"" + json_escape(r.modes.refusal) + "\"", r.modes.damping,
       number(r.modes.rayleigh_alpha), number(r.modes.rayleigh_beta), number(r.modes.coupling),
-      number(r.modes.orthonormality_error), fundamental);
+      number(r.modes.orthonormality_error), fundamental, reach_json(m, r));
 }
 
 }  // namespace eomgen::cli

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "analyse/controllability.hpp"
 #include "analyse/equilibrium.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/linear_system.hpp"
@@ -22,10 +23,27 @@ struct LinearReport {
   runtime::JordanStructure structure;
   runtime::ModalAnalysis modes;
   std::vector<std::pair<double, Eigen::MatrixXd>> fundamental;  // (t, Φ(t))
+  std::vector<std::string> input_names, output_names;
+  Eigen::MatrixXd C, D;  // y = C x + D u; model outputs by central differences, states exactly
+  runtime::Reach reach;  // controllability from all inputs, observability from all outputs
+  struct Pair {
+    std::string input, output;
+    runtime::TransferFunction g;
+  };
+  std::vector<Pair> transfer;
 };
 
+struct LinearRequest {
+  std::vector<double> times;
+  std::vector<std::string> outputs;                              // state or output names; empty: the model's outputs
+  std::vector<std::pair<std::string, std::string>> transfer;     // (input, output)
+};
+
+/// The names in `request` that are not inputs, states or outputs, or empty.
+std::string unknown_names(const eomgen_model_abi& m, const LinearRequest& request);
+
 /// Everything `linear` prints, at the equilibrium x.
-LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const std::vector<double>& times);
+LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request);
 
 void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r);
 void print_linear_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r);

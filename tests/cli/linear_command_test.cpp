@@ -5,7 +5,9 @@
 // Clohessy–Wiltshire solution.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include "parse/json_reader.hpp"
 #include "support/test_support.hpp"
@@ -129,6 +131,54 @@ TEST(LinearCommand, RendezvousJordanStructureAndTheClohessyWiltshireSolution) {
   }
 }
 
+TEST(LinearCommand, CartPendulumIsControllableWithTheClosedFormTransferFunction) {
+  // hanging, force F on the cart: X/F = (l s² + g) / (s² (mc l s² + (mc + m) g))
+  const double mc = 1.3, m = 0.4, l = 0.6, g = 9.81;
+  JsonValue json = run_json("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --set mc=1.3 --set m=0.4 "
+                            "--set l=0.6 --transfer F:x");
+  EXPECT_TRUE(json.find("controllable")->truth);
+  EXPECT_EQ(at(*json.find("kalman_ranks"), "controllability"), 4);
+  const JsonValue& g_json = json.find("transfer_functions")->items.at(0);
+  EXPECT_NEAR(at(g_json, "gain"), 1 / mc, 1e-12);
+  std::vector<double> pole_frequencies, zero_frequencies;
+  for (const JsonValue& p : g_json.find("poles")->items) pole_frequencies.push_back(std::abs(p.items[1].value));
+  for (const JsonValue& z : g_json.find("zeros")->items) zero_frequencies.push_back(std::abs(z.items[1].value));
+  std::sort(pole_frequencies.begin(), pole_frequencies.end());
+  ASSERT_EQ(pole_frequencies.size(), 4u);
+  EXPECT_NEAR(pole_frequencies[0], 0, 1e-7) << "the double pole at 0 (a Jordan block: split by about sqrt(eps))";
+  EXPECT_NEAR(pole_frequencies[3], std::sqrt((mc + m) * g / (mc * l)), 1e-12);
+  ASSERT_EQ(zero_frequencies.size(), 2u);
+  for (double z : zero_frequencies) EXPECT_NEAR(z, std::sqrt(g / l), 1e-10);
+}
+
+TEST(LinearCommand, AModeTheInputCannotReachIsNamed) {
+  // two uncoupled oscillators, the force on the first only: the second mode is unreachable
+  std::string dir = temporary_directory(), path = dir + "/two_oscillators.toml";
+  std::ofstream(path) << "[model]\nname = \"two_oscillators\"\ntitle = \"Two uncoupled oscillators\"\n\n"
+                         "[parameters]\nk1 = 4.0\nk2 = 9.0\n\n[coordinates]\na = 0.0\nb = 0.0\n\n[inputs]\nF = 0.0\n\n"
+                         "[[particles]]\nname = \"first\"\nmass = \"1\"\nposition = [\"a\", \"0\", \"0\"]\n\n"
+                         "[[particles]]\nname = \"second\"\nmass = \"1\"\nposition = [\"b\", \"0\", \"0\"]\n\n"
+                         "[energy]\npotential = \"k1*a^2/2 + k2*b^2/2\"\n\n[[forces]]\ngeneralized = { a = \"F\" }\n";
+  JsonValue json = run_json("linear '" + path + "' --at a=0 --at b=0 --outputs a");
+  EXPECT_FALSE(json.find("controllable")->truth);
+  EXPECT_FALSE(json.find("observable")->truth) << "b is not seen in a either";
+  EXPECT_EQ(at(*json.find("kalman_ranks"), "controllability"), 2);
+  int unreachable = 0;
+  for (const JsonValue& mode : json.find("mode_reach")->items) {
+    bool second = std::abs(std::abs(at(mode, "im")) - 3) < 1e-9;
+    EXPECT_EQ(mode.find("controllable")->truth, !second) << at(mode, "im");
+    if (!second) continue;
+    ++unreachable;
+    std::vector<std::string> states;
+    for (const JsonValue& s : mode.find("unreachable_states")->items) states.push_back(s.text);
+    EXPECT_EQ(states, (std::vector<std::string>{"b", "der(b)"}));
+  }
+  EXPECT_EQ(unreachable, 2) << "the pair ±3i";
+  CommandOutput text = run_eomgen("linear '" + path + "' --at a=0 --at b=0");
+  EXPECT_NE(text.out.find("the mode 0 + 3i cannot be reached by the inputs (PBH); it lives in b, der(b)"), std::string::npos)
+      << text.out;
+}
+
 TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -137,6 +187,9 @@ TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput bad = run_eomgen("linear '" + model_path("two_mass_chain") + "' --times 1,x");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("'x' is not a number"), std::string::npos) << bad.err;
+  CommandOutput unknown = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --transfer G:x9");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("G, x9: not an input, a state or an output"), std::string::npos) << unknown.err;
 }
 
 }  // namespace
