@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/linear_report.hpp"
+#include "cli/linear_response_output.hpp"
 #include "cli/loaded_model.hpp"
 
 namespace eomgen::cli {
@@ -18,6 +19,7 @@ struct Options {
   std::string model, times, outputs;
   std::vector<std::string> at, sets, transfer;
   bool json = false;
+  ResponseOptions response;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -73,6 +75,8 @@ int linear(const Options& o) {
     return exit_user_error;
   }
   LinearReport report = linear_report(loaded.problem, eq.state, request);
+  // with --response the CSV goes to standard output unless -o names a file, so the report is left out then
+  if (!o.response.response.empty()) return *write_linear_response(m, report, o.response);
   o.json ? print_linear_json(m, eq, report) : print_linear_text(m, eq, report);
   return exit_success;
 }
@@ -92,6 +96,14 @@ Command add_linear_command(CLI::App& app) {
   cmd->add_option("--transfer", o->transfer, "Transfer function from an input to an output (a state or an [outputs] "
                   "entry), one pair per flag: --transfer F:x");
   cmd->add_option("--times", o->times, "Times at which to print the fundamental matrix Phi(t) = e^(At): --times 0.5,1,10");
+  cmd->add_option("--response", o->response.response, "Response of the linearized system, written as CSV of the "
+                  "deviations from the equilibrium: initial (with --initial), impulse:INPUT, step:INPUT (unit), "
+                  "harmonic:INPUT:OMEGA (sin(OMEGA t))");
+  cmd->add_option("--initial", o->response.initials, "Initial deviation, one per flag: --initial x1=0.01");
+  cmd->add_option("--t-end", o->response.t_end, "End time of the response [s] (default 10)");
+  cmd->add_option("--dt-out", o->response.dt_out, "Output interval of the response [s] (default 0.01)");
+  cmd->add_option("-o,--output", o->response.csv, "CSV file for the response (default: standard output)");
+  cmd->add_option("--plot", o->response.plot, "Chart of the response's coordinates (PNG)");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
   return [cmd, o, format]() -> int {

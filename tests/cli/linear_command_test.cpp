@@ -179,6 +179,54 @@ TEST(LinearCommand, AModeTheInputCannotReachIsNamed) {
       << text.out;
 }
 
+// the response CSV of `linear --response ...`
+std::vector<std::vector<double>> response(const std::string& options) {
+  std::string csv = temporary_directory() + "/response.csv";
+  CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 " + options + " -o '" + csv + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  return read_numeric_csv(csv);
+}
+
+TEST(LinearCommand, StepResponseOfTheChainByModes) {
+  // unit step in F on the second mass: q_i = f_i/ω_i² (1 − e^{−ζωt}(cos ω_d t + ζω/ω_d sin ω_d t)), f = Φᵀ(0, 1)
+  auto rows = response("--response step:F --t-end 3 --dt-out 0.1");
+  ASSERT_EQ(rows.size(), 31u);
+  const double alpha = 0.1, beta = 0.001, w[2] = {10, std::sqrt(300.0)}, sign[2] = {1, -1};
+  for (const auto& row : rows) {
+    double t = row[0], x[2] = {0, 0};
+    for (int i = 0; i < 2; ++i) {
+      double z = alpha / (2 * w[i]) + beta * w[i] / 2, wd = w[i] * std::sqrt(1 - z * z);
+      double f = sign[i] / std::sqrt(2.0);
+      double q = f / (w[i] * w[i]) * (1 - std::exp(-z * w[i] * t) * (std::cos(wd * t) + z * w[i] / wd * std::sin(wd * t)));
+      x[0] += q / std::sqrt(2.0), x[1] += sign[i] * q / std::sqrt(2.0);
+    }
+    EXPECT_NEAR(row[1], x[0], 1e-13) << "x1 at t = " << t;
+    EXPECT_NEAR(row[2], x[1], 1e-13) << "x2 at t = " << t;
+  }
+}
+
+TEST(LinearCommand, FreeImpulseAndHarmonicResponses) {
+  // free: x(t) = Φ(t) x0, the first column of Φ scaled; impulse: Φ(t) B, the fourth column
+  JsonValue json = run_json("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --times 0.7");
+  auto Phi = matrix_at(json, 0);
+  auto free = response("--response initial --initial x1=0.01 --t-end 0.7 --dt-out 0.7");
+  auto impulse = response("--response impulse:F --t-end 0.7 --dt-out 0.7");
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(free.back()[1 + i], 0.01 * Phi[i][0], 1e-14);
+    EXPECT_NEAR(impulse.back()[1 + i], Phi[i][3], 1e-12);
+  }
+  // sin(5t) against the simulation of the same (linear) model with a tight tolerance
+  auto harmonic = response("--response harmonic:F:5 --t-end 4 --dt-out 0.5");
+  std::string csv = temporary_directory() + "/simulated.csv";
+  CommandOutput sim = run_eomgen("simulate '" + model_path("two_mass_chain") + "' --initial x1=0 --input 'F=sin(5*t)' "
+                                 "--t-end 4 --dt-out 0.5 --integrator cvode-bdf --rtol 1e-12 --atol 1e-15 -o '" + csv + "'");
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  auto simulated = read_numeric_csv(csv);
+  ASSERT_EQ(harmonic.size(), simulated.size());
+  for (std::size_t k = 0; k < harmonic.size(); ++k)
+    for (int i = 1; i <= 4; ++i) EXPECT_NEAR(harmonic[k][i], simulated[k][i], 1e-9) << "t = " << harmonic[k][0];
+}
+
 TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -190,6 +238,9 @@ TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput unknown = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --transfer G:x9");
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.err.find("G, x9: not an input, a state or an output"), std::string::npos) << unknown.err;
+  CommandOutput response = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --response ramp:F");
+  EXPECT_EQ(response.status, 2);
+  EXPECT_NE(response.err.find("expected initial, impulse:INPUT, step:INPUT or harmonic:INPUT:OMEGA"), std::string::npos);
 }
 
 }  // namespace
