@@ -1,12 +1,14 @@
 /// @file `eomgen linear`: the linearized system about an equilibrium or steady motion
 /// (found as `stability` finds it), solved: eigenvalues with multiplicities and Jordan
 /// blocks, natural frequencies and mass-normalized modes, and Φ(t) = e^{At} (Hiller §6, §8.1).
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/linear_charts.hpp"
 #include "cli/linear_report.hpp"
 #include "cli/linear_response_output.hpp"
 #include "cli/loaded_model.hpp"
@@ -17,7 +19,7 @@ namespace {
 
 struct Options {
   std::string model, times, outputs;
-  std::vector<std::string> at, sets, transfer;
+  std::vector<std::string> at, sets, transfer, bode;
   bool json = false;
   ResponseOptions response;
 };
@@ -61,8 +63,14 @@ std::optional<std::vector<double>> parse_times(const std::string& list) {
 
 int linear(const Options& o) {
   auto times = parse_times(o.times);
-  auto pairs = parse_pairs(o.transfer);
-  if (!times || !pairs) return exit_user_error;
+  auto pairs = parse_pairs(o.transfer), bode = parse_pairs(o.bode);
+  if (!times || !pairs || !bode) return exit_user_error;
+  for (const auto& pair : *bode)
+    if (std::find(pairs->begin(), pairs->end(), pair) == pairs->end()) pairs->push_back(pair);
+  if (!bode->empty() && o.response.plot.empty()) {
+    std::cerr << "eomgen: error: --bode needs --plot FILE.png (the chart is FILE_bode_INPUT_OUTPUT.png)\n";
+    return exit_user_error;
+  }
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   if (auto status = stability_refusal(loaded, o.model, false)) return *status;
@@ -78,6 +86,7 @@ int linear(const Options& o) {
   // with --response the CSV goes to standard output unless -o names a file, so the report is left out then
   if (!o.response.response.empty()) return *write_linear_response(m, report, o.response);
   o.json ? print_linear_json(m, eq, report) : print_linear_text(m, eq, report);
+  if (!o.response.plot.empty()) draw_linear_charts(m, report, o.response.plot, *bode);
   return exit_success;
 }
 
@@ -103,7 +112,9 @@ Command add_linear_command(CLI::App& app) {
   cmd->add_option("--t-end", o->response.t_end, "End time of the response [s] (default 10)");
   cmd->add_option("--dt-out", o->response.dt_out, "Output interval of the response [s] (default 0.01)");
   cmd->add_option("-o,--output", o->response.csv, "CSV file for the response (default: standard output)");
-  cmd->add_option("--plot", o->response.plot, "Chart of the response's coordinates (PNG)");
+  cmd->add_option("--plot", o->response.plot, "Charts (PNG): with --response the response's coordinates; otherwise "
+                  "FILE_modes.png (the mode shapes) and FILE_bode_U_Y.png for each --bode pair");
+  cmd->add_option("--bode", o->bode, "Bode chart of a transfer function, one pair per flag: --bode F:x (with --plot)");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
   return [cmd, o, format]() -> int {

@@ -227,6 +227,18 @@ TEST(LinearCommand, FreeImpulseAndHarmonicResponses) {
     for (int i = 1; i <= 4; ++i) EXPECT_NEAR(harmonic[k][i], simulated[k][i], 1e-9) << "t = " << harmonic[k][0];
 }
 
+TEST(LinearCommand, ModeShapeAndBodeCharts) {
+  std::string dir = temporary_directory();
+  CommandOutput r = run_eomgen("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --bode F:x --plot '" + dir +
+                               "/cart.png'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* chart : {"/cart_modes.png", "/cart_bode_F_x.png"})
+    EXPECT_GT(read_file(dir + chart).size(), 1000u) << chart << "\n" << r.err;
+  CommandOutput alone = run_eomgen("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --bode F:x");
+  EXPECT_EQ(alone.status, 2);
+  EXPECT_NE(alone.err.find("--bode needs --plot"), std::string::npos) << alone.err;
+}
+
 TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
   ASSERT_EQ(r.status, 0) << r.err;
