@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "symbolic/canonical_print.hpp"
 
 namespace eomgen::cli {
 
@@ -123,7 +124,41 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
-LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request) {
+namespace {
+
+// |f(λ)| relative to the size of its terms
+double residual_at(const ExactFactor& f, const GiNaC::symbol& lambda, std::complex<double> z) {
+  std::complex<double> sum = 0;
+  double size = 0;
+  for (int k = 0; k <= f.degree; ++k) {
+    GiNaC::numeric c = GiNaC::ex_to<GiNaC::numeric>(f.polynomial.coeff(lambda, k).evalf());
+    std::complex<double> term = c.to_double() * std::pow(z, k);
+    sum += term, size += std::abs(term);
+  }
+  return std::abs(sum) / std::max(size, 1e-300);
+}
+
+// the exact multiplicities and blocks onto the numeric eigenvalues, each matched to its factor
+bool apply_exact(const ExactJordan& exact, runtime::JordanStructure& structure) {
+  if (exact.factors.empty()) return false;
+  for (runtime::EigenvalueStructure& e : structure.eigenvalues) {
+    const ExactFactor* best = nullptr;
+    double smallest = INFINITY;
+    for (const ExactFactor& f : exact.factors)
+      if (double r = residual_at(f, exact.lambda, e.value); r < smallest) smallest = r, best = &f;
+    if (!best || smallest > 1e-6) return false;
+    e.algebraic_multiplicity = best->multiplicity;
+    e.jordan_blocks = best->jordan_blocks;
+    e.geometric_multiplicity = static_cast<int>(best->jordan_blocks.size());
+  }
+  structure.uncertain = false;
+  return true;
+}
+
+}  // namespace
+
+LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request,
+                           const Equations* equations) {
   const std::vector<double>& times = request.times;
   const eomgen_model_abi& m = *problem.model;
   std::size_t N = m.num_states, k = m.num_inputs;
@@ -139,6 +174,10 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   r.characteristic_polynomial = characteristic_polynomial(r.A);
   r.system = runtime::analyse_stability(problem, x);
   r.structure = runtime::jordan_structure(r.A);
+  if (equations) {
+    r.exact = exact_jordan_structure(*equations, problem.parameters, problem.inputs, x);
+    r.decided_exactly = apply_exact(r.exact, r.structure);
+  }
   r.modes.refusal = modal_refusal(r.system);
   if (r.modes.refusal.empty()) r.modes = runtime::modal_analysis(r.system.M, r.system.D, r.system.K);
   for (double t : times) r.fundamental.push_back({t, runtime::fundamental_matrix(r.A, t)});
@@ -228,10 +267,19 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
   std::cout << "  state x = [" << state << "], x' = A x + B u\n" << matrix_text("A", r.A);
   if (r.B.cols()) std::cout << matrix_text("B", r.B);
   std::cout << "  characteristic polynomial: " << polynomial_text(r.characteristic_polynomial) << "\n";
-  std::cout << fmt::format("  eigenvalues (multiplicities from numerical ranks, singular values below {:.1e} count as zero{}):\n",
-                           r.structure.rank_tolerance,
-                           r.structure.uncertain ? "; UNCERTAIN: a singular value lies near that tolerance, so a nearby "
-                                                   "matrix may have another Jordan structure" : "");
+  if (r.decided_exactly) {
+    std::string factors;
+    for (const ExactFactor& f : r.exact.factors)
+      factors += fmt::format("{}({}){}", factors.empty() ? "" : " * ", canonical_text(f.polynomial),
+                             f.multiplicity > 1 ? "^" + std::to_string(f.multiplicity) : "");
+    std::cout << "  eigenvalues (multiplicities decided exactly: A is rational, det(lambda I - A) = " << factors << "):\n";
+  } else {
+    std::cout << fmt::format("  eigenvalues (multiplicities from numerical ranks, singular values below {:.1e} count as zero{}{}):\n",
+                             r.structure.rank_tolerance,
+                             r.structure.uncertain ? "; UNCERTAIN: a singular value lies near that tolerance, so a nearby "
+                                                     "matrix may have another Jordan structure" : "",
+                             r.exact.refusal.empty() ? "" : "; not exact: " + r.exact.refusal);
+  }
   for (const runtime::EigenvalueStructure& e : r.structure.eigenvalues)
     std::cout << fmt::format("    {:<24} algebraic {}, geometric {}, Jordan blocks {}\n", complex_text(e.value),
                              e.algebraic_multiplicity, e.geometric_multiplicity, blocks_text(e.jordan_blocks));
@@ -283,11 +331,11 @@ void print_linear_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq
     fundamental += fmt::format("{}{{\"t\": {}, \"matrix\": {}}}", fundamental.empty() ? "" : ", ", number(t), json_matrix(Phi));
   std::cout << fmt::format(
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"state\": {}, \"A\": {}, \"B\": {}, \"characteristic_polynomial\": {}, "
-      "\"eigenvalues\": [{}], \"rank_tolerance\": {}, \"structure_uncertain\": {}, \"modes\": [{}], \"rigid_body_modes\": {}, "
+      "\"eigenvalues\": [{}], \"jordan_decided\": \"{}\", \"rank_tolerance\": {}, \"structure_uncertain\": {}, \"modes\": [{}], \"rigid_body_modes\": {}, "
       "\"modal_refusal\": {}, \"damping\": {{\"kind\": \"{}\", \"rayleigh_alpha\": {}, \"rayleigh_beta\": {}, \"coupling\": {}}}, "
       "\"orthonormality_error\": {}, \"fundamental_matrix\": [{}]{}}}\n",
       json_escape(m.name), equilibrium, json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B),
-      json_numbers(r.characteristic_polynomial), eigenvalues,
+      json_numbers(r.characteristic_polynomial), eigenvalues, r.decided_exactly ? "exact" : "numeric",
       number(r.structure.rank_tolerance), r.structure.uncertain ? "true" : "false", modes, r.modes.rigid_body_modes,
       r.modes.refusal.empty() ? "null" : "\"" + json_escape(r.modes.refusal) + "\"", r.modes.damping,
       number(r.modes.rayleigh_alpha), number(r.modes.rayleigh_beta), number(r.modes.coupling),

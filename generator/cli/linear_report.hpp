@@ -9,6 +9,7 @@
 
 #include "analyse/controllability.hpp"
 #include "analyse/equilibrium.hpp"
+#include "analyse/exact_jordan.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/linear_system.hpp"
 #include "analyse/modal_analysis.hpp"
@@ -21,6 +22,8 @@ struct LinearReport {
   std::vector<double> characteristic_polynomial;  // det(λI − A), highest power first
   runtime::StabilityReport system;  // M, D, G, K, N of the second-order form
   runtime::JordanStructure structure;
+  ExactJordan exact;    // the structure by exact arithmetic, when A is rational
+  bool decided_exactly = false;  // `structure` then holds the exact multiplicities and blocks
   runtime::ModalAnalysis modes;
   std::vector<std::pair<double, Eigen::MatrixXd>> fundamental;  // (t, Φ(t))
   std::vector<std::string> input_names, output_names;
@@ -43,7 +46,9 @@ struct LinearRequest {
 std::string unknown_names(const eomgen_model_abi& m, const LinearRequest& request);
 
 /// Everything `linear` prints, at the equilibrium x.
-LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request);
+/// `equations`: the derived equations, for the exact Jordan structure (may be null).
+LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request,
+                           const Equations* equations = nullptr);
 
 void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r);
 void print_linear_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r);

@@ -113,6 +113,7 @@ TEST(LinearCommand, RendezvousJordanStructureAndTheClohessyWiltshireSolution) {
   }
   EXPECT_EQ(found, 3);
   EXPECT_FALSE(json.find("structure_uncertain")->truth);
+  EXPECT_EQ(json.find("jordan_decided")->text, "exact") << "n = 0.0011 is rational: A is exact";
   for (std::size_t k = 0; k < 2; ++k) {
     double t = k == 0 ? 600 : 3000, c = std::cos(n * t), s = std::sin(n * t);
     // state [x, y, z, x', y', z']
