@@ -180,6 +180,7 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   }
   r.modes.refusal = modal_refusal(r.system);
   if (r.modes.refusal.empty()) r.modes = runtime::modal_analysis(r.system.M, r.system.D, r.system.K);
+  r.principal = runtime::principal_coordinates(r.modes, r.system.B, r.A, r.B, r.structure);
   for (double t : times) r.fundamental.push_back({t, runtime::fundamental_matrix(r.A, t)});
   r.input_names.assign(m.input_names, m.input_names + k);
   r.output_names = request.outputs.empty() ? std::vector<std::string>(m.output_names, m.output_names + m.num_outputs)
@@ -196,6 +197,36 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
 }
 
 namespace {
+
+// "c1 F + c2 G", or "0" without inputs
+std::string input_terms(const LinearReport& r, const std::vector<std::complex<double>>& row) {
+  std::string out;
+  for (std::size_t j = 0; j < row.size(); ++j)
+    if (std::abs(row[j]) > 0) out += fmt::format("{}({}) {}", out.empty() ? "" : " + ", complex_text(row[j]), r.input_names[j]);
+  return out.empty() ? "0" : out;
+}
+
+// the decoupled equations, one per principal coordinate η_i (Hiller §6.3)
+std::vector<std::string> principal_equations(const LinearReport& r) {
+  std::vector<std::string> out;
+  const runtime::PrincipalCoordinates& p = r.principal;
+  if (p.kind == "modal") {
+    for (std::size_t i = 0; i < r.modes.modes.size(); ++i) {
+      const runtime::NaturalMode& mode = r.modes.modes[i];
+      std::vector<std::complex<double>> row;
+      for (Eigen::Index j = 0; j < p.modal_inputs.cols(); ++j) row.push_back(p.modal_inputs(Eigen::Index(i), j));
+      out.push_back(fmt::format("der(der(eta{0})) + {1:.9g}*der(eta{0}) + {2:.9g}*eta{0} = {3}", i + 1,
+                                2 * mode.damping_ratio * mode.omega, mode.omega * mode.omega, input_terms(r, row)));
+    }
+  } else if (p.kind == "eigenvectors") {
+    for (std::size_t i = 0; i < p.eigenvalues.size(); ++i) {
+      std::vector<std::complex<double>> row;
+      for (Eigen::Index j = 0; j < p.eigen_inputs.cols(); ++j) row.push_back(p.eigen_inputs(Eigen::Index(i), j));
+      out.push_back(fmt::format("der(eta{0}) = ({1})*eta{0} + {2}", i + 1, complex_text(p.eigenvalues[i]), input_terms(r, row)));
+    }
+  }
+  return out;
+}
 
 std::string roots_text(const std::vector<std::complex<double>>& roots) {
   std::string out;
@@ -248,7 +279,11 @@ std::string reach_json(const eomgen_model_abi& m, const LinearReport& r) {
                             roots_json(p.g.poles), roots_json(p.g.zeros), number(p.g.gain),
                             std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? number(dc.real()) : "null");
   }
-  return fmt::format(", \"inputs\": {}, \"outputs\": {}, \"C\": {}, \"D\": {}, \"controllable\": {}, \"observable\": {}, "
+  const runtime::PrincipalCoordinates& p = r.principal;
+  std::string principal = fmt::format(", \"principal_coordinates\": {{\"kind\": \"{}\", \"reason\": {}, \"matrix\": {}, \"equations\": {}}}",
+                                      p.kind, p.reason.empty() ? "null" : "\"" + json_escape(p.reason) + "\"",
+                                      p.kind == "modal" ? json_matrix(p.modal_matrix) : "null", json_strings(principal_equations(r)));
+  return principal + fmt::format(", \"inputs\": {}, \"outputs\": {}, \"C\": {}, \"D\": {}, \"controllable\": {}, \"observable\": {}, "
                      "\"kalman_ranks\": {{\"controllability\": {}, \"observability\": {}}}, \"mode_reach\": [{}], "
                      "\"transfer_functions\": [{}]", json_strings(r.input_names), json_strings(r.output_names),
                      json_matrix(r.C), json_matrix(r.D), r.reach.controllable ? "true" : "false",
@@ -305,6 +340,13 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
                                "so the damping ratios above are approximations (the eigenvalues of A are exact)\n",
                                r.modes.coupling);
     std::cout << fmt::format("  check: the modes are M-orthonormal to {:.1e}\n", r.modes.orthonormality_error);
+  }
+  if (r.principal.kind == "none") {
+    std::cout << "  principal coordinates: " << r.principal.reason << "\n";
+  } else {
+    std::cout << (r.principal.kind == "modal" ? "  principal coordinates q = Phi eta, Phi the modes above (Hiller §6.3), decoupled:\n"
+                                              : "  principal coordinates x = V eta, V the eigenvectors of A (Hiller §6.3), decoupled:\n");
+    for (const std::string& line : principal_equations(r)) std::cout << "    " << line << "\n";
   }
   for (const auto& [t, Phi] : r.fundamental) std::cout << matrix_text(fmt::format("Phi({:g})", t).c_str(), Phi);
   print_reach_text(m, r);

@@ -12,6 +12,7 @@
 #include "analyse/exact_jordan.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/linear_system.hpp"
+#include "analyse/principal_coordinates.hpp"
 #include "analyse/modal_analysis.hpp"
 
 namespace eomgen::cli {
@@ -25,6 +26,7 @@ struct LinearReport {
   ExactJordan exact;    // the structure by exact arithmetic, when A is rational
   bool decided_exactly = false;  // `structure` then holds the exact multiplicities and blocks
   runtime::ModalAnalysis modes;
+  runtime::PrincipalCoordinates principal;
   std::vector<std::pair<double, Eigen::MatrixXd>> fundamental;  // (t, Φ(t))
   std::vector<std::string> input_names, output_names;
   Eigen::MatrixXd C, D;  // y = C x + D u; model outputs by central differences, states exactly

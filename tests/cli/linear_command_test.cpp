@@ -73,6 +73,22 @@ TEST(LinearCommand, TwoMassChainModesAndFundamentalMatrix) {
   }
 }
 
+TEST(LinearCommand, PrincipalCoordinatesDecoupleTheChain) {
+  // q = Φ η: η_i'' + (α + β ω_i²) η_i' + ω_i² η_i = φ_iᵀ (0, 1) F (Hiller §6.3)
+  JsonValue json = run_json("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
+  const JsonValue& p = *json.find("principal_coordinates");
+  EXPECT_EQ(p.find("kind")->text, "modal");
+  const auto& equations = p.find("equations")->items;
+  ASSERT_EQ(equations.size(), 2u);
+  EXPECT_EQ(equations[0].text, "der(der(eta1)) + 0.2*der(eta1) + 100*eta1 = (0.707107) F");
+  EXPECT_EQ(equations[1].text, "der(der(eta2)) + 0.4*der(eta2) + 300*eta2 = (-0.707107) F");
+  const auto& Phi = p.find("matrix")->items;
+  EXPECT_NEAR(Phi[1].items[1].value, -1 / std::sqrt(2.0), 1e-12);
+  // the rendezvous' Jordan block keeps two coordinates coupled: said, not faked
+  JsonValue cw = run_json("linear '" + model_path("space_rendezvous") + "' --at x=0");
+  EXPECT_EQ(cw.find("principal_coordinates")->find("kind")->text, "none");
+}
+
 TEST(LinearCommand, DoublePendulumFrequenciesFromTheFrequencyEquation) {
   // m1 l1 l2 ω⁴ − (m1 + m2) g (l1 + l2) ω² + (m1 + m2) g² = 0 (absolute angles, as the model's)
   const std::string set = " --set m1=1.5 --set m2=0.7 --set l1=0.9 --set l2=0.6 --set g=9.81";

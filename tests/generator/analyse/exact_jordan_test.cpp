@@ -50,6 +50,21 @@ TEST(ExactJordan, ACirculatoryChainIsOneBlockOfSizeFour) {
   EXPECT_EQ(j.factors[0].jordan_blocks, (std::vector<int>{4}));
 }
 
+TEST(ExactJordan, AVelocityCouplingGivesBlocksOfSizesThreeAndOne) {
+  // x'' = c y', y'' = 0: y' constant, x' linear, x quadratic in t: blocks [3, 1] at 0
+  Derivation d = derive_model_text("[model]\nname = \"chain\"\ntitle = \"x'' = c y', y'' = 0\"\n\n[parameters]\nc = 0.5\n\n"
+                                   "[coordinates]\nx = 0.0\ny = 0.0\n\n[[particles]]\nname = \"a\"\nmass = \"1\"\n"
+                                   "position = [\"x\", \"0\", \"0\"]\n\n[[particles]]\nname = \"b\"\nmass = \"1\"\n"
+                                   "position = [\"y\", \"0\", \"0\"]\n\n[[forces]]\ngeneralized = { x = \"c*der(y)\" }\n",
+                                   "chain.toml");
+  ASSERT_TRUE(d.equations) << d.diagnostics.format();
+  ExactJordan j = exact_at(*d.equations, std::vector<double>(4, 0.0));
+  ASSERT_TRUE(j.refusal.empty()) << j.refusal;
+  ASSERT_EQ(j.factors.size(), 1u);
+  EXPECT_EQ(j.factors[0].multiplicity, 4);
+  EXPECT_EQ(j.factors[0].jordan_blocks, (std::vector<int>{3, 1}));
+}
+
 TEST(ExactJordan, RefusedWhereAIsNotRational) {
   Equations pendulum = derive_model("pendulum");
   ExactJordan upright = exact_at(pendulum, {3.141592653589793, 0.0});
