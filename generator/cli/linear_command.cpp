@@ -84,7 +84,7 @@ int linear(const Options& o) {
   }
   LinearReport report = linear_report(loaded.problem, eq.state, request, &loaded.equations);
   // with --response the CSV goes to standard output unless -o names a file, so the report is left out then
-  if (!o.response.response.empty()) return *write_linear_response(m, report, o.response);
+  if (wants_response(o.response)) return *write_linear_response(m, report, o.response);
   o.json ? print_linear_json(m, eq, report) : print_linear_text(m, eq, report);
   if (!o.response.plot.empty()) draw_linear_charts(m, report, o.response.plot, *bode);
   return exit_success;
@@ -108,6 +108,8 @@ Command add_linear_command(CLI::App& app) {
   cmd->add_option("--response", o->response.response, "Response of the linearized system, written as CSV of the "
                   "deviations from the equilibrium: initial (with --initial), impulse:INPUT, step:INPUT (unit), "
                   "harmonic:INPUT:OMEGA (sin(OMEGA t))");
+  cmd->add_option("--input", o->response.input, "Response to one input as a function of time: --input 'F=step(2)' (a unit "
+                  "step at t = 2), 'F=0.5*impulse(0)', 'F=sin(3*t)', 'F=2*cos(3*t)'");
   cmd->add_option("--initial", o->response.initials, "Initial deviation, one per flag: --initial x1=0.01");
   cmd->add_option("--t-end", o->response.t_end, "End time of the response [s] (default 10)");
   cmd->add_option("--dt-out", o->response.dt_out, "Output interval of the response [s] (default 0.01)");

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/linear_report_sections.hpp"
 #include "cli/report_text.hpp"
 #include "symbolic/canonical_print.hpp"
 
@@ -107,25 +108,6 @@ std::string unknown_names(const eomgen_model_abi& m, const LinearRequest& reques
 
 namespace {
 
-std::vector<std::string> states_named(const eomgen_model_abi& m, const Eigen::VectorXcd& direction) {
-  std::vector<std::string> names;
-  if (direction.size() == 0) return names;
-  double largest = direction.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < direction.size(); ++i)
-    if (std::abs(direction(i)) >= 0.1 * largest) names.push_back(m.state_names[i]);
-  return names;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-}  // namespace
-
-namespace {
-
 // |f(λ)| relative to the size of its terms
 double residual_at(const ExactFactor& f, const GiNaC::symbol& lambda, std::complex<double> z) {
   std::complex<double> sum = 0;
@@ -196,102 +178,6 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   return r;
 }
 
-namespace {
-
-// "c1 F + c2 G", or "0" without inputs
-std::string input_terms(const LinearReport& r, const std::vector<std::complex<double>>& row) {
-  std::string out;
-  for (std::size_t j = 0; j < row.size(); ++j)
-    if (std::abs(row[j]) > 0) out += fmt::format("{}({}) {}", out.empty() ? "" : " + ", complex_text(row[j]), r.input_names[j]);
-  return out.empty() ? "0" : out;
-}
-
-// the decoupled equations, one per principal coordinate η_i (Hiller §6.3)
-std::vector<std::string> principal_equations(const LinearReport& r) {
-  std::vector<std::string> out;
-  const runtime::PrincipalCoordinates& p = r.principal;
-  if (p.kind == "modal") {
-    for (std::size_t i = 0; i < r.modes.modes.size(); ++i) {
-      const runtime::NaturalMode& mode = r.modes.modes[i];
-      std::vector<std::complex<double>> row;
-      for (Eigen::Index j = 0; j < p.modal_inputs.cols(); ++j) row.push_back(p.modal_inputs(Eigen::Index(i), j));
-      out.push_back(fmt::format("der(der(eta{0})) + {1:.9g}*der(eta{0}) + {2:.9g}*eta{0} = {3}", i + 1,
-                                2 * mode.damping_ratio * mode.omega, mode.omega * mode.omega, input_terms(r, row)));
-    }
-  } else if (p.kind == "eigenvectors") {
-    for (std::size_t i = 0; i < p.eigenvalues.size(); ++i) {
-      std::vector<std::complex<double>> row;
-      for (Eigen::Index j = 0; j < p.eigen_inputs.cols(); ++j) row.push_back(p.eigen_inputs(Eigen::Index(i), j));
-      out.push_back(fmt::format("der(eta{0}) = ({1})*eta{0} + {2}", i + 1, complex_text(p.eigenvalues[i]), input_terms(r, row)));
-    }
-  }
-  return out;
-}
-
-std::string roots_text(const std::vector<std::complex<double>>& roots) {
-  std::string out;
-  for (const auto& z : roots) out += (out.empty() ? "" : ", ") + complex_text(z);
-  return out.empty() ? "(none)" : out;
-}
-
-void print_reach_text(const eomgen_model_abi& m, const LinearReport& r) {
-  std::size_t n = m.num_states;
-  if (!r.input_names.empty())
-    std::cout << fmt::format("  controllability from {}: {} (Kalman rank {} of {})\n", joined(r.input_names),
-                             r.reach.controllable ? "controllable" : "NOT controllable", r.reach.kalman_controllability_rank, n);
-  if (!r.output_names.empty())
-    std::cout << fmt::format("  observability from {}: {} (Kalman rank {} of {})\n", joined(r.output_names),
-                             r.reach.observable ? "observable" : "NOT observable", r.reach.kalman_observability_rank, n);
-  for (const runtime::ModeReach& mode : r.reach.modes) {
-    if (!r.input_names.empty() && !mode.controllable)
-      std::cout << fmt::format("    the mode {} cannot be reached by the inputs (PBH); it lives in {}\n",
-                               complex_text(mode.eigenvalue), joined(states_named(m, mode.unreachable)));
-    if (!r.output_names.empty() && !mode.observable)
-      std::cout << fmt::format("    the mode {} cannot be seen in the outputs (PBH); it moves {}\n",
-                               complex_text(mode.eigenvalue), joined(states_named(m, mode.unseen)));
-  }
-  for (const LinearReport::Pair& p : r.transfer) {
-    std::complex<double> dc = p.g.at(0.0);
-    std::cout << fmt::format("  transfer function {} -> {}: G(s) = {:.9g} * prod(s - zeros) / prod(s - poles)\n", p.input,
-                             p.output, p.g.gain);
-    std::cout << fmt::format("    poles: {}\n    zeros: {}\n    G(0) = {}\n", roots_text(p.g.poles), roots_text(p.g.zeros),
-                             std::isfinite(std::abs(dc)) ? complex_text(dc) : "infinite (a pole at 0)");
-  }
-}
-
-std::string roots_json(const std::vector<std::complex<double>>& roots) {
-  std::string out;
-  for (const auto& z : roots) out += fmt::format("{}[{}, {}]", out.empty() ? "" : ", ", number(z.real()), number(z.imag()));
-  return "[" + out + "]";
-}
-
-std::string reach_json(const eomgen_model_abi& m, const LinearReport& r) {
-  std::string modes, transfer;
-  for (const runtime::ModeReach& mode : r.reach.modes)
-    modes += fmt::format("{}{{\"re\": {}, \"im\": {}, \"controllable\": {}, \"observable\": {}, \"unreachable_states\": {}, "
-                         "\"unseen_states\": {}}}", modes.empty() ? "" : ", ", number(mode.eigenvalue.real()),
-                         number(mode.eigenvalue.imag()), mode.controllable ? "true" : "false", mode.observable ? "true" : "false",
-                         json_strings(states_named(m, mode.unreachable)), json_strings(states_named(m, mode.unseen)));
-  for (const LinearReport::Pair& p : r.transfer) {
-    std::complex<double> dc = p.g.at(0.0);
-    transfer += fmt::format("{}{{\"input\": \"{}\", \"output\": \"{}\", \"poles\": {}, \"zeros\": {}, \"gain\": {}, "
-                            "\"dc_gain\": {}}}", transfer.empty() ? "" : ", ", json_escape(p.input), json_escape(p.output),
-                            roots_json(p.g.poles), roots_json(p.g.zeros), number(p.g.gain),
-                            std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? number(dc.real()) : "null");
-  }
-  const runtime::PrincipalCoordinates& p = r.principal;
-  std::string principal = fmt::format(", \"principal_coordinates\": {{\"kind\": \"{}\", \"reason\": {}, \"matrix\": {}, \"equations\": {}}}",
-                                      p.kind, p.reason.empty() ? "null" : "\"" + json_escape(p.reason) + "\"",
-                                      p.kind == "modal" ? json_matrix(p.modal_matrix) : "null", json_strings(principal_equations(r)));
-  return principal + fmt::format(", \"inputs\": {}, \"outputs\": {}, \"C\": {}, \"D\": {}, \"controllable\": {}, \"observable\": {}, "
-                     "\"kalman_ranks\": {{\"controllability\": {}, \"observability\": {}}}, \"mode_reach\": [{}], "
-                     "\"transfer_functions\": [{}]", json_strings(r.input_names), json_strings(r.output_names),
-                     json_matrix(r.C), json_matrix(r.D), r.reach.controllable ? "true" : "false",
-                     r.reach.observable ? "true" : "false", r.reach.kalman_controllability_rank,
-                     r.reach.kalman_observability_rank, modes, transfer);
-}
-
-}  // namespace
 
 void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r) {
   std::string where;
@@ -339,7 +225,15 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
       std::cout << fmt::format("  damping: not proportional; the largest modal coupling is {:.3g} of the largest modal damping, "
                                "so the damping ratios above are approximations (the eigenvalues of A are exact)\n",
                                r.modes.coupling);
-    std::cout << fmt::format("  check: the modes are M-orthonormal to {:.1e}\n", r.modes.orthonormality_error);
+    std::cout << fmt::format("  check: the modes are M-orthonormal to {:.1e}; Rayleigh's quotient of each mode equals its "
+                             "omega^2 to {:.1e} (Hiller §8.1.4)\n", r.modes.orthonormality_error, r.modes.rayleigh_error);
+    for (const runtime::ModalAnalysis::Constrained& c : r.modes.constrained) {
+      std::string omegas;
+      for (double w : c.omegas) omegas += (omegas.empty() ? "" : ", ") + fmt::format("{:.6g}", w);
+      std::cout << fmt::format("  check: with {} held at 0 the frequencies are {} rad/s: {}\n", m.coordinate_names[c.fixed], omegas,
+                               c.interlaces ? "they interlace the free system's, as a constraint must"
+                                            : "they do NOT interlace the free system's (a bug: please report it)");
+    }
   }
   if (r.principal.kind == "none") {
     std::cout << "  principal coordinates: " << r.principal.reason << "\n";

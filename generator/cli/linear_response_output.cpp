@@ -1,6 +1,9 @@
 #include "cli/linear_response_output.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <regex>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -49,6 +52,36 @@ std::optional<runtime::ResponseRequest> parse_response(const eomgen_model_abi& m
   return r;
 }
 
+// NAME=EXPR with EXPR one of A*step(T0), A*impulse(T0), A*sin(W*t), A*cos(W*t) (A* optional)
+std::optional<runtime::ResponseRequest> parse_input(const eomgen_model_abi& m, const std::string& text) {
+  const std::string number = "([-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?)";
+  std::smatch match;
+  std::size_t eq = text.find('=');
+  std::string name = text.substr(0, eq), expression = eq == std::string::npos ? "" : text.substr(eq + 1);
+  expression.erase(std::remove(expression.begin(), expression.end(), ' '), expression.end());
+  int input = index_of(m.input_names, m.num_inputs, name);
+  if (eq == std::string::npos || input < 0) {
+    std::cerr << fmt::format("eomgen: error: --input {}: expected INPUT=EXPRESSION with INPUT an input of {}\n", text, m.name);
+    return std::nullopt;
+  }
+  runtime::ResponseRequest r;
+  r.input = input;
+  auto amplitude = [](const std::ssub_match& a) { return a.matched ? std::stod(a.str()) : 1.0; };
+  if (std::regex_match(expression, match, std::regex("(?:" + number + "\\*)?(step|impulse)\\(" + number + "\\)"))) {
+    r.kind = match[2] == "step" ? runtime::Excitation::step : runtime::Excitation::impulse;
+    r.amplitude = amplitude(match[1]), r.start = std::stod(match[3].str());
+    if (r.start >= 0) return r;
+  } else if (std::regex_match(expression, match, std::regex("(?:" + number + "\\*)?(sin|cos)\\(" + number + "\\*t\\)"))) {
+    r.kind = runtime::Excitation::harmonic;
+    r.amplitude = amplitude(match[1]), r.omega = std::stod(match[3].str());
+    r.phase = match[2] == "cos" ? M_PI / 2 : 0;
+    if (r.omega > 0) return r;
+  }
+  std::cerr << fmt::format("eomgen: error: --input {}: expected A*step(T0), A*impulse(T0), A*sin(W*t) or A*cos(W*t) "
+                           "(A optional, T0 >= 0, W > 0), e.g. --input '{}=step(2)'\n", text, name);
+  return std::nullopt;
+}
+
 std::string response_csv(const LinearReport& r, const runtime::LinearResponse& response) {
   std::string out = "t";
   for (const std::string& s : r.state_names) out += "," + s;
@@ -86,8 +119,12 @@ std::string draw(const eomgen_model_abi& m, const runtime::LinearResponse& respo
 }  // namespace
 
 std::optional<int> write_linear_response(const eomgen_model_abi& m, const LinearReport& r, const ResponseOptions& o) {
-  if (o.response.empty()) return std::nullopt;
-  auto request = parse_response(m, o.response);
+  if (!wants_response(o)) return std::nullopt;
+  if (!o.response.empty() && !o.input.empty()) {
+    std::cerr << "eomgen: error: give either --response or --input, not both\n";
+    return exit_user_error;
+  }
+  auto request = o.input.empty() ? parse_response(m, o.response) : parse_input(m, o.input);
   if (!request) return exit_user_error;
   if (!(o.t_end > 0) || !(o.dt_out > 0)) {
     std::cerr << "eomgen: error: --response needs --t-end > 0 and --dt-out > 0\n";
@@ -106,7 +143,7 @@ std::optional<int> write_linear_response(const eomgen_model_abi& m, const Linear
     return exit_user_error;
   }
   if (!o.plot.empty()) {
-    std::string failure = draw(m, response, fmt::format("{}: linear response, {}", m.name, o.response), o.plot);
+    std::string failure = draw(m, response, fmt::format("{}: linear response, {}", m.name, o.input.empty() ? o.response : o.input), o.plot);
     if (failure.empty()) std::cerr << "eomgen: chart in " << o.plot << "\n";
     else std::cerr << "eomgen: warning: no chart " << o.plot << ": " << failure << "\n";
   }

@@ -15,7 +15,10 @@ enum class Excitation { initial, impulse, step, harmonic };
 struct ResponseRequest {
   Excitation kind = Excitation::initial;
   Eigen::Index input = 0;  // the input that is excited (not for `initial`)
-  double omega = 0;        // u = sin(ω t) for `harmonic`
+  double omega = 0;        // u = amplitude·sin(ω t + phase) for `harmonic`
+  double amplitude = 1;    // of the impulse, step or sine
+  double start = 0;        // when the impulse or step comes (t ≥ 0)
+  double phase = 0;        // of the sine: π/2 makes it a cosine
   Eigen::VectorXd x0;      // the initial deviation from the equilibrium
   double t_end = 10, dt_out = 0.01;
 };
@@ -25,7 +28,8 @@ struct LinearResponse {
   std::vector<Eigen::VectorXd> states;
 };
 
-/// Unit impulse (x(0⁺) = x0 + B e_j), unit step (u = 1 for t ≥ 0) or u = sin(ωt) in input j.
+/// An impulse (x jumps by amplitude·B e_j at `start`), a step (u = amplitude for t ≥ start)
+/// or u = amplitude·sin(ωt + phase) in input j, on top of the free motion from x0.
 LinearResponse linear_response(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const ResponseRequest& request);
 
 }  // namespace eomgen::runtime

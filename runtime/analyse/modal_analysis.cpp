@@ -29,6 +29,39 @@ void fit_rayleigh(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
   }
 }
 
+// the frequencies with the coordinate `fixed` held at zero: its row and column removed
+std::vector<double> constrained_frequencies(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, Eigen::Index fixed) {
+  Eigen::Index n = M.rows();
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (i != fixed) kept.push_back(i);
+  Eigen::MatrixXd m(n - 1, n - 1), k(n - 1, n - 1);
+  for (Eigen::Index a = 0; a < n - 1; ++a)
+    for (Eigen::Index b = 0; b < n - 1; ++b) m(a, b) = M(kept[a], kept[b]), k(a, b) = K(kept[a], kept[b]);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(k, m);
+  std::vector<double> omegas;
+  for (Eigen::Index i = 0; i < n - 1; ++i) omegas.push_back(std::sqrt(std::max(0.0, solver.eigenvalues()(i))));
+  return omegas;
+}
+
+void check_bounds(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalAnalysis& out) {
+  double top = 0;
+  for (const NaturalMode& mode : out.modes) top = std::max(top, mode.omega * mode.omega);
+  for (const NaturalMode& mode : out.modes)
+    out.rayleigh_error = std::max(out.rayleigh_error, std::abs(rayleigh_quotient(M, K, mode.shape) - mode.omega * mode.omega) /
+                                                          std::max(top, 1e-300));
+  Eigen::Index n = M.rows();
+  for (Eigen::Index j = 0; n >= 2 && j < n; ++j) {
+    ModalAnalysis::Constrained c;
+    c.fixed = j;
+    c.omegas = constrained_frequencies(M, K, j);
+    double slack = 1e-9 * std::sqrt(std::max(top, 1e-300));
+    for (std::size_t i = 0; i < c.omegas.size(); ++i)
+      c.interlaces = c.interlaces && out.modes[i].omega <= c.omegas[i] + slack && c.omegas[i] <= out.modes[i + 1].omega + slack;
+    out.constrained.push_back(c);
+  }
+}
+
 }  // namespace
 
 double rayleigh_quotient(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::VectorXd& v) {
@@ -69,6 +102,7 @@ ModalAnalysis modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   Eigen::MatrixXd Phi(M.rows(), static_cast<Eigen::Index>(out.modes.size()));
   for (std::size_t i = 0; i < out.modes.size(); ++i) Phi.col(static_cast<Eigen::Index>(i)) = out.modes[i].shape;
   out.orthonormality_error = largest(Phi.transpose() * M * Phi - Eigen::MatrixXd::Identity(Phi.cols(), Phi.cols()));
+  check_bounds(M, K, out);
   if (largest(D) == 0) return out;
   fit_rayleigh(M, D, K, out);
   Eigen::MatrixXd modal = Phi.transpose() * D * Phi;

@@ -29,6 +29,16 @@ struct ModalAnalysis {
   /// of treating the modes as decoupled by the damping (0 when proportional)
   double coupling = 0;
   double orthonormality_error = 0;  // max |ΦᵀMΦ − I|
+  /// max |R(φ_i) − ω_i²| / max ω²: Rayleigh's quotient is exact at each mode (§8.1.4)
+  double rayleigh_error = 0;
+  /// §8.1.4: fixing one coordinate (a constraint) gives frequencies that interlace the free
+  /// system's, ω_i ≤ ω̃_i ≤ ω_{i+1}; one entry per coordinate (two coordinates or more)
+  struct Constrained {
+    Eigen::Index fixed = 0;
+    std::vector<double> omegas;
+    bool interlaces = true;
+  };
+  std::vector<Constrained> constrained;
 };
 
 /// M symmetric positive definite, K symmetric (the conservative stiffness), D symmetric.

@@ -51,6 +51,12 @@ TEST(LinearCommand, TwoMassChainModesAndFundamentalMatrix) {
   }
   EXPECT_EQ(json.find("damping")->find("kind")->text, "proportional");
   EXPECT_LT(at(json, "orthonormality_error"), 1e-12);
+  EXPECT_LT(at(json, "rayleigh_quotient_error"), 1e-12);
+  // x1 held: the second mass alone on k2 + k3 = 200, ω = √200, between 10 and √300
+  const JsonValue& held = json.find("interlacing")->items.at(0);
+  EXPECT_EQ(held.find("fixed")->text, "x1");
+  EXPECT_NEAR(held.find("frequencies_rad_s")->items.at(0).value, std::sqrt(200.0), 1e-10);
+  EXPECT_TRUE(held.find("interlaces")->truth);
   // Φ(t) by modes: each q_i'' + 2ζω q_i' + ω² q_i = 0 solved in closed form, then x = V q
   for (std::size_t k = 0; k < 2; ++k) {
     double t = k == 0 ? 0.25 : 1.5;
@@ -254,6 +260,32 @@ TEST(LinearCommand, ModeShapeAndBodeCharts) {
   CommandOutput alone = run_eomgen("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --bode F:x");
   EXPECT_EQ(alone.status, 2);
   EXPECT_NE(alone.err.find("--bode needs --plot"), std::string::npos) << alone.err;
+}
+
+TEST(LinearCommand, InputsAsFunctionsOfTime) {
+  // a unit step at t = 2 is the step response delayed by 2; 0.5*impulse(0) halves the impulse response
+  auto step = response("--response step:F --t-end 3 --dt-out 0.5");
+  auto delayed = response("--input 'F=step(2)' --t-end 5 --dt-out 0.5");
+  ASSERT_EQ(delayed.size(), 11u);
+  for (std::size_t k = 0; k < delayed.size(); ++k)
+    for (int i = 1; i <= 4; ++i)
+      EXPECT_NEAR(delayed[k][i], k < 4 ? 0.0 : step[k - 4][i], 1e-15) << "t = " << delayed[k][0];
+  auto impulse = response("--response impulse:F --t-end 1 --dt-out 0.5");
+  auto half = response("--input 'F=0.5*impulse(0)' --t-end 1 --dt-out 0.5");
+  for (std::size_t k = 0; k < half.size(); ++k)
+    for (int i = 1; i <= 4; ++i) EXPECT_NEAR(half[k][i], 0.5 * impulse[k][i], 1e-15);
+  // 2 cos(5t) against the simulation of the same linear model
+  auto cosine = response("--input 'F=2*cos(5*t)' --t-end 3 --dt-out 0.5");
+  std::string csv = temporary_directory() + "/simulated.csv";
+  CommandOutput sim = run_eomgen("simulate '" + model_path("two_mass_chain") + "' --initial x1=0 --input 'F=2*cos(5*t)' "
+                                 "--t-end 3 --dt-out 0.5 --integrator cvode-bdf --rtol 1e-12 --atol 1e-15 -o '" + csv + "'");
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  auto simulated = read_numeric_csv(csv);
+  for (std::size_t k = 0; k < cosine.size(); ++k)
+    for (int i = 1; i <= 4; ++i) EXPECT_NEAR(cosine[k][i], simulated[k][i], 1e-9) << "t = " << cosine[k][0];
+  CommandOutput wrong = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --input 'F=t^2'");
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find("expected A*step(T0), A*impulse(T0), A*sin(W*t) or A*cos(W*t)"), std::string::npos) << wrong.err;
 }
 
 TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {

@@ -81,6 +81,14 @@ TEST(ModalAnalysis, TwoMassChainWithRayleighDamping) {
   EXPECT_NEAR(a.rayleigh_beta, beta, 1e-12);
   EXPECT_LT(a.orthonormality_error, 1e-12);
   EXPECT_EQ(a.rigid_body_modes, 0);
+  // a constraint: with either mass held, the other oscillates at √(2k/m), between ω₁ and ω₂ (§8.1.4)
+  ASSERT_EQ(a.constrained.size(), 2u);
+  for (const auto& c : a.constrained) {
+    ASSERT_EQ(c.omegas.size(), 1u);
+    EXPECT_NEAR(c.omegas[0], std::sqrt(2 * k / m), 1e-12 * w[1]);
+    EXPECT_TRUE(c.interlaces);
+  }
+  EXPECT_LT(a.rayleigh_error, 1e-14);
   // Rayleigh's quotient bounds ω₁² from above and is exact at the first mode (§8.1.4)
   EXPECT_NEAR(rayleigh_quotient(M, K, a.modes[0].shape), w[0] * w[0], 1e-12 * w[0] * w[0]);
   EXPECT_GT(rayleigh_quotient(M, K, Eigen::Vector2d(1, 0.5)), w[0] * w[0]);
