@@ -137,4 +137,19 @@ ExactJordan exact_jordan_structure(const Equations& e, const std::vector<double>
   return out;
 }
 
+const ExactFactor* factor_of(const ExactJordan& exact, std::complex<double> z) {
+  const ExactFactor* best = nullptr;
+  double smallest = 1e-6;
+  for (const ExactFactor& f : exact.factors) {
+    std::complex<double> sum = 0;
+    double size = 0;
+    for (int k = 0; k <= f.degree; ++k) {
+      double c = GiNaC::ex_to<GiNaC::numeric>(f.polynomial.coeff(exact.lambda, k)).to_double();
+      sum += c * std::pow(z, k), size += std::abs(c * std::pow(z, k));
+    }
+    if (double r = std::abs(sum) / std::max(size, 1e-300); r <= smallest) smallest = r, best = &f;
+  }
+  return best;
+}
+
 }  // namespace eomgen

@@ -3,6 +3,7 @@
 /// 1/10), a rational equilibrium and functions that are rational there (cos 0 = 1).
 #pragma once
 
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,8 @@ struct ExactJordan {
 /// values; dim ker f(A)^k = deg f · Σ_blocks min(size, k) gives the blocks of f's roots.
 ExactJordan exact_jordan_structure(const Equations& equations, const std::vector<double>& parameters,
                                    const std::vector<double>& inputs, const std::vector<double>& state);
+
+/// The factor whose root z is, within 1e-6 of the size of its terms; nullptr if none.
+const ExactFactor* factor_of(const ExactJordan& exact, std::complex<double> z);
 
 }  // namespace eomgen

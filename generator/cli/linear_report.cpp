@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "analyse/state_space.hpp"
 #include "cli/commands.hpp"
+#include "cli/loaded_model.hpp"
 #include "cli/linear_report_sections.hpp"
 #include "cli/report_text.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -14,18 +16,6 @@
 namespace eomgen::cli {
 
 namespace {
-
-// the symmetric problem K v = ω² M v describes the motion only without gyroscopic and
-// circulatory forces (Hiller §8.1); the eigenvalues of A do in every case
-std::string modal_refusal(const runtime::StabilityReport& s) {
-  if (s.M.size() == 0) return "the model is in first-order form (Appell or Hamilton): its modes are the eigenvalues of A";
-  double scale = std::max(1.0, s.K.cwiseAbs().maxCoeff() + s.D.cwiseAbs().maxCoeff());
-  if (s.G.size() && s.G.cwiseAbs().maxCoeff() > 1e-12 * scale)
-    return "gyroscopic forces G couple the coordinates: the modes are the eigenvalues of A";
-  if (s.N.size() && s.N.cwiseAbs().maxCoeff() > 1e-12 * scale)
-    return "circulatory forces N are not conservative: the modes are the eigenvalues of A";
-  return "";
-}
 
 std::string blocks_text(const std::vector<int>& blocks) {
   std::string out;
@@ -39,96 +29,12 @@ std::string shape_json(const eomgen_model_abi& m, const Eigen::VectorXd& v) {
   return "{" + out + "}";
 }
 
-// det(λI − A) = Π (λ − λ_i), expanded; real up to rounding
-std::vector<double> characteristic_polynomial(const Eigen::MatrixXd& A) {
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, false);
-  std::vector<std::complex<double>> c{1.0};
-  for (Eigen::Index i = 0; i < A.rows(); ++i) {
-    std::complex<double> root = solver.eigenvalues()(i);
-    c.push_back(0.0);
-    for (std::size_t k = c.size() - 1; k > 0; --k) c[k] -= root * c[k - 1];
-  }
-  std::vector<double> real;
-  for (const auto& z : c) real.push_back(z.real());
-  return real;
-}
-
-int name_index(const char* const* names, std::size_t count, const std::string& name) {
-  for (std::size_t i = 0; i < count; ++i)
-    if (name == names[i]) return static_cast<int>(i);
-  return -1;
-}
-
-// C and D: a state is read exactly; a model output is differentiated centrally (h = 1e-6
-// times the size of the variable, error about 1e-10 relative)
-void output_matrices(const runtime::Problem& p, const std::vector<double>& x, LinearReport& r) {
-  const eomgen_model_abi& m = *p.model;
-  std::size_t N = m.num_states, k = m.num_inputs, q = r.output_names.size();
-  r.C = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(N));
-  r.D = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(k));
-  std::vector<double> u = p.inputs, y_plus(m.num_outputs + 1), y_minus(m.num_outputs + 1);
-  auto outputs_at = [&](const std::vector<double>& xs, const std::vector<double>& us, std::vector<double>& y) {
-    m.outputs(0.0, xs.data(), us.empty() ? nullptr : us.data(), p.parameters.data(), y.data());
-  };
-  for (std::size_t i = 0; i < q; ++i) {
-    Eigen::Index row = static_cast<Eigen::Index>(i);
-    if (int s = name_index(m.state_names, N, r.output_names[i]); s >= 0) {
-      r.C(row, s) = 1;
-      continue;
-    }
-    int o = name_index(m.output_names, m.num_outputs, r.output_names[i]);
-    for (std::size_t j = 0; j < N + k; ++j) {
-      std::vector<double> xp = x, xm = x, up = u, um = u;
-      double& plus = j < N ? xp[j] : up[j - N];
-      double& minus = j < N ? xm[j] : um[j - N];
-      double h = 1e-6 * std::max(1.0, std::abs(plus));
-      plus += h, minus -= h;
-      outputs_at(xp, up, y_plus), outputs_at(xm, um, y_minus);
-      double slope = (y_plus[o] - y_minus[o]) / (2 * h);
-      (j < N ? r.C(row, static_cast<Eigen::Index>(j)) : r.D(row, static_cast<Eigen::Index>(j - N))) = slope;
-    }
-  }
-}
-
-}  // namespace
-
-std::string unknown_names(const eomgen_model_abi& m, const LinearRequest& request) {
-  std::string unknown;
-  auto output_known = [&](const std::string& y) {
-    return name_index(m.state_names, m.num_states, y) >= 0 || name_index(m.output_names, m.num_outputs, y) >= 0;
-  };
-  for (const std::string& y : request.outputs)
-    if (!output_known(y)) unknown += (unknown.empty() ? "" : ", ") + y;
-  for (const auto& [u, y] : request.transfer) {
-    if (name_index(m.input_names, m.num_inputs, u) < 0) unknown += (unknown.empty() ? "" : ", ") + u;
-    if (!output_known(y)) unknown += (unknown.empty() ? "" : ", ") + y;
-  }
-  return unknown;
-}
-
-namespace {
-
-// |f(λ)| relative to the size of its terms
-double residual_at(const ExactFactor& f, const GiNaC::symbol& lambda, std::complex<double> z) {
-  std::complex<double> sum = 0;
-  double size = 0;
-  for (int k = 0; k <= f.degree; ++k) {
-    GiNaC::numeric c = GiNaC::ex_to<GiNaC::numeric>(f.polynomial.coeff(lambda, k).evalf());
-    std::complex<double> term = c.to_double() * std::pow(z, k);
-    sum += term, size += std::abs(term);
-  }
-  return std::abs(sum) / std::max(size, 1e-300);
-}
-
 // the exact multiplicities and blocks onto the numeric eigenvalues, each matched to its factor
 bool apply_exact(const ExactJordan& exact, runtime::JordanStructure& structure) {
   if (exact.factors.empty()) return false;
   for (runtime::EigenvalueStructure& e : structure.eigenvalues) {
-    const ExactFactor* best = nullptr;
-    double smallest = INFINITY;
-    for (const ExactFactor& f : exact.factors)
-      if (double r = residual_at(f, exact.lambda, e.value); r < smallest) smallest = r, best = &f;
-    if (!best || smallest > 1e-6) return false;
+    const ExactFactor* best = factor_of(exact, e.value);
+    if (!best) return false;
     e.algebraic_multiplicity = best->multiplicity;
     e.jordan_blocks = best->jordan_blocks;
     e.geometric_multiplicity = static_cast<int>(best->jordan_blocks.size());
@@ -139,28 +45,39 @@ bool apply_exact(const ExactJordan& exact, runtime::JordanStructure& structure) 
 
 }  // namespace
 
+std::string unknown_names(const eomgen_model_abi& m, const LinearRequest& request) {
+  std::string unknown;
+  auto output_known = [&](const std::string& y) {
+    return index_of(m.state_names, m.num_states, y) >= 0 || index_of(m.output_names, m.num_outputs, y) >= 0;
+  };
+  for (const std::string& y : request.outputs)
+    if (!output_known(y)) unknown += (unknown.empty() ? "" : ", ") + y;
+  for (const auto& [u, y] : request.transfer) {
+    if (index_of(m.input_names, m.num_inputs, u) < 0) unknown += (unknown.empty() ? "" : ", ") + u;
+    if (!output_known(y)) unknown += (unknown.empty() ? "" : ", ") + y;
+  }
+  return unknown;
+}
+
 LinearReport linear_report(const runtime::Problem& problem, const std::vector<double>& x, const LinearRequest& request,
                            const Equations* equations) {
   const std::vector<double>& times = request.times;
   const eomgen_model_abi& m = *problem.model;
-  std::size_t N = m.num_states, k = m.num_inputs;
+  std::size_t k = m.num_inputs;
   LinearReport r;
-  r.state_names.assign(m.state_names, m.state_names + N);
-  // at an equilibrium or steady motion (q'' = 0) the Jacobian of the right-hand side is A exactly
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(N, N), B(N, std::max<std::size_t>(k, 1));
-  const double* u = problem.inputs.empty() ? nullptr : problem.inputs.data();
-  m.jacobian_state(0.0, x.data(), u, problem.parameters.data(), J.data());
-  m.jacobian_input(0.0, x.data(), u, problem.parameters.data(), B.data());
-  r.A = J;
-  r.B = Eigen::MatrixXd(B).leftCols(static_cast<Eigen::Index>(k));
-  r.characteristic_polynomial = characteristic_polynomial(r.A);
+  r.state_names.assign(m.state_names, m.state_names + m.num_states);
+  runtime::StateSpace space = runtime::state_space_at(problem, x);
+  r.A = space.A, r.B = space.B;
+  Eigen::EigenSolver<Eigen::MatrixXd> spectrum(r.A, false);
+  const auto& roots = spectrum.eigenvalues();
+  r.characteristic_polynomial = runtime::polynomial_from_roots({roots.data(), roots.data() + roots.size()});
   r.system = runtime::analyse_stability(problem, x);
   r.structure = runtime::jordan_structure(r.A);
   if (equations) {
     r.exact = exact_jordan_structure(*equations, problem.parameters, problem.inputs, x);
     r.decided_exactly = apply_exact(r.exact, r.structure);
   }
-  r.modes.refusal = modal_refusal(r.system);
+  r.modes.refusal = runtime::symmetric_problem_refusal(r.system);
   if (r.modes.refusal.empty()) r.modes = runtime::modal_analysis(r.system.M, r.system.D, r.system.K);
   r.principal = runtime::principal_coordinates(r.modes, r.system.B, r.A, r.B, r.structure);
   for (double t : times) r.fundamental.push_back({t, runtime::fundamental_matrix(r.A, t)});
@@ -169,11 +86,11 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
                                            : request.outputs;
   for (const auto& [u, y] : request.transfer)
     if (std::find(r.output_names.begin(), r.output_names.end(), y) == r.output_names.end()) r.output_names.push_back(y);
-  output_matrices(problem, x, r);
+  runtime::output_matrices(problem, x, r.output_names, r.C, r.D);
   r.reach = runtime::controllability_and_observability(r.A, r.B, r.C);
   for (const auto& [u, y] : request.transfer) {
     auto i = std::find(r.output_names.begin(), r.output_names.end(), y) - r.output_names.begin();
-    r.transfer.push_back({u, y, runtime::transfer_function(r.A, r.B, r.C, r.D, i, name_index(m.input_names, k, u))});
+    r.transfer.push_back({u, y, runtime::transfer_function(r.A, r.B, r.C, r.D, i, index_of(m.input_names, k, u))});
   }
   return r;
 }

@@ -110,23 +110,6 @@ Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
   return v;
 }
 
-std::vector<double> polynomial_from_roots(const std::vector<std::complex<double>>& roots) {
-  std::vector<std::complex<double>> c{1.0};
-  for (auto r : roots) {
-    c.push_back(0.0);
-    for (std::size_t k = c.size() - 1; k > 0; --k) c[k] -= r * c[k - 1];
-  }
-  // a coefficient below the rounding of the roots' elementary symmetric functions is 0
-  double size = 0;
-  for (auto r : roots) size = std::max(size, std::abs(r));
-  std::vector<double> real;
-  double bound = 1;  // binomial(n, k) size^k
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    if (k) bound *= size * static_cast<double>(roots.size() - k + 1) / static_cast<double>(k);
-    real.push_back(std::abs(c[k].real()) <= 1e-13 * bound ? 0.0 : c[k].real());
-  }
-  return real;
-}
 
 bool positive_definite(const Eigen::MatrixXd& S, double tolerance) {
   return S.rows() == 0 || Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S).eigenvalues().minCoeff() > tolerance;
@@ -181,6 +164,24 @@ std::vector<std::string> theorems(const StabilityReport& r, bool has_cyclic) {
 }
 
 }  // namespace
+
+std::vector<double> polynomial_from_roots(const std::vector<std::complex<double>>& roots) {
+  std::vector<std::complex<double>> c{1.0};
+  for (auto r : roots) {
+    c.push_back(0.0);
+    for (std::size_t k = c.size() - 1; k > 0; --k) c[k] -= r * c[k - 1];
+  }
+  // a coefficient below the rounding of the roots' elementary symmetric functions is 0
+  double size = 0;
+  for (auto r : roots) size = std::max(size, std::abs(r));
+  std::vector<double> real;
+  double bound = 1;  // binomial(n, k) size^k
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    if (k) bound *= size * static_cast<double>(roots.size() - k + 1) / static_cast<double>(k);
+    real.push_back(std::abs(c[k].real()) <= 1e-13 * bound ? 0.0 : c[k].real());
+  }
+  return real;
+}
 
 std::vector<double> hurwitz_determinants(const std::vector<double>& c) {
   int n = static_cast<int>(c.size()) - 1;

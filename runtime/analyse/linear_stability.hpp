@@ -51,6 +51,10 @@ StabilityReport analyse_stability(const Problem& problem, const std::vector<doub
 /// verdict: the quantity of a stability map.
 double stability_degree(const Problem& problem, const std::vector<double>& x);
 
+/// Π (λ − r_i) expanded, highest power first; real parts, with coefficients within the
+/// rounding of the roots' symmetric functions set to 0.
+std::vector<double> polynomial_from_roots(const std::vector<std::complex<double>>& roots);
+
 /// Hurwitz determinants of a polynomial given highest power first.
 std::vector<double> hurwitz_determinants(const std::vector<double>& coefficients);
 

@@ -64,6 +64,16 @@ void check_bounds(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalAnaly
 
 }  // namespace
 
+std::string symmetric_problem_refusal(const StabilityReport& s) {
+  if (s.M.size() == 0) return "the model is in first-order form (Appell or Hamilton): its modes are the eigenvalues of A";
+  double scale = std::max(1.0, s.K.cwiseAbs().maxCoeff() + s.D.cwiseAbs().maxCoeff());
+  if (s.G.size() && s.G.cwiseAbs().maxCoeff() > 1e-12 * scale)
+    return "gyroscopic forces G couple the coordinates: the modes are the eigenvalues of A";
+  if (s.N.size() && s.N.cwiseAbs().maxCoeff() > 1e-12 * scale)
+    return "circulatory forces N are not conservative: the modes are the eigenvalues of A";
+  return "";
+}
+
 double rayleigh_quotient(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::VectorXd& v) {
   return v.dot(K * v) / v.dot(M * v);
 }

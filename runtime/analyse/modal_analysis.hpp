@@ -9,6 +9,8 @@
 
 #include <Eigen/Dense>
 
+#include "analyse/linear_stability.hpp"
+
 namespace eomgen::runtime {
 
 struct NaturalMode {
@@ -40,6 +42,10 @@ struct ModalAnalysis {
   };
   std::vector<Constrained> constrained;
 };
+
+/// Why K v = ω² M v does not describe the motion of this linearization (first-order form,
+/// gyroscopic or circulatory forces: the eigenvalues of A do then), or empty.
+std::string symmetric_problem_refusal(const StabilityReport& linearization);
 
 /// M symmetric positive definite, K symmetric (the conservative stiffness), D symmetric.
 ModalAnalysis modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K);
