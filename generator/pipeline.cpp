@@ -64,6 +64,7 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
         try {
           result.equations = (*find_method(model.method))(model, mechanics);
           result.equations->first_integrals = find_first_integrals(*result.equations, mechanics);
+          for (const BodyKinematics& b : mechanics.bodies) result.equations->body_positions.push_back({b.name, b.position});
           orient(*result.equations);
         } catch (const std::invalid_argument& why) {
           diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", why.what(),

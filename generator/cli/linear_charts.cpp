@@ -45,6 +45,38 @@ std::string draw_modes(const eomgen_model_abi& m, const LinearReport& r, const s
   return failure;
 }
 
+// one panel per mode: the bodies at rest (grey) and displaced along the mode
+std::string draw_deformed(const eomgen_model_abi& m, const LinearReport& r, const std::string& png) {
+  const DeformedShapes& d = r.deformed;
+  std::string data = png + ".data.tmp";
+  {
+    std::ofstream out(data);
+    for (std::size_t i = 0; i < d.modes.size(); ++i) {
+      for (std::size_t b = 0; b < d.rest.size(); ++b)
+        out << fmt::format("{:.17g} {:.17g} {:.17g} {:.17g}\n", d.rest[b][0], d.rest[b][1], d.modes[i][b][0], d.modes[i][b][1]);
+      out << "\n\n";  // one gnuplot index per mode
+    }
+  }
+  std::size_t panels = d.modes.size();
+  std::string plot = fmt::format("set terminal pngcairo size {},480 noenhanced\nset output {}\nset multiplot layout 1,{} title {}\n"
+                                 "set grid\nset key bottom right\nset xlabel {}\nset ylabel {}\n{}",
+                                 std::min<std::size_t>(1800, 120 + 360 * panels), gnuplot_quoted(png), panels,
+                                 gnuplot_quoted(fmt::format("{}: deformed shapes of the modes", m.name)),
+                                 gnuplot_quoted(d.horizontal), gnuplot_quoted(d.vertical),
+                                 d.stations ? "set offsets 0.5, 0.5, 0.1, 0.1\n" : "set size ratio -1\nset offsets graph 0.1, 0.1, 0.1, 0.1\n");
+  for (std::size_t i = 0; i < panels; ++i) {
+    const runtime::NaturalMode& mode = r.modes.modes[i];
+    plot += fmt::format("set title {}\nplot {} index {} using 1:2 with linespoints lc rgb 'gray60' dt 2 pt 6 title 'rest', "
+                        "'' index {} using 3:4 with linespoints lw 2 pt 7 title 'mode'\n",
+                        gnuplot_quoted(mode.rigid_body ? fmt::format("mode {}: rigid body", i + 1)
+                                                       : fmt::format("mode {}: {:.4g} rad/s", i + 1, mode.omega)),
+                        gnuplot_quoted(data), i, i);
+  }
+  std::string failure = runtime::run_gnuplot(plot + "unset multiplot\n", png);
+  std::remove(data.c_str());
+  return failure;
+}
+
 // |G(iω)| in dB and arg G(iω) in degrees over four decades around the poles and zeros
 std::string draw_bode(const eomgen_model_abi& m, const LinearReport::Pair& p, const std::string& png) {
   double low = INFINITY, high = 0;
@@ -83,6 +115,8 @@ void draw_linear_charts(const eomgen_model_abi& m, const LinearReport& r, const 
     else std::cerr << "eomgen: warning: no chart " << path << ": " << failure << "\n";
   };
   if (!r.modes.modes.empty()) report(draw_modes(m, r, runtime::chart_path(png, "_modes")), runtime::chart_path(png, "_modes"));
+  if (!r.deformed.modes.empty())
+    report(draw_deformed(m, r, runtime::chart_path(png, "_shapes")), runtime::chart_path(png, "_shapes"));
   for (const auto& [u, y] : bode)
     for (const LinearReport::Pair& p : r.transfer)
       if (p.input == u && p.output == y) {

@@ -20,7 +20,7 @@ namespace {
 struct Options {
   std::string model, times, outputs;
   std::vector<std::string> at, sets, transfer, bode;
-  bool json = false;
+  bool json = false, symbolic = false;
   ResponseOptions response;
 };
 
@@ -77,7 +77,7 @@ int linear(const Options& o) {
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();
-  LinearRequest request{*times, split(o.outputs), *pairs};
+  LinearRequest request{*times, split(o.outputs), *pairs, o.symbolic};
   if (std::string unknown = unknown_names(m, request); !unknown.empty()) {
     std::cerr << fmt::format("eomgen: error: {}: not an input, a state or an output of {}\n", unknown, m.name);
     return exit_user_error;
@@ -105,6 +105,9 @@ Command add_linear_command(CLI::App& app) {
   cmd->add_option("--transfer", o->transfer, "Transfer function from an input to an output (a state or an [outputs] "
                   "entry), one pair per flag: --transfer F:x");
   cmd->add_option("--times", o->times, "Times at which to print the fundamental matrix Phi(t) = e^(At): --times 0.5,1,10");
+  cmd->add_flag("--symbolic", o->symbolic, "Phi(t) and the --transfer functions G(s) in closed form, in the parameters "
+                "where the characteristic polynomial factors into linear and quadratic factors over them, else at their "
+                "values (Lagrange II models with exact A)");
   cmd->add_option("--response", o->response.response, "Response of the linearized system, written as CSV of the "
                   "deviations from the equilibrium: initial (with --initial), impulse:INPUT, step:INPUT (unit), "
                   "harmonic:INPUT:OMEGA (sin(OMEGA t))");

@@ -9,6 +9,7 @@
 #include "analyse/state_space.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
+#include "cli/linear_closed_form_output.hpp"
 #include "cli/linear_report_sections.hpp"
 #include "cli/report_text.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -79,6 +80,11 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   }
   r.modes.refusal = runtime::symmetric_problem_refusal(r.system);
   if (r.modes.refusal.empty()) r.modes = runtime::modal_analysis(r.system.M, r.system.D, r.system.K);
+  if (equations && !r.modes.modes.empty()) {
+    std::vector<std::vector<double>> shapes;
+    for (const runtime::NaturalMode& mode : r.modes.modes) shapes.emplace_back(mode.shape.data(), mode.shape.data() + mode.shape.size());
+    r.deformed = deformed_shapes(*equations, problem.parameters, problem.inputs, x, shapes);
+  }
   r.principal = runtime::principal_coordinates(r.modes, r.system.B, r.A, r.B, r.structure);
   for (double t : times) r.fundamental.push_back({t, runtime::fundamental_matrix(r.A, t)});
   r.input_names.assign(m.input_names, m.input_names + k);
@@ -91,7 +97,11 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   for (const auto& [u, y] : request.transfer) {
     auto i = std::find(r.output_names.begin(), r.output_names.end(), y) - r.output_names.begin();
     r.transfer.push_back({u, y, runtime::transfer_function(r.A, r.B, r.C, r.D, i, index_of(m.input_names, k, u))});
+    if (std::find(r.closed_form_outputs.begin(), r.closed_form_outputs.end(), y) == r.closed_form_outputs.end())
+      r.closed_form_outputs.push_back(y);
   }
+  if (request.symbolic && equations)
+    r.closed_form = linear_closed_form(*equations, problem.parameters, problem.inputs, x, r.closed_form_outputs);
   return r;
 }
 
@@ -155,12 +165,17 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
   if (r.principal.kind == "none") {
     std::cout << "  principal coordinates: " << r.principal.reason << "\n";
   } else {
-    std::cout << (r.principal.kind == "modal" ? "  principal coordinates q = Phi eta, Phi the modes above (Hiller §6.3), decoupled:\n"
-                                              : "  principal coordinates x = V eta, V the eigenvectors of A (Hiller §6.3), decoupled:\n");
+    const std::string& kind = r.principal.kind;
+    std::cout << (kind == "modal"          ? "  principal coordinates q = Phi eta, Phi the modes above (Hiller §6.3), decoupled:\n"
+                  : kind == "eigenvectors" ? "  principal coordinates x = V eta, V the eigenvectors of A (Hiller §6.3), decoupled:\n"
+                                           : fmt::format("  principal coordinates x = V eta, V the Jordan chains of A (generalized "
+                                                         "eigenvectors, Hiller §6.3; |AV - VJ| = {:.1e} |A|), coupled only "
+                                                         "along each chain:\n", r.principal.jordan_residual));
     for (const std::string& line : principal_equations(r)) std::cout << "    " << line << "\n";
   }
   for (const auto& [t, Phi] : r.fundamental) std::cout << matrix_text(fmt::format("Phi({:g})", t).c_str(), Phi);
   print_reach_text(m, r);
+  print_closed_form_text(r);
   if (r.A.rows() == 2)
     std::cout << "  phase plane: " << runtime::phase_plane_type(r.A) << " (Hiller §7.7; see `eomgen stability`)\n";
 }
@@ -186,13 +201,13 @@ void print_linear_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"state\": {}, \"A\": {}, \"B\": {}, \"characteristic_polynomial\": {}, "
       "\"eigenvalues\": [{}], \"jordan_decided\": \"{}\", \"rank_tolerance\": {}, \"structure_uncertain\": {}, \"modes\": [{}], \"rigid_body_modes\": {}, "
       "\"modal_refusal\": {}, \"damping\": {{\"kind\": \"{}\", \"rayleigh_alpha\": {}, \"rayleigh_beta\": {}, \"coupling\": {}}}, "
-      "\"orthonormality_error\": {}, \"fundamental_matrix\": [{}]{}}}\n",
+      "\"orthonormality_error\": {}, \"fundamental_matrix\": [{}]{}{}}}\n",
       json_escape(m.name), equilibrium, json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B),
       json_numbers(r.characteristic_polynomial), eigenvalues, r.decided_exactly ? "exact" : "numeric",
       number(r.structure.rank_tolerance), r.structure.uncertain ? "true" : "false", modes, r.modes.rigid_body_modes,
       r.modes.refusal.empty() ? "null" : "\"" + json_escape(r.modes.refusal) + "\"", r.modes.damping,
       number(r.modes.rayleigh_alpha), number(r.modes.rayleigh_beta), number(r.modes.coupling),
-      number(r.modes.orthonormality_error), fundamental, reach_json(m, r));
+      number(r.modes.orthonormality_error), fundamental, reach_json(m, r), closed_form_json(r));
 }
 
 }  // namespace eomgen::cli

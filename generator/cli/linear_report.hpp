@@ -3,6 +3,7 @@
 /// frequencies and mass-normalized modes, and the fundamental matrix at given times.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +11,8 @@
 #include "analyse/controllability.hpp"
 #include "analyse/equilibrium.hpp"
 #include "analyse/exact_jordan.hpp"
+#include "analyse/deformed_shapes.hpp"
+#include "analyse/linear_closed_form.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/linear_system.hpp"
 #include "analyse/principal_coordinates.hpp"
@@ -26,6 +29,7 @@ struct LinearReport {
   ExactJordan exact;    // the structure by exact arithmetic, when A is rational
   bool decided_exactly = false;  // `structure` then holds the exact multiplicities and blocks
   runtime::ModalAnalysis modes;
+  DeformedShapes deformed;  // pictures of the modes, from the bodies' positions
   runtime::PrincipalCoordinates principal;
   std::vector<std::pair<double, Eigen::MatrixXd>> fundamental;  // (t, Φ(t))
   std::vector<std::string> input_names, output_names;
@@ -36,12 +40,15 @@ struct LinearReport {
     runtime::TransferFunction g;
   };
   std::vector<Pair> transfer;
+  std::optional<LinearClosedForm> closed_form;  // with --symbolic
+  std::vector<std::string> closed_form_outputs;  // the rows of its transfer functions
 };
 
 struct LinearRequest {
   std::vector<double> times;
   std::vector<std::string> outputs;                              // state or output names; empty: the model's outputs
   std::vector<std::pair<std::string, std::string>> transfer;     // (input, output)
+  bool symbolic = false;                                         // Φ(t) and G(s) in closed form
 };
 
 /// The names in `request` that are not inputs, states or outputs, or empty.

@@ -61,11 +61,13 @@ std::vector<std::string> principal_equations(const LinearReport& r) {
       out.push_back(fmt::format("der(der(eta{0})) + {1:.9g}*der(eta{0}) + {2:.9g}*eta{0} = {3}", i + 1,
                                 2 * mode.damping_ratio * mode.omega, mode.omega * mode.omega, input_terms(r, row)));
     }
-  } else if (p.kind == "eigenvectors") {
+  } else if (p.kind == "eigenvectors" || p.kind == "jordan") {
     for (std::size_t i = 0; i < p.eigenvalues.size(); ++i) {
       std::vector<std::complex<double>> row;
       for (Eigen::Index j = 0; j < p.eigen_inputs.cols(); ++j) row.push_back(p.eigen_inputs(Eigen::Index(i), j));
-      out.push_back(fmt::format("der(eta{0}) = ({1})*eta{0} + {2}", i + 1, complex_text(p.eigenvalues[i]), input_terms(r, row)));
+      bool chained = p.kind == "jordan" && p.chained[i];
+      out.push_back(fmt::format("der(eta{0}) = ({1})*eta{0} + {2}{3}", i + 1, complex_text(p.eigenvalues[i]),
+                                chained ? fmt::format("eta{} + ", i + 2) : "", input_terms(r, row)));
     }
   }
   return out;

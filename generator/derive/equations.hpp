@@ -66,6 +66,12 @@ struct Equations {
   /// forces at u = 0, and no explicit time dependence (Hiller §3.6).
   bool conserves_energy_without_inputs = false;
   std::vector<FirstIntegral> first_integrals;  // filled by the pipeline for every method
+  /// Where each particle's and body's centre of mass is, r(q, t), for pictures of the motion
+  struct BodyPosition {
+    std::string name;
+    Vector3 position;
+  };
+  std::vector<BodyPosition> body_positions;  // filled by the pipeline
   /// Routh's reduction: R(q, q', t; p) and each eliminated coordinate with its rate der(q_c)(q, q', p)
   GiNaC::ex routhian;
   std::vector<NamedSymbolic> eliminated_coordinates;

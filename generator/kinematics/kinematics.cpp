@@ -48,6 +48,7 @@ namespace {
 // J = ∂r/∂q (3 × n); v = J q̇ + ∂r/∂t; a − J q̈ = Σ ∂v/∂q_k q̇_k + ∂v/∂t
 void translate(BodyKinematics& b, const Vector3& r, const Symbols& s) {
   std::size_t n = s.coordinates.size();
+  b.position = r;
   b.velocity_jacobian = GiNaC::matrix(3, n);
   std::vector<ex> coordinates(s.coordinates.begin(), s.coordinates.end());
   for (unsigned a = 0; a < 3; ++a) {

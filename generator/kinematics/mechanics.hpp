@@ -18,6 +18,7 @@ namespace eomgen {
 struct BodyKinematics {
   std::string name;
   GiNaC::ex mass;
+  Vector3 position;                 // r of the centre of mass, inertial
   GiNaC::matrix velocity_jacobian;  // J: 3 × n, inertial components
   Vector3 velocity;                 // v, inertial
   Vector3 bias_acceleration;        // a − J q̈, inertial

@@ -2,6 +2,33 @@
 
 namespace eomgen::runtime {
 
+namespace {
+
+// x = V η with the Jordan chains (Hiller §6.3): the blocks stay coupled only along their chains
+PrincipalCoordinates jordan_coordinates(const Eigen::MatrixXd& A, const Eigen::MatrixXd& state_inputs,
+                                        const JordanStructure& structure) {
+  PrincipalCoordinates p;
+  p.kind = "none";
+  if (structure.uncertain) {
+    p.reason = "A is not diagonalizable, and its Jordan structure is uncertain numerically, so no chains are formed";
+    return p;
+  }
+  JordanBasis basis = jordan_basis(A, structure);
+  if (!basis.refusal.empty()) {
+    p.reason = "A is not diagonalizable: " + basis.refusal;
+    return p;
+  }
+  p.kind = "jordan";
+  p.eigenvectors = basis.V;
+  p.eigen_inputs = basis.V.partialPivLu().solve(state_inputs.cast<std::complex<double>>());
+  p.jordan_residual = basis.residual;
+  for (const JordanBasis::Block& b : basis.blocks)
+    for (int i = 0; i < b.size; ++i) p.eigenvalues.push_back(b.eigenvalue), p.chained.push_back(i + 1 < b.size);
+  return p;
+}
+
+}  // namespace
+
 PrincipalCoordinates principal_coordinates(const ModalAnalysis& modes, const Eigen::MatrixXd& second_order_inputs,
                                            const Eigen::MatrixXd& A, const Eigen::MatrixXd& state_inputs,
                                            const JordanStructure& structure) {
@@ -16,11 +43,7 @@ PrincipalCoordinates principal_coordinates(const ModalAnalysis& modes, const Eig
     return p;
   }
   for (const EigenvalueStructure& e : structure.eigenvalues)
-    if (e.geometric_multiplicity < e.algebraic_multiplicity) {
-      p.kind = "none";
-      p.reason = "A is not diagonalizable (a Jordan block of size > 1): the coordinates of a block stay coupled";
-      return p;
-    }
+    if (e.geometric_multiplicity < e.algebraic_multiplicity) return jordan_coordinates(A, state_inputs, structure);
   Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
   p.kind = "eigenvectors";
   p.eigenvectors = solver.eigenvectors();

@@ -15,16 +15,6 @@
 namespace eomgen::test {
 namespace {
 
-JsonValue run_json(const std::string& arguments) {
-  CommandOutput r = run_eomgen(arguments + " --format json");
-  EXPECT_EQ(r.status, 0) << r.err;
-  Diagnostics d;
-  auto json = parse_json(r.out, "stdout", d);
-  EXPECT_TRUE(json) << d.format() << r.out;
-  return json ? *json : JsonValue{};
-}
-
-double at(const JsonValue& v, const std::string& key) { return v.find(key) ? v.find(key)->value : NAN; }
 
 // Φ(t) from the JSON, row-major
 std::vector<std::vector<double>> matrix_at(const JsonValue& json, std::size_t index) {
@@ -90,9 +80,14 @@ TEST(LinearCommand, PrincipalCoordinatesDecoupleTheChain) {
   EXPECT_EQ(equations[1].text, "der(der(eta2)) + 0.4*der(eta2) + 300*eta2 = (-0.707107) F");
   const auto& Phi = p.find("matrix")->items;
   EXPECT_NEAR(Phi[1].items[1].value, -1 / std::sqrt(2.0), 1e-12);
-  // the rendezvous' Jordan block keeps two coordinates coupled: said, not faked
+  // the rendezvous' Jordan block at 0 keeps its chain coupled: η3' = η4, η4' = 0 (the drift along the track)
   JsonValue cw = run_json("linear '" + model_path("space_rendezvous") + "' --at x=0");
-  EXPECT_EQ(cw.find("principal_coordinates")->find("kind")->text, "none");
+  const JsonValue& jordan = *cw.find("principal_coordinates");
+  EXPECT_EQ(jordan.find("kind")->text, "jordan");
+  const auto& chained = jordan.find("equations")->items;
+  ASSERT_EQ(chained.size(), 6u);
+  EXPECT_EQ(chained[2].text, "der(eta3) = (0)*eta3 + eta4 + 0");
+  EXPECT_EQ(chained[3].text, "der(eta4) = (0)*eta4 + 0");
 }
 
 TEST(LinearCommand, DoublePendulumFrequenciesFromTheFrequencyEquation) {
@@ -255,7 +250,7 @@ TEST(LinearCommand, ModeShapeAndBodeCharts) {
   CommandOutput r = run_eomgen("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --bode F:x --plot '" + dir +
                                "/cart.png'");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* chart : {"/cart_modes.png", "/cart_bode_F_x.png"})
+  for (const char* chart : {"/cart_modes.png", "/cart_shapes.png", "/cart_bode_F_x.png"})
     EXPECT_GT(read_file(dir + chart).size(), 1000u) << chart << "\n" << r.err;
   CommandOutput alone = run_eomgen("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --bode F:x");
   EXPECT_EQ(alone.status, 2);

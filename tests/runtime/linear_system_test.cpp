@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "analyse/jordan_chains.hpp"
 #include "analyse/linear_system.hpp"
 #include "analyse/modal_analysis.hpp"
 
@@ -26,6 +27,41 @@ TEST(JordanStructure, ABlockOfSizeThreeAndASimpleEigenvalue) {
   EXPECT_EQ(s.eigenvalues[0].jordan_blocks, (std::vector<int>{3}));
   EXPECT_EQ(s.eigenvalues[1].jordan_blocks, (std::vector<int>{1}));
   EXPECT_FALSE(s.uncertain);
+}
+
+// V⁻¹ A V against the Jordan form the chains claim
+void expect_jordan_form(const Eigen::MatrixXd& A, const JordanBasis& basis) {
+  ASSERT_TRUE(basis.refusal.empty()) << basis.refusal;
+  Eigen::MatrixXcd J = basis.V.inverse() * A.cast<std::complex<double>>() * basis.V;
+  for (const JordanBasis::Block& b : basis.blocks)
+    for (int i = 0; i < b.size; ++i) {
+      EXPECT_LT(std::abs(J(b.first + i, b.first + i) - b.eigenvalue), 1e-9);
+      J(b.first + i, b.first + i) = 0;
+      if (i + 1 == b.size) continue;
+      EXPECT_LT(std::abs(J(b.first + i, b.first + i + 1) - 1.0), 1e-9);
+      J(b.first + i, b.first + i + 1) = 0;
+    }
+  EXPECT_LT(J.cwiseAbs().maxCoeff(), 1e-9) << "nothing outside the blocks:\n" << J;
+  EXPECT_LT(basis.residual, 1e-9);
+}
+
+TEST(JordanChains, GeneralizedEigenvectorsGiveTheJordanForm) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(4, 4), P(4, 4);
+  J << 2, 1, 0, 0, 0, 2, 1, 0, 0, 0, 2, 0, 0, 0, 0, -1;
+  P << 1, 0.5, 0, 0.2, 0, 1, 0.3, 0, 0.1, 0, 1, 0.4, 0, 0.2, 0, 1;
+  Eigen::MatrixXd A = P * J * P.inverse();
+  JordanBasis basis = jordan_basis(A, jordan_structure(A));
+  ASSERT_EQ(basis.blocks.size(), 2u);
+  EXPECT_EQ(basis.blocks[0].size, 3);
+  expect_jordan_form(A, basis);
+  // J2(0) ⊕ J1(0) ⊕ (3): two blocks of one eigenvalue, the chain top outside the other block
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(4, 4);
+  K(0, 1) = 1, K(3, 3) = 3;
+  Eigen::MatrixXd B = P * K * P.inverse();
+  JordanStructure s = jordan_structure(B);
+  ASSERT_EQ(s.eigenvalues.size(), 2u);
+  EXPECT_EQ(s.eigenvalues[1].jordan_blocks, (std::vector<int>{2, 1}));
+  expect_jordan_form(B, jordan_basis(B, s));
 }
 
 TEST(JordanStructure, SemisimpleDoubleEigenvaluesHaveBlocksOfSizeOne) {

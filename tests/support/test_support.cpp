@@ -119,4 +119,15 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& path, std::
   return rows;
 }
 
+JsonValue run_json(const std::string& arguments) {
+  CommandOutput r = run_eomgen(arguments + " --format json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  Diagnostics d;
+  auto json = parse_json(r.out, "stdout", d);
+  EXPECT_TRUE(json) << d.format() << r.out;
+  return json ? *json : JsonValue{};
+}
+
+double at(const JsonValue& v, const std::string& key) { return v.find(key) ? v.find(key)->value : NAN; }
+
 }  // namespace eomgen::test

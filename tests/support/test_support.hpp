@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "derive/equations.hpp"
+#include "parse/json_reader.hpp"
 
 namespace eomgen::test {
 
@@ -48,6 +49,12 @@ struct CommandOutput {
 };
 /// Runs the eomgen executable with these arguments and the tests' shared compile cache.
 CommandOutput run_eomgen(const std::string& arguments);
+
+/// `eomgen ARGUMENTS --format json`, expected to succeed, parsed.
+JsonValue run_json(const std::string& arguments);
+
+/// The number under `key` in a JSON object, NaN when missing.
+double at(const JsonValue& v, const std::string& key);
 
 /// The numbers of a CSV file, row by row after its header line (returned in `header`).
 std::vector<std::vector<double>> read_numeric_csv(const std::string& path, std::string* header = nullptr);
