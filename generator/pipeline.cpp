@@ -1,5 +1,6 @@
 #include "pipeline.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "derive/methods.hpp"
 #include "derive/routh.hpp"
 #include "kinematics/mechanics.hpp"
+#include "model/variants.hpp"
 #include "parse/model_file.hpp"
 #include "symbolic/trig_orientation.hpp"
 
@@ -40,14 +42,50 @@ void orient(Equations& e) {
     for (unsigned j = 0; j < c.jacobian.cols(); ++j) each(c.jacobian(i, j));
 }
 
+// the scene (its inputs, parameters and initial state), then the variant and the frozen coordinates,
+// which are held at the scene's initial values
+void chosen_model(const ModelFile& file, const ModelChoice& choice, Model& model, Diagnostics& diagnostics) {
+  SourceLocation top{file.path, 1, 1};
+  auto unknown = [&](const char* section, const std::string& name, const std::vector<std::string>& names) {
+    diagnostics.error(top, section, fmt::format("the model has no {} '{}'", section, name),
+                      names.empty() ? fmt::format("add [{}.{}] to the model file", section, name) : suggest(name, names, section));
+  };
+  if (!choice.scene.empty()) {
+    std::vector<std::string> names;
+    for (const Scene& x : model.scenes) names.push_back(x.name);
+    auto s = std::find(names.begin(), names.end(), choice.scene);
+    if (s == names.end()) return unknown("scenes", choice.scene, names);
+    model = apply_scene(model, model.scenes[std::size_t(s - names.begin())]);
+  }
+  try {
+    if (!choice.variant.empty()) {
+      std::vector<std::string> names;
+      for (const Variant& x : model.variants) names.push_back(x.name);
+      auto v = std::find(names.begin(), names.end(), choice.variant);
+      if (v == names.end()) return unknown("variants", choice.variant, names);
+      model = apply_variant(model, model.variants[std::size_t(v - names.begin())]);
+    }
+    std::vector<std::size_t> frozen;
+    std::vector<double> values;
+    for (const std::string& q : choice.freeze)
+      for (std::size_t i = 0; i < model.symbols.coordinates.size(); ++i)
+        if (model.symbols.coordinate_names[i] == q) frozen.push_back(i), values.push_back(model.symbols.initial_coordinates[i]);
+    if (!frozen.empty()) model = freeze_coordinates(model, frozen, values);
+  } catch (const std::invalid_argument& why) {
+    diagnostics.error(top, "variants." + choice.variant, fmt::format("variant {}: {}", choice.variant, why.what()),
+                      "neglect parameters that multiply terms, not ones that divide them; replace them instead");
+  }
+}
+
 // `reduce`: the cyclic coordinates Routh's reduction eliminates, whatever the model's method;
 // `method`: the method to use instead of the model's
 Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vector<std::string>& reduce = {},
-                  const std::string& method = "") {
+                  const std::string& method = "", const ModelChoice& choice = {}) {
   Derivation result;
   if (diagnostics.empty()) {
     Model model = build_model(file, diagnostics);
     if (!method.empty()) model.method = method;
+    if (diagnostics.empty()) chosen_model(file, choice, model, diagnostics);
     if (diagnostics.empty() && !reduce.empty()) {
       try {
         result.equations = derive_routh(model, compute_mechanics(model), reduce);
@@ -57,27 +95,45 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
                           "name only cyclic coordinates: ones that L does not contain and no force or dissipation acts on");
       }
     } else if (diagnostics.empty()) {
-      if (std::string refusal = method_refusal(model); !refusal.empty()) {
-        diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", refusal);
-      } else {
-        Mechanics mechanics = compute_mechanics(model);
-        try {
-          result.equations = (*find_method(model.method))(model, mechanics);
-          result.equations->first_integrals = find_first_integrals(*result.equations, mechanics);
-          for (const BodyKinematics& b : mechanics.bodies) result.equations->body_positions.push_back({b.name, b.position});
-          orient(*result.equations);
-        } catch (const std::invalid_argument& why) {
-          diagnostics.error({file.path, file.method_where.line, file.method_where.column}, "model.method", why.what(),
-                            "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
-                            "determine every velocity");
-        }
-      }
+      result.equations = derive_built_model(model, {file.path, file.method_where.line, file.method_where.column}, diagnostics);
     }
   }
   result.diagnostics = std::move(diagnostics);
   return result;
 }
 }  // namespace
+
+std::optional<Equations> derive_built_model(const Model& model, SourceLocation method_where, Diagnostics& diagnostics) {
+  if (std::string refusal = method_refusal(model); !refusal.empty()) {
+    diagnostics.error(method_where, "model.method", refusal);
+    return std::nullopt;
+  }
+  Mechanics mechanics = compute_mechanics(model);
+  try {
+    Equations e = (*find_method(model.method))(model, mechanics);
+    e.first_integrals = find_first_integrals(e, mechanics);
+    for (const BodyKinematics& b : mechanics.bodies) e.body_positions.push_back({b.name, b.position});
+    e.scenes = model.scenes;
+    e.variants_declared = model.variants;
+    orient(e);
+    return e;
+  } catch (const std::invalid_argument& why) {
+    diagnostics.error(method_where, "model.method", why.what(),
+                      "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
+                      "determine every velocity");
+    return std::nullopt;
+  }
+}
+
+Derivation derive_model_file_for(const ModelFile& file, const ModelChoice& choice) {
+  return derive(file, {}, {}, "", choice);
+}
+
+Derivation derive_model_file_for(const std::string& path, const ModelChoice& choice) {
+  Diagnostics diagnostics;
+  ModelFile file = parse_model_file(path, diagnostics);
+  return derive(file, std::move(diagnostics), {}, "", choice);
+}
 
 Derivation derive_model_file(const std::string& path) {
   Diagnostics diagnostics;

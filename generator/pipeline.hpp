@@ -24,6 +24,23 @@ Derivation derive_reduced_model_file(const std::string& path, const std::vector<
 /// Reads a model file and derives it by `method` instead of the method it names.
 Derivation derive_model_file_as(const std::string& path, const std::string& method);
 
+/// Which model of a file to derive: a declared variant, with a scene's inputs, parameters and
+/// initial state written in (DESIGN.md [scenes], [variants]); empty names mean none.
+struct ModelChoice {
+  std::string scene, variant;
+  std::vector<std::string> freeze;  // coordinates held at their (the scene's) initial values
+};
+
+/// Reads a model file and derives the model `choice` names.
+Derivation derive_model_file_for(const std::string& path, const ModelChoice& choice);
+
+/// Same, from a file already read (`file.path` names it).
+Derivation derive_model_file_for(const ModelFile& file, const ModelChoice& choice);
+
+/// Derives a model already built (and possibly changed: a variant, a scene); `method_where`
+/// locates a refusal of its method.
+std::optional<Equations> derive_built_model(const Model& model, SourceLocation method_where, Diagnostics& diagnostics);
+
 /// Same, from model text in memory; `path` names it in diagnostics.
 Derivation derive_model_text(const std::string& text, const std::string& path);
 

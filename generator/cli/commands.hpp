@@ -28,6 +28,7 @@ Command add_bench_command(CLI::App& app);
 Command add_diff_command(CLI::App& app);
 Command add_check_integral_command(CLI::App& app);
 Command add_linear_command(CLI::App& app);
+Command add_scene_command(CLI::App& app);
 
 struct LoadedProblem;
 /// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic
@@ -60,6 +61,8 @@ struct SimulationOptions {
   std::string stabilization = "both";
   std::string reference_scalar;  // filled in by simulate_model from the compiled model  // constrained models: both, baumgarte, projection or none
   bool json = false;
+  std::string scene, variant;          // --scene NAME, --variant NAME
+  bool t_end_given = false, dt_out_given = false;  // a scene's times give way to --t-end, --dt-out
 };
 
 /// Derives, generates, compiles (cached) and simulates; writes the CSV and charts asked for.
@@ -78,7 +81,8 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
                                   const std::vector<double>& initial, runtime::Equilibrium& out);
 
 /// Derives `model_path` and writes NAME.hpp into `directory`, or to `header_file` when that is not empty.
-int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file);
+int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file,
+                    const std::string& variant = "", const std::string& scene = "");
 
 /// The model `eomgen run` uses when none is named.
 std::string default_model_path();
@@ -86,6 +90,6 @@ std::string default_model_path();
 /// Derives `model_path` and writes it in `format` to `output` (stdout when empty); with
 /// `reduce`, the Routh-reduced equations with those cyclic coordinates eliminated.
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
-                     bool linearize = false, const std::vector<std::string>& reduce = {});
+                     bool linearize = false, const std::vector<std::string>& reduce = {}, const std::string& variant = "");
 
 }  // namespace eomgen::cli

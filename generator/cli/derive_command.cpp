@@ -19,9 +19,11 @@ bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model
 }
 
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
-                     bool linearize, const std::vector<std::string>& reduce) {
+                     bool linearize, const std::vector<std::string>& reduce, const std::string& variant) {
   auto started = std::chrono::steady_clock::now();
-  Derivation d = reduce.empty() ? derive_model_file(model_path) : derive_reduced_model_file(model_path, reduce);
+  Derivation d = !reduce.empty()    ? derive_reduced_model_file(model_path, reduce)
+                 : !variant.empty() ? derive_model_file_for(model_path, {"", variant, {}})
+                                    : derive_model_file(model_path);
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   if (linearize) add_linearization(*d.equations);
   std::string text = (*find_equation_format(format))(*d.equations);
@@ -52,9 +54,12 @@ Command add_derive_command(CLI::App& app) {
   auto reduce = std::make_shared<std::vector<std::string>>();
   cmd->add_option("--reduce", *reduce, "Eliminate these cyclic coordinates by Routh's reduction, their momenta p_q "
                   "becoming parameters: --reduce phi")->delimiter(',');
-  return [cmd, model, format, output, linearize, reduce]() -> int {
+  auto variant = std::make_shared<std::string>();
+  cmd->add_option("--variant", *variant, "Derive the model's [variants.NAME] instead (parameters neglected or replaced, "
+                  "coordinates frozen, small angles); the model is named MODEL_NAME");
+  return [cmd, model, format, output, linearize, reduce, variant]() -> int {
     if (!cmd->parsed()) return -1;
-    return derive_and_write(*model, *format, *output, *linearize, *reduce);
+    return derive_and_write(*model, *format, *output, *linearize, *reduce, *variant);
   };
 }
 

@@ -1,25 +1,58 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <tuple>
+#include <variant>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "common/output_file.hpp"
 #include "emit/cpp_header.hpp"
+#include "cli/scene_analysis.hpp"
 #include "pipeline.hpp"
 
 namespace eomgen::cli {
 
-int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file) {
+namespace {
+
+// the header of the model `eomgen scene` chooses for the scene, or the exit status
+std::variant<std::pair<std::string, std::string>, int> scene_header(const std::string& model_path, const std::string& scene) {
+  SceneAnalysis a = analyse_scene(model_path, scene, [](const std::string& line) { std::cerr << "eomgen: " << line << "\n"; });
+  if (!a.refusal.empty()) {
+    std::cerr << a.refusal << (a.refusal.back() == '\n' ? "" : "\n");
+    return exit_user_error;
+  }
+  if (!a.chosen) {
+    std::cerr << "eomgen: no candidate reaches the scene's accuracy; `eomgen scene` says which came closest\n";
+    return exit_numerical_failure;
+  }
+  const SceneRun& run = a.runs[*a.chosen];
+  const SceneCandidate& c = a.candidates[run.candidate];
+  std::cerr << fmt::format("eomgen: scene {}: the {} model with {} ({}) meets the accuracy at the least work\n", scene, c.model,
+                           run.integrator, run.setting);
+  return std::pair{c.equations.model_name, c.header};
+}
+
+}  // namespace
+
+int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file,
+                    const std::string& variant, const std::string& scene) {
   auto started = std::chrono::steady_clock::now();
-  Derivation d = derive_model_file(model_path);
-  if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
-  std::string text = emit_cpp_header(*d.equations);
+  std::string text, name;
+  if (!scene.empty()) {
+    auto chosen = scene_header(model_path, scene);
+    if (auto* status = std::get_if<int>(&chosen)) return *status;
+    std::tie(name, text) = std::get<std::pair<std::string, std::string>>(chosen);
+  } else {
+    Derivation d = variant.empty() ? derive_model_file(model_path) : derive_model_file_for(model_path, {"", variant, {}});
+    if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
+    text = emit_cpp_header(*d.equations), name = d.equations->model_name;
+  }
   std::error_code ec;
   std::string path = !header_file.empty()
                          ? header_file
-                         : (std::filesystem::path(directory) / (d.equations->model_name + ".hpp")).string();
+                         : (std::filesystem::path(directory) / (name + ".hpp")).string();
   std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
   if (std::string failure = write_file_atomically(path, text); !failure.empty()) {
@@ -40,9 +73,14 @@ Command add_generate_command(CLI::App& app) {
   auto header = std::make_shared<std::string>();
   auto* folder = cmd->add_option("-o,--output-dir", *directory, "Folder for NAME.hpp, NAME the model's name (default: the current folder)");
   cmd->add_option("--header", *header, "Write the header to exactly this file instead")->excludes(folder);
-  return [cmd, model, directory, header]() -> int {
+  auto variant = std::make_shared<std::string>();
+  auto* variant_option = cmd->add_option("--variant", *variant, "Generate the model's [variants.NAME] instead (header MODEL_NAME.hpp)");
+  auto scene = std::make_shared<std::string>();
+  cmd->add_option("--scene", *scene, "Generate the header of the cheapest model that answers [scenes.NAME] to its accuracy "
+                  "(as `eomgen scene` chooses it)")->excludes(variant_option);
+  return [cmd, model, directory, header, variant, scene]() -> int {
     if (!cmd->parsed()) return -1;
-    return generate_header(*model, *directory, *header);
+    return generate_header(*model, *directory, *header, *variant, *scene);
   };
 }
 

@@ -66,13 +66,20 @@ bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& te
 }
 
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out,
-                                const std::vector<std::string>& reduce) {
-  Derivation d = reduce.empty() ? derive_model_file(model) : derive_reduced_model_file(model, reduce);
+                                const std::vector<std::string>& reduce, const ModelChoice& choice) {
+  Derivation d = !reduce.empty()                                 ? derive_reduced_model_file(model, reduce)
+                 : !choice.scene.empty() || !choice.variant.empty() ? derive_model_file_for(model, choice)
+                                                                    : derive_model_file(model);
   if (!d.diagnostics.empty()) {
     std::cerr << d.diagnostics.format();
     return exit_user_error;
   }
-  out.equations = *d.equations;
+  return load_equations(*d.equations, sets, out);
+}
+
+std::optional<int> load_equations(const Equations& equations, const std::vector<std::string>& sets, LoadedProblem& out) {
+  const std::string& model = equations.source;
+  out.equations = equations;
   out.header = emit_cpp_header(out.equations);
   std::string error;
   out.compiled = runtime::load_compiled_model(out.header, out.equations.model_name, error);

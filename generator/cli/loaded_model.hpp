@@ -42,8 +42,12 @@ bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& te
                    std::vector<bool>* assigned = nullptr);
 
 /// `reduce`: cyclic coordinates to eliminate by Routh's reduction (their momenta become parameters).
+/// `choice`: a scene or variant of the file (pipeline.hpp).
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out,
-                                const std::vector<std::string>& reduce = {});
+                                const std::vector<std::string>& reduce = {}, const ModelChoice& choice = {});
+
+/// The second half of load_problem: generates, compiles and loads derived equations, applies --set.
+std::optional<int> load_equations(const Equations& equations, const std::vector<std::string>& sets, LoadedProblem& out);
 
 /// Index of `name` in a C name table, or −1.
 int index_of(const char* const* names, std::size_t count, const std::string& name);

@@ -35,6 +35,17 @@ void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0,
                            ratio, s.integrator, r.statistics.steps);
 }
 
+// the scene's time span and output interval, unless given on the command line
+void apply_scene_times(const Equations& e, SimulationOptions& o) {
+  for (const Scene& scene : e.scenes)
+    if (scene.name == o.scene) {
+      if (!o.t_end_given) o.settings.t_end = scene.t_end;
+      if (!o.dt_out_given) o.settings.dt_out = scene.dt_out;
+      std::cerr << fmt::format("eomgen: scene {}: to t = {:g}, output every {:g} s\n", scene.name, o.settings.t_end,
+                               o.settings.dt_out);
+    }
+}
+
 }  // namespace
 
 // the inside of a JSON string literal: json_quoted without its quotes
@@ -43,9 +54,11 @@ std::string json_escape(const std::string& s) {
   return quoted.substr(1, quoted.size() - 2);
 }
 
-int simulate_model(const SimulationOptions& o) {
+int simulate_model(const SimulationOptions& options) {
+  SimulationOptions o = options;
   LoadedProblem loaded;
-  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  if (auto status = load_problem(o.model, o.sets, loaded, {}, {o.scene, o.variant, {}})) return *status;
+  if (!o.scene.empty()) apply_scene_times(loaded.equations, o);
   if (!o.header_dir.empty()) {
     std::filesystem::create_directories(o.header_dir);
     write_file_atomically(o.header_dir + "/" + loaded.equations.model_name + ".hpp", loaded.header);
@@ -138,6 +151,9 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
                   "(t and the parameters may appear)")->allow_extra_args(false);
   cmd->add_option("--input-file", o.input_file, "Inputs from a CSV table: header t,NAME,..., rows with increasing t; "
                   "linear interpolation, end values held");
+  cmd->add_option("--scene", o.scene, "Run the model's [scenes.NAME] as written: its inputs, parameters, initial state, "
+                  "t_end and dt_out (--set, --initial, --t-end and --dt-out still override)");
+  cmd->add_option("--variant", o.variant, "Simulate the model's [variants.NAME] instead of the full model");
   cmd->add_option("-o,--output", o.csv, "Trajectory CSV file");
   cmd->add_option("--plot", o.plot, "Chart of the coordinates (PNG); conservative models also get NAME_energy.png, "
                   "models with outputs NAME_outputs.png");
@@ -155,6 +171,7 @@ Command add_simulate_command(CLI::App& app) {
   return [cmd, o, format]() -> int {
     if (!cmd->parsed()) return -1;
     o->json = *format == "json";
+    o->t_end_given = cmd->count("--t-end") > 0, o->dt_out_given = cmd->count("--dt-out") > 0;
     return simulate_model(*o);
   };
 }

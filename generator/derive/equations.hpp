@@ -72,6 +72,8 @@ struct Equations {
     Vector3 position;
   };
   std::vector<BodyPosition> body_positions;  // filled by the pipeline
+  std::vector<Scene> scenes;                 // the model file's [scenes], for simulate --scene and eomgen scene
+  std::vector<Variant> variants_declared;    // its [variants], the candidates of eomgen scene
   /// Routh's reduction: R(q, q', t; p) and each eliminated coordinate with its rate der(q_c)(q, q', p)
   GiNaC::ex routhian;
   std::vector<NamedSymbolic> eliminated_coordinates;

@@ -50,6 +50,7 @@ class Builder {
     read_constraints();
     read_outputs();
     check_complete();
+    build_scenes_and_variants(f_, m_, d_);
     return m_;
   }
 

@@ -58,6 +58,26 @@ struct NamedSymbolic {
   GiNaC::ex expression;
 };
 
+/// A scene (DESIGN.md, [scenes.NAME]): what to simulate and which outputs, to what accuracy.
+struct Scene {
+  std::string name;
+  double t_end = 10, dt_out = 0.05;
+  std::vector<std::pair<std::string, double>> initial;  // state names (q or der(q)) = value
+  std::vector<std::pair<std::size_t, double>> set;      // parameter index = value
+  std::vector<std::pair<std::size_t, GiNaC::ex>> inputs;  // input index = u(t, parameters)
+  std::vector<std::string> outputs;                     // output, coordinate or der(q) names
+  double accuracy = 1e-3, absolute = 0;
+};
+
+/// A variant (DESIGN.md, [variants.NAME]): a simpler model declared by the user.
+struct Variant {
+  std::string name;
+  std::vector<std::size_t> neglect;                     // parameters set to zero
+  std::vector<std::size_t> freeze;                      // coordinates held at their initial values
+  std::vector<std::pair<std::size_t, bool>> small_angle;  // coordinate, cos → 1 − φ²/2 (true) or 1
+  std::vector<std::pair<std::size_t, GiNaC::ex>> replace;  // parameter = expression
+};
+
 struct Model {
   std::string name, title, method;
   std::string source;  // the model file's path as given
@@ -72,6 +92,8 @@ struct Model {
   std::vector<Constraint> constraints;
   std::vector<NamedSymbolic> pseudo_velocities;
   std::vector<NamedSymbolic> outputs;
+  std::vector<Scene> scenes;
+  std::vector<Variant> variants;
 };
 
 /// The derivation methods a model file may name, in the order documented.
@@ -80,6 +102,9 @@ const std::vector<std::string>& known_methods();
 /// Checks a parsed model file and builds its symbolic model.
 /// Mistakes go to `diagnostics`; the result is meaningful only when it stays empty.
 Model build_model(const ModelFile& file, Diagnostics& diagnostics);
+
+/// Checks the [scenes] and [variants] of a file against the model's symbols.
+void build_scenes_and_variants(const ModelFile& file, Model& model, Diagnostics& diagnostics);
 
 /// Elementary rotation matrices of the book: rot_x, rot_y, rot_z (axis 0, 1, 2).
 GiNaC::matrix elementary_rotation(int axis, const GiNaC::ex& angle);

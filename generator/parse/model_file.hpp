@@ -88,6 +88,35 @@ struct ConstraintEntry {
   SourceLocation name_where;
 };
 
+/// A name as written, with where it was written (an output of a scene, a parameter of a variant).
+struct NameText {
+  std::string name;
+  SourceLocation where;
+};
+
+/// [scenes.NAME]: a question asked of the model (what to simulate, what matters, how accurately).
+struct SceneEntry {
+  std::string name;
+  SourceLocation where;
+  double t_end = 10, dt_out = 0;  // dt_out 0: t_end / 200
+  std::vector<ParameterEntry> initial;  // coordinate or der(coordinate) = number
+  std::vector<ParameterEntry> set;      // parameter = number
+  std::vector<NamedExpression> inputs;  // input = expression of t
+  std::vector<NameText> outputs;        // outputs or coordinates; empty: every coordinate
+  double accuracy = 1e-3;               // largest error relative to each output's range
+  double absolute = 0;                  // plus this absolute error
+};
+
+/// [variants.NAME]: a simpler model the user declares.
+struct VariantEntry {
+  std::string name;
+  SourceLocation where;
+  std::vector<NameText> neglect;          // parameters set to zero
+  std::vector<NameText> freeze;           // coordinates held at their initial values
+  std::vector<NamedExpression> small_angle;  // coordinate = "quadratic" (cos → 1 − φ²/2) or "one" (cos → 1)
+  std::vector<NamedExpression> replace;   // parameter = expression
+};
+
 struct ModelFile {
   std::string path;
   std::string name, title, method = "lagrange2";
@@ -103,6 +132,8 @@ struct ModelFile {
   std::vector<ConstraintEntry> constraints;
   std::vector<NamedExpression> pseudo_velocities;
   std::vector<NamedExpression> outputs;
+  std::vector<SceneEntry> scenes;
+  std::vector<VariantEntry> variants;
 };
 
 /// Largest model file accepted; anything bigger is refused before parsing.

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "parse/model_file.hpp"
+#include "parse/parse_scenes.hpp"
 #include "parse/toml_reader.hpp"
 #include "parse/utf8.hpp"
 
@@ -15,7 +16,7 @@ using toml_reader::Reader;
 
 const std::vector<std::string> top_level_keys = {
     "model", "parameters", "coordinates", "inputs", "particles", "rigid_bodies", "gravity",
-    "energy", "forces", "constraints", "pseudo_velocities", "outputs"};
+    "energy", "forces", "constraints", "pseudo_velocities", "outputs", "scenes", "variants"};
 
 // [model]: name, title, method
 void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
@@ -299,6 +300,8 @@ void read_document(Reader& r, const toml::table& doc, ModelFile& m) {
     else if (e.name == "constraints") read_constraints(r, n, m);
     else if (e.name == "pseudo_velocities") read_named_expressions(r, n, "pseudo_velocities", m.pseudo_velocities);
     else if (e.name == "outputs") read_named_expressions(r, n, "outputs", m.outputs);
+    else if (e.name == "scenes") read_scenes(r, n, m);
+    else if (e.name == "variants") read_variants(r, n, m);
   }
   if (!doc.contains("model"))
     r.error({r.path(), 1, 1}, "model", "missing section [model]",

@@ -1,0 +1,271 @@
+#include "cli/scene_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "analyse/equilibrium.hpp"
+#include "cli/loaded_model.hpp"
+#include "derive/linear_model.hpp"
+#include "emit/cpp_header.hpp"
+#include "emit/operation_count.hpp"
+
+namespace eomgen::cli {
+
+namespace {
+
+// each scene output over the run, or the name the model lacks
+std::optional<std::vector<std::vector<double>>> scene_outputs(const eomgen_model_abi& m, const runtime::Trajectory& tr,
+                                                              const std::vector<std::string>& names, std::string& missing) {
+  std::vector<std::vector<double>> out;
+  for (const std::string& name : names) {
+    int state = state_index(m, name), output = index_of(m.output_names, m.num_outputs, name);
+    if (state < 0 && output < 0) {
+      missing = name;
+      return std::nullopt;
+    }
+    std::vector<double> column;
+    for (std::size_t k = 0; k < tr.times.size(); ++k)
+      column.push_back(state >= 0 ? tr.states[k][std::size_t(state)] : tr.outputs[k][std::size_t(output)]);
+    out.push_back(column);
+  }
+  return out;
+}
+
+double range_of(const std::vector<double>& v) {
+  auto [low, high] = std::minmax_element(v.begin(), v.end());
+  return v.empty() ? 0 : *high - *low;
+}
+
+// the error of a run relative to each output's range, and whether (and where) it broke the accuracy
+void measure(const SceneAnalysis& a, const std::vector<double>& times, const std::vector<std::vector<double>>& y, SceneRun& run) {
+  run.error = 0, run.meets_accuracy = times.size() == a.times.size();
+  for (std::size_t k = 0; k < y.size(); ++k) {
+    const std::vector<double>& reference = a.reference_outputs[k];
+    double range = std::max(range_of(reference), 1e-300), bound = a.scene.accuracy * range + a.scene.absolute;
+    for (std::size_t i = 0; i < std::min(times.size(), reference.size()); ++i) {
+      double d = std::abs(y[k][i] - reference[i]);
+      if (!std::isfinite(d)) d = INFINITY;
+      run.error = std::max(run.error, d / range);
+      if (d > bound && (std::isnan(run.broke_at) || times[i] < run.broke_at)) run.broke_at = times[i], run.meets_accuracy = false;
+    }
+  }
+}
+
+std::vector<std::pair<std::string, double>> run_settings(const std::string& integrator, double dt_out) {
+  std::vector<std::pair<std::string, double>> out;
+  if (runtime::is_fixed_step_integrator(integrator)) {
+    for (double divide : {1.0, 4.0, 16.0}) out.push_back({"step", dt_out / divide});
+  } else {
+    for (double tolerance : {1e-3, 1e-5, 1e-7, 1e-9}) out.push_back({"rtol", tolerance});
+  }
+  return out;
+}
+
+class SceneAnalyser {
+ public:
+  SceneAnalyser(const std::string& path, const std::string& scene, const std::function<void(const std::string&)>& progress)
+      : path_(path), scene_(scene), progress_(progress) {}
+
+  SceneAnalysis run() {
+    Derivation full = derive_model_file_for(path_, {scene_, "", {}});
+    if (!full.diagnostics.empty()) return refused(full.diagnostics.format());
+    for (const Scene& s : full.equations->scenes)
+      if (s.name == scene_) a_.scene = s;
+    a_.model_name = full.equations->model_name;
+    LoadedProblem loaded;
+    if (load_equations(*full.equations, {}, loaded)) return refused("the full model does not load");
+    if (!reference(loaded)) return a_;
+    add_candidate("linear", "linearized about the equilibrium nearest the start", linear_model(loaded));
+    add_candidate("reduced", reduced_description(loaded), reduced_model(loaded));
+    for (const Variant& v : full.equations->variants_declared) {
+      Derivation d = derive_model_file_for(path_, {scene_, v.name, {}});
+      add_candidate("variant:" + v.name, "the declared variant " + v.name,
+                    d.diagnostics.empty() ? std::optional<Equations>(*d.equations) : std::nullopt, d.diagnostics.format());
+    }
+    add_candidate("full", "the model as written", *full.equations);
+    for (std::size_t c = 0; c < a_.candidates.size(); ++c) run_candidate(c);
+    choose();
+    return a_;
+  }
+
+ private:
+  SceneAnalysis refused(const std::string& why) {
+    a_.refusal = why;
+    return a_;
+  }
+
+  // the full model at its tightest: the reference integrator where it applies
+  bool reference(LoadedProblem& loaded) {
+    runtime::SimulationSettings s;
+    s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out;
+    s.integrator = loaded.problem.reference ? "reference" : "cvode-bdf";
+    s.rtol = 1e-12, s.atol = 1e-14;
+    a_.reference_integrator = loaded.problem.reference ? "reference" : "cvode-bdf at rtol 1e-12";
+    progress_(fmt::format("scene {}: reference of the full model with {}", a_.scene.name, a_.reference_integrator));
+    runtime::SimulationResult r = runtime::simulate(loaded.problem, loaded.initial_state, s);
+    if (r.failed) {
+      a_.refusal = "the reference run failed: " + r.failure;
+      return false;
+    }
+    a_.reference_error_estimate = r.error_estimate;
+    a_.times = r.trajectory.times;
+    std::string missing;
+    auto y = scene_outputs(*loaded.compiled->abi(), r.trajectory, a_.scene.outputs, missing);
+    a_.reference_outputs = *y;
+    reference_states_ = r.trajectory.states;
+    initial_ = loaded.initial_state;
+    return true;
+  }
+
+  std::optional<Equations> linear_model(LoadedProblem& loaded) {
+    runtime::Equilibrium eq = runtime::find_equilibrium(loaded.problem, loaded.initial_state);
+    if (!eq.converged) {
+      linear_refusal_ = "no equilibrium was found near the start";
+      return std::nullopt;
+    }
+    std::string refusal;
+    Equations linear = linearized_model(loaded.equations, eq.state, refusal);
+    if (!refusal.empty()) {
+      linear_refusal_ = refusal;
+      return std::nullopt;
+    }
+    return linear;
+  }
+
+  // coordinates that the outputs do not name and whose motion stays below the accuracy, frozen
+  std::vector<std::string> negligible(const LoadedProblem& loaded) const {
+    const Symbols& s = loaded.equations.symbols;
+    std::size_t n = s.num_coordinates();
+    std::vector<double> ranges(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<double> q;
+      for (const auto& x : reference_states_) q.push_back(x[i]);
+      ranges[i] = range_of(q);
+    }
+    double largest = *std::max_element(ranges.begin(), ranges.end());
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string& q = s.coordinate_names[i];
+      bool named = std::any_of(a_.scene.outputs.begin(), a_.scene.outputs.end(),
+                               [&](const std::string& y) { return y == q || y == "der(" + q + ")"; });
+      if (!named && ranges[i] <= a_.scene.accuracy * largest && out.size() + 1 < n) out.push_back(q);
+    }
+    return out;
+  }
+
+  std::string reduced_description(const LoadedProblem& loaded) const {
+    std::string names;
+    for (const std::string& q : negligible(loaded)) names += (names.empty() ? "" : ", ") + q;
+    return names.empty() ? "no coordinate stays negligible" : "frozen at their initial values: " + names;
+  }
+
+  std::optional<Equations> reduced_model(const LoadedProblem& loaded) {
+    std::vector<std::string> frozen = negligible(loaded);
+    if (frozen.empty()) return std::nullopt;
+    Derivation d = derive_model_file_for(path_, {scene_, "", frozen});
+    if (!d.diagnostics.empty()) return std::nullopt;
+    d.equations->model_name += "_reduced";
+    return *d.equations;
+  }
+
+  void add_candidate(const std::string& name, const std::string& description, std::optional<Equations> e,
+                     const std::string& why = "") {
+    SceneCandidate c;
+    c.model = name, c.description = description;
+    if (!e) {
+      c.refusal = name == "linear" ? linear_refusal_ : !why.empty() ? why : description;
+    } else {
+      c.equations = *e;
+      c.header = emit_cpp_header(c.equations);
+      c.rhs_operations = count_operations(c.header, "rhs", c.equations.num_velocities());
+      c.jacobian_operations = count_operations(c.header, "jacobian_state", c.equations.num_velocities());
+    }
+    a_.candidates.push_back(c);
+  }
+
+  void run_candidate(std::size_t index) {
+    SceneCandidate& c = a_.candidates[index];
+    if (!c.refusal.empty()) return;
+    LoadedProblem loaded;
+    if (load_equations(c.equations, {}, loaded)) {
+      c.refusal = "its header does not load";
+      return;
+    }
+    const eomgen_model_abi& m = *loaded.compiled->abi();
+    progress_(fmt::format("scene {}: candidate {} ({} operations in rhs)", a_.scene.name, c.model, c.rhs_operations));
+    for (const std::string& integrator : runtime::integrator_names()) {
+      if (integrator == "reference" || !runtime::integrator_refusal(m, integrator).empty()) continue;
+      for (const auto& [kind, value] : run_settings(integrator, a_.scene.dt_out)) {
+        runtime::SimulationSettings s;
+        s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out, s.integrator = integrator;
+        if (kind == "step") s.step = value;
+        else s.rtol = value, s.atol = value / 100;
+        SceneRun run;
+        run.candidate = index, run.integrator = integrator, run.setting = fmt::format("{} {:g}", kind, value);
+        runtime::SimulationResult r;
+        try {
+          r = runtime::simulate(loaded.problem, loaded.initial_state, s);
+        } catch (const std::exception& why) {
+          r.failed = true, r.failure = why.what();
+        }
+        run.cpu_seconds = r.statistics.wall_seconds;
+        run.rhs_evaluations = r.statistics.rhs_evaluations, run.jacobian_evaluations = r.statistics.jacobian_evaluations;
+        run.work = double(run.rhs_evaluations) * double(c.rhs_operations) +
+                   double(run.jacobian_evaluations) * double(c.jacobian_operations);
+        std::string missing;
+        auto y = scene_outputs(m, r.trajectory, a_.scene.outputs, missing);
+        if (!y) {
+          c.refusal = "it has no " + missing + ", which the scene asks for";
+          return;
+        }
+        measure(a_, r.trajectory.times, *y, run);
+        if (r.failed) run.meets_accuracy = false, run.rejected_because = "the run failed: " + r.failure;
+        else if (!run.meets_accuracy)
+          run.rejected_because = fmt::format("error {:.2g} of the range > accuracy {:g}, first at t = {:g}", run.error,
+                                             a_.scene.accuracy, run.broke_at);
+        if (run.meets_accuracy) keep_outputs_[a_.runs.size()] = *y;
+        a_.runs.push_back(run);
+      }
+    }
+  }
+
+  void choose() {
+    for (std::size_t i = 0; i < a_.runs.size(); ++i) {
+      const SceneRun& r = a_.runs[i];
+      if (!a_.closest || r.error < a_.runs[*a_.closest].error) a_.closest = i;
+      if (!r.meets_accuracy) continue;
+      if (!a_.chosen || r.work < a_.runs[*a_.chosen].work) a_.chosen = i;
+    }
+    if (!a_.chosen) return;
+    const SceneRun& best = a_.runs[*a_.chosen];
+    a_.chosen_outputs = keep_outputs_[*a_.chosen];
+    // the work count decides; say so when another model's run is within 10 % of it
+    for (const SceneRun& r : a_.runs)
+      if (r.meets_accuracy && r.candidate != best.candidate && r.work <= 1.1 * best.work)
+        a_.noise_note = fmt::format("the {} model with {} ({}) needs within 10 % of the same work", a_.candidates[r.candidate].model,
+                                    r.integrator, r.setting);
+    for (SceneRun& r : a_.runs)
+      if (r.meets_accuracy && &r != &a_.runs[*a_.chosen])
+        r.rejected_because = fmt::format("meets the accuracy, but needs {:.3g} times the work", r.work / std::max(best.work, 1.0));
+  }
+
+  const std::string &path_, &scene_;
+  const std::function<void(const std::string&)>& progress_;
+  SceneAnalysis a_;
+  std::vector<std::vector<double>> reference_states_;
+  std::vector<double> initial_;
+  std::string linear_refusal_;
+  std::map<std::size_t, std::vector<std::vector<double>>> keep_outputs_;
+};
+
+}  // namespace
+
+SceneAnalysis analyse_scene(const std::string& model_path, const std::string& scene,
+                            const std::function<void(const std::string&)>& progress) {
+  return SceneAnalyser(model_path, scene, progress).run();
+}
+
+}  // namespace eomgen::cli

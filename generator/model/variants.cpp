@@ -1,0 +1,126 @@
+#include "model/variants.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+void apply(ex& e, const GiNaC::exmap& s) { e = e.subs(s).eval(); }
+
+void apply(Vector3& v, const GiNaC::exmap& s) {
+  for (ex& e : v) apply(e, s);
+}
+
+void apply(GiNaC::matrix& m, const GiNaC::exmap& s) {
+  for (unsigned i = 0; i < m.rows(); ++i)
+    for (unsigned j = 0; j < m.cols(); ++j) apply(m(i, j), s);
+}
+
+// an expression that no longer evaluates (a division by a neglected parameter) stops the variant here
+void check_finite(const ex& e, const std::string& where) {
+  try {
+    (void)e.normal();
+  } catch (const std::exception& why) {
+    throw std::invalid_argument(fmt::format("{} breaks: {}", where, why.what()));
+  }
+}
+
+void remove_coordinate(Model& m, std::size_t i) {
+  Symbols& s = m.symbols;
+  auto erase = [i](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(i)); };
+  s.by_name.erase(s.coordinate_names[i]);
+  erase(s.coordinate_names), erase(s.coordinates), erase(s.velocities), erase(s.initial_coordinates),
+      erase(s.initial_velocities), erase(s.initial_coordinate_expressions), erase(s.initial_rate_expressions);
+  erase(m.generalized_force);
+  for (auto& [name, info] : s.by_name)
+    if (info.kind == SymbolKind::coordinate && info.index > i) --info.index;
+}
+
+}  // namespace
+
+void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
+  try {
+    for (Particle& p : m.particles) apply(p.mass, s), apply(p.position, s);
+    for (RigidBody& b : m.rigid_bodies) {
+      apply(b.mass, s), apply(b.center, s), apply(b.inertia, s), apply(b.rotation.matrix, s);
+      for (ElementaryRotation& r : b.rotation.sequence) apply(r.angle, s);
+    }
+    apply(m.gravity, s), apply(m.kinetic, s), apply(m.potential, s), apply(m.dissipation, s);
+    for (ex& q : m.generalized_force) apply(q, s);
+    for (PointForce& f : m.point_forces) apply(f.at, s), apply(f.force, s);
+    for (BodyTorque& t : m.torques) apply(t.torque, s);
+    for (Constraint& c : m.constraints) apply(c.expression, s);
+    for (NamedSymbolic& v : m.pseudo_velocities) apply(v.expression, s);
+    for (NamedSymbolic& o : m.outputs) apply(o.expression, s);
+  } catch (const std::exception& why) {
+    throw std::invalid_argument(fmt::format("an expression breaks: {}", why.what()));
+  }
+  check_finite(m.kinetic + m.potential + m.dissipation, "the energy");
+  for (const Particle& p : m.particles) check_finite(p.mass + p.position[0] + p.position[1] + p.position[2], "particle " + p.name);
+}
+
+Model freeze_coordinates(const Model& model, const std::vector<std::size_t>& frozen, const std::vector<double>& values) {
+  Model m = model;
+  GiNaC::exmap held;
+  for (std::size_t k = 0; k < frozen.size(); ++k) {
+    held[model.symbols.coordinates[frozen[k]]] = values[k];
+    held[model.symbols.velocities[frozen[k]]] = 0;
+  }
+  substitute_everywhere(m, held);
+  // a constraint that only held the frozen coordinates is gone
+  m.constraints.erase(std::remove_if(m.constraints.begin(), m.constraints.end(),
+                                     [](const Constraint& c) { return c.expression.normal().is_zero(); }),
+                      m.constraints.end());
+  std::vector<std::size_t> order = frozen;
+  std::sort(order.rbegin(), order.rend());
+  for (std::size_t i : order) remove_coordinate(m, i);
+  return m;
+}
+
+Model apply_variant(const Model& model, const Variant& v) {
+  const Symbols& s = model.symbols;
+  GiNaC::exmap changed;
+  for (std::size_t i : v.neglect) changed[s.parameters[i]] = 0;
+  for (const auto& [i, value] : v.replace) changed[s.parameters[i]] = value;
+  for (const auto& [i, quadratic] : v.small_angle) {
+    const GiNaC::realsymbol& q = s.coordinates[i];
+    changed[GiNaC::sin(q)] = q;
+    changed[GiNaC::cos(q)] = quadratic ? 1 - q * q / 2 : ex(1);
+  }
+  Model m = model;
+  substitute_everywhere(m, changed);
+  // a rotation given as a sequence of angles no longer matches its approximated matrix
+  for (RigidBody& b : m.rigid_bodies)
+    for (const auto& [i, quadratic] : v.small_angle)
+      for (const ElementaryRotation& r : b.rotation.sequence)
+        if (r.angle.has(s.coordinates[i])) b.rotation.sequence.clear();
+  std::vector<double> held;
+  for (std::size_t i : v.freeze) held.push_back(s.initial_coordinates[i]);
+  m = freeze_coordinates(m, v.freeze, held);
+  m.name = model.name + "_" + v.name;
+  m.title = model.title + " (variant " + v.name + ")";
+  return m;
+}
+
+Model apply_scene(const Model& model, const Scene& scene) {
+  Model m = model;
+  Symbols& s = m.symbols;
+  for (const auto& [i, value] : scene.set) s.parameter_defaults[i] = value;
+  GiNaC::exmap inputs;
+  for (const auto& [i, u] : scene.inputs) inputs[s.inputs[i]] = u;
+  if (!inputs.empty()) substitute_everywhere(m, inputs);
+  for (const auto& [name, value] : scene.initial)
+    for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
+      if (name == s.coordinate_names[i]) s.initial_coordinates[i] = value, s.initial_coordinate_expressions[i] = value;
+      if (name == "der(" + s.coordinate_names[i] + ")") s.initial_velocities[i] = value, s.initial_rate_expressions[i] = value;
+    }
+  return m;
+}
+
+}  // namespace eomgen

@@ -1,0 +1,133 @@
+// `eomgen scene` against an independent reference: the pendulum's scenes, whose chosen
+// trajectory (chosen.csv) is compared with φ'' = −(g/l) sin φ integrated here by RK4 at a
+// step of 1e-4 s; the small swing picks the linear model, the large one must not; the
+// choice is the same in two runs; a scene no candidate can meet exits 3 naming the closest;
+// scene and variant mistakes are located.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+// φ(t) of the undamped pendulum (g = 9.81, l = 1) from φ(0) = phi0 at rest, at the given times
+std::vector<double> pendulum_by_rk4(double phi0, const std::vector<double>& times) {
+  const double w2 = 9.81, h = 1e-4;
+  auto f = [w2](double p, double v) { return std::array<double, 2>{v, -w2 * std::sin(p)}; };
+  std::vector<double> out;
+  double t = 0, p = phi0, v = 0;
+  for (double target : times) {
+    while (t < target - 1e-12) {
+      double step = std::min(h, target - t);
+      auto k1 = f(p, v);
+      auto k2 = f(p + step / 2 * k1[0], v + step / 2 * k1[1]);
+      auto k3 = f(p + step / 2 * k2[0], v + step / 2 * k2[1]);
+      auto k4 = f(p + step * k3[0], v + step * k3[1]);
+      p += step / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
+      v += step / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
+      t += step;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+struct Choice {
+  std::string model, integrator, setting;
+  double error = NAN;
+};
+
+Choice run_scene(const std::string& path, const std::string& scene, const std::string& dir) {
+  JsonValue json = run_json("scene '" + path + "' " + scene + " -o '" + dir + "'");
+  const JsonValue* chosen = json.find("chosen");
+  if (!chosen || !chosen->find("model")) return {};
+  return {chosen->find("model")->text, chosen->find("integrator")->text, chosen->find("setting")->text, at(*chosen, "error")};
+}
+
+// the chosen run's φ against the independent reference, relative to the reference's range
+double chosen_error(const std::string& dir, double phi0) {
+  auto rows = read_numeric_csv(dir + "/chosen.csv");
+  std::vector<double> times;
+  for (const auto& row : rows) times.push_back(row[0]);
+  std::vector<double> reference = pendulum_by_rk4(phi0, times);
+  auto [low, high] = std::minmax_element(reference.begin(), reference.end());
+  double error = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) error = std::max(error, std::abs(rows[i][1] - reference[i]));
+  return error / (*high - *low);
+}
+
+TEST(SceneCommand, SmallSwingPicksTheLinearModelAndMeetsTheAccuracy) {
+  std::string dir = temporary_directory() + "/small";
+  Choice c = run_scene(model_path("pendulum"), "small_swing", dir);
+  EXPECT_EQ(c.model, "linear");
+  double error = chosen_error(dir, 0.05);
+  EXPECT_LE(error, 1e-2) << "the scene's accuracy";
+  EXPECT_NEAR(error, c.error, 1e-4) << "the error eomgen measured against its own reference";
+  for (const char* file : {"/report.md", "/candidates.csv", "/chosen.csv", "/pendulum_linear.hpp", "/error_vs_work.png"})
+    EXPECT_GT(read_file(dir + file).size(), 100u) << file;
+  Choice again = run_scene(model_path("pendulum"), "small_swing", dir + "2");
+  EXPECT_EQ(again.model + again.integrator + again.setting, c.model + c.integrator + c.setting) << "the choice is stable";
+}
+
+TEST(SceneCommand, LargeSwingDoesNotPickTheLinearModel) {
+  std::string dir = temporary_directory() + "/large";
+  Choice c = run_scene(model_path("pendulum"), "large_swing", dir);
+  EXPECT_NE(c.model, "linear");
+  EXPECT_NE(c.model, "variant:small_angle");
+  EXPECT_LE(chosen_error(dir, 2.0), 1e-2);
+}
+
+std::string pendulum_with(const std::string& extra) {
+  std::string path = temporary_directory() + "/pendulum.toml";
+  std::ofstream(path) << read_file(model_path("pendulum")) << extra;
+  return path;
+}
+
+TEST(SceneCommand, AnUnreachableAccuracyExitsThreeNamingTheClosest) {
+  std::string path = pendulum_with("\n[scenes.impossible]\nt_end = 2.0\ninitial = { phi = 1.0 }\naccuracy = 1e-15\n");
+  CommandOutput r = run_eomgen("scene '" + path + "' impossible");
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.out.find("no candidate reaches the accuracy; closest: full model"), std::string::npos) << r.out;
+}
+
+TEST(SceneCommand, MistakesInScenesAndVariantsAreLocated) {
+  // the file's structure first (parse), then the names (model), as for the rest of the file
+  CommandOutput negative = run_eomgen("derive '" + pendulum_with("\n[scenes.typo]\nt_end = -1.0\n") + "'");
+  EXPECT_EQ(negative.status, 2);
+  EXPECT_NE(negative.err.find("scenes.typo.t_end: t_end must be positive"), std::string::npos) << negative.err;
+  std::string path = pendulum_with("\n[scenes.typo]\noutputs = [\"ph\"]\ninputs = { tau = \"t\" }\n"
+                                   "[variants.bad]\nneglect = [\"mm\"]\nsmall_angle = { phi = \"cubic\" }\n");
+  CommandOutput r = run_eomgen("derive '" + path + "'");
+  EXPECT_EQ(r.status, 2);
+  for (const char* message : {"'ph' is not an output, a coordinate or a velocity", "did you mean 'phi'",
+                              "'tau' is not an input", "'mm' is not a parameter", "unknown small-angle form 'cubic'"})
+    EXPECT_NE(r.err.find(message), std::string::npos) << message << "\n" << r.err;
+  CommandOutput unknown = run_eomgen("simulate '" + model_path("pendulum") + "' --scene small_swig");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("the model has no scenes 'small_swig'"), std::string::npos) << unknown.err;
+}
+
+TEST(SceneCommand, VariantsAndScenesDeriveAndSimulate) {
+  CommandOutput variant = run_eomgen("derive '" + model_path("pendulum") + "' --variant small_angle");
+  EXPECT_EQ(variant.status, 0) << variant.err;
+  EXPECT_NE(variant.out.find("model: pendulum_small_angle"), std::string::npos);
+  EXPECT_NE(variant.out.find("f[0] = -d*der(phi) - g*l*m*phi - l^2*m*phi*der(phi)^2"), std::string::npos)
+      << "sin(phi) -> phi, cos(phi) -> 1 - phi^2/2 in the position, then Lagrange's equations\n" << variant.out;
+  std::string csv = temporary_directory() + "/scene.csv";
+  CommandOutput scene = run_eomgen("simulate '" + model_path("pendulum") + "' --scene large_swing -o '" + csv + "'");
+  EXPECT_EQ(scene.status, 0) << scene.err;
+  auto rows = read_numeric_csv(csv);
+  ASSERT_EQ(rows.size(), 201u) << "t_end 10 at dt_out 0.05";
+  EXPECT_EQ(rows[0][1], 2.0) << "the scene's initial angle";
+  EXPECT_NEAR(rows.back()[1], pendulum_by_rk4(2.0, {10.0})[0], 1e-6);
+  std::string dir = temporary_directory() + "/chosen";
+  CommandOutput generated = run_eomgen("generate '" + model_path("pendulum") + "' --scene small_swing -o '" + dir + "'");
+  EXPECT_EQ(generated.status, 0) << generated.err;
+  EXPECT_NE(read_file(dir + "/pendulum_linear.hpp").find("namespace eomgen::models::pendulum_linear"), std::string::npos) << generated.err;
+}
+
+}  // namespace
+}  // namespace eomgen::test
