@@ -8,6 +8,7 @@
 #include "derive/first_integrals.hpp"
 #include "derive/methods.hpp"
 #include "derive/routh.hpp"
+#include "derive/vanishing_coordinates.hpp"
 #include "kinematics/mechanics.hpp"
 #include "model/variants.hpp"
 #include "parse/model_file.hpp"
@@ -77,6 +78,15 @@ void chosen_model(const ModelFile& file, const ModelChoice& choice, Model& model
   }
 }
 
+// a variant that neglects the only mass of a coordinate leaves it undetermined: dropped unless the scene
+// asks for it (derive/vanishing_coordinates.hpp)
+void drop_undetermined(Equations& e, const Model& model, const ModelChoice& choice) {
+  std::vector<std::string> keep;
+  for (const Scene& s : model.scenes)
+    if (s.name == choice.scene) keep = s.outputs;
+  remove_vanishing_coordinates(e, keep);
+}
+
 // `reduce`: the cyclic coordinates Routh's reduction eliminates, whatever the model's method;
 // `method`: the method to use instead of the model's
 Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vector<std::string>& reduce = {},
@@ -96,6 +106,7 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
       }
     } else if (diagnostics.empty()) {
       result.equations = derive_built_model(model, {file.path, file.method_where.line, file.method_where.column}, diagnostics);
+      if (result.equations && !choice.variant.empty()) drop_undetermined(*result.equations, model, choice);
     }
   }
   result.diagnostics = std::move(diagnostics);

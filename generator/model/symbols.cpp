@@ -18,6 +18,15 @@ GiNaC::exmap Symbols::default_parameter_values() const {
   return values;
 }
 
+void Symbols::remove_coordinate(std::size_t i) {
+  auto erase = [i](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(i)); };
+  by_name.erase(coordinate_names[i]);
+  erase(coordinate_names), erase(coordinates), erase(velocities), erase(initial_coordinates), erase(initial_velocities),
+      erase(initial_coordinate_expressions), erase(initial_rate_expressions);
+  for (auto& [name, info] : by_name)
+    if (info.kind == SymbolKind::coordinate && info.index > i) --info.index;
+}
+
 bool is_reserved_name(const std::string& name) {
   static const std::vector<std::string> reserved = {
       "t", "der", "Pi", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh",

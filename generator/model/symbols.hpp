@@ -38,6 +38,8 @@ struct Symbols {
   std::vector<std::string> all_names() const;
   /// parameter symbol -> default value
   GiNaC::exmap default_parameter_values() const;
+  /// Coordinate i gone from every list (a frozen or dropped coordinate of a simpler model).
+  void remove_coordinate(std::size_t i);
 };
 
 /// Names a model may not use for its own symbols: time, der, Pi and the functions.

@@ -31,17 +31,6 @@ void check_finite(const ex& e, const std::string& where) {
   }
 }
 
-void remove_coordinate(Model& m, std::size_t i) {
-  Symbols& s = m.symbols;
-  auto erase = [i](auto& v) { v.erase(v.begin() + static_cast<std::ptrdiff_t>(i)); };
-  s.by_name.erase(s.coordinate_names[i]);
-  erase(s.coordinate_names), erase(s.coordinates), erase(s.velocities), erase(s.initial_coordinates),
-      erase(s.initial_velocities), erase(s.initial_coordinate_expressions), erase(s.initial_rate_expressions);
-  erase(m.generalized_force);
-  for (auto& [name, info] : s.by_name)
-    if (info.kind == SymbolKind::coordinate && info.index > i) --info.index;
-}
-
 }  // namespace
 
 void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
@@ -79,7 +68,10 @@ Model freeze_coordinates(const Model& model, const std::vector<std::size_t>& fro
                       m.constraints.end());
   std::vector<std::size_t> order = frozen;
   std::sort(order.rbegin(), order.rend());
-  for (std::size_t i : order) remove_coordinate(m, i);
+  for (std::size_t i : order) {
+    m.symbols.remove_coordinate(i);
+    m.generalized_force.erase(m.generalized_force.begin() + static_cast<std::ptrdiff_t>(i));
+  }
   return m;
 }
 
