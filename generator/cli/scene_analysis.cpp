@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analyse/equilibrium.hpp"
+#include "analyse/term_pruning.hpp"
 #include "cli/loaded_model.hpp"
 #include "derive/linear_model.hpp"
 #include "emit/cpp_header.hpp"
@@ -79,6 +80,7 @@ class SceneAnalyser {
     if (load_equations(*full.equations, {}, loaded)) return refused("the full model does not load");
     if (!reference(loaded)) return a_;
     add_candidate("linear", "linearized about the equilibrium nearest the start", linear_model(loaded));
+    add_pruned(loaded);
     add_candidate("reduced", reduced_description(loaded), reduced_model(loaded));
     for (const Variant& v : full.equations->variants_declared) {
       Derivation d = derive_model_file_for(path_, {scene_, v.name, {}});
@@ -133,6 +135,17 @@ class SceneAnalyser {
       return std::nullopt;
     }
     return linear;
+  }
+
+  // the terms of M and f below a tenth of the accuracy along the reference, dropped
+  void add_pruned(const LoadedProblem& loaded) {
+    Pruning p = prune_terms(loaded.equations, loaded.problem.parameters, loaded.problem.inputs, a_.times, reference_states_,
+                            0.1 * a_.scene.accuracy);
+    std::string dropped;
+    for (std::size_t i = 0; i < p.dropped.size(); ++i)
+      dropped += i < 4 ? (i ? ", " : "") + p.dropped[i] : i == 4 ? fmt::format(" and {} more", p.dropped.size() - 4) : "";
+    add_candidate("pruned", p.refusal.empty() ? "dropped " + dropped : p.refusal,
+                  p.refusal.empty() ? std::optional<Equations>(p.equations) : std::nullopt);
   }
 
   // coordinates that the outputs do not name and whose motion stays below the accuracy, frozen
