@@ -311,6 +311,13 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       break;
     }
     record(problem, t, x, result.trajectory);
+    if (settings.max_rhs_evaluations > 0 && f.evaluations() > settings.max_rhs_evaluations && !last) {
+      result.failed = result.over_budget = true;
+      result.failure_time = t;
+      result.failure = fmt::format("stopped at t = {:g} after {} right-hand-side evaluations, the budget of this run",
+                                   t, f.evaluations());
+      break;
+    }
     if (k % limit.stride == 0) limit.check(t, x);
     // a coordinate singularity ahead: M a thousand times worse conditioned than at the start
     if (!warned_singular) {

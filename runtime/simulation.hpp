@@ -35,6 +35,9 @@ struct SimulationSettings {
   double rtol = 1e-8, atol = 1e-10;
   double step = 0;               // fixed step of rk4, verlet and gauss-legendre; 0: dt_out/10
   long max_steps = 200'000;      // between two output times
+  /// > 0: the run stops (failed, `over_budget`) at the first output time after this many
+  /// right-hand-side evaluations, for callers that only need runs cheaper than a known one
+  long max_rhs_evaluations = 0;
   // constrained models: Baumgarte's stabilization (Lagrange I) and projection onto the
   // constraint manifold after every step; gains < 0 take the model's defaults
   bool baumgarte = true, projection = true;
@@ -80,6 +83,7 @@ struct SimulationResult {
   double failure_time = 0;
   int solver_flag = 0;
   std::string failure;  // what went wrong, for the user
+  bool over_budget = false;  // stopped by SimulationSettings::max_rhs_evaluations
   double max_position_residual = 0, max_velocity_residual = 0;
   long projections = 0;
   std::vector<std::string> warnings;  // things the user should know although the run went on

@@ -8,6 +8,7 @@
 
 #include "analyse/equilibrium.hpp"
 #include "analyse/term_pruning.hpp"
+#include "analyse/work_precision.hpp"
 #include "cli/loaded_model.hpp"
 #include "derive/linear_model.hpp"
 #include "emit/cpp_header.hpp"
@@ -16,6 +17,8 @@
 namespace eomgen::cli {
 
 namespace {
+
+constexpr double work_budget_factor = 10;
 
 // each scene output over the run, or the name the model lacks
 std::optional<std::vector<std::vector<double>>> scene_outputs(const eomgen_model_abi& m, const runtime::Trajectory& tr,
@@ -103,9 +106,15 @@ class SceneAnalyser {
   bool reference(LoadedProblem& loaded) {
     runtime::SimulationSettings s;
     s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out;
-    s.integrator = loaded.problem.reference ? "reference" : "cvode-bdf";
+    // the reference integrator is explicit: on a stiff model stability, not accuracy, would set its step
+    double stiffness = runtime::stiffness_ratio(loaded.problem, loaded.initial_state, 0);
+    bool extrapolation = loaded.problem.reference && !(stiffness > 1e3);
+    s.integrator = extrapolation ? "reference" : "cvode-bdf";
     s.rtol = 1e-12, s.atol = 1e-14;
-    a_.reference_integrator = loaded.problem.reference ? "reference" : "cvode-bdf at rtol 1e-12";
+    a_.reference_integrator = extrapolation ? "reference"
+                              : loaded.problem.reference
+                                  ? fmt::format("cvode-bdf at rtol 1e-12 (the model is stiff, ratio {:.2g})", stiffness)
+                                  : "cvode-bdf at rtol 1e-12";
     progress_(fmt::format("scene {}: reference of the full model with {}", a_.scene.name, a_.reference_integrator));
     runtime::SimulationResult r = runtime::simulate(loaded.problem, loaded.initial_state, s);
     if (r.failed) {
@@ -216,6 +225,10 @@ class SceneAnalyser {
         s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out, s.integrator = integrator;
         if (kind == "step") s.step = value;
         else s.rtol = value, s.atol = value / 100;
+        // a run past the work of the cheapest accepted one cannot be chosen; it runs on to ten
+        // times that work so the report can still show each candidate's best, then stops
+        if (cheapest_ && c.rhs_operations > 0)
+          s.max_rhs_evaluations = long(work_budget_factor * a_.runs[*cheapest_].work / double(c.rhs_operations)) + 1;
         SceneRun run;
         run.candidate = index, run.integrator = integrator, run.setting = fmt::format("{} {:g}", kind, value);
         runtime::SimulationResult r;
@@ -235,11 +248,20 @@ class SceneAnalyser {
           return;
         }
         measure(a_, r.trajectory.times, *y, run);
-        if (r.failed) run.meets_accuracy = false, run.rejected_because = "the run failed: " + r.failure;
+        if (r.over_budget) {
+          const SceneRun& cheaper = a_.runs[*cheapest_];
+          run.stopped = true, run.meets_accuracy = false, run.error = run.broke_at = NAN;
+          run.rejected_because = fmt::format("stopped at t = {:g}: more than {:g} times the work the {} model with {} ({}) needs",
+                                             r.failure_time, work_budget_factor, a_.candidates[cheaper.candidate].model, cheaper.integrator,
+                                             cheaper.setting);
+        } else if (r.failed) run.meets_accuracy = false, run.rejected_because = "the run failed: " + r.failure;
         else if (!run.meets_accuracy)
           run.rejected_because = fmt::format("error {:.2g} of the range > accuracy {:g}, first at t = {:g}", run.error,
                                              a_.scene.accuracy, run.broke_at);
-        if (run.meets_accuracy) keep_outputs_[a_.runs.size()] = *y;
+        if (run.meets_accuracy) {
+          keep_outputs_[a_.runs.size()] = *y;
+          if (!cheapest_ || run.work < a_.runs[*cheapest_].work) cheapest_ = a_.runs.size();
+        }
         a_.runs.push_back(run);
       }
     }
@@ -248,7 +270,7 @@ class SceneAnalyser {
   void choose() {
     for (std::size_t i = 0; i < a_.runs.size(); ++i) {
       const SceneRun& r = a_.runs[i];
-      if (!a_.closest || r.error < a_.runs[*a_.closest].error) a_.closest = i;
+      if (!r.stopped && (!a_.closest || r.error < a_.runs[*a_.closest].error)) a_.closest = i;
       if (!r.meets_accuracy) continue;
       if (!a_.chosen || r.work < a_.runs[*a_.chosen].work) a_.chosen = i;
     }
@@ -272,6 +294,7 @@ class SceneAnalyser {
   std::vector<double> initial_;
   std::string linear_refusal_;
   std::map<std::size_t, std::vector<std::vector<double>>> keep_outputs_;
+  std::optional<std::size_t> cheapest_;  // the run of least work that met the accuracy so far
 };
 
 }  // namespace

@@ -25,6 +25,7 @@ struct SceneRun {
   long rhs_evaluations = 0, jacobian_evaluations = 0;
   double work = 0;                  // rhs evaluations · rhs operations + Jacobians · Jacobian operations
   bool meets_accuracy = false;
+  bool stopped = false;  // stopped at ten times the work of a run that met the accuracy already
   std::string rejected_because;
 };
 

@@ -26,11 +26,15 @@ std::string run_line(const SceneAnalysis& a, const SceneRun& r) {
 std::vector<const SceneRun*> best_per_candidate(const SceneAnalysis& a) {
   std::vector<const SceneRun*> best(a.candidates.size(), nullptr);
   for (const SceneRun& r : a.runs) {
+    if (r.stopped) continue;
     const SceneRun*& b = best[r.candidate];
     bool better = !b || (r.meets_accuracy && (!b->meets_accuracy || r.work < b->work)) ||
                   (!r.meets_accuracy && !b->meets_accuracy && r.error < b->error);
     if (better) b = &r;
   }
+  // a candidate whose runs were stopped may have met the accuracy at more work: its failures are not its best
+  for (const SceneRun& r : a.runs)
+    if (r.stopped && best[r.candidate] && !best[r.candidate]->meets_accuracy) best[r.candidate] = nullptr;
   return best;
 }
 
@@ -66,7 +70,10 @@ void print_scene_text(const SceneAnalysis& a) {
     else if (best[c])
       std::cout << fmt::format("  {} ({}): best run {} ({}), error {:.3g}, work {:.4g}{}\n", k.model, k.description,
                                best[c]->integrator, best[c]->setting, best[c]->error, best[c]->work,
-                               best[c]->meets_accuracy ? "" : fmt::format("; never meets the accuracy (first broken at t = {:g})", best[c]->broke_at));
+                               best[c]->meets_accuracy ? "" : fmt::format("; never meets the accuracy ({})", best[c]->rejected_because));
+    else
+      std::cout << fmt::format("  {} ({}): no run met the accuracy within ten times the work of a cheaper run that did\n",
+                               k.model, k.description);
   }
   std::cout << "  " << verdict(a) << "\n";
   if (!a.noise_note.empty()) std::cout << "  note: " << a.noise_note << "; the choice between them is within measurement noise\n";
@@ -97,7 +104,10 @@ std::string write_scene_files(const SceneAnalysis& a, const std::string& directo
   for (std::size_t c = 0; c < a.candidates.size(); ++c)
     md += best[c] ? fmt::format("| {} | {} | {} {} | {:.3g} | {:.4g} |\n", a.candidates[c].model, a.candidates[c].description,
                                 best[c]->integrator, best[c]->setting, best[c]->error, best[c]->work)
-                  : fmt::format("| {} | not run: {} | | | |\n", a.candidates[c].model, a.candidates[c].refusal);
+                  : a.candidates[c].refusal.empty()
+                      ? fmt::format("| {} | {} | no run met the accuracy within ten times the work of a cheaper run | | |\n", a.candidates[c].model,
+                                    a.candidates[c].description)
+                      : fmt::format("| {} | not run: {} | | | |\n", a.candidates[c].model, a.candidates[c].refusal);
   std::vector<std::pair<std::string, std::string>> files{{"candidates.csv", csv}, {"report.md", md}};
   if (a.chosen) {
     const SceneCandidate& c = a.candidates[a.runs[*a.chosen].candidate];

@@ -80,6 +80,15 @@ class SceneBuilder {
       if (auto i = index(q.name, SymbolKind::coordinate, q.where, key + ".freeze", "a coordinate", coordinates)) v.freeze.push_back(*i);
     if (!v.freeze.empty() && v.freeze.size() == coordinates.size())
       d_.error(e.where, key + ".freeze", "the variant freezes every coordinate", "leave at least one coordinate free");
+    for (const NamedExpression& q : e.tie) {
+      auto i = index(q.name, SymbolKind::coordinate, q.where, key + ".tie." + q.name, "a coordinate", coordinates);
+      auto value = parse_expression(q.expression, m_.symbols, {allow_parameters | allow_coordinates, "a tie (of the other coordinates)"}, d_);
+      if (i && value && value->has(m_.symbols.coordinates[*i]))
+        d_.error(q.expression.where, q.expression.key, fmt::format("{} is tied to an expression of itself", q.name),
+                 "write it in the other coordinates, e.g. x3 = \"x2\"");
+      else if (i && value)
+        v.tie.push_back({*i, *value});
+    }
     for (const NamedExpression& a : e.small_angle) {
       auto i = index(a.name, SymbolKind::coordinate, a.where, key + ".small_angle", "a coordinate", coordinates);
       const std::string& kind = a.expression.text;

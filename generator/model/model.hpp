@@ -74,6 +74,7 @@ struct Variant {
   std::string name;
   std::vector<std::size_t> neglect;                     // parameters set to zero
   std::vector<std::size_t> freeze;                      // coordinates held at their initial values
+  std::vector<std::pair<std::size_t, GiNaC::ex>> tie;   // coordinate = expression of the others (removed)
   std::vector<std::pair<std::size_t, bool>> small_angle;  // coordinate, cos → 1 − φ²/2 (true) or 1
   std::vector<std::pair<std::size_t, GiNaC::ex>> replace;  // parameter = expression
 };

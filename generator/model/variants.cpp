@@ -75,6 +75,31 @@ Model freeze_coordinates(const Model& model, const std::vector<std::size_t>& fro
   return m;
 }
 
+Model tie_coordinates(const Model& model, const std::vector<std::pair<std::size_t, GiNaC::ex>>& ties) {
+  Model m = model;
+  const Symbols& s = model.symbols;
+  // q_j = g(q), der(q_j) = Σ ∂g/∂q_k der(q_k): a holonomic constraint solved for q_j (a rigid link)
+  GiNaC::exmap tied;
+  for (const auto& [j, g] : ties) {
+    ex rate = 0;
+    for (std::size_t k = 0; k < s.coordinates.size(); ++k) rate += g.diff(s.coordinates[k]) * s.velocities[k];
+    tied[s.coordinates[j]] = g, tied[s.velocities[j]] = rate;
+  }
+  // a generalized force on a tied coordinate acts through ∂g/∂q_k on the others (virtual work)
+  for (const auto& [j, g] : ties)
+    for (std::size_t k = 0; k < s.coordinates.size(); ++k)
+      if (k != j) m.generalized_force[k] += model.generalized_force[j] * g.diff(s.coordinates[k]);
+  substitute_everywhere(m, tied);
+  std::vector<std::size_t> order;
+  for (const auto& tie : ties) order.push_back(tie.first);
+  std::sort(order.rbegin(), order.rend());
+  for (std::size_t i : order) {
+    m.symbols.remove_coordinate(i);
+    m.generalized_force.erase(m.generalized_force.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  return m;
+}
+
 Model apply_variant(const Model& model, const Variant& v) {
   const Symbols& s = model.symbols;
   GiNaC::exmap changed;
@@ -92,9 +117,14 @@ Model apply_variant(const Model& model, const Variant& v) {
     for (const auto& [i, quadratic] : v.small_angle)
       for (const ElementaryRotation& r : b.rotation.sequence)
         if (r.angle.has(s.coordinates[i])) b.rotation.sequence.clear();
+  if (!v.tie.empty()) m = tie_coordinates(m, v.tie);
+  // the frozen coordinates by name: the ties have removed some
+  std::vector<std::size_t> frozen;
   std::vector<double> held;
-  for (std::size_t i : v.freeze) held.push_back(s.initial_coordinates[i]);
-  m = freeze_coordinates(m, v.freeze, held);
+  for (std::size_t i : v.freeze)
+    for (std::size_t k = 0; k < m.symbols.coordinates.size(); ++k)
+      if (m.symbols.coordinate_names[k] == s.coordinate_names[i]) frozen.push_back(k), held.push_back(s.initial_coordinates[i]);
+  m = freeze_coordinates(m, frozen, held);
   m.name = model.name + "_" + v.name;
   m.title = model.title + " (variant " + v.name + ")";
   return m;

@@ -19,6 +19,10 @@ Model apply_variant(const Model& model, const Variant& variant);
 /// The model with the coordinates `frozen` held at the given values (q = value, der(q) = 0).
 Model freeze_coordinates(const Model& model, const std::vector<std::size_t>& frozen, const std::vector<double>& values);
 
+/// The model with each coordinate j of `ties` written as g(q) of the others (a rigid link:
+/// q_j = g, der(q_j) = dg/dt) and removed.
+Model tie_coordinates(const Model& model, const std::vector<std::pair<std::size_t, GiNaC::ex>>& ties);
+
 /// The scene's inputs replaced by their functions of t, its `set` as the parameter defaults
 /// and its `initial` as the initial state; the model keeps its name.
 Model apply_scene(const Model& model, const Scene& scene);

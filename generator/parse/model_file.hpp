@@ -113,6 +113,7 @@ struct VariantEntry {
   SourceLocation where;
   std::vector<NameText> neglect;          // parameters set to zero
   std::vector<NameText> freeze;           // coordinates held at their initial values
+  std::vector<NamedExpression> tie;       // coordinate = expression of the other coordinates (a rigid link)
   std::vector<NamedExpression> small_angle;  // coordinate = "quadratic" (cos → 1 − φ²/2) or "one" (cos → 1)
   std::vector<NamedExpression> replace;   // parameter = expression
 };

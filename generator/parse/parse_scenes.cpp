@@ -76,9 +76,9 @@ void read_scene(Reader& r, const Entry& e, ModelFile& m) {
 
 void read_variant(Reader& r, const Entry& e, ModelFile& m) {
   std::string key = "variants." + e.name;
-  const toml::table* t = r.table(*e.node, key, "neglect, freeze, small_angle, replace");
+  const toml::table* t = r.table(*e.node, key, "neglect, freeze, tie, small_angle, replace");
   if (!t) return;
-  r.check_keys(*t, key, {"neglect", "freeze", "small_angle", "replace"});
+  r.check_keys(*t, key, {"neglect", "freeze", "tie", "small_angle", "replace"});
   VariantEntry v;
   v.name = e.name;
   v.where = e.where;
@@ -94,8 +94,9 @@ void read_variant(Reader& r, const Entry& e, ModelFile& m) {
     }
   }
   if (const toml::node* n = t->get("replace")) read_expressions_into(r, *n, key + ".replace", "parameter = \"expression\"", v.replace);
-  if (v.neglect.empty() && v.freeze.empty() && v.small_angle.empty() && v.replace.empty())
-    r.error(e.where, key, "the variant changes nothing", "give neglect, freeze, small_angle or replace");
+  if (const toml::node* n = t->get("tie")) read_expressions_into(r, *n, key + ".tie", "coordinate = \"expression of the others\"", v.tie);
+  if (v.neglect.empty() && v.freeze.empty() && v.tie.empty() && v.small_angle.empty() && v.replace.empty())
+    r.error(e.where, key, "the variant changes nothing", "give neglect, freeze, tie, small_angle or replace");
   m.variants.push_back(v);
 }
 

@@ -132,6 +132,57 @@ TEST(SceneCommand, ALightSecondBobIsDroppedForAQuestionAboutTheFirstAngle) {
   EXPECT_NE(variant.out.find("f[0] = -g*l1*m1*sin(phi1) + tau"), std::string::npos) << variant.out;
 }
 
+// x1, x2 of the stiff chain (m = k = 1, K = 1e8, c = 2e4, x1(0) = 0.1) by RK4 at 2e-5 s, below the
+// explicit stability limit of its fast decay (about 2.8 / 3.4e4 s)
+std::vector<std::array<double, 2>> stiff_chain_by_rk4(const std::vector<double>& times) {
+  const double k = 1, K = 1e8, c = 2e4, h = 2e-5;
+  using State = std::array<double, 6>;
+  auto f = [&](const State& x) {
+    double stretch = x[2] - x[1], rate = x[5] - x[4];
+    return State{x[3], x[4], x[5], -k * x[0] + k * (x[1] - x[0]),
+                 -k * (x[1] - x[0]) + (k + K) * stretch + c * rate, -(k + K) * stretch - c * rate};
+  };
+  auto axpy = [](const State& x, double a, const State& d) {
+    State y;
+    for (int i = 0; i < 6; ++i) y[i] = x[i] + a * d[i];
+    return y;
+  };
+  State x{0.1, 0, 0, 0, 0, 0};
+  double t = 0;
+  std::vector<std::array<double, 2>> out;
+  for (double target : times) {
+    while (t < target - 1e-12) {
+      double step = std::min(h, target - t);
+      State k1 = f(x), k2 = f(axpy(x, step / 2, k1)), k3 = f(axpy(x, step / 2, k2)), k4 = f(axpy(x, step, k3));
+      for (int i = 0; i < 6; ++i) x[i] += step / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+      t += step;
+    }
+    out.push_back({x[0], x[1]});
+  }
+  return out;
+}
+
+TEST(SceneCommand, TheStiffLinkMadeRigidAnswersTheSlowSwing) {
+  std::string dir = temporary_directory() + "/slow_swing";
+  Choice c = run_scene(model_path("stiff_chain"), "slow_swing", dir);
+  EXPECT_EQ(c.model, "variant:rigid_link");
+  auto rows = read_numeric_csv(dir + "/chosen.csv");
+  std::vector<double> times;
+  for (const auto& row : rows) times.push_back(row[0]);
+  auto reference = stiff_chain_by_rk4(times);
+  for (int k = 0; k < 2; ++k) {
+    double low = INFINITY, high = -INFINITY, error = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      low = std::min(low, reference[i][k]), high = std::max(high, reference[i][k]);
+      error = std::max(error, std::abs(rows[i][1 + k] - reference[i][k]));
+    }
+    EXPECT_LE(error / (high - low), 1e-2) << "x" << k + 1 << " against the stiff chain integrated here";
+  }
+  CommandOutput rigid = run_eomgen("derive '" + model_path("stiff_chain") + "' --variant rigid_link");
+  EXPECT_NE(rigid.out.find("coordinates: x1, x2\n"), std::string::npos) << rigid.out;
+  EXPECT_NE(rigid.out.find("M[1][1] = 2*m"), std::string::npos) << "masses 2 and 3 move as one\n" << rigid.out;
+}
+
 std::string pendulum_with(const std::string& extra) {
   std::string path = temporary_directory() + "/pendulum.toml";
   std::ofstream(path) << read_file(model_path("pendulum")) << extra;
