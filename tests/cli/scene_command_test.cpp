@@ -212,6 +212,14 @@ TEST(SceneCommand, MistakesInScenesAndVariantsAreLocated) {
   for (const char* message : {"'ph' is not an output, a coordinate or a velocity", "did you mean 'phi'",
                               "'tau' is not an input", "'mm' is not a parameter", "unknown small-angle form 'cubic'"})
     EXPECT_NE(r.err.find(message), std::string::npos) << message << "\n" << r.err;
+  CommandOutput tie = run_eomgen("derive '" + model_path("stiff_chain") + "' --variant rigid_link");
+  ASSERT_EQ(tie.status, 0) << tie.err;
+  std::string chain = temporary_directory() + "/chain.toml";
+  std::ofstream(chain) << read_file(model_path("stiff_chain")) << "[variants.loop]\ntie = { x2 = \"x2 + x1\", x4 = \"x1\" }\n";
+  CommandOutput ties = run_eomgen("derive '" + chain + "'");
+  EXPECT_EQ(ties.status, 2);
+  for (const char* message : {"x2 is tied to an expression of itself", "'x4' is not a coordinate"})
+    EXPECT_NE(ties.err.find(message), std::string::npos) << message << "\n" << ties.err;
   CommandOutput unknown = run_eomgen("simulate '" + model_path("pendulum") + "' --scene small_swig");
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.err.find("the model has no scenes 'small_swig'"), std::string::npos) << unknown.err;
