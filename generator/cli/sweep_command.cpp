@@ -1,5 +1,6 @@
-/// @file `eomgen sweep`: a stability map over two parameters, on all cores,
-/// with the symbolic boundary over it when asked.
+/// @file `eomgen sweep`: the eigenvalues along one parameter with the crossings of the
+/// imaginary axis, or a stability map over two parameters, on all cores, with the
+/// symbolic boundary over it when asked.
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -8,13 +9,16 @@
 
 #include <fmt/format.h>
 
+#include "analyse/eigenvalue_sweep.hpp"
 #include "analyse/equilibrium.hpp"
 #include "analyse/stability_conditions.hpp"
 #include "analyse/stability_map.hpp"
 #include "analyse/time_dependence.hpp"
 #include "cli/commands.hpp"
+#include "cli/eigenvalue_sweep_output.hpp"
 #include "cli/loaded_model.hpp"
 #include "common/output_file.hpp"
+#include "derive/initial_state.hpp"
 #include "report/reports.hpp"
 #include "symbolic/evaluate.hpp"
 
@@ -85,6 +89,55 @@ std::vector<double> symbolic_margin(const LoadedProblem& loaded, const runtime::
   return margin;
 }
 
+std::function<void(long, long)> progress_line(bool& finished) {
+  auto last_print = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  auto started = std::chrono::steady_clock::now();
+  return [&finished, last_print, started](long done, long total) {
+    auto now = std::chrono::steady_clock::now();
+    if (finished || (now - *last_print < std::chrono::milliseconds(500) && done < total)) return;
+    finished = done == total;
+    *last_print = now;
+    double elapsed = std::chrono::duration<double>(now - started).count();
+    double left = done > 0 ? elapsed * (total - done) / done : 0;
+    std::cerr << fmt::format("\reomgen sweep: {:3.0f}% ({}/{} points), about {:.1f} s left   ", 100.0 * done / total, done,
+                             total, left)
+              << (done == total ? "\n" : "") << std::flush;
+  };
+}
+
+// one parameter: the eigenvalues along it, about the model's initial state at each value
+int run_eigenvalue_sweep(const Options& o, const LoadedProblem& loaded, const runtime::Equilibrium& eq) {
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  std::string name;
+  auto axis = parse_axis(m, o.params[0], name);
+  if (!axis) return exit_user_error;
+  runtime::StartState start = [&](const std::vector<double>& parameters) -> std::optional<std::vector<double>> {
+    if (!o.at.empty()) return eq.state;
+    std::string failed;
+    return initial_state(loaded.equations, parameters, failed);
+  };
+  interrupted = false;
+  auto previous = std::signal(SIGINT, on_interrupt);
+  bool finished = false;
+  runtime::EigenvalueSweep s =
+      runtime::sweep_eigenvalues(loaded.problem, start, !o.at.empty(), *axis, 1e-10, o.threads, progress_line(finished), interrupted);
+  std::signal(SIGINT, previous);
+  if (s.interrupted) std::cerr << "\neomgen sweep: interrupted; no crossings are reported\n";
+  if (!o.csv.empty())
+    if (std::string failure = write_file_atomically(o.csv, eigenvalue_sweep_csv(s, name)); !failure.empty()) {
+      std::cerr << "eomgen: " << failure << "\n";
+      return exit_user_error;
+    }
+  if (!o.plot.empty()) {
+    std::string title = fmt::format("{}: eigenvalues against {} (dashed: crossings of the imaginary axis)", m.name, name);
+    if (std::string failure = runtime::draw_eigenvalue_sweep(s, name, title, o.plot); !failure.empty())
+      std::cerr << "eomgen: warning: no chart: " << failure << "\n";
+  }
+  if (o.json) print_eigenvalue_sweep_json(s, m.name, name);
+  else print_eigenvalue_sweep_text(s, m.name, name);
+  return s.interrupted ? exit_numerical_failure : exit_success;
+}
+
 int run_sweep(const Options& o) {
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
@@ -96,32 +149,27 @@ int run_sweep(const Options& o) {
     return exit_user_error;
   }
   const eomgen_model_abi& m = *loaded.compiled->abi();
-  std::string x_name, y_name;
-  if (o.params.size() != 2) {
-    std::cerr << "eomgen: error: give exactly two --param NAME=LOW:HIGH:COUNT\n";
+  if (o.params.size() != 1 && o.params.size() != 2) {
+    std::cerr << "eomgen: error: give one --param NAME=LOW:HIGH:COUNT (eigenvalues along it) or two (a stability map)\n";
     return exit_user_error;
   }
-  auto x = parse_axis(m, o.params[0], x_name), y = parse_axis(m, o.params[1], y_name);
-  if (!x || !y) return exit_user_error;
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
+  if (o.params.size() == 1) {
+    if (o.symbolic) {
+      std::cerr << "eomgen: error: --symbolic draws the Hurwitz boundary over a map of two parameters\n";
+      return exit_user_error;
+    }
+    return run_eigenvalue_sweep(o, loaded, eq);
+  }
+  std::string x_name, y_name;
+  auto x = parse_axis(m, o.params[0], x_name), y = parse_axis(m, o.params[1], y_name);
+  if (!x || !y) return exit_user_error;
   interrupted = false;
   auto previous = std::signal(SIGINT, on_interrupt);
-  auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
-  auto started = std::chrono::steady_clock::now();
   bool finished = false;
-  auto progress = [&](long done, long total) {
-    auto now = std::chrono::steady_clock::now();
-    if (finished || (now - last_print < std::chrono::milliseconds(500) && done < total)) return;
-    finished = done == total;
-    last_print = now;
-    double elapsed = std::chrono::duration<double>(now - started).count();
-    double left = done > 0 ? elapsed * (total - done) / done : 0;
-    std::cerr << fmt::format("\reomgen sweep: {:3.0f}% ({}/{} points), about {:.1f} s left   ", 100.0 * done / total, done,
-                             total, left)
-              << (done == total ? "\n" : "") << std::flush;
-  };
-  runtime::StabilityMap map = runtime::sweep(loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress, interrupted);
+  runtime::StabilityMap map =
+      runtime::sweep(loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress_line(finished), interrupted);
   std::signal(SIGINT, previous);
   if (map.interrupted) std::cerr << "\neomgen sweep: interrupted; keeping the points computed so far\n";
   std::vector<double> margin;
@@ -164,16 +212,18 @@ int run_sweep(const Options& o) {
 }  // namespace
 
 Command add_sweep_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("sweep", "Stability map over two parameters");
+  CLI::App* cmd = app.add_subcommand("sweep", "Eigenvalues along one parameter, or a stability map over two");
   auto o = std::make_shared<Options>();
   cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
-  cmd->add_option("--param", o->params, "Swept parameter, twice: --param b=0.05:2:200 --param J=0.05:3:200");
+  cmd->add_option("--param", o->params,
+                  "Swept parameter, once (eigenvalues along it: --param v=0:10:1001) or twice (a map: --param b=0.05:2:200 "
+                  "--param J=0.05:3:200)");
   cmd->add_option("--at", o->at, "A fixed equilibrium, one value per flag (default: re-found at every point)");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
   cmd->add_flag("--symbolic", o->symbolic, "Draw the boundary of the symbolic Hurwitz conditions over the map");
   cmd->add_option("--threads", o->threads, "Threads (default: all cores)");
-  cmd->add_option("-o,--output", o->csv, "Map as CSV: x, y, stability degree");
-  cmd->add_option("--plot", o->plot, "Map as PNG");
+  cmd->add_option("-o,--output", o->csv, "CSV: the eigenvalues at each value, or the map (x, y, stability degree)");
+  cmd->add_option("--plot", o->plot, "Chart as PNG: the eigenvalues against the parameter, or the map");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
   return [cmd, o, format]() -> int {

@@ -83,10 +83,11 @@ struct Verdict {
   std::string verdict;
   double degree;
   int cyclic_zeros;
+  std::vector<std::complex<double>> counted;  // the eigenvalues without the cyclic zeros
 };
 
 Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
-  Verdict v{"asymptotically_stable", -INFINITY, 0};
+  Verdict v{"asymptotically_stable", -INFINITY, 0, {}};
   std::vector<std::complex<double>> on_axis;
   for (auto l : s.eigenvalues) {
     bool zero = std::abs(l) <= std::sqrt(s.tolerance);
@@ -94,6 +95,7 @@ Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
       ++v.cyclic_zeros;
       continue;
     }
+    v.counted.push_back(l);
     // on the axis within rounding: exactly 0, so an undamped point never counts as decaying
     v.degree = std::max(v.degree, std::abs(l.real()) <= s.tolerance ? 0.0 : l.real());
     if (l.real() > s.tolerance) v.verdict = "unstable";
@@ -104,7 +106,10 @@ Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
   for (auto l : on_axis) {
     int algebraic = 0;
     for (auto k : s.eigenvalues) algebraic += std::abs(k - l) <= std::sqrt(s.tolerance);
-    if (null_space_dimension(A, l, s.tolerance) < algebraic) return {"unstable", v.degree, v.cyclic_zeros};
+    if (null_space_dimension(A, l, s.tolerance) < algebraic) {
+      v.verdict = "unstable";
+      return v;
+    }
   }
   if (!on_axis.empty()) v.verdict = "marginally_stable";
   return v;
@@ -305,18 +310,21 @@ StabilityReport analyse_stability(const Problem& problem, const std::vector<doub
   return r;
 }
 
-double stability_degree(const Problem& problem, const std::vector<double>& x) {
+CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<double>& x) {
   const eomgen_model_abi& m = *problem.model;
-  if (has_pseudo_velocities(m)) {
-    Eigen::MatrixXd A = reduced_jacobian(problem, x);
-    return judge(A, spectrum(A), 0).degree;
-  }
-  SecondOrder s = linearize(problem, x);
   Eigen::MatrixXd A, B;
-  first_order(m, s, A, B, nullptr);
-  int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
+  int cyclic = 0;
+  if (has_pseudo_velocities(m)) {
+    A = reduced_jacobian(problem, x);
+  } else {
+    first_order(m, linearize(problem, x), A, B, nullptr);
+    cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
+  }
   Spectrum sp = spectrum(A);
-  return judge(A, sp, cyclic).degree;
+  Verdict v = judge(A, sp, cyclic);
+  return {v.counted, v.verdict, v.degree, sp.tolerance};
 }
+
+double stability_degree(const Problem& problem, const std::vector<double>& x) { return counted_spectrum(problem, x).degree; }
 
 }  // namespace eomgen::runtime

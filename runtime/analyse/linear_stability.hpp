@@ -47,6 +47,16 @@ struct StabilityReport {
 /// Analyses the equilibrium x (from find_equilibrium or check_equilibrium).
 StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x);
 
+/// The reduced system's eigenvalues that count for the verdict (the zeros of conserved
+/// cyclic momenta left out), sorted by decreasing real part, with the verdict, the
+/// stability degree and the tolerance within which a real part counts as zero.
+struct CountedSpectrum {
+  std::vector<std::complex<double>> eigenvalues;
+  std::string verdict;
+  double degree = 0, tolerance = 0;
+};
+CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<double>& x);
+
 /// Only the largest real part of the reduced system's eigenvalues that counts for the
 /// verdict: the quantity of a stability map.
 double stability_degree(const Problem& problem, const std::vector<double>& x);

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "analyse/eigenvalue_sweep.hpp"
 #include "analyse/stability_map.hpp"
 #include "simulation.hpp"
 
@@ -24,6 +25,11 @@ std::string draw_charts(const eomgen_model_abi& model, const Trajectory& traject
 std::string draw_stability_map(const StabilityMap& map, const std::string& x_name, const std::string& y_name,
                                const std::string& title, const std::vector<double>& symbolic_margin,
                                const std::string& png_path);
+
+/// Draws the eigenvalues against the swept parameter, with the crossings of the
+/// imaginary axis and the stable intervals.
+std::string draw_eigenvalue_sweep(const EigenvalueSweep& sweep, const std::string& parameter, const std::string& title,
+                                  const std::string& png_path);
 
 /// FILE.png with `suffix` before the extension: the companion charts of `png_path`.
 std::string chart_path(const std::string& png_path, const std::string& suffix);

@@ -1,0 +1,156 @@
+#include "analyse/eigenvalue_sweep.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "analyse/equilibrium.hpp"
+#include "analyse/linear_stability.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+struct PointResult {
+  bool found = false;
+  CountedSpectrum spectrum;
+};
+
+Problem at_value(const Problem& base, int parameter, double value) {
+  Problem p = base;
+  p.parameters[std::size_t(parameter)] = value;
+  return p;
+}
+
+PointResult analyse_point(const Problem& p, const std::optional<std::vector<double>>& x0, bool fixed) {
+  if (!x0) return {};
+  Equilibrium eq = fixed ? check_equilibrium(p, *x0) : find_equilibrium(p, *x0);
+  if (!eq.converged) return {};
+  return {true, counted_spectrum(p, eq.state)};
+}
+
+int unstable_count(const CountedSpectrum& s) {
+  int n = 0;
+  for (auto l : s.eigenvalues) n += l.real() > s.tolerance;
+  return n;
+}
+
+// the eigenvalue (Im ≥ 0) of `s` nearest to `near`
+std::complex<double> nearest(const CountedSpectrum& s, std::complex<double> near) {
+  std::complex<double> best = NAN;
+  for (auto l : s.eigenvalues) {
+    std::complex<double> upper(l.real(), std::abs(l.imag()));
+    if (std::isnan(best.real()) || std::abs(upper - near) < std::abs(best - near)) best = upper;
+  }
+  return best;
+}
+
+// The eigenvalue that crosses between a and b: at the more unstable end the unstable one
+// nearest the axis, followed by continuity; Re λ is then bisected to `resolution`.
+std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start, bool fixed, int parameter, double a,
+                                   const CountedSpectrum& sa, double b, const CountedSpectrum& sb, double resolution) {
+  bool rising = unstable_count(sb) > unstable_count(sa);
+  const CountedSpectrum& more = rising ? sb : sa;
+  std::complex<double> tracked = NAN;
+  for (auto l : more.eigenvalues)
+    if (l.real() > more.tolerance && l.imag() >= 0 && (std::isnan(tracked.real()) || l.real() < tracked.real())) tracked = l;
+  if (std::isnan(tracked.real())) return std::nullopt;
+  double lo = a, hi = b;  // Re λ < 0 on the stable side of [lo, hi]
+  std::complex<double> at_lo = rising ? nearest(sa, tracked) : tracked, at_hi = rising ? tracked : nearest(sb, tracked);
+  if (std::isnan(at_lo.real()) || std::isnan(at_hi.real())) return std::nullopt;
+  while (hi - lo > resolution) {
+    double mid = 0.5 * (lo + hi);
+    Problem p = at_value(base, parameter, mid);
+    PointResult r = analyse_point(p, start(p.parameters), fixed);
+    if (!r.found) return std::nullopt;
+    std::complex<double> l = nearest(r.spectrum, 0.5 * (at_lo + at_hi));
+    // above the rounding of eigenvalues near a cluster at zero (1e-13 of |A|), far below
+    // the tolerance of the verdicts, so the crossing is found to the rounding of Re λ
+    bool unstable_side = l.real() > 1e-4 * r.spectrum.tolerance;
+    if (unstable_side == rising) hi = mid, at_hi = l;
+    else lo = mid, at_lo = l;
+  }
+  std::complex<double> l = 0.5 * (at_lo + at_hi);
+  AxisCrossing c;
+  c.parameter = 0.5 * (lo + hi);
+  c.eigenvalue = {0.0, l.imag()};
+  c.oscillatory = std::abs(l.imag()) > std::sqrt(std::max(more.tolerance, 1e-300));
+  c.destabilizing = rising;
+  return c;
+}
+
+// asymptotically stable runs of points, their ends moved to the crossings beside them
+std::vector<StableInterval> stable_intervals(const EigenvalueSweep& s) {
+  std::vector<StableInterval> out;
+  int n = s.axis.count;
+  for (int k = 0; k < n;) {
+    if (s.verdicts[std::size_t(k)] != "asymptotically_stable") {
+      ++k;
+      continue;
+    }
+    int first = k;
+    while (k < n && s.verdicts[std::size_t(k)] == "asymptotically_stable") ++k;
+    StableInterval interval{s.axis.value(first), s.axis.value(k - 1), first == 0, k == n};
+    for (const AxisCrossing& c : s.crossings) {
+      if (first > 0 && c.parameter > s.axis.value(first - 1) && c.parameter <= s.axis.value(first)) interval.low = c.parameter;
+      if (k < n && c.parameter >= s.axis.value(k - 1) && c.parameter < s.axis.value(k)) interval.high = c.parameter;
+    }
+    out.push_back(interval);
+  }
+  return out;
+}
+
+}  // namespace
+
+EigenvalueSweep sweep_eigenvalues(const Problem& base, const StartState& start, bool fixed, SweepAxis axis,
+                                  double resolution, unsigned threads, const std::function<void(long, long)>& progress,
+                                  const std::atomic<bool>& stop) {
+  auto started = std::chrono::steady_clock::now();
+  EigenvalueSweep s;
+  s.axis = axis;
+  std::vector<PointResult> points(std::size_t(axis.count));
+  // the start states first, on this thread: `start` may evaluate symbolic expressions,
+  // and GiNaC is not thread-safe
+  std::vector<Problem> problems;
+  std::vector<std::optional<std::vector<double>>> starts;
+  for (int k = 0; k < axis.count; ++k) {
+    problems.push_back(at_value(base, axis.parameter, axis.value(k)));
+    starts.push_back(start(problems.back().parameters));
+  }
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<int> next{0};
+  std::atomic<long> done{0};
+  std::vector<std::thread> workers;
+  for (unsigned w = 0; w < threads; ++w)
+    workers.emplace_back([&] {
+      for (int k; (k = next++) < axis.count && !stop; ++done)
+        points[std::size_t(k)] = analyse_point(problems[std::size_t(k)], starts[std::size_t(k)], fixed);
+    });
+  while (done < axis.count && !stop) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    if (progress) progress(done, axis.count);
+  }
+  for (auto& t : workers) t.join();
+  s.interrupted = stop && done < axis.count;
+  for (const PointResult& r : points) {
+    s.eigenvalues.push_back(r.found ? r.spectrum.eigenvalues : std::vector<std::complex<double>>{});
+    s.verdicts.push_back(r.found ? r.spectrum.verdict : "");
+  }
+  for (int k = 0; k + 1 < axis.count && !s.interrupted; ++k) {
+    const PointResult &a = points[std::size_t(k)], &b = points[std::size_t(k) + 1];
+    if (!a.found || !b.found) continue;
+    // two eigenvalues crossing in opposite directions between grid points cancel in the
+    // count: the grid must be fine enough to see them apart
+    if (unstable_count(a.spectrum) == unstable_count(b.spectrum)) continue;
+    if (auto c = bisect(base, start, fixed, axis.parameter, axis.value(k), a.spectrum, axis.value(k + 1), b.spectrum,
+                        resolution))
+      s.crossings.push_back(*c);
+  }
+  s.stable = stable_intervals(s);
+  if (progress) progress(done, axis.count);
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return s;
+}
+
+}  // namespace eomgen::runtime
