@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "common/deadline.hpp"
 #include "derive/first_integrals.hpp"
 #include "derive/methods.hpp"
 #include "derive/routh.hpp"
@@ -92,7 +93,9 @@ void drop_undetermined(Equations& e, const Model& model, const ModelChoice& choi
 Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vector<std::string>& reduce = {},
                   const std::string& method = "", const ModelChoice& choice = {}) {
   Derivation result;
+  DerivationDeadline deadline(file.path);
   if (diagnostics.empty()) {
+    derivation_stage("the model");
     Model model = build_model(file, diagnostics);
     if (!method.empty()) model.method = method;
     if (diagnostics.empty()) chosen_model(file, choice, model, diagnostics);
@@ -119,9 +122,16 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     diagnostics.error(method_where, "model.method", refusal);
     return std::nullopt;
   }
+  DerivationDeadline deadline(method_where.file);
+  derivation_stage("the kinematics");
   Mechanics mechanics = compute_mechanics(model);
   try {
+    derivation_stage(model.method == "lagrange2"   ? "Lagrange's equations of the second kind"
+                     : model.method == "lagrange1" ? "Lagrange's equations of the first kind"
+                     : model.method == "appell"    ? "Appell's equations"
+                                                   : "Hamilton's equations");
     Equations e = (*find_method(model.method))(model, mechanics);
+    derivation_stage("the first integrals");
     e.first_integrals = find_first_integrals(e, mechanics);
     for (const BodyKinematics& b : mechanics.bodies) e.body_positions.push_back({b.name, b.position});
     e.scenes = model.scenes;

@@ -63,6 +63,7 @@ struct SimulationOptions {
   bool json = false;
   std::string scene, variant;          // --scene NAME, --variant NAME
   bool t_end_given = false, dt_out_given = false;  // a scene's times give way to --t-end, --dt-out
+  double max_rows = 1e6;  // output rows a run may keep in memory (--max-rows)
 };
 
 /// Derives, generates, compiles (cached) and simulates; writes the CSV and charts asked for.

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "common/deadline.hpp"
 #include "common/version.hpp"
 
 int main(int argc, char** argv) {
@@ -9,6 +10,13 @@ int main(int argc, char** argv) {
   CLI::App app{"eomgen: equations of motion from a model file, derived symbolically"};
   app.set_version_flag("--version", std::string("eomgen ") + eomgen::version_string);
   app.require_subcommand(1);
+  // options the subcommands do not know are the main command's: --max-seconds after any command
+  app.fallthrough();
+  double max_seconds = eomgen::default_derivation_seconds;
+  app.add_option("--max-seconds", max_seconds,
+                 "Stop a derivation that runs longer than this, with exit status 2 (0: no limit)")
+      ->default_val(eomgen::default_derivation_seconds)
+      ->check(CLI::NonNegativeNumber);
   std::vector<Command> commands = {add_derive_command(app), add_generate_command(app), add_simulate_command(app), add_stability_command(app),
                                   add_sweep_command(app), add_bench_command(app), add_run_command(app),
                                   add_diff_command(app), add_check_integral_command(app), add_linear_command(app),
@@ -19,6 +27,7 @@ int main(int argc, char** argv) {
     int status = app.exit(e);
     return status == 0 ? exit_success : exit_user_error;
   }
+  eomgen::set_derivation_time_limit(max_seconds);
   try {
     for (const Command& command : commands)
       if (int status = command(); status >= 0) return status;

@@ -79,6 +79,15 @@ int simulate_model(const SimulationOptions& options) {
     std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";
     return exit_user_error;
   }
+  // the trajectory is held in memory until it is written: refuse before filling it
+  double rows = std::floor((o.settings.t_end - o.settings.t_start) / o.settings.dt_out) + 2;
+  if (!(rows <= o.max_rows)) {
+    std::cerr << fmt::format("eomgen: error: --t-end {:g} at --dt-out {:g} makes {:.4g} output rows, more than the {:.4g} "
+                             "allowed\n  hint: raise --dt-out, or allow more with --max-rows (each row holds the state, "
+                             "energy and outputs in memory until the CSV is written)\n",
+                             o.settings.t_end, o.settings.dt_out, rows, o.max_rows);
+    return exit_user_error;
+  }
   runtime::SimulationSettings settings = o.settings;
   settings.given_state = given;
   if (settings.integrator == "auto") {
@@ -140,6 +149,7 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
   cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");
   cmd->add_option("--step", o.settings.step, "Fixed step of rk4, verlet and gauss-legendre [s] (default dt-out/10)");
+  cmd->add_option("--max-rows", o.max_rows, "Most output rows a run may keep (default 1e6): longer runs need a longer --dt-out");
   cmd->add_option("--stabilization", o.stabilization,
                   "Constrained models: both (default), baumgarte (Lagrange I), projection (after every step) or none")
       ->check(CLI::IsMember({"both", "baumgarte", "projection", "none"}));

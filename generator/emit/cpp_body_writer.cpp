@@ -12,6 +12,13 @@ using GiNaC::ex;
 
 std::string cpp_name(const std::string& name) { return is_cpp_identifier(name) ? name : name + "_"; }
 
+std::string parameter_member_name(const std::string& name) {
+  // the struct's own names: its template parameter, its member function and itself
+  for (const char* taken : {"Scalar", "values", "Parameters"})
+    if (name == taken) return name + "_";
+  return cpp_name(name);
+}
+
 std::string quoted_list(const std::vector<std::string>& names, const std::string& prefix) {
   std::string s;
   for (const std::string& n : names) s += (s.empty() ? "" : ", ") + ("\"" + prefix + n + "\"");

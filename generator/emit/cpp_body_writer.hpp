@@ -13,6 +13,9 @@ namespace eomgen {
 
 /// C++ name of a model name that may be a C++ keyword.
 std::string cpp_name(const std::string& name);
+/// A parameter's member name in the header's Parameters struct: cpp_name, and a trailing _
+/// for the names the struct uses itself (Scalar, values, Parameters).
+std::string parameter_member_name(const std::string& name);
 
 /// "a", "b", … as the initializer of a std::array of const char*, each name with `prefix`.
 std::string quoted_list(const std::vector<std::string>& names, const std::string& prefix = "");

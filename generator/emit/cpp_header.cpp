@@ -357,8 +357,9 @@ std::string emit_cpp_header(const Equations& e) {
 
   std::string members, values;
   for (std::size_t i = 0; i < s.parameters.size(); ++i) {
-    members += fmt::format("  Scalar {} = Scalar({});\n", cpp_name(s.parameter_names[i]), format_number(s.parameter_defaults[i]));
-    values += (values.empty() ? "" : ", ") + cpp_name(s.parameter_names[i]);
+    members += fmt::format("  Scalar {} = Scalar({});\n", parameter_member_name(s.parameter_names[i]),
+                           format_number(s.parameter_defaults[i]));
+    values += (values.empty() ? "" : ", ") + parameter_member_name(s.parameter_names[i]);
   }
 
   std::string out = fmt::format(

@@ -64,6 +64,9 @@ class Builder {
     if (!is_cpp_identifier(f_.name))
       d_.error(f_.name_where, "model.name", fmt::format("'{}' is not a C++ identifier", f_.name),
                "the name becomes the header's file name and namespace: use letters, digits and _, e.g. double_pendulum");
+    else if (f_.name == "std")
+      d_.error(f_.name_where, "model.name", "'std' would name the header's namespace eomgen::models::std, which hides the "
+               "standard library from the header's own code", "choose another name, e.g. std_model");
     const auto& methods = known_methods();
     if (std::find(methods.begin(), methods.end(), f_.method) == methods.end())
       d_.error(f_.method_where, "model.method", fmt::format("unknown method '{}'", f_.method),

@@ -11,6 +11,23 @@ using GiNaC::ex;
 
 struct ParseFailure {};
 
+// Limits that keep hostile input from exhausting the stack (the parser recurses once per
+// level) or the derivation (each nested function multiplies the size of a derivative)
+constexpr int max_nesting = 256;
+constexpr int max_function_nesting = 32;
+
+// counts one level of recursion for as long as it lives
+class Level {
+ public:
+  explicit Level(int& depth) : depth_(++depth) {}
+  ~Level() { --depth_; }
+  Level(const Level&) = delete;
+  Level& operator=(const Level&) = delete;
+
+ private:
+  int& depth_;
+};
+
 const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
                                                   "atan", "atan2", "sinh", "cosh", "tanh",
                                                   "exp",  "log",  "sqrt", "abs",  "der"};
@@ -103,9 +120,14 @@ class Parser {
     }
   }
 
-  // unary := ('-' | '+') unary | power
+  // unary := ('-' | '+') unary | power    (every level of nesting passes through here)
   ex unary() {
     skip_space();
+    Level level(depth_);
+    if (depth_ > max_nesting)
+      fail(pos_, fmt::format("the expression is nested more than {} levels deep (parentheses, signs, powers and "
+                             "function calls)", max_nesting),
+           "split it into simpler expressions; eomgen limits nesting so that no input can exhaust its stack");
     if (peek() == '-') { ++pos_; return -unary(); }
     if (peek() == '+') { ++pos_; return unary(); }
     return power();
@@ -152,6 +174,10 @@ class Parser {
            "rotations go in a rigid body's rotation = \"...\"");
     if (std::find(function_names.begin(), function_names.end(), name) == function_names.end())
       fail(start, fmt::format("unknown function '{}'", name), suggest(name, function_names, "functions"));
+    Level level(function_depth_);
+    if (function_depth_ > max_function_nesting)
+      fail(start, fmt::format("functions are nested more than {} deep", max_function_nesting),
+           "each nested function multiplies the size of the derivatives; simplify the expression");
     return apply_function(name, arguments(start, name, arity(name)));
   }
 
@@ -287,6 +313,7 @@ class Parser {
   ExpressionRules rules_;
   Diagnostics& d_;
   std::size_t pos_ = 0;
+  int depth_ = 0, function_depth_ = 0;
 };
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -340,6 +341,12 @@ ModelFile parse_model_text(const std::string& text, const std::string& path, Dia
 }
 
 ModelFile parse_model_file(const std::string& path, Diagnostics& diagnostics) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    diagnostics.error({path, 0, 0}, "", "this is a directory, not a model file",
+                      "name a .toml file, e.g. models/double_pendulum.toml");
+    return {};
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     diagnostics.error({path, 0, 0}, "", "cannot open the model file", "check the path");

@@ -1,0 +1,32 @@
+/// @file A limit on derivation time. Symbolic work on hostile or oversized models can grow
+/// without bound inside a single GiNaC call, where no check can run; a watchdog thread
+/// ends the process instead, with a message naming the model and the stage that was
+/// running and exit status 2. Nothing has been written then: every output file is
+/// written whole, after the derivation.
+#pragma once
+
+#include <string>
+
+namespace eomgen {
+
+/// The limit for every derivation that follows, in seconds; 0: none. The default is
+/// `default_derivation_seconds`.
+void set_derivation_time_limit(double seconds);
+inline constexpr double default_derivation_seconds = 300;
+
+/// While one lives (the outermost, when they nest), the derivation of `model` is timed.
+class DerivationDeadline {
+ public:
+  explicit DerivationDeadline(const std::string& model);
+  ~DerivationDeadline();
+  DerivationDeadline(const DerivationDeadline&) = delete;
+  DerivationDeadline& operator=(const DerivationDeadline&) = delete;
+
+ private:
+  bool outermost_;
+};
+
+/// What the derivation is doing now ("kinematics", "Lagrange's equations"), for the message.
+void derivation_stage(const char* stage);
+
+}  // namespace eomgen

@@ -1,0 +1,105 @@
+// Hostile input that used to crash, hang or break the generated header: an expression
+// 20,000 parentheses deep (a stack overflow in the recursive parser), a derivation that
+// swells past its time limit, parameters named like the members of the header's
+// Parameters struct, and a run whose trajectory would not fit in memory. Each ends with a
+// message and exit status 2, or with a header that compiles, and never with a signal or a
+// partial file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string pendulum_with(const std::string& from, const std::string& to, const std::string& name) {
+  std::string text = read_file(model_path("pendulum"));
+  std::size_t at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("no '" + from + "' in pendulum.toml");
+  text.replace(at, from.size(), to);
+  std::string path = temporary_directory() + "/" + name + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(HostileInput, TwentyThousandNestedParenthesesGetALocatedDiagnostic) {
+  std::string deep = std::string(20000, '(') + "l" + std::string(20000, ')');
+  std::string path = pendulum_with("position = [\"l*sin(phi)\"", "position = [\"" + deep + "*sin(phi)\"", "deep");
+  std::string out = temporary_directory() + "/out";
+  CommandOutput r = run_eomgen("generate '" + path + "' -o '" + out + "'");
+  EXPECT_EQ(r.status, 2) << "a signal shows as a status above 128: " << r.status << "\n" << r.err.substr(0, 400);
+  EXPECT_NE(r.err.find("deep.toml:22:270: error: particles[0].position[0]: the expression is nested more than 256 levels deep"),
+            std::string::npos)
+      << r.err.substr(0, 400);
+  EXPECT_FALSE(fs::exists(out)) << "nothing is written";
+}
+
+TEST(HostileInput, ADerivationPastItsTimeLimitStopsWithExitTwoAndWritesNothing) {
+  // thirty nested sines of phi*der(phi) in T: small to write, slow to differentiate twice
+  std::string nested = "";
+  for (int i = 0; i < 30; ++i) nested += "sin(";
+  nested += "phi*der(phi)" + std::string(30, ')');
+  std::string path = pendulum_with("[energy]\n", "[energy]\nkinetic = \"" + nested + "^2\"\n", "swelling");
+  std::string out = temporary_directory() + "/out";
+  CommandOutput r = run_eomgen("generate '" + path + "' -o '" + out + "' --max-seconds 0.2");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("swelling.toml: the derivation ran past its limit of 0.2 s while forming Lagrange's equations of the "
+                       "second kind"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--max-seconds"), std::string::npos) << "the hint names the option";
+  EXPECT_FALSE(fs::exists(out)) << "nothing is written";
+  CommandOutput refused = run_eomgen("derive '" + path + "' --max-seconds -1");
+  EXPECT_EQ(refused.status, 2) << "a negative limit is a usage error";
+}
+
+TEST(HostileInput, ParametersNamedLikeTheHeadersOwnMembersStillCompile) {
+  for (const std::string name : {"values", "Scalar", "Parameters"}) {
+    std::string path = pendulum_with("m = 1.0", name + " = 1.0", "named_" + name);
+    std::string text = read_file(path);
+    text = std::regex_replace(text, std::regex("mass     = \"m\""), "mass     = \"" + name + "\"");
+    std::ofstream(path) << text;
+    std::string dir = temporary_directory();
+    CommandOutput g = run_eomgen("generate '" + path + "' -o '" + dir + "'");
+    ASSERT_EQ(g.status, 0) << g.err;
+    std::string header = read_file(dir + "/pendulum.hpp");
+    EXPECT_NE(header.find("Scalar " + name + "_ = Scalar(1);"), std::string::npos) << "the member gets a trailing _";
+    EXPECT_NE(header.find("\"" + name + "\""), std::string::npos) << "parameter_names keeps the name as written";
+    std::ofstream(dir + "/use.cpp") << "#include \"pendulum.hpp\"\nint main() {\n"
+                                       "  eomgen::models::pendulum::Parameters<double> p;\n  p."
+                                    << name
+                                    << "_ = 2;\n  auto v = p.values();\n  double x[2] = {0.1, 0}, xdot[2];\n"
+                                       "  eomgen::models::pendulum::rhs(0.0, x, nullptr, v.data(), xdot);\n"
+                                       "  return xdot[1] < 0 ? 0 : 1;\n}\n";
+    EXPECT_EQ(run_command("cd '" + dir + "' && c++ -std=c++17 -Wall -Wextra -Wpedantic -Werror use.cpp -o use && ./use"), 0)
+        << name;
+    CommandOutput s = run_eomgen("simulate '" + path + "' --t-end 1");
+    EXPECT_EQ(s.status, 0) << name << ": " << s.err;
+  }
+}
+
+TEST(HostileInput, ARunTooLongToHoldIsRefusedBeforeItStarts) {
+  CommandOutput r = run_eomgen("simulate '" + model_path("pendulum") + "' --t-end 1e308");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("more than the 1e+06 allowed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("raise --dt-out, or allow more with --max-rows"), std::string::npos) << r.err;
+  // 1,002 rows at the defaults (t = 0, 0.01, …, 10, and the end)
+  CommandOutput few = run_eomgen("simulate '" + model_path("pendulum") + "' --max-rows 1000");
+  EXPECT_EQ(few.status, 2) << few.err;
+  CommandOutput enough = run_eomgen("simulate '" + model_path("pendulum") + "' --max-rows 1002");
+  EXPECT_EQ(enough.status, 0) << enough.err;
+}
+
+TEST(HostileInput, ADirectoryIsNamedAsOne) {
+  CommandOutput r = run_eomgen("derive '" + temporary_directory() + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("error: this is a directory, not a model file"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace eomgen::test
