@@ -1,6 +1,7 @@
 #include "common/diagnostic.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -42,7 +43,15 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+std::string lowercase(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
 std::string nearest_name(const std::string& word, const std::vector<std::string>& candidates) {
+  // the same name in another case first: 'L' means 'l' rather than 't'
+  for (const std::string& c : candidates)
+    if (lowercase(c) == lowercase(word)) return c;
   std::string best;
   std::size_t best_distance = std::max<std::size_t>(1, word.size() / 3) + 1;
   for (const std::string& c : candidates) {

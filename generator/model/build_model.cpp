@@ -351,7 +351,10 @@ class Builder {
 
   void check_complete() {
     SourceLocation top{f_.path, 1, 1};
-    if (f_.coordinates.empty())
+    if (f_.coordinates.empty() && f_.coordinates_where)
+      d_.error(*f_.coordinates_where, "coordinates", "[coordinates] is empty: the model has no coordinates",
+               "add one per degree of freedom under it, e.g. phi = { initial = 0.1, rate = 0 }");
+    else if (f_.coordinates.empty())
       d_.error(top, "coordinates", "the model has no coordinates",
                "add a [coordinates] section, e.g. phi = { initial = 0.1, rate = 0 }");
     bool has_mass = !f_.particles.empty() || !f_.rigid_bodies.empty() || f_.kinetic;

@@ -120,10 +120,14 @@ struct VariantEntry {
 
 struct ModelFile {
   std::string path;
+  /// Every mistake found while reading is a value replaced by a stand-in: the model can
+  /// still be built to report the mistakes in names too (but not derived).
+  bool only_stand_in_mistakes = false;
   std::string name, title, method = "lagrange2";
   SourceLocation name_where, method_where;
   std::vector<ParameterEntry> parameters;
   std::vector<CoordinateEntry> coordinates;
+  std::optional<SourceLocation> coordinates_where;  // the [coordinates] section, when there is one
   std::vector<ParameterEntry> inputs;
   std::vector<ParticleEntry> particles;
   std::vector<RigidBodyEntry> rigid_bodies;

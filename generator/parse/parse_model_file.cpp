@@ -44,7 +44,9 @@ void read_numbers(Reader& r, const toml::node& node, const std::string& section,
   if (!t) return;
   for (const Entry& e : r.entries(*t)) {
     ParameterEntry p{e.name, 0.0, e.where, section + "." + e.name};
-    if (r.number(*e.node, p.key, p.value)) out.push_back(p);
+    // a mistaken value keeps its name, with a stand-in value, so the names are still checked
+    if (!r.number(*e.node, p.key, p.value)) p.value = 1, ++r.stand_ins;
+    out.push_back(p);
   }
 }
 
@@ -56,6 +58,7 @@ ExpressionText constant_text(const std::string& text, SourceLocation where, std:
 void read_coordinates(Reader& r, const toml::node& node, ModelFile& m) {
   const toml::table* t = r.table(node, "coordinates", "name = initial value");
   if (!t) return;
+  m.coordinates_where = r.at(node);
   for (const Entry& e : r.entries(*t)) {
     std::string key = "coordinates." + e.name;
     CoordinateEntry c{e.name, constant_text("0", e.where, key + ".initial"),
@@ -330,13 +333,20 @@ ModelFile parse_model_text(const std::string& text, const std::string& path, Dia
   try {
     doc = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    diagnostics.error({path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
-                      "", fmt::format("TOML syntax error: {}", e.description()),
-                      "see https://toml.io for the syntax; expressions go in double quotes");
+    SourceLocation where{path, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)};
+    // toml++'s words for a string without its closing quote describe the line's end instead
+    if (std::string(e.description()).find("unescaped control characters") != std::string::npos)
+      diagnostics.error(where, "", "a string is not closed before the end of its line",
+                        "add the closing \" (a string ends on the line where it starts)");
+    else
+      diagnostics.error(where, "", fmt::format("TOML syntax error: {}", e.description()),
+                        "see https://toml.io for the syntax; expressions go in double quotes");
     return m;
   }
   Reader reader(path, diagnostics);
+  std::size_t before = diagnostics.size();
   read_document(reader, doc, m);
+  m.only_stand_in_mistakes = reader.stand_ins > 0 && diagnostics.size() - before == std::size_t(reader.stand_ins);
   return m;
 }
 

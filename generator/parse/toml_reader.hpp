@@ -46,6 +46,10 @@ class Reader {
   bool matrix3(const toml::node& node, const std::string& key,
                std::vector<std::vector<ExpressionText>>& out);
 
+  /// Mistaken values that were replaced by a stand-in so that the rest of the file can
+  /// still be checked (a parameter given as a string): their diagnostics are already made.
+  int stand_ins = 0;
+
   void error(SourceLocation where, std::string key, std::string message, std::string hint = {}) {
     d_.error(std::move(where), std::move(key), std::move(message), std::move(hint));
   }

@@ -95,6 +95,22 @@ TEST(HostileInput, ARunTooLongToHoldIsRefusedBeforeItStarts) {
   EXPECT_EQ(enough.status, 0) << enough.err;
 }
 
+TEST(HostileInput, AStringForANumberHidesNoOtherMistake) {
+  std::string dir = std::string(EOMGEN_SOURCE_DIR) + "/tests/errors";
+  CommandOutput r = run_eomgen("derive '" + dir + "/string_for_a_number.toml'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("10:5: error: parameters.g: expected a number, got a string"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("22:29: error: particles[0].position[1]: unknown symbol 'l2'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2 errors"), std::string::npos) << r.err;
+}
+
+TEST(HostileInput, AMisspeltNameInTheWrongCaseSuggestsTheRightOne) {
+  std::string path = pendulum_with("position = [\"l*sin(phi)\"", "position = [\"L*sin(phi)\"", "capital");
+  CommandOutput r = run_eomgen("derive '" + path + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("unknown symbol 'L'\n  hint: did you mean 'l'?"), std::string::npos) << r.err;
+}
+
 TEST(HostileInput, ADirectoryIsNamedAsOne) {
   CommandOutput r = run_eomgen("derive '" + temporary_directory() + "'");
   EXPECT_EQ(r.status, 2);
