@@ -242,7 +242,40 @@ class Builder {
                      fmt::format("the inertia tensor is not symmetric: entry ({},{}) differs from ({},{})", i, j, j, i),
                      "an inertia tensor equals its transpose");
     }
+    if (!b.principal_inertia.empty() || b.inertia.size() == 3) check_realizable(I, b);
     return I;
+  }
+
+  // A body's second moments J = Σ m r rᵀ = tr(I)/2·E − I are positive semidefinite: in
+  // principal axes, every moment is at most the sum of the other two (the triangle
+  // inequality, equal for a flat body). Checked with the default parameters.
+  void check_realizable(const GiNaC::matrix& I, const RigidBodyEntry& b) {
+    double v[3][3], scale = 0;
+    for (unsigned i = 0; i < 3; ++i)
+      for (unsigned j = 0; j < 3; ++j) {
+        auto x = constant_value(I(i, j), m_.symbols);
+        if (!x) return;
+        v[i][j] = *x, scale = std::max(scale, std::abs(*x));
+      }
+    double trace = v[0][0] + v[1][1] + v[2][2], J[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) J[i][j] = (i == j ? trace / 2 : 0) - v[i][j];
+    auto minor2 = [&](int i, int j) { return J[i][i] * J[j][j] - J[i][j] * J[j][i]; };
+    double det = J[0][0] * minor2(1, 2) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                 J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    double tol = 1e-12 * scale;
+    bool realizable = J[0][0] >= -tol && J[1][1] >= -tol && J[2][2] >= -tol && minor2(0, 1) >= -tol * scale &&
+                      minor2(0, 2) >= -tol * scale && minor2(1, 2) >= -tol * scale && det >= -tol * scale * scale;
+    if (realizable) return;
+    const ExpressionText& at = b.principal_inertia.empty() ? b.inertia[0][0] : b.principal_inertia[0];
+    std::string what = b.principal_inertia.empty()
+                           ? "its principal moments"
+                           : fmt::format("{:g}, {:g}, {:g}", v[0][0], v[1][1], v[2][2]);
+    d_.error(at.where, b.key + ".inertia",
+             fmt::format("no rigid body has this inertia: {} break the triangle inequality (each principal moment is at "
+                         "most the sum of the other two) with the default parameters", what),
+             "check the axes and the values; a planar model that only needs Izz can give a thin plate's moments, "
+             "[Izz/2, Izz/2, Izz]");
   }
 
   std::optional<std::size_t> coordinate_index(const NamedExpression& g, const std::string& key) {
