@@ -95,7 +95,10 @@ int bench(const Options& o) {
   s.energy_tolerance = o.energy_tolerance;
   s.energy_step = o.energy_step > 0 ? o.energy_step : s.dt_out / 5;
   std::string directory = o.directory.empty() ? "bench-" + std::string(m.name) : o.directory;
-  std::filesystem::create_directories(directory);
+  if (std::string failure = make_output_directory(directory); !failure.empty()) {
+    std::cerr << "eomgen: error: " << failure << "\n";
+    return exit_user_error;
+  }
   std::vector<double> x0 = loaded.initial_state;
   if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   if (!o.horizon_integrator.empty()) {
@@ -116,10 +119,15 @@ int bench(const Options& o) {
     return exit_numerical_failure;
   }
   std::string report = runtime::work_precision_markdown(m.name, result, s, loaded.compiled->reference_scalar);
-  write_file_atomically(directory + "/report.md", report);
-  write_file_atomically(directory + "/runs.csv", runtime::work_precision_csv(result));
-  if (!result.energy.empty()) write_file_atomically(directory + "/energy.csv", runtime::energy_csv(result));
-  if (!result.horizons.empty()) write_file_atomically(directory + "/horizons.csv", runtime::horizons_csv(result));
+  std::vector<std::pair<std::string, std::string>> files{{"report.md", report},
+                                                         {"runs.csv", runtime::work_precision_csv(result)}};
+  if (!result.energy.empty()) files.push_back({"energy.csv", runtime::energy_csv(result)});
+  if (!result.horizons.empty()) files.push_back({"horizons.csv", runtime::horizons_csv(result)});
+  for (const auto& [name, text] : files)
+    if (std::string failure = write_file_atomically(directory + "/" + name, text); !failure.empty()) {
+      std::cerr << "eomgen: error: " << failure << "\n";
+      return exit_user_error;
+    }
   if (std::string failure = runtime::draw_work_precision(m.name, result, directory); !failure.empty())
     std::cerr << "eomgen: warning: no charts: " << failure << "\n";
   std::string verdict = report.substr(report.find("## Verdict"));

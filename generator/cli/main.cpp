@@ -1,4 +1,5 @@
 /// @file The eomgen command line: one subcommand per job, exit statuses as in DESIGN.md.
+#include <csignal>
 #include <iostream>
 
 #include "cli/commands.hpp"
@@ -7,6 +8,9 @@
 
 int main(int argc, char** argv) {
   using namespace eomgen::cli;
+  // past a file-size limit (ulimit -f) a write fails with EFBIG instead of killing the process,
+  // so the half-written temporary file is removed and the failure said
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"eomgen: equations of motion from a model file, derived symbolically"};
   app.set_version_flag("--version", std::string("eomgen ") + eomgen::version_string);
   app.require_subcommand(1);

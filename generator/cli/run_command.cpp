@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "common/output_file.hpp"
 
 namespace eomgen::cli {
 
@@ -33,7 +34,10 @@ Command add_run_command(CLI::App& app) {
     std::string path = model->empty() ? default_model_path() : *model;
     std::cerr << "eomgen run: " << path << "\n";
     if (int status = derive_and_write(path, "text", ""); status != exit_success) return status;
-    std::filesystem::create_directories(*directory);
+    if (std::string failure = make_output_directory(*directory); !failure.empty()) {
+      std::cerr << "eomgen: error: " << failure << "\n";
+      return exit_user_error;
+    }
     std::string stem = std::filesystem::path(path).stem().string();
     SimulationOptions o;
     o.model = path;

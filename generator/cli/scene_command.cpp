@@ -7,12 +7,18 @@
 #include "cli/commands.hpp"
 #include "cli/scene_analysis.hpp"
 #include "cli/scene_report.hpp"
+#include "common/output_file.hpp"
 
 namespace eomgen::cli {
 
 namespace {
 
 int scene(const std::string& model, const std::string& name, const std::string& directory, bool json) {
+  // the folder before the work that fills it
+  if (std::string failure = directory.empty() ? "" : make_output_directory(directory); !failure.empty()) {
+    std::cerr << "eomgen: error: " << failure << "\n";
+    return exit_user_error;
+  }
   SceneAnalysis a = analyse_scene(model, name, [](const std::string& line) { std::cerr << "eomgen: " << line << "\n"; });
   if (!a.refusal.empty()) {
     std::cerr << a.refusal << (a.refusal.back() == '\n' ? "" : "\n");

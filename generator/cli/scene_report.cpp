@@ -93,7 +93,7 @@ void print_scene_json(const SceneAnalysis& a) {
 }
 
 std::string write_scene_files(const SceneAnalysis& a, const std::string& directory) {
-  std::filesystem::create_directories(directory);
+  if (std::string failure = make_output_directory(directory); !failure.empty()) return failure;
   std::string csv = "model,integrator,setting,error,work,cpu_s,rhs_evaluations,jacobian_evaluations,meets_accuracy\n";
   for (const SceneRun& r : a.runs)
     csv += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{},{},{}\n", a.candidates[r.candidate].model, r.integrator, r.setting,

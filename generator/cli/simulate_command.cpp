@@ -60,8 +60,15 @@ int simulate_model(const SimulationOptions& options) {
   if (auto status = load_problem(o.model, o.sets, loaded, {}, {o.scene, o.variant, {}})) return *status;
   if (!o.scene.empty()) apply_scene_times(loaded.equations, o);
   if (!o.header_dir.empty()) {
-    std::filesystem::create_directories(o.header_dir);
-    write_file_atomically(o.header_dir + "/" + loaded.equations.model_name + ".hpp", loaded.header);
+    if (std::string failure = make_output_directory(o.header_dir); !failure.empty()) {
+      std::cerr << "eomgen: error: " << failure << "\n";
+      return exit_user_error;
+    }
+    if (std::string failure = write_file_atomically(o.header_dir + "/" + loaded.equations.model_name + ".hpp", loaded.header);
+        !failure.empty()) {
+      std::cerr << "eomgen: error: " << failure << "\n";
+      return exit_user_error;
+    }
   }
   const eomgen_model_abi& m = *loaded.compiled->abi();
   runtime::Problem& problem = loaded.problem;

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include <unistd.h>
@@ -17,8 +18,9 @@ std::string write_file_atomically(const std::string& path, const std::string& te
     out << text;
     out.flush();
     if (!out) {
+      std::string why = std::strerror(errno);
       std::remove(temporary.c_str());
-      return "cannot write " + temporary;
+      return "cannot write " + path + " (the disk is full, or a file-size limit is reached): " + why;
     }
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
@@ -26,6 +28,14 @@ std::string write_file_atomically(const std::string& path, const std::string& te
     std::remove(temporary.c_str());
     return "cannot move the output into place at " + path + ": " + why;
   }
+  return {};
+}
+
+std::string make_output_directory(const std::string& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) return "cannot create the output folder " + directory + ": " + error.message();
+  if (!std::filesystem::is_directory(directory, error)) return directory + " is not a folder";
   return {};
 }
 

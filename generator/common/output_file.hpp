@@ -9,4 +9,8 @@ namespace eomgen {
 /// Returns an empty string on success, else what went wrong.
 std::string write_file_atomically(const std::string& path, const std::string& text);
 
+/// Creates `directory` (and its parents) for output, before the work that fills it.
+/// Returns an empty string on success, else what went wrong.
+std::string make_output_directory(const std::string& directory);
+
 }  // namespace eomgen

@@ -266,7 +266,9 @@ class Builder {
     double tol = 1e-12 * scale;
     bool realizable = J[0][0] >= -tol && J[1][1] >= -tol && J[2][2] >= -tol && minor2(0, 1) >= -tol * scale &&
                       minor2(0, 2) >= -tol * scale && minor2(1, 2) >= -tol * scale && det >= -tol * scale * scale;
-    if (realizable) return;
+    // [0, 0, Izz]: the shorthand of planar models, where only one moment ever acts
+    int zero_moments = (v[0][0] == 0) + (v[1][1] == 0) + (v[2][2] == 0);
+    if (realizable || (!b.principal_inertia.empty() && zero_moments == 2)) return;
     const ExpressionText& at = b.principal_inertia.empty() ? b.inertia[0][0] : b.principal_inertia[0];
     std::string what = b.principal_inertia.empty()
                            ? "its principal moments"

@@ -111,6 +111,37 @@ TEST(HostileInput, AMisspeltNameInTheWrongCaseSuggestsTheRightOne) {
   EXPECT_NE(r.err.find("unknown symbol 'L'\n  hint: did you mean 'l'?"), std::string::npos) << r.err;
 }
 
+TEST(HostileInput, AFullDiskEndsTheRunWithAMessageAndNoPartialFile) {
+  // a file-size limit of 4 blocks stands in for a full disk: the trajectory needs more
+  std::string dir = temporary_directory();
+  // compiled first without the limit, which would stop the compiler too
+  ASSERT_EQ(run_eomgen("simulate '" + model_path("double_pendulum") + "' --t-end 0.1").status, 0);
+  int status = run_command("ulimit -f 4; EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                           std::string(EOMGEN_EXECUTABLE) + "' simulate '" + model_path("double_pendulum") +
+                           "' -o '" + dir + "/x.csv' 2> '" + dir + "/err.txt' > /dev/null");
+  std::string err = read_file(dir + "/err.txt");
+  EXPECT_EQ(status, 2) << err;
+  EXPECT_NE(err.find("cannot write " + dir + "/x.csv (the disk is full, or a file-size limit is reached): File too large"),
+            std::string::npos)
+      << err;
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"err.txt"}) << "neither the CSV nor its temporary file is left";
+}
+
+TEST(HostileInput, AnOutputFolderThatCannotBeMadeIsSaidBeforeTheWork) {
+  std::string file = temporary_directory() + "/a_file";
+  std::ofstream(file) << "not a folder";
+  for (const std::string& command : {"bench '" + model_path("pendulum") + "' -o '" + file + "/bench'",
+                                    "scene '" + model_path("pendulum") + "' small_swing -o '" + file + "/scene'",
+                                    "run '" + model_path("pendulum") + "' -o '" + file + "/run'"}) {
+    CommandOutput r = run_eomgen(command);
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find("error: cannot create the output folder " + file), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+}
+
 TEST(HostileInput, ADirectoryIsNamedAsOne) {
   CommandOutput r = run_eomgen("derive '" + temporary_directory() + "'");
   EXPECT_EQ(r.status, 2);
