@@ -311,6 +311,12 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       break;
     }
     record(problem, t, x, result.trajectory);
+    if (settings.stop && *settings.stop && !last) {
+      result.failed = result.interrupted = true;
+      result.failure_time = t;
+      result.failure = fmt::format("interrupted at t = {:g} (SIGINT or SIGTERM): the run is partial", t);
+      break;
+    }
     if (settings.max_rhs_evaluations > 0 && f.evaluations() > settings.max_rhs_evaluations && !last) {
       result.failed = result.over_budget = true;
       result.failure_time = t;

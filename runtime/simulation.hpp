@@ -2,6 +2,7 @@
 /// plain data shared by the integrators, the reports and the command line.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -38,6 +39,9 @@ struct SimulationSettings {
   /// > 0: the run stops (failed, `over_budget`) at the first output time after this many
   /// right-hand-side evaluations, for callers that only need runs cheaper than a known one
   long max_rhs_evaluations = 0;
+  /// When set (by a signal handler: SIGINT, SIGTERM), the run ends at the next output time
+  /// (failed, `interrupted`), keeping the trajectory so far
+  const std::atomic<bool>* stop = nullptr;
   // constrained models: Baumgarte's stabilization (Lagrange I) and projection onto the
   // constraint manifold after every step; gains < 0 take the model's defaults
   bool baumgarte = true, projection = true;
@@ -84,6 +88,7 @@ struct SimulationResult {
   int solver_flag = 0;
   std::string failure;  // what went wrong, for the user
   bool over_budget = false;  // stopped by SimulationSettings::max_rhs_evaluations
+  bool interrupted = false;  // stopped by SimulationSettings::stop
   double max_position_residual = 0, max_velocity_residual = 0;
   long projections = 0;
   std::vector<std::string> warnings;  // things the user should know although the run went on

@@ -82,10 +82,11 @@ std::optional<int> load_equations(const Equations& equations, const std::vector<
   out.equations = equations;
   out.header = emit_cpp_header(out.equations);
   std::string error;
-  out.compiled = runtime::load_compiled_model(out.header, out.equations.model_name, error);
+  bool compiler_missing = false;
+  out.compiled = runtime::load_compiled_model(out.header, out.equations.model_name, error, &compiler_missing);
   if (!out.compiled) {
-    std::cerr << "eomgen: internal error: " << error << "\n";
-    return exit_internal_error;
+    std::cerr << (compiler_missing ? "eomgen: error: " : "eomgen: internal error: ") << error << "\n";
+    return compiler_missing ? exit_user_error : exit_internal_error;
   }
   const eomgen_model_abi& m = *out.compiled->abi();
   out.problem = runtime::Problem{};

@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -22,6 +24,9 @@
 namespace eomgen::cli {
 
 namespace {
+
+std::atomic<bool> stop_requested{false};
+extern "C" void on_stop_signal(int) { stop_requested = true; }
 
 // an explicit method on a stiff model: its steps are set by stability, not by accuracy
 void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0, const runtime::SimulationSettings& s,
@@ -106,12 +111,18 @@ int simulate_model(const SimulationOptions& options) {
   settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
   runtime::SimulationResult result;
+  // Ctrl-C or a TERM ends the run at the next output time; what was computed is written
+  stop_requested = false;
+  settings.stop = &stop_requested;
+  auto previous_interrupt = std::signal(SIGINT, on_stop_signal), previous_terminate = std::signal(SIGTERM, on_stop_signal);
   try {
     result = runtime::simulate(problem, x0, settings);
   } catch (const std::invalid_argument& why) {
+    std::signal(SIGINT, previous_interrupt), std::signal(SIGTERM, previous_terminate);
     std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", settings.integrator, why.what());
     return exit_user_error;
   }
+  std::signal(SIGINT, previous_interrupt), std::signal(SIGTERM, previous_terminate);
   for (const std::string& w : result.warnings) std::cerr << "eomgen: warning: " << w << "\n";
   stiffness_warning(problem, x0, settings, result);
   if (result.failed && result.trajectory.times.empty()) {
@@ -130,8 +141,11 @@ int simulate_model(const SimulationOptions& options) {
   if (!o.plot.empty()) draw_all_charts(o, m, result.trajectory, conservative);
   print_summary(settings, m, result, conservative, unforced, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
-    std::cerr << fmt::format("eomgen: the simulation failed: {}\n", result.failure);
-    if (!o.csv.empty()) std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the failure\n", o.csv, result.trajectory.times.size());
+    std::cerr << fmt::format(result.interrupted ? "eomgen: the simulation was {}\n" : "eomgen: the simulation failed: {}\n",
+                             result.failure);
+    if (!o.csv.empty())
+      std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the {}\n", o.csv, result.trajectory.times.size(),
+                               result.interrupted ? "interruption: a partial run" : "failure");
     return exit_numerical_failure;
   }
   return exit_success;

@@ -1,6 +1,7 @@
 #include "compile/compile_cache.hpp"
 
 #include <dlfcn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -32,11 +33,17 @@ std::string cache_directory() {
 
 namespace {
 
+// the compiler found at configure time, or EOMGEN_CXX
+std::string cxx_compiler() {
+  if (const char* cxx = std::getenv("EOMGEN_CXX"); cxx && *cxx) return cxx;
+  return EOMGEN_CXX_COMPILER;
+}
+
 const std::string compile_flags = std::string("-std=c++17 -O2 -fPIC -shared ") + EOMGEN_DRIVER_REFERENCE_FLAGS;
 
 std::string content_key(const std::string& header_text) {
   std::uint64_t h = 1469598103934665603ull;
-  for (const std::string& part : {std::string(EOMGEN_VERSION), std::string(EOMGEN_CXX_COMPILER),
+  for (const std::string& part : {std::string(EOMGEN_VERSION), cxx_compiler(),
                                   compile_flags, std::string(model_abi_text),
                                   std::string(reference_solution_text), header_text})
     for (unsigned char c : part + '\x1f') {
@@ -51,6 +58,16 @@ std::string read_text(const fs::path& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::string first_lines(const std::string& text, int count) {
+  std::size_t at = 0;
+  for (int k = 0; k < count; ++k) {
+    at = text.find('\n', at);
+    if (at == std::string::npos) return text;
+    ++at;
+  }
+  return at < text.size() ? text.substr(0, at) + "[...]\n" : text;
 }
 
 // loads and checks an entry; null when it is missing or not what the key promises
@@ -73,7 +90,7 @@ std::unique_ptr<LoadedModel> open_entry(const fs::path& library, const std::stri
 
 // builds in a private folder, then renames it into place: all or nothing
 bool build_entry(const fs::path& entry, const std::string& header_text, const std::string& name,
-                 const std::string& key, std::string& error) {
+                 const std::string& key, std::string& error, bool& compiler_missing) {
   std::mt19937_64 random(std::random_device{}());
   fs::path work = entry.parent_path() / fmt::format(".build-{}-{}-{:x}", key, ::getpid(), random());
   fs::create_directories(work);
@@ -84,12 +101,25 @@ bool build_entry(const fs::path& entry, const std::string& header_text, const st
       "// built by eomgen {} around {}.hpp\n#include \"model_abi.h\"\n#include \"reference_solution.hpp\"\n"
       "#include \"{}.hpp\"\nEOMGEN_MODEL_ENTRY({}, \"{}\")\nEOMGEN_REFERENCE_ENTRY({})\n",
       EOMGEN_VERSION, name, name, name, key, name);
+  std::string compiler = cxx_compiler();
   std::string command = fmt::format("cd '{}' && '{}' {} -o model.so driver.cpp {} > compile.log 2>&1", work.string(),
-                                    EOMGEN_CXX_COMPILER, compile_flags, EOMGEN_DRIVER_REFERENCE_LIBRARIES);
-  if (std::system(command.c_str()) != 0) {
-    error = fmt::format("compiling the generated code failed (this is a bug in eomgen; please report it):\n{}",
-                        read_text(work / "compile.log"));
-    fs::remove_all(work);
+                                    compiler, compile_flags, EOMGEN_DRIVER_REFERENCE_LIBRARIES);
+  int status = std::system(command.c_str());
+  if (status != 0) {
+    // kept for inspection beside the cache's entries, under a name no lookup uses
+    fs::path kept = entry.parent_path() / fmt::format("failed-{}-{}", name, key);
+    std::error_code ec;
+    fs::remove_all(kept, ec);
+    fs::rename(work, kept, ec);
+    if (ec) kept = work;
+    compiler_missing = WIFEXITED(status) && WEXITSTATUS(status) == 127;
+    error = compiler_missing ? fmt::format("the C++ compiler '{}' was not found: install one (apt-get install g++) or name it in "
+                                  "EOMGEN_CXX; the generated header is kept in {}",
+                                  compiler, kept.string())
+                    : fmt::format("compiling the generated code with '{}' failed; the header and the full log are kept in "
+                                  "{} (a compiler that works on other models means a bug in eomgen: please report it). "
+                                  "The compiler said:\n{}",
+                                  compiler, kept.string(), first_lines(read_text(kept / "compile.log"), 20));
     return false;
   }
   std::error_code ec;
@@ -101,7 +131,7 @@ bool build_entry(const fs::path& entry, const std::string& header_text, const st
 }  // namespace
 
 std::unique_ptr<LoadedModel> load_compiled_model(const std::string& header_text, const std::string& name,
-                                                 std::string& error) {
+                                                 std::string& error, bool* compiler_missing) {
   std::string key = content_key(header_text);
   fs::path root = cache_directory();
   std::error_code ec;
@@ -119,8 +149,12 @@ std::unique_ptr<LoadedModel> load_compiled_model(const std::string& header_text,
     fs::rename(entry, trash, ec);
     fs::remove_all(trash, ec);
   }
-  std::cerr << fmt::format("eomgen: compiling {} with {} (cached in {})\n", name, EOMGEN_CXX_COMPILER, root.string());
-  if (!build_entry(entry, header_text, name, key, error)) return nullptr;
+  std::cerr << fmt::format("eomgen: compiling {} with {} (cached in {})\n", name, cxx_compiler(), root.string());
+  bool missing = false;
+  if (!build_entry(entry, header_text, name, key, error, missing)) {
+    if (compiler_missing) *compiler_missing = missing;
+    return nullptr;
+  }
   if (auto loaded = open_entry(entry / "model.so", key, true)) return loaded;
   error = fmt::format("the compiled model in {} cannot be loaded: {}", entry.string(), dlerror() ? dlerror() : "unknown");
   return nullptr;

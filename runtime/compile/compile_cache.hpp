@@ -38,8 +38,10 @@ std::string cache_directory();
 
 /// Finds the shared object for this header in the cache, or builds it (atomically:
 /// concurrent runs are safe, and a corrupt entry is rebuilt rather than loaded),
-/// then loads it. On failure returns null and says why in `error`.
+/// then loads it, compiling with $EOMGEN_CXX when set, else the compiler found at
+/// configure time. On failure returns null and says why in `error`; `compiler_missing`
+/// tells a missing compiler (the machine's set-up) from one that failed (a bug).
 std::unique_ptr<LoadedModel> load_compiled_model(const std::string& header_text, const std::string& model_name,
-                                                 std::string& error);
+                                                 std::string& error, bool* compiler_missing = nullptr);
 
 }  // namespace eomgen::runtime

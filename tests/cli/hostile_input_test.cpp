@@ -142,6 +142,60 @@ TEST(HostileInput, AnOutputFolderThatCannotBeMadeIsSaidBeforeTheWork) {
   }
 }
 
+TEST(HostileInput, ATerminatedSimulationKeepsItsRowsAndSaysTheyArePartial) {
+  std::string dir = temporary_directory();
+  ASSERT_EQ(run_eomgen("simulate '" + model_path("double_pendulum") + "' --t-end 0.1").status, 0) << "compiled first";
+  // RK4 at 1e-5 s over 1000 s: far longer than the test waits; TERM once the run has begun
+  std::string script = "EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                        std::string(EOMGEN_EXECUTABLE) + "' simulate '" + model_path("double_pendulum") +
+                        "' --t-end 1000 --dt-out 0.01 --integrator rk4 --step 1e-5 -o '" + dir + "/x.csv' 2> '" + dir +
+                        "/err.txt' > /dev/null & pid=$!; "
+                        "for i in $(seq 200); do grep -q simulating '" + dir + "/err.txt' 2>/dev/null && break; sleep 0.05; done; "
+                        "sleep 0.5; kill -TERM $pid; wait $pid; echo $? > '" + dir + "/status'\n";
+  std::ofstream(dir + "/run.sh") << script;
+  ASSERT_EQ(run_command("bash '" + dir + "/run.sh'"), 0);
+  std::string err = read_file(dir + "/err.txt");
+  EXPECT_EQ(read_file(dir + "/status"), "3\n") << err;
+  EXPECT_NE(err.find("the simulation was interrupted at t = "), std::string::npos) << err;
+  auto rows = read_numeric_csv(dir + "/x.csv");
+  EXPECT_GT(rows.size(), 1u) << "the rows computed so far are kept";
+  EXPECT_LT(rows.size(), 100001u) << "and only those";
+  EXPECT_NE(err.find("holds the " + std::to_string(rows.size()) + " rows computed before the interruption: a partial run"),
+            std::string::npos)
+      << err;
+}
+
+TEST(HostileInput, AMissingOrFailingCompilerIsSaidWithWhereTheHeaderIsKept) {
+  std::string cache = temporary_directory();
+  std::string model = pendulum_with("d = 0.0", "d = 0.0123", "compiled_here");  // a header no cache has yet
+  auto simulate_with = [&](const std::string& compiler) {
+    std::string dir = temporary_directory();
+    int status = run_command("EOMGEN_CACHE_DIR='" + cache + "' EOMGEN_CXX='" + compiler + "' '" +
+                             std::string(EOMGEN_EXECUTABLE) + "' simulate '" + model + "' 2> '" + dir + "/err.txt' > /dev/null");
+    return std::pair<int, std::string>{status, read_file(dir + "/err.txt")};
+  };
+  auto [missing_status, missing] = simulate_with("/no/such/c++");
+  EXPECT_EQ(missing_status, 2) << missing;
+  EXPECT_NE(missing.find("error: the C++ compiler '/no/such/c++' was not found: install one (apt-get install g++) or name it "
+                         "in EOMGEN_CXX; the generated header is kept in " + cache + "/failed-pendulum-"),
+            std::string::npos)
+      << missing;
+  // a "compiler" that fails with a message of its own
+  std::string failing = temporary_directory() + "/failing_cxx";
+  std::ofstream(failing) << "#!/bin/sh\necho 'driver.cpp:3:10: error: the compiler refused this' >&2\nexit 1\n";
+  fs::permissions(failing, fs::perms::owner_all);
+  auto [failed_status, failed] = simulate_with(failing);
+  EXPECT_EQ(failed_status, 1) << failed;
+  EXPECT_NE(failed.find("internal error: compiling the generated code with '" + failing + "' failed; the header and the full "
+                        "log are kept in " + cache + "/failed-pendulum-"),
+            std::string::npos)
+      << failed;
+  EXPECT_NE(failed.find("driver.cpp:3:10: error: the compiler refused this"), std::string::npos) << failed;
+  std::size_t at = failed.find(cache + "/failed-pendulum-");
+  std::string kept = failed.substr(at, failed.find(' ', at) - at);
+  EXPECT_TRUE(fs::exists(kept + "/pendulum.hpp")) << kept;
+}
+
 TEST(HostileInput, ADirectoryIsNamedAsOne) {
   CommandOutput r = run_eomgen("derive '" + temporary_directory() + "'");
   EXPECT_EQ(r.status, 2);
