@@ -196,6 +196,21 @@ TEST(HostileInput, AMissingOrFailingCompilerIsSaidWithWhereTheHeaderIsKept) {
   EXPECT_TRUE(fs::exists(kept + "/pendulum.hpp")) << kept;
 }
 
+TEST(HostileInput, TwoProcessesGeneratingIntoOneFolderLeaveAWholeFile) {
+  std::string dir = temporary_directory(), single = temporary_directory();
+  ASSERT_EQ(run_eomgen("generate '" + model_path("double_pendulum") + "' -o '" + single + "'").status, 0);
+  std::string whole = read_file(single + "/double_pendulum.hpp");
+  std::string generate = "'" + std::string(EOMGEN_EXECUTABLE) + "' generate '" + model_path("double_pendulum") + "' -o '" + dir +
+                         "' 2>/dev/null";
+  for (int round = 0; round < 5; ++round) {
+    ASSERT_EQ(run_command("(" + generate + " & " + generate + " & wait)"), 0);
+    EXPECT_EQ(read_file(dir + "/double_pendulum.hpp"), whole) << "round " << round;
+  }
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"double_pendulum.hpp"}) << "no temporary file is left";
+}
+
 TEST(HostileInput, ADirectoryIsNamedAsOne) {
   CommandOutput r = run_eomgen("derive '" + temporary_directory() + "'");
   EXPECT_EQ(r.status, 2);
