@@ -44,6 +44,7 @@ class Builder {
     m_.source = f_.path;
     check_header();
     declare_symbols();
+    read_definitions();
     read_initial_state();
     read_bodies();
     read_energies_and_forces();
@@ -75,7 +76,7 @@ class Builder {
 
   void declare(const std::string& name, SourceLocation where, const std::string& key,
                SymbolKind kind, std::size_t index, const char* what) {
-    static const char* kind_names[] = {"a parameter", "a coordinate", "an input"};
+    static const char* kind_names[] = {"a parameter", "a coordinate", "an input", "a definition"};
     if (!is_identifier(name)) {
       d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
       return;
@@ -127,6 +128,17 @@ class Builder {
     auto v = constant_value(*e, m_.symbols);
     if (!v) d_.error(text.where, text.key, "the value is not a finite real number");
     return v.value_or(0);
+  }
+
+  // in file order: each may use the symbols and the definitions before it
+  void read_definitions() {
+    Symbols& s = m_.symbols;
+    for (const NamedExpression& e : f_.definitions) {
+      auto value = parse(e.expression, allow_everything, "a definition");
+      declare(e.name, e.where, "definitions." + e.name, SymbolKind::definition, s.definitions.size(), "a definition");
+      s.definition_names.push_back(e.name);
+      s.definitions.push_back(value.value_or(0));
+    }
   }
 
   void read_initial_state() {

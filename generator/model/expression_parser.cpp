@@ -219,7 +219,10 @@ class Parser {
       fail(at, fmt::format("unknown coordinate '{}' in der()", inner), suggest(inner, symbols_.coordinate_names, "coordinates"));
     if (found->second.kind != SymbolKind::coordinate)
       fail(at, fmt::format("der() of {} '{}': only coordinates have velocities",
-                           found->second.kind == SymbolKind::parameter ? "parameter" : "input", inner),
+                           found->second.kind == SymbolKind::parameter ? "parameter"
+                           : found->second.kind == SymbolKind::input   ? "input"
+                                                                       : "definition",
+                           inner),
            "parameters are constant; inputs are given functions of time");
     if (!(rules_.allowed & allow_velocities))
       fail(start, fmt::format("velocity der({}) in {}", inner, rules_.context),
@@ -256,8 +259,32 @@ class Parser {
           fail(start, fmt::format("input '{}' in {}", name, rules_.context),
                "inputs may appear in forces, the potential's forces and outputs");
         return symbols_.inputs[info.index];
+      case SymbolKind::definition:
+        return definition(start, name, symbols_.definitions[info.index]);
     }
     return 0;
+  }
+
+  // a definition stands for its expression, which must be allowed where it is used
+  ex definition(std::size_t start, const std::string& name, const ex& value) {
+    auto refuse = [&](const std::string& what, const char* hint) {
+      fail(start, fmt::format("definition '{}' depends on {}, which {} may not", name, what, rules_.context), hint);
+    };
+    const Symbols& s = symbols_;
+    for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
+      if (!(rules_.allowed & allow_coordinates) && value.has(s.coordinates[i]))
+        refuse("the coordinate " + s.coordinate_names[i], "use it where the motion may appear");
+      if (!(rules_.allowed & allow_velocities) && value.has(s.velocities[i]))
+        refuse("the velocity der(" + s.coordinate_names[i] + ")", "velocities may appear in energies, forces and outputs");
+    }
+    if (!(rules_.allowed & allow_time) && value.has(s.time)) refuse("time t", "use it where time may appear");
+    for (std::size_t i = 0; i < s.inputs.size(); ++i)
+      if (!(rules_.allowed & allow_inputs) && value.has(s.inputs[i]))
+        refuse("the input " + s.input_names[i], "inputs may appear in forces and outputs");
+    for (std::size_t i = 0; i < s.parameters.size(); ++i)
+      if (!(rules_.allowed & allow_parameters) && value.has(s.parameters[i]))
+        refuse("the parameter " + s.parameter_names[i], "only numbers are allowed here");
+    return value;
   }
 
   // digits ['.' digits] [('e'|'E') ['+'|'-'] digits], read as an exact rational

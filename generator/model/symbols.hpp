@@ -10,7 +10,7 @@
 
 namespace eomgen {
 
-enum class SymbolKind { parameter, coordinate, input };
+enum class SymbolKind { parameter, coordinate, input, definition };
 
 struct SymbolInfo {
   SymbolKind kind;
@@ -31,6 +31,9 @@ struct Symbols {
   std::vector<std::string> input_names;
   std::vector<GiNaC::realsymbol> inputs;
   std::vector<double> input_defaults;
+  /// [definitions]: names for expressions, written into every expression that uses them
+  std::vector<std::string> definition_names;
+  std::vector<GiNaC::ex> definitions;
   std::map<std::string, SymbolInfo> by_name;
 
   std::size_t num_coordinates() const { return coordinates.size(); }

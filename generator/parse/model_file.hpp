@@ -135,6 +135,7 @@ struct ModelFile {
   std::optional<ExpressionText> kinetic, potential, dissipation;
   std::vector<ForceEntry> forces;
   std::vector<ConstraintEntry> constraints;
+  std::vector<NamedExpression> definitions;  // [definitions]: named expressions, in file order
   std::vector<NamedExpression> pseudo_velocities;
   std::vector<NamedExpression> outputs;
   std::vector<SceneEntry> scenes;

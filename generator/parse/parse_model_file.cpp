@@ -17,7 +17,7 @@ using toml_reader::Reader;
 
 const std::vector<std::string> top_level_keys = {
     "model", "parameters", "coordinates", "inputs", "particles", "rigid_bodies", "gravity",
-    "energy", "forces", "constraints", "pseudo_velocities", "outputs", "scenes", "variants"};
+    "energy", "forces", "constraints", "pseudo_velocities", "outputs", "scenes", "variants", "definitions"};
 
 // [model]: name, title, method
 void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
@@ -304,6 +304,7 @@ void read_document(Reader& r, const toml::table& doc, ModelFile& m) {
     else if (e.name == "constraints") read_constraints(r, n, m);
     else if (e.name == "pseudo_velocities") read_named_expressions(r, n, "pseudo_velocities", m.pseudo_velocities);
     else if (e.name == "outputs") read_named_expressions(r, n, "outputs", m.outputs);
+    else if (e.name == "definitions") read_named_expressions(r, n, "definitions", m.definitions);
     else if (e.name == "scenes") read_scenes(r, n, m);
     else if (e.name == "variants") read_variants(r, n, m);
   }
