@@ -4,6 +4,13 @@ namespace eomgen::runtime {
 
 namespace {
 
+// V⁻¹ B; Eigen's triangular solve reads the first entry of an empty right-hand side, so a
+// model without inputs gets its empty matrix directly
+Eigen::MatrixXcd solve_inputs(const Eigen::MatrixXcd& V, const Eigen::MatrixXd& B) {
+  if (B.cols() == 0) return Eigen::MatrixXcd(V.rows(), 0);
+  return V.partialPivLu().solve(B.cast<std::complex<double>>());
+}
+
 // x = V η with the Jordan chains (Hiller §6.3): the blocks stay coupled only along their chains
 PrincipalCoordinates jordan_coordinates(const Eigen::MatrixXd& A, const Eigen::MatrixXd& state_inputs,
                                         const JordanStructure& structure) {
@@ -20,7 +27,7 @@ PrincipalCoordinates jordan_coordinates(const Eigen::MatrixXd& A, const Eigen::M
   }
   p.kind = "jordan";
   p.eigenvectors = basis.V;
-  p.eigen_inputs = basis.V.partialPivLu().solve(state_inputs.cast<std::complex<double>>());
+  p.eigen_inputs = solve_inputs(basis.V, state_inputs);
   p.jordan_residual = basis.residual;
   for (const JordanBasis::Block& b : basis.blocks)
     for (int i = 0; i < b.size; ++i) p.eigenvalues.push_back(b.eigenvalue), p.chained.push_back(i + 1 < b.size);
@@ -47,7 +54,7 @@ PrincipalCoordinates principal_coordinates(const ModalAnalysis& modes, const Eig
   Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
   p.kind = "eigenvectors";
   p.eigenvectors = solver.eigenvectors();
-  p.eigen_inputs = p.eigenvectors.partialPivLu().solve(state_inputs.cast<std::complex<double>>());
+  p.eigen_inputs = solve_inputs(p.eigenvectors, state_inputs);
   for (Eigen::Index i = 0; i < A.rows(); ++i) p.eigenvalues.push_back(solver.eigenvalues()(i));
   return p;
 }

@@ -69,7 +69,8 @@ class Arkode : public Stepper {
     failure_time = reached;
     flag = status;
     reason = fmt::format("ARKODE ({}) stopped with {} ({})", implicit_ ? "DIRK" : "explicit RK",
-                         implicit_ ? ARKStepGetReturnFlagName(status) : ERKStepGetReturnFlagName(status), status);
+                         take_flag_name(implicit_ ? ARKStepGetReturnFlagName(status) : ERKStepGetReturnFlagName(status)),
+                         status);
     return false;
   }
 

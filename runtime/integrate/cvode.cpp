@@ -71,7 +71,7 @@ class Cvode : public Stepper {
     flag = status;
     reason = projection_failed ? std::string("the projection onto the constraints failed (Newton's method did not converge)")
                                : fmt::format("CVODE {} stopped with {} ({})", adams_ ? "Adams" : "BDF",
-                                             CVodeGetReturnFlagName(status), status);
+                                             take_flag_name(CVodeGetReturnFlagName(status)), status);
     return false;
   }
 

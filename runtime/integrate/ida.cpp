@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "integrate/stepper.hpp"
+#include "integrate/sundials_callbacks.hpp"
 
 namespace eomgen::runtime {
 namespace {
@@ -79,7 +80,7 @@ class Ida : public Stepper {
     if (status >= 0) return true;
     failure_time = reached;
     flag = status;
-    reason = fmt::format("IDA stopped with {} ({})", IDAGetReturnFlagName(status), status);
+    reason = fmt::format("IDA stopped with {} ({})", take_flag_name(IDAGetReturnFlagName(status)), status);
     return false;
   }
 

@@ -1,10 +1,17 @@
 #include "integrate/sundials_callbacks.hpp"
 
+#include <cstdlib>
 #include <vector>
 
 #include "integrate/stepper.hpp"
 
 namespace eomgen::runtime {
+
+std::string take_flag_name(char* name) {
+  std::string text = name ? name : "an unknown flag";
+  std::free(name);
+  return text;
+}
 
 int sundials_rhs(realtype t, N_Vector x, N_Vector xdot, void* data) {
   return (*static_cast<RightHandSide*>(data))(t, N_VGetArrayPointer(x), N_VGetArrayPointer(xdot));

@@ -2,6 +2,8 @@
 /// generated Jacobian, copied from row-major into SUNDIALS' column-major dense matrix.
 #pragma once
 
+#include <string>
+
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
@@ -12,6 +14,9 @@ int sundials_rhs(realtype t, N_Vector x, N_Vector xdot, void* data);
 /// ARKODE's step post-processing and CVODE's projection: onto the constraints.
 int sundials_project_in_place(realtype t, N_Vector x, void* data);
 int sundials_projection_correction(realtype t, N_Vector x, N_Vector correction, realtype tolerance, N_Vector error, void* data);
+/// The text of a SUNDIALS *GetReturnFlagName result, which the caller must free.
+std::string take_flag_name(char* name);
+
 int sundials_dense_jacobian(realtype t, N_Vector x, N_Vector fx, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector);
 
 }  // namespace eomgen::runtime
