@@ -10,6 +10,7 @@
 #include "analyse/term_pruning.hpp"
 #include "analyse/work_precision.hpp"
 #include "cli/loaded_model.hpp"
+#include "cli/scene_candidates.hpp"
 #include "derive/linear_model.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/operation_count.hpp"
@@ -82,9 +83,15 @@ class SceneAnalyser {
     LoadedProblem loaded;
     if (load_equations(*full.equations, {}, loaded)) return refused("the full model does not load");
     if (!reference(loaded)) return a_;
-    add_candidate("linear", "linearized about the equilibrium nearest the start", linear_model(loaded));
+    std::optional<Equations> linear = linear_model(loaded);
+    add_candidate("linear", "linearized about the equilibrium nearest the start", linear);
+    if (linear) {
+      ReducedCandidate modal = modal_candidate(loaded, *linear, equilibrium_, a_.scene, {reference_states_, a_.reference_outputs, a_.scene.accuracy});
+      add_candidate("reduced:modal", modal.description, modal.equations);
+    }
     add_pruned(loaded);
-    add_candidate("reduced", reduced_description(loaded), reduced_model(loaded));
+    ReducedCandidate reduced = reduced_candidate(path_, a_.scene, coordinate_ranges(loaded));
+    add_candidate("reduced", reduced.description, reduced.equations);
     for (const Variant& v : full.equations->variants_declared) {
       Derivation d = derive_model_file_for(path_, {scene_, v.name, {}});
       add_candidate("variant:" + v.name, "the declared variant " + v.name,
@@ -138,6 +145,7 @@ class SceneAnalyser {
       return std::nullopt;
     }
     std::string refusal;
+    equilibrium_ = eq.state;
     Equations linear = linearized_model(loaded.equations, eq.state, refusal);
     if (!refusal.empty()) {
       linear_refusal_ = refusal;
@@ -157,40 +165,16 @@ class SceneAnalyser {
                   p.refusal.empty() ? std::optional<Equations>(p.equations) : std::nullopt);
   }
 
-  // coordinates that the outputs do not name and whose motion stays below the accuracy, frozen
-  std::vector<std::string> negligible(const LoadedProblem& loaded) const {
+  // each coordinate's range of motion along the reference
+  std::vector<std::pair<std::string, double>> coordinate_ranges(const LoadedProblem& loaded) const {
     const Symbols& s = loaded.equations.symbols;
-    std::size_t n = s.num_coordinates();
-    std::vector<double> ranges(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::pair<std::string, double>> out;
+    for (std::size_t i = 0; i < s.num_coordinates(); ++i) {
       std::vector<double> q;
       for (const auto& x : reference_states_) q.push_back(x[i]);
-      ranges[i] = range_of(q);
-    }
-    double largest = *std::max_element(ranges.begin(), ranges.end());
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::string& q = s.coordinate_names[i];
-      bool named = std::any_of(a_.scene.outputs.begin(), a_.scene.outputs.end(),
-                               [&](const std::string& y) { return y == q || y == "der(" + q + ")"; });
-      if (!named && ranges[i] <= a_.scene.accuracy * largest && out.size() + 1 < n) out.push_back(q);
+      out.push_back({s.coordinate_names[i], range_of(q)});
     }
     return out;
-  }
-
-  std::string reduced_description(const LoadedProblem& loaded) const {
-    std::string names;
-    for (const std::string& q : negligible(loaded)) names += (names.empty() ? "" : ", ") + q;
-    return names.empty() ? "no coordinate stays negligible" : "frozen at their initial values: " + names;
-  }
-
-  std::optional<Equations> reduced_model(const LoadedProblem& loaded) {
-    std::vector<std::string> frozen = negligible(loaded);
-    if (frozen.empty()) return std::nullopt;
-    Derivation d = derive_model_file_for(path_, {scene_, "", frozen});
-    if (!d.diagnostics.empty()) return std::nullopt;
-    d.equations->model_name += "_reduced";
-    return *d.equations;
   }
 
   void add_candidate(const std::string& name, const std::string& description, std::optional<Equations> e,
@@ -291,7 +275,7 @@ class SceneAnalyser {
   const std::function<void(const std::string&)>& progress_;
   SceneAnalysis a_;
   std::vector<std::vector<double>> reference_states_;
-  std::vector<double> initial_;
+  std::vector<double> initial_, equilibrium_;
   std::string linear_refusal_;
   std::map<std::size_t, std::vector<std::vector<double>>> keep_outputs_;
   std::optional<std::size_t> cheapest_;  // the run of least work that met the accuracy so far

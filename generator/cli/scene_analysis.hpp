@@ -30,7 +30,7 @@ struct SceneRun {
 };
 
 struct SceneCandidate {
-  std::string model;        // "full", "linear", "reduced", "variant:NAME"
+  std::string model;        // "full", "linear", "reduced:modal", "pruned", "reduced", "variant:NAME"
   std::string description;  // what was simplified
   std::string refusal;      // why it was not run, or empty
   Equations equations;

@@ -34,7 +34,10 @@ bool vanishes(const Equations& e, std::size_t j) {
   return true;
 }
 
-void remove(Equations& e, std::size_t j) {
+
+}  // namespace
+
+void remove_coordinate(Equations& e, std::size_t j) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates();
   auto gone = [&](const ex& x) { return uses(x, s, j); };
@@ -60,8 +63,6 @@ void remove(Equations& e, std::size_t j) {
   e.has_linearization = false;
 }
 
-}  // namespace
-
 std::vector<std::string> remove_vanishing_coordinates(Equations& e, const std::vector<std::string>& keep) {
   std::vector<std::string> removed;
   if (e.method != "lagrange2" || e.constraints.size() > 0 || e.uses_pseudo_velocities()) return removed;
@@ -70,7 +71,7 @@ std::vector<std::string> remove_vanishing_coordinates(Equations& e, const std::v
     for (std::size_t j = 0; j < e.symbols.num_coordinates(); ++j)
       if (vanishes(e, j) && !kept(e, keep, j) && !uses(e.kinetic_energy + e.potential_energy + e.dissipation, e.symbols, j)) {
         removed.push_back(e.symbols.coordinate_names[j]);
-        remove(e, j);
+        remove_coordinate(e, j);
         changed = true;
         break;
       }

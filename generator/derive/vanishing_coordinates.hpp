@@ -11,6 +11,10 @@
 
 namespace eomgen {
 
+/// Coordinate j gone from M, f, the symbols, and with every output, body position and first
+/// integral that uses it (the caller has made sure nothing else of the motion does).
+void remove_coordinate(Equations& equations, std::size_t j);
+
 /// Removes such coordinates from `equations` (unconstrained models only) unless `keep` names
 /// them or an output that uses them; returns the names removed.
 std::vector<std::string> remove_vanishing_coordinates(Equations& equations, const std::vector<std::string>& keep);

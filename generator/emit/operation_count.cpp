@@ -30,8 +30,9 @@ long count_operations(const std::string& header, const std::string& function, st
       char c = value[i];
       bool unary = c == '-' && (i + 1 == value.size() || value[i + 1] != ' ');  // the printer writes binary minus as " - "
       if ((c == '+' || c == '*' || c == '/' || c == '-') && !unary) ++count;
-      // sin(, cos(, sqrt(: an elementary function costs about ten multiplications
-      if (c == '(' && i > 0 && std::isalpha(static_cast<unsigned char>(value[i - 1]))) count += operations_per_function;
+      // sin(, cos(, sqrt(: an elementary function costs about ten multiplications; T(0.5) is a constant
+      bool constant = i > 0 && value[i - 1] == 'T' && (i == 1 || !std::isalnum(static_cast<unsigned char>(value[i - 2])));
+      if (c == '(' && i > 0 && std::isalpha(static_cast<unsigned char>(value[i - 1])) && !constant) count += operations_per_function;
     }
   }
   return count;

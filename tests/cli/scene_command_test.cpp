@@ -14,25 +14,36 @@
 namespace eomgen::test {
 namespace {
 
-// φ(t) of the undamped pendulum (g = 9.81, l = 1) from φ(0) = phi0 at rest, at the given times
-std::vector<double> pendulum_by_rk4(double phi0, const std::vector<double>& times) {
-  const double w2 = 9.81, h = 1e-4;
-  auto f = [w2](double p, double v) { return std::array<double, 2>{v, -w2 * std::sin(p)}; };
-  std::vector<double> out;
-  double t = 0, p = phi0, v = 0;
+// the states at the given times of x' = f(t, x) from x(0) = x0, by RK4 at the step h
+template <std::size_t N, class F>
+std::vector<std::array<double, N>> rk4_at(const F& f, std::array<double, N> x, double h, const std::vector<double>& times) {
+  using State = std::array<double, N>;
+  auto axpy = [](const State& y, double a, const State& d) {
+    State z;
+    for (std::size_t i = 0; i < N; ++i) z[i] = y[i] + a * d[i];
+    return z;
+  };
+  double t = 0;
+  std::vector<State> out;
   for (double target : times) {
     while (t < target - 1e-12) {
       double step = std::min(h, target - t);
-      auto k1 = f(p, v);
-      auto k2 = f(p + step / 2 * k1[0], v + step / 2 * k1[1]);
-      auto k3 = f(p + step / 2 * k2[0], v + step / 2 * k2[1]);
-      auto k4 = f(p + step * k3[0], v + step * k3[1]);
-      p += step / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
-      v += step / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
+      State k1 = f(t, x), k2 = f(t + step / 2, axpy(x, step / 2, k1)), k3 = f(t + step / 2, axpy(x, step / 2, k2)),
+            k4 = f(t + step, axpy(x, step, k3));
+      for (std::size_t i = 0; i < N; ++i) x[i] += step / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
       t += step;
     }
-    out.push_back(p);
+    out.push_back(x);
   }
+  return out;
+}
+
+// φ(t) of the undamped pendulum (g = 9.81, l = 1) from φ(0) = phi0 at rest, at the given times
+std::vector<double> pendulum_by_rk4(double phi0, const std::vector<double>& times) {
+  using State = std::array<double, 2>;
+  auto f = [](double, const State& x) { return State{x[1], -9.81 * std::sin(x[0])}; };
+  std::vector<double> out;
+  for (const State& x : rk4_at(f, State{phi0, 0}, 1e-4, times)) out.push_back(x[0]);
   return out;
 }
 
@@ -84,32 +95,17 @@ TEST(SceneCommand, LargeSwingDoesNotPickTheLinearModel) {
 // φ1(t) of the double pendulum (l1 = l2 = 1, m1 = 1, g = 9.81) from φ1(0) = phi1 at rest, φ2(0) = 0, by RK4 at 1e-4 s,
 // from the textbook form of its equations (independent of eomgen's derivation)
 std::vector<double> double_pendulum_by_rk4(double phi1, double m2, const std::vector<double>& times) {
-  const double g = 9.81, m1 = 1, h = 1e-4;
+  const double g = 9.81, m1 = 1;
   using State = std::array<double, 4>;  // φ1, φ2, φ1', φ2'
-  auto f = [&](const State& x) {
+  auto f = [&](double, const State& x) {
     double d = x[0] - x[1], den = 2 * m1 + m2 - m2 * std::cos(2 * d);
     double a1 = (-g * (2 * m1 + m2) * std::sin(x[0]) - m2 * g * std::sin(x[0] - 2 * x[1]) -
                  2 * std::sin(d) * m2 * (x[3] * x[3] + x[2] * x[2] * std::cos(d))) / den;
     double a2 = 2 * std::sin(d) * (x[2] * x[2] * (m1 + m2) + g * (m1 + m2) * std::cos(x[0]) + x[3] * x[3] * m2 * std::cos(d)) / den;
     return State{x[2], x[3], a1, a2};
   };
-  auto axpy = [](const State& x, double a, const State& k) {
-    State y;
-    for (int i = 0; i < 4; ++i) y[i] = x[i] + a * k[i];
-    return y;
-  };
-  State x{phi1, 0, 0, 0};
-  double t = 0;
   std::vector<double> out;
-  for (double target : times) {
-    while (t < target - 1e-12) {
-      double step = std::min(h, target - t);
-      State k1 = f(x), k2 = f(axpy(x, step / 2, k1)), k3 = f(axpy(x, step / 2, k2)), k4 = f(axpy(x, step, k3));
-      for (int i = 0; i < 4; ++i) x[i] += step / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-      t += step;
-    }
-    out.push_back(x[0]);
-  }
+  for (const State& x : rk4_at(f, State{phi1, 0, 0, 0}, 1e-4, times)) out.push_back(x[0]);
   return out;
 }
 
@@ -135,30 +131,15 @@ TEST(SceneCommand, ALightSecondBobIsDroppedForAQuestionAboutTheFirstAngle) {
 // x1, x2 of the stiff chain (m = k = 1, K = 1e8, c = 2e4, x1(0) = 0.1) by RK4 at 2e-5 s, below the
 // explicit stability limit of its fast decay (about 2.8 / 3.4e4 s)
 std::vector<std::array<double, 2>> stiff_chain_by_rk4(const std::vector<double>& times) {
-  const double k = 1, K = 1e8, c = 2e4, h = 2e-5;
+  const double k = 1, K = 1e8, c = 2e4;
   using State = std::array<double, 6>;
-  auto f = [&](const State& x) {
+  auto f = [&](double, const State& x) {
     double stretch = x[2] - x[1], rate = x[5] - x[4];
     return State{x[3], x[4], x[5], -k * x[0] + k * (x[1] - x[0]),
                  -k * (x[1] - x[0]) + (k + K) * stretch + c * rate, -(k + K) * stretch - c * rate};
   };
-  auto axpy = [](const State& x, double a, const State& d) {
-    State y;
-    for (int i = 0; i < 6; ++i) y[i] = x[i] + a * d[i];
-    return y;
-  };
-  State x{0.1, 0, 0, 0, 0, 0};
-  double t = 0;
   std::vector<std::array<double, 2>> out;
-  for (double target : times) {
-    while (t < target - 1e-12) {
-      double step = std::min(h, target - t);
-      State k1 = f(x), k2 = f(axpy(x, step / 2, k1)), k3 = f(axpy(x, step / 2, k2)), k4 = f(axpy(x, step, k3));
-      for (int i = 0; i < 6; ++i) x[i] += step / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-      t += step;
-    }
-    out.push_back({x[0], x[1]});
-  }
+  for (const State& x : rk4_at(f, State{0.1, 0, 0, 0, 0, 0}, 2e-5, times)) out.push_back({x[0], x[1]});
   return out;
 }
 
@@ -181,6 +162,72 @@ TEST(SceneCommand, TheStiffLinkMadeRigidAnswersTheSlowSwing) {
   CommandOutput rigid = run_eomgen("derive '" + model_path("stiff_chain") + "' --variant rigid_link");
   EXPECT_NE(rigid.out.find("coordinates: x1, x2\n"), std::string::npos) << rigid.out;
   EXPECT_NE(rigid.out.find("M[1][1] = 2*m"), std::string::npos) << "masses 2 and 3 move as one\n" << rigid.out;
+}
+
+// the car's parameters (models/car_braking.toml) and the scenes' braking force, built up over 0.15 s
+struct Car {
+  double m = 1500, Iyy = 2400, a = 1.2, b = 1.5, h = 0.55, kf = 40000, kr = 44000, cf = 4000, cr = 4400, cw = 0.4;
+  double force(double t) const { return -0.8 * m * 9.81 * (1 - std::exp(-t / 0.15)); }
+};
+
+// the car by RK4 at 1e-4 s from Newton's and Euler's laws written here: m x'' = F − cw x'², and the
+// body's heave and pitch on its springs and dampers (forces at the axles, the brake's moment −h F)
+std::vector<std::array<double, 3>> car_by_rk4(const std::vector<double>& times) {
+  Car c;
+  using State = std::array<double, 6>;  // x, z, θ, x', z', θ'
+  auto f = [&](double t, const State& s) {
+    double front = c.kf * (s[1] - c.a * std::sin(s[2])) + c.cf * (s[4] - c.a * std::cos(s[2]) * s[5]);
+    double rear = c.kr * (s[1] + c.b * std::sin(s[2])) + c.cr * (s[4] + c.b * std::cos(s[2]) * s[5]);
+    double F = c.force(t);
+    return State{s[3], s[4], s[5], (F - c.cw * s[3] * s[3]) / c.m, -(front + rear) / c.m,
+                 (c.a * std::cos(s[2]) * front - c.b * std::cos(s[2]) * rear - c.h * F) / c.Iyy};
+  };
+  std::vector<std::array<double, 3>> out;
+  for (const State& x : rk4_at(f, State{0, 0, 0, 20, 0, 0}, 1e-4, times))
+    out.push_back({x[0], x[2], x[1] - c.a * std::sin(x[2])});  // x, θ, front travel
+  return out;
+}
+
+// the largest error of column `column` of chosen.csv against reference[.][k], relative to the reference's range
+double relative_error(const std::vector<std::vector<double>>& rows, std::size_t column,
+                      const std::vector<std::array<double, 3>>& reference, std::size_t k) {
+  double low = INFINITY, high = -INFINITY, error = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    low = std::min(low, reference[i][k]), high = std::max(high, reference[i][k]);
+    error = std::max(error, std::abs(rows[i][column] - reference[i][k]));
+  }
+  return error / (high - low);
+}
+
+TEST(SceneCommand, TheStoppingDistanceIsAPointMassQuestion) {
+  std::string dir = temporary_directory() + "/stopping";
+  Choice c = run_scene(model_path("car_braking"), "stopping", dir);
+  EXPECT_EQ(c.model, "reduced") << "heave and pitch dropped: they do not act back on x";
+  std::string header;
+  auto rows = read_numeric_csv(dir + "/chosen.csv", &header);
+  ASSERT_EQ(header, "t,x,der(x)");
+  std::vector<double> times;
+  for (const auto& row : rows) times.push_back(row[0]);
+  EXPECT_LE(relative_error(rows, 1, car_by_rk4(times), 0), 1e-3) << "the scene's accuracy on x";
+  std::string report = read_file(dir + "/report.md");
+  EXPECT_NE(report.find("dropped, as they do not feed back into the outputs: z, theta"), std::string::npos) << report;
+}
+
+TEST(SceneCommand, TheNoseDiveIsTheLinearBodyInTheModesTheStopExcites) {
+  std::string dir = temporary_directory() + "/nose_dive";
+  Choice c = run_scene(model_path("car_braking"), "nose_dive", dir);
+  EXPECT_EQ(c.model, "reduced:modal") << "heave and pitch, linear, without the rigid-body motion along the road";
+  auto rows = read_numeric_csv(dir + "/chosen.csv");
+  std::vector<double> times;
+  for (const auto& row : rows) times.push_back(row[0]);
+  auto reference = car_by_rk4(times);
+  EXPECT_LE(relative_error(rows, 1, reference, 1), 1e-2) << "theta";
+  EXPECT_LE(relative_error(rows, 2, reference, 2), 1e-2) << "front_travel";
+  std::string report = read_file(dir + "/report.md");
+  EXPECT_NE(report.find("the linear model in 2 of its 3 modes"), std::string::npos) << report;
+  std::string chosen = read_file(dir + "/car_braking_linear_modal.hpp");
+  EXPECT_NE(chosen.find("inline constexpr std::array<const char*, num_coordinates> coordinate_names{{\"eta2\", \"eta3\"}}"),
+            std::string::npos);
 }
 
 std::string pendulum_with(const std::string& extra) {
