@@ -1,7 +1,8 @@
 /// @file `eomgen scene`: the cheapest model and integrator that answer a scene's question
 /// to its accuracy (Hiller §1.1). Candidates from cheap to full (the linearization about
-/// the equilibrium nearest the start, the model with negligible coordinates frozen, the
-/// declared variants, the full model), each run with every applicable integrator over a
+/// the equilibrium nearest the start, and it in the modes the scene excites; the full model
+/// without negligible terms; without the coordinates the outputs do not need; the declared
+/// variants; the full model), each run with every applicable integrator over a
 /// range of tolerances, its error on the scene's outputs measured against the full
 /// model's reference and its work counted in operations of the generated code.
 #pragma once
