@@ -10,6 +10,7 @@
 #include "analyse/work_precision.hpp"
 #include "cli/commands.hpp"
 #include "cli/loaded_model.hpp"
+#include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"
 #include "report/work_precision_report.hpp"
 
@@ -112,13 +113,22 @@ int bench(const Options& o) {
   std::cerr << fmt::format("eomgen: bench {}: {} integrators, reference first\n", m.name, integrators->size());
   runtime::WorkPrecision result;
   try {
+    StopOnSignal stop;
+    s.stop = &StopOnSignal::flag();
     result = runtime::work_precision(loaded.problem, x0, s,
                                      [](const std::string& line) { std::cerr << "eomgen: bench: " << line << "\n"; });
   } catch (const std::runtime_error& why) {
     std::cerr << "eomgen: " << why.what() << "\n";
     return exit_numerical_failure;
   }
+  if (result.interrupted && result.runs.empty()) {
+    std::cerr << "eomgen: bench interrupted (SIGINT or SIGTERM) during the reference run: nothing written\n";
+    return exit_numerical_failure;
+  }
   std::string report = runtime::work_precision_markdown(m.name, result, s, loaded.compiled->reference_scalar);
+  std::string partial = fmt::format("the bench was interrupted (SIGINT or SIGTERM) after {} runs: a partial bench, whose "
+                                    "verdict covers those runs only", result.runs.size());
+  if (result.interrupted) report.insert(report.find('\n') + 1, "\n**Partial:** " + partial + ".\n");
   std::vector<std::pair<std::string, std::string>> files{{"report.md", report},
                                                          {"runs.csv", runtime::work_precision_csv(result)}};
   if (!result.energy.empty()) files.push_back({"energy.csv", runtime::energy_csv(result)});
@@ -133,7 +143,8 @@ int bench(const Options& o) {
   std::string verdict = report.substr(report.find("## Verdict"));
   verdict = verdict.substr(0, verdict.find("\n## Runs"));
   std::cout << verdict << fmt::format("\nReport, runs and charts in {}/\n", directory);
-  return exit_success;
+  if (result.interrupted) std::cerr << "eomgen: " << partial << "; kept in " << directory << "/\n";
+  return result.interrupted ? exit_numerical_failure : exit_success;
 }
 
 }  // namespace

@@ -71,8 +71,9 @@ std::vector<std::pair<std::string, double>> run_settings(const std::string& inte
 
 class SceneAnalyser {
  public:
-  SceneAnalyser(const std::string& path, const std::string& scene, const std::function<void(const std::string&)>& progress)
-      : path_(path), scene_(scene), progress_(progress) {}
+  SceneAnalyser(const std::string& path, const std::string& scene, const std::function<void(const std::string&)>& progress,
+                const std::atomic<bool>* stop)
+      : path_(path), scene_(scene), progress_(progress), stop_(stop) {}
 
   SceneAnalysis run() {
     Derivation full = derive_model_file_for(path_, {scene_, "", {}});
@@ -98,7 +99,7 @@ class SceneAnalyser {
                     d.diagnostics.empty() ? std::optional<Equations>(*d.equations) : std::nullopt, d.diagnostics.format());
     }
     add_candidate("full", "the model as written", *full.equations);
-    for (std::size_t c = 0; c < a_.candidates.size(); ++c) run_candidate(c);
+    for (std::size_t c = 0; c < a_.candidates.size() && !a_.interrupted; ++c) run_candidate(c);
     choose();
     return a_;
   }
@@ -118,12 +119,17 @@ class SceneAnalyser {
     bool extrapolation = loaded.problem.reference && !(stiffness > 1e3);
     s.integrator = extrapolation ? "reference" : "cvode-bdf";
     s.rtol = 1e-12, s.atol = 1e-14;
+    s.stop = stop_;
     a_.reference_integrator = extrapolation ? "reference"
                               : loaded.problem.reference
                                   ? fmt::format("cvode-bdf at rtol 1e-12 (the model is stiff, ratio {:.2g})", stiffness)
                                   : "cvode-bdf at rtol 1e-12";
     progress_(fmt::format("scene {}: reference of the full model with {}", a_.scene.name, a_.reference_integrator));
     runtime::SimulationResult r = runtime::simulate(loaded.problem, loaded.initial_state, s);
+    if (r.interrupted) {
+      a_.interrupted = true;
+      return false;
+    }
     if (r.failed) {
       a_.refusal = "the reference run failed: " + r.failure;
       return false;
@@ -206,7 +212,7 @@ class SceneAnalyser {
       if (integrator == "reference" || !runtime::integrator_refusal(m, integrator).empty()) continue;
       for (const auto& [kind, value] : run_settings(integrator, a_.scene.dt_out)) {
         runtime::SimulationSettings s;
-        s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out, s.integrator = integrator;
+        s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out, s.integrator = integrator, s.stop = stop_;
         if (kind == "step") s.step = value;
         else s.rtol = value, s.atol = value / 100;
         // a run past the work of the cheapest accepted one cannot be chosen; it runs on to ten
@@ -220,6 +226,10 @@ class SceneAnalyser {
           r = runtime::simulate(loaded.problem, loaded.initial_state, s);
         } catch (const std::exception& why) {
           r.failed = true, r.failure = why.what();
+        }
+        if (r.interrupted) {
+          a_.interrupted = true;
+          return;
         }
         run.cpu_seconds = r.statistics.wall_seconds;
         run.rhs_evaluations = r.statistics.rhs_evaluations, run.jacobian_evaluations = r.statistics.jacobian_evaluations;
@@ -273,6 +283,7 @@ class SceneAnalyser {
 
   const std::string &path_, &scene_;
   const std::function<void(const std::string&)>& progress_;
+  const std::atomic<bool>* stop_;
   SceneAnalysis a_;
   std::vector<std::vector<double>> reference_states_;
   std::vector<double> initial_, equilibrium_;
@@ -284,8 +295,8 @@ class SceneAnalyser {
 }  // namespace
 
 SceneAnalysis analyse_scene(const std::string& model_path, const std::string& scene,
-                            const std::function<void(const std::string&)>& progress) {
-  return SceneAnalyser(model_path, scene, progress).run();
+                            const std::function<void(const std::string&)>& progress, const std::atomic<bool>* stop) {
+  return SceneAnalyser(model_path, scene, progress, stop).run();
 }
 
 }  // namespace eomgen::cli

@@ -7,6 +7,7 @@
 /// model's reference and its work counted in operations of the generated code.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -51,10 +52,12 @@ struct SceneAnalysis {
   std::optional<std::size_t> chosen, closest;  // indices into runs
   std::vector<std::vector<double>> chosen_outputs;  // per output, per time
   std::string noise_note;  // when the choice is within measurement noise of another model's run
+  bool interrupted = false;  // stopped by a signal: the choice is among the runs so far
 };
 
-/// `progress` gets one line per candidate.
+/// `progress` gets one line per candidate. When `stop` is set (SIGINT, SIGTERM), the run in hand
+/// is left out and no further one starts.
 SceneAnalysis analyse_scene(const std::string& model_path, const std::string& scene,
-                            const std::function<void(const std::string&)>& progress);
+                            const std::function<void(const std::string&)>& progress, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace eomgen::cli

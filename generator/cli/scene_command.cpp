@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_analysis.hpp"
 #include "cli/scene_report.hpp"
+#include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"
 
 namespace eomgen::cli {
@@ -19,7 +20,13 @@ int scene(const std::string& model, const std::string& name, const std::string& 
     std::cerr << "eomgen: error: " << failure << "\n";
     return exit_user_error;
   }
-  SceneAnalysis a = analyse_scene(model, name, [](const std::string& line) { std::cerr << "eomgen: " << line << "\n"; });
+  StopOnSignal stop;
+  SceneAnalysis a = analyse_scene(model, name, [](const std::string& line) { std::cerr << "eomgen: " << line << "\n"; },
+                                  &StopOnSignal::flag());
+  if (a.interrupted && a.runs.empty()) {
+    std::cerr << "eomgen: scene interrupted (SIGINT or SIGTERM) before any candidate ran: nothing written\n";
+    return exit_numerical_failure;
+  }
   if (!a.refusal.empty()) {
     std::cerr << a.refusal << (a.refusal.back() == '\n' ? "" : "\n");
     return exit_user_error;
@@ -32,6 +39,10 @@ int scene(const std::string& model, const std::string& name, const std::string& 
     }
     std::cerr << fmt::format("eomgen: wrote report.md, candidates.csv, error_vs_work.png{} to {}\n",
                              a.chosen ? ", chosen.csv and the chosen header" : "", directory);
+  }
+  if (a.interrupted) {
+    std::cerr << fmt::format("eomgen: the scene was interrupted after {} runs: the report is partial\n", a.runs.size());
+    return exit_numerical_failure;
   }
   if (!a.chosen) {
     std::cerr << "eomgen: no candidate reaches the scene's accuracy\n";

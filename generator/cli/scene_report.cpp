@@ -1,5 +1,6 @@
 #include "cli/scene_report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -48,7 +49,15 @@ std::string run_json(const SceneAnalysis& a, const SceneRun& r) {
                      r.rejected_because.empty() ? "null" : "\"" + json_escape(r.rejected_because) + "\"");
 }
 
+// a candidate the interruption came before
+bool never_ran(const SceneAnalysis& a, std::size_t c) {
+  return a.interrupted && std::none_of(a.runs.begin(), a.runs.end(), [c](const SceneRun& r) { return r.candidate == c; });
+}
+
 std::string verdict(const SceneAnalysis& a) {
+  if (a.interrupted)
+    return fmt::format("interrupted (SIGINT or SIGTERM) after {} runs: a partial scene; {}", a.runs.size(),
+                       a.chosen ? "cheapest so far: " + run_line(a, a.runs[*a.chosen]) : "no run so far meets the accuracy");
   if (a.chosen) return "chosen: " + run_line(a, a.runs[*a.chosen]);
   return a.closest ? "no candidate reaches the accuracy; closest: " + run_line(a, a.runs[*a.closest])
                    : "no candidate ran";
@@ -67,6 +76,7 @@ void print_scene_text(const SceneAnalysis& a) {
   for (std::size_t c = 0; c < a.candidates.size(); ++c) {
     const SceneCandidate& k = a.candidates[c];
     if (!k.refusal.empty()) std::cout << fmt::format("  {}: not run: {}\n", k.model, k.refusal);
+    else if (never_ran(a, c)) std::cout << fmt::format("  {} ({}): not run: the scene was interrupted first\n", k.model, k.description);
     else if (best[c])
       std::cout << fmt::format("  {} ({}): best run {} ({}), error {:.3g}, work {:.4g}{}\n", k.model, k.description,
                                best[c]->integrator, best[c]->setting, best[c]->error, best[c]->work,
@@ -85,11 +95,11 @@ void print_scene_json(const SceneAnalysis& a) {
   for (const std::string& y : a.scene.outputs) outputs += fmt::format("{}\"{}\"", outputs.empty() ? "" : ", ", json_escape(y));
   std::cout << fmt::format("{{\"scene\": \"{}\", \"model\": \"{}\", \"outputs\": [{}], \"accuracy\": {}, \"absolute\": {}, "
                            "\"reference\": {{\"integrator\": \"{}\", \"error_estimate\": {}}}, \"candidates\": [{}], "
-                           "\"chosen\": {}, \"closest\": {}, \"noise_note\": {}}}\n",
+                           "\"chosen\": {}, \"closest\": {}, \"noise_note\": {}, \"partial\": {}}}\n",
                            json_escape(a.scene.name), json_escape(a.model_name), outputs, number(a.scene.accuracy),
                            number(a.scene.absolute), a.reference_integrator, number(a.reference_error_estimate), runs,
                            a.chosen ? run_json(a, a.runs[*a.chosen]) : "null", a.closest ? run_json(a, a.runs[*a.closest]) : "null",
-                           a.noise_note.empty() ? "null" : "\"" + json_escape(a.noise_note) + "\"");
+                           a.noise_note.empty() ? "null" : "\"" + json_escape(a.noise_note) + "\"", a.interrupted ? "true" : "false");
 }
 
 std::string write_scene_files(const SceneAnalysis& a, const std::string& directory) {
@@ -102,7 +112,9 @@ std::string write_scene_files(const SceneAnalysis& a, const std::string& directo
                                a.scene.name, a.model_name, verdict(a));
   std::vector<const SceneRun*> best = best_per_candidate(a);
   for (std::size_t c = 0; c < a.candidates.size(); ++c)
-    md += best[c] ? fmt::format("| {} | {} | {} {} | {:.3g} | {:.4g} |\n", a.candidates[c].model, a.candidates[c].description,
+    md += never_ran(a, c) ? fmt::format("| {} | {} | not run: the scene was interrupted first | | |\n", a.candidates[c].model,
+                                        a.candidates[c].description)
+          : best[c] ? fmt::format("| {} | {} | {} {} | {:.3g} | {:.4g} |\n", a.candidates[c].model, a.candidates[c].description,
                                 best[c]->integrator, best[c]->setting, best[c]->error, best[c]->work)
                   : a.candidates[c].refusal.empty()
                       ? fmt::format("| {} | {} | no run met the accuracy within ten times the work of a cheaper run | | |\n", a.candidates[c].model,

@@ -17,6 +17,7 @@
 #include "compile/compile_cache.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
+#include "cli/stop_signal.hpp"
 #include "pipeline.hpp"
 #include "report/reports.hpp"
 #include "simulation.hpp"
@@ -24,9 +25,6 @@
 namespace eomgen::cli {
 
 namespace {
-
-std::atomic<bool> stop_requested{false};
-extern "C" void on_stop_signal(int) { stop_requested = true; }
 
 // an explicit method on a stiff model: its steps are set by stability, not by accuracy
 void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0, const runtime::SimulationSettings& s,
@@ -61,6 +59,11 @@ std::string json_escape(const std::string& s) {
 
 int simulate_model(const SimulationOptions& options) {
   SimulationOptions o = options;
+  // the file before the run that fills it
+  if (std::string refusal = o.csv.empty() ? "" : output_file_refusal(o.csv); !refusal.empty()) {
+    std::cerr << "eomgen: error: -o: " << refusal << "\n";
+    return exit_user_error;
+  }
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded, {}, {o.scene, o.variant, {}})) return *status;
   if (!o.scene.empty()) apply_scene_times(loaded.equations, o);
@@ -112,17 +115,14 @@ int simulate_model(const SimulationOptions& options) {
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
   runtime::SimulationResult result;
   // Ctrl-C or a TERM ends the run at the next output time; what was computed is written
-  stop_requested = false;
-  settings.stop = &stop_requested;
-  auto previous_interrupt = std::signal(SIGINT, on_stop_signal), previous_terminate = std::signal(SIGTERM, on_stop_signal);
   try {
+    StopOnSignal stop;
+    settings.stop = &StopOnSignal::flag();
     result = runtime::simulate(problem, x0, settings);
   } catch (const std::invalid_argument& why) {
-    std::signal(SIGINT, previous_interrupt), std::signal(SIGTERM, previous_terminate);
     std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", settings.integrator, why.what());
     return exit_user_error;
   }
-  std::signal(SIGINT, previous_interrupt), std::signal(SIGTERM, previous_terminate);
   for (const std::string& w : result.warnings) std::cerr << "eomgen: warning: " << w << "\n";
   stiffness_warning(problem, x0, settings, result);
   if (result.failed && result.trajectory.times.empty()) {

@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/eigenvalue_sweep_output.hpp"
 #include "cli/loaded_model.hpp"
+#include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"
 #include "derive/initial_state.hpp"
 #include "report/reports.hpp"
@@ -26,8 +27,6 @@ namespace eomgen::cli {
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-extern "C" void on_interrupt(int) { interrupted = true; }
 
 struct Options {
   std::string model;
@@ -116,12 +115,13 @@ int run_eigenvalue_sweep(const Options& o, const LoadedProblem& loaded, const ru
     std::string failed;
     return initial_state(loaded.equations, parameters, failed);
   };
-  interrupted = false;
-  auto previous = std::signal(SIGINT, on_interrupt);
   bool finished = false;
-  runtime::EigenvalueSweep s =
-      runtime::sweep_eigenvalues(loaded.problem, start, !o.at.empty(), *axis, 1e-10, o.threads, progress_line(finished), interrupted);
-  std::signal(SIGINT, previous);
+  runtime::EigenvalueSweep s;
+  {
+    StopOnSignal stop;
+    s = runtime::sweep_eigenvalues(loaded.problem, start, !o.at.empty(), *axis, 1e-10, o.threads, progress_line(finished),
+                                   StopOnSignal::flag());
+  }
   if (s.interrupted) std::cerr << "\neomgen sweep: interrupted; no crossings are reported\n";
   if (!o.csv.empty())
     if (std::string failure = write_file_atomically(o.csv, eigenvalue_sweep_csv(s, name)); !failure.empty()) {
@@ -165,12 +165,12 @@ int run_sweep(const Options& o) {
   std::string x_name, y_name;
   auto x = parse_axis(m, o.params[0], x_name), y = parse_axis(m, o.params[1], y_name);
   if (!x || !y) return exit_user_error;
-  interrupted = false;
-  auto previous = std::signal(SIGINT, on_interrupt);
   bool finished = false;
-  runtime::StabilityMap map =
-      runtime::sweep(loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress_line(finished), interrupted);
-  std::signal(SIGINT, previous);
+  runtime::StabilityMap map;
+  {
+    StopOnSignal stop;
+    map = runtime::sweep(loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress_line(finished), StopOnSignal::flag());
+  }
   if (map.interrupted) std::cerr << "\neomgen sweep: interrupted; keeping the points computed so far\n";
   std::vector<double> margin;
   if (o.symbolic) margin = symbolic_margin(loaded, map, x_name, y_name, eq.state);

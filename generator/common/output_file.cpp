@@ -10,7 +10,20 @@
 
 namespace eomgen {
 
+std::string output_file_refusal(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::is_directory(path, error))
+    return path + " is a folder, not a file: name a file in it";
+  fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  if (!fs::is_directory(folder, error)) return "cannot write " + path + ": the folder " + folder.string() + " does not exist";
+  if (::access(folder.c_str(), W_OK) != 0) return "cannot write " + path + ": the folder " + folder.string() + " is not writable";
+  return {};
+}
+
 std::string write_file_atomically(const std::string& path, const std::string& text) {
+  if (std::string refusal = output_file_refusal(path); !refusal.empty()) return refusal;
   std::string temporary = path + ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

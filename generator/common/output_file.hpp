@@ -9,6 +9,10 @@ namespace eomgen {
 /// Returns an empty string on success, else what went wrong.
 std::string write_file_atomically(const std::string& path, const std::string& text);
 
+/// Why `path` cannot take an output file, said before the work that fills it: it is a
+/// folder, or its folder does not exist or cannot be written. Empty when it can.
+std::string output_file_refusal(const std::string& path);
+
 /// Creates `directory` (and its parents) for output, before the work that fills it.
 /// Returns an empty string on success, else what went wrong.
 std::string make_output_directory(const std::string& directory);

@@ -133,8 +133,11 @@ class Builder {
   // in file order: each may use the symbols and the definitions before it
   void read_definitions() {
     Symbols& s = m_.symbols;
+    std::vector<std::string> later;
+    for (const NamedExpression& e : f_.definitions) later.push_back(e.name);
     for (const NamedExpression& e : f_.definitions) {
-      auto value = parse(e.expression, allow_everything, "a definition");
+      auto value = parse_expression(e.expression, m_.symbols, {allow_everything, "a definition", &later}, d_);
+      later.erase(later.begin());
       declare(e.name, e.where, "definitions." + e.name, SymbolKind::definition, s.definitions.size(), "a definition");
       s.definition_names.push_back(e.name);
       s.definitions.push_back(value.value_or(0));

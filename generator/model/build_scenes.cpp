@@ -1,5 +1,8 @@
 /// @file [scenes.NAME] and [variants.NAME] checked against the model's symbols, each
 /// mistake located: unknown names with a suggestion, inputs that depend on the state.
+#include <algorithm>
+#include <cctype>
+
 #include <fmt/format.h>
 
 #include "model/expression_parser.hpp"
@@ -68,10 +71,31 @@ class SceneBuilder {
     return s;
   }
 
+  // the variant's model is named MODEL_NAME: its header's file name and namespace
+  void check_variant_name(const VariantEntry& e, const std::string& key) {
+    if (!is_identifier(e.name)) {
+      d_.error(e.where, key, fmt::format("'{}' cannot name a variant: the variant's model is {}_{}", e.name, f_.name, e.name),
+               "use letters, digits and _, starting with a letter");
+      return;
+    }
+    for (const VariantEntry& other : f_.variants) {
+      if (&other == &e) break;
+      if (other.name.size() == e.name.size() &&
+          std::equal(other.name.begin(), other.name.end(), e.name.begin(),
+                     [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b)); }))
+        d_.error(e.where, key,
+                 fmt::format("variants '{}' and '{}' differ only in case: their headers {}_{}.hpp and {}_{}.hpp are one file on a "
+                             "case-insensitive file system",
+                             other.name, e.name, f_.name, other.name, f_.name, e.name),
+                 "rename one of them");
+    }
+  }
+
   Variant variant(const VariantEntry& e) {
     Variant v;
     std::string key = "variants." + e.name;
     v.name = e.name;
+    check_variant_name(e, key);
     const auto& parameters = m_.symbols.parameter_names;
     const auto& coordinates = m_.symbols.coordinate_names;
     for (const NameText& p : e.neglect)

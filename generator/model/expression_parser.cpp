@@ -241,6 +241,10 @@ class Parser {
     if (found == symbols_.by_name.end()) {
       if (std::find(function_names.begin(), function_names.end(), name) != function_names.end())
         fail(start, fmt::format("function '{}' needs an argument", name), fmt::format("write {}(x)", name));
+      if (rules_.defined_later &&
+          std::find(rules_.defined_later->begin(), rules_.defined_later->end(), name) != rules_.defined_later->end())
+        fail(start, fmt::format("'{}' is not defined yet: [definitions] are read from the top", name),
+             "a definition may use only those above it (so that none depends on itself): move it up");
       fail(start, fmt::format("unknown symbol '{}'", name), suggest(name, symbols_.all_names(), "symbols"));
     }
     const SymbolInfo& info = found->second;

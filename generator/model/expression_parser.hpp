@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -29,6 +30,8 @@ enum Allow : unsigned {
 struct ExpressionRules {
   unsigned allowed = allow_everything;
   const char* context = "an expression";  // e.g. "a position", for messages
+  /// definitions further down [definitions], not yet usable: named as such when used
+  const std::vector<std::string>* defined_later = nullptr;
 };
 
 /// One elementary rotation rot_axis(angle) of a product of rotations.

@@ -136,12 +136,18 @@ WorkPrecision work_precision(const Problem& problem, const std::vector<double>& 
   base.t_end = w.t_end;
   base.dt_out = w.dt_out;
   base.max_steps = 2'000'000;
+  base.stop = w.stop;
+  auto stopped = [&] { return w.stop && w.stop->load(); };
   {
     SimulationSettings s = base;
     s.integrator = "reference";
     double start = cpu_now();
     SimulationResult r = simulate(problem, x0, s);
     out.reference_seconds = cpu_now() - start;
+    if (r.interrupted) {
+      out.interrupted = true;
+      return out;
+    }
     if (r.failed) throw std::runtime_error("the reference solution failed: " + r.failure);
     out.reference = r.trajectory;
     out.reference_error_estimate = r.error_estimate;
@@ -155,6 +161,10 @@ WorkPrecision work_precision(const Problem& problem, const std::vector<double>& 
       if (fixed_step(integrator)) s.step = value;
       else s.rtol = value, s.atol = value / 100;
       WorkPrecisionRun run = measure(problem, x0, s, out.reference);
+      if (stopped()) {
+        out.interrupted = true;
+        return out;
+      }
       progress(fmt::format("{} {} {:.0e}: error {:.2e}, {:.4f} s CPU, {} rhs evaluations{}", integrator,
                            fixed_step(integrator) ? "step" : "rtol", value, run.error, run.cpu_seconds,
                            run.rhs_evaluations, run.failure.empty() ? "" : " (failed: " + run.failure + ")"));

@@ -3,6 +3,7 @@
 /// solution and its cost, and the long-horizon energy error of each method.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,6 +41,8 @@ struct WorkPrecisionSettings {
   bool energy_histories = false;   // conservative models: the long-horizon energy error
   double energy_horizon = 1000, energy_tolerance = 1e-6, energy_step = 0.01;
   std::string horizon_integrator;  // non-empty: also the accuracy horizons with this integrator
+  /// When set (SIGINT, SIGTERM), the work ends after the run in hand, which is left out
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct WorkPrecision {
@@ -50,6 +53,7 @@ struct WorkPrecision {
   std::vector<AccuracyHorizon> horizons;
   double lyapunov_estimate = NAN;  // ln 10 over the horizon gained per decade of tolerance
   double stiffness_ratio = 0;  // see stiffness_ratio()
+  bool interrupted = false;    // stopped by WorkPrecisionSettings::stop: the runs so far (none if during the reference)
 };
 
 /// The fastest decay rate (largest −Re λ) over the slowest rate (smallest nonzero |λ|) of

@@ -165,6 +165,80 @@ TEST(HostileInput, ATerminatedSimulationKeepsItsRowsAndSaysTheyArePartial) {
       << err;
 }
 
+// runs `arguments` in the background, sends `signal` once a line of standard error contains `started`
+// (and 0.3 s more), and returns the exit status with standard error and output
+struct Interrupted {
+  std::string status, err, out;
+};
+Interrupted interrupt_when(const std::string& arguments, const std::string& started, const char* signal, const std::string& dir) {
+  std::string script = "cd '" + dir + "' || exit 1\nEOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                       std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " 2> err.txt > out.txt & pid=$!; "
+                       "for i in $(seq 600); do grep -q '" + started + "' '" + dir + "/err.txt' 2>/dev/null && break; sleep 0.05; done; "
+                       "sleep 0.3; kill -" + signal + " $pid; wait $pid; echo $? > '" + dir + "/status'\n";
+  std::ofstream(dir + "/run.sh") << script;
+  if (run_command("bash '" + dir + "/run.sh'") != 0) return {};
+  return {read_file(dir + "/status"), read_file(dir + "/err.txt"), read_file(dir + "/out.txt")};
+}
+
+TEST(HostileInput, AnInterruptedBenchKeepsItsRunsAndSaysTheyArePartial) {
+  std::string dir = temporary_directory();
+  // RK4 down to a step of 1e-5 s over 50 s: the last runs take seconds; INT after the first run
+  Interrupted r = interrupt_when("bench '" + model_path("double_pendulum") +
+                                     "' --t-end 50 --integrators rk4 --step-count 14 -o bench",
+                                 "bench: rk4", "INT", dir);
+  EXPECT_EQ(r.status, "3\n") << r.err;
+  std::smatch runs;
+  ASSERT_TRUE(std::regex_search(r.err, runs, std::regex("the bench was interrupted \\(SIGINT or SIGTERM\\) after ([0-9]+) runs: "
+                                                         "a partial bench, whose verdict covers those runs only; kept in bench/")))
+      << r.err;
+  std::string csv = read_file(dir + "/bench/runs.csv");
+  std::size_t rows = std::size_t(std::count(csv.begin(), csv.end(), '\n')) - 1;  // below the header
+  EXPECT_EQ(rows, std::stoul(runs[1])) << "every finished run is kept, the one interrupted is not\n" << csv;
+  EXPECT_LT(rows, 14u);
+  EXPECT_NE(read_file(dir + "/bench/report.md").find("**Partial:** the bench was interrupted"), std::string::npos);
+}
+
+TEST(HostileInput, AnInterruptedSceneKeepsItsRunsAndSaysTheyArePartial) {
+  std::string dir = temporary_directory();
+  std::string model = dir + "/pendulum.toml";
+  std::ofstream(model) << read_file(model_path("pendulum"))
+                       << "\n[scenes.long_swing]\nt_end = 400.0\ndt_out = 0.05\ninitial = { phi = 2.0 }\noutputs = [\"phi\"]\n";
+  Interrupted r = interrupt_when("scene '" + model + "' long_swing -o scene", "candidate", "TERM", dir);
+  EXPECT_EQ(r.status, "3\n") << r.err;
+  EXPECT_NE(r.err.find("the scene was interrupted after "), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("interrupted (SIGINT or SIGTERM) after "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not run: the scene was interrupted first"), std::string::npos) << r.out;
+  EXPECT_NE(read_file(dir + "/scene/report.md").find("a partial scene"), std::string::npos);
+}
+
+TEST(HostileInput, ATerminatedSweepKeepsItsPointsAndSaysTheyArePartial) {
+  std::string dir = temporary_directory();
+  // 2.25 million points, about four seconds: TERM once the progress line shows
+  Interrupted r = interrupt_when("sweep '" + model_path("two_mass_chain") + "' --param k1=1:200:1500 --param k2=1:200:1500",
+                                 "points", "TERM", dir);
+  EXPECT_EQ(r.status, "3\n") << r.err;
+  EXPECT_NE(r.err.find("eomgen sweep: interrupted; keeping the points computed so far"), std::string::npos) << r.err;
+  std::smatch counted;
+  ASSERT_TRUE(std::regex_search(r.out, counted, std::regex("([0-9]+) of 2250000 points computed"))) << r.out;
+  EXPECT_LT(std::stoul(counted[1]), 2250000u);
+}
+
+TEST(HostileInput, AnOutputPathThatIsAFolderIsRefusedBeforeTheWork) {
+  std::string dir = temporary_directory();
+  CommandOutput simulate = run_eomgen("simulate '" + model_path("pendulum") + "' -o '" + dir + "'");
+  EXPECT_EQ(simulate.status, 2);
+  EXPECT_NE(simulate.err.find("error: -o: " + dir + " is a folder, not a file: name a file in it"), std::string::npos)
+      << simulate.err;
+  EXPECT_EQ(simulate.err.find("simulating"), std::string::npos) << "refused before the run";
+  CommandOutput derive = run_eomgen("derive '" + model_path("pendulum") + "' -o '" + dir + "'");
+  EXPECT_EQ(derive.status, 2);
+  EXPECT_NE(derive.err.find(dir + " is a folder, not a file"), std::string::npos) << derive.err;
+  CommandOutput missing = run_eomgen("simulate '" + model_path("pendulum") + "' -o '" + dir + "/no/x.csv'");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("the folder " + dir + "/no does not exist"), std::string::npos) << missing.err;
+  EXPECT_TRUE(fs::is_empty(dir)) << "nothing written, no temporary file";
+}
+
 TEST(HostileInput, AMissingOrFailingCompilerIsSaidWithWhereTheHeaderIsKept) {
   std::string cache = temporary_directory();
   std::string model = pendulum_with("d = 0.0", "d = 0.0123", "compiled_here");  // a header no cache has yet
