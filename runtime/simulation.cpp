@@ -178,16 +178,14 @@ class StepLimitWatch {
 // a run that ends with a non-finite state, or that lost a conserved energy entirely, has no
 // result to show: it ends as a numerical failure with its rows kept
 void refuse_exploded(const Problem& p, double start_size, bool beyond_step_limit, SimulationResult& r) {
-  const Trajectory& tr = r.trajectory;
+  const RunSummary& run = r.summary;
   const eomgen_model_abi& m = *p.model;
   std::string why;
   double size = 0;
-  for (double v : tr.states.back()) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
+  for (double v : run.last_state) size = std::isfinite(v) ? std::max(size, std::abs(v)) : INFINITY;
   bool conserved = m.conserves_energy_without_inputs && !p.input_signal &&
                    std::all_of(p.inputs.begin(), p.inputs.end(), [](double u) { return u == 0; });
-  double e0 = tr.energies.front(), drift = 0;
-  for (double e : tr.energies) drift = std::isfinite(e) ? std::max(drift, std::abs(e - e0)) : INFINITY;
-  drift /= std::max(std::abs(e0), 1e-300);
+  double drift = run.largest_energy_change / std::max(std::abs(run.first_energy), 1e-300);
   if (!std::isfinite(size)) why = "the state is not finite at the end";
   else if (conserved && drift > 1)
     why = fmt::format("T + V, which this model conserves, changed by {:.3g} times its initial value", drift);
@@ -195,11 +193,30 @@ void refuse_exploded(const Problem& p, double start_size, bool beyond_step_limit
     why = fmt::format("the state grew from {:.3g} to {:.3g}", start_size, size);
   if (why.empty()) return;
   r.failed = true;
-  r.failure_time = tr.times.back();
+  r.failure_time = run.last_time;
   r.failure = "the result is not a solution: " + why +
               (beyond_step_limit ? ": a numerical instability of a step beyond the method's stability limit (see the "
                                    "warning), not the mechanics"
                                  : ": the integration is unstable; use a smaller step or tolerance, or an implicit method");
+}
+
+// the row just recorded into the summary and the progress line; a streamed run hands its rows on
+// every stream_rows rows (all of them when `rest`); false when the stream cannot take them
+bool keep_row(const SimulationSettings& s, SimulationResult& r, bool rest = false) {
+  Trajectory& tr = r.trajectory;
+  if (!rest) {
+    r.summary.add(tr, tr.times.size() - 1);
+    if (s.progress) s.progress(tr.times.back());
+  }
+  if (!s.stream || tr.times.empty() || (!rest && tr.times.size() < s.stream_rows)) return true;
+  bool taken = s.stream(tr);
+  tr = Trajectory{};
+  if (!taken) {
+    r.failed = true;
+    r.failure_time = r.summary.last_time;
+    r.failure = fmt::format("the rows up to t = {:g} could not be written", r.summary.last_time);
+  }
+  return taken;
 }
 
 // what making the initial state consistent changed: the values the user gave first, by how much
@@ -290,6 +307,7 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   double scale = mass_matrix_range(problem, settings.t_start, x).second, start_size = 0;
   for (double v : x) start_size = std::max(start_size, std::abs(v));
   record(problem, settings.t_start, x, result.trajectory);
+  keep_row(settings, result);
   Conditioning start = conditioning(problem, settings.t_start, x);
   bool warned_singular = false;
   StepLimitWatch limit(problem, settings, result.warnings);
@@ -305,12 +323,16 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       result.failure_time = stepper->failure_time;
       result.solver_flag = stepper->flag;
       result.failure = diagnose(problem, f, *stepper, x, std::isfinite(scale) ? scale : 1.0, start_size,
-                                result.trajectory.states.front(), settings.t_start, settings.integrator,
+                                result.summary.first_state, settings.t_start, settings.integrator,
                                 limit.beyond());
-      if (stepper->failure_time > result.trajectory.times.back()) record(problem, stepper->failure_time, x, result.trajectory);
+      if (stepper->failure_time > result.summary.last_time) {
+        record(problem, stepper->failure_time, x, result.trajectory);
+        keep_row(settings, result);
+      }
       break;
     }
     record(problem, t, x, result.trajectory);
+    if (!keep_row(settings, result)) break;
     if (settings.stop && *settings.stop && !last) {
       result.failed = result.interrupted = true;
       result.failure_time = t;
@@ -343,11 +365,11 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   result.statistics = stepper->statistics();
   result.error_estimate = stepper->error_estimate();
   result.reference_step = stepper->reference_step();
-  const Trajectory& tr = result.trajectory;
-  for (double r : tr.position_residuals) result.max_position_residual = std::max(result.max_position_residual, r);
-  for (double r : tr.velocity_residuals) result.max_velocity_residual = std::max(result.max_velocity_residual, r);
+  result.max_position_residual = result.summary.largest_position_residual;
+  result.max_velocity_residual = result.summary.largest_velocity_residual;
   result.projections = projection.projections();
   if (!result.failed) refuse_exploded(problem, start_size, limit.beyond(), result);
+  keep_row(settings, result, true);
   return result;
 }
 

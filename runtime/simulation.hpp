@@ -49,6 +49,13 @@ struct SimulationSettings {
   /// where the constraints allow it while making the initial state consistent
   std::vector<bool> given_state;
   double baumgarte_alpha = -1, baumgarte_beta = -1;
+  /// Bounded memory whatever t_end: when set, every `stream_rows` recorded rows (and the rest at
+  /// the end) go to `stream` and leave the trajectory; the summary keeps what a report needs.
+  /// `stream` returns false when it cannot take them (a full disk): the run then ends (failed).
+  std::function<bool(const struct Trajectory& rows)> stream = nullptr;
+  std::size_t stream_rows = 4096;
+  /// Called after every recorded row with its time, for a progress line on long runs.
+  std::function<void(double t)> progress = nullptr;
 };
 
 /// rk4, verlet and gauss-legendre: they take the step --step, not a tolerance.
@@ -80,8 +87,24 @@ struct Trajectory {
   std::vector<double> position_residuals, velocity_residuals;  // largest |g|, |C q' + b| (constrained models)
 };
 
+/// What a report needs of a whole run, kept as the rows are recorded, so that a streamed run
+/// (SimulationSettings::stream) still has it.
+struct RunSummary {
+  std::size_t rows = 0;
+  double first_time = NAN, last_time = NAN;
+  std::vector<double> first_state, last_state;
+  double first_energy = NAN, largest_energy_change = 0;  // max |E(t) − E(0)|; inf once E is not finite
+  std::vector<double> first_integrals, largest_integral_changes;  // the same for each first integral
+  std::vector<double> largest_multipliers;                         // max |λ_i| (Lagrange I)
+  double largest_position_residual = 0, largest_velocity_residual = 0;
+  /// The summary with row k of `trajectory` added.
+  void add(const struct Trajectory& trajectory, std::size_t k);
+};
+
 struct SimulationResult {
-  Trajectory trajectory;
+  Trajectory trajectory;  // every row, or, when streamed, the rows not yet streamed (none at the end)
+  RunSummary summary;
+  double max_position_residual = 0, max_velocity_residual = 0;  // the summary's, over every row
   SolverStatistics statistics;
   bool failed = false;
   double failure_time = 0;
@@ -89,7 +112,6 @@ struct SimulationResult {
   std::string failure;  // what went wrong, for the user
   bool over_budget = false;  // stopped by SimulationSettings::max_rhs_evaluations
   bool interrupted = false;  // stopped by SimulationSettings::stop
-  double max_position_residual = 0, max_velocity_residual = 0;
   long projections = 0;
   std::vector<std::string> warnings;  // things the user should know although the run went on
   double error_estimate = NAN;  // the reference integrator's estimate of its own error

@@ -18,6 +18,7 @@
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
 #include "cli/stop_signal.hpp"
+#include "cli/trajectory_output.hpp"
 #include "pipeline.hpp"
 #include "report/reports.hpp"
 #include "simulation.hpp"
@@ -94,13 +95,14 @@ int simulate_model(const SimulationOptions& options) {
     std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";
     return exit_user_error;
   }
-  // the trajectory is held in memory until it is written: refuse before filling it
+  // the rows stream to the CSV, so memory is bounded; the disk is not: refuse a run that would fill it
   double rows = std::floor((o.settings.t_end - o.settings.t_start) / o.settings.dt_out) + 2;
   if (!(rows <= o.max_rows)) {
+    double columns = 2.0 + double(m.num_states + m.num_outputs + m.num_first_integrals);
     std::cerr << fmt::format("eomgen: error: --t-end {:g} at --dt-out {:g} makes {:.4g} output rows, more than the {:.4g} "
-                             "allowed\n  hint: raise --dt-out, or allow more with --max-rows (each row holds the state, "
-                             "energy and outputs in memory until the CSV is written)\n",
-                             o.settings.t_end, o.settings.dt_out, rows, o.max_rows);
+                             "allowed (the CSV would hold about {:.3g} GB)\n  hint: raise --dt-out, or allow more with "
+                             "--max-rows\n",
+                             o.settings.t_end, o.settings.dt_out, rows, o.max_rows, rows * columns * 24 / 1e9);
     return exit_user_error;
   }
   runtime::SimulationSettings settings = o.settings;
@@ -114,10 +116,14 @@ int simulate_model(const SimulationOptions& options) {
   settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
   runtime::SimulationResult result;
+  TrajectoryOutput output(m, o.csv);
+  settings.stream = [&output](const runtime::Trajectory& rows) { return output.take(rows); };
   // Ctrl-C or a TERM ends the run at the next output time; what was computed is written
   try {
     StopOnSignal stop;
+    RunProgress progress("simulate", settings.t_start, settings.t_end);
     settings.stop = &StopOnSignal::flag();
+    settings.progress = [&progress](double t) { progress(t); };
     result = runtime::simulate(problem, x0, settings);
   } catch (const std::invalid_argument& why) {
     std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", settings.integrator, why.what());
@@ -125,26 +131,24 @@ int simulate_model(const SimulationOptions& options) {
   }
   for (const std::string& w : result.warnings) std::cerr << "eomgen: warning: " << w << "\n";
   stiffness_warning(problem, x0, settings, result);
-  if (result.failed && result.trajectory.times.empty()) {
+  if (result.failed && result.summary.rows == 0) {
     std::cerr << fmt::format("eomgen: the simulation cannot start: {}\n", result.failure);
     return exit_numerical_failure;
   }
   bool unforced = !problem.input_signal &&
                   std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
   bool conservative = m.conserves_energy_without_inputs && unforced;
-  if (!o.csv.empty()) {
-    if (std::string failure = write_file_atomically(o.csv, runtime::trajectory_csv(m, result.trajectory)); !failure.empty()) {
-      std::cerr << "eomgen: " << failure << "\n";
-      return exit_user_error;
-    }
+  if (!output.finish()) {
+    std::cerr << "eomgen: " << output.failure() << "\n";
+    return exit_user_error;
   }
-  if (!o.plot.empty()) draw_all_charts(o, m, result.trajectory, conservative);
+  if (!o.plot.empty()) draw_all_charts(o, m, output.chart_rows(), conservative);
   print_summary(settings, m, result, conservative, unforced, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
     std::cerr << fmt::format(result.interrupted ? "eomgen: the simulation was {}\n" : "eomgen: the simulation failed: {}\n",
                              result.failure);
     if (!o.csv.empty())
-      std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the {}\n", o.csv, result.trajectory.times.size(),
+      std::cerr << fmt::format("eomgen: {} holds the {} rows computed before the {}\n", o.csv, result.summary.rows,
                                result.interrupted ? "interruption: a partial run" : "failure");
     return exit_numerical_failure;
   }

@@ -13,22 +13,12 @@
 
 namespace eomgen::cli {
 
-static double relative_energy_drift(const runtime::Trajectory& t) {
-  double e0 = t.energies.front(), worst = 0;
-  for (double e : t.energies) worst = std::max(worst, std::abs(e - e0));
-  return worst / std::max(std::abs(e0), 1e-300);
-}
-
-// the largest |λ| of each multiplier over the run
-static std::vector<double> largest_multipliers(const eomgen_model_abi& m, const runtime::Trajectory& t) {
-  std::vector<double> largest(m.num_multipliers, 0.0);
-  for (const auto& row : t.multipliers)
-    for (std::size_t i = 0; i < row.size(); ++i) largest[i] = std::max(largest[i], std::abs(row[i]));
-  return largest;
+static double relative_energy_drift(const runtime::RunSummary& run) {
+  return run.largest_energy_change / std::max(std::abs(run.first_energy), 1e-300);
 }
 
 static std::string constraint_summary(const eomgen_model_abi& m, const runtime::SimulationResult& r, bool json) {
-  std::vector<double> largest = largest_multipliers(m, r.trajectory);
+  const std::vector<double>& largest = r.summary.largest_multipliers;
   if (json) {
     std::string multipliers;
     for (std::size_t i = 0; i < largest.size(); ++i)
@@ -46,8 +36,8 @@ static std::string constraint_summary(const eomgen_model_abi& m, const runtime::
 }
 
 // the change of every first integral over the run; with inputs acting they need not be constant
-static std::string first_integral_summary(const eomgen_model_abi& m, const runtime::Trajectory& t, bool unforced, bool json) {
-  std::vector<runtime::FirstIntegralDrift> drift = runtime::first_integral_drift(m, t);
+static std::string first_integral_summary(const eomgen_model_abi& m, const runtime::RunSummary& run, bool unforced, bool json) {
+  std::vector<runtime::FirstIntegralDrift> drift = runtime::first_integral_drift(m, run);
   auto number = [](double x) { return std::isfinite(x) ? fmt::format("{:.6g}", x) : std::string("null"); };
   if (json) {
     std::string list;
@@ -69,7 +59,7 @@ static std::string first_integral_summary(const eomgen_model_abi& m, const runti
 void print_summary(const runtime::SimulationSettings& settings, const eomgen_model_abi& m, const runtime::SimulationResult& r,
                    bool conservative, bool unforced, bool json, const std::string& reference_scalar) {
   const runtime::SolverStatistics& s = r.statistics;
-  double drift = relative_energy_drift(r.trajectory);
+  double drift = relative_energy_drift(r.summary);
   if (json) {
     std::string failure = r.failed ? fmt::format("{{\"time\": {:.17g}, \"flag\": {}, \"reason\": \"{}\"}}", r.failure_time,
                                                  r.solver_flag, json_escape(r.failure))
@@ -79,9 +69,9 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
         "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}{}, \"failure\": {}}}\n",
-        m.name, settings.integrator, settings.t_start, r.trajectory.times.back(), r.trajectory.times.size(), s.steps,
+        m.name, settings.integrator, settings.t_start, r.summary.last_time, r.summary.rows, s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
-        conservative ? "true" : "false", drift, first_integral_summary(m, r.trajectory, unforced, true),
+        conservative ? "true" : "false", drift, first_integral_summary(m, r.summary, unforced, true),
         m.num_constraints ? constraint_summary(m, r, true) : "",
         std::isnan(r.error_estimate) ? std::string()
                                      : fmt::format(", \"reference_error_estimate\": {:.6g}, \"reference_step\": {:.6g}",
@@ -90,7 +80,7 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
     return;
   }
   std::cout << fmt::format("{}: {} from t = {:g} to {:.9g}, {} output rows\n", m.name, settings.integrator,
-                           settings.t_start, r.trajectory.times.back(), r.trajectory.times.size());
+                           settings.t_start, r.summary.last_time, r.summary.rows);
   std::cout << fmt::format("  steps {}, rhs evaluations {}, Jacobian evaluations {}, error-test failures {}, "
                            "convergence failures {}, wall time {:.4f} s\n",
                            s.steps, s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures,
@@ -98,7 +88,7 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
   std::cout << fmt::format("  max |E(t) - E(0)| / |E(0)| = {:.3e}{}\n", drift,
                            conservative ? " (energy is conserved by this model: this is the integration error)"
                                         : " (the model does not conserve T + V)");
-  std::cout << first_integral_summary(m, r.trajectory, unforced, false);
+  std::cout << first_integral_summary(m, r.summary, unforced, false);
   if (m.num_constraints) std::cout << constraint_summary(m, r, false);
   if (!std::isnan(r.error_estimate))
     std::cout << fmt::format("  reference: Gragg–Bulirsch–Stoer extrapolation of order 16 in {}, macro step {:.3g} s; "

@@ -17,7 +17,7 @@ struct FirstIntegralDrift {
   double relative_change = 0;   // largest_change / |I(0)|, or NaN when I(0) = 0
 };
 
-/// One entry per first integral of the model, in first_integral_names order.
-std::vector<FirstIntegralDrift> first_integral_drift(const eomgen_model_abi& model, const Trajectory& trajectory);
+/// One entry per first integral of the model, in first_integral_names order, over every row of the run.
+std::vector<FirstIntegralDrift> first_integral_drift(const eomgen_model_abi& model, const RunSummary& run);
 
 }  // namespace eomgen::runtime

@@ -9,9 +9,11 @@
 
 namespace eomgen::runtime {
 
-/// Header line, then one row per output time: t, the coordinates, the velocities,
-/// T + V, the outputs; numbers with 17 significant digits.
-std::string trajectory_csv(const eomgen_model_abi& model, const Trajectory& trajectory);
+/// The CSV of a run, written as it is computed: the header line (t, the coordinates, the
+/// velocities, T + V, the outputs, for constrained models the multipliers and the residuals,
+/// then the first integrals I[name]), and one line per row, numbers with 17 significant digits.
+std::string trajectory_csv_header(const eomgen_model_abi& model);
+std::string trajectory_csv_rows(const eomgen_model_abi& model, const Trajectory& rows);
 
 /// Draws the coordinates over time into `png_path`, and when `energy_chart` is set
 /// the relative energy error |E(t) − E(0)|/|E(0)| into the same name with _energy.

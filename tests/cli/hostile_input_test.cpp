@@ -10,6 +10,8 @@
 #include <fstream>
 #include <regex>
 
+#include <sys/resource.h>
+
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -81,6 +83,27 @@ TEST(HostileInput, ParametersNamedLikeTheHeadersOwnMembersStillCompile) {
     CommandOutput s = run_eomgen("simulate '" + path + "' --t-end 1");
     EXPECT_EQ(s.status, 0) << name << ": " << s.err;
   }
+}
+
+TEST(HostileInput, ALongRunStreamsItsRowsInBoundedMemory) {
+  ASSERT_EQ(run_eomgen("simulate '" + model_path("double_pendulum") + "' --t-end 0.1").status, 0) << "compiled first";
+  // two million rows: held in memory they took about 400 MB; streamed, the run takes about 20 MB
+  std::string dir = temporary_directory();
+  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                           std::string(EOMGEN_EXECUTABLE) + "' simulate '" + model_path("double_pendulum") +
+                           "' --t-end 20000 --dt-out 0.01 --integrator rk4 --step 0.01 --max-rows 3e6 --format json > '" + dir +
+                           "/out.json' 2> '" + dir + "/err.txt'");
+  ASSERT_EQ(status, 0) << read_file(dir + "/err.txt");
+  rusage children{};
+  getrusage(RUSAGE_CHILDREN, &children);
+  EXPECT_LT(children.ru_maxrss, 150 * 1024) << "kB of the largest child process";
+  Diagnostics d;
+  std::optional<JsonValue> parsed = parse_json(read_file(dir + "/out.json"), "out.json", d);
+  ASSERT_TRUE(parsed) << d.format();
+  const JsonValue& run = *parsed;
+  EXPECT_EQ(at(run, "rows"), 2000001);
+  EXPECT_EQ(at(run, "t_end"), 20000);
+  EXPECT_LT(at(run, "relative_energy_drift"), 1e-3) << "the summary covers every row";
 }
 
 TEST(HostileInput, ARunTooLongToHoldIsRefusedBeforeItStarts) {
