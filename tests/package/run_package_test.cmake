@@ -7,7 +7,8 @@ foreach(step
     "${CMAKE_COMMAND};--install;${BUILD_DIR};--prefix;${prefix}"
     "${CMAKE_COMMAND};-S;${SOURCE_DIR};-B;${WORK_DIR}/consumer;-DCMAKE_PREFIX_PATH=${prefix}"
     "${CMAKE_COMMAND};--build;${WORK_DIR}/consumer"
-    "${WORK_DIR}/consumer/consumer")
+    "${WORK_DIR}/consumer/consumer"
+    "${WORK_DIR}/consumer/runtime_consumer")
   execute_process(COMMAND ${step} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message(STATUS "${out}")
   if(NOT status EQUAL 0)
