@@ -31,13 +31,12 @@ std::string cache_directory() {
   return fmt::format("/tmp/eomgen-cache-{}", ::getuid());
 }
 
-namespace {
-
-// the compiler found at configure time, or EOMGEN_CXX
 std::string cxx_compiler() {
   if (const char* cxx = std::getenv("EOMGEN_CXX"); cxx && *cxx) return cxx;
   return EOMGEN_CXX_COMPILER;
 }
+
+namespace {
 
 const std::string compile_flags = std::string("-std=c++17 -O2 -fPIC -shared ") + EOMGEN_DRIVER_REFERENCE_FLAGS;
 

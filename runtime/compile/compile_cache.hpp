@@ -33,6 +33,9 @@ class LoadedModel {
   bool compiled_now_;
 };
 
+/// The C++ compiler for generated code: $EOMGEN_CXX, else the one eomgen was built with.
+std::string cxx_compiler();
+
 /// The cache folder: $EOMGEN_CACHE_DIR, else $XDG_CACHE_HOME/eomgen, else ~/.cache/eomgen.
 std::string cache_directory();
 

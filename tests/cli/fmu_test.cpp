@@ -1,0 +1,262 @@
+// `eomgen fmu` against an importer written here from the FMI 2.0 specification: the FMU is
+// unzipped by Python's zipfile (an independent reader of the archive), its binary loaded with
+// dlopen and driven through the fmi2 calls only. Model Exchange: the importer's own RK4 at
+// 1e-3 s on fmi2GetDerivatives; Co-Simulation: fmi2DoStep (CVODE inside) at 0.1 s. Both match
+// `eomgen simulate --integrator reference` to 1e-8, for the double pendulum and for the cart
+// pendulum pushed by its input F; the directional derivatives match differences of the
+// derivatives; and modelDescription.xml names what the binary computes.
+#include <gtest/gtest.h>
+
+#include <dlfcn.h>
+
+#include <cmath>
+#include <cstdarg>
+#include <filesystem>
+#include <map>
+#include <regex>
+
+#include "fmu/fmi2.h"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// the fmi2 functions of one loaded binary
+struct Fmi2 {
+  void* library = nullptr;
+  decltype(&fmi2Instantiate) instantiate = nullptr;
+  decltype(&fmi2FreeInstance) free_instance = nullptr;
+  decltype(&fmi2SetupExperiment) setup_experiment = nullptr;
+  decltype(&fmi2EnterInitializationMode) enter_initialization = nullptr;
+  decltype(&fmi2ExitInitializationMode) exit_initialization = nullptr;
+  decltype(&fmi2SetReal) set_real = nullptr;
+  decltype(&fmi2GetReal) get_real = nullptr;
+  decltype(&fmi2NewDiscreteStates) new_discrete_states = nullptr;
+  decltype(&fmi2EnterContinuousTimeMode) enter_continuous_time = nullptr;
+  decltype(&fmi2SetTime) set_time = nullptr;
+  decltype(&fmi2SetContinuousStates) set_states = nullptr;
+  decltype(&fmi2GetContinuousStates) get_states = nullptr;
+  decltype(&fmi2GetDerivatives) get_derivatives = nullptr;
+  decltype(&fmi2GetDirectionalDerivative) directional_derivative = nullptr;
+  decltype(&fmi2DoStep) do_step = nullptr;
+  decltype(&fmi2Terminate) terminate = nullptr;
+  ~Fmi2() {
+    if (library) dlclose(library);
+  }
+};
+
+template <class F>
+void bind(void* library, F& f, const char* name) {
+  f = reinterpret_cast<F>(dlsym(library, name));
+  if (!f) throw std::runtime_error(std::string("the FMU does not export ") + name);
+}
+
+void load(Fmi2& f, const std::string& path) {
+  f.library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!f.library) throw std::runtime_error(std::string("dlopen: ") + dlerror());
+  bind(f.library, f.instantiate, "fmi2Instantiate"), bind(f.library, f.free_instance, "fmi2FreeInstance");
+  bind(f.library, f.setup_experiment, "fmi2SetupExperiment");
+  bind(f.library, f.enter_initialization, "fmi2EnterInitializationMode");
+  bind(f.library, f.exit_initialization, "fmi2ExitInitializationMode");
+  bind(f.library, f.set_real, "fmi2SetReal"), bind(f.library, f.get_real, "fmi2GetReal");
+  bind(f.library, f.new_discrete_states, "fmi2NewDiscreteStates");
+  bind(f.library, f.enter_continuous_time, "fmi2EnterContinuousTimeMode");
+  bind(f.library, f.set_time, "fmi2SetTime"), bind(f.library, f.set_states, "fmi2SetContinuousStates");
+  bind(f.library, f.get_states, "fmi2GetContinuousStates"), bind(f.library, f.get_derivatives, "fmi2GetDerivatives");
+  bind(f.library, f.directional_derivative, "fmi2GetDirectionalDerivative");
+  bind(f.library, f.do_step, "fmi2DoStep"), bind(f.library, f.terminate, "fmi2Terminate");
+}
+
+extern "C" void log_to_stderr(fmi2ComponentEnvironment, fmi2String instance, fmi2Status, fmi2String category, fmi2String message, ...) {
+  va_list args;
+  va_start(args, message);
+  std::fprintf(stderr, "[%s %s] ", instance, category);
+  std::vfprintf(stderr, message, args);
+  std::fprintf(stderr, "\n");
+  va_end(args);
+}
+
+const fmi2CallbackFunctions callbacks{log_to_stderr, std::calloc, std::free, nullptr, nullptr};
+
+// an unzipped FMU: its description's GUID, value references by name and number of states
+struct Unpacked {
+  std::string directory, description, guid;
+  std::map<std::string, unsigned> reference;
+  std::size_t states = 0;
+};
+
+Unpacked build_and_unpack(const std::string& model, const std::string& name) {
+  Unpacked u;
+  u.directory = temporary_directory();
+  CommandOutput built = run_eomgen("fmu '" + model_path(model) + "' -o '" + u.directory + "'");
+  EXPECT_EQ(built.status, 0) << built.err;
+  std::string fmu = u.directory + "/" + name + ".fmu";
+  EXPECT_EQ(run_command("python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' '" + fmu + "' '" +
+                        u.directory + "/unzipped'"),
+            0);
+  u.description = read_file(u.directory + "/unzipped/modelDescription.xml");
+  std::smatch m;
+  if (std::regex_search(u.description, m, std::regex("guid=\"([^\"]+)\""))) u.guid = m[1];
+  std::regex variable("<ScalarVariable name=\"([^\"]+)\" valueReference=\"([0-9]+)\"");
+  for (auto it = std::sregex_iterator(u.description.begin(), u.description.end(), variable); it != std::sregex_iterator(); ++it)
+    u.reference[(*it)[1]] = unsigned(std::stoul((*it)[2]));
+  std::string derivatives = u.description.substr(u.description.find("<Derivatives>"));
+  derivatives = derivatives.substr(0, derivatives.find("</Derivatives>"));
+  for (std::size_t at = derivatives.find("<Unknown"); at != std::string::npos; at = derivatives.find("<Unknown", at + 1)) ++u.states;
+  return u;
+}
+
+// `eomgen simulate` with the wide-scalar reference: the states at t = 0, 0.1, …, 2
+std::vector<std::vector<double>> reference_run(const std::string& model, const std::string& sets, std::size_t states) {
+  std::string csv = temporary_directory() + "/reference.csv";
+  CommandOutput r = run_eomgen("simulate '" + model_path(model) + "' --integrator reference --t-end 2 --dt-out 0.1 " + sets +
+                               " -o '" + csv + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::vector<std::vector<double>> out;
+  for (const auto& row : read_numeric_csv(csv)) out.emplace_back(row.begin() + 1, row.begin() + 1 + long(states));
+  return out;
+}
+
+double largest_difference(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+  double worst = a.size() == b.size() ? 0 : INFINITY;
+  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k)
+    for (std::size_t i = 0; i < a[k].size(); ++i) worst = std::max(worst, std::abs(a[k][i] - b[k][i]));
+  return worst;
+}
+
+fmi2Component instantiate(const Fmi2& f, const Unpacked& u, fmi2Type kind, const std::map<std::string, double>& values) {
+  fmi2Component c = f.instantiate("test", kind, u.guid.c_str(), "", &callbacks, fmi2False, fmi2False);
+  if (!c) return nullptr;
+  f.setup_experiment(c, fmi2True, 1e-13, 0.0, fmi2False, 0.0);  // CVODE's rtol in Co-Simulation
+  f.enter_initialization(c);
+  for (const auto& [name, value] : values) {
+    unsigned r = u.reference.at(name);
+    f.set_real(c, &r, 1, &value);
+  }
+  f.exit_initialization(c);
+  return c;
+}
+
+// Model Exchange: RK4 at 1e-3 s on the FMU's derivatives, the states every 0.1 s
+std::vector<std::vector<double>> model_exchange_run(const Fmi2& f, fmi2Component c, std::size_t n) {
+  fmi2EventInfo info{};
+  f.new_discrete_states(c, &info);
+  f.enter_continuous_time(c);
+  std::vector<double> x(n), k1(n), k2(n), k3(n), k4(n), y(n);
+  f.get_states(c, x.data(), n);
+  auto derivative = [&](double t, const std::vector<double>& state, std::vector<double>& out) {
+    f.set_time(c, t), f.set_states(c, state.data(), n), f.get_derivatives(c, out.data(), n);
+  };
+  std::vector<std::vector<double>> out{x};
+  const double h = 1e-3;
+  for (int step = 1; step <= 2000; ++step) {
+    double t = (step - 1) * h;
+    derivative(t, x, k1);
+    for (std::size_t i = 0; i < n; ++i) y[i] = x[i] + h / 2 * k1[i];
+    derivative(t + h / 2, y, k2);
+    for (std::size_t i = 0; i < n; ++i) y[i] = x[i] + h / 2 * k2[i];
+    derivative(t + h / 2, y, k3);
+    for (std::size_t i = 0; i < n; ++i) y[i] = x[i] + h * k3[i];
+    derivative(t + h, y, k4);
+    for (std::size_t i = 0; i < n; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    if (step % 100 == 0) out.push_back(x);
+  }
+  return out;
+}
+
+// Co-Simulation: fmi2DoStep every 0.1 s, the states read by value reference 0 … n−1
+std::vector<std::vector<double>> co_simulation_run(const Fmi2& f, fmi2Component c, std::size_t n) {
+  std::vector<unsigned> references(n);
+  for (std::size_t i = 0; i < n; ++i) references[i] = unsigned(i);
+  std::vector<double> x(n);
+  f.get_real(c, references.data(), n, x.data());
+  std::vector<std::vector<double>> out{x};
+  for (int k = 0; k < 20; ++k) {
+    EXPECT_EQ(f.do_step(c, 0.1 * k, 0.1, fmi2True), fmi2OK);
+    f.get_real(c, references.data(), n, x.data());
+    out.push_back(x);
+  }
+  return out;
+}
+
+void check_fmu(const std::string& model, const std::map<std::string, double>& values, const std::string& sets) {
+  Unpacked u = build_and_unpack(model, model);
+  ASSERT_FALSE(u.guid.empty()) << u.description;
+  Fmi2 f;
+  load(f, u.directory + "/unzipped/binaries/linux64/" + model + ".so");
+  auto reference = reference_run(model, sets, u.states);
+  fmi2Component me = instantiate(f, u, fmi2ModelExchange, values);
+  ASSERT_NE(me, nullptr);
+  EXPECT_LT(largest_difference(model_exchange_run(f, me, u.states), reference), 1e-8) << "Model Exchange";
+  f.terminate(me), f.free_instance(me);
+  fmi2Component cs = instantiate(f, u, fmi2CoSimulation, values);
+  ASSERT_NE(cs, nullptr);
+  EXPECT_LT(largest_difference(co_simulation_run(f, cs, u.states), reference), 1e-8) << "Co-Simulation";
+  f.terminate(cs), f.free_instance(cs);
+  EXPECT_EQ(f.instantiate("wrong", fmi2ModelExchange, "{not-this-one}", "", &callbacks, fmi2False, fmi2False), nullptr)
+      << "another FMU's GUID is refused";
+}
+
+TEST(Fmu, TheDoublePendulumMatchesTheReferenceInBothKinds) { check_fmu("double_pendulum", {}, ""); }
+
+TEST(Fmu, TheCartPendulumPushedByItsInputMatchesTheReference) {
+  check_fmu("cart_pendulum", {{"F", 0.5}, {"m", 0.3}}, "--set F=0.5 --set m=0.3");
+}
+
+TEST(Fmu, DirectionalDerivativesMatchDifferencesOfTheDerivatives) {
+  Unpacked u = build_and_unpack("cart_pendulum", "cart_pendulum");
+  Fmi2 f;
+  load(f, u.directory + "/unzipped/binaries/linux64/cart_pendulum.so");
+  fmi2Component c = instantiate(f, u, fmi2ModelExchange, {{"F", 0.2}});
+  ASSERT_NE(c, nullptr);
+  std::size_t n = u.states;
+  std::vector<double> x{0.1, 2.5, 0.3, -0.4}, direction{0.3, -0.7, 0.2, 0.5}, dx(n), plus(n), minus(n), shifted(n);
+  f.set_time(c, 0.0), f.set_states(c, x.data(), n);
+  std::vector<unsigned> knowns{0, 1, 2, 3}, unknowns;
+  for (std::size_t i = 0; i < n; ++i) unknowns.push_back(unsigned(n + i));
+  ASSERT_EQ(f.directional_derivative(c, unknowns.data(), n, knowns.data(), n, direction.data(), dx.data()), fmi2OK);
+  const double h = 1e-6;
+  for (std::size_t i = 0; i < n; ++i) shifted[i] = x[i] + h * direction[i];
+  f.set_states(c, shifted.data(), n), f.get_derivatives(c, plus.data(), n);
+  for (std::size_t i = 0; i < n; ++i) shifted[i] = x[i] - h * direction[i];
+  f.set_states(c, shifted.data(), n), f.get_derivatives(c, minus.data(), n);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(dx[i], (plus[i] - minus[i]) / (2 * h), 1e-7) << i;
+  // along the input F: the state derivatives through jacobian_input
+  unsigned input = u.reference.at("F");
+  double one = 1, along_input[4];
+  f.set_states(c, x.data(), n);
+  ASSERT_EQ(f.directional_derivative(c, unknowns.data(), n, &input, 1, &one, along_input), fmi2OK);
+  double pushed = 0.2 + h, pulled = 0.2 - h;
+  f.set_real(c, &input, 1, &pushed), f.get_derivatives(c, plus.data(), n);
+  f.set_real(c, &input, 1, &pulled), f.get_derivatives(c, minus.data(), n);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(along_input[i], (plus[i] - minus[i]) / (2 * h), 1e-7) << i;
+  f.free_instance(c);
+}
+
+TEST(Fmu, TheDescriptionNamesWhatTheBinaryComputes) {
+  Unpacked u = build_and_unpack("cart_pendulum", "cart_pendulum");
+  const std::string& d = u.description;
+  EXPECT_NE(d.find("<fmiModelDescription fmiVersion=\"2.0\" modelName=\"cart_pendulum\""), std::string::npos) << d;
+  EXPECT_NE(d.find("<ModelExchange modelIdentifier=\"cart_pendulum\""), std::string::npos);
+  EXPECT_NE(d.find("<CoSimulation modelIdentifier=\"cart_pendulum\""), std::string::npos);
+  // the states x, theta, der(x), der(theta): der(x) is both a state and the derivative of x
+  EXPECT_NE(d.find("<ScalarVariable name=\"der(x)\" valueReference=\"2\" causality=\"local\" variability=\"continuous\" "
+                   "initial=\"exact\">\n      <Real start=\"0\" derivative=\"1\"/>"),
+            std::string::npos)
+      << d;
+  EXPECT_NE(d.find("<ScalarVariable name=\"der(der(x))\" valueReference=\"6\""), std::string::npos) << d;
+  EXPECT_NE(d.find("<ScalarVariable name=\"F\" valueReference=\"12\" causality=\"input\""), std::string::npos) << d;
+  EXPECT_EQ(u.states, 4u);
+  // the second FMU of the same model is the same bytes
+  std::string again = temporary_directory();
+  ASSERT_EQ(run_eomgen("fmu '" + model_path("cart_pendulum") + "' -o '" + again + "'").status, 0);
+  EXPECT_TRUE(read_file(again + "/cart_pendulum.fmu") == read_file(u.directory + "/cart_pendulum.fmu"));
+  CommandOutput constrained = run_eomgen("fmu '" + model_path("slider_crank") + "' -o '" + again + "'");
+  EXPECT_EQ(constrained.status, 2);
+  EXPECT_NE(constrained.err.find("is a Lagrange I model"), std::string::npos) << constrained.err;
+}
+
+}  // namespace
+}  // namespace eomgen::test
