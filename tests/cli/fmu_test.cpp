@@ -4,7 +4,8 @@
 // 1e-3 s on fmi2GetDerivatives; Co-Simulation: fmi2DoStep (CVODE inside) at 0.1 s. Both match
 // `eomgen simulate --integrator reference` to 1e-8, for the double pendulum and for the cart
 // pendulum pushed by its input F; the directional derivatives match differences of the
-// derivatives; and modelDescription.xml names what the binary computes.
+// derivatives; and modelDescription.xml, valid against the FMI 2.0 schema (xmllint), names what
+// the binary computes.
 #include <gtest/gtest.h>
 
 #include <dlfcn.h>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 
@@ -181,9 +183,18 @@ std::vector<std::vector<double>> co_simulation_run(const Fmi2& f, fmi2Component 
   return out;
 }
 
+// xmllint against the FMI 2.0 schema written out in tests/fmu/
+void expect_valid_description(const Unpacked& u) {
+  std::string log = u.directory + "/xmllint.txt";
+  int status = run_command(std::string(EOMGEN_XMLLINT) + " --noout --schema '" + EOMGEN_SOURCE_DIR +
+                           "/tests/fmu/fmi2ModelDescription.xsd' '" + u.directory + "/unzipped/modelDescription.xml' 2> '" + log + "'");
+  EXPECT_EQ(status, 0) << read_file(log);
+}
+
 void check_fmu(const std::string& model, const std::map<std::string, double>& values, const std::string& sets) {
   Unpacked u = build_and_unpack(model, model);
   ASSERT_FALSE(u.guid.empty()) << u.description;
+  expect_valid_description(u);
   Fmi2 f;
   load(f, u.directory + "/unzipped/binaries/linux64/" + model + ".so");
   auto reference = reference_run(model, sets, u.states);
@@ -249,6 +260,14 @@ TEST(Fmu, TheDescriptionNamesWhatTheBinaryComputes) {
   EXPECT_NE(d.find("<ScalarVariable name=\"der(der(x))\" valueReference=\"6\""), std::string::npos) << d;
   EXPECT_NE(d.find("<ScalarVariable name=\"F\" valueReference=\"12\" causality=\"input\""), std::string::npos) << d;
   EXPECT_EQ(u.states, 4u);
+  // the schema check can fail: a causality FMI does not know
+  std::string broken = u.directory + "/broken.xml";
+  std::string text = d;
+  text.replace(text.find("causality=\"input\""), 17, "causality=\"push\"");
+  std::ofstream(broken) << text;
+  EXPECT_NE(run_command(std::string(EOMGEN_XMLLINT) + " --noout --schema '" + EOMGEN_SOURCE_DIR +
+                        "/tests/fmu/fmi2ModelDescription.xsd' '" + broken + "' 2> /dev/null"),
+            0);
   // the second FMU of the same model is the same bytes
   std::string again = temporary_directory();
   ASSERT_EQ(run_eomgen("fmu '" + model_path("cart_pendulum") + "' -o '" + again + "'").status, 0);
