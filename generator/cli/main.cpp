@@ -21,6 +21,11 @@ int main(int argc, char** argv) {
                  "Stop a derivation that runs longer than this, with exit status 2 (0: no limit)")
       ->default_val(eomgen::default_derivation_seconds)
       ->check(CLI::NonNegativeNumber);
+  double max_memory = eomgen::default_derivation_gigabytes();
+  app.add_option("--max-memory", max_memory,
+                 "Stop a derivation whose process grows past this many GB of memory, with exit status 2 (0: no limit; "
+                 "default: the smaller of 8 GB and three quarters of the machine's memory)")
+      ->check(CLI::NonNegativeNumber);
   std::vector<Command> commands = {add_derive_command(app), add_generate_command(app), add_simulate_command(app), add_stability_command(app),
                                   add_sweep_command(app), add_bench_command(app), add_run_command(app),
                                   add_diff_command(app), add_check_integral_command(app), add_linear_command(app),
@@ -32,6 +37,7 @@ int main(int argc, char** argv) {
     return status == 0 ? exit_success : exit_user_error;
   }
   eomgen::set_derivation_time_limit(max_seconds);
+  eomgen::set_derivation_memory_limit(max_memory);
   try {
     for (const Command& command : commands)
       if (int status = command(); status >= 0) return status;

@@ -1,5 +1,6 @@
 #include "common/deadline.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -9,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 namespace eomgen {
@@ -16,6 +19,7 @@ namespace eomgen {
 namespace {
 
 std::atomic<double> limit_seconds{default_derivation_seconds};
+std::atomic<double> limit_gigabytes{-1};  // below zero: the default, found when first needed
 std::atomic<const char*> stage{"reading the model"};
 thread_local int depth = 0;
 
@@ -27,6 +31,27 @@ struct Watchdog {
 };
 
 std::unique_ptr<Watchdog> active;
+
+// the resident set, from /proc/self/statm (its second field, in pages)
+double resident_gigabytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (!f) return 0;
+  unsigned long size = 0, resident = 0;
+  int read = std::fscanf(f, "%lu %lu", &size, &resident);
+  std::fclose(f);
+  return read == 2 ? double(resident) * double(::sysconf(_SC_PAGESIZE)) / 1e9 : 0;
+}
+
+void overgrown(const std::string& model, double limit, double resident) {
+  std::string message = fmt::format(
+      "eomgen: error: {}: the derivation grew past its memory limit of {:.3g} GB ({:.3g} GB resident) while forming {}: "
+      "its expressions grow too large\n  hint: simplify the model (fewer nested functions; absolute angles for long "
+      "chains), or raise the limit with --max-memory GB (0: none); nothing was written\n",
+      model, limit, resident, stage.load());
+  std::fputs(message.c_str(), stderr);
+  std::fflush(stderr);
+  std::_Exit(2);
+}
 
 void expire(const std::string& model, double seconds) {
   std::string message = fmt::format(
@@ -43,17 +68,31 @@ void expire(const std::string& model, double seconds) {
 
 void set_derivation_time_limit(double seconds) { limit_seconds = seconds; }
 
+void set_derivation_memory_limit(double gigabytes) { limit_gigabytes = gigabytes; }
+
+double default_derivation_gigabytes() {
+  double machine = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGESIZE)) / 1e9;
+  return machine > 0 ? std::min(8.0, 0.75 * machine) : 8.0;
+}
+
 void derivation_stage(const char* now) { stage = now; }
 
 DerivationDeadline::DerivationDeadline(const std::string& model) : outermost_(depth++ == 0) {
-  double seconds = limit_seconds;
-  if (!outermost_ || !(seconds > 0)) return;
+  double seconds = limit_seconds, gigabytes = limit_gigabytes < 0 ? default_derivation_gigabytes() : limit_gigabytes.load();
+  if (!outermost_ || (!(seconds > 0) && !(gigabytes > 0))) return;
   stage = "the model";
   active = std::make_unique<Watchdog>();
   Watchdog* w = active.get();
-  w->thread = std::thread([w, model, seconds] {
+  // a look every 50 ms: time and memory
+  w->thread = std::thread([w, model, seconds, gigabytes] {
+    auto started = std::chrono::steady_clock::now();
     std::unique_lock<std::mutex> lock(w->mutex);
-    if (!w->finished.wait_for(lock, std::chrono::duration<double>(seconds), [w] { return w->done; })) expire(model, seconds);
+    while (!w->finished.wait_for(lock, std::chrono::milliseconds(50), [w] { return w->done; })) {
+      if (seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > seconds)
+        expire(model, seconds);
+      if (gigabytes > 0)
+        if (double resident = resident_gigabytes(); resident > gigabytes) overgrown(model, gigabytes, resident);
+    }
   });
 }
 

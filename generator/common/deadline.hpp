@@ -1,8 +1,8 @@
-/// @file A limit on derivation time. Symbolic work on hostile or oversized models can grow
-/// without bound inside a single GiNaC call, where no check can run; a watchdog thread
-/// ends the process instead, with a message naming the model and the stage that was
-/// running and exit status 2. Nothing has been written then: every output file is
-/// written whole, after the derivation.
+/// @file Limits on derivation time and memory. Symbolic work on hostile or oversized models
+/// can grow without bound inside a single GiNaC call, where no check can run; a watchdog
+/// thread ends the process instead, before the system's out-of-memory killer would, with a
+/// message naming the model, the limit and the stage that was running, and exit status 2.
+/// Nothing has been written then: every output file is written whole, after the derivation.
 #pragma once
 
 #include <string>
@@ -13,6 +13,11 @@ namespace eomgen {
 /// `default_derivation_seconds`.
 void set_derivation_time_limit(double seconds);
 inline constexpr double default_derivation_seconds = 300;
+
+/// The limit on the process's resident memory during a derivation, in GB (1e9 bytes); 0: none.
+/// The default is the smaller of 8 GB and three quarters of the machine's memory.
+void set_derivation_memory_limit(double gigabytes);
+double default_derivation_gigabytes();
 
 /// While one lives (the outermost, when they nest), the derivation of `model` is timed.
 class DerivationDeadline {

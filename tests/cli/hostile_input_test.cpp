@@ -60,6 +60,18 @@ TEST(HostileInput, ADerivationPastItsTimeLimitStopsWithExitTwoAndWritesNothing) 
   EXPECT_EQ(refused.status, 2) << "a negative limit is a usage error";
 }
 
+TEST(HostileInput, ADerivationPastItsMemoryLimitStopsWithExitTwoAndWritesNothing) {
+  // a potential whose powers multiply out: 4.8 GB within a minute, were it not stopped
+  std::string path = pendulum_with("[energy]\n", "[energy]\npotential = \"(phi + m + l + g + d + 2*phi^2 + m*l + g*d)^30\"\n",
+                                   "swelling");
+  std::string out = temporary_directory() + "/out.txt";
+  CommandOutput r = run_eomgen("derive '" + path + "' -o '" + out + "' --max-memory 0.3");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("swelling.toml: the derivation grew past its memory limit of 0.3 GB"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("raise the limit with --max-memory GB"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out)) << "nothing is written";
+}
+
 TEST(HostileInput, ParametersNamedLikeTheHeadersOwnMembersStillCompile) {
   for (const std::string name : {"values", "Scalar", "Parameters"}) {
     std::string path = pendulum_with("m = 1.0", name + " = 1.0", "named_" + name);

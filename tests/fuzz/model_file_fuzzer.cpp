@@ -27,8 +27,9 @@ bool small_enough(const std::string& text) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  // libFuzzer's -timeout finds slow inputs; the watchdog would end the fuzzer itself
+  // libFuzzer's -timeout and -rss_limit_mb find slow and swelling inputs; the watchdog would end the fuzzer itself
   eomgen::set_derivation_time_limit(0);
+  eomgen::set_derivation_memory_limit(0);
   std::string text(reinterpret_cast<const char*>(data), size);
   if (!small_enough(text)) return -1;  // not added to the corpus
   eomgen::Derivation d = eomgen::derive_model_text(text, "fuzz.toml");
