@@ -136,7 +136,9 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     for (const BodyKinematics& b : mechanics.bodies) e.body_positions.push_back({b.name, b.position});
     e.scenes = model.scenes;
     e.variants_declared = model.variants;
+    derivation_stage("the oriented trigonometric terms");
     orient(e);
+    derivation_stage("the finished equations");
     return e;
   } catch (const std::invalid_argument& why) {
     diagnostics.error(method_where, "model.method", why.what(),

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "common/deadline.hpp"
 #include "common/output_file.hpp"
 #include "emit/cpp_header.hpp"
 #include "cli/scene_analysis.hpp"
@@ -47,7 +48,9 @@ int generate_header(const std::string& model_path, const std::string& directory,
   } else {
     Derivation d = variant.empty() ? derive_model_file(model_path) : derive_model_file_for(model_path, {"", variant, {}});
     if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
+    derivation_stage("the C++ header (common subexpressions, printing)");
     text = emit_cpp_header(*d.equations), name = d.equations->model_name;
+    derivation_stage("the header file");
   }
   std::error_code ec;
   std::string path = !header_file.empty()

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
                  "Stop a derivation that runs longer than this, with exit status 2 (0: no limit)")
       ->default_val(eomgen::default_derivation_seconds)
       ->check(CLI::NonNegativeNumber);
+  bool timings = false;
+  app.add_flag("--timings", timings, "Print the wall time of each stage of the derivation and the header's writing");
   double max_memory = eomgen::default_derivation_gigabytes();
   app.add_option("--max-memory", max_memory,
                  "Stop a derivation whose process grows past this many GB of memory, with exit status 2 (0: no limit; "
@@ -38,9 +40,13 @@ int main(int argc, char** argv) {
   }
   eomgen::set_derivation_time_limit(max_seconds);
   eomgen::set_derivation_memory_limit(max_memory);
+  if (timings) eomgen::keep_stage_timings();
   try {
     for (const Command& command : commands)
-      if (int status = command(); status >= 0) return status;
+      if (int status = command(); status >= 0) {
+        if (timings) std::cerr << "eomgen: time by stage\n" << eomgen::stage_timings();
+        return status;
+      }
     return exit_user_error;
   } catch (const std::exception& e) {
     std::cerr << "eomgen: internal error: " << e.what()

@@ -9,6 +9,8 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
@@ -75,7 +77,30 @@ double default_derivation_gigabytes() {
   return machine > 0 ? std::min(8.0, 0.75 * machine) : 8.0;
 }
 
-void derivation_stage(const char* now) { stage = now; }
+namespace {
+std::atomic<bool> timing{false};
+std::mutex timings_mutex;
+std::vector<std::pair<std::string, std::chrono::steady_clock::time_point>> timings;
+}  // namespace
+
+void derivation_stage(const char* now) {
+  stage = now;
+  if (!timing) return;
+  std::lock_guard<std::mutex> lock(timings_mutex);
+  timings.push_back({now, std::chrono::steady_clock::now()});
+}
+
+void keep_stage_timings() { timing = true; }
+
+std::string stage_timings() {
+  std::lock_guard<std::mutex> lock(timings_mutex);
+  std::string out;
+  for (std::size_t k = 0; k < timings.size(); ++k) {
+    auto end = k + 1 < timings.size() ? timings[k + 1].second : std::chrono::steady_clock::now();
+    out += fmt::format("  {:<55} {:8.3f} s\n", timings[k].first, std::chrono::duration<double>(end - timings[k].second).count());
+  }
+  return out;
+}
 
 DerivationDeadline::DerivationDeadline(const std::string& model) : outermost_(depth++ == 0) {
   double seconds = limit_seconds, gigabytes = limit_gigabytes < 0 ? default_derivation_gigabytes() : limit_gigabytes.load();

@@ -34,4 +34,10 @@ class DerivationDeadline {
 /// What the derivation is doing now ("kinematics", "Lagrange's equations"), for the message.
 void derivation_stage(const char* stage);
 
+/// `--timings`: from now on, the wall time of every stage is kept, for `stage_timings()`.
+void keep_stage_timings();
+/// One line per stage in the order run, with its seconds (the last one up to now); empty
+/// unless keep_stage_timings() was called.
+std::string stage_timings();
+
 }  // namespace eomgen

@@ -6,6 +6,7 @@
 /// small: M = Σ m JᵀJ + J_ωᵀ I J_ω and the velocity terms Σ m Jᵀa_b + J_ωᵀ(I α_b + ω×Iω).
 /// A kinetic energy given directly in [energy] goes through the general formula
 /// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
+#include "common/deadline.hpp"
 #include "derive/methods.hpp"
 
 namespace eomgen {
@@ -94,8 +95,10 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   std::size_t n = s.coordinates.size();
   GiNaC::matrix M(n, n);
   std::vector<ex> f(n, 0);
+  derivation_stage("the bodies' terms of M and f");
   for (const BodyKinematics& b : mech.bodies) add_body(b, M, f);
   add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
+  derivation_stage("the simplified M and f");
   for (unsigned j = 0; j < n; ++j) {
     f[j] += mech.generalized_force[j] - mech.potential_energy.diff(s.coordinates[j]) -
             mech.dissipation.diff(s.velocities[j]);
@@ -114,6 +117,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.degrees_of_freedom = n;
   e.mass_matrix = M;
   e.forcing = f;
+  derivation_stage("the kinetic energy from M");
   e.kinetic_energy = kinetic_energy(M, mech, s);
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;
