@@ -223,7 +223,9 @@ class Parser {
                            : found->second.kind == SymbolKind::input   ? "input"
                                                                        : "definition",
                            inner),
-           "parameters are constant; inputs are given functions of time");
+           found->second.kind == SymbolKind::definition
+               ? "write the definition's rate out in der() of its coordinates (the chain rule), or define it too"
+               : "parameters are constant; inputs are given functions of time");
     if (!(rules_.allowed & allow_velocities))
       fail(start, fmt::format("velocity der({}) in {}", inner, rules_.context),
            fmt::format("{} may depend on the coordinates and time only", rules_.context));
