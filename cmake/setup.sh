@@ -18,7 +18,8 @@ esac
 packages=(g++ cmake make pkg-config diffutils python3 python3-sympy python3-numpy
           libginac-dev libcln-dev libeigen3-dev libsundials-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox
-          libgtest-dev libgmock-dev libbenchmark-dev clang libmujoco-dev libxml2-utils)
+          libgtest-dev libgmock-dev libbenchmark-dev clang libmujoco-dev libxml2-utils
+          openmpi-bin libopenmpi-dev openssh-client)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -44,11 +44,12 @@ std::string eigenvalue_sweep_csv(const runtime::EigenvalueSweep& s, const std::s
   return text;
 }
 
-void print_eigenvalue_sweep_text(const runtime::EigenvalueSweep& s, const std::string& model, const std::string& parameter) {
+void print_eigenvalue_sweep_text(const runtime::EigenvalueSweep& s, const std::string& model, const std::string& parameter,
+                                 const distribute::Ranks& ranks) {
   long found = std::count_if(s.verdicts.begin(), s.verdicts.end(), [](const std::string& v) { return !v.empty(); });
   std::cout << fmt::format("{}: eigenvalues over {} = {:g} … {:g} ({} points, {} with an equilibrium or steady motion) in "
-                           "{:.3f} s\n",
-                           model, parameter, s.axis.low, s.axis.high, s.axis.count, found, s.seconds);
+                           "{:.3f} s on {}\n",
+                           model, parameter, s.axis.low, s.axis.high, s.axis.count, found, s.seconds, ranks.description());
   if (s.crossings.empty()) std::cout << "  no eigenvalue crosses the imaginary axis in this range\n";
   else std::cout << "  crossings of the imaginary axis:\n";
   for (const runtime::AxisCrossing& c : s.crossings) std::cout << "    " << crossing_text(c, parameter) << "\n";
@@ -56,7 +57,8 @@ void print_eigenvalue_sweep_text(const runtime::EigenvalueSweep& s, const std::s
   for (const runtime::StableInterval& i : s.stable) std::cout << "  asymptotically stable for " << interval_text(i, parameter) << "\n";
 }
 
-void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::string& model, const std::string& parameter) {
+void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::string& model, const std::string& parameter,
+                                 const distribute::Ranks& ranks) {
   std::string crossings, intervals;
   for (const runtime::AxisCrossing& c : s.crossings)
     crossings += fmt::format("{}{{\"{}\": {}, \"eigenvalue\": {{\"re\": 0, \"im\": {}}}, \"kind\": \"{}\", \"direction\": \"{}\"}}",
@@ -66,9 +68,9 @@ void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::s
     intervals += fmt::format("{}{{\"low\": {}, \"high\": {}, \"open_low\": {}, \"open_high\": {}}}", intervals.empty() ? "" : ", ",
                              number(i.low), number(i.high), i.open_low ? "true" : "false", i.open_high ? "true" : "false");
   std::cout << fmt::format("{{\"model\": \"{}\", \"parameter\": \"{}\", \"from\": {}, \"to\": {}, \"points\": {}, "
-                           "\"crossings\": [{}], \"stable_intervals\": [{}], \"seconds\": {}, \"interrupted\": {}}}\n",
+                           "\"crossings\": [{}], \"stable_intervals\": [{}], \"seconds\": {}, \"interrupted\": {}, \"ranks\": {}}}\n",
                            json_escape(model), json_escape(parameter), number(s.axis.low), number(s.axis.high), s.axis.count,
-                           crossings, intervals, number(s.seconds), s.interrupted ? "true" : "false");
+                           crossings, intervals, number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
 }
 
 }  // namespace eomgen::cli

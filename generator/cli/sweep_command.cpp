@@ -17,9 +17,12 @@
 #include "cli/commands.hpp"
 #include "cli/eigenvalue_sweep_output.hpp"
 #include "cli/loaded_model.hpp"
+#include "cli/ranked_run.hpp"
 #include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"
 #include "derive/initial_state.hpp"
+#include "distribute/distributed_sweep.hpp"
+#include "distribute/ranks.hpp"
 #include "report/reports.hpp"
 #include "symbolic/evaluate.hpp"
 
@@ -117,11 +120,13 @@ int run_eigenvalue_sweep(const Options& o, const LoadedProblem& loaded, const ru
   };
   bool finished = false;
   runtime::EigenvalueSweep s;
+  const distribute::Ranks& ranks = distribute::Ranks::world();
   {
     StopOnSignal stop;
-    s = runtime::sweep_eigenvalues(loaded.problem, start, !o.at.empty(), *axis, 1e-10, o.threads, progress_line(finished),
-                                   StopOnSignal::flag());
+    s = distribute::distributed_eigenvalue_sweep(ranks, loaded.problem, start, !o.at.empty(), *axis, 1e-10, o.threads,
+                                                 progress_line(finished), StopOnSignal::flag());
   }
+  if (!ranks.is_root()) return s.interrupted ? exit_numerical_failure : exit_success;
   if (s.interrupted) std::cerr << "\neomgen sweep: interrupted; no crossings are reported\n";
   if (!o.csv.empty())
     if (std::string failure = write_file_atomically(o.csv, eigenvalue_sweep_csv(s, name)); !failure.empty()) {
@@ -133,14 +138,16 @@ int run_eigenvalue_sweep(const Options& o, const LoadedProblem& loaded, const ru
     if (std::string failure = runtime::draw_eigenvalue_sweep(s, name, title, o.plot); !failure.empty())
       std::cerr << "eomgen: warning: no chart: " << failure << "\n";
   }
-  if (o.json) print_eigenvalue_sweep_json(s, m.name, name);
-  else print_eigenvalue_sweep_text(s, m.name, name);
+  if (o.json) print_eigenvalue_sweep_json(s, m.name, name, ranks);
+  else print_eigenvalue_sweep_text(s, m.name, name, ranks);
   return s.interrupted ? exit_numerical_failure : exit_success;
 }
 
 int run_sweep(const Options& o) {
+  const distribute::Ranks& ranks = distribute::Ranks::world();
+  QuietUnlessRoot quiet(ranks);
   LoadedProblem loaded;
-  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  if (auto status = load_on_every_rank(ranks, o.model, o.sets, loaded)) return *status;
   if (auto status = stability_refusal(loaded, o.model, o.symbolic)) return *status;
   if (time_dependence(loaded.equations, loaded.problem.parameters).depends_on_time) {
     std::cerr << "eomgen: error: the equations depend on time: a map of eigenvalues at frozen t would be wrong for them\n"
@@ -169,8 +176,10 @@ int run_sweep(const Options& o) {
   runtime::StabilityMap map;
   {
     StopOnSignal stop;
-    map = runtime::sweep(loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress_line(finished), StopOnSignal::flag());
+    map = distribute::distributed_map(ranks, loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress_line(finished),
+                                      StopOnSignal::flag());
   }
+  if (!ranks.is_root()) return map.interrupted ? exit_numerical_failure : exit_success;
   if (map.interrupted) std::cerr << "\neomgen sweep: interrupted; keeping the points computed so far\n";
   std::vector<double> margin;
   if (o.symbolic) margin = symbolic_margin(loaded, map, x_name, y_name, eq.state);
@@ -199,13 +208,14 @@ int run_sweep(const Options& o) {
   if (o.json)
     std::cout << fmt::format("{{\"model\": \"{}\", \"x\": \"{}\", \"y\": \"{}\", \"points\": {}, \"computed\": {}, "
                              "\"asymptotically_stable\": {}, \"seconds\": {:.6g}, \"points_per_second\": {:.6g}, "
-                             "\"interrupted\": {}}}\n",
+                             "\"interrupted\": {}, \"ranks\": {}}}\n",
                              m.name, x_name, y_name, total, map.computed, stable, map.seconds, rate,
-                             map.interrupted ? "true" : "false");
+                             map.interrupted ? "true" : "false", ranks.size());
   else
     std::cout << fmt::format("{}: {} x {} map of the stability degree over {} and {}: {} of {} points computed in "
-                             "{:.3f} s ({:.0f} points/s), {} asymptotically stable\n",
-                             m.name, map.x.count, map.y.count, x_name, y_name, map.computed, total, map.seconds, rate, stable);
+                             "{:.3f} s ({:.0f} points/s) on {}, {} asymptotically stable\n",
+                             m.name, map.x.count, map.y.count, x_name, y_name, map.computed, total, map.seconds, rate,
+                             ranks.description(), stable);
   return map.interrupted ? exit_numerical_failure : exit_success;
 }
 

@@ -105,52 +105,63 @@ std::vector<StableInterval> stable_intervals(const EigenvalueSweep& s) {
 
 EigenvalueSweep sweep_eigenvalues(const Problem& base, const StartState& start, bool fixed, SweepAxis axis,
                                   double resolution, unsigned threads, const std::function<void(long, long)>& progress,
-                                  const std::atomic<bool>& stop) {
+                                  const std::atomic<bool>& stop, PointRange range) {
   auto started = std::chrono::steady_clock::now();
   EigenvalueSweep s;
   s.axis = axis;
+  const int first = static_cast<int>(range.begin), end = static_cast<int>(range.last(axis.count));
+  const long share = std::max(0, end - first);
   std::vector<PointResult> points(std::size_t(axis.count));
   // the start states first, on this thread: `start` may evaluate symbolic expressions,
   // and GiNaC is not thread-safe
-  std::vector<Problem> problems;
-  std::vector<std::optional<std::vector<double>>> starts;
-  for (int k = 0; k < axis.count; ++k) {
-    problems.push_back(at_value(base, axis.parameter, axis.value(k)));
-    starts.push_back(start(problems.back().parameters));
+  std::vector<Problem> problems(std::size_t(axis.count));
+  std::vector<std::optional<std::vector<double>>> starts(std::size_t(axis.count));
+  for (int k = first; k < end; ++k) {
+    problems[std::size_t(k)] = at_value(base, axis.parameter, axis.value(k));
+    starts[std::size_t(k)] = start(problems[std::size_t(k)].parameters);
   }
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<int> next{0};
+  std::atomic<int> next{first};
   std::atomic<long> done{0};
   std::vector<std::thread> workers;
   for (unsigned w = 0; w < threads; ++w)
     workers.emplace_back([&] {
-      for (int k; (k = next++) < axis.count && !stop; ++done)
+      for (int k; (k = next++) < end && !stop; ++done)
         points[std::size_t(k)] = analyse_point(problems[std::size_t(k)], starts[std::size_t(k)], fixed);
     });
-  while (done < axis.count && !stop) {
+  while (done < share && !stop) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    if (progress) progress(done, axis.count);
+    if (progress) progress(done, share);
   }
   for (auto& t : workers) t.join();
-  s.interrupted = stop && done < axis.count;
+  s.interrupted = stop && done < share;
   for (const PointResult& r : points) {
     s.eigenvalues.push_back(r.found ? r.spectrum.eigenvalues : std::vector<std::complex<double>>{});
     s.verdicts.push_back(r.found ? r.spectrum.verdict : "");
+    s.tolerances.push_back(r.found ? r.spectrum.tolerance : NAN);
   }
-  for (int k = 0; k + 1 < axis.count && !s.interrupted; ++k) {
-    const PointResult &a = points[std::size_t(k)], &b = points[std::size_t(k) + 1];
-    if (!a.found || !b.found) continue;
+  if (first == 0 && end == axis.count && !s.interrupted) locate_axis_crossings(s, base, start, fixed, resolution);
+  if (progress) progress(done, share);
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return s;
+}
+
+void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartState& start, bool fixed, double resolution) {
+  auto spectrum_at = [&](std::size_t k) {
+    return CountedSpectrum{s.eigenvalues[k], s.verdicts[k], 0.0, s.tolerances[k]};
+  };
+  s.crossings.clear();
+  for (std::size_t k = 0; k + 1 < std::size_t(s.axis.count); ++k) {
+    if (s.verdicts[k].empty() || s.verdicts[k + 1].empty()) continue;
+    CountedSpectrum a = spectrum_at(k), b = spectrum_at(k + 1);
     // two eigenvalues crossing in opposite directions between grid points cancel in the
     // count: the grid must be fine enough to see them apart
-    if (unstable_count(a.spectrum) == unstable_count(b.spectrum)) continue;
-    if (auto c = bisect(base, start, fixed, axis.parameter, axis.value(k), a.spectrum, axis.value(k + 1), b.spectrum,
+    if (unstable_count(a) == unstable_count(b)) continue;
+    if (auto c = bisect(base, start, fixed, s.axis.parameter, s.axis.value(int(k)), a, s.axis.value(int(k) + 1), b,
                         resolution))
       s.crossings.push_back(*c);
   }
   s.stable = stable_intervals(s);
-  if (progress) progress(done, axis.count);
-  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return s;
 }
 
 }  // namespace eomgen::runtime

@@ -35,6 +35,7 @@ struct EigenvalueSweep {
   /// part; empty where no equilibrium or steady motion was found
   std::vector<std::vector<std::complex<double>>> eigenvalues;
   std::vector<std::string> verdicts;  // per point, empty where none was found
+  std::vector<double> tolerances;     // per point: within it a real part counts as zero (NaN where none)
   std::vector<AxisCrossing> crossings;
   std::vector<StableInterval> stable;
   bool interrupted = false;
@@ -47,9 +48,15 @@ using StartState = std::function<std::optional<std::vector<double>>(const std::v
 
 /// Sweeps `axis` on `threads` threads (0: all cores). At each point the equilibrium (or
 /// steady motion) is found from `start`, or only checked when `fixed`. Crossings are
-/// bisected to `resolution` in the parameter.
+/// bisected to `resolution` in the parameter. With `points` less than the whole axis (a
+/// share of a distributed sweep) only those points are computed, and the crossings are
+/// left to `locate_axis_crossings` once every share is in.
 EigenvalueSweep sweep_eigenvalues(const Problem& base, const StartState& start, bool fixed, SweepAxis axis,
                                   double resolution, unsigned threads, const std::function<void(long, long)>& progress,
-                                  const std::atomic<bool>& stop);
+                                  const std::atomic<bool>& stop, PointRange points = {});
+
+/// The crossings of the imaginary axis between neighbouring points of a complete sweep,
+/// and the stable intervals between them.
+void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartState& start, bool fixed, double resolution);
 
 }  // namespace eomgen::runtime

@@ -35,29 +35,31 @@ void sweep_row(const Problem& base, const std::vector<double>& start, bool fixed
 }  // namespace
 
 StabilityMap sweep(const Problem& base, const std::vector<double>& start, bool fixed, SweepAxis x, SweepAxis y,
-                   unsigned threads, const std::function<void(long, long)>& progress, const std::atomic<bool>& stop) {
+                   unsigned threads, const std::function<void(long, long)>& progress, const std::atomic<bool>& stop,
+                   PointRange rows) {
   auto started = std::chrono::steady_clock::now();
   StabilityMap map{x, y, std::vector<double>(static_cast<std::size_t>(x.count) * y.count, NAN),
                    std::vector<std::vector<double>>(static_cast<std::size_t>(x.count) * y.count), 0, false, 0};
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<int> next_row{0};
+  const int first = static_cast<int>(rows.begin), end = static_cast<int>(rows.last(y.count)), share = std::max(0, end - first);
+  std::atomic<int> next_row{first};
   std::atomic<long> rows_done{0};
   std::vector<std::thread> workers;
   for (unsigned w = 0; w < threads; ++w)
     workers.emplace_back([&] {
-      for (int row; (row = next_row++) < y.count && !stop;) {
+      for (int row; (row = next_row++) < end && !stop;) {
         sweep_row(base, start, fixed, x, y, row, map, stop);
         ++rows_done;
       }
     });
-  long total = static_cast<long>(x.count) * y.count;
-  while (rows_done < y.count && !stop) {
+  long total = static_cast<long>(x.count) * share;
+  while (rows_done < share && !stop) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
     if (progress) progress(rows_done * x.count, total);
   }
   for (auto& t : workers) t.join();
   for (double d : map.degree) map.computed += !std::isnan(d);
-  map.interrupted = stop && rows_done < y.count;
+  map.interrupted = stop && rows_done < share;
   map.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (progress) progress(rows_done * x.count, total);
   return map;

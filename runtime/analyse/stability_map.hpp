@@ -3,6 +3,7 @@
 /// grid of two parameters, with the equilibrium re-found at every point.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <string>
@@ -19,6 +20,12 @@ struct SweepAxis {
   double value(int k) const { return count == 1 ? low : low + (high - low) * k / (count - 1); }
 };
 
+/// The part of a sweep one process computes: rows of a map, points of a 1-D sweep.
+struct PointRange {
+  long begin = 0, end = -1;  // [begin, end); end −1: to the last
+  long last(long count) const { return end < 0 ? count : std::min(end, count); }
+};
+
 struct StabilityMap {
   SweepAxis x, y;
   std::vector<double> degree;               // y.count rows of x.count, NaN where not computed or no equilibrium
@@ -30,9 +37,12 @@ struct StabilityMap {
 
 /// Sweeps on `threads` threads (0: all cores). `start` is the equilibrium at the base
 /// parameters; `fixed` keeps it (an --at equilibrium that does not move) instead of
-/// re-finding it. `progress(done, total)` is called from the calling thread; setting
-/// `stop` ends the sweep early, keeping what was computed.
+/// re-finding it. `progress(done, total)` is called from the calling thread with this
+/// process's points; setting `stop` ends the sweep early, keeping what was computed.
+/// Only the rows in `rows` are computed (the others stay NaN): a share of a distributed
+/// sweep. A row's result does not depend on which process or thread computes it.
 StabilityMap sweep(const Problem& base, const std::vector<double>& start, bool fixed, SweepAxis x, SweepAxis y,
-                   unsigned threads, const std::function<void(long, long)>& progress, const std::atomic<bool>& stop);
+                   unsigned threads, const std::function<void(long, long)>& progress, const std::atomic<bool>& stop,
+                   PointRange rows = {});
 
 }  // namespace eomgen::runtime

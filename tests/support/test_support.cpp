@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "pipeline.hpp"
 
@@ -101,6 +102,19 @@ CommandOutput run_eomgen(const std::string& arguments) {
   int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
                            std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" +
                            scratch + "/err'");
+  return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
+}
+
+bool can_run_on_ranks() { return std::string(EOMGEN_MPIEXEC).size() > 0; }
+
+CommandOutput run_eomgen_on_ranks(int ranks, const std::string& arguments) {
+  std::string scratch = temporary_directory();
+  // Open MPI refuses root unless told, and more ranks than cores unless oversubscribed
+  std::string flags = std::string(::geteuid() == 0 ? "--allow-run-as-root " : "") + "--oversubscribe";
+  int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +
+                           std::string(EOMGEN_MPIEXEC) + "' " + flags + " -np " + std::to_string(ranks) + " '" +
+                           std::string(EOMGEN_EXECUTABLE) + "' " + arguments + " > '" + scratch + "/out' 2> '" + scratch +
+                           "/err'");
   return {status, read_file(scratch + "/out"), read_file(scratch + "/err")};
 }
 

@@ -50,6 +50,14 @@ struct CommandOutput {
 /// Runs the eomgen executable with these arguments and the tests' shared compile cache.
 CommandOutput run_eomgen(const std::string& arguments);
 
+/// Whether eomgen was built with MPI and mpirun is there: else the tests of distributed
+/// runs are skipped, saying why.
+bool can_run_on_ranks();
+
+/// eomgen under `mpirun -np RANKS` (as root and oversubscribed where needed), with the
+/// tests' shared compile cache.
+CommandOutput run_eomgen_on_ranks(int ranks, const std::string& arguments);
+
 /// `eomgen ARGUMENTS --format json`, expected to succeed, parsed.
 JsonValue run_json(const std::string& arguments);
 
