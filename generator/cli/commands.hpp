@@ -30,6 +30,7 @@ Command add_check_integral_command(CLI::App& app);
 Command add_linear_command(CLI::App& app);
 Command add_scene_command(CLI::App& app);
 Command add_fmu_command(CLI::App& app);
+Command add_ensemble_command(CLI::App& app);
 
 struct LoadedProblem;
 /// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic

@@ -2,7 +2,6 @@
 /// imaginary axis, or a stability map over two parameters, on all cores, with the
 /// symbolic boundary over it when asked.
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <iostream>
@@ -15,6 +14,7 @@
 #include "analyse/stability_map.hpp"
 #include "analyse/time_dependence.hpp"
 #include "cli/commands.hpp"
+#include "cli/count_progress.hpp"
 #include "cli/eigenvalue_sweep_output.hpp"
 #include "cli/loaded_model.hpp"
 #include "cli/ranked_run.hpp"
@@ -91,22 +91,6 @@ std::vector<double> symbolic_margin(const LoadedProblem& loaded, const runtime::
   return margin;
 }
 
-std::function<void(long, long)> progress_line(bool& finished) {
-  auto last_print = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now() - std::chrono::seconds(1));
-  auto started = std::chrono::steady_clock::now();
-  return [&finished, last_print, started](long done, long total) {
-    auto now = std::chrono::steady_clock::now();
-    if (finished || (now - *last_print < std::chrono::milliseconds(500) && done < total)) return;
-    finished = done == total;
-    *last_print = now;
-    double elapsed = std::chrono::duration<double>(now - started).count();
-    double left = done > 0 ? elapsed * (total - done) / done : 0;
-    std::cerr << fmt::format("\reomgen sweep: {:3.0f}% ({}/{} points), about {:.1f} s left   ", 100.0 * done / total, done,
-                             total, left)
-              << (done == total ? "\n" : "") << std::flush;
-  };
-}
-
 // one parameter: the eigenvalues along it, about the model's initial state at each value
 int run_eigenvalue_sweep(const Options& o, const LoadedProblem& loaded, const runtime::Equilibrium& eq) {
   const eomgen_model_abi& m = *loaded.compiled->abi();
@@ -118,13 +102,12 @@ int run_eigenvalue_sweep(const Options& o, const LoadedProblem& loaded, const ru
     std::string failed;
     return initial_state(loaded.equations, parameters, failed);
   };
-  bool finished = false;
   runtime::EigenvalueSweep s;
   const distribute::Ranks& ranks = distribute::Ranks::world();
   {
     StopOnSignal stop;
     s = distribute::distributed_eigenvalue_sweep(ranks, loaded.problem, start, !o.at.empty(), *axis, 1e-10, o.threads,
-                                                 progress_line(finished), StopOnSignal::flag());
+                                                 count_progress("sweep", ranks.size() > 1 ? "points, rank 0's share" : "points"), StopOnSignal::flag());
   }
   if (!ranks.is_root()) return s.interrupted ? exit_numerical_failure : exit_success;
   if (s.interrupted) std::cerr << "\neomgen sweep: interrupted; no crossings are reported\n";
@@ -172,11 +155,10 @@ int run_sweep(const Options& o) {
   std::string x_name, y_name;
   auto x = parse_axis(m, o.params[0], x_name), y = parse_axis(m, o.params[1], y_name);
   if (!x || !y) return exit_user_error;
-  bool finished = false;
   runtime::StabilityMap map;
   {
     StopOnSignal stop;
-    map = distribute::distributed_map(ranks, loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, progress_line(finished),
+    map = distribute::distributed_map(ranks, loaded.problem, eq.state, !o.at.empty(), *x, *y, o.threads, count_progress("sweep", ranks.size() > 1 ? "points, rank 0's share" : "points"),
                                       StopOnSignal::flag());
   }
   if (!ranks.is_root()) return map.interrupted ? exit_numerical_failure : exit_success;

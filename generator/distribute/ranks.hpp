@@ -33,6 +33,8 @@ class Ranks {
   Block share(long count) const;
   /// Every rank's values concatenated in rank order, on rank 0; empty on the others.
   std::vector<double> gather(const std::vector<double>& mine) const;
+  /// Every rank's text, in rank order, on rank 0; empty on the others.
+  std::vector<std::string> gather_text(const std::string& mine) const;
   /// Rank 0's value, on every rank.
   int broadcast(int value) const;
   /// True on every rank when it is true on any.

@@ -1,6 +1,7 @@
 /// @file Ranks over MPI_COMM_WORLD (Open MPI from Debian).
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <stdexcept>
@@ -55,6 +56,20 @@ std::vector<double> Ranks::gather(const std::vector<double>& mine) const {
   std::vector<double> all(static_cast<std::size_t>(total));
   MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   return all;
+}
+
+std::vector<std::string> Ranks::gather_text(const std::string& mine) const {
+  if (size_ == 1) return {mine};
+  int count = static_cast<int>(std::min<std::size_t>(mine.size(), 1 << 20));
+  std::vector<int> counts(is_root() ? std::size_t(size_) : 0), offsets(counts.size());
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  int total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) offsets[r] = total, total += counts[r];
+  std::string all(static_cast<std::size_t>(total), '\0');
+  MPI_Gatherv(mine.data(), count, MPI_CHAR, all.data(), counts.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+  std::vector<std::string> texts;
+  for (std::size_t r = 0; r < counts.size(); ++r) texts.push_back(all.substr(std::size_t(offsets[r]), std::size_t(counts[r])));
+  return texts;
 }
 
 int Ranks::broadcast(int value) const {

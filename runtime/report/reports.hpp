@@ -4,6 +4,7 @@
 #include <string>
 
 #include "analyse/eigenvalue_sweep.hpp"
+#include "analyse/ensemble.hpp"
 #include "analyse/stability_map.hpp"
 #include "simulation.hpp"
 
@@ -32,6 +33,13 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
 /// imaginary axis and the stable intervals.
 std::string draw_eigenvalue_sweep(const EigenvalueSweep& sweep, const std::string& parameter, const std::string& title,
                                   const std::string& png_path);
+
+/// An ensemble's signals over time, one panel each: the band between the outermost
+/// quantiles, the band of one standard deviation about the mean, the mean, and the median
+/// when it is among the quantiles.
+std::string draw_ensemble_bands(const std::string& title, const std::vector<double>& times,
+                                const std::vector<SignalBands>& bands, const std::vector<double>& probabilities,
+                                const std::string& png_path);
 
 /// FILE.png with `suffix` before the extension: the companion charts of `png_path`.
 std::string chart_path(const std::string& png_path, const std::string& suffix);

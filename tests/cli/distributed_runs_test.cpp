@@ -3,6 +3,8 @@
 // many ranks took part.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -66,6 +68,33 @@ TEST(DistributedRuns, AMistakeIsReportedOnceAndEveryRankStops) {
   std::size_t first = r.err.find("not a parameter");
   ASSERT_NE(first, std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("not a parameter", first + 1), std::string::npos) << r.err;
+}
+
+TEST(DistributedRuns, AnEnsembleHasTheSameStatisticsOnOneTwoAndThreeRanks) {
+  SKIP_WITHOUT_MPI();
+  std::string arguments = "ensemble '" + model_path("double_pendulum") +
+                          "' --samples 31 --vary 'm2=normal(1,0.05)' --vary 'phi1=uniform(0.4,0.6)' --measure 'max(phi2)' "
+                          "--t-end 3 --dt-out 0.05 --threads 2";
+  auto run = [&](int ranks) {
+    std::string dir = temporary_directory();
+    std::string files = " -o '" + dir + "/e.csv' --plot '" + dir + "/e.png' --format json";
+    CommandOutput r = ranks == 1 ? run_eomgen(arguments + files) : run_eomgen_on_ranks(ranks, arguments + files);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return std::make_tuple(read_file(dir + "/e.csv"), read_file(dir + "/e.png"), r.out);
+  };
+  auto [csv1, png1, out1] = run(1);
+  auto [csv2, png2, out2] = run(2);
+  auto [csv3, png3, out3] = run(3);
+  ASSERT_GT(csv1.size(), 1000u);
+  EXPECT_EQ(csv2, csv1);
+  EXPECT_EQ(csv3, csv1);
+  EXPECT_EQ(png2, png1);
+  // the statistics of the measure, to the last digit
+  auto measures = [](const std::string& out) { return out.substr(out.find("\"measures\"")); };
+  EXPECT_EQ(measures(out2), measures(out1));
+  EXPECT_EQ(measures(out3), measures(out1));
+  EXPECT_NE(out1.find("\"ranks\": 1"), std::string::npos) << out1;
+  EXPECT_NE(out2.find("\"ranks\": 2"), std::string::npos) << out2;
 }
 
 }  // namespace

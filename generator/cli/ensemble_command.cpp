@@ -1,0 +1,199 @@
+/// @file `eomgen ensemble`: Monte-Carlo simulation of a model over distributions of its
+/// parameters, inputs and initial values, on all cores and, under mpirun, on every rank;
+/// the statistics of the recorded signals over time and of scalar measures per sample.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "analyse/integrator_choice.hpp"
+#include "cli/commands.hpp"
+#include "cli/count_progress.hpp"
+#include "cli/ensemble_options.hpp"
+#include "cli/ensemble_output.hpp"
+#include "cli/ranked_run.hpp"
+#include "cli/stop_signal.hpp"
+#include "common/output_file.hpp"
+#include "distribute/distributed_ensemble.hpp"
+#include "report/reports.hpp"
+
+namespace eomgen::cli {
+
+namespace {
+
+struct Options {
+  std::string model;
+  long samples = 100;
+  unsigned long seed = 1;
+  std::vector<std::string> vary, outputs, measures, sets, initials;
+  std::string quantiles = "0.05,0.5,0.95";
+  runtime::SimulationSettings settings;
+  unsigned threads = 0;
+  std::string csv, plot;
+  bool json = false;
+};
+
+// the setup from the flags, or the exit status after saying what is wrong
+std::optional<int> build_setup(const Options& o, const LoadedProblem& loaded, runtime::EnsembleSetup& setup) {
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  setup.base = loaded.problem;
+  setup.initial_state = loaded.initial_state;
+  setup.settings = o.settings;
+  setup.seed = o.seed;
+  if (!assign_states(m, o.initials, "--initial", setup.initial_state)) return exit_user_error;
+  for (const std::string& text : o.vary) {
+    auto v = parse_variation(m, text);
+    if (!v) return exit_user_error;
+    for (const runtime::Variation& earlier : setup.variations)
+      if (earlier.name == v->name) {
+        std::cerr << fmt::format("eomgen: error: --vary {}: given twice\n", v->name);
+        return exit_user_error;
+      }
+    setup.variations.push_back(*v);
+  }
+  for (const std::string& text : o.measures) {
+    auto measure = parse_measure(m, text);
+    if (!measure) return exit_user_error;
+    setup.measures.push_back(*measure);
+  }
+  setup.signals = o.outputs;
+  if (setup.signals.empty())  // the model's outputs, else its coordinates
+    setup.signals = m.num_outputs ? std::vector<std::string>(m.output_names, m.output_names + m.num_outputs)
+                                  : std::vector<std::string>(m.coordinate_names, m.coordinate_names + m.num_coordinates);
+  for (const std::string& name : setup.signals)
+    if (!check_signal(m, name, "--outputs")) return exit_user_error;
+  return std::nullopt;
+}
+
+std::optional<int> check_settings(const Options& o, runtime::EnsembleSetup& setup, const eomgen_model_abi& m) {
+  runtime::SimulationSettings& s = setup.settings;
+  if (o.samples < 1 || o.samples > 100'000'000) {
+    std::cerr << "eomgen: error: --samples must be between 1 and 1e8\n";
+    return exit_user_error;
+  }
+  if (!(s.t_end > s.t_start) || !(s.dt_out > 0) || !(s.rtol > 0) || !(s.atol > 0) || s.step < 0) {
+    std::cerr << "eomgen: error: need --t-end > 0, --dt-out > 0, --rtol > 0, --atol > 0 and --step >= 0\n";
+    return exit_user_error;
+  }
+  // every sample's recorded signals are kept until rank 0 has them: refuse what cannot fit
+  double times = std::floor((s.t_end - s.t_start) / s.dt_out) + 2;
+  double bytes = times * double(o.samples) * double(setup.signals.size()) * 8;
+  if (bytes > 4e9) {
+    std::cerr << fmt::format("eomgen: error: {} samples of {} signals at {:.4g} output times hold {:.3g} GB\n"
+                             "  hint: raise --dt-out, record fewer --outputs, or split the study by --seed\n",
+                             o.samples, setup.signals.size(), times, bytes / 1e9);
+    return exit_user_error;
+  }
+  if (s.integrator == "auto") {
+    runtime::IntegratorChoice choice = runtime::choose_integrator(setup.base, setup.initial_state, s.t_start);
+    s.integrator = choice.integrator;
+    std::cerr << fmt::format("eomgen: integrator {}: {} (--integrator chooses another)\n", choice.integrator, choice.reason);
+  }
+  if (std::string refusal = runtime::integrator_refusal(m, s.integrator); !refusal.empty()) {
+    std::cerr << fmt::format("eomgen: error: --integrator {}: {}\n", s.integrator, refusal);
+    return exit_user_error;
+  }
+  return std::nullopt;
+}
+
+void report_failures(const distribute::EnsembleResult& r, const runtime::EnsembleSetup& setup) {
+  if (r.failed == 0) return;
+  std::string draws;
+  for (std::size_t i = 0; i < setup.variations.size() && i < r.first_failed_drawn.size(); ++i)
+    draws += fmt::format("{}{} = {:.10g}", i ? ", " : "", setup.variations[i].name, r.first_failed_drawn[i]);
+  std::cerr << fmt::format("eomgen: warning: {} of {} runs failed and are left out of the statistics; the first, sample {} "
+                           "({}): {}\n",
+                           r.failed, r.samples, r.first_failed, draws.empty() ? "no draws" : draws, r.first_failure);
+}
+
+int run_ensemble(const Options& o) {
+  const distribute::Ranks& ranks = distribute::Ranks::world();
+  QuietUnlessRoot quiet(ranks);
+  for (const std::string* path : {&o.csv, &o.plot})
+    if (std::string refusal = path->empty() ? "" : output_file_refusal(*path); !refusal.empty()) {
+      std::cerr << "eomgen: error: " << (path == &o.csv ? "-o" : "--plot") << ": " << refusal << "\n";
+      return exit_user_error;
+    }
+  auto probabilities = parse_probabilities(o.quantiles);
+  if (!probabilities) return exit_user_error;
+  LoadedProblem loaded;
+  if (auto status = load_on_every_rank(ranks, o.model, o.sets, loaded)) return *status;
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  runtime::EnsembleSetup setup;
+  if (auto status = build_setup(o, loaded, setup)) return *status;
+  if (auto status = check_settings(o, setup, m)) return *status;
+  std::cerr << fmt::format("eomgen: ensemble of {} samples of {} on {}\n", o.samples, m.name, ranks.description());
+  distribute::EnsembleResult result;
+  {
+    StopOnSignal stop;
+    result = distribute::distributed_ensemble(ranks, setup, o.samples, *probabilities, o.threads,
+                                              count_progress("ensemble", ranks.size() > 1 ? "samples, rank 0's share" : "samples"), StopOnSignal::flag());
+  }
+  if (result.interrupted) {
+    std::cerr << "\neomgen ensemble: interrupted; no statistics of a part of the samples are written\n";
+    return exit_numerical_failure;
+  }
+  if (!ranks.is_root()) return result.failed == result.samples ? exit_numerical_failure : exit_success;
+  report_failures(result, setup);
+  if (result.failed == result.samples) {
+    std::cerr << "eomgen: every run failed: no statistics\n";
+    return exit_numerical_failure;
+  }
+  if (!o.csv.empty())
+    if (std::string failure = write_file_atomically(o.csv, ensemble_csv(result, *probabilities)); !failure.empty()) {
+      std::cerr << "eomgen: " << failure << "\n";
+      return exit_user_error;
+    }
+  if (!o.plot.empty()) {
+    std::string title = fmt::format("{}: ensemble of {} samples", m.name, o.samples);
+    if (std::string failure = runtime::draw_ensemble_bands(title, result.times, result.bands, *probabilities, o.plot);
+        !failure.empty())
+      std::cerr << "eomgen: warning: no chart: " << failure << "\n";
+  }
+  EnsembleDescription d{m.name, setup.settings.integrator, &setup, *probabilities, ranks.description(), ranks.size()};
+  if (o.json) print_ensemble_json(result, d);
+  else print_ensemble_text(result, d);
+  return exit_success;
+}
+
+}  // namespace
+
+Command add_ensemble_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("ensemble", "Monte-Carlo simulation over distributions of parameters and initial values");
+  auto o = std::make_shared<Options>();
+  o->settings.integrator = "auto";
+  cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
+  cmd->add_option("--samples", o->samples, "Number of samples (default 100)");
+  cmd->add_option("--vary", o->vary,
+                  "A parameter, input or initial value drawn per sample, one per flag: --vary 'm=normal(1,0.05)', "
+                  "--vary 'phi=uniform(0.4,0.6)', --vary 'k=lognormal(0,0.1)' (of log k)");
+  cmd->add_option("--outputs", o->outputs, "Signals whose statistics over time are written: outputs, states or energy "
+                                           "(default: the model's outputs, else its coordinates)")
+      ->delimiter(',');
+  cmd->add_option("--measure", o->measures,
+                  "A number per sample, one per flag: final(S), max(S), min(S), mean(S) (time average), period(S) (mean "
+                  "time between upward crossings of the midrange)");
+  cmd->add_option("--quantiles", o->quantiles, "Probabilities of the quantiles (default 0.05,0.5,0.95)");
+  cmd->add_option("--seed", o->seed, "Seed of the draws (default 1): sample k's draws depend on it and k only");
+  cmd->add_option("--t-end", o->settings.t_end, "End time [s] (default 10)");
+  cmd->add_option("--dt-out", o->settings.dt_out, "Output interval [s] (default 0.01)");
+  cmd->add_option("--integrator", o->settings.integrator, "As for simulate (default auto, chosen once at the base values)");
+  cmd->add_option("--rtol", o->settings.rtol, "Relative tolerance (default 1e-8)");
+  cmd->add_option("--atol", o->settings.atol, "Absolute tolerance (default 1e-10)");
+  cmd->add_option("--step", o->settings.step, "Fixed step of rk4, verlet and gauss-legendre [s] (default dt-out/10)");
+  cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
+  cmd->add_option("--initial", o->initials, "Initial value, one per flag: --initial phi=0.3");
+  cmd->add_option("--threads", o->threads, "Threads per process (default: all cores)");
+  cmd->add_option("-o,--output", o->csv, "CSV: t, then mean, sd and quantiles of each signal");
+  cmd->add_option("--plot", o->plot, "Band chart (PNG): mean, ± one sd and the outer quantiles of each signal over time");
+  auto format = std::make_shared<std::string>("text");
+  cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
+  return [cmd, o, format]() -> int {
+    if (!cmd->parsed()) return -1;
+    o->json = *format == "json";
+    return run_ensemble(*o);
+  };
+}
+
+}  // namespace eomgen::cli
