@@ -41,7 +41,8 @@ std::optional<int> build_setup(const Options& o, const LoadedProblem& loaded, ru
   setup.initial_state = loaded.initial_state;
   setup.settings = o.settings;
   setup.seed = o.seed;
-  if (!assign_states(m, o.initials, "--initial", setup.initial_state)) return exit_user_error;
+  std::vector<bool> given;
+  if (!assign_states(m, o.initials, "--initial", setup.initial_state, &given)) return exit_user_error;
   for (const std::string& text : o.vary) {
     auto v = parse_variation(m, text);
     if (!v) return exit_user_error;
@@ -51,7 +52,10 @@ std::optional<int> build_setup(const Options& o, const LoadedProblem& loaded, ru
         return exit_user_error;
       }
     setup.variations.push_back(*v);
+    // a constrained model keeps a drawn initial value where the constraints allow it
+    if (v->target == runtime::Variation::Target::state) given[std::size_t(v->index)] = true;
   }
+  setup.settings.given_state = given;
   for (const std::string& text : o.measures) {
     auto measure = parse_measure(m, text);
     if (!measure) return exit_user_error;
@@ -110,8 +114,10 @@ void report_failures(const distribute::EnsembleResult& r, const runtime::Ensembl
 int run_ensemble(const Options& o) {
   const distribute::Ranks& ranks = distribute::Ranks::world();
   QuietUnlessRoot quiet(ranks);
+  // the files are rank 0's to write: only its file system counts
   for (const std::string* path : {&o.csv, &o.plot})
-    if (std::string refusal = path->empty() ? "" : output_file_refusal(*path); !refusal.empty()) {
+    if (std::string refusal = refusal_on_root(ranks, [&] { return path->empty() ? "" : output_file_refusal(*path); });
+        !refusal.empty()) {
       std::cerr << "eomgen: error: " << (path == &o.csv ? "-o" : "--plot") << ": " << refusal << "\n";
       return exit_user_error;
     }

@@ -3,6 +3,7 @@
 /// speaking.
 #pragma once
 
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -14,9 +15,14 @@
 namespace eomgen::cli {
 
 /// Rank 0 derives and compiles first; the others follow once the header is in the cache,
-/// or return rank 0's exit status when it failed (which rank 0 has said).
+/// or return rank 0's exit status when it failed (which rank 0 has said). When another
+/// rank fails (a host without the compiler), rank 0 says so and every rank returns.
 std::optional<int> load_on_every_rank(const distribute::Ranks& ranks, const std::string& model,
                                       const std::vector<std::string>& sets, LoadedProblem& out);
+
+/// Rank 0's answer to a question about the file system (an output file's folder), on every
+/// rank: empty when rank 0 found nothing wrong.
+std::string refusal_on_root(const distribute::Ranks& ranks, const std::function<std::string()>& check);
 
 /// Silences std::cerr on every rank but 0 while it lives: the ranks meet the same mistakes,
 /// and the user should read each once.
