@@ -54,7 +54,7 @@ struct Parameters {
 inline constexpr std::size_t num_constraints = 2;
 /// Lagrange I: one multiplier per constraint, M q'' = f + C^T lambda; none otherwise.
 inline constexpr std::size_t num_multipliers = 0;
-inline constexpr std::array<const char*, num_constraints> constraint_names{{"roll_x", "roll_y"}};
+inline constexpr std::array<const char*, num_constraints> constraint_names{{"roll_slip_x", "roll_slip_y"}};
 inline constexpr std::array<bool, num_constraints> constraint_is_holonomic{{false, false}};
 inline constexpr std::array<const char*, num_multipliers> multiplier_names{{}};
 /// Baumgarte's stabilization of Lagrange I: C q'' + gamma = -2 alpha (C q' + b) - beta^2 g,

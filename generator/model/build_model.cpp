@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "kinematics/rolling_contact.hpp"
+#include "model/frames.hpp"
 #include "model/model.hpp"
 
 namespace eomgen {
@@ -46,6 +48,8 @@ class Builder {
     declare_symbols();
     read_definitions();
     read_initial_state();
+    read_frames();
+    read_points();
     read_bodies();
     read_energies_and_forces();
     read_constraints();
@@ -76,7 +80,7 @@ class Builder {
 
   void declare(const std::string& name, SourceLocation where, const std::string& key,
                SymbolKind kind, std::size_t index, const char* what) {
-    static const char* kind_names[] = {"a parameter", "a coordinate", "an input", "a definition"};
+    static const char* kind_names[] = {"a parameter", "a coordinate", "an input", "a definition", "a vector"};
     if (!is_identifier(name)) {
       d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
       return;
@@ -132,15 +136,84 @@ class Builder {
 
   // in file order: each may use the symbols and the definitions before it
   void read_definitions() {
-    Symbols& s = m_.symbols;
     std::vector<std::string> later;
-    for (const NamedExpression& e : f_.definitions) later.push_back(e.name);
-    for (const NamedExpression& e : f_.definitions) {
-      auto value = parse_expression(e.expression, m_.symbols, {allow_everything, "a definition", &later}, d_);
+    for (const DefinitionEntry& e : f_.definitions) later.push_back(e.name);
+    for (const DefinitionEntry& e : f_.definitions) {
       later.erase(later.begin());
-      declare(e.name, e.where, "definitions." + e.name, SymbolKind::definition, s.definitions.size(), "a definition");
-      s.definition_names.push_back(e.name);
-      s.definitions.push_back(value.value_or(0));
+      std::string key = "definitions." + e.name;
+      if (e.components.size() == 1) {
+        auto value = parse_expression(e.components[0], m_.symbols, {allow_everything, "a definition", &later}, d_);
+        define(e.name, e.where, key, value.value_or(0));
+        continue;
+      }
+      Vector3 v{0, 0, 0};
+      for (std::size_t i = 0; i < 3; ++i)
+        if (auto c = parse_expression(e.components[i], m_.symbols, {allow_everything, "a definition", &later}, d_)) v[i] = *c;
+      define_vector(e.name, e.where, key, v);
+    }
+  }
+
+  void define(const std::string& name, SourceLocation where, const std::string& key, const ex& value) {
+    Symbols& s = m_.symbols;
+    declare(name, where, key, SymbolKind::definition, s.definitions.size(), "a definition");
+    s.definition_names.push_back(name);
+    s.definitions.push_back(value);
+  }
+
+  // NAME names the vector (to refuse it as a scalar); NAME.x, NAME.y, NAME.z are definitions
+  void define_vector(const std::string& name, SourceLocation where, const std::string& key, const Vector3& v) {
+    Symbols& s = m_.symbols;
+    if (!is_identifier(name)) {
+      d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
+      return;
+    }
+    declare(name, where, key, SymbolKind::vector, s.vector_names.size(), "a vector");
+    s.vector_names.push_back(name);
+    for (unsigned a = 0; a < 3; ++a) {
+      std::string component = fmt::format("{}.{}", name, "xyz"[a]);
+      s.by_name[component] = {SymbolKind::definition, s.definitions.size()};
+      s.definition_names.push_back(component);
+      s.definitions.push_back(v[a]);
+    }
+  }
+
+  // [[frames]] in file order: a parent comes before its children
+  void read_frames() {
+    for (const FrameEntry& f : f_.frames) {
+      if (f.name.empty()) continue;  // reported by the parser
+      if (!is_identifier(f.name) || f.name == "inertial") {
+        d_.error(f.where, f.key + ".name", fmt::format("'{}' cannot name a frame", f.name),
+                 "use letters, digits and _; \"inertial\" is the inertial frame");
+        continue;
+      }
+      const PlacedFrame* parent = frame(f.parent, f.parent_where, f.key + ".parent");
+      if (!parent) continue;
+      Rotation relative = rotation(f.rotation);
+      Vector3 origin = f.origin.empty() ? Vector3{0, 0, 0} : vector(f.origin, allow_configuration, "a position");
+      if (!frames_.emplace(f.name, place_frame(*parent, relative, origin)).second)
+        d_.error(f.where, f.key + ".name", fmt::format("two frames are named '{}'", f.name), "give each frame its own name");
+    }
+  }
+
+  // the frame named `name` (the inertial frame when empty), or nothing after an error
+  const PlacedFrame* frame(const std::string& name, const SourceLocation& where, const std::string& key) {
+    static const PlacedFrame inertial = inertial_frame();
+    if (name.empty()) return &inertial;
+    auto found = frames_.find(name);
+    if (found != frames_.end()) return &found->second;
+    std::vector<std::string> names{"inertial"};
+    for (const FrameEntry& f : f_.frames) names.push_back(f.name);
+    bool later = std::find(names.begin(), names.end(), name) != names.end();
+    d_.error(where, key, fmt::format("'{}' is not a frame{}", name, later ? " yet: [[frames]] are read from the top" : ""),
+             later ? "move the parent frame above the frames and bodies that use it" : suggest(name, names, "frames"));
+    return nullptr;
+  }
+
+  void read_points() {
+    for (const PointEntry& p : f_.points) {
+      const PlacedFrame* in = frame(p.frame, p.frame_where, p.key + ".frame");
+      if (!in || p.name.empty()) continue;
+      define_vector(p.name, p.where, p.key + ".name", place_point(*in, vector(p.position, allow_configuration, "a position")));
     }
   }
 
@@ -186,23 +259,27 @@ class Builder {
   void read_bodies() {
     for (const ParticleEntry& p : f_.particles) {
       check_body_name(p.name, p.where, p.key);
-      m_.particles.push_back({p.name, mass(p.mass), vector(p.position, allow_configuration, "a position")});
+      const PlacedFrame* in = frame(p.frame, p.frame_where, p.key + ".frame");
+      Vector3 local = vector(p.position, allow_configuration, "a position");
+      m_.particles.push_back({p.name, mass(p.mass), in ? place_point(*in, local) : local});
     }
     for (const RigidBodyEntry& b : f_.rigid_bodies) {
       check_body_name(b.name, b.where, b.key);
-      RigidBody body{b.name, mass(b.mass), vector(b.center, allow_configuration, "a position"), {}, {3, 3}};
-      body.rotation = rotation(b);
+      const PlacedFrame* in = frame(b.frame, b.frame_where, b.key + ".frame");
+      Vector3 local = vector(b.center, allow_configuration, "a position");
+      RigidBody body{b.name, mass(b.mass), in ? place_point(*in, local) : local, {}, {3, 3}};
+      body.rotation = in ? compose(in->rotation, rotation(b.rotation)) : rotation(b.rotation);
       body.inertia = inertia(b);
       m_.rigid_bodies.push_back(body);
     }
   }
 
-  Rotation rotation(const RigidBodyEntry& b) {
+  Rotation rotation(const std::optional<RotationEntry>& given) {
     Rotation r;
     r.matrix = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
-    if (!b.rotation) return r;
-    if (b.rotation->product) {
-      auto sequence = parse_rotation_product(*b.rotation->product, m_.symbols, {allow_configuration, "a rotation"}, d_);
+    if (!given) return r;
+    if (given->product) {
+      auto sequence = parse_rotation_product(*given->product, m_.symbols, {allow_configuration, "a rotation"}, d_);
       if (!sequence) return r;
       r.sequence = *sequence;
       for (const ElementaryRotation& e : r.sequence) r.matrix = r.matrix.mul(elementary_rotation(e.axis, e.angle));
@@ -210,9 +287,9 @@ class Builder {
     }
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j)
-        if (i < b.rotation->matrix.size() && j < b.rotation->matrix[i].size())
-          if (auto e = parse(b.rotation->matrix[i][j], allow_configuration, "a rotation")) r.matrix(i, j) = *e;
-    check_orthogonal(r.matrix, *b.rotation);
+        if (i < given->matrix.size() && j < given->matrix[i].size())
+          if (auto e = parse(given->matrix[i][j], allow_configuration, "a rotation")) r.matrix(i, j) = *e;
+    check_orthogonal(r.matrix, *given);
     return r;
   }
 
@@ -340,20 +417,16 @@ class Builder {
 
   void read_constraints() {
     for (const ConstraintEntry& c : f_.constraints) {
+      if (c.kind == ConstraintEntry::Kind::rolls) {
+        read_rolling(c);
+        continue;
+      }
       bool holonomic = c.kind == ConstraintEntry::Kind::holonomic;
       auto e = holonomic ? parse(c.expression, allow_configuration, "a holonomic constraint")
                          : parse(c.expression, allow_configuration | allow_velocities, "a nonholonomic constraint");
       if (!e) continue;
       if (!holonomic) check_linear_in_velocities(*e, c.expression, "a nonholonomic constraint");
-      std::string name = c.name.empty() ? fmt::format("c{}", m_.constraints.size() + 1) : c.name;
-      if (!is_cpp_identifier(name))
-        d_.error(c.name_where, c.key + ".name", fmt::format("'{}' is not a C++ identifier", name),
-                 "a constraint's name becomes part of its multiplier's name, lambda_NAME");
-      for (const Constraint& other : m_.constraints)
-        if (other.name == name)
-          d_.error(c.name_where.line ? c.name_where : c.where, c.key + ".name",
-                   fmt::format("two constraints are named '{}'", name), "give each constraint its own name");
-      m_.constraints.push_back({holonomic, *e, c.key, name});
+      add_constraint(c, holonomic, *e, c.name.empty() ? fmt::format("c{}", m_.constraints.size() + 1) : c.name);
     }
     for (const NamedExpression& p : f_.pseudo_velocities) {
       std::string key = "pseudo_velocities." + p.name;
@@ -365,6 +438,42 @@ class Builder {
       check_linear_in_velocities(*e, p.expression, "a pseudo-velocity");
       m_.pseudo_velocities.push_back({p.name, *e});
     }
+  }
+
+  void add_constraint(const ConstraintEntry& c, bool holonomic, const ex& e, const std::string& name) {
+    if (!is_cpp_identifier(name))
+      d_.error(c.name_where, c.key + ".name", fmt::format("'{}' is not a C++ identifier", name),
+               "a constraint's name becomes part of its multiplier's name, lambda_NAME");
+    for (const Constraint& other : m_.constraints)
+      if (other.name == name)
+        d_.error(c.name_where.line ? c.name_where : c.where, c.key + ".name",
+                 fmt::format("two constraints are named '{}'", name), "give each constraint its own name");
+    m_.constraints.push_back({holonomic, e, c.key, name});
+  }
+
+  // rolls: the contact condition (unless the coordinates keep it already) and two no-slip conditions
+  void read_rolling(const ConstraintEntry& c) {
+    auto body = std::find_if(m_.rigid_bodies.begin(), m_.rigid_bodies.end(),
+                             [&](const RigidBody& b) { return b.name == c.body; });
+    if (body == m_.rigid_bodies.end()) {
+      std::vector<std::string> names;
+      for (const RigidBody& b : m_.rigid_bodies) names.push_back(b.name);
+      d_.error(c.body_where, c.key + ".rolls.body", fmt::format("'{}' is not a rigid body", c.body),
+               suggest(c.body, names, "rigid bodies"));
+      return;
+    }
+    auto radius = parse(c.radius, allow_parameters, "a radius");
+    Vector3 axis = vector(c.axis, allow_parameters, "an axis");
+    if (!radius) return;
+    if ((axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).is_zero()) {
+      d_.error(c.axis[0].where, c.key + ".rolls.axis", "the disk's axis is zero", "give its direction in the body frame, e.g. [0, 1, 0]");
+      return;
+    }
+    RollingContact contact = rolling_contact(body->center, body->rotation, axis, *radius, m_.symbols);
+    std::string base = c.name.empty() ? c.body : c.name;
+    if (!contact.height.is_zero()) add_constraint(c, true, contact.height, base + "_contact");
+    add_constraint(c, false, contact.slip_x, base + "_slip_x");
+    add_constraint(c, false, contact.slip_y, base + "_slip_y");
   }
 
   // a(q,t)·der(q) + b(q,t): every second derivative in the velocities vanishes
@@ -418,6 +527,7 @@ class Builder {
   Model m_;
   std::map<std::string, SourceLocation> declared_at_;
   std::map<std::string, int> body_names_;
+  std::map<std::string, PlacedFrame> frames_;
 };
 
 }  // namespace

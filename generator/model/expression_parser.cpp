@@ -162,6 +162,10 @@ class Parser {
       if (pos_ >= s_.size()) fail(pos_, "the expression ends too early", "an operand is missing");
       fail(pos_, fmt::format("unexpected '{}'", s_[pos_]), "expected a number, a name or '('");
     }
+    if (peek() == '.' && std::isalpha(static_cast<unsigned char>(peek(1)))) {  // a component, P.x
+      ++pos_;
+      name += "." + identifier();
+    }
     skip_space();
     if (peek() == '(') return call(start, name);
     return symbol(start, name);
@@ -221,9 +225,10 @@ class Parser {
       fail(at, fmt::format("der() of {} '{}': only coordinates have velocities",
                            found->second.kind == SymbolKind::parameter ? "parameter"
                            : found->second.kind == SymbolKind::input   ? "input"
+                           : found->second.kind == SymbolKind::vector  ? "vector"
                                                                        : "definition",
                            inner),
-           found->second.kind == SymbolKind::definition
+           found->second.kind == SymbolKind::definition || found->second.kind == SymbolKind::vector
                ? "write the definition's rate out in der() of its coordinates (the chain rule), or define it too"
                : "parameters are constant; inputs are given functions of time");
     if (!(rules_.allowed & allow_velocities))
@@ -267,6 +272,9 @@ class Parser {
         return symbols_.inputs[info.index];
       case SymbolKind::definition:
         return definition(start, name, symbols_.definitions[info.index]);
+      case SymbolKind::vector:
+        fail(start, fmt::format("'{}' is a vector, not a scalar", name),
+             fmt::format("use its components {0}.x, {0}.y, {0}.z", name));
     }
     return 0;
   }

@@ -10,7 +10,9 @@
 
 namespace eomgen {
 
-enum class SymbolKind { parameter, coordinate, input, definition };
+/// A vector (a point or a vector definition) is used through its components NAME.x, NAME.y,
+/// NAME.z, each a definition.
+enum class SymbolKind { parameter, coordinate, input, definition, vector };
 
 struct SymbolInfo {
   SymbolKind kind;
@@ -34,6 +36,7 @@ struct Symbols {
   /// [definitions]: names for expressions, written into every expression that uses them
   std::vector<std::string> definition_names;
   std::vector<GiNaC::ex> definitions;
+  std::vector<std::string> vector_names;  // vectors and points; their components are definitions
   std::map<std::string, SymbolInfo> by_name;
 
   std::size_t num_coordinates() const { return coordinates.size(); }

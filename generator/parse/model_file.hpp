@@ -35,7 +35,9 @@ struct CoordinateEntry {
 struct ParticleEntry {
   std::string name;
   ExpressionText mass;
-  std::vector<ExpressionText> position;  // three components, inertial frame
+  std::vector<ExpressionText> position;  // three components, in `frame` (inertial when empty)
+  std::string frame;
+  SourceLocation frame_where;
   SourceLocation where;
   std::string key;
 };
@@ -51,12 +53,42 @@ struct RotationEntry {
 struct RigidBodyEntry {
   std::string name;
   ExpressionText mass;
-  std::vector<ExpressionText> center;               // three components, inertial frame
-  std::optional<RotationEntry> rotation;            // identity when absent
+  std::vector<ExpressionText> center;               // three components, in `frame` (inertial when empty)
+  std::optional<RotationEntry> rotation;            // relative to `frame`; identity when absent
+  std::string frame;
+  SourceLocation frame_where;
   std::vector<ExpressionText> principal_inertia;    // three moments, or empty
   std::vector<std::vector<ExpressionText>> inertia; // 3×3 body-frame tensor, or empty
   SourceLocation where;
   std::string key;
+};
+
+/// [[frames]]: a frame placed in its parent by a rotation and an origin in parent coordinates.
+struct FrameEntry {
+  std::string name;
+  std::string parent;  // empty: the inertial frame
+  SourceLocation parent_where;
+  std::optional<RotationEntry> rotation;  // identity when absent
+  std::vector<ExpressionText> origin;     // empty: the parent's origin
+  SourceLocation where;
+  std::string key;
+};
+
+/// [[points]]: a named point fixed in a frame, usable as a vector (P.x, P.y, P.z; at = "P").
+struct PointEntry {
+  std::string name;
+  std::string frame;  // empty: the inertial frame
+  SourceLocation frame_where;
+  std::vector<ExpressionText> position;
+  SourceLocation where;
+  std::string key;
+};
+
+/// [definitions]: one expression (a scalar) or three (a vector, used as NAME.x, NAME.y, NAME.z).
+struct DefinitionEntry {
+  std::string name;
+  std::vector<ExpressionText> components;
+  SourceLocation where;  // of the name
 };
 
 struct NamedExpression {
@@ -79,9 +111,14 @@ struct ForceEntry {
 };
 
 struct ConstraintEntry {
-  enum class Kind { holonomic, nonholonomic };
+  enum class Kind { holonomic, nonholonomic, rolls };
   Kind kind = Kind::holonomic;
   ExpressionText expression;
+  // rolls = { body, radius, axis }: a thin disk rolling without slipping on the plane z = 0
+  std::string body;
+  SourceLocation body_where;
+  ExpressionText radius;
+  std::vector<ExpressionText> axis;  // the disk's axis in the body frame
   SourceLocation where;
   std::string key;
   std::string name;  // optional; names the multiplier lambda_NAME
@@ -129,13 +166,15 @@ struct ModelFile {
   std::vector<CoordinateEntry> coordinates;
   std::optional<SourceLocation> coordinates_where;  // the [coordinates] section, when there is one
   std::vector<ParameterEntry> inputs;
+  std::vector<FrameEntry> frames;
+  std::vector<PointEntry> points;
   std::vector<ParticleEntry> particles;
   std::vector<RigidBodyEntry> rigid_bodies;
   std::vector<ExpressionText> gravity;  // empty when there is no [gravity]
   std::optional<ExpressionText> kinetic, potential, dissipation;
   std::vector<ForceEntry> forces;
   std::vector<ConstraintEntry> constraints;
-  std::vector<NamedExpression> definitions;  // [definitions]: named expressions, in file order
+  std::vector<DefinitionEntry> definitions;  // [definitions]: named expressions, in file order
   std::vector<NamedExpression> pseudo_velocities;
   std::vector<NamedExpression> outputs;
   std::vector<SceneEntry> scenes;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "parse/model_file.hpp"
+#include "parse/parse_frames.hpp"
 #include "parse/parse_scenes.hpp"
 #include "parse/toml_reader.hpp"
 #include "parse/utf8.hpp"
@@ -16,7 +17,7 @@ using toml_reader::Entry;
 using toml_reader::Reader;
 
 const std::vector<std::string> top_level_keys = {
-    "model", "parameters", "coordinates", "inputs", "particles", "rigid_bodies", "gravity",
+    "model", "parameters", "coordinates", "inputs", "frames", "points", "particles", "rigid_bodies", "gravity",
     "energy", "forces", "constraints", "pseudo_velocities", "outputs", "scenes", "variants", "definitions"};
 
 // [model]: name, title, method
@@ -87,35 +88,21 @@ void read_particles(Reader& r, const toml::node& node, ModelFile& m) {
   if (!a) return;
   for (std::size_t i = 0; i < a->size(); ++i) {
     std::string key = fmt::format("particles[{}]", i);
-    const toml::table* t = r.table((*a)[i], key, "name, mass, position");
+    const toml::table* t = r.table((*a)[i], key, "name, mass, position, frame");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "mass", "position"});
+    r.check_keys(*t, key, {"name", "mass", "position", "frame"});
     ParticleEntry p;
     p.key = key;
     p.where = r.at((*a)[i]);
     p.name = read_name(r, *t, (*a)[i], key);
+    read_frame_name(r, *t, key, p.frame, p.frame_where);
     if (const toml::node* n = t->get("mass")) r.expression(*n, key + ".mass", p.mass);
     else r.error(p.where, key, "missing key 'mass'", "add mass = \"m\" (a parameter or an expression)");
     if (const toml::node* n = t->get("position")) r.vector(*n, key + ".position", 3, p.position);
-    else r.error(p.where, key, "missing key 'position'", "add position = [\"x\", \"y\", \"z\"]");
+    else if (!t->contains("frame"))
+      r.error(p.where, key, "missing key 'position'", "add position = [\"x\", \"y\", \"z\"]");
     m.particles.push_back(p);
   }
-}
-
-void read_rotation(Reader& r, const toml::node& node, const std::string& key, RigidBodyEntry& b) {
-  RotationEntry rot{std::nullopt, {}, r.at(node), key};
-  if (node.is_string()) {
-    ExpressionText text;
-    r.expression(node, key, text);
-    rot.product = text;
-  } else if (node.is_array()) {
-    r.matrix3(node, key, rot.matrix);
-  } else {
-    r.error(r.at(node), key, fmt::format("expected a rotation, got {}", toml_reader::type_name(node)),
-            "write e.g. \"euler313(psi, theta, phi)\", \"rot_z(a)*rot_x(b)\" or a 3x3 array");
-    return;
-  }
-  b.rotation = rot;
 }
 
 void read_inertia(Reader& r, const toml::node& node, const std::string& key, RigidBodyEntry& b) {
@@ -136,18 +123,21 @@ void read_rigid_bodies(Reader& r, const toml::node& node, ModelFile& m) {
   if (!a) return;
   for (std::size_t i = 0; i < a->size(); ++i) {
     std::string key = fmt::format("rigid_bodies[{}]", i);
-    const toml::table* t = r.table((*a)[i], key, "name, mass, center, rotation, inertia");
+    const toml::table* t = r.table((*a)[i], key, "name, mass, center, rotation, inertia, frame");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "mass", "center", "rotation", "inertia"});
+    r.check_keys(*t, key, {"name", "mass", "center", "rotation", "inertia", "frame"});
     RigidBodyEntry b;
     b.key = key;
     b.where = r.at((*a)[i]);
     b.name = read_name(r, *t, (*a)[i], key);
+    read_frame_name(r, *t, key, b.frame, b.frame_where);
     if (const toml::node* n = t->get("mass")) r.expression(*n, key + ".mass", b.mass);
     else r.error(b.where, key, "missing key 'mass'", "add mass = \"m\"");
     if (const toml::node* n = t->get("center")) r.vector(*n, key + ".center", 3, b.center);
-    else r.error(b.where, key, "missing key 'center'", "add center = [\"x\", \"y\", \"z\"], the centre of mass");
-    if (const toml::node* n = t->get("rotation")) read_rotation(r, *n, key + ".rotation", b);
+    else if (!t->contains("frame"))
+      r.error(b.where, key, "missing key 'center'",
+              "add center = [\"x\", \"y\", \"z\"], the centre of mass, or frame = \"...\" with the centre at its origin");
+    if (const toml::node* n = t->get("rotation")) b.rotation = read_rotation(r, *n, key + ".rotation");
     if (const toml::node* n = t->get("inertia")) read_inertia(r, *n, key + ".inertia", b);
     else r.error(b.where, key, "missing key 'inertia'", "add inertia = [\"A\", \"B\", \"C\"] (principal moments)");
     m.rigid_bodies.push_back(b);
@@ -244,6 +234,27 @@ void read_forces(Reader& r, const toml::node& node, ModelFile& m) {
   }
 }
 
+// rolls = { body, radius, axis }
+bool read_rolling(Reader& r, const toml::node& node, const std::string& key, ConstraintEntry& c) {
+  const toml::table* t = r.table(node, key, "body, radius, axis");
+  if (!t) return false;
+  r.check_keys(*t, key, {"body", "radius", "axis"});
+  c.kind = ConstraintEntry::Kind::rolls;
+  const toml::node* body = t->get("body");
+  const toml::node* radius = t->get("radius");
+  const toml::node* axis = t->get("axis");
+  if (!body || !radius || !axis) {
+    r.error(r.at(node), key, "a rolling disk needs body, radius and axis",
+            "write rolls = { body = \"wheel\", radius = \"r\", axis = [0, 1, 0] } (the axis in the body frame)");
+    return false;
+  }
+  c.body_where = r.at(*body);
+  c.body_where.column += 1;
+  bool ok = r.string(*body, key + ".body", c.body);
+  ok = r.expression(*radius, key + ".radius", c.radius) && ok;
+  return r.vector(*axis, key + ".axis", 3, c.axis) && ok;
+}
+
 void read_constraints(Reader& r, const toml::node& node, ModelFile& m) {
   const toml::array* a = r.array(node, "constraints", "[[constraints]] tables");
   if (!a) return;
@@ -251,7 +262,7 @@ void read_constraints(Reader& r, const toml::node& node, ModelFile& m) {
     std::string key = fmt::format("constraints[{}]", i);
     const toml::table* t = r.table((*a)[i], key, "holonomic or nonholonomic");
     if (!t) continue;
-    r.check_keys(*t, key, {"holonomic", "nonholonomic", "name"});
+    r.check_keys(*t, key, {"holonomic", "nonholonomic", "rolls", "name"});
     ConstraintEntry c;
     if (const toml::node* name = t->get("name")) {
       if (auto text = name->value<std::string>()) {
@@ -265,9 +276,15 @@ void read_constraints(Reader& r, const toml::node& node, ModelFile& m) {
     c.where = r.at((*a)[i]);
     const toml::node* h = t->get("holonomic");
     const toml::node* n = t->get("nonholonomic");
-    if ((h != nullptr) == (n != nullptr)) {
-      r.error(c.where, key, "a constraint is either holonomic or nonholonomic",
-              "write holonomic = \"f(q,t)\" (f = 0) or nonholonomic = \"a(q,t)*der(q) + b(q,t)\"");
+    const toml::node* rolls = t->get("rolls");
+    if ((h != nullptr) + (n != nullptr) + (rolls != nullptr) != 1) {
+      r.error(c.where, key, "a constraint is either holonomic, nonholonomic or rolls",
+              "write holonomic = \"f(q,t)\" (f = 0), nonholonomic = \"a(q,t)*der(q) + b(q,t)\" or "
+              "rolls = { body = \"wheel\", radius = \"r\", axis = [0, 1, 0] }");
+      continue;
+    }
+    if (rolls) {
+      if (read_rolling(r, *rolls, key + ".rolls", c)) m.constraints.push_back(c);
       continue;
     }
     c.kind = h ? ConstraintEntry::Kind::holonomic : ConstraintEntry::Kind::nonholonomic;
@@ -288,6 +305,19 @@ void read_named_expressions(Reader& r, const toml::node& node, const std::string
   }
 }
 
+// [definitions]: name = "expression" | ["x", "y", "z"]
+void read_definitions(Reader& r, const toml::node& node, std::vector<DefinitionEntry>& out) {
+  const toml::table* t = r.table(node, "definitions", "name = expression or [x, y, z]");
+  if (!t) return;
+  for (const Entry& e : r.entries(*t)) {
+    DefinitionEntry d{e.name, {}, e.where};
+    std::string key = "definitions." + e.name;
+    bool ok = e.node->is_array() ? r.vector(*e.node, key, 3, d.components)
+                                 : r.expression(*e.node, key, d.components.emplace_back());
+    if (ok) out.push_back(d);
+  }
+}
+
 void read_document(Reader& r, const toml::table& doc, ModelFile& m) {
   r.check_keys(doc, "", top_level_keys);
   for (const Entry& e : r.entries(doc)) {
@@ -296,6 +326,8 @@ void read_document(Reader& r, const toml::table& doc, ModelFile& m) {
     else if (e.name == "parameters") read_numbers(r, n, "parameters", m.parameters);
     else if (e.name == "coordinates") read_coordinates(r, n, m);
     else if (e.name == "inputs") read_numbers(r, n, "inputs", m.inputs);
+    else if (e.name == "frames") read_frames(r, n, m);
+    else if (e.name == "points") read_points(r, n, m);
     else if (e.name == "particles") read_particles(r, n, m);
     else if (e.name == "rigid_bodies") read_rigid_bodies(r, n, m);
     else if (e.name == "gravity") read_gravity(r, n, m);
@@ -304,7 +336,7 @@ void read_document(Reader& r, const toml::table& doc, ModelFile& m) {
     else if (e.name == "constraints") read_constraints(r, n, m);
     else if (e.name == "pseudo_velocities") read_named_expressions(r, n, "pseudo_velocities", m.pseudo_velocities);
     else if (e.name == "outputs") read_named_expressions(r, n, "outputs", m.outputs);
-    else if (e.name == "definitions") read_named_expressions(r, n, "definitions", m.definitions);
+    else if (e.name == "definitions") read_definitions(r, n, m.definitions);
     else if (e.name == "scenes") read_scenes(r, n, m);
     else if (e.name == "variants") read_variants(r, n, m);
   }

@@ -102,6 +102,15 @@ bool Reader::expression(const toml::node& node, const std::string& key, Expressi
 
 bool Reader::vector(const toml::node& node, const std::string& key, std::size_t length,
                     std::vector<ExpressionText>& out) {
+  // a 3-vector may be named: a vector definition or a point, read as NAME.x, NAME.y, NAME.z
+  if (const auto* name = node.as_string(); name && length == 3) {
+    out.assign(3, {});
+    for (std::size_t i = 0; i < 3; ++i) {
+      expression(node, fmt::format("{}[{}]", key, i), out[i]);
+      out[i].text = fmt::format("{}.{}", name->get(), "xyz"[i]);
+    }
+    return true;
+  }
   const toml::array* a = array(node, key, fmt::format("{} expressions", length).c_str());
   if (!a) return false;
   if (a->size() != length) {

@@ -39,7 +39,7 @@ class Reader {
 
   /// An expression: a string, or a number written as such.
   bool expression(const toml::node& node, const std::string& key, ExpressionText& out);
-  /// A vector of `length` expressions.
+  /// A vector of `length` expressions; a 3-vector may also be the name of a vector or point.
   bool vector(const toml::node& node, const std::string& key, std::size_t length,
               std::vector<ExpressionText>& out);
   /// A 3×3 array of expressions.

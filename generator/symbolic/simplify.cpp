@@ -68,10 +68,11 @@ ex apply_pythagoras(const ex& expanded) {
     for (std::size_t t = 0; t < terms.size(); ++t) {
       std::vector<ex> f = factors_of(terms[t]);
       for (std::size_t i = 0; i < f.size(); ++i) {
-        if (!GiNaC::is_a<GiNaC::power>(f[i]) || f[i].op(1) != 2) continue;
-        const ex base = f[i].op(0);
-        if (is_sin(base)) sines.emplace(std::make_pair(product(f, i), base.op(0)), t);
-        else if (is_cos(base)) cosines.push_back({t, {product(f, i), base.op(0)}});
+        // sin(a)^n with n ≥ 2 is sin(a)^2 · sin(a)^(n−2): the rest joins the cofactor
+        if (!GiNaC::is_a<GiNaC::power>(f[i]) || !f[i].op(1).info(GiNaC::info_flags::integer) || f[i].op(1) < 2) continue;
+        const ex base = f[i].op(0), cofactor = product(f, i) * GiNaC::pow(base, f[i].op(1) - 2);
+        if (is_sin(base)) sines.emplace(std::make_pair(cofactor, base.op(0)), t);
+        else if (is_cos(base)) cosines.push_back({t, {cofactor, base.op(0)}});
       }
     }
     // visit candidates in canonical order: GiNaC's term order changes between processes

@@ -1,0 +1,188 @@
+// [[frames]] and [[points]]: a 3-D chain of rods with relative joint angles placed through
+// frames derives to the same mass matrix and forcing as the same chain written out in
+// full (each rod's rotation as a 3×3 matrix multiplied out here, its centre summed link by
+// link), at random points; a point's components and a point force follow the frame; and
+// each misuse is located.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "pipeline.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+using GiNaC::ex;
+
+const char* header = R"toml([model]
+name = "chain3d"
+
+[parameters]
+m = 1.2
+l = 0.8
+g = 9.81
+F = 0.7
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+)toml";
+
+std::string coordinates(int n) {
+  std::string text = "\n[coordinates]\n";
+  for (int i = 1; i <= n; ++i) text += fmt::format("a{0} = {1}\nb{0} = {2}\n", i, 0.1 * i, 0.3 - 0.05 * i);
+  return text;
+}
+
+std::string rod(int i, const std::string& placement) {
+  return fmt::format("\n[[rigid_bodies]]\nname = \"rod{}\"\nmass = \"m\"\n{}\ninertia = [\"m*l^2/12\", \"m*l^2/12\", \"m*l^2/200\"]\n",
+                     i, placement);
+}
+
+std::string through_frames(int n) {
+  std::string text = std::string(header) + coordinates(n);
+  for (int i = 1; i <= n; ++i) {
+    text += fmt::format("\n[[frames]]\nname = \"link{}\"\nrotation = \"rot_z(a{})*rot_x(b{})\"\n", i, i, i);
+    if (i > 1) text += fmt::format("parent = \"link{}\"\norigin = [\"0\", \"0\", \"-l\"]\n", i - 1);
+  }
+  for (int i = 1; i <= n; ++i) text += rod(i, fmt::format("frame = \"link{}\"\ncenter = [\"0\", \"0\", \"-l/2\"]", i));
+  text += fmt::format("\n[[points]]\nname = \"tip\"\nframe = \"link{}\"\nposition = [\"0\", \"0\", \"-l\"]\n", n);
+  text += "\n[[forces]]\nat = \"tip\"\nforce = [\"F\", \"0\", \"0\"]\n\n[outputs]\ntip_height = \"tip.z\"\n";
+  return text;
+}
+
+std::string printed(const ex& e) {
+  std::ostringstream out;
+  out << e;
+  return out.str();
+}
+
+// the same chain with every rotation and position multiplied out by hand
+std::string written_out(int n) {
+  std::string text = std::string(header) + coordinates(n);
+  GiNaC::symtab names;
+  auto symbol = [&](const std::string& name) -> ex {
+    if (!names.count(name)) names[name] = GiNaC::symbol(name);
+    return names[name];
+  };
+  auto rot_x = [](const ex& a) { return GiNaC::matrix(3, 3, GiNaC::lst{1, 0, 0, 0, cos(a), -sin(a), 0, sin(a), cos(a)}); };
+  auto rot_z = [](const ex& a) { return GiNaC::matrix(3, 3, GiNaC::lst{cos(a), -sin(a), 0, sin(a), cos(a), 0, 0, 0, 1}); };
+  ex l = symbol("l");
+  GiNaC::matrix R = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)), joint(3, 1), tip(3, 1);
+  for (int i = 1; i <= n; ++i) {
+    R = R.mul(rot_z(symbol(fmt::format("a{}", i)))).mul(rot_x(symbol(fmt::format("b{}", i))));
+    GiNaC::matrix half = R.mul(GiNaC::matrix(3, 1, GiNaC::lst{0, 0, -l / 2}));
+    GiNaC::matrix full = R.mul(GiNaC::matrix(3, 1, GiNaC::lst{0, 0, -l}));
+    std::string rows, center;
+    for (unsigned r = 0; r < 3; ++r) {
+      rows += "[";
+      for (unsigned c = 0; c < 3; ++c) rows += fmt::format("\"{}\"{}", printed(R(r, c).expand()), c < 2 ? ", " : "");
+      rows += r < 2 ? "], " : "]";
+      center += fmt::format("\"{}\"{}", printed((joint(r, 0) + half(r, 0)).expand()), r < 2 ? ", " : "");
+    }
+    text += rod(i, fmt::format("center = [{}]\nrotation = [{}]", center, rows));
+    tip = joint.add(full);
+    joint = tip;
+  }
+  text += fmt::format("\n[[forces]]\nat = [\"{}\", \"{}\", \"{}\"]\nforce = [\"F\", \"0\", \"0\"]\n\n[outputs]\ntip_height = \"{}\"\n",
+                      printed(tip(0, 0).expand()), printed(tip(1, 0).expand()), printed(tip(2, 0).expand()),
+                      printed(tip(2, 0).expand()));
+  return text;
+}
+
+Equations derive_text(const std::string& text) {
+  Derivation d = derive_model_text(text, "chain3d.toml");
+  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
+  if (!d.equations) throw std::runtime_error("the chain did not derive");
+  return *d.equations;
+}
+
+// `e` of one model at a point of another, matched by the symbols' names
+double at_point_by_name(const ex& e, const Symbols& s, const std::map<std::string, double>& values) {
+  GiNaC::exmap at;
+  at[s.time] = values.at("t");
+  for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
+  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
+    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
+    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
+  }
+  return value_at(e, at);
+}
+
+TEST(Frames, ChainThroughFramesEqualsTheChainWrittenOut) {
+  for (int n : {1, 2, 3}) {
+    Equations framed = derive_text(through_frames(n)), full = derive_text(written_out(n));
+    ASSERT_EQ(framed.forcing.size(), std::size_t(2 * n));
+    ASSERT_EQ(full.forcing.size(), std::size_t(2 * n));
+    std::mt19937 random(7u + unsigned(n));
+    std::uniform_real_distribution<double> angle(-2, 2), rate(-1.5, 1.5), scale(0.5, 2);
+    for (int point = 0; point < 8; ++point) {
+      std::map<std::string, double> values{{"t", 0.0}};
+      for (const std::string& p : framed.symbols.parameter_names) values[p] = scale(random);
+      for (const std::string& q : framed.symbols.coordinate_names) {
+        values[q] = angle(random);
+        values["der(" + q + ")"] = rate(random);
+      }
+      auto same = [&](const ex& a, const ex& b, const std::string& what) {
+        double x = at_point_by_name(a, framed.symbols, values), y = at_point_by_name(b, full.symbols, values);
+        EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what << " of the " << n << "-link chain";
+      };
+      for (unsigned j = 0; j < 2u * unsigned(n); ++j) {
+        same(framed.forcing[j], full.forcing[j], fmt::format("f[{}]", j));
+        for (unsigned k = 0; k < 2u * unsigned(n); ++k)
+          same(framed.mass_matrix(j, k), full.mass_matrix(j, k), fmt::format("M[{}][{}]", j, k));
+      }
+      same(framed.outputs.at(0).expression, full.outputs.at(0).expression, "the tip's height");
+    }
+  }
+}
+
+std::string misuse(const std::string& frames, const std::string& body) {
+  return std::string(header) + "\n[coordinates]\nq = 0.1\n" + frames + body;
+}
+
+std::string diagnostics_of(const std::string& text) { return derive_model_text(text, "bad.toml").diagnostics.format(); }
+
+TEST(Frames, MisusesAreLocated) {
+  const std::string body = "\n[[rigid_bodies]]\nname = \"b\"\nmass = \"m\"\nframe = \"arm\"\ninertia = [\"1\", \"1\", \"1\"]\n";
+  EXPECT_NE(diagnostics_of(misuse("", body)).find("'arm' is not a frame"), std::string::npos);
+  std::string later = misuse("\n[[frames]]\nname = \"hand\"\nparent = \"arm\"\n\n[[frames]]\nname = \"arm\"\nrotation = \"rot_z(q)\"\n", body);
+  EXPECT_NE(diagnostics_of(later).find("bad.toml:18:11: error: frames[0].parent: 'arm' is not a frame yet"), std::string::npos)
+      << diagnostics_of(later);
+  std::string scalar = misuse("\n[[frames]]\nname = \"arm\"\nrotation = \"rot_z(q)\"\n\n[[points]]\nname = \"P\"\nframe = \"arm\"\n"
+                              "position = [\"l\", \"0\", \"0\"]\n\n[outputs]\nh = \"P + 1\"\n", body);
+  EXPECT_NE(diagnostics_of(scalar).find("'P' is a vector, not a scalar"), std::string::npos) << diagnostics_of(scalar);
+  EXPECT_NE(diagnostics_of(scalar).find("P.x, P.y, P.z"), std::string::npos);
+  std::string twice = misuse("\n[[frames]]\nname = \"arm\"\n\n[[frames]]\nname = \"arm\"\n", body);
+  EXPECT_NE(diagnostics_of(twice).find("two frames are named 'arm'"), std::string::npos);
+}
+
+TEST(Frames, VectorDefinitionsAreUsedByNameAndByComponent) {
+  std::string text = std::string(header) + R"toml(
+[coordinates]
+q = 0.3
+
+[definitions]
+arm = ["l*sin(q)", "0", "-l*cos(q)"]
+height = "arm.z"
+
+[[particles]]
+name = "bob"
+mass = "m"
+position = "arm"
+
+[outputs]
+h = "height"
+)toml";
+  Equations e = derive_text(text);
+  auto points = random_points(e.symbols, 10);
+  EXPECT_TRUE(agree_at_points(e.mass_matrix(0, 0), closed_form(e, "m*l^2"), points));
+  EXPECT_TRUE(agree_at_points(e.forcing[0], closed_form(e, "-m*g*l*sin(q)"), points));
+  EXPECT_TRUE(agree_at_points(e.outputs.at(0).expression, closed_form(e, "-l*cos(q)"), points));
+}
+
+}  // namespace
+}  // namespace eomgen::test
