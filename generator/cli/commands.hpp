@@ -35,7 +35,8 @@ Command add_ensemble_command(CLI::App& app);
 struct LoadedProblem;
 /// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic
 /// conditions of Appell models), printed; nothing when they can.
-std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic);
+std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic,
+                                      bool on_manifold);
 
 struct PeriodicOptions {
   std::vector<std::string> at;

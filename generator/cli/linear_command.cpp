@@ -73,7 +73,7 @@ int linear(const Options& o) {
   }
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
-  if (auto status = stability_refusal(loaded, o.model, false)) return *status;
+  if (auto status = stability_refusal(loaded, o.model, false, false)) return *status;
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();

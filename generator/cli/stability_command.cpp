@@ -45,11 +45,15 @@ std::vector<std::string> split_names(const std::string& list) {
 
 }  // namespace
 
-std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic) {
-  if (loaded.equations.has_multipliers) {
-    std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent, and the "
-                             "constraint directions would show as spurious eigenvalues\n  hint: derive it with method = "
-                             "\"appell\" (independent pseudo-velocities) for a stability analysis\n", model);
+std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic,
+                                      bool on_manifold) {
+  // stability and sweep analyse a Lagrange I model on its constraint manifold; the symbolic
+  // conditions and `linear` need independent coordinates
+  if (loaded.equations.has_multipliers && (symbolic || !on_manifold)) {
+    std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent{}\n  hint: "
+                             "derive it with method = \"appell\" (independent pseudo-velocities){}\n", model,
+                             symbolic ? ", and symbolic conditions need them" : "",
+                             symbolic ? ", or leave out --symbolic (the numeric analysis works on the constraint manifold)" : "");
     return exit_user_error;
   }
   if (symbolic && loaded.equations.uses_pseudo_velocities()) {
@@ -115,7 +119,7 @@ int stability(const Options& given) {
     if (auto status = load_reduced_problem(o.model, o.sets, routh, loaded)) return *status;
   }
   const eomgen_model_abi& m = *loaded.compiled->abi();
-  if (auto status = stability_refusal(loaded, o.model, !o.symbolic.empty())) return *status;
+  if (auto status = stability_refusal(loaded, o.model, !o.symbolic.empty(), true)) return *status;
   if (auto status = periodic_stability(loaded, {o.at, o.symbolic, o.period, o.json})) return *status;
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;

@@ -42,7 +42,9 @@ void print_stability_text(const eomgen_model_abi& m, const runtime::Equilibrium&
               << matrix_text("N", r.N);
     if (r.B.cols()) std::cout << matrix_text("B", r.B);
   } else {
-    std::cout << "  x' = A x + B u on the reduced state (Appell's equations, first order in the pseudo-velocities):\n";
+    std::cout << (m.num_multipliers ? "  x' = A x + B u on the reduced state (the tangent space of the constraint manifold):\n"
+                                    : "  x' = A x + B u on the reduced state (Appell's equations, first order in the "
+                                      "pseudo-velocities):\n");
     if (r.B_state.cols()) std::cout << matrix_text("B", r.B_state);
   }
   std::cout << matrix_text("A", r.A);

@@ -131,7 +131,7 @@ int run_sweep(const Options& o) {
   QuietUnlessRoot quiet(ranks);
   LoadedProblem loaded;
   if (auto status = load_on_every_rank(ranks, o.model, o.sets, loaded)) return *status;
-  if (auto status = stability_refusal(loaded, o.model, o.symbolic)) return *status;
+  if (auto status = stability_refusal(loaded, o.model, o.symbolic, true)) return *status;
   if (time_dependence(loaded.equations, loaded.problem.parameters).depends_on_time) {
     std::cerr << "eomgen: error: the equations depend on time: a map of eigenvalues at frozen t would be wrong for them\n"
                  "  hint: judge single points with `eomgen stability MODEL --set ...` (Floquet multipliers for periodic "

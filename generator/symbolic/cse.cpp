@@ -166,7 +166,12 @@ ex CommonSubexpressions::reduce(const ex& original, const std::map<ex, int, GiNa
   bool scaled_atom = GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 &&
                      ((GiNaC::is_a<GiNaC::numeric>(e.op(0)) && is_atom(e.op(1))) ||
                       (GiNaC::is_a<GiNaC::numeric>(e.op(1)) && is_atom(e.op(0))));
-  if (!shared || is_cheap_power(e) || scaled_atom) return rebuilt;
+  // a small power of a sum is not kept as a temporary of its own (its base is): GiNaC holds
+  // (a − b)^3 or −(b − a)^3 by an order that changes between processes, and the temporary's
+  // sign would change with it
+  bool power_of_sum = GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::add>(e.op(0)) &&
+                      e.op(1).info(GiNaC::info_flags::integer) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1))) <= 3;
+  if (!shared || is_cheap_power(e) || scaled_atom || power_of_sum) return rebuilt;
   GiNaC::symbol name(prefix_ + std::to_string(next_++));
   batch.temporaries.push_back({name, rebuilt});
   known_.emplace(e, name);

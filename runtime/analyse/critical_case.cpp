@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
 
 namespace eomgen::runtime {
@@ -118,7 +119,10 @@ CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x,
   bool unforced = true;
   for (double u : p.inputs) unforced = unforced && u == 0;
   std::string where;
-  if (!m.conserves_energy_without_inputs || !unforced || !at_rest || has_pseudo_velocities(m)) {
+  if (has_multipliers(m)) {
+    // V's minimum would be searched off the constraint manifold, where it means nothing
+    c.energy = "not applicable: the coordinates of a Lagrange I model are not independent";
+  } else if (!m.conserves_energy_without_inputs || !unforced || !at_rest || has_pseudo_velocities(m)) {
     c.energy = "not applicable: Lagrange–Dirichlet needs a conservative system at rest";
   } else if (strict_minimum_of_potential(p, x, where)) {
     c.energy = "T + V is a Lyapunov function: V has a strict minimum at the equilibrium and T is positive definite, "

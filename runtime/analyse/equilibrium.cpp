@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
 
 namespace eomgen::runtime {
@@ -78,7 +79,9 @@ static std::string moving_coordinates(const eomgen_model_abi& m, const std::vect
 }
 
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state) {
-  if (has_pseudo_velocities(*problem.model)) return check_first_order(problem, std::move(state));
+  // Lagrange I: q'' = 0 and the non-cyclic coordinates at rest, as for a first-order form
+  if (has_pseudo_velocities(*problem.model) || has_multipliers(*problem.model))
+    return check_first_order(problem, std::move(state));
   Derivatives d = evaluate(problem, state);
   Equilibrium e;
   e.moving = moving_coordinates(*problem.model, state);
@@ -92,6 +95,7 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
   const eomgen_model_abi& m = *problem.model;
   if (has_pseudo_velocities(m)) return find_first_order(problem, start);
+  if (has_multipliers(m)) return check_first_order(problem, start);  // Newton would leave the constraint manifold
   std::size_t n = m.num_coordinates;
   std::vector<double> x = start;
   std::vector<int> unknowns;  // index into x

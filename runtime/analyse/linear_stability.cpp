@@ -1,5 +1,7 @@
 #include "analyse/linear_stability.hpp"
 
+#include "analyse/constrained_first_order.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -294,9 +296,33 @@ StabilityReport analyse_first_order(const Problem& problem, const std::vector<do
   return r;
 }
 
+// Lagrange I: A restricted to the tangent space of the constraint manifold, in the state
+// components that parametrize it
+StabilityReport analyse_on_manifold(const Problem& problem, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *problem.model;
+  ManifoldLinearization l = manifold_linearization(problem, x);
+  StabilityReport r;
+  r.A = l.A, r.B_state = l.B;
+  for (int i : l.kept) r.state_names.push_back(m.state_names[i]);
+  describe_spectrum(r, 0);
+  std::string dependent;
+  for (int i : l.dependent) dependent += (dependent.empty() ? "" : ", ") + std::string(m.state_names[i]);
+  r.theorems.push_back("the constraints tie " + dependent + " to the others: A is the linearization on the constraint "
+                       "manifold, in the remaining state components, and the force classification (D, G, K, N) of the "
+                       "unconstrained coordinates does not apply");
+  std::string neutral;
+  for (int i : l.neutral) neutral += (neutral.empty() ? "" : ", ") + std::string(m.state_names[i]);
+  if (!neutral.empty())
+    r.theorems.push_back("no rate depends on " + neutral + ": each is a family of steady motions with one zero "
+                         "eigenvalue, left out like a cyclic coordinate (stability with respect to the rest)");
+  if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
+  return r;
+}
+
 StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x) {
   const eomgen_model_abi& m = *problem.model;
   if (has_pseudo_velocities(m)) return analyse_first_order(problem, x);
+  if (has_multipliers(m)) return analyse_on_manifold(problem, x);
   StabilityReport r;
   SecondOrder s = linearize(problem, x);
   r.M = s.M, r.P = s.P, r.Q = s.Q, r.B = s.B;
@@ -316,6 +342,8 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
   int cyclic = 0;
   if (has_pseudo_velocities(m)) {
     A = reduced_jacobian(problem, x);
+  } else if (has_multipliers(m)) {
+    A = manifold_linearization(problem, x).A;
   } else {
     first_order(m, linearize(problem, x), A, B, nullptr);
     cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));

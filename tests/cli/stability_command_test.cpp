@@ -2,6 +2,7 @@
 // JSON keys, equilibria given and searched for, mistakes, and the map's files.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -64,15 +65,36 @@ TEST(SweepCommand, WritesTheMapAndItsChart) {
 }
 
 TEST(StabilityCommand, ConstrainedModelsAreRefusedWhereTheAnalysisDoesNotApply) {
-  Output lagrange1 = eomgen("stability '" + model_path("slider_crank") + "'");
+  Output linear = eomgen("linear '" + model_path("slider_crank") + "'");
+  EXPECT_EQ(linear.status, 2);
+  EXPECT_NE(linear.err.find("Lagrange I model"), std::string::npos) << linear.err;
+  Output lagrange1 = eomgen("stability '" + model_path("pendulum_cartesian") + "' --at x=0 --at y=-1 --symbolic g");
   EXPECT_EQ(lagrange1.status, 2);
-  EXPECT_NE(lagrange1.err.find("Lagrange I model"), std::string::npos) << lagrange1.err;
-  Output sweep = eomgen("sweep '" + model_path("slider_crank") + "' --param r=0.05:0.2:3 --param l=0.3:0.5:3");
-  EXPECT_EQ(sweep.status, 2);
+  EXPECT_NE(lagrange1.err.find("symbolic conditions need them"), std::string::npos) << lagrange1.err;
   Output symbolic = eomgen("sweep '" + model_path("rolling_disk") + "' --param R=0.05:0.2:3 --param m=0.5:2:3 "
                            "--at theta=1.5707963267948966 --at 'der(phi)=6' --symbolic");
   EXPECT_EQ(symbolic.status, 2) << symbolic.err;
   EXPECT_NE(symbolic.err.find("Appell models are analysed numerically"), std::string::npos) << symbolic.err;
+}
+
+// The pendulum in Cartesian coordinates (Lagrange I, x² + y² = l²) on its constraint manifold:
+// hanging, λ = ±i·√(g/l) (a centre); upright, λ = ±√(g/l) (a saddle); y and der(y) are tied to x
+TEST(StabilityCommand, LagrangeOneIsAnalysedOnTheConstraintManifold) {
+  double root = std::sqrt(9.81 / 1.0);
+  for (double y : {-1.0, 1.0}) {
+    JsonValue r = run_json("stability '" + model_path("pendulum_cartesian") + "' --at x=0 --at y=" + std::to_string(y));
+    std::vector<std::string> state;
+    for (const JsonValue& name : r.find("state")->items) state.push_back(name.text);
+    EXPECT_EQ(state, (std::vector<std::string>{"x", "der(x)"}));
+    const auto& eigenvalues = r.find("eigenvalues")->items;
+    ASSERT_EQ(eigenvalues.size(), 2u);
+    for (const JsonValue& l : eigenvalues) {
+      ASSERT_EQ(l.items.size(), 2u) << "[re, im]";
+      EXPECT_NEAR(std::abs(l.items[0].value), y < 0 ? 0.0 : root, 1e-12) << "y = " << y;
+      EXPECT_NEAR(std::abs(l.items[1].value), y < 0 ? root : 0.0, 1e-12) << "y = " << y;
+    }
+    EXPECT_EQ(r.find("verdict")->text, y < 0 ? "marginally_stable" : "unstable");
+  }
 }
 
 TEST(StabilityCommand, RollingDiskFromTheCommandLine) {
