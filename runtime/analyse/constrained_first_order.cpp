@@ -1,5 +1,7 @@
 #include "analyse/constrained_first_order.hpp"
 
+#include <algorithm>
+
 namespace eomgen::runtime {
 
 namespace {
@@ -34,13 +36,14 @@ Eigen::MatrixXd constraint_gradient(const Problem& p, const std::vector<double>&
   return grad;
 }
 
-// the first columns of `block` in order that raise its rank (a greedy basis of its column space),
-// numbered from `first`
-std::vector<int> first_independent_columns(const Eigen::MatrixXd& block, int first) {
+// the last columns of `block` that raise its rank, going backwards (a greedy basis of its
+// column space), numbered from `first`: the dependent components, the same ones the
+// consistent initial state solves for
+std::vector<int> last_independent_columns(const Eigen::MatrixXd& block, int first) {
   std::vector<int> chosen;
   Eigen::MatrixXd basis(block.rows(), 0);
   double scale = std::max(1.0, block.cwiseAbs().maxCoeff());
-  for (long j = 0; j < block.cols() && basis.cols() < block.rows(); ++j) {
+  for (long j = block.cols() - 1; j >= 0 && basis.cols() < block.rows(); --j) {
     Eigen::VectorXd v = block.col(j);
     for (int pass = 0; pass < 2; ++pass)  // Gram–Schmidt twice is enough
       for (long k = 0; k < basis.cols(); ++k) v -= basis.col(k).dot(v) * basis.col(k);
@@ -49,14 +52,15 @@ std::vector<int> first_independent_columns(const Eigen::MatrixXd& block, int fir
     basis.col(basis.cols() - 1) = v / v.norm();
     chosen.push_back(first + static_cast<int>(j));
   }
+  std::sort(chosen.begin(), chosen.end());
   return chosen;
 }
 
 // ∂Φ/∂x is block triangular, [G 0; ∂Ψ/∂q C]: the positions g determines come from G,
 // the velocities from C
 std::vector<int> dependent_components(const Eigen::MatrixXd& grad, long holonomic, long n) {
-  std::vector<int> dependent = first_independent_columns(grad.topLeftCorner(holonomic, n), 0);
-  std::vector<int> velocities = first_independent_columns(grad.bottomRightCorner(grad.rows() - holonomic, n), static_cast<int>(n));
+  std::vector<int> dependent = last_independent_columns(grad.topLeftCorner(holonomic, n), 0);
+  std::vector<int> velocities = last_independent_columns(grad.bottomRightCorner(grad.rows() - holonomic, n), static_cast<int>(n));
   dependent.insert(dependent.end(), velocities.begin(), velocities.end());
   return dependent;
 }

@@ -28,9 +28,8 @@ struct ManifoldLinearization {
 };
 
 /// The tangent space at x (which must satisfy the constraints) in the components of x: the
-/// dependent ones are chosen in state order, the first that keep the constraint Jacobian
-/// of full rank (as Appell's independent velocities are), the positions by g, the
-/// velocities by C. ∂(C q' + b)/∂q comes from the generated Jacobians at two Baumgarte
+/// dependent ones are the last in state order that keep the constraint Jacobian of full
+/// rank (as for the consistent initial state), the positions by g, the velocities by C. ∂(C q' + b)/∂q comes from the generated Jacobians at two Baumgarte
 /// gains: their difference is −2 M⁻¹Cᵀ(C M⁻¹Cᵀ)⁻¹ ∂(C q' + b)/∂x on the manifold.
 ManifoldLinearization manifold_linearization(const Problem& problem, const std::vector<double>& x);
 

@@ -17,6 +17,68 @@ std::string changed_pendulum(const std::string& from, const std::string& to) {
   return path;
 }
 
+// the rolling disk as it was written before frames and `rolls` (its centre and rotation in
+// full, the two no-slip conditions by hand) against models/rolling_disk.toml
+const char* rolling_disk_by_hand = R"toml(# Thin disk rolling without slipping on a horizontal plane. Coordinates: the
+# contact point (x, y) and the Euler angles 3-1-3 of the disk, heading psi,
+# tilt theta (theta = pi/2 is upright) and spin phi. Rolling means the disk's
+# material point at the contact is at rest: der(x) + R*cos(psi)*der(phi) = 0 and
+# der(y) + R*sin(psi)*der(phi) = 0 (two nonholonomic constraints; the vertical
+# one is built into the centre's height R*sin(theta)). Appell's equations with
+# the independent velocities der(psi), der(theta), der(phi) chosen by eomgen.
+# First integral: the energy T + V. Upright straight rolling (theta = pi/2,
+# der(psi) = 0, der(phi) = Omega) is stable when Omega^2 > m*g*R*A/(C*(C + m*R^2)),
+# which is g/(3*R) for the thin disk (A = m*R^2/4, C = m*R^2/2).
+# Source: Hiller §4.3; E. J. Routh, Advanced Rigid Dynamics (1884), §244.
+
+[model]
+name   = "rolling_disk"
+title  = "Thin disk rolling without slipping"
+method = "appell"
+
+[parameters]
+m = 1.0      # kg
+R = 0.1      # radius, m
+g = 9.81
+
+[coordinates]
+x     = 0.0
+y     = 0.0
+psi   = { initial = 0.0, rate = 0.0 }
+theta = { initial = 1.4, rate = 0.0 }
+phi   = { initial = 0.0, rate = 15.0 }
+
+[[rigid_bodies]]
+name     = "disk"
+mass     = "m"
+center   = ["x - R*sin(psi)*cos(theta)", "y + R*cos(psi)*cos(theta)", "R*sin(theta)"]
+rotation = "euler313(psi, theta, phi)"
+inertia  = ["m*R^2/4", "m*R^2/4", "m*R^2/2"]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+
+[[constraints]]
+name         = "roll_x"
+nonholonomic = "der(x) + R*cos(psi)*der(phi)"
+
+[[constraints]]
+name         = "roll_y"
+nonholonomic = "der(y) + R*sin(psi)*der(phi)"
+
+[outputs]
+center_height = "R*sin(theta)"
+)toml";
+
+TEST(DiffCommand, TheRollingDiskWithFramesAndRollsIsTheDiskWrittenByHand) {
+  std::string path = temporary_directory() + "/rolling_disk.toml";
+  std::ofstream(path) << rolling_disk_by_hand;
+  CommandOutput r = run_eomgen("diff '" + path + "' '" + model_path("rolling_disk") +
+                               "' --rename roll_x=roll_slip_x --rename roll_y=roll_slip_y");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find(": identical\n"), std::string::npos) << r.out;
+}
+
 TEST(DiffCommand, ExitStatusesLikeDiff) {
   std::string baseline = std::string(EOMGEN_SOURCE_DIR) + "/generated/pendulum.json";
   CommandOutput same = run_eomgen("diff '" + baseline + "' '" + model_path("pendulum") + "'");

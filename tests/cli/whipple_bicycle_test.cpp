@@ -8,6 +8,7 @@
 // One test: the model compiles once (a minute or two) into the shared cache.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -86,8 +87,8 @@ TEST(WhippleBicycle, TheNonlinearModelReproducesTheBenchmark) {
     std::string header;
     auto rows = read_numeric_csv(dir + "/run.csv", &header);
     ASSERT_GT(rows.size(), 100u);
-    std::size_t phi = 6;
-    ASSERT_EQ(header.rfind("t,x,y,psi,theta,thetaF,phi,", 0), 0u) << header;
+    std::size_t phi = 1;
+    ASSERT_EQ(header.rfind("t,phi,delta,thetaR,x,y,psi,thetaF,theta,", 0), 0u) << header;
     double early = largest_roll(rows, phi, 0, 1), late = largest_roll(rows, phi, rows.back()[0] - 1, rows.back()[0]);
     if (v > 4) {
       EXPECT_LT(late, early / 10) << "self-stable: every eigenvalue has a negative real part at 4.6 m/s";
@@ -96,6 +97,22 @@ TEST(WhippleBicycle, TheNonlinearModelReproducesTheBenchmark) {
       // the weave's real part is 1.71 /s at 3 m/s: over the two seconds between the windows, e^3.4 ≈ 30
       EXPECT_GT(late, 10 * early) << "the weave grows at 3 m/s";
     }
+  }
+  {
+    SCOPED_TRACE("a steer angle given: the pitch is solved for, roll and steer are kept");
+    std::string dir = temporary_directory();
+    CommandOutput r = run_eomgen("simulate '" + model_path("whipple_bicycle") + "' --initial delta=0.1 --t-end 0.01 -o '" +
+                                 dir + "/run.csv'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("do not allow"), std::string::npos) << r.err;
+    std::string header;
+    auto rows = read_numeric_csv(dir + "/run.csv", &header);
+    ASSERT_FALSE(rows.empty());
+    EXPECT_EQ(rows[0][1], 0.0) << "phi as in the model file";
+    EXPECT_EQ(rows[0][2], 0.1) << "delta as given";
+    EXPECT_GT(std::abs(rows[0][8]), 1e-5) << "the pitch that keeps the front wheel on the ground";
+    std::size_t residual = std::size_t(std::count(header.begin(), header.begin() + long(header.find("position_residual")), ','));
+    EXPECT_LT(std::abs(rows[0][residual]), 1e-12) << header;
   }
 }
 
