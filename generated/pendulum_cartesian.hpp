@@ -353,7 +353,8 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 }
 
 /// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the
-/// differentiated augmented system. J: 4x4, row-major.
+/// differentiated augmented system, whose partial derivatives come from a tangent sweep
+/// (forward mode) through the code of M, f, C and gamma. J: 4x4, row-major.
 template <class T>
 void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
@@ -364,6 +365,14 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   const T p_m = p[0];
   const T p_l = p[1];
   const T p_g = p[2];
+  J[0] = T(0);
+  J[1] = T(0);
+  J[2] = T(1);
+  J[3] = T(0);
+  J[4] = T(0);
+  J[5] = T(0);
+  J[6] = T(0);
+  J[7] = T(1);
   T lambda[1];
   T M[4];
   M[0] = p_m;
@@ -381,14 +390,6 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   detail::ConstrainedSolver<T> solver;
   solver.factor(M, C);
   solver.solve(ddq, right, lambda);
-  J[0] = T(0);
-  J[1] = T(0);
-  J[2] = T(1);
-  J[3] = T(0);
-  J[4] = T(0);
-  J[5] = T(0);
-  J[6] = T(0);
-  J[7] = T(1);
   T column[2];
   T column_right[1];
   T column_lambda[1];

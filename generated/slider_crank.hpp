@@ -519,7 +519,8 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 }
 
 /// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the
-/// differentiated augmented system. J: 6x6, row-major.
+/// differentiated augmented system, whose partial derivatives come from a tangent sweep
+/// (forward mode) through the code of M, f, C and gamma. J: 6x6, row-major.
 template <class T>
 void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
@@ -538,6 +539,24 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   const T p_m2 = p[3];
   const T p_m3 = p[4];
   const T p_g = p[5];
+  J[0] = T(0);
+  J[1] = T(0);
+  J[2] = T(0);
+  J[3] = T(1);
+  J[4] = T(0);
+  J[5] = T(0);
+  J[6] = T(0);
+  J[7] = T(0);
+  J[8] = T(0);
+  J[9] = T(0);
+  J[10] = T(1);
+  J[11] = T(0);
+  J[12] = T(0);
+  J[13] = T(0);
+  J[14] = T(0);
+  J[15] = T(0);
+  J[16] = T(0);
+  J[17] = T(1);
   T lambda[2];
   const T c0 = cos(-q_phi);
   const T c1 = cos(q_beta);
@@ -575,42 +594,35 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   detail::ConstrainedSolver<T> solver;
   solver.factor(M, C);
   solver.solve(ddq, right, lambda);
-  const T c9 = -c0*c1 + c2*c3;
-  J[0] = T(0);
-  J[1] = T(0);
-  J[2] = T(0);
-  J[3] = T(1);
-  J[4] = T(0);
-  J[5] = T(0);
-  J[6] = T(0);
-  J[7] = T(0);
-  J[8] = T(0);
-  J[9] = T(0);
-  J[10] = T(1);
-  J[11] = T(0);
-  J[12] = T(0);
-  J[13] = T(0);
-  J[14] = T(0);
-  J[15] = T(0);
-  J[16] = T(0);
-  J[17] = T(1);
+  const T c0_d0 = c3;
+  const T c1_d1 = -c2;
+  const T c2_d1 = c1;
+  const T c3_d0 = -c0;
+  const T c4_d0 = c0_d0*c2 + c1*c3_d0;
+  const T c4_d1 = c0*c2_d1 + c1_d1*c3;
+  const T c5_d0 = -c6;
+  const T c6_d0 = c5;
+  const T c7_d0 = c5_d0*p_r;
+  const T c8_d1 = c1_d1*p_l;
+  const T c9 = -c0_d0*c1*p_l*p_m2*p_r + c2*c3_d0*p_l*p_m2*p_r;
+  const T c10 = c0*c1_d1*p_l*p_m2*p_r - c2_d1*c3*p_l*p_m2*p_r;
   T column[3];
   T column_right[2];
   T column_lambda[2];
-  column[0] = (T(2)*p_m2 + p_m1)*c6*p_g*p_r/T(2) - c4*ddq[1]*p_l*p_m2*p_r/T(2) - c5*lambda[0]*p_r - c6*lambda[1]*p_r + c9*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
-  column[1] = -c4*ddq[0]*p_l*p_m2*p_r/T(2) - c9*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
+  column[0] = -(T(2)*p_m2 + p_m1)*c5_d0*p_g*p_r/T(2) + c4_d0*dq_beta*dq_beta*p_l*p_m2*p_r/T(2) - c6_d0*lambda[0]*p_r + c7_d0*lambda[1] + c9*ddq[1]/T(2);
+  column[1] = -c4_d0*dq_phi*dq_phi*p_l*p_m2*p_r/T(2) + c9*ddq[0]/T(2);
   column[2] = T(0);
-  column_right[0] = T(2)*alpha*c5*dq_phi*p_r + beta*beta*c6*p_r + c5*ddq[0]*p_r - c6*dq_phi*dq_phi*p_r;
-  column_right[1] = T(2)*alpha*c6*dq_phi*p_r - beta*beta*c5*p_r + c5*dq_phi*dq_phi*p_r + c6*ddq[0]*p_r;
+  column_right[0] = T(2)*alpha*c6_d0*dq_phi*p_r - beta*beta*c7_d0 + c5_d0*dq_phi*dq_phi*p_r + c6_d0*ddq[0]*p_r;
+  column_right[1] = -(beta*beta*p_r - dq_phi*dq_phi*p_r)*c6_d0 - T(2)*alpha*c5_d0*dq_phi*p_r - c7_d0*ddq[0];
   solver.solve(column, column_right, column_lambda);
   J[18] = column[0];
   J[24] = column[1];
   J[30] = column[2];
-  column[0] = c4*ddq[1]*p_l*p_m2*p_r/T(2) - c9*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
-  column[1] = -c1*lambda[0]*p_l - c2*lambda[1]*p_l + c2*p_g*p_l*p_m2/T(2) + c4*ddq[0]*p_l*p_m2*p_r/T(2) + c9*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
+  column[0] = -c10*ddq[1]/T(2) + c4_d1*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
+  column[1] = -c10*ddq[0]/T(2) - c1_d1*p_g*p_l*p_m2/T(2) - c2_d1*lambda[0]*p_l - c4_d1*dq_phi*dq_phi*p_l*p_m2*p_r/T(2) + c8_d1*lambda[1];
   column[2] = T(0);
-  column_right[0] = T(2)*alpha*c1*dq_beta*p_l + beta*beta*c2*p_l + c1*ddq[1]*p_l - c2*dq_beta*dq_beta*p_l;
-  column_right[1] = T(2)*alpha*c2*dq_beta*p_l - beta*beta*c1*p_l + c1*dq_beta*dq_beta*p_l + c2*ddq[1]*p_l;
+  column_right[0] = T(2)*alpha*c2_d1*dq_beta*p_l - beta*beta*c8_d1 + c1_d1*dq_beta*dq_beta*p_l + c2_d1*ddq[1]*p_l;
+  column_right[1] = -(beta*beta*p_l - dq_beta*dq_beta*p_l)*c2_d1 - T(2)*alpha*c1_d1*dq_beta*p_l - c8_d1*ddq[1];
   solver.solve(column, column_right, column_lambda);
   J[19] = column[0];
   J[25] = column[1];

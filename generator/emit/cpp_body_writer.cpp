@@ -85,7 +85,7 @@ void BodyWriter::solve_velocities() {
   for (std::size_t i = 0; i < n; ++i) names_[e.coordinate_velocities[i]] = fmt::format("qd[{}]", i);
 }
 
-std::vector<std::string> BodyWriter::batch(const std::vector<ex>& expressions) {
+CseBatch BodyWriter::reduced_batch(const std::vector<ex>& expressions) {
   auto needs_velocities = [&] {
     for (const ex& x : expressions)
       for (const auto& v : equations_.coordinate_velocities)
@@ -101,11 +101,17 @@ std::vector<std::string> BodyWriter::batch(const std::vector<ex>& expressions) {
     note(t.definition);
     statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
   }
+  return b;
+}
+
+std::string BodyWriter::print(const ex& reduced) {
+  note(reduced);
+  return code(reduced);
+}
+
+std::vector<std::string> BodyWriter::batch(const std::vector<ex>& expressions) {
   std::vector<std::string> out;
-  for (const ex& o : b.outputs) {
-    note(o);
-    out.push_back(code(o));
-  }
+  for (const ex& o : reduced_batch(expressions).outputs) out.push_back(print(o));
   return out;
 }
 
@@ -151,11 +157,13 @@ std::string function(const std::string& doc, const std::string& signature, const
   return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
 }
 
-void accelerations(BodyWriter& w, const Equations& e) {
+CseBatch accelerations(BodyWriter& w, const Equations& e) {
   std::size_t n = e.forcing.size();
   std::vector<ex> exprs = upper_triangle(e.mass_matrix, n);
   exprs.insert(exprs.end(), e.forcing.begin(), e.forcing.end());
-  auto code = w.batch(exprs);
+  CseBatch batch = w.reduced_batch(exprs);
+  std::vector<std::string> code;
+  for (const ex& r : batch.outputs) code.push_back(w.print(r));
   w.line(fmt::format("T M[{}];", n * n));
   write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + n * (n + 1) / 2), n, "M");
   w.line(fmt::format("T ddq[{}];", n));
@@ -164,6 +172,7 @@ void accelerations(BodyWriter& w, const Equations& e) {
   w.line(fmt::format("T D[{}];", n));
   w.line("detail::ldlt_factor(M, L, D);");
   w.line("detail::ldlt_solve(L, D, ddq);");
+  return batch;
 }
 
 }  // namespace eomgen

@@ -33,6 +33,10 @@ class BodyWriter {
   /// For Hamilton's equations in mass-matrix form, the first batch that needs der(q) is
   /// preceded by the solution of M der(q) = p − b into the local array qd.
   std::vector<std::string> batch(const std::vector<GiNaC::ex>& expressions);
+  /// As batch, but the outputs are returned reduced (in model symbols and temporaries), with
+  /// the batch's temporaries, for code that goes on from them (a tangent sweep); `print` writes one.
+  CseBatch reduced_batch(const std::vector<GiNaC::ex>& expressions);
+  std::string print(const GiNaC::ex& reduced);
   /// Solves M der(q) = p − b now (once); the factors are then in Lv and Dv.
   void solve_velocities();
   void line(const std::string& text) { statements_ += "  " + text + "\n"; }
@@ -64,8 +68,9 @@ std::vector<GiNaC::ex> upper_triangle(const GiNaC::matrix& M, std::size_t n);
 void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target);
 /// A documented function template with the given signature and body.
 std::string function(const std::string& doc, const std::string& signature, const std::string& body);
-/// M and f into local arrays, M = L D L^T, then the accelerations M^-1 f into `ddq`.
-void accelerations(BodyWriter& w, const Equations& e);
+/// M and f into local arrays, M = L D L^T, then the accelerations M^-1 f into `ddq`. Returns the
+/// batch, whose outputs are the upper triangle of M, row by row, then f.
+CseBatch accelerations(BodyWriter& w, const Equations& e);
 
 inline const char* all_unused = "(void)t; (void)x; (void)u; (void)p;";
 

@@ -4,6 +4,7 @@
 
 #include "emit/cpp_body_writer.hpp"
 #include "emit/formats.hpp"
+#include "emit/tangent_sweep.hpp"
 #include "kinematics/mechanics.hpp"
 #include "symbolic/gradient.hpp"
 
@@ -55,14 +56,17 @@ BodyWriter constrained_writer(const Equations& e) {
   return w;
 }
 
-// M, f, C and −γ_stab into local arrays; factor; q'' into ddq and λ into lambda
-void solve_constrained(BodyWriter& w, const Equations& e) {
+// M, f, C and −γ_stab into local arrays; factor; q'' into ddq and λ into lambda. Returns
+// the batch: its outputs are the upper triangle of M, f, C (row-major) and −γ_stab, in that order.
+CseBatch solve_constrained(BodyWriter& w, const Equations& e) {
   std::size_t n = e.num_velocities(), m = e.constraints.size(), upper = n * (n + 1) / 2;
   std::vector<ex> exprs = upper_triangle(e.mass_matrix, n);
   exprs.insert(exprs.end(), e.forcing.begin(), e.forcing.end());
   for (const ex& c : jacobian_entries(e.constraints)) exprs.push_back(c);
   for (const ex& g : stabilized_bias(e)) exprs.push_back(-g);
-  auto code = w.batch(exprs);
+  CseBatch batch = w.reduced_batch(exprs);
+  std::vector<std::string> code;
+  for (const ex& r : batch.outputs) code.push_back(w.print(r));
   w.line(fmt::format("T M[{}];", n * n));
   write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + static_cast<long>(upper)), n, "M");
   w.line(fmt::format("T ddq[{}];", n));
@@ -74,6 +78,7 @@ void solve_constrained(BodyWriter& w, const Equations& e) {
   w.line("detail::ConstrainedSolver<T> solver;");
   w.line("solver.factor(M, C);");
   w.line("solver.solve(ddq, right, lambda);");
+  return batch;
 }
 
 const char* stabilized_signature =
@@ -175,33 +180,37 @@ std::string constrained_jacobian_state_function(const Equations& e) {
 }
 
 // d(q'', λ)/dy from the differentiated augmented system (y a state or an input):
-// M dq'' − Cᵀ dλ = ∂f/∂y + (∂C/∂y)ᵀ λ − (∂M/∂y) q'',  C dq'' = −∂γ_stab/∂y − (∂C/∂y) q''
-std::vector<ex> differentiated_system(const Equations& e, const std::vector<ex>& variables, const BodyWriter& w,
+// M dq'' − Cᵀ dλ = ∂f/∂y + (∂C/∂y)ᵀ λ − (∂M/∂y) q'',  C dq'' = ∂(−γ_stab)/∂y − (∂C/∂y) q''.
+// The partial derivatives come from the tangent sweep through the code of `reduced`
+// (laid out as solve_constrained returns it); the result is column by column, n + m per column.
+std::vector<ex> differentiated_system(const Equations& e, const std::vector<ex>& reduced, const TangentSweep& sweep,
+                                      std::size_t num_directions, const BodyWriter& w,
                                       const std::vector<GiNaC::symbol>& lambda) {
-  const ConstraintSet& c = e.constraints;
-  std::size_t n = e.num_velocities(), m = c.size(), N = variables.size();
-  std::vector<std::vector<ex>> rows;  // n + m rows of N entries
-  std::vector<ex> gamma = stabilized_bias(e);
-  std::vector<std::vector<std::vector<ex>>> dC(m);  // ∂C_rk/∂y, used by both blocks
-  for (unsigned r = 0; r < m; ++r)
-    for (unsigned k = 0; k < n; ++k) dC[r].push_back(gradient(c.jacobian(r, k), variables));
-  for (unsigned i = 0; i < n; ++i) {
-    rows.push_back(gradient(e.forcing[i], variables));
-    for (unsigned k = 0; k < n; ++k) {
-      std::vector<ex> dM = gradient(e.mass_matrix(i, k), variables);
-      for (unsigned j = 0; j < N; ++j) rows[i][j] -= dM[j] * w.accelerations()[k];
+  std::size_t n = e.num_velocities(), m = e.constraints.size(), upper = n * (n + 1) / 2;
+  auto mass = [&](std::size_t i, std::size_t k) {
+    std::size_t a = std::min(i, k), b = std::max(i, k);
+    return reduced[a * n - a * (a - 1) / 2 + (b - a)];
+  };
+  std::vector<std::vector<ex>> dM(n * n), dC(m * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = i; k < n; ++k) dM[i * n + k] = dM[k * n + i] = sweep.derivatives(mass(i, k));
+  for (std::size_t i = 0; i < m * n; ++i) dC[i] = sweep.derivatives(reduced[upper + n + i]);
+  std::vector<std::vector<ex>> rows;  // n + m rows of num_directions entries
+  for (std::size_t i = 0; i < n; ++i) {
+    rows.push_back(sweep.derivatives(reduced[upper + i]));
+    for (std::size_t j = 0; j < num_directions; ++j) {
+      for (std::size_t k = 0; k < n; ++k) rows[i][j] -= dM[i * n + k][j] * w.accelerations()[k];
+      for (std::size_t r = 0; r < m; ++r) rows[i][j] += dC[r * n + i][j] * lambda[r];
     }
-    for (unsigned r = 0; r < m; ++r)
-      for (unsigned j = 0; j < N; ++j) rows[i][j] += dC[r][i][j] * lambda[r];
   }
-  for (unsigned r = 0; r < m; ++r) {
-    std::vector<ex> row = gradient(-gamma[r], variables);
-    for (unsigned k = 0; k < n; ++k)
-      for (unsigned j = 0; j < N; ++j) row[j] -= dC[r][k][j] * w.accelerations()[k];
+  for (std::size_t r = 0; r < m; ++r) {
+    std::vector<ex> row = sweep.derivatives(reduced[upper + n + m * n + r]);
+    for (std::size_t j = 0; j < num_directions; ++j)
+      for (std::size_t k = 0; k < n; ++k) row[j] -= dC[r * n + k][j] * w.accelerations()[k];
     rows.push_back(row);
   }
   std::vector<ex> columns;
-  for (std::size_t j = 0; j < N; ++j)
+  for (std::size_t j = 0; j < num_directions; ++j)
     for (std::size_t i = 0; i < n + m; ++i) columns.push_back(rows[i][j]);
   return columns;
 }
@@ -229,17 +238,26 @@ std::vector<GiNaC::symbol> multiplier_symbols(BodyWriter& w, std::size_t m) {
   return lambda;
 }
 
+// solve_constrained, then the derivatives of q'' and λ along `directions` into the columns
+// of the rows `first_row`.. of `target`
+void constrained_sensitivities(BodyWriter& w, const Equations& e, const std::vector<ex>& directions,
+                               std::size_t first_row, const std::string& target) {
+  std::size_t n = e.num_velocities(), m = e.constraints.size();
+  w.line(fmt::format("T lambda[{}];", m));
+  CseBatch terms = solve_constrained(w, e);
+  TangentSweep sweep(w, directions);
+  sweep.follow(terms);
+  auto code = w.batch(differentiated_system(e, terms.outputs, sweep, directions.size(), w, multiplier_symbols(w, m)));
+  write_sensitivities(w, code, n, m, directions.size(), first_row, target);
+}
+
 std::string constrained_jacobian_input_function(const Equations& e) {
   const Symbols& s = e.symbols;
-  std::size_t n = e.num_velocities(), m = e.constraints.size(), inputs = s.inputs.size();
+  std::size_t n = e.num_velocities(), inputs = s.inputs.size();
   BodyWriter w = constrained_writer(e);
   if (inputs > 0) {
-    w.line(fmt::format("T lambda[{}];", m));
-    solve_constrained(w, e);
     for (std::size_t i = 0; i < n * inputs; ++i) w.line(fmt::format("B[{}] = T(0);", i));
-    std::vector<ex> u(s.inputs.begin(), s.inputs.end());
-    auto code = w.batch(differentiated_system(e, u, w, multiplier_symbols(w, m)));
-    write_sensitivities(w, code, n, m, inputs, n, "B");
+    constrained_sensitivities(w, e, std::vector<ex>(s.inputs.begin(), s.inputs.end()), n, "B");
   }
   return function(fmt::format("/// Input Jacobian dx'/du with the default Baumgarte gains: zero upper block, dq''/du below.\n"
                               "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, inputs),
@@ -274,16 +292,14 @@ std::string lagrange1_functions(const Equations& e) {
   }
   {
     BodyWriter w = constrained_writer(e);
-    w.line(fmt::format("T lambda[{}];", m));
-    solve_constrained(w, e);
     std::vector<ex> state(s.coordinates.begin(), s.coordinates.end());
     state.insert(state.end(), s.velocities.begin(), s.velocities.end());
-    auto code = w.batch(differentiated_system(e, state, w, multiplier_symbols(w, m)));
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < 2 * n; ++j) w.line(fmt::format("J[{}] = T({});", i * 2 * n + j, j == n + i ? 1 : 0));
-    write_sensitivities(w, code, n, m, 2 * n, n, "J");
+    constrained_sensitivities(w, e, state, n, "J");
     out += function(fmt::format("/// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the\n"
-                                "/// differentiated augmented system. J: {0}x{0}, row-major.\n", 2 * n),
+                                "/// differentiated augmented system, whose partial derivatives come from a tangent sweep\n"
+                                "/// (forward mode) through the code of M, f, C and gamma. J: {0}x{0}, row-major.\n", 2 * n),
                     stabilized_jacobian_signature, w.finish(all_unused + std::string(" (void)alpha; (void)beta;")));
   }
   return out;
