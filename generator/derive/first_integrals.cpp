@@ -109,8 +109,9 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
 }  // namespace
 
 std::vector<FirstIntegral> find_first_integrals(const Equations& e, const Mechanics& mech) {
-  // Lagrange II has T already, formed from M and simplified; the others form it from the bodies
-  ex T = e.method == "lagrange2" ? e.kinetic_energy : kinetic_energy_of(mech);
+  // Lagrange II and I (whose M is that of the unconstrained system) have T already, formed from
+  // M and simplified; Appell's and Hamilton's equations hold it in other variables
+  ex T = e.method == "lagrange2" || e.method == "lagrange1" ? e.kinetic_energy : kinetic_energy_of(mech);
   Lagrangian L{T, mech.potential_energy, e.symbols.coordinates,
                e.uses_pseudo_velocities() ? e.coordinate_velocities : e.symbols.velocities, e.symbols.time};
   bool hamilton = e.method == "hamilton";

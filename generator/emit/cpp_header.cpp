@@ -154,15 +154,20 @@ std::string jacobian_state_function(const Equations& e) {
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c  (M depends on q only)
+  // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
   std::vector<std::vector<ex>> rows;
   for (unsigned i = 0; i < n; ++i) {
-    rows.push_back(gradient(e.forcing[i], state));
+    std::vector<ex> df = gradient(e.forcing[i], state);
+    std::vector<GiNaC::exvector> terms(N);
+    for (std::size_t j = 0; j < N; ++j) terms[j].push_back(df[j]);
     for (unsigned c = 0; c < n; ++c) {
       if (e.mass_matrix(i, c).info(GiNaC::info_flags::numeric)) continue;
       std::vector<ex> dM = gradient(e.mass_matrix(i, c), coordinates);
       for (unsigned j = 0; j < nq; ++j)
-        if (!dM[j].is_zero()) rows[i][j] -= dM[j] * w.accelerations()[c];
+        if (!dM[j].is_zero()) terms[j].push_back(-dM[j] * w.accelerations()[c]);
     }
+    rows.emplace_back();
+    for (const GiNaC::exvector& t : terms) rows.back().push_back(GiNaC::add(t));
   }
   std::vector<ex> columns;
   for (std::size_t j = 0; j < N; ++j)

@@ -230,16 +230,18 @@ ex pull_common_factors(const ex& sum) {
 }  // namespace
 
 ex collect_by_motion(const ex& expanded, const MotionSymbols& motion) {
-  std::map<ex, ex, ex_is_less> groups;
+  // the terms of a group are gathered first and summed once: adding them one by one
+  // rebuilds the growing sum each time, quadratic in the terms along a long chain
+  std::map<ex, GiNaC::exvector, ex_is_less> groups;
   for (const ex& term : terms_of(expanded)) {
-    ex moving = 1, fixed = 1;
-    for (const ex& f : factors_of(term)) (motion.depends(f) ? moving : fixed) *= f;
-    auto [it, fresh] = groups.emplace(moving, fixed);
-    if (!fresh) it->second += fixed;
+    GiNaC::exvector moving, fixed;
+    for (const ex& f : factors_of(term)) (motion.depends(f) ? moving : fixed).push_back(f);
+    groups[GiNaC::mul(moving)].push_back(GiNaC::mul(fixed));
   }
-  ex result = 0;
-  for (const auto& [moving, coefficient] : groups) result += pull_common_factors(coefficient) * moving;
-  return result;
+  GiNaC::exvector result;
+  for (const auto& [moving, coefficients] : groups)
+    result.push_back(pull_common_factors(GiNaC::add(coefficients)) * moving);
+  return GiNaC::add(result);
 }
 
 ex tidy(const ex& e, const MotionSymbols& motion) {

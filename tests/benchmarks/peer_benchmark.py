@@ -67,7 +67,7 @@ def mjcf(kind, n):
 
 def count_operations(header, function):
     """Operations in one generated function's body (see the module comment)."""
-    body = header.split(f"void {function}(")[1].split("\n}\n")[0]
+    body = header.split(f"void {function}(")[-1].split("\n}\n")[0]  # the definition, after any declaration
     count = 0
     for line in body.splitlines():
         line = line.strip()
