@@ -285,10 +285,12 @@ void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity)
   velocity[0] = T(0) + (T(2)*q_x)*qdot[0] + (T(2)*q_y)*qdot[1];
 }
 
-/// rhs with Baumgarte gains alpha, beta [1/s]; alpha = beta = 0 is the plain index-1 form
-/// C q'' + gamma = 0, whose constraint errors grow along a simulation.
+namespace detail {
+
+/// q'' and lambda of the augmented system with Baumgarte gains alpha, beta.
+/// accelerations: 2; lambda: 1.
 template <class T>
-void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* xdot) {
+void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* accelerations, T* lambda) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
   const T q_x = x[0];
   const T q_y = x[1];
@@ -297,7 +299,6 @@ void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, de
   const T p_m = p[0];
   const T p_l = p[1];
   const T p_g = p[2];
-  T lambda[1];
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
@@ -314,42 +315,27 @@ void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, de
   detail::ConstrainedSolver<T> solver;
   solver.factor(M, C);
   solver.solve(ddq, right, lambda);
-  xdot[0] = x[2];
-  xdot[1] = x[3];
-  xdot[2] = ddq[0];
-  xdot[3] = ddq[1];
+  accelerations[0] = ddq[0];
+  accelerations[1] = ddq[1];
+}
+
+}  // namespace detail
+
+/// rhs with Baumgarte gains alpha, beta [1/s]; alpha = beta = 0 is the plain index-1 form
+/// C q'' + gamma = 0, whose constraint errors grow along a simulation.
+template <class T>
+void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* xdot) {
+  T lambda[1];
+  detail::constrained_solution(t, x, u, p, alpha, beta, xdot + 2, lambda);
+  for (std::size_t i = 0; i < 2; ++i) xdot[i] = x[2 + i];
 }
 
 /// The multipliers lambda of M q'' = f + C^T lambda on the constraint manifold (no
 /// Baumgarte terms): C^T lambda are the constraint forces. lambda: 1.
 template <class T>
 void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* lambda) {
-  const T alpha = T(0), beta = T(0);
-  (void)alpha; (void)beta;
-  (void)t; (void)x; (void)u; (void)p;
-  const T q_x = x[0];
-  const T q_y = x[1];
-  const T dq_x = x[2];
-  const T dq_y = x[3];
-  const T p_m = p[0];
-  const T p_l = p[1];
-  const T p_g = p[2];
-  T M[4];
-  M[0] = p_m;
-  M[1] = T(0);
-  M[2] = M[1];
-  M[3] = p_m;
-  T ddq[2];
-  ddq[0] = T(0);
-  ddq[1] = -p_g*p_m;
-  T C[2];
-  C[0] = T(2)*q_x;
-  C[1] = T(2)*q_y;
-  T right[1];
-  right[0] = (p_l*p_l - q_x*q_x - q_y*q_y)*beta*beta - T(2)*dq_x*dq_x - T(2)*dq_y*dq_y - T(4)*(dq_x*q_x + dq_y*q_y)*alpha;
-  detail::ConstrainedSolver<T> solver;
-  solver.factor(M, C);
-  solver.solve(ddq, right, lambda);
+  T accelerations[2];
+  detail::constrained_solution(t, x, u, p, T(0), T(0), accelerations, lambda);
 }
 
 /// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the

@@ -393,10 +393,12 @@ void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity)
   velocity[1] = T(0) + (c0)*qdot[0] + (c1)*qdot[1] + (T(0))*qdot[2];
 }
 
-/// rhs with Baumgarte gains alpha, beta [1/s]; alpha = beta = 0 is the plain index-1 form
-/// C q'' + gamma = 0, whose constraint errors grow along a simulation.
+namespace detail {
+
+/// q'' and lambda of the augmented system with Baumgarte gains alpha, beta.
+/// accelerations: 3; lambda: 2.
 template <class T>
-void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* xdot) {
+void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* accelerations, T* lambda) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -413,7 +415,6 @@ void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, de
   const T p_m2 = p[3];
   const T p_m3 = p[4];
   const T p_g = p[5];
-  T lambda[2];
   const T c0 = cos(-q_phi);
   const T c1 = cos(q_beta);
   const T c2 = sin(q_beta);
@@ -450,72 +451,28 @@ void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, de
   detail::ConstrainedSolver<T> solver;
   solver.factor(M, C);
   solver.solve(ddq, right, lambda);
-  xdot[0] = x[3];
-  xdot[1] = x[4];
-  xdot[2] = x[5];
-  xdot[3] = ddq[0];
-  xdot[4] = ddq[1];
-  xdot[5] = ddq[2];
+  accelerations[0] = ddq[0];
+  accelerations[1] = ddq[1];
+  accelerations[2] = ddq[2];
+}
+
+}  // namespace detail
+
+/// rhs with Baumgarte gains alpha, beta [1/s]; alpha = beta = 0 is the plain index-1 form
+/// C q'' + gamma = 0, whose constraint errors grow along a simulation.
+template <class T>
+void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* xdot) {
+  T lambda[2];
+  detail::constrained_solution(t, x, u, p, alpha, beta, xdot + 3, lambda);
+  for (std::size_t i = 0; i < 3; ++i) xdot[i] = x[3 + i];
 }
 
 /// The multipliers lambda of M q'' = f + C^T lambda on the constraint manifold (no
 /// Baumgarte terms): C^T lambda are the constraint forces. lambda: 2.
 template <class T>
 void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* lambda) {
-  const T alpha = T(0), beta = T(0);
-  (void)alpha; (void)beta;
-  (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_phi = x[0];
-  const T q_beta = x[1];
-  const T q_x = x[2];
-  const T dq_phi = x[3];
-  const T dq_beta = x[4];
-  const T dq_x = x[5];
-  const T p_r = p[0];
-  const T p_l = p[1];
-  const T p_m1 = p[2];
-  const T p_m2 = p[3];
-  const T p_m3 = p[4];
-  const T p_g = p[5];
-  const T c0 = cos(-q_phi);
-  const T c1 = cos(q_beta);
-  const T c2 = sin(q_beta);
-  const T c3 = sin(-q_phi);
-  const T c4 = c0*c2 + c1*c3;
-  const T c5 = cos(q_phi);
-  const T c6 = sin(q_phi);
-  const T c7 = c5*p_r;
-  const T c8 = c1*p_l;
-  T M[9];
-  M[0] = (T(3)*p_m2 + p_m1)*p_r*p_r/T(3);
-  M[1] = (c0*c1 - c2*c3)*p_l*p_m2*p_r/T(2);
-  M[3] = M[1];
-  M[2] = T(0);
-  M[6] = M[2];
-  M[4] = p_l*p_l*p_m2/T(3);
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = p_m3;
-  T ddq[3];
-  ddq[0] = -(T(2)*p_m2 + p_m1)*c5*p_g*p_r/T(2) + c4*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
-  ddq[1] = -c1*p_g*p_l*p_m2/T(2) - c4*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
-  ddq[2] = T(0);
-  T C[6];
-  C[0] = -c6*p_r;
-  C[1] = -c2*p_l;
-  C[2] = -T(1);
-  C[3] = c7;
-  C[4] = c8;
-  C[5] = T(0);
-  T right[2];
-  right[0] = -(c7 + c8 - q_x)*beta*beta + T(2)*(c2*dq_beta*p_l + c6*dq_phi*p_r + dq_x)*alpha + c1*dq_beta*dq_beta*p_l + c5*dq_phi*dq_phi*p_r;
-  right[1] = -(c2*p_l + c6*p_r)*beta*beta - T(2)*(c1*dq_beta*p_l + c5*dq_phi*p_r)*alpha + c2*dq_beta*dq_beta*p_l + c6*dq_phi*dq_phi*p_r;
-  detail::ConstrainedSolver<T> solver;
-  solver.factor(M, C);
-  solver.solve(ddq, right, lambda);
+  T accelerations[3];
+  detail::constrained_solution(t, x, u, p, T(0), T(0), accelerations, lambda);
 }
 
 /// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the

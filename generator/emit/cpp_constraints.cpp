@@ -273,23 +273,27 @@ std::string lagrange1_functions(const Equations& e) {
   std::size_t n = e.num_velocities(), m = e.constraints.size();
   std::string out;
   {
-    BodyWriter w = constrained_writer(e);
-    w.line(fmt::format("T lambda[{}];", m));
-    solve_constrained(w, e);
-    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
-    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
-    out += function("/// rhs with Baumgarte gains alpha, beta [1/s]; alpha = beta = 0 is the plain index-1 form\n"
-                    "/// C q'' + gamma = 0, whose constraint errors grow along a simulation.\n",
-                    stabilized_signature, w.finish(all_unused + std::string(" (void)alpha; (void)beta;")));
-  }
-  {
+    // one copy of the augmented system's code, shared by rhs_stabilized and multipliers
     BodyWriter w = constrained_writer(e);
     solve_constrained(w, e);
-    out += function(fmt::format("/// The multipliers lambda of M q'' = f + C^T lambda on the constraint manifold (no\n"
-                                "/// Baumgarte terms): C^T lambda are the constraint forces. lambda: {}.\n", m),
-                    "void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* lambda)",
-                    "  const T alpha = T(0), beta = T(0);\n  (void)alpha; (void)beta;\n" + w.finish(all_unused));
+    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("accelerations[{}] = ddq[{}];", i, i));
+    out += "namespace detail {\n\n" +
+           function(fmt::format("/// q'' and lambda of the augmented system with Baumgarte gains alpha, beta.\n"
+                                "/// accelerations: {}; lambda: {}.\n", n, m),
+                    "void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, "
+                    "input_t<T> beta, T* accelerations, T* lambda)",
+                    w.finish(all_unused + std::string(" (void)alpha; (void)beta;"))) +
+           "}  // namespace detail\n\n";
   }
+  out += function("/// rhs with Baumgarte gains alpha, beta [1/s]; alpha = beta = 0 is the plain index-1 form\n"
+                  "/// C q'' + gamma = 0, whose constraint errors grow along a simulation.\n",
+                  stabilized_signature,
+                  fmt::format("  T lambda[{0}];\n  detail::constrained_solution(t, x, u, p, alpha, beta, xdot + {1}, lambda);\n"
+                              "  for (std::size_t i = 0; i < {1}; ++i) xdot[i] = x[{1} + i];\n", m, n));
+  out += function(fmt::format("/// The multipliers lambda of M q'' = f + C^T lambda on the constraint manifold (no\n"
+                              "/// Baumgarte terms): C^T lambda are the constraint forces. lambda: {}.\n", m),
+                  "void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* lambda)",
+                  fmt::format("  T accelerations[{}];\n  detail::constrained_solution(t, x, u, p, T(0), T(0), accelerations, lambda);\n", n));
   {
     BodyWriter w = constrained_writer(e);
     std::vector<ex> state(s.coordinates.begin(), s.coordinates.end());
