@@ -61,6 +61,7 @@ void TangentSweep::follow(const CseBatch& batch) {
       writer_.name(tangent, name);
       writer_.line(fmt::format("const T {} = {};", name, code[i]));
       mine[written[i]] = tangent;
+      written_.push_back({tangent, values[i]});
     }
   }
 }

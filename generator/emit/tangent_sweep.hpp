@@ -30,12 +30,15 @@ class TangentSweep {
   void follow(const CseBatch& batch);
   /// dE/d(direction j) for every direction, in model symbols, temporaries and tangents.
   std::vector<GiNaC::ex> derivatives(const GiNaC::ex& reduced) const;
+  /// The tangents written so far, in order: each in temporaries and earlier tangents.
+  const std::vector<Temporary>& tangents_written() const { return written_; }
 
  private:
   BodyWriter& writer_;
   std::size_t num_directions_;
   // a direction symbol or a temporary → its nonzero tangents by direction
   std::map<GiNaC::ex, std::map<std::size_t, GiNaC::ex>, GiNaC::ex_is_less> tangents_;
+  std::vector<Temporary> written_;
 };
 
 }  // namespace eomgen
