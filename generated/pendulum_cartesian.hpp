@@ -149,6 +149,13 @@ void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, de
 template <class T>
 void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J);
 
+namespace detail {
+
+template <class T>
+void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B);
+
+}  // namespace detail
+
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
 /// x: num_states; p: num_parameters; M: 2x2, row-major.
 template <class T>
@@ -190,8 +197,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 /// B: 4x0, row-major (nothing is written when the model has no inputs).
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
-  const T alpha = T(baumgarte_alpha), beta = T(baumgarte_beta);
-  (void)alpha; (void)beta;
   (void)t; (void)x; (void)u; (void)p; (void)B;
 }
 
@@ -338,12 +343,15 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   detail::constrained_solution(t, x, u, p, T(0), T(0), accelerations, lambda);
 }
 
-/// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the
-/// differentiated augmented system, whose partial derivatives come from a tangent sweep
-/// (forward mode) through the code of M, f, C and gamma. J: 4x4, row-major.
+namespace detail {
+
+/// dx'/dx into J (4x4) and dx'/du into B (4x0), row-major, each when not null, with
+/// Baumgarte gains alpha, beta: the derivatives of q'' and lambda solve the differentiated
+/// augmented system, whose partial derivatives come from a tangent sweep (forward mode)
+/// through the code of M, f, C and gamma.
 template <class T>
-void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
-  (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
+void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta; (void)B;
   const T q_x = x[0];
   const T q_y = x[1];
   const T dq_x = x[2];
@@ -351,14 +359,6 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   const T p_m = p[0];
   const T p_l = p[1];
   const T p_g = p[2];
-  J[0] = T(0);
-  J[1] = T(0);
-  J[2] = T(1);
-  J[3] = T(0);
-  J[4] = T(0);
-  J[5] = T(0);
-  J[6] = T(0);
-  J[7] = T(1);
   T lambda[1];
   T M[4];
   M[0] = p_m;
@@ -376,6 +376,9 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   detail::ConstrainedSolver<T> solver;
   solver.factor(M, C);
   solver.solve(ddq, right, lambda);
+  if (J)
+    for (std::size_t i = 0; i < 2; ++i)
+      for (std::size_t j = 0; j < 4; ++j) J[i * 4 + j] = T(j == 2 + i ? 1 : 0);
   T column[2];
   T column_right[1];
   T column_lambda[1];
@@ -383,26 +386,35 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   column[1] = T(0);
   column_right[0] = -T(2)*beta*beta*q_x - T(2)*ddq[0] - T(4)*alpha*dq_x;
   solver.solve(column, column_right, column_lambda);
-  J[8] = column[0];
-  J[12] = column[1];
+  if (J)
+    for (std::size_t i = 0; i < 2; ++i) J[(2 + i) * 4 + 0] = column[i];
   column[0] = T(0);
   column[1] = T(2)*lambda[0];
   column_right[0] = -T(2)*beta*beta*q_y - T(2)*ddq[1] - T(4)*alpha*dq_y;
   solver.solve(column, column_right, column_lambda);
-  J[9] = column[0];
-  J[13] = column[1];
+  if (J)
+    for (std::size_t i = 0; i < 2; ++i) J[(2 + i) * 4 + 1] = column[i];
   column[0] = T(0);
   column[1] = T(0);
   column_right[0] = -T(4)*alpha*q_x - T(4)*dq_x;
   solver.solve(column, column_right, column_lambda);
-  J[10] = column[0];
-  J[14] = column[1];
+  if (J)
+    for (std::size_t i = 0; i < 2; ++i) J[(2 + i) * 4 + 2] = column[i];
   column[0] = T(0);
   column[1] = T(0);
   column_right[0] = -T(4)*alpha*q_y - T(4)*dq_y;
   solver.solve(column, column_right, column_lambda);
-  J[11] = column[0];
-  J[15] = column[1];
+  if (J)
+    for (std::size_t i = 0; i < 2; ++i) J[(2 + i) * 4 + 3] = column[i];
+}
+
+}  // namespace detail
+
+/// Jacobian of rhs_stabilized, dx'/dx (see detail::constrained_sensitivities).
+/// J: 4x4, row-major.
+template <class T>
+void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
+  detail::constrained_sensitivities(t, x, u, p, alpha, beta, J, static_cast<T*>(nullptr));
 }
 
 }  // namespace eomgen::models::pendulum_cartesian

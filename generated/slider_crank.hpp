@@ -158,6 +158,13 @@ void rhs_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, de
 template <class T>
 void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J);
 
+namespace detail {
+
+template <class T>
+void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B);
+
+}  // namespace detail
+
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
 /// x: num_states; p: num_parameters; M: 3x3, row-major.
 template <class T>
@@ -226,8 +233,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 /// B: 6x0, row-major (nothing is written when the model has no inputs).
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
-  const T alpha = T(baumgarte_alpha), beta = T(baumgarte_beta);
-  (void)alpha; (void)beta;
   (void)t; (void)x; (void)u; (void)p; (void)B;
 }
 
@@ -475,12 +480,15 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   detail::constrained_solution(t, x, u, p, T(0), T(0), accelerations, lambda);
 }
 
-/// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the
-/// differentiated augmented system, whose partial derivatives come from a tangent sweep
-/// (forward mode) through the code of M, f, C and gamma. J: 6x6, row-major.
+namespace detail {
+
+/// dx'/dx into J (6x6) and dx'/du into B (6x0), row-major, each when not null, with
+/// Baumgarte gains alpha, beta: the derivatives of q'' and lambda solve the differentiated
+/// augmented system, whose partial derivatives come from a tangent sweep (forward mode)
+/// through the code of M, f, C and gamma.
 template <class T>
-void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
-  (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
+void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B) {
+  (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta; (void)B;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
@@ -496,24 +504,6 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   const T p_m2 = p[3];
   const T p_m3 = p[4];
   const T p_g = p[5];
-  J[0] = T(0);
-  J[1] = T(0);
-  J[2] = T(0);
-  J[3] = T(1);
-  J[4] = T(0);
-  J[5] = T(0);
-  J[6] = T(0);
-  J[7] = T(0);
-  J[8] = T(0);
-  J[9] = T(0);
-  J[10] = T(1);
-  J[11] = T(0);
-  J[12] = T(0);
-  J[13] = T(0);
-  J[14] = T(0);
-  J[15] = T(0);
-  J[16] = T(0);
-  J[17] = T(1);
   T lambda[2];
   const T c0 = cos(-q_phi);
   const T c1 = cos(q_beta);
@@ -563,6 +553,9 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   const T c8_d1 = c1_d1*p_l;
   const T c9 = -c0_d0*c1*p_l*p_m2*p_r + c2*c3_d0*p_l*p_m2*p_r;
   const T c10 = c0*c1_d1*p_l*p_m2*p_r - c2_d1*c3*p_l*p_m2*p_r;
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 6; ++j) J[i * 6 + j] = T(j == 3 + i ? 1 : 0);
   T column[3];
   T column_right[2];
   T column_lambda[2];
@@ -572,54 +565,57 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   column_right[0] = T(2)*alpha*c6_d0*dq_phi*p_r - beta*beta*c7_d0 + c5_d0*dq_phi*dq_phi*p_r + c6_d0*ddq[0]*p_r;
   column_right[1] = -(beta*beta*p_r - dq_phi*dq_phi*p_r)*c6_d0 - T(2)*alpha*c5_d0*dq_phi*p_r - c7_d0*ddq[0];
   solver.solve(column, column_right, column_lambda);
-  J[18] = column[0];
-  J[24] = column[1];
-  J[30] = column[2];
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 0] = column[i];
   column[0] = -c10*ddq[1]/T(2) + c4_d1*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
   column[1] = -c10*ddq[0]/T(2) - c1_d1*p_g*p_l*p_m2/T(2) - c2_d1*lambda[0]*p_l - c4_d1*dq_phi*dq_phi*p_l*p_m2*p_r/T(2) + c8_d1*lambda[1];
   column[2] = T(0);
   column_right[0] = T(2)*alpha*c2_d1*dq_beta*p_l - beta*beta*c8_d1 + c1_d1*dq_beta*dq_beta*p_l + c2_d1*ddq[1]*p_l;
   column_right[1] = -(beta*beta*p_l - dq_beta*dq_beta*p_l)*c2_d1 - T(2)*alpha*c1_d1*dq_beta*p_l - c8_d1*ddq[1];
   solver.solve(column, column_right, column_lambda);
-  J[19] = column[0];
-  J[25] = column[1];
-  J[31] = column[2];
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 1] = column[i];
   column[0] = T(0);
   column[1] = T(0);
   column[2] = T(0);
   column_right[0] = beta*beta;
   column_right[1] = T(0);
   solver.solve(column, column_right, column_lambda);
-  J[20] = column[0];
-  J[26] = column[1];
-  J[32] = column[2];
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 2] = column[i];
   column[0] = T(0);
   column[1] = -c4*dq_phi*p_l*p_m2*p_r;
   column[2] = T(0);
   column_right[0] = T(2)*alpha*c6*p_r + T(2)*c5*dq_phi*p_r;
   column_right[1] = -T(2)*alpha*c5*p_r + T(2)*c6*dq_phi*p_r;
   solver.solve(column, column_right, column_lambda);
-  J[21] = column[0];
-  J[27] = column[1];
-  J[33] = column[2];
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 3] = column[i];
   column[0] = c4*dq_beta*p_l*p_m2*p_r;
   column[1] = T(0);
   column[2] = T(0);
   column_right[0] = T(2)*alpha*c2*p_l + T(2)*c1*dq_beta*p_l;
   column_right[1] = -T(2)*alpha*c1*p_l + T(2)*c2*dq_beta*p_l;
   solver.solve(column, column_right, column_lambda);
-  J[22] = column[0];
-  J[28] = column[1];
-  J[34] = column[2];
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 4] = column[i];
   column[0] = T(0);
   column[1] = T(0);
   column[2] = T(0);
   column_right[0] = T(2)*alpha;
   column_right[1] = T(0);
   solver.solve(column, column_right, column_lambda);
-  J[23] = column[0];
-  J[29] = column[1];
-  J[35] = column[2];
+  if (J)
+    for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 5] = column[i];
+}
+
+}  // namespace detail
+
+/// Jacobian of rhs_stabilized, dx'/dx (see detail::constrained_sensitivities).
+/// J: 6x6, row-major.
+template <class T>
+void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, detail::input_t<T> beta, T* J) {
+  detail::constrained_sensitivities(t, x, u, p, alpha, beta, J, static_cast<T*>(nullptr));
 }
 
 }  // namespace eomgen::models::slider_crank

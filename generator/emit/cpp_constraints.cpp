@@ -87,6 +87,9 @@ const char* stabilized_signature =
 const char* stabilized_jacobian_signature =
     "void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, const T* p, detail::input_t<T> alpha, "
     "detail::input_t<T> beta, T* J)";
+const char* sensitivities_signature =
+    "void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, "
+    "input_t<T> beta, T* J, T* B)";
 
 }  // namespace
 
@@ -158,8 +161,9 @@ std::string constrained_solver(const Equations& e) {
       "  }}\n"
       "}};\n\n"
       "}}  // namespace detail\n\n"
-      "template <class T>\n{2};\ntemplate <class T>\n{3};\n\n",
-      n, m, stabilized_signature, stabilized_jacobian_signature);
+      "template <class T>\n{2};\ntemplate <class T>\n{3};\n\n"
+      "namespace detail {{\n\ntemplate <class T>\n{4};\n\n}}  // namespace detail\n\n",
+      n, m, stabilized_signature, stabilized_jacobian_signature, sensitivities_signature);
 }
 
 std::string constrained_rhs_function(const Equations& e) {
@@ -215,17 +219,25 @@ std::vector<ex> differentiated_system(const Equations& e, const std::vector<ex>&
   return columns;
 }
 
-// solves the differentiated system column by column into rows `first_row`.. of `target`
+// solves the differentiated system column by column: the first `states` columns are those of
+// dx'/dx (into J, when not null), the rest those of dx'/du (into B, when not null)
 void write_sensitivities(BodyWriter& w, const std::vector<std::string>& code, std::size_t n, std::size_t m,
-                         std::size_t columns, std::size_t first_row, const std::string& target) {
+                         std::size_t states, std::size_t inputs) {
+  w.line(fmt::format("if (J)\n    for (std::size_t i = 0; i < {0}; ++i)\n"
+                     "      for (std::size_t j = 0; j < {1}; ++j) J[i * {1} + j] = T(j == {0} + i ? 1 : 0);", n, states));
+  if (inputs > 0) w.line(fmt::format("if (B)\n    for (std::size_t i = 0; i < {}; ++i) B[i] = T(0);", n * inputs));
   w.line(fmt::format("T column[{}];", n));
   w.line(fmt::format("T column_right[{}];", m));
   w.line(fmt::format("T column_lambda[{}];", m));
-  for (std::size_t j = 0; j < columns; ++j) {
+  for (std::size_t j = 0; j < states + inputs; ++j) {
     for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * (n + m) + i]));
     for (std::size_t i = 0; i < m; ++i) w.line(fmt::format("column_right[{}] = {};", i, code[j * (n + m) + n + i]));
     w.line("solver.solve(column, column_right, column_lambda);");
-    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("{}[{}] = column[{}];", target, (first_row + i) * columns + j, i));
+    if (j < states)
+      w.line(fmt::format("if (J)\n    for (std::size_t i = 0; i < {0}; ++i) J[({0} + i) * {1} + {2}] = column[i];", n, states, j));
+    else
+      w.line(fmt::format("if (B)\n    for (std::size_t i = 0; i < {0}; ++i) B[({0} + i) * {1} + {2}] = column[i];", n, inputs,
+                         j - states));
   }
 }
 
@@ -238,38 +250,43 @@ std::vector<GiNaC::symbol> multiplier_symbols(BodyWriter& w, std::size_t m) {
   return lambda;
 }
 
-// solve_constrained, then the derivatives of q'' and λ along `directions` into the columns
-// of the rows `first_row`.. of `target`
-void constrained_sensitivities(BodyWriter& w, const Equations& e, const std::vector<ex>& directions,
-                               std::size_t first_row, const std::string& target) {
-  std::size_t n = e.num_velocities(), m = e.constraints.size();
+// detail::constrained_sensitivities: solve_constrained, then the derivatives of q'' and λ along
+// the states and the inputs, from one tangent sweep
+std::string sensitivities_function(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.num_velocities(), m = e.constraints.size(), inputs = s.inputs.size();
+  BodyWriter w = constrained_writer(e);
+  std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
+  directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
+  directions.insert(directions.end(), s.inputs.begin(), s.inputs.end());
   w.line(fmt::format("T lambda[{}];", m));
   CseBatch terms = solve_constrained(w, e);
   TangentSweep sweep(w, directions);
   sweep.follow(terms);
   auto code = w.batch(differentiated_system(e, terms.outputs, sweep, directions.size(), w, multiplier_symbols(w, m)));
-  write_sensitivities(w, code, n, m, directions.size(), first_row, target);
+  write_sensitivities(w, code, n, m, 2 * n, inputs);
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// dx'/dx into J ({0}x{0}) and dx'/du into B ({0}x{1}), row-major, each when not null, with\n"
+                              "/// Baumgarte gains alpha, beta: the derivatives of q'' and lambda solve the differentiated\n"
+                              "/// augmented system, whose partial derivatives come from a tangent sweep (forward mode)\n"
+                              "/// through the code of M, f, C and gamma.\n", 2 * n, inputs),
+                  sensitivities_signature, w.finish(all_unused + std::string(" (void)alpha; (void)beta; (void)B;"))) +
+         "}  // namespace detail\n\n";
 }
 
 std::string constrained_jacobian_input_function(const Equations& e) {
-  const Symbols& s = e.symbols;
-  std::size_t n = e.num_velocities(), inputs = s.inputs.size();
-  BodyWriter w = constrained_writer(e);
-  if (inputs > 0) {
-    for (std::size_t i = 0; i < n * inputs; ++i) w.line(fmt::format("B[{}] = T(0);", i));
-    constrained_sensitivities(w, e, std::vector<ex>(s.inputs.begin(), s.inputs.end()), n, "B");
-  }
+  std::size_t n = e.num_velocities(), inputs = e.symbols.inputs.size();
   return function(fmt::format("/// Input Jacobian dx'/du with the default Baumgarte gains: zero upper block, dq''/du below.\n"
                               "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, inputs),
                   "void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B)",
-                  "  const T alpha = T(baumgarte_alpha), beta = T(baumgarte_beta);\n  (void)alpha; (void)beta;\n" +
-                      w.finish(all_unused + std::string(" (void)B;")));
+                  inputs == 0 ? std::string("  ") + all_unused + " (void)B;\n"
+                              : "  detail::constrained_sensitivities(t, x, u, p, T(baumgarte_alpha), T(baumgarte_beta), "
+                                "static_cast<T*>(nullptr), B);\n");
 }
 
 namespace {
 
 std::string lagrange1_functions(const Equations& e) {
-  const Symbols& s = e.symbols;
   std::size_t n = e.num_velocities(), m = e.constraints.size();
   std::string out;
   {
@@ -294,18 +311,11 @@ std::string lagrange1_functions(const Equations& e) {
                               "/// Baumgarte terms): C^T lambda are the constraint forces. lambda: {}.\n", m),
                   "void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* lambda)",
                   fmt::format("  T accelerations[{}];\n  detail::constrained_solution(t, x, u, p, T(0), T(0), accelerations, lambda);\n", n));
-  {
-    BodyWriter w = constrained_writer(e);
-    std::vector<ex> state(s.coordinates.begin(), s.coordinates.end());
-    state.insert(state.end(), s.velocities.begin(), s.velocities.end());
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < 2 * n; ++j) w.line(fmt::format("J[{}] = T({});", i * 2 * n + j, j == n + i ? 1 : 0));
-    constrained_sensitivities(w, e, state, n, "J");
-    out += function(fmt::format("/// Jacobian of rhs_stabilized, dx'/dx, analytic: the derivatives of q'' and lambda solve the\n"
-                                "/// differentiated augmented system, whose partial derivatives come from a tangent sweep\n"
-                                "/// (forward mode) through the code of M, f, C and gamma. J: {0}x{0}, row-major.\n", 2 * n),
-                    stabilized_jacobian_signature, w.finish(all_unused + std::string(" (void)alpha; (void)beta;")));
-  }
+  out += sensitivities_function(e);
+  out += function(fmt::format("/// Jacobian of rhs_stabilized, dx'/dx (see detail::constrained_sensitivities).\n"
+                              "/// J: {0}x{0}, row-major.\n", 2 * n),
+                  stabilized_jacobian_signature,
+                  "  detail::constrained_sensitivities(t, x, u, p, alpha, beta, J, static_cast<T*>(nullptr));\n");
   return out;
 }
 
