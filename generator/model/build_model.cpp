@@ -80,7 +80,7 @@ class Builder {
 
   void declare(const std::string& name, SourceLocation where, const std::string& key,
                SymbolKind kind, std::size_t index, const char* what) {
-    static const char* kind_names[] = {"a parameter", "a coordinate", "an input", "a definition", "a vector"};
+    static const char* kind_names[] = {"a parameter", "a coordinate", "an input", "a definition", "a vector", "a matrix"};
     if (!is_identifier(name)) {
       d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
       return;
@@ -146,10 +146,12 @@ class Builder {
         define(e.name, e.where, key, value.value_or(0));
         continue;
       }
-      Vector3 v{0, 0, 0};
-      for (std::size_t i = 0; i < 3; ++i)
-        if (auto c = parse_expression(e.components[i], m_.symbols, {allow_everything, "a definition", &later}, d_)) v[i] = *c;
-      define_vector(e.name, e.where, key, v);
+      std::vector<ex> values(e.components.size(), 0);
+      for (std::size_t i = 0; i < values.size(); ++i)
+        if (auto c = parse_expression(e.components[i], m_.symbols, {allow_everything, "a definition", &later}, d_))
+          values[i] = *c;
+      if (values.size() == 9) define_matrix(e.name, e.where, key, values);
+      else define_vector(e.name, e.where, key, {values[0], values[1], values[2]});
     }
   }
 
@@ -175,6 +177,24 @@ class Builder {
       s.definition_names.push_back(component);
       s.definitions.push_back(v[a]);
     }
+  }
+
+  // NAME names the matrix (to refuse it as a scalar); NAME.xx … NAME.zz are definitions
+  void define_matrix(const std::string& name, SourceLocation where, const std::string& key, const std::vector<ex>& rows) {
+    Symbols& s = m_.symbols;
+    if (!is_identifier(name)) {
+      d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
+      return;
+    }
+    declare(name, where, key, SymbolKind::matrix, s.matrix_names.size(), "a matrix");
+    s.matrix_names.push_back(name);
+    for (unsigned i = 0; i < 3; ++i)
+      for (unsigned j = 0; j < 3; ++j) {
+        std::string entry = fmt::format("{}.{}{}", name, "xyz"[i], "xyz"[j]);
+        s.by_name[entry] = {SymbolKind::definition, s.definitions.size()};
+        s.definition_names.push_back(entry);
+        s.definitions.push_back(rows[3 * i + j]);
+      }
   }
 
   // [[frames]] in file order: a parent comes before its children
@@ -278,6 +298,15 @@ class Builder {
     Rotation r;
     r.matrix = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
     if (!given) return r;
+    if (given->product && names_matrix(given->product->text)) {
+      std::vector<std::vector<ExpressionText>> entries(3, std::vector<ExpressionText>(3, *given->product));
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) entries[i][j].text = fmt::format("{}.{}{}", given->product->text, "xyz"[i], "xyz"[j]);
+      RotationEntry whole = *given;
+      whole.product.reset();
+      whole.matrix = entries;
+      return rotation(whole);
+    }
     if (given->product) {
       auto sequence = parse_rotation_product(*given->product, m_.symbols, {allow_configuration, "a rotation"}, d_);
       if (!sequence) return r;
@@ -291,6 +320,11 @@ class Builder {
           if (auto e = parse(given->matrix[i][j], allow_configuration, "a rotation")) r.matrix(i, j) = *e;
     check_orthogonal(r.matrix, *given);
     return r;
+  }
+
+  bool names_matrix(const std::string& text) const {
+    auto found = m_.symbols.by_name.find(text);
+    return found != m_.symbols.by_name.end() && found->second.kind == SymbolKind::matrix;
   }
 
   // R^T R = I at the initial state, a cheap guard against a mistyped entry
@@ -313,6 +347,14 @@ class Builder {
 
   GiNaC::matrix inertia(const RigidBodyEntry& b) {
     GiNaC::matrix I(3, 3);
+    if (b.inertia_name && !names_matrix(b.inertia_name->text)) {
+      d_.error(b.inertia_name->where, b.inertia_name->key,
+               fmt::format("'{}' is not a 3x3 matrix under [definitions]", b.inertia_name->text),
+               m_.symbols.matrix_names.empty()
+                   ? "define it, e.g. I_B = [[\"A\", \"0\", \"0\"], [\"0\", \"B\", \"0\"], [\"0\", \"0\", \"C\"]]"
+                   : suggest(b.inertia_name->text, m_.symbols.matrix_names, "matrices"));
+      return I;
+    }
     if (!b.principal_inertia.empty()) {
       Vector3 moments = vector(b.principal_inertia, allow_parameters, "an inertia");
       for (std::size_t i = 0; i < 3; ++i) {

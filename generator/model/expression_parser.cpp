@@ -226,9 +226,11 @@ class Parser {
                            found->second.kind == SymbolKind::parameter ? "parameter"
                            : found->second.kind == SymbolKind::input   ? "input"
                            : found->second.kind == SymbolKind::vector  ? "vector"
+                           : found->second.kind == SymbolKind::matrix  ? "matrix"
                                                                        : "definition",
                            inner),
-           found->second.kind == SymbolKind::definition || found->second.kind == SymbolKind::vector
+           found->second.kind == SymbolKind::definition || found->second.kind == SymbolKind::vector ||
+                   found->second.kind == SymbolKind::matrix
                ? "write the definition's rate out in der() of its coordinates (the chain rule), or define it too"
                : "parameters are constant; inputs are given functions of time");
     if (!(rules_.allowed & allow_velocities))
@@ -275,6 +277,10 @@ class Parser {
       case SymbolKind::vector:
         fail(start, fmt::format("'{}' is a vector, not a scalar", name),
              fmt::format("use its components {0}.x, {0}.y, {0}.z", name));
+        break;
+      case SymbolKind::matrix:
+        fail(start, fmt::format("'{}' is a 3x3 matrix, not a scalar", name),
+             fmt::format("use its entries {0}.xx, {0}.xy, ... {0}.zz (row, then column)", name));
     }
     return 0;
   }

@@ -11,8 +11,9 @@
 namespace eomgen {
 
 /// A vector (a point or a vector definition) is used through its components NAME.x, NAME.y,
-/// NAME.z, each a definition.
-enum class SymbolKind { parameter, coordinate, input, definition, vector };
+/// NAME.z, each a definition; a 3×3 matrix definition through its entries NAME.xx, NAME.xy, …,
+/// NAME.zz (row, then column), and whole where a matrix goes (an inertia, a rotation).
+enum class SymbolKind { parameter, coordinate, input, definition, vector, matrix };
 
 struct SymbolInfo {
   SymbolKind kind;
@@ -37,6 +38,7 @@ struct Symbols {
   std::vector<std::string> definition_names;
   std::vector<GiNaC::ex> definitions;
   std::vector<std::string> vector_names;  // vectors and points; their components are definitions
+  std::vector<std::string> matrix_names;  // 3×3 matrix definitions; their entries are definitions
   std::map<std::string, SymbolInfo> by_name;
 
   std::size_t num_coordinates() const { return coordinates.size(); }

@@ -59,6 +59,7 @@ struct RigidBodyEntry {
   SourceLocation frame_where;
   std::vector<ExpressionText> principal_inertia;    // three moments, or empty
   std::vector<std::vector<ExpressionText>> inertia; // 3×3 body-frame tensor, or empty
+  std::optional<ExpressionText> inertia_name;       // when the tensor is a matrix definition
   SourceLocation where;
   std::string key;
 };
@@ -84,7 +85,8 @@ struct PointEntry {
   std::string key;
 };
 
-/// [definitions]: one expression (a scalar) or three (a vector, used as NAME.x, NAME.y, NAME.z).
+/// [definitions]: one expression (a scalar), three (a vector, used as NAME.x, NAME.y, NAME.z) or
+/// nine (a 3×3 matrix row by row, used as NAME.xx, NAME.xy, ... NAME.zz).
 struct DefinitionEntry {
   std::string name;
   std::vector<ExpressionText> components;

@@ -107,13 +107,15 @@ void read_particles(Reader& r, const toml::node& node, ModelFile& m) {
 
 void read_inertia(Reader& r, const toml::node& node, const std::string& key, RigidBodyEntry& b) {
   const toml::array* a = node.as_array();
-  if (a && !a->empty() && (*a)[0].is_array()) {
+  if ((a && !a->empty() && (*a)[0].is_array()) || node.is_string()) {  // a string names a matrix definition
+    if (node.is_string()) r.expression(node, key, b.inertia_name.emplace());
     r.matrix3(node, key, b.inertia);
   } else if (a && a->size() == 3) {
     r.vector(node, key, 3, b.principal_inertia);
   } else {
     r.error(r.at(node), key, "expected three principal moments or a 3x3 tensor",
-            "write inertia = [\"A\", \"B\", \"C\"] or [[..], [..], [..]] in the body frame");
+            "write inertia = [\"A\", \"B\", \"C\"], [[..], [..], [..]] in the body frame, or the name of a "
+            "3x3 matrix under [definitions]");
   }
 }
 
@@ -305,15 +307,22 @@ void read_named_expressions(Reader& r, const toml::node& node, const std::string
   }
 }
 
-// [definitions]: name = "expression" | ["x", "y", "z"]
+// [definitions]: name = "expression" | ["x", "y", "z"] | [[row], [row], [row]]
 void read_definitions(Reader& r, const toml::node& node, std::vector<DefinitionEntry>& out) {
-  const toml::table* t = r.table(node, "definitions", "name = expression or [x, y, z]");
+  const toml::table* t = r.table(node, "definitions", "name = expression, [x, y, z] or [[..], [..], [..]]");
   if (!t) return;
   for (const Entry& e : r.entries(*t)) {
     DefinitionEntry d{e.name, {}, e.where};
     std::string key = "definitions." + e.name;
-    bool ok = e.node->is_array() ? r.vector(*e.node, key, 3, d.components)
-                                 : r.expression(*e.node, key, d.components.emplace_back());
+    const toml::array* a = e.node->as_array();
+    bool ok = true;
+    if (a && !a->empty() && (*a)[0].is_array()) {
+      std::vector<std::vector<ExpressionText>> rows;
+      ok = r.matrix3(*e.node, key, rows);
+      for (const auto& row : rows) d.components.insert(d.components.end(), row.begin(), row.end());
+    } else {
+      ok = a ? r.vector(*e.node, key, 3, d.components) : r.expression(*e.node, key, d.components.emplace_back());
+    }
     if (ok) out.push_back(d);
   }
 }

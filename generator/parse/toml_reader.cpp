@@ -127,6 +127,16 @@ bool Reader::vector(const toml::node& node, const std::string& key, std::size_t 
 
 bool Reader::matrix3(const toml::node& node, const std::string& key,
                      std::vector<std::vector<ExpressionText>>& out) {
+  // a matrix may be named: a matrix definition, read as NAME.xx, NAME.xy, ... NAME.zz
+  if (const auto* name = node.as_string()) {
+    out.assign(3, std::vector<ExpressionText>(3));
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        expression(node, fmt::format("{}[{}][{}]", key, i, j), out[i][j]);
+        out[i][j].text = fmt::format("{}.{}{}", name->get(), "xyz"[i], "xyz"[j]);
+      }
+    return true;
+  }
   const toml::array* a = array(node, key, "3 rows of 3 expressions");
   if (!a) return false;
   if (a->size() != 3) {

@@ -1,8 +1,8 @@
 // [[frames]] and [[points]]: a 3-D chain of rods with relative joint angles placed through
 // frames derives to the same mass matrix and forcing as the same chain written out in
 // full (each rod's rotation as a 3×3 matrix multiplied out here, its centre summed link by
-// link), at random points; a point's components and a point force follow the frame; and
-// each misuse is located.
+// link), at random points; a point's components and a point force follow the frame; a
+// 3×3 matrix definition serves as a rotation, an inertia and by entry; and each misuse is located.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -182,6 +182,65 @@ h = "height"
   EXPECT_TRUE(agree_at_points(e.mass_matrix(0, 0), closed_form(e, "m*l^2"), points));
   EXPECT_TRUE(agree_at_points(e.forcing[0], closed_form(e, "-m*g*l*sin(q)"), points));
   EXPECT_TRUE(agree_at_points(e.outputs.at(0).expression, closed_form(e, "-l*cos(q)"), points));
+}
+
+// a top on a frame rotated by rot_z(a)*rot_x(b), with a tensor of inertia that has a product term
+std::string top(const std::string& definitions, const std::string& rotation, const std::string& inertia) {
+  return std::string(header) + "\n[coordinates]\na = 0.3\nb = 0.4\n" + definitions +
+         "\n[[frames]]\nname = \"arm\"\nrotation = " + rotation +
+         "\n\n[[rigid_bodies]]\nname = \"top\"\nmass = \"m\"\nframe = \"arm\"\ncenter = [\"0\", \"0\", \"-l\"]\ninertia = " +
+         inertia + "\n\n[outputs]\nh = \"cos(b)\"\n";
+}
+
+TEST(Frames, MatrixDefinitionsServeAsRotationInertiaAndByEntry) {
+  const std::string definitions = R"toml(
+[definitions]
+R = [["cos(a)", "-sin(a)*cos(b)", "sin(a)*sin(b)"], ["sin(a)", "cos(a)*cos(b)", "-cos(a)*sin(b)"], ["0", "sin(b)", "cos(b)"]]
+I = [["m*l^2/3", "0", "-m*l^2/20"], ["0", "m*l^2/4", "0"], ["-m*l^2/20", "0", "m*l^2/6"]]
+tilt = "R.zz"
+)toml";
+  std::string named = top(definitions, "\"R\"", "\"I\"");
+  named.replace(named.find("h = \"cos(b)\""), 12, "h = \"tilt\"");
+  Equations by_name = derive_text(named);
+  Equations written = derive_text(top("", "\"rot_z(a)*rot_x(b)\"",
+                                      R"([["m*l^2/3", "0", "-m*l^2/20"], ["0", "m*l^2/4", "0"], ["-m*l^2/20", "0", "m*l^2/6"]])"));
+  ASSERT_EQ(by_name.forcing.size(), 2u);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-1.5, 1.5), scale(0.5, 2);
+  for (int point = 0; point < 8; ++point) {
+    std::map<std::string, double> values{{"t", 0.0}};
+    for (const std::string& p : by_name.symbols.parameter_names) values[p] = scale(random);
+    for (const std::string& q : by_name.symbols.coordinate_names) {
+      values[q] = angle(random);
+      values["der(" + q + ")"] = rate(random);
+    }
+    auto same = [&](const ex& x, const ex& y, const std::string& what) {
+      double u = at_point_by_name(x, by_name.symbols, values), v = at_point_by_name(y, written.symbols, values);
+      EXPECT_NEAR(u, v, 1e-12 * std::max({1.0, std::abs(u), std::abs(v)})) << what;
+    };
+    for (unsigned j = 0; j < 2; ++j) {
+      same(by_name.forcing[j], written.forcing[j], fmt::format("f[{}]", j));
+      for (unsigned k = 0; k < 2; ++k) same(by_name.mass_matrix(j, k), written.mass_matrix(j, k), fmt::format("M[{}][{}]", j, k));
+    }
+    same(by_name.outputs.at(0).expression, written.outputs.at(0).expression, "R.zz");
+  }
+  // the product of inertia reaches the equations: without it M[0][1] (I_xz a' b' cos b) differs
+  Equations diagonal = derive_text(top("", "\"rot_z(a)*rot_x(b)\"", R"(["m*l^2/3", "m*l^2/4", "m*l^2/6"])"));
+  auto points = random_points(diagonal.symbols, 4);
+  EXPECT_FALSE(agree_at_points(diagonal.mass_matrix(0, 1), closed_form(diagonal, printed(written.mass_matrix(0, 1))), points));
+
+  std::string as_scalar = named;
+  as_scalar.replace(as_scalar.find("h = \"tilt\""), 10, "h = \"R + 1\"");
+  EXPECT_NE(diagnostics_of(as_scalar).find("'R' is a 3x3 matrix, not a scalar"), std::string::npos) << diagnostics_of(as_scalar);
+  EXPECT_NE(diagnostics_of(as_scalar).find("R.xx, R.xy"), std::string::npos);
+  std::string unknown = top(definitions, "\"R\"", "\"J\"");
+  EXPECT_NE(diagnostics_of(unknown).find("inertia: 'J' is not a 3x3 matrix under [definitions]"), std::string::npos)
+      << diagnostics_of(unknown);
+  EXPECT_EQ(diagnostics_of(unknown).find("J.xx"), std::string::npos) << "one error, not one per entry";
+  std::string not_orthogonal = named;
+  const std::string last_row = R"x(["0", "sin(b)", "cos(b)"])x";
+  not_orthogonal.replace(not_orthogonal.find(last_row), last_row.size(), R"x(["0", "sin(b)", "2*cos(b)"])x");
+  EXPECT_NE(diagnostics_of(not_orthogonal).find("not orthogonal"), std::string::npos) << diagnostics_of(not_orthogonal);
 }
 
 }  // namespace
