@@ -262,9 +262,34 @@ class Builder {
 
   Vector3 vector(const std::vector<ExpressionText>& texts, unsigned allowed, const char* context) {
     Vector3 v{0, 0, 0};
+    if (std::string name = vector_name(texts); !name.empty()) {
+      auto found = m_.symbols.by_name.find(name);
+      if (found == m_.symbols.by_name.end() || found->second.kind != SymbolKind::vector) {
+        // one error for the name, not one per component
+        std::string key = texts[0].key.substr(0, texts[0].key.rfind('['));
+        d_.error(texts[0].where, key, fmt::format("'{}' is not a vector or a point", name),
+                 m_.symbols.vector_names.empty()
+                     ? "define it under [definitions] (name = [\"x\", \"y\", \"z\"]) or as a [[points]] entry"
+                     : suggest(name, m_.symbols.vector_names, "vectors and points"));
+        return v;
+      }
+    }
     for (std::size_t i = 0; i < texts.size() && i < 3; ++i)
       if (auto e = parse(texts[i], allowed, context)) v[i] = *e;
     return v;
+  }
+
+  // NAME when the components were read from one string "NAME" (NAME.x, NAME.y, NAME.z)
+  static std::string vector_name(const std::vector<ExpressionText>& texts) {
+    if (texts.size() != 3) return {};
+    const std::string& x = texts[0].text;
+    if (x.size() < 3 || x.compare(x.size() - 2, 2, ".x") != 0) return {};
+    std::string name = x.substr(0, x.size() - 2);
+    for (std::size_t i = 0; i < 3; ++i)
+      if (texts[i].text != name + "." + "xyz"[i] || texts[i].where.line != texts[0].where.line ||
+          texts[i].where.column != texts[0].where.column)
+        return {};
+    return name;
   }
 
   void check_body_name(const std::string& name, const SourceLocation& where, const std::string& key) {

@@ -182,6 +182,13 @@ h = "height"
   EXPECT_TRUE(agree_at_points(e.mass_matrix(0, 0), closed_form(e, "m*l^2"), points));
   EXPECT_TRUE(agree_at_points(e.forcing[0], closed_form(e, "-m*g*l*sin(q)"), points));
   EXPECT_TRUE(agree_at_points(e.outputs.at(0).expression, closed_form(e, "-l*cos(q)"), points));
+
+  std::string misspelt = text;
+  misspelt.replace(misspelt.find("position = \"arm\""), 16, "position = \"amr\"");
+  std::string said = diagnostics_of(misspelt);
+  EXPECT_NE(said.find("particles[0].position: 'amr' is not a vector or a point"), std::string::npos) << said;
+  EXPECT_NE(said.find("arm"), std::string::npos) << "the hint names the vector there is";
+  EXPECT_EQ(said.find("amr.x"), std::string::npos) << "one error, not one per component:\n" << said;
 }
 
 // a top on a frame rotated by rot_z(a)*rot_x(b), with a tensor of inertia that has a product term
