@@ -75,10 +75,12 @@ ex apply_pythagoras(const ex& expanded) {
         else if (is_cos(base)) cosines.push_back({t, {cofactor, base.op(0)}});
       }
     }
-    // visit candidates in canonical order: GiNaC's term order changes between processes
+    // visit candidates in canonical order: GiNaC's term order changes between processes (only
+    // those with a sine partner: the text is costly, and the others are passed over anyway)
     std::vector<std::pair<std::string, std::size_t>> order;
     for (std::size_t c = 0; c < cosines.size(); ++c)
-      order.push_back({canonical_text(cosines[c].second.first * GiNaC::cos(cosines[c].second.second)), c});
+      if (sines.count(cosines[c].second))
+        order.push_back({canonical_text(cosines[c].second.first * GiNaC::cos(cosines[c].second.second)), c});
     std::sort(order.begin(), order.end());
     std::vector<bool> used(terms.size(), false);
     for (const auto& [text, c] : order) {
