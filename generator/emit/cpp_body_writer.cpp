@@ -4,6 +4,7 @@
 
 #include "emit/cpp_expression.hpp"
 #include "model/symbols.hpp"
+#include "symbolic/gradient.hpp"
 #include "symbolic/trig_expansion.hpp"
 
 namespace eomgen {
@@ -26,11 +27,6 @@ std::string quoted_list(const std::vector<std::string>& names, const std::string
 }
 
 namespace {
-
-void collect_symbols(const ex& e, GiNaC::exset& out) {
-  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
-}
 
 bool calls_functions(const ex& e) {
   if (GiNaC::is_a<GiNaC::function>(e) || (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)))

@@ -6,7 +6,6 @@
 #include "emit/formats.hpp"
 #include "emit/tangent_sweep.hpp"
 #include "kinematics/mechanics.hpp"
-#include "symbolic/gradient.hpp"
 
 namespace eomgen {
 
@@ -199,19 +198,26 @@ std::vector<ex> differentiated_system(const Equations& e, const std::vector<ex>&
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = i; k < n; ++k) dM[i * n + k] = dM[k * n + i] = sweep.derivatives(mass(i, k));
   for (std::size_t i = 0; i < m * n; ++i) dC[i] = sweep.derivatives(reduced[upper + n + i]);
+  // each entry's terms are gathered and summed once (+= would rebuild the growing sum)
   std::vector<std::vector<ex>> rows;  // n + m rows of num_directions entries
   for (std::size_t i = 0; i < n; ++i) {
-    rows.push_back(sweep.derivatives(reduced[upper + i]));
+    std::vector<ex> df = sweep.derivatives(reduced[upper + i]);
+    rows.emplace_back();
     for (std::size_t j = 0; j < num_directions; ++j) {
-      for (std::size_t k = 0; k < n; ++k) rows[i][j] -= dM[i * n + k][j] * w.accelerations()[k];
-      for (std::size_t r = 0; r < m; ++r) rows[i][j] += dC[r * n + i][j] * lambda[r];
+      GiNaC::exvector terms{df[j]};
+      for (std::size_t k = 0; k < n; ++k) terms.push_back(-dM[i * n + k][j] * w.accelerations()[k]);
+      for (std::size_t r = 0; r < m; ++r) terms.push_back(dC[r * n + i][j] * lambda[r]);
+      rows.back().push_back(GiNaC::add(terms));
     }
   }
   for (std::size_t r = 0; r < m; ++r) {
-    std::vector<ex> row = sweep.derivatives(reduced[upper + n + m * n + r]);
-    for (std::size_t j = 0; j < num_directions; ++j)
-      for (std::size_t k = 0; k < n; ++k) row[j] -= dC[r * n + k][j] * w.accelerations()[k];
-    rows.push_back(row);
+    std::vector<ex> dgamma = sweep.derivatives(reduced[upper + n + m * n + r]);
+    rows.emplace_back();
+    for (std::size_t j = 0; j < num_directions; ++j) {
+      GiNaC::exvector terms{dgamma[j]};
+      for (std::size_t k = 0; k < n; ++k) terms.push_back(-dC[r * n + k][j] * w.accelerations()[k]);
+      rows.back().push_back(GiNaC::add(terms));
+    }
   }
   std::vector<ex> columns;
   for (std::size_t j = 0; j < num_directions; ++j)

@@ -2,18 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "symbolic/gradient.hpp"
+
 namespace eomgen {
 
 using GiNaC::ex;
-
-namespace {
-
-void collect_symbols(const ex& e, GiNaC::exset& out) {
-  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
-}
-
-}  // namespace
 
 TangentSweep::TangentSweep(BodyWriter& writer, const std::vector<ex>& directions)
     : writer_(writer), num_directions_(directions.size()) {

@@ -150,8 +150,7 @@ class Builder {
       for (std::size_t i = 0; i < values.size(); ++i)
         if (auto c = parse_expression(e.components[i], m_.symbols, {allow_everything, "a definition", &later}, d_))
           values[i] = *c;
-      if (values.size() == 9) define_matrix(e.name, e.where, key, values);
-      else define_vector(e.name, e.where, key, {values[0], values[1], values[2]});
+      define_whole(e.name, e.where, key, values);
     }
   }
 
@@ -162,39 +161,24 @@ class Builder {
     s.definitions.push_back(value);
   }
 
-  // NAME names the vector (to refuse it as a scalar); NAME.x, NAME.y, NAME.z are definitions
-  void define_vector(const std::string& name, SourceLocation where, const std::string& key, const Vector3& v) {
+  // NAME names a vector or a matrix as a whole (to refuse it as a scalar); its components,
+  // named as component_name or entry_name give them, are definitions
+  void define_whole(const std::string& name, SourceLocation where, const std::string& key, const std::vector<ex>& values) {
     Symbols& s = m_.symbols;
     if (!is_identifier(name)) {
       d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
       return;
     }
-    declare(name, where, key, SymbolKind::vector, s.vector_names.size(), "a vector");
-    s.vector_names.push_back(name);
-    for (unsigned a = 0; a < 3; ++a) {
-      std::string component = fmt::format("{}.{}", name, "xyz"[a]);
+    bool matrix = values.size() == 9;
+    std::vector<std::string>& wholes = matrix ? s.matrix_names : s.vector_names;
+    declare(name, where, key, matrix ? SymbolKind::matrix : SymbolKind::vector, wholes.size(), matrix ? "a matrix" : "a vector");
+    wholes.push_back(name);
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      std::string component = matrix ? entry_name(name, k / 3, k % 3) : component_name(name, k);
       s.by_name[component] = {SymbolKind::definition, s.definitions.size()};
       s.definition_names.push_back(component);
-      s.definitions.push_back(v[a]);
+      s.definitions.push_back(values[k]);
     }
-  }
-
-  // NAME names the matrix (to refuse it as a scalar); NAME.xx … NAME.zz are definitions
-  void define_matrix(const std::string& name, SourceLocation where, const std::string& key, const std::vector<ex>& rows) {
-    Symbols& s = m_.symbols;
-    if (!is_identifier(name)) {
-      d_.error(where, key, fmt::format("'{}' is not a valid name", name), "use letters, digits and _, starting with a letter");
-      return;
-    }
-    declare(name, where, key, SymbolKind::matrix, s.matrix_names.size(), "a matrix");
-    s.matrix_names.push_back(name);
-    for (unsigned i = 0; i < 3; ++i)
-      for (unsigned j = 0; j < 3; ++j) {
-        std::string entry = fmt::format("{}.{}{}", name, "xyz"[i], "xyz"[j]);
-        s.by_name[entry] = {SymbolKind::definition, s.definitions.size()};
-        s.definition_names.push_back(entry);
-        s.definitions.push_back(rows[3 * i + j]);
-      }
   }
 
   // [[frames]] in file order: a parent comes before its children
@@ -233,7 +217,8 @@ class Builder {
     for (const PointEntry& p : f_.points) {
       const PlacedFrame* in = frame(p.frame, p.frame_where, p.key + ".frame");
       if (!in || p.name.empty()) continue;
-      define_vector(p.name, p.where, p.key + ".name", place_point(*in, vector(p.position, allow_configuration, "a position")));
+      Vector3 at = place_point(*in, vector(p.position, allow_configuration, "a position"));
+      define_whole(p.name, p.where, p.key + ".name", {at[0], at[1], at[2]});
     }
   }
 
@@ -286,7 +271,7 @@ class Builder {
     if (x.size() < 3 || x.compare(x.size() - 2, 2, ".x") != 0) return {};
     std::string name = x.substr(0, x.size() - 2);
     for (std::size_t i = 0; i < 3; ++i)
-      if (texts[i].text != name + "." + "xyz"[i] || texts[i].where.line != texts[0].where.line ||
+      if (texts[i].text != component_name(name, i) || texts[i].where.line != texts[0].where.line ||
           texts[i].where.column != texts[0].where.column)
         return {};
     return name;
@@ -326,7 +311,7 @@ class Builder {
     if (given->product && names_matrix(given->product->text)) {
       std::vector<std::vector<ExpressionText>> entries(3, std::vector<ExpressionText>(3, *given->product));
       for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) entries[i][j].text = fmt::format("{}.{}{}", given->product->text, "xyz"[i], "xyz"[j]);
+        for (std::size_t j = 0; j < 3; ++j) entries[i][j].text = entry_name(given->product->text, i, j);
       RotationEntry whole = *given;
       whole.product.reset();
       whole.matrix = entries;

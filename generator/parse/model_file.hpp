@@ -17,6 +17,13 @@ struct ExpressionText {
   std::string key;  // key path, e.g. particles[0].position[1]
 };
 
+/// The names under which a named vector's components and a named 3×3 matrix's entries are
+/// used in expressions: NAME.x, NAME.y, NAME.z and NAME.xx, NAME.xy, … NAME.zz (row, column).
+inline std::string component_name(const std::string& name, std::size_t i) { return name + "." + "xyz"[i]; }
+inline std::string entry_name(const std::string& name, std::size_t i, std::size_t j) {
+  return component_name(name, i) + "xyz"[j];
+}
+
 struct ParameterEntry {
   std::string name;
   double value = 0;

@@ -107,7 +107,7 @@ bool Reader::vector(const toml::node& node, const std::string& key, std::size_t 
     out.assign(3, {});
     for (std::size_t i = 0; i < 3; ++i) {
       expression(node, fmt::format("{}[{}]", key, i), out[i]);
-      out[i].text = fmt::format("{}.{}", name->get(), "xyz"[i]);
+      out[i].text = component_name(name->get(), i);
     }
     return true;
   }
@@ -133,7 +133,7 @@ bool Reader::matrix3(const toml::node& node, const std::string& key,
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j) {
         expression(node, fmt::format("{}[{}][{}]", key, i, j), out[i][j]);
-        out[i][j].text = fmt::format("{}.{}{}", name->get(), "xyz"[i], "xyz"[j]);
+        out[i][j].text = entry_name(name->get(), i, j);
       }
     return true;
   }

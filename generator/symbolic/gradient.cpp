@@ -16,6 +16,11 @@ void symbols_of(const GiNaC::ex& e, const std::map<GiNaC::ex, std::size_t, GiNaC
 }
 }  // namespace
 
+void collect_symbols(const GiNaC::ex& e, GiNaC::exset& out) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
+}
+
 std::vector<GiNaC::ex> gradient(const GiNaC::ex& e, const std::vector<GiNaC::ex>& variables) {
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> index;
   for (std::size_t k = 0; k < variables.size(); ++k) index.emplace(variables[k], k);

@@ -13,4 +13,7 @@ namespace eomgen {
 /// ∂e/∂v_k for every k; `variables` are symbols.
 std::vector<GiNaC::ex> gradient(const GiNaC::ex& e, const std::vector<GiNaC::ex>& variables);
 
+/// Every symbol in e (the variables e can depend on), added to `out`.
+void collect_symbols(const GiNaC::ex& e, GiNaC::exset& out);
+
 }  // namespace eomgen
