@@ -42,7 +42,7 @@ ex divided(const ex& x, const ex& root, const MotionSymbols& motion) {
 
 }  // namespace
 
-RollingContact rolling_contact(const Vector3& center, const Rotation& rotation, const Vector3& axis,
+std::optional<RollingContact> rolling_contact(const Vector3& center, const Rotation& rotation, const Vector3& axis,
                                const ex& radius, const Symbols& s) {
   MotionSymbols motion = motion_symbols(s);
   const GiNaC::matrix& R = rotation.matrix;
@@ -50,6 +50,7 @@ RollingContact rolling_contact(const Vector3& center, const Rotation& rotation, 
   Vector3 n;
   for (unsigned a = 0; a < 3; ++a) n[a] = tidy((R(a, 0) * axis[0] + R(a, 1) * axis[1] + R(a, 2) * axis[2]) / length, motion);
   ex root = in_plane_length(n[2], s);
+  if (root.is_zero() || at_initial_state(root, s) == 0) return std::nullopt;
   // root·ρ = r·(n_z·n − e_z), kept free of the division until the end
   Vector3 scaled_rho;
   for (unsigned a = 0; a < 3; ++a) scaled_rho[a] = radius * (n[2] * n[a] - (a == 2 ? 1 : 0));

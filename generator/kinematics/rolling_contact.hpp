@@ -2,6 +2,8 @@
 /// the contact point, the holonomic contact condition and the two no-slip conditions.
 #pragma once
 
+#include <optional>
+
 #include "model/model.hpp"
 
 namespace eomgen {
@@ -17,8 +19,9 @@ struct RollingContact {
 };
 
 /// `axis` in body components (any length); √(1 − n_z²) is written as |cos a| or |sin a| when
-/// n_z = ±sin a or ±cos a, with the sign it has at the initial state.
-RollingContact rolling_contact(const Vector3& center, const Rotation& rotation, const Vector3& axis,
+/// n_z = ±sin a or ±cos a, with the sign it has at the initial state. Nothing when the disk lies
+/// flat at the initial state (its axis vertical): then no point of the rim is the lowest.
+std::optional<RollingContact> rolling_contact(const Vector3& center, const Rotation& rotation, const Vector3& axis,
                                const GiNaC::ex& radius, const Symbols& symbols);
 
 }  // namespace eomgen

@@ -521,7 +521,15 @@ class Builder {
       d_.error(c.axis[0].where, c.key + ".rolls.axis", "the disk's axis is zero", "give its direction in the body frame, e.g. [0, 1, 0]");
       return;
     }
-    RollingContact contact = rolling_contact(body->center, body->rotation, axis, *radius, m_.symbols);
+    std::optional<RollingContact> found = rolling_contact(body->center, body->rotation, axis, *radius, m_.symbols);
+    if (!found) {
+      d_.error(c.axis[0].where, c.key + ".rolls.axis",
+               "the disk lies flat at the initial state (its axis is vertical), so no point of its rim is the lowest",
+               "check the axis in the body frame and the rotations of the body and its frames, and start it tilted "
+               "away from flat");
+      return;
+    }
+    const RollingContact& contact = *found;
     std::string base = c.name.empty() ? c.body : c.name;
     if (!contact.height.is_zero()) add_constraint(c, true, contact.height, base + "_contact");
     add_constraint(c, false, contact.slip_x, base + "_slip_x");

@@ -157,5 +157,20 @@ rolls = { body = "wheel", radius = "r", axis = [0, 1, 0] }
       << m.constraints[0].expression;
 }
 
+// a disk that lies flat has no lowest rim point (√(1 − n_z²) = 0): a located error, not a
+// division by zero (the fuzzer found it through a lean frame whose angle was misnamed)
+TEST(RollingContact, ADiskLyingFlatIsRefused) {
+  std::string text = read_file(model_path("rolling_disk"));
+  for (const std::string& flat : {std::string("rotation = \"rot_x(0)\""), std::string("rotation = \"rot_x(theta)\"")}) {
+    std::string model = text;
+    if (flat.find("theta") == std::string::npos) model.replace(model.find("rotation = \"rot_x(theta)\""), 25, flat);
+    else model.replace(model.find("theta = { initial = 1.4"), 23, "theta = { initial = 0.0");
+    Diagnostics d;
+    ModelFile file = parse_model_text(model, "disk.toml", d);
+    build_model(file, d);
+    EXPECT_NE(d.format().find("rolls.axis: the disk lies flat at the initial state"), std::string::npos) << flat << "\n" << d.format();
+  }
+}
+
 }  // namespace
 }  // namespace eomgen::test
