@@ -168,7 +168,8 @@ class Printer {
       return {"1/" + wrap(positive, 3), 2};
     }
     if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer() &&
-        leads_negative(base) && GiNaC::is_a<GiNaC::power>(ex(GiNaC::power(-base, exponent)))) {
+        leads_negative(base) && !leads_negative(-base) && GiNaC::is_a<GiNaC::power>(ex(GiNaC::power(-base, exponent)))) {
+      // (a base whose negation also leads with a minus is printed as it is: flipping it would not end)
       Printed flipped = power(GiNaC::power(-base, exponent));
       if (GiNaC::ex_to<GiNaC::numeric>(exponent).is_even()) return flipped;
       return {"-" + flipped.text, 2};

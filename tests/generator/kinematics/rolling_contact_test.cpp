@@ -10,6 +10,7 @@
 
 #include "model/model.hpp"
 #include "parse/model_file.hpp"
+#include "pipeline.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -170,6 +171,15 @@ TEST(RollingContact, ADiskLyingFlatIsRefused) {
     build_model(file, d);
     EXPECT_NE(d.format().find("rolls.axis: the disk lies flat at the initial state"), std::string::npos) << flat << "\n" << d.format();
   }
+}
+
+// a disk axis tilted in the body frame: the derivation ends (with its equations or a located
+// error); printing a power whose base leads with a minus either way had recursed without end
+TEST(RollingContact, ATiltedAxisEndsTheDerivation) {
+  std::string model = read_file(model_path("rolling_disk"));
+  model.replace(model.find("axis = [0, 0, 1]"), 16, "axis = [5, 0, 1]");
+  Derivation d = derive_model_text(model, "disk.toml");
+  EXPECT_TRUE(d.equations.has_value() || !d.diagnostics.empty());
 }
 
 }  // namespace
