@@ -159,7 +159,9 @@ class Printer {
     return {sign + join(numerator) + "/" + den, 2};
   }
 
-  Printed power(const ex& e) const {
+  // may_flip: false inside a flip, so that a base GiNaC turns back (or that leads with a minus
+  // either way) is printed as it is instead of flipped without end
+  Printed power(const ex& e, bool may_flip = true) const {
     const ex base = e.op(0), exponent = e.op(1);
     if (exponent.is_equal(GiNaC::numeric(1, 2))) return root(base);
     if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_negative()) {
@@ -168,9 +170,8 @@ class Printer {
       return {"1/" + wrap(positive, 3), 2};
     }
     if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer() &&
-        leads_negative(base) && !leads_negative(-base) && GiNaC::is_a<GiNaC::power>(ex(GiNaC::power(-base, exponent)))) {
-      // (a base whose negation also leads with a minus is printed as it is: flipping it would not end)
-      Printed flipped = power(GiNaC::power(-base, exponent));
+        may_flip && leads_negative(base) && GiNaC::is_a<GiNaC::power>(ex(GiNaC::power(-base, exponent)))) {
+      Printed flipped = power(GiNaC::power(-base, exponent), false);
       if (GiNaC::ex_to<GiNaC::numeric>(exponent).is_even()) return flipped;
       return {"-" + flipped.text, 2};
     }
