@@ -99,6 +99,10 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
     Model model = build_model(file, diagnostics);
     if (!method.empty()) model.method = method;
     if (diagnostics.empty()) chosen_model(file, choice, model, diagnostics);
+    if (diagnostics.empty() && !reduce.empty() && model.recursive_kinematics)
+      diagnostics.error({file.path, file.kinematics_where.line, file.kinematics_where.column}, "model.kinematics",
+                        "Routh's reduction works on equations written out in q, not on those of recursive kinematics",
+                        "use kinematics = \"expanded\" to reduce the model");
     if (diagnostics.empty() && !reduce.empty()) {
       try {
         result.equations = derive_routh(model, compute_mechanics(model), reduce);

@@ -25,6 +25,11 @@ int derive_and_write(const std::string& model_path, const std::string& format, c
                  : !variant.empty() ? derive_model_file_for(model_path, {"", variant, {}})
                                     : derive_model_file(model_path);
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
+  if (linearize && !d.equations->intermediates.empty()) {
+    std::cerr << "eomgen: error: --linearize differentiates equations written out in q; those of recursive kinematics "
+                 "hold the frames' quantities: use kinematics = \"expanded\", or the generated header's linearization()\n";
+    return exit_user_error;
+  }
   if (linearize) add_linearization(*d.equations);
   std::string text = (*find_equation_format(format))(*d.equations);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

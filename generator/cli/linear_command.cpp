@@ -82,7 +82,9 @@ int linear(const Options& o) {
     std::cerr << fmt::format("eomgen: error: {}: not an input, a state or an output of {}\n", unknown, m.name);
     return exit_user_error;
   }
-  LinearReport report = linear_report(loaded.problem, eq.state, request, &loaded.equations);
+  // the exact (symbolic) parts need equations written out in q, which recursive kinematics does not give
+  const Equations* symbolic = loaded.equations.intermediates.empty() ? &loaded.equations : nullptr;
+  LinearReport report = linear_report(loaded.problem, eq.state, request, symbolic);
   // with --response the CSV goes to standard output unless -o names a file, so the report is left out then
   if (wants_response(o.response)) return *write_linear_response(m, report, o.response);
   o.json ? print_linear_json(m, eq, report) : print_linear_text(m, eq, report);

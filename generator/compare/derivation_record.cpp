@@ -139,6 +139,12 @@ std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnos
       for (const Diagnostic& x : d.diagnostics.list()) diagnostics.error(x.where, x.key, x.message, x.hint);
       return std::nullopt;
     }
+    if (!d.equations->intermediates.empty()) {
+      diagnostics.error({path, 1, 1}, "model.kinematics",
+                        "the model's equations hold the quantities of recursive kinematics, which diff does not compare",
+                        "diff the model with kinematics = \"expanded\" (its equations are then written out in q)");
+      return std::nullopt;
+    }
     json = emit_json(*d.equations);
   } else {
     std::ifstream in(path, std::ios::binary);

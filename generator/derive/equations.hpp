@@ -2,6 +2,7 @@
 /// the output formats need to name things; the plain result of every method.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct Equations {
   std::string source;  // the model file's path as given
   Symbols symbols;
   std::size_t degrees_of_freedom = 0;
+  /// Recursive kinematics: quantities of the frames and bodies, each defined in the model's
+  /// symbols and earlier ones, that the expressions below may contain (empty otherwise).
+  std::vector<Intermediate> intermediates;
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;
@@ -81,6 +85,18 @@ struct Equations {
   /// in the coordinates and velocities of the state: filled by add_linearization().
   bool has_linearization = false;
   GiNaC::matrix linear_damping_gyroscopic, linear_stiffness_circulatory, linear_input;  // P, Q, B
+};
+
+/// The model symbols an expression depends on, through the intermediates of recursive
+/// kinematics too (each intermediate's are gathered once, in order).
+class SymbolDependence {
+ public:
+  explicit SymbolDependence(const std::vector<Intermediate>& intermediates);
+  /// Adds the model symbols of x to `out`.
+  void add(const GiNaC::ex& x, GiNaC::exset& out) const;
+
+ private:
+  std::map<GiNaC::ex, GiNaC::exset, GiNaC::ex_is_less> of_;
 };
 
 /// P = −∂f/∂q', Q = −∂f/∂q, B = ∂f/∂u, each entry kept compact.

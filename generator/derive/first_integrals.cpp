@@ -89,9 +89,13 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
   std::vector<std::pair<std::size_t, FirstIntegral>> out;
   std::vector<ex> Q = forces_without_inputs(mech, e.symbols);
   const ConstraintSet& c = e.constraints;
+  SymbolDependence dependence(mech.intermediates);
+  GiNaC::exset in_L;
+  dependence.add(L.T, in_L);
+  dependence.add(L.V, in_L);
   for (std::size_t k = 0; k < L.q.size(); ++k) {
     const auto& q = L.q[k];
-    if (L.T.has(q) || L.V.has(q) || !vanishes(Q[k], mech.motion) ||
+    if (in_L.count(q) || !vanishes(Q[k], mech.motion) ||
         !vanishes(mech.dissipation.diff(L.qdot[k]), mech.motion))
       continue;
     bool constrained = false;

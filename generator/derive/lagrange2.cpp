@@ -100,7 +100,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
   derivation_stage("the simplified M and f");
   for (unsigned j = 0; j < n; ++j) {
-    f[j] += mech.generalized_force[j] - mech.potential_energy.diff(s.coordinates[j]) -
+    f[j] += mech.generalized_force[j] - mech.potential_gradient[j] -
             mech.dissipation.diff(s.velocities[j]);
     f[j] = tidy(f[j], mech.motion);
     for (unsigned k = j; k < n; ++k) {
@@ -115,6 +115,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.source = model.source;
   e.symbols = s;
   e.degrees_of_freedom = n;
+  e.intermediates = mech.intermediates;
   e.mass_matrix = M;
   e.forcing = f;
   derivation_stage("the kinetic energy from M");

@@ -2,9 +2,28 @@
 
 #include <fmt/format.h>
 
+#include "symbolic/gradient.hpp"
 #include "symbolic/simplify.hpp"
 
 namespace eomgen {
+
+SymbolDependence::SymbolDependence(const std::vector<Intermediate>& intermediates) {
+  for (const Intermediate& i : intermediates) {
+    GiNaC::exset mine;
+    add(i.definition, mine);
+    of_[i.symbol] = std::move(mine);
+  }
+}
+
+void SymbolDependence::add(const GiNaC::ex& x, GiNaC::exset& out) const {
+  GiNaC::exset used;
+  collect_symbols(x, used);
+  for (const GiNaC::ex& s : used) {
+    auto found = of_.find(s);
+    if (found == of_.end()) out.insert(s);
+    else out.insert(found->second.begin(), found->second.end());
+  }
+}
 
 // Cyclic: no equation depends on the coordinate. With Appell's equations that includes
 // the kinematic equations of the coordinates that are not cyclic themselves, and with
@@ -13,6 +32,17 @@ std::vector<bool> cyclic_coordinates(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates(), k = e.forcing.size();
   const ConstraintSet& c = e.constraints;
   std::vector<bool> cyclic;
+  if (!e.intermediates.empty()) {
+    // recursive kinematics (Lagrange II): what M and f depend on, through the intermediates
+    SymbolDependence dependence(e.intermediates);
+    GiNaC::exset used;
+    for (unsigned i = 0; i < k; ++i) {
+      dependence.add(e.forcing[i], used);
+      for (unsigned j = 0; j < k; ++j) dependence.add(e.mass_matrix(i, j), used);
+    }
+    for (std::size_t q = 0; q < n; ++q) cyclic.push_back(!used.count(e.symbols.coordinates[q]));
+    return cyclic;
+  }
   for (std::size_t q = 0; q < n; ++q) {
     const auto& x = e.symbols.coordinates[q];
     bool free = true;
@@ -67,6 +97,10 @@ std::string method_refusal(const Model& model) {
   if (!find_method(model.method))
     return fmt::format("method \"{}\" is not available in this version of eomgen; use \"lagrange2\", "
                        "\"lagrange1\" (constraints with multipliers), \"appell\" (pseudo-velocities) or \"hamilton\"",
+                       model.method);
+  if (model.recursive_kinematics && model.method != "lagrange2")
+    return fmt::format("recursive kinematics ([model] kinematics = \"recursive\") derives Lagrange's equations of the "
+                       "second kind only: use method = \"lagrange2\", or kinematics = \"expanded\" for method \"{}\"",
                        model.method);
   if (model.method == "hamilton" && !model.constraints.empty())
     return "Hamilton's canonical equations here need independent coordinates and no constraints: use method = "

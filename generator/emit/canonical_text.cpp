@@ -82,6 +82,12 @@ std::string emit_canonical_text(const Equations& e) {
   out += fmt::format("parameters:{}{}\ninputs:{}{}\n", parameters.empty() ? "" : " ", parameters,
                      inputs.empty() ? "" : " ", inputs);
   out += fmt::format("degrees_of_freedom: {}\n\n", e.degrees_of_freedom);
+  if (!e.intermediates.empty()) {
+    out += "# recursive kinematics: the frames' and bodies' quantities used below, in order of computation\n";
+    for (const Intermediate& i : e.intermediates)
+      out += fmt::format("{} = {}\n", i.symbol.get_name(), canonical_text(i.definition));
+    out += "\n";
+  }
   std::size_t n = e.forcing.size();
   for (unsigned j = 0; j < n; ++j)
     for (unsigned k = 0; k < n; ++k) out += fmt::format("M[{}][{}] = {}\n", j, k, canonical_text(e.mass_matrix(j, k)));

@@ -59,6 +59,71 @@ BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
   names_[s.time] = "t";
   for (const Input& in : inputs_) names_[in.symbol] = in.name;
   for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
+  for (std::size_t i = 0; i < e.intermediates.size(); ++i) intermediate_index_[e.intermediates[i].symbol] = i;
+  for (const Intermediate& i : e.intermediates) {
+    GiNaC::exset used;
+    collect_symbols(i.definition, used);
+    intermediate_uses_.emplace_back();
+    for (const ex& u : used)
+      if (auto found = intermediate_index_.find(u); found != intermediate_index_.end())
+        intermediate_uses_.back().push_back(found->second);
+  }
+  intermediate_written_.assign(e.intermediates.size(), false);
+}
+
+// the intermediates that `expressions` need and that are not written yet, in dependency
+// levels: each level's definitions use only model symbols and earlier levels, so that their
+// common subexpressions (batched per level) come before every use
+void BodyWriter::define_intermediates(const std::vector<ex>& expressions, CseBatch& written) {
+  const std::vector<Intermediate>& all = equations_.intermediates;
+  if (all.empty()) return;
+  std::vector<bool> needed(all.size(), false);
+  for (const ex& x : expressions) {
+    GiNaC::exset used;
+    collect_symbols(x, used);
+    for (const ex& u : used)
+      if (auto found = intermediate_index_.find(u); found != intermediate_index_.end()) needed[found->second] = true;
+  }
+  std::vector<std::size_t> level(all.size(), 0);
+  std::size_t deepest = 0;
+  for (std::size_t i = all.size(); i-- > 0;)
+    if (needed[i] && !intermediate_written_[i])
+      for (std::size_t u : intermediate_uses_[i]) needed[u] = true;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (!needed[i] || intermediate_written_[i]) continue;
+    for (std::size_t u : intermediate_uses_[i])
+      if (!intermediate_written_[u]) level[i] = std::max(level[i], level[u] + 1);
+    deepest = std::max(deepest, level[i]);
+  }
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (needed[i] && !intermediate_written_[i]) pending.push_back(i);
+  for (std::size_t at = 0; at <= deepest && !pending.empty(); ++at) {
+    std::vector<std::size_t> these;
+    std::vector<ex> definitions;
+    for (std::size_t i : pending)
+      if (level[i] == at) these.push_back(i), definitions.push_back(expand_trig_of_sums(all[i].definition));
+    CseBatch b = cse_.add(definitions);
+    for (const Temporary& t : b.temporaries) {
+      names_[t.name] = t.name.get_name();
+      note(t.definition);
+      statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
+      written.temporaries.push_back(t);
+    }
+    for (std::size_t k = 0; k < these.size(); ++k) {
+      const Intermediate& i = all[these[k]];
+      note(b.outputs[k]);
+      statements_ += fmt::format("  const T {} = {};\n", i.cpp_name, code(b.outputs[k]));
+      names_[i.symbol] = i.cpp_name;
+      intermediate_written_[these[k]] = true;
+      written.temporaries.push_back({i.symbol, b.outputs[k]});
+    }
+  }
+}
+
+std::string BodyWriter::name_of(const GiNaC::symbol& symbol) const {
+  auto found = names_.find(symbol);
+  return found != names_.end() ? found->second : symbol.get_name();
 }
 
 void BodyWriter::solve_velocities() {
@@ -91,13 +156,17 @@ CseBatch BodyWriter::reduced_batch(const std::vector<ex>& expressions) {
   if (equations_.solves_for_velocities() && !velocities_solved_ && needs_velocities()) solve_velocities();
   std::vector<ex> for_code;
   for (const ex& e : expressions) for_code.push_back(expand_trig_of_sums(e));
+  CseBatch written;
+  define_intermediates(for_code, written);
   CseBatch b = cse_.add(for_code);
   for (const Temporary& t : b.temporaries) {
     names_[t.name] = t.name.get_name();
     note(t.definition);
     statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
   }
-  return b;
+  written.temporaries.insert(written.temporaries.end(), b.temporaries.begin(), b.temporaries.end());
+  written.outputs = b.outputs;
+  return written;
 }
 
 std::string BodyWriter::print(const ex& reduced) {

@@ -37,6 +37,8 @@ class BodyWriter {
   /// the batch's temporaries, for code that goes on from them (a tangent sweep); `print` writes one.
   CseBatch reduced_batch(const std::vector<GiNaC::ex>& expressions);
   std::string print(const GiNaC::ex& reduced);
+  /// The C++ name a symbol is printed as.
+  std::string name_of(const GiNaC::symbol& symbol) const;
   /// Solves M der(q) = p − b now (once); the factors are then in Lv and Dv.
   void solve_velocities();
   void line(const std::string& text) { statements_ += "  " + text + "\n"; }
@@ -50,6 +52,7 @@ class BodyWriter {
   };
   void note(const GiNaC::ex& e);
   std::string code(const GiNaC::ex& e);
+  void define_intermediates(const std::vector<GiNaC::ex>& expressions, CseBatch& written);
 
   const Equations& equations_;
   bool velocities_solved_ = false;
@@ -60,6 +63,11 @@ class BodyWriter {
   bool uses_functions_ = false;
   CommonSubexpressions cse_;
   std::string statements_;
+  // recursive kinematics: an intermediate's index, the intermediates its definition uses, and
+  // whether it has been written in this function
+  std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> intermediate_index_;
+  std::vector<std::vector<std::size_t>> intermediate_uses_;
+  std::vector<bool> intermediate_written_;
 };
 
 /// The entries M(j,k), k >= j, row by row.

@@ -8,6 +8,7 @@
 #include "emit/cpp_expression.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
+#include "emit/tangent_sweep.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/cse.hpp"
@@ -143,6 +144,33 @@ std::string momentum_linearization_function(const Equations& e) {
                   "void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B)", body);
 }
 
+// rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c from a tangent sweep through the code of M and f
+// (`values`, as accelerations() returns it): the derivatives of expressions in the intermediates of
+// recursive kinematics, which a symbolic gradient would take for constants
+std::vector<std::vector<ex>> swept_rows(BodyWriter& w, const CseBatch& values, const std::vector<ex>& state,
+                                        std::size_t n) {
+  TangentSweep sweep(w, state);
+  sweep.follow(values);
+  auto mass = [&](std::size_t i, std::size_t k) {
+    std::size_t a = std::min(i, k), b = std::max(i, k);
+    return values.outputs[a * n - a * (a - 1) / 2 + (b - a)];
+  };
+  std::vector<std::vector<ex>> dM(n * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = i; k < n; ++k) dM[i * n + k] = dM[k * n + i] = sweep.derivatives(mass(i, k));
+  std::vector<std::vector<ex>> rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<ex> df = sweep.derivatives(values.outputs[n * (n + 1) / 2 + i]);
+    rows.emplace_back();
+    for (std::size_t j = 0; j < state.size(); ++j) {
+      GiNaC::exvector terms{df[j]};
+      for (std::size_t k = 0; k < n; ++k) terms.push_back(-dM[i * n + k][j] * w.accelerations()[k]);
+      rows.back().push_back(GiNaC::add(terms));
+    }
+  }
+  return rows;
+}
+
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
@@ -150,13 +178,14 @@ std::string jacobian_state_function(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t nq = s.num_coordinates(), n = e.num_velocities(), N = nq + n;
   BodyWriter w(e);
-  accelerations(w, e);
+  CseBatch values = accelerations(w, e);
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c  (M depends on q only)
   // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
-  std::vector<std::vector<ex>> rows;
-  for (unsigned i = 0; i < n; ++i) {
+  std::vector<std::vector<ex>> rows =
+      e.intermediates.empty() ? std::vector<std::vector<ex>>{} : swept_rows(w, values, state, n);
+  for (unsigned i = 0; i < n && e.intermediates.empty(); ++i) {
     std::vector<ex> df = gradient(e.forcing[i], state);
     std::vector<GiNaC::exvector> terms(N);
     for (std::size_t j = 0; j < N; ++j) terms[j].push_back(df[j]);
@@ -236,7 +265,20 @@ std::string linearization_function(const Equations& e) {
   BodyWriter w(e);
   std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
       coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
-  for (unsigned i = 0; i < n; ++i) {
+  if (!e.intermediates.empty()) {
+    // through the intermediates of recursive kinematics: a tangent sweep through f's code
+    std::vector<ex> directions = velocities;
+    directions.insert(directions.end(), coordinates.begin(), coordinates.end());
+    directions.insert(directions.end(), inputs.begin(), inputs.end());
+    TangentSweep sweep(w, directions);
+    CseBatch f = w.reduced_batch(e.forcing);
+    sweep.follow(f);
+    for (unsigned i = 0; i < n; ++i) {
+      std::vector<ex> d = sweep.derivatives(f.outputs[i]);
+      for (std::size_t j = 0; j < d.size(); ++j) entries.push_back(j < n + nq ? -d[j] : d[j]);
+    }
+  }
+  for (unsigned i = 0; i < n && e.intermediates.empty(); ++i) {
     for (const ex& d : gradient(e.forcing[i], velocities)) entries.push_back(-d);
     for (const ex& d : gradient(e.forcing[i], coordinates)) entries.push_back(-d);
     for (const ex& d : gradient(e.forcing[i], inputs)) entries.push_back(d);

@@ -121,6 +121,14 @@ std::string emit_json(const Equations& e) {
                      string_array(velocities));
   out += fmt::format("  \"parameters\": {},\n  \"inputs\": {},\n", number_object(s.parameter_names, s.parameter_defaults),
                      number_object(s.input_names, s.input_defaults));
+  if (!e.intermediates.empty()) {
+    // recursive kinematics: what the symbols below stand for, in order of computation
+    out += "  \"intermediates\": [";
+    for (std::size_t i = 0; i < e.intermediates.size(); ++i)
+      out += fmt::format("{}\n    {{\"name\": {}, \"definition\": {}}}", i ? "," : "",
+                         quote(e.intermediates[i].symbol.get_name()), expression(e.intermediates[i].definition));
+    out += "\n  ],\n";
+  }
   out += fmt::format("  \"degrees_of_freedom\": {},\n  \"mass_matrix\": [", e.degrees_of_freedom);
   for (unsigned j = 0; j < n; ++j) {
     out += j ? ",\n    [" : "\n    [";

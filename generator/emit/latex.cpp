@@ -67,6 +67,9 @@ std::string emit_latex(const Equations& e) {
   std::string out = fmt::format("%% {}: {} (method {})\n%% M(q,t) \\ddot q = f(q, \\dot q, u, t)\n", e.model_name,
                                 e.title, e.method);
   out += "\\begin{align*}\n";
+  // recursive kinematics: the frames' and bodies' quantities, in order of computation
+  for (const Intermediate& i : e.intermediates)
+    out += fmt::format("{} &= {} \\\\\n", tex(i.symbol), tex(i.definition));
   for (unsigned j = 0; j < n; ++j)
     for (unsigned k = j; k < n; ++k)
       out += fmt::format("M_{{{}{}}} &= {} \\\\\n", j + 1, k + 1, tex(e.mass_matrix(j, k)));

@@ -1,4 +1,8 @@
 #include "kinematics/mechanics.hpp"
+
+#include <stdexcept>
+
+#include "kinematics/recursive_kinematics.hpp"
 #include "symbolic/gradient.hpp"
 
 namespace eomgen {
@@ -97,9 +101,12 @@ ex gravity_potential(const ex& mass, const Vector3& r, const Vector3& g) {
 }
 
 // Q_j += F · ∂r_at/∂q_j (virtual work of a point force)
-void add_point_force(std::vector<ex>& Q, const PointForce& f, const Symbols& s) {
-  for (std::size_t j = 0; j < s.coordinates.size(); ++j)
-    for (unsigned a = 0; a < 3; ++a) Q[j] += f.force[a] * f.at[a].diff(s.coordinates[j]);
+void add_point_force(std::vector<ex>& Q, const PointForce& f, const Symbols& s, const RecursiveKinematics* frames) {
+  for (unsigned a = 0; a < 3; ++a) {
+    std::vector<ex> d;
+    if (frames) d = frames->gradient(f.at[a]);
+    for (std::size_t j = 0; j < s.coordinates.size(); ++j) Q[j] += f.force[a] * (frames ? d[j] : f.at[a].diff(s.coordinates[j]));
+  }
 }
 
 // Q_j += M_B · ∂ω_B/∂q̇_j, with inertial torques turned into body components by Rᵀ
@@ -121,18 +128,35 @@ Mechanics compute_mechanics(const Model& model) {
   m.motion = motion_symbols(s);
   m.kinetic_linear.assign(s.coordinates.size(), 0);
   m.kinetic_at_rest = 0;
+  std::optional<RecursiveKinematics> frames;
+  if (model.recursive_kinematics) {
+    m.intermediates = model.intermediates;
+    frames.emplace(model, m.intermediates);
+  }
   ex V = model.potential;
+  std::vector<bool> in_frame;  // the bodies placed by the recursion
   for (const Particle& p : model.particles) {
+    in_frame.push_back(frames && p.placement.frame >= 0);
     BodyKinematics b;
-    b.name = p.name;
-    b.mass = p.mass;
-    translate(b, p.position, s);
+    if (frames && p.placement.frame >= 0) b = frames->body(p.name, p.mass, p.position, p.placement, false);
+    else {
+      b.name = p.name;
+      b.mass = p.mass;
+      translate(b, p.position, s);
+    }
     add_rheonomic_kinetic(b, s, m);
     V += gravity_potential(p.mass, p.position, model.gravity);
     m.bodies.push_back(b);
   }
   std::size_t first_rigid = m.bodies.size();
   for (const RigidBody& r : model.rigid_bodies) {
+    in_frame.push_back(frames && r.placement.frame >= 0);
+    if (in_frame.back()) {
+      m.bodies.push_back(frames->body(r.name, r.mass, r.center, r.placement, true));
+      m.bodies.back().inertia = r.inertia;
+      V += gravity_potential(r.mass, r.center, model.gravity);
+      continue;
+    }
     BodyKinematics b;
     b.name = r.name;
     b.mass = r.mass;
@@ -147,21 +171,27 @@ Mechanics compute_mechanics(const Model& model) {
     m.bodies.push_back(b);
   }
   m.extra_kinetic_energy = model.kinetic;
+  for (const Intermediate& i : m.intermediates) m.motion.symbols.insert(i.symbol);
   for (ex& b : m.kinetic_linear) b = tidy(b, m.motion);
   m.kinetic_at_rest = tidy(m.kinetic_at_rest, m.motion);
   m.potential_energy = tidy(V, m.motion);
   m.dissipation = tidy(model.dissipation, m.motion);
   m.generalized_force = model.generalized_force;
-  for (const PointForce& f : model.point_forces) add_point_force(m.generalized_force, f, s);
+  for (const PointForce& f : model.point_forces) add_point_force(m.generalized_force, f, s, frames ? &*frames : nullptr);
   for (const BodyTorque& t : model.torques)
     add_torque(m.generalized_force, t, m.bodies[first_rigid + t.body], model.rigid_bodies[t.body]);
   for (ex& q : m.generalized_force) q = tidy(q, m.motion);
+  if (frames) m.potential_gradient = frames->gradient(m.potential_energy);
+  else
+    for (const auto& q : s.coordinates) m.potential_gradient.push_back(m.potential_energy.diff(q));
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t
   GiNaC::exmap at_rest;
   for (const auto& v : s.velocities) at_rest[v] = 0;
   m.scleronomic = !m.extra_kinetic_energy.has(s.time) && !m.potential_energy.has(s.time);
-  for (const BodyKinematics& b : m.bodies)
-    for (unsigned a = 0; a < 3; ++a) {
+  // (frames placed by the coordinates alone do not move at rest: their ω is a symbol here)
+  for (std::size_t i = 0; i < m.bodies.size(); ++i)
+    for (unsigned a = 0; a < 3 && !in_frame[i]; ++a) {
+      const BodyKinematics& b = m.bodies[i];
       bool moves = !b.velocity[a].subs(at_rest).expand().is_zero();
       bool turns = b.rotates && !b.angular_velocity[a].subs(at_rest).expand().is_zero();
       m.scleronomic = m.scleronomic && !moves && !turns;

@@ -41,6 +41,10 @@ struct Mechanics {
   GiNaC::ex dissipation;             // R, Rayleigh's function
   std::vector<GiNaC::ex> generalized_force;  // Q of the applied forces and torques (without gravity and R)
   bool scleronomic = true;                   // no body position, rotation, energy or gravity depends on t
+  std::vector<GiNaC::ex> potential_gradient;  // ∂V/∂q_j (through the frames, with recursive kinematics)
+  /// Recursive kinematics: the frames' and bodies' quantities, in order (the model's first);
+  /// every other expression here may contain their symbols, which `motion` then counts as moving.
+  std::vector<Intermediate> intermediates;
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -5,6 +5,7 @@
 #include "kinematics/rolling_contact.hpp"
 #include "model/frames.hpp"
 #include "model/model.hpp"
+#include "model/recursive_frames.hpp"
 
 namespace eomgen {
 
@@ -43,6 +44,7 @@ class Builder {
     m_.name = f_.name;
     m_.title = f_.title;
     m_.method = f_.method;
+    m_.recursive_kinematics = f_.kinematics == "recursive";
     m_.source = f_.path;
     check_header();
     declare_symbols();
@@ -76,6 +78,10 @@ class Builder {
     if (std::find(methods.begin(), methods.end(), f_.method) == methods.end())
       d_.error(f_.method_where, "model.method", fmt::format("unknown method '{}'", f_.method),
                suggest(f_.method, methods, "methods"));
+    if (f_.kinematics != "expanded" && f_.kinematics != "recursive")
+      d_.error(f_.kinematics_where, "model.kinematics", fmt::format("unknown kinematics '{}'", f_.kinematics),
+               "use \"expanded\" (positions and rotations multiplied out, the default) or \"recursive\" (frames "
+               "composed link by link, for long chains)");
   }
 
   void declare(const std::string& name, SourceLocation where, const std::string& key,
@@ -194,9 +200,59 @@ class Builder {
       if (!parent) continue;
       Rotation relative = rotation(f.rotation);
       Vector3 origin = f.origin.empty() ? Vector3{0, 0, 0} : vector(f.origin, allow_configuration, "a position");
-      if (!frames_.emplace(f.name, place_frame(*parent, relative, origin)).second)
+      if (frames_.count(f.name)) {
         d_.error(f.where, f.key + ".name", fmt::format("two frames are named '{}'", f.name), "give each frame its own name");
+        continue;
+      }
+      if (!m_.recursive_kinematics) {
+        frames_.emplace(f.name, place_frame(*parent, relative, origin));
+        continue;
+      }
+      if (moves_by_itself(relative.matrix, origin))
+        d_.error(f.where, f.key, fmt::format("frame '{}' moves with time t itself", f.name),
+                 "recursive kinematics takes frames placed by the coordinates alone: make the prescribed motion a "
+                 "coordinate, or use kinematics = \"expanded\"");
+      frame_index_[f.name] = int(m_.frame_links.size());
+      frames_.emplace(f.name, place_recursive_frame(m_, f.name, link_of(f.parent), relative, origin));
     }
+  }
+
+  bool moves_by_itself(const GiNaC::matrix& R, const Vector3& origin) const {
+    for (const ex& x : origin)
+      if (x.has(m_.symbols.time)) return true;
+    return ex(R).has(m_.symbols.time);
+  }
+
+  // the frame link of a frame name for recursive kinematics; -1: the inertial frame (or none)
+  int link_of(const std::string& name) const {
+    auto found = frame_index_.find(name);
+    return found == frame_index_.end() ? -1 : found->second;
+  }
+
+  // where a body is, for recursive kinematics; a body outside the frames must not be placed
+  // through them (by a point): only the recursion knows how such a position moves
+  FramePlacement placement(const std::string& frame_name, const Vector3& local, const Rotation& relative,
+                           const SourceLocation& where, const std::string& key) {
+    FramePlacement p;
+    if (!m_.recursive_kinematics) return p;
+    if (frame_name.empty() && uses_frames(local))
+      d_.error(where, key, "with recursive kinematics a body is placed in a frame, not through a point of one",
+               "give the body frame = \"...\" and its centre in that frame's coordinates");
+    p.frame = link_of(frame_name);
+    p.local = local;
+    p.sequence = relative.sequence;
+    p.relative = relative.matrix;
+    return p;
+  }
+
+  bool uses_frames(const Vector3& v) const {
+    GiNaC::exset used;
+    for (const ex& x : v)
+      for (GiNaC::const_preorder_iterator i = x.preorder_begin(); i != x.preorder_end(); ++i)
+        if (GiNaC::is_a<GiNaC::symbol>(*i)) used.insert(*i);
+    for (const Intermediate& i : m_.intermediates)
+      if (used.count(i.symbol)) return true;
+    return false;
   }
 
   // the frame named `name` (the inertial frame when empty), or nothing after an error
@@ -291,15 +347,18 @@ class Builder {
       check_body_name(p.name, p.where, p.key);
       const PlacedFrame* in = frame(p.frame, p.frame_where, p.key + ".frame");
       Vector3 local = vector(p.position, allow_configuration, "a position");
-      m_.particles.push_back({p.name, mass(p.mass), in ? place_point(*in, local) : local});
+      m_.particles.push_back({p.name, mass(p.mass), in ? place_point(*in, local) : local,
+                              placement(p.frame, local, rotation(std::nullopt), p.where, p.key + ".position")});
     }
     for (const RigidBodyEntry& b : f_.rigid_bodies) {
       check_body_name(b.name, b.where, b.key);
       const PlacedFrame* in = frame(b.frame, b.frame_where, b.key + ".frame");
       Vector3 local = vector(b.center, allow_configuration, "a position");
       RigidBody body{b.name, mass(b.mass), in ? place_point(*in, local) : local, {}, {3, 3}};
-      body.rotation = in ? compose(in->rotation, rotation(b.rotation)) : rotation(b.rotation);
+      Rotation relative = rotation(b.rotation);
+      body.rotation = in ? compose(in->rotation, relative) : relative;
       body.inertia = inertia(b);
+      body.placement = placement(b.frame, local, relative, b.where, b.key + ".center");
       m_.rigid_bodies.push_back(body);
     }
   }
@@ -588,6 +647,7 @@ class Builder {
   std::map<std::string, SourceLocation> declared_at_;
   std::map<std::string, int> body_names_;
   std::map<std::string, PlacedFrame> frames_;
+  std::map<std::string, int> frame_index_;  // recursive kinematics: a frame's index in m_.frame_links
 };
 
 }  // namespace

@@ -15,10 +15,42 @@ namespace eomgen {
 
 using Vector3 = std::array<GiNaC::ex, 3>;
 
+/// A quantity of the recursive kinematics (a frame's rotation entry, its origin, a partial
+/// velocity, …): a symbol in the derived expressions, computed from its definition (in model
+/// symbols and earlier intermediates) at the top of the generated code.
+struct Intermediate {
+  GiNaC::symbol symbol;  // a plain symbol, as the generated code's temporaries are
+  GiNaC::ex definition;
+  std::string cpp_name;
+};
+
+/// With recursive kinematics ([model] kinematics = "recursive"), a frame in its parent:
+/// rotation and origin relative to the parent (in q), and the symbols (or constants) of its
+/// rotation to inertial components and its inertial origin.
+struct FrameLink {
+  std::string name;
+  int parent = -1;  // index into Model::frame_links; -1: the inertial frame
+  std::vector<ElementaryRotation> sequence;  // the relative rotation as a product, when it is one
+  GiNaC::matrix relative_rotation{3, 3};
+  Vector3 relative_origin{0, 0, 0};  // parent coordinates
+  GiNaC::matrix rotation{3, 3};      // body components to inertial: symbols or constants
+  Vector3 origin{0, 0, 0};           // inertial: symbols or constants
+};
+
+/// Where a body is placed with recursive kinematics: in frame `frame` at `local` (frame
+/// coordinates), turned by `relative` (a rigid body) from the frame; frame -1: not in a frame.
+struct FramePlacement {
+  int frame = -1;
+  Vector3 local{0, 0, 0};
+  std::vector<ElementaryRotation> sequence;
+  GiNaC::matrix relative{3, 3};
+};
+
 struct Particle {
   std::string name;
   GiNaC::ex mass;
   Vector3 position;  // inertial frame
+  FramePlacement placement = {};
 };
 
 /// R = R1·R2·…·Rk maps body components to inertial ones (r_I = R·r_B).
@@ -33,6 +65,7 @@ struct RigidBody {
   Vector3 center;  // centre of mass, inertial frame
   Rotation rotation;
   GiNaC::matrix inertia{3, 3};  // about the centre of mass, body frame
+  FramePlacement placement = {};
 };
 
 struct PointForce {
@@ -95,6 +128,9 @@ struct Model {
   std::vector<NamedSymbolic> outputs;
   std::vector<Scene> scenes;
   std::vector<Variant> variants;
+  bool recursive_kinematics = false;
+  std::vector<FrameLink> frame_links;        // recursive kinematics: the frames, parents first
+  std::vector<Intermediate> intermediates;   // the frames' rotations and origins, in order
 };
 
 /// The derivation methods a model file may name, in the order documented.

@@ -47,6 +47,17 @@ void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
     for (Constraint& c : m.constraints) apply(c.expression, s);
     for (NamedSymbolic& v : m.pseudo_velocities) apply(v.expression, s);
     for (NamedSymbolic& o : m.outputs) apply(o.expression, s);
+    auto place = [&](FramePlacement& p) {
+      apply(p.local, s), apply(p.relative, s);
+      for (ElementaryRotation& r : p.sequence) apply(r.angle, s);
+    };
+    for (Particle& p : m.particles) place(p.placement);
+    for (RigidBody& b : m.rigid_bodies) place(b.placement);
+    for (FrameLink& f : m.frame_links) {
+      apply(f.relative_rotation, s), apply(f.relative_origin, s), apply(f.rotation, s), apply(f.origin, s);
+      for (ElementaryRotation& r : f.sequence) apply(r.angle, s);
+    }
+    for (Intermediate& i : m.intermediates) apply(i.definition, s);
   } catch (const std::exception& why) {
     throw std::invalid_argument(fmt::format("an expression breaks: {}", why.what()));
   }

@@ -170,7 +170,10 @@ struct ModelFile {
   /// still be built to report the mistakes in names too (but not derived).
   bool only_stand_in_mistakes = false;
   std::string name, title, method = "lagrange2";
-  SourceLocation name_where, method_where;
+  /// "expanded": every position and rotation multiplied out in q; "recursive": the frames'
+  /// rotations, origins and motions are quantities of their own, composed link by link
+  std::string kinematics = "expanded";
+  SourceLocation name_where, method_where, kinematics_where;
   std::vector<ParameterEntry> parameters;
   std::vector<CoordinateEntry> coordinates;
   std::optional<SourceLocation> coordinates_where;  // the [coordinates] section, when there is one

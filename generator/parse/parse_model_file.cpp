@@ -20,11 +20,11 @@ const std::vector<std::string> top_level_keys = {
     "model", "parameters", "coordinates", "inputs", "frames", "points", "particles", "rigid_bodies", "gravity",
     "energy", "forces", "constraints", "pseudo_velocities", "outputs", "scenes", "variants", "definitions"};
 
-// [model]: name, title, method
+// [model]: name, title, method, kinematics
 void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
   const toml::table* t = r.table(node, "model", "name, title, method");
   if (!t) return;
-  r.check_keys(*t, "model", {"name", "title", "method"});
+  r.check_keys(*t, "model", {"name", "title", "method", "kinematics"});
   if (const toml::node* n = t->get("name")) {
     m.name_where = r.at(*n);
     r.string(*n, "model.name", m.name);
@@ -35,6 +35,10 @@ void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
   if (const toml::node* n = t->get("method")) {
     m.method_where = r.at(*n);
     r.string(*n, "model.method", m.method);
+  }
+  if (const toml::node* n = t->get("kinematics")) {
+    m.kinematics_where = r.at(*n);
+    r.string(*n, "model.kinematics", m.kinematics);
   }
 }
 

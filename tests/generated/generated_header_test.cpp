@@ -45,6 +45,8 @@ GiNaC::exmap point_of(const Equations& e, const State& s) {
   for (std::size_t i = 0; i < y.velocities.size(); ++i) point[y.velocities[i]] = GiNaC::numeric(s.x[n + i]);
   for (std::size_t i = 0; i < y.parameters.size(); ++i) point[y.parameters[i]] = GiNaC::numeric(s.p[i]);
   for (std::size_t i = 0; i < y.inputs.size(); ++i) point[y.inputs[i]] = GiNaC::numeric(s.u[i]);
+  // recursive kinematics: each intermediate from its definition, in order
+  for (const Intermediate& i : e.intermediates) point[i.symbol] = i.definition.subs(point).evalf();
   return point;
 }
 

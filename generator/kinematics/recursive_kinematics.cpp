@@ -1,0 +1,171 @@
+#include "kinematics/recursive_kinematics.hpp"
+
+#include <fmt/format.h>
+
+#include "model/recursive_frames.hpp"
+#include "symbolic/gradient.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+const char* axis_names = "xyz";
+
+Vector3 cross(const Vector3& a, const Vector3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+Vector3 column(const GiNaC::matrix& m, unsigned j) { return {m(0, j), m(1, j), m(2, j)}; }
+
+// R·x, and Rᵀ·x
+Vector3 times(const GiNaC::matrix& R, const Vector3& x, bool transposed = false) {
+  Vector3 y{0, 0, 0};
+  for (unsigned a = 0; a < 3; ++a)
+    for (unsigned b = 0; b < 3; ++b) y[a] += (transposed ? R(b, a) : R(a, b)) * x[b];
+  return y;
+}
+
+Vector3 operator+(const Vector3& a, const Vector3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vector3 scaled(const ex& s, const Vector3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+
+bool is_identity(const GiNaC::matrix& R) { return ex(R).is_equal(GiNaC::unit_matrix(3)); }
+
+}  // namespace
+
+ex RecursiveKinematics::named(const std::string& name, const std::string& label, const ex& definition) {
+  std::string cpp = name + "_" + label;
+  for (char& c : cpp)
+    if (c == '.') c = '_';
+  return intermediate(intermediates_, name + "." + label, "k_" + cpp, definition.expand());
+}
+
+RecursiveKinematics::RecursiveKinematics(const Model& model, std::vector<Intermediate>& intermediates)
+    : model_(model), symbols_(model.symbols), motion_(motion_symbols(model.symbols)), intermediates_(intermediates) {
+  std::size_t n = symbols_.coordinates.size();
+  inertial_.rotation = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
+  inertial_.partial_angular_velocity = GiNaC::matrix(3, n);
+  inertial_.partial_velocity = GiNaC::matrix(3, n);
+  // a frame turned or moved by nothing shares its parent's symbols, which have their partials already
+  GiNaC::exset placed;
+  for (const Intermediate& i : model.intermediates) placed.insert(i.symbol);
+  auto fresh = [&](const ex& x) { return placed.count(x) && !partials_.count(x); };
+  for (const FrameLink& link : model.frame_links) {
+    const FrameMotion& parent = link.parent < 0 ? inertial_ : frames_[std::size_t(link.parent)];
+    FrameMotion m = child(parent, link.relative_rotation, link.sequence, link.relative_origin, link.name);
+    m.rotation = link.rotation;
+    m.origin = link.origin;
+    // ∂R/∂q_j = R [W_j]×, ∂o/∂q_j = V_j
+    for (unsigned a = 0; a < 3; ++a) {
+      for (unsigned b = 0; b < 3; ++b)
+        if (fresh(m.rotation(a, b))) {
+          std::vector<ex>& d = partials_[m.rotation(a, b)];
+          for (unsigned j = 0; j < n; ++j) {
+            Vector3 w = column(m.partial_angular_velocity, j);
+            // row a of R times column b of [w]×: [w]× e_b = w × e_b
+            Vector3 e{0, 0, 0};
+            e[b] = 1;
+            Vector3 wb = cross(w, e);
+            d.push_back(m.rotation(a, 0) * wb[0] + m.rotation(a, 1) * wb[1] + m.rotation(a, 2) * wb[2]);
+          }
+        }
+      if (fresh(m.origin[a])) {
+        std::vector<ex>& d = partials_[m.origin[a]];
+        for (unsigned j = 0; j < n; ++j) d.push_back(m.partial_velocity(a, j));
+      }
+    }
+    frames_.push_back(m);
+  }
+}
+
+FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix& relative,
+                                       const std::vector<ElementaryRotation>& sequence, const Vector3& o,
+                                       const std::string& name) {
+  const Symbols& s = symbols_;
+  std::size_t n = s.coordinates.size();
+  FrameMotion c;
+  c.partial_angular_velocity = GiNaC::matrix(3, n);
+  c.partial_velocity = GiNaC::matrix(3, n);
+  Vector3 w_rel{0, 0, 0};
+  if (!is_identity(relative))
+    w_rel = sequence.empty() ? angular_velocity_of_matrix(relative, s, motion_) : angular_velocity_of_sequence(sequence, s);
+  Vector3 alpha_rel{time_derivative(w_rel[0], s), time_derivative(w_rel[1], s), time_derivative(w_rel[2], s)};
+  Vector3 o_rate{time_derivative(o[0], s), time_derivative(o[1], s), time_derivative(o[2], s)};
+  Vector3 o_bias{time_derivative(o_rate[0], s), time_derivative(o_rate[1], s), time_derivative(o_rate[2], s)};
+  std::vector<ex> coordinates(s.coordinates.begin(), s.coordinates.end());
+  std::vector<std::vector<ex>> do_dq;
+  for (unsigned a = 0; a < 3; ++a) do_dq.push_back(eomgen::gradient(o[a], coordinates));
+  for (unsigned j = 0; j < n; ++j) {
+    const std::string& q = s.coordinate_names[j];
+    Vector3 wp = column(p.partial_angular_velocity, j);
+    Vector3 w = times(relative, wp, true);
+    Vector3 v = cross(wp, o) + Vector3{do_dq[0][j], do_dq[1][j], do_dq[2][j]};
+    v = times(p.rotation, v);
+    for (unsigned a = 0; a < 3; ++a) {
+      c.partial_angular_velocity(a, j) =
+          named(name, fmt::format("W_{}_{}", q, axis_names[a]), w[a] + w_rel[a].diff(s.velocities[j]));
+      c.partial_velocity(a, j) = named(name, fmt::format("V_{}_{}", q, axis_names[a]), p.partial_velocity(a, j) + v[a]);
+    }
+  }
+  Vector3 carried = times(relative, p.angular_velocity, true);
+  Vector3 alpha = times(relative, p.angular_bias, true) + scaled(-1, cross(w_rel, carried)) + alpha_rel;
+  Vector3 inner = cross(p.angular_bias, o) + cross(p.angular_velocity, cross(p.angular_velocity, o)) +
+                  scaled(2, cross(p.angular_velocity, o_rate)) + o_bias;
+  Vector3 acc = times(p.rotation, inner);
+  for (unsigned a = 0; a < 3; ++a) {
+    c.angular_velocity[a] = named(name, fmt::format("omega_{}", axis_names[a]), carried[a] + w_rel[a]);
+    c.angular_bias[a] = named(name, fmt::format("alpha_{}", axis_names[a]), alpha[a]);
+    c.acceleration_bias[a] = named(name, fmt::format("acc_{}", axis_names[a]), p.acceleration_bias[a] + acc[a]);
+  }
+  return c;
+}
+
+BodyKinematics RecursiveKinematics::body(const std::string& name, const ex& mass, const Vector3& position,
+                                         const FramePlacement& placement, bool rigid) {
+  const FrameMotion& frame = placement.frame < 0 ? inertial_ : frames_[std::size_t(placement.frame)];
+  FrameMotion m = child(frame, rigid ? placement.relative : GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)),
+                        placement.sequence, placement.local, name + ".cm");
+  BodyKinematics b;
+  b.name = name;
+  b.mass = mass;
+  b.position = position;
+  b.velocity_jacobian = m.partial_velocity;
+  b.bias_acceleration = m.acceleration_bias;
+  std::size_t n = symbols_.coordinates.size();
+  for (unsigned a = 0; a < 3; ++a) {
+    b.velocity[a] = 0;
+    for (unsigned j = 0; j < n; ++j) b.velocity[a] += m.partial_velocity(a, j) * symbols_.velocities[j];
+  }
+  if (rigid) {
+    b.rotates = true;
+    b.angular_velocity_jacobian = m.partial_angular_velocity;
+    b.angular_velocity = m.angular_velocity;
+    b.bias_angular_acceleration = m.angular_bias;
+  }
+  return b;
+}
+
+std::vector<ex> RecursiveKinematics::gradient(const ex& x) const {
+  std::vector<ex> coordinates(symbols_.coordinates.begin(), symbols_.coordinates.end());
+  std::vector<ex> d = eomgen::gradient(x, coordinates);
+  GiNaC::exset used;
+  collect_symbols(x, used);
+  for (const ex& s : used) {
+    auto found = partials_.find(s);
+    if (found == partials_.end()) continue;
+    ex partial = x.diff(GiNaC::ex_to<GiNaC::symbol>(s));
+    for (std::size_t j = 0; j < d.size(); ++j) d[j] += partial * found->second[j];
+  }
+  return d;
+}
+
+bool RecursiveKinematics::uses_frames(const ex& x) const {
+  GiNaC::exset used;
+  collect_symbols(x, used);
+  for (const ex& s : used)
+    if (partials_.count(s)) return true;
+  return false;
+}
+
+}  // namespace eomgen

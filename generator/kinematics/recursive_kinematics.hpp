@@ -1,0 +1,65 @@
+/// @file Recursive kinematics (Hiller §3.9, the recursion of multibody codes): each frame's
+/// partial angular velocities, partial velocities and bias accelerations from its parent's,
+/// as intermediates, so that a chain of n frames costs O(n²) quantities of a few products each
+/// instead of expressions multiplied out in q with up to 4ⁿ terms.
+///
+/// With a child C placed in its parent P by R_rel(q) and o_rel(q) (parent coordinates), body
+/// components for angular quantities and inertial ones for translation:
+///   W_C,j = R_relᵀ W_P,j + ∂ω_rel/∂q̇_j           ω_C = R_relᵀ ω_P + ω_rel
+///   α_C   = R_relᵀ α_P − ω_rel × R_relᵀ ω_P + α_rel
+///   V_C,j = V_P,j + R_P (W_P,j × o_rel + ∂o_rel/∂q_j)
+///   a_C   = a_P + R_P (α_P × o_rel + ω_P × (ω_P × o_rel) + 2 ω_P × ȯ_rel + ö_rel)
+/// where α and a are the bias parts (those of q̈ = 0), and ∂R_C/∂q_j = R_C [W_C,j]×.
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "kinematics/mechanics.hpp"
+
+namespace eomgen {
+
+/// The motion of a frame or body: its rotation and origin (symbols or constants) and the
+/// quantities of the recursion above.
+struct FrameMotion {
+  GiNaC::matrix rotation{3, 3};  // body components to inertial
+  Vector3 origin{0, 0, 0};       // inertial
+  GiNaC::matrix partial_angular_velocity;  // W: 3 × n, body components
+  Vector3 angular_velocity{0, 0, 0};       // ω, body components
+  Vector3 angular_bias{0, 0, 0};           // α − W q̈, body components
+  GiNaC::matrix partial_velocity;          // V: 3 × n, inertial, of the origin
+  Vector3 acceleration_bias{0, 0, 0};      // a − V q̈, inertial
+};
+
+class RecursiveKinematics {
+ public:
+  /// The motions of the model's frame links, appending their intermediates to `intermediates`.
+  RecursiveKinematics(const Model& model, std::vector<Intermediate>& intermediates);
+
+  /// A body placed in a frame: J, v, a_bias (and ω, J_ω, α_bias for a rigid body).
+  BodyKinematics body(const std::string& name, const GiNaC::ex& mass, const Vector3& position,
+                      const FramePlacement& placement, bool rigid);
+
+  /// ∂x/∂q_j for every j by the chain rule through the frames' rotations and origins.
+  std::vector<GiNaC::ex> gradient(const GiNaC::ex& x) const;
+
+  /// Whether x contains a quantity of the frames (then it needs gradient() above).
+  bool uses_frames(const GiNaC::ex& x) const;
+
+ private:
+  FrameMotion child(const FrameMotion& parent, const GiNaC::matrix& relative,
+                    const std::vector<ElementaryRotation>& sequence, const Vector3& relative_origin,
+                    const std::string& name);
+  GiNaC::ex named(const std::string& name, const std::string& label, const GiNaC::ex& definition);
+
+  const Model& model_;
+  const Symbols& symbols_;
+  MotionSymbols motion_;
+  std::vector<Intermediate>& intermediates_;
+  FrameMotion inertial_;
+  std::vector<FrameMotion> frames_;
+  // a frame's rotation entry or origin component → its partial derivatives by q_j
+  std::map<GiNaC::ex, std::vector<GiNaC::ex>, GiNaC::ex_is_less> partials_;
+};
+
+}  // namespace eomgen

@@ -1,0 +1,48 @@
+#include "model/recursive_frames.hpp"
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+ex intermediate(std::vector<Intermediate>& intermediates, const std::string& name, const std::string& cpp_name,
+                const ex& definition) {
+  if (GiNaC::is_a<GiNaC::numeric>(definition) || GiNaC::is_a<GiNaC::symbol>(definition)) return definition;
+  Intermediate i{GiNaC::symbol(name), definition, cpp_name};
+  intermediates.push_back(i);
+  return i.symbol;
+}
+
+PlacedFrame place_recursive_frame(Model& model, const std::string& name, int parent, const Rotation& relative,
+                                  const Vector3& origin) {
+  static const char* axes = "xyz";
+  PlacedFrame above = inertial_frame();
+  if (parent >= 0) {
+    const FrameLink& p = model.frame_links[std::size_t(parent)];
+    above.rotation.matrix = p.rotation;
+    above.origin = p.origin;
+  }
+  PlacedFrame placed = place_frame(above, relative, origin);
+  FrameLink link;
+  link.name = name;
+  link.parent = parent;
+  link.sequence = relative.sequence;
+  link.relative_rotation = relative.matrix;
+  link.relative_origin = origin;
+  for (unsigned a = 0; a < 3; ++a) {
+    for (unsigned b = 0; b < 3; ++b)
+      link.rotation(a, b) = intermediate(model.intermediates, fmt::format("{}.R_{}{}", name, axes[a], axes[b]),
+                                         fmt::format("k_{}_R{}{}", name, axes[a], axes[b]),
+                                         placed.rotation.matrix(a, b).expand());
+    link.origin[a] = intermediate(model.intermediates, fmt::format("{}.o_{}", name, axes[a]),
+                                  fmt::format("k_{}_o{}", name, axes[a]), placed.origin[a].expand());
+  }
+  model.frame_links.push_back(link);
+  PlacedFrame symbolic;
+  symbolic.rotation.matrix = link.rotation;
+  symbolic.origin = link.origin;
+  return symbolic;
+}
+
+}  // namespace eomgen

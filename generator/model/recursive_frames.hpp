@@ -1,0 +1,25 @@
+/// @file Frames for recursive kinematics ([model] kinematics = "recursive"): each frame's
+/// rotation to inertial components and its inertial origin are quantities of their own,
+/// R = R_parent·R_rel and o = o_parent + R_parent·o_rel (Hiller §3.9), instead of being
+/// multiplied out in the coordinates. Multiplied out, the entries of a chain of n rotations
+/// have up to 4ⁿ terms; as intermediates each costs a few products of its parent's.
+#pragma once
+
+#include <string>
+
+#include "model/frames.hpp"
+#include "model/model.hpp"
+
+namespace eomgen {
+
+/// `definition` itself when it is a constant or a single symbol, otherwise a new intermediate
+/// of `model` named `name` (printed) and `cpp_name` (in generated code).
+GiNaC::ex intermediate(std::vector<Intermediate>& intermediates, const std::string& name, const std::string& cpp_name,
+                       const GiNaC::ex& definition);
+
+/// Adds the frame `name` in `parent` (an index into model.frame_links, -1 for the inertial
+/// frame) to the model's frame links, and returns it placed in its intermediates.
+PlacedFrame place_recursive_frame(Model& model, const std::string& name, int parent, const Rotation& relative,
+                                  const Vector3& origin);
+
+}  // namespace eomgen
