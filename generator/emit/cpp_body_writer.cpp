@@ -54,13 +54,16 @@ BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
     inputs_.push_back({s.parameters[i], "p_" + s.parameter_names[i], fmt::format("p[{}]", i)});
   for (std::size_t i = 0; i < s.inputs.size(); ++i)
     inputs_.push_back({s.inputs[i], "u_" + s.input_names[i], fmt::format("u[{}]", i)});
-  for (std::size_t i = 0; i < k; ++i) accelerations_.emplace_back(fmt::format("ddq{}", i));
+  for (std::size_t i = 0; i < k; ++i)
+    accelerations_.push_back(i < e.acceleration_symbols.size() ? e.acceleration_symbols[i] : GiNaC::symbol(fmt::format("ddq{}", i)));
   // every symbol's C++ name, looked up once per printed symbol
   names_[s.time] = "t";
   for (const Input& in : inputs_) names_[in.symbol] = in.name;
   for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
-  for (std::size_t i = 0; i < e.intermediates.size(); ++i) intermediate_index_[e.intermediates[i].symbol] = i;
-  for (const Intermediate& i : e.intermediates) {
+  intermediates_ = e.intermediates;
+  intermediates_.insert(intermediates_.end(), e.acceleration_intermediates.begin(), e.acceleration_intermediates.end());
+  for (std::size_t i = 0; i < intermediates_.size(); ++i) intermediate_index_[intermediates_[i].symbol] = i;
+  for (const Intermediate& i : intermediates_) {
     GiNaC::exset used;
     collect_symbols(i.definition, used);
     intermediate_uses_.emplace_back();
@@ -68,14 +71,14 @@ BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
       if (auto found = intermediate_index_.find(u); found != intermediate_index_.end())
         intermediate_uses_.back().push_back(found->second);
   }
-  intermediate_written_.assign(e.intermediates.size(), false);
+  intermediate_written_.assign(intermediates_.size(), false);
 }
 
 // the intermediates that `expressions` need and that are not written yet, in dependency
 // levels: each level's definitions use only model symbols and earlier levels, so that their
 // common subexpressions (batched per level) come before every use
 void BodyWriter::define_intermediates(const std::vector<ex>& expressions, CseBatch& written) {
-  const std::vector<Intermediate>& all = equations_.intermediates;
+  const std::vector<Intermediate>& all = intermediates_;
   if (all.empty()) return;
   std::vector<bool> needed(all.size(), false);
   for (const ex& x : expressions) {

@@ -65,6 +65,7 @@ class BodyWriter {
   std::string statements_;
   // recursive kinematics: an intermediate's index, the intermediates its definition uses, and
   // whether it has been written in this function
+  std::vector<Intermediate> intermediates_;  // the equations' and then those in q''
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> intermediate_index_;
   std::vector<std::vector<std::size_t>> intermediate_uses_;
   std::vector<bool> intermediate_written_;

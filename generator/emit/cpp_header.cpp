@@ -147,18 +147,30 @@ std::string momentum_linearization_function(const Equations& e) {
 // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c from a tangent sweep through the code of M and f
 // (`values`, as accelerations() returns it): the derivatives of expressions in the intermediates of
 // recursive kinematics, which a symbolic gradient would take for constants
-std::vector<std::vector<ex>> swept_rows(BodyWriter& w, const CseBatch& values, const std::vector<ex>& state,
-                                        std::size_t n) {
+std::vector<std::vector<ex>> swept_rows(const Equations& e, BodyWriter& w, const CseBatch& values,
+                                        const std::vector<ex>& state, std::size_t n) {
   TangentSweep sweep(w, state);
   sweep.follow(values);
   auto mass = [&](std::size_t i, std::size_t k) {
     std::size_t a = std::min(i, k), b = std::max(i, k);
     return values.outputs[a * n - a * (a - 1) / 2 + (b - a)];
   };
+  std::vector<std::vector<ex>> rows;
+  if (!e.mass_times_acceleration.empty()) {
+    // ∂(M q'')/∂x with q'' held, through the bodies' accelerations (equations.hpp)
+    CseBatch inertia = w.reduced_batch(e.mass_times_acceleration);
+    sweep.follow(inertia);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<ex> df = sweep.derivatives(values.outputs[n * (n + 1) / 2 + i]);
+      std::vector<ex> dg = sweep.derivatives(inertia.outputs[i]);
+      rows.emplace_back();
+      for (std::size_t j = 0; j < state.size(); ++j) rows.back().push_back(df[j] - dg[j]);
+    }
+    return rows;
+  }
   std::vector<std::vector<ex>> dM(n * n);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = i; k < n; ++k) dM[i * n + k] = dM[k * n + i] = sweep.derivatives(mass(i, k));
-  std::vector<std::vector<ex>> rows;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<ex> df = sweep.derivatives(values.outputs[n * (n + 1) / 2 + i]);
     rows.emplace_back();
@@ -184,7 +196,7 @@ std::string jacobian_state_function(const Equations& e) {
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c  (M depends on q only)
   // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
   std::vector<std::vector<ex>> rows =
-      e.intermediates.empty() ? std::vector<std::vector<ex>>{} : swept_rows(w, values, state, n);
+      e.intermediates.empty() ? std::vector<std::vector<ex>>{} : swept_rows(e, w, values, state, n);
   for (unsigned i = 0; i < n && e.intermediates.empty(); ++i) {
     std::vector<ex> df = gradient(e.forcing[i], state);
     std::vector<GiNaC::exvector> terms(N);

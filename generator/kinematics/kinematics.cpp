@@ -138,13 +138,13 @@ Mechanics compute_mechanics(const Model& model) {
   for (const Particle& p : model.particles) {
     in_frame.push_back(frames && p.placement.frame >= 0);
     BodyKinematics b;
-    if (frames && p.placement.frame >= 0) b = frames->body(p.name, p.mass, p.position, p.placement, false);
+    if (in_frame.back()) b = frames->body(p.name, p.mass, p.position, p.placement, false);
     else {
       b.name = p.name;
       b.mass = p.mass;
       translate(b, p.position, s);
+      add_rheonomic_kinetic(b, s, m);
     }
-    add_rheonomic_kinetic(b, s, m);
     V += gravity_potential(p.mass, p.position, model.gravity);
     m.bodies.push_back(b);
   }

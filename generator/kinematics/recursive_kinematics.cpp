@@ -132,10 +132,12 @@ BodyKinematics RecursiveKinematics::body(const std::string& name, const ex& mass
   b.position = position;
   b.velocity_jacobian = m.partial_velocity;
   b.bias_acceleration = m.acceleration_bias;
+  // v = V q' as intermediates of their own: T = Σ ½ m v·v + ½ ω·I ω is then O(n), not the O(n³) of ½ q'ᵀ M q'
   std::size_t n = symbols_.coordinates.size();
   for (unsigned a = 0; a < 3; ++a) {
-    b.velocity[a] = 0;
-    for (unsigned j = 0; j < n; ++j) b.velocity[a] += m.partial_velocity(a, j) * symbols_.velocities[j];
+    ex v = 0;
+    for (unsigned j = 0; j < n; ++j) v += m.partial_velocity(a, j) * symbols_.velocities[j];
+    b.velocity[a] = named(name + ".cm", fmt::format("v_{}", axis_names[a]), v);
   }
   if (rigid) {
     b.rotates = true;
