@@ -127,9 +127,9 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     return std::nullopt;
   }
   DerivationDeadline deadline(method_where.file);
-  derivation_stage("the kinematics");
-  Mechanics mechanics = compute_mechanics(model);
   try {
+    derivation_stage("the kinematics");
+    Mechanics mechanics = compute_mechanics(model);
     derivation_stage(model.method == "lagrange2"   ? "Lagrange's equations of the second kind"
                      : model.method == "lagrange1" ? "Lagrange's equations of the first kind"
                      : model.method == "appell"    ? "Appell's equations"
@@ -148,6 +148,13 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     diagnostics.error(method_where, "model.method", why.what(),
                       "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
                       "determine every velocity");
+    return std::nullopt;
+  } catch (const std::domain_error& why) {
+    // GiNaC's pole_error and the like: the model's expressions divide by zero or leave a function's
+    // domain somewhere along the derivation (a singular position, a parameter that is 0)
+    diagnostics.error(method_where, "model.method", fmt::format("the derivation divides by zero: {}", why.what()),
+                      "check the model for a quantity that is identically zero where it divides (a position whose "
+                      "derivative vanishes, a parameter set to 0, a degenerate rotation)");
     return std::nullopt;
   }
 }

@@ -238,6 +238,9 @@ class Builder {
     if (frame_name.empty() && uses_frames(local))
       d_.error(where, key, "with recursive kinematics a body is placed in a frame, not through a point of one",
                "give the body frame = \"...\" and its centre in that frame's coordinates");
+    else if (!frame_name.empty() && moves_by_itself(relative.matrix, local))
+      d_.error(where, key, "with recursive kinematics a body in a frame moves with the coordinates alone, not with t",
+               "make the prescribed motion a coordinate, or use kinematics = \"expanded\"");
     p.frame = link_of(frame_name);
     p.local = local;
     p.sequence = relative.sequence;

@@ -124,10 +124,13 @@ Model apply_variant(const Model& model, const Variant& v) {
   Model m = model;
   substitute_everywhere(m, changed);
   // a rotation given as a sequence of angles no longer matches its approximated matrix
-  for (RigidBody& b : m.rigid_bodies)
+  auto approximated = [&](std::vector<ElementaryRotation>& sequence) {
     for (const auto& [i, quadratic] : v.small_angle)
-      for (const ElementaryRotation& r : b.rotation.sequence)
-        if (r.angle.has(s.coordinates[i])) b.rotation.sequence.clear();
+      for (const ElementaryRotation& r : sequence)
+        if (r.angle.has(s.coordinates[i])) return sequence.clear();
+  };
+  for (RigidBody& b : m.rigid_bodies) approximated(b.rotation.sequence), approximated(b.placement.sequence);
+  for (FrameLink& f : m.frame_links) approximated(f.sequence);
   if (!v.tie.empty()) m = tie_coordinates(m, v.tie);
   // the frozen coordinates by name: the ties have removed some
   std::vector<std::size_t> frozen;

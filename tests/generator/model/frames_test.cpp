@@ -336,6 +336,11 @@ TEST(Frames, RecursiveKinematicsMisusesAreLocated) {
   std::string through_point = chain + "\n[[particles]]\nname = \"bob\"\nmass = \"m\"\nposition = \"tip\"\n";
   EXPECT_NE(diagnostics_of(through_point).find("a body is placed in a frame, not through a point of one"), std::string::npos)
       << diagnostics_of(through_point);
+  std::string sliding = chain;
+  const std::string centre = "[\"0\", \"0\", \"-l/2\"]";
+  sliding.replace(sliding.find(centre), centre.size(), "[\"t\", \"0\", \"-l/2\"]");
+  EXPECT_NE(diagnostics_of(sliding).find("a body in a frame moves with the coordinates alone, not with t"), std::string::npos)
+      << diagnostics_of(sliding);
   std::string unknown = chain;
   unknown.replace(unknown.find("\"recursive\""), 11, "\"recursiv\"");
   EXPECT_NE(diagnostics_of(unknown).find("unknown kinematics 'recursiv'"), std::string::npos) << diagnostics_of(unknown);
