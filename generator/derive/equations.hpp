@@ -45,13 +45,13 @@ struct Equations {
   /// Recursive kinematics: quantities of the frames and bodies, each defined in the model's
   /// symbols and earlier ones, that the expressions below may contain (empty otherwise).
   std::vector<Intermediate> intermediates;
-  /// Recursive kinematics: M·q'' formed body by body, Σ m V_jᵀ A + W_jᵀ I Ω with each body's
-  /// A = V q'' and Ω = W q'' (intermediates in the symbols q'', after `intermediates`), for the
-  /// generated Jacobian: differentiated with q'' held, it costs O(n³) code where ∂M/∂x entry by
-  /// entry costs O(n⁴). Not part of the printed equations.
+  /// Recursive kinematics: the inverse dynamics τ(q, q', q'', u, t) = M q'' − f by the Newton–Euler
+  /// recursion, in the symbols `acceleration_symbols` for q'', whose quantities come after
+  /// `intermediates`: the generated Jacobian and linearization differentiate it with q'' held,
+  /// O(n²) code where ∂M/∂x and ∂f/∂x entry by entry are O(n³). Not part of the printed equations.
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
-  std::vector<GiNaC::ex> mass_times_acceleration;
+  std::vector<GiNaC::ex> inverse_dynamics;
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;

@@ -6,11 +6,8 @@
 /// small: M = Σ m JᵀJ + J_ωᵀ I J_ω and the velocity terms Σ m Jᵀa_b + J_ωᵀ(I α_b + ω×Iω).
 /// A kinetic energy given directly in [energy] goes through the general formula
 /// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
-#include <fmt/format.h>
-
 #include "common/deadline.hpp"
 #include "derive/methods.hpp"
-#include "model/recursive_frames.hpp"
 
 namespace eomgen {
 
@@ -91,42 +88,6 @@ ex kinetic_energy(const GiNaC::matrix& M, const Mechanics& mech, const Symbols& 
   return tidy(T, mech.motion);
 }
 
-// M q'' body by body (equations.hpp, mass_times_acceleration), with the bodies' accelerations
-// A = V q'' (inertial) and Ω = W q'' (body frame) as intermediates
-void add_mass_times_acceleration(const Mechanics& mech, Equations& e) {
-  std::size_t n = e.forcing.size();
-  for (std::size_t k = 0; k < n; ++k) e.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
-  e.mass_times_acceleration.assign(n, 0);
-  std::vector<GiNaC::exvector> terms(n);
-  for (const BodyKinematics& b : mech.bodies) {
-    Vector3 A{0, 0, 0}, Omega{0, 0, 0}, I_Omega{0, 0, 0};
-    for (unsigned a = 0; a < 3; ++a) {
-      ex x = 0, w = 0;
-      for (std::size_t k = 0; k < n; ++k) {
-        x += b.velocity_jacobian(a, unsigned(k)) * e.acceleration_symbols[k];
-        if (b.rotates) w += b.angular_velocity_jacobian(a, unsigned(k)) * e.acceleration_symbols[k];
-      }
-      const char* axis[] = {"x", "y", "z"};
-      A[a] = intermediate(e.acceleration_intermediates, b.name + ".cm.A_" + axis[a], "k_" + b.name + "_cm_A" + axis[a], x);
-      Omega[a] = intermediate(e.acceleration_intermediates, b.name + ".cm.dW_" + axis[a], "k_" + b.name + "_cm_dW" + axis[a], w);
-    }
-    for (unsigned a = 0; a < 3; ++a)
-      for (unsigned c = 0; c < 3; ++c) I_Omega[a] += b.inertia(a, c) * Omega[c];
-    for (std::size_t j = 0; j < n; ++j)
-      for (unsigned a = 0; a < 3; ++a) {
-        terms[j].push_back(b.mass * b.velocity_jacobian(a, unsigned(j)) * A[a]);
-        if (b.rotates) terms[j].push_back(b.angular_velocity_jacobian(a, unsigned(j)) * I_Omega[a]);
-      }
-  }
-  // the part of M from an [energy] kinetic: ∂²T/∂q'_j∂q'_k q''_k
-  const Symbols& s = e.symbols;
-  for (std::size_t j = 0; j < n && !mech.extra_kinetic_energy.is_zero(); ++j) {
-    ex p = mech.extra_kinetic_energy.diff(s.velocities[j]);
-    for (std::size_t k = 0; k < n; ++k) terms[j].push_back(p.diff(s.velocities[k]) * e.acceleration_symbols[k]);
-  }
-  for (std::size_t j = 0; j < n; ++j) e.mass_times_acceleration[j] = ex(GiNaC::add(terms[j])).expand();
-}
-
 }  // namespace
 
 Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
@@ -160,7 +121,9 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   derivation_stage("the kinetic energy from M");
   // recursive kinematics: T from the bodies' velocities, O(n) where ½ q'ᵀ M q' is O(n³)
   e.kinetic_energy = mech.intermediates.empty() ? kinetic_energy(M, mech, s) : kinetic_energy_of(mech);
-  if (!mech.intermediates.empty()) add_mass_times_acceleration(mech, e);
+  e.acceleration_symbols = mech.acceleration_symbols;
+  e.acceleration_intermediates = mech.acceleration_intermediates;
+  e.inverse_dynamics = mech.inverse_dynamics;
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});

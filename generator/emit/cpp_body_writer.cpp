@@ -124,6 +124,18 @@ void BodyWriter::define_intermediates(const std::vector<ex>& expressions, CseBat
   }
 }
 
+CseBatch BodyWriter::write_intermediates_of(const std::vector<ex>& expressions) {
+  GiNaC::exset used;
+  for (const ex& x : expressions) collect_symbols(x, used);
+  for (const Intermediate& i : equations_.acceleration_intermediates) collect_symbols(i.definition, used);
+  std::vector<ex> regular;
+  for (const Intermediate& i : equations_.intermediates)
+    if (used.count(i.symbol)) regular.push_back(i.symbol);
+  CseBatch written;
+  define_intermediates(regular, written);
+  return written;
+}
+
 std::string BodyWriter::name_of(const GiNaC::symbol& symbol) const {
   auto found = names_.find(symbol);
   return found != names_.end() ? found->second : symbol.get_name();

@@ -37,6 +37,12 @@ class BodyWriter {
   /// the batch's temporaries, for code that goes on from them (a tangent sweep); `print` writes one.
   CseBatch reduced_batch(const std::vector<GiNaC::ex>& expressions);
   std::string print(const GiNaC::ex& reduced);
+  /// Later batches share no temporaries with earlier ones (named `prefix`0, …): for code whose
+  /// tangent sweep must not run through the earlier batches' temporaries.
+  void fresh_subexpressions(const std::string& prefix) { cse_ = CommonSubexpressions(prefix); }
+  /// The intermediates of recursive kinematics (not those in q'') that `expressions` use,
+  /// written now with what they need, as a batch for a tangent sweep to follow.
+  CseBatch write_intermediates_of(const std::vector<GiNaC::ex>& expressions);
   /// The C++ name a symbol is printed as.
   std::string name_of(const GiNaC::symbol& symbol) const;
   /// Solves M der(q) = p − b now (once); the factors are then in Lv and Dv.

@@ -1,5 +1,7 @@
 /// @file The generated C++ header: DESIGN.md's contract, one self-contained
 /// header per model that needs only the C++17 standard library.
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "common/version.hpp"
@@ -144,41 +146,18 @@ std::string momentum_linearization_function(const Equations& e) {
                   "void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B)", body);
 }
 
-// rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c from a tangent sweep through the code of M and f
-// (`values`, as accelerations() returns it): the derivatives of expressions in the intermediates of
-// recursive kinematics, which a symbolic gradient would take for constants
-std::vector<std::vector<ex>> swept_rows(const Equations& e, BodyWriter& w, const CseBatch& values,
-                                        const std::vector<ex>& state, std::size_t n) {
-  TangentSweep sweep(w, state);
-  sweep.follow(values);
-  auto mass = [&](std::size_t i, std::size_t k) {
-    std::size_t a = std::min(i, k), b = std::max(i, k);
-    return values.outputs[a * n - a * (a - 1) / 2 + (b - a)];
-  };
+// rows[i][j] = −∂τ_i/∂x_j with q'' held, τ = M q'' − f the inverse dynamics of recursive kinematics
+// (equations.hpp), from a tangent sweep that has followed the kinematics' intermediates: the
+// derivatives of expressions in intermediates, which a symbolic gradient would take for constants.
+// τ's subexpressions are its own, so the sweep runs through the kinematics and τ alone, not M and f.
+std::vector<std::vector<ex>> newton_euler_rows(const Equations& e, BodyWriter& w, TangentSweep& sweep, std::size_t n) {
+  w.fresh_subexpressions("ne");
+  CseBatch tau = w.reduced_batch(e.inverse_dynamics);
+  sweep.follow(tau);
   std::vector<std::vector<ex>> rows;
-  if (!e.mass_times_acceleration.empty()) {
-    // ∂(M q'')/∂x with q'' held, through the bodies' accelerations (equations.hpp)
-    CseBatch inertia = w.reduced_batch(e.mass_times_acceleration);
-    sweep.follow(inertia);
-    for (std::size_t i = 0; i < n; ++i) {
-      std::vector<ex> df = sweep.derivatives(values.outputs[n * (n + 1) / 2 + i]);
-      std::vector<ex> dg = sweep.derivatives(inertia.outputs[i]);
-      rows.emplace_back();
-      for (std::size_t j = 0; j < state.size(); ++j) rows.back().push_back(df[j] - dg[j]);
-    }
-    return rows;
-  }
-  std::vector<std::vector<ex>> dM(n * n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t k = i; k < n; ++k) dM[i * n + k] = dM[k * n + i] = sweep.derivatives(mass(i, k));
   for (std::size_t i = 0; i < n; ++i) {
-    std::vector<ex> df = sweep.derivatives(values.outputs[n * (n + 1) / 2 + i]);
     rows.emplace_back();
-    for (std::size_t j = 0; j < state.size(); ++j) {
-      GiNaC::exvector terms{df[j]};
-      for (std::size_t k = 0; k < n; ++k) terms.push_back(-dM[i * n + k][j] * w.accelerations()[k]);
-      rows.back().push_back(GiNaC::add(terms));
-    }
+    for (const ex& d : sweep.derivatives(tau.outputs[i])) rows.back().push_back(-d);
   }
   return rows;
 }
@@ -190,14 +169,19 @@ std::string jacobian_state_function(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t nq = s.num_coordinates(), n = e.num_velocities(), N = nq + n;
   BodyWriter w(e);
-  CseBatch values = accelerations(w, e);
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
+  std::optional<TangentSweep> sweep;
+  if (!e.inverse_dynamics.empty()) {
+    sweep.emplace(w, state);
+    sweep->follow(w.write_intermediates_of(e.inverse_dynamics));
+  }
+  accelerations(w, e);
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c  (M depends on q only)
   // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
   std::vector<std::vector<ex>> rows =
-      e.intermediates.empty() ? std::vector<std::vector<ex>>{} : swept_rows(e, w, values, state, n);
-  for (unsigned i = 0; i < n && e.intermediates.empty(); ++i) {
+      sweep ? newton_euler_rows(e, w, *sweep, n) : std::vector<std::vector<ex>>{};
+  for (unsigned i = 0; i < n && !sweep; ++i) {
     std::vector<ex> df = gradient(e.forcing[i], state);
     std::vector<GiNaC::exvector> terms(N);
     for (std::size_t j = 0; j < N; ++j) terms[j].push_back(df[j]);
@@ -277,20 +261,23 @@ std::string linearization_function(const Equations& e) {
   BodyWriter w(e);
   std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
       coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
-  if (!e.intermediates.empty()) {
-    // through the intermediates of recursive kinematics: a tangent sweep through f's code
+  if (!e.inverse_dynamics.empty()) {
+    // through the intermediates of recursive kinematics: a tangent sweep through τ's code
     std::vector<ex> directions = velocities;
     directions.insert(directions.end(), coordinates.begin(), coordinates.end());
     directions.insert(directions.end(), inputs.begin(), inputs.end());
     TangentSweep sweep(w, directions);
-    CseBatch f = w.reduced_batch(e.forcing);
-    sweep.follow(f);
+    // f = −τ at q'' = 0 (equations.hpp)
+    w.line(fmt::format("const T ddq[{}] = {{}};", n));
+    sweep.follow(w.write_intermediates_of(e.inverse_dynamics));
+    CseBatch tau = w.reduced_batch(e.inverse_dynamics);
+    sweep.follow(tau);
     for (unsigned i = 0; i < n; ++i) {
-      std::vector<ex> d = sweep.derivatives(f.outputs[i]);
-      for (std::size_t j = 0; j < d.size(); ++j) entries.push_back(j < n + nq ? -d[j] : d[j]);
+      std::vector<ex> d = sweep.derivatives(tau.outputs[i]);
+      for (std::size_t j = 0; j < d.size(); ++j) entries.push_back(j < n + nq ? d[j] : -d[j]);
     }
   }
-  for (unsigned i = 0; i < n && e.intermediates.empty(); ++i) {
+  for (unsigned i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
     for (const ex& d : gradient(e.forcing[i], velocities)) entries.push_back(-d);
     for (const ex& d : gradient(e.forcing[i], coordinates)) entries.push_back(-d);
     for (const ex& d : gradient(e.forcing[i], inputs)) entries.push_back(d);

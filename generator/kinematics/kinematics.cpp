@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "kinematics/recursive_kinematics.hpp"
 #include "symbolic/gradient.hpp"
 
@@ -120,6 +122,54 @@ void add_torque(std::vector<ex>& Q, const BodyTorque& m, const BodyKinematics& b
     for (unsigned a = 0; a < 3; ++a) Q[j] += torque[a] * body.angular_velocity_jacobian(a, j);
 }
 
+// τ = M q'' − f with recursive kinematics (mechanics.hpp): the frames' Newton–Euler recursion, the
+// bodies outside the frames projected on their Jacobians, then the applied forces, [energy] and R
+void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics& frames, const std::vector<bool>& in_frame) {
+  const Symbols& s = model.symbols;
+  std::size_t n = s.coordinates.size();
+  for (std::size_t k = 0; k < n; ++k) m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
+  const std::vector<GiNaC::symbol>& ddq = m.acceleration_symbols;
+  std::vector<ex> tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    if (in_frame[i]) continue;
+    const BodyKinematics& b = m.bodies[i];
+    Vector3 F, N{0, 0, 0}, Iw{0, 0, 0};
+    for (unsigned a = 0; a < 3; ++a) {
+      ex acc = b.bias_acceleration[a], alpha = b.rotates ? b.bias_angular_acceleration[a] : ex(0);
+      for (std::size_t k = 0; k < n; ++k) {
+        acc += b.velocity_jacobian(a, unsigned(k)) * ddq[k];
+        if (b.rotates) alpha += b.angular_velocity_jacobian(a, unsigned(k)) * ddq[k];
+      }
+      F[a] = b.mass * (acc - model.gravity[a]);
+      N[a] = alpha;
+    }
+    if (b.rotates) {
+      Vector3 alpha = N;
+      for (unsigned a = 0; a < 3; ++a) {
+        N[a] = 0;
+        for (unsigned c = 0; c < 3; ++c) N[a] += b.inertia(a, c) * alpha[c], Iw[a] += b.inertia(a, c) * b.angular_velocity[c];
+      }
+      const Vector3& w = b.angular_velocity;
+      N = {N[0] + w[1] * Iw[2] - w[2] * Iw[1], N[1] + w[2] * Iw[0] - w[0] * Iw[2], N[2] + w[0] * Iw[1] - w[1] * Iw[0]};
+    }
+    for (std::size_t j = 0; j < n; ++j)
+      for (unsigned a = 0; a < 3; ++a) {
+        tau[j] += b.velocity_jacobian(a, unsigned(j)) * F[a];
+        if (b.rotates) tau[j] += b.angular_velocity_jacobian(a, unsigned(j)) * N[a];
+      }
+  }
+  std::vector<ex> potential = frames.gradient(model.potential);
+  for (std::size_t j = 0; j < n; ++j) {
+    tau[j] += potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j]);
+    // an [energy] kinetic: d/dt ∂T/∂q'_j − ∂T/∂q_j
+    if (model.kinetic.is_zero()) continue;
+    ex p = model.kinetic.diff(s.velocities[j]);
+    tau[j] += p.diff(s.time) - model.kinetic.diff(s.coordinates[j]);
+    for (std::size_t k = 0; k < n; ++k) tau[j] += p.diff(s.coordinates[k]) * s.velocities[k] + p.diff(s.velocities[k]) * ddq[k];
+  }
+  m.inverse_dynamics = tau;
+}
+
 }  // namespace
 
 Mechanics compute_mechanics(const Model& model) {
@@ -182,6 +232,7 @@ Mechanics compute_mechanics(const Model& model) {
     add_torque(m.generalized_force, t, m.bodies[first_rigid + t.body], model.rigid_bodies[t.body]);
   for (ex& q : m.generalized_force) q = tidy(q, m.motion);
   if (frames) m.potential_gradient = frames->gradient(m.potential_energy);
+  if (frames) add_inverse_dynamics(m, model, *frames, in_frame);
   else
     for (const auto& q : s.coordinates) m.potential_gradient.push_back(m.potential_energy.diff(q));
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t

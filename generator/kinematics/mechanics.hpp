@@ -45,6 +45,11 @@ struct Mechanics {
   /// Recursive kinematics: the frames' and bodies' quantities, in order (the model's first);
   /// every other expression here may contain their symbols, which `motion` then counts as moving.
   std::vector<Intermediate> intermediates;
+  /// Recursive kinematics: the inverse dynamics τ(q, q', q'', u, t) = M q'' − f of the whole model
+  /// in the symbols `acceleration_symbols` for q'', with its quantities (recursive_kinematics.hpp).
+  std::vector<GiNaC::symbol> acceleration_symbols;
+  std::vector<Intermediate> acceleration_intermediates;
+  std::vector<GiNaC::ex> inverse_dynamics;
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "kinematics/vector3.hpp"
 #include "model/recursive_frames.hpp"
 #include "symbolic/gradient.hpp"
 
@@ -12,23 +13,6 @@ using GiNaC::ex;
 namespace {
 
 const char* axis_names = "xyz";
-
-Vector3 cross(const Vector3& a, const Vector3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-Vector3 column(const GiNaC::matrix& m, unsigned j) { return {m(0, j), m(1, j), m(2, j)}; }
-
-// R·x, and Rᵀ·x
-Vector3 times(const GiNaC::matrix& R, const Vector3& x, bool transposed = false) {
-  Vector3 y{0, 0, 0};
-  for (unsigned a = 0; a < 3; ++a)
-    for (unsigned b = 0; b < 3; ++b) y[a] += (transposed ? R(b, a) : R(a, b)) * x[b];
-  return y;
-}
-
-Vector3 operator+(const Vector3& a, const Vector3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vector3 scaled(const ex& s, const Vector3& a) { return {s * a[0], s * a[1], s * a[2]}; }
 
 bool is_identity(const GiNaC::matrix& R) { return ex(R).is_equal(GiNaC::unit_matrix(3)); }
 
@@ -87,9 +71,7 @@ FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix
   FrameMotion c;
   c.partial_angular_velocity = GiNaC::matrix(3, n);
   c.partial_velocity = GiNaC::matrix(3, n);
-  Vector3 w_rel{0, 0, 0};
-  if (!is_identity(relative))
-    w_rel = sequence.empty() ? angular_velocity_of_matrix(relative, s, motion_) : angular_velocity_of_sequence(sequence, s);
+  Vector3 w_rel = relative_angular_velocity(relative, sequence);
   Vector3 alpha_rel{time_derivative(w_rel[0], s), time_derivative(w_rel[1], s), time_derivative(w_rel[2], s)};
   Vector3 o_rate{time_derivative(o[0], s), time_derivative(o[1], s), time_derivative(o[2], s)};
   Vector3 o_bias{time_derivative(o_rate[0], s), time_derivative(o_rate[1], s), time_derivative(o_rate[2], s)};
@@ -119,6 +101,13 @@ FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix
     c.acceleration_bias[a] = named(name, fmt::format("acc_{}", axis_names[a]), p.acceleration_bias[a] + acc[a]);
   }
   return c;
+}
+
+Vector3 RecursiveKinematics::relative_angular_velocity(const GiNaC::matrix& relative,
+                                                       const std::vector<ElementaryRotation>& sequence) const {
+  if (is_identity(relative)) return {0, 0, 0};
+  return sequence.empty() ? angular_velocity_of_matrix(relative, symbols_, motion_)
+                          : angular_velocity_of_sequence(sequence, symbols_);
 }
 
 BodyKinematics RecursiveKinematics::body(const std::string& name, const ex& mass, const Vector3& position,

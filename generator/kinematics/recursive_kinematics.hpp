@@ -46,11 +46,28 @@ class RecursiveKinematics {
   /// Whether x contains a quantity of the frames (then it needs gradient() above).
   bool uses_frames(const GiNaC::ex& x) const;
 
+  /// The inertia and gravity part of the inverse dynamics, τ_j = Σ over the bodies of
+  /// V_j·m(a − g) + W_j·(I α + ω × I ω) at the accelerations `q''` (symbols), by the
+  /// Newton–Euler recursion: accelerations forward, each subtree's force and moment (about the
+  /// frame's origin) backward, projected on each frame's own partial twist (inverse_dynamics.cpp).
+  /// Its quantities are appended to `out`. O(n) code, so its derivatives are O(n²).
+  std::vector<GiNaC::ex> inverse_dynamics(const std::vector<GiNaC::symbol>& accelerations, const Vector3& gravity,
+                                          std::vector<Intermediate>& out);
+
  private:
   FrameMotion child(const FrameMotion& parent, const GiNaC::matrix& relative,
                     const std::vector<ElementaryRotation>& sequence, const Vector3& relative_origin,
                     const std::string& name);
   GiNaC::ex named(const std::string& name, const std::string& label, const GiNaC::ex& definition);
+
+  struct Acceleration {
+    Vector3 angular{0, 0, 0};  // α, body components
+    Vector3 linear{0, 0, 0};   // a of the origin, inertial
+  };
+  Acceleration child_acceleration(const FrameMotion& parent, const Acceleration& p, const GiNaC::matrix& relative,
+                                  const std::vector<ElementaryRotation>& sequence, const Vector3& relative_origin,
+                                  const std::vector<GiNaC::symbol>& accelerations) const;
+  Vector3 relative_angular_velocity(const GiNaC::matrix& relative, const std::vector<ElementaryRotation>& sequence) const;
 
   const Model& model_;
   const Symbols& symbols_;

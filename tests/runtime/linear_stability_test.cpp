@@ -151,7 +151,7 @@ TEST(LinearStability, GovernorSteadyMotionAndVyshnegradskyBoundary) {
   }
 }
 
-// P = −∂f/∂q', Q = −∂f/∂q against central differences of the generated forcing
+// P = −∂f/∂q', Q = −∂f/∂q, B = ∂f/∂u against central differences of the generated forcing
 TEST(Linearization, MatchesCentralDifferencesForEveryModel) {
   std::mt19937 random(99);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -178,6 +178,20 @@ TEST(Linearization, MatchesCentralDifferencesForEveryModel) {
         for (std::size_t k = 0; k < n; ++k) row = std::max(row, std::abs(P[i * n + k]));
         EXPECT_NEAR(analytic, derivative, 1e-6 * std::max({1.0, std::abs(derivative), 1e-3 * row}))
             << g.name << " (" << i << ", " << j << ")";
+      }
+    }
+    // B = ∂f/∂u
+    for (std::size_t j = 0; j < m.num_inputs; ++j) {
+      std::vector<double> up = u, um = u;
+      double h = 1e-6;
+      up[j] += h, um[j] -= h;
+      m.forcing(0.3, x.data(), up.data(), p.data(), plus.data());
+      m.forcing(0.3, x.data(), um.data(), p.data(), minus.data());
+      for (std::size_t i = 0; i < n; ++i) {
+        double derivative = (plus[i] - minus[i]) / (2 * h), row = 0;
+        for (std::size_t k = 0; k < nq; ++k) row = std::max(row, std::abs(Q[i * nq + k]));
+        EXPECT_NEAR(B[i * m.num_inputs + j], derivative, 1e-6 * std::max({1.0, std::abs(derivative), 1e-3 * row}))
+            << g.name << " B(" << i << ", " << j << ")";
       }
     }
   }
