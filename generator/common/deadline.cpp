@@ -47,8 +47,9 @@ double resident_gigabytes() {
 void overgrown(const std::string& model, double limit, double resident) {
   std::string message = fmt::format(
       "eomgen: error: {}: the derivation grew past its memory limit of {:.3g} GB ({:.3g} GB resident) while forming {}: "
-      "its expressions grow too large\n  hint: simplify the model (fewer nested functions; absolute angles for long "
-      "chains), or raise the limit with --max-memory GB (0: none); nothing was written\n",
+      "its expressions grow too large\n  hint: simplify the model (fewer nested functions; frames with kinematics = "
+      "\"recursive\" or absolute angles for long chains), or raise the limit with --max-memory GB (0: none); nothing "
+      "was written\n",
       model, limit, resident, stage.load());
   std::fputs(message.c_str(), stderr);
   std::fflush(stderr);
@@ -58,8 +59,8 @@ void overgrown(const std::string& model, double limit, double resident) {
 void expire(const std::string& model, double seconds) {
   std::string message = fmt::format(
       "eomgen: error: {}: the derivation ran past its limit of {:g} s while forming {}: its expressions grow too "
-      "large\n  hint: simplify the model (fewer nested functions; absolute angles for long chains), or raise the "
-      "limit with --max-seconds (0: none); nothing was written\n",
+      "large\n  hint: simplify the model (fewer nested functions; frames with kinematics = \"recursive\" or absolute "
+      "angles for long chains), or raise the limit with --max-seconds (0: none); nothing was written\n",
       model, seconds, stage.load());
   std::fputs(message.c_str(), stderr);
   std::fflush(stderr);

@@ -22,12 +22,13 @@ ex dot3(const X& x, const Y& y) {
 }
 
 // adds the body's raw (not yet simplified) terms; every entry is simplified once, at the end
-void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f) {
+// (`mass`: also its part of M, which recursive kinematics may have formed otherwise)
+void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f, bool mass) {
   std::size_t n = f.size();
   const GiNaC::matrix& J = b.velocity_jacobian;
   for (unsigned j = 0; j < n; ++j) {
     auto Jj = [&](int a) { return J(a, j); };
-    for (unsigned k = j; k < n; ++k) {
+    for (unsigned k = j; k < n && mass; ++k) {
       auto Jk = [&](int a) { return J(a, k); };
       ex m = b.mass * dot3(Jj, Jk);
       if (b.rotates) {
@@ -96,7 +97,8 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   GiNaC::matrix M(n, n);
   std::vector<ex> f(n, 0);
   derivation_stage("the bodies' terms of M and f");
-  for (const BodyKinematics& b : mech.bodies) add_body(b, M, f);
+  if (mech.composite_mass_matrix) M = *mech.composite_mass_matrix;
+  for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, !mech.composite_mass_matrix);
   add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
   derivation_stage("the simplified M and f");
   for (unsigned j = 0; j < n; ++j) {

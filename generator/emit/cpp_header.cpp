@@ -429,6 +429,10 @@ std::string emit_cpp_header(const Equations& e) {
           ? "Appell's equations M(q,t) s' = f(q, s, u, t) with q' = W(q,t) s + w(q,t); state x = [q; s]."
       : e.has_multipliers
           ? "Lagrange I: M(q,t) q'' = f(q, q', u, t) + C(q,t)^T lambda with C q'' + gamma = 0; state x = [q; q']."
+      : !e.inverse_dynamics.empty()
+          ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Recursive kinematics: each "
+            "function computes the frames' and bodies' quantities it needs (k_...) first; jacobian_state and\n"
+            "// linearization differentiate the Newton-Euler inverse dynamics tau = M q'' - f (forward mode)."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k);
   out += fmt::format(

@@ -233,6 +233,7 @@ Mechanics compute_mechanics(const Model& model) {
   for (ex& q : m.generalized_force) q = tidy(q, m.motion);
   if (frames) m.potential_gradient = frames->gradient(m.potential_energy);
   if (frames) add_inverse_dynamics(m, model, *frames, in_frame);
+  if (frames) m.composite_mass_matrix = frames->composite_mass_matrix(m.intermediates);
   else
     for (const auto& q : s.coordinates) m.potential_gradient.push_back(m.potential_energy.diff(q));
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t

@@ -2,6 +2,7 @@
 /// Jacobians and bias accelerations, the energies and the generalized forces.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct Mechanics {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
+  /// Recursive kinematics: the bodies' M by the composite-body recursion, when it applies.
+  std::optional<GiNaC::matrix> composite_mass_matrix;
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -10,8 +10,6 @@
 /// frame C's placement contains moves the subtree by R_P ∂o_rel/∂q_j and turns it about o_C by
 /// R_C ∂ω_rel/∂q̇_j, so τ_j = Σ over such frames of (R_P ∂o_rel/∂q_j)·F_C + (R_C ∂ω_rel/∂q̇_j)·N_C
 /// (Hiller §3.9, the principle of virtual power applied link by link).
-#include <fmt/format.h>
-
 #include "kinematics/recursive_kinematics.hpp"
 #include "kinematics/vector3.hpp"
 #include "model/recursive_frames.hpp"
@@ -20,26 +18,6 @@ namespace eomgen {
 
 using GiNaC::ex;
 
-namespace {
-
-const char* axis_names = "xyz";
-
-// the model's name of a quantity, and its C++ name
-struct Namer {
-  std::vector<Intermediate>& out;
-  Vector3 operator()(const std::string& who, const std::string& label, const Vector3& x) const {
-    std::string cpp = who;
-    for (char& c : cpp)
-      if (c == '.') c = '_';
-    Vector3 v;
-    for (unsigned a = 0; a < 3; ++a)
-      v[a] = intermediate(out, fmt::format("{}.{}_{}", who, label, axis_names[a]),
-                          fmt::format("k_{}_{}{}", cpp, label, axis_names[a]), x[a].expand());
-    return v;
-  }
-};
-
-}  // namespace
 
 RecursiveKinematics::Acceleration RecursiveKinematics::child_acceleration(
     const FrameMotion& p, const Acceleration& pa, const GiNaC::matrix& relative,
@@ -69,7 +47,9 @@ std::vector<ex> RecursiveKinematics::inverse_dynamics(const std::vector<GiNaC::s
                                                       std::vector<Intermediate>& out) {
   const Symbols& s = symbols_;
   std::size_t n = s.coordinates.size(), frames = frames_.size();
-  Namer named{out};
+  auto named = [&](const std::string& who, const std::string& label, const Vector3& x) {
+    return named_vector(out, who, label, x);
+  };
   std::vector<Acceleration> acceleration(frames);
   const Acceleration at_rest;
   for (std::size_t i = 0; i < frames; ++i) {

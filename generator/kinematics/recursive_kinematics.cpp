@@ -103,6 +103,18 @@ FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix
   return c;
 }
 
+Vector3 RecursiveKinematics::named_vector(std::vector<Intermediate>& out, const std::string& who,
+                                          const std::string& label, const Vector3& x) {
+  std::string cpp = who;
+  for (char& c : cpp)
+    if (c == '.') c = '_';
+  Vector3 v;
+  for (unsigned a = 0; a < 3; ++a)
+    v[a] = intermediate(out, fmt::format("{}.{}_{}", who, label, axis_names[a]),
+                        fmt::format("k_{}_{}{}", cpp, label, axis_names[a]), x[a].expand());
+  return v;
+}
+
 Vector3 RecursiveKinematics::relative_angular_velocity(const GiNaC::matrix& relative,
                                                        const std::vector<ElementaryRotation>& sequence) const {
   if (is_identity(relative)) return {0, 0, 0};

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "kinematics/mechanics.hpp"
@@ -53,6 +54,17 @@ class RecursiveKinematics {
   /// Its quantities are appended to `out`. O(n) code, so its derivatives are O(n²).
   std::vector<GiNaC::ex> inverse_dynamics(const std::vector<GiNaC::symbol>& accelerations, const Vector3& gravity,
                                           std::vector<Intermediate>& out);
+
+  /// M by the composite-body recursion (recursive_composite_inertia.cpp): each frame's subtree
+  /// mass, first moment and inertia about its origin, backward, and M_jk = s_j·p_k + s_j^ω·L_k,
+  /// the momentum and angular momentum of the subtree of q_j's frame moved by q̇_k. O(n²) code
+  /// instead of the O(n³) of Σ m V_j·V_k over the bodies. Nothing when a coordinate turns or
+  /// moves more than one frame, or a body moves in its frame or is outside the frames.
+  std::optional<GiNaC::matrix> composite_mass_matrix(std::vector<Intermediate>& out) const;
+
+  /// Three intermediates WHO.LABEL_x, _y, _z (constants and lone symbols stay as they are).
+  static Vector3 named_vector(std::vector<Intermediate>& out, const std::string& who, const std::string& label,
+                              const Vector3& x);
 
  private:
   FrameMotion child(const FrameMotion& parent, const GiNaC::matrix& relative,
