@@ -8,6 +8,7 @@
 /// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
 #include "common/deadline.hpp"
 #include "derive/methods.hpp"
+#include "kinematics/vector3.hpp"
 
 namespace eomgen {
 
@@ -43,15 +44,7 @@ void add_body(const BodyKinematics& b, GiNaC::matrix& M, std::vector<ex>& f, boo
     ex inertia_force = b.mass * dot3(Jj, bias);
     if (b.rotates) {
       // Euler: I α + ω × I ω, with α = J_ω q̈ + α_b
-      const Vector3& w = b.angular_velocity;
-      Vector3 Iw{0, 0, 0}, Ia{0, 0, 0};
-      for (unsigned a = 0; a < 3; ++a)
-        for (unsigned c = 0; c < 3; ++c) {
-          Iw[a] += b.inertia(a, c) * w[c];
-          Ia[a] += b.inertia(a, c) * b.bias_angular_acceleration[c];
-        }
-      Vector3 moment{Ia[0] + w[1] * Iw[2] - w[2] * Iw[1], Ia[1] + w[2] * Iw[0] - w[0] * Iw[2],
-                     Ia[2] + w[0] * Iw[1] - w[1] * Iw[0]};
+      Vector3 moment = euler_moment(b.inertia, b.angular_velocity, b.bias_angular_acceleration);
       for (unsigned a = 0; a < 3; ++a) inertia_force += b.angular_velocity_jacobian(a, j) * moment[a];
     }
     f[j] -= inertia_force;

@@ -1,10 +1,9 @@
 #include "kinematics/mechanics.hpp"
 
-#include <stdexcept>
-
 #include <fmt/format.h>
 
 #include "kinematics/recursive_kinematics.hpp"
+#include "kinematics/vector3.hpp"
 #include "symbolic/gradient.hpp"
 
 namespace eomgen {
@@ -130,34 +129,23 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
   for (std::size_t k = 0; k < n; ++k) m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   const std::vector<GiNaC::symbol>& ddq = m.acceleration_symbols;
   std::vector<ex> tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);
+  std::vector<GiNaC::exvector> terms(n);
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     if (in_frame[i]) continue;
     const BodyKinematics& b = m.bodies[i];
-    Vector3 F, N{0, 0, 0}, Iw{0, 0, 0};
-    for (unsigned a = 0; a < 3; ++a) {
-      ex acc = b.bias_acceleration[a], alpha = b.rotates ? b.bias_angular_acceleration[a] : ex(0);
-      for (std::size_t k = 0; k < n; ++k) {
-        acc += b.velocity_jacobian(a, unsigned(k)) * ddq[k];
-        if (b.rotates) alpha += b.angular_velocity_jacobian(a, unsigned(k)) * ddq[k];
-      }
-      F[a] = b.mass * (acc - model.gravity[a]);
-      N[a] = alpha;
+    Vector3 acc = b.bias_acceleration, alpha = b.rotates ? b.bias_angular_acceleration : Vector3{0, 0, 0};
+    for (std::size_t k = 0; k < n; ++k) {
+      acc = acc + scaled(ddq[k], column(b.velocity_jacobian, unsigned(k)));
+      if (b.rotates) alpha = alpha + scaled(ddq[k], column(b.angular_velocity_jacobian, unsigned(k)));
     }
-    if (b.rotates) {
-      Vector3 alpha = N;
-      for (unsigned a = 0; a < 3; ++a) {
-        N[a] = 0;
-        for (unsigned c = 0; c < 3; ++c) N[a] += b.inertia(a, c) * alpha[c], Iw[a] += b.inertia(a, c) * b.angular_velocity[c];
-      }
-      const Vector3& w = b.angular_velocity;
-      N = {N[0] + w[1] * Iw[2] - w[2] * Iw[1], N[1] + w[2] * Iw[0] - w[0] * Iw[2], N[2] + w[0] * Iw[1] - w[1] * Iw[0]};
+    Vector3 F = scaled(b.mass, acc - model.gravity);
+    Vector3 N = b.rotates ? euler_moment(b.inertia, b.angular_velocity, alpha) : Vector3{0, 0, 0};
+    for (std::size_t j = 0; j < n; ++j) {
+      terms[j].push_back(dot(column(b.velocity_jacobian, unsigned(j)), F));
+      if (b.rotates) terms[j].push_back(dot(column(b.angular_velocity_jacobian, unsigned(j)), N));
     }
-    for (std::size_t j = 0; j < n; ++j)
-      for (unsigned a = 0; a < 3; ++a) {
-        tau[j] += b.velocity_jacobian(a, unsigned(j)) * F[a];
-        if (b.rotates) tau[j] += b.angular_velocity_jacobian(a, unsigned(j)) * N[a];
-      }
   }
+  for (std::size_t j = 0; j < n; ++j) tau[j] += GiNaC::add(terms[j]);
   std::vector<ex> potential = frames.gradient(model.potential);
   for (std::size_t j = 0; j < n; ++j) {
     tau[j] += potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j]);

@@ -83,10 +83,7 @@ std::vector<ex> RecursiveKinematics::inverse_dynamics(const std::vector<GiNaC::s
     Vector3 w_rel = relative_angular_velocity(relative, at.sequence);
     if (inertia) {
       Vector3 w = times(relative, frame.angular_velocity, true) + w_rel;
-      Vector3 alpha = a.angular, Iw{0, 0, 0}, Ia{0, 0, 0};
-      for (unsigned r = 0; r < 3; ++r)
-        for (unsigned c = 0; c < 3; ++c) Iw[r] += (*inertia)(r, c) * w[c], Ia[r] += (*inertia)(r, c) * alpha[c];
-      N = named(name + ".cm", "N", times(frame.rotation, times(relative, Ia + cross(w, Iw))));
+      N = named(name + ".cm", "N", times(frame.rotation, times(relative, euler_moment(*inertia, w, a.angular))));
     }
     force[f] = force[f] + F;
     moment[f] = moment[f] + cross(times(frame.rotation, at.local), F) + N;

@@ -16,13 +16,18 @@ const char* axis_names = "xyz";
 
 bool is_identity(const GiNaC::matrix& R) { return ex(R).is_equal(GiNaC::unit_matrix(3)); }
 
+// the intermediate WHO.LABEL, in C++ k_WHO_LABEL
+ex named_in(std::vector<Intermediate>& out, const std::string& who, const std::string& label, const ex& definition) {
+  std::string cpp = "k_" + who + "_" + label;
+  for (char& c : cpp)
+    if (c == '.') c = '_';
+  return intermediate(out, who + "." + label, cpp, definition.expand());
+}
+
 }  // namespace
 
 ex RecursiveKinematics::named(const std::string& name, const std::string& label, const ex& definition) {
-  std::string cpp = name + "_" + label;
-  for (char& c : cpp)
-    if (c == '.') c = '_';
-  return intermediate(intermediates_, name + "." + label, "k_" + cpp, definition.expand());
+  return named_in(intermediates_, name, label, definition);
 }
 
 RecursiveKinematics::RecursiveKinematics(const Model& model, std::vector<Intermediate>& intermediates)
@@ -72,9 +77,6 @@ FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix
   c.partial_angular_velocity = GiNaC::matrix(3, n);
   c.partial_velocity = GiNaC::matrix(3, n);
   Vector3 w_rel = relative_angular_velocity(relative, sequence);
-  Vector3 alpha_rel{time_derivative(w_rel[0], s), time_derivative(w_rel[1], s), time_derivative(w_rel[2], s)};
-  Vector3 o_rate{time_derivative(o[0], s), time_derivative(o[1], s), time_derivative(o[2], s)};
-  Vector3 o_bias{time_derivative(o_rate[0], s), time_derivative(o_rate[1], s), time_derivative(o_rate[2], s)};
   std::vector<ex> coordinates(s.coordinates.begin(), s.coordinates.end());
   std::vector<std::vector<ex>> do_dq;
   for (unsigned a = 0; a < 3; ++a) do_dq.push_back(eomgen::gradient(o[a], coordinates));
@@ -91,27 +93,20 @@ FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix
     }
   }
   Vector3 carried = times(relative, p.angular_velocity, true);
-  Vector3 alpha = times(relative, p.angular_bias, true) + scaled(-1, cross(w_rel, carried)) + alpha_rel;
-  Vector3 inner = cross(p.angular_bias, o) + cross(p.angular_velocity, cross(p.angular_velocity, o)) +
-                  scaled(2, cross(p.angular_velocity, o_rate)) + o_bias;
-  Vector3 acc = times(p.rotation, inner);
+  // the bias accelerations: those of q'' = 0
+  Acceleration bias = child_acceleration(p, {p.angular_bias, p.acceleration_bias}, relative, sequence, o, {});
   for (unsigned a = 0; a < 3; ++a) {
     c.angular_velocity[a] = named(name, fmt::format("omega_{}", axis_names[a]), carried[a] + w_rel[a]);
-    c.angular_bias[a] = named(name, fmt::format("alpha_{}", axis_names[a]), alpha[a]);
-    c.acceleration_bias[a] = named(name, fmt::format("acc_{}", axis_names[a]), p.acceleration_bias[a] + acc[a]);
+    c.angular_bias[a] = named(name, fmt::format("alpha_{}", axis_names[a]), bias.angular[a]);
+    c.acceleration_bias[a] = named(name, fmt::format("acc_{}", axis_names[a]), bias.linear[a]);
   }
   return c;
 }
 
 Vector3 RecursiveKinematics::named_vector(std::vector<Intermediate>& out, const std::string& who,
                                           const std::string& label, const Vector3& x) {
-  std::string cpp = who;
-  for (char& c : cpp)
-    if (c == '.') c = '_';
   Vector3 v;
-  for (unsigned a = 0; a < 3; ++a)
-    v[a] = intermediate(out, fmt::format("{}.{}_{}", who, label, axis_names[a]),
-                        fmt::format("k_{}_{}{}", cpp, label, axis_names[a]), x[a].expand());
+  for (unsigned a = 0; a < 3; ++a) v[a] = named_in(out, who, fmt::format("{}_{}", label, axis_names[a]), x[a]);
   return v;
 }
 
@@ -161,14 +156,6 @@ std::vector<ex> RecursiveKinematics::gradient(const ex& x) const {
     for (std::size_t j = 0; j < d.size(); ++j) d[j] += partial * found->second[j];
   }
   return d;
-}
-
-bool RecursiveKinematics::uses_frames(const ex& x) const {
-  GiNaC::exset used;
-  collect_symbols(x, used);
-  for (const ex& s : used)
-    if (partials_.count(s)) return true;
-  return false;
 }
 
 }  // namespace eomgen

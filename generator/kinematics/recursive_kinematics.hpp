@@ -44,9 +44,6 @@ class RecursiveKinematics {
   /// ∂x/∂q_j for every j by the chain rule through the frames' rotations and origins.
   std::vector<GiNaC::ex> gradient(const GiNaC::ex& x) const;
 
-  /// Whether x contains a quantity of the frames (then it needs gradient() above).
-  bool uses_frames(const GiNaC::ex& x) const;
-
   /// The inertia and gravity part of the inverse dynamics, τ_j = Σ over the bodies of
   /// V_j·m(a − g) + W_j·(I α + ω × I ω) at the accelerations `q''` (symbols), by the
   /// Newton–Euler recursion: accelerations forward, each subtree's force and moment (about the

@@ -25,4 +25,9 @@ inline Vector3 operator+(const Vector3& a, const Vector3& b) { return {a[0] + b[
 inline Vector3 operator-(const Vector3& a, const Vector3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline Vector3 scaled(const GiNaC::ex& s, const Vector3& a) { return {s * a[0], s * a[1], s * a[2]}; }
 
+/// Euler's moment I α + ω × I ω, in body components.
+inline Vector3 euler_moment(const GiNaC::matrix& I, const Vector3& w, const Vector3& alpha) {
+  return times(I, alpha) + cross(w, times(I, w));
+}
+
 }  // namespace eomgen

@@ -16,15 +16,6 @@ const std::vector<std::string>& known_methods() {
   return methods;
 }
 
-GiNaC::matrix elementary_rotation(int axis, const ex& a) {
-  ex c = GiNaC::cos(a), s = GiNaC::sin(a);
-  switch (axis) {
-    case 0: return GiNaC::matrix(3, 3, GiNaC::lst{1, 0, 0, 0, c, -s, 0, s, c});
-    case 1: return GiNaC::matrix(3, 3, GiNaC::lst{c, 0, s, 0, 1, 0, -s, 0, c});
-    default: return GiNaC::matrix(3, 3, GiNaC::lst{c, -s, 0, s, c, 0, 0, 0, 1});
-  }
-}
-
 namespace {
 
 /// The value of a constant expression with parameters at their defaults.
@@ -208,19 +199,13 @@ class Builder {
         frames_.emplace(f.name, place_frame(*parent, relative, origin));
         continue;
       }
-      if (moves_by_itself(relative.matrix, origin))
+      if (moves_with_time(relative.matrix, origin, m_.symbols.time))
         d_.error(f.where, f.key, fmt::format("frame '{}' moves with time t itself", f.name),
                  "recursive kinematics takes frames placed by the coordinates alone: make the prescribed motion a "
                  "coordinate, or use kinematics = \"expanded\"");
       frame_index_[f.name] = int(m_.frame_links.size());
       frames_.emplace(f.name, place_recursive_frame(m_, f.name, link_of(f.parent), relative, origin));
     }
-  }
-
-  bool moves_by_itself(const GiNaC::matrix& R, const Vector3& origin) const {
-    for (const ex& x : origin)
-      if (x.has(m_.symbols.time)) return true;
-    return ex(R).has(m_.symbols.time);
   }
 
   // the frame link of a frame name for recursive kinematics; -1: the inertial frame (or none)
@@ -235,10 +220,10 @@ class Builder {
                            const SourceLocation& where, const std::string& key) {
     FramePlacement p;
     if (!m_.recursive_kinematics) return p;
-    if (frame_name.empty() && uses_frames(local))
+    if (frame_name.empty() && uses_frames(local, m_.intermediates))
       d_.error(where, key, "with recursive kinematics a body is placed in a frame, not through a point of one",
                "give the body frame = \"...\" and its centre in that frame's coordinates");
-    else if (!frame_name.empty() && moves_by_itself(relative.matrix, local))
+    else if (!frame_name.empty() && moves_with_time(relative.matrix, local, m_.symbols.time))
       d_.error(where, key, "with recursive kinematics a body in a frame moves with the coordinates alone, not with t",
                "make the prescribed motion a coordinate, or use kinematics = \"expanded\"");
     p.frame = link_of(frame_name);
@@ -246,16 +231,6 @@ class Builder {
     p.sequence = relative.sequence;
     p.relative = relative.matrix;
     return p;
-  }
-
-  bool uses_frames(const Vector3& v) const {
-    GiNaC::exset used;
-    for (const ex& x : v)
-      for (GiNaC::const_preorder_iterator i = x.preorder_begin(); i != x.preorder_end(); ++i)
-        if (GiNaC::is_a<GiNaC::symbol>(*i)) used.insert(*i);
-    for (const Intermediate& i : m_.intermediates)
-      if (used.count(i.symbol)) return true;
-    return false;
   }
 
   // the frame named `name` (the inertial frame when empty), or nothing after an error

@@ -4,6 +4,15 @@ namespace eomgen {
 
 using GiNaC::ex;
 
+GiNaC::matrix elementary_rotation(int axis, const ex& a) {
+  ex c = GiNaC::cos(a), s = GiNaC::sin(a);
+  switch (axis) {
+    case 0: return GiNaC::matrix(3, 3, GiNaC::lst{1, 0, 0, 0, c, -s, 0, s, c});
+    case 1: return GiNaC::matrix(3, 3, GiNaC::lst{c, 0, s, 0, 1, 0, -s, 0, c});
+    default: return GiNaC::matrix(3, 3, GiNaC::lst{c, -s, 0, s, c, 0, 0, 0, 1});
+  }
+}
+
 PlacedFrame inertial_frame() {
   PlacedFrame f;
   f.rotation.matrix = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "symbolic/gradient.hpp"
+
 namespace eomgen {
 
 using GiNaC::ex;
@@ -43,6 +45,18 @@ PlacedFrame place_recursive_frame(Model& model, const std::string& name, int par
   symbolic.rotation.matrix = link.rotation;
   symbolic.origin = link.origin;
   return symbolic;
+}
+
+bool moves_with_time(const GiNaC::matrix& rotation, const Vector3& origin, const ex& time) {
+  return ex(rotation).has(time) || origin[0].has(time) || origin[1].has(time) || origin[2].has(time);
+}
+
+bool uses_frames(const Vector3& v, const std::vector<Intermediate>& intermediates) {
+  GiNaC::exset used;
+  for (const ex& x : v) collect_symbols(x, used);
+  for (const Intermediate& i : intermediates)
+    if (used.count(i.symbol)) return true;
+  return false;
 }
 
 }  // namespace eomgen

@@ -22,4 +22,11 @@ GiNaC::ex intermediate(std::vector<Intermediate>& intermediates, const std::stri
 PlacedFrame place_recursive_frame(Model& model, const std::string& name, int parent, const Rotation& relative,
                                   const Vector3& origin);
 
+/// Whether a placement (rotation and origin) depends on time itself: recursive kinematics
+/// takes placements that the coordinates alone move.
+bool moves_with_time(const GiNaC::matrix& rotation, const Vector3& origin, const GiNaC::ex& time);
+
+/// Whether a vector contains one of the intermediates (a frame's rotation or origin).
+bool uses_frames(const Vector3& v, const std::vector<Intermediate>& intermediates);
+
 }  // namespace eomgen
