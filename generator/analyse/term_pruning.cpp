@@ -75,6 +75,7 @@ Pruning prune_terms(const Equations& e, const std::vector<double>& parameters, c
                     const std::vector<double>& times, const std::vector<std::vector<double>>& states, double share) {
   Pruning out;
   out.equations = e;
+  out.equations.solve_by_mass_matrix();
   if (e.method != "lagrange2" || e.has_multipliers || e.uses_pseudo_velocities()) {
     out.refusal = "terms are pruned in unconstrained Lagrange II models";
     return out;

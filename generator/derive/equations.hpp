@@ -52,6 +52,13 @@ struct Equations {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
+  /// Forward dynamics by the articulated-body recursion (derive/articulated_bodies.hpp), when the
+  /// model is a tree of particles and [model] forward_dynamics chooses it: q'' in the recursion's
+  /// quantities, for the generated rhs. Empty when the rhs solves M q'' = f. Not printed.
+  std::vector<Intermediate> articulated_intermediates;
+  std::vector<GiNaC::ex> articulated_accelerations;
+  /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
+  void solve_by_mass_matrix() { articulated_intermediates.clear(), articulated_accelerations.clear(); }
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;

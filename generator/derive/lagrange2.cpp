@@ -7,6 +7,7 @@
 /// A kinetic energy given directly in [energy] goes through the general formula
 /// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
 #include "common/deadline.hpp"
+#include "derive/articulated_bodies.hpp"
 #include "derive/methods.hpp"
 #include "kinematics/vector3.hpp"
 
@@ -82,6 +83,20 @@ ex kinetic_energy(const GiNaC::matrix& M, const Mechanics& mech, const Symbols& 
   return tidy(T, mech.motion);
 }
 
+// q'' by the articulated-body recursion where [model] forward_dynamics asks for it, or by default
+// ("auto") for a tree of particles from articulated_crossover coordinates on; a variant that is
+// no longer a tree falls back to M = L D Lᵀ
+void choose_forward_dynamics(const Model& model, const Mechanics& mech, Equations& e) {
+  if (model.method != "lagrange2" || model.forward_dynamics == "mass_matrix") return;
+  if (model.forward_dynamics == "auto" && model.symbols.num_coordinates() < articulated_crossover) return;
+  ParticleTree tree = find_particle_tree(model);
+  if (!tree.found()) return;
+  derivation_stage("the articulated-body recursion");
+  ArticulatedAccelerations solution = articulated_accelerations(model, mech, tree);
+  e.articulated_intermediates = std::move(solution.intermediates);
+  e.articulated_accelerations = std::move(solution.accelerations);
+}
+
 }  // namespace
 
 Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
@@ -123,6 +138,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.dissipation = mech.dissipation;
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});
   e.conserves_energy_without_inputs = conserves_energy_without_inputs(mech, s);
+  choose_forward_dynamics(model, mech, e);
   return e;
 }
 

@@ -38,6 +38,7 @@ Equations linearized_model(const Equations& e, const std::vector<double>& q0, st
   GiNaC::exmap point, rest;
   for (std::size_t i = 0; i < n; ++i) point[s.coordinates[i]] = q0[i], point[s.velocities[i]] = 0, rest[s.coordinates[i]] = q0[i];
   Equations out = e;
+  out.solve_by_mass_matrix();
   out.model_name = e.model_name + "_linear";
   out.title = e.title + " (linearized)";
   for (unsigned i = 0; i < n; ++i)

@@ -46,6 +46,7 @@ Equations modal_model(const Equations& linear, const ModalTruncation& mt) {
   GiNaC::exmap values, to_modes;
   for (std::size_t i = 0; i < s.parameters.size(); ++i) values[s.parameters[i]] = mt.parameter_values[i];
   Equations out = linear;
+  out.solve_by_mass_matrix();
   out.model_name = linear.model_name + "_modal";
   out.title = linear.title + " (modal truncation)";
   std::vector<GiNaC::realsymbol> eta, rate;

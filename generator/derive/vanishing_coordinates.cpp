@@ -57,6 +57,7 @@ void remove_coordinate(Equations& e, std::size_t j) {
     ++r;
   }
   e.mass_matrix = M;
+  e.solve_by_mass_matrix();
   e.forcing.erase(e.forcing.begin() + static_cast<std::ptrdiff_t>(j));
   e.symbols.remove_coordinate(j);
   e.degrees_of_freedom = e.symbols.num_coordinates();

@@ -62,6 +62,7 @@ BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
   for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
   intermediates_ = e.intermediates;
   intermediates_.insert(intermediates_.end(), e.acceleration_intermediates.begin(), e.acceleration_intermediates.end());
+  intermediates_.insert(intermediates_.end(), e.articulated_intermediates.begin(), e.articulated_intermediates.end());
   for (std::size_t i = 0; i < intermediates_.size(); ++i) intermediate_index_[intermediates_[i].symbol] = i;
   for (const Intermediate& i : intermediates_) {
     GiNaC::exset used;

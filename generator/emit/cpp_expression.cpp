@@ -79,31 +79,27 @@ class CppPrinter {
   Code power(const ex& base, const ex& exponent) const {
     if (exponent.is_equal(GiNaC::numeric(1, 2))) return {"sqrt(" + print(base).text + ")", 4};
     if (exponent.is_equal(GiNaC::numeric(-1, 2))) return {"T(1)/sqrt(" + print(base).text + ")", 2};
-    if (exponent.info(GiNaC::info_flags::integer)) {
-      int k = GiNaC::ex_to<GiNaC::numeric>(exponent).to_int();
-      if (k < 0) return {"T(1)/" + wrap(power(base, -k), 4), 2};
-      if (k <= 4) {
-        std::string b = wrap(print(base), 4), out = b;
-        for (int i = 1; i < k; ++i) out += "*" + b;
-        return {out, k == 1 ? 4 : 2};
-      }
-    }
+    if (exponent.info(GiNaC::info_flags::integer)) return integer_power(print(base), GiNaC::ex_to<GiNaC::numeric>(exponent).to_int());
     return {"pow(" + print(base).text + ", " + print(exponent).text + ")", 4};
   }
 
-  // a sum inside a product is written with its first term positive (GiNaC's
-  // choice of sign there follows an order that changes between processes)
-  ex oriented(const ex& f, GiNaC::numeric& coefficient) const {
-    if (GiNaC::is_a<GiNaC::add>(f) && sum(f).text[0] == '-') {
-      coefficient = -coefficient;
-      return -f;
-    }
-    if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::add>(f.op(0)) && f.op(1).info(GiNaC::info_flags::integer) &&
-        sum(f.op(0)).text[0] == '-') {
-      if (GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_odd()) coefficient = -coefficient;
-      return GiNaC::power(-f.op(0), f.op(1));
-    }
-    return f;
+  Code integer_power(const Code& base, int k) const {
+    if (k < 0) return {"T(1)/" + wrap(integer_power(base, -k), 4), 2};
+    if (k > 4) return {"pow(" + base.text + ", " + number(GiNaC::numeric(k)).text + ")", 4};
+    std::string b = wrap(base, 4), out = b;
+    for (int i = 1; i < k; ++i) out += "*" + b;
+    return {out, k == 1 ? 4 : 2};
+  }
+
+  // a sum inside a product is written with its first term positive (GiNaC's choice of sign
+  // there follows an order that changes between processes); the sum's text, with the sign it
+  // moved into `coefficient`. Printed here rather than rebuilt as (−s)^k: GiNaC would take
+  // the sign out of the power again.
+  Code oriented_sum(const ex& s, int exponent, GiNaC::numeric& coefficient) const {
+    Code text = sum(s);
+    if (text.text[0] != '-') return text;
+    if (exponent % 2 != 0) coefficient = -coefficient;
+    return sum(-s);
   }
 
   Code product(const ex& e) const {
@@ -113,9 +109,15 @@ class CppPrinter {
     std::vector<std::string> numerator, denominator;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) continue;
-      const ex f = oriented(e.op(i), coefficient);
-      if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::negint)) {
-        denominator.push_back(wrap(power(f.op(0), -f.op(1)), 2));
+      const ex& f = e.op(i);
+      bool whole_power = GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::integer);
+      int k = whole_power ? GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int() : 1;
+      if (GiNaC::is_a<GiNaC::add>(f)) numerator.push_back(wrap(oriented_sum(f, 1, coefficient), 2));
+      else if (whole_power && GiNaC::is_a<GiNaC::add>(f.op(0))) {
+        Code base = oriented_sum(f.op(0), k, coefficient);
+        (k < 0 ? denominator : numerator).push_back(wrap(integer_power(base, std::abs(k)), 2));
+      } else if (whole_power && k < 0) {
+        denominator.push_back(wrap(power(f.op(0), -k), 2));
       } else {
         numerator.push_back(wrap(print(f), 2));
       }

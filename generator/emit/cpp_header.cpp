@@ -60,8 +60,24 @@ void coordinate_rates(BodyWriter& w, const Equations& e, const std::string& targ
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("{}[{}] = {};", target, i, rates[i]));
 }
 
+// q'' by the articulated-body recursion of a tree of particles (derive/articulated_bodies.hpp):
+// O(n) code, without forming or factoring M
+std::string articulated_rhs_function(const Equations& e) {
+  std::size_t n = e.symbols.num_coordinates();
+  BodyWriter w(e);
+  auto ddq = w.batch(e.articulated_accelerations);
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, ddq[i]));
+  return function(fmt::format("/// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' = M^-1 f by the\n"
+                              "/// articulated-body recursion of the particles' tree (O(n), without forming M).\n"
+                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
+                              2 * n),
+                  "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
+}
+
 std::string rhs_function(const Equations& e) {
   if (e.has_multipliers) return constrained_rhs_function(e);
+  if (!e.articulated_accelerations.empty()) return articulated_rhs_function(e);
   std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
   accelerations(w, e);
@@ -433,6 +449,10 @@ std::string emit_cpp_header(const Equations& e) {
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Recursive kinematics: each "
             "function computes the frames' and bodies' quantities it needs (k_...) first; jacobian_state and\n"
             "// linearization differentiate the Newton-Euler inverse dynamics tau = M q'' - f (forward mode)."
+      : !e.articulated_accelerations.empty()
+          ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
+            "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix and forcing "
+            "give M and f, jacobian_state and linearization differentiate them."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k);
   out += fmt::format(

@@ -129,6 +129,7 @@ struct Model {
   std::vector<Scene> scenes;
   std::vector<Variant> variants;
   bool recursive_kinematics = false;
+  std::string forward_dynamics = "auto";    // "auto", "mass_matrix" or "articulated" (model_file.hpp)
   std::vector<FrameLink> frame_links;        // recursive kinematics: the frames, parents first
   std::vector<Intermediate> intermediates;   // the frames' rotations and origins, in order
 };

@@ -173,7 +173,10 @@ struct ModelFile {
   /// "expanded": every position and rotation multiplied out in q; "recursive": the frames'
   /// rotations, origins and motions are quantities of their own, composed link by link
   std::string kinematics = "expanded";
-  SourceLocation name_where, method_where, kinematics_where;
+  /// How the generated rhs solves for q'': "auto", "mass_matrix" (M = L D Lᵀ) or "articulated"
+  /// (the articulated-body recursion of a tree of particles)
+  std::string forward_dynamics = "auto";
+  SourceLocation name_where, method_where, kinematics_where, forward_dynamics_where;
   std::vector<ParameterEntry> parameters;
   std::vector<CoordinateEntry> coordinates;
   std::optional<SourceLocation> coordinates_where;  // the [coordinates] section, when there is one

@@ -20,11 +20,11 @@ const std::vector<std::string> top_level_keys = {
     "model", "parameters", "coordinates", "inputs", "frames", "points", "particles", "rigid_bodies", "gravity",
     "energy", "forces", "constraints", "pseudo_velocities", "outputs", "scenes", "variants", "definitions"};
 
-// [model]: name, title, method, kinematics
+// [model]: name, title, method, kinematics, forward_dynamics
 void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
   const toml::table* t = r.table(node, "model", "name, title, method");
   if (!t) return;
-  r.check_keys(*t, "model", {"name", "title", "method", "kinematics"});
+  r.check_keys(*t, "model", {"name", "title", "method", "kinematics", "forward_dynamics"});
   if (const toml::node* n = t->get("name")) {
     m.name_where = r.at(*n);
     r.string(*n, "model.name", m.name);
@@ -39,6 +39,10 @@ void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
   if (const toml::node* n = t->get("kinematics")) {
     m.kinematics_where = r.at(*n);
     r.string(*n, "model.kinematics", m.kinematics);
+  }
+  if (const toml::node* n = t->get("forward_dynamics")) {
+    m.forward_dynamics_where = r.at(*n);
+    r.string(*n, "model.forward_dynamics", m.forward_dynamics);
   }
 }
 

@@ -1,0 +1,180 @@
+#include "derive/articulated_bodies.hpp"
+
+#include <fmt/format.h>
+
+#include "kinematics/vector3.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+using GiNaC::matrix;
+
+namespace {
+
+class Recursion {
+ public:
+  Recursion(const Model& model, const Mechanics& mechanics, const ParticleTree& tree)
+      : model_(model), mechanics_(mechanics), tree_(tree), count_(model.particles.size()) {}
+
+  ArticulatedAccelerations run() {
+    out_.accelerations.assign(model_.symbols.num_coordinates(), 0);
+    inward();
+    outward();
+    return out_;
+  }
+
+ private:
+  // one joint's quantities, kept from the inward pass for the outward one
+  struct Joint {
+    matrix S{3, 1}, U{3, 1}, D_inverse{1, 1};
+    Vector3 c{0, 0, 0};
+    std::vector<ex> u;  // Q − Sᵀ pA
+  };
+
+  // a symbol for `value` (an intermediate), unless it is a number or a symbol already
+  ex named(const ex& value, const std::string& cpp_name) {
+    if (GiNaC::is_a<GiNaC::numeric>(value) || GiNaC::is_a<GiNaC::symbol>(value)) return value;
+    GiNaC::symbol s(cpp_name);
+    out_.intermediates.push_back({s, value, cpp_name});
+    return s;
+  }
+
+  matrix named(const matrix& m, const std::string& prefix, bool symmetric) {
+    matrix r(m.rows(), m.cols());
+    for (unsigned a = 0; a < m.rows(); ++a)
+      for (unsigned b = 0; b < m.cols(); ++b)
+        r(a, b) = symmetric && b < a ? r(b, a) : named(m(a, b), fmt::format("{}{}{}", prefix, a, b));
+    return r;
+  }
+
+  Vector3 named(const Vector3& v, const std::string& prefix) {
+    return {named(v[0], prefix + "0"), named(v[1], prefix + "1"), named(v[2], prefix + "2")};
+  }
+
+  // the generalized forces on q_j besides gravity and inertia: applied, [energy] potential, dissipation
+  ex applied_force(std::size_t j) const {
+    const Symbols& s = model_.symbols;
+    return mechanics_.generalized_force[j] - model_.potential.diff(s.coordinates[j]) -
+           mechanics_.dissipation.diff(s.velocities[j]);
+  }
+
+  // S = ∂d/∂q_J and c = d''(q'' = 0) of particle i's displacement from its parent
+  void joint_motion(std::size_t i, Joint& J) {
+    const ParticleJoint& pj = tree_.joints[i];
+    const Symbols& s = model_.symbols;
+    std::size_t k = pj.coordinates.size();
+    J.S = matrix(3, unsigned(k));
+    Vector3 velocity{0, 0, 0};
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < k; ++b) {
+        J.S(a, b) = pj.displacement[a].diff(s.coordinates[pj.coordinates[b]]);
+        velocity[a] += J.S(a, b) * s.velocities[pj.coordinates[b]];
+      }
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < k; ++b)
+        J.c[a] += velocity[a].diff(s.coordinates[pj.coordinates[b]]) * s.velocities[pj.coordinates[b]];
+    std::string p = fmt::format("ab{}_", i);
+    J.S = named(J.S, p + "S", false);
+    J.c = named(J.c, p + "c");
+  }
+
+  // leaves to root: IA_i = m_i 1 + Σ Ia_child, pA_i = −m_i g + Σ pa_child, and for each joint
+  // U = IA S, D = Sᵀ U, u = Q − Sᵀ pA, Ia = IA − U D⁻¹ Uᵀ, pa = pA + Ia c + U D⁻¹ u
+  void inward() {
+    std::vector<matrix> IA(count_, matrix(3, 3));
+    std::vector<Vector3> pA(count_, Vector3{0, 0, 0});
+    for (std::size_t i = 0; i < count_; ++i) {
+      const Particle& p = model_.particles[i];
+      for (unsigned a = 0; a < 3; ++a) IA[i](a, a) = p.mass, pA[i][a] = -p.mass * model_.gravity[a];
+    }
+    joints_.resize(count_);
+    for (std::size_t at = count_; at-- > 0;) {
+      std::size_t i = tree_.order[at];
+      std::string p = fmt::format("ab{}_", i);
+      matrix I = named(IA[i], p + "I", true);
+      Vector3 pa = named(pA[i], p + "p");
+      Joint& J = joints_[i];
+      std::size_t k = tree_.joints[i].coordinates.size();
+      int parent = tree_.joints[i].parent;
+      if (k == 0) {
+        // fixed to its parent (or the ground): its mass and weight go to the parent as they are
+        for (unsigned a = 0; a < 3 && parent >= 0; ++a) {
+          pA[std::size_t(parent)][a] += pa[a];
+          for (unsigned b = 0; b < 3; ++b) IA[std::size_t(parent)](a, b) += I(a, b);
+        }
+        continue;
+      }
+      joint_motion(i, J);
+      J.U = named(I.mul(J.S), p + "U", false);
+      matrix D = named(J.S.transpose().mul(J.U), p + "D", true);
+      J.D_inverse = named(D.inverse(), p + "Di", true);
+      for (unsigned b = 0; b < k; ++b) {
+        ex u = applied_force(tree_.joints[i].coordinates[b]);
+        for (unsigned a = 0; a < 3; ++a) u -= J.S(a, b) * pa[a];
+        J.u.push_back(named(u, p + fmt::format("u{}", b)));
+      }
+      if (parent < 0) continue;
+      matrix W = named(J.U.mul(J.D_inverse), p + "W", false);
+      matrix Ia = I;
+      for (unsigned a = 0; a < 3; ++a)
+        for (unsigned b = 0; b < 3; ++b)
+          for (unsigned l = 0; l < k; ++l) Ia(a, b) -= W(a, l) * J.U(b, l);
+      Ia = named(Ia, p + "Ia", true);
+      for (unsigned a = 0; a < 3; ++a) {
+        ex force = pa[a];
+        for (unsigned b = 0; b < 3; ++b) force += Ia(a, b) * J.c[b];
+        for (unsigned l = 0; l < k; ++l) force += W(a, l) * J.u[l];
+        pA[std::size_t(parent)][a] += force;
+        for (unsigned b = 0; b < 3; ++b) IA[std::size_t(parent)](a, b) += Ia(a, b);
+      }
+    }
+  }
+
+  // root to leaves: q_J'' = D⁻¹ (u − Uᵀ (a_parent + c)), a_i = a_parent + c + S q_J''
+  void outward() {
+    std::vector<Vector3> acceleration(count_, Vector3{0, 0, 0});
+    for (std::size_t i : tree_.order) {
+      const Joint& J = joints_[i];
+      const ParticleJoint& pj = tree_.joints[i];
+      std::string p = fmt::format("ab{}_", i);
+      Vector3 base = (pj.parent < 0 ? Vector3{0, 0, 0} : acceleration[std::size_t(pj.parent)]) + J.c;
+      std::size_t k = pj.coordinates.size();
+      if (k == 0) {
+        acceleration[i] = base;
+        continue;
+      }
+      std::vector<ex> rhs(k), ddq(k);
+      for (unsigned l = 0; l < k; ++l) {
+        rhs[l] = J.u[l];
+        for (unsigned a = 0; a < 3; ++a) rhs[l] -= J.U(a, l) * base[a];
+        rhs[l] = named(rhs[l], p + fmt::format("r{}", l));
+      }
+      for (unsigned l = 0; l < k; ++l) {
+        ex sum = 0;
+        for (unsigned b = 0; b < k; ++b) sum += J.D_inverse(l, b) * rhs[b];
+        ddq[l] = named(sum, p + fmt::format("ddq{}", l));
+        out_.accelerations[pj.coordinates[l]] = ddq[l];
+      }
+      Vector3 a = base;
+      for (unsigned d = 0; d < 3; ++d)
+        for (unsigned l = 0; l < k; ++l) a[d] += J.S(d, l) * ddq[l];
+      acceleration[i] = named(a, p + "a");
+    }
+  }
+
+  const Model& model_;
+  const Mechanics& mechanics_;
+  const ParticleTree& tree_;
+  std::size_t count_;
+  std::vector<Joint> joints_;
+  ArticulatedAccelerations out_;
+};
+
+}  // namespace
+
+ArticulatedAccelerations articulated_accelerations(const Model& model, const Mechanics& mechanics,
+                                                   const ParticleTree& tree) {
+  return Recursion(model, mechanics, tree).run();
+}
+
+}  // namespace eomgen

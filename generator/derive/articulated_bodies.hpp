@@ -1,0 +1,31 @@
+/// @file Forward dynamics of a tree of point masses by the articulated-body recursion
+/// (Featherstone's, for particles: 3×3 articulated masses where rigid bodies need 6×6
+/// inertias). q'' in O(n) operations, where forming M and factoring it takes O(n³).
+#pragma once
+
+#include <vector>
+
+#include "kinematics/mechanics.hpp"
+#include "kinematics/particle_tree.hpp"
+
+namespace eomgen {
+
+/// From this many coordinates on, forward_dynamics = "auto" solves a particle tree by the
+/// recursion: tests/benchmarks/rhs_benchmark.cpp measures both forms of the planar chain in one
+/// run (README, "Against SymPy, MuJoCo and hand-written code"), and below this size the
+/// unrolled LDLᵀ of M is as fast or faster.
+inline constexpr std::size_t articulated_crossover = 6;
+
+struct ArticulatedAccelerations {
+  /// the recursion's quantities, each defined in the model's symbols and earlier ones
+  std::vector<Intermediate> intermediates;
+  std::vector<GiNaC::ex> accelerations;  // q'', one per coordinate
+};
+
+/// Σ_{j in subtree(i)} (m_j a_j − m_j g) = IA_i a_i + pA_i, built from the leaves to the root
+/// with each joint's equation S_iᵀ f_i = Q_i (Q: the generalized forces other than gravity and
+/// inertia), then a_i = a_parent + c_i + S_i q_i'' from the root to the leaves.
+ArticulatedAccelerations articulated_accelerations(const Model& model, const Mechanics& mechanics,
+                                                   const ParticleTree& tree);
+
+}  // namespace eomgen

@@ -1,0 +1,33 @@
+/// @file A tree of point masses read off their positions: each particle hangs from another (or
+/// from the ground) by a displacement that only its own coordinates move. The structure the
+/// articulated-body recursion needs to solve for q'' link by link instead of through M.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace eomgen {
+
+/// Particle i's link to its parent: r_i = r_parent + displacement(q_J), with J = `coordinates`
+/// (indices into the model's coordinates), which move no particle outside i's subtree.
+struct ParticleJoint {
+  int parent = -1;  // a particle index; −1: the ground
+  std::vector<std::size_t> coordinates;
+  Vector3 displacement;
+};
+
+struct ParticleTree {
+  std::vector<ParticleJoint> joints;  // one per particle, in the model's order
+  std::vector<std::size_t> order;     // the particles, each parent before its children
+  std::string why_not;                // empty when the model is such a tree; else the reason, in words
+  bool found() const { return why_not.empty(); }
+};
+
+/// The tree of the model's particles, when every coordinate moves exactly one particle relative
+/// to its parent and nothing else carries mass (no rigid bodies, no [energy] kinetic, no
+/// constraints, positions free of t and u, expanded kinematics).
+ParticleTree find_particle_tree(const Model& model);
+
+}  // namespace eomgen

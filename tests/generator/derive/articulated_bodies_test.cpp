@@ -1,0 +1,165 @@
+// The articulated-body recursion for trees of particles (derive/articulated_bodies.hpp): its q''
+// against M⁻¹ f of the same model at random states, when [model] forward_dynamics picks it, and
+// the located refusals when a model is not such a tree.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "pipeline.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen {
+namespace {
+
+using GiNaC::ex;
+using test::value_at;
+
+Equations derive_text(const std::string& text) {
+  Derivation d = derive_model_text(text, "tree.toml");
+  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
+  if (!d.equations) throw std::runtime_error("the model did not derive");
+  return *d.equations;
+}
+
+std::string diagnostics_of(const std::string& text) { return derive_model_text(text, "tree.toml").diagnostics.format(); }
+
+// the planar n-link chain of the peer benchmark (absolute angles), with a torsion spring at the
+// first joint, a damper at the last, and a force input at the tip
+std::string planar_chain(int n, const std::string& forward_dynamics) {
+  std::string out = fmt::format("[model]\nname = \"chain\"\nforward_dynamics = \"{}\"\n[parameters]\ng = 9.81\nk = 3.0\nd = 0.4\n",
+                                forward_dynamics);
+  for (int i = 1; i <= n; ++i) out += fmt::format("m{0} = {1}\nl{0} = {2}\n", i, 0.5 + 0.1 * i, 0.3 + 0.05 * i);
+  out += "[coordinates]\n";
+  for (int i = 1; i <= n; ++i) out += fmt::format("phi{} = {}\n", i, 0.1 * i);
+  out += "[inputs]\nF = 0.0\n";
+  std::string x, y;
+  for (int i = 1; i <= n; ++i) {
+    x += fmt::format("{}l{}*sin(phi{})", i > 1 ? " + " : "", i, i);
+    y += fmt::format(" - l{}*cos(phi{})", i, i);
+    out += fmt::format("[[particles]]\nname = \"b{}\"\nmass = \"m{}\"\nposition = [\"{}\", \"{}\", \"0\"]\n", i, i, x, y);
+  }
+  out += "[gravity]\nacceleration = [\"0\", \"-g\", \"0\"]\n";
+  out += fmt::format("[energy]\npotential = \"k*phi1^2/2\"\ndissipation = \"d*der(phi{})^2/2\"\n", n);
+  out += fmt::format("[[forces]]\nat = [\"{}\", \"{}\", \"0\"]\nforce = [\"F\", \"0\", \"0\"]\n", x, y);
+  return out;
+}
+
+// x solves A x = b (Gaussian elimination with partial pivoting; A is small and regular here)
+std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double> b) {
+  std::size_t n = b.size();
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t pivot = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (std::abs(A[r][c]) > std::abs(A[pivot][c])) pivot = r;
+    std::swap(A[c], A[pivot]), std::swap(b[c], b[pivot]);
+    for (std::size_t r = c + 1; r < n; ++r) {
+      double factor = A[r][c] / A[c][c];
+      for (std::size_t k = c; k < n; ++k) A[r][k] -= factor * A[c][k];
+      b[r] -= factor * b[c];
+    }
+  }
+  std::vector<double> x(n);
+  for (std::size_t r = n; r-- > 0;) {
+    double sum = b[r];
+    for (std::size_t k = r + 1; k < n; ++k) sum -= A[r][k] * x[k];
+    x[r] = sum / A[r][r];
+  }
+  return x;
+}
+
+// the recursion's q'' against M⁻¹ f at random states (the recursion's quantities in their order)
+void expect_recursion_solves_the_equations(const Equations& e, int points, unsigned seed) {
+  ASSERT_FALSE(e.articulated_accelerations.empty());
+  std::size_t n = e.symbols.num_coordinates();
+  for (const GiNaC::exmap& random : test::random_points(e.symbols, points, seed)) {
+    GiNaC::exmap at = random;
+    for (const Intermediate& i : e.articulated_intermediates) at[i.symbol] = value_at(i.definition, at);
+    std::vector<std::vector<double>> M(n, std::vector<double>(n));
+    std::vector<double> f(n);
+    for (unsigned j = 0; j < n; ++j) {
+      f[j] = value_at(e.forcing[j], random);
+      for (unsigned k = 0; k < n; ++k) M[j][k] = value_at(e.mass_matrix(j, k), random);
+    }
+    std::vector<double> expected = solve(M, f);
+    for (std::size_t j = 0; j < n; ++j) {
+      double got = value_at(e.articulated_accelerations[j], at);
+      EXPECT_NEAR(got, expected[j], 1e-10 * std::max(1.0, std::abs(expected[j])))
+          << e.model_name << ": q''[" << j << "] of " << n;
+    }
+  }
+}
+
+TEST(ArticulatedBodies, PlanarChainGivesMInverseF) {
+  for (int n : {1, 2, 3, 5, 8}) expect_recursion_solves_the_equations(derive_text(planar_chain(n, "articulated")), 6, 40u + unsigned(n));
+}
+
+TEST(ArticulatedBodies, BranchedSpatialTreeGivesMInverseF) {
+  // the crane hook: a spherical pendulum (two coordinates in one joint) carrying two planar pendulums
+  expect_recursion_solves_the_equations(test::derive_model("crane_hook_tree"), 8, 7u);
+  // a free particle (three coordinates, on a spring) carrying a pendulum, and a mass fixed to
+  // that particle by a constant offset (a joint without coordinates)
+  std::string free = R"toml([model]
+name = "free"
+forward_dynamics = "articulated"
+[parameters]
+m = 1.5
+k = 4.0
+l = 0.7
+g = 9.81
+[coordinates]
+x = 0.1
+y = 0.2
+z = 0.3
+a = 0.4
+[[particles]]
+name = "carrier"
+mass = "m"
+position = ["x", "y", "z"]
+[[particles]]
+name = "ballast"
+mass = "m/3"
+position = ["x + 0.2", "y", "z - 0.1"]
+[[particles]]
+name = "bob"
+mass = "2*m"
+position = ["x + l*sin(a)", "y", "z - l*cos(a)"]
+[gravity]
+acceleration = ["0", "0", "-g"]
+[energy]
+potential = "k*(x^2 + y^2 + z^2)/2"
+)toml";
+  expect_recursion_solves_the_equations(derive_text(free), 8, 9u);
+}
+
+TEST(ArticulatedBodies, AutoChoosesTheRecursionForLongTrees) {
+  EXPECT_TRUE(derive_text(planar_chain(5, "auto")).articulated_accelerations.empty());
+  EXPECT_FALSE(derive_text(planar_chain(6, "auto")).articulated_accelerations.empty());
+  EXPECT_TRUE(derive_text(planar_chain(8, "mass_matrix")).articulated_accelerations.empty());
+  EXPECT_TRUE(test::derive_model("n_link_pendulum_4").articulated_accelerations.empty());
+}
+
+TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
+  std::string relative = planar_chain(2, "articulated");
+  relative.replace(relative.find("l2*sin(phi2)"), 12, "l2*sin(phi1 + phi2)");
+  std::string message = diagnostics_of(relative);
+  EXPECT_NE(message.find("tree.toml:3:20: error: model.forward_dynamics: the articulated-body recursion needs a tree of "
+                         "particles, and this model is not one: coordinate 'phi1' moves both 'b1' and 'b2'"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("hint: use forward_dynamics = \"auto\" or \"mass_matrix\""), std::string::npos) << message;
+  EXPECT_NE(diagnostics_of(planar_chain(2, "fast")).find("unknown forward dynamics 'fast'"), std::string::npos);
+  std::string appell = planar_chain(2, "articulated");
+  appell.insert(appell.find("forward_dynamics"), "method = \"lagrange1\"\n");
+  EXPECT_NE(diagnostics_of(appell).find("solves Lagrange's equations of the second kind, not method 'lagrange1'"),
+            std::string::npos)
+      << diagnostics_of(appell);
+  std::string unused = planar_chain(2, "articulated");
+  unused.insert(unused.find("[inputs]"), "free = 0.0\n");
+  EXPECT_NE(diagnostics_of(unused).find("coordinate 'free' moves no particle"), std::string::npos) << diagnostics_of(unused);
+}
+
+}  // namespace
+}  // namespace eomgen
