@@ -14,7 +14,7 @@ namespace eomgen {
 /// recursion: tests/benchmarks/rhs_benchmark.cpp measures both forms of the planar chain in one
 /// run (README, "Against SymPy, MuJoCo and hand-written code"), and below this size the
 /// unrolled LDLᵀ of M is as fast or faster.
-inline constexpr std::size_t articulated_crossover = 6;
+inline constexpr std::size_t articulated_crossover = 7;
 
 struct ArticulatedAccelerations {
   /// the recursion's quantities, each defined in the model's symbols and earlier ones

@@ -6,7 +6,11 @@ SymPy lambdify right-hand side), plus jacobian_state against central
 differences. Writes DIR/peers.md and DIR/peers.png and prints the table.
 
 Models (written here): the planar n-link pendulum (point masses, absolute
-angles from the downward vertical) for n = 1, 2, 4, 8, 12, 16, 24, 30, and a
+angles from the downward vertical) for n = 1, 2, 4, 8, 12, 16, 24, 30, 60, 100
+(from 60 on without the Jacobian and the other rhs form, whose O(n^3) code takes
+minutes to compile), each also generated with the forward dynamics that
+[model] forward_dynamics = "auto" did not choose, whose rhs is timed in the
+same process and compared (and both against the rhs in long double); and a
 three-dimensional chain of n rigid rods, each link oriented by its own Cardan
 angles rot_x(a_i)*rot_y(b_i) (two rotational degrees of freedom per link, like a
 universal joint without twist) for n = 1, 2, 4, 8.
@@ -15,7 +19,9 @@ Operations are counted in the generated C++ as binary + - * /, unary minus
 and function calls (sin, cos, sqrt, ...), so x*x is one operation like SymPy's
 x**2 in count_ops; SymPy's count over M and f is compared with ours over the
 same M and f (the mass_matrix and forcing functions); the rhs adds the
-unrolled LDL^T solve, counted separately.
+unrolled LDL^T solve, counted separately. The header's size and the time g++ -O2
+takes to compile its rhs and jacobian_state (one translation unit with both
+instantiated for double) are recorded for every planar n up to 30.
 
 Usage: peer_benchmark.py EOMGEN [--quick] [--out DIR]   (exit 77 without SymPy)
 """
@@ -106,10 +112,25 @@ def sympy_run(n, method, extra=()):
         return "timeout"
 
 
-def rhs_speed(header_dir, name, planar, work):
+def compile_seconds(header_dir, name, work):
+    """g++ -O2 of one translation unit that instantiates the header's rhs and jacobian_state."""
+    source = os.path.join(work, f"compile_{name}.cpp")
+    with open(source, "w") as f:
+        f.write(f'#include "{name}.hpp"\nnamespace m = eomgen::models::{name};\n'
+                "template void m::rhs<double>(double, const double*, const double*, const double*, double*);\n"
+                "template void m::jacobian_state<double>(double, const double*, const double*, const double*, double*);\n")
+    start = time.perf_counter()
+    r = run(["c++", "-O2", "-std=c++17", "-c", "-I", header_dir, source, "-o", os.devnull])
+    if r.returncode != 0:
+        raise RuntimeError(r.stderr[-3000:])
+    return time.perf_counter() - start
+
+
+def rhs_speed(header_dir, name, planar, work, other=None, jacobian=True):
     source = os.path.join(HERE, "rhs_benchmark.cpp")
     binary = os.path.join(work, f"bench_{name}")
     build = run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", f"-DPLANAR={1 if planar else 0}", "-I", header_dir,
+                 *([f"-DOTHER={other}"] if other else []), f"-DJACOBIAN={1 if jacobian else 0}",
                  "-I", "/usr/include/eigen3", source, "-lmujoco", "-o", binary])
     if build.returncode != 0:
         raise RuntimeError(build.stderr[-3000:])
@@ -146,7 +167,7 @@ def main():
     out = sys.argv[sys.argv.index("--out") + 1] if "--out" in sys.argv else os.path.join(os.getcwd(), "benchmarks")
     os.makedirs(out, exist_ok=True)
     work = tempfile.mkdtemp()
-    planar = [1, 2] if quick else [1, 2, 4, 8, 12, 16, 24, 30]
+    planar = [1, 2, 8] if quick else [1, 2, 4, 8, 12, 16, 24, 30, 60, 100]
     spatial = [1] if quick else [1, 2, 4, 8]
     rows, points = [], []
     lagrange_gave_up = kane_gave_up = False
@@ -160,9 +181,19 @@ def main():
             derive = timed_generate(eomgen, model, work, 3 if n <= 16 else 1)
             with open(os.path.join(work, name + ".hpp")) as f:
                 header = f.read()
+            long_chain = n > 30
             ops_mf = count_operations(header, "mass_matrix") + count_operations(header, "forcing")
             ops_rhs = count_operations(header, "rhs")
-            speed = rhs_speed(work, name, kind == "planar", work)
+            form = "articulated" if "articulated-body recursion" in header.split("void rhs(")[0] else "mass_matrix"
+            other = None
+            if kind == "planar" and not long_chain:
+                # the same chain with the form [model] forward_dynamics = "auto" did not choose, timed alongside
+                other = f"{name}_other"
+                with open(os.path.join(work, other + ".toml"), "w") as f:
+                    f.write(planar_chain(n, name=other, forward_dynamics="mass_matrix" if form == "articulated" else "articulated"))
+                run([eomgen, "generate", os.path.join(work, other + ".toml"), "-o", work])
+            speed = rhs_speed(work, name, kind == "planar", work, other, jacobian=not long_chain)
+            compile_s = compile_seconds(work, name, work) if kind == "planar" and not long_chain else None
             lagrange = kane = lam = None
             if kind == "planar":
                 if not lagrange_gave_up:
@@ -175,7 +206,8 @@ def main():
                     kane_gave_up = kane == "timeout"
                 else:
                     kane = "timeout"
-            row = {"model": kind, "n": n, "states": 2 * n * (1 if kind == "planar" else 2), "derive_s": derive,
+            row = {"model": kind, "n": n, "states": 2 * n * (1 if kind == "planar" else 2), "derive_s": derive, "form": form,
+                   "header_kb": len(header.encode()) / 1024, "compile_s": compile_s,
                    "ops_m_f": ops_mf, "ops_rhs": ops_rhs, **speed,
                    "lagrange_s": lagrange["seconds"] if isinstance(lagrange, dict) else lagrange,
                    "kane_s": kane["seconds"] if isinstance(kane, dict) else kane,
@@ -185,35 +217,58 @@ def main():
     write_report(rows, out, quick)
 
 
+def per(a, b, digits=1):
+    """a / b as a ratio, or – when either is missing."""
+    if not isinstance(a, (int, float)) or not isinstance(b, (int, float)) or not b:
+        return "–"
+    return f"{a / b:.{digits}f}x"
+
+
 def write_report(rows, out, quick):
     lines = [f"Measured {time.strftime('%Y-%m-%d')} on {os.cpu_count()} cores ({platform_line()}); "
              f"SymPy runs in a fresh process each, stopped after {LIMIT:.0f} s.", "",
-             "| model | n | states | eomgen derive [s] | SymPy Lagrange [s] | ratio | SymPy Kane [s] | ratio | ops M,f (eomgen) | ops M,f (SymPy cse of Kane) | ops rhs (eomgen, with solve) | eomgen rhs [ns] | MuJoCo mj_forward [ns] | MuJoCo/eomgen | Eigen by hand [ns] | Eigen/eomgen | SymPy lambdify [ns] | jacobian_state [ns] | central differences [ns] | FD/jacobian |",
-             "|" + "---|" * 20]
+             "Derivation and code:", "",
+             "| model | n | states | eomgen generate [s] | SymPy Lagrange [s] | ratio | SymPy Kane [s] | ratio | ops M,f (eomgen) | ops M,f (SymPy cse of Kane) | ops rhs (eomgen) | header [KB] | g++ -O2 rhs + jacobian_state [s] |",
+             "|" + "---|" * 13]
     for r in rows:
         lines.append(
             f"| {r['model']} | {r['n']} | {r['states']} | {fmt(r['derive_s'])} | {fmt(r['lagrange_s'])} | {ratio(r['lagrange_s'], r['derive_s'])} | "
             f"{fmt(r['kane_s'])} | {ratio(r['kane_s'], r['derive_s'])} | {r['ops_m_f']} | {fmt(r['sympy_cse_ops'], 6)} | {r['ops_rhs']} | "
-            f"{r['eomgen_ns']:.0f} | {r['mujoco_ns']:.0f} | {r['mujoco_ns'] / r['eomgen_ns']:.1f}x | {fmt(r['eigen_ns'], 4)} | "
-            f"{ratio(r['eigen_ns'], r['eomgen_ns'])} | {fmt(r['lambdify_ns'], 4)} | {r['jacobian_ns']:.0f} | {r['finite_difference_ns']:.0f} | "
-            f"{r['finite_difference_ns'] / r['jacobian_ns']:.1f}x |")
-    lines += ["", "Targets (planar chain):"]
+            f"{r['header_kb']:.0f} | {fmt(r['compile_s'])} |")
+    lines += ["", "Right-hand side and Jacobian (ns per call; the form is what forward_dynamics = \"auto\" chose; "
+              "difference: largest |x'_auto − x'_other| / max(1, |x'|) over 100 random states; error: the same against "
+              "the rhs in long double):", "",
+              "| model | n | form | eomgen rhs [ns] | other form [ns] | other/eomgen | difference | error (eomgen, other) | MuJoCo mj_forward [ns] | MuJoCo/eomgen | Eigen by hand [ns] | Eigen/eomgen | SymPy lambdify [ns] | jacobian_state [ns] | jacobian/rhs | central differences [ns] | FD/jacobian |",
+             "|" + "---|" * 17]
+    for r in rows:
+        errors = "–" if r.get("other_form_ns") is None else f"{r['error']:.1g}, {r['other_form_error']:.1g}"
+        difference = "–" if r.get("other_form_ns") is None else f"{r['forms_differ']:.1g}"
+        lines.append(
+            f"| {r['model']} | {r['n']} | {r['form']} | {r['eomgen_ns']:.0f} | {fmt(r.get('other_form_ns'), 4)} | "
+            f"{per(r.get('other_form_ns'), r['eomgen_ns'])} | {difference} | {errors} | "
+            f"{r['mujoco_ns']:.0f} | {per(r['mujoco_ns'], r['eomgen_ns'])} | {fmt(r['eigen_ns'], 4)} | {per(r['eigen_ns'], r['eomgen_ns'])} | "
+            f"{fmt(r['lambdify_ns'], 4)} | {fmt(r['jacobian_ns'], 4)} | {per(r['jacobian_ns'], r['eomgen_ns'])} | "
+            f"{fmt(r['finite_difference_ns'], 4)} | {per(r['finite_difference_ns'], r['jacobian_ns'])} |")
+    lines += ["", "Targets (planar chain, issue 17):"]
     by_n = {r["n"]: r for r in rows if r["model"] == "planar"}
-    if 12 in by_n:
-        r = by_n[12]
-        lines.append(f"- derivation at n = 12: {ratio(r['lagrange_s'], r['derive_s'])} faster than LagrangesMethod (target 100x), "
-                     f"{ratio(r['kane_s'], r['derive_s'])} faster than KanesMethod (target 10x)")
-    if 30 in by_n:
-        lines.append(f"- derivation at n = 30: {by_n[30]['derive_s']:.2f} s (target under 0.5 s)")
-    worse = [r["n"] for r in rows if r["model"] == "planar" and isinstance(r["sympy_cse_ops"], int) and r["ops_m_f"] > r["sympy_cse_ops"]]
-    lines.append(f"- code size: eomgen's M,f has more operations than SymPy's cse at n = {worse}" if worse else
-                 "- code size: eomgen's M,f has no more operations than SymPy's cse of KanesMethod wherever SymPy finished")
-    small = [r for r in rows if r["model"] == "planar" and r["n"] <= 8]
-    lines.append("- rhs vs MuJoCo, n <= 8: " + ", ".join(f"n = {r['n']}: {r['mujoco_ns'] / r['eomgen_ns']:.1f}x" for r in small) + " (target 5x)")
-    if 30 in by_n:
-        lines.append(f"- rhs vs MuJoCo at n = 30: {by_n[30]['mujoco_ns'] / by_n[30]['eomgen_ns']:.1f}x (target 2x)")
-    slower = [r["n"] for r in rows if r["model"] == "planar" and isinstance(r["eigen_ns"], (int, float)) and r["eomgen_ns"] > r["eigen_ns"]]
+    for n in (12, 30):
+        if n in by_n:
+            r = by_n[n]
+            lines.append(f"- generate at n = {n}: {r['derive_s']:.3f} s, {ratio(r['kane_s'], r['derive_s'])} faster than KanesMethod "
+                         f"(target 30x{', and under 0.3 s' if n == 30 else ''})")
+    for n, target in ((8, 10), (30, 5)):
+        if n in by_n:
+            lines.append(f"- rhs vs MuJoCo at n = {n}: {per(by_n[n]['mujoco_ns'], by_n[n]['eomgen_ns'])} (target {target}x)")
+    lines.append("- rhs vs MuJoCo at every n: " + ", ".join(f"{r['n']}: {per(r['mujoco_ns'], r['eomgen_ns'])}" for r in by_n.values()))
+    slower = [r["n"] for r in by_n.values() if isinstance(r["eigen_ns"], (int, float)) and r["eomgen_ns"] > r["eigen_ns"]]
     lines.append(f"- rhs vs hand-written Eigen: slower at n = {slower}" if slower else "- rhs vs hand-written Eigen: not slower at any n")
+    differ = [r["forms_differ"] for r in by_n.values() if r.get("other_form_ns") is not None]
+    if differ:
+        lines.append(f"- the two forms of the rhs differ by at most {max(differ):.1g} (target 1e-12)")
+    if 30 in by_n:
+        r = by_n[30]
+        lines.append(f"- n = 30: header {r['header_kb']:.0f} KB (target under 200 KB), rhs + jacobian_state compile in "
+                     f"{fmt(r['compile_s'])} s (target 3 s), jacobian_state {per(r['jacobian_ns'], r['eomgen_ns'])} the rhs (target 5x)")
     text = "\n".join(lines) + "\n"
     with open(os.path.join(out, "peers.md"), "w") as f:
         f.write(text)
@@ -237,24 +292,29 @@ def draw_chart(rows, out):
     planar = [r for r in rows if r["model"] == "planar"]
     with open(data, "w") as f:
         for r in planar:
-            vals = [r["n"], r["derive_s"], r["lagrange_s"], r["kane_s"], r["eomgen_ns"], r["mujoco_ns"], r["eigen_ns"]]
+            vals = [r["n"], r["derive_s"], r["lagrange_s"], r["kane_s"], r["eomgen_ns"], r["mujoco_ns"], r["eigen_ns"],
+                    r.get("other_form_ns"), r["mujoco_ns"] / r["eomgen_ns"], r["header_kb"], r["compile_s"]]
             f.write(" ".join("NaN" if not isinstance(v, (int, float)) else repr(v) for v in vals) + "\n")
-    script = f"""set terminal pngcairo size 1200,520 noenhanced
+    script = f"""set terminal pngcairo size 1500,520 noenhanced
 set output '{os.path.join(out, "peers.png")}'
-set multiplot layout 1,2
+set multiplot layout 1,3
 set logscale xy
 set grid
 set key top left
 set xlabel 'n (links of the planar chain)'
 set ylabel 'derivation time [s]'
 set title 'Derivation: model file to equations (and C++ for eomgen)'
-plot '{data}' using 1:2 with linespoints lw 2 title 'eomgen (parse, derive, CSE, header)', '' using 1:3 with linespoints lw 2 title 'SymPy LagrangesMethod', '' using 1:4 with linespoints lw 2 title 'SymPy KanesMethod'
+plot '{data}' using 1:2 with linespoints lw 2 title 'eomgen generate (parse, derive, CSE, header)', '' using 1:3 with linespoints lw 2 title 'SymPy LagrangesMethod', '' using 1:4 with linespoints lw 2 title 'SymPy KanesMethod'
 set ylabel 'time per call [ns]'
 set title 'Right-hand side'
-plot '{data}' using 1:5 with linespoints lw 2 title 'eomgen rhs', '' using 1:6 with linespoints lw 2 title 'MuJoCo mj_forward', '' using 1:7 with linespoints lw 2 title 'Eigen by hand (LDLT)'
+plot '{data}' using 1:5 with linespoints lw 2 title 'eomgen rhs (forward_dynamics = auto)', '' using 1:8 with linespoints lw 2 title 'eomgen rhs, the other form', '' using 1:6 with linespoints lw 2 title 'MuJoCo mj_forward', '' using 1:7 with linespoints lw 2 title 'Eigen by hand (LDLT)'
+unset logscale y
+set ylabel 'MuJoCo time / eomgen time'
+set title 'rhs: MuJoCo mj_forward / eomgen'
+plot '{data}' using 1:9 with linespoints lw 2 title 'ratio'
 unset multiplot
 """
-    run(["gnuplot"], env=None) if False else subprocess.run(["gnuplot"], input=script, text=True)
+    subprocess.run(["gnuplot"], input=script, text=True)
 
 
 if __name__ == "__main__":

@@ -2,8 +2,11 @@
 // process with interleaved repetitions and medians: the generated rhs,
 // MuJoCo's mj_forward on the equivalent MJCF, a hand-written Eigen version
 // (planar chains: M_jk = (Σ_{i≥max(j,k)} m_i) l_j l_k cos(φ_j − φ_k), LDLT solve),
-// and jacobian_state against central differences of rhs.
-// Built by peer_benchmark.py: c++ -O2 -DMODEL=NAME -DPLANAR=0|1 -I DIR rhs_benchmark.cpp -lmujoco
+// and jacobian_state against central differences of rhs. With -DOTHER=NAME2 (the same model
+// generated with the other [model] forward_dynamics), that header's rhs too, and the largest
+// difference between the two forms' results.
+// -DJACOBIAN=0 leaves the Jacobian out (long chains, whose dense jacobian_state takes minutes to compile).
+// Built by peer_benchmark.py: c++ -O2 -DMODEL=NAME [-DOTHER=NAME2] -DPLANAR=0|1 -I DIR rhs_benchmark.cpp -lmujoco
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,11 +17,18 @@
 #include <Eigen/Dense>
 #include <mujoco/mujoco.h>
 
+#ifndef JACOBIAN
+#define JACOBIAN 1
+#endif
 #define EOMGEN_STRING2(x) #x
 #define EOMGEN_STRING(x) EOMGEN_STRING2(x)
 #include EOMGEN_STRING(MODEL.hpp)
 
 namespace model = eomgen::models::MODEL;
+#ifdef OTHER
+#include EOMGEN_STRING(OTHER.hpp)
+namespace other = eomgen::models::OTHER;
+#endif
 constexpr int N = static_cast<int>(model::num_states), n = static_cast<int>(model::num_coordinates);
 
 // planar chain by hand: parameters m1, l1, m2, l2, ..., g
@@ -78,11 +88,15 @@ int main(int argc, char** argv) {
   HandWritten hand;
   volatile double sink = 0;
   int calls = std::max(20, 200000 / (n * n + 10));
-  std::vector<double> ours, theirs, mujoco, jacobian, differences;
+  std::vector<double> ours, theirs, mujoco, jacobian, differences, other_form;
   for (int rep = 0; rep < 15; ++rep) {
     ours.push_back(time_batch([&] { model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data()); sink = sink + xdot[N - 1]; }, calls));
+#ifdef OTHER
+    other_form.push_back(time_batch([&] { other::rhs(0.0, x.data(), u.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
+#endif
     mujoco.push_back(time_batch([&] { mj_forward(mj, data); sink = sink + data->qacc[0]; }, calls));
     if (PLANAR) theirs.push_back(time_batch([&] { hand.rhs(x.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
+#if JACOBIAN
     jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; }, std::max(5, calls / N)));
     differences.push_back(time_batch([&] {
       for (int j = 0; j < N; ++j) {
@@ -96,17 +110,44 @@ int main(int argc, char** argv) {
       }
       sink = sink + fd[0];
     }, std::max(5, calls / N)));
+#endif
   }
+  // the two forms at random states, against each other and against the same model's rhs in long
+  // double: largest difference relative to max(1, max_i |x'_i|)
+  double forms_differ = 0, own_error = 0, other_error = 0;
+#ifdef OTHER
+  std::vector<double> state(N), other_xdot(N);
+  std::vector<long double> state_l(N), xdot_l(N), u_l(u.begin(), u.end());
+  auto p_l = model::Parameters<long double>().values();
+  auto worst = [&](const auto& a, const auto& b, double& out) {
+    long double scale = 1, largest = 0;
+    for (int i = 0; i < N; ++i) scale = std::max(scale, std::abs(static_cast<long double>(b[i])));
+    for (int i = 0; i < N; ++i) largest = std::max(largest, std::abs(static_cast<long double>(a[i]) - static_cast<long double>(b[i])));
+    out = std::max(out, static_cast<double>(largest / scale));
+  };
+  for (int trial = 0; trial < 100; ++trial) {
+    for (int i = 0; i < N; ++i) state_l[i] = state[i] = 6 * uniform(random) * (i < n ? 1 : 2);
+    model::rhs(0.0, state.data(), u.data(), p.data(), xdot.data());
+    other::rhs(0.0, state.data(), u.data(), p.data(), other_xdot.data());
+    model::rhs(0.0L, state_l.data(), u_l.data(), p_l.data(), xdot_l.data());
+    worst(xdot, other_xdot, forms_differ);
+    worst(xdot, xdot_l, own_error);
+    worst(other_xdot, xdot_l, other_error);
+  }
+#endif
   double agreement = 0;
   if (PLANAR) {
     model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data());
     hand.rhs(x.data(), p.data(), xdot_hand.data());
     for (int i = 0; i < N; ++i) agreement = std::max(agreement, std::abs(xdot[i] - xdot_hand[i]) / std::max(1.0, std::abs(xdot[i])));
   }
-  std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %.1f, \"eigen_ns\": %s, \"jacobian_ns\": %.1f, "
-              "\"finite_difference_ns\": %.1f, \"hand_written_difference\": %.2g}\n",
-              median(ours), median(mujoco), PLANAR ? std::to_string(median(theirs)).c_str() : "null", median(jacobian),
-              median(differences), agreement);
+  auto or_null = [](const std::vector<double>& v) { return v.empty() ? std::string("null") : std::to_string(median(v)); };
+  std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %.1f, \"eigen_ns\": %s, \"jacobian_ns\": %s, "
+              "\"finite_difference_ns\": %s, \"hand_written_difference\": %.2g, \"other_form_ns\": %s, "
+              "\"forms_differ\": %.2g, \"error\": %.2g, \"other_form_error\": %.2g}\n",
+              median(ours), median(mujoco), or_null(theirs).c_str(), or_null(jacobian).c_str(),
+              or_null(differences).c_str(), agreement, or_null(other_form).c_str(),
+              forms_differ, own_error, other_error);
   mj_deleteData(data);
   mj_deleteModel(mj);
   return sink == 12345.678 ? 3 : 0;
