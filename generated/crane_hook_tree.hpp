@@ -2,7 +2,7 @@
 // crane_hook_tree: Crane hook carrying two swinging loads (method lagrange2, 4 degrees of freedom).
 // Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].
 // Forward dynamics: rhs solves for q'' by the articulated-body recursion of the particles' tree (O(n));
-// mass_matrix and forcing give M and f, jacobian_state and linearization differentiate them.
+// mass_matrix and forcing give M and f; jacobian_state takes q'' from rhs and M from mass_matrix.
 #pragma once
 
 #include <array>
@@ -311,10 +311,11 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   xdot[7] = ab2_ddq0;
 }
 
-/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is
-/// M^-1 (df/dx - (dM/dx) q''). J: 8x8, row-major.
+namespace detail {
+
+/// df/d(q, q', u) of M q'' = f. F: 4x9, row-major.
 template <class T>
-void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
+void forcing_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -337,156 +338,125 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_c = p[7];
   const T u_F = u[0];
   const T c0 = p_m0 + p_m1 + p_m2;
-  const T c1 = sin(q_a);
-  const T c2 = sin(q_theta);
-  const T c3 = cos(q_psi);
-  const T c4 = cos(q_a);
-  const T c5 = cos(q_theta);
-  const T c6 = sin(q_b);
-  const T c7 = sin(q_psi);
-  const T c8 = cos(q_b);
+  const T c1 = cos(q_theta);
+  const T c2 = c1*c1;
+  const T c3 = sin(q_theta);
+  const T c4 = cos(q_psi);
+  const T c5 = c3*c4*p_L*u_F;
+  const T c6 = cos(q_a);
+  const T c7 = cos(q_b);
+  const T c8 = c3*c3;
+  const T c9 = sin(q_b);
+  const T c10 = sin(q_psi);
+  const T c11 = c10*c3*c9*dq_b*dq_b*p_L*p_l2*p_m2;
+  const T c12 = sin(q_a);
+  const T c13 = c12*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1;
+  const T c14 = c1*c10*c12*dq_a*dq_a*p_L*p_l1*p_m1;
+  const T c15 = c1*c10*p_L*u_F;
+  const T c16 = -c1*c4*c9*dq_b*dq_b*p_L*p_l2*p_m2;
+  F[0] = -c0*c1*p_L*p_g + c0*c2*dq_psi*dq_psi*p_L*p_L - c0*c8*dq_psi*dq_psi*p_L*p_L - c1*c6*dq_a*dq_a*p_L*p_l1*p_m1 - c1*c7*dq_b*dq_b*p_L*p_l2*p_m2 - c11 - c13 - c5;
+  F[1] = -c14 - c15 - c16;
+  F[2] = c1*c4*c6*dq_a*dq_a*p_L*p_l1*p_m1 + c12*c3*dq_a*dq_a*p_L*p_l1*p_m1;
+  F[3] = c1*c10*c7*dq_b*dq_b*p_L*p_l2*p_m2 + c3*c9*dq_b*dq_b*p_L*p_l2*p_m2;
+  F[4] = T(0);
+  F[5] = T(2)*c0*c1*c3*dq_psi*p_L*p_L;
+  F[6] = T(2)*c1*c12*c4*dq_a*p_L*p_l1*p_m1 - T(2)*c3*c6*dq_a*p_L*p_l1*p_m1;
+  F[7] = T(2)*c1*c10*c9*dq_b*p_L*p_l2*p_m2 - T(2)*c3*c7*dq_b*p_L*p_l2*p_m2;
+  F[8] = c1*c4*p_L;
+  F[9] = -T(2)*c0*c2*dq_psi*dq_theta*p_L*p_L + T(2)*c0*c8*dq_psi*dq_theta*p_L*p_L - c14 - c15 - c16;
+  F[10] = -c11 - c13 - c5;
+  F[11] = -c10*c3*c6*dq_a*dq_a*p_L*p_l1*p_m1;
+  F[12] = c3*c4*c7*dq_b*dq_b*p_L*p_l2*p_m2;
+  F[13] = -T(2)*c0*c1*c3*dq_psi*p_L*p_L;
+  F[14] = -T(2)*c0*c1*c3*dq_theta*p_L*p_L;
+  F[15] = -T(2)*c10*c12*c3*dq_a*p_L*p_l1*p_m1;
+  F[16] = T(2)*c3*c4*c9*dq_b*p_L*p_l2*p_m2;
+  F[17] = -c10*c3*p_L;
+  F[18] = -T(2)*c10*c3*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c4*c6*dq_psi*dq_psi*p_L*p_l1*p_m1 + c1*c4*c6*dq_theta*dq_theta*p_L*p_l1*p_m1 + c12*c3*dq_theta*dq_theta*p_L*p_l1*p_m1;
+  F[19] = T(2)*c1*c4*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 - c10*c3*c6*dq_psi*dq_psi*p_L*p_l1*p_m1 - c10*c3*c6*dq_theta*dq_theta*p_L*p_l1*p_m1;
+  F[20] = -T(2)*c1*c10*c12*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c6*dq_theta*dq_theta*p_L*p_l1*p_m1 - c12*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 - c12*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 - c12*p_l1*u_F - c6*p_g*p_l1*p_m1;
+  F[21] = T(0);
+  F[22] = T(2)*c1*c10*c6*dq_psi*p_L*p_l1*p_m1 - T(2)*c1*c12*dq_theta*p_L*p_l1*p_m1 + T(2)*c3*c4*c6*dq_theta*p_L*p_l1*p_m1;
+  F[23] = T(2)*c1*c10*c6*dq_theta*p_L*p_l1*p_m1 + T(2)*c3*c4*c6*dq_psi*p_L*p_l1*p_m1;
+  F[24] = -p_c;
+  F[25] = T(0);
+  F[26] = c6*p_l1;
+  F[27] = T(2)*c3*c4*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c10*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 + c1*c10*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 + c3*c9*dq_theta*dq_theta*p_L*p_l2*p_m2;
+  F[28] = T(2)*c1*c10*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c3*c4*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 + c3*c4*c7*dq_theta*dq_theta*p_L*p_l2*p_m2;
+  F[29] = T(0);
+  F[30] = T(2)*c1*c4*c9*dq_psi*dq_theta*p_L*p_l2*p_m2 - c1*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c10*c3*c9*dq_psi*dq_psi*p_L*p_l2*p_m2 - c10*c3*c9*dq_theta*dq_theta*p_L*p_l2*p_m2 - c7*p_g*p_l2*p_m2;
+  F[31] = -T(2)*c1*c4*c7*dq_psi*p_L*p_l2*p_m2 - T(2)*c1*c9*dq_theta*p_L*p_l2*p_m2 + T(2)*c10*c3*c7*dq_theta*p_L*p_l2*p_m2;
+  F[32] = -T(2)*c1*c4*c7*dq_theta*p_L*p_l2*p_m2 + T(2)*c10*c3*c7*dq_psi*p_L*p_l2*p_m2;
+  F[33] = T(0);
+  F[34] = -p_c;
+  F[35] = T(0);
+}
+
+}  // namespace detail
+
+/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is
+/// M^-1 (df/dx - (dM/dq) q''), with q'' from rhs and M from mass_matrix. J: 8x8, row-major.
+template <class T>
+void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
+  (void)t; (void)x; (void)u; (void)p;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[0];
+  const T q_psi = x[1];
+  const T q_a = x[2];
+  const T q_b = x[3];
+  const T p_m0 = p[0];
+  const T p_m1 = p[1];
+  const T p_m2 = p[2];
+  const T p_L = p[3];
+  const T p_l1 = p[4];
+  const T p_l2 = p[5];
+  T xdot[8];
+  rhs(t, x, u, p, xdot);
   T M[16];
-  M[0] = c0*p_L*p_L;
-  M[1] = T(0);
-  M[4] = M[1];
-  M[2] = c1*c2*p_L*p_l1*p_m1 + c3*c4*c5*p_L*p_l1*p_m1;
-  M[8] = M[2];
-  M[3] = c2*c6*p_L*p_l2*p_m2 + c5*c7*c8*p_L*p_l2*p_m2;
-  M[12] = M[3];
-  M[5] = c0*c2*c2*p_L*p_L;
-  M[6] = -c2*c4*c7*p_L*p_l1*p_m1;
-  M[9] = M[6];
-  M[7] = c2*c3*c8*p_L*p_l2*p_m2;
-  M[13] = M[7];
-  M[10] = p_l1*p_l1*p_m1;
-  M[11] = T(0);
-  M[14] = M[11];
-  M[15] = p_l2*p_l2*p_m2;
-  T ddq[4];
-  ddq[0] = c0*c2*c5*dq_psi*dq_psi*p_L*p_L - c0*c2*p_L*p_g + c1*c3*c5*dq_a*dq_a*p_L*p_l1*p_m1 - c2*c4*dq_a*dq_a*p_L*p_l1*p_m1 - c2*c8*dq_b*dq_b*p_L*p_l2*p_m2 + c3*c5*p_L*u_F + c5*c6*c7*dq_b*dq_b*p_L*p_l2*p_m2;
-  ddq[1] = -T(2)*c0*c2*c5*dq_psi*dq_theta*p_L*p_L - c1*c2*c7*dq_a*dq_a*p_L*p_l1*p_m1 + c2*c3*c6*dq_b*dq_b*p_L*p_l2*p_m2 - c2*c7*p_L*u_F;
-  ddq[2] = T(2)*c4*c5*c7*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c5*dq_theta*dq_theta*p_L*p_l1*p_m1 - c1*p_g*p_l1*p_m1 + c2*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 + c2*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 + c4*p_l1*u_F - dq_a*p_c;
-  ddq[3] = -T(2)*c3*c5*c8*dq_psi*dq_theta*p_L*p_l2*p_m2 + c2*c7*c8*dq_psi*dq_psi*p_L*p_l2*p_m2 + c2*c7*c8*dq_theta*dq_theta*p_L*p_l2*p_m2 - c5*c6*dq_theta*dq_theta*p_L*p_l2*p_m2 - c6*p_g*p_l2*p_m2 - dq_b*p_c;
+  mass_matrix(t, x, p, M);
   T L[16];
   T D[4];
   detail::ldlt_factor(M, L, D);
-  detail::ldlt_solve(L, D, ddq);
-  const T c9 = c5*c5;
-  const T c10 = c2*c7*c8*p_L*p_l2*p_m2 - c5*c6*p_L*p_l2*p_m2;
-  const T c11 = c2*c2;
-  const T c12 = c1*c5*p_L*p_l1*p_m1 - c2*c3*c4*p_L*p_l1*p_m1;
-  const T c13 = c1*c5*c7*dq_a*dq_a*p_L*p_l1*p_m1;
-  const T c14 = c5*c7*p_L*u_F;
-  const T c15 = -c3*c5*c6*dq_b*dq_b*p_L*p_l2*p_m2;
-  const T c16 = -c4*c5*c7*ddq[2]*p_L*p_l1*p_m1;
-  const T c17 = c3*c5*c8*ddq[3]*p_L*p_l2*p_m2;
-  const T c18 = c1*c3*c5*p_L*p_l1*p_m1 - c2*c4*p_L*p_l1*p_m1;
-  const T c19 = -c2*c8*p_L*p_l2*p_m2 + c5*c6*c7*p_L*p_l2*p_m2;
-  J[0] = T(0);
-  J[1] = T(0);
-  J[2] = T(0);
-  J[3] = T(0);
-  J[4] = T(1);
-  J[5] = T(0);
-  J[6] = T(0);
-  J[7] = T(0);
-  J[8] = T(0);
-  J[9] = T(0);
-  J[10] = T(0);
-  J[11] = T(0);
-  J[12] = T(0);
-  J[13] = T(1);
-  J[14] = T(0);
-  J[15] = T(0);
-  J[16] = T(0);
-  J[17] = T(0);
-  J[18] = T(0);
-  J[19] = T(0);
-  J[20] = T(0);
-  J[21] = T(0);
-  J[22] = T(1);
-  J[23] = T(0);
-  J[24] = T(0);
-  J[25] = T(0);
-  J[26] = T(0);
-  J[27] = T(0);
-  J[28] = T(0);
-  J[29] = T(0);
-  J[30] = T(0);
-  J[31] = T(1);
+  T F[36];
+  detail::forcing_gradient(t, x, u, p, F);
+  const T c0 = sin(q_a);
+  const T c1 = cos(q_theta);
+  const T c2 = sin(q_theta);
+  const T c3 = cos(q_psi);
+  const T c4 = cos(q_a);
+  const T c5 = c0*c1*p_L*p_l1*p_m1 - c2*c3*c4*p_L*p_l1*p_m1;
+  const T c6 = sin(q_b);
+  const T c7 = sin(q_psi);
+  const T c8 = cos(q_b);
+  const T c9 = -c1*c6*p_L*p_l2*p_m2 + c2*c7*c8*p_L*p_l2*p_m2;
+  const T c10 = -c1*c4*c7*p_L*p_l1*p_m1*xdot[6];
+  const T c11 = c1*c3*c8*p_L*p_l2*p_m2*xdot[7];
+  const T c12 = c0*c1*c3*p_L*p_l1*p_m1 - c2*c4*p_L*p_l1*p_m1;
+  const T c13 = c1*c6*c7*p_L*p_l2*p_m2 - c2*c8*p_L*p_l2*p_m2;
+  F[0] = F[0] + -c5*xdot[6] + c9*xdot[7];
+  F[1] = F[1] + -c10 - c11;
+  F[2] = F[2] + c12*xdot[6];
+  F[3] = F[3] + c13*xdot[7];
+  F[9] = F[9] + -T(2)*(p_m0 + p_m1 + p_m2)*c1*c2*p_L*p_L*xdot[5] - c10 - c11;
+  F[10] = F[10] + c2*c3*c4*p_L*p_l1*p_m1*xdot[6] + c2*c7*c8*p_L*p_l2*p_m2*xdot[7];
+  F[11] = F[11] + -c0*c2*c7*p_L*p_l1*p_m1*xdot[6];
+  F[12] = F[12] + c2*c3*c6*p_L*p_l2*p_m2*xdot[7];
+  F[18] = F[18] + c1*c4*c7*p_L*p_l1*p_m1*xdot[5] - c5*xdot[4];
+  F[19] = F[19] + c1*c4*c7*p_L*p_l1*p_m1*xdot[4] + c2*c3*c4*p_L*p_l1*p_m1*xdot[5];
+  F[20] = F[20] + -c0*c2*c7*p_L*p_l1*p_m1*xdot[5] + c12*xdot[4];
+  F[27] = F[27] + -c1*c3*c8*p_L*p_l2*p_m2*xdot[5] + c9*xdot[4];
+  F[28] = F[28] + -c1*c3*c8*p_L*p_l2*p_m2*xdot[4] + c2*c7*c8*p_L*p_l2*p_m2*xdot[5];
+  F[30] = F[30] + c13*xdot[4] + c2*c3*c6*p_L*p_l2*p_m2*xdot[5];
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 8; ++j) J[i * 8 + j] = T(j == 4 + i ? 1 : 0);
   T column[4];
-  column[0] = -c0*c11*dq_psi*dq_psi*p_L*p_L - c0*c5*p_L*p_g + c0*c9*dq_psi*dq_psi*p_L*p_L - c1*c2*c3*dq_a*dq_a*p_L*p_l1*p_m1 + c10*ddq[3] - c12*ddq[2] - c2*c3*p_L*u_F - c2*c6*c7*dq_b*dq_b*p_L*p_l2*p_m2 - c4*c5*dq_a*dq_a*p_L*p_l1*p_m1 - c5*c8*dq_b*dq_b*p_L*p_l2*p_m2;
-  column[1] = T(2)*c0*c11*dq_psi*dq_theta*p_L*p_L - T(2)*c0*c2*c5*ddq[1]*p_L*p_L - T(2)*c0*c9*dq_psi*dq_theta*p_L*p_L - c13 - c14 - c15 - c16 - c17;
-  column[2] = -T(2)*c2*c4*c7*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c2*dq_theta*dq_theta*p_L*p_l1*p_m1 - c12*ddq[0] + c3*c4*c5*dq_psi*dq_psi*p_L*p_l1*p_m1 + c3*c4*c5*dq_theta*dq_theta*p_L*p_l1*p_m1 + c4*c5*c7*ddq[1]*p_L*p_l1*p_m1;
-  column[3] = T(2)*c2*c3*c8*dq_psi*dq_theta*p_L*p_l2*p_m2 + c10*ddq[0] + c2*c6*dq_theta*dq_theta*p_L*p_l2*p_m2 - c3*c5*c8*ddq[1]*p_L*p_l2*p_m2 + c5*c7*c8*dq_psi*dq_psi*p_L*p_l2*p_m2 + c5*c7*c8*dq_theta*dq_theta*p_L*p_l2*p_m2;
-  detail::ldlt_solve(L, D, column);
-  J[32] = column[0];
-  J[40] = column[1];
-  J[48] = column[2];
-  J[56] = column[3];
-  column[0] = -c13 - c14 - c15 - c16 - c17;
-  column[1] = -c1*c2*c3*dq_a*dq_a*p_L*p_l1*p_m1 + c2*c3*c4*ddq[2]*p_L*p_l1*p_m1 - c2*c3*p_L*u_F - c2*c6*c7*dq_b*dq_b*p_L*p_l2*p_m2 + c2*c7*c8*ddq[3]*p_L*p_l2*p_m2;
-  column[2] = T(2)*c3*c4*c5*dq_psi*dq_theta*p_L*p_l1*p_m1 + c2*c3*c4*ddq[1]*p_L*p_l1*p_m1 - c2*c4*c7*dq_psi*dq_psi*p_L*p_l1*p_m1 - c2*c4*c7*dq_theta*dq_theta*p_L*p_l1*p_m1 + c4*c5*c7*ddq[0]*p_L*p_l1*p_m1;
-  column[3] = T(2)*c5*c7*c8*dq_psi*dq_theta*p_L*p_l2*p_m2 + c2*c3*c8*dq_psi*dq_psi*p_L*p_l2*p_m2 + c2*c3*c8*dq_theta*dq_theta*p_L*p_l2*p_m2 + c2*c7*c8*ddq[1]*p_L*p_l2*p_m2 - c3*c5*c8*ddq[0]*p_L*p_l2*p_m2;
-  detail::ldlt_solve(L, D, column);
-  J[33] = column[0];
-  J[41] = column[1];
-  J[49] = column[2];
-  J[57] = column[3];
-  column[0] = c1*c2*dq_a*dq_a*p_L*p_l1*p_m1 + c18*ddq[2] + c3*c4*c5*dq_a*dq_a*p_L*p_l1*p_m1;
-  column[1] = -c1*c2*c7*ddq[2]*p_L*p_l1*p_m1 - c2*c4*c7*dq_a*dq_a*p_L*p_l1*p_m1;
-  column[2] = -T(2)*c1*c5*c7*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c2*c3*dq_psi*dq_psi*p_L*p_l1*p_m1 - c1*c2*c3*dq_theta*dq_theta*p_L*p_l1*p_m1 - c1*c2*c7*ddq[1]*p_L*p_l1*p_m1 - c1*p_l1*u_F + c18*ddq[0] - c4*c5*dq_theta*dq_theta*p_L*p_l1*p_m1 - c4*p_g*p_l1*p_m1;
-  column[3] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[34] = column[0];
-  J[42] = column[1];
-  J[50] = column[2];
-  J[58] = column[3];
-  column[0] = c19*ddq[3] + c2*c6*dq_b*dq_b*p_L*p_l2*p_m2 + c5*c7*c8*dq_b*dq_b*p_L*p_l2*p_m2;
-  column[1] = c2*c3*c6*ddq[3]*p_L*p_l2*p_m2 + c2*c3*c8*dq_b*dq_b*p_L*p_l2*p_m2;
-  column[2] = T(0);
-  column[3] = T(2)*c3*c5*c6*dq_psi*dq_theta*p_L*p_l2*p_m2 + c19*ddq[0] + c2*c3*c6*ddq[1]*p_L*p_l2*p_m2 - c2*c6*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 - c2*c6*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c5*c8*dq_theta*dq_theta*p_L*p_l2*p_m2 - c8*p_g*p_l2*p_m2;
-  detail::ldlt_solve(L, D, column);
-  J[35] = column[0];
-  J[43] = column[1];
-  J[51] = column[2];
-  J[59] = column[3];
-  column[0] = T(0);
-  column[1] = -T(2)*c0*c2*c5*dq_psi*p_L*p_L;
-  column[2] = -T(2)*c1*c5*dq_theta*p_L*p_l1*p_m1 + T(2)*c2*c3*c4*dq_theta*p_L*p_l1*p_m1 + T(2)*c4*c5*c7*dq_psi*p_L*p_l1*p_m1;
-  column[3] = T(2)*c2*c7*c8*dq_theta*p_L*p_l2*p_m2 - T(2)*c3*c5*c8*dq_psi*p_L*p_l2*p_m2 - T(2)*c5*c6*dq_theta*p_L*p_l2*p_m2;
-  detail::ldlt_solve(L, D, column);
-  J[36] = column[0];
-  J[44] = column[1];
-  J[52] = column[2];
-  J[60] = column[3];
-  column[0] = T(2)*c0*c2*c5*dq_psi*p_L*p_L;
-  column[1] = -T(2)*c0*c2*c5*dq_theta*p_L*p_L;
-  column[2] = T(2)*c2*c3*c4*dq_psi*p_L*p_l1*p_m1 + T(2)*c4*c5*c7*dq_theta*p_L*p_l1*p_m1;
-  column[3] = T(2)*c2*c7*c8*dq_psi*p_L*p_l2*p_m2 - T(2)*c3*c5*c8*dq_theta*p_L*p_l2*p_m2;
-  detail::ldlt_solve(L, D, column);
-  J[37] = column[0];
-  J[45] = column[1];
-  J[53] = column[2];
-  J[61] = column[3];
-  column[0] = T(2)*c1*c3*c5*dq_a*p_L*p_l1*p_m1 - T(2)*c2*c4*dq_a*p_L*p_l1*p_m1;
-  column[1] = -T(2)*c1*c2*c7*dq_a*p_L*p_l1*p_m1;
-  column[2] = -p_c;
-  column[3] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[38] = column[0];
-  J[46] = column[1];
-  J[54] = column[2];
-  J[62] = column[3];
-  column[0] = -T(2)*c2*c8*dq_b*p_L*p_l2*p_m2 + T(2)*c5*c6*c7*dq_b*p_L*p_l2*p_m2;
-  column[1] = T(2)*c2*c3*c6*dq_b*p_L*p_l2*p_m2;
-  column[2] = T(0);
-  column[3] = -p_c;
-  detail::ldlt_solve(L, D, column);
-  J[39] = column[0];
-  J[47] = column[1];
-  J[55] = column[2];
-  J[63] = column[3];
+  for (std::size_t j = 0; j < 8; ++j) {
+    for (std::size_t i = 0; i < 4; ++i) column[i] = F[i * 9 + j];
+    detail::ldlt_solve(L, D, column);
+    for (std::size_t i = 0; i < 4; ++i) J[(4 + i) * 8 + j] = column[i];
+  }
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -555,80 +525,14 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 /// mass_matrix. P: 4x4; Q: 4x4; B: 4x1; all row-major.
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
-  (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_theta = x[0];
-  const T q_psi = x[1];
-  const T q_a = x[2];
-  const T q_b = x[3];
-  const T dq_theta = x[4];
-  const T dq_psi = x[5];
-  const T dq_a = x[6];
-  const T dq_b = x[7];
-  const T p_m0 = p[0];
-  const T p_m1 = p[1];
-  const T p_m2 = p[2];
-  const T p_L = p[3];
-  const T p_l1 = p[4];
-  const T p_l2 = p[5];
-  const T p_g = p[6];
-  const T p_c = p[7];
-  const T u_F = u[0];
-  const T c0 = p_m0 + p_m1 + p_m2;
-  const T c1 = sin(q_theta);
-  const T c2 = cos(q_theta);
-  const T c3 = sin(q_a);
-  const T c4 = cos(q_psi);
-  const T c5 = cos(q_a);
-  const T c6 = cos(q_b);
-  const T c7 = sin(q_b);
-  const T c8 = sin(q_psi);
-  const T c9 = c2*c2;
-  const T c10 = c1*c4*p_L*u_F;
-  const T c11 = c1*c1;
-  const T c12 = c1*c7*c8*dq_b*dq_b*p_L*p_l2*p_m2;
-  const T c13 = c1*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1;
-  const T c14 = c2*c3*c8*dq_a*dq_a*p_L*p_l1*p_m1;
-  const T c15 = c2*c8*p_L*u_F;
-  const T c16 = -c2*c4*c7*dq_b*dq_b*p_L*p_l2*p_m2;
-  P[0] = T(0);
-  P[1] = -T(2)*c0*c1*c2*dq_psi*p_L*p_L;
-  P[2] = T(2)*c1*c5*dq_a*p_L*p_l1*p_m1 - T(2)*c2*c3*c4*dq_a*p_L*p_l1*p_m1;
-  P[3] = T(2)*c1*c6*dq_b*p_L*p_l2*p_m2 - T(2)*c2*c7*c8*dq_b*p_L*p_l2*p_m2;
-  Q[0] = c0*c11*dq_psi*dq_psi*p_L*p_L + c0*c2*p_L*p_g - c0*c9*dq_psi*dq_psi*p_L*p_L + c10 + c12 + c13 + c2*c5*dq_a*dq_a*p_L*p_l1*p_m1 + c2*c6*dq_b*dq_b*p_L*p_l2*p_m2;
-  Q[1] = c14 + c15 + c16;
-  Q[2] = -c1*c3*dq_a*dq_a*p_L*p_l1*p_m1 - c2*c4*c5*dq_a*dq_a*p_L*p_l1*p_m1;
-  Q[3] = -c1*c7*dq_b*dq_b*p_L*p_l2*p_m2 - c2*c6*c8*dq_b*dq_b*p_L*p_l2*p_m2;
-  B[0] = c2*c4*p_L;
-  P[4] = T(2)*c0*c1*c2*dq_psi*p_L*p_L;
-  P[5] = T(2)*c0*c1*c2*dq_theta*p_L*p_L;
-  P[6] = T(2)*c1*c3*c8*dq_a*p_L*p_l1*p_m1;
-  P[7] = -T(2)*c1*c4*c7*dq_b*p_L*p_l2*p_m2;
-  Q[4] = -T(2)*c0*c11*dq_psi*dq_theta*p_L*p_L + T(2)*c0*c9*dq_psi*dq_theta*p_L*p_L + c14 + c15 + c16;
-  Q[5] = c10 + c12 + c13;
-  Q[6] = c1*c5*c8*dq_a*dq_a*p_L*p_l1*p_m1;
-  Q[7] = -c1*c4*c6*dq_b*dq_b*p_L*p_l2*p_m2;
-  B[1] = -c1*c8*p_L;
-  P[8] = -T(2)*c1*c4*c5*dq_theta*p_L*p_l1*p_m1 + T(2)*c2*c3*dq_theta*p_L*p_l1*p_m1 - T(2)*c2*c5*c8*dq_psi*p_L*p_l1*p_m1;
-  P[9] = -T(2)*c1*c4*c5*dq_psi*p_L*p_l1*p_m1 - T(2)*c2*c5*c8*dq_theta*p_L*p_l1*p_m1;
-  P[10] = p_c;
-  P[11] = T(0);
-  Q[8] = T(2)*c1*c5*c8*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c3*dq_theta*dq_theta*p_L*p_l1*p_m1 - c2*c4*c5*dq_psi*dq_psi*p_L*p_l1*p_m1 - c2*c4*c5*dq_theta*dq_theta*p_L*p_l1*p_m1;
-  Q[9] = -T(2)*c2*c4*c5*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c5*c8*dq_psi*dq_psi*p_L*p_l1*p_m1 + c1*c5*c8*dq_theta*dq_theta*p_L*p_l1*p_m1;
-  Q[10] = T(2)*c2*c3*c8*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 + c1*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 + c2*c5*dq_theta*dq_theta*p_L*p_l1*p_m1 + c3*p_l1*u_F + c5*p_g*p_l1*p_m1;
-  Q[11] = T(0);
-  B[2] = c5*p_l1;
-  P[12] = -T(2)*c1*c6*c8*dq_theta*p_L*p_l2*p_m2 + T(2)*c2*c4*c6*dq_psi*p_L*p_l2*p_m2 + T(2)*c2*c7*dq_theta*p_L*p_l2*p_m2;
-  P[13] = -T(2)*c1*c6*c8*dq_psi*p_L*p_l2*p_m2 + T(2)*c2*c4*c6*dq_theta*p_L*p_l2*p_m2;
-  P[14] = T(0);
-  P[15] = p_c;
-  Q[12] = -T(2)*c1*c4*c6*dq_psi*dq_theta*p_L*p_l2*p_m2 - c1*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c2*c6*c8*dq_psi*dq_psi*p_L*p_l2*p_m2 - c2*c6*c8*dq_theta*dq_theta*p_L*p_l2*p_m2;
-  Q[13] = -T(2)*c2*c6*c8*dq_psi*dq_theta*p_L*p_l2*p_m2 - c1*c4*c6*dq_psi*dq_psi*p_L*p_l2*p_m2 - c1*c4*c6*dq_theta*dq_theta*p_L*p_l2*p_m2;
-  Q[14] = T(0);
-  Q[15] = -T(2)*c2*c4*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c7*c8*dq_psi*dq_psi*p_L*p_l2*p_m2 + c1*c7*c8*dq_theta*dq_theta*p_L*p_l2*p_m2 + c2*c6*dq_theta*dq_theta*p_L*p_l2*p_m2 + c6*p_g*p_l2*p_m2;
-  B[3] = T(0);
+  (void)B;
+  T F[36];
+  detail::forcing_gradient(t, x, u, p, F);
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t j = 0; j < 4; ++j) P[i * 4 + j] = -F[i * 9 + 4 + j];
+    for (std::size_t j = 0; j < 4; ++j) Q[i * 4 + j] = -F[i * 9 + j];
+    for (std::size_t j = 0; j < 1; ++j) B[i * 1 + j] = F[i * 9 + 8 + j];
+  }
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "common/version.hpp"
+#include "emit/cpp_articulated.hpp"
 #include "emit/cpp_body_writer.hpp"
 #include "emit/cpp_constraints.hpp"
 #include "emit/cpp_expression.hpp"
@@ -58,21 +59,6 @@ void coordinate_rates(BodyWriter& w, const Equations& e, const std::string& targ
   }
   auto rates = w.batch(e.coordinate_rates);
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("{}[{}] = {};", target, i, rates[i]));
-}
-
-// q'' by the articulated-body recursion of a tree of particles (derive/articulated_bodies.hpp):
-// O(n) code, without forming or factoring M
-std::string articulated_rhs_function(const Equations& e) {
-  std::size_t n = e.symbols.num_coordinates();
-  BodyWriter w(e);
-  auto ddq = w.batch(e.articulated_accelerations);
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, ddq[i]));
-  return function(fmt::format("/// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' = M^-1 f by the\n"
-                              "/// articulated-body recursion of the particles' tree (O(n), without forming M).\n"
-                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
-                              2 * n),
-                  "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
 std::string rhs_function(const Equations& e) {
@@ -182,6 +168,7 @@ std::vector<std::vector<ex>> newton_euler_rows(const Equations& e, BodyWriter& w
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
   if (e.solves_for_velocities()) return momentum_jacobian_state_function(e);
+  if (!e.articulated_accelerations.empty()) return articulated_jacobian_state_function(e);
   const Symbols& s = e.symbols;
   std::size_t nq = s.num_coordinates(), n = e.num_velocities(), N = nq + n;
   BodyWriter w(e);
@@ -272,6 +259,7 @@ std::string jacobian_input_function(const Equations& e) {
 // M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3): P = -df/dq', Q = -df/dq, B = df/du
 std::string linearization_function(const Equations& e) {
   if (e.solves_for_velocities()) return momentum_linearization_function(e);
+  if (!e.articulated_accelerations.empty()) return articulated_linearization_function(e);
   const Symbols& s = e.symbols;
   std::size_t n = e.forcing.size(), nq = s.num_coordinates(), m = s.inputs.size();
   BodyWriter w(e);
@@ -351,11 +339,37 @@ std::string first_integrals_function(const Equations& e) {
                         w.finish("(void)t; (void)x; (void)p; (void)out;"));
 }
 
-// L D L^T of a symmetric positive definite n×n matrix, unrolled:
+// the same factorization and solve as loops: unrolled, their code grows as n³ and n² (108 KB
+// for the factor at n = 30); the loops were 18 % slower at n = 16 and as fast at n = 30
+// (the planar chain's rhs in the mass-matrix form, tests/benchmarks/rhs_benchmark.cpp)
+constexpr std::size_t ldlt_unrolled_up_to = 24;
+
+void ldlt_loops(std::size_t n, std::string& factor, std::string& solve) {
+  factor = fmt::format(
+      "  for (std::size_t j = 0; j < {0}; ++j) {{\n"
+      "    T d = M[j * {0} + j];\n"
+      "    for (std::size_t k = 0; k < j; ++k) d = d - L[j * {0} + k] * L[j * {0} + k] * D[k];\n"
+      "    D[j] = d;\n"
+      "    for (std::size_t i = j + 1; i < {0}; ++i) {{\n"
+      "      T l = M[i * {0} + j];\n"
+      "      for (std::size_t k = 0; k < j; ++k) l = l - L[i * {0} + k] * L[j * {0} + k] * D[k];\n"
+      "      L[i * {0} + j] = l / d;\n"
+      "    }}\n"
+      "  }}\n", n);
+  solve = fmt::format(
+      "  for (std::size_t i = 1; i < {0}; ++i)\n"
+      "    for (std::size_t k = 0; k < i; ++k) b[i] = b[i] - L[i * {0} + k] * b[k];\n"
+      "  for (std::size_t i = 0; i < {0}; ++i) b[i] = b[i] / D[i];\n"
+      "  for (std::size_t i = {0} - 1; i-- > 0;)\n"
+      "    for (std::size_t k = i + 1; k < {0}; ++k) b[i] = b[i] - L[k * {0} + i] * b[k];\n", n);
+}
+
+// L D L^T of a symmetric positive definite n×n matrix, unrolled up to ldlt_unrolled_up_to:
 // D_j = M_jj − Σ_{k<j} L_jk² D_k,  L_ij = (M_ij − Σ_{k<j} L_ik L_jk D_k) / D_j
 std::string ldlt_functions(std::size_t n) {
   std::string factor, solve;
-  for (std::size_t j = 0; j < n; ++j) {
+  if (n > ldlt_unrolled_up_to) ldlt_loops(n, factor, solve);
+  for (std::size_t j = 0; j < n && n <= ldlt_unrolled_up_to; ++j) {
     std::string d = fmt::format("M[{}]", j * n + j);
     for (std::size_t k = 0; k < j; ++k) d += fmt::format(" - L[{0}]*L[{0}]*D[{1}]", j * n + k, k);
     factor += fmt::format("  D[{}] = {};\n", j, d);
@@ -365,13 +379,13 @@ std::string ldlt_functions(std::size_t n) {
       factor += fmt::format("  L[{}] = ({})/D[{}];\n", i * n + j, l, j);
     }
   }
-  for (std::size_t i = 1; i < n; ++i) {
+  for (std::size_t i = 1; i < n && n <= ldlt_unrolled_up_to; ++i) {
     std::string y = fmt::format("b[{}]", i);
     for (std::size_t k = 0; k < i; ++k) y += fmt::format(" - L[{}]*b[{}]", i * n + k, k);
     solve += fmt::format("  b[{}] = {};\n", i, y);
   }
-  for (std::size_t i = 0; i < n; ++i) solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
-  for (std::size_t i = n - 1; i-- > 0;) {
+  for (std::size_t i = 0; i < n && n <= ldlt_unrolled_up_to; ++i) solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
+  for (std::size_t i = n - 1; i-- > 0 && n <= ldlt_unrolled_up_to;) {
     std::string x = fmt::format("b[{}]", i);
     for (std::size_t k = i + 1; k < n; ++k) x += fmt::format(" - L[{}]*b[{}]", k * n + i, k);
     solve += fmt::format("  b[{}] = {};\n", i, x);
@@ -382,13 +396,13 @@ std::string ldlt_functions(std::size_t n) {
       "/// inputs can be called with u = nullptr.\n"
       "template <class T>\nstruct input_type {{\n  using type = T;\n}};\n"
       "template <class T>\nusing input_t = typename input_type<T>::type;\n\n"
-      "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix, unrolled.\n"
+      "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix{3}.\n"
       "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n"
       "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
       "/// Solves L D L^T x = b in place. b: {0}.\n"
       "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n"
       "}}  // namespace detail\n\n",
-      n, factor, solve);
+      n, factor, solve, n <= ldlt_unrolled_up_to ? ", unrolled" : "");
 }
 
 std::string cyclic_list(const Equations& e) {
@@ -452,7 +466,7 @@ std::string emit_cpp_header(const Equations& e) {
       : !e.articulated_accelerations.empty()
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
             "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix and forcing "
-            "give M and f, jacobian_state and linearization differentiate them."
+            "give M and f; jacobian_state takes q'' from rhs and M from mass_matrix."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k);
   out += fmt::format(
