@@ -152,11 +152,11 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_cr = p[10];
   const T p_cw = p[11];
   const T u_F = u[0];
+  f[0] = -dq_x*dq_x*p_cw + u_F;
   const T c0 = sin(q_theta);
   const T c1 = -p_a*p_kf + p_b*p_kr;
   const T c2 = p_a*p_cf - p_b*p_cr;
   const T c3 = cos(q_theta);
-  f[0] = -dq_x*dq_x*p_cw + u_F;
   f[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c0*c1 + c2*c3*dq_theta;
   f[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*c3*c3*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c3 - c1*c3*q_z + c2*c3*dq_z - p_h*u_F;
 }

@@ -111,16 +111,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T q_beta = x[1];
   const T p_A = p[0];
   const T p_C = p[1];
-  const T c0 = sin(q_beta);
-  M[0] = c0*c0*p_C + cos(q_beta)*cos(q_beta)*p_A;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c0*p_C;
-  M[6] = M[2];
   M[4] = p_A;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
+  const T c0 = sin(q_beta);
+  M[0] = c0*c0*p_C + cos(q_beta)*cos(q_beta)*p_A;
+  M[2] = c0*p_C;
+  M[6] = M[2];
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.

@@ -111,16 +111,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T q_theta = x[1];
   const T p_A = p[0];
   const T p_C = p[1];
-  const T c0 = cos(q_theta);
-  M[0] = c0*c0*p_C + p_A*sin(q_theta)*sin(q_theta);
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c0*p_C;
-  M[6] = M[2];
   M[4] = p_A;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
+  const T c0 = cos(q_theta);
+  M[0] = c0*c0*p_C + p_A*sin(q_theta)*sin(q_theta);
+  M[2] = c0*p_C;
+  M[6] = M[2];
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -139,10 +139,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_C = p[1];
   const T c0 = -p_A + p_C;
   const T c1 = sin(q_theta);
+  f[2] = c1*dq_psi*dq_theta*p_C;
   const T c2 = cos(q_theta);
   f[0] = T(2)*c0*c1*c2*dq_psi*dq_theta + c1*dq_phi*dq_theta*p_C;
   f[1] = -c0*c1*c2*dq_psi*dq_psi - c1*dq_phi*dq_psi*p_C;
-  f[2] = c1*dq_psi*dq_theta*p_C;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].

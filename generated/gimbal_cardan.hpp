@@ -115,22 +115,22 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_A = p[0];
   const T p_B = p[1];
   const T p_C = p[2];
+  M[5] = T(0);
+  M[7] = M[5];
+  M[8] = p_C;
   const T c0 = cos(q_beta);
   const T c1 = c0*c0;
   const T c2 = cos(q_gamma);
   const T c3 = c2*c2;
   const T c4 = sin(q_beta);
-  const T c5 = sin(q_gamma);
-  const T c6 = c5*c5;
-  M[0] = c1*c3*p_A + c1*c6*p_B + c4*c4*p_C;
-  M[1] = (p_A - p_B)*c0*c2*c5;
-  M[3] = M[1];
   M[2] = c4*p_C;
   M[6] = M[2];
+  const T c5 = sin(q_gamma);
+  M[1] = (p_A - p_B)*c0*c2*c5;
+  M[3] = M[1];
+  const T c6 = c5*c5;
+  M[0] = c1*c3*p_A + c1*c6*p_B + c4*c4*p_C;
   M[4] = c3*p_B + c6*p_A;
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = p_C;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -161,9 +161,9 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c6 = c5*c5;
   const T c7 = sin(q_gamma);
   const T c8 = c7*c7;
+  f[1] = -(p_A - p_C)*c3*c4*c6*dq_alpha*dq_alpha - (p_B - p_C)*c3*c4*c8*dq_alpha*dq_alpha + T(2)*c0*c5*c7*dq_beta*dq_gamma - c1*c4*c8*dq_alpha*dq_gamma + c2*c4*c6*dq_alpha*dq_gamma + c5*u_My + c7*u_Mx;
   const T c9 = c4*c4;
   f[0] = (T(2)*p_A - p_C)*c3*c4*c6*dq_alpha*dq_beta + (T(2)*p_B - p_C)*c3*c4*c8*dq_alpha*dq_beta - T(2)*c0*c5*c7*c9*dq_alpha*dq_gamma - c0*c3*c5*c7*dq_beta*dq_beta + c1*c4*c6*dq_beta*dq_gamma - c2*c4*c8*dq_beta*dq_gamma - c3*c4*dq_alpha*dq_beta*p_C + c3*u_Mz + c4*c5*u_Mx - c4*c7*u_My;
-  f[1] = -(p_A - p_C)*c3*c4*c6*dq_alpha*dq_alpha - (p_B - p_C)*c3*c4*c8*dq_alpha*dq_alpha + T(2)*c0*c5*c7*dq_beta*dq_gamma - c1*c4*c8*dq_alpha*dq_gamma + c2*c4*c6*dq_alpha*dq_gamma + c5*u_My + c7*u_Mx;
   f[2] = -c0*c4*c6*dq_alpha*dq_beta + c0*c4*c8*dq_alpha*dq_beta + c0*c5*c7*c9*dq_alpha*dq_alpha - c0*c5*c7*dq_beta*dq_beta - c4*dq_alpha*dq_beta*p_C + u_Mz;
 }
 

@@ -116,17 +116,17 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_s = p[1];
   const T p_A = p[2];
   const T p_C = p[3];
-  const T c0 = cos(q_theta);
-  const T c1 = p_A + p_m*p_s*p_s;
-  M[0] = c0*c0*p_C + c1*sin(q_theta)*sin(q_theta);
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c0*p_C;
-  M[6] = M[2];
-  M[4] = c1;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
+  const T c0 = cos(q_theta);
+  M[2] = c0*p_C;
+  M[6] = M[2];
+  const T c1 = p_A + p_m*p_s*p_s;
+  M[0] = c0*c0*p_C + c1*sin(q_theta)*sin(q_theta);
+  M[4] = c1;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -147,11 +147,11 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_C = p[3];
   const T p_g = p[4];
   const T c0 = sin(q_theta);
+  f[2] = c0*dq_psi*dq_theta*p_C;
   const T c1 = p_A - p_C + p_m*p_s*p_s;
   const T c2 = cos(q_theta);
   f[0] = -T(2)*c0*c1*c2*dq_psi*dq_theta + c0*dq_phi*dq_theta*p_C;
   f[1] = c0*c1*c2*dq_psi*dq_psi - c0*dq_phi*dq_psi*p_C + c0*p_g*p_m*p_s;
-  f[2] = c0*dq_psi*dq_theta*p_C;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].

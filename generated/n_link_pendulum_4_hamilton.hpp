@@ -202,12 +202,12 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c10 = c2*cos(-q_phi2) + c3*sin(-q_phi2);
   const T c11 = c2*c5 + c3*c4;
   const T c12 = c2*c7 + c3*c6;
+  f[0] = -(p_m1 + p_m2 + p_m3 + p_m4)*c2*p_g*p_l1 - c0*c11*p_l1*p_l3*qd[0]*qd[2] - c1*c10*p_l1*p_l2*qd[0]*qd[1] - c12*p_l1*p_l4*p_m4*qd[0]*qd[3];
   const T c13 = c4*c9 + c5*c8;
   const T c14 = c6*c9 + c7*c8;
+  f[1] = -c0*c13*p_l2*p_l3*qd[1]*qd[2] + c1*c10*p_l1*p_l2*qd[0]*qd[1] - c1*c8*p_g*p_l2 - c14*p_l2*p_l4*p_m4*qd[1]*qd[3];
   const T c15 = sin(q_phi3);
   const T c16 = c15*c7 + c6*cos(q_phi3);
-  f[0] = -(p_m1 + p_m2 + p_m3 + p_m4)*c2*p_g*p_l1 - c0*c11*p_l1*p_l3*qd[0]*qd[2] - c1*c10*p_l1*p_l2*qd[0]*qd[1] - c12*p_l1*p_l4*p_m4*qd[0]*qd[3];
-  f[1] = -c0*c13*p_l2*p_l3*qd[1]*qd[2] + c1*c10*p_l1*p_l2*qd[0]*qd[1] - c1*c8*p_g*p_l2 - c14*p_l2*p_l4*p_m4*qd[1]*qd[3];
   f[2] = c0*c11*p_l1*p_l3*qd[0]*qd[2] + c0*c13*p_l2*p_l3*qd[1]*qd[2] - c0*c15*p_g*p_l3 - c16*p_l3*p_l4*p_m4*qd[2]*qd[3];
   f[3] = c12*p_l1*p_l4*p_m4*qd[0]*qd[3] + c14*p_l2*p_l4*p_m4*qd[1]*qd[3] + c16*p_l3*p_l4*p_m4*qd[2]*qd[3] - p_g*p_l4*p_m4*sin(q_phi4);
 }

@@ -107,16 +107,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
   const T p_m = p[0];
   const T p_R = p[1];
-  const T c0 = T(7)*p_R*p_R*p_m/T(5);
-  M[0] = c0;
   M[1] = T(0);
   M[3] = M[1];
   M[2] = T(0);
   M[6] = M[2];
-  M[4] = c0;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = T(2)*p_R*p_R*p_m/T(5);
+  const T c0 = T(7)*p_R*p_R*p_m/T(5);
+  M[0] = c0;
+  M[4] = c0;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.

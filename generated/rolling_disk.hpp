@@ -112,16 +112,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T q_theta = x[3];
   const T p_m = p[0];
   const T p_R = p[1];
-  const T c0 = cos(q_theta);
-  M[0] = T(5)*c0*c0*p_R*p_R*p_m/T(4) + p_R*p_R*p_m/T(4);
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = T(3)*c0*p_R*p_R*p_m/T(2);
-  M[6] = M[2];
   M[4] = T(5)*p_R*p_R*p_m/T(4);
   M[5] = T(0);
   M[7] = M[5];
   M[8] = T(3)*p_R*p_R*p_m/T(2);
+  const T c0 = cos(q_theta);
+  M[0] = T(5)*c0*c0*p_R*p_R*p_m/T(4) + p_R*p_R*p_m/T(4);
+  M[2] = T(3)*c0*p_R*p_R*p_m/T(2);
+  M[6] = M[2];
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -140,10 +140,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_R = p[1];
   const T p_g = p[2];
   const T c0 = sin(q_theta);
+  f[2] = T(5)*c0*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
   const T c1 = cos(q_theta);
   f[0] = T(5)*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2) + c0*dq_phi*dq_theta*p_R*p_R*p_m/T(2);
   f[1] = -T(3)*c0*dq_phi*dq_psi*p_R*p_R*p_m/T(2) - T(5)*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m/T(4) - c1*p_R*p_g*p_m;
-  f[2] = T(5)*c0*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
 }
 
 /// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].

@@ -116,22 +116,22 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_A = p[1];
   const T p_B = p[2];
   const T p_C = p[3];
+  M[5] = T(0);
+  M[7] = M[5];
+  M[8] = p_C;
   const T c0 = sin(q_psi);
   const T c1 = c0*c0;
   const T c2 = cos(q_theta);
   const T c3 = c2*c2;
   const T c4 = cos(q_psi);
-  const T c5 = c4*c4;
-  const T c6 = sin(q_theta);
-  M[0] = c1*c3*p_B + c3*c5*p_A + c6*c6*p_C;
   M[1] = (p_A - p_B)*c0*c2*c4;
   M[3] = M[1];
+  const T c5 = c4*c4;
+  M[4] = c1*p_A + c5*p_B;
+  const T c6 = sin(q_theta);
+  M[0] = c1*c3*p_B + c3*c5*p_A + c6*c6*p_C;
   M[2] = c6*p_C;
   M[6] = M[2];
-  M[4] = c1*p_A + c5*p_B;
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = p_C;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.

@@ -208,11 +208,11 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_m1 = p[2];
   const T p_m2 = p[3];
   const T p_g = p[5];
+  f[2] = T(0);
   const T c0 = cos(q_beta);
   const T c1 = c0*sin(-q_phi) + cos(-q_phi)*sin(q_beta);
   f[0] = -(T(2)*p_m2 + p_m1)*cos(q_phi)*p_g*p_r/T(2) + c1*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
   f[1] = -c0*p_g*p_l*p_m2/T(2) - c1*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
-  f[2] = T(0);
 }
 
 /// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' from the augmented system

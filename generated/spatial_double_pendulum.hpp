@@ -178,22 +178,22 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T k_upper_Jo_x = c4*c6*c8*k_lower_Jd_y - c4*c6*c8*k_lower_Jd_z - c6*c8*k_lower_h_z*p_l;
   const T k_upper_Jo_y = -c4*c5*c6*k_lower_Jd_y + c4*c5*c6*k_lower_Jd_z + c5*c6*k_lower_h_z*p_l;
   const T k_upper_Jo_z = -c14*c5*c8*k_lower_Jd_y - c5*c8*c9*k_lower_Jd_z + c5*c8*k_lower_Jd_x;
-  M[0] = c1*k_upper_Jd_z*k_upper_W_a1_z + c1*k_upper_Jo_x*k_upper_W_a1_y + c3*k_upper_Jd_y*k_upper_W_a1_y + c3*k_upper_Jo_x*k_upper_W_a1_z;
-  M[1] = k_upper_Jo_y*k_upper_W_a1_z + k_upper_Jo_z*k_upper_W_a1_y;
-  M[4] = M[1];
-  M[2] = c4*k_lower_Jd_z*k_lower_W_a1_z + c6*k_lower_Jd_y*k_lower_W_a1_y + c6*k_lower_Rxx*k_lower_V_a1_x*k_lower_h_z + c6*k_lower_Ryx*k_lower_V_a1_y*k_lower_h_z;
-  M[8] = M[2];
+  M[11] = T(0);
+  M[14] = M[11];
+  M[15] = k_lower_Jd_x;
+  M[10] = c4*k_lower_Jd_z*k_lower_W_a2_z + c6*k_lower_Jd_y*k_lower_W_a2_y;
   M[3] = k_lower_Jd_x*k_lower_W_a1_x - k_lower_Rxy*k_lower_V_a1_x*k_lower_h_z - k_lower_Ryy*k_lower_V_a1_y*k_lower_h_z;
   M[12] = M[3];
-  M[5] = k_upper_Jd_x;
+  M[2] = c4*k_lower_Jd_z*k_lower_W_a1_z + c6*k_lower_Jd_y*k_lower_W_a1_y + c6*k_lower_Rxx*k_lower_V_a1_x*k_lower_h_z + c6*k_lower_Ryx*k_lower_V_a1_y*k_lower_h_z;
+  M[8] = M[2];
   M[6] = c4*k_lower_Jd_z*k_lower_W_b1_z + c6*k_lower_Jd_y*k_lower_W_b1_y + c6*k_lower_Rxx*k_lower_V_b1_x*k_lower_h_z + c6*k_lower_Ryx*k_lower_V_b1_y*k_lower_h_z + c6*k_lower_Rzx*k_lower_V_b1_z*k_lower_h_z;
   M[9] = M[6];
   M[7] = k_lower_Jd_x*k_lower_W_b1_x - k_lower_Rxy*k_lower_V_b1_x*k_lower_h_z - k_lower_Ryy*k_lower_V_b1_y*k_lower_h_z - k_lower_Rzy*k_lower_V_b1_z*k_lower_h_z;
   M[13] = M[7];
-  M[10] = c4*k_lower_Jd_z*k_lower_W_a2_z + c6*k_lower_Jd_y*k_lower_W_a2_y;
-  M[11] = T(0);
-  M[14] = M[11];
-  M[15] = k_lower_Jd_x;
+  M[5] = k_upper_Jd_x;
+  M[0] = c1*k_upper_Jd_z*k_upper_W_a1_z + c1*k_upper_Jo_x*k_upper_W_a1_y + c3*k_upper_Jd_y*k_upper_W_a1_y + c3*k_upper_Jo_x*k_upper_W_a1_z;
+  M[1] = k_upper_Jo_y*k_upper_W_a1_z + k_upper_Jo_z*k_upper_W_a1_y;
+  M[4] = M[1];
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.

@@ -119,9 +119,9 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_m = p[0];
   const T p_l = p[1];
   const T p_g = p[2];
+  f[1] = T(0);
   const T c0 = sin(q_theta);
   f[0] = -c0*p_g*p_l*p_m + cos(q_theta)*s_p_phi*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
-  f[1] = T(0);
 }
 
 /// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].

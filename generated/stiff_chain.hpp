@@ -132,11 +132,11 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_k = p[1];
   const T p_K = p[2];
   const T p_c = p[3];
+  f[0] = -T(2)*p_k*q_x1 + p_k*q_x2;
   const T c0 = p_K + p_k;
   const T c1 = -dq_x3*p_c;
   const T c2 = -c0*q_x3;
   const T c3 = dq_x2*p_c;
-  f[0] = -T(2)*p_k*q_x1 + p_k*q_x2;
   f[1] = -(T(2)*p_k + p_K)*q_x2 - c1 - c2 - c3 + p_k*q_x1;
   f[2] = c0*q_x2 + c1 + c2 + c3;
 }

@@ -42,8 +42,7 @@ std::string forcing_gradient_function(const Equations& e) {
   for (std::size_t i = 0; i < n; ++i)
     for (const ex& d : gradient(e.forcing[i], variables)) entries.push_back(d);
   BodyWriter w(e);
-  auto code = w.batch(entries);
-  for (std::size_t k = 0; k < code.size(); ++k) w.line(fmt::format("F[{}] = {};", k, code[k]));
+  w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
   return "namespace detail {\n\n" +
          function(fmt::format("/// df/d(q, q', u) of M q'' = f. F: {}x{}, row-major.\n", n, variables.size()),
                   "void forcing_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* F)", w.finish(all_unused)) +
@@ -78,8 +77,7 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   w.line("detail::ldlt_factor(M, L, D);");
   w.line(fmt::format("T F[{}];", n * W));
   w.line("detail::forcing_gradient(t, x, u, p, F);");
-  auto code = w.batch(terms);
-  for (std::size_t k = 0; k < code.size(); ++k) w.line(fmt::format("F[{0}] = F[{0}] + {1};", at[k], code[k]));
+  w.assign(terms, [&](std::size_t k, const std::string& code) { return fmt::format("F[{0}] = F[{0}] + {1};", at[k], code); });
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
   w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[i * {0} + j] = T(j == {1} + i ? 1 : 0);", N, n));
   w.line(fmt::format("T column[{}];", n));

@@ -2,6 +2,7 @@
 /// from the plain arrays x, p and u, common subexpressions as local constants.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ class BodyWriter {
   /// For Hamilton's equations in mass-matrix form, the first batch that needs der(q) is
   /// preceded by the solution of M der(q) = p − b into the local array qd.
   std::vector<std::string> batch(const std::vector<GiNaC::ex>& expressions);
+  /// As batch, but writes the statement `assignment(k, code)` of each output k itself, right after
+  /// the last temporary it uses, so that a temporary lives only until its last use.
+  void assign(const std::vector<GiNaC::ex>& expressions,
+              const std::function<std::string(std::size_t, const std::string&)>& assignment);
   /// As batch, but the outputs are returned reduced (in model symbols and temporaries), with
   /// the batch's temporaries, for code that goes on from them (a tangent sweep); `print` writes one.
   CseBatch reduced_batch(const std::vector<GiNaC::ex>& expressions);
@@ -59,6 +64,9 @@ class BodyWriter {
   void note(const GiNaC::ex& e);
   std::string code(const GiNaC::ex& e);
   void define_intermediates(const std::vector<GiNaC::ex>& expressions, CseBatch& written);
+  // the temporaries of a batch and the reduced expressions, before any is written
+  CseBatch unwritten_batch(const std::vector<GiNaC::ex>& expressions);
+  void write_temporary(const Temporary& t);
 
   const Equations& equations_;
   bool velocities_solved_ = false;

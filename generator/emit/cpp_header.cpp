@@ -35,7 +35,14 @@ std::string number_list(const std::vector<double>& values) {
 std::string mass_matrix_function(const Equations& e) {
   std::size_t n = e.forcing.size();
   BodyWriter w(e);
-  write_symmetric(w, w.batch(upper_triangle(e.mass_matrix, n)), n, "M");
+  std::vector<std::pair<std::size_t, std::size_t>> entry;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = j; k < n; ++k) entry.emplace_back(j, k);
+  w.assign(upper_triangle(e.mass_matrix, n), [&](std::size_t at, const std::string& code) {
+    auto [j, k] = entry[at];
+    std::string s = fmt::format("M[{}] = {};", j * n + k, code);
+    return j == k ? s : s + fmt::format("\n  M[{}] = M[{}];", k * n + j, j * n + k);
+  });
   return function(fmt::format("/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.\n"
                               "/// x: num_states; p: num_parameters; M: {}x{}, row-major.\n", n, n),
                   "void mass_matrix(T t, const T* x, const T* p, T* M)", w.finish("(void)t; (void)x; (void)p;"));
@@ -43,10 +50,9 @@ std::string mass_matrix_function(const Equations& e) {
 
 std::string forcing_function(const Equations& e) {
   BodyWriter w(e);
-  auto f = w.batch(e.forcing);
-  for (std::size_t i = 0; i < f.size(); ++i) w.line(fmt::format("f[{}] = {};", i, f[i]));
+  w.assign(e.forcing, [](std::size_t i, const std::string& code) { return fmt::format("f[{}] = {};", i, code); });
   return function(fmt::format("/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.\n"
-                              "/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: {}.\n", f.size()),
+                              "/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: {}.\n", e.forcing.size()),
                   "void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f)", w.finish(all_unused));
 }
 
