@@ -313,10 +313,11 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// df/d(q, q', u) of M q'' = f. F: 4x9, row-major.
+/// d tau/d(q, q', u) of the inverse dynamics tau = M(q) q'' - f(q, q', u), q'' held.
+/// ddq: 4; F: 4x9, row-major.
 template <class T>
-void forcing_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* F) {
-  (void)t; (void)x; (void)u; (void)p;
+void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
+  (void)t; (void)x; (void)u; (void)p; (void)ddq;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
@@ -339,79 +340,69 @@ void forcing_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* F) {
   const T u_F = u[0];
   F[4] = T(0);
   F[21] = T(0);
-  F[24] = -p_c;
+  F[24] = p_c;
   F[25] = T(0);
   F[29] = T(0);
   F[33] = T(0);
-  F[34] = -p_c;
+  F[34] = p_c;
   F[35] = T(0);
   const T c0 = p_m0 + p_m1 + p_m2;
   const T c1 = cos(q_theta);
   const T c2 = c1*c1;
   const T c3 = sin(q_theta);
-  F[5] = T(2)*c0*c1*c3*dq_psi*p_L*p_L;
-  F[13] = -T(2)*c0*c1*c3*dq_psi*p_L*p_L;
-  F[14] = -T(2)*c0*c1*c3*dq_theta*p_L*p_L;
+  F[5] = -T(2)*c0*c1*c3*dq_psi*p_L*p_L;
+  F[13] = T(2)*c0*c1*c3*dq_psi*p_L*p_L;
+  F[14] = T(2)*c0*c1*c3*dq_theta*p_L*p_L;
   const T c4 = cos(q_psi);
-  F[8] = c1*c4*p_L;
-  const T c5 = c3*c4*p_L*u_F;
-  const T c6 = cos(q_a);
-  F[26] = c6*p_l1;
+  F[8] = -c1*c4*p_L;
+  const T c5 = sin(q_b);
+  F[16] = -T(2)*c3*c4*c5*dq_b*p_L*p_l2*p_m2;
+  const T c6 = sin(q_psi);
+  F[17] = c3*c6*p_L;
   const T c7 = cos(q_b);
-  F[12] = c3*c4*c7*dq_b*dq_b*p_L*p_l2*p_m2;
-  const T c8 = c3*c3;
-  const T c9 = sin(q_b);
-  F[16] = T(2)*c3*c4*c9*dq_b*p_L*p_l2*p_m2;
-  const T c10 = sin(q_psi);
-  F[3] = c1*c10*c7*dq_b*dq_b*p_L*p_l2*p_m2 + c3*c9*dq_b*dq_b*p_L*p_l2*p_m2;
-  F[7] = T(2)*c1*c10*c9*dq_b*p_L*p_l2*p_m2 - T(2)*c3*c7*dq_b*p_L*p_l2*p_m2;
-  F[11] = -c10*c3*c6*dq_a*dq_a*p_L*p_l1*p_m1;
-  F[17] = -c10*c3*p_L;
-  F[19] = T(2)*c1*c4*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 - c10*c3*c6*dq_psi*dq_psi*p_L*p_l1*p_m1 - c10*c3*c6*dq_theta*dq_theta*p_L*p_l1*p_m1;
-  F[23] = T(2)*c1*c10*c6*dq_theta*p_L*p_l1*p_m1 + T(2)*c3*c4*c6*dq_psi*p_L*p_l1*p_m1;
-  F[27] = T(2)*c3*c4*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c10*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 + c1*c10*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 + c3*c9*dq_theta*dq_theta*p_L*p_l2*p_m2;
-  F[28] = T(2)*c1*c10*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c3*c4*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 + c3*c4*c7*dq_theta*dq_theta*p_L*p_l2*p_m2;
-  F[30] = T(2)*c1*c4*c9*dq_psi*dq_theta*p_L*p_l2*p_m2 - c1*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c10*c3*c9*dq_psi*dq_psi*p_L*p_l2*p_m2 - c10*c3*c9*dq_theta*dq_theta*p_L*p_l2*p_m2 - c7*p_g*p_l2*p_m2;
-  F[31] = -T(2)*c1*c4*c7*dq_psi*p_L*p_l2*p_m2 - T(2)*c1*c9*dq_theta*p_L*p_l2*p_m2 + T(2)*c10*c3*c7*dq_theta*p_L*p_l2*p_m2;
-  F[32] = -T(2)*c1*c4*c7*dq_theta*p_L*p_l2*p_m2 + T(2)*c10*c3*c7*dq_psi*p_L*p_l2*p_m2;
-  const T c11 = c10*c3*c9*dq_b*dq_b*p_L*p_l2*p_m2;
-  const T c12 = sin(q_a);
-  F[2] = c1*c4*c6*dq_a*dq_a*p_L*p_l1*p_m1 + c12*c3*dq_a*dq_a*p_L*p_l1*p_m1;
-  F[6] = T(2)*c1*c12*c4*dq_a*p_L*p_l1*p_m1 - T(2)*c3*c6*dq_a*p_L*p_l1*p_m1;
-  F[15] = -T(2)*c10*c12*c3*dq_a*p_L*p_l1*p_m1;
-  F[18] = -T(2)*c10*c3*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c4*c6*dq_psi*dq_psi*p_L*p_l1*p_m1 + c1*c4*c6*dq_theta*dq_theta*p_L*p_l1*p_m1 + c12*c3*dq_theta*dq_theta*p_L*p_l1*p_m1;
-  F[20] = -T(2)*c1*c10*c12*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c6*dq_theta*dq_theta*p_L*p_l1*p_m1 - c12*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 - c12*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 - c12*p_l1*u_F - c6*p_g*p_l1*p_m1;
-  F[22] = T(2)*c1*c10*c6*dq_psi*p_L*p_l1*p_m1 - T(2)*c1*c12*dq_theta*p_L*p_l1*p_m1 + T(2)*c3*c4*c6*dq_theta*p_L*p_l1*p_m1;
-  const T c13 = c12*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1;
-  F[0] = -c0*c1*p_L*p_g + c0*c2*dq_psi*dq_psi*p_L*p_L - c0*c8*dq_psi*dq_psi*p_L*p_L - c1*c6*dq_a*dq_a*p_L*p_l1*p_m1 - c1*c7*dq_b*dq_b*p_L*p_l2*p_m2 - c11 - c13 - c5;
-  F[10] = -c11 - c13 - c5;
-  const T c14 = c1*c10*c12*dq_a*dq_a*p_L*p_l1*p_m1;
-  const T c15 = c1*c10*p_L*u_F;
-  const T c16 = -c1*c4*c9*dq_b*dq_b*p_L*p_l2*p_m2;
-  F[1] = -c14 - c15 - c16;
-  F[9] = -T(2)*c0*c2*dq_psi*dq_theta*p_L*p_L + T(2)*c0*c8*dq_psi*dq_theta*p_L*p_L - c14 - c15 - c16;
+  F[7] = -T(2)*c1*c5*c6*dq_b*p_L*p_l2*p_m2 + T(2)*c3*c7*dq_b*p_L*p_l2*p_m2;
+  F[12] = -c3*c4*c5*ddq[3]*p_L*p_l2*p_m2 - c3*c4*c7*dq_b*dq_b*p_L*p_l2*p_m2;
+  F[28] = -T(2)*c1*c6*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c4*c7*ddq[0]*p_L*p_l2*p_m2 - c3*c4*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 - c3*c4*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c3*c6*c7*ddq[1]*p_L*p_l2*p_m2;
+  F[31] = T(2)*c1*c4*c7*dq_psi*p_L*p_l2*p_m2 + T(2)*c1*c5*dq_theta*p_L*p_l2*p_m2 - T(2)*c3*c6*c7*dq_theta*p_L*p_l2*p_m2;
+  F[32] = T(2)*c1*c4*c7*dq_theta*p_L*p_l2*p_m2 - T(2)*c3*c6*c7*dq_psi*p_L*p_l2*p_m2;
+  const T c8 = -c1*c5*p_L*p_l2*p_m2 + c3*c6*c7*p_L*p_l2*p_m2;
+  F[27] = -T(2)*c3*c4*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c4*c7*ddq[1]*p_L*p_l2*p_m2 - c1*c6*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 - c1*c6*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c3*c5*dq_theta*dq_theta*p_L*p_l2*p_m2 - c8*ddq[0];
+  const T c9 = cos(q_a);
+  F[19] = -T(2)*c1*c4*c9*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c6*c9*ddq[0]*p_L*p_l1*p_m1 - c3*c4*c9*ddq[1]*p_L*p_l1*p_m1 + c3*c6*c9*dq_psi*dq_psi*p_L*p_l1*p_m1 + c3*c6*c9*dq_theta*dq_theta*p_L*p_l1*p_m1;
+  F[23] = -T(2)*c1*c6*c9*dq_theta*p_L*p_l1*p_m1 - T(2)*c3*c4*c9*dq_psi*p_L*p_l1*p_m1;
+  F[26] = -c9*p_l1;
+  const T c10 = c3*c3;
+  const T c11 = sin(q_a);
+  F[6] = -T(2)*c1*c11*c4*dq_a*p_L*p_l1*p_m1 + T(2)*c3*c9*dq_a*p_L*p_l1*p_m1;
+  F[10] = c11*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1 - c3*c4*c9*ddq[2]*p_L*p_l1*p_m1 + c3*c4*p_L*u_F + c3*c5*c6*dq_b*dq_b*p_L*p_l2*p_m2 - c3*c6*c7*ddq[3]*p_L*p_l2*p_m2;
+  F[11] = c11*c3*c6*ddq[2]*p_L*p_l1*p_m1 + c3*c6*c9*dq_a*dq_a*p_L*p_l1*p_m1;
+  F[15] = T(2)*c11*c3*c6*dq_a*p_L*p_l1*p_m1;
+  F[22] = T(2)*c1*c11*dq_theta*p_L*p_l1*p_m1 - T(2)*c1*c6*c9*dq_psi*p_L*p_l1*p_m1 - T(2)*c3*c4*c9*dq_theta*p_L*p_l1*p_m1;
+  const T c12 = c1*c11*p_L*p_l1*p_m1 - c3*c4*c9*p_L*p_l1*p_m1;
+  F[0] = c0*c1*p_L*p_g + c0*c10*dq_psi*dq_psi*p_L*p_L - c0*c2*dq_psi*dq_psi*p_L*p_L + c1*c7*dq_b*dq_b*p_L*p_l2*p_m2 + c1*c9*dq_a*dq_a*p_L*p_l1*p_m1 + c11*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1 + c12*ddq[2] + c3*c4*p_L*u_F + c3*c5*c6*dq_b*dq_b*p_L*p_l2*p_m2 - c8*ddq[3];
+  F[18] = T(2)*c3*c6*c9*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c4*c9*dq_psi*dq_psi*p_L*p_l1*p_m1 - c1*c4*c9*dq_theta*dq_theta*p_L*p_l1*p_m1 - c1*c6*c9*ddq[1]*p_L*p_l1*p_m1 - c11*c3*dq_theta*dq_theta*p_L*p_l1*p_m1 + c12*ddq[0];
+  const T c13 = c1*c11*c6*dq_a*dq_a*p_L*p_l1*p_m1;
+  const T c14 = c1*c6*p_L*u_F;
+  const T c15 = -c1*c4*c5*dq_b*dq_b*p_L*p_l2*p_m2;
+  const T c16 = -c1*c6*c9*ddq[2]*p_L*p_l1*p_m1;
+  const T c17 = c1*c4*c7*ddq[3]*p_L*p_l2*p_m2;
+  F[1] = c13 + c14 + c15 + c16 + c17;
+  F[9] = T(2)*c0*c1*c3*ddq[1]*p_L*p_L - T(2)*c0*c10*dq_psi*dq_theta*p_L*p_L + T(2)*c0*c2*dq_psi*dq_theta*p_L*p_L + c13 + c14 + c15 + c16 + c17;
+  const T c18 = c1*c11*c4*p_L*p_l1*p_m1 - c3*c9*p_L*p_l1*p_m1;
+  F[2] = -c1*c4*c9*dq_a*dq_a*p_L*p_l1*p_m1 - c11*c3*dq_a*dq_a*p_L*p_l1*p_m1 - c18*ddq[2];
+  F[20] = T(2)*c1*c11*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c9*dq_theta*dq_theta*p_L*p_l1*p_m1 + c11*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 + c11*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 + c11*c3*c6*ddq[1]*p_L*p_l1*p_m1 + c11*p_l1*u_F - c18*ddq[0] + c9*p_g*p_l1*p_m1;
+  const T c19 = c1*c5*c6*p_L*p_l2*p_m2 - c3*c7*p_L*p_l2*p_m2;
+  F[3] = -c1*c6*c7*dq_b*dq_b*p_L*p_l2*p_m2 - c19*ddq[3] - c3*c5*dq_b*dq_b*p_L*p_l2*p_m2;
+  F[30] = -T(2)*c1*c4*c5*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c19*ddq[0] - c3*c4*c5*ddq[1]*p_L*p_l2*p_m2 + c3*c5*c6*dq_psi*dq_psi*p_L*p_l2*p_m2 + c3*c5*c6*dq_theta*dq_theta*p_L*p_l2*p_m2 + c7*p_g*p_l2*p_m2;
 }
 
 }  // namespace detail
 
-/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is
-/// M^-1 (df/dx - (dM/dq) q''), with q'' from rhs and M from mass_matrix. J: 8x8, row-major.
+/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx
+/// (tau = M q'' - f, q'' held), with q'' from rhs and M from mass_matrix. J: 8x8, row-major.
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_theta = x[0];
-  const T q_psi = x[1];
-  const T q_a = x[2];
-  const T q_b = x[3];
-  const T p_m0 = p[0];
-  const T p_m1 = p[1];
-  const T p_m2 = p[2];
-  const T p_L = p[3];
-  const T p_l1 = p[4];
-  const T p_l2 = p[5];
   T xdot[8];
   rhs(t, x, u, p, xdot);
   T M[16];
@@ -420,40 +411,12 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T D[4];
   detail::ldlt_factor(M, L, D);
   T F[36];
-  detail::forcing_gradient(t, x, u, p, F);
-  const T c0 = sin(q_a);
-  const T c1 = cos(q_theta);
-  const T c2 = sin(q_theta);
-  const T c3 = cos(q_psi);
-  const T c4 = cos(q_a);
-  const T c5 = c0*c1*p_L*p_l1*p_m1 - c2*c3*c4*p_L*p_l1*p_m1;
-  const T c6 = sin(q_b);
-  F[12] = F[12] + c2*c3*c6*p_L*p_l2*p_m2*xdot[7];
-  const T c7 = sin(q_psi);
-  F[11] = F[11] + -c0*c2*c7*p_L*p_l1*p_m1*xdot[6];
-  F[18] = F[18] + c1*c4*c7*p_L*p_l1*p_m1*xdot[5] - c5*xdot[4];
-  F[19] = F[19] + c1*c4*c7*p_L*p_l1*p_m1*xdot[4] + c2*c3*c4*p_L*p_l1*p_m1*xdot[5];
-  const T c8 = cos(q_b);
-  F[10] = F[10] + c2*c3*c4*p_L*p_l1*p_m1*xdot[6] + c2*c7*c8*p_L*p_l2*p_m2*xdot[7];
-  F[28] = F[28] + -c1*c3*c8*p_L*p_l2*p_m2*xdot[4] + c2*c7*c8*p_L*p_l2*p_m2*xdot[5];
-  const T c9 = -c1*c6*p_L*p_l2*p_m2 + c2*c7*c8*p_L*p_l2*p_m2;
-  F[0] = F[0] + -c5*xdot[6] + c9*xdot[7];
-  F[27] = F[27] + -c1*c3*c8*p_L*p_l2*p_m2*xdot[5] + c9*xdot[4];
-  const T c10 = -c1*c4*c7*p_L*p_l1*p_m1*xdot[6];
-  const T c11 = c1*c3*c8*p_L*p_l2*p_m2*xdot[7];
-  F[1] = F[1] + -c10 - c11;
-  F[9] = F[9] + -T(2)*(p_m0 + p_m1 + p_m2)*c1*c2*p_L*p_L*xdot[5] - c10 - c11;
-  const T c12 = c0*c1*c3*p_L*p_l1*p_m1 - c2*c4*p_L*p_l1*p_m1;
-  F[2] = F[2] + c12*xdot[6];
-  F[20] = F[20] + -c0*c2*c7*p_L*p_l1*p_m1*xdot[5] + c12*xdot[4];
-  const T c13 = c1*c6*c7*p_L*p_l2*p_m2 - c2*c8*p_L*p_l2*p_m2;
-  F[3] = F[3] + c13*xdot[7];
-  F[30] = F[30] + c13*xdot[4] + c2*c3*c6*p_L*p_l2*p_m2*xdot[5];
+  detail::inverse_dynamics_gradient(t, x, xdot + 4, u, p, F);
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = 0; j < 8; ++j) J[i * 8 + j] = T(j == 4 + i ? 1 : 0);
   T column[4];
   for (std::size_t j = 0; j < 8; ++j) {
-    for (std::size_t i = 0; i < 4; ++i) column[i] = F[i * 9 + j];
+    for (std::size_t i = 0; i < 4; ++i) column[i] = -F[i * 9 + j];
     detail::ldlt_solve(L, D, column);
     for (std::size_t i = 0; i < 4; ++i) J[(4 + i) * 8 + j] = column[i];
   }
@@ -526,12 +489,13 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)B;
+  const T ddq[4] = {};
   T F[36];
-  detail::forcing_gradient(t, x, u, p, F);
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   for (std::size_t i = 0; i < 4; ++i) {
-    for (std::size_t j = 0; j < 4; ++j) P[i * 4 + j] = -F[i * 9 + 4 + j];
-    for (std::size_t j = 0; j < 4; ++j) Q[i * 4 + j] = -F[i * 9 + j];
-    for (std::size_t j = 0; j < 1; ++j) B[i * 1 + j] = F[i * 9 + 8 + j];
+    for (std::size_t j = 0; j < 4; ++j) P[i * 4 + j] = F[i * 9 + 4 + j];
+    for (std::size_t j = 0; j < 4; ++j) Q[i * 4 + j] = F[i * 9 + j];
+    for (std::size_t j = 0; j < 1; ++j) B[i * 1 + j] = -F[i * 9 + 8 + j];
   }
 }
 

@@ -112,7 +112,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_l1 = p[2];
   const T p_l2 = p[3];
   M[0] = (p_m1 + p_m2)*p_l1*p_l1;
-  M[1] = (cos(-q_phi2)*cos(q_phi1) - sin(-q_phi2)*sin(q_phi1))*p_l1*p_l2*p_m2;
+  M[1] = (cos(q_phi1)*cos(q_phi2) + sin(q_phi1)*sin(q_phi2))*p_l1*p_l2*p_m2;
   M[2] = M[1];
   M[3] = p_l2*p_l2*p_m2;
 }
@@ -136,9 +136,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_g = p[4];
   const T u_tau = u[0];
   const T c0 = sin(q_phi1);
-  const T c1 = c0*cos(-q_phi2) + cos(q_phi1)*sin(-q_phi2);
-  f[0] = -(p_m1 + p_m2)*c0*p_g*p_l1 - c1*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
-  f[1] = c1*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 - p_g*p_l2*p_m2*sin(q_phi2);
+  const T c1 = sin(q_phi2);
+  const T c2 = -c0*cos(q_phi2) + c1*cos(q_phi1);
+  f[0] = -(p_m1 + p_m2)*c0*p_g*p_l1 + c2*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
+  f[1] = -c1*p_g*p_l2*p_m2 - c2*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -161,18 +162,18 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T u_tau = u[0];
   const T c0 = p_m1 + p_m2;
   const T c1 = sin(q_phi1);
-  const T c2 = sin(-q_phi2);
-  const T c3 = cos(q_phi1);
-  const T c4 = cos(-q_phi2);
-  const T c5 = c1*c4 + c2*c3;
+  const T c2 = sin(q_phi2);
+  const T c3 = cos(q_phi2);
+  const T c4 = cos(q_phi1);
+  const T c5 = -c1*c3 + c2*c4;
   T M[4];
   M[0] = c0*p_l1*p_l1;
-  M[1] = -(c1*c2 - c3*c4)*p_l1*p_l2*p_m2;
+  M[1] = (c1*c2 + c3*c4)*p_l1*p_l2*p_m2;
   M[2] = M[1];
   M[3] = p_l2*p_l2*p_m2;
   T ddq[2];
-  ddq[0] = -c0*c1*p_g*p_l1 - c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
-  ddq[1] = c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 - p_g*p_l2*p_m2*sin(q_phi2);
+  ddq[0] = -c0*c1*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
+  ddq[1] = -c2*p_g*p_l2*p_m2 - c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
@@ -203,27 +204,27 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T u_tau = u[0];
   const T c0 = p_m1 + p_m2;
   const T c1 = sin(q_phi1);
-  const T c2 = sin(-q_phi2);
-  const T c3 = cos(q_phi1);
-  const T c4 = cos(-q_phi2);
-  const T c5 = c1*c4 + c2*c3;
+  const T c2 = sin(q_phi2);
+  const T c3 = cos(q_phi2);
+  const T c4 = cos(q_phi1);
+  const T c5 = -c1*c3 + c2*c4;
   T M[4];
   M[0] = c0*p_l1*p_l1;
-  M[1] = -(c1*c2 - c3*c4)*p_l1*p_l2*p_m2;
+  M[1] = (c1*c2 + c3*c4)*p_l1*p_l2*p_m2;
   M[2] = M[1];
   M[3] = p_l2*p_l2*p_m2;
   T ddq[2];
-  ddq[0] = -c0*c1*p_g*p_l1 - c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
-  ddq[1] = c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 - p_g*p_l2*p_m2*sin(q_phi2);
+  ddq[0] = -c0*c1*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
+  ddq[1] = -c2*p_g*p_l2*p_m2 - c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c6 = -c1*c2 + c3*c4;
-  const T c7 = -c6*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
+  const T c6 = c1*c2 + c3*c4;
+  const T c7 = c6*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
   const T c8 = c5*ddq[1]*p_l1*p_l2*p_m2;
   const T c9 = c6*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
-  const T c10 = c5*ddq[0]*p_l1*p_l2*p_m2;
+  const T c10 = -c5*ddq[0]*p_l1*p_l2*p_m2;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1);
@@ -233,22 +234,22 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[6] = T(0);
   J[7] = T(1);
   T column[2];
-  column[0] = -c0*c3*p_g*p_l1 + c7 + c8;
+  column[0] = -c0*c4*p_g*p_l1 - c7 - c8;
   column[1] = c10 + c9;
   detail::ldlt_solve(L, D, column);
   J[8] = column[0];
   J[12] = column[1];
-  column[0] = -c7 - c8;
-  column[1] = -c10 - c9 - cos(q_phi2)*p_g*p_l2*p_m2;
+  column[0] = c7 + c8;
+  column[1] = -c10 - c3*p_g*p_l2*p_m2 - c9;
   detail::ldlt_solve(L, D, column);
   J[9] = column[0];
   J[13] = column[1];
   column[0] = T(0);
-  column[1] = T(2)*c5*dq_phi1*p_l1*p_l2*p_m2;
+  column[1] = -T(2)*c5*dq_phi1*p_l1*p_l2*p_m2;
   detail::ldlt_solve(L, D, column);
   J[10] = column[0];
   J[14] = column[1];
-  column[0] = -T(2)*c5*dq_phi2*p_l1*p_l2*p_m2;
+  column[0] = T(2)*c5*dq_phi2*p_l1*p_l2*p_m2;
   column[1] = T(0);
   detail::ldlt_solve(L, D, column);
   J[11] = column[0];
@@ -271,7 +272,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_l2 = p[3];
   T M[4];
   M[0] = (p_m1 + p_m2)*p_l1*p_l1;
-  M[1] = (cos(-q_phi2)*cos(q_phi1) - sin(-q_phi2)*sin(q_phi1))*p_l1*p_l2*p_m2;
+  M[1] = (cos(q_phi1)*cos(q_phi2) + sin(q_phi1)*sin(q_phi2))*p_l1*p_l2*p_m2;
   M[2] = M[1];
   M[3] = p_l2*p_l2*p_m2;
   T L[4];
@@ -305,21 +306,21 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T p_l1 = p[2];
   const T p_l2 = p[3];
   const T p_g = p[4];
-  const T c0 = cos(q_phi1);
-  const T c1 = sin(-q_phi2);
-  const T c2 = sin(q_phi1);
-  const T c3 = cos(-q_phi2);
-  const T c4 = c0*c1 + c2*c3;
-  const T c5 = c0*c3 - c1*c2;
+  const T c0 = sin(q_phi1);
+  const T c1 = cos(q_phi2);
+  const T c2 = sin(q_phi2);
+  const T c3 = cos(q_phi1);
+  const T c4 = -c0*c1 + c2*c3;
+  const T c5 = c0*c2 + c1*c3;
   P[0] = T(0);
-  P[1] = T(2)*c4*dq_phi2*p_l1*p_l2*p_m2;
-  Q[0] = (p_m1 + p_m2)*c0*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
+  P[1] = -T(2)*c4*dq_phi2*p_l1*p_l2*p_m2;
+  Q[0] = (p_m1 + p_m2)*c3*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
   Q[1] = -c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
   B[0] = T(1);
-  P[2] = -T(2)*c4*dq_phi1*p_l1*p_l2*p_m2;
+  P[2] = T(2)*c4*dq_phi1*p_l1*p_l2*p_m2;
   P[3] = T(0);
   Q[2] = -c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
-  Q[3] = c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 + cos(q_phi2)*p_g*p_l2*p_m2;
+  Q[3] = c1*p_g*p_l2*p_m2 + c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
   B[1] = T(0);
 }
 
@@ -338,7 +339,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T p_m2 = p[1];
   const T p_l1 = p[2];
   const T p_l2 = p[3];
-  return (cos(-q_phi2)*cos(q_phi1) - sin(-q_phi2)*sin(q_phi1))*dq_phi1*dq_phi2*p_l1*p_l2*p_m2 + (p_m1 + p_m2)*dq_phi1*dq_phi1*p_l1*p_l1/T(2) + dq_phi2*dq_phi2*p_l2*p_l2*p_m2/T(2);
+  return (cos(q_phi1)*cos(q_phi2) + sin(q_phi1)*sin(q_phi2))*dq_phi1*dq_phi2*p_l1*p_l2*p_m2 + (p_m1 + p_m2)*dq_phi1*dq_phi1*p_l1*p_l1/T(2) + dq_phi2*dq_phi2*p_l2*p_l2*p_m2/T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -395,8 +396,9 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T p_l2 = p[3];
   const T p_g = p[4];
   const T c0 = p_m1 + p_m2;
-  const T c1 = cos(q_phi1);
-  out[0] = (c1*cos(-q_phi2) - sin(-q_phi2)*sin(q_phi1))*dq_phi1*dq_phi2*p_l1*p_l2*p_m2 - c0*c1*p_g*p_l1 + c0*dq_phi1*dq_phi1*p_l1*p_l1/T(2) - cos(q_phi2)*p_g*p_l2*p_m2 + dq_phi2*dq_phi2*p_l2*p_l2*p_m2/T(2);
+  const T c1 = cos(q_phi2);
+  const T c2 = cos(q_phi1);
+  out[0] = (c1*c2 + sin(q_phi1)*sin(q_phi2))*dq_phi1*dq_phi2*p_l1*p_l2*p_m2 - c0*c2*p_g*p_l1 + c0*dq_phi1*dq_phi1*p_l1*p_l1/T(2) - c1*p_g*p_l2*p_m2 + dq_phi2*dq_phi2*p_l2*p_l2*p_m2/T(2);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x2, row-major.

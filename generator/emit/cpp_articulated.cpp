@@ -34,40 +34,39 @@ std::string articulated_rhs_function(const Equations& e) {
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
-// ∂f/∂(q, q', u), row by row: what jacobian_state and linearization have in common
-std::string forcing_gradient_function(const Equations& e) {
+// ∂τ/∂(q, q', u) of τ = M(q) q'' − f(q, q', u) with q'' held, row by row: the Jacobian is −M⁻¹ ∂τ/∂x
+// at the rhs's q'', the linearization ∂τ/∂x at q'' = 0 (P = ∂τ/∂q', Q = ∂τ/∂q, B = −∂τ/∂u)
+std::string inverse_dynamics_gradient_function(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates();
-  std::vector<ex> variables = forcing_variables(s), entries;
-  for (std::size_t i = 0; i < n; ++i)
-    for (const ex& d : gradient(e.forcing[i], variables)) entries.push_back(d);
+  std::vector<ex> variables = forcing_variables(s), coordinates(s.coordinates.begin(), s.coordinates.end()), entries;
   BodyWriter w(e);
-  w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
-  return "namespace detail {\n\n" +
-         function(fmt::format("/// df/d(q, q', u) of M q'' = f. F: {}x{}, row-major.\n", n, variables.size()),
-                  "void forcing_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* F)", w.finish(all_unused)) +
-         "}  // namespace detail\n\n";
-}
-
-// dq''/dx = M^-1 (df/dx − (dM/dq) q''), with q'' from rhs and M from mass_matrix
-std::string articulated_jacobian_state_function(const Equations& e) {
-  const Symbols& s = e.symbols;
-  std::size_t n = s.num_coordinates(), N = 2 * n, W = N + s.inputs.size();
-  BodyWriter w(e);
-  for (std::size_t c = 0; c < n; ++c) w.name(w.accelerations()[c], fmt::format("xdot[{}]", n + c));
-  std::vector<ex> coordinates(s.coordinates.begin(), s.coordinates.end()), terms;
-  std::vector<std::size_t> at;  // where each −(dM/dq_j q'')_i goes in F
   for (unsigned i = 0; i < n; ++i) {
-    std::vector<GiNaC::exvector> sums(n);
+    std::vector<GiNaC::exvector> terms(variables.size());
+    std::vector<ex> df = gradient(e.forcing[i], variables);
+    for (std::size_t j = 0; j < variables.size(); ++j) terms[j].push_back(-df[j]);
     for (unsigned c = 0; c < n; ++c) {
       if (e.mass_matrix(i, c).info(GiNaC::info_flags::numeric)) continue;
       std::vector<ex> dM = gradient(e.mass_matrix(i, c), coordinates);
       for (unsigned j = 0; j < n; ++j)
-        if (!dM[j].is_zero()) sums[j].push_back(-dM[j] * w.accelerations()[c]);
+        if (!dM[j].is_zero()) terms[j].push_back(dM[j] * w.accelerations()[c]);
     }
-    for (unsigned j = 0; j < n; ++j)
-      if (!sums[j].empty()) terms.push_back(GiNaC::add(sums[j])), at.push_back(i * W + j);
+    for (const GiNaC::exvector& t : terms) entries.push_back(GiNaC::add(t));
   }
+  w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// d tau/d(q, q', u) of the inverse dynamics tau = M(q) q'' - f(q, q', u), q'' held.\n"
+                              "/// ddq: {0}; F: {0}x{1}, row-major.\n", n, variables.size()),
+                  "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
+                  w.finish(all_unused + std::string(" (void)ddq;"))) +
+         "}  // namespace detail\n\n";
+}
+
+// dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M from mass_matrix
+std::string articulated_jacobian_state_function(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = s.num_coordinates(), N = 2 * n, W = N + s.inputs.size();
+  BodyWriter w(e);
   w.line(fmt::format("T xdot[{}];", N));
   w.line("rhs(t, x, u, p, xdot);");
   w.line(fmt::format("T M[{}];", n * n));
@@ -76,33 +75,33 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   w.line(fmt::format("T D[{}];", n));
   w.line("detail::ldlt_factor(M, L, D);");
   w.line(fmt::format("T F[{}];", n * W));
-  w.line("detail::forcing_gradient(t, x, u, p, F);");
-  w.assign(terms, [&](std::size_t k, const std::string& code) { return fmt::format("F[{0}] = F[{0}] + {1};", at[k], code); });
+  w.line(fmt::format("detail::inverse_dynamics_gradient(t, x, xdot + {}, u, p, F);", n));
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
   w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[i * {0} + j] = T(j == {1} + i ? 1 : 0);", N, n));
   w.line(fmt::format("T column[{}];", n));
   w.line(fmt::format("for (std::size_t j = 0; j < {}; ++j) {{", N));
-  w.line(fmt::format("  for (std::size_t i = 0; i < {}; ++i) column[i] = F[i * {} + j];", n, W));
+  w.line(fmt::format("  for (std::size_t i = 0; i < {}; ++i) column[i] = -F[i * {} + j];", n, W));
   w.line("  detail::ldlt_solve(L, D, column);");
   w.line(fmt::format("  for (std::size_t i = 0; i < {0}; ++i) J[({0} + i) * {1} + j] = column[i];", n, N));
   w.line("}");
-  return forcing_gradient_function(e) +
-         function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is\n"
-                              "/// M^-1 (df/dx - (dM/dq) q''), with q'' from rhs and M from mass_matrix. J: {0}x{0}, row-major.\n",
+  return inverse_dynamics_gradient_function(e) +
+         function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx\n"
+                              "/// (tau = M q'' - f, q'' held), with q'' from rhs and M from mass_matrix. J: {0}x{0}, row-major.\n",
                               N),
                   "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
 }
 
-// M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3), read off df/d(q, q', u)
+// M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3), read off ∂τ/∂(q, q', u) there
 std::string articulated_linearization_function(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates(), m = s.inputs.size(), W = 2 * n + m;
-  std::string body = fmt::format("  (void)B;\n  T F[{0}];\n  detail::forcing_gradient(t, x, u, p, F);\n"
+  std::string body = fmt::format("  (void)B;\n  const T ddq[{3}] = {{}};\n  T F[{0}];\n"
+                                 "  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);\n"
                                  "  for (std::size_t i = 0; i < {1}; ++i) {{\n"
-                                 "    for (std::size_t j = 0; j < {1}; ++j) P[i * {1} + j] = -F[i * {2} + {1} + j];\n"
-                                 "    for (std::size_t j = 0; j < {1}; ++j) Q[i * {1} + j] = -F[i * {2} + j];\n",
-                                 n * W, n, W);
-  if (m > 0) body += fmt::format("    for (std::size_t j = 0; j < {0}; ++j) B[i * {0} + j] = F[i * {1} + {2} + j];\n", m, W, 2 * n);
+                                 "    for (std::size_t j = 0; j < {1}; ++j) P[i * {1} + j] = F[i * {2} + {1} + j];\n"
+                                 "    for (std::size_t j = 0; j < {1}; ++j) Q[i * {1} + j] = F[i * {2} + j];\n",
+                                 n * W, n, W, n);
+  if (m > 0) body += fmt::format("    for (std::size_t j = 0; j < {0}; ++j) B[i * {0} + j] = -F[i * {1} + {2} + j];\n", m, W, 2 * n);
   body += "  }\n";
   return function(fmt::format("/// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0\n"
                               "/// (an equilibrium or a steady motion): P = -df/dq', Q = -df/dq, B = df/du, with M from\n"

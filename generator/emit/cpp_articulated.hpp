@@ -1,7 +1,7 @@
 /// @file The generated header's functions for a model whose rhs solves for q'' by the
 /// articulated-body recursion (Equations::articulated_accelerations): the rhs itself, O(n) code
 /// without M, and Jacobians that take q'' from it and M from mass_matrix instead of writing M
-/// and f out again, with ∂f/∂(x, u) written once for jacobian_state and linearization.
+/// and f out again, with ∂τ/∂(x, u) of τ = M q'' − f written once for jacobian_state and linearization.
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 namespace eomgen {
 
 std::string articulated_rhs_function(const Equations& e);
-/// detail::forcing_gradient, then jacobian_state.
+/// detail::inverse_dynamics_gradient (∂τ/∂(q, q', u) of τ = M q'' − f), then jacobian_state.
 std::string articulated_jacobian_state_function(const Equations& e);
 std::string articulated_linearization_function(const Equations& e);
 

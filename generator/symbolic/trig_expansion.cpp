@@ -23,8 +23,15 @@ bool is_signed_symbol_sum(const ex& e) {
 }
 
 // sin and cos of ±symbol, and of a sum, by sin(x + y) = sin x cos y + cos x sin y,
-// cos(x + y) = cos x cos y − sin x sin y
+// cos(x + y) = cos x cos y − sin x sin y; of −x by sin(−x) = −sin x, cos(−x) = cos x, so that the
+// code calls sin and cos once per angle (GiNaC keeps sin(−x) as it is)
 void sin_cos(const ex& angle, ex& s, ex& c) {
+  if (GiNaC::is_a<GiNaC::mul>(angle) && angle.nops() == 2 && GiNaC::is_a<GiNaC::symbol>(angle.op(0)) &&
+      angle.op(1).is_equal(-1)) {
+    s = -GiNaC::sin(angle.op(0));
+    c = GiNaC::cos(angle.op(0));
+    return;
+  }
   if (!GiNaC::is_a<GiNaC::add>(angle)) {
     s = GiNaC::sin(angle);
     c = GiNaC::cos(angle);
