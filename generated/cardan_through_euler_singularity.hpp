@@ -383,16 +383,13 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   using std::sqrt; using std::pow; using std::abs;
   const T q_beta = x[1];
   const T dq_alpha = x[3];
-  const T dq_beta = x[4];
   const T dq_gamma = x[5];
   const T p_A = p[0];
   const T p_C = p[1];
-  const T c0 = cos(q_beta)*cos(q_beta);
-  const T c1 = sin(q_beta);
-  const T c2 = c1*c1;
-  out[0] = c0*dq_alpha*dq_alpha*p_A/T(2) + c1*dq_alpha*dq_gamma*p_C + c2*dq_alpha*dq_alpha*p_C/T(2) + dq_beta*dq_beta*p_A/T(2) + dq_gamma*dq_gamma*p_C/T(2);
-  out[1] = c0*dq_alpha*p_A + c1*dq_gamma*p_C + c2*dq_alpha*p_C;
-  out[2] = c1*dq_alpha*p_C + dq_gamma*p_C;
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
+  const T c0 = sin(q_beta);
+  out[1] = c0*c0*dq_alpha*p_C + c0*dq_gamma*p_C + cos(q_beta)*cos(q_beta)*dq_alpha*p_A;
+  out[2] = c0*dq_alpha*p_C + dq_gamma*p_C;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

@@ -344,11 +344,8 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T p_mc = p[0];
   const T p_m = p[1];
   const T p_l = p[2];
-  const T p_g = p[3];
-  const T c0 = p_m + p_mc;
-  const T c1 = cos(q_theta);
-  out[0] = c0*dq_x*dq_x/T(2) + c1*dq_theta*dq_x*p_l*p_m - c1*p_g*p_l*p_m + dq_theta*dq_theta*p_l*p_l*p_m/T(2);
-  out[1] = c0*dq_x + c1*dq_theta*p_l*p_m;
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
+  out[1] = (p_m + p_mc)*dq_x + cos(q_theta)*dq_theta*p_l*p_m;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x2, row-major.

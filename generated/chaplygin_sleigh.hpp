@@ -289,12 +289,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  const T s_v = x[3];
-  const T s_w = x[4];
-  const T p_m = p[0];
-  const T p_J = p[1];
-  const T p_a = p[2];
-  out[0] = (p_J + p_a*p_a*p_m)*s_w*s_w/T(2) + p_m*s_v*s_v/T(2);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 1x3, row-major.

@@ -383,22 +383,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_phi1 = x[0];
-  const T q_phi2 = x[1];
-  const T dq_phi1 = x[2];
-  const T dq_phi2 = x[3];
-  const T p_m1 = p[0];
-  const T p_m2 = p[1];
-  const T p_l1 = p[2];
-  const T p_l2 = p[3];
-  const T p_g = p[4];
-  const T c0 = p_m1 + p_m2;
-  const T c1 = cos(q_phi2);
-  const T c2 = cos(q_phi1);
-  out[0] = (c1*c2 + sin(q_phi1)*sin(q_phi2))*dq_phi1*dq_phi2*p_l1*p_l2*p_m2 - c0*c2*p_g*p_l1 + c0*dq_phi1*dq_phi1*p_l1*p_l1/T(2) - c1*p_g*p_l2*p_m2 + dq_phi2*dq_phi2*p_l2*p_l2*p_m2/T(2);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x2, row-major.

@@ -383,16 +383,13 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_psi = x[3];
-  const T dq_theta = x[4];
   const T dq_phi = x[5];
   const T p_A = p[0];
   const T p_C = p[1];
-  const T c0 = sin(q_theta)*sin(q_theta);
-  const T c1 = cos(q_theta);
-  const T c2 = c1*c1;
-  out[0] = c0*dq_psi*dq_psi*p_A/T(2) + c1*dq_phi*dq_psi*p_C + c2*dq_psi*dq_psi*p_C/T(2) + dq_phi*dq_phi*p_C/T(2) + dq_theta*dq_theta*p_A/T(2);
-  out[1] = c0*dq_psi*p_A + c1*dq_phi*p_C + c2*dq_psi*p_C;
-  out[2] = c1*dq_psi*p_C + dq_phi*p_C;
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
+  const T c0 = cos(q_theta);
+  out[1] = c0*c0*dq_psi*p_C + c0*dq_phi*p_C + dq_psi*p_A*sin(q_theta)*sin(q_theta);
+  out[2] = c0*dq_psi*p_C + dq_phi*p_C;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

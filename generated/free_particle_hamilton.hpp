@@ -245,8 +245,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
   const T s_p_x = x[2];
   const T s_p_y = x[3];
-  const T p_m = p[0];
-  out[0] = s_p_x*s_p_x/(T(2)*p_m) + s_p_y*s_p_y/(T(2)*p_m);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
   out[1] = s_p_x;
   out[2] = s_p_y;
 }

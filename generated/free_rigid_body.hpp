@@ -463,17 +463,13 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T p_A = p[0];
   const T p_B = p[1];
   const T p_C = p[2];
-  const T c0 = -p_A + p_B;
-  const T c1 = cos(q_gamma);
-  const T c2 = cos(q_beta);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
+  const T c0 = sin(q_beta);
+  const T c1 = cos(q_beta);
+  const T c2 = c1*c1;
   const T c3 = sin(q_gamma);
-  const T c4 = c1*c1;
-  const T c5 = c2*c2;
-  const T c6 = c3*c3;
-  const T c7 = sin(q_beta);
-  const T c8 = c7*c7;
-  out[0] = -c0*c1*c2*c3*dq_alpha*dq_beta + c4*c5*dq_alpha*dq_alpha*p_A/T(2) + c4*dq_beta*dq_beta*p_B/T(2) + c5*c6*dq_alpha*dq_alpha*p_B/T(2) + c6*dq_beta*dq_beta*p_A/T(2) + c7*dq_alpha*dq_gamma*p_C + c8*dq_alpha*dq_alpha*p_C/T(2) + dq_gamma*dq_gamma*p_C/T(2);
-  out[1] = -c0*c1*c2*c3*dq_beta + c4*c5*dq_alpha*p_A + c5*c6*dq_alpha*p_B + c7*dq_gamma*p_C + c8*dq_alpha*p_C;
+  const T c4 = cos(q_gamma);
+  out[1] = (p_A - p_B)*c1*c3*c4*dq_beta + c0*c0*dq_alpha*p_C + c0*dq_gamma*p_C + c2*c3*c3*dq_alpha*p_B + c2*c4*c4*dq_alpha*p_A;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

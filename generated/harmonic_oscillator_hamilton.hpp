@@ -206,11 +206,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  const T q_x = x[0];
-  const T s_p_x = x[1];
-  const T p_m = p[0];
-  const T p_k = p[1];
-  out[0] = p_k*q_x*q_x/T(2) + s_p_x*s_p_x/(T(2)*p_m);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x1, row-major.

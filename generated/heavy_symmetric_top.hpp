@@ -423,19 +423,14 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_psi = x[3];
-  const T dq_theta = x[4];
   const T dq_phi = x[5];
   const T p_m = p[0];
   const T p_s = p[1];
   const T p_A = p[2];
   const T p_C = p[3];
-  const T p_g = p[4];
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
   const T c0 = cos(q_theta);
-  const T c1 = c0*c0;
-  const T c2 = p_A + p_m*p_s*p_s;
-  const T c3 = sin(q_theta)*sin(q_theta);
-  out[0] = c0*dq_phi*dq_psi*p_C + c0*p_g*p_m*p_s + c1*dq_psi*dq_psi*p_C/T(2) + c2*c3*dq_psi*dq_psi/T(2) + c2*dq_theta*dq_theta/T(2) + dq_phi*dq_phi*p_C/T(2);
-  out[1] = c0*dq_phi*p_C + c1*dq_psi*p_C + c2*c3*dq_psi;
+  out[1] = (p_A + p_m*p_s*p_s)*dq_psi*sin(q_theta)*sin(q_theta) + c0*c0*dq_psi*p_C + c0*dq_phi*p_C;
   out[2] = c0*dq_psi*p_C + dq_phi*p_C;
 }
 

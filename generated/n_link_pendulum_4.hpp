@@ -649,38 +649,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_phi1 = x[0];
-  const T q_phi2 = x[1];
-  const T q_phi3 = x[2];
-  const T q_phi4 = x[3];
-  const T dq_phi1 = x[4];
-  const T dq_phi2 = x[5];
-  const T dq_phi3 = x[6];
-  const T dq_phi4 = x[7];
-  const T p_m1 = p[0];
-  const T p_m2 = p[1];
-  const T p_m3 = p[2];
-  const T p_m4 = p[3];
-  const T p_l1 = p[4];
-  const T p_l2 = p[5];
-  const T p_l3 = p[6];
-  const T p_l4 = p[7];
-  const T p_g = p[8];
-  const T c0 = p_m3 + p_m4;
-  const T c1 = c0 + p_m2;
-  const T c2 = c1 + p_m1;
-  const T c3 = cos(q_phi2);
-  const T c4 = cos(q_phi1);
-  const T c5 = cos(q_phi3);
-  const T c6 = sin(q_phi1);
-  const T c7 = sin(q_phi4);
-  const T c8 = cos(q_phi4);
-  const T c9 = sin(q_phi3);
-  const T c10 = sin(q_phi2);
-  out[0] = (c10*c6 + c3*c4)*c1*dq_phi1*dq_phi2*p_l1*p_l2 + (c10*c7 + c3*c8)*dq_phi2*dq_phi4*p_l2*p_l4*p_m4 + (c10*c9 + c3*c5)*c0*dq_phi2*dq_phi3*p_l2*p_l3 + (c4*c5 + c6*c9)*c0*dq_phi1*dq_phi3*p_l1*p_l3 + (c4*c8 + c6*c7)*dq_phi1*dq_phi4*p_l1*p_l4*p_m4 + (c5*c8 + c7*c9)*dq_phi3*dq_phi4*p_l3*p_l4*p_m4 - c0*c5*p_g*p_l3 + c0*dq_phi3*dq_phi3*p_l3*p_l3/T(2) - c1*c3*p_g*p_l2 + c1*dq_phi2*dq_phi2*p_l2*p_l2/T(2) - c2*c4*p_g*p_l1 + c2*dq_phi1*dq_phi1*p_l1*p_l1/T(2) - c8*p_g*p_l4*p_m4 + dq_phi4*dq_phi4*p_l4*p_l4*p_m4/T(2);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x4, row-major.

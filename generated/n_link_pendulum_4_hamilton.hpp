@@ -597,65 +597,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_phi1 = x[0];
-  const T q_phi2 = x[1];
-  const T q_phi3 = x[2];
-  const T q_phi4 = x[3];
-  const T s_p_phi1 = x[4];
-  const T s_p_phi2 = x[5];
-  const T s_p_phi3 = x[6];
-  const T s_p_phi4 = x[7];
-  const T p_m1 = p[0];
-  const T p_m2 = p[1];
-  const T p_m3 = p[2];
-  const T p_m4 = p[3];
-  const T p_l1 = p[4];
-  const T p_l2 = p[5];
-  const T p_l3 = p[6];
-  const T p_l4 = p[7];
-  const T p_g = p[8];
-  const T c0 = p_m3 + p_m4;
-  const T c1 = c0 + p_m2;
-  const T c2 = sin(q_phi1);
-  const T c3 = sin(q_phi2);
-  const T c4 = cos(q_phi2);
-  const T c5 = cos(q_phi1);
-  const T c6 = sin(q_phi3);
-  const T c7 = cos(q_phi3);
-  const T c8 = sin(q_phi4);
-  const T c9 = cos(q_phi4);
-  // der(q) from the momenta: M(q,t) der(q) = p - b(q,t)
-  T Mv[16];
-  Mv[0] = (p_m1 + p_m2 + p_m3 + p_m4)*p_l1*p_l1;
-  Mv[1] = (c2*c3 + c4*c5)*c1*p_l1*p_l2;
-  Mv[4] = Mv[1];
-  Mv[2] = (c2*c6 + c5*c7)*c0*p_l1*p_l3;
-  Mv[8] = Mv[2];
-  Mv[3] = (c2*c8 + c5*c9)*p_l1*p_l4*p_m4;
-  Mv[12] = Mv[3];
-  Mv[5] = c1*p_l2*p_l2;
-  Mv[6] = (c3*c6 + c4*c7)*c0*p_l2*p_l3;
-  Mv[9] = Mv[6];
-  Mv[7] = (c3*c8 + c4*c9)*p_l2*p_l4*p_m4;
-  Mv[13] = Mv[7];
-  Mv[10] = c0*p_l3*p_l3;
-  Mv[11] = (c6*c8 + c7*c9)*p_l3*p_l4*p_m4;
-  Mv[14] = Mv[11];
-  Mv[15] = p_l4*p_l4*p_m4;
-  T qd[4];
-  qd[0] = s_p_phi1;
-  qd[1] = s_p_phi2;
-  qd[2] = s_p_phi3;
-  qd[3] = s_p_phi4;
-  T Lv[16];
-  T Dv[4];
-  detail::ldlt_factor(Mv, Lv, Dv);
-  detail::ldlt_solve(Lv, Dv, qd);
-  const T c10 = c1 + p_m1;
-  out[0] = (c2*c3 + c4*c5)*c1*p_l1*p_l2*qd[0]*qd[1] + (c2*c6 + c5*c7)*c0*p_l1*p_l3*qd[0]*qd[2] + (c2*c8 + c5*c9)*p_l1*p_l4*p_m4*qd[0]*qd[3] + (c3*c6 + c4*c7)*c0*p_l2*p_l3*qd[1]*qd[2] + (c3*c8 + c4*c9)*p_l2*p_l4*p_m4*qd[1]*qd[3] + (c6*c8 + c7*c9)*p_l3*p_l4*p_m4*qd[2]*qd[3] - c0*c7*p_g*p_l3 + c0*p_l3*p_l3*qd[2]*qd[2]/T(2) - c1*c4*p_g*p_l2 + c1*p_l2*p_l2*qd[1]*qd[1]/T(2) - c10*c5*p_g*p_l1 + c10*p_l1*p_l1*qd[0]*qd[0]/T(2) - c9*p_g*p_l4*p_m4 + p_l4*p_l4*p_m4*qd[3]*qd[3]/T(2);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x4, row-major.

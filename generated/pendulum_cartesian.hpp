@@ -257,12 +257,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  const T q_y = x[1];
-  const T dq_x = x[2];
-  const T dq_y = x[3];
-  const T p_m = p[0];
-  const T p_g = p[2];
-  out[0] = dq_x*dq_x*p_m/T(2) + dq_y*dq_y*p_m/T(2) + p_g*p_m*q_y;
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 1x2, row-major.

@@ -257,16 +257,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_phi = x[0];
-  const T dq_phi = x[1];
-  const T p_m = p[0];
-  const T p_s = p[1];
-  const T p_Izz = p[4];
-  const T p_g = p[5];
-  out[0] = (p_Izz + p_m*p_s*p_s)*dq_phi*dq_phi/T(2) - cos(q_phi)*p_g*p_m*p_s;
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x1, row-major.

@@ -334,23 +334,7 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_phi = x[0];
-  const T q_beta = x[1];
-  const T dq_phi = x[3];
-  const T dq_beta = x[4];
-  const T dq_x = x[5];
-  const T p_r = p[0];
-  const T p_l = p[1];
-  const T p_m1 = p[2];
-  const T p_m2 = p[3];
-  const T p_m3 = p[4];
-  const T p_g = p[5];
-  const T c0 = sin(q_beta);
-  const T c1 = sin(q_phi);
-  out[0] = (T(2)*p_m2 + p_m1)*c1*p_g*p_r/T(2) + (T(3)*p_m2 + p_m1)*dq_phi*dq_phi*p_r*p_r/T(6) + (c0*c1 + cos(q_beta)*cos(q_phi))*dq_beta*dq_phi*p_l*p_m2*p_r/T(2) + c0*p_g*p_l*p_m2/T(2) + dq_beta*dq_beta*p_l*p_l*p_m2/T(6) + dq_x*dq_x*p_m3/T(2);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 2x3, row-major.

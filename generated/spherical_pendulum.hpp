@@ -311,14 +311,11 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
   using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[0];
-  const T dq_theta = x[2];
   const T dq_phi = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
-  const T p_g = p[2];
-  const T c0 = sin(q_theta)*sin(q_theta);
-  out[0] = c0*dq_phi*dq_phi*p_l*p_l*p_m/T(2) - cos(q_theta)*p_g*p_l*p_m + dq_theta*dq_theta*p_l*p_l*p_m/T(2);
-  out[1] = c0*dq_phi*p_l*p_l*p_m;
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
+  out[1] = dq_phi*p_l*p_l*p_m*sin(q_theta)*sin(q_theta);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x2, row-major.

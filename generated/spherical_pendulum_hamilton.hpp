@@ -292,16 +292,8 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_theta = x[0];
-  const T s_p_theta = x[2];
   const T s_p_phi = x[3];
-  const T p_m = p[0];
-  const T p_l = p[1];
-  const T p_g = p[2];
-  out[0] = -cos(q_theta)*p_g*p_l*p_m + s_p_phi*s_p_phi/(T(2)*p_l*p_l*p_m*sin(q_theta)*sin(q_theta)) + s_p_theta*s_p_theta/(T(2)*p_l*p_l*p_m);
+  out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
   out[1] = s_p_phi;
 }
 

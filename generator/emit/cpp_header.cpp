@@ -336,10 +336,15 @@ std::string first_integrals_function(const Equations& e) {
       "inline constexpr std::array<const char*, num_first_integrals> first_integral_names{{{{{}}}}};\n\n",
       names.size(), quoted_list(names));
   BodyWriter w(e);
+  // the energy T + V is the sum of the two functions above: not written out a second time
   std::vector<ex> values;
-  for (const FirstIntegral& f : e.first_integrals) values.push_back(f.expression);
-  auto code = w.batch(values);
-  for (std::size_t i = 0; i < code.size(); ++i) w.line(fmt::format("out[{}] = {};", i, code[i]));
+  std::vector<std::size_t> written;
+  for (std::size_t i = 0; i < e.first_integrals.size(); ++i)
+    if ((e.first_integrals[i].expression - e.kinetic_energy - e.potential_energy).is_zero())
+      w.line(fmt::format("out[{}] = kinetic_energy(t, x, p) + potential_energy(t, x, p);", i));
+    else
+      values.push_back(e.first_integrals[i].expression), written.push_back(i);
+  w.assign(values, [&](std::size_t k, const std::string& code) { return fmt::format("out[{}] = {};", written[k], code); });
   return out + function("/// The first integrals' values, in first_integral_names order. out: num_first_integrals.\n",
                         "void first_integrals(T t, const T* x, const T* p, T* out)",
                         w.finish("(void)t; (void)x; (void)p; (void)out;"));
