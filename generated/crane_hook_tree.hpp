@@ -499,35 +499,15 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   }
 }
 
-/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
+/// Kinetic energy T = q'^T M q' / 2, with M from mass_matrix. x: num_states; p: num_parameters.
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_theta = x[0];
-  const T q_psi = x[1];
-  const T q_a = x[2];
-  const T q_b = x[3];
-  const T dq_theta = x[4];
-  const T dq_psi = x[5];
-  const T dq_a = x[6];
-  const T dq_b = x[7];
-  const T p_m0 = p[0];
-  const T p_m1 = p[1];
-  const T p_m2 = p[2];
-  const T p_L = p[3];
-  const T p_l1 = p[4];
-  const T p_l2 = p[5];
-  const T c0 = p_m0 + p_m1 + p_m2;
-  const T c1 = sin(q_theta);
-  const T c2 = cos(q_psi);
-  const T c3 = cos(q_b);
-  const T c4 = cos(q_a);
-  const T c5 = cos(q_theta);
-  const T c6 = sin(q_psi);
-  return c0*c1*c1*dq_psi*dq_psi*p_L*p_L/T(2) + c0*dq_theta*dq_theta*p_L*p_L/T(2) + c1*c2*c3*dq_b*dq_psi*p_L*p_l2*p_m2 - c1*c4*c6*dq_a*dq_psi*p_L*p_l1*p_m1 + c1*dq_a*dq_theta*p_L*p_l1*p_m1*sin(q_a) + c1*dq_b*dq_theta*p_L*p_l2*p_m2*sin(q_b) + c2*c4*c5*dq_a*dq_theta*p_L*p_l1*p_m1 + c3*c5*c6*dq_b*dq_theta*p_L*p_l2*p_m2 + dq_a*dq_a*p_l1*p_l1*p_m1/T(2) + dq_b*dq_b*p_l2*p_l2*p_m2/T(2);
+  T M[16];
+  mass_matrix(t, x, p, M);
+  T twice = T(0);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 4; ++j) twice = twice + x[4 + i] * M[i * 4 + j] * x[4 + j];
+  return twice / T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -14,5 +14,7 @@ std::string articulated_rhs_function(const Equations& e);
 /// detail::inverse_dynamics_gradient (∂τ/∂(q, q', u) of τ = M q'' − f), then jacobian_state.
 std::string articulated_jacobian_state_function(const Equations& e);
 std::string articulated_linearization_function(const Equations& e);
+/// kinetic_energy as q'ᵀ M q' / 2 with M from mass_matrix.
+std::string articulated_kinetic_energy_function(const Equations& e);
 
 }  // namespace eomgen

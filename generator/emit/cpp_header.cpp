@@ -515,8 +515,10 @@ std::string emit_cpp_header(const Equations& e) {
   out += constrained_solver(e);
   out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
          jacobian_input_function(e) + linearization_function(e);
-  out += scalar_function(e, "kinetic_energy", e.kinetic_energy,
-                         "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n");
+  out += e.articulated_accelerations.empty()
+             ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
+                               "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n")
+             : articulated_kinetic_energy_function(e);
   out += scalar_function(e, "potential_energy", e.potential_energy,
                          "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
   out += outputs_function(e);
