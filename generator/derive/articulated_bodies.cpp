@@ -78,55 +78,57 @@ class Recursion {
     J.c = named(J.c, p + "c");
   }
 
-  // leaves to root: IA_i = m_i 1 + Σ Ia_child, pA_i = −m_i g + Σ pa_child, and for each joint
-  // U = IA S, D = Sᵀ U, u = Q − Sᵀ pA, Ia = IA − U D⁻¹ Uᵀ, pa = pA + Ia c + U D⁻¹ u
+  // leaves to root: IA_i = m_i 1 + Σ Ia_child, pA_i = −m_i g + Σ pa_child (each parent after its children)
   void inward() {
-    std::vector<matrix> IA(count_, matrix(3, 3));
-    std::vector<Vector3> pA(count_, Vector3{0, 0, 0});
+    inertia_.assign(count_, matrix(3, 3));
+    bias_force_.assign(count_, Vector3{0, 0, 0});
     for (std::size_t i = 0; i < count_; ++i) {
       const Particle& p = model_.particles[i];
-      for (unsigned a = 0; a < 3; ++a) IA[i](a, a) = p.mass, pA[i][a] = -p.mass * model_.gravity[a];
+      for (unsigned a = 0; a < 3; ++a) inertia_[i](a, a) = p.mass, bias_force_[i][a] = -p.mass * model_.gravity[a];
     }
     joints_.resize(count_);
-    for (std::size_t at = count_; at-- > 0;) {
-      std::size_t i = tree_.order[at];
-      std::string p = fmt::format("ab{}_", i);
-      matrix I = named(IA[i], p + "I", true);
-      Vector3 pa = named(pA[i], p + "p");
-      Joint& J = joints_[i];
-      std::size_t k = tree_.joints[i].coordinates.size();
-      int parent = tree_.joints[i].parent;
-      if (k == 0) {
-        // fixed to its parent (or the ground): its mass and weight go to the parent as they are
-        for (unsigned a = 0; a < 3 && parent >= 0; ++a) {
-          pA[std::size_t(parent)][a] += pa[a];
-          for (unsigned b = 0; b < 3; ++b) IA[std::size_t(parent)](a, b) += I(a, b);
-        }
-        continue;
-      }
-      joint_motion(i, J);
-      J.U = named(I.mul(J.S), p + "U", false);
-      matrix D = named(J.S.transpose().mul(J.U), p + "D", true);
-      J.D_inverse = named(D.inverse(), p + "Di", true);
-      for (unsigned b = 0; b < k; ++b) {
-        ex u = applied_force(tree_.joints[i].coordinates[b]);
-        for (unsigned a = 0; a < 3; ++a) u -= J.S(a, b) * pa[a];
-        J.u.push_back(named(u, p + fmt::format("u{}", b)));
-      }
-      if (parent < 0) continue;
-      matrix W = named(J.U.mul(J.D_inverse), p + "W", false);
-      matrix Ia = I;
-      for (unsigned a = 0; a < 3; ++a)
-        for (unsigned b = 0; b < 3; ++b)
-          for (unsigned l = 0; l < k; ++l) Ia(a, b) -= W(a, l) * J.U(b, l);
-      Ia = named(Ia, p + "Ia", true);
-      for (unsigned a = 0; a < 3; ++a) {
-        ex force = pa[a];
-        for (unsigned b = 0; b < 3; ++b) force += Ia(a, b) * J.c[b];
-        for (unsigned l = 0; l < k; ++l) force += W(a, l) * J.u[l];
-        pA[std::size_t(parent)][a] += force;
-        for (unsigned b = 0; b < 3; ++b) IA[std::size_t(parent)](a, b) += Ia(a, b);
-      }
+    for (std::size_t at = count_; at-- > 0;) articulate(tree_.order[at]);
+  }
+
+  // particle i's joint: U = IA S, D = Sᵀ U, u = Q − Sᵀ pA, and what its subtree hands to the parent,
+  // Ia = IA − U D⁻¹ Uᵀ and pa = pA + Ia c + U D⁻¹ u (IA and pA themselves for a joint without coordinates)
+  void articulate(std::size_t i) {
+    std::string p = fmt::format("ab{}_", i);
+    matrix I = named(inertia_[i], p + "I", true);
+    Vector3 pA = named(bias_force_[i], p + "p");
+    Joint& J = joints_[i];
+    std::size_t k = tree_.joints[i].coordinates.size();
+    if (k == 0) return hand_to_parent(i, I, pA);
+    joint_motion(i, J);
+    J.U = named(I.mul(J.S), p + "U", false);
+    matrix D = named(J.S.transpose().mul(J.U), p + "D", true);
+    J.D_inverse = named(D.inverse(), p + "Di", true);
+    for (unsigned b = 0; b < k; ++b) {
+      ex u = applied_force(tree_.joints[i].coordinates[b]);
+      for (unsigned a = 0; a < 3; ++a) u -= J.S(a, b) * pA[a];
+      J.u.push_back(named(u, p + fmt::format("u{}", b)));
+    }
+    if (tree_.joints[i].parent < 0) return;
+    matrix W = named(J.U.mul(J.D_inverse), p + "W", false);
+    matrix Ia = I;
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b)
+        for (unsigned l = 0; l < k; ++l) Ia(a, b) -= W(a, l) * J.U(b, l);
+    Ia = named(Ia, p + "Ia", true);
+    Vector3 pa = pA;
+    for (unsigned a = 0; a < 3; ++a) {
+      for (unsigned b = 0; b < 3; ++b) pa[a] += Ia(a, b) * J.c[b];
+      for (unsigned l = 0; l < k; ++l) pa[a] += W(a, l) * J.u[l];
+    }
+    hand_to_parent(i, Ia, pa);
+  }
+
+  void hand_to_parent(std::size_t i, const matrix& Ia, const Vector3& pa) {
+    int parent = tree_.joints[i].parent;
+    if (parent < 0) return;
+    for (unsigned a = 0; a < 3; ++a) {
+      bias_force_[std::size_t(parent)][a] += pa[a];
+      for (unsigned b = 0; b < 3; ++b) inertia_[std::size_t(parent)](a, b) += Ia(a, b);
     }
   }
 
@@ -167,6 +169,8 @@ class Recursion {
   const ParticleTree& tree_;
   std::size_t count_;
   std::vector<Joint> joints_;
+  std::vector<matrix> inertia_;     // IA of each particle, summed over its children so far
+  std::vector<Vector3> bias_force_;  // pA likewise
   ArticulatedAccelerations out_;
 };
 

@@ -246,7 +246,7 @@ def write_report(rows, out, quick):
         lines.append(
             f"| {r['model']} | {r['n']} | {r['form']} | {r['eomgen_ns']:.0f} | {fmt(r.get('other_form_ns'), 4)} | "
             f"{per(r.get('other_form_ns'), r['eomgen_ns'])} | {difference} | {errors} | "
-            f"{r['mujoco_ns']:.0f} | {per(r['mujoco_ns'], r['eomgen_ns'])} | {fmt(r['eigen_ns'], 4)} | {per(r['eigen_ns'], r['eomgen_ns'])} | "
+            f"{fmt(r['mujoco_ns'], 4)} | {per(r['mujoco_ns'], r['eomgen_ns'])} | {fmt(r['eigen_ns'], 4)} | {per(r['eigen_ns'], r['eomgen_ns'])} | "
             f"{fmt(r['lambdify_ns'], 4)} | {fmt(r['jacobian_ns'], 4)} | {per(r['jacobian_ns'], r['eomgen_ns'])} | "
             f"{fmt(r['finite_difference_ns'], 4)} | {per(r['finite_difference_ns'], r['jacobian_ns'])} |")
     lines += ["", "Targets (planar chain, issue 17):"]
@@ -293,7 +293,7 @@ def draw_chart(rows, out):
     with open(data, "w") as f:
         for r in planar:
             vals = [r["n"], r["derive_s"], r["lagrange_s"], r["kane_s"], r["eomgen_ns"], r["mujoco_ns"], r["eigen_ns"],
-                    r.get("other_form_ns"), r["mujoco_ns"] / r["eomgen_ns"], r["header_kb"], r["compile_s"]]
+                    r.get("other_form_ns"), r["mujoco_ns"] / r["eomgen_ns"] if r["mujoco_ns"] else None, r["header_kb"], r["compile_s"]]
             f.write(" ".join("NaN" if not isinstance(v, (int, float)) else repr(v) for v in vals) + "\n")
     script = f"""set terminal pngcairo size 1500,520 noenhanced
 set output '{os.path.join(out, "peers.png")}'

@@ -72,18 +72,16 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   if (argc < 2) return 2;
   char error[1000] = "";
+  // MuJoCo's XML reader stops at about 100 nested elements: the 100-link chain is timed without it
   mjModel* mj = mj_loadXML(argv[1], nullptr, error, sizeof error);
-  if (!mj) {
-    std::fprintf(stderr, "MuJoCo: %s\n", error);
-    return 1;
-  }
-  mjData* data = mj_makeData(mj);
+  if (!mj) std::fprintf(stderr, "MuJoCo (left out): %s\n", error);
+  mjData* data = mj ? mj_makeData(mj) : nullptr;
   std::mt19937 random(1);
   std::uniform_real_distribution<double> uniform(-0.5, 0.5);
   std::vector<double> x(N), xdot(N), xdot_hand(N), J(N * N), fd(N * N), plus(N), minus(N), u(model::num_inputs + 1, 0.0);
   for (double& v : x) v = uniform(random);
-  for (int i = 0; i < mj->nq; ++i) data->qpos[i] = uniform(random);
-  for (int i = 0; i < mj->nv; ++i) data->qvel[i] = uniform(random);
+  for (int i = 0; mj && i < mj->nq; ++i) data->qpos[i] = uniform(random);
+  for (int i = 0; mj && i < mj->nv; ++i) data->qvel[i] = uniform(random);
   auto p = model::Parameters<double>().values();
   HandWritten hand;
   volatile double sink = 0;
@@ -94,7 +92,7 @@ int main(int argc, char** argv) {
 #ifdef OTHER
     other_form.push_back(time_batch([&] { other::rhs(0.0, x.data(), u.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
 #endif
-    mujoco.push_back(time_batch([&] { mj_forward(mj, data); sink = sink + data->qacc[0]; }, calls));
+    if (mj) mujoco.push_back(time_batch([&] { mj_forward(mj, data); sink = sink + data->qacc[0]; }, calls));
     if (PLANAR) theirs.push_back(time_batch([&] { hand.rhs(x.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
 #if JACOBIAN
     jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; }, std::max(5, calls / N)));
@@ -142,13 +140,12 @@ int main(int argc, char** argv) {
     for (int i = 0; i < N; ++i) agreement = std::max(agreement, std::abs(xdot[i] - xdot_hand[i]) / std::max(1.0, std::abs(xdot[i])));
   }
   auto or_null = [](const std::vector<double>& v) { return v.empty() ? std::string("null") : std::to_string(median(v)); };
-  std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %.1f, \"eigen_ns\": %s, \"jacobian_ns\": %s, "
+  std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %s, \"eigen_ns\": %s, \"jacobian_ns\": %s, "
               "\"finite_difference_ns\": %s, \"hand_written_difference\": %.2g, \"other_form_ns\": %s, "
               "\"forms_differ\": %.2g, \"error\": %.2g, \"other_form_error\": %.2g}\n",
-              median(ours), median(mujoco), or_null(theirs).c_str(), or_null(jacobian).c_str(),
+              median(ours), or_null(mujoco).c_str(), or_null(theirs).c_str(), or_null(jacobian).c_str(),
               or_null(differences).c_str(), agreement, or_null(other_form).c_str(),
               forms_differ, own_error, other_error);
-  mj_deleteData(data);
-  mj_deleteModel(mj);
+  if (mj) mj_deleteData(data), mj_deleteModel(mj);
   return sink == 12345.678 ? 3 : 0;
 }

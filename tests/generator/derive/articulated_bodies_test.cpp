@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 
 #include <fmt/format.h>
@@ -159,6 +160,97 @@ TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
   std::string unused = planar_chain(2, "articulated");
   unused.insert(unused.find("[inputs]"), "free = 0.0\n");
   EXPECT_NE(diagnostics_of(unused).find("coordinate 'free' moves no particle"), std::string::npos) << diagnostics_of(unused);
+}
+
+
+// The generated header of a chain long enough for ∂τ/∂x in blocks (inverse_dynamics_gradient_rows_…):
+// rhs against M⁻¹ f from mass_matrix and forcing, jacobian_state against central differences of
+// rhs, linearization's P, Q, B against central differences of forcing, at random states.
+const char* header_check = R"cpp(
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <vector>
+#include "chain.hpp"
+namespace m = eomgen::models::chain;
+constexpr int n = int(m::num_coordinates), N = int(m::num_states), k = int(m::num_inputs);
+
+std::vector<double> solve(std::vector<double> A, std::vector<double> b) {
+  for (int c = 0; c < n; ++c)
+    for (int r = c + 1; r < n; ++r) {
+      double factor = A[r * n + c] / A[c * n + c];
+      for (int j = c; j < n; ++j) A[r * n + j] -= factor * A[c * n + j];
+      b[r] -= factor * b[c];
+    }
+  for (int r = n - 1; r >= 0; --r) {
+    for (int j = r + 1; j < n; ++j) b[r] -= A[r * n + j] * b[j];
+    b[r] /= A[r * n + r];
+  }
+  return b;
+}
+
+double worst = 0;
+void expect(double got, double want, double scale, double tolerance, const char* what) {
+  double error = std::abs(got - want) / std::max(1.0, scale);
+  if (error > worst) worst = error;
+  if (error > tolerance) std::printf("%s: %.17g against %.17g\n", what, got, want);
+}
+
+int main() {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  auto p = m::Parameters<double>().values();
+  int failures = 0;
+  for (int trial = 0; trial < 5; ++trial) {
+    std::vector<double> x(N), u(k), xdot(N), M(n * n), f(n), J(N * N), P(n * n), Q(n * n), B(n * k);
+    for (double& v : x) v = 2 * uniform(random);
+    for (double& v : u) v = uniform(random);
+    m::rhs(0.0, x.data(), u.data(), p.data(), xdot.data());
+    m::mass_matrix(0.0, x.data(), p.data(), M.data());
+    m::forcing(0.0, x.data(), u.data(), p.data(), f.data());
+    std::vector<double> ddq = solve(M, f);
+    double scale = 0;
+    for (double a : ddq) scale = std::max(scale, std::abs(a));
+    for (int i = 0; i < n; ++i) expect(xdot[n + i], ddq[i], scale, 1e-10, "q''");
+    m::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data());
+    m::linearization(0.0, x.data(), u.data(), p.data(), P.data(), Q.data(), B.data());
+    for (int j = 0; j < N + k; ++j) {
+      std::vector<double> xp = x, xm = x, up = u, um = u, rp(N), rm(N), fp(n), fm(n);
+      double h = 1e-6;
+      (j < N ? xp[j] : up[j - N]) += h;
+      (j < N ? xm[j] : um[j - N]) -= h;
+      m::rhs(0.0, xp.data(), up.data(), p.data(), rp.data());
+      m::rhs(0.0, xm.data(), um.data(), p.data(), rm.data());
+      m::forcing(0.0, xp.data(), up.data(), p.data(), fp.data());
+      m::forcing(0.0, xm.data(), um.data(), p.data(), fm.data());
+      for (int i = 0; i < N && j < N; ++i) expect(J[i * N + j], (rp[i] - rm[i]) / (2 * h), scale * 10, 1e-6, "J");
+      for (int i = 0; i < n; ++i) {
+        double df = (fp[i] - fm[i]) / (2 * h);
+        if (j < n) expect(Q[i * n + j], -df, 100, 1e-6, "Q");
+        else if (j < N) expect(P[i * n + j - n], -df, 100, 1e-6, "P");
+        else expect(B[i * k + j - N], df, 100, 1e-6, "B");
+      }
+    }
+  }
+  std::printf("largest relative error %.3g\n", worst);
+  return worst > 1e-6 ? 1 : failures;
+}
+)cpp";
+
+TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
+  std::string dir = test::temporary_directory();
+  std::string text = planar_chain(14, "articulated");
+  {
+    std::ofstream(dir + "/chain.toml") << text;
+    std::ofstream(dir + "/check.cpp") << header_check;
+  }
+  test::CommandOutput generated = test::run_eomgen("generate '" + dir + "/chain.toml' -o '" + dir + "'");
+  ASSERT_EQ(generated.status, 0) << generated.err;
+  std::string header = test::read_file(dir + "/chain.hpp");
+  EXPECT_NE(header.find("inverse_dynamics_gradient_rows_"), std::string::npos) << "expected the Jacobian's rows in blocks";
+  EXPECT_NE(header.find("articulated-body recursion"), std::string::npos);
+  EXPECT_EQ(test::run_command("cd '" + dir + "' && c++ -std=c++17 -O1 check.cpp -o check && ./check"), 0);
 }
 
 }  // namespace
