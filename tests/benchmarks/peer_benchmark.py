@@ -309,6 +309,7 @@ set ylabel 'time per call [ns]'
 set title 'Right-hand side'
 plot '{data}' using 1:5 with linespoints lw 2 title 'eomgen rhs (forward_dynamics = auto)', '' using 1:8 with linespoints lw 2 title 'eomgen rhs, the other form', '' using 1:6 with linespoints lw 2 title 'MuJoCo mj_forward', '' using 1:7 with linespoints lw 2 title 'Eigen by hand (LDLT)'
 unset logscale y
+set yrange [0:*]
 set ylabel 'MuJoCo time / eomgen time'
 set title 'rhs: MuJoCo mj_forward / eomgen'
 plot '{data}' using 1:9 with linespoints lw 2 title 'ratio'
