@@ -135,6 +135,23 @@ potential = "k*(x^2 + y^2 + z^2)/2"
   expect_recursion_solves_the_equations(derive_text(free), 8, 9u);
 }
 
+// Variants of a tree: holding coordinates keeps a tree, whose recursion still gives M⁻¹ f; tying
+// the coordinates of two joints does not, and the header falls back to M = LDLᵀ
+TEST(ArticulatedBodies, VariantsOfATreeKeepTheRecursionOrFallBack) {
+  std::string path = test::temporary_directory() + "/crane.toml";
+  {
+    std::ofstream(path) << test::read_file(test::model_path("crane_hook_tree"))
+                        << "\n[variants.planar_hook]\nfreeze = [\"psi\"]\n\n[variants.tied]\ntie = { b = \"a\" }\n";
+  }
+  Derivation planar = derive_model_file_for(path, {"", "planar_hook", {}});
+  ASSERT_TRUE(planar.equations) << planar.diagnostics.format();
+  EXPECT_EQ(planar.equations->symbols.num_coordinates(), 3u);
+  expect_recursion_solves_the_equations(*planar.equations, 6, 3u);
+  Derivation tied = derive_model_file_for(path, {"", "tied", {}});
+  ASSERT_TRUE(tied.equations) << tied.diagnostics.format();
+  EXPECT_TRUE(tied.equations->articulated_accelerations.empty());
+}
+
 TEST(ArticulatedBodies, AutoChoosesTheRecursionForLongTrees) {
   EXPECT_TRUE(derive_text(planar_chain(8, "auto")).articulated_accelerations.empty());
   EXPECT_FALSE(derive_text(planar_chain(9, "auto")).articulated_accelerations.empty());
