@@ -9,6 +9,7 @@
 #include "emit/cpp_body_writer.hpp"
 #include "emit/cpp_constraints.hpp"
 #include "emit/cpp_expression.hpp"
+#include "emit/cpp_ldlt.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
 #include "emit/tangent_sweep.hpp"
@@ -350,57 +351,9 @@ std::string first_integrals_function(const Equations& e) {
                         w.finish("(void)t; (void)x; (void)p; (void)out;"));
 }
 
-// the same factorization and solve as loops: unrolled, their code grows as n³ and n² (108 KB
-// for the factor at n = 30); the loops were 18 % slower at n = 16 and as fast at n = 30
-// (the planar chain's rhs in the mass-matrix form, tests/benchmarks/rhs_benchmark.cpp)
-constexpr std::size_t ldlt_unrolled_up_to = 24;
-
-void ldlt_loops(std::size_t n, std::string& factor, std::string& solve) {
-  factor = fmt::format(
-      "  for (std::size_t j = 0; j < {0}; ++j) {{\n"
-      "    T d = M[j * {0} + j];\n"
-      "    for (std::size_t k = 0; k < j; ++k) d = d - L[j * {0} + k] * L[j * {0} + k] * D[k];\n"
-      "    D[j] = d;\n"
-      "    for (std::size_t i = j + 1; i < {0}; ++i) {{\n"
-      "      T l = M[i * {0} + j];\n"
-      "      for (std::size_t k = 0; k < j; ++k) l = l - L[i * {0} + k] * L[j * {0} + k] * D[k];\n"
-      "      L[i * {0} + j] = l / d;\n"
-      "    }}\n"
-      "  }}\n", n);
-  solve = fmt::format(
-      "  for (std::size_t i = 1; i < {0}; ++i)\n"
-      "    for (std::size_t k = 0; k < i; ++k) b[i] = b[i] - L[i * {0} + k] * b[k];\n"
-      "  for (std::size_t i = 0; i < {0}; ++i) b[i] = b[i] / D[i];\n"
-      "  for (std::size_t i = {0} - 1; i-- > 0;)\n"
-      "    for (std::size_t k = i + 1; k < {0}; ++k) b[i] = b[i] - L[k * {0} + i] * b[k];\n", n);
-}
-
-// L D L^T of a symmetric positive definite n×n matrix, unrolled up to ldlt_unrolled_up_to:
-// D_j = M_jj − Σ_{k<j} L_jk² D_k,  L_ij = (M_ij − Σ_{k<j} L_ik L_jk D_k) / D_j
-std::string ldlt_functions(std::size_t n) {
-  std::string factor, solve;
-  if (n > ldlt_unrolled_up_to) ldlt_loops(n, factor, solve);
-  for (std::size_t j = 0; j < n && n <= ldlt_unrolled_up_to; ++j) {
-    std::string d = fmt::format("M[{}]", j * n + j);
-    for (std::size_t k = 0; k < j; ++k) d += fmt::format(" - L[{0}]*L[{0}]*D[{1}]", j * n + k, k);
-    factor += fmt::format("  D[{}] = {};\n", j, d);
-    for (std::size_t i = j + 1; i < n; ++i) {
-      std::string l = fmt::format("M[{}]", i * n + j);
-      for (std::size_t k = 0; k < j; ++k) l += fmt::format(" - L[{}]*L[{}]*D[{}]", i * n + k, j * n + k, k);
-      factor += fmt::format("  L[{}] = ({})/D[{}];\n", i * n + j, l, j);
-    }
-  }
-  for (std::size_t i = 1; i < n && n <= ldlt_unrolled_up_to; ++i) {
-    std::string y = fmt::format("b[{}]", i);
-    for (std::size_t k = 0; k < i; ++k) y += fmt::format(" - L[{}]*b[{}]", i * n + k, k);
-    solve += fmt::format("  b[{}] = {};\n", i, y);
-  }
-  for (std::size_t i = 0; i < n && n <= ldlt_unrolled_up_to; ++i) solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
-  for (std::size_t i = n - 1; i-- > 0 && n <= ldlt_unrolled_up_to;) {
-    std::string x = fmt::format("b[{}]", i);
-    for (std::size_t k = i + 1; k < n; ++k) x += fmt::format(" - L[{}]*b[{}]", k * n + i, k);
-    solve += fmt::format("  b[{}] = {};\n", i, x);
-  }
+// the detail namespace: the input type that keeps u out of deducing T, and the LDLᵀ of M
+std::string detail_functions(std::size_t n) {
+  LdltCode ldlt = ldlt_code(n);
   return fmt::format(
       "namespace detail {{\n\n"
       "/// The input pointer does not take part in deducing T, so a model without\n"
@@ -413,8 +366,9 @@ std::string ldlt_functions(std::size_t n) {
       "/// Solves L D L^T x = b in place. b: {0}.\n"
       "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n"
       "}}  // namespace detail\n\n",
-      n, factor, solve, n <= ldlt_unrolled_up_to ? ", unrolled" : "");
+      n, ldlt.factor, ldlt.solve, ldlt.unrolled ? ", unrolled" : "");
 }
+
 
 std::string cyclic_list(const Equations& e) {
   std::string out;
@@ -511,7 +465,7 @@ std::string emit_cpp_header(const Equations& e) {
       "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
       members, values);
   out += constraint_declarations(e);
-  out += ldlt_functions(k);
+  out += detail_functions(k);
   out += constrained_solver(e);
   out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
          jacobian_input_function(e) + linearization_function(e);

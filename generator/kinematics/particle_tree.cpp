@@ -68,19 +68,19 @@ ParticleTree find_particle_tree(const Model& model) {
     std::size_t i = tree.order[at];
     ParticleJoint& joint = tree.joints[i];
     joint.displacement = model.particles[i].position;
-    // the nearest parent: the earlier particle with the most coordinates that its displacement leaves out
-    std::size_t best = 0;
-    for (std::size_t before = 0; before < at; ++before) {
+    // the nearest parent: of the earlier particles (fewer or as many coordinates, so the order runs
+    // from the most down), the first whose coordinates the displacement leaves out
+    for (std::size_t before = at; before-- > 0;) {
       std::size_t p = tree.order[before];
       const auto& cp = moved_by[p];
-      if (cp.size() < best || !std::includes(moved_by[i].begin(), moved_by[i].end(), cp.begin(), cp.end())) continue;
+      if (!std::includes(moved_by[i].begin(), moved_by[i].end(), cp.begin(), cp.end())) continue;
       Vector3 d;
       for (unsigned a = 0; a < 3; ++a) d[a] = (model.particles[i].position[a] - model.particles[p].position[a]).expand();
-      std::vector<std::size_t> cd = coordinates_of(d, s);
-      std::vector<std::size_t> shared;
+      std::vector<std::size_t> cd = coordinates_of(d, s), shared;
       std::set_intersection(cd.begin(), cd.end(), cp.begin(), cp.end(), std::back_inserter(shared));
-      if (!shared.empty() || (cp.size() == best && joint.parent >= 0)) continue;
-      joint.parent = int(p), joint.displacement = d, best = cp.size();
+      if (!shared.empty()) continue;
+      joint.parent = int(p), joint.displacement = d;
+      break;
     }
     joint.coordinates = coordinates_of(joint.displacement, s);
     if (joint.coordinates.size() > 3)

@@ -1,0 +1,67 @@
+#include "emit/cpp_ldlt.hpp"
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+namespace {
+
+// unrolled, the code grows as n³ and n² (the factor alone was 108 KB at n = 30); the loops were
+// 18 % slower at n = 16 and as fast at n = 30 (the planar chain's rhs in the mass-matrix form,
+// tests/benchmarks/rhs_benchmark.cpp)
+constexpr std::size_t unrolled_up_to = 24;
+
+LdltCode unrolled(std::size_t n) {
+  LdltCode c;
+  for (std::size_t j = 0; j < n; ++j) {
+    std::string d = fmt::format("M[{}]", j * n + j);
+    for (std::size_t k = 0; k < j; ++k) d += fmt::format(" - L[{0}]*L[{0}]*D[{1}]", j * n + k, k);
+    c.factor += fmt::format("  D[{}] = {};\n", j, d);
+    for (std::size_t i = j + 1; i < n; ++i) {
+      std::string l = fmt::format("M[{}]", i * n + j);
+      for (std::size_t k = 0; k < j; ++k) l += fmt::format(" - L[{}]*L[{}]*D[{}]", i * n + k, j * n + k, k);
+      c.factor += fmt::format("  L[{}] = ({})/D[{}];\n", i * n + j, l, j);
+    }
+  }
+  for (std::size_t i = 1; i < n; ++i) {
+    std::string y = fmt::format("b[{}]", i);
+    for (std::size_t k = 0; k < i; ++k) y += fmt::format(" - L[{}]*b[{}]", i * n + k, k);
+    c.solve += fmt::format("  b[{}] = {};\n", i, y);
+  }
+  for (std::size_t i = 0; i < n; ++i) c.solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
+  for (std::size_t i = n > 0 ? n - 1 : 0; i-- > 0;) {
+    std::string x = fmt::format("b[{}]", i);
+    for (std::size_t k = i + 1; k < n; ++k) x += fmt::format(" - L[{}]*b[{}]", k * n + i, k);
+    c.solve += fmt::format("  b[{}] = {};\n", i, x);
+  }
+  return c;
+}
+
+LdltCode loops(std::size_t n) {
+  LdltCode c;
+  c.unrolled = false;
+  c.factor = fmt::format(
+      "  for (std::size_t j = 0; j < {0}; ++j) {{\n"
+      "    T d = M[j * {0} + j];\n"
+      "    for (std::size_t k = 0; k < j; ++k) d = d - L[j * {0} + k] * L[j * {0} + k] * D[k];\n"
+      "    D[j] = d;\n"
+      "    for (std::size_t i = j + 1; i < {0}; ++i) {{\n"
+      "      T l = M[i * {0} + j];\n"
+      "      for (std::size_t k = 0; k < j; ++k) l = l - L[i * {0} + k] * L[j * {0} + k] * D[k];\n"
+      "      L[i * {0} + j] = l / d;\n"
+      "    }}\n"
+      "  }}\n", n);
+  c.solve = fmt::format(
+      "  for (std::size_t i = 1; i < {0}; ++i)\n"
+      "    for (std::size_t k = 0; k < i; ++k) b[i] = b[i] - L[i * {0} + k] * b[k];\n"
+      "  for (std::size_t i = 0; i < {0}; ++i) b[i] = b[i] / D[i];\n"
+      "  for (std::size_t i = {0} - 1; i-- > 0;)\n"
+      "    for (std::size_t k = i + 1; k < {0}; ++k) b[i] = b[i] - L[k * {0} + i] * b[k];\n", n);
+  return c;
+}
+
+}  // namespace
+
+LdltCode ldlt_code(std::size_t n) { return n <= unrolled_up_to ? unrolled(n) : loops(n); }
+
+}  // namespace eomgen
