@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "kinematics/particle_tree.hpp"
 #include "kinematics/rolling_contact.hpp"
 #include "model/frames.hpp"
 #include "model/model.hpp"
@@ -50,7 +49,7 @@ class Builder {
     read_constraints();
     read_outputs();
     check_complete();
-    check_forward_dynamics();
+    check_forward_dynamics(f_, m_, d_);
     build_scenes_and_variants(f_, m_, d_);
     return m_;
   }
@@ -78,23 +77,7 @@ class Builder {
                "composed link by link, for long chains)");
   }
 
-  void check_forward_dynamics() {
-    const std::string& form = f_.forward_dynamics;
-    if (form != "auto" && form != "mass_matrix" && form != "articulated")
-      d_.error(f_.forward_dynamics_where, "model.forward_dynamics", fmt::format("unknown forward dynamics '{}'", form),
-               "use \"auto\" (the default: the articulated-body recursion for a tree of particles with many "
-               "coordinates, M = L D L^T otherwise), \"mass_matrix\" or \"articulated\"");
-    if (form != "articulated" || !d_.empty()) return;
-    if (f_.method != "lagrange2")
-      d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
-               fmt::format("the articulated-body recursion solves Lagrange's equations of the second kind, not method '{}'",
-                           f_.method),
-               "use method = \"lagrange2\", or forward_dynamics = \"auto\"");
-    else if (ParticleTree tree = find_particle_tree(m_); !tree.found())
-      d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
-               "the articulated-body recursion needs a tree of particles, and this model is not one: " + tree.why_not,
-               "use forward_dynamics = \"auto\" or \"mass_matrix\" (M = L D L^T)");
-  }
+
 
   void declare(const std::string& name, SourceLocation where, const std::string& key,
                SymbolKind kind, std::size_t index, const char* what) {

@@ -141,6 +141,10 @@ const std::vector<std::string>& known_methods();
 /// Mistakes go to `diagnostics`; the result is meaningful only when it stays empty.
 Model build_model(const ModelFile& file, Diagnostics& diagnostics);
 
+/// Checks [model] forward_dynamics: a known form, and for "articulated" a tree of particles
+/// solved by Lagrange II (built `model`, once its other mistakes are reported).
+void check_forward_dynamics(const ModelFile& file, const Model& model, Diagnostics& diagnostics);
+
 /// Checks the [scenes] and [variants] of a file against the model's symbols.
 void build_scenes_and_variants(const ModelFile& file, Model& model, Diagnostics& diagnostics);
 
