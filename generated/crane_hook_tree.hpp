@@ -115,7 +115,8 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 
 }  // namespace detail
 
-/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
+/// Mass matrix M(q) of M q'' = f, symmetric positive definite: M_jl = m S_j . S_l over the
+/// particles' tree (S_j = dr/dq_j, m the mass below the deeper of the two joints).
 /// x: num_states; p: num_parameters; M: 4x4, row-major.
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
@@ -133,29 +134,47 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
-  M[1] = T(0);
-  M[4] = M[1];
-  M[10] = p_l1*p_l1*p_m1;
-  M[11] = T(0);
-  M[14] = M[11];
-  M[15] = p_l2*p_l2*p_m2;
-  const T c0 = p_m0 + p_m1 + p_m2;
-  M[0] = c0*p_L*p_L;
-  const T c1 = sin(q_theta);
-  M[5] = c0*c1*c1*p_L*p_L;
-  const T c2 = cos(q_psi);
-  const T c3 = cos(q_a);
-  const T c4 = cos(q_theta);
-  M[2] = c1*p_L*p_l1*p_m1*sin(q_a) + c2*c3*c4*p_L*p_l1*p_m1;
-  M[8] = M[2];
-  const T c5 = sin(q_psi);
-  M[6] = -c1*c3*c5*p_L*p_l1*p_m1;
-  M[9] = M[6];
-  const T c6 = cos(q_b);
-  M[3] = c1*p_L*p_l2*p_m2*sin(q_b) + c4*c5*c6*p_L*p_l2*p_m2;
-  M[12] = M[3];
-  M[7] = c1*c2*c6*p_L*p_l2*p_m2;
-  M[13] = M[7];
+  static constexpr int coupling[16] = {0, 0, 1, 2, 0, 0, 1, 2, 1, 1, 1, -1, 2, 2, -1, 2};
+  T mass[3];
+  const T ab0_mass = p_m0 + p_m1 + p_m2;
+  mass[1] = p_m1;
+  mass[2] = p_m2;
+  mass[0] = ab0_mass;
+  T axis[4][3];
+  const T c0 = cos(q_psi);
+  const T c1 = cos(q_theta);
+  const T c2 = sin(q_theta);
+  const T c3 = sin(q_psi);
+  const T ab2_S10 = cos(q_b)*p_l2;
+  const T ab2_S20 = p_l2*sin(q_b);
+  const T ab1_S00 = cos(q_a)*p_l1;
+  const T ab1_S20 = p_l1*sin(q_a);
+  const T ab0_S00 = c0*c1*p_L;
+  const T ab0_S01 = -c2*c3*p_L;
+  const T ab0_S10 = c1*c3*p_L;
+  const T ab0_S11 = c0*c2*p_L;
+  const T ab0_S20 = c2*p_L;
+  axis[1][2] = T(0);
+  axis[2][1] = T(0);
+  axis[3][0] = T(0);
+  axis[3][1] = ab2_S10;
+  axis[3][2] = ab2_S20;
+  axis[2][0] = ab1_S00;
+  axis[2][2] = ab1_S20;
+  axis[0][0] = ab0_S00;
+  axis[1][0] = ab0_S01;
+  axis[0][1] = ab0_S10;
+  axis[1][1] = ab0_S11;
+  axis[0][2] = ab0_S20;
+  for (std::size_t j = 0; j < 4; ++j)
+    for (std::size_t l = 0; l < 4; ++l) {
+      const int k = coupling[j * 4 + l];
+      if (k < 0) {
+        M[j * 4 + l] = T(0);
+      } else {
+        M[j * 4 + l] = mass[k] * (axis[j][0] * axis[l][0] + axis[j][1] * axis[l][1] + axis[j][2] * axis[l][2]);
+      }
+    }
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -183,19 +202,47 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_g = p[6];
   const T p_c = p[7];
   const T u_F = u[0];
-  const T c0 = p_m0 + p_m1 + p_m2;
-  const T c1 = sin(q_theta);
-  const T c2 = cos(q_theta);
-  const T c3 = cos(q_psi);
-  const T c4 = cos(q_a);
-  const T c5 = sin(q_b);
-  const T c6 = sin(q_psi);
-  const T c7 = cos(q_b);
-  f[3] = -T(2)*c2*c3*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c6*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 + c1*c6*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c2*c5*dq_theta*dq_theta*p_L*p_l2*p_m2 - c5*p_g*p_l2*p_m2 - dq_b*p_c;
-  const T c8 = sin(q_a);
-  f[0] = c0*c1*c2*dq_psi*dq_psi*p_L*p_L - c0*c1*p_L*p_g - c1*c4*dq_a*dq_a*p_L*p_l1*p_m1 - c1*c7*dq_b*dq_b*p_L*p_l2*p_m2 + c2*c3*c8*dq_a*dq_a*p_L*p_l1*p_m1 + c2*c3*p_L*u_F + c2*c5*c6*dq_b*dq_b*p_L*p_l2*p_m2;
-  f[1] = -T(2)*c0*c1*c2*dq_psi*dq_theta*p_L*p_L + c1*c3*c5*dq_b*dq_b*p_L*p_l2*p_m2 - c1*c6*c8*dq_a*dq_a*p_L*p_l1*p_m1 - c1*c6*p_L*u_F;
-  f[2] = T(2)*c2*c4*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 + c1*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 - c2*c8*dq_theta*dq_theta*p_L*p_l1*p_m1 + c4*p_l1*u_F - c8*p_g*p_l1*p_m1 - dq_a*p_c;
+  const T c0 = cos(q_b);
+  const T c1 = sin(q_b);
+  const T c2 = cos(q_a);
+  const T c3 = sin(q_a);
+  const T c4 = cos(q_psi);
+  const T c5 = cos(q_theta);
+  const T c6 = sin(q_theta);
+  const T c7 = sin(q_psi);
+  const T ab2_S10 = c0*p_l2;
+  const T ab2_S20 = c1*p_l2;
+  const T ab2_c1 = -c1*dq_b*dq_b*p_l2;
+  const T ab2_c2 = c0*dq_b*dq_b*p_l2;
+  const T ab1_S00 = c2*p_l1;
+  const T ab1_S20 = c3*p_l1;
+  const T ab1_c0 = -c3*dq_a*dq_a*p_l1;
+  const T ab1_c2 = c2*dq_a*dq_a*p_l1;
+  const T ab0_S00 = c4*c5*p_L;
+  const T ab0_S01 = -c6*c7*p_L;
+  const T ab0_S10 = c5*c7*p_L;
+  const T ab0_S11 = c4*c6*p_L;
+  const T ab0_S20 = c6*p_L;
+  const T ab0_c0 = -(c4*c6*dq_psi*p_L + c5*c7*dq_theta*p_L)*dq_psi - (c4*c6*dq_theta*p_L + c5*c7*dq_psi*p_L)*dq_theta;
+  const T ab0_c1 = (c4*c5*dq_psi*p_L - c6*c7*dq_theta*p_L)*dq_theta + (c4*c5*dq_theta*p_L - c6*c7*dq_psi*p_L)*dq_psi;
+  const T ab0_c2 = c5*dq_theta*dq_theta*p_L;
+  const T ab1_rest0 = ab0_c0 + ab1_c0;
+  const T ab1_rest2 = ab0_c2 + ab1_c2;
+  const T ab2_rest1 = ab0_c1 + ab2_c1;
+  const T ab2_rest2 = ab0_c2 + ab2_c2;
+  const T ab2_restforce0 = ab0_c0*p_m2;
+  const T ab1_restforce1 = ab0_c1*p_m1;
+  const T ab2_restforce1 = ab2_rest1*p_m2;
+  const T ab2_restforce2 = (ab2_rest2 + p_g)*p_m2;
+  const T ab1_restforce0 = ab1_rest0*p_m1;
+  const T ab1_restforce2 = (ab1_rest2 + p_g)*p_m1;
+  const T ab0_restforce0 = ab0_c0*p_m0 + ab1_restforce0 + ab2_restforce0;
+  const T ab0_restforce1 = ab0_c1*p_m0 + ab1_restforce1 + ab2_restforce1;
+  const T ab0_restforce2 = (ab0_c2 + p_g)*p_m0 + ab1_restforce2 + ab2_restforce2;
+  f[3] = -ab2_S10*ab2_restforce1 - ab2_S20*ab2_restforce2 - dq_b*p_c;
+  f[2] = -ab1_S00*ab1_restforce0 - ab1_S20*ab1_restforce2 + c2*p_l1*u_F - dq_a*p_c;
+  f[1] = -ab0_S01*ab0_restforce0 - ab0_S11*ab0_restforce1 - c6*c7*p_L*u_F;
+  f[0] = -ab0_S00*ab0_restforce0 - ab0_S10*ab0_restforce1 - ab0_S20*ab0_restforce2 + c4*c5*p_L*u_F;
 }
 
 /// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' = M^-1 f by the
@@ -313,8 +360,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the inverse dynamics tau = M(q) q'' - f(q, q', u), q'' held.
-/// ddq: 4; F: 4x9, row-major.
+/// d tau/d(q, q', u) of the inverse dynamics tau = M(q) q'' - f, q'' held: m S_j . dd''/dx over
+/// the particles' tree, and the rest. ddq: 4; F: 4x9, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -338,62 +385,140 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T p_g = p[6];
   const T p_c = p[7];
   const T u_F = u[0];
-  F[4] = T(0);
-  F[21] = T(0);
-  F[24] = p_c;
-  F[25] = T(0);
-  F[29] = T(0);
-  F[33] = T(0);
-  F[34] = p_c;
-  F[35] = T(0);
-  const T c0 = p_m0 + p_m1 + p_m2;
+  static constexpr int coupling[16] = {0, 0, 1, 2, 0, 0, 1, 2, 1, 1, 1, -1, 2, 2, -1, 2};
+  T mass[3];
+  const T ab0_mass = p_m0 + p_m1 + p_m2;
+  mass[1] = p_m1;
+  mass[2] = p_m2;
+  mass[0] = ab0_mass;
+  T axis[4][3];
+  const T c0 = cos(q_psi);
   const T c1 = cos(q_theta);
-  const T c2 = c1*c1;
-  const T c3 = sin(q_theta);
-  F[5] = -T(2)*c0*c1*c3*dq_psi*p_L*p_L;
-  F[13] = T(2)*c0*c1*c3*dq_psi*p_L*p_L;
-  F[14] = T(2)*c0*c1*c3*dq_theta*p_L*p_L;
-  const T c4 = cos(q_psi);
-  F[8] = -c1*c4*p_L;
-  const T c5 = sin(q_b);
-  F[16] = -T(2)*c3*c4*c5*dq_b*p_L*p_l2*p_m2;
-  const T c6 = sin(q_psi);
-  F[17] = c3*c6*p_L;
-  const T c7 = cos(q_b);
-  F[7] = -T(2)*c1*c5*c6*dq_b*p_L*p_l2*p_m2 + T(2)*c3*c7*dq_b*p_L*p_l2*p_m2;
-  F[12] = -c3*c4*c5*ddq[3]*p_L*p_l2*p_m2 - c3*c4*c7*dq_b*dq_b*p_L*p_l2*p_m2;
-  F[28] = -T(2)*c1*c6*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c4*c7*ddq[0]*p_L*p_l2*p_m2 - c3*c4*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 - c3*c4*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c3*c6*c7*ddq[1]*p_L*p_l2*p_m2;
-  F[31] = T(2)*c1*c4*c7*dq_psi*p_L*p_l2*p_m2 + T(2)*c1*c5*dq_theta*p_L*p_l2*p_m2 - T(2)*c3*c6*c7*dq_theta*p_L*p_l2*p_m2;
-  F[32] = T(2)*c1*c4*c7*dq_theta*p_L*p_l2*p_m2 - T(2)*c3*c6*c7*dq_psi*p_L*p_l2*p_m2;
-  const T c8 = -c1*c5*p_L*p_l2*p_m2 + c3*c6*c7*p_L*p_l2*p_m2;
-  F[27] = -T(2)*c3*c4*c7*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c4*c7*ddq[1]*p_L*p_l2*p_m2 - c1*c6*c7*dq_psi*dq_psi*p_L*p_l2*p_m2 - c1*c6*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c3*c5*dq_theta*dq_theta*p_L*p_l2*p_m2 - c8*ddq[0];
+  const T c2 = sin(q_theta);
+  const T c3 = sin(q_psi);
+  const T ab2_S10 = cos(q_b)*p_l2;
+  const T ab2_S20 = p_l2*sin(q_b);
+  const T ab1_S00 = cos(q_a)*p_l1;
+  const T ab1_S20 = p_l1*sin(q_a);
+  const T ab0_S00 = c0*c1*p_L;
+  const T ab0_S01 = -c2*c3*p_L;
+  const T ab0_S10 = c1*c3*p_L;
+  const T ab0_S11 = c0*c2*p_L;
+  const T ab0_S20 = c2*p_L;
+  axis[1][2] = T(0);
+  axis[2][1] = T(0);
+  axis[3][0] = T(0);
+  axis[3][1] = ab2_S10;
+  axis[3][2] = ab2_S20;
+  axis[2][0] = ab1_S00;
+  axis[2][2] = ab1_S20;
+  axis[0][0] = ab0_S00;
+  axis[1][0] = ab0_S01;
+  axis[0][1] = ab0_S10;
+  axis[1][1] = ab0_S11;
+  axis[0][2] = ab0_S20;
+  T by_coordinate[4][3];
+  const T c4 = c0*c1*dq_theta*p_L - c2*c3*dq_psi*p_L;
+  const T c5 = c0*c1*dq_psi*p_L - c2*c3*dq_theta*p_L;
+  const T c6 = c0*c2*dq_psi*p_L + c1*c3*dq_theta*p_L;
+  const T c7 = c0*c2*dq_theta*p_L + c1*c3*dq_psi*p_L;
+  const T c8 = sin(q_a);
   const T c9 = cos(q_a);
-  F[19] = -T(2)*c1*c4*c9*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c6*c9*ddq[0]*p_L*p_l1*p_m1 - c3*c4*c9*ddq[1]*p_L*p_l1*p_m1 + c3*c6*c9*dq_psi*dq_psi*p_L*p_l1*p_m1 + c3*c6*c9*dq_theta*dq_theta*p_L*p_l1*p_m1;
-  F[23] = -T(2)*c1*c6*c9*dq_theta*p_L*p_l1*p_m1 - T(2)*c3*c4*c9*dq_psi*p_L*p_l1*p_m1;
+  const T c10 = cos(q_b);
+  const T c11 = sin(q_b);
+  const T ab0_Aq0_0 = -c0*c2*ddq[0]*p_L - c1*c3*ddq[1]*p_L - c4*dq_theta - c5*dq_psi;
+  const T ab0_Aq0_1 = c0*c1*ddq[1]*p_L - c2*c3*ddq[0]*p_L - c6*dq_theta - c7*dq_psi;
+  const T ab0_Aq0_2 = c1*ddq[0]*p_L - c2*dq_theta*dq_theta*p_L;
+  const T ab0_Aq1_0 = -c0*c2*ddq[1]*p_L - c1*c3*ddq[0]*p_L - c4*dq_psi - c5*dq_theta;
+  const T ab0_Aq1_1 = c0*c1*ddq[0]*p_L - c2*c3*ddq[1]*p_L - c6*dq_psi - c7*dq_theta;
+  const T ab1_Aq0_0 = -c8*ddq[2]*p_l1 - c9*dq_a*dq_a*p_l1;
+  const T ab1_Aq0_2 = -c8*dq_a*dq_a*p_l1 + c9*ddq[2]*p_l1;
+  const T ab2_Aq0_1 = -c10*dq_b*dq_b*p_l2 - c11*ddq[3]*p_l2;
+  const T ab2_Aq0_2 = c10*ddq[3]*p_l2 - c11*dq_b*dq_b*p_l2;
+  by_coordinate[1][2] = T(0);
+  by_coordinate[2][1] = T(0);
+  by_coordinate[3][0] = T(0);
+  by_coordinate[0][0] = ab0_Aq0_0;
+  by_coordinate[0][1] = ab0_Aq0_1;
+  by_coordinate[0][2] = ab0_Aq0_2;
+  by_coordinate[1][0] = ab0_Aq1_0;
+  by_coordinate[1][1] = ab0_Aq1_1;
+  by_coordinate[2][0] = ab1_Aq0_0;
+  by_coordinate[2][2] = ab1_Aq0_2;
+  by_coordinate[3][1] = ab2_Aq0_1;
+  by_coordinate[3][2] = ab2_Aq0_2;
+  T by_velocity[4][3];
+  const T ab0_Av0_0 = -T(2)*c0*c2*dq_theta*p_L - T(2)*c1*c3*dq_psi*p_L;
+  const T ab0_Av0_1 = T(2)*c0*c1*dq_psi*p_L - T(2)*c2*c3*dq_theta*p_L;
+  const T ab0_Av0_2 = T(2)*c1*dq_theta*p_L;
+  const T ab0_Av1_0 = -T(2)*c0*c2*dq_psi*p_L - T(2)*c1*c3*dq_theta*p_L;
+  const T ab0_Av1_1 = T(2)*c0*c1*dq_theta*p_L - T(2)*c2*c3*dq_psi*p_L;
+  const T ab1_Av0_0 = -T(2)*c8*dq_a*p_l1;
+  const T ab1_Av0_2 = T(2)*c9*dq_a*p_l1;
+  const T ab2_Av0_1 = -T(2)*c11*dq_b*p_l2;
+  const T ab2_Av0_2 = T(2)*c10*dq_b*p_l2;
+  by_velocity[1][2] = T(0);
+  by_velocity[2][1] = T(0);
+  by_velocity[3][0] = T(0);
+  by_velocity[0][0] = ab0_Av0_0;
+  by_velocity[0][1] = ab0_Av0_1;
+  by_velocity[0][2] = ab0_Av0_2;
+  by_velocity[1][0] = ab0_Av1_0;
+  by_velocity[1][1] = ab0_Av1_1;
+  by_velocity[2][0] = ab1_Av0_0;
+  by_velocity[2][2] = ab1_Av0_2;
+  by_velocity[3][1] = ab2_Av0_1;
+  by_velocity[3][2] = ab2_Av0_2;
+  for (std::size_t j = 0; j < 4; ++j)
+    for (std::size_t l = 0; l < 4; ++l) {
+      const int k = coupling[j * 4 + l];
+      if (k < 0) {
+        F[j * 9 + l] = T(0);
+        F[j * 9 + 4 + l] = T(0);
+      } else {
+        F[j * 9 + l] = mass[k] * (axis[j][0] * by_coordinate[l][0] + axis[j][1] * by_coordinate[l][1] + axis[j][2] * by_coordinate[l][2]);
+        F[j * 9 + 4 + l] = mass[k] * (axis[j][0] * by_velocity[l][0] + axis[j][1] * by_velocity[l][1] + axis[j][2] * by_velocity[l][2]);
+      }
+    }
+  const T ab2_c1 = -c11*dq_b*dq_b*p_l2;
+  const T ab2_c2 = c10*dq_b*dq_b*p_l2;
+  const T ab1_c0 = -c8*dq_a*dq_a*p_l1;
+  const T ab1_c2 = c9*dq_a*dq_a*p_l1;
+  const T ab0_c0 = -c6*dq_psi - c7*dq_theta;
+  const T ab0_c1 = c4*dq_psi + c5*dq_theta;
+  const T ab0_c2 = c1*dq_theta*dq_theta*p_L;
+  const T ab0_acc0 = ab0_S00*ddq[0] + ab0_S01*ddq[1] + ab0_c0;
+  const T ab0_acc1 = ab0_S10*ddq[0] + ab0_S11*ddq[1] + ab0_c1;
+  const T ab0_acc2 = ab0_S20*ddq[0] + ab0_c2;
+  const T ab1_acc0 = ab0_acc0 + ab1_S00*ddq[2] + ab1_c0;
+  const T ab1_acc2 = ab0_acc2 + ab1_S20*ddq[2] + ab1_c2;
+  const T ab2_acc1 = ab0_acc1 + ab2_S10*ddq[3] + ab2_c1;
+  const T ab2_acc2 = ab0_acc2 + ab2_S20*ddq[3] + ab2_c2;
+  const T ab2_force0 = ab0_acc0*p_m2;
+  const T ab1_force1 = ab0_acc1*p_m1;
+  const T ab2_force1 = ab2_acc1*p_m2;
+  const T ab2_force2 = (ab2_acc2 + p_g)*p_m2;
+  const T ab1_force0 = ab1_acc0*p_m1;
+  const T ab1_force2 = (ab1_acc2 + p_g)*p_m1;
+  const T ab0_force0 = ab0_acc0*p_m0 + ab1_force0 + ab2_force0;
+  const T ab0_force1 = ab0_acc1*p_m0 + ab1_force1 + ab2_force1;
+  const T ab0_force2 = (ab0_acc2 + p_g)*p_m0 + ab1_force2 + ab2_force2;
+  F[8] = -c0*c1*p_L;
+  F[17] = c2*c3*p_L;
+  F[24] = F[24] + (p_c);
   F[26] = -c9*p_l1;
-  const T c10 = c3*c3;
-  const T c11 = sin(q_a);
-  F[6] = -T(2)*c1*c11*c4*dq_a*p_L*p_l1*p_m1 + T(2)*c3*c9*dq_a*p_L*p_l1*p_m1;
-  F[10] = c11*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1 - c3*c4*c9*ddq[2]*p_L*p_l1*p_m1 + c3*c4*p_L*u_F + c3*c5*c6*dq_b*dq_b*p_L*p_l2*p_m2 - c3*c6*c7*ddq[3]*p_L*p_l2*p_m2;
-  F[11] = c11*c3*c6*ddq[2]*p_L*p_l1*p_m1 + c3*c6*c9*dq_a*dq_a*p_L*p_l1*p_m1;
-  F[15] = T(2)*c11*c3*c6*dq_a*p_L*p_l1*p_m1;
-  F[22] = T(2)*c1*c11*dq_theta*p_L*p_l1*p_m1 - T(2)*c1*c6*c9*dq_psi*p_L*p_l1*p_m1 - T(2)*c3*c4*c9*dq_theta*p_L*p_l1*p_m1;
-  const T c12 = c1*c11*p_L*p_l1*p_m1 - c3*c4*c9*p_L*p_l1*p_m1;
-  F[0] = c0*c1*p_L*p_g + c0*c10*dq_psi*dq_psi*p_L*p_L - c0*c2*dq_psi*dq_psi*p_L*p_L + c1*c7*dq_b*dq_b*p_L*p_l2*p_m2 + c1*c9*dq_a*dq_a*p_L*p_l1*p_m1 + c11*c3*c4*dq_a*dq_a*p_L*p_l1*p_m1 + c12*ddq[2] + c3*c4*p_L*u_F + c3*c5*c6*dq_b*dq_b*p_L*p_l2*p_m2 - c8*ddq[3];
-  F[18] = T(2)*c3*c6*c9*dq_psi*dq_theta*p_L*p_l1*p_m1 - c1*c4*c9*dq_psi*dq_psi*p_L*p_l1*p_m1 - c1*c4*c9*dq_theta*dq_theta*p_L*p_l1*p_m1 - c1*c6*c9*ddq[1]*p_L*p_l1*p_m1 - c11*c3*dq_theta*dq_theta*p_L*p_l1*p_m1 + c12*ddq[0];
-  const T c13 = c1*c11*c6*dq_a*dq_a*p_L*p_l1*p_m1;
-  const T c14 = c1*c6*p_L*u_F;
-  const T c15 = -c1*c4*c5*dq_b*dq_b*p_L*p_l2*p_m2;
-  const T c16 = -c1*c6*c9*ddq[2]*p_L*p_l1*p_m1;
-  const T c17 = c1*c4*c7*ddq[3]*p_L*p_l2*p_m2;
-  F[1] = c13 + c14 + c15 + c16 + c17;
-  F[9] = T(2)*c0*c1*c3*ddq[1]*p_L*p_L - T(2)*c0*c10*dq_psi*dq_theta*p_L*p_L + T(2)*c0*c2*dq_psi*dq_theta*p_L*p_L + c13 + c14 + c15 + c16 + c17;
-  const T c18 = c1*c11*c4*p_L*p_l1*p_m1 - c3*c9*p_L*p_l1*p_m1;
-  F[2] = -c1*c4*c9*dq_a*dq_a*p_L*p_l1*p_m1 - c11*c3*dq_a*dq_a*p_L*p_l1*p_m1 - c18*ddq[2];
-  F[20] = T(2)*c1*c11*c6*dq_psi*dq_theta*p_L*p_l1*p_m1 + c1*c9*dq_theta*dq_theta*p_L*p_l1*p_m1 + c11*c3*c4*dq_psi*dq_psi*p_L*p_l1*p_m1 + c11*c3*c4*dq_theta*dq_theta*p_L*p_l1*p_m1 + c11*c3*c6*ddq[1]*p_L*p_l1*p_m1 + c11*p_l1*u_F - c18*ddq[0] + c9*p_g*p_l1*p_m1;
-  const T c19 = c1*c5*c6*p_L*p_l2*p_m2 - c3*c7*p_L*p_l2*p_m2;
-  F[3] = -c1*c6*c7*dq_b*dq_b*p_L*p_l2*p_m2 - c19*ddq[3] - c3*c5*dq_b*dq_b*p_L*p_l2*p_m2;
-  F[30] = -T(2)*c1*c4*c5*dq_psi*dq_theta*p_L*p_l2*p_m2 + c1*c7*dq_theta*dq_theta*p_L*p_l2*p_m2 - c19*ddq[0] - c3*c4*c5*ddq[1]*p_L*p_l2*p_m2 + c3*c5*c6*dq_psi*dq_psi*p_L*p_l2*p_m2 + c3*c5*c6*dq_theta*dq_theta*p_L*p_l2*p_m2 + c7*p_g*p_l2*p_m2;
+  F[34] = F[34] + (p_c);
+  F[35] = T(0);
+  F[30] = F[30] + (-ab2_force1*c11*p_l2 + ab2_force2*c10*p_l2);
+  F[20] = F[20] + (-ab1_force0*c8*p_l1 + ab1_force2*c9*p_l1 + c8*p_l1*u_F);
+  const T c12 = ab0_force1*c2*c3*p_L;
+  const T c13 = ab0_force0*c0*c2*p_L;
+  const T c14 = -c0*c2*p_L*u_F;
+  F[0] = F[0] + (ab0_force2*c1*p_L - c12 - c13 - c14);
+  F[10] = F[10] + (-c12 - c13 - c14);
+  const T c15 = ab0_force0*c1*c3*p_L - ab0_force1*c0*c1*p_L - c1*c3*p_L*u_F;
+  F[1] = F[1] + (-c15);
+  F[9] = F[9] + (-c15);
 }
 
 }  // namespace detail

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "derive/recursion_quantities.hpp"
 #include "kinematics/vector3.hpp"
 
 namespace eomgen {
@@ -18,6 +19,7 @@ class Recursion {
 
   ArticulatedAccelerations run() {
     out_.accelerations.assign(model_.symbols.num_coordinates(), 0);
+    out_.motions.resize(count_);
     inward();
     outward();
     return out_;
@@ -30,33 +32,6 @@ class Recursion {
     Vector3 c{0, 0, 0};
     std::vector<ex> u;  // Q − Sᵀ pA
   };
-
-  // a symbol for `value` (an intermediate), unless it is a number or a symbol already
-  ex named(const ex& value, const std::string& cpp_name) {
-    if (GiNaC::is_a<GiNaC::numeric>(value) || GiNaC::is_a<GiNaC::symbol>(value)) return value;
-    GiNaC::symbol s(cpp_name);
-    out_.intermediates.push_back({s, value, cpp_name});
-    return s;
-  }
-
-  matrix named(const matrix& m, const std::string& prefix, bool symmetric) {
-    matrix r(m.rows(), m.cols());
-    for (unsigned a = 0; a < m.rows(); ++a)
-      for (unsigned b = 0; b < m.cols(); ++b)
-        r(a, b) = symmetric && b < a ? r(b, a) : named(m(a, b), fmt::format("{}{}{}", prefix, a, b));
-    return r;
-  }
-
-  Vector3 named(const Vector3& v, const std::string& prefix) {
-    return {named(v[0], prefix + "0"), named(v[1], prefix + "1"), named(v[2], prefix + "2")};
-  }
-
-  // the generalized forces on q_j besides gravity and inertia: applied, [energy] potential, dissipation
-  ex applied_force(std::size_t j) const {
-    const Symbols& s = model_.symbols;
-    return mechanics_.generalized_force[j] - model_.potential.diff(s.coordinates[j]) -
-           mechanics_.dissipation.diff(s.velocities[j]);
-  }
 
   // S = ∂d/∂q_J and c = d''(q'' = 0) of particle i's displacement from its parent
   void joint_motion(std::size_t i, Joint& J) {
@@ -73,9 +48,14 @@ class Recursion {
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < k; ++b)
         J.c[a] += velocity[a].diff(s.coordinates[pj.coordinates[b]]) * s.velocities[pj.coordinates[b]];
+    RelativeMotion& motion = out_.motions[i];
+    for (unsigned b = 0; b < k; ++b) motion.axis_expressions.push_back(column(J.S, b));
+    motion.bias_expression = J.c;
     std::string p = fmt::format("ab{}_", i);
-    J.S = named(J.S, p + "S", false);
-    J.c = named(J.c, p + "c");
+    J.S = named_(J.S, p + "S", false);
+    J.c = named_(J.c, p + "c");
+    for (unsigned b = 0; b < k; ++b) motion.axes.push_back(column(J.S, b));
+    motion.bias = J.c;
   }
 
   // leaves to root: IA_i = m_i 1 + Σ Ia_child, pA_i = −m_i g + Σ pa_child (each parent after its children)
@@ -94,27 +74,27 @@ class Recursion {
   // Ia = IA − U D⁻¹ Uᵀ and pa = pA + Ia c + U D⁻¹ u (IA and pA themselves for a joint without coordinates)
   void articulate(std::size_t i) {
     std::string p = fmt::format("ab{}_", i);
-    matrix I = named(inertia_[i], p + "I", true);
-    Vector3 pA = named(bias_force_[i], p + "p");
+    matrix I = named_(inertia_[i], p + "I", true);
+    Vector3 pA = named_(bias_force_[i], p + "p");
     Joint& J = joints_[i];
     std::size_t k = tree_.joints[i].coordinates.size();
     if (k == 0) return hand_to_parent(i, I, pA);
     joint_motion(i, J);
-    J.U = named(I.mul(J.S), p + "U", false);
-    matrix D = named(J.S.transpose().mul(J.U), p + "D", true);
-    J.D_inverse = named(D.inverse(), p + "Di", true);
+    J.U = named_(I.mul(J.S), p + "U", false);
+    matrix D = named_(J.S.transpose().mul(J.U), p + "D", true);
+    J.D_inverse = named_(D.inverse(), p + "Di", true);
     for (unsigned b = 0; b < k; ++b) {
-      ex u = applied_force(tree_.joints[i].coordinates[b]);
+      ex u = applied_generalized_force(model_, mechanics_, tree_.joints[i].coordinates[b]);
       for (unsigned a = 0; a < 3; ++a) u -= J.S(a, b) * pA[a];
-      J.u.push_back(named(u, p + fmt::format("u{}", b)));
+      J.u.push_back(named_(u, p + fmt::format("u{}", b)));
     }
     if (tree_.joints[i].parent < 0) return;
-    matrix W = named(J.U.mul(J.D_inverse), p + "W", false);
+    matrix W = named_(J.U.mul(J.D_inverse), p + "W", false);
     matrix Ia = I;
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b)
         for (unsigned l = 0; l < k; ++l) Ia(a, b) -= W(a, l) * J.U(b, l);
-    Ia = named(Ia, p + "Ia", true);
+    Ia = named_(Ia, p + "Ia", true);
     Vector3 pa = pA;
     for (unsigned a = 0; a < 3; ++a) {
       for (unsigned b = 0; b < 3; ++b) pa[a] += Ia(a, b) * J.c[b];
@@ -149,18 +129,18 @@ class Recursion {
       for (unsigned l = 0; l < k; ++l) {
         rhs[l] = J.u[l];
         for (unsigned a = 0; a < 3; ++a) rhs[l] -= J.U(a, l) * base[a];
-        rhs[l] = named(rhs[l], p + fmt::format("r{}", l));
+        rhs[l] = named_(rhs[l], p + fmt::format("r{}", l));
       }
       for (unsigned l = 0; l < k; ++l) {
         ex sum = 0;
         for (unsigned b = 0; b < k; ++b) sum += J.D_inverse(l, b) * rhs[b];
-        ddq[l] = named(sum, p + fmt::format("ddq{}", l));
+        ddq[l] = named_(sum, p + fmt::format("ddq{}", l));
         out_.accelerations[pj.coordinates[l]] = ddq[l];
       }
       Vector3 a = base;
       for (unsigned d = 0; d < 3; ++d)
         for (unsigned l = 0; l < k; ++l) a[d] += J.S(d, l) * ddq[l];
-      acceleration[i] = named(a, p + "a");
+      acceleration[i] = named_(a, p + "a");
     }
   }
 
@@ -172,9 +152,15 @@ class Recursion {
   std::vector<matrix> inertia_;     // IA of each particle, summed over its children so far
   std::vector<Vector3> bias_force_;  // pA likewise
   ArticulatedAccelerations out_;
+  RecursionQuantities named_{out_.intermediates};
 };
 
 }  // namespace
+
+ex applied_generalized_force(const Model& model, const Mechanics& mechanics, std::size_t j) {
+  const Symbols& s = model.symbols;
+  return mechanics.generalized_force[j] - model.potential.diff(s.coordinates[j]) - mechanics.dissipation.diff(s.velocities[j]);
+}
 
 ArticulatedAccelerations articulated_accelerations(const Model& model, const Mechanics& mechanics,
                                                    const ParticleTree& tree) {

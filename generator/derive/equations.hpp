@@ -26,6 +26,23 @@ struct ConstraintSet {
   std::size_t num_holonomic() const;
 };
 
+/// The inverse dynamics τ = M q'' − f of a tree of particles in the quantities of the
+/// articulated-body recursion (derive/articulated_inverse_dynamics.hpp), for the generated code:
+///   M_jl = m̄ S_j · S_l,   ∂τ_j/∂q_l = m̄ S_j · ∂d''/∂q_l + rest,   ∂τ_j/∂q'_l = m̄ S_j · ∂d''/∂q'_l + rest,
+/// with m̄ the mass of the subtree that couples the coordinates j and l (none on different branches).
+struct TreeInverseDynamics {
+  std::vector<Vector3> axes;                      // S_j = ∂r/∂q_j of the particle q_j moves
+  std::vector<Vector3> acceleration_by_coordinate;  // ∂d''/∂q_l of that particle's relative acceleration
+  std::vector<Vector3> acceleration_by_velocity;    // ∂d''/∂q'_l
+  std::vector<GiNaC::ex> subtree_masses;          // m̄ of each particle's subtree
+  std::vector<int> coupling;                      // n × n: the particle whose m̄ couples j and l, or −1
+  std::vector<GiNaC::ex> forcing;                 // f = −τ at q'' = 0
+  /// the rest of ∂τ/∂(q, q', u), n × (2n + inputs) row by row: the derivatives of S and of the
+  /// other generalized forces, and the input columns; mostly zero
+  std::vector<GiNaC::ex> gradient_rest;
+  bool empty() const { return axes.empty(); }
+};
+
 /// A quantity that stays constant along every motion at zero inputs (Hiller §3.6, §3.8.3).
 struct FirstIntegral {
   std::string name;        // "energy" (T + V), "jacobi_integral", or p_<coordinate>
@@ -49,6 +66,7 @@ struct Equations {
   /// recursion, in the symbols `acceleration_symbols` for q'', whose quantities come after
   /// `intermediates`: the generated Jacobian and linearization differentiate it with q'' held,
   /// O(n²) code where ∂M/∂x and ∂f/∂x entry by entry are O(n³). Not part of the printed equations.
+  /// (A tree of particles solved by the articulated-body recursion has acceleration_symbols too.)
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
@@ -57,8 +75,14 @@ struct Equations {
   /// quantities, for the generated rhs. Empty when the rhs solves M q'' = f. Not printed.
   std::vector<Intermediate> articulated_intermediates;
   std::vector<GiNaC::ex> articulated_accelerations;
+  /// With it, the same tree's M, f and ∂τ/∂(q, q', u) (q'' held as acceleration_symbols) in the
+  /// recursion's quantities, for the header: equal to those of mass_matrix and forcing.
+  TreeInverseDynamics articulated_inverse_dynamics;
   /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
-  void solve_by_mass_matrix() { articulated_intermediates.clear(), articulated_accelerations.clear(); }
+  void solve_by_mass_matrix() {
+    articulated_intermediates.clear(), articulated_accelerations.clear();
+    articulated_inverse_dynamics = TreeInverseDynamics{};
+  }
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;

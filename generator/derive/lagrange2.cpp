@@ -6,8 +6,10 @@
 /// small: M = Σ m JᵀJ + J_ωᵀ I J_ω and the velocity terms Σ m Jᵀa_b + J_ωᵀ(I α_b + ω×Iω).
 /// A kinetic energy given directly in [energy] goes through the general formula
 /// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
+#include <fmt/format.h>
+
 #include "common/deadline.hpp"
-#include "derive/articulated_bodies.hpp"
+#include "derive/articulated_inverse_dynamics.hpp"
 #include "derive/methods.hpp"
 #include "kinematics/vector3.hpp"
 
@@ -93,6 +95,10 @@ void choose_forward_dynamics(const Model& model, const Mechanics& mech, Equation
   if (!tree.found()) return;
   derivation_stage("the articulated-body recursion");
   ArticulatedAccelerations solution = articulated_accelerations(model, mech, tree);
+  std::size_t n = model.symbols.num_coordinates();
+  for (std::size_t k = 0; k < n; ++k) e.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
+  e.articulated_inverse_dynamics =
+      articulated_inverse_dynamics(model, mech, tree, solution, e.acceleration_symbols, solution.intermediates);
   e.articulated_intermediates = std::move(solution.intermediates);
   e.articulated_accelerations = std::move(solution.accelerations);
 }

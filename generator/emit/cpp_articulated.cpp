@@ -21,6 +21,103 @@ std::vector<ex> forcing_variables(const Symbols& s) {
   return v;
 }
 
+// The tree's vectors as local arrays name[i][c] over the components c that are not zero in every
+// vector (a planar tree: x and y), so that the loops below are the same code for every link.
+class TreeArrays {
+ public:
+  TreeArrays(BodyWriter& w, const TreeInverseDynamics& tree, bool derivatives) : w_(w), tree_(tree) {
+    for (unsigned c = 0; c < 3; ++c) {
+      bool used = false;
+      for (const std::vector<Vector3>* set : sets(derivatives))
+        for (const Vector3& v : *set) used = used || !v[c].is_zero();
+      if (used) components_.push_back(c);
+    }
+    std::size_t n = tree.axes.size();
+    w.line(fmt::format("static constexpr int coupling[{}] = {{{}}};", n * n, integer_list(tree.coupling)));
+    write("mass", tree.subtree_masses);
+    write("axis", tree.axes);
+    if (!derivatives) return;
+    write("by_coordinate", tree.acceleration_by_coordinate);
+    write("by_velocity", tree.acceleration_by_velocity);
+  }
+
+  // Σ_c a[i][c] b[k][c] as C++ text
+  std::string dot(const std::string& a, const std::string& i, const std::string& b, const std::string& k) const {
+    std::string out;
+    for (std::size_t c = 0; c < components_.size(); ++c)
+      out += fmt::format("{}{}[{}][{}] * {}[{}][{}]", c ? " + " : "", a, i, c, b, k, c);
+    return out.empty() ? "T(0)" : "(" + out + ")";
+  }
+
+ private:
+  std::vector<const std::vector<Vector3>*> sets(bool derivatives) const {
+    if (!derivatives) return {&tree_.axes};
+    return {&tree_.axes, &tree_.acceleration_by_coordinate, &tree_.acceleration_by_velocity};
+  }
+
+  static std::string integer_list(const std::vector<int>& values) {
+    std::string out;
+    for (int v : values) out += (out.empty() ? "" : ", ") + std::to_string(v);
+    return out;
+  }
+
+  void write(const std::string& name, const std::vector<ex>& scalars) {
+    w_.line(fmt::format("T {}[{}];", name, scalars.size()));
+    w_.assign(scalars, [&](std::size_t k, const std::string& code) { return fmt::format("{}[{}] = {};", name, k, code); });
+  }
+
+  void write(const std::string& name, const std::vector<Vector3>& vectors) {
+    std::size_t C = std::max<std::size_t>(1, components_.size());
+    std::vector<ex> entries;
+    for (const Vector3& v : vectors)
+      for (unsigned c : components_) entries.push_back(v[c]);
+    w_.line(fmt::format("T {}[{}][{}];", name, vectors.size(), C));
+    w_.assign(entries, [&](std::size_t k, const std::string& code) {
+      return fmt::format("{}[{}][{}] = {};", name, k / C, k % C, code);
+    });
+  }
+
+  BodyWriter& w_;
+  const TreeInverseDynamics& tree_;
+  std::vector<unsigned> components_;
+};
+
+// the loop over the coupled pairs (j, l), k the particle whose subtree's mass couples them
+std::string coupled_pairs_loop(std::size_t n, const std::string& zero, const std::string& coupled) {
+  return fmt::format("for (std::size_t j = 0; j < {0}; ++j)\n"
+                     "    for (std::size_t l = 0; l < {0}; ++l) {{\n"
+                     "      const int k = coupling[j * {0} + l];\n"
+                     "      if (k < 0) {{\n        {1}\n      }} else {{\n        {2}\n      }}\n"
+                     "    }}",
+                     n, zero, coupled);
+}
+
+// ∂τ/∂(q, q', u), τ = M(q) q'' − f(q, q', u) with q'' held: the coupled terms m̄ S_j · ∂d''/∂x in a
+// loop, then the rest (derive/articulated_inverse_dynamics.hpp) where it is not zero
+std::string inverse_dynamics_gradient_function(const Equations& e) {
+  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
+  std::size_t n = e.symbols.num_coordinates(), W = forcing_variables(e.symbols).size();
+  BodyWriter w(e);
+  TreeArrays arrays(w, tree, true);
+  w.line(coupled_pairs_loop(n, fmt::format("F[j * {0} + l] = T(0);\n        F[j * {0} + {1} + l] = T(0);", W, n),
+                            fmt::format("F[j * {0} + l] = mass[k] * {2};\n        F[j * {0} + {1} + l] = mass[k] * {3};", W, n,
+                                        arrays.dot("axis", "j", "by_coordinate", "l"), arrays.dot("axis", "j", "by_velocity", "l"))));
+  std::vector<ex> rest;
+  std::vector<std::size_t> at;
+  for (std::size_t k = 0; k < tree.gradient_rest.size(); ++k)
+    if (k % W >= 2 * n || !tree.gradient_rest[k].is_zero()) rest.push_back(tree.gradient_rest[k]), at.push_back(k);
+  w.assign(rest, [&](std::size_t k, const std::string& code) {
+    std::size_t i = at[k];
+    return i % W >= 2 * n ? fmt::format("F[{}] = {};", i, code) : fmt::format("F[{0}] = F[{0}] + ({1});", i, code);
+  });
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// d tau/d(q, q', u) of the inverse dynamics tau = M(q) q'' - f, q'' held: m S_j . dd''/dx over\n"
+                              "/// the particles' tree, and the rest. ddq: {0}; F: {0}x{1}, row-major.\n", n, W),
+                  "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
+                  w.finish(all_unused + std::string(" (void)ddq;"))) +
+         "}  // namespace detail\n\n";
+}
+
 }  // namespace
 
 std::string articulated_rhs_function(const Equations& e) {
@@ -36,57 +133,17 @@ std::string articulated_rhs_function(const Equations& e) {
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
-// rows [first, last) of ∂τ/∂(q, q', u), τ = M(q) q'' − f(q, q', u) with q'' held, written into F
-std::string inverse_dynamics_gradient_rows(const Equations& e, unsigned first, unsigned last) {
-  const Symbols& s = e.symbols;
-  std::size_t n = s.num_coordinates();
-  std::vector<ex> variables = forcing_variables(s), coordinates(s.coordinates.begin(), s.coordinates.end()), entries;
+// M_jl = m̄ S_j · S_l (derive/articulated_inverse_dynamics.hpp): O(n) code for the n² entries
+std::string articulated_mass_matrix_function(const Equations& e) {
+  std::size_t n = e.symbols.num_coordinates();
   BodyWriter w(e);
-  for (unsigned i = first; i < last; ++i) {
-    std::vector<GiNaC::exvector> terms(variables.size());
-    std::vector<ex> df = gradient(e.forcing[i], variables);
-    for (std::size_t j = 0; j < variables.size(); ++j) terms[j].push_back(-df[j]);
-    for (unsigned c = 0; c < n; ++c) {
-      if (e.mass_matrix(i, c).info(GiNaC::info_flags::numeric)) continue;
-      std::vector<ex> dM = gradient(e.mass_matrix(i, c), coordinates);
-      for (unsigned j = 0; j < n; ++j)
-        if (!dM[j].is_zero()) terms[j].push_back(dM[j] * w.accelerations()[c]);
-    }
-    for (const GiNaC::exvector& t : terms) entries.push_back(GiNaC::add(t));
-  }
-  std::size_t offset = first * variables.size();
-  w.assign(entries, [&](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", offset + k, code); });
-  return w.finish(all_unused + std::string(" (void)ddq;"));
-}
-
-// ∂τ/∂(q, q', u) row by row: the Jacobian is −M⁻¹ ∂τ/∂x at the rhs's q'', the linearization ∂τ/∂x
-// at q'' = 0 (P = ∂τ/∂q', Q = ∂τ/∂q, B = −∂τ/∂u). A long chain's rows go in blocks of about
-// entries_per_block entries, each a function of its own: g++ -O2 of the 30-link chain's rhs and
-// jacobian_state took 8.3 s with its 1,800 entries in one function (register allocation grows
-// faster than the function), 4.5 s in blocks of 300, 4.2 s in blocks of 120; each block computes
-// its own sines and cosines again (jacobian_state 37 µs -> 44 µs, header 365 KB -> 404 KB)
-std::string inverse_dynamics_gradient_function(const Equations& e) {
-  constexpr std::size_t entries_per_block = 300;
-  std::size_t n = e.symbols.num_coordinates(), W = forcing_variables(e.symbols).size();
-  unsigned rows = unsigned(std::max<std::size_t>(1, entries_per_block / W));
-  const char* arguments = "(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)";
-  std::string doc = fmt::format("/// d tau/d(q, q', u) of the inverse dynamics tau = M(q) q'' - f(q, q', u), q'' held.\n"
-                                "/// ddq: {0}; F: {0}x{1}, row-major.\n", n, W);
-  std::string out = "namespace detail {\n\n";
-  if (rows >= n) {
-    out += function(doc, std::string("void inverse_dynamics_gradient") + arguments, inverse_dynamics_gradient_rows(e, 0, unsigned(n)));
-    return out + "}  // namespace detail\n\n";
-  }
-  std::string calls = "  (void)t; (void)x; (void)ddq; (void)u; (void)p;\n";
-  for (unsigned first = 0; first < n; first += rows) {
-    unsigned last = std::min(unsigned(n), first + rows);
-    std::string name = fmt::format("inverse_dynamics_gradient_rows_{}_{}", first, last);
-    out += function(fmt::format("/// Rows {} to {} of inverse_dynamics_gradient.\n", first, last - 1), "void " + name + arguments,
-                    inverse_dynamics_gradient_rows(e, first, last));
-    calls += fmt::format("  {}(t, x, ddq, u, p, F);\n", name);
-  }
-  out += function(doc, std::string("void inverse_dynamics_gradient") + arguments, calls);
-  return out + "}  // namespace detail\n\n";
+  TreeArrays arrays(w, e.articulated_inverse_dynamics, false);
+  w.line(coupled_pairs_loop(n, fmt::format("M[j * {} + l] = T(0);", n),
+                            fmt::format("M[j * {} + l] = mass[k] * {};", n, arrays.dot("axis", "j", "axis", "l"))));
+  return function(fmt::format("/// Mass matrix M(q) of M q'' = f, symmetric positive definite: M_jl = m S_j . S_l over the\n"
+                              "/// particles' tree (S_j = dr/dq_j, m the mass below the deeper of the two joints).\n"
+                              "/// x: num_states; p: num_parameters; M: {0}x{0}, row-major.\n", n),
+                  "void mass_matrix(T t, const T* x, const T* p, T* M)", w.finish("(void)t; (void)x; (void)p;"));
 }
 
 // dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M from mass_matrix

@@ -11,6 +11,8 @@
 namespace eomgen {
 
 std::string articulated_rhs_function(const Equations& e);
+/// mass_matrix from the recursion's quantities: M_jl = m̄ S_j · S_l in a loop.
+std::string articulated_mass_matrix_function(const Equations& e);
 /// detail::inverse_dynamics_gradient (∂τ/∂(q, q', u) of τ = M q'' − f), then jacobian_state.
 std::string articulated_jacobian_state_function(const Equations& e);
 std::string articulated_linearization_function(const Equations& e);

@@ -34,6 +34,7 @@ std::string number_list(const std::vector<double>& values) {
 
 
 std::string mass_matrix_function(const Equations& e) {
+  if (!e.articulated_inverse_dynamics.empty()) return articulated_mass_matrix_function(e);
   std::size_t n = e.forcing.size();
   BodyWriter w(e);
   std::vector<std::pair<std::size_t, std::size_t>> entry;
@@ -51,7 +52,8 @@ std::string mass_matrix_function(const Equations& e) {
 
 std::string forcing_function(const Equations& e) {
   BodyWriter w(e);
-  w.assign(e.forcing, [](std::size_t i, const std::string& code) { return fmt::format("f[{}] = {};", i, code); });
+  const std::vector<ex>& f = e.articulated_inverse_dynamics.empty() ? e.forcing : e.articulated_inverse_dynamics.forcing;
+  w.assign(f, [](std::size_t i, const std::string& code) { return fmt::format("f[{}] = {};", i, code); });
   return function(fmt::format("/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.\n"
                               "/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: {}.\n", e.forcing.size()),
                   "void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f)", w.finish(all_unused));

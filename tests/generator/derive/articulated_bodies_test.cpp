@@ -71,13 +71,22 @@ std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double
   return x;
 }
 
-// the recursion's q'' against M⁻¹ f at random states (the recursion's quantities in their order)
+// a random state with a random held q'', and the recursion's quantities there, in their order
+GiNaC::exmap with_intermediates(const Equations& e, const GiNaC::exmap& random, unsigned seed) {
+  GiNaC::exmap at = random;
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> uniform(-2, 2);
+  for (const GiNaC::symbol& a : e.acceleration_symbols) at[a] = uniform(generator);
+  for (const Intermediate& i : e.articulated_intermediates) at[i.symbol] = value_at(i.definition, at);
+  return at;
+}
+
+// the recursion's q'' against M⁻¹ f at random states
 void expect_recursion_solves_the_equations(const Equations& e, int points, unsigned seed) {
   ASSERT_FALSE(e.articulated_accelerations.empty());
   std::size_t n = e.symbols.num_coordinates();
   for (const GiNaC::exmap& random : test::random_points(e.symbols, points, seed)) {
-    GiNaC::exmap at = random;
-    for (const Intermediate& i : e.articulated_intermediates) at[i.symbol] = value_at(i.definition, at);
+    GiNaC::exmap at = with_intermediates(e, random, seed);
     std::vector<std::vector<double>> M(n, std::vector<double>(n));
     std::vector<double> f(n);
     for (unsigned j = 0; j < n; ++j) {
@@ -93,13 +102,64 @@ void expect_recursion_solves_the_equations(const Equations& e, int points, unsig
   }
 }
 
+double dot_at(const Vector3& a, const Vector3& b, const GiNaC::exmap& at) { return value_at(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], at); }
+
+// the tree's inverse dynamics against the symbolic equations at random states and held q'':
+// m̄ S_j · S_l against M, its f against f, m̄ S_j · ∂d''/∂x + rest against ∂(M q'' − f)/∂(q, q', u)
+void expect_inverse_dynamics_of_the_equations(const Equations& e, int points, unsigned seed) {
+  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
+  ASSERT_FALSE(tree.empty());
+  const Symbols& s = e.symbols;
+  std::size_t n = s.num_coordinates();
+  std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
+  variables.insert(variables.end(), s.velocities.begin(), s.velocities.end());
+  variables.insert(variables.end(), s.inputs.begin(), s.inputs.end());
+  std::size_t W = variables.size();
+  std::vector<ex> tau(n);
+  for (unsigned j = 0; j < n; ++j) {
+    tau[j] = -e.forcing[j];
+    for (unsigned c = 0; c < n; ++c) tau[j] += e.mass_matrix(j, c) * e.acceleration_symbols[c];
+  }
+  for (const GiNaC::exmap& random : test::random_points(s, points, seed)) {
+    GiNaC::exmap at = with_intermediates(e, random, seed + 1);
+    for (unsigned j = 0; j < n; ++j) {
+      double f = value_at(e.forcing[j], at);
+      EXPECT_NEAR(value_at(tree.forcing[j], at), f, 1e-10 * std::max(1.0, std::abs(f))) << "f[" << j << "]";
+      for (unsigned l = 0; l < n; ++l) {
+        int k = tree.coupling[j * n + l];
+        double mass = k < 0 ? 0 : value_at(tree.subtree_masses[std::size_t(k)], at);
+        double M = value_at(e.mass_matrix(j, l), at);
+        EXPECT_NEAR(mass * dot_at(tree.axes[j], tree.axes[l], at), M, 1e-10 * std::max(1.0, std::abs(M)))
+            << "M[" << j << "][" << l << "]";
+      }
+      for (std::size_t v = 0; v < W; ++v) {
+        double expected = value_at(tau[j].diff(GiNaC::ex_to<GiNaC::symbol>(variables[v])), at);
+        double got = value_at(tree.gradient_rest[j * W + v], at);
+        if (v < 2 * n) {
+          std::size_t l = v % n;
+          int k = tree.coupling[j * n + l];
+          const Vector3& by = v < n ? tree.acceleration_by_coordinate[l] : tree.acceleration_by_velocity[l];
+          if (k >= 0) got += value_at(tree.subtree_masses[std::size_t(k)], at) * dot_at(tree.axes[j], by, at);
+        }
+        EXPECT_NEAR(got, expected, 1e-9 * std::max(1.0, std::abs(expected))) << "dtau[" << j << "]/d" << variables[v];
+      }
+    }
+  }
+}
+
 TEST(ArticulatedBodies, PlanarChainGivesMInverseF) {
-  for (int n : {1, 2, 3, 5, 8}) expect_recursion_solves_the_equations(derive_text(planar_chain(n, "articulated")), 6, 40u + unsigned(n));
+  for (int n : {1, 2, 3, 5, 8}) {
+    Equations e = derive_text(planar_chain(n, "articulated"));
+    expect_recursion_solves_the_equations(e, 6, 40u + unsigned(n));
+    expect_inverse_dynamics_of_the_equations(e, 3, 50u + unsigned(n));
+  }
 }
 
 TEST(ArticulatedBodies, BranchedSpatialTreeGivesMInverseF) {
   // the crane hook: a spherical pendulum (two coordinates in one joint) carrying two planar pendulums
-  expect_recursion_solves_the_equations(test::derive_model("crane_hook_tree"), 8, 7u);
+  Equations crane = test::derive_model("crane_hook_tree");
+  expect_recursion_solves_the_equations(crane, 8, 7u);
+  expect_inverse_dynamics_of_the_equations(crane, 4, 8u);
   // a free particle (three coordinates, on a spring) carrying a pendulum, and a mass fixed to
   // that particle by a constant offset (a joint without coordinates)
   std::string free = R"toml([model]
@@ -132,7 +192,9 @@ acceleration = ["0", "0", "-g"]
 [energy]
 potential = "k*(x^2 + y^2 + z^2)/2"
 )toml";
-  expect_recursion_solves_the_equations(derive_text(free), 8, 9u);
+  Equations carrier = derive_text(free);
+  expect_recursion_solves_the_equations(carrier, 8, 9u);
+  expect_inverse_dynamics_of_the_equations(carrier, 4, 10u);
 }
 
 // Variants of a tree: holding coordinates keeps a tree, whose recursion still gives M⁻¹ f; tying
@@ -147,6 +209,7 @@ TEST(ArticulatedBodies, VariantsOfATreeKeepTheRecursionOrFallBack) {
   ASSERT_TRUE(planar.equations) << planar.diagnostics.format();
   EXPECT_EQ(planar.equations->symbols.num_coordinates(), 3u);
   expect_recursion_solves_the_equations(*planar.equations, 6, 3u);
+  expect_inverse_dynamics_of_the_equations(*planar.equations, 3, 4u);
   Derivation tied = derive_model_file_for(path, {"", "tied", {}});
   ASSERT_TRUE(tied.equations) << tied.diagnostics.format();
   EXPECT_TRUE(tied.equations->articulated_accelerations.empty());
@@ -180,7 +243,7 @@ TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
 }
 
 
-// The generated header of a chain long enough for ∂τ/∂x in blocks (inverse_dynamics_gradient_rows_…):
+// The generated header of a long chain (M and ∂τ/∂x as loops over the coupled pairs of joints):
 // rhs against M⁻¹ f from mass_matrix and forcing, jacobian_state against central differences of
 // rhs, linearization's P, Q, B against central differences of forcing, at random states.
 const char* header_check = R"cpp(
@@ -265,7 +328,7 @@ TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
   test::CommandOutput generated = test::run_eomgen("generate '" + dir + "/chain.toml' -o '" + dir + "'");
   ASSERT_EQ(generated.status, 0) << generated.err;
   std::string header = test::read_file(dir + "/chain.hpp");
-  EXPECT_NE(header.find("inverse_dynamics_gradient_rows_"), std::string::npos) << "expected the Jacobian's rows in blocks";
+  EXPECT_NE(header.find("const int k = coupling[j * 14 + l];"), std::string::npos) << "expected the coupled terms as a loop";
   EXPECT_NE(header.find("articulated-body recursion"), std::string::npos);
   EXPECT_EQ(test::run_command("cd '" + dir + "' && c++ -std=c++17 -O1 check.cpp -o check && ./check"), 0);
 }

@@ -1,0 +1,157 @@
+#include "derive/articulated_inverse_dynamics.hpp"
+
+#include <fmt/format.h>
+
+#include "derive/recursion_quantities.hpp"
+#include "kinematics/vector3.hpp"
+#include "symbolic/gradient.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+class InverseDynamics {
+ public:
+  InverseDynamics(const Model& model, const Mechanics& mechanics, const ParticleTree& tree,
+                  const ArticulatedAccelerations& forward, const std::vector<GiNaC::symbol>& accelerations,
+                  std::vector<Intermediate>& intermediates)
+      : model_(model), mechanics_(mechanics), tree_(tree), forward_(forward), ddq_(accelerations),
+        count_(model.particles.size()), name_(intermediates) {
+    const std::vector<ParticleJoint>& joints = tree.joints;
+    joint_of_.resize(model.symbols.num_coordinates());
+    for (std::size_t i = 0; i < count_; ++i)
+      for (std::size_t b = 0; b < joints[i].coordinates.size(); ++b) joint_of_[joints[i].coordinates[b]] = {i, b};
+  }
+
+  TreeInverseDynamics run() {
+    std::size_t n = joint_of_.size();
+    for (std::size_t j = 0; j < n; ++j) out_.axes.push_back(forward_.motions[joint_of_[j].first].axes[joint_of_[j].second]);
+    composite_masses();
+    subtree_forces();
+    relative_acceleration_derivatives();
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t l = 0; l < n; ++l) out_.coupling.push_back(coupling(j, l));
+    for (std::size_t j = 0; j < n; ++j) {
+      out_.forcing.push_back(applied_generalized_force(model_, mechanics_, j) - dot(out_.axes[j], rest_force_[joint_of_[j].first]));
+      gradient_rest(j);
+    }
+    return out_;
+  }
+
+ private:
+  // true when particle k is i or below it
+  bool below(std::size_t k, std::size_t i) const {
+    for (int at = int(k); at >= 0; at = tree_.joints[std::size_t(at)].parent)
+      if (std::size_t(at) == i) return true;
+    return false;
+  }
+
+  // the particle whose subtree's mass couples the coordinates j and l: the deeper of their
+  // particles when one is below the other, −1 on different branches
+  int coupling(std::size_t j, std::size_t l) const {
+    std::size_t i = joint_of_[j].first, k = joint_of_[l].first;
+    if (below(k, i)) return int(k);
+    if (below(i, k)) return int(i);
+    return -1;
+  }
+
+  // m̄_i = m_i + Σ m̄_child, leaves first
+  void composite_masses() {
+    std::vector<ex>& mass = out_.subtree_masses;
+    for (std::size_t i = 0; i < count_; ++i) mass.push_back(model_.particles[i].mass);
+    for (std::size_t at = count_; at-- > 0;) {
+      std::size_t i = tree_.order[at];
+      mass[i] = name_(mass[i], fmt::format("ab{}_mass", i));
+      if (int parent = tree_.joints[i].parent; parent >= 0) mass[std::size_t(parent)] += mass[i];
+    }
+  }
+
+  // a_i = a_parent + c_i + S_i q_J'' from the root (q'' held, and at rest), then
+  // F_i = m_i (a_i − g) + Σ F_child from the leaves
+  void subtree_forces() {
+    std::vector<Vector3> held(count_), rest(count_);
+    for (std::size_t i : tree_.order) {
+      const RelativeMotion& m = forward_.motions[i];
+      int parent = tree_.joints[i].parent;
+      Vector3 base = parent < 0 ? Vector3{0, 0, 0} : held[std::size_t(parent)];
+      Vector3 base_at_rest = parent < 0 ? Vector3{0, 0, 0} : rest[std::size_t(parent)];
+      Vector3 a = base + m.bias;
+      for (std::size_t b = 0; b < m.axes.size(); ++b) a = a + scaled(ddq_[tree_.joints[i].coordinates[b]], m.axes[b]);
+      held[i] = name_(a, fmt::format("ab{}_acc", i));
+      rest[i] = name_(base_at_rest + m.bias, fmt::format("ab{}_rest", i));
+    }
+    force_.assign(count_, Vector3{0, 0, 0});
+    rest_force_.assign(count_, Vector3{0, 0, 0});
+    for (std::size_t at = count_; at-- > 0;) {
+      std::size_t i = tree_.order[at];
+      const ex& m = model_.particles[i].mass;
+      force_[i] = name_(force_[i] + scaled(m, held[i] - model_.gravity), fmt::format("ab{}_force", i));
+      rest_force_[i] = name_(rest_force_[i] + scaled(m, rest[i] - model_.gravity), fmt::format("ab{}_restforce", i));
+      if (int parent = tree_.joints[i].parent; parent >= 0) {
+        force_[std::size_t(parent)] = force_[std::size_t(parent)] + force_[i];
+        rest_force_[std::size_t(parent)] = rest_force_[std::size_t(parent)] + rest_force_[i];
+      }
+    }
+  }
+
+  // ∂d_i''/∂q_l = Σ ∂S/∂q_l q_J'' + ∂c/∂q_l and ∂d_i''/∂q'_l = ∂c/∂q'_l, for the coordinates l of joint i
+  void relative_acceleration_derivatives() {
+    const Symbols& s = model_.symbols;
+    for (std::size_t l = 0; l < joint_of_.size(); ++l) {
+      auto [i, b] = joint_of_[l];
+      const RelativeMotion& m = forward_.motions[i];
+      const std::vector<std::size_t>& J = tree_.joints[i].coordinates;
+      Vector3 dq{0, 0, 0}, dv{0, 0, 0};
+      for (unsigned d = 0; d < 3; ++d) {
+        dq[d] = m.bias_expression[d].diff(s.coordinates[l]);
+        dv[d] = m.bias_expression[d].diff(s.velocities[l]);
+        for (std::size_t c = 0; c < J.size(); ++c) dq[d] += m.axis_expressions[c][d].diff(s.coordinates[l]) * ddq_[J[c]];
+      }
+      out_.acceleration_by_coordinate.push_back(name_(dq, fmt::format("ab{}_Aq{}_", i, b)));
+      out_.acceleration_by_velocity.push_back(name_(dv, fmt::format("ab{}_Av{}_", i, b)));
+    }
+  }
+
+  // the terms of ∂τ_j/∂(q, q', u) besides m̄ S_j · ∂d''/∂x: ∂S_j/∂q_l · F_i within the joint, −∂Q_j/∂x
+  void gradient_rest(std::size_t j) {
+    const Symbols& s = model_.symbols;
+    std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
+    variables.insert(variables.end(), s.velocities.begin(), s.velocities.end());
+    variables.insert(variables.end(), s.inputs.begin(), s.inputs.end());
+    std::vector<ex> row = gradient(applied_generalized_force(model_, mechanics_, j), variables);
+    auto [i, b] = joint_of_[j];
+    const Vector3& raw = forward_.motions[i].axis_expressions[b];
+    for (std::size_t k = 0; k < variables.size(); ++k) {
+      ex term = -row[k];
+      if (k < joint_of_.size() && joint_of_[k].first == i) {
+        const GiNaC::realsymbol& q = s.coordinates[k];
+        term += dot({raw[0].diff(q), raw[1].diff(q), raw[2].diff(q)}, force_[i]);
+      }
+      out_.gradient_rest.push_back(term);
+    }
+  }
+
+  const Model& model_;
+  const Mechanics& mechanics_;
+  const ParticleTree& tree_;
+  const ArticulatedAccelerations& forward_;
+  const std::vector<GiNaC::symbol>& ddq_;
+  std::size_t count_;
+  RecursionQuantities name_;
+  std::vector<std::pair<std::size_t, std::size_t>> joint_of_;  // coordinate → (particle, place in its joint)
+  std::vector<Vector3> force_, rest_force_;                      // F_i with q'' held, and at q'' = 0
+  TreeInverseDynamics out_;
+};
+
+}  // namespace
+
+TreeInverseDynamics articulated_inverse_dynamics(const Model& model, const Mechanics& mechanics, const ParticleTree& tree,
+                                                 const ArticulatedAccelerations& forward,
+                                                 const std::vector<GiNaC::symbol>& accelerations,
+                                                 std::vector<Intermediate>& intermediates) {
+  return InverseDynamics(model, mechanics, tree, forward, accelerations, intermediates).run();
+}
+
+}  // namespace eomgen
