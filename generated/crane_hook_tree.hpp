@@ -524,26 +524,93 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
 }  // namespace detail
 
 /// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx
-/// (tau = M q'' - f, q'' held), with q'' from rhs and M from mass_matrix. J: 8x8, row-major.
+/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 column by column by the
+/// articulated-body recursion. J: 8x8, row-major.
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[0];
+  const T q_psi = x[1];
+  const T q_a = x[2];
+  const T q_b = x[3];
+  const T p_m0 = p[0];
+  const T p_m1 = p[1];
+  const T p_m2 = p[2];
+  const T p_L = p[3];
+  const T p_l1 = p[4];
+  const T p_l2 = p[5];
   T xdot[8];
   rhs(t, x, u, p, xdot);
-  T M[16];
-  mass_matrix(t, x, p, M);
-  T L[16];
-  T D[4];
-  detail::ldlt_factor(M, L, D);
   T F[36];
   detail::inverse_dynamics_gradient(t, x, xdot + 4, u, p, F);
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = 0; j < 8; ++j) J[i * 8 + j] = T(j == 4 + i ? 1 : 0);
-  T column[4];
-  for (std::size_t j = 0; j < 8; ++j) {
-    for (std::size_t i = 0; i < 4; ++i) column[i] = -F[i * 9 + j];
-    detail::ldlt_solve(L, D, column);
-    for (std::size_t i = 0; i < 4; ++i) J[(4 + i) * 8 + j] = column[i];
+  const T c0 = cos(q_psi);
+  const T c1 = cos(q_theta);
+  const T c2 = sin(q_theta);
+  const T c3 = sin(q_psi);
+  const T ab2_S10 = cos(q_b)*p_l2;
+  const T ab2_S20 = p_l2*sin(q_b);
+  const T ab1_S00 = cos(q_a)*p_l1;
+  const T ab1_S20 = p_l1*sin(q_a);
+  const T ab0_S00 = c0*c1*p_L;
+  const T ab0_S01 = -c2*c3*p_L;
+  const T ab0_S10 = c1*c3*p_L;
+  const T ab0_S11 = c0*c2*p_L;
+  const T ab0_S20 = c2*p_L;
+  const T ab2_U10 = ab2_S10*p_m2;
+  const T ab2_U20 = ab2_S20*p_m2;
+  const T ab1_U00 = ab1_S00*p_m1;
+  const T ab1_U20 = ab1_S20*p_m1;
+  const T ab2_D00 = ab2_S10*ab2_U10 + ab2_S20*ab2_U20;
+  const T ab1_D00 = ab1_S00*ab1_U00 + ab1_S20*ab1_U20;
+  const T ab2_Di00 = T(1)/ab2_D00;
+  const T ab1_Di00 = T(1)/ab1_D00;
+  const T ab2_W10 = ab2_Di00*ab2_U10;
+  const T ab2_W20 = ab2_Di00*ab2_U20;
+  const T ab1_W00 = ab1_Di00*ab1_U00;
+  const T ab1_W20 = ab1_Di00*ab1_U20;
+  const T ab2_Ia11 = -ab2_U10*ab2_W10 + p_m2;
+  const T ab2_Ia12 = -ab2_U20*ab2_W10;
+  const T ab2_Ia22 = -ab2_U20*ab2_W20 + p_m2;
+  const T ab1_Ia00 = -ab1_U00*ab1_W00 + p_m1;
+  const T ab1_Ia02 = -ab1_U20*ab1_W00;
+  const T ab1_Ia22 = -ab1_U20*ab1_W20 + p_m1;
+  const T ab0_I00 = ab1_Ia00 + p_m0 + p_m2;
+  const T ab0_I11 = ab2_Ia11 + p_m0 + p_m1;
+  const T ab0_I22 = ab1_Ia22 + ab2_Ia22 + p_m0;
+  const T ab0_U21 = ab0_S01*ab1_Ia02 + ab0_S11*ab2_Ia12;
+  const T ab0_U00 = ab0_I00*ab0_S00 + ab0_S20*ab1_Ia02;
+  const T ab0_U01 = ab0_I00*ab0_S01;
+  const T ab0_U10 = ab0_I11*ab0_S10 + ab0_S20*ab2_Ia12;
+  const T ab0_U11 = ab0_I11*ab0_S11;
+  const T ab0_U20 = ab0_I22*ab0_S20 + ab0_S00*ab1_Ia02 + ab0_S10*ab2_Ia12;
+  const T ab0_D00 = ab0_S00*ab0_U00 + ab0_S10*ab0_U10 + ab0_S20*ab0_U20;
+  const T ab0_D01 = ab0_S00*ab0_U01 + ab0_S10*ab0_U11 + ab0_S20*ab0_U21;
+  const T ab0_D11 = ab0_S01*ab0_U01 + ab0_S11*ab0_U11;
+  const T ab0_Di00 = ab0_D11/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  const T ab0_Di01 = -ab0_D01/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  const T ab0_Di11 = ab0_D00/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  for (std::size_t c = 0; c < 8; ++c) {
+  const T ab0_bp0 = F[18 + c]*ab1_W00;
+  const T ab0_bp1 = F[27 + c]*ab2_W10;
+  const T ab0_bp2 = F[18 + c]*ab1_W20 + F[27 + c]*ab2_W20;
+  const T ab0_bu0 = F[0 + c] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
+  const T ab0_bu1 = F[9 + c] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
+  const T ab0_bddq0 = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
+  const T ab0_bddq1 = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
+  const T ab0_ba0 = ab0_S00*ab0_bddq0 + ab0_S01*ab0_bddq1;
+  const T ab0_ba1 = ab0_S10*ab0_bddq0 + ab0_S11*ab0_bddq1;
+  const T ab0_ba2 = ab0_S20*ab0_bddq0;
+  const T ab1_bddq0 = (F[18 + c] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
+  const T ab2_bddq0 = (F[27 + c] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
+  J[32 + c] = -ab0_bddq0;
+  J[40 + c] = -ab0_bddq1;
+  J[48 + c] = -ab1_bddq0;
+  J[56 + c] = -ab2_bddq0;
   }
 }
 

@@ -22,13 +22,14 @@ class Recursion {
     out_.motions.resize(count_);
     inward();
     outward();
+    solve();
     return out_;
   }
 
  private:
   // one joint's quantities, kept from the inward pass for the outward one
   struct Joint {
-    matrix S{3, 1}, U{3, 1}, D_inverse{1, 1};
+    matrix S{3, 1}, U{3, 1}, D_inverse{1, 1}, W{3, 1};
     Vector3 c{0, 0, 0};
     std::vector<ex> u;  // Q − Sᵀ pA
   };
@@ -89,7 +90,8 @@ class Recursion {
       J.u.push_back(named_(u, p + fmt::format("u{}", b)));
     }
     if (tree_.joints[i].parent < 0) return;
-    matrix W = named_(J.U.mul(J.D_inverse), p + "W", false);
+    J.W = named_(J.U.mul(J.D_inverse), p + "W", false);
+    const matrix& W = J.W;
     matrix Ia = I;
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b)
@@ -141,6 +143,54 @@ class Recursion {
       for (unsigned d = 0; d < 3; ++d)
         for (unsigned l = 0; l < k; ++l) a[d] += J.S(d, l) * ddq[l];
       acceleration[i] = named_(a, p + "a");
+    }
+  }
+
+  // q'' = M⁻¹ b for generalized forces b given as symbols: the two passes again without gravity,
+  // velocities and other forces (pA = 0, c = 0, Q = b), through the joints' S, U, D⁻¹ and W
+  void solve() {
+    std::size_t n = model_.symbols.num_coordinates();
+    for (std::size_t j = 0; j < n; ++j) out_.forces.emplace_back(fmt::format("b{}", j));
+    out_.accelerations_of_forces.assign(n, 0);
+    std::vector<Vector3> handed(count_, Vector3{0, 0, 0});
+    std::vector<std::vector<ex>> u(count_);
+    for (std::size_t at = count_; at-- > 0;) {
+      std::size_t i = tree_.order[at];
+      const ParticleJoint& pj = tree_.joints[i];
+      const Joint& J = joints_[i];
+      std::string p = fmt::format("ab{}_b", i);
+      Vector3 pA = named_(handed[i], p + "p");
+      for (unsigned l = 0; l < pj.coordinates.size(); ++l) {
+        ex ul = out_.forces[pj.coordinates[l]];
+        for (unsigned a = 0; a < 3; ++a) ul -= J.S(a, l) * pA[a];
+        u[i].push_back(named_(ul, p + fmt::format("u{}", l)));
+      }
+      if (pj.parent < 0) continue;
+      for (unsigned a = 0; a < 3; ++a) {
+        ex pa = pA[a];
+        for (unsigned l = 0; l < u[i].size(); ++l) pa += J.W(a, l) * u[i][l];
+        handed[std::size_t(pj.parent)][a] += pa;
+      }
+    }
+    std::vector<Vector3> acceleration(count_, Vector3{0, 0, 0});
+    for (std::size_t i : tree_.order) {
+      const ParticleJoint& pj = tree_.joints[i];
+      const Joint& J = joints_[i];
+      Vector3 a = pj.parent < 0 ? Vector3{0, 0, 0} : acceleration[std::size_t(pj.parent)];
+      std::size_t k = pj.coordinates.size();
+      std::vector<ex> r(k);
+      for (unsigned l = 0; l < k; ++l) {
+        r[l] = u[i][l];
+        for (unsigned d = 0; d < 3; ++d) r[l] -= J.U(d, l) * a[d];
+      }
+      for (unsigned l = 0; l < k; ++l) {
+        ex sum = 0;
+        for (unsigned c = 0; c < k; ++c) sum += J.D_inverse(l, c) * r[c];
+        ex ddq = named_(sum, fmt::format("ab{}_bddq{}", i, l));
+        out_.accelerations_of_forces[pj.coordinates[l]] = ddq;
+        for (unsigned d = 0; d < 3; ++d) a[d] += J.S(d, l) * ddq;
+      }
+      acceleration[i] = named_(a, fmt::format("ab{}_ba", i));
     }
   }
 

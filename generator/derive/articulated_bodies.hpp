@@ -30,6 +30,10 @@ struct ArticulatedAccelerations {
   std::vector<Intermediate> intermediates;
   std::vector<GiNaC::ex> accelerations;  // q'', one per coordinate
   std::vector<RelativeMotion> motions;   // one per particle
+  /// q'' = M⁻¹ b for generalized forces b given as the symbols `forces`, by the same recursion
+  /// without gravity, velocities and other forces: O(n) operations per b where L D Lᵀ takes O(n²)
+  std::vector<GiNaC::symbol> forces;
+  std::vector<GiNaC::ex> accelerations_of_forces;
 };
 
 /// The generalized force on coordinate j besides gravity and inertia: applied forces, [energy]

@@ -40,6 +40,9 @@ struct TreeInverseDynamics {
   /// the rest of ∂τ/∂(q, q', u), n × (2n + inputs) row by row: the derivatives of S and of the
   /// other generalized forces, and the input columns; mostly zero
   std::vector<GiNaC::ex> gradient_rest;
+  /// q'' = M⁻¹ b by the recursion for generalized forces b given as symbols (the Jacobian's solves)
+  std::vector<GiNaC::symbol> forces;
+  std::vector<GiNaC::ex> accelerations_of_forces;
   bool empty() const { return axes.empty(); }
 };
 

@@ -99,6 +99,8 @@ void choose_forward_dynamics(const Model& model, const Mechanics& mech, Equation
   for (std::size_t k = 0; k < n; ++k) e.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   e.articulated_inverse_dynamics =
       articulated_inverse_dynamics(model, mech, tree, solution, e.acceleration_symbols, solution.intermediates);
+  e.articulated_inverse_dynamics.forces = solution.forces;
+  e.articulated_inverse_dynamics.accelerations_of_forces = solution.accelerations_of_forces;
   e.articulated_intermediates = std::move(solution.intermediates);
   e.articulated_accelerations = std::move(solution.accelerations);
 }

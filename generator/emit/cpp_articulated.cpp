@@ -146,31 +146,52 @@ std::string articulated_mass_matrix_function(const Equations& e) {
                   "void mass_matrix(T t, const T* x, const T* p, T* M)", w.finish("(void)t; (void)x; (void)p;"));
 }
 
-// dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M from mass_matrix
+namespace {
+
+// the recursion's quantities that M⁻¹ b needs and that do not depend on b (S, U, D⁻¹, W: q alone)
+std::vector<ex> solve_factors(const Equations& e) {
+  GiNaC::exset with_b(e.articulated_inverse_dynamics.forces.begin(), e.articulated_inverse_dynamics.forces.end()), used;
+  for (const ex& a : e.articulated_inverse_dynamics.accelerations_of_forces) collect_symbols(a, used);
+  std::vector<ex> factors;
+  for (const Intermediate& i : e.articulated_intermediates) {
+    GiNaC::exset in;
+    collect_symbols(i.definition, in);
+    bool depends = std::any_of(in.begin(), in.end(), [&](const ex& x) { return with_b.count(x) > 0; });
+    if (depends) {
+      with_b.insert(i.symbol);
+      used.insert(in.begin(), in.end());
+    }
+  }
+  for (const Intermediate& i : e.articulated_intermediates)
+    if (used.count(i.symbol) && !with_b.count(i.symbol)) factors.push_back(i.symbol);
+  return factors;
+}
+
+}  // namespace
+
+// dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M⁻¹ by the recursion, O(n) per column
 std::string articulated_jacobian_state_function(const Equations& e) {
   const Symbols& s = e.symbols;
+  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
   std::size_t n = s.num_coordinates(), N = 2 * n, W = N + s.inputs.size();
   BodyWriter w(e);
   w.line(fmt::format("T xdot[{}];", N));
   w.line("rhs(t, x, u, p, xdot);");
-  w.line(fmt::format("T M[{}];", n * n));
-  w.line("mass_matrix(t, x, p, M);");
-  w.line(fmt::format("T L[{}];", n * n));
-  w.line(fmt::format("T D[{}];", n));
-  w.line("detail::ldlt_factor(M, L, D);");
   w.line(fmt::format("T F[{}];", n * W));
   w.line(fmt::format("detail::inverse_dynamics_gradient(t, x, xdot + {}, u, p, F);", n));
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
   w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[i * {0} + j] = T(j == {1} + i ? 1 : 0);", N, n));
-  w.line(fmt::format("T column[{}];", n));
-  w.line(fmt::format("for (std::size_t j = 0; j < {}; ++j) {{", N));
-  w.line(fmt::format("  for (std::size_t i = 0; i < {}; ++i) column[i] = -F[i * {} + j];", n, W));
-  w.line("  detail::ldlt_solve(L, D, column);");
-  w.line(fmt::format("  for (std::size_t i = 0; i < {0}; ++i) J[({0} + i) * {1} + j] = column[i];", n, N));
+  w.batch(solve_factors(e));
+  for (std::size_t i = 0; i < n; ++i) w.name(tree.forces[i], fmt::format("F[{} + c]", i * W));
+  std::vector<ex> lower;
+  for (const ex& a : tree.accelerations_of_forces) lower.push_back(-a);
+  w.line(fmt::format("for (std::size_t c = 0; c < {}; ++c) {{", N));
+  w.assign(lower, [&](std::size_t i, const std::string& code) { return fmt::format("J[{} + c] = {};", (n + i) * N, code); });
   w.line("}");
   return inverse_dynamics_gradient_function(e) +
          function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx\n"
-                              "/// (tau = M q'' - f, q'' held), with q'' from rhs and M from mass_matrix. J: {0}x{0}, row-major.\n",
+                              "/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 column by column by the\n"
+                              "/// articulated-body recursion. J: {0}x{0}, row-major.\n",
                               N),
                   "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
 }

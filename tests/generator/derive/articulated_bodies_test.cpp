@@ -77,11 +77,12 @@ GiNaC::exmap with_intermediates(const Equations& e, const GiNaC::exmap& random, 
   std::mt19937 generator(seed);
   std::uniform_real_distribution<double> uniform(-2, 2);
   for (const GiNaC::symbol& a : e.acceleration_symbols) at[a] = uniform(generator);
+  for (const GiNaC::symbol& b : e.articulated_inverse_dynamics.forces) at[b] = uniform(generator);
   for (const Intermediate& i : e.articulated_intermediates) at[i.symbol] = value_at(i.definition, at);
   return at;
 }
 
-// the recursion's q'' against M⁻¹ f at random states
+// the recursion's q'' against M⁻¹ f, and its M⁻¹ b against M⁻¹ b, at random states and b
 void expect_recursion_solves_the_equations(const Equations& e, int points, unsigned seed) {
   ASSERT_FALSE(e.articulated_accelerations.empty());
   std::size_t n = e.symbols.num_coordinates();
@@ -93,12 +94,19 @@ void expect_recursion_solves_the_equations(const Equations& e, int points, unsig
       f[j] = value_at(e.forcing[j], random);
       for (unsigned k = 0; k < n; ++k) M[j][k] = value_at(e.mass_matrix(j, k), random);
     }
-    std::vector<double> expected = solve(M, f);
+    std::vector<double> expected = solve(M, f), b;
     for (std::size_t j = 0; j < n; ++j) {
       double got = value_at(e.articulated_accelerations[j], at);
       EXPECT_NEAR(got, expected[j], 1e-10 * std::max(1.0, std::abs(expected[j])))
           << e.model_name << ": q''[" << j << "] of " << n;
+      b.push_back(value_at(e.articulated_inverse_dynamics.forces[j], at));
     }
+    // M⁻¹ b for the Jacobian's columns, by the same recursion without gravity and velocities
+    std::vector<double> response = solve(M, b);
+    for (std::size_t j = 0; j < n; ++j)
+      EXPECT_NEAR(value_at(e.articulated_inverse_dynamics.accelerations_of_forces[j], at), response[j],
+                  1e-10 * std::max(1.0, std::abs(response[j])))
+          << e.model_name << ": (M^-1 b)[" << j << "] of " << n;
   }
 }
 
@@ -318,9 +326,9 @@ int main() {
 }
 )cpp";
 
-TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
+// generates the model (named "chain") and runs header_check on it
+void expect_header_agrees(const std::string& text, const std::string& expected_code) {
   std::string dir = test::temporary_directory();
-  std::string text = planar_chain(14, "articulated");
   {
     std::ofstream(dir + "/chain.toml") << text;
     std::ofstream(dir + "/check.cpp") << header_check;
@@ -328,9 +336,22 @@ TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
   test::CommandOutput generated = test::run_eomgen("generate '" + dir + "/chain.toml' -o '" + dir + "'");
   ASSERT_EQ(generated.status, 0) << generated.err;
   std::string header = test::read_file(dir + "/chain.hpp");
-  EXPECT_NE(header.find("const int k = coupling[j * 14 + l];"), std::string::npos) << "expected the coupled terms as a loop";
+  EXPECT_NE(header.find(expected_code), std::string::npos) << "expected " << expected_code;
   EXPECT_NE(header.find("articulated-body recursion"), std::string::npos);
   EXPECT_EQ(test::run_command("cd '" + dir + "' && c++ -std=c++17 -O1 check.cpp -o check && ./check"), 0);
+}
+
+TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
+  expect_header_agrees(planar_chain(14, "articulated"), "const int k = coupling[j * 14 + l];");
+}
+
+// a branched spatial tree with a two-coordinate joint: the crane hook, renamed
+TEST(ArticulatedBodies, BranchedTreeHeaderAgreesWithItsMassMatrixAndDifferences) {
+  std::string text = test::read_file(test::model_path("crane_hook_tree"));
+  std::size_t at = text.find("\"crane_hook_tree\"");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 17, "\"chain\"");
+  expect_header_agrees(text, "for (std::size_t c = 0; c < 8; ++c) {");
 }
 
 }  // namespace
