@@ -36,19 +36,12 @@ class Recursion {
 
   // S = ∂d/∂q_J and c = d''(q'' = 0) of particle i's displacement from its parent
   void joint_motion(std::size_t i, Joint& J) {
-    const ParticleJoint& pj = tree_.joints[i];
-    const Symbols& s = model_.symbols;
-    std::size_t k = pj.coordinates.size();
+    JointMotion raw = eomgen::joint_motion(tree_.joints[i], model_.symbols);
+    std::size_t k = raw.axes.size();
     J.S = matrix(3, unsigned(k));
-    Vector3 velocity{0, 0, 0};
     for (unsigned a = 0; a < 3; ++a)
-      for (unsigned b = 0; b < k; ++b) {
-        J.S(a, b) = pj.displacement[a].diff(s.coordinates[pj.coordinates[b]]);
-        velocity[a] += J.S(a, b) * s.velocities[pj.coordinates[b]];
-      }
-    for (unsigned a = 0; a < 3; ++a)
-      for (unsigned b = 0; b < k; ++b)
-        J.c[a] += velocity[a].diff(s.coordinates[pj.coordinates[b]]) * s.velocities[pj.coordinates[b]];
+      for (unsigned b = 0; b < k; ++b) J.S(a, b) = raw.axes[b][a];
+    J.c = raw.bias;
     RelativeMotion& motion = out_.motions[i];
     for (unsigned b = 0; b < k; ++b) motion.axis_expressions.push_back(column(J.S, b));
     motion.bias_expression = J.c;

@@ -6,11 +6,14 @@
 /// small: M = Σ m JᵀJ + J_ωᵀ I J_ω and the velocity terms Σ m Jᵀa_b + J_ωᵀ(I α_b + ω×Iω).
 /// A kinetic energy given directly in [energy] goes through the general formula
 /// M = ∂²T/∂q̇², f = ∂T/∂q − (∂²T/∂q̇∂q)·q̇ − ∂²T/∂q̇∂t.
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "common/deadline.hpp"
 #include "derive/articulated_inverse_dynamics.hpp"
 #include "derive/methods.hpp"
+#include "derive/particle_tree_terms.hpp"
 #include "kinematics/vector3.hpp"
 
 namespace eomgen {
@@ -88,10 +91,9 @@ ex kinetic_energy(const GiNaC::matrix& M, const Mechanics& mech, const Symbols& 
 // q'' by the articulated-body recursion where [model] forward_dynamics asks for it, or by default
 // ("auto") for a tree of particles from articulated_crossover coordinates on; a variant that is
 // no longer a tree falls back to M = L D Lᵀ
-void choose_forward_dynamics(const Model& model, const Mechanics& mech, Equations& e) {
+void choose_forward_dynamics(const Model& model, const Mechanics& mech, const ParticleTree& tree, Equations& e) {
   if (model.method != "lagrange2" || model.forward_dynamics == "mass_matrix") return;
   if (model.forward_dynamics == "auto" && model.symbols.num_coordinates() < articulated_crossover) return;
-  ParticleTree tree = find_particle_tree(model);
   if (!tree.found()) return;
   derivation_stage("the articulated-body recursion");
   ArticulatedAccelerations solution = articulated_accelerations(model, mech, tree);
@@ -113,16 +115,29 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   GiNaC::matrix M(n, n);
   std::vector<ex> f(n, 0);
   derivation_stage("the bodies' terms of M and f");
-  if (mech.composite_mass_matrix) M = *mech.composite_mass_matrix;
-  for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, !mech.composite_mass_matrix);
-  add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
+  ParticleTree tree = find_particle_tree(model);
+  std::optional<ParticleTreeTerms> tree_terms;
+  if (tree.found()) {
+    tree_terms = particle_tree_terms(model, tree);
+    M = tree_terms->mass_matrix;
+    f = tree_terms->inertia_forces;
+  } else {
+    if (mech.composite_mass_matrix) M = *mech.composite_mass_matrix;
+    for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, !mech.composite_mass_matrix);
+    add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
+  }
+  // a tree's terms are simplified with its subtree masses as symbols, then collected in the masses
+  auto simplified = [&](const ex& x) {
+    ex t = tidy(x, mech.motion);
+    return tree_terms ? collect_by_motion(t.subs(tree_terms->subtree_masses).expand(), mech.motion) : t;
+  };
   derivation_stage("the simplified M and f");
   for (unsigned j = 0; j < n; ++j) {
     f[j] += mech.generalized_force[j] - mech.potential_gradient[j] -
             mech.dissipation.diff(s.velocities[j]);
-    f[j] = tidy(f[j], mech.motion);
+    f[j] = simplified(f[j]);
     for (unsigned k = j; k < n; ++k) {
-      M(j, k) = tidy(M(j, k), mech.motion);
+      M(j, k) = simplified(M(j, k));
       M(k, j) = M(j, k);
     }
   }
@@ -146,7 +161,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.dissipation = mech.dissipation;
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});
   e.conserves_energy_without_inputs = conserves_energy_without_inputs(mech, s);
-  choose_forward_dynamics(model, mech, e);
+  choose_forward_dynamics(model, mech, tree, e);
   return e;
 }
 

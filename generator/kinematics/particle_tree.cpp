@@ -46,6 +46,22 @@ std::string model_level_reason(const Model& m) {
 
 }  // namespace
 
+JointMotion joint_motion(const ParticleJoint& joint, const Symbols& s) {
+  JointMotion m;
+  Vector3 velocity{0, 0, 0};
+  for (std::size_t j : joint.coordinates) {
+    Vector3 axis;
+    for (unsigned a = 0; a < 3; ++a) {
+      axis[a] = joint.displacement[a].diff(s.coordinates[j]);
+      velocity[a] += axis[a] * s.velocities[j];
+    }
+    m.axes.push_back(axis);
+  }
+  for (unsigned a = 0; a < 3; ++a)
+    for (std::size_t j : joint.coordinates) m.bias[a] += velocity[a].diff(s.coordinates[j]) * s.velocities[j];
+  return m;
+}
+
 ParticleTree find_particle_tree(const Model& model) {
   ParticleTree tree;
   tree.why_not = model_level_reason(model);

@@ -25,6 +25,14 @@ struct ParticleTree {
   bool found() const { return why_not.empty(); }
 };
 
+/// A joint's motion in the model's symbols: the columns of S = ∂d/∂q_J (one per coordinate) and
+/// c = d'' at q_J'' = 0, so that d'' = S q_J'' + c.
+struct JointMotion {
+  std::vector<Vector3> axes;
+  Vector3 bias{0, 0, 0};
+};
+JointMotion joint_motion(const ParticleJoint& joint, const Symbols& s);
+
 /// The tree of the model's particles, when every coordinate moves exactly one particle relative
 /// to its parent and nothing else carries mass (no rigid bodies, no [energy] kinetic, no
 /// constraints, positions free of t and u, expanded kinematics).
