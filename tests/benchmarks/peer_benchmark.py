@@ -7,8 +7,8 @@ differences. Writes DIR/peers.md and DIR/peers.png and prints the table.
 
 Models (written here): the planar n-link pendulum (point masses, absolute
 angles from the downward vertical) for n = 1, 2, 4, 8, 12, 16, 24, 30, 60, 100
-(from 60 on without the Jacobian and the other rhs form, whose O(n^3) code takes
-minutes to compile), each also generated with the forward dynamics that
+(from 60 on without the other rhs form, the mass-matrix one, whose O(n^3) code
+takes minutes to compile), each also generated with the forward dynamics that
 [model] forward_dynamics = "auto" did not choose, whose rhs is timed in the
 same process and compared (and both against the rhs in long double); and a
 three-dimensional chain of n rigid rods, each link oriented by its own Cardan
@@ -21,7 +21,8 @@ x**2 in count_ops; SymPy's count over M and f is compared with ours over the
 same M and f (the mass_matrix and forcing functions); the rhs adds the
 unrolled LDL^T solve, counted separately. The header's size and the time g++ -O2
 takes to compile its rhs and jacobian_state (one translation unit with both
-instantiated for double) are recorded for every planar n up to 30.
+instantiated for double) are recorded for every planar n, and drawn against n
+beside the derivation time, the rhs time and the MuJoCo ratio.
 
 Usage: peer_benchmark.py EOMGEN [--quick] [--out DIR]   (exit 77 without SymPy)
 """
@@ -192,8 +193,10 @@ def main():
                 with open(os.path.join(work, other + ".toml"), "w") as f:
                     f.write(planar_chain(n, name=other, forward_dynamics="mass_matrix" if form == "articulated" else "articulated"))
                 run([eomgen, "generate", os.path.join(work, other + ".toml"), "-o", work])
-            speed = rhs_speed(work, name, kind == "planar", work, other, jacobian=not long_chain)
-            compile_s = compile_seconds(work, name, work) if kind == "planar" and not long_chain else None
+            # the articulated form's jacobian_state is O(n) code, the mass-matrix form's O(n^3)
+            jacobian = not long_chain or form == "articulated"
+            speed = rhs_speed(work, name, kind == "planar", work, other, jacobian=jacobian)
+            compile_s = compile_seconds(work, name, work) if kind == "planar" and jacobian else None
             lagrange = kane = lam = None
             if kind == "planar":
                 if not lagrange_gave_up:
@@ -295,9 +298,9 @@ def draw_chart(rows, out):
             vals = [r["n"], r["derive_s"], r["lagrange_s"], r["kane_s"], r["eomgen_ns"], r["mujoco_ns"], r["eigen_ns"],
                     r.get("other_form_ns"), r["mujoco_ns"] / r["eomgen_ns"] if r["mujoco_ns"] else None, r["header_kb"], r["compile_s"]]
             f.write(" ".join("NaN" if not isinstance(v, (int, float)) else repr(v) for v in vals) + "\n")
-    script = f"""set terminal pngcairo size 1500,520 noenhanced
+    script = f"""set terminal pngcairo size 1300,1000 noenhanced
 set output '{os.path.join(out, "peers.png")}'
-set multiplot layout 1,3
+set multiplot layout 2,2
 set logscale xy
 set grid
 set key top left
@@ -313,6 +316,11 @@ set yrange [0:*]
 set ylabel 'MuJoCo time / eomgen time'
 set title 'rhs: MuJoCo mj_forward / eomgen'
 plot '{data}' using 1:9 with linespoints lw 2 title 'ratio'
+set logscale y
+set yrange [*:*]
+set ylabel 'header [KB], compile [s]'
+set title 'Generated code: header size and g++ -O2 of rhs + jacobian_state'
+plot '{data}' using 1:10 with linespoints lw 2 title 'header [KB]', '' using 1:11 with linespoints lw 2 title 'compile [s]'
 unset multiplot
 """
     subprocess.run(["gnuplot"], input=script, text=True)
