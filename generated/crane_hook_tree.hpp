@@ -2,7 +2,7 @@
 // crane_hook_tree: Crane hook carrying two swinging loads (method lagrange2, 4 degrees of freedom).
 // Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].
 // Forward dynamics: rhs solves for q'' by the articulated-body recursion of the particles' tree (O(n));
-// mass_matrix and forcing give M and f; jacobian_state takes q'' from rhs and M from mass_matrix.
+// mass_matrix, forcing and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 column by column).
 #pragma once
 
 #include <array>
@@ -79,39 +79,6 @@ struct input_type {
 };
 template <class T>
 using input_t = typename input_type<T>::type;
-
-/// M = L D L^T for the symmetric positive definite 4x4 mass matrix, unrolled.
-/// M, L: 4x4, row-major (L unit lower triangular, only below the diagonal written); D: 4.
-template <class T>
-inline void ldlt_factor(const T* M, T* L, T* D) {
-  (void)L;
-  D[0] = M[0];
-  L[4] = (M[4])/D[0];
-  L[8] = (M[8])/D[0];
-  L[12] = (M[12])/D[0];
-  D[1] = M[5] - L[4]*L[4]*D[0];
-  L[9] = (M[9] - L[8]*L[4]*D[0])/D[1];
-  L[13] = (M[13] - L[12]*L[4]*D[0])/D[1];
-  D[2] = M[10] - L[8]*L[8]*D[0] - L[9]*L[9]*D[1];
-  L[14] = (M[14] - L[12]*L[8]*D[0] - L[13]*L[9]*D[1])/D[2];
-  D[3] = M[15] - L[12]*L[12]*D[0] - L[13]*L[13]*D[1] - L[14]*L[14]*D[2];
-}
-
-/// Solves L D L^T x = b in place. b: 4.
-template <class T>
-inline void ldlt_solve(const T* L, const T* D, T* b) {
-  (void)L;
-  b[1] = b[1] - L[4]*b[0];
-  b[2] = b[2] - L[8]*b[0] - L[9]*b[1];
-  b[3] = b[3] - L[12]*b[0] - L[13]*b[1] - L[14]*b[2];
-  b[0] = b[0]/D[0];
-  b[1] = b[1]/D[1];
-  b[2] = b[2]/D[2];
-  b[3] = b[3]/D[3];
-  b[2] = b[2] - L[14]*b[3];
-  b[1] = b[1] - L[9]*b[2] - L[13]*b[3];
-  b[0] = b[0] - L[4]*b[1] - L[8]*b[2] - L[12]*b[3];
-}
 
 }  // namespace detail
 
@@ -614,8 +581,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   }
 }
 
-/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
-/// B: 8x1, row-major (nothing is written when the model has no inputs).
+/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below (M^-1 by the articulated-body
+/// recursion). B: 8x1, row-major (nothing is written when the model has no inputs).
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
@@ -632,47 +599,74 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
-  const T c0 = p_m0 + p_m1 + p_m2;
-  const T c1 = sin(q_theta);
-  const T c2 = cos(q_psi);
-  const T c3 = cos(q_a);
-  const T c4 = cos(q_theta);
-  const T c5 = sin(q_psi);
-  const T c6 = cos(q_b);
-  T M[16];
-  M[0] = c0*p_L*p_L;
-  M[1] = T(0);
-  M[4] = M[1];
-  M[2] = c1*p_L*p_l1*p_m1*sin(q_a) + c2*c3*c4*p_L*p_l1*p_m1;
-  M[8] = M[2];
-  M[3] = c1*p_L*p_l2*p_m2*sin(q_b) + c4*c5*c6*p_L*p_l2*p_m2;
-  M[12] = M[3];
-  M[5] = c0*c1*c1*p_L*p_L;
-  M[6] = -c1*c3*c5*p_L*p_l1*p_m1;
-  M[9] = M[6];
-  M[7] = c1*c2*c6*p_L*p_l2*p_m2;
-  M[13] = M[7];
-  M[10] = p_l1*p_l1*p_m1;
-  M[11] = T(0);
-  M[14] = M[11];
-  M[15] = p_l2*p_l2*p_m2;
-  T L[16];
-  T D[4];
-  detail::ldlt_factor(M, L, D);
-  B[0] = T(0);
-  B[1] = T(0);
-  B[2] = T(0);
-  B[3] = T(0);
-  T column[4];
-  column[0] = c2*c4*p_L;
-  column[1] = -c1*c5*p_L;
-  column[2] = c3*p_l1;
-  column[3] = T(0);
-  detail::ldlt_solve(L, D, column);
-  B[4] = column[0];
-  B[5] = column[1];
-  B[6] = column[2];
-  B[7] = column[3];
+  const T ddq[4] = {};
+  T F[36];
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
+  for (std::size_t i = 0; i < 4; ++i) B[i] = T(0);
+  const T c0 = cos(q_psi);
+  const T c1 = cos(q_theta);
+  const T c2 = sin(q_theta);
+  const T c3 = sin(q_psi);
+  const T ab2_S10 = cos(q_b)*p_l2;
+  const T ab2_S20 = p_l2*sin(q_b);
+  const T ab1_S00 = cos(q_a)*p_l1;
+  const T ab1_S20 = p_l1*sin(q_a);
+  const T ab0_S00 = c0*c1*p_L;
+  const T ab0_S01 = -c2*c3*p_L;
+  const T ab0_S10 = c1*c3*p_L;
+  const T ab0_S11 = c0*c2*p_L;
+  const T ab0_S20 = c2*p_L;
+  const T ab2_U10 = ab2_S10*p_m2;
+  const T ab2_U20 = ab2_S20*p_m2;
+  const T ab1_U00 = ab1_S00*p_m1;
+  const T ab1_U20 = ab1_S20*p_m1;
+  const T ab2_D00 = ab2_S10*ab2_U10 + ab2_S20*ab2_U20;
+  const T ab1_D00 = ab1_S00*ab1_U00 + ab1_S20*ab1_U20;
+  const T ab2_Di00 = T(1)/ab2_D00;
+  const T ab1_Di00 = T(1)/ab1_D00;
+  const T ab2_W10 = ab2_Di00*ab2_U10;
+  const T ab2_W20 = ab2_Di00*ab2_U20;
+  const T ab1_W00 = ab1_Di00*ab1_U00;
+  const T ab1_W20 = ab1_Di00*ab1_U20;
+  const T ab2_Ia11 = -ab2_U10*ab2_W10 + p_m2;
+  const T ab2_Ia12 = -ab2_U20*ab2_W10;
+  const T ab2_Ia22 = -ab2_U20*ab2_W20 + p_m2;
+  const T ab1_Ia00 = -ab1_U00*ab1_W00 + p_m1;
+  const T ab1_Ia02 = -ab1_U20*ab1_W00;
+  const T ab1_Ia22 = -ab1_U20*ab1_W20 + p_m1;
+  const T ab0_I00 = ab1_Ia00 + p_m0 + p_m2;
+  const T ab0_I11 = ab2_Ia11 + p_m0 + p_m1;
+  const T ab0_I22 = ab1_Ia22 + ab2_Ia22 + p_m0;
+  const T ab0_U21 = ab0_S01*ab1_Ia02 + ab0_S11*ab2_Ia12;
+  const T ab0_U00 = ab0_I00*ab0_S00 + ab0_S20*ab1_Ia02;
+  const T ab0_U01 = ab0_I00*ab0_S01;
+  const T ab0_U10 = ab0_I11*ab0_S10 + ab0_S20*ab2_Ia12;
+  const T ab0_U11 = ab0_I11*ab0_S11;
+  const T ab0_U20 = ab0_I22*ab0_S20 + ab0_S00*ab1_Ia02 + ab0_S10*ab2_Ia12;
+  const T ab0_D00 = ab0_S00*ab0_U00 + ab0_S10*ab0_U10 + ab0_S20*ab0_U20;
+  const T ab0_D01 = ab0_S00*ab0_U01 + ab0_S10*ab0_U11 + ab0_S20*ab0_U21;
+  const T ab0_D11 = ab0_S01*ab0_U01 + ab0_S11*ab0_U11;
+  const T ab0_Di00 = ab0_D11/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  const T ab0_Di01 = -ab0_D01/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  const T ab0_Di11 = ab0_D00/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  for (std::size_t c = 0; c < 1; ++c) {
+  const T ab0_bp0 = F[26 + c]*ab1_W00;
+  const T ab0_bp1 = F[35 + c]*ab2_W10;
+  const T ab0_bp2 = F[26 + c]*ab1_W20 + F[35 + c]*ab2_W20;
+  const T ab0_bu0 = F[8 + c] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
+  const T ab0_bu1 = F[17 + c] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
+  const T ab0_bddq0 = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
+  const T ab0_bddq1 = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
+  const T ab0_ba0 = ab0_S00*ab0_bddq0 + ab0_S01*ab0_bddq1;
+  const T ab0_ba1 = ab0_S10*ab0_bddq0 + ab0_S11*ab0_bddq1;
+  const T ab0_ba2 = ab0_S20*ab0_bddq0;
+  const T ab1_bddq0 = (F[26 + c] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
+  const T ab2_bddq0 = (F[35 + c] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
+  B[4 + c] = -ab0_bddq0;
+  B[5 + c] = -ab0_bddq1;
+  B[6 + c] = -ab1_bddq0;
+  B[7 + c] = -ab2_bddq0;
+  }
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

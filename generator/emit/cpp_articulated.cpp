@@ -1,6 +1,7 @@
 #include "emit/cpp_articulated.hpp"
 
 #include <algorithm>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -169,10 +170,27 @@ std::vector<ex> solve_factors(const Equations& e) {
 
 }  // namespace
 
-// dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M⁻¹ by the recursion, O(n) per column
+namespace {
+
+// target[row(i) + c] = −(M⁻¹ F[:, first + c])_i for the columns c < count of F (n × W, row-major), M⁻¹
+// by the recursion (O(n) per column) with its factors S, U, D⁻¹, W computed once, before the loop
+void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std::size_t first, std::size_t count,
+                          const std::string& target, const std::function<std::size_t(std::size_t)>& row) {
+  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
+  w.batch(solve_factors(e));
+  for (std::size_t i = 0; i < tree.forces.size(); ++i) w.name(tree.forces[i], fmt::format("F[{} + c]", i * W + first));
+  std::vector<ex> negated;
+  for (const ex& a : tree.accelerations_of_forces) negated.push_back(-a);
+  w.line(fmt::format("for (std::size_t c = 0; c < {}; ++c) {{", count));
+  w.assign(negated, [&](std::size_t i, const std::string& code) { return fmt::format("{}[{} + c] = {};", target, row(i), code); });
+  w.line("}");
+}
+
+}  // namespace
+
+// dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M⁻¹ by the recursion
 std::string articulated_jacobian_state_function(const Equations& e) {
   const Symbols& s = e.symbols;
-  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
   std::size_t n = s.num_coordinates(), N = 2 * n, W = N + s.inputs.size();
   BodyWriter w(e);
   w.line(fmt::format("T xdot[{}];", N));
@@ -181,19 +199,31 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   w.line(fmt::format("detail::inverse_dynamics_gradient(t, x, xdot + {}, u, p, F);", n));
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
   w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[i * {0} + j] = T(j == {1} + i ? 1 : 0);", N, n));
-  w.batch(solve_factors(e));
-  for (std::size_t i = 0; i < n; ++i) w.name(tree.forces[i], fmt::format("F[{} + c]", i * W));
-  std::vector<ex> lower;
-  for (const ex& a : tree.accelerations_of_forces) lower.push_back(-a);
-  w.line(fmt::format("for (std::size_t c = 0; c < {}; ++c) {{", N));
-  w.assign(lower, [&](std::size_t i, const std::string& code) { return fmt::format("J[{} + c] = {};", (n + i) * N, code); });
-  w.line("}");
+  write_solved_columns(w, e, W, 0, N, "J", [&](std::size_t i) { return (n + i) * N; });
   return inverse_dynamics_gradient_function(e) +
          function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx\n"
                               "/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 column by column by the\n"
                               "/// articulated-body recursion. J: {0}x{0}, row-major.\n",
                               N),
                   "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
+}
+
+// dq''/du = −M⁻¹ ∂τ/∂u = M⁻¹ ∂f/∂u, the input columns of the same ∂τ/∂(q, q', u) (free of q'')
+std::string articulated_jacobian_input_function(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = s.num_coordinates(), m = s.inputs.size(), W = 2 * n + m;
+  BodyWriter w(e);
+  if (m > 0) {
+    w.line(fmt::format("const T ddq[{}] = {{}};", n));
+    w.line(fmt::format("T F[{}];", n * W));
+    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
+    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) B[i] = T(0);", n * m));
+    write_solved_columns(w, e, W, 2 * n, m, "B", [&](std::size_t i) { return (n + i) * m; });
+  }
+  return function(fmt::format("/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below (M^-1 by the articulated-body\n"
+                              "/// recursion). B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, m),
+                  "void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B)",
+                  w.finish(all_unused + std::string(" (void)B;")));
 }
 
 // a tree of particles is scleronomic and has no [energy] kinetic, so T = ½ q'ᵀ M q' exactly (Hiller §3.5)

@@ -234,6 +234,7 @@ std::string jacobian_state_function(const Equations& e) {
 
 std::string jacobian_input_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_input_function(e);
+  if (!e.articulated_accelerations.empty()) return articulated_jacobian_input_function(e);
   const Symbols& s = e.symbols;
   std::size_t nq = s.num_coordinates(), n = e.forcing.size(), m = s.inputs.size();
   BodyWriter w(e);
@@ -353,22 +354,26 @@ std::string first_integrals_function(const Equations& e) {
                         w.finish("(void)t; (void)x; (void)p; (void)out;"));
 }
 
-// the detail namespace: the input type that keeps u out of deducing T, and the LDLᵀ of M
-std::string detail_functions(std::size_t n) {
-  LdltCode ldlt = ldlt_code(n);
-  return fmt::format(
-      "namespace detail {{\n\n"
+// the detail namespace: the input type that keeps u out of deducing T, and the LDLᵀ of M (which a
+// model solved by the articulated-body recursion does not use: its functions take M⁻¹ from the tree)
+std::string detail_functions(std::size_t n, bool with_ldlt) {
+  std::string out =
+      "namespace detail {\n\n"
       "/// The input pointer does not take part in deducing T, so a model without\n"
       "/// inputs can be called with u = nullptr.\n"
-      "template <class T>\nstruct input_type {{\n  using type = T;\n}};\n"
-      "template <class T>\nusing input_t = typename input_type<T>::type;\n\n"
-      "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix{3}.\n"
-      "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n"
-      "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
-      "/// Solves L D L^T x = b in place. b: {0}.\n"
-      "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n"
-      "}}  // namespace detail\n\n",
-      n, ldlt.factor, ldlt.solve, ldlt.unrolled ? ", unrolled" : "");
+      "template <class T>\nstruct input_type {\n  using type = T;\n};\n"
+      "template <class T>\nusing input_t = typename input_type<T>::type;\n\n";
+  if (with_ldlt) {
+    LdltCode ldlt = ldlt_code(n);
+    out += fmt::format(
+        "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix{3}.\n"
+        "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n"
+        "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
+        "/// Solves L D L^T x = b in place. b: {0}.\n"
+        "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n",
+        n, ldlt.factor, ldlt.solve, ldlt.unrolled ? ", unrolled" : "");
+  }
+  return out + "}  // namespace detail\n\n";
 }
 
 
@@ -432,8 +437,8 @@ std::string emit_cpp_header(const Equations& e) {
             "// linearization differentiate the Newton-Euler inverse dynamics tau = M q'' - f (forward mode)."
       : !e.articulated_accelerations.empty()
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
-            "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix and forcing "
-            "give M and f; jacobian_state takes q'' from rhs and M from mass_matrix."
+            "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix, forcing "
+            "and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 column by column)."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k);
   out += fmt::format(
@@ -467,7 +472,7 @@ std::string emit_cpp_header(const Equations& e) {
       "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
       members, values);
   out += constraint_declarations(e);
-  out += detail_functions(k);
+  out += detail_functions(k, e.articulated_accelerations.empty());
   out += constrained_solver(e);
   out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
          jacobian_input_function(e) + linearization_function(e);

@@ -253,7 +253,8 @@ TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
 
 // The generated header of a long chain (M and ∂τ/∂x as loops over the coupled pairs of joints):
 // rhs against M⁻¹ f from mass_matrix and forcing, jacobian_state against central differences of
-// rhs, linearization's P, Q, B against central differences of forcing, at random states.
+// rhs, jacobian_input against those of rhs in u, linearization's P, Q, B against central differences
+// of forcing, at random states.
 const char* header_check = R"cpp(
 #include <cmath>
 #include <cstdio>
@@ -291,7 +292,7 @@ int main() {
   std::uniform_real_distribution<double> uniform(-1, 1);
   auto p = m::Parameters<double>().values();
   for (int trial = 0; trial < 5; ++trial) {
-    std::vector<double> x(N), u(k), xdot(N), M(n * n), f(n), J(N * N), P(n * n), Q(n * n), B(n * k);
+    std::vector<double> x(N), u(k), xdot(N), M(n * n), f(n), J(N * N), P(n * n), Q(n * n), B(n * k), Bx(N * k);
     for (double& v : x) v = 2 * uniform(random);
     for (double& v : u) v = uniform(random);
     m::rhs(0.0, x.data(), u.data(), p.data(), xdot.data());
@@ -303,6 +304,7 @@ int main() {
     for (int i = 0; i < n; ++i) expect(xdot[n + i], ddq[i], scale, 1e-10, "q''");
     m::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data());
     m::linearization(0.0, x.data(), u.data(), p.data(), P.data(), Q.data(), B.data());
+    m::jacobian_input(0.0, x.data(), u.data(), p.data(), Bx.data());
     for (int j = 0; j < N + k; ++j) {
       std::vector<double> xp = x, xm = x, up = u, um = u, rp(N), rm(N), fp(n), fm(n);
       double h = 1e-6;
@@ -313,6 +315,7 @@ int main() {
       m::forcing(0.0, xp.data(), up.data(), p.data(), fp.data());
       m::forcing(0.0, xm.data(), um.data(), p.data(), fm.data());
       for (int i = 0; i < N && j < N; ++i) expect(J[i * N + j], (rp[i] - rm[i]) / (2 * h), scale * 10, 1e-6, "J");
+      for (int i = 0; i < N && j >= N; ++i) expect(Bx[i * k + j - N], (rp[i] - rm[i]) / (2 * h), scale * 10, 1e-6, "jacobian_input");
       for (int i = 0; i < n; ++i) {
         double df = (fp[i] - fm[i]) / (2 * h);
         if (j < n) expect(Q[i * n + j], -df, 100, 1e-6, "Q");
