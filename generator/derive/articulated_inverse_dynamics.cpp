@@ -18,12 +18,8 @@ class InverseDynamics {
                   const ArticulatedAccelerations& forward, const std::vector<GiNaC::symbol>& accelerations,
                   std::vector<Intermediate>& intermediates)
       : model_(model), mechanics_(mechanics), tree_(tree), forward_(forward), ddq_(accelerations),
-        count_(model.particles.size()), name_(intermediates) {
-    const std::vector<ParticleJoint>& joints = tree.joints;
-    joint_of_.resize(model.symbols.num_coordinates());
-    for (std::size_t i = 0; i < count_; ++i)
-      for (std::size_t b = 0; b < joints[i].coordinates.size(); ++b) joint_of_[joints[i].coordinates[b]] = {i, b};
-  }
+        count_(model.particles.size()), name_(intermediates),
+        joint_of_(tree.joints_of_coordinates(model.symbols.num_coordinates())) {}
 
   TreeInverseDynamics run() {
     std::size_t n = joint_of_.size();
@@ -32,7 +28,7 @@ class InverseDynamics {
     subtree_forces();
     relative_acceleration_derivatives();
     for (std::size_t j = 0; j < n; ++j)
-      for (std::size_t l = 0; l < n; ++l) out_.coupling.push_back(coupling(j, l));
+      for (std::size_t l = 0; l < n; ++l) out_.coupling.push_back(tree_.coupling(joint_of_[j].first, joint_of_[l].first));
     for (std::size_t j = 0; j < n; ++j) {
       out_.forcing.push_back(applied_generalized_force(model_, mechanics_, j) - dot(out_.axes[j], rest_force_[joint_of_[j].first]));
       gradient_rest(j);
@@ -41,22 +37,6 @@ class InverseDynamics {
   }
 
  private:
-  // true when particle k is i or below it
-  bool below(std::size_t k, std::size_t i) const {
-    for (int at = int(k); at >= 0; at = tree_.joints[std::size_t(at)].parent)
-      if (std::size_t(at) == i) return true;
-    return false;
-  }
-
-  // the particle whose subtree's mass couples the coordinates j and l: the deeper of their
-  // particles when one is below the other, −1 on different branches
-  int coupling(std::size_t j, std::size_t l) const {
-    std::size_t i = joint_of_[j].first, k = joint_of_[l].first;
-    if (below(k, i)) return int(k);
-    if (below(i, k)) return int(i);
-    return -1;
-  }
-
   // m̄_i = m_i + Σ m̄_child, leaves first
   void composite_masses() {
     std::vector<ex>& mass = out_.subtree_masses;

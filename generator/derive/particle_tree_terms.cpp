@@ -8,17 +8,6 @@ namespace eomgen {
 
 using GiNaC::ex;
 
-namespace {
-
-// true when particle k is i or below it
-bool below(const ParticleTree& tree, std::size_t k, std::size_t i) {
-  for (int at = int(k); at >= 0; at = tree.joints[std::size_t(at)].parent)
-    if (std::size_t(at) == i) return true;
-  return false;
-}
-
-}  // namespace
-
 ParticleTreeTerms particle_tree_terms(const Model& model, const ParticleTree& tree) {
   const Symbols& s = model.symbols;
   std::size_t count = model.particles.size(), n = s.num_coordinates();
@@ -36,16 +25,11 @@ ParticleTreeTerms particle_tree_terms(const Model& model, const ParticleTree& tr
     out.subtree_masses[mass] = sums[i];
   }
   std::vector<JointMotion> motion;
-  std::vector<std::pair<std::size_t, std::size_t>> joint_of(n);  // coordinate → (particle, place in its joint)
-  for (std::size_t i = 0; i < count; ++i) {
-    motion.push_back(joint_motion(tree.joints[i], s));
-    for (std::size_t b = 0; b < tree.joints[i].coordinates.size(); ++b) joint_of[tree.joints[i].coordinates[b]] = {i, b};
-  }
-  // the mass coupling particles i and k: the deeper subtree's, none on different branches
+  for (std::size_t i = 0; i < count; ++i) motion.push_back(joint_motion(tree.joints[i], s));
+  std::vector<std::pair<std::size_t, std::size_t>> joint_of = tree.joints_of_coordinates(n);
   auto coupling = [&](std::size_t i, std::size_t k) -> ex {
-    if (below(tree, k, i)) return masses[k];
-    if (below(tree, i, k)) return masses[i];
-    return 0;
+    int by = tree.coupling(i, k);
+    return by < 0 ? ex(0) : masses[std::size_t(by)];
   };
   out.mass_matrix = GiNaC::matrix(unsigned(n), unsigned(n));
   for (std::size_t j = 0; j < n; ++j) {

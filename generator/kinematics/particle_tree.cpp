@@ -46,6 +46,25 @@ std::string model_level_reason(const Model& m) {
 
 }  // namespace
 
+bool ParticleTree::below(std::size_t k, std::size_t i) const {
+  for (int at = int(k); at >= 0; at = joints[std::size_t(at)].parent)
+    if (std::size_t(at) == i) return true;
+  return false;
+}
+
+int ParticleTree::coupling(std::size_t i, std::size_t k) const {
+  if (below(k, i)) return int(k);
+  if (below(i, k)) return int(i);
+  return -1;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> ParticleTree::joints_of_coordinates(std::size_t n) const {
+  std::vector<std::pair<std::size_t, std::size_t>> of(n);
+  for (std::size_t i = 0; i < joints.size(); ++i)
+    for (std::size_t b = 0; b < joints[i].coordinates.size(); ++b) of[joints[i].coordinates[b]] = {i, b};
+  return of;
+}
+
 JointMotion joint_motion(const ParticleJoint& joint, const Symbols& s) {
   JointMotion m;
   Vector3 velocity{0, 0, 0};

@@ -23,6 +23,13 @@ struct ParticleTree {
   std::vector<std::size_t> order;     // the particles, each parent before its children
   std::string why_not;                // empty when the model is such a tree; else the reason, in words
   bool found() const { return why_not.empty(); }
+  /// true when particle k is i or hangs below it
+  bool below(std::size_t k, std::size_t i) const;
+  /// The particle whose subtree's mass couples particles i and k (M_jl = m̄ S_j · S_l for their
+  /// coordinates): the deeper of the two when one hangs below the other, −1 on different branches.
+  int coupling(std::size_t i, std::size_t k) const;
+  /// For each of the model's n coordinates: its particle and its place in that particle's joint.
+  std::vector<std::pair<std::size_t, std::size_t>> joints_of_coordinates(std::size_t n) const;
 };
 
 /// A joint's motion in the model's symbols: the columns of S = ∂d/∂q_J (one per coordinate) and
