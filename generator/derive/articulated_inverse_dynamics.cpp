@@ -29,9 +29,14 @@ class InverseDynamics {
     relative_acceleration_derivatives();
     for (std::size_t j = 0; j < n; ++j)
       for (std::size_t l = 0; l < n; ++l) out_.coupling.push_back(tree_.coupling(joint_of_[j].first, joint_of_[l].first));
+    const Symbols& s = model_.symbols;
+    std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
+    variables.insert(variables.end(), s.velocities.begin(), s.velocities.end());
+    variables.insert(variables.end(), s.inputs.begin(), s.inputs.end());
     for (std::size_t j = 0; j < n; ++j) {
-      out_.forcing.push_back(applied_generalized_force(model_, mechanics_, j) - dot(out_.axes[j], rest_force_[joint_of_[j].first]));
-      gradient_rest(j);
+      ex Q = applied_generalized_force(model_, mechanics_, j);
+      out_.forcing.push_back(Q - dot(out_.axes[j], rest_force_[joint_of_[j].first]));
+      gradient_rest(j, gradient(Q, variables));
     }
     return out_;
   }
@@ -95,16 +100,13 @@ class InverseDynamics {
   }
 
   // the terms of ∂τ_j/∂(q, q', u) besides m̄ S_j · ∂d''/∂x: ∂S_j/∂q_l · F_i within the joint, −∂Q_j/∂x
-  void gradient_rest(std::size_t j) {
+  // (`applied_gradient`: ∂Q_j/∂(q, q', u))
+  void gradient_rest(std::size_t j, const std::vector<ex>& applied_gradient) {
     const Symbols& s = model_.symbols;
-    std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
-    variables.insert(variables.end(), s.velocities.begin(), s.velocities.end());
-    variables.insert(variables.end(), s.inputs.begin(), s.inputs.end());
-    std::vector<ex> row = gradient(applied_generalized_force(model_, mechanics_, j), variables);
     auto [i, b] = joint_of_[j];
     const Vector3& raw = forward_.motions[i].axis_expressions[b];
-    for (std::size_t k = 0; k < variables.size(); ++k) {
-      ex term = -row[k];
+    for (std::size_t k = 0; k < applied_gradient.size(); ++k) {
+      ex term = -applied_gradient[k];
       if (k < joint_of_.size() && joint_of_[k].first == i) {
         const GiNaC::realsymbol& q = s.coordinates[k];
         term += dot({raw[0].diff(q), raw[1].diff(q), raw[2].diff(q)}, force_[i]);

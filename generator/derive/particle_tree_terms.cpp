@@ -31,6 +31,12 @@ ParticleTreeTerms particle_tree_terms(const Model& model, const ParticleTree& tr
     int by = tree.coupling(i, k);
     return by < 0 ? ex(0) : masses[std::size_t(by)];
   };
+  // Σ_{k ∈ subtree(i)} m_k a_k at q'' = 0 (a_k = Σ of c over the joints from the root to k), once per
+  // particle that has coordinates
+  std::vector<Vector3> force(count, Vector3{0, 0, 0});
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t k = 0; k < count && !tree.joints[i].coordinates.empty(); ++k)
+      force[i] = force[i] + scaled(coupling(i, k), motion[k].bias);
   out.mass_matrix = GiNaC::matrix(unsigned(n), unsigned(n));
   for (std::size_t j = 0; j < n; ++j) {
     auto [i, b] = joint_of[j];
@@ -40,10 +46,7 @@ ParticleTreeTerms particle_tree_terms(const Model& model, const ParticleTree& tr
       out.mass_matrix(unsigned(j), unsigned(l)) = coupling(i, k) * dot(S, motion[k].axes[c]);
       out.mass_matrix(unsigned(l), unsigned(j)) = out.mass_matrix(unsigned(j), unsigned(l));
     }
-    // Σ_{k ∈ subtree(i)} m_k a_k at q'' = 0, a_k = Σ of c over the joints from the root to k
-    Vector3 force{0, 0, 0};
-    for (std::size_t k = 0; k < count; ++k) force = force + scaled(coupling(i, k), motion[k].bias);
-    out.inertia_forces.push_back(-dot(S, force));
+    out.inertia_forces.push_back(-dot(S, force[i]));
   }
   return out;
 }

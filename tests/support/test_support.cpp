@@ -24,6 +24,19 @@ Equations derive_model(const std::string& name) {
   return *d.equations;
 }
 
+Equations derive_text(const std::string& text, const std::string& path) {
+  Derivation d = derive_model_text(text, path);
+  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
+  if (!d.equations) throw std::runtime_error(path + " did not derive");
+  return *d.equations;
+}
+
+GiNaC::ex parameter_named(const Symbols& s, const std::string& name) {
+  for (std::size_t i = 0; i < s.parameters.size(); ++i)
+    if (s.parameter_names[i] == name) return s.parameters[i];
+  throw std::runtime_error("no parameter " + name);
+}
+
 GiNaC::ex closed_form(const Equations& e, const std::string& text) {
   const Symbols& s = e.symbols;
   GiNaC::symtab table;

@@ -18,6 +18,10 @@ std::string model_path(const std::string& name);
 
 /// Derives models/NAME.toml; fails the test on any diagnostic.
 Equations derive_model(const std::string& name);
+/// Derives a model file's text (`path` names it in diagnostics); fails the test on any diagnostic.
+Equations derive_text(const std::string& text, const std::string& path = "model.toml");
+/// The model's parameter called `name`.
+GiNaC::ex parameter_named(const Symbols& s, const std::string& name);
 
 /// Parses a closed form with GiNaC's own parser; the symbols are the model's,
 /// with the velocity of q written d_q (so the parser is independent of ours).

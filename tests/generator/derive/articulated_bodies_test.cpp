@@ -18,12 +18,6 @@ namespace {
 using GiNaC::ex;
 using test::value_at;
 
-Equations derive_text(const std::string& text) {
-  Derivation d = derive_model_text(text, "tree.toml");
-  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
-  if (!d.equations) throw std::runtime_error("the model did not derive");
-  return *d.equations;
-}
 
 std::string diagnostics_of(const std::string& text) { return derive_model_text(text, "tree.toml").diagnostics.format(); }
 
@@ -157,7 +151,7 @@ void expect_inverse_dynamics_of_the_equations(const Equations& e, int points, un
 
 TEST(ArticulatedBodies, PlanarChainGivesMInverseF) {
   for (int n : {1, 2, 3, 5, 8}) {
-    Equations e = derive_text(planar_chain(n, "articulated"));
+    Equations e = test::derive_text(planar_chain(n, "articulated"));
     expect_recursion_solves_the_equations(e, 6, 40u + unsigned(n));
     expect_inverse_dynamics_of_the_equations(e, 3, 50u + unsigned(n));
   }
@@ -200,7 +194,7 @@ acceleration = ["0", "0", "-g"]
 [energy]
 potential = "k*(x^2 + y^2 + z^2)/2"
 )toml";
-  Equations carrier = derive_text(free);
+  Equations carrier = test::derive_text(free);
   expect_recursion_solves_the_equations(carrier, 8, 9u);
   expect_inverse_dynamics_of_the_equations(carrier, 4, 10u);
 }
@@ -224,9 +218,9 @@ TEST(ArticulatedBodies, VariantsOfATreeKeepTheRecursionOrFallBack) {
 }
 
 TEST(ArticulatedBodies, AutoChoosesTheRecursionForLongTrees) {
-  EXPECT_TRUE(derive_text(planar_chain(8, "auto")).articulated_accelerations.empty());
-  EXPECT_FALSE(derive_text(planar_chain(9, "auto")).articulated_accelerations.empty());
-  EXPECT_TRUE(derive_text(planar_chain(12, "mass_matrix")).articulated_accelerations.empty());
+  EXPECT_TRUE(test::derive_text(planar_chain(8, "auto")).articulated_accelerations.empty());
+  EXPECT_FALSE(test::derive_text(planar_chain(9, "auto")).articulated_accelerations.empty());
+  EXPECT_TRUE(test::derive_text(planar_chain(12, "mass_matrix")).articulated_accelerations.empty());
   EXPECT_TRUE(test::derive_model("n_link_pendulum_4").articulated_accelerations.empty());
 }
 

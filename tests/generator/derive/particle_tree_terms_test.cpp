@@ -16,12 +16,6 @@ namespace {
 using GiNaC::ex;
 using test::value_at;
 
-Equations derive_text(const std::string& text) {
-  Derivation d = derive_model_text(text, "tree.toml");
-  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format();
-  if (!d.equations) throw std::runtime_error("the model did not derive");
-  return *d.equations;
-}
 
 std::string planar_chain(int n) {
   std::string out = "[model]\nname = \"chain\"\nforward_dynamics = \"mass_matrix\"\n[parameters]\ng = 9.81\n";
@@ -37,23 +31,18 @@ std::string planar_chain(int n) {
   return out + "[gravity]\nacceleration = [\"0\", \"-g\", \"0\"]\n";
 }
 
-ex parameter(const Symbols& s, const std::string& name) {
-  for (std::size_t i = 0; i < s.parameter_names.size(); ++i)
-    if (s.parameter_names[i] == name) return s.parameters[i];
-  throw std::runtime_error("no parameter " + name);
-}
 
 TEST(ParticleTreeTerms, PlanarChainHasTheClosedFormMAndF) {
   for (int n : {2, 5, 9}) {
-    Equations e = derive_text(planar_chain(n));
+    Equations e = test::derive_text(planar_chain(n));
     const Symbols& s = e.symbols;
     auto mass_beyond = [&](int j) {
       ex m = 0;
-      for (int k = j; k < n; ++k) m += parameter(s, fmt::format("m{}", k + 1));
+      for (int k = j; k < n; ++k) m += test::parameter_named(s, fmt::format("m{}", k + 1));
       return m;
     };
-    auto l = [&](int j) { return parameter(s, fmt::format("l{}", j + 1)); };
-    ex g = parameter(s, "g");
+    auto l = [&](int j) { return test::parameter_named(s, fmt::format("l{}", j + 1)); };
+    ex g = test::parameter_named(s, "g");
     for (const GiNaC::exmap& at : test::random_points(s, 4, 30u + unsigned(n))) {
       for (int j = 0; j < n; ++j) {
         const ex& phi_j = s.coordinates[std::size_t(j)];
@@ -77,7 +66,7 @@ TEST(ParticleTreeTerms, PlanarChainHasTheClosedFormMAndF) {
 // a carrier on a slider (x) with two pendulums on it (a, b), one carrying a third (c); "articulated"
 // refuses a model that is no tree. M and f against Σ_k m_k (J_kᵀ J_k, −J_kᵀ a_k) with the particles' Jacobians and accelerations by hand
 TEST(ParticleTreeTerms, BranchedTreeIsTheSumOverItsParticles) {
-  Equations e = derive_text(R"toml([model]
+  Equations e = test::derive_text(R"toml([model]
 name = "branched"
 forward_dynamics = "articulated"
 [parameters]
@@ -113,7 +102,7 @@ acceleration = ["0", "0", "-g"]
 )toml");
   const Symbols& s = e.symbols;
   const std::vector<std::string> masses{"m0", "m1", "m2", "m3"};
-  ex l = parameter(s, "l"), g = parameter(s, "g");
+  ex l = test::parameter_named(s, "l"), g = test::parameter_named(s, "g");
   const ex &x = s.coordinates[0], &a = s.coordinates[1], &b = s.coordinates[2], &c = s.coordinates[3];
   std::vector<std::array<ex, 3>> positions{{x, 0, 0},
                                            {x + l * sin(a), -l * cos(a), 0},
@@ -122,7 +111,7 @@ acceleration = ["0", "0", "-g"]
   std::vector<ex> f(4, 0);
   GiNaC::matrix M(4, 4);
   for (std::size_t k = 0; k < 4; ++k) {
-    ex m = parameter(s, masses[k]);
+    ex m = test::parameter_named(s, masses[k]);
     for (unsigned d = 0; d < 3; ++d) {
       ex velocity = 0;
       for (unsigned q = 0; q < 4; ++q) velocity += positions[k][d].diff(GiNaC::ex_to<GiNaC::symbol>(s.coordinates[q])) * s.velocities[q];

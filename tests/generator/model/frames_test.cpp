@@ -94,12 +94,6 @@ std::string written_out(int n) {
   return text;
 }
 
-Equations derive_text(const std::string& text) {
-  Derivation d = derive_model_text(text, "chain3d.toml");
-  EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
-  if (!d.equations) throw std::runtime_error("the chain did not derive");
-  return *d.equations;
-}
 
 // `e` of one model at a point of another, matched by the symbols' names
 double at_point_by_name(const ex& e, const Symbols& s, const std::map<std::string, double>& values) {
@@ -115,7 +109,7 @@ double at_point_by_name(const ex& e, const Symbols& s, const std::map<std::strin
 
 TEST(Frames, ChainThroughFramesEqualsTheChainWrittenOut) {
   for (int n : {1, 2, 3}) {
-    Equations framed = derive_text(through_frames(n)), full = derive_text(written_out(n));
+    Equations framed = test::derive_text(through_frames(n)), full = test::derive_text(written_out(n));
     ASSERT_EQ(framed.forcing.size(), std::size_t(2 * n));
     ASSERT_EQ(full.forcing.size(), std::size_t(2 * n));
     std::mt19937 random(7u + unsigned(n));
@@ -178,7 +172,7 @@ position = "arm"
 [outputs]
 h = "height"
 )toml";
-  Equations e = derive_text(text);
+  Equations e = test::derive_text(text);
   auto points = random_points(e.symbols, 10);
   EXPECT_TRUE(agree_at_points(e.mass_matrix(0, 0), closed_form(e, "m*l^2"), points));
   EXPECT_TRUE(agree_at_points(e.forcing[0], closed_form(e, "-m*g*l*sin(q)"), points));
@@ -209,8 +203,8 @@ tilt = "R.zz"
 )toml";
   std::string named = top(definitions, "\"R\"", "\"I\"");
   named.replace(named.find("h = \"cos(b)\""), 12, "h = \"tilt\"");
-  Equations by_name = derive_text(named);
-  Equations written = derive_text(top("", "\"rot_z(a)*rot_x(b)\"",
+  Equations by_name = test::derive_text(named);
+  Equations written = test::derive_text(top("", "\"rot_z(a)*rot_x(b)\"",
                                       R"([["m*l^2/3", "0", "-m*l^2/20"], ["0", "m*l^2/4", "0"], ["-m*l^2/20", "0", "m*l^2/6"]])"));
   ASSERT_EQ(by_name.forcing.size(), 2u);
   std::mt19937 random(11);
@@ -233,7 +227,7 @@ tilt = "R.zz"
     same(by_name.outputs.at(0).expression, written.outputs.at(0).expression, "R.zz");
   }
   // the product of inertia reaches the equations: without it M[0][1] (I_xz a' b' cos b) differs
-  Equations diagonal = derive_text(top("", "\"rot_z(a)*rot_x(b)\"", R"(["m*l^2/3", "m*l^2/4", "m*l^2/6"])"));
+  Equations diagonal = test::derive_text(top("", "\"rot_z(a)*rot_x(b)\"", R"(["m*l^2/3", "m*l^2/4", "m*l^2/6"])"));
   auto points = random_points(diagonal.symbols, 4);
   EXPECT_FALSE(agree_at_points(diagonal.mass_matrix(0, 1), closed_form(diagonal, printed(written.mass_matrix(0, 1))), points));
 
@@ -274,7 +268,7 @@ GiNaC::exmap with_intermediates(const Equations& e, const std::map<std::string, 
 
 TEST(Frames, RecursiveKinematicsGivesTheEquationsOfTheChainWrittenOut) {
   for (int n : {1, 2, 3}) {
-    Equations framed = derive_text(recursive(through_frames(n))), full = derive_text(written_out(n));
+    Equations framed = test::derive_text(recursive(through_frames(n))), full = test::derive_text(written_out(n));
     ASSERT_FALSE(framed.intermediates.empty());
     std::mt19937 random(11u + unsigned(n));
     std::uniform_real_distribution<double> angle(-2, 2), rate(-1.5, 1.5), scale(0.5, 2);
@@ -317,8 +311,8 @@ std::size_t derived_size(const Equations& e) {
 // derivation took 0.13 s at n = 2, 2.1 s at 3 and 89 s at 4); recursively, M has n² entries of
 // O(n) products: doubling the chain multiplies the size by about 2³, far from 4⁴ = 256.
 TEST(Frames, RecursiveKinematicsGrowsPolynomiallyWithTheChain) {
-  std::size_t four = derived_size(derive_text(recursive(through_frames(4))));
-  std::size_t eight = derived_size(derive_text(recursive(through_frames(8))));
+  std::size_t four = derived_size(test::derive_text(recursive(through_frames(4))));
+  std::size_t eight = derived_size(test::derive_text(recursive(through_frames(8))));
   double growth = double(eight) / double(four);
   EXPECT_GT(growth, 2.0);
   EXPECT_LT(growth, 10.0) << four << " characters at n = 4, " << eight << " at n = 8";
