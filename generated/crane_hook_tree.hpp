@@ -561,23 +561,32 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T ab0_Di00 = ab0_D11/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
   const T ab0_Di01 = -ab0_D01/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
   const T ab0_Di11 = ab0_D00/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
-  for (std::size_t c = 0; c < 8; ++c) {
-  const T ab0_bp0 = F[18 + c]*ab1_W00;
-  const T ab0_bp1 = F[27 + c]*ab2_W10;
-  const T ab0_bp2 = F[18 + c]*ab1_W20 + F[27 + c]*ab2_W20;
-  const T ab0_bu0 = F[0 + c] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
-  const T ab0_bu1 = F[9 + c] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
-  const T ab0_bddq0 = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
-  const T ab0_bddq1 = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
-  const T ab0_ba0 = ab0_S00*ab0_bddq0 + ab0_S01*ab0_bddq1;
-  const T ab0_ba1 = ab0_S10*ab0_bddq0 + ab0_S11*ab0_bddq1;
-  const T ab0_ba2 = ab0_S20*ab0_bddq0;
-  const T ab1_bddq0 = (F[18 + c] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
-  const T ab2_bddq0 = (F[27 + c] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
-  J[32 + c] = -ab0_bddq0;
-  J[40 + c] = -ab0_bddq1;
-  J[48 + c] = -ab1_bddq0;
-  J[56 + c] = -ab2_bddq0;
+  for (std::size_t block = 0; block < 8; block += 8) {
+    const std::size_t c = block;
+    T ab0_bddq0[8];
+    T ab0_bddq1[8];
+    T ab1_bddq0[8];
+    T ab2_bddq0[8];
+    for (std::size_t k = 0; k < 8; ++k) {
+      const T ab0_bp0 = F[18 + c + k]*ab1_W00;
+      const T ab0_bp1 = F[27 + c + k]*ab2_W10;
+      const T ab0_bp2 = F[18 + c + k]*ab1_W20 + F[27 + c + k]*ab2_W20;
+      const T ab0_bu0 = F[0 + c + k] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
+      const T ab0_bu1 = F[9 + c + k] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
+      ab0_bddq0[k] = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
+      ab0_bddq1[k] = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
+      const T ab0_ba0 = ab0_S00*ab0_bddq0[k] + ab0_S01*ab0_bddq1[k];
+      const T ab0_ba1 = ab0_S10*ab0_bddq0[k] + ab0_S11*ab0_bddq1[k];
+      const T ab0_ba2 = ab0_S20*ab0_bddq0[k];
+      ab1_bddq0[k] = (F[18 + c + k] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
+      ab2_bddq0[k] = (F[27 + c + k] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
+    }
+    for (std::size_t k = 0; k < 8; ++k) {
+      J[32 + c + k] = -ab0_bddq0[k];
+      J[40 + c + k] = -ab0_bddq1[k];
+      J[48 + c + k] = -ab1_bddq0[k];
+      J[56 + c + k] = -ab2_bddq0[k];
+    }
   }
 }
 
@@ -649,23 +658,32 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T ab0_Di00 = ab0_D11/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
   const T ab0_Di01 = -ab0_D01/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
   const T ab0_Di11 = ab0_D00/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
-  for (std::size_t c = 0; c < 1; ++c) {
-  const T ab0_bp0 = F[26 + c]*ab1_W00;
-  const T ab0_bp1 = F[35 + c]*ab2_W10;
-  const T ab0_bp2 = F[26 + c]*ab1_W20 + F[35 + c]*ab2_W20;
-  const T ab0_bu0 = F[8 + c] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
-  const T ab0_bu1 = F[17 + c] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
-  const T ab0_bddq0 = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
-  const T ab0_bddq1 = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
-  const T ab0_ba0 = ab0_S00*ab0_bddq0 + ab0_S01*ab0_bddq1;
-  const T ab0_ba1 = ab0_S10*ab0_bddq0 + ab0_S11*ab0_bddq1;
-  const T ab0_ba2 = ab0_S20*ab0_bddq0;
-  const T ab1_bddq0 = (F[26 + c] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
-  const T ab2_bddq0 = (F[35 + c] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
-  B[4 + c] = -ab0_bddq0;
-  B[5 + c] = -ab0_bddq1;
-  B[6 + c] = -ab1_bddq0;
-  B[7 + c] = -ab2_bddq0;
+  for (std::size_t block = 0; block < 1; block += 1) {
+    const std::size_t c = block;
+    T ab0_bddq0[1];
+    T ab0_bddq1[1];
+    T ab1_bddq0[1];
+    T ab2_bddq0[1];
+    for (std::size_t k = 0; k < 1; ++k) {
+      const T ab0_bp0 = F[26 + c + k]*ab1_W00;
+      const T ab0_bp1 = F[35 + c + k]*ab2_W10;
+      const T ab0_bp2 = F[26 + c + k]*ab1_W20 + F[35 + c + k]*ab2_W20;
+      const T ab0_bu0 = F[8 + c + k] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
+      const T ab0_bu1 = F[17 + c + k] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
+      ab0_bddq0[k] = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
+      ab0_bddq1[k] = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
+      const T ab0_ba0 = ab0_S00*ab0_bddq0[k] + ab0_S01*ab0_bddq1[k];
+      const T ab0_ba1 = ab0_S10*ab0_bddq0[k] + ab0_S11*ab0_bddq1[k];
+      const T ab0_ba2 = ab0_S20*ab0_bddq0[k];
+      ab1_bddq0[k] = (F[26 + c + k] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
+      ab2_bddq0[k] = (F[35 + c + k] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
+    }
+    for (std::size_t k = 0; k < 1; ++k) {
+      B[4 + c + k] = -ab0_bddq0[k];
+      B[5 + c + k] = -ab0_bddq1[k];
+      B[6 + c + k] = -ab1_bddq0[k];
+      B[7 + c + k] = -ab2_bddq0[k];
+    }
   }
 }
 

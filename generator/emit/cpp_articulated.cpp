@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 
 #include <fmt/format.h>
 
 #include "emit/cpp_body_writer.hpp"
+#include "emit/cpp_expression.hpp"
 #include "symbolic/gradient.hpp"
 
 namespace eomgen {
@@ -149,40 +151,114 @@ std::string articulated_mass_matrix_function(const Equations& e) {
 
 namespace {
 
-// the recursion's quantities that M⁻¹ b needs and that do not depend on b (S, U, D⁻¹, W: q alone)
-std::vector<ex> solve_factors(const Equations& e) {
-  GiNaC::exset with_b(e.articulated_inverse_dynamics.forces.begin(), e.articulated_inverse_dynamics.forces.end()), used;
-  for (const ex& a : e.articulated_inverse_dynamics.accelerations_of_forces) collect_symbols(a, used);
+// M⁻¹ b by the recursion for symbolic b (TreeInverseDynamics::forces): the quantities that depend on
+// b, in the order the recursion defines them, and the symbols they use that do not (S, U, D⁻¹, W: q alone)
+struct SolveOfForces {
+  std::vector<const Intermediate*> with_forces;
   std::vector<ex> factors;
+};
+
+SolveOfForces solve_of_forces(const Equations& e) {
+  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
+  GiNaC::exset dependent(tree.forces.begin(), tree.forces.end());
+  std::vector<const Intermediate*> all;
   for (const Intermediate& i : e.articulated_intermediates) {
     GiNaC::exset in;
     collect_symbols(i.definition, in);
-    bool depends = std::any_of(in.begin(), in.end(), [&](const ex& x) { return with_b.count(x) > 0; });
-    if (depends) {
-      with_b.insert(i.symbol);
-      used.insert(in.begin(), in.end());
-    }
+    if (std::none_of(in.begin(), in.end(), [&](const ex& x) { return dependent.count(x) > 0; })) continue;
+    dependent.insert(i.symbol);
+    all.push_back(&i);
   }
-  for (const Intermediate& i : e.articulated_intermediates)
-    if (used.count(i.symbol) && !with_b.count(i.symbol)) factors.push_back(i.symbol);
-  return factors;
+  // only what the accelerations use (the leaves' accelerations a are never needed)
+  GiNaC::exset used;
+  for (const ex& a : tree.accelerations_of_forces) collect_symbols(a, used);
+  SolveOfForces solve;
+  for (auto i = all.rbegin(); i != all.rend(); ++i)
+    if (used.count((*i)->symbol)) {
+      collect_symbols((*i)->definition, used);
+      solve.with_forces.insert(solve.with_forces.begin(), *i);
+    }
+  for (const ex& x : used)
+    if (!dependent.count(x)) solve.factors.push_back(x);
+  return solve;
 }
 
-}  // namespace
+// Columns solved in one block: each column's recursion is one chain of dependent operations, so
+// the block writes every step for all its columns at once (short loops the compiler vectorizes)
+// instead of running the chains one after another. An even size near 16: no odd remainder to
+// vectorize, and the block's quantities stay within the first-level cache.
+std::size_t column_block(std::size_t count) {
+  std::size_t blocks = (count + 15) / 16, size = (count + blocks - 1) / blocks;
+  return std::min(count, size + size % 2);
+}
 
-namespace {
+// The solve's steps in groups of twelve, each group one loop over the block's columns (one loop per
+// step took twice as long to compile and ran slower): a quantity used only in its own group is a
+// local of the loop's body, any other an array over the block.
+struct BlockLayout {
+  static constexpr std::size_t group_size = 12;
+  std::map<ex, std::size_t, GiNaC::ex_is_less> step_index;
+  GiNaC::exset arrays;
+};
+
+BlockLayout block_layout(const SolveOfForces& solve, const std::vector<ex>& outputs) {
+  const std::vector<const Intermediate*>& steps = solve.with_forces;
+  BlockLayout layout;
+  std::map<ex, std::size_t, GiNaC::ex_is_less> last_group;
+  auto note_uses = [&](const ex& x, std::size_t group) {
+    GiNaC::exset used;
+    collect_symbols(x, used);
+    for (const ex& u : used) last_group[u] = std::max(last_group[u], group);
+  };
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    layout.step_index[steps[k]->symbol] = k;
+    note_uses(steps[k]->definition, k / BlockLayout::group_size);
+  }
+  for (const ex& a : outputs) note_uses(a, steps.size());
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    if (last_group[steps[k]->symbol] > k / BlockLayout::group_size) layout.arrays.insert(steps[k]->symbol);
+  return layout;
+}
 
 // target[row(i) + c] = −(M⁻¹ F[:, first + c])_i for the columns c < count of F (n × W, row-major), M⁻¹
 // by the recursion (O(n) per column) with its factors S, U, D⁻¹, W computed once, before the loop
+// over the blocks of columns; the recursion's own statements, free of common subexpressions already
 void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std::size_t first, std::size_t count,
                           const std::string& target, const std::function<std::size_t(std::size_t)>& row) {
   const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
-  w.batch(solve_factors(e));
-  for (std::size_t i = 0; i < tree.forces.size(); ++i) w.name(tree.forces[i], fmt::format("F[{} + c]", i * W + first));
-  std::vector<ex> negated;
-  for (const ex& a : tree.accelerations_of_forces) negated.push_back(-a);
-  w.line(fmt::format("for (std::size_t c = 0; c < {}; ++c) {{", count));
-  w.assign(negated, [&](std::size_t i, const std::string& code) { return fmt::format("{}[{} + c] = {};", target, row(i), code); });
+  SolveOfForces solve = solve_of_forces(e);
+  w.batch(solve.factors);
+  const std::vector<const Intermediate*>& steps = solve.with_forces;
+  BlockLayout layout = block_layout(solve, tree.accelerations_of_forces);
+  std::map<ex, std::size_t, GiNaC::ex_is_less> force_row;
+  for (std::size_t i = 0; i < tree.forces.size(); ++i) force_row[tree.forces[i]] = i;
+  auto print = [&](const ex& x) {
+    return cpp_expression(x, [&](const GiNaC::symbol& s) {
+      if (auto f = force_row.find(s); f != force_row.end()) return fmt::format("F[{} + c + k]", f->second * W + first);
+      auto step = layout.step_index.find(s);
+      if (step == layout.step_index.end()) return w.name_of(s);
+      return steps[step->second]->cpp_name + (layout.arrays.count(s) ? "[k]" : "");
+    });
+  };
+  std::size_t B = column_block(count);
+  w.line(fmt::format("for (std::size_t block = 0; block < {}; block += {}) {{", count, B));
+  // the last block ends at the last column, repeating some when B does not divide the count
+  if (count % B == 0) w.line("  const std::size_t c = block;");
+  else w.line(fmt::format("  const std::size_t c = block < {0} ? block : {0};", count - B));
+  for (std::size_t start = 0; start < steps.size(); start += BlockLayout::group_size) {
+    std::size_t end = std::min(steps.size(), start + BlockLayout::group_size);
+    for (std::size_t k = start; k < end; ++k)
+      if (layout.arrays.count(steps[k]->symbol)) w.line(fmt::format("  T {}[{}];", steps[k]->cpp_name, B));
+    w.line(fmt::format("  for (std::size_t k = 0; k < {}; ++k) {{", B));
+    for (std::size_t k = start; k < end; ++k)
+      w.line(fmt::format(layout.arrays.count(steps[k]->symbol) ? "    {}[k] = {};" : "    const T {} = {};",
+                         steps[k]->cpp_name, print(steps[k]->definition)));
+    w.line("  }");
+  }
+  w.line(fmt::format("  for (std::size_t k = 0; k < {}; ++k) {{", B));
+  for (std::size_t i = 0; i < tree.accelerations_of_forces.size(); ++i)
+    w.line(fmt::format("    {}[{} + c + k] = {};", target, row(i), print(-tree.accelerations_of_forces[i])));
+  w.line("  }");
   w.line("}");
 }
 
