@@ -608,10 +608,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
-  const T ddq[4] = {};
-  T F[36];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  for (std::size_t i = 0; i < 4; ++i) B[i] = T(0);
   const T c0 = cos(q_psi);
   const T c1 = cos(q_theta);
   const T c2 = sin(q_theta);
@@ -658,6 +654,12 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T ab0_Di00 = ab0_D11/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
   const T ab0_Di01 = -ab0_D01/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
   const T ab0_Di11 = ab0_D00/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
+  T F[4];
+  F[0] = -c0*c1*p_L;
+  F[1] = c2*c3*p_L;
+  F[2] = -cos(q_a)*p_l1;
+  F[3] = T(0);
+  for (std::size_t i = 0; i < 4; ++i) B[i] = T(0);
   for (std::size_t block = 0; block < 1; block += 1) {
     const std::size_t c = block;
     T ab0_bddq0[1];
@@ -665,18 +667,18 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
     T ab1_bddq0[1];
     T ab2_bddq0[1];
     for (std::size_t k = 0; k < 1; ++k) {
-      const T ab0_bp0 = F[26 + c + k]*ab1_W00;
-      const T ab0_bp1 = F[35 + c + k]*ab2_W10;
-      const T ab0_bp2 = F[26 + c + k]*ab1_W20 + F[35 + c + k]*ab2_W20;
-      const T ab0_bu0 = F[8 + c + k] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
-      const T ab0_bu1 = F[17 + c + k] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
+      const T ab0_bp0 = F[2 + c + k]*ab1_W00;
+      const T ab0_bp1 = F[3 + c + k]*ab2_W10;
+      const T ab0_bp2 = F[2 + c + k]*ab1_W20 + F[3 + c + k]*ab2_W20;
+      const T ab0_bu0 = F[0 + c + k] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
+      const T ab0_bu1 = F[1 + c + k] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
       ab0_bddq0[k] = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
       ab0_bddq1[k] = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
       const T ab0_ba0 = ab0_S00*ab0_bddq0[k] + ab0_S01*ab0_bddq1[k];
       const T ab0_ba1 = ab0_S10*ab0_bddq0[k] + ab0_S11*ab0_bddq1[k];
       const T ab0_ba2 = ab0_S20*ab0_bddq0[k];
-      ab1_bddq0[k] = (F[26 + c + k] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
-      ab2_bddq0[k] = (F[35 + c + k] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
+      ab1_bddq0[k] = (F[2 + c + k] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
+      ab2_bddq0[k] = (F[3 + c + k] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
     }
     for (std::size_t k = 0; k < 1; ++k) {
       B[4 + c + k] = -ab0_bddq0[k];

@@ -284,17 +284,23 @@ std::string articulated_jacobian_state_function(const Equations& e) {
                   "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
 }
 
-// dq''/du = −M⁻¹ ∂τ/∂u = M⁻¹ ∂f/∂u, the input columns of the same ∂τ/∂(q, q', u) (free of q'')
+// dq''/du = −M⁻¹ ∂τ/∂u = M⁻¹ ∂f/∂u: only the input columns of ∂τ/∂(q, q', u), which the coupled
+// terms m̄ S_j · ∂d''/∂x do not reach (O(n m) entries, not the whole O(n²) gradient)
 std::string articulated_jacobian_input_function(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates(), m = s.inputs.size(), W = 2 * n + m;
   BodyWriter w(e);
   if (m > 0) {
-    w.line(fmt::format("const T ddq[{}] = {{}};", n));
-    w.line(fmt::format("T F[{}];", n * W));
-    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
+    GiNaC::lst at_rest;  // ∂τ/∂u = −∂f/∂u does not depend on q''
+    for (const GiNaC::symbol& a : e.acceleration_symbols) at_rest.append(a == 0);
+    std::vector<ex> by_input;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t c = 0; c < m; ++c) by_input.push_back(e.articulated_inverse_dynamics.gradient_rest[i * W + 2 * n + c].subs(at_rest));
+    w.batch(solve_of_forces(e).factors);  // first, so that F shares their sines and cosines
+    w.line(fmt::format("T F[{}];", n * m));
+    w.assign(by_input, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) B[i] = T(0);", n * m));
-    write_solved_columns(w, e, W, 2 * n, m, "B", [&](std::size_t i) { return (n + i) * m; });
+    write_solved_columns(w, e, m, 0, m, "B", [&](std::size_t i) { return (n + i) * m; });
   }
   return function(fmt::format("/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below (M^-1 by the articulated-body\n"
                               "/// recursion). B: {}x{}, row-major (nothing is written when the model has no inputs).\n", 2 * n, m),

@@ -15,7 +15,7 @@ std::string articulated_rhs_function(const Equations& e);
 std::string articulated_mass_matrix_function(const Equations& e);
 /// detail::inverse_dynamics_gradient (∂τ/∂(q, q', u) of τ = M q'' − f), then jacobian_state.
 std::string articulated_jacobian_state_function(const Equations& e);
-/// jacobian_input from the input columns of the same ∂τ/∂(q, q', u), M⁻¹ by the recursion.
+/// jacobian_input from the input columns of ∂τ/∂(q, q', u) alone, M⁻¹ by the recursion.
 std::string articulated_jacobian_input_function(const Equations& e);
 std::string articulated_linearization_function(const Equations& e);
 /// kinetic_energy as q'ᵀ M q' / 2 with M from mass_matrix.
