@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <random>
 #include <sstream>
 
@@ -102,12 +104,38 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
+namespace {
+
+// The test process's scratch directories, removed when it ends unless a test failed (their files are
+// then what the failure message names) or EOMGEN_KEEP_TEST_FILES is set.
+class ScratchDirectories {
+ public:
+  ~ScratchDirectories() {
+    const testing::UnitTest* tests = testing::UnitTest::GetInstance();
+    if (std::getenv("EOMGEN_KEEP_TEST_FILES") || (tests && tests->Failed())) return;
+    std::error_code ignored;
+    for (const std::string& d : made_) std::filesystem::remove_all(d, ignored);
+  }
+  std::string make() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::string pattern = ::testing::TempDir() + "eomgen_XXXXXX";
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    if (!mkdtemp(buffer.data())) throw std::runtime_error("mkdtemp failed");
+    made_.push_back(buffer.data());
+    return made_.back();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> made_;
+};
+
+}  // namespace
+
 std::string temporary_directory() {
-  std::string pattern = ::testing::TempDir() + "eomgen_XXXXXX";
-  std::vector<char> buffer(pattern.begin(), pattern.end());
-  buffer.push_back('\0');
-  if (!mkdtemp(buffer.data())) throw std::runtime_error("mkdtemp failed");
-  return buffer.data();
+  static ScratchDirectories directories;
+  return directories.make();
 }
 
 CommandOutput run_eomgen(const std::string& arguments) {

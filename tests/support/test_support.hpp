@@ -44,7 +44,8 @@ int run_command(const std::string& command);
 /// Reads a whole file; empty when it does not exist.
 std::string read_file(const std::string& path);
 
-/// A fresh temporary directory.
+/// A fresh temporary directory, removed when the test process ends unless a test failed or
+/// EOMGEN_KEEP_TEST_FILES is set.
 std::string temporary_directory();
 
 struct CommandOutput {
