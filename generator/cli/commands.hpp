@@ -2,7 +2,9 @@
 /// options on the app and returns the exit status when run.
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -84,9 +86,11 @@ bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at,
                                   const std::vector<double>& initial, runtime::Equilibrium& out);
 
-/// Derives `model_path` and writes NAME.hpp into `directory`, or to `header_file` when that is not empty.
+/// Derives `model_path` and writes NAME.hpp into `directory`, or to `header_file` when that is not empty;
+/// with `split_above_kb`, also the split units of its functions of that many KB (emit/split_units.hpp).
 int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file,
-                    const std::string& variant = "", const std::string& scene = "");
+                    const std::string& variant = "", const std::string& scene = "",
+                    std::optional<std::size_t> split_above_kb = std::nullopt);
 
 /// The model `eomgen run` uses when none is named.
 std::string default_model_path();

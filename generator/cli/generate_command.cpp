@@ -1,6 +1,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <tuple>
 #include <variant>
 
@@ -10,6 +11,7 @@
 #include "common/deadline.hpp"
 #include "common/output_file.hpp"
 #include "emit/cpp_header.hpp"
+#include "emit/split_units.hpp"
 #include "cli/scene_analysis.hpp"
 #include "pipeline.hpp"
 
@@ -35,10 +37,33 @@ std::variant<std::pair<std::string, std::string>, int> scene_header(const std::s
   return std::pair{c.equations.model_name, c.header};
 }
 
+// NAME_split.hpp and the units of the header's large functions, next to the header
+int write_split_units(const std::string& text, const std::string& name, const std::string& path, std::size_t min_kb) {
+  std::filesystem::path header(path);
+  std::vector<GeneratedFile> files = split_units(text, name, header.filename().string(), min_kb * 1024);
+  if (files.empty()) {
+    std::cerr << fmt::format("eomgen: --split: no function of {} has a body of {} KB or more; nothing to split "
+                             "(a smaller --split-above splits more)\n", header.filename().string(), min_kb);
+    return exit_success;
+  }
+  for (const GeneratedFile& f : files) {
+    std::string at = (header.parent_path() / f.name).string();
+    if (std::string failure = write_file_atomically(at, f.text); !failure.empty()) {
+      std::cerr << "eomgen: " << failure << "\n";
+      return exit_user_error;
+    }
+  }
+  std::cerr << fmt::format("eomgen: split {} function(s) into their own translation units: include {} and compile", files.size() - 1,
+                           files.front().name);
+  for (std::size_t i = 1; i < files.size(); ++i) std::cerr << " " << files[i].name;
+  std::cerr << "\n";
+  return exit_success;
+}
+
 }  // namespace
 
 int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file,
-                    const std::string& variant, const std::string& scene) {
+                    const std::string& variant, const std::string& scene, std::optional<std::size_t> split_above_kb) {
   auto started = std::chrono::steady_clock::now();
   std::string text, name;
   if (!scene.empty()) {
@@ -65,7 +90,7 @@ int generate_header(const std::string& model_path, const std::string& directory,
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::cerr << fmt::format("eomgen: generated {} ({} lines) in {:.3f} s\n", path,
                            std::count(text.begin(), text.end(), '\n'), seconds);
-  return exit_success;
+  return split_above_kb ? write_split_units(text, name, path, *split_above_kb) : exit_success;
 }
 
 Command add_generate_command(CLI::App& app) {
@@ -81,9 +106,18 @@ Command add_generate_command(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
   cmd->add_option("--scene", *scene, "Generate the header of the cheapest model that answers [scenes.NAME] to its accuracy "
                   "(as `eomgen scene` chooses it)")->excludes(variant_option);
-  return [cmd, model, directory, header, variant, scene]() -> int {
+  auto split = std::make_shared<bool>(false);
+  auto split_above = std::make_shared<std::size_t>(16);
+  auto* split_flag = cmd->add_flag("--split", *split,
+                                   "Also write NAME_split.hpp and NAME_<function>.cpp: each large function compiled once, for "
+                                   "double, in its own translation unit (parallel builds; include NAME_split.hpp, link the units)");
+  cmd->add_option("--split-above", *split_above, "With --split: the functions whose body has at least this many KB (default 16)")
+      ->check(CLI::PositiveNumber)
+      ->needs(split_flag);
+  return [cmd, model, directory, header, variant, scene, split, split_above]() -> int {
     if (!cmd->parsed()) return -1;
-    return generate_header(*model, *directory, *header, *variant, *scene);
+    return generate_header(*model, *directory, *header, *variant, *scene,
+                           *split ? std::optional<std::size_t>(*split_above) : std::nullopt);
   };
 }
 

@@ -23,7 +23,10 @@ form, whose M is a loop over the pairs of coordinates); the rhs adds the
 unrolled LDL^T solve, counted separately. The header's size and the time g++ -O2
 takes to compile its rhs and jacobian_state (one translation unit with both
 instantiated for double) are recorded for every planar n, and drawn against n
-beside the derivation time, the rhs time and the MuJoCo ratio.
+beside the derivation time, the rhs time and the MuJoCo ratio. For the larger
+chains, a program file calling rhs and jacobian_state is rebuilt (g++ -O2)
+including the header, and including NAME_split.hpp with the units of
+`eomgen generate --split` compiled once beforehand.
 
 Usage: peer_benchmark.py EOMGEN [--quick] [--out DIR]   (exit 77 without SymPy)
 """
@@ -128,6 +131,51 @@ def compile_seconds(header_dir, name, work):
     return time.perf_counter() - start
 
 
+SPLIT_SIZES = {"planar": (30, 60, 100), "spatial": (4, 8)}
+
+
+def timed_jobs(commands, jobs=2):
+    """Wall time of running the commands at most `jobs` at a time (a make -j2 of them)."""
+    start, running = time.perf_counter(), []
+    for command in commands:
+        if len(running) == jobs:
+            running.pop(0).wait()
+        running.append(subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE))
+    failed = [p for p in running if p.wait() != 0]
+    if failed:
+        raise RuntimeError(failed[0].stderr.read().decode()[-3000:])
+    return time.perf_counter() - start
+
+
+def split_build(eomgen, model, name, work):
+    """g++ -O2 of a program file that calls rhs and jacobian_state, as one rebuilds it after each edit:
+    including NAME.hpp (every rebuild compiles the model's functions), against including NAME_split.hpp
+    (they are in the units of `eomgen generate --split`, compiled once, two at a time, and linked);
+    (units, rebuild whole s, rebuild split s, units s), or None when nothing is split."""
+    folder = os.path.join(work, f"split_{name}")
+    os.makedirs(folder, exist_ok=True)
+    r = run([eomgen, "generate", model, "-o", folder, "--split"])
+    if r.returncode != 0:
+        raise RuntimeError(r.stderr)
+    units = sorted(f for f in os.listdir(folder) if f.startswith(name + "_") and f.endswith(".cpp"))
+    if not units:
+        return None
+    unit_objects = [os.path.join(folder, u[:-4] + ".o") for u in units]
+    units_s = timed_jobs([["c++", "-O2", "-std=c++17", "-c", os.path.join(folder, u), "-o", o] for u, o in zip(units, unit_objects)])
+    rebuild = {}
+    for variant, include in (("whole", f"{name}.hpp"), ("split", f"{name}_split.hpp")):
+        source, program = os.path.join(folder, f"{variant}.cpp"), os.path.join(folder, variant)
+        with open(source, "w") as f:
+            f.write(f'#include "{include}"\nnamespace m = eomgen::models::{name};\n'
+                    "void step(const double* x, const double* p, double* xdot, double* J) {\n"
+                    "  m::rhs(0.0, x, nullptr, p, xdot);\n  m::jacobian_state(0.0, x, nullptr, p, J);\n}\n"
+                    "int main() { return 0; }\n")
+        objects = unit_objects if variant == "split" else []
+        rebuild[variant] = timed_jobs([["c++", "-O2", "-std=c++17", "-c", source, "-o", program + ".o"]]) + \
+            timed_jobs([["c++", program + ".o", *objects, "-o", program]])
+    return len(units), rebuild["whole"], rebuild["split"], units_s
+
+
 def rhs_speed(header_dir, name, planar, work, other=None, jacobian=True):
     source = os.path.join(HERE, "rhs_benchmark.cpp")
     binary = os.path.join(work, f"bench_{name}")
@@ -198,6 +246,7 @@ def main():
             jacobian = not long_chain or form == "articulated"
             speed = rhs_speed(work, name, kind == "planar", work, other, jacobian=jacobian)
             compile_s = compile_seconds(work, name, work) if kind == "planar" and jacobian else None
+            split = split_build(eomgen, model, name, work) if n in SPLIT_SIZES[kind] and not quick else None
             lagrange = kane = lam = None
             if kind == "planar":
                 if not lagrange_gave_up:
@@ -212,7 +261,7 @@ def main():
                     kane = "timeout"
             row = {"model": kind, "n": n, "states": 2 * n * (1 if kind == "planar" else 2), "derive_s": derive, "form": form,
                    "header_kb": len(header.encode()) / 1024, "compile_s": compile_s,
-                   "ops_m_f": ops_mf, "ops_rhs": ops_rhs, **speed,
+                   "ops_m_f": ops_mf, "ops_rhs": ops_rhs, "split": split, **speed,
                    "lagrange_s": lagrange["seconds"] if isinstance(lagrange, dict) else lagrange,
                    "kane_s": kane["seconds"] if isinstance(kane, dict) else kane,
                    "sympy_cse_ops": kane.get("cse_ops") if isinstance(kane, dict) else None,
@@ -259,6 +308,17 @@ def write_report(rows, out, quick):
             f"{fmt(r['mujoco_ns'], 4)} | {per(r['mujoco_ns'], r['eomgen_ns'])} | {fmt(r['eigen_ns'], 4)} | {per(r['eigen_ns'], r['eomgen_ns'])} | "
             f"{fmt(r['lambdify_ns'], 4)} | {fmt(r['jacobian_ns'], 4)} | {per(r['jacobian_ns'], r['eomgen_ns'])} | "
             f"{fmt(r['finite_difference_ns'], 4)} | {per(r['finite_difference_ns'], r['jacobian_ns'])} |")
+    split_rows = [r for r in rows if r.get("split")]
+    if split_rows:
+        lines += ["", "Split builds (`eomgen generate --split`): rebuilding a program file that calls rhs and jacobian_state "
+                  "(g++ -O2, compile and link) when it includes NAME.hpp, against including NAME_split.hpp and linking the "
+                  "units, which compile once (all of them, two at a time):", "",
+                  "| model | n | header [KB] | units | rebuild, NAME.hpp [s] | rebuild, NAME_split.hpp [s] | ratio | units, once [s] |",
+                  "|" + "---|" * 8]
+        for r in split_rows:
+            units, whole, split, once = r["split"]
+            lines.append(f"| {r['model']} | {r['n']} | {r['header_kb']:.0f} | {units} | {fmt(whole)} | {fmt(split)} | "
+                         f"{per(whole, split)} | {fmt(once)} |")
     lines += ["", "Targets (planar chain, issue 17):"]
     by_n = {r["n"]: r for r in rows if r["model"] == "planar"}
     for n in (12, 30):
