@@ -220,6 +220,21 @@ BlockLayout block_layout(const SolveOfForces& solve, const std::vector<ex>& outp
   return layout;
 }
 
+// the solve's steps for one block of B columns, BlockLayout::group_size steps to a loop over the columns
+void write_block_steps(BodyWriter& w, const std::vector<const Intermediate*>& steps, const BlockLayout& layout, std::size_t B,
+                       const std::function<std::string(const ex&)>& print) {
+  for (std::size_t start = 0; start < steps.size(); start += BlockLayout::group_size) {
+    std::size_t end = std::min(steps.size(), start + BlockLayout::group_size);
+    for (std::size_t k = start; k < end; ++k)
+      if (layout.arrays.count(steps[k]->symbol)) w.line(fmt::format("  T {}[{}];", steps[k]->cpp_name, B));
+    w.line(fmt::format("  for (std::size_t k = 0; k < {}; ++k) {{", B));
+    for (std::size_t k = start; k < end; ++k)
+      w.line(fmt::format(layout.arrays.count(steps[k]->symbol) ? "    {}[k] = {};" : "    const T {} = {};",
+                         steps[k]->cpp_name, print(steps[k]->definition)));
+    w.line("  }");
+  }
+}
+
 // target[row(i) + c] = −(M⁻¹ F[:, first + c])_i for the columns c < count of F (n × W, row-major), M⁻¹
 // by the recursion (O(n) per column) with its factors S, U, D⁻¹, W computed once, before the loop
 // over the blocks of columns; the recursion's own statements, free of common subexpressions already
@@ -232,7 +247,7 @@ void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std:
   BlockLayout layout = block_layout(solve, tree.accelerations_of_forces);
   std::map<ex, std::size_t, GiNaC::ex_is_less> force_row;
   for (std::size_t i = 0; i < tree.forces.size(); ++i) force_row[tree.forces[i]] = i;
-  auto print = [&](const ex& x) {
+  auto print = [&](const ex& x) -> std::string {
     return cpp_expression(x, [&](const GiNaC::symbol& s) {
       if (auto f = force_row.find(s); f != force_row.end()) return fmt::format("F[{} + c + k]", f->second * W + first);
       auto step = layout.step_index.find(s);
@@ -245,16 +260,7 @@ void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std:
   // the last block ends at the last column, repeating some when B does not divide the count
   if (count % B == 0) w.line("  const std::size_t c = block;");
   else w.line(fmt::format("  const std::size_t c = block < {0} ? block : {0};", count - B));
-  for (std::size_t start = 0; start < steps.size(); start += BlockLayout::group_size) {
-    std::size_t end = std::min(steps.size(), start + BlockLayout::group_size);
-    for (std::size_t k = start; k < end; ++k)
-      if (layout.arrays.count(steps[k]->symbol)) w.line(fmt::format("  T {}[{}];", steps[k]->cpp_name, B));
-    w.line(fmt::format("  for (std::size_t k = 0; k < {}; ++k) {{", B));
-    for (std::size_t k = start; k < end; ++k)
-      w.line(fmt::format(layout.arrays.count(steps[k]->symbol) ? "    {}[k] = {};" : "    const T {} = {};",
-                         steps[k]->cpp_name, print(steps[k]->definition)));
-    w.line("  }");
-  }
+  write_block_steps(w, steps, layout, B, print);
   w.line(fmt::format("  for (std::size_t k = 0; k < {}; ++k) {{", B));
   for (std::size_t i = 0; i < tree.accelerations_of_forces.size(); ++i)
     w.line(fmt::format("    {}[{} + c + k] = {};", target, row(i), print(-tree.accelerations_of_forces[i])));

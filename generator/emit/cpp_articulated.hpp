@@ -1,7 +1,8 @@
 /// @file The generated header's functions for a model whose rhs solves for q'' by the
 /// articulated-body recursion (Equations::articulated_accelerations): the rhs itself, O(n) code
-/// without M, and Jacobians that take q'' from it and M from mass_matrix instead of writing M
-/// and f out again, with ∂τ/∂(x, u) of τ = M q'' − f written once for jacobian_state and linearization.
+/// without M; M and ∂τ/∂(q, q', u) of τ = M q'' − f as loops over the coupled pairs of coordinates
+/// (∂τ/∂x written once, for jacobian_state and linearization); and Jacobians that take q'' from rhs
+/// and apply M⁻¹ by the same recursion, a block of columns at a time.
 #pragma once
 
 #include <string>
