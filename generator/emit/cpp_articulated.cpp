@@ -176,8 +176,9 @@ SolveOfForces solve_of_forces(const Equations& e) {
   for (auto i = all.rbegin(); i != all.rend(); ++i)
     if (used.count((*i)->symbol)) {
       collect_symbols((*i)->definition, used);
-      solve.with_forces.insert(solve.with_forces.begin(), *i);
+      solve.with_forces.push_back(*i);
     }
+  std::reverse(solve.with_forces.begin(), solve.with_forces.end());
   for (const ex& x : used)
     if (!dependent.count(x)) solve.factors.push_back(x);
   return solve;

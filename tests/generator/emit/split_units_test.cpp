@@ -89,6 +89,25 @@ TEST(SplitUnits, AProgramBuiltFromTheUnitsComputesWhatTheHeaderComputes) {
   EXPECT_FALSE(read_file(dir + "/whole.txt").empty());
 }
 
+// the units and their extern declarations of Appell's, Hamilton's, Lagrange I's and the articulated
+// header's functions (other signatures and function sets) in one file: each explicit instantiation
+// matches a function of the header, under -Werror
+class SplitModel : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SplitModel, UnitsAndDeclarationsCompile) {
+  std::string dir = temporary_directory(), name = GetParam();
+  CommandOutput r = run_eomgen("generate '" + model_path(name) + "' -o '" + dir + "' --split --split-above 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_FALSE(read_file(dir + "/" + name + "_split.hpp").empty()) << r.err;
+  std::string check = "cd '" + dir + "' && { echo '#include \"" + name + "_split.hpp\"'; for u in " + name +
+                      "_*.cpp; do echo \"#include \\\"$u\\\"\"; done; } > check.cpp && "
+                      "c++ -std=c++17 -fsyntax-only -Wall -Wextra -Wpedantic -Werror check.cpp";
+  EXPECT_EQ(run_command(check), 0) << read_file(dir + "/check.cpp");
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, SplitModel,
+                         ::testing::Values("rolling_ball", "n_link_pendulum_4_hamilton", "whipple_bicycle", "crane_hook_tree"));
+
 TEST(SplitUnits, SaysWhenNothingIsLargeEnoughAndNeedsSplitForItsThreshold) {
   std::string dir = temporary_directory();
   CommandOutput r = run_eomgen("generate '" + model_path("pendulum") + "' -o '" + dir + "' --split");
