@@ -1,5 +1,7 @@
 #include "emit/cpp_body_writer.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "emit/cpp_expression.hpp"
@@ -44,7 +46,9 @@ std::string velocity_name(const std::string& name) {
 
 }  // namespace
 
-BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
+BodyWriter::BodyWriter(const Equations& e)
+    : equations_(e), graph_(intermediate_graph(e)), intermediates_(graph_->all), intermediate_index_(graph_->index),
+      intermediate_uses_(graph_->uses) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates(), k = s.velocities.size();
   for (std::size_t i = 0; i < n; ++i) inputs_.push_back({s.coordinates[i], "q_" + s.coordinate_names[i], fmt::format("x[{}]", i)});
@@ -60,19 +64,43 @@ BodyWriter::BodyWriter(const Equations& e) : equations_(e) {
   names_[s.time] = "t";
   for (const Input& in : inputs_) names_[in.symbol] = in.name;
   for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
-  intermediates_ = e.intermediates;
-  intermediates_.insert(intermediates_.end(), e.acceleration_intermediates.begin(), e.acceleration_intermediates.end());
-  intermediates_.insert(intermediates_.end(), e.articulated_intermediates.begin(), e.articulated_intermediates.end());
-  for (std::size_t i = 0; i < intermediates_.size(); ++i) intermediate_index_[intermediates_[i].symbol] = i;
-  for (const Intermediate& i : intermediates_) {
+  intermediate_written_.assign(intermediates_.size(), false);
+}
+
+// A header's dozen writers of the same equations would each find the same uses (a tenth of
+// `eomgen generate` of the 12-link chain): the last graph is kept and taken again while the
+// intermediates are the same symbols with the very same definitions (the same objects in memory;
+// the graph holds them, so no other expression can take their place and pass for them).
+std::shared_ptr<const BodyWriter::IntermediateGraph> BodyWriter::intermediate_graph(const Equations& e) {
+  thread_local std::shared_ptr<const IntermediateGraph> last;
+  const std::vector<Intermediate>* parts[] = {&e.intermediates, &e.acceleration_intermediates, &e.articulated_intermediates};
+  auto unchanged = [&] {
+    std::size_t at = 0;
+    for (const std::vector<Intermediate>* part : parts)
+      for (const Intermediate& i : *part) {
+        if (at == last->all.size()) return false;
+        const Intermediate& kept = last->all[at++];
+        if (i.symbol.compare(kept.symbol) != 0 || !GiNaC::are_ex_trivially_equal(i.definition, kept.definition) ||
+            i.cpp_name != kept.cpp_name)
+          return false;
+      }
+    return at == last->all.size();
+  };
+  if (last && unchanged()) return last;
+  std::vector<Intermediate> all;
+  for (const std::vector<Intermediate>* part : parts) all.insert(all.end(), part->begin(), part->end());
+  auto graph = std::make_shared<IntermediateGraph>();
+  graph->all = std::move(all);
+  for (std::size_t i = 0; i < graph->all.size(); ++i) graph->index[graph->all[i].symbol] = i;
+  for (const Intermediate& i : graph->all) {
     GiNaC::exset used;
     collect_symbols(i.definition, used);
-    intermediate_uses_.emplace_back();
+    graph->uses.emplace_back();
     for (const ex& u : used)
-      if (auto found = intermediate_index_.find(u); found != intermediate_index_.end())
-        intermediate_uses_.back().push_back(found->second);
+      if (auto found = graph->index.find(u); found != graph->index.end()) graph->uses.back().push_back(found->second);
   }
-  intermediate_written_.assign(intermediates_.size(), false);
+  last = graph;
+  return graph;
 }
 
 // the intermediates that `expressions` need and that are not written yet, in dependency

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -77,11 +78,19 @@ class BodyWriter {
   bool uses_functions_ = false;
   CommonSubexpressions cse_;
   std::string statements_;
-  // recursive kinematics: an intermediate's index, the intermediates its definition uses, and
-  // whether it has been written in this function
-  std::vector<Intermediate> intermediates_;  // the equations' and then those in q''
-  std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> intermediate_index_;
-  std::vector<std::vector<std::size_t>> intermediate_uses_;
+  // recursive kinematics: the intermediates (the equations', those in q'', the recursion's), each
+  // one's index and the intermediates its definition uses, shared by the writers of one header; and
+  // whether each has been written in this function
+  struct IntermediateGraph {
+    std::vector<Intermediate> all;
+    std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> index;
+    std::vector<std::vector<std::size_t>> uses;
+  };
+  static std::shared_ptr<const IntermediateGraph> intermediate_graph(const Equations& e);
+  std::shared_ptr<const IntermediateGraph> graph_;
+  const std::vector<Intermediate>& intermediates_;
+  const std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less>& intermediate_index_;
+  const std::vector<std::vector<std::size_t>>& intermediate_uses_;
   std::vector<bool> intermediate_written_;
 };
 
