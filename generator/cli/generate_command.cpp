@@ -13,6 +13,7 @@
 #include "emit/cpp_header.hpp"
 #include "emit/split_units.hpp"
 #include "cli/scene_analysis.hpp"
+#include "cli/split_output.hpp"
 #include "pipeline.hpp"
 
 namespace eomgen::cli {
@@ -40,18 +41,16 @@ std::variant<std::pair<std::string, std::string>, int> scene_header(const std::s
 // NAME_split.hpp and the units of the header's large functions, next to the header
 int write_split_units(const std::string& text, const std::string& name, const std::string& path, std::size_t min_kb) {
   std::filesystem::path header(path);
-  std::vector<GeneratedFile> files = split_units(text, name, header.filename().string(), min_kb * 1024);
+  std::string header_name = header.filename().string();
+  std::vector<GeneratedFile> files = split_units(text, name, header_name, min_kb * 1024);
+  if (std::string failure = write_split_files(header.parent_path().string(), name, header_name, files); !failure.empty()) {
+    std::cerr << "eomgen: " << failure << "\n";
+    return exit_user_error;
+  }
   if (files.empty()) {
     std::cerr << fmt::format("eomgen: --split: no function of {} has a body of {} KB or more; nothing to split "
-                             "(a smaller --split-above splits more)\n", header.filename().string(), min_kb);
+                             "(a smaller --split-above splits more)\n", header_name, min_kb);
     return exit_success;
-  }
-  for (const GeneratedFile& f : files) {
-    std::string at = (header.parent_path() / f.name).string();
-    if (std::string failure = write_file_atomically(at, f.text); !failure.empty()) {
-      std::cerr << "eomgen: " << failure << "\n";
-      return exit_user_error;
-    }
   }
   std::cerr << fmt::format("eomgen: split {} function(s) into their own translation units: include {} and compile", files.size() - 1,
                            files.front().name);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 
 #include "emit/split_units.hpp"
@@ -107,6 +108,22 @@ TEST_P(SplitModel, UnitsAndDeclarationsCompile) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, SplitModel,
                          ::testing::Values("rolling_ball", "n_link_pendulum_4_hamilton", "whipple_bicycle", "crane_hook_tree"));
+
+// a unit the new split no longer has would still compile (and cost time) in a build that takes the
+// folder's NAME_*.cpp: it goes, and only eomgen's own files go
+TEST(SplitUnits, ASplitRemovesTheUnitsOfTheOneBeforeItAndNothingElse) {
+  std::string dir = temporary_directory(), model = model_path("double_pendulum");
+  ASSERT_EQ(run_eomgen("generate '" + model + "' -o '" + dir + "' --split --split-above 1").status, 0);
+  ASSERT_FALSE(read_file(dir + "/double_pendulum_rhs.cpp").empty());
+  std::ofstream(dir + "/double_pendulum_main.cpp") << "// the user's own file\nint main() { return 0; }\n";
+  CommandOutput none = run_eomgen("generate '" + model + "' -o '" + dir + "' --split --split-above 100000");
+  EXPECT_EQ(none.status, 0) << none.err;
+  EXPECT_NE(none.err.find("nothing to split"), std::string::npos) << none.err;
+  for (const char* gone : {"double_pendulum_split.hpp", "double_pendulum_rhs.cpp", "double_pendulum_jacobian_state.cpp"})
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + gone)) << gone;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/double_pendulum_main.cpp"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/double_pendulum.hpp"));
+}
 
 TEST(SplitUnits, SaysWhenNothingIsLargeEnoughAndNeedsSplitForItsThreshold) {
   std::string dir = temporary_directory();
