@@ -562,6 +562,16 @@ class Builder {
       d_.error(c.axis[0].where, c.key + ".rolls.axis", "the disk's axis is zero", "give its direction in the body frame, e.g. [0, 1, 0]");
       return;
     }
+    // an oblique axis puts √(axis·axis) and √(1 − n_z²) of no known angle into every constraint: the
+    // derivation then takes seconds and fails in GiNaC's polynomial arithmetic (found by fuzzing)
+    if (std::count_if(axis.begin(), axis.end(), [](const ex& a) { return !a.is_zero(); }) != 1) {
+      d_.error(c.axis[0].where, c.key + ".rolls.axis",
+               fmt::format("the disk's axis must lie along x, y or z of the body's frame; [{}, {}, {}] does not", c.axis[0].text,
+                           c.axis[1].text, c.axis[2].text),
+               "turn the body instead: give it (or its frame) the rotation that brings the disk's axis onto one of the "
+               "frame's axes, and write that axis, [0, 0, 1] say");
+      return;
+    }
     std::optional<RollingContact> found = rolling_contact(body->center, body->rotation, axis, *radius, m_.symbols);
     if (!found) {
       d_.error(c.axis[0].where, c.key + ".rolls.axis",
