@@ -2,7 +2,7 @@
 // crane_hook_tree: Crane hook carrying two swinging loads (method lagrange2, 4 degrees of freedom).
 // Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].
 // Forward dynamics: rhs solves for q'' by the articulated-body recursion of the particles' tree (O(n));
-// mass_matrix, forcing and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 column by column).
+// mass_matrix, forcing and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 by the recursion, in blocks of columns).
 #pragma once
 
 #include <array>

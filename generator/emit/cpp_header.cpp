@@ -438,7 +438,7 @@ std::string emit_cpp_header(const Equations& e) {
       : !e.articulated_accelerations.empty()
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
             "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix, forcing "
-            "and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 column by column)."
+            "and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 by the recursion, in blocks of columns)."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k);
   out += fmt::format(

@@ -18,9 +18,10 @@ struct RollingContact {
   GiNaC::ex slip_x, slip_y;     // x and y velocity of the material point at the contact, linear in q'
 };
 
-/// `axis` in body components (any length; the model builder admits only x, y or z); √(1 − n_z²) is
-/// written as |cos a| or |sin a| when n_z = ±sin a or ±cos a, with the sign it has at the initial state. Nothing when the disk lies
-/// flat at the initial state (its axis vertical): then no point of the rim is the lowest.
+/// `axis` in body components (any length; the model builder admits only x, y or z); √(1 − n_z²)
+/// is written as |cos a| or |sin a| when n_z = ±sin a or ±cos a, with the sign it has at the
+/// initial state. Nothing when the disk lies flat at the initial state (its axis vertical): then
+/// no point of the rim is the lowest.
 std::optional<RollingContact> rolling_contact(const Vector3& center, const Rotation& rotation, const Vector3& axis,
                                const GiNaC::ex& radius, const Symbols& symbols);
 
