@@ -74,6 +74,73 @@ struct input_type {
 template <class T>
 using input_t = typename input_type<T>::type;
 
+/// sin and cos of every angle at once, for the coordinates a function takes the sine or cosine of.
+template <std::size_t N, class T>
+inline void sin_cos(const T (&angle)[N], T (&s)[N], T (&c)[N]) {
+  using std::sin; using std::cos;
+  for (std::size_t i = 0; i < N; ++i) {
+    s[i] = sin(angle[i]);
+    c[i] = cos(angle[i]);
+  }
+}
+
+// EOMGEN_STD_SIN_COS, defined before the header is included, keeps std::sin and std::cos for double
+// too (the C library's values to the last bit, at about twice the cost); so does -ffast-math, whose
+// reassociation would undo the reduction below (as would -fassociative-math alone: define it then).
+#if defined(__GNUC__) && !defined(__FAST_MATH__) && !defined(EOMGEN_STD_SIN_COS)
+using double_pair = double __attribute__((vector_size(16)));
+using uint64_pair = unsigned long long __attribute__((vector_size(16)));
+
+/// x = k pi/2 + r with |r| <= pi/4, then (sin, cos) = (sin r, cos r), (cos r, -sin r), (-sin r, -cos r)
+/// or (-cos r, sin r) as k mod 4 = 0, 1, 2, 3; within 2 ulp of the exact values for |x| < 1e+06.
+/// x 2/pi + 1.5 2^52 rounds to the integer k + 1.5 2^52, k in the low bits of its mantissa;
+/// r = x - k pi/2 as r + r_low (two-sum), r_low carried into the polynomials to first order.
+inline void sin_cos_pair(double_pair x, double_pair& s, double_pair& c) {
+  const double_pair shifted = x * 0x1.45f306dc9c883p-1 + 0x1.8p52;
+  const double_pair kd = shifted - 0x1.8p52;
+  uint64_pair k;
+  __builtin_memcpy(&k, &shifted, sizeof k);
+  const double_pair a = x - kd * 0x1.921fb544p+0, b = kd * 0x1.0b4611a6p-34;
+  const double_pair a_minus_b = a - b, b_rounded = a - a_minus_b;
+  const double_pair low = ((a - (a_minus_b + b_rounded)) + (b_rounded - b)) - kd * 0x1.3198a2e037073p-69;
+  const double_pair r = a_minus_b + low, r_low = low - (r - a_minus_b);
+  const double_pair z = r * r;
+  const double_pair sin_r = r + r * z * (-0x1.5555555555555p-3 + z * (0x1.1111111110bb2p-7 + z * (-0x1.a01a019e83aaep-13 +
+      z * (0x1.71de37968a100p-19 + z * (-0x1.ae600b02b6262p-26 + z * 0x1.5e0b19f8b1451p-33))))) + r_low * (1.0 - 0.5 * z);
+  const double_pair cos_r = (1.0 - 0.5 * z) + z * z * (0x1.5555555555555p-5 + z * (-0x1.6c16c16c16967p-10 +
+      z * (0x1.a01a019f4eb01p-16 + z * (-0x1.27e4fa17da09ep-22 + z * (0x1.1eeb68e93b64cp-29 + z * -0x1.907da367a37cbp-37))))) - r_low * r;
+  const uint64_pair odd = -(k & 1ULL);  // all bits set where k is odd
+  uint64_pair sin_bits, cos_bits;
+  __builtin_memcpy(&sin_bits, &sin_r, sizeof sin_bits);
+  __builtin_memcpy(&cos_bits, &cos_r, sizeof cos_bits);
+  const uint64_pair sin_k = ((cos_bits & odd) | (sin_bits & ~odd)) ^ ((k & 2ULL) << 62);
+  const uint64_pair cos_k = ((sin_bits & odd) | (cos_bits & ~odd)) ^ (((k + 1ULL) & 2ULL) << 62);
+  __builtin_memcpy(&s, &sin_k, sizeof s);
+  __builtin_memcpy(&c, &cos_k, sizeof c);
+}
+
+/// For double: two angles at a time by sin_cos_pair; std::sin and std::cos where |angle| >= 1e+06
+/// (the reduction's products would no longer be exact), for NaN, infinities and 0 (whose sign sin keeps).
+template <std::size_t N>
+inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
+  for (std::size_t i = 0; i + 1 < N; i += 2) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[i], angle[i + 1]}, sp, cp);
+    s[i] = sp[0]; s[i + 1] = sp[1]; c[i] = cp[0]; c[i + 1] = cp[1];
+  }
+  if constexpr (N % 2 == 1) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[N - 1], 0.0}, sp, cp);
+    s[N - 1] = sp[0]; c[N - 1] = cp[0];
+  }
+  for (std::size_t i = 0; i < N; ++i)
+    if (!(std::abs(angle[i]) < 1e+06) || angle[i] == 0.0) {
+      s[i] = std::sin(angle[i]);
+      c[i] = std::cos(angle[i]);
+    }
+}
+#endif
+
 /// M = L D L^T for the symmetric positive definite 1x1 mass matrix, unrolled.
 /// M, L: 1x1, row-major (L unit lower triangular, only below the diagonal written); D: 1.
 template <class T>
@@ -114,8 +181,13 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_r = p[1];
   const T p_g = p[2];
   const T p_Omega = p[3];
-  const T c0 = sin(q_theta);
-  f[0] = c0*cos(q_theta)*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T c0 = sin_q_theta;
+  f[0] = c0*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -131,11 +203,16 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T p_r = p[1];
   const T p_g = p[2];
   const T p_Omega = p[3];
-  const T c0 = sin(q_theta);
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T c0 = sin_q_theta;
   T M[1];
   M[0] = p_m*p_r*p_r;
   T ddq[1];
-  ddq[0] = c0*cos(q_theta)*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
+  ddq[0] = c0*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
@@ -157,16 +234,21 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_r = p[1];
   const T p_g = p[2];
   const T p_Omega = p[3];
-  const T c0 = sin(q_theta);
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T c0 = sin_q_theta;
   T M[1];
   M[0] = p_m*p_r*p_r;
   T ddq[1];
-  ddq[0] = c0*cos(q_theta)*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
+  ddq[0] = c0*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = cos(q_theta);
+  const T c1 = cos_q_theta;
   J[0] = T(0);
   J[1] = T(1);
   T column[1];
@@ -199,9 +281,14 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T p_r = p[1];
   const T p_g = p[2];
   const T p_Omega = p[3];
-  const T c0 = cos(q_theta);
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T c0 = cos_q_theta;
   P[0] = T(0);
-  Q[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c0*p_g*p_m*p_r + p_Omega*p_Omega*p_m*p_r*p_r*sin(q_theta)*sin(q_theta);
+  Q[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c0*p_g*p_m*p_r + p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
@@ -216,7 +303,11 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T p_m = p[0];
   const T p_r = p[1];
   const T p_Omega = p[3];
-  return dq_theta*dq_theta*p_m*p_r*p_r/T(2) + p_Omega*p_Omega*p_m*p_r*p_r*sin(q_theta)*sin(q_theta)/T(2);
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  return dq_theta*dq_theta*p_m*p_r*p_r/T(2) + p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta/T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -230,7 +321,11 @@ T potential_energy(T t, const T* x, const T* p) {
   const T p_m = p[0];
   const T p_r = p[1];
   const T p_g = p[2];
-  return -cos(q_theta)*p_g*p_m*p_r;
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T cos_q_theta = trig_cos[0];
+  return -cos_q_theta*p_g*p_m*p_r;
 }
 
 /// The model's [outputs], in output_names order. y: 0.
@@ -257,7 +352,12 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T p_r = p[1];
   const T p_g = p[2];
   const T p_Omega = p[3];
-  out[0] = -cos(q_theta)*p_g*p_m*p_r + dq_theta*dq_theta*p_m*p_r*p_r/T(2) - p_Omega*p_Omega*p_m*p_r*p_r*sin(q_theta)*sin(q_theta)/T(2);
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  out[0] = -cos_q_theta*p_g*p_m*p_r + dq_theta*dq_theta*p_m*p_r*p_r/T(2) - p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta/T(2);
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x1, row-major.

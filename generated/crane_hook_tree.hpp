@@ -80,6 +80,73 @@ struct input_type {
 template <class T>
 using input_t = typename input_type<T>::type;
 
+/// sin and cos of every angle at once, for the coordinates a function takes the sine or cosine of.
+template <std::size_t N, class T>
+inline void sin_cos(const T (&angle)[N], T (&s)[N], T (&c)[N]) {
+  using std::sin; using std::cos;
+  for (std::size_t i = 0; i < N; ++i) {
+    s[i] = sin(angle[i]);
+    c[i] = cos(angle[i]);
+  }
+}
+
+// EOMGEN_STD_SIN_COS, defined before the header is included, keeps std::sin and std::cos for double
+// too (the C library's values to the last bit, at about twice the cost); so does -ffast-math, whose
+// reassociation would undo the reduction below (as would -fassociative-math alone: define it then).
+#if defined(__GNUC__) && !defined(__FAST_MATH__) && !defined(EOMGEN_STD_SIN_COS)
+using double_pair = double __attribute__((vector_size(16)));
+using uint64_pair = unsigned long long __attribute__((vector_size(16)));
+
+/// x = k pi/2 + r with |r| <= pi/4, then (sin, cos) = (sin r, cos r), (cos r, -sin r), (-sin r, -cos r)
+/// or (-cos r, sin r) as k mod 4 = 0, 1, 2, 3; within 2 ulp of the exact values for |x| < 1e+06.
+/// x 2/pi + 1.5 2^52 rounds to the integer k + 1.5 2^52, k in the low bits of its mantissa;
+/// r = x - k pi/2 as r + r_low (two-sum), r_low carried into the polynomials to first order.
+inline void sin_cos_pair(double_pair x, double_pair& s, double_pair& c) {
+  const double_pair shifted = x * 0x1.45f306dc9c883p-1 + 0x1.8p52;
+  const double_pair kd = shifted - 0x1.8p52;
+  uint64_pair k;
+  __builtin_memcpy(&k, &shifted, sizeof k);
+  const double_pair a = x - kd * 0x1.921fb544p+0, b = kd * 0x1.0b4611a6p-34;
+  const double_pair a_minus_b = a - b, b_rounded = a - a_minus_b;
+  const double_pair low = ((a - (a_minus_b + b_rounded)) + (b_rounded - b)) - kd * 0x1.3198a2e037073p-69;
+  const double_pair r = a_minus_b + low, r_low = low - (r - a_minus_b);
+  const double_pair z = r * r;
+  const double_pair sin_r = r + r * z * (-0x1.5555555555555p-3 + z * (0x1.1111111110bb2p-7 + z * (-0x1.a01a019e83aaep-13 +
+      z * (0x1.71de37968a100p-19 + z * (-0x1.ae600b02b6262p-26 + z * 0x1.5e0b19f8b1451p-33))))) + r_low * (1.0 - 0.5 * z);
+  const double_pair cos_r = (1.0 - 0.5 * z) + z * z * (0x1.5555555555555p-5 + z * (-0x1.6c16c16c16967p-10 +
+      z * (0x1.a01a019f4eb01p-16 + z * (-0x1.27e4fa17da09ep-22 + z * (0x1.1eeb68e93b64cp-29 + z * -0x1.907da367a37cbp-37))))) - r_low * r;
+  const uint64_pair odd = -(k & 1ULL);  // all bits set where k is odd
+  uint64_pair sin_bits, cos_bits;
+  __builtin_memcpy(&sin_bits, &sin_r, sizeof sin_bits);
+  __builtin_memcpy(&cos_bits, &cos_r, sizeof cos_bits);
+  const uint64_pair sin_k = ((cos_bits & odd) | (sin_bits & ~odd)) ^ ((k & 2ULL) << 62);
+  const uint64_pair cos_k = ((sin_bits & odd) | (cos_bits & ~odd)) ^ (((k + 1ULL) & 2ULL) << 62);
+  __builtin_memcpy(&s, &sin_k, sizeof s);
+  __builtin_memcpy(&c, &cos_k, sizeof c);
+}
+
+/// For double: two angles at a time by sin_cos_pair; std::sin and std::cos where |angle| >= 1e+06
+/// (the reduction's products would no longer be exact), for NaN, infinities and 0 (whose sign sin keeps).
+template <std::size_t N>
+inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
+  for (std::size_t i = 0; i + 1 < N; i += 2) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[i], angle[i + 1]}, sp, cp);
+    s[i] = sp[0]; s[i + 1] = sp[1]; c[i] = cp[0]; c[i + 1] = cp[1];
+  }
+  if constexpr (N % 2 == 1) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[N - 1], 0.0}, sp, cp);
+    s[N - 1] = sp[0]; c[N - 1] = cp[0];
+  }
+  for (std::size_t i = 0; i < N; ++i)
+    if (!(std::abs(angle[i]) < 1e+06) || angle[i] == 0.0) {
+      s[i] = std::sin(angle[i]);
+      c[i] = std::cos(angle[i]);
+    }
+}
+#endif
+
 }  // namespace detail
 
 /// Mass matrix M(q) of M q'' = f, symmetric positive definite: M_jl = m S_j . S_l over the
@@ -101,6 +168,17 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
+  const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T sin_q_psi = trig_sin[1];
+  const T cos_q_psi = trig_cos[1];
+  const T sin_q_a = trig_sin[2];
+  const T cos_q_a = trig_cos[2];
+  const T sin_q_b = trig_sin[3];
+  const T cos_q_b = trig_cos[3];
   static constexpr int coupling[16] = {0, 0, 1, 2, 0, 0, 1, 2, 1, 1, 1, -1, 2, 2, -1, 2};
   T mass[3];
   const T ab0_mass = p_m0 + p_m1 + p_m2;
@@ -108,14 +186,14 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   mass[2] = p_m2;
   mass[0] = ab0_mass;
   T axis[4][3];
-  const T c0 = cos(q_psi);
-  const T c1 = cos(q_theta);
-  const T c2 = sin(q_theta);
-  const T c3 = sin(q_psi);
-  const T ab2_S10 = cos(q_b)*p_l2;
-  const T ab2_S20 = p_l2*sin(q_b);
-  const T ab1_S00 = cos(q_a)*p_l1;
-  const T ab1_S20 = p_l1*sin(q_a);
+  const T c0 = cos_q_psi;
+  const T c1 = cos_q_theta;
+  const T c2 = sin_q_theta;
+  const T c3 = sin_q_psi;
+  const T ab2_S10 = cos_q_b*p_l2;
+  const T ab2_S20 = p_l2*sin_q_b;
+  const T ab1_S00 = cos_q_a*p_l1;
+  const T ab1_S20 = p_l1*sin_q_a;
   const T ab0_S00 = c0*c1*p_L;
   const T ab0_S01 = -c2*c3*p_L;
   const T ab0_S10 = c1*c3*p_L;
@@ -169,14 +247,25 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_g = p[6];
   const T p_c = p[7];
   const T u_F = u[0];
-  const T c0 = cos(q_b);
-  const T c1 = sin(q_b);
-  const T c2 = cos(q_a);
-  const T c3 = sin(q_a);
-  const T c4 = cos(q_psi);
-  const T c5 = cos(q_theta);
-  const T c6 = sin(q_theta);
-  const T c7 = sin(q_psi);
+  const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T sin_q_psi = trig_sin[1];
+  const T cos_q_psi = trig_cos[1];
+  const T sin_q_a = trig_sin[2];
+  const T cos_q_a = trig_cos[2];
+  const T sin_q_b = trig_sin[3];
+  const T cos_q_b = trig_cos[3];
+  const T c0 = cos_q_b;
+  const T c1 = sin_q_b;
+  const T c2 = cos_q_a;
+  const T c3 = sin_q_a;
+  const T c4 = cos_q_psi;
+  const T c5 = cos_q_theta;
+  const T c6 = sin_q_theta;
+  const T c7 = sin_q_psi;
   const T ab2_S10 = c0*p_l2;
   const T ab2_S20 = c1*p_l2;
   const T ab2_c1 = -c1*dq_b*dq_b*p_l2;
@@ -238,14 +327,25 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T p_g = p[6];
   const T p_c = p[7];
   const T u_F = u[0];
-  const T c0 = cos(q_b);
-  const T c1 = sin(q_b);
-  const T c2 = cos(q_a);
-  const T c3 = sin(q_a);
-  const T c4 = cos(q_psi);
-  const T c5 = cos(q_theta);
-  const T c6 = sin(q_theta);
-  const T c7 = sin(q_psi);
+  const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T sin_q_psi = trig_sin[1];
+  const T cos_q_psi = trig_cos[1];
+  const T sin_q_a = trig_sin[2];
+  const T cos_q_a = trig_cos[2];
+  const T sin_q_b = trig_sin[3];
+  const T cos_q_b = trig_cos[3];
+  const T c0 = cos_q_b;
+  const T c1 = sin_q_b;
+  const T c2 = cos_q_a;
+  const T c3 = sin_q_a;
+  const T c4 = cos_q_psi;
+  const T c5 = cos_q_theta;
+  const T c6 = sin_q_theta;
+  const T c7 = sin_q_psi;
   const T ab2_p2 = p_g*p_m2;
   const T ab2_S10 = c0*p_l2;
   const T ab2_S20 = c1*p_l2;
@@ -352,6 +452,17 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T p_g = p[6];
   const T p_c = p[7];
   const T u_F = u[0];
+  const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T sin_q_psi = trig_sin[1];
+  const T cos_q_psi = trig_cos[1];
+  const T sin_q_a = trig_sin[2];
+  const T cos_q_a = trig_cos[2];
+  const T sin_q_b = trig_sin[3];
+  const T cos_q_b = trig_cos[3];
   static constexpr int coupling[16] = {0, 0, 1, 2, 0, 0, 1, 2, 1, 1, 1, -1, 2, 2, -1, 2};
   T mass[3];
   const T ab0_mass = p_m0 + p_m1 + p_m2;
@@ -359,14 +470,14 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   mass[2] = p_m2;
   mass[0] = ab0_mass;
   T axis[4][3];
-  const T c0 = cos(q_psi);
-  const T c1 = cos(q_theta);
-  const T c2 = sin(q_theta);
-  const T c3 = sin(q_psi);
-  const T ab2_S10 = cos(q_b)*p_l2;
-  const T ab2_S20 = p_l2*sin(q_b);
-  const T ab1_S00 = cos(q_a)*p_l1;
-  const T ab1_S20 = p_l1*sin(q_a);
+  const T c0 = cos_q_psi;
+  const T c1 = cos_q_theta;
+  const T c2 = sin_q_theta;
+  const T c3 = sin_q_psi;
+  const T ab2_S10 = cos_q_b*p_l2;
+  const T ab2_S20 = p_l2*sin_q_b;
+  const T ab1_S00 = cos_q_a*p_l1;
+  const T ab1_S20 = p_l1*sin_q_a;
   const T ab0_S00 = c0*c1*p_L;
   const T ab0_S01 = -c2*c3*p_L;
   const T ab0_S10 = c1*c3*p_L;
@@ -389,10 +500,10 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c5 = c0*c1*dq_psi*p_L - c2*c3*dq_theta*p_L;
   const T c6 = c0*c2*dq_psi*p_L + c1*c3*dq_theta*p_L;
   const T c7 = c0*c2*dq_theta*p_L + c1*c3*dq_psi*p_L;
-  const T c8 = sin(q_a);
-  const T c9 = cos(q_a);
-  const T c10 = cos(q_b);
-  const T c11 = sin(q_b);
+  const T c8 = sin_q_a;
+  const T c9 = cos_q_a;
+  const T c10 = cos_q_b;
+  const T c11 = sin_q_b;
   const T ab0_Aq0_0 = -c0*c2*ddq[0]*p_L - c1*c3*ddq[1]*p_L - c4*dq_theta - c5*dq_psi;
   const T ab0_Aq0_1 = c0*c1*ddq[1]*p_L - c2*c3*ddq[0]*p_L - c6*dq_theta - c7*dq_psi;
   const T ab0_Aq0_2 = c1*ddq[0]*p_L - c2*dq_theta*dq_theta*p_L;
@@ -509,20 +620,31 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
+  const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T sin_q_psi = trig_sin[1];
+  const T cos_q_psi = trig_cos[1];
+  const T sin_q_a = trig_sin[2];
+  const T cos_q_a = trig_cos[2];
+  const T sin_q_b = trig_sin[3];
+  const T cos_q_b = trig_cos[3];
   T xdot[8];
   rhs(t, x, u, p, xdot);
   T F[36];
   detail::inverse_dynamics_gradient(t, x, xdot + 4, u, p, F);
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = 0; j < 8; ++j) J[i * 8 + j] = T(j == 4 + i ? 1 : 0);
-  const T c0 = cos(q_psi);
-  const T c1 = cos(q_theta);
-  const T c2 = sin(q_theta);
-  const T c3 = sin(q_psi);
-  const T ab2_S10 = cos(q_b)*p_l2;
-  const T ab2_S20 = p_l2*sin(q_b);
-  const T ab1_S00 = cos(q_a)*p_l1;
-  const T ab1_S20 = p_l1*sin(q_a);
+  const T c0 = cos_q_psi;
+  const T c1 = cos_q_theta;
+  const T c2 = sin_q_theta;
+  const T c3 = sin_q_psi;
+  const T ab2_S10 = cos_q_b*p_l2;
+  const T ab2_S20 = p_l2*sin_q_b;
+  const T ab1_S00 = cos_q_a*p_l1;
+  const T ab1_S20 = p_l1*sin_q_a;
   const T ab0_S00 = c0*c1*p_L;
   const T ab0_S01 = -c2*c3*p_L;
   const T ab0_S10 = c1*c3*p_L;
@@ -608,14 +730,25 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
-  const T c0 = cos(q_psi);
-  const T c1 = cos(q_theta);
-  const T c2 = sin(q_theta);
-  const T c3 = sin(q_psi);
-  const T ab2_S10 = cos(q_b)*p_l2;
-  const T ab2_S20 = p_l2*sin(q_b);
-  const T ab1_S00 = cos(q_a)*p_l1;
-  const T ab1_S20 = p_l1*sin(q_a);
+  const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  const T sin_q_psi = trig_sin[1];
+  const T cos_q_psi = trig_cos[1];
+  const T sin_q_a = trig_sin[2];
+  const T cos_q_a = trig_cos[2];
+  const T sin_q_b = trig_sin[3];
+  const T cos_q_b = trig_cos[3];
+  const T c0 = cos_q_psi;
+  const T c1 = cos_q_theta;
+  const T c2 = sin_q_theta;
+  const T c3 = sin_q_psi;
+  const T ab2_S10 = cos_q_b*p_l2;
+  const T ab2_S20 = p_l2*sin_q_b;
+  const T ab1_S00 = cos_q_a*p_l1;
+  const T ab1_S20 = p_l1*sin_q_a;
   const T ab0_S00 = c0*c1*p_L;
   const T ab0_S01 = -c2*c3*p_L;
   const T ab0_S10 = c1*c3*p_L;
@@ -657,7 +790,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T F[4];
   F[0] = -c0*c1*p_L;
   F[1] = c2*c3*p_L;
-  F[2] = -cos(q_a)*p_l1;
+  F[2] = -cos_q_a*p_l1;
   F[3] = T(0);
   for (std::size_t i = 0; i < 4; ++i) B[i] = T(0);
   for (std::size_t block = 0; block < 1; block += 1) {
@@ -733,7 +866,13 @@ T potential_energy(T t, const T* x, const T* p) {
   const T p_l1 = p[4];
   const T p_l2 = p[5];
   const T p_g = p[6];
-  return -(p_m0 + p_m1 + p_m2)*cos(q_theta)*p_L*p_g - cos(q_a)*p_g*p_l1*p_m1 - cos(q_b)*p_g*p_l2*p_m2;
+  const T trig_angle[3] = {q_theta, q_a, q_b};
+  T trig_sin[3], trig_cos[3];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T cos_q_theta = trig_cos[0];
+  const T cos_q_a = trig_cos[1];
+  const T cos_q_b = trig_cos[2];
+  return -(p_m0 + p_m1 + p_m2)*cos_q_theta*p_L*p_g - cos_q_a*p_g*p_l1*p_m1 - cos_q_b*p_g*p_l2*p_m2;
 }
 
 /// The model's [outputs], in output_names order. y: 1.
@@ -747,7 +886,12 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   const T q_a = x[2];
   const T p_L = p[3];
   const T p_l1 = p[4];
-  y[0] = -cos(q_a)*p_l1 - cos(q_theta)*p_L;
+  const T trig_angle[2] = {q_theta, q_a};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T cos_q_theta = trig_cos[0];
+  const T cos_q_a = trig_cos[1];
+  y[0] = -cos_q_a*p_l1 - cos_q_theta*p_L;
 }
 
 /// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic

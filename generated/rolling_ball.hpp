@@ -72,6 +72,73 @@ struct input_type {
 template <class T>
 using input_t = typename input_type<T>::type;
 
+/// sin and cos of every angle at once, for the coordinates a function takes the sine or cosine of.
+template <std::size_t N, class T>
+inline void sin_cos(const T (&angle)[N], T (&s)[N], T (&c)[N]) {
+  using std::sin; using std::cos;
+  for (std::size_t i = 0; i < N; ++i) {
+    s[i] = sin(angle[i]);
+    c[i] = cos(angle[i]);
+  }
+}
+
+// EOMGEN_STD_SIN_COS, defined before the header is included, keeps std::sin and std::cos for double
+// too (the C library's values to the last bit, at about twice the cost); so does -ffast-math, whose
+// reassociation would undo the reduction below (as would -fassociative-math alone: define it then).
+#if defined(__GNUC__) && !defined(__FAST_MATH__) && !defined(EOMGEN_STD_SIN_COS)
+using double_pair = double __attribute__((vector_size(16)));
+using uint64_pair = unsigned long long __attribute__((vector_size(16)));
+
+/// x = k pi/2 + r with |r| <= pi/4, then (sin, cos) = (sin r, cos r), (cos r, -sin r), (-sin r, -cos r)
+/// or (-cos r, sin r) as k mod 4 = 0, 1, 2, 3; within 2 ulp of the exact values for |x| < 1e+06.
+/// x 2/pi + 1.5 2^52 rounds to the integer k + 1.5 2^52, k in the low bits of its mantissa;
+/// r = x - k pi/2 as r + r_low (two-sum), r_low carried into the polynomials to first order.
+inline void sin_cos_pair(double_pair x, double_pair& s, double_pair& c) {
+  const double_pair shifted = x * 0x1.45f306dc9c883p-1 + 0x1.8p52;
+  const double_pair kd = shifted - 0x1.8p52;
+  uint64_pair k;
+  __builtin_memcpy(&k, &shifted, sizeof k);
+  const double_pair a = x - kd * 0x1.921fb544p+0, b = kd * 0x1.0b4611a6p-34;
+  const double_pair a_minus_b = a - b, b_rounded = a - a_minus_b;
+  const double_pair low = ((a - (a_minus_b + b_rounded)) + (b_rounded - b)) - kd * 0x1.3198a2e037073p-69;
+  const double_pair r = a_minus_b + low, r_low = low - (r - a_minus_b);
+  const double_pair z = r * r;
+  const double_pair sin_r = r + r * z * (-0x1.5555555555555p-3 + z * (0x1.1111111110bb2p-7 + z * (-0x1.a01a019e83aaep-13 +
+      z * (0x1.71de37968a100p-19 + z * (-0x1.ae600b02b6262p-26 + z * 0x1.5e0b19f8b1451p-33))))) + r_low * (1.0 - 0.5 * z);
+  const double_pair cos_r = (1.0 - 0.5 * z) + z * z * (0x1.5555555555555p-5 + z * (-0x1.6c16c16c16967p-10 +
+      z * (0x1.a01a019f4eb01p-16 + z * (-0x1.27e4fa17da09ep-22 + z * (0x1.1eeb68e93b64cp-29 + z * -0x1.907da367a37cbp-37))))) - r_low * r;
+  const uint64_pair odd = -(k & 1ULL);  // all bits set where k is odd
+  uint64_pair sin_bits, cos_bits;
+  __builtin_memcpy(&sin_bits, &sin_r, sizeof sin_bits);
+  __builtin_memcpy(&cos_bits, &cos_r, sizeof cos_bits);
+  const uint64_pair sin_k = ((cos_bits & odd) | (sin_bits & ~odd)) ^ ((k & 2ULL) << 62);
+  const uint64_pair cos_k = ((sin_bits & odd) | (cos_bits & ~odd)) ^ (((k + 1ULL) & 2ULL) << 62);
+  __builtin_memcpy(&s, &sin_k, sizeof s);
+  __builtin_memcpy(&c, &cos_k, sizeof c);
+}
+
+/// For double: two angles at a time by sin_cos_pair; std::sin and std::cos where |angle| >= 1e+06
+/// (the reduction's products would no longer be exact), for NaN, infinities and 0 (whose sign sin keeps).
+template <std::size_t N>
+inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
+  for (std::size_t i = 0; i + 1 < N; i += 2) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[i], angle[i + 1]}, sp, cp);
+    s[i] = sp[0]; s[i + 1] = sp[1]; c[i] = cp[0]; c[i + 1] = cp[1];
+  }
+  if constexpr (N % 2 == 1) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[N - 1], 0.0}, sp, cp);
+    s[N - 1] = sp[0]; c[N - 1] = cp[0];
+  }
+  for (std::size_t i = 0; i < N; ++i)
+    if (!(std::abs(angle[i]) < 1e+06) || angle[i] == 0.0) {
+      s[i] = std::sin(angle[i]);
+      c[i] = std::cos(angle[i]);
+    }
+}
+#endif
+
 /// M = L D L^T for the symmetric positive definite 3x3 mass matrix, unrolled.
 /// M, L: 3x3, row-major (L unit lower triangular, only below the diagonal written); D: 3.
 template <class T>
@@ -144,6 +211,13 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T s_omega_z = x[7];
   const T p_m = p[0];
   const T p_R = p[1];
+  const T trig_angle[2] = {q_alpha, q_beta};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_alpha = trig_sin[0];
+  const T cos_q_alpha = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
   const T c0 = T(7)*p_R*p_R*p_m/T(5);
   T M[9];
   M[0] = c0;
@@ -163,10 +237,10 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = sin(q_beta);
-  const T c2 = cos(q_alpha);
-  const T c3 = cos(q_beta);
-  const T c4 = sin(q_alpha);
+  const T c1 = sin_q_beta;
+  const T c2 = cos_q_alpha;
+  const T c3 = cos_q_beta;
+  const T c4 = sin_q_alpha;
   const T c5 = T(1)/c3;
   xdot[0] = p_R*s_omega_y;
   xdot[1] = -p_R*s_omega_x;
@@ -193,6 +267,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T s_omega_z = x[7];
   const T p_m = p[0];
   const T p_R = p[1];
+  const T trig_angle[2] = {q_alpha, q_beta};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_alpha = trig_sin[0];
+  const T cos_q_alpha = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
   const T c0 = T(7)*p_R*p_R*p_m/T(5);
   T M[9];
   M[0] = c0;
@@ -212,11 +293,11 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = cos(q_beta);
+  const T c1 = cos_q_beta;
   const T c2 = T(1)/c1;
-  const T c3 = sin(q_beta);
-  const T c4 = cos(q_alpha);
-  const T c5 = sin(q_alpha);
+  const T c3 = sin_q_beta;
+  const T c4 = cos_q_alpha;
+  const T c5 = sin_q_alpha;
   const T c6 = T(1)/(c1*c1);
   const T c7 = c4*s_omega_z - c5*s_omega_y;
   J[0] = T(0);
@@ -371,12 +452,19 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T s_omega_z = x[7];
   const T p_m = p[0];
   const T p_R = p[1];
-  const T c0 = cos(q_alpha);
-  const T c1 = sin(q_alpha);
-  const T c2 = sin(q_beta);
+  const T trig_angle[2] = {q_alpha, q_beta};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_alpha = trig_sin[0];
+  const T cos_q_alpha = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
+  const T c0 = cos_q_alpha;
+  const T c1 = sin_q_alpha;
+  const T c2 = sin_q_beta;
   const T c3 = c2*c2;
   const T c4 = c0*c0;
-  const T c5 = cos(q_beta);
+  const T c5 = cos_q_beta;
   const T c6 = T(1)/(c5*c5);
   const T c7 = T(1)/c5;
   const T c8 = c1*c1;
@@ -425,16 +513,23 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   const T q_alpha = x[2];
   const T q_beta = x[3];
   const T p_R = p[1];
+  const T trig_angle[2] = {q_alpha, q_beta};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_alpha = trig_sin[0];
+  const T cos_q_alpha = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
   C[0] = T(1);
   C[1] = T(0);
   C[2] = T(0);
-  C[3] = -cos(q_alpha)*p_R;
-  C[4] = cos(q_beta)*p_R*sin(q_alpha);
+  C[3] = -cos_q_alpha*p_R;
+  C[4] = cos_q_beta*p_R*sin_q_alpha;
   C[5] = T(0);
   C[6] = T(1);
   C[7] = p_R;
   C[8] = T(0);
-  C[9] = p_R*sin(q_beta);
+  C[9] = p_R*sin_q_beta;
 }
 
 /// Constraint residuals: g(q,t) of the holonomic constraints (0 for the others) and
@@ -451,11 +546,18 @@ void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity)
   const T s_omega_y = x[6];
   const T s_omega_z = x[7];
   const T p_R = p[1];
+  const T trig_angle[2] = {q_alpha, q_beta};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_alpha = trig_sin[0];
+  const T cos_q_alpha = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
   T qdot[5];
-  const T c0 = sin(q_beta);
-  const T c1 = cos(q_alpha);
-  const T c2 = cos(q_beta);
-  const T c3 = sin(q_alpha);
+  const T c0 = sin_q_beta;
+  const T c1 = cos_q_alpha;
+  const T c2 = cos_q_beta;
+  const T c3 = sin_q_alpha;
   const T c4 = T(1)/c2;
   qdot[0] = p_R*s_omega_y;
   qdot[1] = -p_R*s_omega_x;
@@ -463,9 +565,9 @@ void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity)
   qdot[3] = c1*s_omega_y + c3*s_omega_z;
   qdot[4] = (c1*s_omega_z - c3*s_omega_y)*c4;
   position[0] = T(0);
-  velocity[0] = T(0) + (T(1))*qdot[0] + (T(0))*qdot[1] + (T(0))*qdot[2] + (-cos(q_alpha)*p_R)*qdot[3] + (cos(q_beta)*p_R*sin(q_alpha))*qdot[4];
+  velocity[0] = T(0) + (T(1))*qdot[0] + (T(0))*qdot[1] + (T(0))*qdot[2] + (-cos_q_alpha*p_R)*qdot[3] + (cos_q_beta*p_R*sin_q_alpha)*qdot[4];
   position[1] = T(0);
-  velocity[1] = T(0) + (T(0))*qdot[0] + (T(1))*qdot[1] + (p_R)*qdot[2] + (T(0))*qdot[3] + (p_R*sin(q_beta))*qdot[4];
+  velocity[1] = T(0) + (T(0))*qdot[0] + (T(1))*qdot[1] + (p_R)*qdot[2] + (T(0))*qdot[3] + (p_R*sin_q_beta)*qdot[4];
 }
 
 /// The same as rhs: Baumgarte's gains apply to Lagrange I models only.

@@ -75,6 +75,73 @@ struct input_type {
 template <class T>
 using input_t = typename input_type<T>::type;
 
+/// sin and cos of every angle at once, for the coordinates a function takes the sine or cosine of.
+template <std::size_t N, class T>
+inline void sin_cos(const T (&angle)[N], T (&s)[N], T (&c)[N]) {
+  using std::sin; using std::cos;
+  for (std::size_t i = 0; i < N; ++i) {
+    s[i] = sin(angle[i]);
+    c[i] = cos(angle[i]);
+  }
+}
+
+// EOMGEN_STD_SIN_COS, defined before the header is included, keeps std::sin and std::cos for double
+// too (the C library's values to the last bit, at about twice the cost); so does -ffast-math, whose
+// reassociation would undo the reduction below (as would -fassociative-math alone: define it then).
+#if defined(__GNUC__) && !defined(__FAST_MATH__) && !defined(EOMGEN_STD_SIN_COS)
+using double_pair = double __attribute__((vector_size(16)));
+using uint64_pair = unsigned long long __attribute__((vector_size(16)));
+
+/// x = k pi/2 + r with |r| <= pi/4, then (sin, cos) = (sin r, cos r), (cos r, -sin r), (-sin r, -cos r)
+/// or (-cos r, sin r) as k mod 4 = 0, 1, 2, 3; within 2 ulp of the exact values for |x| < 1e+06.
+/// x 2/pi + 1.5 2^52 rounds to the integer k + 1.5 2^52, k in the low bits of its mantissa;
+/// r = x - k pi/2 as r + r_low (two-sum), r_low carried into the polynomials to first order.
+inline void sin_cos_pair(double_pair x, double_pair& s, double_pair& c) {
+  const double_pair shifted = x * 0x1.45f306dc9c883p-1 + 0x1.8p52;
+  const double_pair kd = shifted - 0x1.8p52;
+  uint64_pair k;
+  __builtin_memcpy(&k, &shifted, sizeof k);
+  const double_pair a = x - kd * 0x1.921fb544p+0, b = kd * 0x1.0b4611a6p-34;
+  const double_pair a_minus_b = a - b, b_rounded = a - a_minus_b;
+  const double_pair low = ((a - (a_minus_b + b_rounded)) + (b_rounded - b)) - kd * 0x1.3198a2e037073p-69;
+  const double_pair r = a_minus_b + low, r_low = low - (r - a_minus_b);
+  const double_pair z = r * r;
+  const double_pair sin_r = r + r * z * (-0x1.5555555555555p-3 + z * (0x1.1111111110bb2p-7 + z * (-0x1.a01a019e83aaep-13 +
+      z * (0x1.71de37968a100p-19 + z * (-0x1.ae600b02b6262p-26 + z * 0x1.5e0b19f8b1451p-33))))) + r_low * (1.0 - 0.5 * z);
+  const double_pair cos_r = (1.0 - 0.5 * z) + z * z * (0x1.5555555555555p-5 + z * (-0x1.6c16c16c16967p-10 +
+      z * (0x1.a01a019f4eb01p-16 + z * (-0x1.27e4fa17da09ep-22 + z * (0x1.1eeb68e93b64cp-29 + z * -0x1.907da367a37cbp-37))))) - r_low * r;
+  const uint64_pair odd = -(k & 1ULL);  // all bits set where k is odd
+  uint64_pair sin_bits, cos_bits;
+  __builtin_memcpy(&sin_bits, &sin_r, sizeof sin_bits);
+  __builtin_memcpy(&cos_bits, &cos_r, sizeof cos_bits);
+  const uint64_pair sin_k = ((cos_bits & odd) | (sin_bits & ~odd)) ^ ((k & 2ULL) << 62);
+  const uint64_pair cos_k = ((sin_bits & odd) | (cos_bits & ~odd)) ^ (((k + 1ULL) & 2ULL) << 62);
+  __builtin_memcpy(&s, &sin_k, sizeof s);
+  __builtin_memcpy(&c, &cos_k, sizeof c);
+}
+
+/// For double: two angles at a time by sin_cos_pair; std::sin and std::cos where |angle| >= 1e+06
+/// (the reduction's products would no longer be exact), for NaN, infinities and 0 (whose sign sin keeps).
+template <std::size_t N>
+inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
+  for (std::size_t i = 0; i + 1 < N; i += 2) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[i], angle[i + 1]}, sp, cp);
+    s[i] = sp[0]; s[i + 1] = sp[1]; c[i] = cp[0]; c[i + 1] = cp[1];
+  }
+  if constexpr (N % 2 == 1) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[N - 1], 0.0}, sp, cp);
+    s[N - 1] = sp[0]; c[N - 1] = cp[0];
+  }
+  for (std::size_t i = 0; i < N; ++i)
+    if (!(std::abs(angle[i]) < 1e+06) || angle[i] == 0.0) {
+      s[i] = std::sin(angle[i]);
+      c[i] = std::cos(angle[i]);
+    }
+}
+#endif
+
 /// M = L D L^T for the symmetric positive definite 4x4 mass matrix, unrolled.
 /// M, L: 4x4, row-major (L unit lower triangular, only below the diagonal written); D: 4.
 template <class T>
@@ -124,13 +191,24 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T q_b2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
-  const T c4 = cos(q_b2);
-  const T c5 = sin(q_a2);
-  const T c6 = sin(q_b2);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
+  const T c4 = cos_q_b2;
+  const T c5 = sin_q_a2;
+  const T c6 = sin_q_b2;
   const T c7 = p_l*p_l*p_m/T(3);
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
@@ -142,7 +220,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T k_upper_Rzz = c1;
   const T k_upper_W_a1_y = c3;
   const T k_upper_W_a1_z = c1;
-  const T k_lower_W_b1_x = cos(q_a2);
+  const T k_lower_W_b1_x = cos_q_a2;
   const T k_lower_W_b1_y = -c4*c5;
   const T k_lower_W_b1_z = c5*c6;
   const T k_lower_W_a2_y = c6;
@@ -151,7 +229,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T k_lower_Jd_x = c7;
   const T k_lower_Jd_y = c7;
   const T k_lower_Jd_z = p_l*p_l*p_m/T(200);
-  const T c8 = cos(q_a2);
+  const T c8 = cos_q_a2;
   const T c9 = c6*c6;
   const T c10 = c5*c5;
   const T c11 = T(4)*p_l*p_l*p_m/T(3);
@@ -216,13 +294,24 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_l = p[1];
   const T p_g = p[2];
   const T u_push = u[0];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
-  const T c4 = cos(q_b2);
-  const T c5 = sin(q_a2);
-  const T c6 = sin(q_b2);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
+  const T c4 = cos_q_b2;
+  const T c5 = sin_q_a2;
+  const T c6 = sin_q_b2;
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
   const T k_upper_Rxz = c2*c3;
@@ -237,12 +326,12 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T k_upper_alpha_y = c1*dq_a1*dq_b1;
   const T k_upper_omega_z = c1*dq_a1;
   const T k_upper_alpha_z = -c3*dq_a1*dq_b1;
-  const T k_lower_W_b1_x = cos(q_a2);
+  const T k_lower_W_b1_x = cos_q_a2;
   const T k_lower_W_b1_y = -c4*c5;
   const T k_lower_W_b1_z = c5*c6;
   const T k_lower_W_a2_y = c6;
   const T k_lower_W_a2_z = c4;
-  const T c7 = cos(q_a2);
+  const T c7 = cos_q_a2;
   const T c8 = c6*c6;
   const T c9 = c4*c4;
   const T k_lower_Rxx = c5*k_upper_Rxy + c7*k_upper_Rxx;
@@ -320,13 +409,24 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T p_l = p[1];
   const T p_g = p[2];
   const T u_push = u[0];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
-  const T c4 = cos(q_b2);
-  const T c5 = sin(q_a2);
-  const T c6 = sin(q_b2);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
+  const T c4 = cos_q_b2;
+  const T c5 = sin_q_a2;
+  const T c6 = sin_q_b2;
   const T c7 = p_l*p_l*p_m/T(3);
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
@@ -342,7 +442,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T k_upper_alpha_y = c1*dq_a1*dq_b1;
   const T k_upper_omega_z = c1*dq_a1;
   const T k_upper_alpha_z = -c3*dq_a1*dq_b1;
-  const T k_lower_W_b1_x = cos(q_a2);
+  const T k_lower_W_b1_x = cos_q_a2;
   const T k_lower_W_b1_y = -c4*c5;
   const T k_lower_W_b1_z = c5*c6;
   const T k_lower_W_a2_y = c6;
@@ -351,7 +451,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T k_lower_Jd_x = c7;
   const T k_lower_Jd_y = c7;
   const T k_lower_Jd_z = p_l*p_l*p_m/T(200);
-  const T c8 = cos(q_a2);
+  const T c8 = cos_q_a2;
   const T c9 = c6*c6;
   const T c10 = c4*c4;
   const T c11 = c5*c5;
@@ -469,10 +569,21 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T p_l = p[1];
   const T p_g = p[2];
   const T u_push = u[0];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
   const T k_upper_Rxz = c2*c3;
@@ -485,13 +596,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T k_upper_W_a1_z = c1;
   const T k_upper_omega_y = c3*dq_a1;
   const T k_upper_omega_z = c1*dq_a1;
-  const T k_lower_W_b1_x = cos(q_a2);
-  const T k_lower_W_b1_y = -cos(q_b2)*sin(q_a2);
-  const T k_lower_W_a2_y = sin(q_b2);
-  const T c4 = cos(q_a2);
-  const T c5 = sin(q_a2);
-  const T c6 = cos(q_b2);
-  const T c7 = sin(q_b2);
+  const T k_lower_W_b1_x = cos_q_a2;
+  const T k_lower_W_b1_y = -cos_q_b2*sin_q_a2;
+  const T k_lower_W_a2_y = sin_q_b2;
+  const T c4 = cos_q_a2;
+  const T c5 = sin_q_a2;
+  const T c6 = cos_q_b2;
+  const T c7 = sin_q_b2;
   const T k_lower_Rxx = c4*k_upper_Rxx + c5*k_upper_Rxy;
   const T k_lower_Rxy = c4*c6*k_upper_Rxy - c5*c6*k_upper_Rxx + c7*k_upper_Rxz;
   const T k_lower_Rxz = -c4*c7*k_upper_Rxy + c5*c7*k_upper_Rxx + c6*k_upper_Rxz;
@@ -662,17 +773,17 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T D[4];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T ne0 = cos(q_b1);
-  const T ne1 = sin(q_b1);
+  const T ne0 = cos_q_b1;
+  const T ne1 = sin_q_b1;
   const T k_upper_dalpha_y = ddq[0]*ne1 + dq_a1*dq_b1*ne0;
   const T k_upper_dalpha_z = ddq[0]*ne0 - dq_a1*dq_b1*ne1;
   const T k_lower_da_z = ddq[1]*k_upper_Rzy*p_l + dq_b1*dq_b1*k_upper_Rzz*p_l - k_upper_Rzy*k_upper_omega_y*k_upper_omega_z*p_l + k_upper_Rzz*k_upper_omega_y*k_upper_omega_y*p_l;
   const T k_rod1_cm_F_z = ddq[1]*k_upper_Rzy*p_l*p_m/T(2) + dq_b1*dq_b1*k_upper_Rzz*p_l*p_m/T(2) - k_upper_Rzy*k_upper_omega_y*k_upper_omega_z*p_l*p_m/T(2) + k_upper_Rzz*k_upper_omega_y*k_upper_omega_y*p_l*p_m/T(2) + p_g*p_m;
-  const T ne2 = cos(q_a2);
-  const T ne3 = sin(q_b2);
+  const T ne2 = cos_q_a2;
+  const T ne3 = sin_q_b2;
   const T ne4 = ne3*ne3;
-  const T ne5 = sin(q_a2);
-  const T ne6 = cos(q_b2);
+  const T ne5 = sin_q_a2;
+  const T ne6 = cos_q_b2;
   const T ne7 = ne6*ne6;
   const T k_lower_dalpha_x = ddq[1]*ne2 + ddq[3] - dq_a2*dq_b1*ne4*ne5 - dq_a2*dq_b1*ne5*ne7 + dq_a2*k_upper_omega_y*ne2*ne4 + dq_a2*k_upper_omega_y*ne2*ne7 + k_upper_dalpha_y*ne5;
   const T k_lower_dalpha_y = -ddq[1]*ne5*ne6 + ddq[2]*ne3 - dq_a2*dq_b1*ne2*ne6 + dq_a2*dq_b2*ne6 - dq_a2*k_upper_omega_y*ne5*ne6 + dq_b1*dq_b2*ne3*ne5 - dq_b2*k_upper_omega_y*ne2*ne3 + dq_b2*k_upper_omega_z*ne6 + k_upper_dalpha_y*ne2*ne6 + k_upper_dalpha_z*ne3;
@@ -1025,13 +1136,24 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T q_b2 = x[3];
   const T p_m = p[0];
   const T p_l = p[1];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
-  const T c4 = cos(q_b2);
-  const T c5 = sin(q_a2);
-  const T c6 = sin(q_b2);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
+  const T c4 = cos_q_b2;
+  const T c5 = sin_q_a2;
+  const T c6 = sin_q_b2;
   const T c7 = p_l*p_l*p_m/T(3);
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
@@ -1043,7 +1165,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T k_upper_Rzz = c1;
   const T k_upper_W_a1_y = c3;
   const T k_upper_W_a1_z = c1;
-  const T k_lower_W_b1_x = cos(q_a2);
+  const T k_lower_W_b1_x = cos_q_a2;
   const T k_lower_W_b1_y = -c4*c5;
   const T k_lower_W_b1_z = c5*c6;
   const T k_lower_W_a2_y = c6;
@@ -1052,7 +1174,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T k_lower_Jd_x = c7;
   const T k_lower_Jd_y = c7;
   const T k_lower_Jd_z = p_l*p_l*p_m/T(200);
-  const T c8 = cos(q_a2);
+  const T c8 = cos_q_a2;
   const T c9 = c6*c6;
   const T c10 = c5*c5;
   const T c11 = T(4)*p_l*p_l*p_m/T(3);
@@ -1136,11 +1258,22 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T p_l = p[1];
   const T p_g = p[2];
   const T u_push = u[0];
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
   const T ddq[4] = {};
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
   const T k_upper_Rxz = c2*c3;
@@ -1153,13 +1286,13 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T k_upper_W_a1_z = c1;
   const T k_upper_omega_y = c3*dq_a1;
   const T k_upper_omega_z = c1*dq_a1;
-  const T k_lower_W_b1_x = cos(q_a2);
-  const T k_lower_W_b1_y = -cos(q_b2)*sin(q_a2);
-  const T k_lower_W_a2_y = sin(q_b2);
-  const T c4 = cos(q_a2);
-  const T c5 = sin(q_a2);
-  const T c6 = cos(q_b2);
-  const T c7 = sin(q_b2);
+  const T k_lower_W_b1_x = cos_q_a2;
+  const T k_lower_W_b1_y = -cos_q_b2*sin_q_a2;
+  const T k_lower_W_a2_y = sin_q_b2;
+  const T c4 = cos_q_a2;
+  const T c5 = sin_q_a2;
+  const T c6 = cos_q_b2;
+  const T c7 = sin_q_b2;
   const T k_lower_Rxx = c4*k_upper_Rxx + c5*k_upper_Rxy;
   const T k_lower_Rxy = c4*c6*k_upper_Rxy - c5*c6*k_upper_Rxx + c7*k_upper_Rxz;
   const T k_lower_Rxz = -c4*c7*k_upper_Rxy + c5*c7*k_upper_Rxx + c6*k_upper_Rxz;
@@ -1535,10 +1668,21 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_b2 = x[7];
   const T p_m = p[0];
   const T p_l = p[1];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
   const T k_upper_Rxz = c2*c3;
@@ -1551,13 +1695,13 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T k_upper_W_a1_z = c1;
   const T k_upper_omega_y = c3*dq_a1;
   const T k_upper_omega_z = c1*dq_a1;
-  const T k_lower_W_b1_x = cos(q_a2);
-  const T k_lower_W_b1_y = -cos(q_b2)*sin(q_a2);
-  const T k_lower_W_a2_y = sin(q_b2);
-  const T c4 = cos(q_a2);
-  const T c5 = sin(q_a2);
-  const T c6 = cos(q_b2);
-  const T c7 = sin(q_b2);
+  const T k_lower_W_b1_x = cos_q_a2;
+  const T k_lower_W_b1_y = -cos_q_b2*sin_q_a2;
+  const T k_lower_W_a2_y = sin_q_b2;
+  const T c4 = cos_q_a2;
+  const T c5 = sin_q_a2;
+  const T c6 = cos_q_b2;
+  const T c7 = sin_q_b2;
   const T k_lower_Rxx = c4*k_upper_Rxx + c5*k_upper_Rxy;
   const T k_lower_Rxy = c4*c6*k_upper_Rxy - c5*c6*k_upper_Rxx + c7*k_upper_Rxz;
   const T k_lower_Ryx = c4*k_upper_Ryx + c5*k_upper_Ryy;
@@ -1613,9 +1757,17 @@ T potential_energy(T t, const T* x, const T* p) {
   const T p_m = p[0];
   const T p_l = p[1];
   const T p_g = p[2];
-  const T k_upper_Rzy = sin(q_b1);
-  const T k_upper_Rzz = cos(q_b1);
-  const T k_lower_Rzz = -cos(q_a2)*k_upper_Rzy*sin(q_b2) + cos(q_b2)*k_upper_Rzz;
+  const T trig_angle[3] = {q_b1, q_a2, q_b2};
+  T trig_sin[3], trig_cos[3];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_b1 = trig_sin[0];
+  const T cos_q_b1 = trig_cos[0];
+  const T cos_q_a2 = trig_cos[1];
+  const T sin_q_b2 = trig_sin[2];
+  const T cos_q_b2 = trig_cos[2];
+  const T k_upper_Rzy = sin_q_b1;
+  const T k_upper_Rzz = cos_q_b1;
+  const T k_lower_Rzz = -cos_q_a2*k_upper_Rzy*sin_q_b2 + cos_q_b2*k_upper_Rzz;
   const T k_lower_oz = -k_upper_Rzz*p_l;
   return -k_lower_Rzz*p_g*p_l*p_m/T(2) + k_lower_oz*p_g*p_m - k_upper_Rzz*p_g*p_l*p_m/T(2);
 }
@@ -1632,10 +1784,21 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   const T q_a2 = x[2];
   const T q_b2 = x[3];
   const T p_l = p[1];
-  const T c0 = cos(q_a1);
-  const T c1 = cos(q_b1);
-  const T c2 = sin(q_a1);
-  const T c3 = sin(q_b1);
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
   const T k_upper_Rxx = c0;
   const T k_upper_Rxy = -c1*c2;
   const T k_upper_Rxz = c2*c3;
@@ -1644,10 +1807,10 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   const T k_upper_Ryz = -c0*c3;
   const T k_upper_Rzy = c3;
   const T k_upper_Rzz = c1;
-  const T c4 = cos(q_a2);
-  const T c5 = sin(q_b2);
-  const T c6 = sin(q_a2);
-  const T c7 = cos(q_b2);
+  const T c4 = cos_q_a2;
+  const T c5 = sin_q_b2;
+  const T c6 = sin_q_a2;
+  const T c7 = cos_q_b2;
   const T k_lower_Rxz = -c4*c5*k_upper_Rxy + c5*c6*k_upper_Rxx + c7*k_upper_Rxz;
   const T k_lower_ox = -k_upper_Rxz*p_l;
   const T k_lower_Ryz = -c4*c5*k_upper_Ryy + c5*c6*k_upper_Ryx + c7*k_upper_Ryz;

@@ -97,6 +97,73 @@ struct input_type {
 template <class T>
 using input_t = typename input_type<T>::type;
 
+/// sin and cos of every angle at once, for the coordinates a function takes the sine or cosine of.
+template <std::size_t N, class T>
+inline void sin_cos(const T (&angle)[N], T (&s)[N], T (&c)[N]) {
+  using std::sin; using std::cos;
+  for (std::size_t i = 0; i < N; ++i) {
+    s[i] = sin(angle[i]);
+    c[i] = cos(angle[i]);
+  }
+}
+
+// EOMGEN_STD_SIN_COS, defined before the header is included, keeps std::sin and std::cos for double
+// too (the C library's values to the last bit, at about twice the cost); so does -ffast-math, whose
+// reassociation would undo the reduction below (as would -fassociative-math alone: define it then).
+#if defined(__GNUC__) && !defined(__FAST_MATH__) && !defined(EOMGEN_STD_SIN_COS)
+using double_pair = double __attribute__((vector_size(16)));
+using uint64_pair = unsigned long long __attribute__((vector_size(16)));
+
+/// x = k pi/2 + r with |r| <= pi/4, then (sin, cos) = (sin r, cos r), (cos r, -sin r), (-sin r, -cos r)
+/// or (-cos r, sin r) as k mod 4 = 0, 1, 2, 3; within 2 ulp of the exact values for |x| < 1e+06.
+/// x 2/pi + 1.5 2^52 rounds to the integer k + 1.5 2^52, k in the low bits of its mantissa;
+/// r = x - k pi/2 as r + r_low (two-sum), r_low carried into the polynomials to first order.
+inline void sin_cos_pair(double_pair x, double_pair& s, double_pair& c) {
+  const double_pair shifted = x * 0x1.45f306dc9c883p-1 + 0x1.8p52;
+  const double_pair kd = shifted - 0x1.8p52;
+  uint64_pair k;
+  __builtin_memcpy(&k, &shifted, sizeof k);
+  const double_pair a = x - kd * 0x1.921fb544p+0, b = kd * 0x1.0b4611a6p-34;
+  const double_pair a_minus_b = a - b, b_rounded = a - a_minus_b;
+  const double_pair low = ((a - (a_minus_b + b_rounded)) + (b_rounded - b)) - kd * 0x1.3198a2e037073p-69;
+  const double_pair r = a_minus_b + low, r_low = low - (r - a_minus_b);
+  const double_pair z = r * r;
+  const double_pair sin_r = r + r * z * (-0x1.5555555555555p-3 + z * (0x1.1111111110bb2p-7 + z * (-0x1.a01a019e83aaep-13 +
+      z * (0x1.71de37968a100p-19 + z * (-0x1.ae600b02b6262p-26 + z * 0x1.5e0b19f8b1451p-33))))) + r_low * (1.0 - 0.5 * z);
+  const double_pair cos_r = (1.0 - 0.5 * z) + z * z * (0x1.5555555555555p-5 + z * (-0x1.6c16c16c16967p-10 +
+      z * (0x1.a01a019f4eb01p-16 + z * (-0x1.27e4fa17da09ep-22 + z * (0x1.1eeb68e93b64cp-29 + z * -0x1.907da367a37cbp-37))))) - r_low * r;
+  const uint64_pair odd = -(k & 1ULL);  // all bits set where k is odd
+  uint64_pair sin_bits, cos_bits;
+  __builtin_memcpy(&sin_bits, &sin_r, sizeof sin_bits);
+  __builtin_memcpy(&cos_bits, &cos_r, sizeof cos_bits);
+  const uint64_pair sin_k = ((cos_bits & odd) | (sin_bits & ~odd)) ^ ((k & 2ULL) << 62);
+  const uint64_pair cos_k = ((sin_bits & odd) | (cos_bits & ~odd)) ^ (((k + 1ULL) & 2ULL) << 62);
+  __builtin_memcpy(&s, &sin_k, sizeof s);
+  __builtin_memcpy(&c, &cos_k, sizeof c);
+}
+
+/// For double: two angles at a time by sin_cos_pair; std::sin and std::cos where |angle| >= 1e+06
+/// (the reduction's products would no longer be exact), for NaN, infinities and 0 (whose sign sin keeps).
+template <std::size_t N>
+inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
+  for (std::size_t i = 0; i + 1 < N; i += 2) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[i], angle[i + 1]}, sp, cp);
+    s[i] = sp[0]; s[i + 1] = sp[1]; c[i] = cp[0]; c[i + 1] = cp[1];
+  }
+  if constexpr (N % 2 == 1) {
+    double_pair sp, cp;
+    sin_cos_pair(double_pair{angle[N - 1], 0.0}, sp, cp);
+    s[N - 1] = sp[0]; c[N - 1] = cp[0];
+  }
+  for (std::size_t i = 0; i < N; ++i)
+    if (!(std::abs(angle[i]) < 1e+06) || angle[i] == 0.0) {
+      s[i] = std::sin(angle[i]);
+      c[i] = std::cos(angle[i]);
+    }
+}
+#endif
+
 /// M = L D L^T for the symmetric positive definite 8x8 mass matrix, unrolled.
 /// M, L: 8x8, row-major (L unit lower triangular, only below the diagonal written); D: 8.
 template <class T>
@@ -268,6 +335,19 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_mF = p[24];
   const T p_IFxx = p[25];
   const T p_IFyy = p[26];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   M[2] = T(0);
   M[16] = M[2];
   M[10] = T(0);
@@ -295,15 +375,15 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   M[27] = c1;
   M[36] = c1;
   const T c2 = p_c*p_mF + p_c*p_mH + p_mB*p_xB + p_mF*p_w + p_mH*p_w;
-  const T c3 = cos(q_theta);
-  const T c4 = sin(p_lambda);
+  const T c3 = cos_q_theta;
+  const T c4 = sin_p_lambda;
   const T c5 = c4*c4;
   const T c6 = c5*p_IFyy + c5*p_IHyy;
-  const T c7 = sin(q_theta);
+  const T c7 = sin_q_theta;
   const T c8 = c7*c7;
-  const T c9 = sin(q_delta);
+  const T c9 = sin_q_delta;
   const T c10 = c9*c9;
-  const T c11 = cos(p_lambda);
+  const T c11 = cos_p_lambda;
   const T c12 = T(2)*c11*c4*p_mH*p_rR*p_xH;
   const T c13 = c11*c11;
   const T c14 = -T(2)*c13*c5*p_c*p_mH*p_xH;
@@ -354,7 +434,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T c59 = c46 + c47 + c48 + c49 + c50 + c51 + c52 + c53 + c54 + c55 + c56 + c57 + c58;
   const T c60 = c11*c7 - c3*c4;
   const T c61 = -c11*p_c*p_mF - c11*p_c*p_mH - c11*p_mH*p_w + c11*p_mH*p_xH + c4*p_mF*p_rF - c4*p_mH*p_zH;
-  const T c62 = cos(q_delta);
+  const T c62 = cos_q_delta;
   M[55] = c62*p_IFyy;
   M[62] = M[55];
   const T c63 = c42*p_mH*p_xH*p_xH;
@@ -539,8 +619,8 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   M[1] = c217*c237*c62 - c223*c60 + c224*c62*c7 - c3*c61*c62*p_rR + c61*c62*p_rR;
   M[8] = M[1];
   const T c238 = c11*c4*p_mF*p_rF - c11*c4*p_mH*p_zH - c13*p_c*p_mF - c13*p_c*p_mH - c13*p_mH*p_w + c13*p_mH*p_xH;
-  const T c239 = sin(q_psi);
-  const T c240 = cos(q_phi);
+  const T c239 = sin_q_psi;
+  const T c240 = cos_q_phi;
   const T c241 = c11*c4*p_c*p_mH;
   const T c242 = -c11*c4*p_mH*p_xH;
   const T c243 = c11*c4*p_mH*p_w;
@@ -552,7 +632,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T c249 = p_mH*p_w;
   const T c250 = p_mB*p_xB;
   const T c251 = -c11*c4*p_mF*p_rF + c11*c4*p_mH*p_zH + c246 + c247 + c248 + c249 + c250 - c5*p_c*p_mF - c5*p_c*p_mH - c5*p_mH*p_w + c5*p_mH*p_xH;
-  const T c252 = sin(q_phi);
+  const T c252 = sin_q_phi;
   M[21] = c252*p_IRyy;
   M[42] = M[21];
   M[46] = -c240*c60*c9*p_IFyy + c252*c62*p_IFyy;
@@ -560,7 +640,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T c253 = c13*p_mF*p_rF - c13*p_mH*p_zH + c241 + c242 + c243 + c244 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR;
   M[3] = c1*c239*c240*p_rR - c238*c239*c240*c62*c7 - c239*c240*c245*c3*c62 - c239*c240*c251*c7 + c239*c240*c253*c3 - c239*c252*c61*c9;
   M[24] = M[3];
-  const T c254 = cos(q_psi);
+  const T c254 = cos_q_psi;
   M[4] = -c1*c240*c254*p_rR + c238*c240*c254*c62*c7 + c240*c245*c254*c3*c62 + c240*c251*c254*c7 - c240*c253*c254*c3 + c252*c254*c61*c9;
   M[32] = M[4];
   M[11] = c238*c239*c252*c7*c9 - c238*c254*c3*c9 + c239*c240*c61*c62 + c239*c245*c252*c3*c9 + c245*c254*c7*c9;
@@ -669,17 +749,30 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T p_IFyy = p[26];
   const T u_T_phi = u[0];
   const T u_T_delta = u[1];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   const T c0 = p_IFyy + p_IHyy;
   const T c1 = p_mB*p_rR + p_mB*p_zB + p_mF*p_rR + p_mH*p_rR;
   const T c2 = p_mB + p_mF + p_mH + p_mR;
   const T c3 = p_c*p_mF + p_c*p_mH + p_mB*p_xB + p_mF*p_w + p_mH*p_w;
-  const T c4 = sin(p_lambda);
-  const T c5 = cos(p_lambda);
+  const T c4 = sin_p_lambda;
+  const T c5 = cos_p_lambda;
   const T c6 = -c4*p_c*p_mF - c4*p_c*p_mH - c4*p_mH*p_w + c4*p_mH*p_xH - c5*p_mF*p_rF + c5*p_mH*p_zH;
-  const T c7 = cos(q_phi);
+  const T c7 = cos_q_phi;
   f[2] = -c7*dq_phi*dq_psi*p_IRyy;
-  const T c8 = sin(q_theta);
-  const T c9 = cos(q_theta);
+  const T c8 = sin_q_theta;
+  const T c9 = cos_q_theta;
   const T c10 = c4*c8 + c5*c9;
   const T c11 = c5*c5;
   const T c12 = -c11*p_c*p_mF*p_rF;
@@ -696,7 +789,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c23 = -c11*p_mH*p_xH*p_zH;
   const T c24 = c4*c5*p_mH*p_zH*p_zH;
   const T c25 = -T(2)*c4*c5*p_c*p_mH*p_w + T(2)*c4*c5*p_c*p_mH*p_xH + T(2)*c4*c5*p_mH*p_w*p_xH + c12 + c13*p_c*p_mF*p_rF - c13*p_c*p_mH*p_zH - c13*p_mH*p_w*p_zH + c14 + c15 + c16 + c17 + c18 + c19 + c20 + c21 + c22 + c23 + c24 - c4*c5*p_c*p_c*p_mF - c4*c5*p_c*p_c*p_mH - c4*c5*p_mH*p_w*p_w;
-  const T c26 = sin(q_delta);
+  const T c26 = sin_q_delta;
   const T c27 = -T(2)*c11*p_c*p_mH*p_w;
   const T c28 = -T(2)*c4*c5*p_c*p_mH*p_zH;
   const T c29 = -c11*p_c*p_c*p_mH;
@@ -712,7 +805,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c39 = T(2)*c4*c5*p_c*p_mF*p_rF;
   const T c40 = -c13*p_mH*p_zH*p_zH;
   const T c41 = -T(2)*c4*c5*p_mH*p_w*p_zH;
-  const T c42 = sin(q_phi);
+  const T c42 = sin_q_phi;
   const T c43 = c26*c26;
   const T c44 = T(4)*c4*c5*p_mH*p_rR*p_xH;
   const T c45 = -c11*c13*p_IHxx;
@@ -819,7 +912,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c146 = c4*c52*p_mH*p_xH*p_xH;
   const T c147 = T(2)*c11*c13*p_IHxz;
   const T c148 = c131 + c132 + c133 + c134 + c135 + c136 + c137 + c138 + c139 + c140 + c141 + c142 + c143 + c144 + c145 + c146 + c147 + c4*c5*p_IFyy + c4*c5*p_IHyy;
-  const T c149 = cos(q_delta);
+  const T c149 = cos_q_delta;
   const T c150 = -c4*c9 + c5*c8;
   f[6] = -c10*c149*dq_delta*dq_phi*p_IFyy + c10*c26*c7*dq_psi*dq_theta*p_IFyy + c149*c150*c7*dq_delta*dq_psi*p_IFyy - c149*c7*dq_phi*dq_psi*p_IFyy - c150*c26*c42*dq_phi*dq_psi*p_IFyy + c150*c26*dq_phi*dq_theta*p_IFyy + c26*c42*dq_delta*dq_psi*p_IFyy + c26*dq_delta*dq_theta*p_IFyy;
   const T c151 = -c11*p_c*p_mF*p_rR;
@@ -1101,10 +1194,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c425 = c4*c5*p_mH*p_w;
   const T c426 = c4*c5*p_c*p_mF;
   const T c427 = c11*p_mF*p_rF - c11*p_mH*p_zH + c423 + c424 + c425 + c426 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR;
-  const T c428 = sin(q_psi);
+  const T c428 = sin_q_psi;
   const T c429 = -c11*p_c*p_mF - c11*p_c*p_mH - c11*p_mH*p_w + c11*p_mH*p_xH + c4*c5*p_mF*p_rF - c4*c5*p_mH*p_zH;
   const T c430 = -c13*p_mF*p_rF + c13*p_mH*p_zH + c423 + c424 + c425 + c426;
-  const T c431 = cos(q_psi);
+  const T c431 = cos_q_psi;
   const T c432 = p_c*p_mF;
   const T c433 = p_mF*p_w;
   const T c434 = p_c*p_mH;
@@ -1219,15 +1312,28 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T p_mF = p[24];
   const T p_IFxx = p[25];
   const T p_IFyy = p[26];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   const T c0 = p_IFyy + p_IHyy;
   const T c1 = c0 - p_IFxx;
   const T c2 = p_mB*p_rR + p_mB*p_zB + p_mF*p_rR + p_mH*p_rR;
   const T c3 = p_mB + p_mF + p_mH + p_mR;
   const T c4 = p_c*p_mF + p_c*p_mH + p_mB*p_xB + p_mF*p_w + p_mH*p_w;
-  const T c5 = sin(q_theta);
-  const T c6 = cos(p_lambda);
-  const T c7 = sin(p_lambda);
-  const T c8 = cos(q_theta);
+  const T c5 = sin_q_theta;
+  const T c6 = cos_p_lambda;
+  const T c7 = sin_p_lambda;
+  const T c8 = cos_q_theta;
   const T c9 = c5*c6 - c7*c8;
   const T c10 = -c6*p_mF*p_rF + c6*p_mH*p_zH - c7*p_c*p_mF - c7*p_c*p_mH - c7*p_mH*p_w + c7*p_mH*p_xH;
   const T c11 = c6*c6;
@@ -1273,7 +1379,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c51 = -T(2)*c22*c6*p_c*p_mF*p_rF;
   const T c52 = -T(2)*c25*c7*p_mH*p_w*p_zH;
   const T c53 = c12 + c13 + c14 + c15 + c17 + c18 + c19 + c20 + c21 + c23 + c24 + c26 + c27 + c28 + c29 + c30 + c31 + c32 + c33 + c34 + c35 + c36 + c37 + c38 + c39 + c40 + c41 + c42 + c43 + c44 + c45 + c46 + c47 + c48 + c49 + c50 + c51 + c52;
-  const T c54 = cos(q_delta);
+  const T c54 = cos_q_delta;
   const T c55 = -T(4)*c6*c7*p_c*p_mH*p_zH;
   const T c56 = T(4)*c6*c7*p_mH*p_rR*p_xH;
   const T c57 = c7*c7*c7*c7;
@@ -1319,7 +1425,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c97 = T(2)*c11*c16*p_c*p_mH*p_w;
   const T c98 = c11*p_IFxx;
   const T c99 = c23 + c26 + c35 + c36 + c51 + c85 + c86 + c87 + c88 + c89 + c90 + c91 + c92 + c93 + c94 + c95 + c96 + c97 + c98;
-  const T c100 = sin(q_delta);
+  const T c100 = sin_q_delta;
   const T c101 = c8*c8;
   const T c102 = -c11*c16*p_IHxx;
   const T c103 = -c22*c6*p_mH*p_xH*p_zH;
@@ -1485,7 +1591,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c263 = c16*p_IHxx;
   const T c264 = c11*p_IHzz;
   const T c265 = c263 + c264;
-  const T c266 = cos(q_phi);
+  const T c266 = cos_q_phi;
   const T c267 = -T(2)*c100*c101*c258*c266*c54*dq_psi;
   const T c268 = T(2)*c100*c116*c164*c54*dq_phi;
   const T c269 = T(2)*c100*c266*c5*c53*c8*dq_psi;
@@ -1524,7 +1630,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c302 = -c11*p_mH*p_xH*p_zH;
   const T c303 = c6*c7*p_mH*p_zH*p_zH;
   const T c304 = -T(2)*c6*c7*p_c*p_mH*p_w + T(2)*c6*c7*p_c*p_mH*p_xH + T(2)*c6*c7*p_mH*p_w*p_xH + c16*p_c*p_mF*p_rF - c16*p_c*p_mH*p_zH - c16*p_mH*p_w*p_zH + c292 + c293 + c294 + c295 + c296 + c297 + c298 + c299 + c300 + c301 + c302 + c303 - c6*c7*p_c*p_c*p_mF - c6*c7*p_c*p_c*p_mH - c6*c7*p_mH*p_w*p_w;
-  const T c305 = sin(q_phi);
+  const T c305 = sin_q_phi;
   const T c306 = T(2)*c100*c116*c258*c266*c54*dq_psi;
   const T c307 = T(2)*p_IFxx + c281 + c287 - p_IFyy - p_IHyy;
   const T c308 = T(2)*c100*c101*c54*c99*dq_phi;
@@ -1783,7 +1889,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c561 = -T(2)*c100*c116*c335*c505*c54*dq_psi*dq_psi;
   const T c562 = c261*c266*c305*c54*c8*dq_psi*dq_psi;
   const T c563 = c266*dq_phi*p_IRyy;
-  const T c564 = cos(q_psi);
+  const T c564 = cos_q_psi;
   const T c565 = p_c*p_mF;
   const T c566 = p_mF*p_w;
   const T c567 = p_c*p_mH;
@@ -1795,7 +1901,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c573 = c6*c7*p_mH*p_w;
   const T c574 = c6*c7*p_c*p_mF;
   const T c575 = -c16*p_mF*p_rF + c16*p_mH*p_zH + c571 + c572 + c573 + c574;
-  const T c576 = sin(q_psi);
+  const T c576 = sin_q_psi;
   const T c577 = -c11*p_c*p_mF - c11*p_c*p_mH - c11*p_mH*p_w + c11*p_mH*p_xH + c6*c7*p_mF*p_rF - c6*c7*p_mH*p_zH;
   const T c578 = c11*p_mF*p_rF - c11*p_mH*p_zH + c571 + c572 + c573 + c574 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR;
   const T c579 = T(2)*c11*p_IFxx + c222 + c224 + c228 + c230 + c231 + c232 + c233 + c235 + c27 + c34 + c411 + c48 + c49 + c61 + c64 + c75 + c77 + c83;
@@ -2075,18 +2181,31 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T p_mF = p[24];
   const T p_IFxx = p[25];
   const T p_IFyy = p[26];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   const T c0 = p_mB*p_rR + p_mB*p_zB + p_mF*p_rR + p_mH*p_rR;
   const T c1 = p_mB + p_mF + p_mH + p_mR;
   const T c2 = p_c*p_mF + p_c*p_mH + p_mB*p_xB + p_mF*p_w + p_mH*p_w;
-  const T c3 = sin(p_lambda);
-  const T c4 = cos(p_lambda);
+  const T c3 = sin_p_lambda;
+  const T c4 = cos_p_lambda;
   const T c5 = -c3*p_c*p_mF - c3*p_c*p_mH - c3*p_mH*p_w + c3*p_mH*p_xH - c4*p_mF*p_rF + c4*p_mH*p_zH;
-  const T c6 = sin(q_phi);
-  const T c7 = sin(q_theta);
-  const T c8 = cos(q_theta);
+  const T c6 = sin_q_phi;
+  const T c7 = sin_q_theta;
+  const T c8 = cos_q_theta;
   const T c9 = c3*c7 + c4*c8;
-  const T c10 = sin(q_psi);
-  const T c11 = cos(q_phi);
+  const T c10 = sin_q_psi;
+  const T c11 = cos_q_phi;
   const T c12 = p_c*p_mF;
   const T c13 = p_mF*p_w;
   const T c14 = p_c*p_mH;
@@ -2095,7 +2214,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T c17 = p_mB*p_xB;
   const T c18 = c12 + c13 + c14 + c15 - c16*p_c*p_mF - c16*p_c*p_mH - c16*p_mH*p_w + c16*p_mH*p_xH + c17 - c3*c4*p_mF*p_rF + c3*c4*p_mH*p_zH;
   const T c19 = c3*p_mF*p_rF - c3*p_mH*p_zH - c4*p_c*p_mF - c4*p_c*p_mH - c4*p_mH*p_w + c4*p_mH*p_xH;
-  const T c20 = cos(q_delta);
+  const T c20 = cos_q_delta;
   const T c21 = c4*c4;
   const T c22 = -c21*p_c*p_mF - c21*p_c*p_mH - c21*p_mH*p_w + c21*p_mH*p_xH + c3*c4*p_mF*p_rF - c3*c4*p_mH*p_zH;
   const T c23 = c21*p_mH*p_w*p_w;
@@ -2109,9 +2228,9 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T c31 = -c3*c4*p_c*p_mF*p_rR;
   const T c32 = -c3*c4*p_mH*p_rR*p_w;
   const T c33 = c21*p_c*p_mF*p_w - c21*p_c*p_mH*p_xH - c21*p_mH*p_w*p_xH + c23 + c24 + c25 + c26 + c27 + c28 + c29 - c3*c4*p_c*p_mF*p_rF + c3*c4*p_c*p_mH*p_zH - c3*c4*p_mF*p_rF*p_w + c3*c4*p_mH*p_w*p_zH + c30 + c31 + c32;
-  const T c34 = cos(q_psi);
+  const T c34 = cos_q_psi;
   const T c35 = c6*c6;
-  const T c36 = sin(q_delta);
+  const T c36 = sin_q_delta;
   const T c37 = c36*c36;
   const T c38 = c16*p_IHzz;
   const T c39 = c21*p_IHxx;
@@ -2386,19 +2505,30 @@ T potential_energy(T t, const T* x, const T* p) {
   const T p_mH = p[18];
   const T p_rF = p[23];
   const T p_mF = p[24];
-  const T c0 = sin(p_lambda);
-  const T c1 = cos(p_lambda);
+  const T trig_angle[4] = {q_phi, q_delta, q_theta, p_lambda};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_theta = trig_sin[2];
+  const T cos_q_theta = trig_cos[2];
+  const T sin_p_lambda = trig_sin[3];
+  const T cos_p_lambda = trig_cos[3];
+  const T c0 = sin_p_lambda;
+  const T c1 = cos_p_lambda;
   const T c2 = c0*c1*p_c*p_mH;
   const T c3 = c0*c0;
   const T c4 = -c0*c1*p_mH*p_xH;
   const T c5 = c0*c1*p_mH*p_w;
   const T c6 = c0*c1*p_c*p_mF;
-  const T c7 = cos(q_phi);
-  const T c8 = cos(q_theta);
-  const T c9 = cos(q_delta);
-  const T c10 = sin(q_theta);
+  const T c7 = cos_q_phi;
+  const T c8 = cos_q_theta;
+  const T c9 = cos_q_delta;
+  const T c10 = sin_q_theta;
   const T c11 = c1*c1;
-  return (c0*c1*p_mF*p_rF - c0*c1*p_mH*p_zH + c3*p_c*p_mF + c3*p_c*p_mH + c3*p_mH*p_w - c3*p_mH*p_xH - p_c*p_mF - p_c*p_mH - p_mB*p_xB - p_mF*p_w - p_mH*p_w)*c10*c7*p_g - (c0*c1*p_mF*p_rF - c0*c1*p_mH*p_zH - c11*p_c*p_mF - c11*p_c*p_mH - c11*p_mH*p_w + c11*p_mH*p_xH)*c10*c7*c9*p_g - (c0*p_mF*p_rF - c0*p_mH*p_zH - c1*p_c*p_mF - c1*p_c*p_mH - c1*p_mH*p_w + c1*p_mH*p_xH)*p_g*sin(q_delta)*sin(q_phi) + (c11*p_mF*p_rF - c11*p_mH*p_zH + c2 + c4 + c5 + c6 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR)*c7*c8*p_g - (c2 - c3*p_mF*p_rF + c3*p_mH*p_zH + c4 + c5 + c6)*c7*c8*c9*p_g + (p_mB + p_mF + p_mH + p_mR)*c7*p_g*p_rR;
+  return (c0*c1*p_mF*p_rF - c0*c1*p_mH*p_zH + c3*p_c*p_mF + c3*p_c*p_mH + c3*p_mH*p_w - c3*p_mH*p_xH - p_c*p_mF - p_c*p_mH - p_mB*p_xB - p_mF*p_w - p_mH*p_w)*c10*c7*p_g - (c0*c1*p_mF*p_rF - c0*c1*p_mH*p_zH - c11*p_c*p_mF - c11*p_c*p_mH - c11*p_mH*p_w + c11*p_mH*p_xH)*c10*c7*c9*p_g - (c0*p_mF*p_rF - c0*p_mH*p_zH - c1*p_c*p_mF - c1*p_c*p_mH - c1*p_mH*p_w + c1*p_mH*p_xH)*p_g*sin_q_delta*sin_q_phi + (c11*p_mF*p_rF - c11*p_mH*p_zH + c2 + c4 + c5 + c6 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR)*c7*c8*p_g - (c2 - c3*p_mF*p_rF + c3*p_mH*p_zH + c4 + c5 + c6)*c7*c8*c9*p_g + (p_mB + p_mF + p_mH + p_mR)*c7*p_g*p_rR;
 }
 
 /// The model's [outputs], in output_names order. y: 3.
@@ -2442,24 +2572,37 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   const T p_lambda = p[3];
   const T p_rR = p[5];
   const T p_rF = p[23];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   const T c0 = p_c + p_w;
-  const T c1 = cos(q_psi);
-  const T c2 = sin(q_psi);
-  const T c3 = sin(q_theta);
-  const T c4 = sin(p_lambda);
-  const T c5 = cos(p_lambda);
+  const T c1 = cos_q_psi;
+  const T c2 = sin_q_psi;
+  const T c3 = sin_q_theta;
+  const T c4 = sin_p_lambda;
+  const T c5 = cos_p_lambda;
   const T c6 = c4*c5*p_rF;
   const T c7 = c5*c5;
   const T c8 = c6 - c7*p_c;
-  const T c9 = sin(q_phi);
-  const T c10 = cos(q_delta);
-  const T c11 = cos(q_theta);
+  const T c9 = sin_q_phi;
+  const T c10 = cos_q_delta;
+  const T c11 = cos_q_theta;
   const T c12 = c4*c4;
   const T c13 = c4*c5*p_c;
   const T c14 = -c12*p_rF + c13;
   const T c15 = -c11*c4 + c3*c5;
-  const T c16 = cos(q_phi);
-  const T c17 = sin(q_delta);
+  const T c16 = cos_q_phi;
+  const T c17 = sin_q_delta;
   const T c18 = c17*c17;
   const T c19 = c16*c16;
   const T c20 = c9*c9;
@@ -2529,23 +2672,36 @@ void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity)
   const T p_lambda = p[3];
   const T p_rR = p[5];
   const T p_rF = p[23];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   const T c0 = p_c + p_w;
-  const T c1 = cos(q_phi);
-  const T c2 = cos(p_lambda);
+  const T c1 = cos_q_phi;
+  const T c2 = cos_p_lambda;
   const T c3 = c2*c2;
-  const T c4 = sin(p_lambda);
+  const T c4 = sin_p_lambda;
   const T c5 = c2*c4*p_c;
   const T c6 = c3*p_rF + c5 - p_rR;
-  const T c7 = cos(q_theta);
-  const T c8 = sin(q_theta);
+  const T c7 = cos_q_theta;
+  const T c8 = sin_q_theta;
   const T c9 = c2*c4*p_rF;
   const T c10 = -c3*p_c + c9;
-  const T c11 = cos(q_delta);
+  const T c11 = cos_q_delta;
   const T c12 = c4*c4;
   const T c13 = -c12*p_rF + c5;
   const T c14 = c2*c8 - c4*c7;
-  const T c15 = sin(q_phi);
-  const T c16 = sin(q_delta);
+  const T c15 = sin_q_phi;
+  const T c16 = sin_q_delta;
   const T c17 = c16*c16;
   const T c18 = c1*c1;
   const T c19 = c15*c15;
@@ -2553,8 +2709,8 @@ void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity)
   const T c21 = -T(1) - T(2)*c1*c11*c14*c15*c16 + c14*c14*c17*c18 + c19*c20;
   const T c22 = c2*p_c - c4*p_rF;
   const T c23 = c12*p_c + c9 - p_c - p_w;
-  const T c24 = cos(q_psi);
-  const T c25 = sin(q_psi);
+  const T c24 = cos_q_psi;
+  const T c25 = sin_q_psi;
   const T c26 = T(1)/sqrt(-c21);
   const T c27 = c2*c7 + c4*c8;
   const T c28 = c2*p_rF + c4*p_c;
@@ -2629,22 +2785,35 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   const T p_IFyy = p[26];
   const T u_T_phi = u[0];
   const T u_T_delta = u[1];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   const T c0 = p_IFyy + p_IHyy;
   const T c1 = p_c + p_w;
   const T c2 = p_mB*p_rR + p_mB*p_zB + p_mF*p_rR + p_mH*p_rR;
   const T c3 = p_mB + p_mF + p_mH + p_mR;
   const T c4 = p_c*p_mF + p_c*p_mH + p_mB*p_xB + p_mF*p_w + p_mH*p_w;
-  const T c5 = cos(q_theta);
-  const T c6 = sin(p_lambda);
+  const T c5 = cos_q_theta;
+  const T c6 = sin_p_lambda;
   const T c7 = c6*c6;
   const T c8 = c7*p_IFyy;
   const T c9 = c7*p_IHyy;
   const T c10 = c8 + c9;
-  const T c11 = sin(q_theta);
+  const T c11 = sin_q_theta;
   const T c12 = c11*c11;
-  const T c13 = sin(q_delta);
+  const T c13 = sin_q_delta;
   const T c14 = c13*c13;
-  const T c15 = cos(p_lambda);
+  const T c15 = cos_p_lambda;
   const T c16 = T(2)*c15*c6*p_mH*p_rR*p_xH;
   const T c17 = c15*c15;
   const T c18 = -T(2)*c17*c7*p_c*p_mH*p_xH;
@@ -2695,7 +2864,7 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   const T c63 = c50 + c51 + c52 + c53 + c54 + c55 + c56 + c57 + c58 + c59 + c60 + c61 + c62;
   const T c64 = c11*c15 - c5*c6;
   const T c65 = -c15*p_c*p_mF - c15*p_c*p_mH - c15*p_mH*p_w + c15*p_mH*p_xH + c6*p_mF*p_rF - c6*p_mH*p_zH;
-  const T c66 = cos(q_delta);
+  const T c66 = cos_q_delta;
   const T c67 = c46*p_mH*p_xH*p_xH;
   const T c68 = -T(2)*c15*c6*p_mF*p_rF*p_w;
   const T c69 = T(2)*c15*c37*p_c*p_mF*p_rF;
@@ -2882,8 +3051,8 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   const T c250 = c15*c6*p_mH*p_zH*p_zH;
   const T c251 = -T(2)*c15*c6*p_c*p_mH*p_w + T(2)*c15*c6*p_c*p_mH*p_xH + T(2)*c15*c6*p_mH*p_w*p_xH - c15*c6*p_c*p_c*p_mF - c15*c6*p_c*p_c*p_mH - c15*c6*p_mH*p_w*p_w + c239 + c240 + c241 + c242 + c243 + c244 + c245 + c246 + c247 + c248 + c249 + c250 + c7*p_c*p_mF*p_rF - c7*p_c*p_mH*p_zH - c7*p_mH*p_w*p_zH;
   const T c252 = c15*c6*p_mF*p_rF - c15*c6*p_mH*p_zH - c17*p_c*p_mF - c17*p_c*p_mH - c17*p_mH*p_w + c17*p_mH*p_xH;
-  const T c253 = sin(q_psi);
-  const T c254 = cos(q_phi);
+  const T c253 = sin_q_psi;
+  const T c254 = cos_q_phi;
   const T c255 = c15*c6*p_c*p_mH;
   const T c256 = -c15*c6*p_mH*p_xH;
   const T c257 = c15*c6*p_mH*p_w;
@@ -2895,9 +3064,9 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   const T c263 = p_mH*p_w;
   const T c264 = p_mB*p_xB;
   const T c265 = -c15*c6*p_mF*p_rF + c15*c6*p_mH*p_zH + c260 + c261 + c262 + c263 + c264 - c7*p_c*p_mF - c7*p_c*p_mH - c7*p_mH*p_w + c7*p_mH*p_xH;
-  const T c266 = sin(q_phi);
+  const T c266 = sin_q_phi;
   const T c267 = c17*p_mF*p_rF - c17*p_mH*p_zH + c255 + c256 + c257 + c258 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR;
-  const T c268 = cos(q_psi);
+  const T c268 = cos_q_psi;
   const T c269 = -c7*p_IHyy;
   const T c270 = -c7*p_IFyy;
   const T c271 = -T(2)*c15*c6*p_c*p_mH*p_zH;
@@ -3395,23 +3564,36 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   const T p_IFyy = p[26];
   const T u_T_phi = u[0];
   const T u_T_delta = u[1];
+  const T trig_angle[5] = {q_phi, q_delta, q_psi, q_theta, p_lambda};
+  T trig_sin[5], trig_cos[5];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_delta = trig_sin[1];
+  const T cos_q_delta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  const T sin_q_theta = trig_sin[3];
+  const T cos_q_theta = trig_cos[3];
+  const T sin_p_lambda = trig_sin[4];
+  const T cos_p_lambda = trig_cos[4];
   T lambda[5];
   const T c0 = p_IFyy + p_IHyy;
   const T c1 = p_c + p_w;
   const T c2 = p_mB*p_rR + p_mB*p_zB + p_mF*p_rR + p_mH*p_rR;
   const T c3 = p_mB + p_mF + p_mH + p_mR;
   const T c4 = p_c*p_mF + p_c*p_mH + p_mB*p_xB + p_mF*p_w + p_mH*p_w;
-  const T c5 = cos(q_theta);
-  const T c6 = sin(p_lambda);
+  const T c5 = cos_q_theta;
+  const T c6 = sin_p_lambda;
   const T c7 = c6*c6;
   const T c8 = c7*p_IFyy;
   const T c9 = c7*p_IHyy;
   const T c10 = c8 + c9;
-  const T c11 = sin(q_theta);
+  const T c11 = sin_q_theta;
   const T c12 = c11*c11;
-  const T c13 = sin(q_delta);
+  const T c13 = sin_q_delta;
   const T c14 = c13*c13;
-  const T c15 = cos(p_lambda);
+  const T c15 = cos_p_lambda;
   const T c16 = T(2)*c15*c6*p_mH*p_rR*p_xH;
   const T c17 = c15*c15;
   const T c18 = -T(2)*c17*c7*p_c*p_mH*p_xH;
@@ -3462,7 +3644,7 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   const T c63 = c50 + c51 + c52 + c53 + c54 + c55 + c56 + c57 + c58 + c59 + c60 + c61 + c62;
   const T c64 = c11*c15 - c5*c6;
   const T c65 = -c15*p_c*p_mF - c15*p_c*p_mH - c15*p_mH*p_w + c15*p_mH*p_xH + c6*p_mF*p_rF - c6*p_mH*p_zH;
-  const T c66 = cos(q_delta);
+  const T c66 = cos_q_delta;
   const T c67 = c46*p_mH*p_xH*p_xH;
   const T c68 = -T(2)*c15*c6*p_mF*p_rF*p_w;
   const T c69 = T(2)*c15*c37*p_c*p_mF*p_rF;
@@ -3649,8 +3831,8 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   const T c250 = c15*c6*p_mH*p_zH*p_zH;
   const T c251 = -T(2)*c15*c6*p_c*p_mH*p_w + T(2)*c15*c6*p_c*p_mH*p_xH + T(2)*c15*c6*p_mH*p_w*p_xH - c15*c6*p_c*p_c*p_mF - c15*c6*p_c*p_c*p_mH - c15*c6*p_mH*p_w*p_w + c239 + c240 + c241 + c242 + c243 + c244 + c245 + c246 + c247 + c248 + c249 + c250 + c7*p_c*p_mF*p_rF - c7*p_c*p_mH*p_zH - c7*p_mH*p_w*p_zH;
   const T c252 = c15*c6*p_mF*p_rF - c15*c6*p_mH*p_zH - c17*p_c*p_mF - c17*p_c*p_mH - c17*p_mH*p_w + c17*p_mH*p_xH;
-  const T c253 = sin(q_psi);
-  const T c254 = cos(q_phi);
+  const T c253 = sin_q_psi;
+  const T c254 = cos_q_phi;
   const T c255 = c15*c6*p_c*p_mH;
   const T c256 = -c15*c6*p_mH*p_xH;
   const T c257 = c15*c6*p_mH*p_w;
@@ -3662,9 +3844,9 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   const T c263 = p_mH*p_w;
   const T c264 = p_mB*p_xB;
   const T c265 = -c15*c6*p_mF*p_rF + c15*c6*p_mH*p_zH + c260 + c261 + c262 + c263 + c264 - c7*p_c*p_mF - c7*p_c*p_mH - c7*p_mH*p_w + c7*p_mH*p_xH;
-  const T c266 = sin(q_phi);
+  const T c266 = sin_q_phi;
   const T c267 = c17*p_mF*p_rF - c17*p_mH*p_zH + c255 + c256 + c257 + c258 - p_mB*p_rR - p_mB*p_zB - p_mF*p_rR - p_mH*p_rR;
-  const T c268 = cos(q_psi);
+  const T c268 = cos_q_psi;
   const T c269 = -c7*p_IHyy;
   const T c270 = -c7*p_IFyy;
   const T c271 = -T(2)*c15*c6*p_c*p_mH*p_zH;

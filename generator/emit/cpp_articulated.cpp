@@ -254,7 +254,7 @@ void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std:
       auto step = layout.step_index.find(s);
       if (step == layout.step_index.end()) return w.name_of(s);
       return steps[step->second]->cpp_name + (layout.arrays.count(s) ? "[k]" : "");
-    });
+    }, [&](const ex& call) { return w.batched_trig(call); });
   };
   std::size_t B = column_block(count);
   w.line(fmt::format("for (std::size_t block = 0; block < {}; block += {}) {{", count, B));

@@ -62,7 +62,8 @@ BodyWriter::BodyWriter(const Equations& e)
     accelerations_.push_back(i < e.acceleration_symbols.size() ? e.acceleration_symbols[i] : GiNaC::symbol(fmt::format("ddq{}", i)));
   // every symbol's C++ name, looked up once per printed symbol
   names_[s.time] = "t";
-  for (const Input& in : inputs_) names_[in.symbol] = in.name;
+  angle_inputs_.insert(s.time);
+  for (const Input& in : inputs_) names_[in.symbol] = in.name, angle_inputs_.insert(in.symbol);
   for (std::size_t i = 0; i < k; ++i) names_[accelerations_[i]] = fmt::format("ddq[{}]", i);
   intermediate_written_.assign(intermediates_.size(), false);
 }
@@ -165,6 +166,36 @@ CseBatch BodyWriter::write_intermediates_of(const std::vector<ex>& expressions) 
   return written;
 }
 
+std::string BodyWriter::batched_trig(const ex& call) {
+  bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(call);
+  if ((!is_sin && !GiNaC::is_the_function<GiNaC::cos_SERIAL>(call)) || !angle_inputs_.count(call.op(0))) return "";
+  std::pair<bool, bool>& used = trig_used_[call.op(0)];
+  (is_sin ? used.first : used.second) = true;
+  return (is_sin ? "sin_" : "cos_") + names_.at(call.op(0));
+}
+
+// the angles in the order of the function's arguments (not of first use, which follows GiNaC's
+// order of terms and so changes between processes)
+std::string BodyWriter::batched_trig_statements() const {
+  std::vector<std::pair<ex, std::pair<bool, bool>>> angles;
+  auto add = [&](const ex& symbol) {
+    if (auto found = trig_used_.find(symbol); found != trig_used_.end()) angles.push_back(*found);
+  };
+  add(equations_.symbols.time);
+  for (const Input& in : inputs_) add(in.symbol);
+  if (angles.empty()) return "";
+  std::string list, values;
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    const std::string& name = names_.at(angles[i].first);
+    list += (i ? ", " : "") + name;
+    if (angles[i].second.first) values += fmt::format("  const T sin_{} = trig_sin[{}];\n", name, i);
+    if (angles[i].second.second) values += fmt::format("  const T cos_{} = trig_cos[{}];\n", name, i);
+  }
+  return fmt::format("  const T trig_angle[{0}] = {{{1}}};\n  T trig_sin[{0}], trig_cos[{0}];\n"
+                     "  detail::sin_cos(trig_angle, trig_sin, trig_cos);\n{2}",
+                     angles.size(), list, values);
+}
+
 std::string BodyWriter::name_of(const GiNaC::symbol& symbol) const {
   auto found = names_.find(symbol);
   return found != names_.end() ? found->second : symbol.get_name();
@@ -260,7 +291,7 @@ std::string BodyWriter::finish(const std::string& unused) {
   if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
   for (const auto& in : inputs_)
     if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
-  return head + statements_;
+  return head + batched_trig_statements() + statements_;
 }
 
 void BodyWriter::note(const ex& e) {
@@ -269,11 +300,14 @@ void BodyWriter::note(const ex& e) {
 }
 
 std::string BodyWriter::code(const ex& e) {
-  return cpp_expression(e, [this](const GiNaC::symbol& s) -> std::string {
-    auto found = names_.find(s);
-    if (found != names_.end()) return found->second;
-    throw std::runtime_error("no C++ name for symbol " + s.get_name());
-  });
+  return cpp_expression(
+      e,
+      [this](const GiNaC::symbol& s) -> std::string {
+        auto found = names_.find(s);
+        if (found != names_.end()) return found->second;
+        throw std::runtime_error("no C++ name for symbol " + s.get_name());
+      },
+      [this](const ex& call) { return batched_trig(call); });
 }
 
 std::vector<ex> upper_triangle(const GiNaC::matrix& M, std::size_t n) {

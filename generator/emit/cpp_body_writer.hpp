@@ -51,6 +51,10 @@ class BodyWriter {
   CseBatch write_intermediates_of(const std::vector<GiNaC::ex>& expressions);
   /// The C++ name a symbol is printed as.
   std::string name_of(const GiNaC::symbol& symbol) const;
+  /// For sin or cos of one of the function's inputs (a coordinate, parameter, input or t): the
+  /// name of its value, sin_q_phi say, which detail::sin_cos computes at the start of the
+  /// function, all angles at once (two at a time for double). "" for any other call.
+  std::string batched_trig(const GiNaC::ex& call);
   /// Solves M der(q) = p − b now (once); the factors are then in Lv and Dv.
   void solve_velocities();
   void line(const std::string& text) { statements_ += "  " + text + "\n"; }
@@ -72,6 +76,10 @@ class BodyWriter {
   const Equations& equations_;
   bool velocities_solved_ = false;
   std::vector<Input> inputs_;
+  GiNaC::exset angle_inputs_;  // the symbols whose sin and cos may be batched
+  // those batched, and whether their sin and their cos are used
+  std::map<GiNaC::ex, std::pair<bool, bool>, GiNaC::ex_is_less> trig_used_;
+  std::string batched_trig_statements() const;
   std::vector<GiNaC::symbol> accelerations_;
   std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_;
   GiNaC::exset used_;

@@ -32,7 +32,9 @@ std::string text_of(const GiNaC::numeric& n) {
 
 class CppPrinter {
  public:
-  explicit CppPrinter(const std::function<std::string(const GiNaC::symbol&)>& name_of) : name_of_(name_of) {}
+  CppPrinter(const std::function<std::string(const GiNaC::symbol&)>& name_of,
+             const std::function<std::string(const ex&)>& name_of_call)
+      : name_of_(name_of), name_of_call_(name_of_call) {}
 
   Code print(const ex& e) const {
     if (GiNaC::is_a<GiNaC::numeric>(e)) return number(GiNaC::ex_to<GiNaC::numeric>(e));
@@ -146,6 +148,8 @@ class CppPrinter {
   }
 
   Code call(const ex& e) const {
+    if (name_of_call_)
+      if (std::string computed = name_of_call_(e); !computed.empty()) return {computed, 4};
     std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     static const std::vector<std::string> known = {"sin", "cos",  "tan",  "asin", "acos", "atan", "atan2",
                                                    "sinh", "cosh", "tanh", "exp", "log", "abs"};
@@ -157,12 +161,14 @@ class CppPrinter {
   }
 
   const std::function<std::string(const GiNaC::symbol&)>& name_of_;
+  const std::function<std::string(const ex&)>& name_of_call_;
 };
 
 }  // namespace
 
-std::string cpp_expression(const ex& e, const std::function<std::string(const GiNaC::symbol&)>& name_of) {
-  return CppPrinter(name_of).print(e).text;
+std::string cpp_expression(const ex& e, const std::function<std::string(const GiNaC::symbol&)>& name_of,
+                           const std::function<std::string(const ex&)>& name_of_call) {
+  return CppPrinter(name_of, name_of_call).print(e).text;
 }
 
 }  // namespace eomgen

@@ -10,6 +10,7 @@
 #include "emit/cpp_constraints.hpp"
 #include "emit/cpp_expression.hpp"
 #include "emit/cpp_ldlt.hpp"
+#include "emit/cpp_trig.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
 #include "emit/tangent_sweep.hpp"
@@ -354,15 +355,17 @@ std::string first_integrals_function(const Equations& e) {
                         w.finish("(void)t; (void)x; (void)p; (void)out;"));
 }
 
-// the detail namespace: the input type that keeps u out of deducing T, and the LDLᵀ of M (which a
-// model solved by the articulated-body recursion does not use: its functions take M⁻¹ from the tree)
-std::string detail_functions(std::size_t n, bool with_ldlt) {
+// the detail namespace: the input type that keeps u out of deducing T, the batched sin and cos when a
+// function uses them, and the LDLᵀ of M (which a model solved by the articulated-body recursion does
+// not use: its functions take M⁻¹ from the tree)
+std::string detail_functions(std::size_t n, bool with_ldlt, bool with_sin_cos) {
   std::string out =
       "namespace detail {\n\n"
       "/// The input pointer does not take part in deducing T, so a model without\n"
       "/// inputs can be called with u = nullptr.\n"
       "template <class T>\nstruct input_type {\n  using type = T;\n};\n"
       "template <class T>\nusing input_t = typename input_type<T>::type;\n\n";
+  if (with_sin_cos) out += sin_cos_function();
   if (with_ldlt) {
     LdltCode ldlt = ldlt_code(n);
     out += fmt::format(
@@ -472,19 +475,20 @@ std::string emit_cpp_header(const Equations& e) {
       "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
       members, values);
   out += constraint_declarations(e);
-  out += detail_functions(k, e.articulated_accelerations.empty());
-  out += constrained_solver(e);
-  out += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
-         jacobian_input_function(e) + linearization_function(e);
-  out += e.articulated_accelerations.empty()
-             ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
-                               "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n")
-             : articulated_kinetic_energy_function(e);
-  out += scalar_function(e, "potential_energy", e.potential_energy,
-                         "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
-  out += outputs_function(e);
-  out += first_integrals_function(e);
-  out += constraint_functions(e);
+  std::string functions = constrained_solver(e);
+  functions += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
+               jacobian_input_function(e) + linearization_function(e);
+  functions += e.articulated_accelerations.empty()
+                   ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
+                                     "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n")
+                   : articulated_kinetic_energy_function(e);
+  functions += scalar_function(e, "potential_energy", e.potential_energy,
+                               "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
+  functions += outputs_function(e);
+  functions += first_integrals_function(e);
+  functions += constraint_functions(e);
+  out += detail_functions(k, e.articulated_accelerations.empty(), functions.find("detail::sin_cos(") != std::string::npos);
+  out += functions;
   out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
   return out;
 }

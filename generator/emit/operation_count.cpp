@@ -26,6 +26,8 @@ long count_operations(const std::string& header, const std::string& function, st
     std::size_t eq = text.find(" = ");
     if (eq == std::string::npos) continue;
     const std::string value = text.substr(eq + 3);
+    // a sine or cosine that detail::sin_cos computed with the function's other angles
+    if (value.rfind("trig_sin[", 0) == 0 || value.rfind("trig_cos[", 0) == 0) count += operations_per_function;
     for (std::size_t i = 0; i < value.size(); ++i) {
       char c = value[i];
       bool unary = c == '-' && (i + 1 == value.size() || value[i + 1] != ' ');  // the printer writes binary minus as " - "

@@ -1,5 +1,6 @@
 /// @file The cost of a generated function, counted in its text: arithmetic operators, one
-/// operation each, elementary function calls (sin, sqrt, …), ten each, and the dense LDLᵀ factorization and
+/// operation each, elementary function calls (sin, sqrt, …, and each sine or cosine taken from
+/// detail::sin_cos), ten each, and the dense LDLᵀ factorization and
 /// solves it calls (n³/6 + n² and 2n² multiply-adds). A measure that does not depend on the
 /// machine, for comparing models of one system (eomgen scene).
 #pragma once

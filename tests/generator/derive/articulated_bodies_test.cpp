@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "derive/articulated_bodies.hpp"
 #include "pipeline.hpp"
 #include "support/test_support.hpp"
 
@@ -218,8 +219,8 @@ TEST(ArticulatedBodies, VariantsOfATreeKeepTheRecursionOrFallBack) {
 }
 
 TEST(ArticulatedBodies, AutoChoosesTheRecursionForLongTrees) {
-  EXPECT_TRUE(test::derive_text(planar_chain(8, "auto")).articulated_accelerations.empty());
-  EXPECT_FALSE(test::derive_text(planar_chain(9, "auto")).articulated_accelerations.empty());
+  EXPECT_TRUE(test::derive_text(planar_chain(static_cast<int>(articulated_crossover) - 1, "auto")).articulated_accelerations.empty());
+  EXPECT_FALSE(test::derive_text(planar_chain(static_cast<int>(articulated_crossover), "auto")).articulated_accelerations.empty());
   EXPECT_TRUE(test::derive_text(planar_chain(12, "mass_matrix")).articulated_accelerations.empty());
   EXPECT_TRUE(test::derive_model("n_link_pendulum_4").articulated_accelerations.empty());
 }
