@@ -132,7 +132,7 @@ inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
     s[N - 1] = sp[0]; c[N - 1] = cp[0];
   }
   for (std::size_t i = 0; i < N; ++i)
-    if (!(std::abs(angle[i]) < 1e+06) || angle[i] == 0.0) {
+    if (!(std::abs(angle[i]) > 0.0 && std::abs(angle[i]) < 1e+06)) {  // no == on doubles: -Wfloat-equal
       s[i] = std::sin(angle[i]);
       c[i] = std::cos(angle[i]);
     }

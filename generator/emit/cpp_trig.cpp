@@ -67,7 +67,7 @@ std::string sin_cos_function() {
       "    s[N - 1] = sp[0]; c[N - 1] = cp[0];\n"
       "  }}\n"
       "  for (std::size_t i = 0; i < N; ++i)\n"
-      "    if (!(std::abs(angle[i]) < {0:g}) || angle[i] == 0.0) {{\n"
+      "    if (!(std::abs(angle[i]) > 0.0 && std::abs(angle[i]) < {0:g})) {{  // no == on doubles: -Wfloat-equal\n"
       "      s[i] = std::sin(angle[i]);\n"
       "      c[i] = std::cos(angle[i]);\n"
       "    }}\n"
