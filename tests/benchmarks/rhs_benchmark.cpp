@@ -8,7 +8,6 @@
 // -DJACOBIAN=0 leaves the Jacobian out (long chains, whose dense jacobian_state takes minutes to compile).
 // Built by peer_benchmark.py: c++ -O2 -DMODEL=NAME [-DOTHER=NAME2] -DPLANAR=0|1 -I DIR rhs_benchmark.cpp -lmujoco
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -16,6 +15,8 @@
 
 #include <Eigen/Dense>
 #include <mujoco/mujoco.h>
+
+#include "batch_timing.hpp"
 
 #ifndef JACOBIAN
 #define JACOBIAN 1
@@ -56,18 +57,6 @@ struct HandWritten {
     for (int i = 0; i < n; ++i) xdot[i] = x[n + i];
   }
 };
-
-template <class F>
-double time_batch(F&& call, int calls) {
-  auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < calls; ++i) call();
-  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / calls;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 int main(int argc, char** argv) {
   if (argc < 2) return 2;

@@ -2,29 +2,16 @@
 // the same angles, in one process with interleaved repetitions and medians, for as many angles as a
 // function of a 1-, 2-, 8- and 30-link chain takes. Prints a Markdown table with the ratio.
 // Built by tests/benchmarks/run: c++ -O2 -std=c++17 -I generated sin_cos_benchmark.cpp; --quick: few repetitions.
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <random>
 #include <vector>
 
+#include "batch_timing.hpp"
 #include "double_pendulum.hpp"
 
 namespace detail = eomgen::models::double_pendulum::detail;
-
-template <class F>
-double nanoseconds_per_call(F&& call, int calls) {
-  auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < calls; ++i) call();
-  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / calls;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 volatile double sink;
 
@@ -36,12 +23,12 @@ void row(int repetitions, std::mt19937& random) {
   std::vector<double> batched, library;
   const int calls = 20000;
   for (int r = 0; r < repetitions; ++r) {
-    batched.push_back(nanoseconds_per_call([&] {
+    batched.push_back(time_batch([&] {
       detail::sin_cos(angle, s, c);
       sink = s[N - 1] + c[0];
       angle[0] = angle[0] + 1e-300;  // a new argument each call: nothing to hoist
     }, calls));
-    library.push_back(nanoseconds_per_call([&] {
+    library.push_back(time_batch([&] {
       for (std::size_t i = 0; i < N; ++i) {
         s[i] = std::sin(angle[i]);
         c[i] = std::cos(angle[i]);
