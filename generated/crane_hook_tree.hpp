@@ -212,13 +212,14 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   axis[1][1] = ab0_S11;
   axis[0][2] = ab0_S20;
   for (std::size_t j = 0; j < 4; ++j)
-    for (std::size_t l = 0; l < 4; ++l) {
+    for (std::size_t l = j; l < 4; ++l) {
       const int k = coupling[j * 4 + l];
       if (k < 0) {
         M[j * 4 + l] = T(0);
       } else {
         M[j * 4 + l] = mass[k] * (axis[j][0] * axis[l][0] + axis[j][1] * axis[l][1] + axis[j][2] * axis[l][2]);
       }
+      M[l * 4 + j] = M[j * 4 + l];
     }
 }
 

@@ -86,13 +86,14 @@ class TreeArrays {
 };
 
 // the loop over the coupled pairs (j, l), k the particle whose subtree's mass couples them
-std::string coupled_pairs_loop(std::size_t n, const std::string& zero, const std::string& coupled) {
+std::string coupled_pairs_loop(std::size_t n, const std::string& zero, const std::string& coupled,
+                               const std::string& mirror = "") {
   return fmt::format("for (std::size_t j = 0; j < {0}; ++j)\n"
-                     "    for (std::size_t l = 0; l < {0}; ++l) {{\n"
+                     "    for (std::size_t l = {3}; l < {0}; ++l) {{\n"
                      "      const int k = coupling[j * {0} + l];\n"
-                     "      if (k < 0) {{\n        {1}\n      }} else {{\n        {2}\n      }}\n"
+                     "      if (k < 0) {{\n        {1}\n      }} else {{\n        {2}\n      }}\n{4}"
                      "    }}",
-                     n, zero, coupled);
+                     n, zero, coupled, mirror.empty() ? "0" : "j", mirror.empty() ? "" : "      " + mirror + "\n");
 }
 
 // ∂τ/∂(q, q', u), τ = M(q) q'' − f(q, q', u) with q'' held: the coupled terms m̄ S_j · ∂d''/∂x in a
@@ -141,8 +142,10 @@ std::string articulated_mass_matrix_function(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates();
   BodyWriter w(e);
   TreeArrays arrays(w, e.articulated_inverse_dynamics, false);
+  // the upper triangle, mirrored: M is symmetric, and the coupling with it
   w.line(coupled_pairs_loop(n, fmt::format("M[j * {} + l] = T(0);", n),
-                            fmt::format("M[j * {} + l] = mass[k] * {};", n, arrays.dot("axis", "j", "axis", "l"))));
+                            fmt::format("M[j * {} + l] = mass[k] * {};", n, arrays.dot("axis", "j", "axis", "l")),
+                            fmt::format("M[l * {0} + j] = M[j * {0} + l];", n)));
   return function(fmt::format("/// Mass matrix M(q) of M q'' = f, symmetric positive definite: M_jl = m S_j . S_l over the\n"
                               "/// particles' tree (S_j = dr/dq_j, m the mass below the deeper of the two joints).\n"
                               "/// x: num_states; p: num_parameters; M: {0}x{0}, row-major.\n", n),
