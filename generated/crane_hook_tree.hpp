@@ -603,8 +603,8 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
 }  // namespace detail
 
 /// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx
-/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 column by column by the
-/// articulated-body recursion. J: 8x8, row-major.
+/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 by the articulated-body
+/// recursion, a block of columns at a time. J: 8x8, row-major.
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;

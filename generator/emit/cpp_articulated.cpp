@@ -288,8 +288,8 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   write_solved_columns(w, e, W, 0, N, "J", [&](std::size_t i) { return (n + i) * N; });
   return inverse_dynamics_gradient_function(e) +
          function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx\n"
-                              "/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 column by column by the\n"
-                              "/// articulated-body recursion. J: {0}x{0}, row-major.\n",
+                              "/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 by the articulated-body\n"
+                              "/// recursion, a block of columns at a time. J: {0}x{0}, row-major.\n",
                               N),
                   "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
 }
