@@ -2,7 +2,8 @@
 // crane_hook_tree: Crane hook carrying two swinging loads (method lagrange2, 4 degrees of freedom).
 // Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].
 // Forward dynamics: rhs solves for q'' by the articulated-body recursion of the particles' tree (O(n));
-// mass_matrix, forcing and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 by the recursion, in blocks of columns).
+// mass_matrix, forcing and jacobian_state use the same tree (M_jl = m S_j . S_l; jacobian_state entry by entry from the
+// recursion's factors, O(1) operations each, without M^-1).
 #pragma once
 
 #include <array>
@@ -602,9 +603,10 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
 
 }  // namespace detail
 
-/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx
-/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 by the articulated-body
-/// recursion, a block of columns at a time. J: 8x8, row-major.
+/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block -M^-1 d tau/dx
+/// (tau = M q'' - f, q'' held, from rhs) entry by entry, each column a field and a force on
+/// the particles' tree, carried to each coordinate by the articulated-body factors
+/// (O(1) operations per entry, without M^-1). J: 8x8, row-major.
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
@@ -615,12 +617,19 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T q_psi = x[1];
   const T q_a = x[2];
   const T q_b = x[3];
+  const T dq_theta = x[4];
+  const T dq_psi = x[5];
+  const T dq_a = x[6];
+  const T dq_b = x[7];
   const T p_m0 = p[0];
   const T p_m1 = p[1];
   const T p_m2 = p[2];
   const T p_L = p[3];
   const T p_l1 = p[4];
   const T p_l2 = p[5];
+  const T p_g = p[6];
+  const T p_c = p[7];
+  const T u_F = u[0];
   const T trig_angle[4] = {q_theta, q_psi, q_a, q_b};
   T trig_sin[4], trig_cos[4];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
@@ -634,83 +643,256 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T cos_q_b = trig_cos[3];
   T xdot[8];
   rhs(t, x, u, p, xdot);
-  T F[36];
-  detail::inverse_dynamics_gradient(t, x, xdot + 4, u, p, F);
-  for (std::size_t i = 0; i < 4; ++i)
-    for (std::size_t j = 0; j < 8; ++j) J[i * 8 + j] = T(j == 4 + i ? 1 : 0);
-  const T c0 = cos_q_psi;
-  const T c1 = cos_q_theta;
-  const T c2 = sin_q_theta;
-  const T c3 = sin_q_psi;
-  const T ab2_S10 = cos_q_b*p_l2;
-  const T ab2_S20 = p_l2*sin_q_b;
-  const T ab1_S00 = cos_q_a*p_l1;
-  const T ab1_S20 = p_l1*sin_q_a;
-  const T ab0_S00 = c0*c1*p_L;
-  const T ab0_S01 = -c2*c3*p_L;
-  const T ab0_S10 = c1*c3*p_L;
-  const T ab0_S11 = c0*c2*p_L;
-  const T ab0_S20 = c2*p_L;
-  const T ab2_U10 = ab2_S10*p_m2;
-  const T ab2_U20 = ab2_S20*p_m2;
-  const T ab1_U00 = ab1_S00*p_m1;
-  const T ab1_U20 = ab1_S20*p_m1;
-  const T ab2_D00 = ab2_S10*ab2_U10 + ab2_S20*ab2_U20;
-  const T ab1_D00 = ab1_S00*ab1_U00 + ab1_S20*ab1_U20;
-  const T ab2_Di00 = T(1)/ab2_D00;
-  const T ab1_Di00 = T(1)/ab1_D00;
-  const T ab2_W10 = ab2_Di00*ab2_U10;
-  const T ab2_W20 = ab2_Di00*ab2_U20;
-  const T ab1_W00 = ab1_Di00*ab1_U00;
-  const T ab1_W20 = ab1_Di00*ab1_U20;
-  const T ab2_Ia11 = -ab2_U10*ab2_W10 + p_m2;
-  const T ab2_Ia12 = -ab2_U20*ab2_W10;
-  const T ab2_Ia22 = -ab2_U20*ab2_W20 + p_m2;
-  const T ab1_Ia00 = -ab1_U00*ab1_W00 + p_m1;
-  const T ab1_Ia02 = -ab1_U20*ab1_W00;
-  const T ab1_Ia22 = -ab1_U20*ab1_W20 + p_m1;
-  const T ab0_I00 = ab1_Ia00 + p_m0 + p_m2;
-  const T ab0_I11 = ab2_Ia11 + p_m0 + p_m1;
-  const T ab0_I22 = ab1_Ia22 + ab2_Ia22 + p_m0;
-  const T ab0_U21 = ab0_S01*ab1_Ia02 + ab0_S11*ab2_Ia12;
-  const T ab0_U00 = ab0_I00*ab0_S00 + ab0_S20*ab1_Ia02;
-  const T ab0_U01 = ab0_I00*ab0_S01;
-  const T ab0_U10 = ab0_I11*ab0_S10 + ab0_S20*ab2_Ia12;
-  const T ab0_U11 = ab0_I11*ab0_S11;
-  const T ab0_U20 = ab0_I22*ab0_S20 + ab0_S00*ab1_Ia02 + ab0_S10*ab2_Ia12;
-  const T ab0_D00 = ab0_S00*ab0_U00 + ab0_S10*ab0_U10 + ab0_S20*ab0_U20;
-  const T ab0_D01 = ab0_S00*ab0_U01 + ab0_S10*ab0_U11 + ab0_S20*ab0_U21;
-  const T ab0_D11 = ab0_S01*ab0_U01 + ab0_S11*ab0_U11;
-  const T ab0_Di00 = ab0_D11/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
-  const T ab0_Di01 = -ab0_D01/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
-  const T ab0_Di11 = ab0_D00/(ab0_D00*ab0_D11 - ab0_D01*ab0_D01);
-  for (std::size_t block = 0; block < 8; block += 8) {
-    const std::size_t c = block;
-    T ab0_bddq0[8];
-    T ab0_bddq1[8];
-    T ab1_bddq0[8];
-    T ab2_bddq0[8];
-    for (std::size_t k = 0; k < 8; ++k) {
-      const T ab0_bp0 = F[18 + c + k]*ab1_W00;
-      const T ab0_bp1 = F[27 + c + k]*ab2_W10;
-      const T ab0_bp2 = F[18 + c + k]*ab1_W20 + F[27 + c + k]*ab2_W20;
-      const T ab0_bu0 = F[0 + c + k] - ab0_S00*ab0_bp0 - ab0_S10*ab0_bp1 - ab0_S20*ab0_bp2;
-      const T ab0_bu1 = F[9 + c + k] - ab0_S01*ab0_bp0 - ab0_S11*ab0_bp1;
-      ab0_bddq0[k] = ab0_Di00*ab0_bu0 + ab0_Di01*ab0_bu1;
-      ab0_bddq1[k] = ab0_Di01*ab0_bu0 + ab0_Di11*ab0_bu1;
-      const T ab0_ba0 = ab0_S00*ab0_bddq0[k] + ab0_S01*ab0_bddq1[k];
-      const T ab0_ba1 = ab0_S10*ab0_bddq0[k] + ab0_S11*ab0_bddq1[k];
-      const T ab0_ba2 = ab0_S20*ab0_bddq0[k];
-      ab1_bddq0[k] = (F[18 + c + k] - ab0_ba0*ab1_U00 - ab0_ba2*ab1_U20)*ab1_Di00;
-      ab2_bddq0[k] = (F[27 + c + k] - ab0_ba1*ab2_U10 - ab0_ba2*ab2_U20)*ab2_Di00;
-    }
-    for (std::size_t k = 0; k < 8; ++k) {
-      J[32 + c + k] = -ab0_bddq0[k];
-      J[40 + c + k] = -ab0_bddq1[k];
-      J[48 + c + k] = -ab1_bddq0[k];
-      J[56 + c + k] = -ab2_bddq0[k];
+  const T* const ddq = xdot + 4;
+  (void)ddq;
+  static constexpr int parent[4] = {-1, 0, 1, 1};
+  static constexpr int coordinate[4] = {0, 1, 2, 3};
+  static constexpr int first_load[5] = {0, 1, 5, 7, 9};
+  static constexpr int load_node[9] = {0, 1, 1, 1, 1, 2, 2, 3, 3};
+  static constexpr int load_column[9] = {-1, 0, 4, 1, 5, 2, 6, 3, 7};
+  static constexpr bool branching[4] = {0, 1, 0, 0};
+  T axis[4][3], carried[4], field[9][3], own_force[9];
+  T rest_value[2];
+  const T c0 = cos_q_b;
+  const T c1 = sin_q_b;
+  const T c2 = c0*dq_b*dq_b*p_l2;
+  const T c3 = cos_q_a;
+  const T c4 = sin_q_a;
+  const T c5 = c3*dq_a*dq_a*p_l1;
+  const T c6 = cos_q_psi;
+  const T c7 = cos_q_theta;
+  const T c8 = sin_q_theta;
+  const T c9 = sin_q_psi;
+  const T c10 = c6*c8*dq_psi*p_L + c7*c9*dq_theta*p_L;
+  const T c11 = c10*dq_psi;
+  const T c12 = c6*c8*dq_theta*p_L + c7*c9*dq_psi*p_L;
+  const T c13 = c12*dq_theta;
+  const T c14 = c6*c7*dq_theta*p_L - c8*c9*dq_psi*p_L;
+  const T c15 = c14*dq_psi;
+  const T c16 = c6*c7*dq_psi*p_L - c8*c9*dq_theta*p_L;
+  const T c17 = c16*dq_theta;
+  const T ab2_S10 = c0*p_l2;
+  const T ab2_S20 = c1*p_l2;
+  const T ab2_c1 = -c1*dq_b*dq_b*p_l2;
+  const T ab2_c2 = c2;
+  const T ab1_S00 = c3*p_l1;
+  const T ab1_S20 = c4*p_l1;
+  const T ab1_c0 = -c4*dq_a*dq_a*p_l1;
+  const T ab1_c2 = c5;
+  const T ab0_S00 = c6*c7*p_L;
+  const T ab0_S01 = -c8*c9*p_L;
+  const T ab0_S10 = c7*c9*p_L;
+  const T ab0_S11 = c6*c8*p_L;
+  const T ab0_S20 = c8*p_L;
+  const T ab0_c0 = -c11 - c13;
+  const T ab0_c1 = c15 + c17;
+  const T ab0_c2 = c7*dq_theta*dq_theta*p_L;
+  const T ab0_Aq0_0 = -c14*dq_theta - c16*dq_psi - c6*c8*ddq[0]*p_L - c7*c9*ddq[1]*p_L;
+  const T ab0_Aq0_1 = -c10*dq_theta - c12*dq_psi + c6*c7*ddq[1]*p_L - c8*c9*ddq[0]*p_L;
+  const T ab0_Aq0_2 = c7*ddq[0]*p_L - c8*dq_theta*dq_theta*p_L;
+  const T ab0_Av0_0 = -T(2)*c6*c8*dq_theta*p_L - T(2)*c7*c9*dq_psi*p_L;
+  const T ab0_Av0_1 = T(2)*c6*c7*dq_psi*p_L - T(2)*c8*c9*dq_theta*p_L;
+  const T ab0_Av0_2 = T(2)*c7*dq_theta*p_L;
+  const T ab0_Aq1_0 = -c15 - c17 - c6*c8*ddq[1]*p_L - c7*c9*ddq[0]*p_L;
+  const T ab0_Aq1_1 = -c11 - c13 + c6*c7*ddq[0]*p_L - c8*c9*ddq[1]*p_L;
+  const T ab0_Av1_0 = -T(2)*c6*c8*dq_psi*p_L - T(2)*c7*c9*dq_theta*p_L;
+  const T ab0_Av1_1 = T(2)*c6*c7*dq_theta*p_L - T(2)*c8*c9*dq_psi*p_L;
+  const T ab1_Aq0_0 = -c4*ddq[2]*p_l1 - c5;
+  const T ab1_Aq0_2 = c3*ddq[2]*p_l1 - c4*dq_a*dq_a*p_l1;
+  const T ab1_Av0_0 = -T(2)*c4*dq_a*p_l1;
+  const T ab1_Av0_2 = T(2)*c3*dq_a*p_l1;
+  const T ab2_Aq0_1 = -c1*ddq[3]*p_l2 - c2;
+  const T ab2_Aq0_2 = c0*ddq[3]*p_l2 - c1*dq_b*dq_b*p_l2;
+  const T ab2_Av0_1 = -T(2)*c1*dq_b*p_l2;
+  const T ab2_Av0_2 = T(2)*c0*dq_b*p_l2;
+  const T ab0_acc0 = ab0_S00*ddq[0] + ab0_S01*ddq[1] + ab0_c0;
+  const T ab0_acc1 = ab0_S10*ddq[0] + ab0_S11*ddq[1] + ab0_c1;
+  const T ab0_acc2 = ab0_S20*ddq[0] + ab0_c2;
+  const T ab1_acc0 = ab0_acc0 + ab1_S00*ddq[2] + ab1_c0;
+  const T ab1_acc2 = ab0_acc2 + ab1_S20*ddq[2] + ab1_c2;
+  const T ab2_acc1 = ab0_acc1 + ab2_S10*ddq[3] + ab2_c1;
+  const T ab2_acc2 = ab0_acc2 + ab2_S20*ddq[3] + ab2_c2;
+  const T ab2_force0 = ab0_acc0*p_m2;
+  const T ab1_force1 = ab0_acc1*p_m1;
+  const T ab2_force1 = ab2_acc1*p_m2;
+  const T ab2_force2 = (ab2_acc2 + p_g)*p_m2;
+  const T ab1_force0 = ab1_acc0*p_m1;
+  const T ab1_force2 = (ab1_acc2 + p_g)*p_m1;
+  const T ab0_force0 = ab0_acc0*p_m0 + ab1_force0 + ab2_force0;
+  const T ab0_force1 = ab0_acc1*p_m0 + ab1_force1 + ab2_force1;
+  const T ab0_force2 = (ab0_acc2 + p_g)*p_m0 + ab1_force2 + ab2_force2;
+  carried[0] = T(0);
+  axis[1][2] = T(0);
+  carried[1] = p_m0;
+  axis[2][1] = T(0);
+  carried[2] = p_m1;
+  axis[3][0] = T(0);
+  carried[3] = p_m2;
+  field[0][0] = T(0);
+  field[0][1] = T(0);
+  field[0][2] = T(0);
+  own_force[0] = -T(1);
+  own_force[2] = T(0);
+  field[3][2] = T(0);
+  field[4][2] = T(0);
+  own_force[4] = T(0);
+  field[5][1] = T(0);
+  field[6][1] = T(0);
+  own_force[6] = -p_c;
+  field[7][0] = T(0);
+  field[8][0] = T(0);
+  own_force[8] = -p_c;
+  axis[3][1] = ab2_S10;
+  axis[3][2] = ab2_S20;
+  axis[2][0] = ab1_S00;
+  axis[2][2] = ab1_S20;
+  axis[0][0] = ab0_S00;
+  axis[1][0] = ab0_S01;
+  axis[0][1] = ab0_S10;
+  axis[1][1] = ab0_S11;
+  axis[0][2] = ab0_S20;
+  field[1][0] = -ab0_Aq0_0;
+  field[1][1] = -ab0_Aq0_1;
+  field[1][2] = -ab0_Aq0_2;
+  field[2][0] = -ab0_Av0_0;
+  field[2][1] = -ab0_Av0_1;
+  field[2][2] = -ab0_Av0_2;
+  field[3][0] = -ab0_Aq1_0;
+  field[3][1] = -ab0_Aq1_1;
+  field[4][0] = -ab0_Av1_0;
+  field[4][1] = -ab0_Av1_1;
+  field[5][0] = -ab1_Aq0_0;
+  field[5][2] = -ab1_Aq0_2;
+  field[6][0] = -ab1_Av0_0;
+  field[6][2] = -ab1_Av0_2;
+  field[7][1] = -ab2_Aq0_1;
+  field[7][2] = -ab2_Aq0_2;
+  field[8][1] = -ab2_Av0_1;
+  field[8][2] = -ab2_Av0_2;
+  own_force[7] = ab2_force1*c1*p_l2 - ab2_force2*c0*p_l2;
+  own_force[5] = ab1_force0*c4*p_l1 - ab1_force2*c3*p_l1 - c4*p_l1*u_F;
+  const T c18 = ab0_force0*c7*c9*p_L - ab0_force1*c6*c7*p_L - c7*c9*p_L*u_F;
+  own_force[1] = c18;
+  rest_value[1] = -c18;
+  const T c19 = ab0_force1*c8*c9*p_L;
+  const T c20 = ab0_force0*c6*c8*p_L;
+  const T c21 = -c6*c8*p_L*u_F;
+  own_force[3] = c19 + c20 + c21;
+  rest_value[0] = ab0_force2*c7*p_L - c19 - c20 - c21;
+  for (int i = 0; i < 32; ++i) J[i] = T(0);
+  for (int i = 0; i < 4; ++i) J[i * 8 + 4 + i] = T(1);
+  T articulated[4][3][3], inverse_pivot[4], gain[4][3], passed[4][3][3];
+  for (int m = 0; m < 4; ++m) {
+    articulated[m][0][0] = carried[m]; articulated[m][0][1] = T(0); articulated[m][0][2] = T(0);
+    articulated[m][1][0] = T(0); articulated[m][1][1] = carried[m]; articulated[m][1][2] = T(0);
+    articulated[m][2][0] = T(0); articulated[m][2][1] = T(0); articulated[m][2][2] = carried[m];
+  }
+  for (int m = 3; m >= 0; --m) {
+    const T U0 = (articulated[m][0][0] * axis[m][0] + articulated[m][0][1] * axis[m][1] + articulated[m][0][2] * axis[m][2]);
+    const T U1 = (articulated[m][1][0] * axis[m][0] + articulated[m][1][1] * axis[m][1] + articulated[m][1][2] * axis[m][2]);
+    const T U2 = (articulated[m][2][0] * axis[m][0] + articulated[m][2][1] * axis[m][1] + articulated[m][2][2] * axis[m][2]);
+    inverse_pivot[m] = T(1) / (axis[m][0] * U0 + axis[m][1] * U1 + axis[m][2] * U2);
+    gain[m][0] = U0 * inverse_pivot[m];
+    gain[m][1] = U1 * inverse_pivot[m];
+    gain[m][2] = U2 * inverse_pivot[m];
+    passed[m][0][0] = articulated[m][0][0] - U0 * gain[m][0]; passed[m][0][1] = articulated[m][0][1] - U0 * gain[m][1]; passed[m][0][2] = articulated[m][0][2] - U0 * gain[m][2];
+    passed[m][1][0] = articulated[m][1][0] - U1 * gain[m][0]; passed[m][1][1] = articulated[m][1][1] - U1 * gain[m][1]; passed[m][1][2] = articulated[m][1][2] - U1 * gain[m][2];
+    passed[m][2][0] = articulated[m][2][0] - U2 * gain[m][0]; passed[m][2][1] = articulated[m][2][1] - U2 * gain[m][1]; passed[m][2][2] = articulated[m][2][2] - U2 * gain[m][2];
+    if (parent[m] >= 0) {
+      articulated[parent[m]][0][0] = articulated[parent[m]][0][0] + passed[m][0][0]; articulated[parent[m]][0][1] = articulated[parent[m]][0][1] + passed[m][0][1]; articulated[parent[m]][0][2] = articulated[parent[m]][0][2] + passed[m][0][2];
+      articulated[parent[m]][1][0] = articulated[parent[m]][1][0] + passed[m][1][0]; articulated[parent[m]][1][1] = articulated[parent[m]][1][1] + passed[m][1][1]; articulated[parent[m]][1][2] = articulated[parent[m]][1][2] + passed[m][1][2];
+      articulated[parent[m]][2][0] = articulated[parent[m]][2][0] + passed[m][2][0]; articulated[parent[m]][2][1] = articulated[parent[m]][2][1] + passed[m][2][1]; articulated[parent[m]][2][2] = articulated[parent[m]][2][2] + passed[m][2][2];
     }
   }
+  T across[4][3][3], accelerance[5][3][3], response[4][3];
+  accelerance[0][0][0] = T(0); accelerance[0][0][1] = T(0); accelerance[0][0][2] = T(0);
+  accelerance[0][1][0] = T(0); accelerance[0][1][1] = T(0); accelerance[0][1][2] = T(0);
+  accelerance[0][2][0] = T(0); accelerance[0][2][1] = T(0); accelerance[0][2][2] = T(0);
+  for (int m = 0; m < 4; ++m) {
+    across[m][0][0] = T(1) - axis[m][0] * gain[m][0]; across[m][0][1] = T(0) - axis[m][0] * gain[m][1]; across[m][0][2] = T(0) - axis[m][0] * gain[m][2];
+    across[m][1][0] = T(0) - axis[m][1] * gain[m][0]; across[m][1][1] = T(1) - axis[m][1] * gain[m][1]; across[m][1][2] = T(0) - axis[m][1] * gain[m][2];
+    across[m][2][0] = T(0) - axis[m][2] * gain[m][0]; across[m][2][1] = T(0) - axis[m][2] * gain[m][1]; across[m][2][2] = T(1) - axis[m][2] * gain[m][2];
+    const T (&above)[3][3] = accelerance[parent[m] + 1];
+    const T OV0 = (above[0][0] * gain[m][0] + above[0][1] * gain[m][1] + above[0][2] * gain[m][2]);
+    const T OV1 = (above[1][0] * gain[m][0] + above[1][1] * gain[m][1] + above[1][2] * gain[m][2]);
+    const T OV2 = (above[2][0] * gain[m][0] + above[2][1] * gain[m][1] + above[2][2] * gain[m][2]);
+    response[m][0] = (across[m][0][0] * OV0 + across[m][0][1] * OV1 + across[m][0][2] * OV2) - axis[m][0] * inverse_pivot[m];
+    response[m][1] = (across[m][1][0] * OV0 + across[m][1][1] * OV1 + across[m][1][2] * OV2) - axis[m][1] * inverse_pivot[m];
+    response[m][2] = (across[m][2][0] * OV0 + across[m][2][1] * OV1 + across[m][2][2] * OV2) - axis[m][2] * inverse_pivot[m];
+    const T AO00 = (across[m][0][0] * above[0][0] + across[m][0][1] * above[1][0] + across[m][0][2] * above[2][0]); const T AO01 = (across[m][0][0] * above[0][1] + across[m][0][1] * above[1][1] + across[m][0][2] * above[2][1]); const T AO02 = (across[m][0][0] * above[0][2] + across[m][0][1] * above[1][2] + across[m][0][2] * above[2][2]);
+    const T AO10 = (across[m][1][0] * above[0][0] + across[m][1][1] * above[1][0] + across[m][1][2] * above[2][0]); const T AO11 = (across[m][1][0] * above[0][1] + across[m][1][1] * above[1][1] + across[m][1][2] * above[2][1]); const T AO12 = (across[m][1][0] * above[0][2] + across[m][1][1] * above[1][2] + across[m][1][2] * above[2][2]);
+    const T AO20 = (across[m][2][0] * above[0][0] + across[m][2][1] * above[1][0] + across[m][2][2] * above[2][0]); const T AO21 = (across[m][2][0] * above[0][1] + across[m][2][1] * above[1][1] + across[m][2][2] * above[2][1]); const T AO22 = (across[m][2][0] * above[0][2] + across[m][2][1] * above[1][2] + across[m][2][2] * above[2][2]);
+    accelerance[m + 1][0][0] = (AO00 * across[m][0][0] + AO01 * across[m][0][1] + AO02 * across[m][0][2]) + axis[m][0] * (axis[m][0] * inverse_pivot[m]); accelerance[m + 1][0][1] = (AO00 * across[m][1][0] + AO01 * across[m][1][1] + AO02 * across[m][1][2]) + axis[m][0] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][0][2] = (AO00 * across[m][2][0] + AO01 * across[m][2][1] + AO02 * across[m][2][2]) + axis[m][0] * (axis[m][2] * inverse_pivot[m]);
+    accelerance[m + 1][1][0] = (AO10 * across[m][0][0] + AO11 * across[m][0][1] + AO12 * across[m][0][2]) + axis[m][1] * (axis[m][0] * inverse_pivot[m]); accelerance[m + 1][1][1] = (AO10 * across[m][1][0] + AO11 * across[m][1][1] + AO12 * across[m][1][2]) + axis[m][1] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][1][2] = (AO10 * across[m][2][0] + AO11 * across[m][2][1] + AO12 * across[m][2][2]) + axis[m][1] * (axis[m][2] * inverse_pivot[m]);
+    accelerance[m + 1][2][0] = (AO20 * across[m][0][0] + AO21 * across[m][0][1] + AO22 * across[m][0][2]) + axis[m][2] * (axis[m][0] * inverse_pivot[m]); accelerance[m + 1][2][1] = (AO20 * across[m][1][0] + AO21 * across[m][1][1] + AO22 * across[m][1][2]) + axis[m][2] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][2][2] = (AO20 * across[m][2][0] + AO21 * across[m][2][1] + AO22 * across[m][2][2]) + axis[m][2] * (axis[m][2] * inverse_pivot[m]);
+  }
+  T bias_above[9][3], relative_below[9][3], own_response[9];
+  for (int k = 0; k < 9; ++k) {
+    const int r = load_node[k];
+    const T P0 = gain[r][0] * own_force[k] - (passed[r][0][0] * field[k][0] + passed[r][0][1] * field[k][1] + passed[r][0][2] * field[k][2]);
+    const T P1 = gain[r][1] * own_force[k] - (passed[r][1][0] * field[k][0] + passed[r][1][1] * field[k][1] + passed[r][1][2] * field[k][2]);
+    const T P2 = gain[r][2] * own_force[k] - (passed[r][2][0] * field[k][0] + passed[r][2][1] * field[k][1] + passed[r][2][2] * field[k][2]);
+    const T ap0 = -(accelerance[parent[r] + 1][0][0] * P0 + accelerance[parent[r] + 1][0][1] * P1 + accelerance[parent[r] + 1][0][2] * P2);
+    const T ap1 = -(accelerance[parent[r] + 1][1][0] * P0 + accelerance[parent[r] + 1][1][1] * P1 + accelerance[parent[r] + 1][1][2] * P2);
+    const T ap2 = -(accelerance[parent[r] + 1][2][0] * P0 + accelerance[parent[r] + 1][2][1] * P1 + accelerance[parent[r] + 1][2][2] * P2);
+    const T own = own_force[k] * inverse_pivot[r] + (gain[r][0] * (field[k][0] - ap0) + gain[r][1] * (field[k][1] - ap1) + gain[r][2] * (field[k][2] - ap2));
+    relative_below[k][0] = ap0 - field[k][0] + axis[r][0] * own; bias_above[k][0] = P0;
+    relative_below[k][1] = ap1 - field[k][1] + axis[r][1] * own; bias_above[k][1] = P1;
+    relative_below[k][2] = ap2 - field[k][2] + axis[r][2] * own; bias_above[k][2] = P2;
+    own_response[k] = own;
+  }
+  T inverse[4];
+  for (int j = 0; j < 4; ++j) {
+    bool above[4] = {};
+    T reader[5][3] = {};
+    T s0 = -gain[j][0];
+    T s1 = -gain[j][1];
+    T s2 = -gain[j][2];
+    for (int m = parent[j]; m >= 0; m = parent[m]) {
+      above[m] = true;
+      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {
+        T* const out = load_column[k] >= 0 ? J + 32 + load_column[k] : inverse + (-1 - load_column[k]);
+        const int stride = load_column[k] >= 0 ? 8 : 1;
+        out[coordinate[j] * stride] = (s0 * relative_below[k][0] + s1 * relative_below[k][1] + s2 * relative_below[k][2]);
+      }
+      if (branching[m]) {
+        reader[m + 1][0] = -(accelerance[m + 1][0][0] * s0 + accelerance[m + 1][0][1] * s1 + accelerance[m + 1][0][2] * s2);
+        reader[m + 1][1] = -(accelerance[m + 1][1][0] * s0 + accelerance[m + 1][1][1] * s1 + accelerance[m + 1][1][2] * s2);
+        reader[m + 1][2] = -(accelerance[m + 1][2][0] * s0 + accelerance[m + 1][2][1] * s1 + accelerance[m + 1][2][2] * s2);
+      }
+      const T t0 = (across[m][0][0] * s0 + across[m][1][0] * s1 + across[m][2][0] * s2);
+      const T t1 = (across[m][0][1] * s0 + across[m][1][1] * s1 + across[m][2][1] * s2);
+      const T t2 = (across[m][0][2] * s0 + across[m][1][2] * s1 + across[m][2][2] * s2);
+      s0 = t0;
+      s1 = t1;
+      s2 = t2;
+    }
+    for (int k = first_load[j]; k < first_load[j + 1]; ++k) {
+      T* const out = load_column[k] >= 0 ? J + 32 + load_column[k] : inverse + (-1 - load_column[k]);
+      const int stride = load_column[k] >= 0 ? 8 : 1;
+      out[coordinate[j] * stride] = own_response[k];
+    }
+    reader[j + 1][0] = response[j][0];
+    reader[j + 1][1] = response[j][1];
+    reader[j + 1][2] = response[j][2];
+    for (int m = 0; m < 4; ++m) {
+      if (m == j || above[m]) continue;
+      const T (&d)[3] = reader[parent[m] + 1];
+      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {
+        T* const out = load_column[k] >= 0 ? J + 32 + load_column[k] : inverse + (-1 - load_column[k]);
+        const int stride = load_column[k] >= 0 ? 8 : 1;
+        out[coordinate[j] * stride] = (d[0] * bias_above[k][0] + d[1] * bias_above[k][1] + d[2] * bias_above[k][2]);
+      }
+      reader[m + 1][0] = (across[m][0][0] * d[0] + across[m][0][1] * d[1] + across[m][0][2] * d[2]);
+      reader[m + 1][1] = (across[m][1][0] * d[0] + across[m][1][1] * d[1] + across[m][1][2] * d[2]);
+      reader[m + 1][2] = (across[m][2][0] * d[0] + across[m][2][1] * d[1] + across[m][2][2] * d[2]);
+    }
+  }
+  static constexpr int rest_column[2] = {0, 1};
+  static constexpr int rest_inverse[2] = {0, 0};
+  for (int r = 0; r < 2; ++r)
+    for (int i = 0; i < 4; ++i)
+      J[(4 + i) * 8 + rest_column[r]] = J[(4 + i) * 8 + rest_column[r]] + inverse[i * 1 + rest_inverse[r]] * rest_value[r];
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below (M^-1 by the articulated-body

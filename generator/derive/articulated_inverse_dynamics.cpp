@@ -25,6 +25,7 @@ class InverseDynamics {
     std::size_t n = joint_of_.size();
     for (std::size_t j = 0; j < n; ++j) out_.axes.push_back(forward_.motions[joint_of_[j].first].axes[joint_of_[j].second]);
     composite_masses();
+    coordinate_tree();
     subtree_forces();
     relative_acceleration_derivatives();
     for (std::size_t j = 0; j < n; ++j)
@@ -50,6 +51,27 @@ class InverseDynamics {
       std::size_t i = tree_.order[at];
       mass[i] = name_(mass[i], fmt::format("ab{}_mass", i));
       if (int parent = tree_.joints[i].parent; parent >= 0) mass[std::size_t(parent)] += mass[i];
+    }
+  }
+
+  // each particle's joint as a chain of one-coordinate joints, the mass on the last (the recursion
+  // gives the same q'' either way: D = SᵀIA S eliminated one column of S at a time)
+  void coordinate_tree() {
+    std::size_t n = joint_of_.size();
+    out_.coordinate_parent.assign(n, -1);
+    out_.carried_masses.assign(n, ex(0));
+    out_.joint_carrier.assign(n, 0);
+    std::vector<int> carrier(count_, -1);  // the coordinate that carries each particle's mass
+    for (std::size_t i : tree_.order) {
+      int parent = tree_.joints[i].parent, above = parent < 0 ? -1 : carrier[std::size_t(parent)];
+      for (std::size_t j : tree_.joints[i].coordinates) {
+        out_.coordinate_order.push_back(j);
+        out_.coordinate_parent[j] = above;
+        above = int(j);
+      }
+      carrier[i] = above;
+      for (std::size_t j : tree_.joints[i].coordinates) out_.joint_carrier[j] = std::size_t(above);
+      if (above >= 0) out_.carried_masses[std::size_t(above)] += model_.particles[i].mass;
     }
   }
 

@@ -36,6 +36,15 @@ struct TreeInverseDynamics {
   std::vector<Vector3> acceleration_by_velocity;    // ∂d''/∂q'_l
   std::vector<GiNaC::ex> subtree_masses;          // m̄ of each particle's subtree
   std::vector<int> coupling;                      // n × n: the particle whose m̄ couples j and l, or −1
+  /// The coordinates as a tree of their own, one coordinate per joint axis: a joint's first coordinate
+  /// hangs from the last coordinate of the particle's nearest parent that has any (−1: the ground),
+  /// each further one from the one before it. `coordinate_order` lists them parents first; the last
+  /// coordinate of a joint carries the particle's mass and those of particles rigidly attached below
+  /// it (`carried_masses`, zero for the other coordinates).
+  std::vector<std::size_t> coordinate_order;
+  std::vector<int> coordinate_parent;
+  std::vector<GiNaC::ex> carried_masses;
+  std::vector<std::size_t> joint_carrier;  // for each coordinate, the last coordinate of its joint
   std::vector<GiNaC::ex> forcing;                 // f = −τ at q'' = 0
   /// the rest of ∂τ/∂(q, q', u), n × (2n + inputs) row by row: the derivatives of S and of the
   /// other generalized forces, and the input columns; mostly zero

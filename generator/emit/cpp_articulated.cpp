@@ -96,9 +96,11 @@ std::string coupled_pairs_loop(std::size_t n, const std::string& zero, const std
                      n, zero, coupled, mirror.empty() ? "0" : "j", mirror.empty() ? "" : "      " + mirror + "\n");
 }
 
+}  // namespace
+
 // ∂τ/∂(q, q', u), τ = M(q) q'' − f(q, q', u) with q'' held: the coupled terms m̄ S_j · ∂d''/∂x in a
 // loop, then the rest (derive/articulated_inverse_dynamics.hpp) where it is not zero
-std::string inverse_dynamics_gradient_function(const Equations& e) {
+std::string articulated_inverse_dynamics_gradient_function(const Equations& e) {
   const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
   std::size_t n = e.symbols.num_coordinates(), W = forcing_variables(e.symbols).size();
   BodyWriter w(e);
@@ -121,8 +123,6 @@ std::string inverse_dynamics_gradient_function(const Equations& e) {
                   w.finish(all_unused + std::string(" (void)ddq;"))) +
          "}  // namespace detail\n\n";
 }
-
-}  // namespace
 
 std::string articulated_rhs_function(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates();
@@ -273,26 +273,6 @@ void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std:
 }
 
 }  // namespace
-
-// dq''/dx = −M⁻¹ ∂τ/∂x, with q'' from rhs and M⁻¹ by the recursion
-std::string articulated_jacobian_state_function(const Equations& e) {
-  const Symbols& s = e.symbols;
-  std::size_t n = s.num_coordinates(), N = 2 * n, W = N + s.inputs.size();
-  BodyWriter w(e);
-  w.line(fmt::format("T xdot[{}];", N));
-  w.line("rhs(t, x, u, p, xdot);");
-  w.line(fmt::format("T F[{}];", n * W));
-  w.line(fmt::format("detail::inverse_dynamics_gradient(t, x, xdot + {}, u, p, F);", n));
-  w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
-  w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[i * {0} + j] = T(j == {1} + i ? 1 : 0);", N, n));
-  write_solved_columns(w, e, W, 0, N, "J", [&](std::size_t i) { return (n + i) * N; });
-  return inverse_dynamics_gradient_function(e) +
-         function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is -M^-1 d tau/dx\n"
-                              "/// (tau = M q'' - f, q'' held), with q'' from rhs and M^-1 by the articulated-body\n"
-                              "/// recursion, a block of columns at a time. J: {0}x{0}, row-major.\n",
-                              N),
-                  "void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J)", w.finish(all_unused));
-}
 
 // dq''/du = −M⁻¹ ∂τ/∂u = M⁻¹ ∂f/∂u: only the input columns of ∂τ/∂(q, q', u), which the coupled
 // terms m̄ S_j · ∂d''/∂x do not reach (O(n m) entries, not the whole O(n²) gradient)

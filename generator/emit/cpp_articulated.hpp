@@ -14,8 +14,9 @@ namespace eomgen {
 std::string articulated_rhs_function(const Equations& e);
 /// mass_matrix from the recursion's quantities: M_jl = m̄ S_j · S_l in a loop.
 std::string articulated_mass_matrix_function(const Equations& e);
-/// detail::inverse_dynamics_gradient (∂τ/∂(q, q', u) of τ = M q'' − f), then jacobian_state.
-std::string articulated_jacobian_state_function(const Equations& e);
+/// detail::inverse_dynamics_gradient (∂τ/∂(q, q', u) of τ = M q'' − f, for linearization); the
+/// articulated jacobian_state is in emit/cpp_articulated_jacobian.hpp.
+std::string articulated_inverse_dynamics_gradient_function(const Equations& e);
 /// jacobian_input from the input columns of ∂τ/∂(q, q', u) alone, M⁻¹ by the recursion.
 std::string articulated_jacobian_input_function(const Equations& e);
 std::string articulated_linearization_function(const Equations& e);

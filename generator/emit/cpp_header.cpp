@@ -6,6 +6,7 @@
 
 #include "common/version.hpp"
 #include "emit/cpp_articulated.hpp"
+#include "emit/cpp_articulated_jacobian.hpp"
 #include "emit/cpp_body_writer.hpp"
 #include "emit/cpp_constraints.hpp"
 #include "emit/cpp_expression.hpp"
@@ -441,7 +442,8 @@ std::string emit_cpp_header(const Equations& e) {
       : !e.articulated_accelerations.empty()
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
             "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix, forcing "
-            "and jacobian_state use the same tree (M_jl = m S_j . S_l, M^-1 by the recursion, in blocks of columns)."
+            "and jacobian_state use the same tree (M_jl = m S_j . S_l; jacobian_state entry by entry from the\n"
+            "// recursion's factors, O(1) operations each, without M^-1)."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k);
   out += fmt::format(

@@ -339,10 +339,36 @@ void expect_header_agrees(const std::string& text, const std::vector<std::string
   EXPECT_EQ(test::run_command("cd '" + dir + "' && c++ -std=c++17 -O1 check.cpp -o check && ./check"), 0);
 }
 
-// 26 columns of the Jacobian in two blocks of 14, the second repeating two columns of the first
+// the planar chain's Jacobian by one carry per step (emit/cpp_articulated_jacobian.cpp); a spring
+// between the first two links puts entries of ∂τ/∂q off the carriers' rows, which go through M⁻¹
 TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
-  expect_header_agrees(planar_chain(13, "articulated"),
-                       {"const int k = coupling[j * 13 + l];", "const std::size_t c = block < 12 ? block : 12;"});
+  std::string text = planar_chain(13, "articulated");
+  std::size_t at = text.find("potential = \"k*phi1^2/2\"");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + 23, " + k*(phi2 - phi1)^2/2");
+  expect_header_agrees(text, {"const int k = coupling[j * 13 + l];", "delta[j] = delta[j] * carry[m];",
+                              "static constexpr int rest_column[2] = {1, 0};"});
+}
+
+// a spatial chain (two spherical pendulums, four coordinates in two joints) with a mass fixed to the
+// second one by a constant offset (a joint without coordinates, its mass carried by the last axis)
+TEST(ArticulatedBodies, SpatialChainHeaderAgreesWithItsMassMatrixAndDifferences) {
+  std::string r1 = "L1*sin(a1)*cos(b1)\", \"L1*sin(a1)*sin(b1)\", \"-L1*cos(a1)";
+  std::string r2 = "L1*sin(a1)*cos(b1) + L2*sin(a2)*cos(b2)\", \"L1*sin(a1)*sin(b1) + L2*sin(a2)*sin(b2)\", "
+                   "\"-L1*cos(a1) - L2*cos(a2)";
+  std::string r3 = "L1*sin(a1)*cos(b1) + L2*sin(a2)*cos(b2) + 0.1\", \"L1*sin(a1)*sin(b1) + L2*sin(a2)*sin(b2)\", "
+                   "\"-L1*cos(a1) - L2*cos(a2) - 0.2";
+  std::string text = "[model]\nname = \"chain\"\nforward_dynamics = \"articulated\"\n"
+                     "[parameters]\nm1 = 1.2\nm2 = 0.8\nm3 = 0.3\nL1 = 0.9\nL2 = 0.7\ng = 9.81\nc = 0.2\n"
+                     "[coordinates]\na1 = 0.5\nb1 = 0.3\na2 = 0.8\nb2 = -0.4\n[inputs]\nF = 0.0\n"
+                     "[[particles]]\nname = \"p1\"\nmass = \"m1\"\nposition = [\"" + r1 + "\"]\n"
+                     "[[particles]]\nname = \"p2\"\nmass = \"m2\"\nposition = [\"" + r2 + "\"]\n"
+                     "[[particles]]\nname = \"p3\"\nmass = \"m3\"\nposition = [\"" + r3 + "\"]\n"
+                     "[gravity]\nacceleration = [\"0\", \"0\", \"-g\"]\n"
+                     "[energy]\ndissipation = \"c*(der(a2)^2 + der(b1)^2)/2\"\n"
+                     "[[forces]]\nat = [\"" + r2 + "\"]\nforce = [\"0\", \"F\", \"0\"]\n";
+  expect_header_agrees(text, {"const T A00 = across[m][0][0], A01 = across[m][0][1], A02 = across[m][0][2]",
+                              "T* const out = load_column[k] >= 0 ? J + 32 + load_column[k]"});
 }
 
 // a branched spatial tree with a two-coordinate joint: the crane hook, renamed
@@ -351,7 +377,7 @@ TEST(ArticulatedBodies, BranchedTreeHeaderAgreesWithItsMassMatrixAndDifferences)
   std::size_t at = text.find("\"crane_hook_tree\"");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 17, "\"chain\"");
-  expect_header_agrees(text, {"for (std::size_t block = 0; block < 8; block += 8) {"});
+  expect_header_agrees(text, {"if (branching[m]) {", "static constexpr bool branching[4] = {0, 1, 0, 0};"});
 }
 
 }  // namespace
