@@ -92,6 +92,15 @@ JacobianLayout jacobian_layout(const Equations& e) {
       }
       out.rest.push_back({x, std::size_t(inverse_of[a]), value});
     }
+  // a chain with any column of M⁻¹ takes every node's, so that all nodes have as many loads (one loop
+  // over the rows then serves a node's columns together)
+  bool chain = true;
+  for (std::size_t m = 0; m < n; ++m) chain = chain && tree.coordinate_parent[out.coordinate[m]] == (m ? int(out.coordinate[m - 1]) : -1);
+  for (std::size_t a = 0; chain && out.inverse_columns > 0 && a < n; ++a)
+    if (inverse_of[a] < 0) {
+      inverse_of[a] = int(out.inverse_columns++);
+      loads.push_back({node_of[a], {0, 0, 0}, ex(-1), -1 - inverse_of[a]});
+    }
   std::stable_sort(loads.begin(), loads.end(), [](const Load& a, const Load& b) { return a.node < b.node; });
   out.loads = loads;
   for (std::size_t m = 0, k = 0; m <= n; ++m) {
@@ -209,6 +218,56 @@ std::string tree_factors(const Components& k, std::size_t n) {
   return out;
 }
 
+// The same factors for a chain, each node's from the one below (IA) or above (Ω) kept in local
+// values instead of arrays, and the symmetric IA and Ω by their upper triangles.
+std::string chain_factors(const Components& k, std::size_t n) {
+  std::size_t C = k.count();
+  auto sym = [](const std::string& name, std::size_t a, std::size_t b) { return fmt::format("{}{}{}", name, std::min(a, b), std::max(a, b)); };
+  auto upper = [&](const std::function<std::string(std::size_t, std::size_t)>& statement, const std::string& indent) {
+    std::string out;
+    for (std::size_t a = 0; a < C; ++a)
+      for (std::size_t b = a; b < C; ++b) out += indent + statement(a, b) + "\n";
+    return out;
+  };
+  std::string out = fmt::format("  T inverse_pivot[{0}], gain[{0}][{1}], passed[{0}][{1}][{1}];\n", n, C);
+  out += upper([](std::size_t a, std::size_t b) { return fmt::format("T I{}{} = T(0);", a, b); }, "  ");
+  out += fmt::format("  for (int m = {}; m >= 0; --m) {{\n", n - 1);
+  out += upper([](std::size_t a, std::size_t b) { return fmt::format("const T A{0}{1} = I{0}{1}{2};", a, b, a == b ? " + carried[m]" : ""); }, "    ");
+  out += k.each([&](std::size_t a) {
+    return fmt::format("const T U{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * axis[m][{}]", sym("A", a, b), b); }));
+  }, "    ");
+  out += "    inverse_pivot[m] = T(1) / " + k.sum([](std::size_t a) { return fmt::format("axis[m][{0}] * U{0}", a); }) + ";\n";
+  out += k.each([](std::size_t a) { return fmt::format("gain[m][{0}] = U{0} * inverse_pivot[m];", a); }, "    ");
+  out += upper([](std::size_t a, std::size_t b) {
+    return fmt::format("I{0}{1} = A{0}{1} - U{0} * gain[m][{1}]; passed[m][{0}][{1}] = I{0}{1};{2}", a, b,
+                       a == b ? "" : fmt::format(" passed[m][{1}][{0}] = I{0}{1};", a, b));
+  }, "    ");
+  out += "  }\n";
+  out += fmt::format("  T across[{0}][{1}][{1}], accelerance[{2}][{1}][{1}], response[{0}][{1}];\n", n, C, n + 1);
+  out += k.each_pair([](std::size_t a, std::size_t b) { return fmt::format("accelerance[0][{}][{}] = T(0);", a, b); }, "  ");
+  out += upper([](std::size_t a, std::size_t b) { return fmt::format("T O{}{} = T(0);", a, b); }, "  ");
+  out += fmt::format("  for (int m = 0; m < {}; ++m) {{\n", n);
+  out += k.each_pair([](std::size_t a, std::size_t b) {
+    return fmt::format("const T F{0}{1} = {2} - axis[m][{0}] * gain[m][{1}]; across[m][{0}][{1}] = F{0}{1};", a, b, a == b ? "T(1)" : "T(0)");
+  }, "    ");
+  out += k.each([&](std::size_t a) {
+    return fmt::format("const T OV{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * gain[m][{}]", sym("O", a, b), b); }));
+  }, "    ");
+  out += k.each([&](std::size_t a) {
+    return fmt::format("response[m][{0}] = {1} - axis[m][{0}] * inverse_pivot[m];", a,
+                       k.sum([&](std::size_t b) { return fmt::format("F{}{} * OV{}", a, b, b); }));
+  }, "    ");
+  out += k.each_pair([&](std::size_t a, std::size_t b) {
+    return fmt::format("const T AO{}{} = {};", a, b, k.sum([&](std::size_t c) { return fmt::format("F{}{} * {}", a, c, sym("O", c, b)); }));
+  }, "    ");
+  out += upper([&](std::size_t a, std::size_t b) {
+    return fmt::format("O{0}{1} = {2} + axis[m][{0}] * (axis[m][{1}] * inverse_pivot[m]); accelerance[m + 1][{0}][{1}] = O{0}{1};{3}", a, b,
+                       k.sum([&](std::size_t c) { return fmt::format("AO{}{} * F{}{}", a, c, b, c); }),
+                       a == b ? "" : fmt::format(" accelerance[m + 1][{1}][{0}] = O{0}{1};", a, b));
+  }, "    ");
+  return out + "  }\n";
+}
+
 // each load's effect where it acts: the bias P = V ρ − IAᵃ w it passes to the node's parent, the
 // node's own q'' (= ρ / D + V · (w − a_parent), a_parent = −Ω_parent P) and the acceleration
 // relative to the field it leaves the node with, from which the subtree below moves as a free one
@@ -237,11 +296,12 @@ std::string load_effects(const Components& k, std::size_t L) {
 namespace {
 
 // where load k writes: J's lower block, or (the rest's loads) the local columns of −M⁻¹
-std::string destination(std::size_t n, std::size_t inverse_columns, const std::string& indent) {
-  if (inverse_columns == 0) return fmt::format("{}T* const out = J + {} + load_column[k];\n{}const int stride = {};\n", indent, 2 * n * n, indent, 2 * n);
-  return fmt::format("{0}T* const out = load_column[k] >= 0 ? J + {1} + load_column[k] : inverse + (-1 - load_column[k]);\n"
-                     "{0}const int stride = load_column[k] >= 0 ? {2} : {3};\n",
-                     indent, 2 * n * n, 2 * n, inverse_columns);
+std::string destination(std::size_t n, std::size_t inverse_columns, const std::string& indent, const std::string& suffix = "") {
+  if (inverse_columns == 0)
+    return fmt::format("{0}T* const out{1} = J + {2} + load_column[k{1}];\n{0}const int stride{1} = {3};\n", indent, suffix, 2 * n * n, 2 * n);
+  return fmt::format("{0}T* const out{1} = load_column[k{1}] >= 0 ? J + {2} + load_column[k{1}] : inverse + (-1 - load_column[k{1}]);\n"
+                     "{0}const int stride{1} = load_column[k{1}] >= 0 ? {3} : {4};\n",
+                     indent, suffix, 2 * n * n, 2 * n, inverse_columns);
 }
 
 // A chain: the entries above each loaded node m read d(j, m − 1) · P, with d(m, m) = e_m and
@@ -289,19 +349,62 @@ std::string chain_entries(const Components& k, std::size_t n, std::size_t invers
   return out + "    }\n  }\n";
 }
 
+// The planar chain's two passes with the same number of loads at every node: one loop over the rows
+// per step writes all the node's columns and advances the row's number once.
+std::string fused_planar_passes(std::size_t n, std::size_t inverse_columns, bool identity, std::size_t loads) {
+  auto row = [&](const std::string& j) { return identity ? j : "coordinate[" + j + "]"; };
+  auto each = [&](const std::function<std::string(const std::string&)>& text) {
+    std::string out;
+    for (std::size_t i = 0; i < loads; ++i) out += text(std::to_string(i));
+    return out;
+  };
+  auto targets = [&](const std::string& indent) {
+    return each([&](const std::string& i) {
+      return fmt::format("{}const int k{} = {} * m + {};\n", indent, i, loads, i) + destination(n, inverse_columns, indent, i);
+    });
+  };
+  std::string out = fmt::format("  {{\n    T delta[{0}] = {{}};\n    for (int m = 0; m < {0}; ++m) {{\n", n);
+  out += targets("      ");
+  out += each([&](const std::string& i) { return fmt::format("      out{0}[{1} * stride{0}] = own_response[k{0}];\n", i, row("m")); });
+  out += "      if (m == 0) continue;\n";
+  out += each([&](const std::string& i) {
+    return fmt::format("      out{0}[{1} * stride{0}] = response[m - 1][0] * bias_above[k{0}][0] + response[m - 1][1] * bias_above[k{0}][1];\n"
+                       "      const T through{0} = image[m - 1][0] * bias_above[k{0}][0] + image[m - 1][1] * bias_above[k{0}][1];\n",
+                       i, row("(m - 1)"));
+  });
+  out += "      for (int j = 0; j < m - 1; ++j) {\n        const T d = delta[j];\n";
+  out += each([&](const std::string& i) { return fmt::format("        out{0}[{1} * stride{0}] = d * through{0};\n", i, row("j")); });
+  out += "        delta[j] = d * carry[m];\n      }\n"
+         "      delta[m - 1] = normal[m][0] * response[m - 1][0] + normal[m][1] * response[m - 1][1];\n    }\n  }\n";
+  out += fmt::format("  {{\n    T sigma[{0}] = {{}};\n    for (int m = {1}; m >= 0; --m) {{\n", n, n - 2);
+  out += targets("      ");
+  out += each([&](const std::string& i) {
+    return fmt::format("      out{0}[{1} * stride{0}] = -(gain[m + 1][0] * relative_below[k{0}][0] + gain[m + 1][1] * relative_below[k{0}][1]);\n"
+                       "      const T through{0} = normal[m + 1][0] * relative_below[k{0}][0] + normal[m + 1][1] * relative_below[k{0}][1];\n",
+                       i, row("(m + 1)"));
+  });
+  out += fmt::format("      for (int j = m + 2; j < {}; ++j) {{\n        const T s = sigma[j];\n", n);
+  out += each([&](const std::string& i) { return fmt::format("        out{0}[{1} * stride{0}] = s * through{0};\n", i, row("j")); });
+  out += "        sigma[j] = s * carry[m + 1];\n      }\n"
+         "      sigma[m + 1] = -(image[m][0] * gain[m + 1][0] + image[m][1] * gain[m + 1][1]);\n    }\n  }\n";
+  return out;
+}
+
 // A planar chain: Φ = I − S Vᵀ annihilates S, so in the plane it has rank 1, Φ_m = image_m normal_mᵀ
 // with normal_m ⟂ S_m; a product of them is image · Π carry · normalᵀ, carry_m = normal_m · image_m−1.
 // The readers d(j, m) and s(j, m) of a chain are then one number per row, δ_j and σ_j, and each step
 // multiplies them by one carry: a multiplication per entry and one per row and step.
-std::string planar_chain_entries(std::size_t n, std::size_t inverse_columns, bool identity) {
+std::string planar_chain_entries(std::size_t n, std::size_t inverse_columns, bool identity, std::size_t uniform_loads) {
   auto row = [&](const std::string& j) { return identity ? j : "coordinate[" + j + "]"; };
-  std::string dest = destination(n, inverse_columns, "        ");
+  std::string dest = "        const int k0 = k;\n" + destination(n, inverse_columns, "        ", "0") +
+                     "        T* const out = out0;\n        const int stride = stride0;\n";
   std::string out = fmt::format("  T normal[{0}][2], image[{0}][2], carry[{0}];\n  for (int m = 0; m < {0}; ++m) {{\n", n);
   out += "    normal[m][0] = -axis[m][1];\n    normal[m][1] = axis[m][0];\n"
          "    const T inverse_square = T(1) / (normal[m][0] * normal[m][0] + normal[m][1] * normal[m][1]);\n"
          "    image[m][0] = (across[m][0][0] * normal[m][0] + across[m][0][1] * normal[m][1]) * inverse_square;\n"
          "    image[m][1] = (across[m][1][0] * normal[m][0] + across[m][1][1] * normal[m][1]) * inverse_square;\n"
          "    carry[m] = m > 0 ? normal[m][0] * image[m - 1][0] + normal[m][1] * image[m - 1][1] : T(0);\n  }\n";
+  if (uniform_loads > 0) return out + fused_planar_passes(n, inverse_columns, identity, uniform_loads);
   // rows j < m − 1 above node m: d(j, m − 1) = image_{m−1} δ_j; row m − 1 reads e_{m−1} itself
   out += fmt::format("  {{\n    T delta[{0}] = {{}};\n    for (int m = 0; m < {0}; ++m) {{\n", n);
   out += "      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + dest;
@@ -356,13 +459,13 @@ std::string tree_entries(const Components& k, std::size_t n, std::size_t inverse
   return out + "    }\n  }\n";
 }
 
-std::string tables(const JacobianLayout& layout, bool with_coordinates) {
+std::string tables(const JacobianLayout& layout, bool with_coordinates, bool with_first_load) {
   std::size_t n = layout.coordinate.size(), L = layout.loads.size();
   std::vector<int> node, column;
   for (const Load& l : layout.loads) node.push_back(int(l.node)), column.push_back(l.column);
   std::string out = fmt::format("static constexpr int parent[{}] = {{{}}};", n, list(layout.parent));
   if (with_coordinates) out += fmt::format("\n  static constexpr int coordinate[{}] = {{{}}};", n, list(layout.coordinate));
-  out += fmt::format("\n  static constexpr int first_load[{}] = {{{}}};", n + 1, list(layout.first_load));
+  if (with_first_load) out += fmt::format("\n  static constexpr int first_load[{}] = {{{}}};", n + 1, list(layout.first_load));
   out += fmt::format("\n  static constexpr int load_node[{}] = {{{}}};", L, list(node));
   out += fmt::format("\n  static constexpr int load_column[{}] = {{{}}};", L, list(column));
   if (!layout.chain) {
@@ -400,14 +503,16 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   w.line("(void)ddq;");
   bool identity = true, planar_chain = layout.chain && k.count() == 2;
   for (std::size_t m = 0; m < n; ++m) identity = identity && layout.coordinate[m] == m;
-  w.line(tables(layout, !(planar_chain && identity)));
+  std::size_t uniform_loads = layout.loads.size() / n;
+  for (std::size_t m = 0; m < n; ++m) uniform_loads = layout.first_load[m + 1] - layout.first_load[m] == uniform_loads ? uniform_loads : 0;
+  w.line(tables(layout, !(planar_chain && identity), !(planar_chain && uniform_loads > 0)));
   write_tree_values(w, e, layout);
   // the upper block [0 I] first, as one stream of stores
   std::string body = fmt::format("  for (int i = 0; i < {}; ++i) J[i] = T(0);\n  for (int i = 0; i < {}; ++i) J[i * {} + {} + i] = T(1);\n",
                                  n * N, n, N, n);
-  body += tree_factors(k, n) + load_effects(k, layout.loads.size());
+  body += (layout.chain ? chain_factors(k, n) : tree_factors(k, n)) + load_effects(k, layout.loads.size());
   if (layout.inverse_columns > 0) body += fmt::format("  T inverse[{}];\n", n * layout.inverse_columns);
-  if (planar_chain) body += planar_chain_entries(n, layout.inverse_columns, identity);
+  if (planar_chain) body += planar_chain_entries(n, layout.inverse_columns, identity, uniform_loads);
   else body += layout.chain ? chain_entries(k, n, layout.inverse_columns) : tree_entries(k, n, layout.inverse_columns);
   body += rest_product(layout, n);
   return articulated_inverse_dynamics_gradient_function(e) +

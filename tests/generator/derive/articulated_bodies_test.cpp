@@ -346,8 +346,22 @@ TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
   std::size_t at = text.find("potential = \"k*phi1^2/2\"");
   ASSERT_NE(at, std::string::npos);
   text.insert(at + 23, " + k*(phi2 - phi1)^2/2");
-  expect_header_agrees(text, {"const int k = coupling[j * 13 + l];", "delta[j] = delta[j] * carry[m];",
+  expect_header_agrees(text, {"const int k = coupling[j * 13 + l];", "delta[j] = d * carry[m];",
                               "static constexpr int rest_column[2] = {1, 0};"});
+}
+
+// a particle free in the plane (two coordinates in one joint) carrying a pendulum: a planar chain whose
+// nodes carry different numbers of columns (none at x, four at y, two at phi)
+TEST(ArticulatedBodies, PlanarChainWithATwoCoordinateJointAgreesWithItsMassMatrixAndDifferences) {
+  std::string text = "[model]\nname = \"chain\"\nforward_dynamics = \"articulated\"\n"
+                     "[parameters]\nm1 = 2.0\nm2 = 0.6\nl = 0.8\ng = 9.81\nk = 5.0\nc = 0.3\n"
+                     "[coordinates]\nx = 0.2\ny = -0.1\nphi = 0.7\n[inputs]\nF = 0.0\n"
+                     "[[particles]]\nname = \"p1\"\nmass = \"m1\"\nposition = [\"x\", \"y\", \"0\"]\n"
+                     "[[particles]]\nname = \"p2\"\nmass = \"m2\"\nposition = [\"x + l*sin(phi)\", \"y - l*cos(phi)\", \"0\"]\n"
+                     "[gravity]\nacceleration = [\"0\", \"-g\", \"0\"]\n"
+                     "[energy]\npotential = \"k*(x^2 + y^2)/2\"\ndissipation = \"c*(der(x)^2 + der(phi)^2)/2\"\n"
+                     "[[forces]]\nat = [\"x + l*sin(phi)\", \"y - l*cos(phi)\", \"0\"]\nforce = [\"F\", \"0\", \"0\"]\n";
+  expect_header_agrees(text, {"for (int j = 0; j < m - 1; ++j) delta[j] = delta[j] * carry[m];"});
 }
 
 // a spatial chain (two spherical pendulums, four coordinates in two joints) with a mass fixed to the
