@@ -781,7 +781,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   rest_value[0] = ab0_force2*c7*p_L - c19 - c20 - c21;
   for (int i = 0; i < 32; ++i) J[i] = T(0);
   for (int i = 0; i < 4; ++i) J[i * 8 + 4 + i] = T(1);
-  T articulated[4][3][3], inverse_pivot[4], gain[4][3], passed[4][3][3];
+  T inverse_pivot[4], gain[4][3], passed[4][3][3];
+  T articulated[4][3][3];
   for (int m = 0; m < 4; ++m) {
     articulated[m][0][0] = carried[m]; articulated[m][0][1] = T(0); articulated[m][0][2] = T(0);
     articulated[m][1][0] = T(0); articulated[m][1][1] = carried[m]; articulated[m][1][2] = T(0);
@@ -809,22 +810,25 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   accelerance[0][1][0] = T(0); accelerance[0][1][1] = T(0); accelerance[0][1][2] = T(0);
   accelerance[0][2][0] = T(0); accelerance[0][2][1] = T(0); accelerance[0][2][2] = T(0);
   for (int m = 0; m < 4; ++m) {
-    across[m][0][0] = T(1) - axis[m][0] * gain[m][0]; across[m][0][1] = T(0) - axis[m][0] * gain[m][1]; across[m][0][2] = T(0) - axis[m][0] * gain[m][2];
-    across[m][1][0] = T(0) - axis[m][1] * gain[m][0]; across[m][1][1] = T(1) - axis[m][1] * gain[m][1]; across[m][1][2] = T(0) - axis[m][1] * gain[m][2];
-    across[m][2][0] = T(0) - axis[m][2] * gain[m][0]; across[m][2][1] = T(0) - axis[m][2] * gain[m][1]; across[m][2][2] = T(1) - axis[m][2] * gain[m][2];
+    const T F00 = T(1) - axis[m][0] * gain[m][0]; across[m][0][0] = F00; const T F01 = T(0) - axis[m][0] * gain[m][1]; across[m][0][1] = F01; const T F02 = T(0) - axis[m][0] * gain[m][2]; across[m][0][2] = F02;
+    const T F10 = T(0) - axis[m][1] * gain[m][0]; across[m][1][0] = F10; const T F11 = T(1) - axis[m][1] * gain[m][1]; across[m][1][1] = F11; const T F12 = T(0) - axis[m][1] * gain[m][2]; across[m][1][2] = F12;
+    const T F20 = T(0) - axis[m][2] * gain[m][0]; across[m][2][0] = F20; const T F21 = T(0) - axis[m][2] * gain[m][1]; across[m][2][1] = F21; const T F22 = T(1) - axis[m][2] * gain[m][2]; across[m][2][2] = F22;
     const T (&above)[3][3] = accelerance[parent[m] + 1];
     const T OV0 = (above[0][0] * gain[m][0] + above[0][1] * gain[m][1] + above[0][2] * gain[m][2]);
     const T OV1 = (above[1][0] * gain[m][0] + above[1][1] * gain[m][1] + above[1][2] * gain[m][2]);
     const T OV2 = (above[2][0] * gain[m][0] + above[2][1] * gain[m][1] + above[2][2] * gain[m][2]);
-    response[m][0] = (across[m][0][0] * OV0 + across[m][0][1] * OV1 + across[m][0][2] * OV2) - axis[m][0] * inverse_pivot[m];
-    response[m][1] = (across[m][1][0] * OV0 + across[m][1][1] * OV1 + across[m][1][2] * OV2) - axis[m][1] * inverse_pivot[m];
-    response[m][2] = (across[m][2][0] * OV0 + across[m][2][1] * OV1 + across[m][2][2] * OV2) - axis[m][2] * inverse_pivot[m];
-    const T AO00 = (across[m][0][0] * above[0][0] + across[m][0][1] * above[1][0] + across[m][0][2] * above[2][0]); const T AO01 = (across[m][0][0] * above[0][1] + across[m][0][1] * above[1][1] + across[m][0][2] * above[2][1]); const T AO02 = (across[m][0][0] * above[0][2] + across[m][0][1] * above[1][2] + across[m][0][2] * above[2][2]);
-    const T AO10 = (across[m][1][0] * above[0][0] + across[m][1][1] * above[1][0] + across[m][1][2] * above[2][0]); const T AO11 = (across[m][1][0] * above[0][1] + across[m][1][1] * above[1][1] + across[m][1][2] * above[2][1]); const T AO12 = (across[m][1][0] * above[0][2] + across[m][1][1] * above[1][2] + across[m][1][2] * above[2][2]);
-    const T AO20 = (across[m][2][0] * above[0][0] + across[m][2][1] * above[1][0] + across[m][2][2] * above[2][0]); const T AO21 = (across[m][2][0] * above[0][1] + across[m][2][1] * above[1][1] + across[m][2][2] * above[2][1]); const T AO22 = (across[m][2][0] * above[0][2] + across[m][2][1] * above[1][2] + across[m][2][2] * above[2][2]);
-    accelerance[m + 1][0][0] = (AO00 * across[m][0][0] + AO01 * across[m][0][1] + AO02 * across[m][0][2]) + axis[m][0] * (axis[m][0] * inverse_pivot[m]); accelerance[m + 1][0][1] = (AO00 * across[m][1][0] + AO01 * across[m][1][1] + AO02 * across[m][1][2]) + axis[m][0] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][0][2] = (AO00 * across[m][2][0] + AO01 * across[m][2][1] + AO02 * across[m][2][2]) + axis[m][0] * (axis[m][2] * inverse_pivot[m]);
-    accelerance[m + 1][1][0] = (AO10 * across[m][0][0] + AO11 * across[m][0][1] + AO12 * across[m][0][2]) + axis[m][1] * (axis[m][0] * inverse_pivot[m]); accelerance[m + 1][1][1] = (AO10 * across[m][1][0] + AO11 * across[m][1][1] + AO12 * across[m][1][2]) + axis[m][1] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][1][2] = (AO10 * across[m][2][0] + AO11 * across[m][2][1] + AO12 * across[m][2][2]) + axis[m][1] * (axis[m][2] * inverse_pivot[m]);
-    accelerance[m + 1][2][0] = (AO20 * across[m][0][0] + AO21 * across[m][0][1] + AO22 * across[m][0][2]) + axis[m][2] * (axis[m][0] * inverse_pivot[m]); accelerance[m + 1][2][1] = (AO20 * across[m][1][0] + AO21 * across[m][1][1] + AO22 * across[m][1][2]) + axis[m][2] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][2][2] = (AO20 * across[m][2][0] + AO21 * across[m][2][1] + AO22 * across[m][2][2]) + axis[m][2] * (axis[m][2] * inverse_pivot[m]);
+    response[m][0] = (F00 * OV0 + F01 * OV1 + F02 * OV2) - axis[m][0] * inverse_pivot[m];
+    response[m][1] = (F10 * OV0 + F11 * OV1 + F12 * OV2) - axis[m][1] * inverse_pivot[m];
+    response[m][2] = (F20 * OV0 + F21 * OV1 + F22 * OV2) - axis[m][2] * inverse_pivot[m];
+    const T AO00 = (F00 * above[0][0] + F01 * above[1][0] + F02 * above[2][0]); const T AO01 = (F00 * above[0][1] + F01 * above[1][1] + F02 * above[2][1]); const T AO02 = (F00 * above[0][2] + F01 * above[1][2] + F02 * above[2][2]);
+    const T AO10 = (F10 * above[0][0] + F11 * above[1][0] + F12 * above[2][0]); const T AO11 = (F10 * above[0][1] + F11 * above[1][1] + F12 * above[2][1]); const T AO12 = (F10 * above[0][2] + F11 * above[1][2] + F12 * above[2][2]);
+    const T AO20 = (F20 * above[0][0] + F21 * above[1][0] + F22 * above[2][0]); const T AO21 = (F20 * above[0][1] + F21 * above[1][1] + F22 * above[2][1]); const T AO22 = (F20 * above[0][2] + F21 * above[1][2] + F22 * above[2][2]);
+    accelerance[m + 1][0][0] = (AO00 * F00 + AO01 * F01 + AO02 * F02) + axis[m][0] * (axis[m][0] * inverse_pivot[m]);
+    accelerance[m + 1][0][1] = (AO00 * F10 + AO01 * F11 + AO02 * F12) + axis[m][0] * (axis[m][1] * inverse_pivot[m]); accelerance[m + 1][1][0] = (AO00 * F10 + AO01 * F11 + AO02 * F12) + axis[m][0] * (axis[m][1] * inverse_pivot[m]);
+    accelerance[m + 1][0][2] = (AO00 * F20 + AO01 * F21 + AO02 * F22) + axis[m][0] * (axis[m][2] * inverse_pivot[m]); accelerance[m + 1][2][0] = (AO00 * F20 + AO01 * F21 + AO02 * F22) + axis[m][0] * (axis[m][2] * inverse_pivot[m]);
+    accelerance[m + 1][1][1] = (AO10 * F10 + AO11 * F11 + AO12 * F12) + axis[m][1] * (axis[m][1] * inverse_pivot[m]);
+    accelerance[m + 1][1][2] = (AO10 * F20 + AO11 * F21 + AO12 * F22) + axis[m][1] * (axis[m][2] * inverse_pivot[m]); accelerance[m + 1][2][1] = (AO10 * F20 + AO11 * F21 + AO12 * F22) + axis[m][1] * (axis[m][2] * inverse_pivot[m]);
+    accelerance[m + 1][2][2] = (AO20 * F20 + AO21 * F21 + AO22 * F22) + axis[m][2] * (axis[m][2] * inverse_pivot[m]);
   }
   T bias_above[9][3], relative_below[9][3], own_response[9];
   for (int k = 0; k < 9; ++k) {

@@ -55,12 +55,11 @@ std::vector<unsigned> used_components(const TreeInverseDynamics& tree) {
   return used;
 }
 
-JacobianLayout jacobian_layout(const Equations& e) {
-  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
-  std::size_t n = tree.axes.size(), W = tree.gradient_rest.size() / n;
-  JacobianLayout out;
+// the coordinates' tree in the order parents first: each node's coordinate and parent node
+void coordinate_tree(const TreeInverseDynamics& tree, JacobianLayout& out, std::vector<std::size_t>& node_of) {
+  std::size_t n = tree.axes.size();
   out.coordinate = tree.coordinate_order;
-  std::vector<std::size_t> node_of(n);
+  node_of.assign(n, 0);
   for (std::size_t m = 0; m < n; ++m) node_of[out.coordinate[m]] = m;
   std::vector<int> children(n, 0);
   for (std::size_t m = 0; m < n; ++m) {
@@ -71,10 +70,16 @@ JacobianLayout jacobian_layout(const Equations& e) {
   }
   for (std::size_t m = 0; m < n; ++m)
     if (children[m] > 1) out.branching.push_back(int(m));
-  // each coordinate's two columns load its joint's carrier; the rest's entry in the carrier's row
-  // goes with them, any other needs the carrier's… the row node's column of M⁻¹
+}
+
+// Each coordinate's two columns load its joint's carrier, with the rest's entry in the carrier's row;
+// any other entry of the rest needs the column of M⁻¹ of its row's node. A chain with any such column
+// takes every node's, so that all nodes have as many loads (one loop over the rows then serves a
+// node's columns together).
+void loads_and_rest(const TreeInverseDynamics& tree, const std::vector<std::size_t>& node_of, JacobianLayout& out) {
+  std::size_t n = tree.axes.size(), W = tree.gradient_rest.size() / n;
   std::vector<bool> carried(n * W, false);
-  std::vector<Load> loads;
+  std::vector<Load>& loads = out.loads;
   for (std::size_t l = 0; l < n; ++l) {
     std::size_t r = tree.joint_carrier[l], row = r * W;
     loads.push_back({node_of[r], scaled(-1, tree.acceleration_by_coordinate[l]), -tree.gradient_rest[row + l], int(l)});
@@ -82,31 +87,32 @@ JacobianLayout jacobian_layout(const Equations& e) {
     carried[row + l] = carried[row + n + l] = true;
   }
   std::vector<int> inverse_of(n, -1);
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t x = 0; x < 2 * n; ++x) {
-      const ex& value = tree.gradient_rest[a * W + x];
-      if (carried[a * W + x] || value.is_zero()) continue;
-      if (inverse_of[a] < 0) {
-        inverse_of[a] = int(out.inverse_columns++);
-        loads.push_back({node_of[a], {0, 0, 0}, ex(-1), -1 - inverse_of[a]});
-      }
-      out.rest.push_back({x, std::size_t(inverse_of[a]), value});
-    }
-  // a chain with any column of M⁻¹ takes every node's, so that all nodes have as many loads (one loop
-  // over the rows then serves a node's columns together)
-  bool chain = true;
-  for (std::size_t m = 0; m < n; ++m) chain = chain && tree.coordinate_parent[out.coordinate[m]] == (m ? int(out.coordinate[m - 1]) : -1);
-  for (std::size_t a = 0; chain && out.inverse_columns > 0 && a < n; ++a)
+  auto inverse_column = [&](std::size_t a) {
     if (inverse_of[a] < 0) {
       inverse_of[a] = int(out.inverse_columns++);
       loads.push_back({node_of[a], {0, 0, 0}, ex(-1), -1 - inverse_of[a]});
     }
+    return std::size_t(inverse_of[a]);
+  };
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t x = 0; x < 2 * n; ++x) {
+      const ex& value = tree.gradient_rest[a * W + x];
+      if (!carried[a * W + x] && !value.is_zero()) out.rest.push_back({x, inverse_column(a), value});
+    }
+  for (std::size_t a = 0; out.chain && out.inverse_columns > 0 && a < n; ++a) inverse_column(a);
   std::stable_sort(loads.begin(), loads.end(), [](const Load& a, const Load& b) { return a.node < b.node; });
-  out.loads = loads;
   for (std::size_t m = 0, k = 0; m <= n; ++m) {
     while (k < loads.size() && loads[k].node < m) ++k;
     out.first_load.push_back(k);
   }
+}
+
+JacobianLayout jacobian_layout(const Equations& e) {
+  const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
+  JacobianLayout out;
+  std::vector<std::size_t> node_of;
+  coordinate_tree(tree, out, node_of);
+  loads_and_rest(tree, node_of, out);
   out.components = used_components(tree);
   return out;
 }
@@ -169,58 +175,14 @@ void write_tree_values(BodyWriter& w, const Equations& e, const JacobianLayout& 
   w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
 }
 
-// the recursion's factors at this state (Featherstone's articulated masses, for particles): IA, the
-// pivot D = Sᵀ IA S (kept as 1/D), the gain V = IA S / D, the mass passed up IA − IA S Vᵀ, leaves first; then from
-// the root Φ = I − S Vᵀ (the acceleration carried across the joint, its load held), the accelerance
-// Ω = Φ Ω_parent Φᵀ + S Sᵀ / D (a bias p on the node's subtree gives a = −Ω p along the path to it)
-// and the response e = Φ Ω_parent V − S / D (q'' = e · p at the node)
-std::string tree_factors(const Components& k, std::size_t n) {
-  std::size_t C = k.count();
-  auto entry = [](const std::string& name, std::size_t a, std::size_t b) { return fmt::format("{}[{}][{}]", name, a, b); };
-  std::string out = fmt::format("  T articulated[{0}][{1}][{1}], inverse_pivot[{0}], gain[{0}][{1}], passed[{0}][{1}][{1}];\n", n, C);
-  out += fmt::format("  for (int m = 0; m < {}; ++m) {{\n", n);
-  out += k.each_pair([&](std::size_t a, std::size_t b) { return fmt::format("articulated[m][{}][{}] = {};", a, b, a == b ? "carried[m]" : "T(0)"); }, "    ");
-  out += fmt::format("  }}\n  for (int m = {}; m >= 0; --m) {{\n", n - 1);
-  out += k.each([&](std::size_t a) {
-    return fmt::format("const T U{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("articulated[m][{}][{}] * axis[m][{}]", a, b, b); }));
-  }, "    ");
-  out += "    inverse_pivot[m] = T(1) / " + k.sum([](std::size_t a) { return fmt::format("axis[m][{0}] * U{0}", a); }) + ";\n";
-  out += k.each([](std::size_t a) { return fmt::format("gain[m][{0}] = U{0} * inverse_pivot[m];", a); }, "    ");
-  out += k.each_pair([](std::size_t a, std::size_t b) { return fmt::format("passed[m][{0}][{1}] = articulated[m][{0}][{1}] - U{0} * gain[m][{1}];", a, b); }, "    ");
-  out += "    if (parent[m] >= 0) {\n";
-  out += k.each_pair([&](std::size_t a, std::size_t b) {
-    return fmt::format("{0} = {0} + passed[m][{1}][{2}];", entry("articulated[parent[m]]", a, b), a, b);
-  }, "      ");
-  out += "    }\n  }\n";
-  // accelerance and the readers below are indexed by node + 1: [0] is the ground's, zero
-  out += fmt::format("  T across[{0}][{1}][{1}], accelerance[{2}][{1}][{1}], response[{0}][{1}];\n", n, C, n + 1);
-  out += k.each_pair([](std::size_t a, std::size_t b) { return fmt::format("accelerance[0][{}][{}] = T(0);", a, b); }, "  ");
-  out += fmt::format("  for (int m = 0; m < {}; ++m) {{\n", n);
-  out += k.each_pair([](std::size_t a, std::size_t b) {
-    return fmt::format("across[m][{0}][{1}] = {2} - axis[m][{0}] * gain[m][{1}];", a, b, a == b ? "T(1)" : "T(0)");
-  }, "    ");
-  out += "    const T (&above)[" + std::to_string(C) + "][" + std::to_string(C) + "] = accelerance[parent[m] + 1];\n";
-  out += k.each([&](std::size_t a) {
-    return fmt::format("const T OV{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("above[{}][{}] * gain[m][{}]", a, b, b); }));
-  }, "    ");
-  out += k.each([&](std::size_t a) {
-    return fmt::format("response[m][{0}] = {1} - axis[m][{0}] * inverse_pivot[m];", a,
-                       k.sum([&](std::size_t b) { return fmt::format("across[m][{}][{}] * OV{}", a, b, b); }));
-  }, "    ");
-  out += k.each_pair([&](std::size_t a, std::size_t b) {
-    return fmt::format("const T AO{}{} = {};", a, b, k.sum([&](std::size_t c) { return fmt::format("across[m][{}][{}] * above[{}][{}]", a, c, c, b); }));
-  }, "    ");
-  out += k.each_pair([&](std::size_t a, std::size_t b) {
-    return fmt::format("accelerance[m + 1][{0}][{1}] = {2} + axis[m][{0}] * (axis[m][{1}] * inverse_pivot[m]);", a, b,
-                       k.sum([&](std::size_t c) { return fmt::format("AO{}{} * across[m][{}][{}]", a, c, b, c); }));
-  }, "    ");
-  out += "  }\n";
-  return out;
-}
-
-// The same factors for a chain, each node's from the one below (IA) or above (Ω) kept in local
-// values instead of arrays, and the symmetric IA and Ω by their upper triangles.
-std::string chain_factors(const Components& k, std::size_t n) {
+// The recursion's factors at this state (Featherstone's articulated masses, for particles): IA, the
+// pivot D = Sᵀ IA S (kept as 1/D), the gain V = IA S / D and the mass passed up IA − IA S Vᵀ, leaves
+// first; then from the root Φ = I − S Vᵀ (the acceleration carried across the joint, its load held),
+// the accelerance Ω = Φ Ω_parent Φᵀ + S Sᵀ / D (a bias p on the node's subtree gives a = −Ω p along
+// the path to it) and the response e = Φ Ω_parent V − S / D (q'' = e · p at the node). A chain keeps
+// each node's IA and Ω for the next one in local values, by their upper triangles (both symmetric);
+// a tree adds them up in arrays.
+std::string recursion_factors(const Components& k, std::size_t n, bool chain) {
   std::size_t C = k.count();
   auto sym = [](const std::string& name, std::size_t a, std::size_t b) { return fmt::format("{}{}{}", name, std::min(a, b), std::max(a, b)); };
   auto upper = [&](const std::function<std::string(std::size_t, std::size_t)>& statement, const std::string& indent) {
@@ -229,41 +191,63 @@ std::string chain_factors(const Components& k, std::size_t n) {
       for (std::size_t b = a; b < C; ++b) out += indent + statement(a, b) + "\n";
     return out;
   };
+  auto mirrored = [](const std::string& array, std::size_t a, std::size_t b, const std::string& value) {
+    return fmt::format("{0}[{1}][{2}] = {3};{4}", array, a, b, value, a == b ? "" : fmt::format(" {}[{}][{}] = {};", array, b, a, value));
+  };
+  auto articulated = [&](std::size_t a, std::size_t b) { return chain ? sym("A", a, b) : fmt::format("articulated[m][{}][{}]", a, b); };
+  auto above = [&](std::size_t a, std::size_t b) { return chain ? sym("O", a, b) : fmt::format("above[{}][{}]", a, b); };
+
   std::string out = fmt::format("  T inverse_pivot[{0}], gain[{0}][{1}], passed[{0}][{1}][{1}];\n", n, C);
-  out += upper([](std::size_t a, std::size_t b) { return fmt::format("T I{}{} = T(0);", a, b); }, "  ");
+  if (chain) {
+    out += upper([](std::size_t a, std::size_t b) { return fmt::format("T I{}{} = T(0);", a, b); }, "  ");
+  } else {
+    out += fmt::format("  T articulated[{0}][{1}][{1}];\n  for (int m = 0; m < {0}; ++m) {{\n", n, C);
+    out += k.each_pair([&](std::size_t a, std::size_t b) { return fmt::format("articulated[m][{}][{}] = {};", a, b, a == b ? "carried[m]" : "T(0)"); }, "    ");
+    out += "  }\n";
+  }
   out += fmt::format("  for (int m = {}; m >= 0; --m) {{\n", n - 1);
-  out += upper([](std::size_t a, std::size_t b) { return fmt::format("const T A{0}{1} = I{0}{1}{2};", a, b, a == b ? " + carried[m]" : ""); }, "    ");
+  if (chain) out += upper([](std::size_t a, std::size_t b) { return fmt::format("const T A{0}{1} = I{0}{1}{2};", a, b, a == b ? " + carried[m]" : ""); }, "    ");
   out += k.each([&](std::size_t a) {
-    return fmt::format("const T U{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * axis[m][{}]", sym("A", a, b), b); }));
+    return fmt::format("const T U{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * axis[m][{}]", articulated(a, b), b); }));
   }, "    ");
   out += "    inverse_pivot[m] = T(1) / " + k.sum([](std::size_t a) { return fmt::format("axis[m][{0}] * U{0}", a); }) + ";\n";
   out += k.each([](std::size_t a) { return fmt::format("gain[m][{0}] = U{0} * inverse_pivot[m];", a); }, "    ");
-  out += upper([](std::size_t a, std::size_t b) {
-    return fmt::format("I{0}{1} = A{0}{1} - U{0} * gain[m][{1}]; passed[m][{0}][{1}] = I{0}{1};{2}", a, b,
-                       a == b ? "" : fmt::format(" passed[m][{1}][{0}] = I{0}{1};", a, b));
-  }, "    ");
+  if (chain) {
+    out += upper([&](std::size_t a, std::size_t b) {
+      return fmt::format("I{0}{1} = A{0}{1} - U{0} * gain[m][{1}]; ", a, b) + mirrored("passed[m]", a, b, fmt::format("I{}{}", a, b));
+    }, "    ");
+  } else {
+    out += k.each_pair([&](std::size_t a, std::size_t b) { return fmt::format("passed[m][{0}][{1}] = {2} - U{0} * gain[m][{1}];", a, b, articulated(a, b)); }, "    ");
+    out += "    if (parent[m] >= 0) {\n";
+    out += k.each_pair([&](std::size_t a, std::size_t b) {
+      return fmt::format("articulated[parent[m]][{0}][{1}] = articulated[parent[m]][{0}][{1}] + passed[m][{0}][{1}];", a, b);
+    }, "      ");
+    out += "    }\n";
+  }
   out += "  }\n";
+  // accelerance is indexed by node + 1: [0] is the ground's, zero
   out += fmt::format("  T across[{0}][{1}][{1}], accelerance[{2}][{1}][{1}], response[{0}][{1}];\n", n, C, n + 1);
   out += k.each_pair([](std::size_t a, std::size_t b) { return fmt::format("accelerance[0][{}][{}] = T(0);", a, b); }, "  ");
-  out += upper([](std::size_t a, std::size_t b) { return fmt::format("T O{}{} = T(0);", a, b); }, "  ");
+  if (chain) out += upper([](std::size_t a, std::size_t b) { return fmt::format("T O{}{} = T(0);", a, b); }, "  ");
   out += fmt::format("  for (int m = 0; m < {}; ++m) {{\n", n);
   out += k.each_pair([](std::size_t a, std::size_t b) {
     return fmt::format("const T F{0}{1} = {2} - axis[m][{0}] * gain[m][{1}]; across[m][{0}][{1}] = F{0}{1};", a, b, a == b ? "T(1)" : "T(0)");
   }, "    ");
+  if (!chain) out += fmt::format("    const T (&above)[{0}][{0}] = accelerance[parent[m] + 1];\n", C);
   out += k.each([&](std::size_t a) {
-    return fmt::format("const T OV{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * gain[m][{}]", sym("O", a, b), b); }));
+    return fmt::format("const T OV{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * gain[m][{}]", above(a, b), b); }));
   }, "    ");
   out += k.each([&](std::size_t a) {
-    return fmt::format("response[m][{0}] = {1} - axis[m][{0}] * inverse_pivot[m];", a,
-                       k.sum([&](std::size_t b) { return fmt::format("F{}{} * OV{}", a, b, b); }));
+    return fmt::format("response[m][{0}] = {1} - axis[m][{0}] * inverse_pivot[m];", a, k.sum([&](std::size_t b) { return fmt::format("F{}{} * OV{}", a, b, b); }));
   }, "    ");
   out += k.each_pair([&](std::size_t a, std::size_t b) {
-    return fmt::format("const T AO{}{} = {};", a, b, k.sum([&](std::size_t c) { return fmt::format("F{}{} * {}", a, c, sym("O", c, b)); }));
+    return fmt::format("const T AO{}{} = {};", a, b, k.sum([&](std::size_t c) { return fmt::format("F{}{} * {}", a, c, above(c, b)); }));
   }, "    ");
   out += upper([&](std::size_t a, std::size_t b) {
-    return fmt::format("O{0}{1} = {2} + axis[m][{0}] * (axis[m][{1}] * inverse_pivot[m]); accelerance[m + 1][{0}][{1}] = O{0}{1};{3}", a, b,
-                       k.sum([&](std::size_t c) { return fmt::format("AO{}{} * F{}{}", a, c, b, c); }),
-                       a == b ? "" : fmt::format(" accelerance[m + 1][{1}][{0}] = O{0}{1};", a, b));
+    std::string value = fmt::format("{} + axis[m][{}] * (axis[m][{}] * inverse_pivot[m])",
+                                    k.sum([&](std::size_t c) { return fmt::format("AO{}{} * F{}{}", a, c, b, c); }), a, b);
+    if (!chain) return mirrored("accelerance[m + 1]", a, b, value);
+    return fmt::format("O{}{} = {}; ", a, b, value) + mirrored("accelerance[m + 1]", a, b, fmt::format("O{}{}", a, b));
   }, "    ");
   return out + "  }\n";
 }
@@ -290,10 +274,6 @@ std::string load_effects(const Components& k, std::size_t L) {
   out += "    own_response[k] = own;\n  }\n";
   return out;
 }
-
-}  // namespace
-
-namespace {
 
 // where load k writes: J's lower block, or (the rest's loads) the local columns of −M⁻¹
 std::string destination(std::size_t n, std::size_t inverse_columns, const std::string& indent, const std::string& suffix = "") {
@@ -510,7 +490,7 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   // the upper block [0 I] first, as one stream of stores
   std::string body = fmt::format("  for (int i = 0; i < {}; ++i) J[i] = T(0);\n  for (int i = 0; i < {}; ++i) J[i * {} + {} + i] = T(1);\n",
                                  n * N, n, N, n);
-  body += (layout.chain ? chain_factors(k, n) : tree_factors(k, n)) + load_effects(k, layout.loads.size());
+  body += recursion_factors(k, n, layout.chain) + load_effects(k, layout.loads.size());
   if (layout.inverse_columns > 0) body += fmt::format("  T inverse[{}];\n", n * layout.inverse_columns);
   if (planar_chain) body += planar_chain_entries(n, layout.inverse_columns, identity, uniform_loads);
   else body += layout.chain ? chain_entries(k, n, layout.inverse_columns) : tree_entries(k, n, layout.inverse_columns);
