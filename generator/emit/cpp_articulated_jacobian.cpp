@@ -7,6 +7,8 @@
 
 #include "emit/cpp_articulated.hpp"
 #include "emit/cpp_body_writer.hpp"
+#include "emit/cpp_component_text.hpp"
+#include "emit/cpp_jacobian_readers.hpp"
 #include "kinematics/vector3.hpp"
 
 namespace eomgen {
@@ -124,34 +126,6 @@ std::string list(const Container& values) {
   return out;
 }
 
-// C++ text of Σ_c term(c) over the tree's components
-class Components {
- public:
-  explicit Components(std::size_t count) : count_(count) {}
-  std::size_t count() const { return count_; }
-  std::string sum(const std::function<std::string(std::size_t)>& term) const {
-    std::string out;
-    for (std::size_t c = 0; c < count_; ++c) out += (c ? " + " : "") + term(c);
-    return count_ > 1 ? "(" + out + ")" : out;
-  }
-  // one statement per component a, or per pair (a, b)
-  std::string each(const std::function<std::string(std::size_t)>& statement, const std::string& indent) const {
-    std::string out;
-    for (std::size_t a = 0; a < count_; ++a) out += indent + statement(a) + "\n";
-    return out;
-  }
-  std::string each_pair(const std::function<std::string(std::size_t, std::size_t)>& statement, const std::string& indent) const {
-    return each([&](std::size_t a) {
-      std::string row;
-      for (std::size_t b = 0; b < count_; ++b) row += (b ? " " : "") + statement(a, b);
-      return row;
-    }, indent);
-  }
-
- private:
-  std::size_t count_;
-};
-
 // the symbolic values: each node's axis and mass, each load's field and own force, the rest's entries
 void write_tree_values(BodyWriter& w, const Equations& e, const JacobianLayout& layout) {
   const TreeInverseDynamics& tree = e.articulated_inverse_dynamics;
@@ -175,79 +149,91 @@ void write_tree_values(BodyWriter& w, const Equations& e, const JacobianLayout& 
   w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
 }
 
-// The recursion's factors at this state (Featherstone's articulated masses, for particles): IA, the
-// pivot D = Sᵀ IA S (kept as 1/D), the gain V = IA S / D and the mass passed up IA − IA S Vᵀ, leaves
-// first; then from the root Φ = I − S Vᵀ (the acceleration carried across the joint, its load held),
-// the accelerance Ω = Φ Ω_parent Φᵀ + S Sᵀ / D (a bias p on the node's subtree gives a = −Ω p along
-// the path to it) and the response e = Φ Ω_parent V − S / D (q'' = e · p at the node). A chain keeps
-// each node's IA and Ω for the next one in local values, by their upper triangles (both symmetric);
-// a tree adds them up in arrays.
-std::string recursion_factors(const Components& k, std::size_t n, bool chain) {
-  std::size_t C = k.count();
-  auto sym = [](const std::string& name, std::size_t a, std::size_t b) { return fmt::format("{}{}{}", name, std::min(a, b), std::max(a, b)); };
-  auto upper = [&](const std::function<std::string(std::size_t, std::size_t)>& statement, const std::string& indent) {
+// How the factors' text reads a node's quantities: a chain keeps each node's IA and Ω for the next
+// one in local values, by their upper triangles (both symmetric); a tree adds them up in arrays.
+class FactorText {
+ public:
+  FactorText(const ComponentText& k, bool chain) : k_(k), chain_(chain) {}
+  // one statement per entry (a, b) with a ≤ b
+  std::string upper(const std::function<std::string(std::size_t, std::size_t)>& statement, const std::string& indent) const {
     std::string out;
-    for (std::size_t a = 0; a < C; ++a)
-      for (std::size_t b = a; b < C; ++b) out += indent + statement(a, b) + "\n";
+    for (std::size_t a = 0; a < k_.count(); ++a)
+      for (std::size_t b = a; b < k_.count(); ++b) out += indent + statement(a, b) + "\n";
     return out;
-  };
-  auto mirrored = [](const std::string& array, std::size_t a, std::size_t b, const std::string& value) {
+  }
+  static std::string mirrored(const std::string& array, std::size_t a, std::size_t b, const std::string& value) {
     return fmt::format("{0}[{1}][{2}] = {3};{4}", array, a, b, value, a == b ? "" : fmt::format(" {}[{}][{}] = {};", array, b, a, value));
-  };
-  auto articulated = [&](std::size_t a, std::size_t b) { return chain ? sym("A", a, b) : fmt::format("articulated[m][{}][{}]", a, b); };
-  auto above = [&](std::size_t a, std::size_t b) { return chain ? sym("O", a, b) : fmt::format("above[{}][{}]", a, b); };
+  }
+  std::string articulated(std::size_t a, std::size_t b) const { return chain_ ? symmetric("A", a, b) : fmt::format("articulated[m][{}][{}]", a, b); }
+  std::string above(std::size_t a, std::size_t b) const { return chain_ ? symmetric("O", a, b) : fmt::format("above[{}][{}]", a, b); }
+  bool chain() const { return chain_; }
 
+ private:
+  static std::string symmetric(const std::string& name, std::size_t a, std::size_t b) { return fmt::format("{}{}{}", name, std::min(a, b), std::max(a, b)); }
+  const ComponentText& k_;
+  bool chain_;
+};
+
+// The recursion's factors at this state (Featherstone's articulated masses, for particles), leaves
+// first: IA, the pivot D = Sᵀ IA S (kept as 1/D), the gain V = IA S / D and the mass passed up
+// IA − IA S Vᵀ
+std::string inward_factors(const ComponentText& k, const FactorText& f, std::size_t n) {
+  std::size_t C = k.count();
   std::string out = fmt::format("  T inverse_pivot[{0}], gain[{0}][{1}], passed[{0}][{1}][{1}];\n", n, C);
-  if (chain) {
-    out += upper([](std::size_t a, std::size_t b) { return fmt::format("T I{}{} = T(0);", a, b); }, "  ");
+  if (f.chain()) {
+    out += f.upper([](std::size_t a, std::size_t b) { return fmt::format("T I{}{} = T(0);", a, b); }, "  ");
   } else {
     out += fmt::format("  T articulated[{0}][{1}][{1}];\n  for (int m = 0; m < {0}; ++m) {{\n", n, C);
     out += k.each_pair([&](std::size_t a, std::size_t b) { return fmt::format("articulated[m][{}][{}] = {};", a, b, a == b ? "carried[m]" : "T(0)"); }, "    ");
     out += "  }\n";
   }
   out += fmt::format("  for (int m = {}; m >= 0; --m) {{\n", n - 1);
-  if (chain) out += upper([](std::size_t a, std::size_t b) { return fmt::format("const T A{0}{1} = I{0}{1}{2};", a, b, a == b ? " + carried[m]" : ""); }, "    ");
+  if (f.chain()) out += f.upper([](std::size_t a, std::size_t b) { return fmt::format("const T A{0}{1} = I{0}{1}{2};", a, b, a == b ? " + carried[m]" : ""); }, "    ");
   out += k.each([&](std::size_t a) {
-    return fmt::format("const T U{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * axis[m][{}]", articulated(a, b), b); }));
+    return fmt::format("const T U{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * axis[m][{}]", f.articulated(a, b), b); }));
   }, "    ");
   out += "    inverse_pivot[m] = T(1) / " + k.sum([](std::size_t a) { return fmt::format("axis[m][{0}] * U{0}", a); }) + ";\n";
   out += k.each([](std::size_t a) { return fmt::format("gain[m][{0}] = U{0} * inverse_pivot[m];", a); }, "    ");
-  if (chain) {
-    out += upper([&](std::size_t a, std::size_t b) {
-      return fmt::format("I{0}{1} = A{0}{1} - U{0} * gain[m][{1}]; ", a, b) + mirrored("passed[m]", a, b, fmt::format("I{}{}", a, b));
-    }, "    ");
-  } else {
-    out += k.each_pair([&](std::size_t a, std::size_t b) { return fmt::format("passed[m][{0}][{1}] = {2} - U{0} * gain[m][{1}];", a, b, articulated(a, b)); }, "    ");
-    out += "    if (parent[m] >= 0) {\n";
-    out += k.each_pair([&](std::size_t a, std::size_t b) {
-      return fmt::format("articulated[parent[m]][{0}][{1}] = articulated[parent[m]][{0}][{1}] + passed[m][{0}][{1}];", a, b);
-    }, "      ");
-    out += "    }\n";
-  }
-  out += "  }\n";
-  // accelerance is indexed by node + 1: [0] is the ground's, zero
-  out += fmt::format("  T across[{0}][{1}][{1}], accelerance[{2}][{1}][{1}], response[{0}][{1}];\n", n, C, n + 1);
+  if (f.chain())
+    return out + f.upper([&](std::size_t a, std::size_t b) {
+      return fmt::format("I{0}{1} = A{0}{1} - U{0} * gain[m][{1}]; ", a, b) + FactorText::mirrored("passed[m]", a, b, fmt::format("I{}{}", a, b));
+    }, "    ") + "  }\n";
+  out += k.each_pair([&](std::size_t a, std::size_t b) { return fmt::format("passed[m][{0}][{1}] = {2} - U{0} * gain[m][{1}];", a, b, f.articulated(a, b)); }, "    ");
+  out += "    if (parent[m] >= 0) {\n";
+  out += k.each_pair([&](std::size_t a, std::size_t b) {
+    return fmt::format("articulated[parent[m]][{0}][{1}] = articulated[parent[m]][{0}][{1}] + passed[m][{0}][{1}];", a, b);
+  }, "      ");
+  return out + "    }\n  }\n";
+}
+
+// then from the root: Φ = I − S Vᵀ (the acceleration carried across the joint, its load held), the
+// accelerance Ω = Φ Ω_parent Φᵀ + S Sᵀ / D (a bias p on the node's subtree gives a = −Ω p along the
+// path to it) and the response e = Φ Ω_parent V − S / D (q'' = e · p at the node); accelerance is
+// indexed by node + 1, [0] the ground's (zero)
+std::string outward_factors(const ComponentText& k, const FactorText& f, std::size_t n) {
+  std::size_t C = k.count();
+  std::string out = fmt::format("  T across[{0}][{1}][{1}], accelerance[{2}][{1}][{1}], response[{0}][{1}];\n", n, C, n + 1);
   out += k.each_pair([](std::size_t a, std::size_t b) { return fmt::format("accelerance[0][{}][{}] = T(0);", a, b); }, "  ");
-  if (chain) out += upper([](std::size_t a, std::size_t b) { return fmt::format("T O{}{} = T(0);", a, b); }, "  ");
+  if (f.chain()) out += f.upper([](std::size_t a, std::size_t b) { return fmt::format("T O{}{} = T(0);", a, b); }, "  ");
   out += fmt::format("  for (int m = 0; m < {}; ++m) {{\n", n);
   out += k.each_pair([](std::size_t a, std::size_t b) {
     return fmt::format("const T F{0}{1} = {2} - axis[m][{0}] * gain[m][{1}]; across[m][{0}][{1}] = F{0}{1};", a, b, a == b ? "T(1)" : "T(0)");
   }, "    ");
-  if (!chain) out += fmt::format("    const T (&above)[{0}][{0}] = accelerance[parent[m] + 1];\n", C);
+  if (!f.chain()) out += fmt::format("    const T (&above)[{0}][{0}] = accelerance[parent[m] + 1];\n", C);
   out += k.each([&](std::size_t a) {
-    return fmt::format("const T OV{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * gain[m][{}]", above(a, b), b); }));
+    return fmt::format("const T OV{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("{} * gain[m][{}]", f.above(a, b), b); }));
   }, "    ");
   out += k.each([&](std::size_t a) {
     return fmt::format("response[m][{0}] = {1} - axis[m][{0}] * inverse_pivot[m];", a, k.sum([&](std::size_t b) { return fmt::format("F{}{} * OV{}", a, b, b); }));
   }, "    ");
   out += k.each_pair([&](std::size_t a, std::size_t b) {
-    return fmt::format("const T AO{}{} = {};", a, b, k.sum([&](std::size_t c) { return fmt::format("F{}{} * {}", a, c, above(c, b)); }));
+    return fmt::format("const T AO{}{} = {};", a, b, k.sum([&](std::size_t c) { return fmt::format("F{}{} * {}", a, c, f.above(c, b)); }));
   }, "    ");
-  out += upper([&](std::size_t a, std::size_t b) {
+  out += f.upper([&](std::size_t a, std::size_t b) {
     std::string value = fmt::format("{} + axis[m][{}] * (axis[m][{}] * inverse_pivot[m])",
                                     k.sum([&](std::size_t c) { return fmt::format("AO{}{} * F{}{}", a, c, b, c); }), a, b);
-    if (!chain) return mirrored("accelerance[m + 1]", a, b, value);
-    return fmt::format("O{}{} = {}; ", a, b, value) + mirrored("accelerance[m + 1]", a, b, fmt::format("O{}{}", a, b));
+    if (!f.chain()) return FactorText::mirrored("accelerance[m + 1]", a, b, value);
+    return fmt::format("O{}{} = {}; ", a, b, value) + FactorText::mirrored("accelerance[m + 1]", a, b, fmt::format("O{}{}", a, b));
   }, "    ");
   return out + "  }\n";
 }
@@ -255,7 +241,7 @@ std::string recursion_factors(const Components& k, std::size_t n, bool chain) {
 // each load's effect where it acts: the bias P = V ρ − IAᵃ w it passes to the node's parent, the
 // node's own q'' (= ρ / D + V · (w − a_parent), a_parent = −Ω_parent P) and the acceleration
 // relative to the field it leaves the node with, from which the subtree below moves as a free one
-std::string load_effects(const Components& k, std::size_t L) {
+std::string load_effects(const ComponentText& k, std::size_t L) {
   std::size_t C = k.count();
   std::string out = fmt::format("  T bias_above[{0}][{1}], relative_below[{0}][{1}], own_response[{0}];\n", L, C);
   out += fmt::format("  for (int k = 0; k < {}; ++k) {{\n    const int r = load_node[k];\n", L);
@@ -273,170 +259,6 @@ std::string load_effects(const Components& k, std::size_t L) {
   }, "    ");
   out += "    own_response[k] = own;\n  }\n";
   return out;
-}
-
-// where load k writes: J's lower block, or (the rest's loads) the local columns of −M⁻¹
-std::string destination(std::size_t n, std::size_t inverse_columns, const std::string& indent, const std::string& suffix = "") {
-  if (inverse_columns == 0)
-    return fmt::format("{0}T* const out{1} = J + {2} + load_column[k{1}];\n{0}const int stride{1} = {3};\n", indent, suffix, 2 * n * n, 2 * n);
-  return fmt::format("{0}T* const out{1} = load_column[k{1}] >= 0 ? J + {2} + load_column[k{1}] : inverse + (-1 - load_column[k{1}]);\n"
-                     "{0}const int stride{1} = load_column[k{1}] >= 0 ? {3} : {4};\n",
-                     indent, suffix, 2 * n * n, 2 * n, inverse_columns);
-}
-
-// A chain: the entries above each loaded node m read d(j, m − 1) · P, with d(m, m) = e_m and
-// d(j, m) = Φ_m d(j, m − 1); those below it s(j, m) · (a − w), with s(j, j − 1) = −V_j and
-// s(j, m − 1) = Φ_mᵀ s(j, m). Each step advances the readers of all rows at once (independent
-// products, where one row at a time would wait on each one's latency).
-std::string chain_entries(const Components& k, std::size_t n, std::size_t inverse_columns) {
-  std::size_t C = k.count();
-  auto constants = [&](const std::string& name, const std::string& source) {
-    std::string out = "const T";
-    for (std::size_t a = 0; a < C; ++a) out += fmt::format("{} {}{} = {}[{}]", a ? "," : "", name, a, source, a);
-    return out + ";";
-  };
-  auto across = [&](bool transposed) {
-    std::string out = "const T";
-    for (std::size_t a = 0; a < C; ++a)
-      for (std::size_t b = 0; b < C; ++b) out += fmt::format("{} A{}{} = across[m][{}][{}]", a || b ? "," : "", a, b, transposed ? b : a, transposed ? a : b);
-    return out + ";";
-  };
-  auto advance = [&](const std::string& range) {
-    std::string out = fmt::format("      for (int j = {}) {{\n", range);
-    std::string load = "        const T";
-    for (std::size_t a = 0; a < C; ++a) load += fmt::format("{} d{} = reader[{}][j]", a ? "," : "", a, a);
-    out += load + ";\n";
-    out += k.each([&](std::size_t a) {
-      return fmt::format("reader[{}][j] = {};", a, k.sum([&](std::size_t b) { return fmt::format("A{}{} * d{}", a, b, b); }));
-    }, "        ");
-    return out + "      }\n";
-  };
-  std::string out = fmt::format("  {{\n    T reader[{}][{}] = {{}};\n    for (int m = 0; m < {}; ++m) {{\n", C, n, n);
-  out += "      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + destination(n, inverse_columns, "        ");
-  out += "        out[coordinate[m] * stride] = own_response[k];\n        " + constants("P", "bias_above[k]") + "\n";
-  out += "        for (int j = 0; j < m; ++j) out[coordinate[j] * stride] = " +
-         k.sum([](std::size_t a) { return fmt::format("reader[{0}][j] * P{0}", a); }) + ";\n      }\n";
-  out += "      " + across(false) + "\n" + advance("0; j < m; ++j");
-  out += k.each([](std::size_t a) { return fmt::format("reader[{0}][m] = response[m][{0}];", a); }, "      ");
-  out += fmt::format("    }}\n  }}\n  {{\n    T reader[{}][{}] = {{}};\n    for (int m = {}; m >= 0; --m) {{\n", C, n, n - 1);
-  out += fmt::format("      if (m + 1 < {}) {{\n", n);
-  out += k.each([](std::size_t a) { return fmt::format("reader[{0}][m + 1] = -gain[m + 1][{0}];", a); }, "        ");
-  out += "      }\n      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + destination(n, inverse_columns, "        ");
-  out += "        " + constants("G", "relative_below[k]") + "\n";
-  out += fmt::format("        for (int j = m + 1; j < {}; ++j) out[coordinate[j] * stride] = ", n) +
-         k.sum([](std::size_t a) { return fmt::format("reader[{0}][j] * G{0}", a); }) + ";\n      }\n";
-  out += "      " + across(true) + "\n" + advance(fmt::format("m + 1; j < {}; ++j", n));
-  return out + "    }\n  }\n";
-}
-
-// The planar chain's two passes with the same number of loads at every node: one loop over the rows
-// per step writes all the node's columns and advances the row's number once.
-std::string fused_planar_passes(std::size_t n, std::size_t inverse_columns, bool identity, std::size_t loads) {
-  auto row = [&](const std::string& j) { return identity ? j : "coordinate[" + j + "]"; };
-  auto each = [&](const std::function<std::string(const std::string&)>& text) {
-    std::string out;
-    for (std::size_t i = 0; i < loads; ++i) out += text(std::to_string(i));
-    return out;
-  };
-  auto targets = [&](const std::string& indent) {
-    return each([&](const std::string& i) {
-      return fmt::format("{}const int k{} = {} * m + {};\n", indent, i, loads, i) + destination(n, inverse_columns, indent, i);
-    });
-  };
-  std::string out = fmt::format("  {{\n    T delta[{0}] = {{}};\n    for (int m = 0; m < {0}; ++m) {{\n", n);
-  out += targets("      ");
-  out += each([&](const std::string& i) { return fmt::format("      out{0}[{1} * stride{0}] = own_response[k{0}];\n", i, row("m")); });
-  out += "      if (m == 0) continue;\n";
-  out += each([&](const std::string& i) {
-    return fmt::format("      out{0}[{1} * stride{0}] = response[m - 1][0] * bias_above[k{0}][0] + response[m - 1][1] * bias_above[k{0}][1];\n"
-                       "      const T through{0} = image[m - 1][0] * bias_above[k{0}][0] + image[m - 1][1] * bias_above[k{0}][1];\n",
-                       i, row("(m - 1)"));
-  });
-  out += "      for (int j = 0; j < m - 1; ++j) {\n        const T d = delta[j];\n";
-  out += each([&](const std::string& i) { return fmt::format("        out{0}[{1} * stride{0}] = d * through{0};\n", i, row("j")); });
-  out += "        delta[j] = d * carry[m];\n      }\n"
-         "      delta[m - 1] = normal[m][0] * response[m - 1][0] + normal[m][1] * response[m - 1][1];\n    }\n  }\n";
-  out += fmt::format("  {{\n    T sigma[{0}] = {{}};\n    for (int m = {1}; m >= 0; --m) {{\n", n, n - 2);
-  out += targets("      ");
-  out += each([&](const std::string& i) {
-    return fmt::format("      out{0}[{1} * stride{0}] = -(gain[m + 1][0] * relative_below[k{0}][0] + gain[m + 1][1] * relative_below[k{0}][1]);\n"
-                       "      const T through{0} = normal[m + 1][0] * relative_below[k{0}][0] + normal[m + 1][1] * relative_below[k{0}][1];\n",
-                       i, row("(m + 1)"));
-  });
-  out += fmt::format("      for (int j = m + 2; j < {}; ++j) {{\n        const T s = sigma[j];\n", n);
-  out += each([&](const std::string& i) { return fmt::format("        out{0}[{1} * stride{0}] = s * through{0};\n", i, row("j")); });
-  out += "        sigma[j] = s * carry[m + 1];\n      }\n"
-         "      sigma[m + 1] = -(image[m][0] * gain[m + 1][0] + image[m][1] * gain[m + 1][1]);\n    }\n  }\n";
-  return out;
-}
-
-// A planar chain: Φ = I − S Vᵀ annihilates S, so in the plane it has rank 1, Φ_m = image_m normal_mᵀ
-// with normal_m ⟂ S_m; a product of them is image · Π carry · normalᵀ, carry_m = normal_m · image_m−1.
-// The readers d(j, m) and s(j, m) of a chain are then one number per row, δ_j and σ_j, and each step
-// multiplies them by one carry: a multiplication per entry and one per row and step.
-std::string planar_chain_entries(std::size_t n, std::size_t inverse_columns, bool identity, std::size_t uniform_loads) {
-  auto row = [&](const std::string& j) { return identity ? j : "coordinate[" + j + "]"; };
-  std::string dest = "        const int k0 = k;\n" + destination(n, inverse_columns, "        ", "0") +
-                     "        T* const out = out0;\n        const int stride = stride0;\n";
-  std::string out = fmt::format("  T normal[{0}][2], image[{0}][2], carry[{0}];\n  for (int m = 0; m < {0}; ++m) {{\n", n);
-  out += "    normal[m][0] = -axis[m][1];\n    normal[m][1] = axis[m][0];\n"
-         "    const T inverse_square = T(1) / (normal[m][0] * normal[m][0] + normal[m][1] * normal[m][1]);\n"
-         "    image[m][0] = (across[m][0][0] * normal[m][0] + across[m][0][1] * normal[m][1]) * inverse_square;\n"
-         "    image[m][1] = (across[m][1][0] * normal[m][0] + across[m][1][1] * normal[m][1]) * inverse_square;\n"
-         "    carry[m] = m > 0 ? normal[m][0] * image[m - 1][0] + normal[m][1] * image[m - 1][1] : T(0);\n  }\n";
-  if (uniform_loads > 0) return out + fused_planar_passes(n, inverse_columns, identity, uniform_loads);
-  // rows j < m − 1 above node m: d(j, m − 1) = image_{m−1} δ_j; row m − 1 reads e_{m−1} itself
-  out += fmt::format("  {{\n    T delta[{0}] = {{}};\n    for (int m = 0; m < {0}; ++m) {{\n", n);
-  out += "      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + dest;
-  out += fmt::format("        out[{} * stride] = own_response[k];\n", row("m"));
-  out += "        if (m > 0) {\n";
-  out += fmt::format("          out[{} * stride] = response[m - 1][0] * bias_above[k][0] + response[m - 1][1] * bias_above[k][1];\n", row("(m - 1)"));
-  out += "          const T through = image[m - 1][0] * bias_above[k][0] + image[m - 1][1] * bias_above[k][1];\n";
-  out += fmt::format("          for (int j = 0; j < m - 1; ++j) out[{} * stride] = delta[j] * through;\n", row("j"));
-  out += "        }\n      }\n      if (m > 0) {\n        for (int j = 0; j < m - 1; ++j) delta[j] = delta[j] * carry[m];\n"
-         "        delta[m - 1] = normal[m][0] * response[m - 1][0] + normal[m][1] * response[m - 1][1];\n      }\n    }\n  }\n";
-  // rows j > m + 1 below node m: s(j, m) = normal_{m+1} σ_j; row m + 1 reads −V_{m+1} itself
-  out += fmt::format("  {{\n    T sigma[{0}] = {{}};\n    for (int m = {1}; m >= 0; --m) {{\n      if (m + 1 == {0}) continue;\n", n, n - 1);
-  out += "      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + dest;
-  out += "        const T G0 = relative_below[k][0], G1 = relative_below[k][1];\n";
-  out += fmt::format("        out[{} * stride] = -(gain[m + 1][0] * G0 + gain[m + 1][1] * G1);\n", row("(m + 1)"));
-  out += "        const T through = normal[m + 1][0] * G0 + normal[m + 1][1] * G1;\n";
-  out += fmt::format("        for (int j = m + 2; j < {}; ++j) out[{} * stride] = sigma[j] * through;\n      }}\n", n, row("j"));
-  out += fmt::format("      for (int j = m + 2; j < {}; ++j) sigma[j] = sigma[j] * carry[m + 1];\n", n);
-  out += "      sigma[m + 1] = -(image[m][0] * gain[m + 1][0] + image[m][1] * gain[m + 1][1]);\n    }\n  }\n";
-  return out;
-}
-
-// Any tree, one row j at a time: up its ancestors m with s(j, m) (entries s · (a − w)); at each
-// ancestor with other branches d(j, m) = −Ω_m s(j, m); then over every other node m, parents first,
-// d(j, m) = Φ_m d(j, parent), the entries of m's loads d(j, parent) · P.
-std::string tree_entries(const Components& k, std::size_t n, std::size_t inverse_columns) {
-  std::size_t C = k.count();
-  std::string out = fmt::format("  for (int j = 0; j < {0}; ++j) {{\n    bool above[{0}] = {{}};\n    T reader[{1}][{2}] = {{}};\n", n, n + 1, C);
-  out += k.each([](std::size_t a) { return fmt::format("T s{0} = -gain[j][{0}];", a); }, "    ");
-  out += "    for (int m = parent[j]; m >= 0; m = parent[m]) {\n      above[m] = true;\n";
-  out += "      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + destination(n, inverse_columns, "        ");
-  out += "        out[coordinate[j] * stride] = " + k.sum([](std::size_t a) { return fmt::format("s{0} * relative_below[k][{0}]", a); }) + ";\n      }\n";
-  out += "      if (branching[m]) {\n";
-  out += k.each([&](std::size_t a) {
-    return fmt::format("reader[m + 1][{}] = -{};", a, k.sum([&](std::size_t b) { return fmt::format("accelerance[m + 1][{}][{}] * s{}", a, b, b); }));
-  }, "        ");
-  out += "      }\n";
-  out += k.each([&](std::size_t a) {
-    return fmt::format("const T t{} = {};", a, k.sum([&](std::size_t b) { return fmt::format("across[m][{}][{}] * s{}", b, a, b); }));
-  }, "      ");
-  out += k.each([](std::size_t a) { return fmt::format("s{0} = t{0};", a); }, "      ");
-  out += "    }\n    for (int k = first_load[j]; k < first_load[j + 1]; ++k) {\n" + destination(n, inverse_columns, "      ");
-  out += "      out[coordinate[j] * stride] = own_response[k];\n    }\n";
-  out += k.each([](std::size_t a) { return fmt::format("reader[j + 1][{0}] = response[j][{0}];", a); }, "    ");
-  out += fmt::format("    for (int m = 0; m < {}; ++m) {{\n      if (m == j || above[m]) continue;\n", n);
-  out += fmt::format("      const T (&d)[{}] = reader[parent[m] + 1];\n", C);
-  out += "      for (int k = first_load[m]; k < first_load[m + 1]; ++k) {\n" + destination(n, inverse_columns, "        ");
-  out += "        out[coordinate[j] * stride] = " + k.sum([](std::size_t a) { return fmt::format("d[{0}] * bias_above[k][{0}]", a); }) + ";\n      }\n";
-  out += k.each([&](std::size_t a) {
-    return fmt::format("reader[m + 1][{}] = {};", a, k.sum([&](std::size_t b) { return fmt::format("across[m][{}][{}] * d[{}]", a, b, b); }));
-  }, "      ");
-  return out + "    }\n  }\n";
 }
 
 std::string tables(const JacobianLayout& layout, bool with_coordinates, bool with_first_load) {
@@ -475,7 +297,7 @@ std::string rest_product(const JacobianLayout& layout, std::size_t n) {
 std::string articulated_jacobian_state_function(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates(), N = 2 * n;
   JacobianLayout layout = jacobian_layout(e);
-  Components k(layout.components.size());
+  ComponentText k(layout.components.size());
   BodyWriter w(e);
   w.line(fmt::format("T xdot[{}];", N));
   w.line("rhs(t, x, u, p, xdot);");
@@ -490,10 +312,10 @@ std::string articulated_jacobian_state_function(const Equations& e) {
   // the upper block [0 I] first, as one stream of stores
   std::string body = fmt::format("  for (int i = 0; i < {}; ++i) J[i] = T(0);\n  for (int i = 0; i < {}; ++i) J[i * {} + {} + i] = T(1);\n",
                                  n * N, n, N, n);
-  body += recursion_factors(k, n, layout.chain) + load_effects(k, layout.loads.size());
+  FactorText factor_text(k, layout.chain);
+  body += inward_factors(k, factor_text, n) + outward_factors(k, factor_text, n) + load_effects(k, layout.loads.size());
   if (layout.inverse_columns > 0) body += fmt::format("  T inverse[{}];\n", n * layout.inverse_columns);
-  if (planar_chain) body += planar_chain_entries(n, layout.inverse_columns, identity, uniform_loads);
-  else body += layout.chain ? chain_entries(k, n, layout.inverse_columns) : tree_entries(k, n, layout.inverse_columns);
+  body += reader_passes(k, {n, layout.inverse_columns, layout.chain, identity, uniform_loads});
   body += rest_product(layout, n);
   return articulated_inverse_dynamics_gradient_function(e) +
          function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block -M^-1 d tau/dx\n"
