@@ -385,6 +385,49 @@ TEST(ArticulatedBodies, SpatialChainHeaderAgreesWithItsMassMatrixAndDifferences)
                               "T* const out = load_column[k] >= 0 ? J + 32 + load_column[k]"});
 }
 
+// a free particle (a joint of three coordinates) on a spring, with a ballast fixed to it and a
+// damped pendulum pushed by an input: a spatial chain whose first two axes carry no mass
+TEST(ArticulatedBodies, FreeParticleCarryingAPendulumHeaderAgreesWithItsMassMatrixAndDifferences) {
+  expect_header_agrees(R"toml([model]
+name = "chain"
+forward_dynamics = "articulated"
+[parameters]
+m = 1.5
+k = 4.0
+l = 0.7
+g = 9.81
+c = 0.3
+[coordinates]
+x = 0.1
+y = 0.2
+z = 0.3
+a = 0.4
+[inputs]
+F = 0.0
+[[particles]]
+name = "carrier"
+mass = "m"
+position = ["x", "y", "z"]
+[[particles]]
+name = "ballast"
+mass = "m/3"
+position = ["x + 0.2", "y", "z - 0.1"]
+[[particles]]
+name = "bob"
+mass = "2*m"
+position = ["x + l*sin(a)", "y", "z - l*cos(a)"]
+[gravity]
+acceleration = ["0", "0", "-g"]
+[energy]
+potential = "k*(x^2 + y^2 + z^2)/2 + k*x*z"
+dissipation = "c*der(a)^2/2"
+[[forces]]
+at = ["x + l*sin(a)", "y", "z - l*cos(a)"]
+force = ["F", "F", "0"]
+)toml",
+                       {"static constexpr int first_load[5] = {0, 1, 2, 9, 12};"});
+}
+
 // a branched spatial tree with a two-coordinate joint: the crane hook, renamed
 TEST(ArticulatedBodies, BranchedTreeHeaderAgreesWithItsMassMatrixAndDifferences) {
   std::string text = test::read_file(test::model_path("crane_hook_tree"));
