@@ -159,20 +159,37 @@ std::string momentum_linearization_function(const Equations& e) {
                   "void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B)", body);
 }
 
-// rows[i][j] = −∂τ_i/∂x_j with q'' held, τ = M q'' − f the inverse dynamics of recursive kinematics
-// (equations.hpp), from a tangent sweep that has followed the kinematics' intermediates: the
-// derivatives of expressions in intermediates, which a symbolic gradient would take for constants.
-// τ's subexpressions are its own, so the sweep runs through the kinematics and τ alone, not M and f.
-std::vector<std::vector<ex>> newton_euler_rows(const Equations& e, BodyWriter& w, TangentSweep& sweep, std::size_t n) {
-  w.fresh_subexpressions("ne");
+// Recursive kinematics (equations.hpp): ∂τ/∂(q, q', u) of the Newton–Euler inverse dynamics
+// τ = M q'' − f at a given q'', by a tangent sweep through the kinematics' intermediates and τ's code
+// (the derivatives of expressions in intermediates, which a symbolic gradient would take for
+// constants). Written once, for jacobian_state (q'' from the solve) and linearization (q'' = 0);
+// empty for the other models.
+bool uses_newton_euler_gradient(const Equations& e) {
+  return !e.inverse_dynamics.empty() && !e.solves_for_velocities() && e.articulated_accelerations.empty();
+}
+
+std::string newton_euler_gradient_function(const Equations& e) {
+  if (!uses_newton_euler_gradient(e)) return "";
+  const Symbols& s = e.symbols;
+  std::size_t n = e.num_velocities(), W = s.num_coordinates() + n + s.inputs.size();
+  BodyWriter w(e);
+  std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
+  directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
+  directions.insert(directions.end(), s.inputs.begin(), s.inputs.end());
+  TangentSweep sweep(w, directions);
+  sweep.follow(w.write_intermediates_of(e.inverse_dynamics));
   CseBatch tau = w.reduced_batch(e.inverse_dynamics);
   sweep.follow(tau);
-  std::vector<std::vector<ex>> rows;
-  for (std::size_t i = 0; i < n; ++i) {
-    rows.emplace_back();
-    for (const ex& d : sweep.derivatives(tau.outputs[i])) rows.back().push_back(-d);
-  }
-  return rows;
+  std::vector<ex> entries;
+  for (std::size_t i = 0; i < n; ++i)
+    for (const ex& d : sweep.derivatives(tau.outputs[i])) entries.push_back(d);
+  w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
+                              "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n", n, W),
+                  "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
+                  w.finish(all_unused + std::string(" (void)ddq;"))) +
+         "}  // namespace detail\n\n";
 }
 
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
@@ -185,17 +202,17 @@ std::string jacobian_state_function(const Equations& e) {
   BodyWriter w(e);
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
-  std::optional<TangentSweep> sweep;
-  if (!e.inverse_dynamics.empty()) {
-    sweep.emplace(w, state);
-    sweep->follow(w.write_intermediates_of(e.inverse_dynamics));
-  }
   accelerations(w, e);
-  // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c  (M depends on q only)
+  bool newton_euler = uses_newton_euler_gradient(e);
+  if (newton_euler) {
+    std::size_t W = N + s.inputs.size();
+    w.line(fmt::format("T F[{}];", n * W));
+    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
+  }
+  // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c = −∂τ_i/∂x_j  (M depends on q only)
   // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
-  std::vector<std::vector<ex>> rows =
-      sweep ? newton_euler_rows(e, w, *sweep, n) : std::vector<std::vector<ex>>{};
-  for (unsigned i = 0; i < n && !sweep; ++i) {
+  std::vector<std::vector<ex>> rows;
+  for (unsigned i = 0; i < n && !newton_euler; ++i) {
     std::vector<ex> df = gradient(e.forcing[i], state);
     std::vector<GiNaC::exvector> terms(N);
     for (std::size_t j = 0; j < N; ++j) terms[j].push_back(df[j]);
@@ -209,9 +226,11 @@ std::string jacobian_state_function(const Equations& e) {
     for (const GiNaC::exvector& t : terms) rows.back().push_back(GiNaC::add(t));
   }
   std::vector<ex> columns;
-  for (std::size_t j = 0; j < N; ++j)
+  for (std::size_t j = 0; j < N && !newton_euler; ++j)
     for (unsigned i = 0; i < n; ++i) columns.push_back(rows[i][j]);
-  auto code = w.batch(columns);
+  std::vector<std::string> code = w.batch(columns);
+  for (std::size_t j = 0; j < N && newton_euler; ++j)
+    for (std::size_t i = 0; i < n; ++i) code.push_back(fmt::format("-F[{}]", i * (N + s.inputs.size()) + j));
   if (e.uses_pseudo_velocities()) {
     std::vector<ex> top;
     for (const ex& rate : e.coordinate_rates)
@@ -277,20 +296,16 @@ std::string linearization_function(const Equations& e) {
   BodyWriter w(e);
   std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
       coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
-  if (!e.inverse_dynamics.empty()) {
-    // through the intermediates of recursive kinematics: a tangent sweep through τ's code
-    std::vector<ex> directions = velocities;
-    directions.insert(directions.end(), coordinates.begin(), coordinates.end());
-    directions.insert(directions.end(), inputs.begin(), inputs.end());
-    TangentSweep sweep(w, directions);
-    // f = −τ at q'' = 0 (equations.hpp)
+  if (uses_newton_euler_gradient(e)) {
+    // f = −τ at q'' = 0 (equations.hpp): P = ∂τ/∂q', Q = ∂τ/∂q, B = −∂τ/∂u
+    std::size_t W = nq + n + m;
     w.line(fmt::format("const T ddq[{}] = {{}};", n));
-    sweep.follow(w.write_intermediates_of(e.inverse_dynamics));
-    CseBatch tau = w.reduced_batch(e.inverse_dynamics);
-    sweep.follow(tau);
-    for (unsigned i = 0; i < n; ++i) {
-      std::vector<ex> d = sweep.derivatives(tau.outputs[i]);
-      for (std::size_t j = 0; j < d.size(); ++j) entries.push_back(j < n + nq ? d[j] : -d[j]);
+    w.line(fmt::format("T F[{}];", n * W));
+    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = F[{}];", i * n + j, i * W + nq + j));
+      for (std::size_t j = 0; j < nq; ++j) w.line(fmt::format("Q[{}] = F[{}];", i * nq + j, i * W + j));
+      for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = -F[{}];", i * m + j, i * W + nq + n + j));
     }
   }
   for (unsigned i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
@@ -300,7 +315,7 @@ std::string linearization_function(const Equations& e) {
   }
   auto code = w.batch(entries);
   std::size_t at = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
     for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = {};", i * n + j, code[at++]));
     for (std::size_t j = 0; j < nq; ++j) w.line(fmt::format("Q[{}] = {};", i * nq + j, code[at++]));
     for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", i * m + j, code[at++]));
@@ -478,7 +493,7 @@ std::string emit_cpp_header(const Equations& e) {
       members, values);
   out += constraint_declarations(e);
   std::string functions = constrained_solver(e);
-  functions += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + jacobian_state_function(e) +
+  functions += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + newton_euler_gradient_function(e) + jacobian_state_function(e) +
                jacobian_input_function(e) + linearization_function(e);
   functions += e.articulated_accelerations.empty()
                    ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
