@@ -43,6 +43,24 @@ std::string planar_chain(int n, const std::string& forward_dynamics) {
   return out;
 }
 
+// A free particle (a joint of three coordinates) on a spring, carrying a pendulum and a ballast fixed
+// to it by a constant offset (a joint without coordinates); `driven`: a spring coupling x and z, a
+// damped pendulum and a force input at the bob
+std::string free_particle_carrying_a_pendulum(const std::string& name, bool driven) {
+  std::string out = "[model]\nname = \"" + name + "\"\nforward_dynamics = \"articulated\"\n"
+                    "[parameters]\nm = 1.5\nk = 4.0\nl = 0.7\ng = 9.81\n";
+  if (driven) out += "c = 0.3\n";
+  out += "[coordinates]\nx = 0.1\ny = 0.2\nz = 0.3\na = 0.4\n";
+  if (driven) out += "[inputs]\nF = 0.0\n";
+  out += "[[particles]]\nname = \"carrier\"\nmass = \"m\"\nposition = [\"x\", \"y\", \"z\"]\n"
+         "[[particles]]\nname = \"ballast\"\nmass = \"m/3\"\nposition = [\"x + 0.2\", \"y\", \"z - 0.1\"]\n"
+         "[[particles]]\nname = \"bob\"\nmass = \"2*m\"\nposition = [\"x + l*sin(a)\", \"y\", \"z - l*cos(a)\"]\n"
+         "[gravity]\nacceleration = [\"0\", \"0\", \"-g\"]\n";
+  if (!driven) return out + "[energy]\npotential = \"k*(x^2 + y^2 + z^2)/2\"\n";
+  return out + "[energy]\npotential = \"k*(x^2 + y^2 + z^2)/2 + k*x*z\"\ndissipation = \"c*der(a)^2/2\"\n"
+               "[[forces]]\nat = [\"x + l*sin(a)\", \"y\", \"z - l*cos(a)\"]\nforce = [\"F\", \"F\", \"0\"]\n";
+}
+
 // x solves A x = b (Gaussian elimination with partial pivoting; A is small and regular here)
 std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double> b) {
   std::size_t n = b.size();
@@ -165,37 +183,7 @@ TEST(ArticulatedBodies, BranchedSpatialTreeGivesMInverseF) {
   expect_inverse_dynamics_of_the_equations(crane, 4, 8u);
   // a free particle (three coordinates, on a spring) carrying a pendulum, and a mass fixed to
   // that particle by a constant offset (a joint without coordinates)
-  std::string free = R"toml([model]
-name = "free"
-forward_dynamics = "articulated"
-[parameters]
-m = 1.5
-k = 4.0
-l = 0.7
-g = 9.81
-[coordinates]
-x = 0.1
-y = 0.2
-z = 0.3
-a = 0.4
-[[particles]]
-name = "carrier"
-mass = "m"
-position = ["x", "y", "z"]
-[[particles]]
-name = "ballast"
-mass = "m/3"
-position = ["x + 0.2", "y", "z - 0.1"]
-[[particles]]
-name = "bob"
-mass = "2*m"
-position = ["x + l*sin(a)", "y", "z - l*cos(a)"]
-[gravity]
-acceleration = ["0", "0", "-g"]
-[energy]
-potential = "k*(x^2 + y^2 + z^2)/2"
-)toml";
-  Equations carrier = test::derive_text(free);
+  Equations carrier = test::derive_text(free_particle_carrying_a_pendulum("free", false));
   expect_recursion_solves_the_equations(carrier, 8, 9u);
   expect_inverse_dynamics_of_the_equations(carrier, 4, 10u);
 }
@@ -385,47 +373,10 @@ TEST(ArticulatedBodies, SpatialChainHeaderAgreesWithItsMassMatrixAndDifferences)
                               "T* const out = load_column[k] >= 0 ? J + 32 + load_column[k]"});
 }
 
-// a free particle (a joint of three coordinates) on a spring, with a ballast fixed to it and a
-// damped pendulum pushed by an input: a spatial chain whose first two axes carry no mass
+// the free particle carrying a pendulum, driven: a spatial chain whose first two axes carry no mass,
+// with columns of M⁻¹ for the spring coupling x and z
 TEST(ArticulatedBodies, FreeParticleCarryingAPendulumHeaderAgreesWithItsMassMatrixAndDifferences) {
-  expect_header_agrees(R"toml([model]
-name = "chain"
-forward_dynamics = "articulated"
-[parameters]
-m = 1.5
-k = 4.0
-l = 0.7
-g = 9.81
-c = 0.3
-[coordinates]
-x = 0.1
-y = 0.2
-z = 0.3
-a = 0.4
-[inputs]
-F = 0.0
-[[particles]]
-name = "carrier"
-mass = "m"
-position = ["x", "y", "z"]
-[[particles]]
-name = "ballast"
-mass = "m/3"
-position = ["x + 0.2", "y", "z - 0.1"]
-[[particles]]
-name = "bob"
-mass = "2*m"
-position = ["x + l*sin(a)", "y", "z - l*cos(a)"]
-[gravity]
-acceleration = ["0", "0", "-g"]
-[energy]
-potential = "k*(x^2 + y^2 + z^2)/2 + k*x*z"
-dissipation = "c*der(a)^2/2"
-[[forces]]
-at = ["x + l*sin(a)", "y", "z - l*cos(a)"]
-force = ["F", "F", "0"]
-)toml",
-                       {"static constexpr int first_load[5] = {0, 1, 2, 9, 12};"});
+  expect_header_agrees(free_particle_carrying_a_pendulum("chain", true), {"static constexpr int first_load[5] = {0, 1, 2, 9, 12};"});
 }
 
 // a branched spatial tree with a two-coordinate joint: the crane hook, renamed
