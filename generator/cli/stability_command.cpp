@@ -56,6 +56,13 @@ std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::str
                              symbolic ? ", or leave out --symbolic (the numeric analysis works on the constraint manifold)" : "");
     return exit_user_error;
   }
+  if (symbolic && !loaded.equations.intermediates.empty()) {
+    std::cerr << fmt::format("eomgen: error: {}: symbolic stability conditions differentiate equations written out in q; "
+                             "those of recursive kinematics hold the frames' quantities\n  hint: use kinematics = "
+                             "\"expanded\", or leave out --symbolic (the numeric analysis works from the generated code)\n",
+                             model);
+    return exit_user_error;
+  }
   if (symbolic && loaded.equations.uses_pseudo_velocities()) {
     std::cerr << "eomgen: error: symbolic stability conditions need the second-order form M q'' + P q' + Q q; Appell "
                  "models are analysed numerically (leave out --symbolic)\n";

@@ -77,6 +77,18 @@ TEST(StabilityCommand, ConstrainedModelsAreRefusedWhereTheAnalysisDoesNotApply) 
   EXPECT_NE(symbolic.err.find("Appell models are analysed numerically"), std::string::npos) << symbolic.err;
 }
 
+// recursive kinematics keeps the frames' quantities as intermediates: no symbolic conditions (the
+// attempt ran for minutes past --max-seconds before this refusal), the numeric analysis as usual
+TEST(StabilityCommand, RecursiveKinematicsHasNoSymbolicConditions) {
+  Output symbolic = eomgen("stability '" + model_path("spatial_double_pendulum") + "' --symbolic g");
+  EXPECT_EQ(symbolic.status, 2) << symbolic.err;
+  EXPECT_NE(symbolic.err.find("recursive kinematics"), std::string::npos) << symbolic.err;
+  EXPECT_NE(symbolic.err.find("kinematics = \"expanded\""), std::string::npos) << symbolic.err;
+  Output sweep = eomgen("sweep '" + model_path("spatial_double_pendulum") + "' --param g=1:10:3 --param l=0.5:1:3 --symbolic");
+  EXPECT_EQ(sweep.status, 2) << sweep.err;
+  EXPECT_NE(sweep.err.find("recursive kinematics"), std::string::npos) << sweep.err;
+}
+
 // The pendulum in Cartesian coordinates (Lagrange I, x² + y² = l²) on its constraint manifold:
 // hanging, λ = ±i·√(g/l) (a centre); upright, λ = ±√(g/l) (a saddle); y and der(y) are tied to x
 TEST(StabilityCommand, LagrangeOneIsAnalysedOnTheConstraintManifold) {
