@@ -104,12 +104,8 @@ std::string configuration(const eomgen_model_abi& m, const std::vector<double>& 
 
 // smallest and largest eigenvalue of the mass matrix at x
 std::pair<double, double> mass_matrix_range(const Problem& p, double t, const std::vector<double>& x) {
-  std::size_t n = p.model->num_coordinates;
-  Eigen::MatrixXd M(n, n);
-  std::vector<double> rows(n * n);
-  p.model->mass_matrix(t, x.data(), p.parameters.data(), rows.data());
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) M(i, j) = rows[i * n + j];
+  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
+  if (M.size() == 0) return {1, 1};
   if (!M.allFinite()) return {NAN, NAN};
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M, Eigen::EigenvaluesOnly);
   return {eigen.eigenvalues().minCoeff(), eigen.eigenvalues().maxCoeff()};
@@ -125,11 +121,7 @@ struct Conditioning {
 Conditioning conditioning(const Problem& p, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::size_t n = m.num_velocities;
-  Eigen::MatrixXd M(n, n);
-  std::vector<double> rows(n * n);
-  m.mass_matrix(t, x.data(), p.parameters.data(), rows.data());
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) M(i, j) = rows[i * n + j];
+  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
   Conditioning c;
   if (!M.allFinite() || n == 0) return c;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M);

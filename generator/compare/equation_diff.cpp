@@ -11,6 +11,7 @@
 
 #include "compare/same_motion.hpp"
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/decimal_numbers.hpp"
 
 namespace eomgen {
 
@@ -97,7 +98,7 @@ ParsedSide parse_side(const DerivationRecord& r, const GiNaC::symtab& table, con
   for (const DerivedEntry& e : r.entries) {
     std::string name = rename.entry(e.name);
     try {
-      side.entries[name] = reader(with_placeholders(e.text));
+      side.entries[name] = reader(decimals_as_fractions(with_placeholders(e.text)));
       side.order.push_back(name);
     } catch (const std::exception& why) {
       d.error({r.path, 0, 0}, e.name, fmt::format("the expression '{}' does not read back: {}", e.text, why.what()),
@@ -275,8 +276,9 @@ EquationDiff compare_derivations(const DerivationRecord& a, const DerivationReco
   for (const std::string& name : old_side.order)
     if (!new_side.entries.count(name)) out.entries_only_old.push_back(name);
   // verdict
-  // the forms that depend on the choice of velocities and on the scaling of the equations
-  static const std::regex motion_entry(R"(^(M\[.*|f\[.*|S|T|R|s\[.*|der\(.*)$)");
+  // the forms that depend on the choice of velocities and on the scaling of the equations (a Lagrangian
+  // c·L gives c·T and c·V, and V + const the same motion)
+  static const std::regex motion_entry(R"(^(M\[.*|f\[.*|S|T|V|R|s\[.*|der\(.*)$)");
   bool different = false, equivalent = false, only_motion_forms = true;
   for (const EntryComparison& c : out.entries) {
     different = different || c.status == "different";

@@ -1,6 +1,9 @@
 #include "emit/cpp_body_writer.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -329,6 +332,67 @@ void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::
 
 std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
   return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
+}
+
+namespace {
+
+bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+template <class Visit>
+void for_each_identifier(const std::string& text, std::size_t from, std::size_t to, Visit visit) {
+  for (std::size_t i = from; i < to;) {
+    if (!is_identifier_char(text[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < to && is_identifier_char(text[end])) ++end;
+    if (!std::isdigit(static_cast<unsigned char>(text[i]))) visit(std::string_view(text).substr(i, end - i));
+    i = end;
+  }
+}
+
+}  // namespace
+
+std::string without_unused_locals(const std::string& body) {
+  struct Line {
+    std::size_t begin, end;
+    std::string local;  // the name a `const T name = …;` line defines, else empty
+  };
+  std::vector<Line> lines;
+  static const std::string head = "  const T ";
+  for (std::size_t at = 0; at < body.size();) {
+    std::size_t end = body.find('\n', at);
+    end = end == std::string::npos ? body.size() : end + 1;
+    Line l{at, end, {}};
+    if (body.compare(at, head.size(), head) == 0) {
+      std::size_t name_end = body.find(' ', at + head.size());
+      std::string name = name_end < end ? body.substr(at + head.size(), name_end - at - head.size()) : "";
+      bool plain = !name.empty() && std::all_of(name.begin(), name.end(), is_identifier_char);
+      if (plain && body.compare(name_end, 3, " = ") == 0) l.local = name;
+    }
+    lines.push_back(l);
+    at = end;
+  }
+  std::map<std::string, long, std::less<>> reads;
+  for (const Line& l : lines)
+    for_each_identifier(body, l.begin + (l.local.empty() ? 0 : head.size() + l.local.size()), l.end,
+                        [&](std::string_view id) { ++reads[std::string(id)]; });
+  std::vector<bool> dropped(lines.size(), false);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t k = lines.size(); k-- > 0;) {
+      const Line& l = lines[k];
+      if (dropped[k] || l.local.empty() || reads[l.local] > 0) continue;
+      dropped[k] = changed = true;
+      for_each_identifier(body, l.begin + head.size() + l.local.size(), l.end,
+                          [&](std::string_view id) { --reads.find(id)->second; });
+    }
+  }
+  std::string out;
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    if (!dropped[k]) out.append(body, lines[k].begin, lines[k].end - lines[k].begin);
+  return out;
 }
 
 CseBatch accelerations(BodyWriter& w, const Equations& e) {

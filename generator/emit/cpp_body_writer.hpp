@@ -108,6 +108,11 @@ std::vector<GiNaC::ex> upper_triangle(const GiNaC::matrix& M, std::size_t n);
 void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target);
 /// A documented function template with the given signature and body.
 std::string function(const std::string& doc, const std::string& signature, const std::string& body);
+
+/// `body` without the lines `const T name = …;` whose name nothing reads (and, in turn, those
+/// only they read): a sweep that differentiates τ needs τ's own temporaries only where a
+/// tangent does, and an unused local is an error under -Werror.
+std::string without_unused_locals(const std::string& body);
 /// M and f into local arrays, M = L D L^T, then the accelerations M^-1 f into `ddq`. Returns the
 /// batch, whose outputs are the upper triangle of M, row by row, then f.
 CseBatch accelerations(BodyWriter& w, const Equations& e);

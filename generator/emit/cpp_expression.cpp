@@ -1,5 +1,7 @@
 #include "emit/cpp_expression.hpp"
 
+#include "emit/cpp_constant.hpp"
+
 #include <algorithm>
 #include <sstream>
 #include <vector>
@@ -53,12 +55,8 @@ class CppPrinter {
   }
 
   Code number(const GiNaC::numeric& n) const {
-    std::string sign = n.is_negative() ? "-" : "";
-    GiNaC::numeric a = GiNaC::abs(n);
-    if (a.is_integer()) return {sign + "T(" + text_of(a) + ")", sign.empty() ? 4 : 2};
-    if (a.is_rational()) return {sign + "T(" + text_of(a.numer()) + ")/T(" + text_of(a.denom()) + ")", 2};
-    if (a.is_real()) return {sign + fmt::format("T({:.17g})", a.to_double()), sign.empty() ? 4 : 2};
-    throw std::runtime_error("a complex number cannot be written as a real scalar");
+    CppConstant c = cpp_constant(n);
+    return {c.text, c.precedence};
   }
 
   Code sum(const ex& e) const {
@@ -129,7 +127,8 @@ class CppPrinter {
     std::string sign = coefficient.is_negative() ? "-" : "";
     coefficient = GiNaC::abs(coefficient);
     if (coefficient != 1) {
-      if (coefficient.is_rational() && coefficient.denom() != 1) {
+      if (coefficient.is_rational() && coefficient.denom() != 1 && is_exact_integer_literal(coefficient.numer()) &&
+          is_exact_integer_literal(coefficient.denom())) {
         if (coefficient.numer() != 1) numerator.insert(numerator.begin(), "T(" + text_of(coefficient.numer()) + ")");
         denominator.insert(denominator.begin(), "T(" + text_of(coefficient.denom()) + ")");
       } else {

@@ -1,8 +1,11 @@
 #include "model/expression_parser.hpp"
 
 #include <cctype>
+#include <cfloat>
 
 #include <fmt/format.h>
+
+#include "symbolic/exact_double.hpp"
 
 namespace eomgen {
 namespace {
@@ -329,8 +332,12 @@ class Parser {
     }
     if (std::isalpha(static_cast<unsigned char>(peek())) || peek() == '_')
       fail(start, fmt::format("a name cannot start with a digit"), "write the product explicitly, e.g. 2*x");
-    GiNaC::numeric value(digits.c_str());
-    return value / GiNaC::pow(GiNaC::numeric(10), scale);
+    GiNaC::numeric value = GiNaC::numeric(digits.c_str()) / GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(scale));
+    // the generated code computes in double at the least: a number past its range would be infinite
+    static const GiNaC::numeric largest = exact_rational(DBL_MAX);
+    if (value > largest)
+      fail(start, "number beyond the range of double (1.8e308)", "give the quantity in other units, or as a product of parameters");
+    return value;
   }
 
   std::string identifier() {

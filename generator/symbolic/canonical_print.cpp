@@ -1,6 +1,9 @@
 #include "symbolic/canonical_print.hpp"
 
+#include "symbolic/decimal_numbers.hpp"
+
 #include <algorithm>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -54,8 +57,16 @@ class Printer {
     return latex_ ? "\\left(" + p.text + "\\right)" : "(" + p.text + ")";
   }
 
+  // a decimal as LaTeX: 1.5e-20 → 1.5 \cdot 10^{-20}
+  std::string decimal(const std::string& text) const {
+    std::size_t e = text.find('e');
+    if (!latex_ || e == std::string::npos) return text;
+    return text.substr(0, e) + " \\cdot 10^{" + text.substr(e + 1) + "}";
+  }
+
   Printed number(const GiNaC::numeric& n) const {
     if (n.is_integer()) return {integer_text(n), n.is_negative() ? 2 : 4};
+    if (std::optional<std::string> d = exact_decimal_text(n)) return {decimal(*d), n.is_negative() ? 2 : 4};
     if (n.is_rational()) {
       std::string sign = n.is_negative() ? "-" : "";
       GiNaC::numeric a = GiNaC::abs(n);
@@ -141,7 +152,9 @@ class Printer {
     std::sort(denominator.begin(), denominator.end(), factor_less);
     std::string sign = coefficient.is_negative() ? "-" : "";
     coefficient = GiNaC::abs(coefficient);
-    if (coefficient.is_rational()) {
+    if (std::optional<std::string> d = exact_decimal_text(coefficient)) {
+      numerator.insert(numerator.begin(), decimal(*d));
+    } else if (coefficient.is_rational()) {
       if (coefficient.numer() != 1) numerator.insert(numerator.begin(), integer_text(coefficient.numer()));
       if (coefficient.denom() != 1) denominator.insert(denominator.begin(), integer_text(coefficient.denom()));
     } else {

@@ -54,6 +54,18 @@ ex sum(const std::vector<ex>& terms) {
 
 }  // namespace
 
+namespace {
+
+// one of a and −a, the same for both: sin² and cos² do not see the sign of their angle, and
+// GiNaC keeps sin(−φ) as it is, so that sin(−φ)² would not meet cos(φ)². Which one follows
+// GiNaC's order, which may change between processes; it only keys the pairing.
+ex either_sign(const ex& angle) {
+  ex negated = -angle;
+  return negated.compare(angle) < 0 ? negated : angle;
+}
+
+}  // namespace
+
 ex apply_pythagoras(const ex& expanded) {
   std::vector<ex> terms = terms_of(expanded);
   for (bool changed = true; changed;) {
@@ -64,27 +76,40 @@ ex apply_pythagoras(const ex& expanded) {
           int c = x.first.compare(y.first);
           return c != 0 ? c < 0 : x.second.compare(y.second) < 0;
         });
-    std::vector<std::pair<std::size_t, std::pair<ex, ex>>> cosines;
+    struct Cosine {
+      std::size_t term;
+      std::pair<ex, ex> key;
+      ex angle;  // as written
+    };
+    std::vector<Cosine> cosines;
     for (std::size_t t = 0; t < terms.size(); ++t) {
       std::vector<ex> f = factors_of(terms[t]);
       for (std::size_t i = 0; i < f.size(); ++i) {
         // sin(a)^n with n ≥ 2 is sin(a)^2 · sin(a)^(n−2): the rest joins the cofactor
         if (!GiNaC::is_a<GiNaC::power>(f[i]) || !f[i].op(1).info(GiNaC::info_flags::integer) || f[i].op(1) < 2) continue;
         const ex base = f[i].op(0), cofactor = product(f, i) * GiNaC::pow(base, f[i].op(1) - 2);
-        if (is_sin(base)) sines.emplace(std::make_pair(cofactor, base.op(0)), t);
-        else if (is_cos(base)) cosines.push_back({t, {cofactor, base.op(0)}});
+        if (!is_sin(base) && !is_cos(base)) continue;
+        std::pair<ex, ex> key{cofactor, either_sign(base.op(0))};
+        if (is_sin(base)) {
+          // c·sin(φ)² and c·sin(−φ)² share a key: the one of the smaller text pairs, so that the
+          // one left over does not depend on GiNaC's order
+          auto [at, fresh] = sines.emplace(key, t);
+          if (!fresh && canonical_text(terms[t]) < canonical_text(terms[at->second])) at->second = t;
+        } else {
+          cosines.push_back({t, key, base.op(0)});
+        }
       }
     }
     // visit candidates in canonical order: GiNaC's term order changes between processes (only
     // those with a sine partner: the text is costly, and the others are passed over anyway)
     std::vector<std::pair<std::string, std::size_t>> order;
     for (std::size_t c = 0; c < cosines.size(); ++c)
-      if (sines.count(cosines[c].second))
-        order.push_back({canonical_text(cosines[c].second.first * GiNaC::cos(cosines[c].second.second)), c});
+      if (sines.count(cosines[c].key))
+        order.push_back({canonical_text(cosines[c].key.first * GiNaC::cos(cosines[c].angle)), c});
     std::sort(order.begin(), order.end());
     std::vector<bool> used(terms.size(), false);
     for (const auto& [text, c] : order) {
-      const auto& [t, key] = cosines[c];
+      const auto& [t, key, angle] = cosines[c];
       auto s = sines.find(key);
       if (s == sines.end() || used[t] || used[s->second] || s->second == t) continue;
       used[t] = used[s->second] = true;

@@ -32,16 +32,22 @@ std::string non_finite_quantities(const Problem& p, double t, const std::vector<
   return out;
 }
 
+Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  auto k = static_cast<Eigen::Index>(m.num_velocities);
+  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> rows(k, k);
+  m.mass_matrix(t, x.data(), p.parameters.data(), rows.data());
+  return rows;
+}
+
 MassMatrixRank mass_matrix_rank(const Problem& p, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::size_t k = m.num_velocities;
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> M(k, k);
-  m.mass_matrix(t, x.data(), p.parameters.data(), M.data());
+  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
   MassMatrixRank r;
   r.size = r.rank = k;
   if (k == 0 || !M.allFinite()) return r;
-  Eigen::MatrixXd dense = M;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(dense);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M);
   const Eigen::VectorXd& values = eigen.eigenvalues();
   r.smallest = values.minCoeff(), r.largest = values.cwiseAbs().maxCoeff();
   double zero = 1e-12 * std::max(r.largest, 1e-300);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "simulation.hpp"
 
 namespace eomgen::runtime {
@@ -17,6 +19,10 @@ std::string state_text(const eomgen_model_abi& m, const std::vector<double>& x);
 /// The entries of M and f, T and V that are not finite at (t, x), as "M[0][1], f[phi]";
 /// empty when all are finite.
 std::string non_finite_quantities(const Problem& p, double t, const std::vector<double>& x);
+
+/// The mass matrix at (t, x), num_velocities × num_velocities as the header writes it (for an
+/// Appell model fewer rows than coordinates: it is the matrix of the pseudo-velocities).
+Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<double>& x);
 
 struct MassMatrixRank {
   std::size_t rank = 0, size = 0;

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -64,6 +65,19 @@ class Wide {
 };
 inline double to_double(Wide w) { return w.to_double(); }
 inline constexpr const char* wide_scalar_name = "__float128 (libquadmath, 113-bit mantissa)";
+}  // namespace eomgen::reference
+
+/// Wide's width, so that a generated header's constants that no small fraction states
+/// (detail::constant) reach it to 113 bits instead of as doubles.
+namespace std {
+template <>
+struct numeric_limits<eomgen::reference::Wide> {
+  static constexpr bool is_specialized = true;
+  static constexpr int digits = 113;
+};
+}  // namespace std
+
+namespace eomgen::reference {
 #else
 using Wide = long double;
 inline double to_double(Wide w) { return static_cast<double>(w); }

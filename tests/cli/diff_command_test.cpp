@@ -85,7 +85,11 @@ TEST(DiffCommand, ExitStatusesLikeDiff) {
   EXPECT_EQ(same.status, 0) << same.err;
   EXPECT_NE(same.out.find(": identical\n"), std::string::npos) << same.out;
   EXPECT_NE(same.out.find("5 entries compared: 5 identical"), std::string::npos) << same.out;
-  CommandOutput changed = run_eomgen("diff '" + baseline + "' '" + changed_pendulum("\"-l*cos(phi)\"", "\"-l*cos(phi) + l/10\"") + "'");
+  // the pivot raised by l/10: V gains a constant, the motion stays the same
+  CommandOutput raised = run_eomgen("diff '" + baseline + "' '" + changed_pendulum("\"-l*cos(phi)\"", "\"-l*cos(phi) + l/10\"") + "'");
+  EXPECT_NE(raised.out.find("different: V"), std::string::npos) << raised.out;
+  EXPECT_NE(raised.out.find("same_motion"), std::string::npos) << raised.out;
+  CommandOutput changed = run_eomgen("diff '" + baseline + "' '" + changed_pendulum("\"-l*cos(phi)\"", "\"-11*l*cos(phi)/10\"") + "'");
   EXPECT_EQ(changed.status, 1) << changed.err;
   EXPECT_NE(changed.out.find("different: V"), std::string::npos) << changed.out;
   EXPECT_NE(changed.out.find("    old: -g*l*m*cos(phi)\n    new: "), std::string::npos) << changed.out;

@@ -131,6 +131,26 @@ TEST(IntegratorFailure, FiniteEscapeEndsWithTheReasonAndKeepsTheTrajectory) {
   EXPECT_NEAR(rows[100][0], 1.0, 1e-12);
 }
 
+// Appell's mass matrix has a row per pseudo-velocity, fewer than the coordinates: the diagnosis
+// after a failure once read it as num_coordinates² entries and called it singular
+TEST(IntegratorFailure, AppellModelThatEscapesIsNotCalledSingular) {
+  std::string model = temporary_directory() + "/pushed_knife_edge.toml";
+  std::string text = read_file(model_path("knife_edge"));
+  text += R"(
+[[forces]]
+at    = ["x", "y", "0"]
+force = ["cos(phi)*(cos(phi)*der(x) + sin(phi)*der(y))^2", "sin(phi)*(cos(phi)*der(x) + sin(phi)*der(y))^2", "0"]
+)";
+  std::ofstream(model) << text;
+  // m v' = v^2 from v = 1 with m = 1: v = 1/(1 - t), which escapes at t = 1
+  Output r = eomgen("simulate '" + model + "' --t-end 2");
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_EQ(r.err.find("singular"), std::string::npos) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex("escapes to infinity in finite time near t = ([0-9.]+)"))) << r.err;
+  EXPECT_NEAR(std::stod(m[1]), 1.0, 1e-3);
+}
+
 TEST(IntegratorFailure, ExplicitStepBeyondTheStabilityLimitIsNamedAsSuch) {
   std::string csv = temporary_directory() + "/unstable.csv";
   Output r = eomgen("simulate '" + model_path("stiff_chain") + "' --integrator rk4 --step 0.003 -o '" + csv + "'");

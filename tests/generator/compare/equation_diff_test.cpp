@@ -123,6 +123,20 @@ TEST(EquationDiff, LagrangeTwoAgainstAppellIsTheSameMotion) {
   EXPECT_EQ(compare(test::model_path("pendulum"), heavier).verdict, "different");
 }
 
+TEST(EquationDiff, ALagrangianTimesAConstantIsTheSameMotion) {
+  // L and R doubled: M, f, T, V and R all double, the accelerations do not change
+  std::string once = write("once", pendulum_by_energy, "POTENTIAL", "-m*g*l*cos(phi)");
+  std::string doubled_text = pendulum_by_energy;
+  doubled_text.replace(doubled_text.find("m*l^2*der(phi)^2/2"), 18, "m*l^2*der(phi)^2");
+  doubled_text.replace(doubled_text.find("d*der(phi)^2/2"), 14, "d*der(phi)^2");
+  std::string doubled = write("doubled", doubled_text, "POTENTIAL", "-2*m*g*l*cos(phi)");
+  EquationDiff d = compare(once, doubled);
+  EXPECT_EQ(d.verdict, "same_motion") << d.motion;
+  EXPECT_EQ(entry(d, "V")->status, "different");
+  // a potential changed by more than a factor is not
+  EXPECT_EQ(compare(once, write("steeper", pendulum_by_energy, "POTENTIAL", "-2*m*g*l*cos(phi)")).verdict, "different");
+}
+
 TEST(EquationDiff, EveryCommittedBaselineIsIdenticalToItsModel) {
   for (const char* name : {"pendulum", "double_pendulum", "rolling_disk", "slider_crank", "heavy_symmetric_top", "mathieu"}) {
     EquationDiff d = compare(std::string(EOMGEN_SOURCE_DIR) + "/generated/" + name + ".json", test::model_path(name));

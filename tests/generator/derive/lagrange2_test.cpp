@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "support/test_support.hpp"
+#include "symbolic/canonical_print.hpp"
 
 namespace eomgen::test {
 namespace {
@@ -28,6 +29,27 @@ void expect_equations(const std::string& model, const Rows& mass_matrix, const s
 
 TEST(Lagrange2KnownAnswers, Pendulum) {
   expect_equations("pendulum", {{"m*l^2"}}, {"-m*g*l*sin(phi) - d*d_phi"});
+}
+
+// Pythagoras fires whatever the sign inside the argument: -l*sin(-phi) is l*sin(phi)
+TEST(Lagrange2KnownAnswers, PendulumWrittenWithNegatedAngle) {
+  Equations e = derive_text(R"toml([model]
+name = "negated_angle"
+[parameters]
+m = 1.0
+l = 1.0
+g = 9.81
+[coordinates]
+phi = 0.1
+[[particles]]
+name = "bob"
+mass = "m"
+position = ["-l*sin(-phi)", "-l*cos(phi)", "0"]
+[gravity]
+acceleration = ["0", "-g", "0"]
+)toml");
+  EXPECT_EQ(canonical_text(e.mass_matrix(0, 0)), "l^2*m");
+  EXPECT_TRUE(agree_at_points(e.forcing[0], closed_form(e, "-m*g*l*sin(phi)"), random_points(e.symbols, 5)));
 }
 
 TEST(Lagrange2KnownAnswers, DoublePendulum) {

@@ -37,6 +37,13 @@ TEST(Simplify, PythagorasRemovesSquares) {
   EXPECT_EQ(canonical_text(tidy(e, s.motion)), "b + k*m");
 }
 
+TEST(Simplify, PythagorasFiresWhateverTheSignInsideTheArgument) {
+  Symbols2 s;
+  GiNaC::ex e = s.m * GiNaC::pow(sin(-s.a), 2) + s.m * GiNaC::pow(cos(s.a), 2) + s.k * GiNaC::pow(cos(s.b - s.a), 2) +
+                s.k * GiNaC::pow(sin(s.a - s.b), 2);
+  EXPECT_EQ(canonical_text(tidy(e, s.motion)), "k + m");
+}
+
 TEST(Simplify, CollectsParametersByMotion) {
   Symbols2 s;
   GiNaC::ex e = s.m * cos(s.a) + s.k * cos(s.a) + s.m;
