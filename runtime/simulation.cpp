@@ -240,6 +240,9 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
     return why + fmt::format(": {} {} not finite (a division by zero, or a function outside its domain) at {}", bad,
                              bad.find(',') == std::string::npos ? "is" : "are", state_text(*p.model, x));
   auto [smallest, largest] = mass_matrix_range(p, stepper.failure_time, x);
+  if (smallest < -1e-8 * std::abs(largest))
+    return why + fmt::format(": the mass matrix is not positive definite (eigenvalues from {:.3g} to {:.3g}) at {}: a "
+                             "negative mass or moment of inertia", smallest, largest, configuration(*p.model, x));
   if (std::isnan(smallest) || smallest <= 1e-8 * scale)
     return why + fmt::format(": the mass matrix is singular (smallest eigenvalue {:.3g}) at {}", smallest,
                              configuration(*p.model, x));

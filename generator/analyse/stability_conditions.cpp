@@ -1,5 +1,6 @@
 #include "analyse/stability_conditions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -99,6 +100,7 @@ ex normalized(const ex& condition) {
 
 // drops factors known to be positive: positive numbers, even powers, kept parameters
 ex without_positive_factors(const ex& condition, const GiNaC::exset& positive) {
+  if (condition.expand().is_zero()) return 0;  // vanishes: not a condition that holds
   ex f = GiNaC::factor(condition.expand());
   std::vector<ex> factors;
   if (GiNaC::is_a<GiNaC::mul>(f))
@@ -198,9 +200,12 @@ StabilityConditions stability_conditions(const Equations& e, const std::vector<s
   out.characteristic_polynomial = out.characteristic_polynomial.expand();
   // all coefficients positive, and the inner Hurwitz determinants Δ_2 … Δ_{n−1} (Liénard–Chipart would need fewer)
   auto at = [&](int k) { return k >= 0 && k <= degree ? c[k] : ex(0); };
+  // a condition that vanishes identically is not one that holds: the roots sit on the imaginary
+  // axis (or at zero) for every value, and the first method decides nothing
   for (int k = 0; k <= degree; ++k) {
     ex condition = without_positive_factors(c[k] * c[0], positive);
-    if (!condition.is_zero() && !GiNaC::is_a<GiNaC::numeric>(condition)) out.conditions.push_back(condition);
+    if (condition.is_zero()) out.vanishing.push_back(fmt::format("the coefficient of lambda^{}", degree - k));
+    else if (!GiNaC::is_a<GiNaC::numeric>(condition)) out.conditions.push_back(condition);
     else if (GiNaC::is_a<GiNaC::numeric>(condition) && GiNaC::ex_to<GiNaC::numeric>(condition).is_negative())
       out.conditions.push_back(condition);
   }
@@ -209,9 +214,16 @@ StabilityConditions stability_conditions(const Equations& e, const std::vector<s
     for (int i = 0; i < k; ++i)
       for (int j = 0; j < k; ++j) H(i, j) = at(2 * j - i + 1);
     ex condition = without_positive_factors(H.determinant() * GiNaC::pow(c[0], k), positive);
-    if (!GiNaC::is_a<GiNaC::numeric>(condition) || GiNaC::ex_to<GiNaC::numeric>(condition).is_negative())
+    if (condition.is_zero()) out.vanishing.push_back(fmt::format("the Hurwitz determinant Delta_{}", k));
+    else if (!GiNaC::is_a<GiNaC::numeric>(condition) || GiNaC::ex_to<GiNaC::numeric>(condition).is_negative())
       out.conditions.push_back(condition);
   }
+  for (const ex& p : positive) {
+    bool appears = out.characteristic_polynomial.has(p);
+    for (const ex& q : out.equilibrium_equations) appears = appears || q.has(p);
+    if (!appears) out.absent.push_back(GiNaC::ex_to<GiNaC::symbol>(p).get_name());
+  }
+  std::sort(out.absent.begin(), out.absent.end());
   return out;
 }
 

@@ -19,6 +19,13 @@ struct StabilityConditions {
   GiNaC::ex characteristic_polynomial;            // in `lambda`
   GiNaC::symbol lambda{"lambda"};
   std::vector<GiNaC::ex> conditions;              // each expression > 0 (necessary and sufficient together)
+  /// Conditions that vanish identically ("the coefficient of lambda^0", "the Hurwitz
+  /// determinant Delta_2"): then no values make the first method decide, at best marginal.
+  std::vector<std::string> vanishing;
+  /// Kept parameters that appear neither in the polynomial nor in the equilibrium's
+  /// equations (one that sets only the initial state was taken at its value): conditions
+  /// cannot be stated in them.
+  std::vector<std::string> absent;
 };
 
 /// `parameters` and `inputs` give every value (kept ones are replaced by their

@@ -2,7 +2,9 @@
 /// options on the app and returns the exit status when run.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <functional>
 #include <optional>
 #include <string>
@@ -19,6 +21,20 @@ namespace eomgen::cli {
 enum ExitStatus { exit_success = 0, exit_internal_error = 1, exit_user_error = 2, exit_numerical_failure = 3 };
 
 using Command = std::function<int()>;
+
+/// A number > 0 (or >= 0), said in words: CLI11's own range checks print the largest double in
+/// full, 300 digits of it.
+inline CLI::Validator positive_number(bool zero_allowed = false) {
+  return CLI::Validator(
+      [zero_allowed](std::string& text) -> std::string {
+        char* end = nullptr;
+        double v = std::strtod(text.c_str(), &end);
+        bool number = end != text.c_str() && *end == '\0' && std::isfinite(v);
+        if (number && (v > 0 || (zero_allowed && v == 0))) return {};
+        return "'" + text + "' is not a " + (zero_allowed ? "number >= 0" : "positive number");
+      },
+      zero_allowed ? "NUMBER >= 0" : "NUMBER > 0");
+}
 
 Command add_derive_command(CLI::App& app);
 Command add_generate_command(CLI::App& app);

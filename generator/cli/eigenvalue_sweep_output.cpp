@@ -55,6 +55,11 @@ void print_eigenvalue_sweep_text(const runtime::EigenvalueSweep& s, const std::s
   for (const runtime::AxisCrossing& c : s.crossings) std::cout << "    " << crossing_text(c, parameter) << "\n";
   if (s.stable.empty()) std::cout << "  asymptotically stable nowhere in this range\n";
   for (const runtime::StableInterval& i : s.stable) std::cout << "  asymptotically stable for " << interval_text(i, parameter) << "\n";
+  for (const runtime::StableInterval& i : s.marginal)
+    std::cout << "  only marginally stable (eigenvalues on the imaginary axis, none to the right) at "
+              << (i.low == i.high ? fmt::format("{} = {:.12g}", parameter, i.low)
+                                  : fmt::format("the points of {:.12g} <= {} <= {:.12g}", i.low, parameter, i.high))
+              << "\n";
 }
 
 void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::string& model, const std::string& parameter,
@@ -64,13 +69,17 @@ void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::s
     crossings += fmt::format("{}{{\"{}\": {}, \"eigenvalue\": {{\"re\": 0, \"im\": {}}}, \"kind\": \"{}\", \"direction\": \"{}\"}}",
                              crossings.empty() ? "" : ", ", json_escape(parameter), number(c.parameter), number(c.eigenvalue.imag()),
                              c.oscillatory ? "oscillatory" : "real", c.destabilizing ? "destabilizing" : "stabilizing");
+  std::string marginal;
   for (const runtime::StableInterval& i : s.stable)
     intervals += fmt::format("{}{{\"low\": {}, \"high\": {}, \"open_low\": {}, \"open_high\": {}}}", intervals.empty() ? "" : ", ",
                              number(i.low), number(i.high), i.open_low ? "true" : "false", i.open_high ? "true" : "false");
+  for (const runtime::StableInterval& i : s.marginal)
+    marginal += fmt::format("{}{{\"low\": {}, \"high\": {}}}", marginal.empty() ? "" : ", ", number(i.low), number(i.high));
   std::cout << fmt::format("{{\"model\": \"{}\", \"parameter\": \"{}\", \"from\": {}, \"to\": {}, \"points\": {}, "
-                           "\"crossings\": [{}], \"stable_intervals\": [{}], \"seconds\": {}, \"interrupted\": {}, \"ranks\": {}}}\n",
+                           "\"crossings\": [{}], \"stable_intervals\": [{}], \"marginal_intervals\": [{}], \"seconds\": {}, "
+                           "\"interrupted\": {}, \"ranks\": {}}}\n",
                            json_escape(model), json_escape(parameter), number(s.axis.low), number(s.axis.high), s.axis.count,
-                           crossings, intervals, number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
+                           crossings, intervals, marginal, number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
 }
 
 }  // namespace eomgen::cli

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <mutex>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,7 @@
 #include "cli/ranked_run.hpp"
 #include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"
+#include "derive/initial_state.hpp"
 #include "distribute/distributed_ensemble.hpp"
 #include "report/reports.hpp"
 
@@ -56,6 +58,13 @@ std::optional<int> build_setup(const Options& o, const LoadedProblem& loaded, ru
     if (v->target == runtime::Variation::Target::state) given[std::size_t(v->index)] = true;
   }
   setup.settings.given_state = given;
+  // initial values written in the parameters follow each sample's; GiNaC is not thread-safe
+  setup.initial_state_at = [&equations = loaded.equations](const std::vector<double>& parameters) {
+    static std::mutex symbolic;
+    std::lock_guard<std::mutex> lock(symbolic);
+    std::string failed;
+    return initial_state(equations, parameters, failed);
+  };
   for (const std::string& text : o.measures) {
     auto measure = parse_measure(m, text);
     if (!measure) return exit_user_error;

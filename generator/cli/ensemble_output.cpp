@@ -50,6 +50,30 @@ std::string ensemble_csv(const distribute::EnsembleResult& result, const std::ve
   return text;
 }
 
+namespace {
+
+long left_out(const distribute::EnsembleResult& r, std::size_t measure) {
+  return measure < r.measures_left_out.size() ? r.measures_left_out[measure] : 0;
+}
+
+// "": the left-out samples look like the rest in every drawn value
+std::string bias_text(const distribute::EnsembleResult& r, const runtime::EnsembleSetup& setup, std::size_t measure) {
+  if (measure >= r.measures_bias.size() || r.measures_bias[measure].variable < 0) return "";
+  const runtime::SelectionDependence& b = r.measures_bias[measure];
+  return fmt::format("; they have {} {} than the rest (Welch t = {:.3g}): the statistics over the rest are biased",
+                     b.t > 0 ? "larger" : "smaller", setup.variations[std::size_t(b.variable)].name, b.t);
+}
+
+// said on standard error too, so that a JSON reader's log shows it
+void warn_left_out(const distribute::EnsembleResult& r, const runtime::EnsembleSetup& setup) {
+  for (std::size_t i = 0; i < r.measures.size(); ++i)
+    if (long left = left_out(r, i); left > 0)
+      std::cerr << fmt::format("eomgen: warning: {}: {} of the {} finished samples left out (undefined for them){}\n",
+                               setup.measures[i].text(), left, r.samples - r.failed, bias_text(r, setup, i));
+}
+
+}  // namespace
+
 void print_ensemble_text(const distribute::EnsembleResult& r, const EnsembleDescription& d) {
   const runtime::EnsembleSetup& setup = *d.setup;
   std::cout << fmt::format("{}: ensemble of {} samples over t = {:g} … {:g} s ({} output times) with {} on {} in {:.3f} s, "
@@ -64,6 +88,9 @@ void print_ensemble_text(const distribute::EnsembleResult& r, const EnsembleDesc
     std::cout << fmt::format("  {}: mean {:.10g}, sd {:.6g}, standard error of the mean {:.3g} ({} samples); {}\n",
                              setup.measures[i].text(), s.mean, s.standard_deviation, s.standard_error, s.count,
                              quantiles_text(s, d.probabilities));
+    if (long left = left_out(r, i); left > 0)
+      std::cout << fmt::format("    {} of the {} finished samples left out: {} is undefined for them{}\n", left,
+                               r.samples - r.failed, setup.measures[i].text(), bias_text(r, setup, i));
   }
   for (const runtime::SignalBands& b : r.bands) {
     const runtime::SampleStatistics& s = b.at_time.back();
@@ -78,9 +105,11 @@ void print_ensemble_json(const distribute::EnsembleResult& r, const EnsembleDesc
   for (std::size_t i = 0; i < setup.variations.size(); ++i)
     variations += fmt::format("{}{{\"name\": \"{}\", \"distribution\": \"{}\"}}", i ? ", " : "",
                               json_escape(setup.variations[i].name), setup.variations[i].distribution.text());
+  warn_left_out(r, setup);
   for (std::size_t i = 0; i < r.measures.size(); ++i)
-    measures += fmt::format("{}{{\"measure\": \"{}\", {}}}", i ? ", " : "", json_escape(setup.measures[i].text()),
-                            statistics_json(r.measures[i], d.probabilities));
+    measures += fmt::format("{}{{\"measure\": \"{}\", {}, \"left_out\": {}, \"biased\": {}}}", i ? ", " : "",
+                            json_escape(setup.measures[i].text()), statistics_json(r.measures[i], d.probabilities),
+                            left_out(r, i), bias_text(r, setup, i).empty() ? "false" : "true");
   for (std::size_t i = 0; i < r.bands.size(); ++i)
     finals += fmt::format("{}{{\"signal\": \"{}\", {}}}", i ? ", " : "", json_escape(r.bands[i].signal),
                           statistics_json(r.bands[i].at_time.back(), d.probabilities));

@@ -111,7 +111,7 @@ Command add_generate_command(CLI::App& app) {
                                    "Also write NAME_split.hpp and NAME_<function>.cpp: each large function compiled once, for "
                                    "double, in its own translation unit (parallel builds; include NAME_split.hpp, link the units)");
   cmd->add_option("--split-above", *split_above, "With --split: the functions whose body has at least this many KB (default 16)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->needs(split_flag);
   return [cmd, model, directory, header, variant, scene, split, split_above]() -> int {
     if (!cmd->parsed()) return -1;

@@ -81,8 +81,11 @@ std::string draw_deformed(const eomgen_model_abi& m, const LinearReport& r, cons
 std::string draw_bode(const eomgen_model_abi& m, const LinearReport::Pair& p, const std::string& png) {
   double low = INFINITY, high = 0;
   for (const auto& roots : {p.g.poles, p.g.zeros})
+    for (const auto& z : roots) high = std::max(high, std::abs(z));
+  // roots at zero (within rounding of the largest) set no frequency
+  for (const auto& roots : {p.g.poles, p.g.zeros})
     for (const auto& z : roots)
-      if (std::abs(z) > 1e-9) low = std::min(low, std::abs(z)), high = std::max(high, std::abs(z));
+      if (std::abs(z) > 1e-9 * high) low = std::min(low, std::abs(z));
   if (!std::isfinite(low)) low = high = 1;
   double from = std::log10(low) - 1.5, to = std::log10(high) + 1.5;
   std::string data = png + ".data.tmp";

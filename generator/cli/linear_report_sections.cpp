@@ -90,9 +90,17 @@ void print_reach_text(const eomgen_model_abi& m, const LinearReport& r) {
                                complex_text(mode.eigenvalue), joined(states_named(m, mode.unseen)));
   }
   for (const LinearReport::Pair& p : r.transfer) {
-    std::complex<double> dc = p.g.at(0.0);
+    if (p.g.constant()) {
+      std::cout << fmt::format("  transfer function {} -> {}: G(s) = {:.9g} identically ({})\n", p.input, p.output, p.g.d,
+                               p.g.d == 0 ? "the output does not see the input" : "a direct feedthrough only");
+      continue;
+    }
+    std::complex<double> dc = p.g.dc_gain();
     std::cout << fmt::format("  transfer function {} -> {}: G(s) = {:.9g} * prod(s - zeros) / prod(s - poles)\n", p.input,
                              p.output, p.g.gain);
+    if (p.g.removed_modes > 0)
+      std::cout << fmt::format("    (minimal realization: {} mode(s) that the input does not reach or the output does not "
+                               "see cancel)\n", p.g.removed_modes);
     std::cout << fmt::format("    poles: {}\n    zeros: {}\n    G(0) = {}\n", roots_text(p.g.poles), roots_text(p.g.zeros),
                              std::isfinite(std::abs(dc)) ? complex_text(dc) : "infinite (a pole at 0)");
   }
@@ -106,11 +114,12 @@ std::string reach_json(const eomgen_model_abi& m, const LinearReport& r) {
                          number(mode.eigenvalue.imag()), mode.controllable ? "true" : "false", mode.observable ? "true" : "false",
                          json_strings(states_named(m, mode.unreachable)), json_strings(states_named(m, mode.unseen)));
   for (const LinearReport::Pair& p : r.transfer) {
-    std::complex<double> dc = p.g.at(0.0);
+    std::complex<double> dc = p.g.dc_gain();
     transfer += fmt::format("{}{{\"input\": \"{}\", \"output\": \"{}\", \"poles\": {}, \"zeros\": {}, \"gain\": {}, "
-                            "\"dc_gain\": {}}}", transfer.empty() ? "" : ", ", json_escape(p.input), json_escape(p.output),
-                            roots_json(p.g.poles), roots_json(p.g.zeros), number(p.g.gain),
-                            std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? number(dc.real()) : "null");
+                            "\"dc_gain\": {}, \"cancelled_modes\": {}, \"constant\": {}}}", transfer.empty() ? "" : ", ",
+                            json_escape(p.input), json_escape(p.output), roots_json(p.g.poles), roots_json(p.g.zeros),
+                            number(p.g.gain), std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? number(dc.real()) : "null",
+                            p.g.removed_modes, p.g.constant() ? "true" : "false");
   }
   std::string constrained;
   for (const runtime::ModalAnalysis::Constrained& c : r.modes.constrained) {

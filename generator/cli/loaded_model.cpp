@@ -8,19 +8,20 @@
 #include "cli/commands.hpp"
 #include "derive/initial_state.hpp"
 #include "emit/cpp_header.hpp"
+#include "symbolic/constant_value.hpp"
 
 namespace eomgen::cli {
 
 bool parse_assignments(const std::vector<std::string>& texts, const char* flag, std::vector<Assignment>& out) {
   for (const std::string& text : texts) {
     std::size_t eq = text.find('=');
-    char* end = nullptr;
-    double value = eq == std::string::npos ? 0 : std::strtod(text.c_str() + eq + 1, &end);
-    if (eq == std::string::npos || eq == 0 || end == text.c_str() + eq + 1 || *end != '\0' || !std::isfinite(value)) {
-      std::cerr << fmt::format("eomgen: error: {} '{}': expected NAME=NUMBER, e.g. {} m=2.5\n", flag, text, flag);
+    std::optional<double> value = eq == std::string::npos ? std::nullopt : constant_value(text.substr(eq + 1));
+    if (eq == std::string::npos || eq == 0 || !value) {
+      std::cerr << fmt::format("eomgen: error: {} '{}': expected NAME=NUMBER or a constant expression, e.g. {} m=2.5 or "
+                               "{} theta=3*Pi/4\n", flag, text, flag, flag);
       return false;
     }
-    out.push_back({text.substr(0, eq), value});
+    out.push_back({text.substr(0, eq), *value});
   }
   return true;
 }

@@ -20,14 +20,14 @@ int main(int argc, char** argv) {
   app.add_option("--max-seconds", max_seconds,
                  "Stop a derivation that runs longer than this, with exit status 2 (0: no limit)")
       ->default_val(eomgen::default_derivation_seconds)
-      ->check(CLI::NonNegativeNumber);
+      ->check(eomgen::cli::positive_number(true));
   bool timings = false;
   app.add_flag("--timings", timings, "Print the wall time of each stage of the derivation and the header's writing");
   double max_memory = eomgen::default_derivation_gigabytes();
   app.add_option("--max-memory", max_memory,
                  "Stop a derivation whose process grows past this many GB of memory, with exit status 2 (0: no limit; "
                  "default: the smaller of 8 GB and three quarters of the machine's memory)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(eomgen::cli::positive_number(true));
   std::vector<Command> commands = {add_derive_command(app), add_generate_command(app), add_simulate_command(app), add_stability_command(app),
                                   add_sweep_command(app), add_bench_command(app), add_run_command(app),
                                   add_diff_command(app), add_check_integral_command(app), add_linear_command(app),

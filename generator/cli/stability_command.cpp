@@ -140,6 +140,14 @@ int stability(const Options& given) {
         return exit_user_error;
       }
     conditions = stability_conditions(loaded.equations, kept, loaded.problem.parameters, loaded.problem.inputs, eq.state);
+    for (const std::string& k : conditions->absent) {
+      std::cerr << fmt::format("eomgen: error: --symbolic {0}: {0} appears neither in the characteristic polynomial nor in "
+                               "the equilibrium's equations, so no condition can be stated in it\n  hint: a parameter "
+                               "that sets only the initial state (a spin rate, say) was taken at its value {1}: give "
+                               "that state with --at, or keep a parameter of the equations\n",
+                               k, loaded.problem.parameters[static_cast<std::size_t>(index_of(m.parameter_names, m.num_parameters, k))]);
+      return exit_user_error;
+    }
   }
   runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
   runtime::CriticalCase critical = runtime::check_critical_case(loaded.problem, eq.state, report);
@@ -165,7 +173,7 @@ Command add_stability_command(CLI::App& app) {
                   "reduced system");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
   cmd->add_option("--period", o->period, "Period T [s] of time-periodic equations (default: found from sin/cos(w*t) in "
-                  "the model); their stability is judged by Floquet multipliers over T")->check(CLI::PositiveNumber);
+                  "the model); their stability is judged by Floquet multipliers over T")->check(positive_number());
   cmd->add_option("--symbolic", o->symbolic, "Keep these parameters as symbols and print the Hurwitz conditions: --symbolic b,J");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));

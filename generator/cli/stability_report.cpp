@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
@@ -73,7 +74,11 @@ void print_stability_text(const eomgen_model_abi& m, const runtime::Equilibrium&
     std::cout << fmt::format("  stability conditions in {} (parameters taken positive):\n", kept);
     std::cout << "    characteristic polynomial: " << canonical_text(rounded_for_display(conditions->characteristic_polynomial)) << "\n";
     for (const GiNaC::ex& c : conditions->conditions) std::cout << "    " << canonical_text(rounded_for_display(c)) << " > 0\n";
-    if (conditions->conditions.empty())
+    if (!conditions->vanishing.empty())
+      std::cout << "    at best marginal: " << fmt::format("{}", fmt::join(conditions->vanishing, ", "))
+                << " vanish(es) identically: the Hurwitz conditions hold for no values of " << kept
+                << ", the equilibrium is never asymptotically stable, and the first method decides nothing\n";
+    else if (conditions->conditions.empty())
       std::cout << "    none: every Hurwitz condition holds for all positive values of " << kept << "\n";
     for (const GiNaC::ex& c : conditions->equilibrium_equations)
       std::cout << "    where " << canonical_text(rounded_for_display(c)) << " = 0\n";
@@ -103,12 +108,14 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"residual\": {}, \"state\": {}, \"A\": {}, \"B\": {}, \"M\": {}, "
       "\"D\": {}, \"G\": {}, \"K\": {}, \"N\": {}, \"eigenvalues\": [{}], \"verdict\": \"{}\", \"stability_degree\": {}, "
       "\"cyclic_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
-      "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"equilibrium_conditions\": {}, \"critical_case\": {}{}}}\n",
+      "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"vanishing_conditions\": {}, \"equilibrium_conditions\": {}, "
+      "\"critical_case\": {}{}}}\n",
       m.name, equilibrium, number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
       number(r.stability_degree), r.cyclic_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
       json_numbers(r.hurwitz), number(r.hurwitz_scale), r.hurwitz_ill_conditioned ? "true" : "false", json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
-      json_strings(condition_texts), json_strings(equations),
+      json_strings(condition_texts), json_strings(conditions ? conditions->vanishing : std::vector<std::string>{}),
+      json_strings(equations),
       critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": \"{}\", \"simulation\": \"{}\", "
                                       "\"nonlinear_verdict\": \"{}\"}}",
                                       json_escape(critical.energy), json_escape(critical.simulation), critical.nonlinear_verdict)

@@ -54,12 +54,24 @@ std::optional<runtime::SweepAxis> parse_axis(const eomgen_model_abi& m, const st
     return std::nullopt;
   }
   try {
-    runtime::SweepAxis axis{index, std::stod(text.substr(eq + 1, c1 - eq - 1)), std::stod(text.substr(c1 + 1, c2 - c1 - 1)),
-                            std::stoi(text.substr(c2 + 1))};
-    if (axis.count < 2 || axis.count > 100000 || !(axis.high > axis.low)) throw std::invalid_argument("range");
+    // every character of each field read: std::stoi("2e9") is 2, which ran two points silently
+    auto whole = [](const std::string& field, auto read) {
+      std::size_t used = 0;
+      auto value = read(field, &used);
+      if (used != field.size()) throw std::invalid_argument(field);
+      return value;
+    };
+    auto real = [](const std::string& f, std::size_t* used) { return std::stod(f, used); };
+    auto integer = [](const std::string& f, std::size_t* used) { return std::stol(f, used); };
+    long count = whole(text.substr(c2 + 1), integer);
+    if (count < 2 || count > 100000) throw std::invalid_argument("count");
+    runtime::SweepAxis axis{index, whole(text.substr(eq + 1, c1 - eq - 1), real), whole(text.substr(c1 + 1, c2 - c1 - 1), real),
+                            static_cast<int>(count)};
+    if (!(axis.high > axis.low)) throw std::invalid_argument("range");
     return axis;
   } catch (const std::exception&) {
-    std::cerr << fmt::format("eomgen: error: --param '{}': need LOW < HIGH and 2 <= COUNT <= 100000\n", text);
+    std::cerr << fmt::format("eomgen: error: --param '{}': need LOW < HIGH (numbers) and a whole COUNT with 2 <= COUNT <= "
+                             "100000\n", text);
     return std::nullopt;
   }
 }
@@ -84,7 +96,8 @@ std::vector<double> symbolic_margin(const LoadedProblem& loaded, const runtime::
         }
         throw std::runtime_error("unexpected symbol " + y.get_name());
       };
-      double smallest = INFINITY;
+      // a condition that vanishes identically holds nowhere strictly: at best marginal
+      double smallest = c.vanishing.empty() ? INFINITY : 0.0;
       for (const GiNaC::ex& condition : c.conditions) smallest = std::min(smallest, evaluate(condition, value_of));
       margin[at] = smallest;
     }

@@ -33,7 +33,7 @@ struct DefaultChange {
 };
 
 struct EquationDiff {
-  std::string verdict;  // identical | equivalent | same_motion | different
+  std::string verdict;  // identical | equivalent | equal_on_samples (branches: abs, atan2, roots) | same_motion | different
   std::string old_path, new_path;
   std::vector<std::string> added, removed;  // symbols: "parameter k", "output tip_z"
   std::vector<std::pair<std::string, std::string>> renamed;

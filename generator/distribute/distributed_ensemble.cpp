@@ -1,5 +1,6 @@
 #include "distribute/distributed_ensemble.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -49,11 +50,14 @@ EnsembleResult distributed_ensemble(const Ranks& ranks, const runtime::EnsembleS
     std::vector<double> all = ranks.gather(pack_signal(share, s));
     if (ranks.is_root()) result.bands.push_back(bands_of(setup.signals[s], all, share.times.size(), probabilities));
   }
-  std::vector<double> measures, failed, first;
+  std::vector<double> measures, failed, first, drawn;
   std::string why;
   for (std::size_t k = 0; k < share.samples.size(); ++k) {
     const runtime::SampleRun& run = share.samples[k];
     measures.insert(measures.end(), run.measures.begin(), run.measures.end());
+    std::vector<double> draws = run.drawn;
+    draws.resize(setup.variations.size(), NAN);
+    drawn.insert(drawn.end(), draws.begin(), draws.end());
     failed.push_back(run.failed ? 1.0 : 0.0);
     if (run.failed && first.empty()) {
       first.push_back(double(block.begin + long(k)));
@@ -62,14 +66,29 @@ EnsembleResult distributed_ensemble(const Ranks& ranks, const runtime::EnsembleS
     }
   }
   std::vector<double> all_measures = ranks.gather(measures), all_failed = ranks.gather(failed),
-                      all_first = ranks.gather(first);
+                      all_first = ranks.gather(first), all_drawn = ranks.gather(drawn);
   std::vector<std::string> reasons = ranks.gather_text(why);
   if (ranks.is_root()) {
     std::size_t count = setup.measures.size();
+    std::size_t variables = setup.variations.size();
+    std::vector<std::vector<double>> draws;
+    for (std::size_t k = 0; k < all_failed.size(); ++k)
+      draws.emplace_back(all_drawn.begin() + long(k * variables), all_drawn.begin() + long((k + 1) * variables));
     for (std::size_t m = 0; m < count; ++m) {
       std::vector<double> values;
       for (std::size_t j = m; j < all_measures.size(); j += count) values.push_back(all_measures[j]);
       result.measures.push_back(runtime::sample_statistics(values, probabilities));
+      // a finished run whose measure is NaN was left out of the statistics: how many, and
+      // whether the loss follows a drawn value (then the statistics of the rest are biased)
+      std::vector<std::vector<double>> finished_draws;
+      std::vector<bool> left_out;
+      for (std::size_t k = 0; k < values.size() && k < all_failed.size(); ++k) {
+        if (all_failed[k] != 0) continue;
+        finished_draws.push_back(draws[k]);
+        left_out.push_back(!std::isfinite(values[k]));
+      }
+      result.measures_left_out.push_back(long(std::count(left_out.begin(), left_out.end(), true)));
+      result.measures_bias.push_back(runtime::selection_dependence(finished_draws, left_out));
     }
     for (double f : all_failed) result.failed += f != 0;
     // the ranks hold samples in order, so the first rank with a failure has the lowest

@@ -14,6 +14,8 @@ struct EnsembleResult {
   bool interrupted = false;
   std::vector<runtime::SignalBands> bands;         // per recorded signal
   std::vector<runtime::SampleStatistics> measures;  // per measure, over the samples
+  std::vector<long> measures_left_out;              // per measure, finished samples it is undefined for
+  std::vector<runtime::SelectionDependence> measures_bias;  // per measure: does the loss follow a drawn value?
   long first_failed = -1;                           // the lowest failed sample, −1 when none
   std::vector<double> first_failed_drawn;           // its draws
   std::string first_failure;                        // and why it failed

@@ -68,40 +68,4 @@ Reach controllability_and_observability(const Eigen::MatrixXd& A, const Eigen::M
   return r;
 }
 
-std::complex<double> TransferFunction::at(std::complex<double> s) const {
-  Eigen::Index n = A.rows();
-  Eigen::MatrixXcd resolvent = s * Eigen::MatrixXcd::Identity(n, n) - A.cast<std::complex<double>>();
-  Eigen::VectorXcd x = resolvent.partialPivLu().solve(b.cast<std::complex<double>>());
-  return c.cast<std::complex<double>>().dot(x) + d;  // dot conjugates its first argument: c is real
-}
-
-TransferFunction transfer_function(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& C,
-                                   const Eigen::MatrixXd& D, Eigen::Index i, Eigen::Index j) {
-  TransferFunction g;
-  Eigen::Index n = A.rows();
-  g.A = A, g.b = B.col(j), g.c = C.row(i).transpose(), g.d = D(i, j);
-  Eigen::EigenSolver<Eigen::MatrixXd> poles(A, false);
-  for (Eigen::Index k = 0; k < n; ++k) g.poles.push_back(poles.eigenvalues()(k));
-  // det [[A − sI, b], [c, d]] = 0: the pencil ([[A, b], [c, d]], [[I, 0], [0, 0]])
-  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(n + 1, n + 1), Q = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  P.topLeftCorner(n, n) = A, P.topRightCorner(n, 1) = g.b, P.bottomLeftCorner(1, n) = g.c.transpose(), P(n, n) = g.d;
-  Q.topLeftCorner(n, n).setIdentity();
-  Eigen::GeneralizedEigenSolver<Eigen::MatrixXd> pencil(P, Q, false);
-  double size = std::max(1.0, P.cwiseAbs().maxCoeff());
-  for (Eigen::Index k = 0; k < n + 1; ++k) {
-    std::complex<double> alpha = pencil.alphas()(k);
-    double beta = pencil.betas()(k);
-    if (std::abs(beta) > 1e-10 * std::abs(alpha) && std::abs(beta) > 1e-14) {
-      std::complex<double> z = alpha / beta;
-      if (std::abs(z) < 1e8 * size) g.zeros.push_back(z);
-    }
-  }
-  // k from G at a point away from poles and zeros
-  std::complex<double> s0(0.37 * size + 1.1, 0.61 * size + 0.7), ratio = g.at(s0);
-  for (const auto& p : g.poles) ratio *= (s0 - p);
-  for (const auto& z : g.zeros) ratio /= (s0 - z);
-  g.gain = ratio.real();
-  return g;
-}
-
 }  // namespace eomgen::runtime

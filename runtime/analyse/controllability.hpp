@@ -1,13 +1,15 @@
 /// @file Controllability and observability of x' = A x + B u, y = C x + D u (Hiller
 /// §8.2.3): the Kalman ranks, and the PBH test per eigenvalue, which names the modes
-/// an input cannot reach or an output cannot see; and the transfer function of one
-/// input–output pair as poles, zeros and gain.
+/// an input cannot reach or an output cannot see. The transfer function of one pair is in
+/// transfer_function.hpp.
 #pragma once
 
 #include <complex>
 #include <vector>
 
 #include <Eigen/Dense>
+
+#include "analyse/transfer_function.hpp"
 
 namespace eomgen::runtime {
 
@@ -25,20 +27,5 @@ struct Reach {
 };
 
 Reach controllability_and_observability(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& C);
-
-struct TransferFunction {
-  std::vector<std::complex<double>> poles, zeros;
-  double gain = 0;  // k in G(s) = k Π(s − z)/Π(s − p)
-  /// G(s) = C (sI − A)⁻¹ B + D for this pair
-  std::complex<double> at(std::complex<double> s) const;
-  Eigen::MatrixXd A;
-  Eigen::VectorXd b, c;
-  double d = 0;
-};
-
-/// The transfer function from input `j` to output `i`: zeros are the finite roots of
-/// det [[sI − A, −b], [c, d]] (the generalized eigenvalues of the Rosenbrock pencil).
-TransferFunction transfer_function(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& C,
-                                   const Eigen::MatrixXd& D, Eigen::Index i, Eigen::Index j);
 
 }  // namespace eomgen::runtime

@@ -81,20 +81,34 @@ std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start,
 }
 
 // asymptotically stable runs of points, their ends moved to the crossings beside them
-std::vector<StableInterval> stable_intervals(const EigenvalueSweep& s) {
+// The runs of points with verdict `kind`, each end moved to the crossing that bounds it: past
+// the last point of the run up to the next point that is neither of this kind nor marginal (a
+// point at a crossing is marginal within rounding: 14 with the crossing at 14.0000000004 ended
+// "stable for Ω < 12" at the grid before it)
+std::vector<StableInterval> intervals_of(const EigenvalueSweep& s, const std::string& kind) {
   std::vector<StableInterval> out;
   int n = s.axis.count;
+  auto bounding = [&](int from, int step) {  // the first point, going `step`, that is unstable or has none
+    int k = from;
+    while (k >= 0 && k < n && (s.verdicts[std::size_t(k)] == kind || s.verdicts[std::size_t(k)] == "marginally_stable")) k += step;
+    return k;
+  };
   for (int k = 0; k < n;) {
-    if (s.verdicts[std::size_t(k)] != "asymptotically_stable") {
+    if (s.verdicts[std::size_t(k)] != kind) {
       ++k;
       continue;
     }
     int first = k;
-    while (k < n && s.verdicts[std::size_t(k)] == "asymptotically_stable") ++k;
+    while (k < n && s.verdicts[std::size_t(k)] == kind) ++k;
     StableInterval interval{s.axis.value(first), s.axis.value(k - 1), first == 0, k == n};
-    for (const AxisCrossing& c : s.crossings) {
-      if (first > 0 && c.parameter > s.axis.value(first - 1) && c.parameter <= s.axis.value(first)) interval.low = c.parameter;
-      if (k < n && c.parameter >= s.axis.value(k - 1) && c.parameter < s.axis.value(k)) interval.high = c.parameter;
+    if (kind == "asymptotically_stable") {
+      double below = first > 0 ? s.axis.value(std::max(bounding(first - 1, -1), 0)) : s.axis.low;
+      double above = k < n ? s.axis.value(std::min(bounding(k, 1), n - 1)) : s.axis.high;
+      for (const AxisCrossing& c : s.crossings) {
+        if (first > 0 && c.parameter >= below && c.parameter <= s.axis.value(first)) interval.low = c.parameter;
+        if (k < n && c.parameter >= s.axis.value(k - 1) && c.parameter <= above && interval.high == s.axis.value(k - 1))
+          interval.high = c.parameter;
+      }
     }
     out.push_back(interval);
   }
@@ -161,7 +175,8 @@ void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartS
                         resolution))
       s.crossings.push_back(*c);
   }
-  s.stable = stable_intervals(s);
+  s.stable = intervals_of(s, "asymptotically_stable");
+  s.marginal = intervals_of(s, "marginally_stable");
 }
 
 }  // namespace eomgen::runtime

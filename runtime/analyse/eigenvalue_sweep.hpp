@@ -38,6 +38,7 @@ struct EigenvalueSweep {
   std::vector<double> tolerances;     // per point: within it a real part counts as zero (NaN where none)
   std::vector<AxisCrossing> crossings;
   std::vector<StableInterval> stable;
+  std::vector<StableInterval> marginal;  // runs of points that are only marginally stable (ends at grid points)
   bool interrupted = false;
   double seconds = 0;
 };

@@ -46,6 +46,20 @@ SampleRun run_sample(const EnsembleSetup& setup, long k, const std::vector<doubl
                                                                              : x0;
     target[std::size_t(var.index)] = value;
   }
+  bool varies_parameters = std::any_of(setup.variations.begin(), setup.variations.end(), [](const Variation& v) {
+    return v.target == Variation::Target::parameter;
+  });
+  if (varies_parameters && setup.initial_state_at) {
+    std::optional<std::vector<double>> model_x0 = setup.initial_state_at(p.parameters);
+    if (!model_x0) {
+      run.failed = true;
+      run.failure = "the model's initial values are not finite real numbers at this sample's parameters";
+      return run;
+    }
+    const std::vector<bool>& given = setup.settings.given_state;
+    for (std::size_t i = 0; i < x0.size(); ++i)
+      if (i >= given.size() || !given[i]) x0[i] = (*model_x0)[i];
+  }
   SimulationSettings settings = setup.settings;
   settings.stop = &stop;
   SimulationResult r = simulate(p, x0, settings);

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,11 @@ struct Variation {
 struct EnsembleSetup {
   Problem base;
   std::vector<double> initial_state;
+  /// The model's initial values at a sample's parameters, when they are expressions in them
+  /// (r = "l0 + m*g/k"): called for each sample that varies a parameter, from several threads;
+  /// empty when initial_state serves every sample. The entries of settings.given_state (given
+  /// with --initial, or drawn) keep their values.
+  std::function<std::optional<std::vector<double>>(const std::vector<double>& parameters)> initial_state_at;
   SimulationSettings settings;
   std::vector<Variation> variations;
   std::vector<std::string> signals;  // recorded over time: coordinates, velocities, outputs, energy

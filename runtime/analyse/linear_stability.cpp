@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analyse/first_order_form.hpp"
+#include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
 
@@ -57,14 +58,19 @@ void first_order(const eomgen_model_abi& m, const SecondOrder& s, Eigen::MatrixX
   }
 }
 
+// the eigenvalues of A, computed from its balanced form, with the tolerances relative to its
+// spectral scale within which a real part is zero and two eigenvalues are one
 struct Spectrum {
   std::vector<std::complex<double>> eigenvalues;
-  double tolerance;
+  double tolerance, cluster;
+  Eigen::MatrixXd balanced;
 };
 
 Spectrum spectrum(const Eigen::MatrixXd& A) {
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, false);
-  Spectrum s{{}, 1e-9 * std::max(1.0, A.cwiseAbs().maxCoeff())};
+  Eigen::MatrixXd B = balanced(A);
+  double scale = B.size() ? B.cwiseAbs().maxCoeff() : 0.0;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(B, false);
+  Spectrum s{{}, relative_axis_tolerance * scale, relative_cluster_tolerance * scale, B};
   for (Eigen::Index i = 0; i < A.rows(); ++i) s.eigenvalues.push_back(solver.eigenvalues()[i]);
   std::sort(s.eigenvalues.begin(), s.eigenvalues.end(), [](auto a, auto b) {
     return a.real() != b.real() ? a.real() > b.real() : a.imag() > b.imag();
@@ -72,12 +78,13 @@ Spectrum spectrum(const Eigen::MatrixXd& A) {
   return s;
 }
 
-// geometric multiplicity of λ: the dimension of the null space of A − λI
-int null_space_dimension(const Eigen::MatrixXd& A, std::complex<double> lambda, double tolerance) {
+// geometric multiplicity of λ: the dimension of the null space of A − λI (A balanced; a pivot
+// below the cluster tolerance of the largest is zero)
+int null_space_dimension(const Eigen::MatrixXd& A, std::complex<double> lambda) {
   Eigen::MatrixXcd shifted = A.cast<std::complex<double>>();
   shifted.diagonal().array() -= lambda;
   Eigen::FullPivLU<Eigen::MatrixXcd> lu(shifted);
-  lu.setThreshold(std::sqrt(tolerance));
+  lu.setThreshold(relative_cluster_tolerance);
   return static_cast<int>(A.rows() - lu.rank());
 }
 
@@ -88,11 +95,11 @@ struct Verdict {
   std::vector<std::complex<double>> counted;  // the eigenvalues without the cyclic zeros
 };
 
-Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
+Verdict judge(const Spectrum& s, int cyclic) {
   Verdict v{"asymptotically_stable", -INFINITY, 0, {}};
   std::vector<std::complex<double>> on_axis;
   for (auto l : s.eigenvalues) {
-    bool zero = std::abs(l) <= std::sqrt(s.tolerance);
+    bool zero = std::abs(l) <= s.cluster;
     if (zero && v.cyclic_zeros < cyclic) {  // a conserved cyclic momentum
       ++v.cyclic_zeros;
       continue;
@@ -105,10 +112,12 @@ Verdict judge(const Eigen::MatrixXd& A, const Spectrum& s, int cyclic) {
   }
   if (v.degree == -INFINITY) v.degree = 0;
   if (v.verdict == "unstable") return v;
+  // nothing but conserved momenta (a free mass): a perturbation of them neither grows nor decays
+  if (v.counted.empty() && v.cyclic_zeros > 0) v.verdict = "marginally_stable";
   for (auto l : on_axis) {
     int algebraic = 0;
-    for (auto k : s.eigenvalues) algebraic += std::abs(k - l) <= std::sqrt(s.tolerance);
-    if (null_space_dimension(A, l, s.tolerance) < algebraic) {
+    for (auto k : s.eigenvalues) algebraic += std::abs(k - l) <= s.cluster;
+    if (null_space_dimension(s.balanced, l) < algebraic) {
       v.verdict = "unstable";
       return v;
     }
@@ -132,11 +141,14 @@ std::vector<std::string> theorems(const StabilityReport& r, bool has_cyclic) {
   if (has_cyclic)
     return {"force-structure theorems not applied: the reduced system has cyclic coordinates (their velocities stay "
             "in the state)"};
-  double scale = 1e-10 * std::max({1.0, r.K.cwiseAbs().maxCoeff(), r.D.cwiseAbs().maxCoeff(), r.G.cwiseAbs().maxCoeff()});
-  bool d0 = r.D.cwiseAbs().maxCoeff() <= scale, g0 = r.G.cwiseAbs().maxCoeff() <= scale,
-       n0 = r.N.cwiseAbs().maxCoeff() <= scale;
-  bool k_pd = positive_definite(r.K, scale), d_pd = positive_definite(r.D, scale);
-  int unstable_dof = negative_eigenvalues(r.K, scale);
+  // in mass-normalized coordinates, rates against the system's rate and stiffnesses against its
+  // square: the same decisions in any units and on any time scale
+  MassNormalized x = mass_normalized(r.M, r.K, r.D, r.G, r.N);
+  double rate_zero = 1e-10 * x.rate, stiffness_zero = 1e-10 * x.rate * x.rate;
+  auto largest = [](const Eigen::MatrixXd& X) { return X.size() ? X.cwiseAbs().maxCoeff() : 0.0; };
+  bool d0 = largest(x.D) <= rate_zero, g0 = largest(x.G) <= rate_zero, n0 = largest(x.N) <= stiffness_zero;
+  bool k_pd = positive_definite(x.K, stiffness_zero), d_pd = positive_definite(x.D, rate_zero);
+  int unstable_dof = negative_eigenvalues(x.K, stiffness_zero);
   std::vector<std::string> out;
   if (!n0) {
     if (d0 && g0)
@@ -228,25 +240,28 @@ ScaledHurwitz scaled_hurwitz_determinants(const std::vector<double>& c) {
   return out;
 }
 
+// zero against the spectral scale, as the verdict decides: a real part within the axis tolerance,
+// a determinant (a product of eigenvalues) within it times the scale
 std::string phase_plane_type(const Eigen::Matrix2d& A) {
-  double tr = A.trace(), det = A.determinant(), scale = std::max(1.0, A.cwiseAbs().maxCoeff());
-  double eps = 1e-12 * scale * scale, disc = tr * tr - 4 * det;
+  double tr = A.trace(), det = A.determinant(), scale = spectral_scale(A);
+  double tr_zero = 2 * relative_axis_tolerance * scale, eps = relative_axis_tolerance * scale * scale,
+         disc = tr * tr - 4 * det;
   auto sense = [&](const char* stable, const char* unstable) { return tr < 0 ? stable : unstable; };
   if (std::abs(det) <= eps)
-    return std::abs(tr) <= 1e-12 * scale ? "degenerate: zero matrix or uniform motion (double zero eigenvalue)"
+    return std::abs(tr) <= tr_zero ? "degenerate: zero matrix or uniform motion (double zero eigenvalue)"
                                          : "degenerate: a line of equilibria (one zero eigenvalue)";
   if (det < 0) return "saddle";
   if (std::abs(disc) <= eps)
-    return (A - 0.5 * tr * Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff() <= 1e-12 * scale
+    return (A - 0.5 * tr * Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff() <= tr_zero
                ? sense("stable star (proper node)", "unstable star (proper node)")
                : sense("stable degenerate node", "unstable degenerate node");
   if (disc > 0) return sense("stable node", "unstable node");
-  if (std::abs(tr) <= 1e-12 * scale) return "centre";
+  if (std::abs(tr) <= tr_zero) return "centre";
   return sense("stable focus", "unstable focus");
 }
 
 static bool has_opposite_pair(const std::vector<std::complex<double>>& roots, double tolerance) {
-  double scale = 1;
+  double scale = 0;
   for (auto l : roots) scale = std::max(scale, std::abs(l));
   for (std::size_t i = 0; i < roots.size(); ++i)
     for (std::size_t j = i; j < roots.size(); ++j)
@@ -258,8 +273,9 @@ static bool has_opposite_pair(const std::vector<std::complex<double>>& roots, do
 void describe_spectrum(StabilityReport& r, int cyclic) {
   Spectrum sp = spectrum(r.A);
   r.eigenvalues = sp.eigenvalues;
-  Verdict v = judge(r.A, sp, cyclic);
+  Verdict v = judge(sp, cyclic);
   r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
+  r.axis_tolerance = sp.tolerance;
   for (auto l : r.eigenvalues)
     if (l.imag() >= 0) {
       double size = std::abs(l);
@@ -275,7 +291,7 @@ void describe_spectrum(StabilityReport& r, int cyclic) {
   r.hurwitz = h.minors, r.hurwitz_scale = h.scale;
   // a minor vanishes exactly when two roots add up to zero (λ and −λ: a pair on the imaginary
   // axis, a saddle, a zero root); one within rounding without such a pair is lost to rounding
-  r.hurwitz_ill_conditioned = h.ill_conditioned && !has_opposite_pair(r.eigenvalues, std::sqrt(sp.tolerance));
+  r.hurwitz_ill_conditioned = h.ill_conditioned && !has_opposite_pair(r.eigenvalues, relative_cluster_tolerance);
   if (r.hurwitz_ill_conditioned)
     for (double& minor : r.hurwitz)
       if (minor == 0) minor = NAN;  // its sign is lost, not zero
@@ -349,7 +365,7 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
     cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
   }
   Spectrum sp = spectrum(A);
-  Verdict v = judge(A, sp, cyclic);
+  Verdict v = judge(sp, cyclic);
   return {v.counted, v.verdict, v.degree, sp.tolerance};
 }
 

@@ -17,4 +17,14 @@ struct SampleStatistics {
 /// the default of R and NumPy); the standard deviation with the n − 1 denominator.
 SampleStatistics sample_statistics(const std::vector<double>& values, const std::vector<double>& probabilities);
 
+/// Whether the samples a measure left out (`left_out`, among the finished ones) differ from the
+/// kept ones in a drawn variable (`drawn[sample][variable]`): Welch's t of that variable between
+/// the two groups beyond 4 means the loss depends on the varied values and the statistics over
+/// the rest are biased. The variable with the largest |t| above 4 and that t, or −1.
+struct SelectionDependence {
+  int variable = -1;
+  double t = 0;
+};
+SelectionDependence selection_dependence(const std::vector<std::vector<double>>& drawn, const std::vector<bool>& left_out);
+
 }  // namespace eomgen::runtime

@@ -79,6 +79,12 @@ TEST(DiffCommand, TheRollingDiskWithFramesAndRollsIsTheDiskWrittenByHand) {
   EXPECT_NE(r.out.find(": identical\n"), std::string::npos) << r.out;
 }
 
+TEST(DiffCommand, RenamingASymbolTheOldSideLacksIsAMistake) {
+  CommandOutput r = run_eomgen("diff '" + model_path("pendulum") + "' '" + model_path("pendulum") + "' --rename kk=k");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.err.find("--rename kk=k: kk is not a symbol of"), std::string::npos) << r.err;
+}
+
 TEST(DiffCommand, ExitStatusesLikeDiff) {
   std::string baseline = std::string(EOMGEN_SOURCE_DIR) + "/generated/pendulum.json";
   CommandOutput same = run_eomgen("diff '" + baseline + "' '" + model_path("pendulum") + "'");

@@ -59,5 +59,23 @@ TEST(EigenvalueSweep, TheRollingDiskStaysUprightAboveRouthsCriticalSpin) {
   EXPECT_EQ(wrong.status, 2);
 }
 
+// x'' = −x + (a − 2) x': stable below a = 2, marginal at the grid point a = 2, unstable above;
+// the stable interval ends at the crossing, not at the grid point before it
+TEST(EigenvalueSweep, StableIntervalEndsAtTheCrossingAndMarginalPointsAreSaid) {
+  std::string path = temporary_directory() + "/negative_damping.toml";
+  std::ofstream(path) << "[model]\nname = \"negative_damping\"\ntitle = \"damping falls with a\"\n[parameters]\na = 0.0\n"
+                         "[coordinates]\nx = { initial = 0.0, rate = 0.0 }\n[[particles]]\nname = \"mass\"\nmass = \"1\"\n"
+                         "position = [\"x\", \"0\", \"0\"]\n[energy]\npotential = \"x^2/2\"\n"
+                         "[[forces]]\ngeneralized = { x = \"(a - 2)*der(x)\" }\n";
+  JsonValue r = run_json("sweep '" + path + "' --param a=0:4:3");
+  const JsonValue& stable = r.find("stable_intervals")->items.at(0);
+  EXPECT_NEAR(stable.find("high")->value, 2, 1e-6);
+  const JsonValue& marginal = r.find("marginal_intervals")->items.at(0);
+  EXPECT_EQ(marginal.find("low")->value, 2);
+  CommandOutput too_many = run_eomgen("sweep '" + path + "' --param a=0:4:2e9");
+  EXPECT_EQ(too_many.status, 2);
+  EXPECT_NE(too_many.err.find("a whole COUNT with 2 <= COUNT <= 100000"), std::string::npos) << too_many.err;
+}
+
 }  // namespace
 }  // namespace eomgen::test

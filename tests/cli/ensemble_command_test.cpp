@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "parse/json_reader.hpp"
 #include "support/test_support.hpp"
@@ -52,6 +53,37 @@ TEST(EnsembleCommand, PendulumWithANormalLengthHasTheMeanPeriodOfTheClosedForm) 
   // within the Monte-Carlo standard error of the mean (the draws are fixed by the seed)
   EXPECT_LT(std::abs(estimate - closed_form), standard_error)
       << "estimate " << estimate << ", closed form " << closed_form << ", standard error " << standard_error;
+}
+
+// an initial value written in the parameters follows each sample's drawn parameter
+TEST(EnsembleCommand, InitialValuesFollowTheVariedParameters) {
+  std::string path = temporary_directory() + "/hanging_spring.toml";
+  std::ofstream(path) << "[model]\nname = \"hanging_spring\"\ntitle = \"Mass on a spring, released 5 cm below rest\"\n"
+                         "[parameters]\nm = 1.0\ng = 9.81\nk = 10.0\nl0 = 0.5\n"
+                         "[coordinates]\nr = { initial = \"l0 + m*g/k + 0.05\", rate = 0.0 }\n"
+                         "[[particles]]\nname = \"mass\"\nmass = \"m\"\nposition = [\"0\", \"-r\", \"0\"]\n"
+                         "[gravity]\nacceleration = [\"0\", \"-g\", \"0\"]\n"
+                         "[energy]\npotential = \"k*(r - l0)^2/2\"\n";
+  JsonValue r = run_json("ensemble '" + path + "' --samples 4 --vary 'k=normal(100,0)' --measure 'final(r)' "
+                         "--t-end 1e-6 --dt-out 1e-6");
+  EXPECT_NEAR(at(first_of(r, "measures"), "mean"), 0.5 + 9.81 / 100 + 0.05, 1e-9) << "r(0) at k = 100, not at k = 10";
+}
+
+// a measure that some samples cannot give says how many it left out, and that the loss follows
+// the drawn damping (the heavily damped pendulums never swing back: no period)
+TEST(EnsembleCommand, LeftOutSamplesAreCountedAndABiasedLossIsFlagged) {
+  CommandOutput r = run_eomgen("ensemble '" + model_path("pendulum") + "' --samples 60 --vary 'd=uniform(0,30)' "
+                               "--measure 'period(phi)' --t-end 5 --seed 3 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  Diagnostics diagnostics;
+  auto json = parse_json(r.out, "stdout", diagnostics);
+  ASSERT_TRUE(json) << diagnostics.format();
+  const JsonValue& period = first_of(*json, "measures");
+  EXPECT_GT(at(period, "left_out"), 0);
+  EXPECT_EQ(at(period, "left_out") + at(period, "count"), 60);
+  EXPECT_TRUE(period.find("biased")->truth);
+  EXPECT_NE(r.err.find("finished samples left out"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("larger d"), std::string::npos) << r.err;
 }
 
 TEST(EnsembleCommand, WritesTheStatisticsOverTimeAndTheBandChart) {

@@ -2,12 +2,15 @@
 // frequencies, mass-normalized modes, Rayleigh damping ratios and Φ(t) from the
 // modal solution; the double pendulum's frequencies and mode-shape ratios from its
 // frequency equation; the space rendezvous' Jordan structure and Φ(t) against the
-// Clohessy–Wiltshire solution.
+// Clohessy–Wiltshire solution. Transfer functions from their minimal realization: the
+// upright cart pendulum, a quarter car at three time scales, an output the input cannot move.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+
+#include <fmt/format.h>
 
 #include "parse/json_reader.hpp"
 #include "support/test_support.hpp"
@@ -167,6 +170,64 @@ TEST(LinearCommand, CartPendulumIsControllableWithTheClosedFormTransferFunction)
   EXPECT_NEAR(pole_frequencies[3], std::sqrt((mc + m) * g / (mc * l)), 1e-12);
   ASSERT_EQ(zero_frequencies.size(), 2u);
   for (double z : zero_frequencies) EXPECT_NEAR(z, std::sqrt(g / l), 1e-10);
+}
+
+// the upright cart pendulum from F to the angle: the cart's double pole at 0 is not seen in the
+// angle and cancels; φ/F = 1/(mc l s² − (mc + m) g), so G(0) = −1/((mc + m) g)
+TEST(LinearCommand, UprightCartPendulumTransferFunctionIsMinimal) {
+  const double mc = 1.3, m = 0.4, l = 0.6, g = 9.81;
+  JsonValue json = run_json("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=3.141592653589793 "
+                            "--set mc=1.3 --set m=0.4 --set l=0.6 --transfer F:theta");
+  const JsonValue& tf = json.find("transfer_functions")->items.at(0);
+  EXPECT_EQ(tf.find("zeros")->items.size(), 0u);
+  ASSERT_EQ(tf.find("poles")->items.size(), 2u);
+  for (const JsonValue& p : tf.find("poles")->items)
+    EXPECT_NEAR(std::abs(p.items[0].value), std::sqrt((mc + m) * g / (mc * l)), 1e-10);
+  EXPECT_NEAR(at(tf, "gain"), 1 / (mc * l), 1e-12);
+  EXPECT_NEAR(at(tf, "dc_gain"), -1 / ((mc + m) * g), 1e-12);
+  EXPECT_EQ(at(tf, "cancelled_modes"), 2);
+}
+
+// road height to body height of a quarter car: G(s) = kt (cs s + ks)/Δ(s), one zero at −ks/cs,
+// G(0) = 1 (no spurious zeros near infinity from the pencil's rounding)
+TEST(LinearCommand, QuarterCarHasOneZeroAndUnitStaticGain) {
+  const double ms = 250, mu = 35, ks = 16000, cs = 1000, kt = 160000;
+  std::string path = temporary_directory() + "/quarter_car.toml";
+  std::ofstream(path) << "[model]\nname = \"quarter_car\"\ntitle = \"Quarter car on a road\"\n\n"
+                         "[parameters]\nms = 250.0\nmu = 35.0\nks = 16000.0\ncs = 1000.0\nkt = 160000.0\n\n"
+                         "[coordinates]\nzs = 0.0\nzu = 0.0\n\n[inputs]\nroad = 0.0\n\n"
+                         "[[particles]]\nname = \"body\"\nmass = \"ms\"\nposition = [\"0\", \"0\", \"zs\"]\n\n"
+                         "[[particles]]\nname = \"wheel\"\nmass = \"mu\"\nposition = [\"0\", \"0\", \"zu\"]\n\n"
+                         "[energy]\npotential = \"ks*(zs - zu)^2/2 + kt*zu^2/2\"\n"
+                         "dissipation = \"cs*(der(zs) - der(zu))^2/2\"\n\n"
+                         "[[forces]]\ngeneralized = { zu = \"kt*road\" }\n\n[outputs]\nbody = \"zs\"\n";
+  JsonValue json = run_json("linear '" + path + "' --at zs=0 --at zu=0 --transfer road:body");
+  const JsonValue& tf = json.find("transfer_functions")->items.at(0);
+  ASSERT_EQ(tf.find("zeros")->items.size(), 1u);
+  EXPECT_NEAR(tf.find("zeros")->items[0].items[0].value, -ks / cs, 1e-9 * ks / cs);
+  EXPECT_NEAR(tf.find("zeros")->items[0].items[1].value, 0, 1e-9 * ks / cs);
+  EXPECT_EQ(tf.find("poles")->items.size(), 4u);
+  EXPECT_NEAR(at(tf, "gain"), kt * cs / (ms * mu), 1e-9 * kt * cs / (ms * mu));
+  EXPECT_NEAR(at(tf, "dc_gain"), 1, 1e-9);
+  // the same at scales of time from 1e-6 to 1e6: the zero scales, the gain in s² too
+  for (double s : {1e-6, 1e6}) {
+    JsonValue scaled = run_json(fmt::format("linear '{}' --at zs=0 --at zu=0 --transfer road:body --set ks={:.17g} "
+                                            "--set cs={:.17g} --set kt={:.17g}", path, ks * s * s, cs * s, kt * s * s));
+    const JsonValue& g = scaled.find("transfer_functions")->items.at(0);
+    ASSERT_EQ(g.find("zeros")->items.size(), 1u) << "s = " << s;
+    EXPECT_NEAR(g.find("zeros")->items[0].items[0].value / s, -ks / cs, 1e-8 * ks / cs) << "s = " << s;
+    EXPECT_NEAR(at(g, "dc_gain"), 1, 1e-8) << "s = " << s;
+  }
+}
+
+// an output that the input cannot move: G ≡ 0, no poles or zeros listed
+TEST(LinearCommand, AnOutputTheInputCannotMoveHasAZeroTransferFunction) {
+  JsonValue json = run_json("linear '" + model_path("cart_pendulum") + "' --at x=0 --at theta=0 --transfer F:bob_height");
+  const JsonValue& tf = json.find("transfer_functions")->items.at(0);
+  EXPECT_TRUE(tf.find("constant")->truth);
+  EXPECT_EQ(tf.find("zeros")->items.size(), 0u);
+  EXPECT_EQ(tf.find("poles")->items.size(), 0u);
+  EXPECT_EQ(at(tf, "gain"), 0);
 }
 
 TEST(LinearCommand, AModeTheInputCannotReachIsNamed) {

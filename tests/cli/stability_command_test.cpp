@@ -25,6 +25,49 @@ TEST(StabilityCommand, JsonHasTheDocumentedKeys) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one JSON object on one line";
 }
 
+// vanishing Hurwitz conditions mean "at best marginal", never "holds"
+TEST(StabilityCommand, SymbolicConditionsThatVanishDecideNothing) {
+  Output undamped = eomgen("stability '" + model_path("two_mass_spring_damper") + "' --set d1=0 --set d2=0 --symbolic k1");
+  ASSERT_EQ(undamped.status, 0) << undamped.err;
+  EXPECT_NE(undamped.out.find("at best marginal: the coefficient of lambda^3"), std::string::npos) << undamped.out;
+  EXPECT_EQ(undamped.out.find("every Hurwitz condition holds"), std::string::npos) << undamped.out;
+  Output json = eomgen("stability '" + model_path("two_mass_spring_damper") +
+                       "' --set d1=0 --set d2=0 --symbolic k1 --format json");
+  EXPECT_NE(json.out.find("\"vanishing_conditions\": [\"the coefficient of lambda^3\""), std::string::npos) << json.out;
+  Output damped = eomgen("stability '" + model_path("two_mass_spring_damper") + "' --symbolic k1");
+  EXPECT_EQ(damped.out.find("at best marginal"), std::string::npos) << damped.out;
+}
+
+// a parameter that only sets the initial state was evaluated there: no condition is in it
+TEST(StabilityCommand, SymbolicParameterAbsentFromThePolynomialIsRefused) {
+  std::string model = temporary_directory() + "/launched.toml";
+  std::string text = read_file(model_path("two_mass_spring_damper"));
+  text.replace(text.find("d2 = 0.2"), 8, "d2 = 0.2\nv0 = 0.3");
+  text.replace(text.find("x2 = 0.0"), 8, "x2 = { initial = 0.0, rate = \"v0\" }");
+  std::ofstream(model) << text;
+  Output r = eomgen("stability '" + model + "' --symbolic v0");
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("--symbolic v0: v0 appears neither in the characteristic polynomial"), std::string::npos) << r.err;
+}
+
+// smaller findings of the verdict review, each said plainly
+TEST(StabilityCommand, ConstantsNegativeMassesAndBadPeriodsAreSaidPlainly) {
+  Output upright = eomgen("stability '" + model_path("pendulum") + "' --at phi=Pi --format json");
+  ASSERT_EQ(upright.status, 0) << upright.err;
+  EXPECT_NE(upright.out.find("\"verdict\": \"unstable\""), std::string::npos) << upright.out;
+  Output quarter = eomgen("stability '" + model_path("pendulum") + "' --at 'phi=3*Pi/4+'");
+  EXPECT_EQ(quarter.status, 2);
+  EXPECT_NE(quarter.err.find("expected NAME=NUMBER or a constant expression"), std::string::npos) << quarter.err;
+  Output negative = eomgen("stability '" + model_path("pendulum") + "' --set m=-1");
+  EXPECT_EQ(negative.status, 3) << "a state unfit for analysis";
+  EXPECT_NE(negative.err.find("not positive definite"), std::string::npos) << negative.err;
+  EXPECT_EQ(negative.err.find("singular"), std::string::npos) << negative.err;
+  Output period = eomgen("stability '" + model_path("mathieu") + "' --period -1");
+  EXPECT_EQ(period.status, 2);
+  EXPECT_NE(period.err.find("'-1' is not a positive number"), std::string::npos) << period.err;
+  EXPECT_LT(period.err.size(), 200u) << "no largest double in full: " << period.err;
+}
+
 TEST(StabilityCommand, AStateThatIsNotAnEquilibriumIsRefused) {
   Output r = eomgen("stability '" + model_path("pendulum") + "' --at phi=0.3");
   EXPECT_EQ(r.status, 2);

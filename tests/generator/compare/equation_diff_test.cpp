@@ -137,6 +137,23 @@ TEST(EquationDiff, ALagrangianTimesAConstantIsTheSameMotion) {
   EXPECT_EQ(compare(once, write("steeper", pendulum_by_energy, "POTENTIAL", "-2*m*g*l*cos(phi)")).verdict, "different");
 }
 
+// equations that agree where they were sampled are not the same where they are not
+TEST(EquationDiff, BranchesAreNotTrustedToASampleBox) {
+  std::string original = test::model_path("pendulum");
+  // −l·√(1 − sin²φ) is −l·|cos φ|: different once cos φ < 0 is sampled
+  std::string rooted = write("rooted", pendulum_file(), "\"-l*cos(phi)\"", "\"-l*sqrt(1 - sin(phi)^2)\"");
+  EXPECT_EQ(compare(original, rooted).verdict, "different");
+  // x³ against |x|³ in a potential: different for x < 0
+  std::string cubic = write("cubic", pendulum_by_energy, "POTENTIAL", "m*g*l*phi^3");
+  std::string absolute = write("absolute", pendulum_by_energy, "POTENTIAL", "m*g*l*abs(phi)^3");
+  EXPECT_EQ(compare(cubic, absolute).verdict, "different");
+  // √(x²)·x² against |x|³ agree everywhere, but a branch only sampled is not shown to be equal
+  std::string root_form = write("root_form", pendulum_by_energy, "POTENTIAL", "m*g*l*sqrt(phi^2)*phi^2");
+  EquationDiff sampled = compare(absolute, root_form);
+  EXPECT_EQ(sampled.verdict, "equal_on_samples");
+  EXPECT_EQ(entry(sampled, "V")->decided_by, "numeric on the samples");
+}
+
 TEST(EquationDiff, EveryCommittedBaselineIsIdenticalToItsModel) {
   for (const char* name : {"pendulum", "double_pendulum", "rolling_disk", "slider_crank", "heavy_symmetric_top", "mathieu"}) {
     EquationDiff d = compare(std::string(EOMGEN_SOURCE_DIR) + "/generated/" + name + ".json", test::model_path(name));

@@ -1,0 +1,130 @@
+#include "analyse/transfer_function.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include "analyse/system_scales.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+// what counts as zero against the size of the quantity it is computed from (rounding of a
+// balanced system is about 1e-16 of its scale; eigenvalue clusters split by its square root)
+constexpr double relative_zero = 1e-9;
+
+// an orthonormal basis of the Krylov space span{v, A v, A² v, …}: the states v reaches under A
+Eigen::MatrixXd krylov_basis(const Eigen::MatrixXd& A, const Eigen::VectorXd& v) {
+  const Eigen::Index n = A.rows();
+  Eigen::MatrixXd Q(n, 0);
+  double size = v.norm(), scale = A.size() ? A.norm() : 0.0;
+  if (n == 0 || size == 0) return Q;
+  Eigen::VectorXd next = v / size;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Q.conservativeResize(n, k + 1);
+    Q.col(k) = next;
+    Eigen::VectorXd w = A * Q.col(k);
+    for (int twice = 0; twice < 2; ++twice) w -= Q * (Q.transpose() * w);  // Gram–Schmidt, repeated for orthogonality
+    if (w.norm() <= relative_zero * scale) break;
+    next = w / w.norm();
+  }
+  return Q;
+}
+
+std::vector<std::complex<double>> eigenvalues_of(const Eigen::MatrixXd& A) {
+  std::vector<std::complex<double>> out;
+  if (A.rows() == 0) return out;
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, false);
+  for (Eigen::Index k = 0; k < A.rows(); ++k) out.push_back(solver.eigenvalues()(k));
+  return out;
+}
+
+// the null space of the r rows of R, which are independent (their sizes differ by powers of
+// the system's rate: each is scaled to one first), orthonormal
+Eigen::MatrixXd null_space(Eigen::MatrixXd R) {
+  for (Eigen::Index k = 0; k < R.rows(); ++k) R.row(k).normalize();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullV);
+  return svd.matrixV().rightCols(R.cols() - R.rows());
+}
+
+// zeros and gain with d = 0: the relative degree r is the first k with c A^(k−1) b ≠ 0, the gain
+// that Markov parameter; y ≡ 0 keeps x in the null space N of [c; c A; …; c A^(r−1)], where the
+// input u = −(c A^(r−1) b)⁻¹ c A^r x leaves x' = (A − b (c A^(r−1) b)⁻¹ c A^r) x: its n − r
+// eigenvalues on N are the zeros
+void zero_dynamics(TransferFunction& g) {
+  const Eigen::Index n = g.A.rows();
+  double scale = g.A.norm(), size = g.c.norm() * g.b.norm();
+  Eigen::MatrixXd rows(0, n);
+  Eigen::RowVectorXd cAk = g.c.transpose();
+  for (Eigen::Index k = 0; k < n; ++k, cAk = cAk * g.A) {
+    double markov = cAk.dot(g.b);
+    if (std::abs(markov) > relative_zero * size * std::pow(scale, static_cast<double>(k))) {
+      g.gain = markov;
+      break;
+    }
+    rows.conservativeResize(k + 1, n);
+    rows.row(k) = cAk;
+  }
+  Eigen::Index r = rows.rows() + 1;
+  if (r >= n || g.gain == 0) return;  // no finite zeros
+  rows.conservativeResize(r, n);
+  rows.row(r - 1) = cAk;
+  Eigen::MatrixXd N = null_space(rows);
+  Eigen::MatrixXd closed = g.A - g.b * (cAk * g.A) / g.gain;
+  g.zeros = eigenvalues_of(N.transpose() * closed * N);
+}
+
+}  // namespace
+
+std::complex<double> TransferFunction::at(std::complex<double> s) const {
+  Eigen::Index n = A.rows();
+  if (n == 0) return d;
+  Eigen::MatrixXcd resolvent = s * Eigen::MatrixXcd::Identity(n, n) - A.cast<std::complex<double>>();
+  Eigen::VectorXcd x = resolvent.partialPivLu().solve(b.cast<std::complex<double>>());
+  return c.cast<std::complex<double>>().dot(x) + d;  // dot conjugates its first argument: c is real
+}
+
+std::complex<double> TransferFunction::dc_gain() const {
+  double scale = 0;
+  for (const auto& p : poles) scale = std::max(scale, std::abs(p));
+  for (const auto& z : zeros) scale = std::max(scale, std::abs(z));
+  std::complex<double> value = gain;
+  for (const auto& p : poles) {
+    if (std::abs(p) <= relative_zero * scale) return {INFINITY, 0};
+    value /= -p;
+  }
+  for (const auto& z : zeros) value *= -z;
+  return value;
+}
+
+TransferFunction transfer_function(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& C,
+                                   const Eigen::MatrixXd& D, Eigen::Index i, Eigen::Index j) {
+  TransferFunction g;
+  g.d = D(i, j);
+  // balanced coordinates x = T x̃: the same G(s), every state on the eigenvalues' scale
+  Eigen::VectorXd t = balancing_scales(A);
+  Eigen::MatrixXd At = t.cwiseInverse().asDiagonal() * A * t.asDiagonal();
+  Eigen::VectorXd bt = B.col(j).cwiseQuotient(t), ct = C.row(i).transpose().cwiseProduct(t);
+  // the states the input reaches, then, among them, those the output sees
+  Eigen::MatrixXd V = krylov_basis(At, bt);
+  Eigen::MatrixXd A1 = V.transpose() * At * V;
+  Eigen::VectorXd b1 = V.transpose() * bt, c1 = V.transpose() * ct;
+  Eigen::MatrixXd W = krylov_basis(A1.transpose(), c1);
+  g.A = W.transpose() * A1 * W, g.b = W.transpose() * b1, g.c = W.transpose() * c1;
+  g.removed_modes = static_cast<int>(A.rows() - g.A.rows());
+  g.poles = eigenvalues_of(g.A);
+  if (g.A.rows() == 0) {
+    g.gain = g.d;
+  } else if (g.d != 0) {
+    // relative degree 0: y ≡ 0 needs u = −c x / d
+    g.gain = g.d;
+    g.zeros = eigenvalues_of(g.A - g.b * g.c.transpose() / g.d);
+  } else {
+    zero_dynamics(g);
+  }
+  return g;
+}
+
+}  // namespace eomgen::runtime

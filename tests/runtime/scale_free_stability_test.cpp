@@ -1,0 +1,186 @@
+// Verdicts that do not depend on the units or the time scale of the numbers: the
+// two-mass spring-damper chain scaled in time by s (k·s², d·s) and in the units of its
+// coordinates by u (every parameter ·u²), s and u from 1e-12 to 1e12, keeps its linear
+// verdict, its force-structure theorem, its phase-plane type and its critical-case
+// verdict; its eigenvalues scale by s exactly. A MEMS resonator (m = 1e-9, c = 1e-8,
+// k = 10: −5 ± 1e5 i) and a heavy oscillator (m = 1e6, c = 1e3, k = 1e12) are damped; an
+// undamped oscillator at 22 Hz whose spring is a generalized force stays small in the long
+// simulation; a free mass is not asymptotically stable.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "analyse/critical_case.hpp"
+#include "analyse/linear_stability.hpp"
+#include "analyse/system_scales.hpp"
+#include "generated/header_registry.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+using runtime::Problem;
+
+// the chain with its parameters scaled: time by s, the coordinates' unit by u
+Problem scaled_chain(double s, double u, double damping_factor) {
+  const eomgen_model_abi* m = generated_model("two_mass_spring_damper").abi;
+  Problem p{m, std::vector<double>(m->default_parameters, m->default_parameters + m->num_parameters),
+            std::vector<double>(m->num_inputs, 0.0)};
+  for (std::size_t i = 0; i < m->num_parameters; ++i) {
+    char kind = m->parameter_names[i][0];
+    double time_power = kind == 'k' ? 2 : kind == 'd' ? 1 : 0;
+    p.parameters[i] *= std::pow(s, time_power) * u * u * (kind == 'd' ? damping_factor : 1.0);
+  }
+  return p;
+}
+
+const std::vector<double>& scales() {
+  static const std::vector<double> all{1e-12, 1e-9, 1e-6, 1e-3, 1, 1e3, 1e6, 1e9, 1e12};
+  return all;
+}
+
+std::string first_theorem(const runtime::StabilityReport& r) { return r.theorems.empty() ? "" : r.theorems[0].substr(0, 20); }
+
+TEST(ScaleFreeStability, DampedChainIsAsymptoticallyStableAtEveryScale) {
+  // the default damping, and a light one (Q of about 1e4)
+  for (double damping : {1.0, 1e-4}) {
+    Problem reference = scaled_chain(1, 1, damping);
+    std::vector<double> x(reference.model->num_states, 0.0);
+    runtime::StabilityReport base = runtime::analyse_stability(reference, x);
+    ASSERT_EQ(base.verdict, "asymptotically_stable");
+    for (double s : scales())
+      for (double u : scales()) {
+        runtime::StabilityReport r = runtime::analyse_stability(scaled_chain(s, u, damping), x);
+        EXPECT_EQ(r.verdict, "asymptotically_stable") << "s = " << s << ", u = " << u << ", damping " << damping;
+        EXPECT_EQ(first_theorem(r), first_theorem(base)) << "s = " << s << ", u = " << u;
+        EXPECT_NEAR(r.stability_degree / s, base.stability_degree, 1e-6 * std::abs(base.stability_degree));
+        ASSERT_EQ(r.eigenvalues.size(), base.eigenvalues.size());
+        for (std::size_t k = 0; k < r.eigenvalues.size(); ++k)
+          EXPECT_NEAR(std::abs(r.eigenvalues[k] / s - base.eigenvalues[k]), 0, 1e-9 * std::abs(base.eigenvalues[k]));
+      }
+  }
+}
+
+TEST(ScaleFreeStability, UndampedChainIsMarginallyStableAtEveryScale) {
+  for (double s : scales())
+    for (double u : scales()) {
+      Problem p = scaled_chain(s, u, 0.0);
+      std::vector<double> x(p.model->num_states, 0.0);
+      runtime::StabilityReport r = runtime::analyse_stability(p, x);
+      EXPECT_EQ(r.verdict, "marginally_stable") << "s = " << s << ", u = " << u;
+      EXPECT_EQ(first_theorem(r), "Lagrange-Dirichlet: ") << "s = " << s << ", u = " << u;
+    }
+}
+
+// the chain declares dissipation, so the energy function does not apply and the long simulation
+// (eight perturbed runs of 200 periods) decides: at the corners and the middle of the scales
+TEST(ScaleFreeStability, UndampedChainStaysSmallInTheLongSimulationAtExtremeScales) {
+  for (auto [s, u] : std::vector<std::pair<double, double>>{{1e-12, 1e12}, {1e12, 1e-12}, {1, 1}, {1e-12, 1e-12}, {1e12, 1e12}}) {
+    Problem p = scaled_chain(s, u, 0.0);
+    std::vector<double> x(p.model->num_states, 0.0);
+    runtime::StabilityReport r = runtime::analyse_stability(p, x);
+    runtime::CriticalCase c = runtime::check_critical_case(p, x, r);
+    EXPECT_TRUE(c.critical) << "s = " << s << ", u = " << u;
+    EXPECT_EQ(c.nonlinear_verdict, "stable") << "s = " << s << ", u = " << u << ": " << c.energy << " / " << c.simulation;
+  }
+}
+
+TEST(ScaleFreeStability, PhasePlaneTypeDoesNotDependOnTheScale) {
+  for (double s : scales())
+    for (double u : scales()) {
+      // x'' + 2ζω x' + ω² x = 0 with ω = s and the velocity in units u: A = [[0, u], [−ω²/u, −2ζω]]
+      auto type = [&](double zeta) {
+        Eigen::Matrix2d A;
+        A << 0, u, -s * s / u, -2 * zeta * s;
+        return runtime::phase_plane_type(A);
+      };
+      EXPECT_EQ(type(5e-5), "stable focus") << "s = " << s << ", u = " << u;
+      EXPECT_EQ(type(0), "centre") << "s = " << s << ", u = " << u;
+      EXPECT_EQ(type(2), "stable node") << "s = " << s << ", u = " << u;
+      EXPECT_EQ(type(-5e-5), "unstable focus") << "s = " << s << ", u = " << u;
+    }
+}
+
+TEST(ScaleFreeStability, BalancingKeepsTheEigenvaluesAndShowsTheirScale) {
+  Eigen::Matrix2d A;
+  A << 0, 1, -1e10, -10;  // the MEMS resonator
+  Eigen::MatrixXd B = runtime::balanced(A);
+  EXPECT_NEAR(B.trace(), A.trace(), 1e-12);
+  EXPECT_NEAR(B.determinant() / A.determinant(), 1, 1e-12);
+  EXPECT_LT(runtime::spectral_scale(A), 1e6);
+  EXPECT_GT(runtime::spectral_scale(A), 1e4);
+  EXPECT_EQ(runtime::spectral_scale(Eigen::MatrixXd::Zero(3, 3)), 0);
+}
+
+const JsonValue& field(const JsonValue& v, const std::string& key) {
+  static const JsonValue missing;
+  const JsonValue* found = v.find(key);
+  return found ? *found : missing;
+}
+
+std::string write_model(const std::string& name, const std::string& text) {
+  std::string path = temporary_directory() + "/" + name + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* const oscillator = R"toml([model]
+name = "oscillator"
+title = "mass, damper and spring, the spring FORCE"
+[parameters]
+m = 1.0
+c = 0.0
+k = 1.0
+[coordinates]
+x = { initial = 0.0, rate = 0.0 }
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+dissipation = "c*der(x)^2/2"
+)toml";
+
+std::string oscillator_with(bool spring_as_force) {
+  std::string text = oscillator;
+  text.replace(text.find("FORCE"), 5, spring_as_force ? "as a generalized force" : "as a potential");
+  // [energy] is the text's last table: a potential line goes into it
+  text += spring_as_force ? "[[forces]]\ngeneralized = { x = \"-k*x\" }\n" : "potential = \"k*x^2/2\"\n";
+  return text;
+}
+
+TEST(ScaleFreeStability, MemsAndHeavyOscillatorsAreDamped) {
+  std::string model = write_model("oscillator", oscillator_with(false));
+  for (const char* set : {"--set m=1e-9 --set c=1e-8 --set k=10", "--set m=1e6 --set c=1e3 --set k=1e12"}) {
+    JsonValue r = run_json("stability '" + model + "' " + set);
+    EXPECT_EQ(field(r, "verdict").text, "asymptotically_stable") << set;
+    EXPECT_EQ(field(r, "phase_plane").text, "stable focus") << set;
+    EXPECT_NE(field(field(r, "critical_case"), "nonlinear_verdict").text, "unstable") << set;
+  }
+}
+
+TEST(ScaleFreeStability, UndampedOscillatorStaysSmallInTheLongSimulationAtEveryTimeScale) {
+  std::string model = write_model("oscillator_force", oscillator_with(true));
+  // 22 Hz, then that frequency scaled by 1e-6 and 1e6
+  for (double s : {1.0, 1e-6, 1e6}) {
+    double k = std::pow(2 * M_PI * 22 * s, 2);
+    JsonValue r = run_json("stability '" + model + "' " + fmt::format("--set k={:.17g}", k));
+    EXPECT_EQ(field(r, "verdict").text, "marginally_stable") << "k = " << k;
+    EXPECT_EQ(field(field(r, "critical_case"), "nonlinear_verdict").text, "stable")
+        << "k = " << k << ": " << field(field(r, "critical_case"), "simulation").text;
+  }
+}
+
+TEST(ScaleFreeStability, FreeMassIsNotAsymptoticallyStable) {
+  std::string text = oscillator_with(false);
+  text.replace(text.find("potential = \"k*x^2/2\"\n"), 22, "");
+  JsonValue r = run_json("stability '" + write_model("free", text) + "'");
+  EXPECT_EQ(field(r, "verdict").text, "marginally_stable");
+  EXPECT_EQ(field(field(r, "critical_case"), "energy").text.find("strict minimum"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace eomgen::test
