@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -59,22 +60,39 @@ void first_order(const eomgen_model_abi& m, const SecondOrder& s, Eigen::MatrixX
 }
 
 // the eigenvalues of A, computed from its balanced form, with the tolerances relative to its
-// spectral scale within which a real part is zero and two eigenvalues are one
+// spectral scale within which a real part is zero and two eigenvalues are one, and each
+// eigenvalue's own rounding error ε |B| κ (κ its condition number, from the left and right
+// eigenvectors): a nearly defective pair (a Jordan block, split by rounding by about √ε |B|)
+// has a large κ and stays one cluster, a triangular B's distinct eigenvalues do not
 struct Spectrum {
   std::vector<std::complex<double>> eigenvalues;
+  std::vector<double> errors;
   double tolerance, cluster;
   Eigen::MatrixXd balanced;
+  bool on_axis(std::size_t i) const { return std::abs(eigenvalues[i].real()) <= std::max(tolerance, errors[i]); }
+  bool same(std::size_t i, std::size_t j) const {
+    return std::abs(eigenvalues[i] - eigenvalues[j]) <= std::max(cluster, 4 * (errors[i] + errors[j]));
+  }
 };
 
 Spectrum spectrum(const Eigen::MatrixXd& A) {
   Eigen::MatrixXd B = balanced(A);
-  double scale = B.size() ? B.cwiseAbs().maxCoeff() : 0.0;
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(B, false);
-  Spectrum s{{}, relative_axis_tolerance * scale, relative_cluster_tolerance * scale, B};
-  for (Eigen::Index i = 0; i < A.rows(); ++i) s.eigenvalues.push_back(solver.eigenvalues()[i]);
-  std::sort(s.eigenvalues.begin(), s.eigenvalues.end(), [](auto a, auto b) {
-    return a.real() != b.real() ? a.real() > b.real() : a.imag() > b.imag();
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(B, true);
+  Spectrum s{{}, {}, 0, 0, B};
+  const Eigen::Index n = A.rows();
+  Eigen::MatrixXcd X = solver.eigenvectors(), Y = X.fullPivLu().inverse();
+  double size = n ? B.norm() : 0.0;
+  std::vector<std::pair<std::complex<double>, double>> pairs;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double kappa = X.col(i).norm() * Y.row(i).norm(), error = std::numeric_limits<double>::epsilon() * size * kappa;
+    pairs.push_back({solver.eigenvalues()[i], std::isfinite(error) ? std::min(error, size) : size});
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) {
+    return a.first.real() != b.first.real() ? a.first.real() > b.first.real() : a.first.imag() > b.first.imag();
   });
+  for (const auto& [value, error] : pairs) s.eigenvalues.push_back(value), s.errors.push_back(error);
+  double scale = eigenvalue_scale(B, s.eigenvalues);
+  s.tolerance = relative_axis_tolerance * scale, s.cluster = relative_cluster_tolerance * scale;
   return s;
 }
 
@@ -97,27 +115,28 @@ struct Verdict {
 
 Verdict judge(const Spectrum& s, int cyclic) {
   Verdict v{"asymptotically_stable", -INFINITY, 0, {}};
-  std::vector<std::complex<double>> on_axis;
-  for (auto l : s.eigenvalues) {
-    bool zero = std::abs(l) <= s.cluster;
+  std::vector<std::size_t> on_axis;
+  for (std::size_t i = 0; i < s.eigenvalues.size(); ++i) {
+    std::complex<double> l = s.eigenvalues[i];
+    bool zero = std::abs(l) <= std::max(s.cluster, s.errors[i]);
     if (zero && v.cyclic_zeros < cyclic) {  // a conserved cyclic momentum
       ++v.cyclic_zeros;
       continue;
     }
     v.counted.push_back(l);
     // on the axis within rounding: exactly 0, so an undamped point never counts as decaying
-    v.degree = std::max(v.degree, std::abs(l.real()) <= s.tolerance ? 0.0 : l.real());
-    if (l.real() > s.tolerance) v.verdict = "unstable";
-    else if (std::abs(l.real()) <= s.tolerance) on_axis.push_back(l);
+    v.degree = std::max(v.degree, s.on_axis(i) ? 0.0 : l.real());
+    if (s.on_axis(i)) on_axis.push_back(i);
+    else if (l.real() > 0) v.verdict = "unstable";
   }
   if (v.degree == -INFINITY) v.degree = 0;
   if (v.verdict == "unstable") return v;
   // nothing but conserved momenta (a free mass): a perturbation of them neither grows nor decays
   if (v.counted.empty() && v.cyclic_zeros > 0) v.verdict = "marginally_stable";
-  for (auto l : on_axis) {
+  for (std::size_t i : on_axis) {
     int algebraic = 0;
-    for (auto k : s.eigenvalues) algebraic += std::abs(k - l) <= s.cluster;
-    if (null_space_dimension(s.balanced, l) < algebraic) {
+    for (std::size_t k = 0; k < s.eigenvalues.size(); ++k) algebraic += s.same(i, k);
+    if (null_space_dimension(s.balanced, s.eigenvalues[i]) < algebraic) {
       v.verdict = "unstable";
       return v;
     }
@@ -125,7 +144,6 @@ Verdict judge(const Spectrum& s, int cyclic) {
   if (!on_axis.empty()) v.verdict = "marginally_stable";
   return v;
 }
-
 
 bool positive_definite(const Eigen::MatrixXd& S, double tolerance) {
   return S.rows() == 0 || Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S).eigenvalues().minCoeff() > tolerance;
@@ -276,10 +294,10 @@ void describe_spectrum(StabilityReport& r, int cyclic) {
   Verdict v = judge(sp, cyclic);
   r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
   r.axis_tolerance = sp.tolerance;
-  for (auto l : r.eigenvalues)
-    if (l.imag() >= 0) {
+  for (std::size_t i = 0; i < r.eigenvalues.size(); ++i)
+    if (std::complex<double> l = r.eigenvalues[i]; l.imag() >= 0) {
       double size = std::abs(l);
-      bool on_axis = std::abs(l.real()) <= sp.tolerance;
+      bool on_axis = sp.on_axis(i);
       r.modes.push_back({l, std::abs(l.imag()), size, size > 0 && !on_axis ? -l.real() / size : 0.0});
     }
   std::stable_sort(r.modes.begin(), r.modes.end(), [](const Mode& a, const Mode& b) {
@@ -364,6 +382,10 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
     first_order(m, linearize(problem, x), A, B, nullptr);
     cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
   }
+  return counted_spectrum(A, cyclic);
+}
+
+CountedSpectrum counted_spectrum(const Eigen::MatrixXd& A, int cyclic) {
   Spectrum sp = spectrum(A);
   Verdict v = judge(sp, cyclic);
   return {v.counted, v.verdict, v.degree, sp.tolerance};

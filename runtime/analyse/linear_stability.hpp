@@ -57,6 +57,9 @@ struct CountedSpectrum {
   double degree = 0, tolerance = 0;
 };
 CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<double>& x);
+/// The same for a given first-order matrix A with `cyclic` zero eigenvalues of conserved
+/// momenta to leave out.
+CountedSpectrum counted_spectrum(const Eigen::MatrixXd& A, int cyclic = 0);
 
 /// Only the largest real part of the reduced system's eigenvalues that counts for the
 /// verdict: the quantity of a stability map.

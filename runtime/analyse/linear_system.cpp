@@ -5,6 +5,8 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "analyse/system_scales.hpp"
+
 namespace eomgen::runtime {
 
 namespace {
@@ -26,17 +28,20 @@ int rank_of(const ComplexMatrix& X, double tolerance, bool& uncertain) {
 
 }  // namespace
 
-JordanStructure jordan_structure(const Eigen::MatrixXd& A) {
+JordanStructure jordan_structure(const Eigen::MatrixXd& unbalanced) {
   JordanStructure out;
-  Eigen::Index n = A.rows();
+  Eigen::Index n = unbalanced.rows();
   if (n == 0) return out;
-  double size = std::max(1.0, A.cwiseAbs().maxCoeff());
+  // in balanced coordinates (the same eigenvalues and ranks), against their own scale: the
+  // structure does not change when the system is scaled in time or in units
+  Eigen::MatrixXd A = balanced(unbalanced);
+  double size = A.cwiseAbs().maxCoeff();
   out.rank_tolerance = 1e-9 * size * static_cast<double>(n);
   Eigen::EigenSolver<Eigen::MatrixXd> solver(A, false);
   std::vector<std::complex<double>> values(solver.eigenvalues().data(), solver.eigenvalues().data() + n);
   // a Jordan block of size k splits its eigenvalue by about (ε|A|)^(1/k), 6e-6 |A| for k = 3:
   // eigenvalues closer than 1e-4 |A| are taken as one, and the ranks then decide
-  double cluster = 1e-4 * size, rounding = 1e-12 * size;
+  double cluster = 1e-4 * size, rounding = 1e-12 * eigenvalue_scale(A, values);
   std::vector<bool> taken(values.size(), false);
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (taken[i]) continue;

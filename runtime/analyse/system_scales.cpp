@@ -37,6 +37,13 @@ Eigen::MatrixXd balanced(const Eigen::MatrixXd& A) {
 
 double spectral_scale(const Eigen::MatrixXd& A) { return A.size() == 0 ? 0.0 : balanced(A).cwiseAbs().maxCoeff(); }
 
+double eigenvalue_scale(const Eigen::MatrixXd& balanced_A, const std::vector<std::complex<double>>& eigenvalues) {
+  double radius = 0;
+  for (const auto& l : eigenvalues) radius = std::max(radius, std::abs(l));
+  double largest = balanced_A.size() ? balanced_A.cwiseAbs().maxCoeff() : 0.0;
+  return std::max(radius, 1e-6 * largest);
+}
+
 MassNormalized mass_normalized(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const Eigen::MatrixXd& D,
                                const Eigen::MatrixXd& G, const Eigen::MatrixXd& N) {
   MassNormalized out{K, D, G, N, 0};

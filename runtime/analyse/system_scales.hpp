@@ -5,6 +5,9 @@
 /// is scaled in time or in units.
 #pragma once
 
+#include <complex>
+#include <vector>
+
 #include <Eigen/Dense>
 
 namespace eomgen::runtime {
@@ -25,6 +28,12 @@ Eigen::MatrixXd balanced(const Eigen::MatrixXd& A);
 /// A (0 only for A = 0). A scales with time as the eigenvalues do, and a change of units
 /// of the states, a diagonal similarity, leaves it unchanged.
 double spectral_scale(const Eigen::MatrixXd& A);
+
+/// The scale that decides which eigenvalues are zero or equal: the spectral radius of the
+/// balanced A, but no less than 1e-6 of its largest entry. Not the largest entry alone: a
+/// triangular A keeps entries far above its eigenvalues whatever the balancing (an
+/// eigenvalue −1e10 beside an entry 1.4e17), and clustering against them merged 0 and −1e10.
+double eigenvalue_scale(const Eigen::MatrixXd& balanced_A, const std::vector<std::complex<double>>& eigenvalues);
 
 /// M q'' + D q' + G q' + K q + N q = 0 in mass-normalized coordinates M^½ q: the matrices
 /// L X L with L = M^−½, rates D', G' in 1/s and stiffnesses K', N' in 1/s², and the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
@@ -53,24 +54,29 @@ Eigen::MatrixXd null_space(Eigen::MatrixXd R) {
 // that Markov parameter; y ≡ 0 keeps x in the null space N of [c; c A; …; c A^(r−1)], where the
 // input u = −(c A^(r−1) b)⁻¹ c A^r x leaves x' = (A − b (c A^(r−1) b)⁻¹ c A^r) x: its n − r
 // eigenvalues on N are the zeros
-void zero_dynamics(TransferFunction& g) {
+void zero_dynamics(TransferFunction& g, double c_before_reduction) {
   const Eigen::Index n = g.A.rows();
-  double scale = g.A.norm(), size = g.c.norm() * g.b.norm();
-  Eigen::MatrixXd rows(0, n);
+  // in the Krylov basis of b (A Hessenberg): c A^k b = 0 for k < r exactly when c's first r
+  // components are 0. The k-th basis vector is A times the one before less its projections;
+  // when that remainder, A's subdiagonal h_k, is small against |A| the vector carries rounding
+  // of ε |A|/h_k, and so does c's k-th component, against c's size before the modes the input
+  // does not reach were dropped: below 1e4 times that it is zero
+  const double epsilon = std::numeric_limits<double>::epsilon(), size = g.A.norm();
+  auto rounding = [&](Eigen::Index k) {
+    double h = k == 0 ? size : std::abs(g.A(k, k - 1));
+    return 1e4 * epsilon * c_before_reduction * (h > 0 ? std::max(1.0, size / h) : 1.0);
+  };
+  Eigen::Index r = 0;
+  while (r < n && std::abs(g.c(r)) <= rounding(r)) ++r;
+  ++r;
+  Eigen::MatrixXd rows(r, n);
   Eigen::RowVectorXd cAk = g.c.transpose();
-  for (Eigen::Index k = 0; k < n; ++k, cAk = cAk * g.A) {
-    double markov = cAk.dot(g.b);
-    if (std::abs(markov) > relative_zero * size * std::pow(scale, static_cast<double>(k))) {
-      g.gain = markov;
-      break;
-    }
-    rows.conservativeResize(k + 1, n);
+  for (Eigen::Index k = 0; k < r; ++k) {
     rows.row(k) = cAk;
+    if (k + 1 < r) cAk = cAk * g.A;
   }
-  Eigen::Index r = rows.rows() + 1;
-  if (r >= n || g.gain == 0) return;  // no finite zeros
-  rows.conservativeResize(r, n);
-  rows.row(r - 1) = cAk;
+  g.gain = cAk.dot(g.b);
+  if (r >= n) return;  // no finite zeros
   Eigen::MatrixXd N = null_space(rows);
   Eigen::MatrixXd closed = g.A - g.b * (cAk * g.A) / g.gain;
   g.zeros = eigenvalues_of(N.transpose() * closed * N);
@@ -107,12 +113,14 @@ TransferFunction transfer_function(const Eigen::MatrixXd& A, const Eigen::Matrix
   Eigen::VectorXd t = balancing_scales(A);
   Eigen::MatrixXd At = t.cwiseInverse().asDiagonal() * A * t.asDiagonal();
   Eigen::VectorXd bt = B.col(j).cwiseQuotient(t), ct = C.row(i).transpose().cwiseProduct(t);
-  // the states the input reaches, then, among them, those the output sees
-  Eigen::MatrixXd V = krylov_basis(At, bt);
-  Eigen::MatrixXd A1 = V.transpose() * At * V;
-  Eigen::VectorXd b1 = V.transpose() * bt, c1 = V.transpose() * ct;
-  Eigen::MatrixXd W = krylov_basis(A1.transpose(), c1);
-  g.A = W.transpose() * A1 * W, g.b = W.transpose() * b1, g.c = W.transpose() * c1;
+  // the states the output sees, then, among them, those the input reaches: the last basis is
+  // the Krylov basis of b, in which A is Hessenberg and c A^k b vanishes exactly as c's first
+  // k + 1 components do (the relative degree is read off c, not off Markov parameters)
+  Eigen::MatrixXd W = krylov_basis(At.transpose(), ct);
+  Eigen::MatrixXd A1 = W.transpose() * At * W;
+  Eigen::VectorXd b1 = W.transpose() * bt, c1 = W.transpose() * ct;
+  Eigen::MatrixXd V = krylov_basis(A1, b1);
+  g.A = V.transpose() * A1 * V, g.b = V.transpose() * b1, g.c = V.transpose() * c1;
   g.removed_modes = static_cast<int>(A.rows() - g.A.rows());
   g.poles = eigenvalues_of(g.A);
   if (g.A.rows() == 0) {
@@ -122,7 +130,7 @@ TransferFunction transfer_function(const Eigen::MatrixXd& A, const Eigen::Matrix
     g.gain = g.d;
     g.zeros = eigenvalues_of(g.A - g.b * g.c.transpose() / g.d);
   } else {
-    zero_dynamics(g);
+    zero_dynamics(g, c1.norm());
   }
   return g;
 }
