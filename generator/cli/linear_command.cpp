@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/time_dependence.hpp"
 #include "cli/commands.hpp"
 #include "cli/linear_charts.hpp"
 #include "cli/linear_report.hpp"
@@ -74,6 +75,15 @@ int linear(const Options& o) {
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
   if (auto status = stability_refusal(loaded, o.model, false, false)) return *status;
+  // the linear analyses need A, B constant: a linearization frozen at t = 0 of equations that
+  // depend on time (a periodically forced Duffing oscillator) would be answered without a word
+  if (TimeDependence time = time_dependence(loaded.equations, loaded.problem.parameters); time.depends_on_time) {
+    std::cerr << fmt::format("eomgen: error: the equations depend explicitly on time ({}): their linearization is not a "
+                             "constant A, and one frozen at t = 0 says nothing about the motion\n  hint: `eomgen "
+                             "stability` judges periodic equations by their Floquet multipliers\n",
+                             time.period ? time.frequencies : time.not_periodic);
+    return exit_user_error;
+  }
   runtime::Equilibrium eq;
   if (auto status = equilibrium_of(loaded.problem, o.at, loaded.initial_state, eq)) return *status;
   const eomgen_model_abi& m = *loaded.compiled->abi();

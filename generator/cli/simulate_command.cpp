@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/conservation.hpp"
 #include "analyse/integrator_choice.hpp"
 #include "analyse/work_precision.hpp"
 #include "cli/commands.hpp"
@@ -137,7 +138,8 @@ int simulate_model(const SimulationOptions& options) {
   }
   bool unforced = !problem.input_signal &&
                   std::all_of(problem.inputs.begin(), problem.inputs.end(), [](double u) { return u == 0; });
-  bool conservative = m.conserves_energy_without_inputs && unforced;
+  // a model with dissipation whose coefficients are 0 at these values conserves T + V too
+  bool conservative = unforced && runtime::energy_conserved_at(problem, settings.t_start, x0);
   if (!output.finish()) {
     std::cerr << "eomgen: " << output.failure() << "\n";
     return exit_user_error;

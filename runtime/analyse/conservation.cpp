@@ -1,6 +1,8 @@
 #include "analyse/conservation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace eomgen::runtime {
 
@@ -16,6 +18,46 @@ std::vector<FirstIntegralDrift> first_integral_drift(const eomgen_model_abi& m, 
     drift.push_back(d);
   }
   return drift;
+}
+
+namespace {
+
+double energy(const Problem& p, double t, const std::vector<double>& x) {
+  return p.model->kinetic_energy(t, x.data(), p.parameters.data()) + p.model->potential_energy(t, x.data(), p.parameters.data());
+}
+
+// dE/dt along the flow at (t, x) and the sum of the sizes of its terms
+std::pair<double, double> energy_rate(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::vector<double> xdot(m.num_states), zero_inputs(m.num_inputs, 0.0);
+  m.rhs(t, x.data(), zero_inputs.empty() ? nullptr : zero_inputs.data(), p.parameters.data(), xdot.data());
+  double rate = 0, size = 0;
+  for (std::size_t i = 0; i < m.num_states; ++i) {
+    double h = 1e-6 * std::max(std::abs(x[i]), 1e-3);
+    std::vector<double> up = x, down = x;
+    up[i] += h, down[i] -= h;
+    double term = (energy(p, t, up) - energy(p, t, down)) / (2 * h) * xdot[i];
+    rate += term, size += std::abs(term);
+  }
+  double ht = 1e-6 * std::max(std::abs(t), 1e-3), explicit_rate = (energy(p, t + ht, x) - energy(p, t - ht, x)) / (2 * ht);
+  return {rate + explicit_rate, size + std::abs(explicit_rate)};
+}
+
+}  // namespace
+
+bool energy_conserved_at(const Problem& problem, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *problem.model;
+  if (m.conserves_energy_without_inputs) return true;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (int probe = 0; probe < 4; ++probe) {
+    std::vector<double> y = x;
+    if (probe > 0)  // random velocities of the size of the state's own, or 1
+      for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) y[i] = uniform(random) * std::max(1.0, std::abs(x[i]));
+    auto [rate, size] = energy_rate(problem, t, y);
+    if (!std::isfinite(rate) || std::abs(rate) > 1e-6 * size) return false;
+  }
+  return true;
 }
 
 }  // namespace eomgen::runtime

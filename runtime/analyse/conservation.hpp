@@ -20,4 +20,10 @@ struct FirstIntegralDrift {
 /// One entry per first integral of the model, in first_integral_names order, over every row of the run.
 std::vector<FirstIntegralDrift> first_integral_drift(const eomgen_model_abi& model, const RunSummary& run);
 
+/// Whether T + V is conserved at these parameter values with the inputs at zero, though the
+/// model file has dissipation or forces (a damping parameter set to 0): its rate along the flow,
+/// Σ ∂E/∂x_i x_i' + ∂E/∂t by central differences, vanishes against the size of its terms at x
+/// and at states with random velocities about it.
+bool energy_conserved_at(const Problem& problem, double t, const std::vector<double>& x);
+
 }  // namespace eomgen::runtime

@@ -151,6 +151,16 @@ force = ["cos(phi)*(cos(phi)*der(x) + sin(phi)*der(y))^2", "sin(phi)*(cos(phi)*d
   EXPECT_NEAR(std::stod(m[1]), 1.0, 1e-3);
 }
 
+// a model with a damping parameter conserves T + V when that parameter is 0
+TEST(EnergyDrift, ADampingParameterOfZeroConservesTheEnergy) {
+  Output undamped = eomgen("simulate '" + model_path("pendulum") + "' --set d=0 --t-end 1 --format json");
+  ASSERT_EQ(undamped.status, 0) << undamped.err;
+  EXPECT_NE(undamped.out.find("\"conserves_energy\": true"), std::string::npos) << undamped.out;
+  Output damped = eomgen("simulate '" + model_path("pendulum") + "' --set d=0.3 --t-end 1 --format json");
+  ASSERT_EQ(damped.status, 0) << damped.err;
+  EXPECT_NE(damped.out.find("\"conserves_energy\": false"), std::string::npos) << damped.out;
+}
+
 TEST(IntegratorFailure, ExplicitStepBeyondTheStabilityLimitIsNamedAsSuch) {
   std::string csv = temporary_directory() + "/unstable.csv";
   Output r = eomgen("simulate '" + model_path("stiff_chain") + "' --integrator rk4 --step 0.003 -o '" + csv + "'");

@@ -230,6 +230,14 @@ TEST(LinearCommand, AnOutputTheInputCannotMoveHasAZeroTransferFunction) {
   EXPECT_EQ(at(tf, "gain"), 0);
 }
 
+// the Mathieu equation's coefficients depend on time: no constant A to analyse
+TEST(LinearCommand, EquationsThatDependOnTimeAreRefused) {
+  CommandOutput r = run_eomgen("linear '" + model_path("mathieu") + "'");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.err.find("the equations depend explicitly on time"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Floquet"), std::string::npos) << r.err;
+}
+
 TEST(LinearCommand, AModeTheInputCannotReachIsNamed) {
   // two uncoupled oscillators, the force on the first only: the second mode is unreachable
   std::string dir = temporary_directory(), path = dir + "/two_oscillators.toml";
