@@ -32,6 +32,9 @@ int fmu(const std::string& model, const std::string& directory, const std::strin
                            kind == "me" ? "Model Exchange" : kind == "cs" ? "Co-Simulation with CVODE" : "Model Exchange and Co-Simulation with CVODE",
                            e.symbols.num_coordinates() + e.num_velocities(), e.symbols.parameters.size(), e.symbols.inputs.size(),
                            e.outputs.size());
+  if (e.outputs.empty())
+    std::cerr << "eomgen: warning: the model has no [outputs]: an importing tool sees its states as local variables "
+                 "only, and nothing to connect\n  hint: name what to measure in [outputs] (e.g. tip_x = \"l*sin(phi)\")\n";
   return exit_success;
 }
 

@@ -246,6 +246,13 @@ TEST(Fmu, DirectionalDerivativesMatchDifferencesOfTheDerivatives) {
   f.free_instance(c);
 }
 
+TEST(Fmu, AModelWithoutOutputsIsWarnedAbout) {
+  std::string directory = temporary_directory();
+  CommandOutput built = run_eomgen("fmu '" + model_path("damped_two_mass_oscillator") + "' --kind me -o '" + directory + "'");
+  ASSERT_EQ(built.status, 0) << built.err;
+  EXPECT_NE(built.err.find("warning: the model has no [outputs]"), std::string::npos) << built.err;
+}
+
 TEST(Fmu, TheDescriptionNamesWhatTheBinaryComputes) {
   Unpacked u = build_and_unpack("cart_pendulum", "cart_pendulum");
   const std::string& d = u.description;
