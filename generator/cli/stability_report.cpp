@@ -58,6 +58,7 @@ void print_stability_text(const eomgen_model_abi& m, const runtime::Equilibrium&
     std::cout << fmt::format("  {} zero eigenvalue(s) of conserved cyclic momenta left out of the verdict\n",
                              r.cyclic_zero_eigenvalues);
   std::cout << fmt::format("  verdict: {} (stability degree {:.6g})\n", r.verdict, r.stability_degree);
+  if (!r.disagreement.empty()) std::cout << "  undecided: " << r.disagreement << "\n";
   std::cout << "  characteristic polynomial: " << polynomial_text(r.characteristic_polynomial) << "\n";
   std::cout << (r.hurwitz_scale == 1.0 ? std::string("  Hurwitz determinants:")
                                         : fmt::format("  Hurwitz determinants (of the polynomial in λ/{:.6g}):", r.hurwitz_scale));
@@ -109,13 +110,13 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
       "\"D\": {}, \"G\": {}, \"K\": {}, \"N\": {}, \"eigenvalues\": [{}], \"verdict\": \"{}\", \"stability_degree\": {}, "
       "\"cyclic_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
       "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"vanishing_conditions\": {}, \"equilibrium_conditions\": {}, "
-      "\"critical_case\": {}{}}}\n",
+      "\"disagreement\": {}, \"critical_case\": {}{}}}\n",
       m.name, equilibrium, number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
       number(r.stability_degree), r.cyclic_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
       json_numbers(r.hurwitz), number(r.hurwitz_scale), r.hurwitz_ill_conditioned ? "true" : "false", json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
       json_strings(condition_texts), json_strings(conditions ? conditions->vanishing : std::vector<std::string>{}),
-      json_strings(equations),
+      json_strings(equations), r.disagreement.empty() ? "null" : "\"" + json_escape(r.disagreement) + "\"",
       critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": \"{}\", \"simulation\": \"{}\", "
                                       "\"nonlinear_verdict\": \"{}\"}}",
                                       json_escape(critical.energy), json_escape(critical.simulation), critical.nonlinear_verdict)

@@ -353,6 +353,25 @@ StabilityReport analyse_on_manifold(const Problem& problem, const std::vector<do
   return r;
 }
 
+void reconcile_with_theorems(StabilityReport& r) {
+  // the theorems' first words and what each says about the linearized system
+  static const std::vector<std::pair<std::string, std::string>> claims = {
+      {"Lagrange-Dirichlet:", "marginally_stable"},
+      {"Lyapunov-Chetaev:", "unstable"},
+      {"Thomson-Tait-Chetaev: complete damping added", "asymptotically_stable"},
+      {"Thomson-Tait-Chetaev: with complete damping", "unstable"},
+      {"Kelvin-Thomson-Tait: gyroscopic forces cannot stabilize", "unstable"},
+  };
+  for (const std::string& theorem : r.theorems)
+    for (const auto& [opening, says] : claims)
+      if (theorem.rfind(opening, 0) == 0 && says != r.verdict) {
+        r.disagreement = fmt::format("the eigenvalues say {} but {} says {}: the rounding of one or the other "
+                                     "decides it; neither is reported as the verdict", r.verdict, opening.substr(0, opening.find(':')), says);
+        r.verdict = "undecided";
+        return;
+      }
+}
+
 StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x) {
   const eomgen_model_abi& m = *problem.model;
   if (has_pseudo_velocities(m)) return analyse_first_order(problem, x);
@@ -366,6 +385,7 @@ StabilityReport analyse_stability(const Problem& problem, const std::vector<doub
   int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
   describe_spectrum(r, cyclic);
   r.theorems = theorems(r, cyclic > 0);
+  reconcile_with_theorems(r);
   if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
   return r;
 }

@@ -28,7 +28,10 @@ struct StabilityReport {
   Eigen::MatrixXd M, P, Q, D, G, K, N, B;  // second-order form, all coordinates
   Eigen::MatrixXd A, B_state;              // reduced first-order form
   std::vector<std::complex<double>> eigenvalues;  // sorted by decreasing real part
-  std::string verdict;                            // asymptotically_stable | marginally_stable | unstable
+  std::string verdict;                            // asymptotically_stable | marginally_stable | unstable | undecided
+  /// Why the verdict is `undecided`: the eigenvalues and a theorem whose hypotheses hold disagree
+  /// (see reconcile_with_theorems); empty otherwise.
+  std::string disagreement;
   double stability_degree = 0;                    // largest real part that counts for the verdict
   int cyclic_zero_eigenvalues = 0;                // zero eigenvalues of conserved cyclic momenta, left out
   double axis_tolerance = 0;                      // a real part within it is on the imaginary axis (system_scales.hpp)
@@ -44,6 +47,11 @@ struct StabilityReport {
   std::vector<std::string> theorems;
   std::string phase_plane;                        // two-state systems only
 };
+
+/// Holds the eigenvalue verdict against the theorems the force structure decided: a theorem
+/// whose hypotheses hold and that says otherwise makes the verdict `undecided`, with both named
+/// in `disagreement`, instead of one of them being printed beside the other as if both held.
+void reconcile_with_theorems(StabilityReport& report);
 
 /// Analyses the equilibrium x (from find_equilibrium or check_equilibrium).
 StabilityReport analyse_stability(const Problem& problem, const std::vector<double>& x);

@@ -88,6 +88,27 @@ TEST(ScaleFreeStability, UndampedChainStaysSmallInTheLongSimulationAtExtremeScal
   }
 }
 
+// a theorem whose hypotheses hold and the eigenvalues disagree: the verdict says so
+TEST(ScaleFreeStability, AVerdictThatContradictsATheoremIsUndecided) {
+  runtime::StabilityReport r;
+  r.verdict = "marginally_stable";
+  r.theorems = {"Thomson-Tait-Chetaev: complete damping added to a positive definite K makes the equilibrium "
+                "asymptotically stable, gyroscopic forces or not"};
+  runtime::reconcile_with_theorems(r);
+  EXPECT_EQ(r.verdict, "undecided");
+  EXPECT_NE(r.disagreement.find("the eigenvalues say marginally_stable but Thomson-Tait-Chetaev says asymptotically_stable"),
+            std::string::npos) << r.disagreement;
+  // agreeing ones stay as they are
+  r.verdict = "asymptotically_stable", r.disagreement.clear();
+  runtime::reconcile_with_theorems(r);
+  EXPECT_EQ(r.verdict, "asymptotically_stable");
+  EXPECT_TRUE(r.disagreement.empty());
+  r.theorems = {"Kelvin-Thomson-Tait: gyroscopic forces cannot stabilize an odd number (1) of unstable degrees of freedom: unstable"};
+  r.verdict = "marginally_stable";
+  runtime::reconcile_with_theorems(r);
+  EXPECT_EQ(r.verdict, "undecided");
+}
+
 TEST(ScaleFreeStability, PhasePlaneTypeDoesNotDependOnTheScale) {
   for (double s : scales())
     for (double u : scales()) {
