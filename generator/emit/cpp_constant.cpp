@@ -2,12 +2,12 @@
 
 #include <cfloat>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include <cln/real.h>
 #include <fmt/format.h>
 
+#include "symbolic/decimal_numbers.hpp"
 #include "symbolic/exact_double.hpp"
 
 namespace eomgen {
@@ -15,12 +15,6 @@ namespace eomgen {
 namespace {
 
 using GiNaC::numeric;
-
-std::string integer_text(const numeric& n) {
-  std::ostringstream s;
-  s << n;
-  return s.str();
-}
 
 const numeric& largest_exact_integer() {
   static const numeric two_53 = GiNaC::pow(numeric(2), numeric(53));
@@ -62,9 +56,9 @@ CppConstant cpp_constant(const numeric& value) {
   std::string sign = value.is_negative() ? "-" : "";
   int signed_precedence = sign.empty() ? 4 : 2;
   numeric a = as_rational(GiNaC::abs(value));
-  if (is_exact_integer_literal(a)) return {sign + "T(" + integer_text(a) + ")", signed_precedence};
+  if (is_exact_integer_literal(a)) return {sign + "T(" + number_text(a) + ")", signed_precedence};
   if (is_exact_integer_literal(a.numer()) && is_exact_integer_literal(a.denom()))
-    return {sign + "T(" + integer_text(a.numer()) + ")/T(" + integer_text(a.denom()) + ")", 2};
+    return {sign + "T(" + number_text(a.numer()) + ")/T(" + number_text(a.denom()) + ")", 2};
   static const numeric largest = exact_rational(DBL_MAX);
   if (a > largest)
     throw std::domain_error(fmt::format("the number {:.6g} is beyond the range of double", a.to_double()));

@@ -1,9 +1,9 @@
 #include "emit/cpp_expression.hpp"
 
 #include "emit/cpp_constant.hpp"
+#include "symbolic/decimal_numbers.hpp"
 
 #include <algorithm>
-#include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
@@ -25,12 +25,6 @@ struct Code {
   std::string text;
   int precedence;
 };
-
-std::string text_of(const GiNaC::numeric& n) {
-  std::ostringstream s;
-  s << n;
-  return s.str();
-}
 
 class CppPrinter {
  public:
@@ -129,8 +123,8 @@ class CppPrinter {
     if (coefficient != 1) {
       if (coefficient.is_rational() && coefficient.denom() != 1 && is_exact_integer_literal(coefficient.numer()) &&
           is_exact_integer_literal(coefficient.denom())) {
-        if (coefficient.numer() != 1) numerator.insert(numerator.begin(), "T(" + text_of(coefficient.numer()) + ")");
-        denominator.insert(denominator.begin(), "T(" + text_of(coefficient.denom()) + ")");
+        if (coefficient.numer() != 1) numerator.insert(numerator.begin(), "T(" + number_text(coefficient.numer()) + ")");
+        denominator.insert(denominator.begin(), "T(" + number_text(coefficient.denom()) + ")");
       } else {
         numerator.insert(numerator.begin(), number(coefficient).text);
       }

@@ -23,12 +23,6 @@ struct Printed {
 
 bool negative_text(const std::string& s) { return !s.empty() && s[0] == '-'; }
 
-std::string integer_text(const GiNaC::numeric& n) {
-  std::ostringstream s;
-  s << n;
-  return s.str();
-}
-
 class Printer {
  public:
   Printer(bool latex, std::function<std::string(const GiNaC::symbol&)> name)
@@ -65,13 +59,13 @@ class Printer {
   }
 
   Printed number(const GiNaC::numeric& n) const {
-    if (n.is_integer()) return {integer_text(n), n.is_negative() ? 2 : 4};
+    if (n.is_integer()) return {number_text(n), n.is_negative() ? 2 : 4};
     if (std::optional<std::string> d = exact_decimal_text(n)) return {decimal(*d), n.is_negative() ? 2 : 4};
     if (n.is_rational()) {
       std::string sign = n.is_negative() ? "-" : "";
       GiNaC::numeric a = GiNaC::abs(n);
-      if (latex_) return {sign + "\\frac{" + integer_text(a.numer()) + "}{" + integer_text(a.denom()) + "}", sign.empty() ? 4 : 2};
-      return {sign + integer_text(a.numer()) + "/" + integer_text(a.denom()), 2};
+      if (latex_) return {sign + "\\frac{" + number_text(a.numer()) + "}{" + number_text(a.denom()) + "}", sign.empty() ? 4 : 2};
+      return {sign + number_text(a.numer()) + "/" + number_text(a.denom()), 2};
     }
     if (n.is_real()) {
       double v = n.to_double();
@@ -155,8 +149,8 @@ class Printer {
     if (std::optional<std::string> d = exact_decimal_text(coefficient)) {
       numerator.insert(numerator.begin(), decimal(*d));
     } else if (coefficient.is_rational()) {
-      if (coefficient.numer() != 1) numerator.insert(numerator.begin(), integer_text(coefficient.numer()));
-      if (coefficient.denom() != 1) denominator.insert(denominator.begin(), integer_text(coefficient.denom()));
+      if (coefficient.numer() != 1) numerator.insert(numerator.begin(), number_text(coefficient.numer()));
+      if (coefficient.denom() != 1) denominator.insert(denominator.begin(), number_text(coefficient.denom()));
     } else {
       numerator.insert(numerator.begin(), number(coefficient).text);
     }

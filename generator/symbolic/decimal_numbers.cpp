@@ -9,12 +9,6 @@ namespace {
 
 using GiNaC::numeric;
 
-std::string integer_text(const numeric& n) {
-  std::ostringstream s;
-  s << n;
-  return s.str();
-}
-
 // the exponent k of p in n, and n / p^k
 int strip_factor(numeric& n, int p) {
   int k = 0;
@@ -30,6 +24,12 @@ bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0;
 
 }  // namespace
 
+std::string number_text(const numeric& value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
 std::optional<std::string> exact_decimal_text(const numeric& value) {
   if (!value.is_rational() || value.is_integer()) return std::nullopt;
   numeric rest = value.denom();
@@ -39,7 +39,7 @@ std::optional<std::string> exact_decimal_text(const numeric& value) {
   if (rest != 1 || fives == 0 || value.denom() <= long_denominator) return std::nullopt;
   int places = std::max(twos, fives);
   numeric scaled = GiNaC::abs(value) * GiNaC::pow(numeric(10), numeric(places));
-  std::string digits = integer_text(scaled), sign = value.is_negative() ? "-" : "";
+  std::string digits = number_text(scaled), sign = value.is_negative() ? "-" : "";
   int length = static_cast<int>(digits.size()), leading_exponent = length - 1 - places;
   if (leading_exponent < -4) {
     std::string mantissa = digits.substr(0, 1) + (length > 1 ? "." + digits.substr(1) : "");
@@ -91,7 +91,7 @@ std::string decimals_as_fractions(const std::string& text) {
     }
     numeric value(("0" + whole + fraction).c_str());
     value *= GiNaC::pow(numeric(10), numeric(exponent - static_cast<long>(fraction.size())));
-    out += "(" + integer_text(value) + ")";
+    out += "(" + number_text(value) + ")";
   }
   return out;
 }

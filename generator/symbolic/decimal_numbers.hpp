@@ -13,6 +13,9 @@
 
 namespace eomgen {
 
+/// A number in GiNaC's own text, every digit: 3127439543999999821863399999999997 or p/q.
+std::string number_text(const GiNaC::numeric& value);
+
 /// The exact decimal of a rational whose denominator is 2^a 5^b with b >= 1 and over a
 /// million (a number that came from a long decimal: 27425820240206541/10^16 →
 /// "2.7425820240206541"), in scientific notation below 1e-4 ("1.5e-20"); nothing for any
