@@ -11,8 +11,11 @@ Vector3 angular_velocity_of_sequence(const std::vector<ElementaryRotation>& sequ
   for (std::size_t i = sequence.size(); i-- > 0;) {
     const ElementaryRotation& r = sequence[i];
     ex rate = time_derivative(r.angle, symbols);
-    for (int a = 0; a < 3; ++a) omega[a] += Q(a, r.axis) * rate;
-    Q = Q.mul(elementary_rotation(r.axis, r.angle).transpose());
+    Vector3 e = rotation_axis(r);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b)
+        if (!e[b].is_zero()) omega[a] += Q(a, b) * e[b] * rate;
+    Q = Q.mul(rotation_matrix(r).transpose());
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b) Q(a, b) = Q(a, b).expand();
   }

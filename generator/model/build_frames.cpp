@@ -19,6 +19,7 @@ void ModelBuilder::read_frames() {
     if (!parent) continue;
     Rotation relative = rotation(f.rotation);
     Vector3 origin = f.origin.empty() ? Vector3{0, 0, 0} : vector(f.origin, allow_configuration, "a position");
+    if (f.joint) move_by_joint(*f.joint, relative, origin);
     if (frames_.count(f.name)) {
       d_.error(f.where, f.key + ".name", fmt::format("two frames are named '{}'", f.name), "give each frame its own name");
       continue;

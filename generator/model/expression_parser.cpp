@@ -34,7 +34,7 @@ class Level {
 const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
                                                   "atan", "atan2", "sinh", "cosh", "tanh",
                                                   "exp",  "log",  "sqrt", "abs",  "der"};
-const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "euler313", "cardan123"};
+const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "rot_axis", "euler313", "cardan123"};
 
 ex apply_function(const std::string& name, const std::vector<ex>& a) {
   if (name == "sin") return GiNaC::sin(a[0]);
@@ -83,8 +83,12 @@ class Parser {
       if (known == rotation_names.end())
         fail(start, fmt::format("unknown rotation function '{}'", name),
              suggest(name, rotation_names, "rotations"));
-      std::vector<ex> args = arguments(start, name, name.rfind("rot_", 0) == 0 ? 1 : 3);
-      if (name == "rot_x") sequence.push_back({0, args[0]});
+      std::vector<ex> args = arguments(start, name, name == "rot_axis" ? 4 : name.rfind("rot_", 0) == 0 ? 1 : 3);
+      if (name == "rot_axis") {
+        if ((args[0] * args[0] + args[1] * args[1] + args[2] * args[2]).is_zero())
+          fail(start, "rot_axis needs a direction that is not zero", "write rot_axis(x, y, z, angle), e.g. rot_axis(1, 1, 0, q)");
+        sequence.push_back(turn_about({args[0], args[1], args[2]}, args[3]));
+      } else if (name == "rot_x") sequence.push_back({0, args[0]});
       else if (name == "rot_y") sequence.push_back({1, args[0]});
       else if (name == "rot_z") sequence.push_back({2, args[0]});
       else if (name == "euler313") sequence.insert(sequence.end(), {{2, args[0]}, {0, args[1]}, {2, args[2]}});
@@ -388,6 +392,40 @@ std::optional<GiNaC::ex> parse_expression(const ExpressionText& text, const Symb
     }
     return std::nullopt;
   }
+}
+
+namespace {
+
+// the coordinate axis (0, 1, 2) a direction lies along and its sign, or -1
+std::pair<int, int> coordinate_axis(const std::array<ex, 3>& direction) {
+  int nonzero = 0, along = 0;
+  for (int a = 0; a < 3; ++a)
+    if (!direction[std::size_t(a)].is_zero()) ++nonzero, along = a;
+  const ex& d = direction[std::size_t(along)];
+  if (nonzero != 1 || !GiNaC::is_a<GiNaC::numeric>(d)) return {-1, 0};
+  return {along, GiNaC::ex_to<GiNaC::numeric>(d).is_positive() ? 1 : -1};
+}
+
+}  // namespace
+
+std::array<ex, 3> unit_direction(const std::array<ex, 3>& direction) {
+  std::array<ex, 3> e{0, 0, 0};
+  auto [along, sign] = coordinate_axis(direction);
+  if (along >= 0) {
+    e[std::size_t(along)] = sign;
+    return e;
+  }
+  ex length = GiNaC::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  for (std::size_t a = 0; a < 3; ++a) e[a] = direction[a] / length;
+  return e;
+}
+
+ElementaryRotation turn_about(const std::array<ex, 3>& direction, const ex& angle) {
+  auto [along, sign] = coordinate_axis(direction);
+  if (along >= 0) return {along, sign * angle};
+  ElementaryRotation r{ElementaryRotation::about_direction, angle};
+  r.direction = unit_direction(direction);
+  return r;
 }
 
 std::optional<std::vector<ElementaryRotation>> parse_rotation_product(

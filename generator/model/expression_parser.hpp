@@ -4,6 +4,7 @@
 /// decimals become exact rationals, and der(q) is checked where it is read.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,11 +35,22 @@ struct ExpressionRules {
   const std::vector<std::string>* defined_later = nullptr;
 };
 
-/// One elementary rotation rot_axis(angle) of a product of rotations.
+/// One factor of a product of rotations: rot_x, rot_y or rot_z of an angle, a turn by an angle
+/// about a unit `direction` (Rodrigues), or a constant rotation matrix (a frame's placement
+/// given as a matrix, followed by a joint).
 struct ElementaryRotation {
-  int axis;  // 0 = x, 1 = y, 2 = z
+  static constexpr int about_direction = 3, constant_matrix = 4;
+  int axis;  // 0 = x, 1 = y, 2 = z, about_direction or constant_matrix
   GiNaC::ex angle;
+  std::array<GiNaC::ex, 3> direction{0, 0, 0};  // about_direction: a unit vector
+  GiNaC::matrix constant{3, 3};                  // constant_matrix: the rotation itself
 };
+
+/// The direction (x, y, z) divided by its length (exact: ±1 when along a coordinate axis).
+/// The turn by `angle` about the direction (x, y, z), normalized; a direction along a
+/// coordinate axis (either sign) becomes rot_x, rot_y or rot_z. The direction must not be zero.
+std::array<GiNaC::ex, 3> unit_direction(const std::array<GiNaC::ex, 3>& direction);
+ElementaryRotation turn_about(const std::array<GiNaC::ex, 3>& direction, const GiNaC::ex& angle);
 
 /// Parses a scalar expression; on a mistake reports it and returns nothing.
 std::optional<GiNaC::ex> parse_expression(const ExpressionText& text, const Symbols& symbols,

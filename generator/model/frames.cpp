@@ -13,6 +13,26 @@ GiNaC::matrix elementary_rotation(int axis, const ex& a) {
   }
 }
 
+GiNaC::matrix rotation_matrix(const ElementaryRotation& r) {
+  if (r.axis == ElementaryRotation::constant_matrix) return r.constant;
+  if (r.axis != ElementaryRotation::about_direction) return elementary_rotation(r.axis, r.angle);
+  ex c = GiNaC::cos(r.angle), s = GiNaC::sin(r.angle);
+  const auto& e = r.direction;
+  GiNaC::matrix R(3, 3);
+  const ex cross[3][3] = {{0, -e[2], e[1]}, {e[2], 0, -e[0]}, {-e[1], e[0], 0}};
+  for (unsigned a = 0; a < 3; ++a)
+    for (unsigned b = 0; b < 3; ++b) R(a, b) = (a == b ? c : ex(0)) + s * cross[a][b] + (1 - c) * e[a] * e[b];
+  return R;
+}
+
+Vector3 rotation_axis(const ElementaryRotation& r) {
+  if (r.axis == ElementaryRotation::constant_matrix) return {0, 0, 0};
+  if (r.axis == ElementaryRotation::about_direction) return r.direction;
+  Vector3 e{0, 0, 0};
+  e[std::size_t(r.axis)] = 1;
+  return e;
+}
+
 PlacedFrame inertial_frame() {
   PlacedFrame f;
   f.rotation.matrix = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));

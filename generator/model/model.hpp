@@ -151,4 +151,11 @@ void build_scenes_and_variants(const ModelFile& file, Model& model, Diagnostics&
 /// Elementary rotation matrices of the book: rot_x, rot_y, rot_z (axis 0, 1, 2).
 GiNaC::matrix elementary_rotation(int axis, const GiNaC::ex& angle);
 
+/// The matrix of one factor of a product: elementary, Rodrigues' formula
+/// R = cos φ·I + sin φ·[e]× + (1 − cos φ)·e eᵀ for a turn about the unit vector e, or the constant.
+GiNaC::matrix rotation_matrix(const ElementaryRotation& r);
+
+/// The factor's axis in its own frame (ω_rel = axis·φ'); zero for a constant rotation.
+Vector3 rotation_axis(const ElementaryRotation& r);
+
 }  // namespace eomgen

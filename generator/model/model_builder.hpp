@@ -53,6 +53,10 @@ class ModelBuilder {
   // the frame named `name` (the inertial frame when empty), or nothing after an error
   const PlacedFrame* frame(const std::string& name, const SourceLocation& where, const std::string& key);
   void read_points();
+  // a frame's joint moves its placement (build_joints.cpp)
+  void move_by_joint(const JointEntry& joint, Rotation& relative, Vector3& origin);
+  std::optional<GiNaC::ex> joint_coordinate(const JointEntry& joint);
+  std::optional<Vector3> joint_axis(const JointEntry& joint);
 
   // Particles and rigid bodies (build_bodies.cpp)
   GiNaC::ex mass(const ExpressionText& text);

@@ -34,11 +34,12 @@ void check_finite(const ex& e, const std::string& where) {
 }  // namespace
 
 void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
+  auto turn = [&](ElementaryRotation& r) { apply(r.angle, s), apply(r.direction, s), apply(r.constant, s); };
   try {
     for (Particle& p : m.particles) apply(p.mass, s), apply(p.position, s);
     for (RigidBody& b : m.rigid_bodies) {
       apply(b.mass, s), apply(b.center, s), apply(b.inertia, s), apply(b.rotation.matrix, s);
-      for (ElementaryRotation& r : b.rotation.sequence) apply(r.angle, s);
+      for (ElementaryRotation& r : b.rotation.sequence) turn(r);
     }
     apply(m.gravity, s), apply(m.kinetic, s), apply(m.potential, s), apply(m.dissipation, s);
     for (ex& q : m.generalized_force) apply(q, s);
@@ -49,13 +50,13 @@ void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
     for (NamedSymbolic& o : m.outputs) apply(o.expression, s);
     auto place = [&](FramePlacement& p) {
       apply(p.local, s), apply(p.relative, s);
-      for (ElementaryRotation& r : p.sequence) apply(r.angle, s);
+      for (ElementaryRotation& r : p.sequence) turn(r);
     };
     for (Particle& p : m.particles) place(p.placement);
     for (RigidBody& b : m.rigid_bodies) place(b.placement);
     for (FrameLink& f : m.frame_links) {
       apply(f.relative_rotation, s), apply(f.relative_origin, s), apply(f.rotation, s), apply(f.origin, s);
-      for (ElementaryRotation& r : f.sequence) apply(r.angle, s);
+      for (ElementaryRotation& r : f.sequence) turn(r);
     }
     for (Intermediate& i : m.intermediates) apply(i.definition, s);
   } catch (const std::exception& why) {

@@ -72,12 +72,28 @@ struct RigidBodyEntry {
 };
 
 /// [[frames]]: a frame placed in its parent by a rotation and an origin in parent coordinates.
+/// A frame's joint: how it moves in its parent beyond its placement (see FrameEntry).
+struct JointEntry {
+  std::string type;  // revolute, prismatic or fixed
+  SourceLocation type_where;
+  std::vector<ExpressionText> axis;    // in the frame's own coordinates at the joint's zero
+  std::vector<ExpressionText> anchor;  // revolute: a point of the axis, frame coordinates; empty: the origin
+  std::string coordinate;              // the coordinate that moves it (not for fixed)
+  SourceLocation coordinate_where;
+  SourceLocation where;
+  std::string key;
+};
+
+/// [[frames]]: a frame placed in its parent by `rotation` and `origin`, then moved by its
+/// joint, if it has one: turned about the joint's axis through the anchor, or slid along it,
+/// by the coordinate (MJCF's hinge and slide: axis and anchor in the body's own frame).
 struct FrameEntry {
   std::string name;
   std::string parent;  // empty: the inertial frame
   SourceLocation parent_where;
   std::optional<RotationEntry> rotation;  // identity when absent
   std::vector<ExpressionText> origin;     // empty: the parent's origin
+  std::optional<JointEntry> joint;
   SourceLocation where;
   std::string key;
 };

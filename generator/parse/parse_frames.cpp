@@ -31,15 +31,59 @@ void read_frame_name(Reader& r, const toml::table& t, const std::string& key, st
   if (r.string(*n, key + ".frame", name) && name == "inertial") name.clear();
 }
 
-// [[frames]]: name, parent, rotation, origin
+namespace {
+
+// joint = { type = "revolute", axis = [...], anchor = [...], coordinate = "q" }
+std::optional<JointEntry> read_joint(Reader& r, const toml::node& node, const std::string& key) {
+  const toml::table* t = r.table(node, key, "type, axis, anchor, coordinate");
+  if (!t) return std::nullopt;
+  r.check_keys(*t, key, {"type", "axis", "anchor", "coordinate"});
+  JointEntry j;
+  j.key = key;
+  j.where = r.at(node);
+  const char* types = "write type = \"revolute\", \"prismatic\" or \"fixed\"";
+  if (const toml::node* n = t->get("type")) {
+    j.type_where = r.at(*n);
+    j.type_where.column += 1;
+    if (r.string(*n, key + ".type", j.type) && j.type != "revolute" && j.type != "prismatic" && j.type != "fixed")
+      r.error(j.type_where, key + ".type", fmt::format("'{}' is not a joint type", j.type), types);
+  } else {
+    r.error(j.where, key, "the joint has no type", types);
+  }
+  bool moves = j.type != "fixed";
+  if (const toml::node* n = t->get("axis")) r.vector(*n, key + ".axis", 3, j.axis);
+  else if (moves && !j.type.empty())
+    r.error(j.where, key, fmt::format("a {} joint needs an axis", j.type), "add axis = [x, y, z] in the frame's coordinates");
+  if (const toml::node* n = t->get("anchor")) {
+    r.vector(*n, key + ".anchor", 3, j.anchor);
+    if (j.type == "prismatic" || j.type == "fixed")
+      r.error(r.at(*n), key + ".anchor", fmt::format("a {} joint has no anchor", j.type),
+              "an anchor is the point a revolute joint turns about; leave it out");
+  }
+  if (const toml::node* n = t->get("coordinate")) {
+    j.coordinate_where = r.at(*n);
+    j.coordinate_where.column += 1;
+    r.string(*n, key + ".coordinate", j.coordinate);
+    if (!moves)
+      r.error(j.coordinate_where, key + ".coordinate", "a fixed joint has no coordinate", "leave it out");
+  } else if (moves && !j.type.empty()) {
+    r.error(j.where, key, fmt::format("a {} joint needs the coordinate that moves it", j.type),
+            "add coordinate = \"q\", a name from [coordinates]");
+  }
+  return j;
+}
+
+}  // namespace
+
+// [[frames]]: name, parent, rotation, origin, joint
 void read_frames(Reader& r, const toml::node& node, ModelFile& m) {
   const toml::array* a = r.array(node, "frames", "[[frames]] tables");
   if (!a) return;
   for (std::size_t i = 0; i < a->size(); ++i) {
     std::string key = fmt::format("frames[{}]", i);
-    const toml::table* t = r.table((*a)[i], key, "name, parent, rotation, origin");
+    const toml::table* t = r.table((*a)[i], key, "name, parent, rotation, origin, joint");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "parent", "rotation", "origin"});
+    r.check_keys(*t, key, {"name", "parent", "rotation", "origin", "joint"});
     FrameEntry f;
     f.key = key;
     f.where = r.at((*a)[i]);
@@ -52,6 +96,7 @@ void read_frames(Reader& r, const toml::node& node, ModelFile& m) {
     }
     if (const toml::node* n = t->get("rotation")) f.rotation = read_rotation(r, *n, key + ".rotation");
     if (const toml::node* n = t->get("origin")) r.vector(*n, key + ".origin", 3, f.origin);
+    if (const toml::node* n = t->get("joint")) f.joint = read_joint(r, *n, key + ".joint");
     m.frames.push_back(f);
   }
 }

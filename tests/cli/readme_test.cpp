@@ -28,6 +28,7 @@ TEST(Readme, WhatTheModelsUseIsNotStillToCome) {
       {"points", "[[points]]", {"points"}},
       {"rolling contact", "rolling", {"rolling"}},
       {"recursive kinematics", "kinematics = \"recursive\"", {"recursive", "O(n)"}},
+      {"joints about any axis", "joint    = { type = \"revolute\"", {"any axis"}},
   };
   std::string later = still_to_come();
   for (const auto& [feature, marker, words] : features) {

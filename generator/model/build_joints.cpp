@@ -1,0 +1,84 @@
+// A frame's joint (FrameEntry::joint): MJCF's hinge and slide. The frame is first placed by
+// its rotation R_p and origin o_p; a revolute joint then turns it by q about the unit axis e
+// through the anchor a (both in the frame's own coordinates), a prismatic joint slides it
+// by q along e:
+//   revolute:  R = R_p·R_e(q),  o = o_p + R_p·(a − R_e(q)·a)
+//   prismatic: R = R_p,         o = o_p + R_p·e·q
+// so that the anchor stays where it is and q = 0 is the placement.
+#include <fmt/format.h>
+
+#include "model/model_builder.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+bool moves_with(const GiNaC::matrix& R, const Symbols& s) {
+  for (unsigned i = 0; i < 3; ++i)
+    for (unsigned j = 0; j < 3; ++j) {
+      for (const GiNaC::realsymbol& q : s.coordinates)
+        if (R(i, j).has(q)) return true;
+      if (R(i, j).has(s.time)) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+std::optional<ex> ModelBuilder::joint_coordinate(const JointEntry& j) {
+  const Symbols& s = m_.symbols;
+  for (std::size_t i = 0; i < s.coordinate_names.size(); ++i)
+    if (s.coordinate_names[i] == j.coordinate) return ex(s.coordinates[i]);
+  d_.error(j.coordinate_where, j.key + ".coordinate", fmt::format("'{}' is not a coordinate", j.coordinate),
+           s.coordinate_names.empty() ? "declare it under [coordinates]" : suggest(j.coordinate, s.coordinate_names, "coordinates"));
+  return std::nullopt;
+}
+
+std::optional<Vector3> ModelBuilder::joint_axis(const JointEntry& j) {
+  Vector3 e = vector(j.axis, allow_parameters, "a joint axis");
+  auto length = constant_value((e[0] * e[0] + e[1] * e[1] + e[2] * e[2]).subs(m_.symbols.default_parameter_values()),
+                               m_.symbols);
+  if (!length || *length <= 0) {
+    d_.error(j.axis[0].where, j.key + ".axis", "the joint's axis is zero", "give its direction, e.g. [0, 0, 1]");
+    return std::nullopt;
+  }
+  return e;
+}
+
+void ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector3& origin) {
+  if (j.type.empty() || j.type == "fixed" || j.axis.size() != 3) return;  // fixed, or reported by the parser
+  auto q = joint_coordinate(j);
+  auto axis = joint_axis(j);
+  if (!q || !axis) return;
+  ElementaryRotation turn = turn_about(*axis, *q);
+  if (j.type == "prismatic") {
+    Vector3 e = unit_direction(*axis);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b) origin[a] += relative.matrix(a, b) * e[b] * *q;
+    return;
+  }
+  GiNaC::matrix R = rotation_matrix(turn);
+  if (!j.anchor.empty()) {
+    Vector3 anchor = vector(j.anchor, allow_parameters, "a joint anchor");
+    for (unsigned a = 0; a < 3; ++a) {
+      ex moved = anchor[a];
+      for (unsigned b = 0; b < 3; ++b) moved -= R(a, b) * anchor[b];
+      for (unsigned c = 0; c < 3; ++c) origin[c] += relative.matrix(c, a) * moved;
+    }
+  }
+  if (!is_product(relative)) {
+    if (moves_with(relative.matrix, m_.symbols)) {
+      relative.matrix = relative.matrix.mul(R);  // a moving matrix: the angular velocity comes from the whole
+      return;
+    }
+    ElementaryRotation placement{ElementaryRotation::constant_matrix, 0};
+    placement.constant = relative.matrix;
+    relative.sequence = {placement};
+  }
+  relative.sequence.push_back(turn);
+  relative.matrix = relative.matrix.mul(R);
+}
+
+}  // namespace eomgen
