@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Rigid-body trees against MuJoCo, in one process per robot: the generated rhs and
+jacobian_state against mj_forward on the same robot as MJCF (tests/crosscheck/mjcf/,
+where tests/crosscheck/mujoco_oracle_test.cpp checks that both give the same qacc to
+1e-12), with interleaved repetitions and medians (rhs_benchmark.cpp). Also the header's
+size, the time `eomgen generate` takes, and g++ -O2 of rhs and jacobian_state.
+
+Robots (written here): models/measured_arm.toml (3 hinges, the Panda's first links'
+layout, measured inertias) and models/oblique_tree.toml (5 joints, branched, oblique
+axes through offset anchors, a slide, a fixed frame). Prints a Markdown table.
+
+Usage: tree_benchmark.py EOMGEN [--quick]   (exit 77 without a C++ compiler or MuJoCo)
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+ROBOTS = ("measured_arm", "oblique_tree")
+
+
+def run(command):
+    r = subprocess.run(command, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)}:\n{r.stderr[-3000:]}")
+    return r
+
+
+def measure(eomgen, name, work):
+    start = time.perf_counter()
+    run([eomgen, "generate", os.path.join(ROOT, "models", f"{name}.toml"), "-o", work])
+    generate = time.perf_counter() - start
+    binary = os.path.join(work, f"tree_{name}")
+    start = time.perf_counter()
+    run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", "-I", work, "-I", HERE, "-I", "/usr/include/eigen3",
+         os.path.join(HERE, "rhs_benchmark.cpp"), "-o", binary, "-lmujoco"])
+    build = time.perf_counter() - start
+    result = json.loads(run([binary, os.path.join(ROOT, "tests", "crosscheck", "mjcf", f"{name}.xml")]).stdout)
+    result.update(generate=generate, build=build, header_kb=os.path.getsize(os.path.join(work, f"{name}.hpp")) / 1000)
+    return result
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__)
+        return 2
+    if not shutil.which("c++") or not os.path.exists("/usr/include/mujoco/mujoco.h"):
+        print("no C++ compiler or no MuJoCo (apt-get install libmujoco-dev): skipped")
+        return 77
+    robots = ROBOTS[:1] if "--quick" in sys.argv else ROBOTS
+    print("| robot | eomgen rhs | MuJoCo mj_forward | MuJoCo / eomgen | jacobian_state | jacobian_state / rhs "
+          "| central differences / jacobian_state | header | generate | g++ -O2 (with the benchmark) |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    with tempfile.TemporaryDirectory() as work:
+        for name in robots:
+            r = measure(sys.argv[1], name, work)
+            ours, theirs, jac, fd = r["eomgen_ns"], r["mujoco_ns"], r["jacobian_ns"], r["finite_difference_ns"]
+            print(f"| {name} | {ours / 1000:.2f} µs | {theirs / 1000:.2f} µs | {theirs / ours:.2f}x | {jac / 1000:.2f} µs "
+                  f"| {jac / ours:.1f} | {fd / jac:.1f}x | {r['header_kb']:.0f} KB | {r['generate']:.2f} s | {r['build']:.1f} s |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
