@@ -123,7 +123,9 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
     f = tree_terms->inertia_forces;
   } else {
     if (mech.composite_mass_matrix) M = *mech.composite_mass_matrix;
-    for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, !mech.composite_mass_matrix);
+    if (mech.tree_bias_forces) f = *mech.tree_bias_forces;
+    else
+      for (const BodyKinematics& b : mech.bodies) add_body(b, M, f, !mech.composite_mass_matrix);
     add_kinetic_energy(mech.extra_kinetic_energy, s, M, f);
   }
   // a tree's terms are simplified with its subtree masses as symbols, then collected in the masses

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "kinematics/recursive_kinematics.hpp"
+#include "spatial/joint_tree_dynamics.hpp"
 #include "kinematics/vector3.hpp"
 #include "symbolic/gradient.hpp"
 
@@ -128,7 +129,17 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
   std::size_t n = s.coordinates.size();
   for (std::size_t k = 0; k < n; ++k) m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   const std::vector<GiNaC::symbol>& ddq = m.acceleration_symbols;
-  std::vector<ex> tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);
+  std::vector<ex> tau;
+  if (!why_not_a_joint_tree(model)) {
+    // a tree of joints: M, the bias forces and τ by the recursions in the frames' own coordinates
+    JointTreeDynamics tree = joint_tree_dynamics(model, ddq, m.intermediates, m.acceleration_intermediates);
+    tau = tree.inverse_dynamics;
+    m.composite_mass_matrix = tree.mass_matrix;
+    m.tree_bias_forces = tree.bias_forces;
+    m.potential_gradient = frames.gradient(model.potential);
+  } else {
+    tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);
+  }
   std::vector<GiNaC::exvector> terms(n);
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     if (in_frame[i]) continue;
@@ -221,7 +232,8 @@ Mechanics compute_mechanics(const Model& model) {
   for (ex& q : m.generalized_force) q = tidy(q, m.motion);
   if (frames) m.potential_gradient = frames->gradient(m.potential_energy);
   if (frames) add_inverse_dynamics(m, model, *frames, in_frame);
-  if (frames) m.composite_mass_matrix = frames->composite_mass_matrix(m.intermediates);
+  for (const Intermediate& i : m.intermediates) m.motion.symbols.insert(i.symbol);  // a joint tree's, too
+  if (frames && !m.composite_mass_matrix) m.composite_mass_matrix = frames->composite_mass_matrix(m.intermediates);
   else
     for (const auto& q : s.coordinates) m.potential_gradient.push_back(m.potential_energy.diff(q));
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t

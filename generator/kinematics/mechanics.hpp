@@ -53,6 +53,10 @@ struct Mechanics {
   std::vector<GiNaC::ex> inverse_dynamics;
   /// Recursive kinematics: the bodies' M by the composite-body recursion, when it applies.
   std::optional<GiNaC::matrix> composite_mass_matrix;
+  /// A tree of frames joined by joints (spatial/joint_tree_dynamics.hpp): the bodies' part of f,
+  /// −τ(q, q̇, q̈ = 0) with gravity, from the Newton–Euler recursion in the frames' coordinates;
+  /// potential_gradient is then that of [energy] potential alone.
+  std::optional<std::vector<GiNaC::ex>> tree_bias_forces;
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -19,7 +19,20 @@ void ModelBuilder::read_frames() {
     if (!parent) continue;
     Rotation relative = rotation(f.rotation);
     Vector3 origin = f.origin.empty() ? Vector3{0, 0, 0} : vector(f.origin, allow_configuration, "a position");
-    if (f.joint) move_by_joint(*f.joint, relative, origin);
+    std::optional<FrameLink::Joint> joint;
+    if (is_constant_placement(relative, origin)) {
+      joint = FrameLink::Joint{};
+      joint->placement = relative.matrix;
+      joint->placement_origin = origin;
+    }
+    if (f.joint) {
+      auto moved = move_by_joint(*f.joint, relative, origin);
+      if (joint && moved) {
+        moved->placement = joint->placement;
+        moved->placement_origin = joint->placement_origin;
+      }
+      joint = joint ? moved : std::nullopt;
+    }
     if (frames_.count(f.name)) {
       d_.error(f.where, f.key + ".name", fmt::format("two frames are named '{}'", f.name), "give each frame its own name");
       continue;
@@ -34,6 +47,7 @@ void ModelBuilder::read_frames() {
                "coordinate, or use kinematics = \"expanded\"");
     frame_index_[f.name] = int(m_.frame_links.size());
     frames_.emplace(f.name, place_recursive_frame(m_, f.name, link_of(f.parent), relative, origin));
+    m_.frame_links.back().joint = joint;
   }
 }
 

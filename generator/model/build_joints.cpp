@@ -47,21 +47,27 @@ std::optional<Vector3> ModelBuilder::joint_axis(const JointEntry& j) {
   return e;
 }
 
-void ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector3& origin) {
-  if (j.type.empty() || j.type == "fixed" || j.axis.size() != 3) return;  // fixed, or reported by the parser
+std::optional<FrameLink::Joint> ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector3& origin) {
+  FrameLink::Joint joint;
+  if (j.type == "fixed") return joint;
+  if (j.type.empty() || j.axis.size() != 3) return std::nullopt;  // reported by the parser
   auto q = joint_coordinate(j);
   auto axis = joint_axis(j);
-  if (!q || !axis) return;
+  if (!q || !axis) return std::nullopt;
+  for (std::size_t i = 0; i < m_.symbols.coordinates.size(); ++i)
+    if (q->is_equal(m_.symbols.coordinates[i])) joint.coordinate = int(i);
+  joint.axis = unit_direction(*axis);
   ElementaryRotation turn = turn_about(*axis, *q);
   if (j.type == "prismatic") {
-    Vector3 e = unit_direction(*axis);
+    joint.prismatic = true;
     for (unsigned a = 0; a < 3; ++a)
-      for (unsigned b = 0; b < 3; ++b) origin[a] += relative.matrix(a, b) * e[b] * *q;
-    return;
+      for (unsigned b = 0; b < 3; ++b) origin[a] += relative.matrix(a, b) * joint.axis[b] * *q;
+    return joint;
   }
   GiNaC::matrix R = rotation_matrix(turn);
   if (!j.anchor.empty()) {
     Vector3 anchor = vector(j.anchor, allow_parameters, "a joint anchor");
+    joint.anchor = anchor;
     for (unsigned a = 0; a < 3; ++a) {
       ex moved = anchor[a];
       for (unsigned b = 0; b < 3; ++b) moved -= R(a, b) * anchor[b];
@@ -71,7 +77,7 @@ void ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector
   if (!is_product(relative)) {
     if (moves_with(relative.matrix, m_.symbols)) {
       relative.matrix = relative.matrix.mul(R);  // a moving matrix: the angular velocity comes from the whole
-      return;
+      return joint;
     }
     ElementaryRotation placement{ElementaryRotation::constant_matrix, 0};
     placement.constant = relative.matrix;
@@ -79,6 +85,17 @@ void ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector
   }
   relative.sequence.push_back(turn);
   relative.matrix = relative.matrix.mul(R);
+  return joint;
+}
+
+bool ModelBuilder::is_constant_placement(const Rotation& rotation, const Vector3& origin) const {
+  if (moves_with(rotation.matrix, m_.symbols)) return false;
+  for (const ex& x : origin) {
+    if (x.has(m_.symbols.time)) return false;
+    for (const GiNaC::realsymbol& q : m_.symbols.coordinates)
+      if (x.has(q)) return false;
+  }
+  return true;
 }
 
 }  // namespace eomgen

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,18 @@ struct Intermediate {
 /// rotation and origin relative to the parent (in q), and the symbols (or constants) of its
 /// rotation to inertial components and its inertial origin.
 struct FrameLink {
+  /// How the frame moves in its parent when it is placed by constants and moved by one joint
+  /// (FrameEntry::joint; a frame placed by constants alone is fixed): what the spatial
+  /// algorithms over the tree (generator/spatial/) take.
+  struct Joint {
+    int coordinate = -1;              // index into the coordinates; -1: fixed
+    bool prismatic = false;
+    Vector3 axis{0, 0, 0};            // e, a unit vector in the frame's coordinates
+    Vector3 anchor{0, 0, 0};          // a point of a revolute joint's axis, frame coordinates
+    GiNaC::matrix placement{3, 3};    // R_p: the frame at the joint's zero, parent coordinates
+    Vector3 placement_origin{0, 0, 0};
+  };
+  std::optional<Joint> joint;
   std::string name;
   int parent = -1;  // index into Model::frame_links; -1: the inertial frame
   std::vector<ElementaryRotation> sequence;  // the relative rotation as a product, when it is one

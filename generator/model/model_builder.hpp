@@ -54,7 +54,9 @@ class ModelBuilder {
   const PlacedFrame* frame(const std::string& name, const SourceLocation& where, const std::string& key);
   void read_points();
   // a frame's joint moves its placement (build_joints.cpp)
-  void move_by_joint(const JointEntry& joint, Rotation& relative, Vector3& origin);
+  // (what the spatial algorithms need of it; nothing after a mistake)
+  std::optional<FrameLink::Joint> move_by_joint(const JointEntry& joint, Rotation& relative, Vector3& origin);
+  bool is_constant_placement(const Rotation& rotation, const Vector3& origin) const;
   std::optional<GiNaC::ex> joint_coordinate(const JointEntry& joint);
   std::optional<Vector3> joint_axis(const JointEntry& joint);
 

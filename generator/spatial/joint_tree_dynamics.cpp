@@ -1,0 +1,263 @@
+#include "spatial/joint_tree_dynamics.hpp"
+
+#include <fmt/format.h>
+
+#include "kinematics/vector3.hpp"
+#include "model/recursive_frames.hpp"
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+const char* const axis_names[] = {"x", "y", "z"};
+
+bool moves(const ex& x, const Symbols& s) {
+  if (x.has(s.time)) return true;
+  for (const GiNaC::realsymbol& q : s.coordinates)
+    if (x.has(q)) return true;
+  return false;
+}
+
+bool moves(const GiNaC::matrix& R, const Symbols& s) {
+  for (unsigned a = 0; a < 3; ++a)
+    for (unsigned b = 0; b < 3; ++b)
+      if (moves(R(a, b), s)) return true;
+  return false;
+}
+
+GiNaC::matrix identity() { return GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)); }
+
+// Rodrigues: cos φ·I + sin φ·[e]× + (1 − cos φ)·e eᵀ, e a unit vector
+GiNaC::matrix turn(const Vector3& e, const ex& angle) {
+  ex c = GiNaC::cos(angle), s = GiNaC::sin(angle);
+  const ex cross[3][3] = {{0, -e[2], e[1]}, {e[2], 0, -e[0]}, {-e[1], e[0], 0}};
+  GiNaC::matrix R(3, 3);
+  for (unsigned a = 0; a < 3; ++a)
+    for (unsigned b = 0; b < 3; ++b) R(a, b) = (a == b ? c : ex(0)) + s * cross[a][b] + (1 - c) * e[a] * e[b];
+  return R;
+}
+
+// a body in a frame: mass, centre and inertia about the centre, in the frame's coordinates
+struct Body {
+  ex mass;
+  Vector3 center;
+  GiNaC::matrix inertia{3, 3};
+};
+
+class Tree {
+ public:
+  Tree(const Model& model, std::vector<Intermediate>& out) : model_(model), s_(model.symbols), out_(out) {
+    std::size_t links = model.frame_links.size();
+    bodies_.resize(links);
+    for (const Particle& p : model.particles)
+      bodies_[std::size_t(p.placement.frame)].push_back({p.mass, p.placement.local, GiNaC::matrix(3, 3)});
+    for (const RigidBody& r : model.rigid_bodies) {
+      const GiNaC::matrix& R = r.placement.relative;
+      bodies_[std::size_t(r.placement.frame)].push_back({r.mass, r.placement.local, R.mul(r.inertia).mul(R.transpose())});
+    }
+    for (std::size_t i = 0; i < links; ++i) place(i);
+  }
+
+  // ω of every link, its bias accelerations, the backward forces: τ at q̈ = `ddq` (zeros: the bias)
+  std::vector<ex> inverse_dynamics(const std::vector<ex>& ddq, const std::string& tag, std::vector<Intermediate>& out) {
+    std::size_t links = model_.frame_links.size();
+    std::vector<Vector3> alpha(links), acc(links), force(links), moment(links);
+    Vector3 zero{0, 0, 0}, minus_g = scaled(-1, model_.gravity);
+    for (std::size_t i = 0; i < links; ++i) {
+      const Link& l = links_[i];
+      int p = model_.frame_links[i].parent;
+      const Vector3& wp = p < 0 ? zero : omega_[std::size_t(p)];
+      const Vector3& alpha_p = p < 0 ? zero : alpha[std::size_t(p)];
+      const Vector3& acc_p = p < 0 ? minus_g : acc[std::size_t(p)];
+      ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
+      ex qdd = l.coordinate < 0 ? ex(0) : ddq[std::size_t(l.coordinate)];
+      Vector3 carried = times(l.E, wp, true);
+      Vector3 al = times(l.E, alpha_p, true) + scaled(qdd, l.e) + scaled(qd, cross(carried, l.e));
+      Vector3 a = times(l.E, acc_p + cross(alpha_p, l.r) + cross(wp, cross(wp, l.r)), true) +
+                  scaled(2 * qd, cross(carried, l.u)) + scaled(qdd, l.u) + scaled(qd * qd, cross(l.e, l.u));
+      alpha[i] = named(out, i, "tal" + tag, al);
+      acc[i] = named(out, i, "ta" + tag, a);
+    }
+    std::vector<ex> tau(s_.coordinates.size(), 0);
+    for (std::size_t i = links; i-- > 0;) {
+      Vector3 F = zero, N = zero;
+      for (const Body& b : bodies_[i]) {
+        Vector3 Fb = scaled(b.mass, acc[i] + cross(alpha[i], b.center) + cross(omega_[i], cross(omega_[i], b.center)));
+        F = F + Fb;
+        N = N + euler_moment(b.inertia, omega_[i], alpha[i]) + cross(b.center, Fb);
+      }
+      for (std::size_t j = i + 1; j < links; ++j) {
+        if (model_.frame_links[j].parent != int(i)) continue;
+        Vector3 Fj = times(links_[j].E, force[j]);
+        F = F + Fj;
+        N = N + times(links_[j].E, moment[j]) + cross(links_[j].r, Fj);
+      }
+      force[i] = named(out, i, "tF" + tag, F);
+      moment[i] = named(out, i, "tN" + tag, N);
+      if (links_[i].coordinate >= 0) tau[std::size_t(links_[i].coordinate)] = dot(links_[i].e, moment[i]) + dot(links_[i].u, force[i]);
+    }
+    return tau;
+  }
+
+  // the composite-rigid-body algorithm
+  GiNaC::matrix mass_matrix() {
+    std::size_t links = model_.frame_links.size(), n = s_.coordinates.size();
+    std::vector<ex> mass(links);
+    std::vector<Vector3> first(links);
+    std::vector<GiNaC::matrix> inertia(links, GiNaC::matrix(3, 3));
+    for (std::size_t i = links; i-- > 0;) {
+      ex m = 0;
+      Vector3 h{0, 0, 0};
+      GiNaC::matrix J(3, 3);
+      for (const Body& b : bodies_[i]) {
+        m += b.mass;
+        h = h + scaled(b.mass, b.center);
+        J = J.add(b.inertia).add(shifted(b.mass, b.center, {0, 0, 0}));
+      }
+      for (std::size_t j = i + 1; j < links; ++j) {
+        if (model_.frame_links[j].parent != int(i)) continue;
+        const Link& c = links_[j];
+        Vector3 hj = times(c.E, first[j]);
+        m += mass[j];
+        h = h + scaled(mass[j], c.r) + hj;
+        J = J.add(c.E.mul(inertia[j]).mul(c.E.transpose())).add(shifted(mass[j], c.r, hj));
+      }
+      mass[i] = intermediate(out_, fmt::format("{}.tm", name(i)), fmt::format("k_{}_tm", cpp(i)), m.expand());
+      first[i] = named(out_, i, "th", h);
+      for (unsigned a = 0; a < 3; ++a)
+        for (unsigned b = a; b < 3; ++b) {
+          inertia[i](a, b) = intermediate(out_, fmt::format("{}.tJ_{}{}", name(i), axis_names[a], axis_names[b]),
+                                          fmt::format("k_{}_tJ{}{}", cpp(i), axis_names[a], axis_names[b]), J(a, b).expand());
+          inertia[i](b, a) = inertia[i](a, b);
+        }
+    }
+    GiNaC::matrix M{unsigned(n), unsigned(n)};
+    for (std::size_t i = 0; i < links; ++i) {
+      const Link& l = links_[i];
+      if (l.coordinate < 0) continue;
+      unsigned k = unsigned(l.coordinate);
+      Vector3 p = scaled(mass[i], l.u) + cross(l.e, first[i]);
+      Vector3 L = times(inertia[i], l.e) + cross(first[i], l.u);
+      M(k, k) = (dot(l.e, L) + dot(l.u, p)).expand();
+      for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
+        const Link& c = links_[std::size_t(at)];
+        p = named(out_, std::size_t(up), fmt::format("tp{}", k), times(c.E, p));
+        L = named(out_, std::size_t(up), fmt::format("tL{}", k), times(c.E, L) + cross(c.r, p));
+        const Link& a = links_[std::size_t(up)];
+        if (a.coordinate < 0) continue;
+        unsigned j = unsigned(a.coordinate);
+        M(j, k) = M(k, j) = (dot(a.e, L) + dot(a.u, p)).expand();
+      }
+    }
+    return M;
+  }
+
+ private:
+  struct Link {
+    int coordinate = -1;
+    Vector3 e{0, 0, 0}, u{0, 0, 0};  // ω and the origin's velocity per q̇
+    GiNaC::matrix E{3, 3};           // the link's components to its parent's
+    Vector3 r{0, 0, 0};              // its origin in its parent's coordinates
+  };
+
+  // E, r and ω of link i, as intermediates
+  void place(std::size_t i) {
+    const FrameLink::Joint& j = *model_.frame_links[i].joint;
+    Link l;
+    l.coordinate = j.coordinate;
+    GiNaC::matrix R = identity();
+    Vector3 r = j.placement_origin;
+    if (j.coordinate >= 0) {
+      const ex q = s_.coordinates[std::size_t(j.coordinate)];
+      if (j.prismatic) {
+        l.u = j.axis;
+        r = r + times(j.placement, scaled(q, j.axis));
+      } else {
+        l.e = j.axis;
+        l.u = cross(j.anchor, j.axis);
+        R = turn(j.axis, q);
+        r = r + times(j.placement, j.anchor - times(R, j.anchor));
+      }
+    }
+    GiNaC::matrix E = j.placement.mul(R);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b)
+        l.E(a, b) = intermediate(out_, fmt::format("{}.tE_{}{}", name(i), axis_names[a], axis_names[b]),
+                                 fmt::format("k_{}_tE{}{}", cpp(i), axis_names[a], axis_names[b]), E(a, b).expand());
+    l.r = named(out_, i, "tr", r);
+    int p = model_.frame_links[i].parent;
+    Vector3 wp = p < 0 ? Vector3{0, 0, 0} : omega_[std::size_t(p)];
+    ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
+    omega_.push_back(named(out_, i, "tw", times(l.E, wp, true) + scaled(qd, l.e)));
+    links_.push_back(l);
+  }
+
+  // the inertia about a point at −d from the centre (J_O = J_c + m(|d|²I − d dᵀ)), and with s, the
+  // cross terms of a subtree whose first moment about its own origin is s: 2(d·s)I − s dᵀ − d sᵀ
+  static GiNaC::matrix shifted(const ex& m, const Vector3& d, const Vector3& s) {
+    GiNaC::matrix J(3, 3);
+    ex dd = dot(d, d), ds = dot(d, s);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b)
+        J(a, b) = m * ((a == b ? dd : ex(0)) - d[a] * d[b]) + (a == b ? 2 * ds : ex(0)) - s[a] * d[b] - d[a] * s[b];
+    return J;
+  }
+
+  std::string name(std::size_t i) const { return model_.frame_links[i].name; }
+  std::string cpp(std::size_t i) const { return model_.frame_links[i].name; }
+
+  Vector3 named(std::vector<Intermediate>& out, std::size_t i, const std::string& label, const Vector3& x) const {
+    Vector3 v;
+    for (unsigned a = 0; a < 3; ++a)
+      v[a] = intermediate(out, fmt::format("{}.{}_{}", name(i), label, axis_names[a]),
+                          fmt::format("k_{}_{}_{}", cpp(i), label, axis_names[a]), x[a].expand());
+    return v;
+  }
+
+  const Model& model_;
+  const Symbols& s_;
+  std::vector<Intermediate>& out_;
+  std::vector<std::vector<Body>> bodies_;
+  std::vector<Link> links_;
+  std::vector<Vector3> omega_;
+};
+
+}  // namespace
+
+std::optional<std::string> why_not_a_joint_tree(const Model& model) {
+  const Symbols& s = model.symbols;
+  if (!model.recursive_kinematics || model.frame_links.empty()) return "it has no frames with recursive kinematics";
+  std::vector<int> joints(s.coordinates.size(), 0);
+  for (const FrameLink& l : model.frame_links) {
+    if (!l.joint) return fmt::format("frame '{}' is not placed by constants and moved by one joint", l.name);
+    if (l.joint->coordinate >= 0) ++joints[std::size_t(l.joint->coordinate)];
+  }
+  for (std::size_t k = 0; k < joints.size(); ++k)
+    if (joints[k] != 1) return fmt::format("coordinate '{}' moves {} joints, not one", s.coordinate_names[k], joints[k]);
+  for (const Particle& p : model.particles)
+    if (p.placement.frame < 0 || moves(p.placement.local[0] + p.placement.local[1] + p.placement.local[2], s))
+      return fmt::format("particle '{}' does not sit still in a frame", p.name);
+  for (const RigidBody& r : model.rigid_bodies)
+    if (r.placement.frame < 0 || moves(r.placement.local[0] + r.placement.local[1] + r.placement.local[2], s) ||
+        moves(r.placement.relative, s))
+      return fmt::format("rigid body '{}' does not sit still in a frame", r.name);
+  if (moves(model.gravity[0] + model.gravity[1] + model.gravity[2], s)) return "gravity changes with q or t";
+  return std::nullopt;
+}
+
+JointTreeDynamics joint_tree_dynamics(const Model& model, const std::vector<GiNaC::symbol>& accelerations,
+                                      std::vector<Intermediate>& intermediates,
+                                      std::vector<Intermediate>& acceleration_intermediates) {
+  Tree tree(model, intermediates);
+  JointTreeDynamics d;
+  std::vector<ex> none(model.symbols.coordinates.size(), 0), ddq(accelerations.begin(), accelerations.end());
+  d.bias_forces = tree.inverse_dynamics(none, "0", intermediates);
+  for (ex& f : d.bias_forces) f = -f;
+  d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
+  d.mass_matrix = tree.mass_matrix();
+  return d;
+}
+
+}  // namespace eomgen

@@ -1,0 +1,183 @@
+// The spatial recursions over a tree of joints (generator/spatial/joint_tree_dynamics.hpp)
+// against the expanded derivation of the same model (Lagrange's equations from the positions
+// multiplied out): a branched tree with a revolute joint about an oblique axis through an
+// offset anchor, a prismatic joint, a fixed frame, a particle and rigid bodies with full
+// inertia tensors turned in their frames. M and f agree at random states; the inverse dynamics
+// τ(q, q̇, q̈) of the recursion (the code jacobian_state differentiates) is M q̈ − f at random q̈;
+// and a model that is not such a tree keeps the frame recursion, with its reason.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "model/model.hpp"
+#include "parse/model_file.hpp"
+#include "pipeline.hpp"
+#include "spatial/joint_tree_dynamics.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+using GiNaC::ex;
+
+const char* tree = R"toml([model]
+name = "tree"
+kinematics = "KINEMATICS"
+
+[parameters]
+m = 1.3
+l = 0.4
+g = 9.81
+
+[coordinates]
+a = 0.3
+b = -0.4
+s = 0.1
+c = 0.7
+
+[[frames]]
+name = "base"
+origin = ["0", "0", "l"]
+rotation = "rot_x(0.3)"
+joint = { type = "revolute", axis = ["1", "2", "2"], anchor = ["0.1", "-0.2", "0.05"], coordinate = "a" }
+
+[[frames]]
+name = "arm"
+parent = "base"
+origin = ["l", "0", "0"]
+joint = { type = "revolute", axis = ["0", "0", "-1"], anchor = ["0", "0.1", "0"], coordinate = "b" }
+
+[[frames]]
+name = "slide"
+parent = "base"
+origin = ["0", "0.2", "0"]
+rotation = "rot_z(Pi/2)"
+joint = { type = "prismatic", axis = ["3", "0", "4"], coordinate = "s" }
+
+[[frames]]
+name = "bracket"
+parent = "slide"
+origin = ["0.1", "0", "0"]
+joint = { type = "fixed" }
+
+[[frames]]
+name = "hand"
+parent = "bracket"
+joint = { type = "revolute", axis = ["0", "1", "1"], anchor = ["0.05", "0", "0"], coordinate = "c" }
+
+[[rigid_bodies]]
+name = "base_link"
+mass = "m"
+frame = "base"
+center = ["0.05", "0.02", "l/2"]
+inertia = [["0.03", "0.002", "-0.001"], ["0.002", "0.028", "0.003"], ["-0.001", "0.003", "0.012"]]
+
+[[rigid_bodies]]
+name = "arm_link"
+mass = "0.7"
+frame = "arm"
+center = ["l/2", "0", "0.01"]
+rotation = "rot_y(0.4)"
+inertia = ["0.002", "0.011", "0.012"]
+
+[[particles]]
+name = "weight"
+mass = "0.4"
+frame = "bracket"
+position = ["0", "0.03", "0"]
+
+[[rigid_bodies]]
+name = "hand_link"
+mass = "0.5"
+frame = "hand"
+center = ["0.04", "-0.02", "0.03"]
+inertia = [["0.0015", "0.0002", "-0.0001"], ["0.0002", "0.0018", "0.0003"], ["-0.0001", "0.0003", "0.0012"]]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+
+[energy]
+potential = "20*s^2"
+dissipation = "0.3*der(a)^2/2"
+)toml";
+
+std::string with(const std::string& kinematics) {
+  std::string text = tree;
+  text.replace(text.find("KINEMATICS"), 10, kinematics);
+  return text;
+}
+
+Model built(const std::string& text) {
+  Diagnostics d;
+  ModelFile file = parse_model_text(text, "tree.toml", d);
+  Model m = build_model(file, d);
+  EXPECT_TRUE(d.empty()) << d.format();
+  return m;
+}
+
+GiNaC::exmap point_of(const Equations& e, const std::map<std::string, double>& values) {
+  const Symbols& s = e.symbols;
+  GiNaC::exmap at;
+  at[s.time] = 0;
+  for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
+  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
+    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
+    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
+  }
+  for (std::size_t i = 0; i < e.acceleration_symbols.size(); ++i) at[e.acceleration_symbols[i]] = values.at(fmt::format("ddq{}", i));
+  for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
+  for (const Intermediate& i : e.acceleration_intermediates) at[i.symbol] = value_at(i.definition, at);
+  return at;
+}
+
+TEST(JointTree, RecursionsGiveTheExpandedEquations) {
+  Model model = built(with("recursive"));
+  ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
+  Equations recursive = derive_text(with("recursive")), expanded = derive_text(with("expanded"));
+  ASSERT_EQ(recursive.inverse_dynamics.size(), 4u);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3), scale(0.5, 2);
+  for (int point = 0; point < 10; ++point) {
+    std::map<std::string, double> values;
+    for (const std::string& p : recursive.symbols.parameter_names) values[p] = scale(random);
+    for (const std::string& q : recursive.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
+    for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
+    GiNaC::exmap at = point_of(recursive, values), full = point_of(expanded, values);
+    auto near = [](double x, double y, const std::string& what) {
+      EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
+    };
+    for (unsigned j = 0; j < 4; ++j) {
+      double f = value_at(recursive.forcing[j], at);
+      near(f, value_at(expanded.forcing[j], full), fmt::format("f[{}]", j));
+      double Mddq = 0;
+      for (unsigned k = 0; k < 4; ++k) {
+        double M = value_at(recursive.mass_matrix(j, k), at);
+        near(M, value_at(expanded.mass_matrix(j, k), full), fmt::format("M[{}][{}]", j, k));
+        Mddq += M * values.at(fmt::format("ddq{}", k));
+      }
+      near(value_at(recursive.inverse_dynamics[j], at), Mddq - f, fmt::format("tau[{}] = (M q'' - f)[{}]", j, j));
+    }
+  }
+}
+
+TEST(JointTree, OtherTreesKeepTheFrameRecursionAndSayWhy) {
+  std::string moving = with("recursive");
+  moving.replace(moving.find("rotation = \"rot_x(0.3)\""), 23, "rotation = \"rot_x(s)\"");
+  Model model = built(moving);
+  auto why = why_not_a_joint_tree(model);
+  ASSERT_TRUE(why);
+  EXPECT_NE(why->find("frame 'base' is not placed by constants and moved by one joint"), std::string::npos) << *why;
+  std::string twice = with("recursive");
+  twice.replace(twice.find("coordinate = \"b\""), 16, "coordinate = \"a\"");
+  twice.replace(twice.find("b = -0.4\n"), 9, "");
+  why = why_not_a_joint_tree(built(twice));
+  ASSERT_TRUE(why);
+  EXPECT_NE(why->find("coordinate 'a' moves 2 joints, not one"), std::string::npos) << *why;
+}
+
+}  // namespace
+}  // namespace eomgen::test
