@@ -307,7 +307,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
-  return dq_theta*dq_theta*p_m*p_r*p_r/T(2) + p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta/T(2);
+  return (T(1)/T(2))*dq_theta*dq_theta*p_m*p_r*p_r + (T(1)/T(2))*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -357,7 +357,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  out[0] = -cos_q_theta*p_g*p_m*p_r + dq_theta*dq_theta*p_m*p_r*p_r/T(2) - p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta/T(2);
+  out[0] = (T(1)/T(2))*dq_theta*dq_theta*p_m*p_r*p_r - (T(1)/T(2))*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta - cos_q_theta*p_g*p_m*p_r;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x1, row-major.

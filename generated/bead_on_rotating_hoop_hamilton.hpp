@@ -306,7 +306,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
-  return p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta/T(2) + s_p_theta*s_p_theta/(T(2)*p_m*p_r*p_r);
+  return (T(1)/T(2))*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta + (T(1)/T(2))*s_p_theta*s_p_theta/(p_m*p_r*p_r);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -356,7 +356,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  out[0] = -cos_q_theta*p_g*p_m*p_r - p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta/T(2) + s_p_theta*s_p_theta/(T(2)*p_m*p_r*p_r);
+  out[0] = -(T(1)/T(2))*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta + (T(1)/T(2))*s_p_theta*s_p_theta/(p_m*p_r*p_r) - cos_q_theta*p_g*p_m*p_r;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x1, row-major.

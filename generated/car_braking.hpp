@@ -512,7 +512,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_theta = x[5];
   const T p_m = p[0];
   const T p_Iyy = p[2];
-  return dq_theta*dq_theta*p_Iyy/T(2) + dq_x*dq_x*p_m/T(2) + dq_z*dq_z*p_m/T(2);
+  return (T(1)/T(2))*dq_theta*dq_theta*p_Iyy + (T(1)/T(2))*dq_x*dq_x*p_m + (T(1)/T(2))*dq_z*dq_z*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -533,7 +533,7 @@ T potential_energy(T t, const T* x, const T* p) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T c0 = sin_q_theta;
-  return (p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c0/T(2) - (p_a*p_kf - p_b*p_kr)*c0*q_z + (p_kf + p_kr)*q_z*q_z/T(2);
+  return (T(1)/T(2))*(p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c0 + (T(1)/T(2))*(p_kf + p_kr)*q_z*q_z - (p_a*p_kf - p_b*p_kr)*c0*q_z;
 }
 
 /// The model's [outputs], in output_names order. y: 1.

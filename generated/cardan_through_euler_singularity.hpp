@@ -450,7 +450,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   const T c0 = sin_q_beta;
-  return c0*c0*dq_alpha*dq_alpha*p_C/T(2) + c0*dq_alpha*dq_gamma*p_C + cos_q_beta*cos_q_beta*dq_alpha*dq_alpha*p_A/T(2) + dq_beta*dq_beta*p_A/T(2) + dq_gamma*dq_gamma*p_C/T(2);
+  return (T(1)/T(2))*c0*c0*dq_alpha*dq_alpha*p_C + (T(1)/T(2))*cos_q_beta*cos_q_beta*dq_alpha*dq_alpha*p_A + (T(1)/T(2))*dq_beta*dq_beta*p_A + (T(1)/T(2))*dq_gamma*dq_gamma*p_C + c0*dq_alpha*dq_gamma*p_C;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

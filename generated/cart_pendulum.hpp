@@ -395,7 +395,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T cos_q_theta = trig_cos[0];
-  return (p_m + p_mc)*dq_x*dq_x/T(2) + cos_q_theta*dq_theta*dq_x*p_l*p_m + dq_theta*dq_theta*p_l*p_l*p_m/T(2);
+  return (T(1)/T(2))*(p_m + p_mc)*dq_x*dq_x + (T(1)/T(2))*dq_theta*dq_theta*p_l*p_l*p_m + cos_q_theta*dq_theta*dq_x*p_l*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

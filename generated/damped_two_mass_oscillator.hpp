@@ -281,7 +281,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_x2 = x[3];
   const T p_m1 = p[0];
   const T p_m2 = p[2];
-  return dq_x1*dq_x1*p_m1/T(2) + dq_x2*dq_x2*p_m2/T(2);
+  return (T(1)/T(2))*dq_x1*dq_x1*p_m1 + (T(1)/T(2))*dq_x2*dq_x2*p_m2;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -292,7 +292,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T q_x2 = x[1];
   const T p_k1 = p[1];
   const T p_k2 = p[3];
-  return (p_k1 + p_k2)*q_x1*q_x1/T(2) - p_k2*q_x1*q_x2 + p_k2*q_x2*q_x2/T(2);
+  return (T(1)/T(2))*(p_k1 + p_k2)*q_x1*q_x1 + (T(1)/T(2))*p_k2*q_x2*q_x2 - p_k2*q_x1*q_x2;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

@@ -455,7 +455,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T cos_q_phi1 = trig_cos[0];
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
-  return (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*dq_phi1*dq_phi2*p_l1*p_l2*p_m2 + (p_m1 + p_m2)*dq_phi1*dq_phi1*p_l1*p_l1/T(2) + dq_phi2*dq_phi2*p_l2*p_l2*p_m2/T(2);
+  return (T(1)/T(2))*(p_m1 + p_m2)*dq_phi1*dq_phi1*p_l1*p_l1 + (T(1)/T(2))*dq_phi2*dq_phi2*p_l2*p_l2*p_m2 + (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*dq_phi1*dq_phi2*p_l1*p_l2*p_m2;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -450,7 +450,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   const T c0 = cos_q_theta;
-  return c0*c0*dq_psi*dq_psi*p_C/T(2) + c0*dq_phi*dq_psi*p_C + dq_phi*dq_phi*p_C/T(2) + dq_psi*dq_psi*p_A*sin_q_theta*sin_q_theta/T(2) + dq_theta*dq_theta*p_A/T(2);
+  return (T(1)/T(2))*c0*c0*dq_psi*dq_psi*p_C + (T(1)/T(2))*dq_phi*dq_phi*p_C + (T(1)/T(2))*dq_psi*dq_psi*p_A*sin_q_theta*sin_q_theta + (T(1)/T(2))*dq_theta*dq_theta*p_A + c0*dq_phi*dq_psi*p_C;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -411,7 +411,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T cos_q_phi1 = trig_cos[0];
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
-  return (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*dq_phi1*dq_phi2*p_l*p_l*p_m + T(3)*dq_phi1*dq_phi1*p_l*p_l*p_m/T(2) + dq_phi2*dq_phi2*p_l*p_l*p_m/T(2);
+  return (T(1)/T(2))*dq_phi2*dq_phi2*p_l*p_l*p_m + (T(3)/T(2))*dq_phi1*dq_phi1*p_l*p_l*p_m + (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*dq_phi1*dq_phi2*p_l*p_l*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -421,7 +421,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T q_phi1 = x[0];
   const T q_phi2 = x[1];
   const T p_c = p[2];
-  return p_c*q_phi1*q_phi1 - p_c*q_phi1*q_phi2 + p_c*q_phi2*q_phi2/T(2);
+  return (T(1)/T(2))*p_c*q_phi2*q_phi2 + p_c*q_phi1*q_phi1 - p_c*q_phi1*q_phi2;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

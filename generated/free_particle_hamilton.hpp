@@ -218,7 +218,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T s_p_x = x[2];
   const T s_p_y = x[3];
   const T p_m = p[0];
-  return s_p_x*s_p_x/(T(2)*p_m) + s_p_y*s_p_y/(T(2)*p_m);
+  return (T(1)/T(2))*s_p_x*s_p_x/p_m + (T(1)/T(2))*s_p_y*s_p_y/p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

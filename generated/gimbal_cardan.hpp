@@ -610,7 +610,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T c4 = c1*c1;
   const T c5 = c2*c2;
   const T c6 = sin_q_beta;
-  return (p_A - p_B)*c0*c1*c2*dq_alpha*dq_beta + c3*c4*dq_alpha*dq_alpha*p_A/T(2) + c3*dq_beta*dq_beta*p_B/T(2) + c4*c5*dq_alpha*dq_alpha*p_B/T(2) + c5*dq_beta*dq_beta*p_A/T(2) + c6*c6*dq_alpha*dq_alpha*p_C/T(2) + c6*dq_alpha*dq_gamma*p_C + dq_gamma*dq_gamma*p_C/T(2);
+  return (T(1)/T(2))*c3*c4*dq_alpha*dq_alpha*p_A + (T(1)/T(2))*c3*dq_beta*dq_beta*p_B + (T(1)/T(2))*c4*c5*dq_alpha*dq_alpha*p_B + (T(1)/T(2))*c5*dq_beta*dq_beta*p_A + (T(1)/T(2))*c6*c6*dq_alpha*dq_alpha*p_C + (T(1)/T(2))*dq_gamma*dq_gamma*p_C + (p_A - p_B)*c0*c1*c2*dq_alpha*dq_beta + c6*dq_alpha*dq_gamma*p_C;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -179,7 +179,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T s_p_x = x[1];
   const T p_m = p[0];
-  return s_p_x*s_p_x/(T(2)*p_m);
+  return (T(1)/T(2))*s_p_x*s_p_x/p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -188,7 +188,7 @@ T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T q_x = x[0];
   const T p_k = p[1];
-  return p_k*q_x*q_x/T(2);
+  return (T(1)/T(2))*p_k*q_x*q_x;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

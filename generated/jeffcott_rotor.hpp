@@ -253,7 +253,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_eta = x[3];
   const T p_m = p[0];
   const T p_Omega = p[3];
-  return dq_eta*dq_eta*p_m/T(2) + dq_eta*p_Omega*p_m*q_xi + dq_xi*dq_xi*p_m/T(2) - dq_xi*p_Omega*p_m*q_eta + p_Omega*p_Omega*p_m*q_eta*q_eta/T(2) + p_Omega*p_Omega*p_m*q_xi*q_xi/T(2);
+  return (T(1)/T(2))*dq_eta*dq_eta*p_m + (T(1)/T(2))*dq_xi*dq_xi*p_m + (T(1)/T(2))*p_Omega*p_Omega*p_m*q_eta*q_eta + (T(1)/T(2))*p_Omega*p_Omega*p_m*q_xi*q_xi + dq_eta*p_Omega*p_m*q_xi - dq_xi*p_Omega*p_m*q_eta;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -263,7 +263,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T q_xi = x[0];
   const T q_eta = x[1];
   const T p_k = p[1];
-  return p_k*q_eta*q_eta/T(2) + p_k*q_xi*q_xi/T(2);
+  return (T(1)/T(2))*p_k*q_eta*q_eta + (T(1)/T(2))*p_k*q_xi*q_xi;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

@@ -311,7 +311,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_phi = trig_sin[0];
   const T c0 = sin(p_w*t);
-  return c0*c0*p_a*p_a*p_m*p_w*p_w/T(2) - c0*dq_phi*p_a*p_l*p_m*p_w*sin_q_phi + dq_phi*dq_phi*p_l*p_l*p_m/T(2);
+  return (T(1)/T(2))*c0*c0*p_a*p_a*p_m*p_w*p_w + (T(1)/T(2))*dq_phi*dq_phi*p_l*p_l*p_m - c0*dq_phi*p_a*p_l*p_m*p_w*sin_q_phi;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

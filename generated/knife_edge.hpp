@@ -327,7 +327,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T s_w = x[4];
   const T p_m = p[0];
   const T p_J = p[1];
-  return p_J*s_w*s_w/T(2) + p_m*s_v*s_v/T(2);
+  return (T(1)/T(2))*p_J*s_w*s_w + (T(1)/T(2))*p_m*s_v*s_v;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -191,7 +191,7 @@ template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T dq_x = x[1];
-  return dq_x*dq_x/T(2);
+  return (T(1)/T(2))*dq_x*dq_x;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -204,7 +204,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T q_x = x[0];
   const T p_a = p[0];
   const T p_q = p[1];
-  return -cos(T(2)*t)*p_q*q_x*q_x + p_a*q_x*q_x/T(2);
+  return (T(1)/T(2))*p_a*q_x*q_x - cos(T(2)*t)*p_q*q_x*q_x;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

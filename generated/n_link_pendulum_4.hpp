@@ -741,7 +741,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T c7 = cos_q_phi3;
   const T c8 = sin_q_phi2;
   const T c9 = cos_q_phi2;
-  return (c2*c3 + c4*c5)*dq_phi1*dq_phi4*p_l1*p_l4*p_m4 + (c2*c6 + c4*c7)*c0*dq_phi1*dq_phi3*p_l1*p_l3 + (c2*c8 + c4*c9)*c1*dq_phi1*dq_phi2*p_l1*p_l2 + (c3*c6 + c5*c7)*dq_phi3*dq_phi4*p_l3*p_l4*p_m4 + (c3*c8 + c5*c9)*dq_phi2*dq_phi4*p_l2*p_l4*p_m4 + (c6*c8 + c7*c9)*c0*dq_phi2*dq_phi3*p_l2*p_l3 + (p_m1 + p_m2 + p_m3 + p_m4)*dq_phi1*dq_phi1*p_l1*p_l1/T(2) + c0*dq_phi3*dq_phi3*p_l3*p_l3/T(2) + c1*dq_phi2*dq_phi2*p_l2*p_l2/T(2) + dq_phi4*dq_phi4*p_l4*p_l4*p_m4/T(2);
+  return (T(1)/T(2))*(p_m1 + p_m2 + p_m3 + p_m4)*dq_phi1*dq_phi1*p_l1*p_l1 + (T(1)/T(2))*c0*dq_phi3*dq_phi3*p_l3*p_l3 + (T(1)/T(2))*c1*dq_phi2*dq_phi2*p_l2*p_l2 + (T(1)/T(2))*dq_phi4*dq_phi4*p_l4*p_l4*p_m4 + (c2*c3 + c4*c5)*dq_phi1*dq_phi4*p_l1*p_l4*p_m4 + (c2*c6 + c4*c7)*c0*dq_phi1*dq_phi3*p_l1*p_l3 + (c2*c8 + c4*c9)*c1*dq_phi1*dq_phi2*p_l1*p_l2 + (c3*c6 + c5*c7)*dq_phi3*dq_phi4*p_l3*p_l4*p_m4 + (c3*c8 + c5*c9)*dq_phi2*dq_phi4*p_l2*p_l4*p_m4 + (c6*c8 + c7*c9)*c0*dq_phi2*dq_phi3*p_l2*p_l3;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

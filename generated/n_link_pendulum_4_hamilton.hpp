@@ -667,7 +667,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   T Dv[4];
   detail::ldlt_factor(Mv, Lv, Dv);
   detail::ldlt_solve(Lv, Dv, qd);
-  return (c2*c3 + c4*c5)*c1*p_l1*p_l2*qd[0]*qd[1] + (c2*c6 + c5*c7)*c0*p_l1*p_l3*qd[0]*qd[2] + (c2*c8 + c5*c9)*p_l1*p_l4*p_m4*qd[0]*qd[3] + (c3*c6 + c4*c7)*c0*p_l2*p_l3*qd[1]*qd[2] + (c3*c8 + c4*c9)*p_l2*p_l4*p_m4*qd[1]*qd[3] + (c6*c8 + c7*c9)*p_l3*p_l4*p_m4*qd[2]*qd[3] + (p_m1 + p_m2 + p_m3 + p_m4)*p_l1*p_l1*qd[0]*qd[0]/T(2) + c0*p_l3*p_l3*qd[2]*qd[2]/T(2) + c1*p_l2*p_l2*qd[1]*qd[1]/T(2) + p_l4*p_l4*p_m4*qd[3]*qd[3]/T(2);
+  return (T(1)/T(2))*(p_m1 + p_m2 + p_m3 + p_m4)*p_l1*p_l1*qd[0]*qd[0] + (T(1)/T(2))*c0*p_l3*p_l3*qd[2]*qd[2] + (T(1)/T(2))*c1*p_l2*p_l2*qd[1]*qd[1] + (T(1)/T(2))*p_l4*p_l4*p_m4*qd[3]*qd[3] + (c2*c3 + c4*c5)*c1*p_l1*p_l2*qd[0]*qd[1] + (c2*c6 + c5*c7)*c0*p_l1*p_l3*qd[0]*qd[2] + (c2*c8 + c5*c9)*p_l1*p_l4*p_m4*qd[0]*qd[3] + (c3*c6 + c4*c7)*c0*p_l2*p_l3*qd[1]*qd[2] + (c3*c8 + c4*c9)*p_l2*p_l4*p_m4*qd[1]*qd[3] + (c6*c8 + c7*c9)*p_l3*p_l4*p_m4*qd[2]*qd[3];
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

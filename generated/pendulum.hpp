@@ -293,7 +293,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_phi = x[1];
   const T p_m = p[0];
   const T p_l = p[1];
-  return dq_phi*dq_phi*p_l*p_l*p_m/T(2);
+  return (T(1)/T(2))*dq_phi*dq_phi*p_l*p_l*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

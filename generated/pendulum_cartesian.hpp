@@ -223,7 +223,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_x = x[2];
   const T dq_y = x[3];
   const T p_m = p[0];
-  return dq_x*dq_x*p_m/T(2) + dq_y*dq_y*p_m/T(2);
+  return (T(1)/T(2))*dq_x*dq_x*p_m + (T(1)/T(2))*dq_y*dq_y*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -291,7 +291,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T s_p_phi = x[1];
   const T p_m = p[0];
   const T p_l = p[1];
-  return s_p_phi*s_p_phi/(T(2)*p_l*p_l*p_m);
+  return (T(1)/T(2))*s_p_phi*s_p_phi/(p_l*p_l*p_m);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

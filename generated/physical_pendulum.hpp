@@ -309,7 +309,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T p_m = p[0];
   const T p_s = p[1];
   const T p_Izz = p[4];
-  return (p_Izz + p_m*p_s*p_s)*dq_phi*dq_phi/T(2);
+  return (T(1)/T(2))*(p_Izz + p_m*p_s*p_s)*dq_phi*dq_phi;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -180,7 +180,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T dq_x = x[1];
   const T p_m = p[0];
-  return dq_x*dq_x*p_m/T(2);
+  return (T(1)/T(2))*dq_x*dq_x*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -189,7 +189,7 @@ T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T q_x = x[0];
   const T p_k = p[1];
-  return -p_k*q_x*q_x*q_x/T(3);
+  return -(T(1)/T(3))*p_k*q_x*q_x*q_x;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

@@ -180,8 +180,8 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   M[6] = M[2];
   M[5] = T(0);
   M[7] = M[5];
-  M[8] = T(2)*p_R*p_R*p_m/T(5);
-  const T c0 = T(7)*p_R*p_R*p_m/T(5);
+  M[8] = (T(2)/T(5))*p_R*p_R*p_m;
+  const T c0 = (T(7)/T(5))*p_R*p_R*p_m;
   M[0] = c0;
   M[4] = c0;
 }
@@ -218,7 +218,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T cos_q_alpha = trig_cos[0];
   const T sin_q_beta = trig_sin[1];
   const T cos_q_beta = trig_cos[1];
-  const T c0 = T(7)*p_R*p_R*p_m/T(5);
+  const T c0 = (T(7)/T(5))*p_R*p_R*p_m;
   T M[9];
   M[0] = c0;
   M[1] = T(0);
@@ -228,7 +228,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   M[4] = c0;
   M[5] = T(0);
   M[7] = M[5];
-  M[8] = T(2)*p_R*p_R*p_m/T(5);
+  M[8] = (T(2)/T(5))*p_R*p_R*p_m;
   T ddq[3];
   ddq[0] = T(0);
   ddq[1] = T(0);
@@ -274,7 +274,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T cos_q_alpha = trig_cos[0];
   const T sin_q_beta = trig_sin[1];
   const T cos_q_beta = trig_cos[1];
-  const T c0 = T(7)*p_R*p_R*p_m/T(5);
+  const T c0 = (T(7)/T(5))*p_R*p_R*p_m;
   T M[9];
   M[0] = c0;
   M[1] = T(0);
@@ -284,7 +284,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   M[4] = c0;
   M[5] = T(0);
   M[7] = M[5];
-  M[8] = T(2)*p_R*p_R*p_m/T(5);
+  M[8] = (T(2)/T(5))*p_R*p_R*p_m;
   T ddq[3];
   ddq[0] = T(0);
   ddq[1] = T(0);
@@ -470,7 +470,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T c8 = c1*c1;
   const T c9 = c2*c2*c2*c2;
   const T c10 = c2*c2*c2;
-  return -T(2)*c0*c1*c3*p_R*p_R*p_m*s_omega_y*s_omega_z/T(5) - T(2)*c0*c1*c6*c9*p_R*p_R*p_m*s_omega_y*s_omega_z/T(5) - T(2)*c0*c1*c6*p_R*p_R*p_m*s_omega_y*s_omega_z/T(5) + T(2)*c0*c1*p_R*p_R*p_m*s_omega_y*s_omega_z/T(5) - T(2)*c0*c10*c7*p_R*p_R*p_m*s_omega_x*s_omega_z/T(5) - T(2)*c0*c2*c5*p_R*p_R*p_m*s_omega_x*s_omega_z/T(5) + T(2)*c0*c2*c7*p_R*p_R*p_m*s_omega_x*s_omega_z/T(5) + T(2)*c1*c10*c7*p_R*p_R*p_m*s_omega_x*s_omega_y/T(5) + T(2)*c1*c2*c5*p_R*p_R*p_m*s_omega_x*s_omega_y/T(5) - T(2)*c1*c2*c7*p_R*p_R*p_m*s_omega_x*s_omega_y/T(5) - T(2)*c3*c4*c6*p_R*p_R*p_m*s_omega_z*s_omega_z/T(5) - T(2)*c3*c6*c8*p_R*p_R*p_m*s_omega_y*s_omega_y/T(5) + T(4)*c0*c1*c3*c6*p_R*p_R*p_m*s_omega_y*s_omega_z/T(5) + T(7)*p_R*p_R*p_m*s_omega_x*s_omega_x/T(10) + c3*c4*p_R*p_R*p_m*s_omega_z*s_omega_z/T(5) + c3*c8*p_R*p_R*p_m*s_omega_y*s_omega_y/T(5) + c4*c6*c9*p_R*p_R*p_m*s_omega_z*s_omega_z/T(5) + c4*c6*p_R*p_R*p_m*s_omega_z*s_omega_z/T(5) + c4*p_R*p_R*p_m*s_omega_y*s_omega_y/T(5) + c6*c8*c9*p_R*p_R*p_m*s_omega_y*s_omega_y/T(5) + c6*c8*p_R*p_R*p_m*s_omega_y*s_omega_y/T(5) + c8*p_R*p_R*p_m*s_omega_z*s_omega_z/T(5) + p_R*p_R*p_m*s_omega_y*s_omega_y/T(2);
+  return (T(1)/T(2))*p_R*p_R*p_m*s_omega_y*s_omega_y + (T(1)/T(5))*c3*c4*p_R*p_R*p_m*s_omega_z*s_omega_z + (T(1)/T(5))*c3*c8*p_R*p_R*p_m*s_omega_y*s_omega_y + (T(1)/T(5))*c4*c6*c9*p_R*p_R*p_m*s_omega_z*s_omega_z + (T(1)/T(5))*c4*c6*p_R*p_R*p_m*s_omega_z*s_omega_z + (T(1)/T(5))*c4*p_R*p_R*p_m*s_omega_y*s_omega_y + (T(1)/T(5))*c6*c8*c9*p_R*p_R*p_m*s_omega_y*s_omega_y + (T(1)/T(5))*c6*c8*p_R*p_R*p_m*s_omega_y*s_omega_y + (T(1)/T(5))*c8*p_R*p_R*p_m*s_omega_z*s_omega_z - (T(2)/T(5))*c0*c1*c3*p_R*p_R*p_m*s_omega_y*s_omega_z - (T(2)/T(5))*c0*c1*c6*c9*p_R*p_R*p_m*s_omega_y*s_omega_z - (T(2)/T(5))*c0*c1*c6*p_R*p_R*p_m*s_omega_y*s_omega_z + (T(2)/T(5))*c0*c1*p_R*p_R*p_m*s_omega_y*s_omega_z - (T(2)/T(5))*c0*c10*c7*p_R*p_R*p_m*s_omega_x*s_omega_z - (T(2)/T(5))*c0*c2*c5*p_R*p_R*p_m*s_omega_x*s_omega_z + (T(2)/T(5))*c0*c2*c7*p_R*p_R*p_m*s_omega_x*s_omega_z + (T(2)/T(5))*c1*c10*c7*p_R*p_R*p_m*s_omega_x*s_omega_y + (T(2)/T(5))*c1*c2*c5*p_R*p_R*p_m*s_omega_x*s_omega_y - (T(2)/T(5))*c1*c2*c7*p_R*p_R*p_m*s_omega_x*s_omega_y - (T(2)/T(5))*c3*c4*c6*p_R*p_R*p_m*s_omega_z*s_omega_z - (T(2)/T(5))*c3*c6*c8*p_R*p_R*p_m*s_omega_y*s_omega_y + (T(4)/T(5))*c0*c1*c3*c6*p_R*p_R*p_m*s_omega_y*s_omega_z + (T(7)/T(10))*p_R*p_R*p_m*s_omega_x*s_omega_x;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -500,7 +500,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T s_omega_z = x[7];
   const T p_m = p[0];
   const T p_R = p[1];
-  out[0] = T(7)*p_R*p_R*p_m*s_omega_x*s_omega_x/T(10) + T(7)*p_R*p_R*p_m*s_omega_y*s_omega_y/T(10) + p_R*p_R*p_m*s_omega_z*s_omega_z/T(5);
+  out[0] = (T(1)/T(5))*p_R*p_R*p_m*s_omega_z*s_omega_z + (T(7)/T(10))*p_R*p_R*p_m*s_omega_x*s_omega_x + (T(7)/T(10))*p_R*p_R*p_m*s_omega_y*s_omega_y;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 2x5, row-major.

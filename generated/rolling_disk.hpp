@@ -185,13 +185,13 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T cos_q_theta = trig_cos[0];
   M[1] = T(0);
   M[3] = M[1];
-  M[4] = T(5)*p_R*p_R*p_m/T(4);
+  M[4] = (T(5)/T(4))*p_R*p_R*p_m;
   M[5] = T(0);
   M[7] = M[5];
-  M[8] = T(3)*p_R*p_R*p_m/T(2);
+  M[8] = (T(3)/T(2))*p_R*p_R*p_m;
   const T c0 = cos_q_theta;
-  M[0] = T(5)*c0*c0*p_R*p_R*p_m/T(4) + p_R*p_R*p_m/T(4);
-  M[2] = T(3)*c0*p_R*p_R*p_m/T(2);
+  M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*c0*c0*p_R*p_R*p_m;
+  M[2] = (T(3)/T(2))*c0*p_R*p_R*p_m;
   M[6] = M[2];
 }
 
@@ -216,10 +216,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   const T c0 = sin_q_theta;
-  f[2] = T(5)*c0*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
+  f[2] = (T(5)/T(2))*c0*dq_psi*dq_theta*p_R*p_R*p_m;
   const T c1 = cos_q_theta;
-  f[0] = T(5)*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2) + c0*dq_phi*dq_theta*p_R*p_R*p_m/T(2);
-  f[1] = -T(3)*c0*dq_phi*dq_psi*p_R*p_R*p_m/T(2) - T(5)*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m/T(4) - c1*p_R*p_g*p_m;
+  f[0] = (T(1)/T(2))*c0*dq_phi*dq_theta*p_R*p_R*p_m + (T(5)/T(2))*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m;
+  f[1] = -(T(3)/T(2))*c0*dq_phi*dq_psi*p_R*p_R*p_m - (T(5)/T(4))*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m - c1*p_R*p_g*p_m;
 }
 
 /// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].
@@ -248,19 +248,19 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T c0 = cos_q_theta;
   const T c1 = sin_q_theta;
   T M[9];
-  M[0] = T(5)*c0*c0*p_R*p_R*p_m/T(4) + p_R*p_R*p_m/T(4);
+  M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*c0*c0*p_R*p_R*p_m;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = T(3)*c0*p_R*p_R*p_m/T(2);
+  M[2] = (T(3)/T(2))*c0*p_R*p_R*p_m;
   M[6] = M[2];
-  M[4] = T(5)*p_R*p_R*p_m/T(4);
+  M[4] = (T(5)/T(4))*p_R*p_R*p_m;
   M[5] = T(0);
   M[7] = M[5];
-  M[8] = T(3)*p_R*p_R*p_m/T(2);
+  M[8] = (T(3)/T(2))*p_R*p_R*p_m;
   T ddq[3];
-  ddq[0] = T(5)*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2) + c1*dq_phi*dq_theta*p_R*p_R*p_m/T(2);
-  ddq[1] = -T(3)*c1*dq_phi*dq_psi*p_R*p_R*p_m/T(2) - T(5)*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m/T(4) - c0*p_R*p_g*p_m;
-  ddq[2] = T(5)*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
+  ddq[0] = (T(1)/T(2))*c1*dq_phi*dq_theta*p_R*p_R*p_m + (T(5)/T(2))*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m;
+  ddq[1] = -(T(3)/T(2))*c1*dq_phi*dq_psi*p_R*p_R*p_m - (T(5)/T(4))*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m - c0*p_R*p_g*p_m;
+  ddq[2] = (T(5)/T(2))*c1*dq_psi*dq_theta*p_R*p_R*p_m;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
@@ -301,26 +301,26 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c0 = cos_q_theta;
   const T c1 = sin_q_theta;
   T M[9];
-  M[0] = T(5)*c0*c0*p_R*p_R*p_m/T(4) + p_R*p_R*p_m/T(4);
+  M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*c0*c0*p_R*p_R*p_m;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = T(3)*c0*p_R*p_R*p_m/T(2);
+  M[2] = (T(3)/T(2))*c0*p_R*p_R*p_m;
   M[6] = M[2];
-  M[4] = T(5)*p_R*p_R*p_m/T(4);
+  M[4] = (T(5)/T(4))*p_R*p_R*p_m;
   M[5] = T(0);
   M[7] = M[5];
-  M[8] = T(3)*p_R*p_R*p_m/T(2);
+  M[8] = (T(3)/T(2))*p_R*p_R*p_m;
   T ddq[3];
-  ddq[0] = T(5)*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2) + c1*dq_phi*dq_theta*p_R*p_R*p_m/T(2);
-  ddq[1] = -T(3)*c1*dq_phi*dq_psi*p_R*p_R*p_m/T(2) - T(5)*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m/T(4) - c0*p_R*p_g*p_m;
-  ddq[2] = T(5)*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
+  ddq[0] = (T(1)/T(2))*c1*dq_phi*dq_theta*p_R*p_R*p_m + (T(5)/T(2))*c0*c1*dq_psi*dq_theta*p_R*p_R*p_m;
+  ddq[1] = -(T(3)/T(2))*c1*dq_phi*dq_psi*p_R*p_R*p_m - (T(5)/T(4))*c0*c1*dq_psi*dq_psi*p_R*p_R*p_m - c0*p_R*p_g*p_m;
+  ddq[2] = (T(5)/T(2))*c1*dq_psi*dq_theta*p_R*p_R*p_m;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
   const T c2 = c0*c0;
   const T c3 = c1*c1;
-  const T c4 = T(5)*c0*c1*dq_psi*p_R*p_R*p_m/T(2);
+  const T c4 = (T(5)/T(2))*c0*c1*dq_psi*p_R*p_R*p_m;
   const T c5 = sin_q_psi;
   const T c6 = cos_q_psi;
   J[0] = T(0);
@@ -385,9 +385,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[42] = column[0];
   J[50] = column[1];
   J[58] = column[2];
-  column[0] = T(3)*c1*ddq[2]*p_R*p_R*p_m/T(2) + T(5)*c0*c1*ddq[0]*p_R*p_R*p_m/T(2) + T(5)*c2*dq_psi*dq_theta*p_R*p_R*p_m/T(2) - T(5)*c3*dq_psi*dq_theta*p_R*p_R*p_m/T(2) + c0*dq_phi*dq_theta*p_R*p_R*p_m/T(2);
-  column[1] = -T(3)*c0*dq_phi*dq_psi*p_R*p_R*p_m/T(2) - T(5)*c2*dq_psi*dq_psi*p_R*p_R*p_m/T(4) + T(5)*c3*dq_psi*dq_psi*p_R*p_R*p_m/T(4) + c1*p_R*p_g*p_m;
-  column[2] = T(3)*c1*ddq[0]*p_R*p_R*p_m/T(2) + T(5)*c0*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
+  column[0] = (T(1)/T(2))*c0*dq_phi*dq_theta*p_R*p_R*p_m + (T(3)/T(2))*c1*ddq[2]*p_R*p_R*p_m + (T(5)/T(2))*c0*c1*ddq[0]*p_R*p_R*p_m + (T(5)/T(2))*c2*dq_psi*dq_theta*p_R*p_R*p_m - (T(5)/T(2))*c3*dq_psi*dq_theta*p_R*p_R*p_m;
+  column[1] = -(T(3)/T(2))*c0*dq_phi*dq_psi*p_R*p_R*p_m - (T(5)/T(4))*c2*dq_psi*dq_psi*p_R*p_R*p_m + (T(5)/T(4))*c3*dq_psi*dq_psi*p_R*p_R*p_m + c1*p_R*p_g*p_m;
+  column[2] = (T(3)/T(2))*c1*ddq[0]*p_R*p_R*p_m + (T(5)/T(2))*c0*dq_psi*dq_theta*p_R*p_R*p_m;
   detail::ldlt_solve(L, D, column);
   J[43] = column[0];
   J[51] = column[1];
@@ -399,22 +399,22 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[44] = column[0];
   J[52] = column[1];
   J[60] = column[2];
-  column[0] = T(5)*c0*c1*dq_theta*p_R*p_R*p_m/T(2);
-  column[1] = -T(3)*c1*dq_phi*p_R*p_R*p_m/T(2) - c4;
-  column[2] = T(5)*c1*dq_theta*p_R*p_R*p_m/T(2);
+  column[0] = (T(5)/T(2))*c0*c1*dq_theta*p_R*p_R*p_m;
+  column[1] = -(T(3)/T(2))*c1*dq_phi*p_R*p_R*p_m - c4;
+  column[2] = (T(5)/T(2))*c1*dq_theta*p_R*p_R*p_m;
   detail::ldlt_solve(L, D, column);
   J[45] = column[0];
   J[53] = column[1];
   J[61] = column[2];
-  column[0] = c1*dq_phi*p_R*p_R*p_m/T(2) + c4;
+  column[0] = (T(1)/T(2))*c1*dq_phi*p_R*p_R*p_m + c4;
   column[1] = T(0);
-  column[2] = T(5)*c1*dq_psi*p_R*p_R*p_m/T(2);
+  column[2] = (T(5)/T(2))*c1*dq_psi*p_R*p_R*p_m;
   detail::ldlt_solve(L, D, column);
   J[46] = column[0];
   J[54] = column[1];
   J[62] = column[2];
-  column[0] = c1*dq_theta*p_R*p_R*p_m/T(2);
-  column[1] = -T(3)*c1*dq_psi*p_R*p_R*p_m/T(2);
+  column[0] = (T(1)/T(2))*c1*dq_theta*p_R*p_R*p_m;
+  column[1] = -(T(3)/T(2))*c1*dq_psi*p_R*p_R*p_m;
   column[2] = T(0);
   detail::ldlt_solve(L, D, column);
   J[47] = column[0];
@@ -452,32 +452,32 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T cos_q_theta = trig_cos[0];
   const T c0 = sin_q_theta;
   const T c1 = cos_q_theta;
-  const T c2 = T(5)*c0*c1*dq_psi*p_R*p_R*p_m/T(2);
+  const T c2 = (T(5)/T(2))*c0*c1*dq_psi*p_R*p_R*p_m;
   const T c3 = c1*c1;
   const T c4 = c0*c0;
-  P[0] = -T(5)*c0*c1*dq_theta*p_R*p_R*p_m/T(2);
-  P[1] = -c0*dq_phi*p_R*p_R*p_m/T(2) - c2;
-  P[2] = -c0*dq_theta*p_R*p_R*p_m/T(2);
+  P[0] = -(T(5)/T(2))*c0*c1*dq_theta*p_R*p_R*p_m;
+  P[1] = -(T(1)/T(2))*c0*dq_phi*p_R*p_R*p_m - c2;
+  P[2] = -(T(1)/T(2))*c0*dq_theta*p_R*p_R*p_m;
   Q[0] = T(0);
   Q[1] = T(0);
   Q[2] = T(0);
-  Q[3] = -T(5)*c3*dq_psi*dq_theta*p_R*p_R*p_m/T(2) + T(5)*c4*dq_psi*dq_theta*p_R*p_R*p_m/T(2) - c1*dq_phi*dq_theta*p_R*p_R*p_m/T(2);
+  Q[3] = -(T(1)/T(2))*c1*dq_phi*dq_theta*p_R*p_R*p_m - (T(5)/T(2))*c3*dq_psi*dq_theta*p_R*p_R*p_m + (T(5)/T(2))*c4*dq_psi*dq_theta*p_R*p_R*p_m;
   Q[4] = T(0);
-  P[3] = T(3)*c0*dq_phi*p_R*p_R*p_m/T(2) + c2;
+  P[3] = (T(3)/T(2))*c0*dq_phi*p_R*p_R*p_m + c2;
   P[4] = T(0);
-  P[5] = T(3)*c0*dq_psi*p_R*p_R*p_m/T(2);
+  P[5] = (T(3)/T(2))*c0*dq_psi*p_R*p_R*p_m;
   Q[5] = T(0);
   Q[6] = T(0);
   Q[7] = T(0);
-  Q[8] = T(3)*c1*dq_phi*dq_psi*p_R*p_R*p_m/T(2) + T(5)*c3*dq_psi*dq_psi*p_R*p_R*p_m/T(4) - T(5)*c4*dq_psi*dq_psi*p_R*p_R*p_m/T(4) - c0*p_R*p_g*p_m;
+  Q[8] = (T(3)/T(2))*c1*dq_phi*dq_psi*p_R*p_R*p_m + (T(5)/T(4))*c3*dq_psi*dq_psi*p_R*p_R*p_m - (T(5)/T(4))*c4*dq_psi*dq_psi*p_R*p_R*p_m - c0*p_R*p_g*p_m;
   Q[9] = T(0);
-  P[6] = -T(5)*c0*dq_theta*p_R*p_R*p_m/T(2);
-  P[7] = -T(5)*c0*dq_psi*p_R*p_R*p_m/T(2);
+  P[6] = -(T(5)/T(2))*c0*dq_theta*p_R*p_R*p_m;
+  P[7] = -(T(5)/T(2))*c0*dq_psi*p_R*p_R*p_m;
   P[8] = T(0);
   Q[10] = T(0);
   Q[11] = T(0);
   Q[12] = T(0);
-  Q[13] = -T(5)*c1*dq_psi*dq_theta*p_R*p_R*p_m/T(2);
+  Q[13] = -(T(5)/T(2))*c1*dq_psi*dq_theta*p_R*p_R*p_m;
   Q[14] = T(0);
 }
 
@@ -500,7 +500,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   const T c0 = cos_q_theta;
-  return T(3)*c0*c0*dq_psi*dq_psi*p_R*p_R*p_m/T(4) + T(3)*c0*dq_phi*dq_psi*p_R*p_R*p_m/T(2) + T(3)*dq_phi*dq_phi*p_R*p_R*p_m/T(4) + T(5)*dq_theta*dq_theta*p_R*p_R*p_m/T(8) + dq_psi*dq_psi*p_R*p_R*p_m*sin_q_theta*sin_q_theta/T(8);
+  return (T(1)/T(8))*dq_psi*dq_psi*p_R*p_R*p_m*sin_q_theta*sin_q_theta + (T(3)/T(2))*c0*dq_phi*dq_psi*p_R*p_R*p_m + (T(3)/T(4))*c0*c0*dq_psi*dq_psi*p_R*p_R*p_m + (T(3)/T(4))*dq_phi*dq_phi*p_R*p_R*p_m + (T(5)/T(8))*dq_theta*dq_theta*p_R*p_R*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -562,7 +562,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   const T c0 = cos_q_theta;
-  out[0] = T(3)*c0*dq_phi*dq_psi*p_R*p_R*p_m/T(2) + T(3)*dq_phi*dq_phi*p_R*p_R*p_m/T(4) + T(5)*c0*c0*dq_psi*dq_psi*p_R*p_R*p_m/T(8) + T(5)*dq_theta*dq_theta*p_R*p_R*p_m/T(8) + dq_psi*dq_psi*p_R*p_R*p_m/T(8) + p_R*p_g*p_m*sin_q_theta;
+  out[0] = (T(1)/T(8))*dq_psi*dq_psi*p_R*p_R*p_m + (T(3)/T(2))*c0*dq_phi*dq_psi*p_R*p_R*p_m + (T(3)/T(4))*dq_phi*dq_phi*p_R*p_R*p_m + (T(5)/T(8))*c0*c0*dq_psi*dq_psi*p_R*p_R*p_m + (T(5)/T(8))*dq_theta*dq_theta*p_R*p_R*p_m + p_R*p_g*p_m*sin_q_theta;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 2x5, row-major.

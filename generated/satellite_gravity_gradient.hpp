@@ -596,7 +596,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T c10 = c6*c6;
   const T c11 = c7*c7;
   const T c12 = c9*c9;
-  return c0*c1*c3*c5*c9*dq_phi*p_Omega - c0*c1*c3*c5*dq_phi*dq_theta - c0*c1*c5*c6*c7*c9*p_Omega*p_Omega + c0*c1*c5*c6*c7*dq_theta*p_Omega + c10*c11*c2*p_B*p_Omega*p_Omega/T(2) + c10*c11*c8*p_A*p_Omega*p_Omega/T(2) + c10*dq_phi*dq_phi*p_C/T(2) + c11*c4*p_C*p_Omega*p_Omega/T(2) + c12*c2*p_A*p_Omega*p_Omega/T(2) + c12*c8*p_B*p_Omega*p_Omega/T(2) - c2*c3*c6*c7*dq_phi*p_B*p_Omega + c2*c4*dq_phi*dq_phi*p_B/T(2) - c2*c9*dq_theta*p_A*p_Omega + c2*dq_theta*dq_theta*p_A/T(2) - c3*c6*c7*c8*dq_phi*p_A*p_Omega + c3*c6*c7*dq_phi*p_C*p_Omega + c3*c7*dq_psi*p_C*p_Omega + c4*c8*dq_phi*dq_phi*p_A/T(2) + c6*dq_phi*dq_psi*p_C - c8*c9*dq_theta*p_B*p_Omega + c8*dq_theta*dq_theta*p_B/T(2) + dq_psi*dq_psi*p_C/T(2);
+  return (T(1)/T(2))*c10*c11*c2*p_B*p_Omega*p_Omega + (T(1)/T(2))*c10*c11*c8*p_A*p_Omega*p_Omega + (T(1)/T(2))*c10*dq_phi*dq_phi*p_C + (T(1)/T(2))*c11*c4*p_C*p_Omega*p_Omega + (T(1)/T(2))*c12*c2*p_A*p_Omega*p_Omega + (T(1)/T(2))*c12*c8*p_B*p_Omega*p_Omega + (T(1)/T(2))*c2*c4*dq_phi*dq_phi*p_B + (T(1)/T(2))*c2*dq_theta*dq_theta*p_A + (T(1)/T(2))*c4*c8*dq_phi*dq_phi*p_A + (T(1)/T(2))*c8*dq_theta*dq_theta*p_B + (T(1)/T(2))*dq_psi*dq_psi*p_C + c0*c1*c3*c5*c9*dq_phi*p_Omega - c0*c1*c3*c5*dq_phi*dq_theta - c0*c1*c5*c6*c7*c9*p_Omega*p_Omega + c0*c1*c5*c6*c7*dq_theta*p_Omega - c2*c3*c6*c7*dq_phi*p_B*p_Omega - c2*c9*dq_theta*p_A*p_Omega - c3*c6*c7*c8*dq_phi*p_A*p_Omega + c3*c6*c7*dq_phi*p_C*p_Omega + c3*c7*dq_psi*p_C*p_Omega + c6*dq_phi*dq_psi*p_C - c8*c9*dq_theta*p_B*p_Omega;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -632,7 +632,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T c7 = c6*c6;
   const T c8 = sin_q_psi;
   const T c9 = c8*c8;
-  return -T(3)*(p_A - p_B)*c0*c2*c4*c6*c8*p_Omega*p_Omega + T(3)*c1*c3*c5*p_A*p_Omega*p_Omega/T(2) + T(3)*c1*c5*c9*p_B*p_Omega*p_Omega/T(2) + T(3)*c3*c7*p_B*p_Omega*p_Omega/T(2) + T(3)*c5*cos_q_theta*cos_q_theta*p_C*p_Omega*p_Omega/T(2) + T(3)*c7*c9*p_A*p_Omega*p_Omega/T(2);
+  return (T(3)/T(2))*c1*c3*c5*p_A*p_Omega*p_Omega + (T(3)/T(2))*c1*c5*c9*p_B*p_Omega*p_Omega + (T(3)/T(2))*c3*c7*p_B*p_Omega*p_Omega + (T(3)/T(2))*c5*cos_q_theta*cos_q_theta*p_C*p_Omega*p_Omega + (T(3)/T(2))*c7*c9*p_A*p_Omega*p_Omega - T(3)*(p_A - p_B)*c0*c2*c4*c6*c8*p_Omega*p_Omega;
 }
 
 /// The model's [outputs], in output_names order. y: 1.
@@ -696,7 +696,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T c10 = c9*c9;
   const T c11 = sin_q_phi;
   const T c12 = c11*c11;
-  out[0] = T(3)*c10*c6*p_C*p_Omega*p_Omega/T(2) + T(3)*c12*c4*p_B*p_Omega*p_Omega/T(2) + T(3)*c12*c8*p_A*p_Omega*p_Omega/T(2) + T(3)*c2*c4*c6*p_A*p_Omega*p_Omega/T(2) + T(3)*c2*c6*c8*p_B*p_Omega*p_Omega/T(2) + T(4)*c0*c1*c11*c3*c5*c7*p_Omega*p_Omega - c0*c3*c7*c9*dq_phi*dq_theta + c1*dq_phi*dq_psi*p_C - c10*c12*p_C*p_Omega*p_Omega/T(2) + c10*c4*dq_phi*dq_phi*p_A/T(2) + c10*c8*dq_phi*dq_phi*p_B/T(2) - c12*c2*c4*p_A*p_Omega*p_Omega/T(2) - c12*c2*c8*p_B*p_Omega*p_Omega/T(2) + c2*dq_phi*dq_phi*p_C/T(2) - c4*c6*p_B*p_Omega*p_Omega/T(2) + c4*dq_theta*dq_theta*p_B/T(2) - c6*c8*p_A*p_Omega*p_Omega/T(2) + c8*dq_theta*dq_theta*p_A/T(2) + dq_psi*dq_psi*p_C/T(2);
+  out[0] = -(T(1)/T(2))*c10*c12*p_C*p_Omega*p_Omega + (T(1)/T(2))*c10*c4*dq_phi*dq_phi*p_A + (T(1)/T(2))*c10*c8*dq_phi*dq_phi*p_B - (T(1)/T(2))*c12*c2*c4*p_A*p_Omega*p_Omega - (T(1)/T(2))*c12*c2*c8*p_B*p_Omega*p_Omega + (T(1)/T(2))*c2*dq_phi*dq_phi*p_C - (T(1)/T(2))*c4*c6*p_B*p_Omega*p_Omega + (T(1)/T(2))*c4*dq_theta*dq_theta*p_B - (T(1)/T(2))*c6*c8*p_A*p_Omega*p_Omega + (T(1)/T(2))*c8*dq_theta*dq_theta*p_A + (T(1)/T(2))*dq_psi*dq_psi*p_C + (T(3)/T(2))*c10*c6*p_C*p_Omega*p_Omega + (T(3)/T(2))*c12*c4*p_B*p_Omega*p_Omega + (T(3)/T(2))*c12*c8*p_A*p_Omega*p_Omega + (T(3)/T(2))*c2*c4*c6*p_A*p_Omega*p_Omega + (T(3)/T(2))*c2*c6*c8*p_B*p_Omega*p_Omega + T(4)*c0*c1*c11*c3*c5*c7*p_Omega*p_Omega - c0*c3*c7*c9*dq_phi*dq_theta + c1*dq_phi*dq_psi*p_C;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

@@ -254,12 +254,12 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T cos_q_phi = trig_cos[0];
   const T sin_q_beta = trig_sin[1];
   const T cos_q_beta = trig_cos[1];
-  M[0] = (T(3)*p_m2 + p_m1)*p_r*p_r/T(3);
-  M[1] = (cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r/T(2);
+  M[0] = (T(1)/T(3))*(T(3)*p_m2 + p_m1)*p_r*p_r;
+  M[1] = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
   M[3] = M[1];
   M[2] = T(0);
   M[6] = M[2];
-  M[4] = p_l*p_l*p_m2/T(3);
+  M[4] = (T(1)/T(3))*p_l*p_l*p_m2;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_m3;
@@ -293,8 +293,8 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c0 = cos_q_phi;
   const T c1 = cos_q_beta;
   const T c2 = c0*sin_q_beta - c1*sin_q_phi;
-  f[0] = -(T(2)*p_m2 + p_m1)*c0*p_g*p_r/T(2) + c2*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
-  f[1] = -c1*p_g*p_l*p_m2/T(2) - c2*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
+  f[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*c0*p_g*p_r + (T(1)/T(2))*c2*dq_beta*dq_beta*p_l*p_m2*p_r;
+  f[1] = -(T(1)/T(2))*c1*p_g*p_l*p_m2 - (T(1)/T(2))*c2*dq_phi*dq_phi*p_l*p_m2*p_r;
 }
 
 /// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' from the augmented system
@@ -349,18 +349,18 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c3 = cos_q_phi;
   const T c4 = -c0*c1 + c2*c3;
   const T c5 = c0*c2 + c1*c3;
-  const T c6 = -c5*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
+  const T c6 = -(T(1)/T(2))*c5*dq_beta*dq_beta*p_l*p_m2*p_r;
   P[0] = T(0);
   P[1] = -c4*dq_beta*p_l*p_m2*p_r;
   P[2] = T(0);
-  Q[0] = -(T(2)*p_m2 + p_m1)*c0*p_g*p_r/T(2) - c6;
+  Q[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*c0*p_g*p_r - c6;
   Q[1] = c6;
   Q[2] = T(0);
   P[3] = c4*dq_phi*p_l*p_m2*p_r;
   P[4] = T(0);
   P[5] = T(0);
-  Q[3] = -c5*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
-  Q[4] = -c2*p_g*p_l*p_m2/T(2) + c5*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
+  Q[3] = -(T(1)/T(2))*c5*dq_phi*dq_phi*p_l*p_m2*p_r;
+  Q[4] = -(T(1)/T(2))*c2*p_g*p_l*p_m2 + (T(1)/T(2))*c5*dq_phi*dq_phi*p_l*p_m2*p_r;
   Q[5] = T(0);
   P[6] = T(0);
   P[7] = T(0);
@@ -394,7 +394,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T cos_q_phi = trig_cos[0];
   const T sin_q_beta = trig_sin[1];
   const T cos_q_beta = trig_cos[1];
-  return (T(3)*p_m2 + p_m1)*dq_phi*dq_phi*p_r*p_r/T(6) + (cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*dq_beta*dq_phi*p_l*p_m2*p_r/T(2) + dq_beta*dq_beta*p_l*p_l*p_m2/T(6) + dq_x*dq_x*p_m3/T(2);
+  return (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*dq_beta*dq_phi*p_l*p_m2*p_r + (T(1)/T(2))*dq_x*dq_x*p_m3 + (T(1)/T(6))*(T(3)*p_m2 + p_m1)*dq_phi*dq_phi*p_r*p_r + (T(1)/T(6))*dq_beta*dq_beta*p_l*p_l*p_m2;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -416,7 +416,7 @@ T potential_energy(T t, const T* x, const T* p) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_phi = trig_sin[0];
   const T sin_q_beta = trig_sin[1];
-  return (T(2)*p_m2 + p_m1)*p_g*p_r*sin_q_phi/T(2) + p_g*p_l*p_m2*sin_q_beta/T(2);
+  return (T(1)/T(2))*(T(2)*p_m2 + p_m1)*p_g*p_r*sin_q_phi + (T(1)/T(2))*p_g*p_l*p_m2*sin_q_beta;
 }
 
 /// The model's [outputs], in output_names order. y: 0.
@@ -534,18 +534,18 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   const T c5 = c2*p_r;
   const T c6 = c3*p_l;
   T M[9];
-  M[0] = (T(3)*p_m2 + p_m1)*p_r*p_r/T(3);
-  M[1] = (c0*c1 + c2*c3)*p_l*p_m2*p_r/T(2);
+  M[0] = (T(1)/T(3))*(T(3)*p_m2 + p_m1)*p_r*p_r;
+  M[1] = (T(1)/T(2))*(c0*c1 + c2*c3)*p_l*p_m2*p_r;
   M[3] = M[1];
   M[2] = T(0);
   M[6] = M[2];
-  M[4] = p_l*p_l*p_m2/T(3);
+  M[4] = (T(1)/T(3))*p_l*p_l*p_m2;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_m3;
   T ddq[3];
-  ddq[0] = -(T(2)*p_m2 + p_m1)*c2*p_g*p_r/T(2) + c4*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
-  ddq[1] = -c3*p_g*p_l*p_m2/T(2) - c4*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
+  ddq[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*c2*p_g*p_r + (T(1)/T(2))*c4*dq_beta*dq_beta*p_l*p_m2*p_r;
+  ddq[1] = -(T(1)/T(2))*c3*p_g*p_l*p_m2 - (T(1)/T(2))*c4*dq_phi*dq_phi*p_l*p_m2*p_r;
   ddq[2] = T(0);
   T C[6];
   C[0] = -c1*p_r;
@@ -624,18 +624,18 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   const T c5 = c2*p_r;
   const T c6 = c3*p_l;
   T M[9];
-  M[0] = (T(3)*p_m2 + p_m1)*p_r*p_r/T(3);
-  M[1] = (c0*c1 + c2*c3)*p_l*p_m2*p_r/T(2);
+  M[0] = (T(1)/T(3))*(T(3)*p_m2 + p_m1)*p_r*p_r;
+  M[1] = (T(1)/T(2))*(c0*c1 + c2*c3)*p_l*p_m2*p_r;
   M[3] = M[1];
   M[2] = T(0);
   M[6] = M[2];
-  M[4] = p_l*p_l*p_m2/T(3);
+  M[4] = (T(1)/T(3))*p_l*p_l*p_m2;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_m3;
   T ddq[3];
-  ddq[0] = -(T(2)*p_m2 + p_m1)*c2*p_g*p_r/T(2) + c4*dq_beta*dq_beta*p_l*p_m2*p_r/T(2);
-  ddq[1] = -c3*p_g*p_l*p_m2/T(2) - c4*dq_phi*dq_phi*p_l*p_m2*p_r/T(2);
+  ddq[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*c2*p_g*p_r + (T(1)/T(2))*c4*dq_beta*dq_beta*p_l*p_m2*p_r;
+  ddq[1] = -(T(1)/T(2))*c3*p_g*p_l*p_m2 - (T(1)/T(2))*c4*dq_phi*dq_phi*p_l*p_m2*p_r;
   ddq[2] = T(0);
   T C[6];
   C[0] = -c1*p_r;
@@ -666,16 +666,16 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   T column[3];
   T column_right[2];
   T column_lambda[2];
-  column[0] = -(T(2)*p_m2 + p_m1)*c2_d0*p_g*p_r/T(2) - c1_d0*lambda[0]*p_r + c4_d0*dq_beta*dq_beta*p_l*p_m2*p_r/T(2) + c5_d0*lambda[1] - c7*ddq[1]/T(2);
-  column[1] = -c4_d0*dq_phi*dq_phi*p_l*p_m2*p_r/T(2) - c7*ddq[0]/T(2);
+  column[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*c2_d0*p_g*p_r + (T(1)/T(2))*c4_d0*dq_beta*dq_beta*p_l*p_m2*p_r - (T(1)/T(2))*c7*ddq[1] - c1_d0*lambda[0]*p_r + c5_d0*lambda[1];
+  column[1] = -(T(1)/T(2))*c4_d0*dq_phi*dq_phi*p_l*p_m2*p_r - (T(1)/T(2))*c7*ddq[0];
   column[2] = T(0);
   column_right[0] = T(2)*alpha*c1_d0*dq_phi*p_r - beta*beta*c5_d0 + c1_d0*ddq[0]*p_r + c2_d0*dq_phi*dq_phi*p_r;
   column_right[1] = -(beta*beta*p_r - dq_phi*dq_phi*p_r)*c1_d0 - T(2)*alpha*c2_d0*dq_phi*p_r - c5_d0*ddq[0];
   solver.solve(column, column_right, column_lambda);
   if (J)
     for (std::size_t i = 0; i < 3; ++i) J[(3 + i) * 6 + 0] = column[i];
-  column[0] = c4_d1*dq_beta*dq_beta*p_l*p_m2*p_r/T(2) - c8*ddq[1]/T(2);
-  column[1] = -c0_d1*lambda[0]*p_l - c3_d1*p_g*p_l*p_m2/T(2) - c4_d1*dq_phi*dq_phi*p_l*p_m2*p_r/T(2) + c6_d1*lambda[1] - c8*ddq[0]/T(2);
+  column[0] = (T(1)/T(2))*c4_d1*dq_beta*dq_beta*p_l*p_m2*p_r - (T(1)/T(2))*c8*ddq[1];
+  column[1] = -(T(1)/T(2))*c3_d1*p_g*p_l*p_m2 - (T(1)/T(2))*c4_d1*dq_phi*dq_phi*p_l*p_m2*p_r - (T(1)/T(2))*c8*ddq[0] - c0_d1*lambda[0]*p_l + c6_d1*lambda[1];
   column[2] = T(0);
   column_right[0] = T(2)*alpha*c0_d1*dq_beta*p_l - beta*beta*c6_d1 + c0_d1*ddq[1]*p_l + c3_d1*dq_beta*dq_beta*p_l;
   column_right[1] = -(beta*beta*p_l - dq_beta*dq_beta*p_l)*c0_d1 - T(2)*alpha*c3_d1*dq_beta*p_l - c6_d1*ddq[1];

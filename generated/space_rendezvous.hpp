@@ -308,7 +308,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_z = x[5];
   const T p_m = p[0];
   const T p_n = p[1];
-  return dq_x*dq_x*p_m/T(2) - dq_x*p_m*p_n*q_y + dq_y*dq_y*p_m/T(2) + dq_y*p_m*p_n*q_x + dq_z*dq_z*p_m/T(2) + p_m*p_n*p_n*q_x*q_x/T(2) + p_m*p_n*p_n*q_y*q_y/T(2);
+  return (T(1)/T(2))*dq_x*dq_x*p_m + (T(1)/T(2))*dq_y*dq_y*p_m + (T(1)/T(2))*dq_z*dq_z*p_m + (T(1)/T(2))*p_m*p_n*p_n*q_x*q_x + (T(1)/T(2))*p_m*p_n*p_n*q_y*q_y - dq_x*p_m*p_n*q_y + dq_y*p_m*p_n*q_x;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -320,7 +320,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T q_z = x[2];
   const T p_m = p[0];
   const T p_n = p[1];
-  return -p_m*p_n*p_n*q_x*q_x + p_m*p_n*p_n*q_y*q_y/T(2) + p_m*p_n*p_n*q_z*q_z/T(2);
+  return (T(1)/T(2))*p_m*p_n*p_n*q_y*q_y + (T(1)/T(2))*p_m*p_n*p_n*q_z*q_z - p_m*p_n*p_n*q_x*q_x;
 }
 
 /// The model's [outputs], in output_names order. y: 0.
@@ -345,7 +345,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T dq_z = x[5];
   const T p_m = p[0];
   const T p_n = p[1];
-  out[0] = -T(3)*p_m*p_n*p_n*q_x*q_x/T(2) + dq_x*dq_x*p_m/T(2) + dq_y*dq_y*p_m/T(2) + dq_z*dq_z*p_m/T(2) + p_m*p_n*p_n*q_z*q_z/T(2);
+  out[0] = (T(1)/T(2))*dq_x*dq_x*p_m + (T(1)/T(2))*dq_y*dq_y*p_m + (T(1)/T(2))*dq_z*dq_z*p_m + (T(1)/T(2))*p_m*p_n*p_n*q_z*q_z - (T(3)/T(2))*p_m*p_n*p_n*q_x*q_x;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

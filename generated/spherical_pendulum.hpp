@@ -370,7 +370,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
-  return dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta*sin_q_theta/T(2) + dq_theta*dq_theta*p_l*p_l*p_m/T(2);
+  return (T(1)/T(2))*dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta*sin_q_theta + (T(1)/T(2))*dq_theta*dq_theta*p_l*p_l*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

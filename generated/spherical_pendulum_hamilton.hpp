@@ -351,7 +351,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
-  return s_p_phi*s_p_phi/(T(2)*p_l*p_l*p_m*sin_q_theta*sin_q_theta) + s_p_theta*s_p_theta/(T(2)*p_l*p_l*p_m);
+  return (T(1)/T(2))*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta) + (T(1)/T(2))*s_p_theta*s_p_theta/(p_l*p_l*p_m);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

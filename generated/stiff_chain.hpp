@@ -329,7 +329,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T dq_x2 = x[4];
   const T dq_x3 = x[5];
   const T p_m = p[0];
-  return dq_x1*dq_x1*p_m/T(2) + dq_x2*dq_x2*p_m/T(2) + dq_x3*dq_x3*p_m/T(2);
+  return (T(1)/T(2))*dq_x1*dq_x1*p_m + (T(1)/T(2))*dq_x2*dq_x2*p_m + (T(1)/T(2))*dq_x3*dq_x3*p_m;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -342,7 +342,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T p_k = p[1];
   const T p_K = p[2];
   const T c0 = p_K + p_k;
-  return (T(2)*p_k + p_K)*q_x2*q_x2/T(2) - c0*q_x2*q_x3 + c0*q_x3*q_x3/T(2) + p_k*q_x1*q_x1 - p_k*q_x1*q_x2;
+  return (T(1)/T(2))*(T(2)*p_k + p_K)*q_x2*q_x2 + (T(1)/T(2))*c0*q_x3*q_x3 - c0*q_x2*q_x3 + p_k*q_x1*q_x1 - p_k*q_x1*q_x2;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

@@ -326,7 +326,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T p_M11 = p[2];
   const T p_M12 = p[3];
   const T p_M22 = p[4];
-  return dq_delta*dq_delta*p_M22/T(2) + dq_delta*dq_phi*p_M12 + dq_phi*dq_phi*p_M11/T(2);
+  return (T(1)/T(2))*dq_delta*dq_delta*p_M22 + (T(1)/T(2))*dq_phi*dq_phi*p_M11 + dq_delta*dq_phi*p_M12;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -339,7 +339,7 @@ T potential_energy(T t, const T* x, const T* p) {
   const T p_K0_11 = p[8];
   const T p_K0_12 = p[9];
   const T p_K0_22 = p[10];
-  return p_K0_11*p_g*q_phi*q_phi/T(2) + p_K0_12*p_g*q_delta*q_phi + p_K0_22*p_g*q_delta*q_delta/T(2);
+  return (T(1)/T(2))*p_K0_11*p_g*q_phi*q_phi + (T(1)/T(2))*p_K0_22*p_g*q_delta*q_delta + p_K0_12*p_g*q_delta*q_phi;
 }
 
 /// The model's [outputs], in output_names order. y: 0.

@@ -95,6 +95,11 @@ struct Equations {
     articulated_intermediates.clear(), articulated_accelerations.clear();
     articulated_inverse_dynamics = TreeInverseDynamics{};
   }
+  /// A tree of joints (spatial/joint_tree_dynamics.hpp): for each coordinate, the coordinate of the
+  /// nearest joint above its own (−1 at a root), when every one is above those it carries; M_ij
+  /// is then zero unless one of i, j is above the other, and the header factors M from the leaves
+  /// without fill-in (emit/cpp_ldlt.hpp). Empty otherwise.
+  std::vector<int> coordinate_parents;
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;

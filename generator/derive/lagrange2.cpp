@@ -159,6 +159,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.acceleration_symbols = mech.acceleration_symbols;
   e.acceleration_intermediates = mech.acceleration_intermediates;
   e.inverse_dynamics = mech.inverse_dynamics;
+  e.coordinate_parents = mech.coordinate_parents;
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression, mech.motion)});

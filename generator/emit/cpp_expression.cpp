@@ -123,8 +123,10 @@ class CppPrinter {
     if (coefficient != 1) {
       if (coefficient.is_rational() && coefficient.denom() != 1 && is_exact_integer_literal(coefficient.numer()) &&
           is_exact_integer_literal(coefficient.denom())) {
-        if (coefficient.numer() != 1) numerator.insert(numerator.begin(), "T(" + number_text(coefficient.numer()) + ")");
-        denominator.insert(denominator.begin(), "T(" + number_text(coefficient.denom()) + ")");
+        // one factor (T(p)/T(q)), which the compiler folds into the correctly rounded constant: a
+        // trailing /T(q) is a division on every call (x/c becomes x*(1/c) only where 1/c is exact)
+        std::string fraction = "T(" + number_text(coefficient.numer()) + ")/T(" + number_text(coefficient.denom()) + ")";
+        numerator.insert(numerator.begin(), numerator.empty() && denominator.empty() ? fraction : "(" + fraction + ")");
       } else {
         numerator.insert(numerator.begin(), number(coefficient).text);
       }

@@ -62,6 +62,33 @@ LdltCode loops(std::size_t n) {
 
 }  // namespace
 
+LdltCode tree_ldlt_code(const std::vector<int>& parent) {
+  std::size_t n = parent.size();
+  auto above = [&](std::size_t i) {
+    std::vector<std::size_t> chain;
+    for (int j = parent[i]; j >= 0; j = parent[std::size_t(j)]) chain.push_back(std::size_t(j));
+    return chain;
+  };
+  LdltCode c;
+  for (std::size_t k = 0; k < n; ++k) {
+    c.factor += fmt::format("  D[{}] = M[{}];\n", k, k * n + k);
+    for (std::size_t i : above(k)) c.factor += fmt::format("  L[{0}] = M[{0}];\n", k * n + i);
+  }
+  // for k from the leaves: a = M_ki / M_kk, M_ij −= a M_kj for j = i and above, M_ki = a
+  for (std::size_t k = n; k-- > 0;)
+    for (std::size_t i : above(k)) {
+      std::string body = fmt::format("    const T a = L[{}]/D[{}];\n    D[{}] = D[{}] - a*L[{}];\n", k * n + i, k, i, i, k * n + i);
+      for (std::size_t j : above(i)) body += fmt::format("    L[{0}] = L[{0}] - a*L[{1}];\n", i * n + j, k * n + j);
+      c.factor += "  {\n" + body + fmt::format("    L[{}] = a;\n  }}\n", k * n + i);
+    }
+  for (std::size_t k = n; k-- > 0;)
+    for (std::size_t i : above(k)) c.solve += fmt::format("  b[{0}] = b[{0}] - L[{1}]*b[{2}];\n", i, k * n + i, k);
+  for (std::size_t i = 0; i < n; ++i) c.solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j : above(i)) c.solve += fmt::format("  b[{0}] = b[{0}] - L[{1}]*b[{2}];\n", i, i * n + j, j);
+  return c;
+}
+
 LdltCode ldlt_code(std::size_t n) { return n <= unrolled_up_to ? unrolled(n) : loops(n); }
 
 }  // namespace eomgen

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace eomgen {
 
@@ -16,5 +17,12 @@ struct LdltCode {
 /// D_j = M_jj − Σ_{k<j} L_jk² D_k,  L_ij = (M_ij − Σ_{k<j} L_ik L_jk D_k) / D_j, then L D Lᵀ x = b
 /// forward, scaled and backward, for an n×n row-major M.
 LdltCode ldlt_code(std::size_t n);
+
+/// For the M of a tree (Featherstone's LTDL, RBDA §6.5): with parent[i] < i the coordinate above
+/// i (−1 at a root) and M_ij = 0 unless one of i, j is above the other, M = Lᵀ D L factored from
+/// the leaves, which fills in nothing: L_ij ≠ 0 only for j above i, O(n·depth) operations where
+/// the dense factor takes n³/6. The same functions: ldlt_factor writes L and D, ldlt_solve
+/// solves Lᵀ D L x = b (from the leaves up, scaled, then down).
+LdltCode tree_ldlt_code(const std::vector<int>& parent);
 
 }  // namespace eomgen

@@ -136,6 +136,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     tau = tree.inverse_dynamics;
     m.composite_mass_matrix = tree.mass_matrix;
     m.tree_bias_forces = tree.bias_forces;
+    m.coordinate_parents = tree.coordinate_parents;
     m.potential_gradient = frames.gradient(model.potential);
   } else {
     tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);

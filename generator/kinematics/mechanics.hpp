@@ -57,6 +57,7 @@ struct Mechanics {
   /// −τ(q, q̇, q̈ = 0) with gravity, from the Newton–Euler recursion in the frames' coordinates;
   /// potential_gradient is then that of [energy] potential alone.
   std::optional<std::vector<GiNaC::ex>> tree_bias_forces;
+  std::vector<int> coordinate_parents;  // of the joint tree (Equations::coordinate_parents)
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -73,24 +73,31 @@ class Tree {
       const Vector3& acc_p = p < 0 ? minus_g : acc[std::size_t(p)];
       ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
       ex qdd = l.coordinate < 0 ? ex(0) : ddq[std::size_t(l.coordinate)];
-      Vector3 carried = times(l.E, wp, true);
+      const Vector3& carried = carried_[i];
       Vector3 al = times(l.E, alpha_p, true) + scaled(qdd, l.e) + scaled(qd, cross(carried, l.e));
-      Vector3 a = times(l.E, acc_p + cross(alpha_p, l.r) + cross(wp, cross(wp, l.r)), true) +
-                  scaled(2 * qd, cross(carried, l.u)) + scaled(qdd, l.u) + scaled(qd * qd, cross(l.e, l.u));
+      // the acceleration of the parent's point at the origin, named before it is turned: the
+      // products of E with each of its terms multiplied out would cost three times as much
+      Vector3 at_origin = p < 0 ? acc_p : named(out, i, "tx" + tag, acc_p + cross(alpha_p, l.r) + cross(wp, cross(wp, l.r)));
+      Vector3 a = times(l.E, at_origin, true) + scaled(2 * qd, cross(carried, l.u)) + scaled(qdd, l.u) +
+                  scaled(qd * qd, cross(l.e, l.u));
       alpha[i] = named(out, i, "tal" + tag, al);
       acc[i] = named(out, i, "ta" + tag, a);
     }
     std::vector<ex> tau(s_.coordinates.size(), 0);
     for (std::size_t i = links; i-- > 0;) {
       Vector3 F = zero, N = zero;
-      for (const Body& b : bodies_[i]) {
-        Vector3 Fb = scaled(b.mass, acc[i] + cross(alpha[i], b.center) + cross(omega_[i], cross(omega_[i], b.center)));
+      for (std::size_t k = 0; k < bodies_[i].size(); ++k) {
+        const Body& b = bodies_[i][k];
+        Vector3 Fb = named(out, i, fmt::format("tB{}F{}", k, tag),
+                           scaled(b.mass, acc[i] + cross(alpha[i], b.center) + cross(omega_[i], cross(omega_[i], b.center))));
         F = F + Fb;
-        N = N + euler_moment(b.inertia, omega_[i], alpha[i]) + cross(b.center, Fb);
+        // I ω named first: ω × (I ω) multiplied out costs three times as much
+        Vector3 spin = named(out, i, fmt::format("tB{}Iw{}", k, tag), times(b.inertia, omega_[i]));
+        N = N + times(b.inertia, alpha[i]) + cross(omega_[i], spin) + cross(b.center, Fb);
       }
       for (std::size_t j = i + 1; j < links; ++j) {
         if (model_.frame_links[j].parent != int(i)) continue;
-        Vector3 Fj = times(links_[j].E, force[j]);
+        Vector3 Fj = named(out, j, "tFp" + tag, times(links_[j].E, force[j]));
         F = F + Fj;
         N = N + times(links_[j].E, moment[j]) + cross(links_[j].r, Fj);
       }
@@ -119,10 +126,18 @@ class Tree {
       for (std::size_t j = i + 1; j < links; ++j) {
         if (model_.frame_links[j].parent != int(i)) continue;
         const Link& c = links_[j];
-        Vector3 hj = times(c.E, first[j]);
+        Vector3 hj = named(out_, j, "tEh", times(c.E, first[j]));
         m += mass[j];
         h = h + scaled(mass[j], c.r) + hj;
-        J = J.add(c.E.mul(inertia[j]).mul(c.E.transpose())).add(shifted(mass[j], c.r, hj));
+        GiNaC::matrix EJ = c.E.mul(inertia[j]), turned(3, 3);
+        for (unsigned a = 0; a < 3; ++a)
+          for (unsigned b = 0; b < 3; ++b)
+            EJ(a, b) = intermediate(out_, fmt::format("{}.tEJ_{}{}", name(j), axis_names[a], axis_names[b]),
+                                    fmt::format("k_{}_tEJ{}{}", cpp(j), axis_names[a], axis_names[b]), EJ(a, b).expand());
+        for (unsigned a = 0; a < 3; ++a)
+          for (unsigned b = 0; b < 3; ++b)
+            for (unsigned k = 0; k < 3; ++k) turned(a, b) += EJ(a, k) * c.E(b, k);
+        J = J.add(turned).add(shifted(mass[j], c.r, hj));
       }
       mass[i] = intermediate(out_, fmt::format("{}.tm", name(i)), fmt::format("k_{}_tm", cpp(i)), m.expand());
       first[i] = named(out_, i, "th", h);
@@ -138,8 +153,8 @@ class Tree {
       const Link& l = links_[i];
       if (l.coordinate < 0) continue;
       unsigned k = unsigned(l.coordinate);
-      Vector3 p = scaled(mass[i], l.u) + cross(l.e, first[i]);
-      Vector3 L = times(inertia[i], l.e) + cross(first[i], l.u);
+      Vector3 p = named(out_, i, fmt::format("tp{}", k), scaled(mass[i], l.u) + cross(l.e, first[i]));
+      Vector3 L = named(out_, i, fmt::format("tL{}", k), times(inertia[i], l.e) + cross(first[i], l.u));
       M(k, k) = (dot(l.e, L) + dot(l.u, p)).expand();
       for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
         const Link& c = links_[std::size_t(at)];
@@ -190,7 +205,8 @@ class Tree {
     int p = model_.frame_links[i].parent;
     Vector3 wp = p < 0 ? Vector3{0, 0, 0} : omega_[std::size_t(p)];
     ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
-    omega_.push_back(named(out_, i, "tw", times(l.E, wp, true) + scaled(qd, l.e)));
+    carried_.push_back(named(out_, i, "twp", times(l.E, wp, true)));
+    omega_.push_back(named(out_, i, "tw", carried_.back() + scaled(qd, l.e)));
     links_.push_back(l);
   }
 
@@ -222,7 +238,24 @@ class Tree {
   std::vector<std::vector<Body>> bodies_;
   std::vector<Link> links_;
   std::vector<Vector3> omega_;
+  std::vector<Vector3> carried_;  // the parent's ω in the link's coordinates
 };
+
+// the coordinate of the nearest joint above each coordinate's own; empty unless every one is
+// above (numbered before) those it carries
+std::vector<int> coordinate_parents(const Model& model) {
+  std::vector<int> parents(model.symbols.coordinates.size(), -1);
+  for (const FrameLink& l : model.frame_links) {
+    if (l.joint->coordinate < 0) continue;
+    int above = l.parent;
+    while (above >= 0 && model.frame_links[std::size_t(above)].joint->coordinate < 0)
+      above = model.frame_links[std::size_t(above)].parent;
+    int parent = above < 0 ? -1 : model.frame_links[std::size_t(above)].joint->coordinate;
+    if (parent >= l.joint->coordinate) return {};
+    parents[std::size_t(l.joint->coordinate)] = parent;
+  }
+  return parents;
+}
 
 }  // namespace
 
@@ -257,6 +290,7 @@ JointTreeDynamics joint_tree_dynamics(const Model& model, const std::vector<GiNa
   for (ex& f : d.bias_forces) f = -f;
   d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
   d.mass_matrix = tree.mass_matrix();
+  d.coordinate_parents = coordinate_parents(model);
   return d;
 }
 

@@ -6,8 +6,11 @@ where tests/crosscheck/mujoco_oracle_test.cpp checks that both give the same qac
 size, the time `eomgen generate` takes, and g++ -O2 of rhs and jacobian_state.
 
 Robots (written here): models/measured_arm.toml (3 hinges, the Panda's first links'
-layout, measured inertias) and models/oblique_tree.toml (5 joints, branched, oblique
-axes through offset anchors, a slide, a fixed frame). Prints a Markdown table.
+layout, measured inertias, turned by rot_z(q): the frame recursion), models/oblique_tree.toml
+(5 joints, branched, oblique axes through offset anchors, a slide, a fixed frame), and
+tests/crosscheck/models/ (robot_models.py): seven_joint_arm (a Panda's layout) and
+branched_tree (21 oblique hinges in a humanoid's branching; its jacobian_state, 1.7 MB of
+code, is left out of the build). Prints a Markdown table.
 
 Usage: tree_benchmark.py EOMGEN [--quick]   (exit 77 without a C++ compiler or MuJoCo)
 """
@@ -21,7 +24,13 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-ROBOTS = ("measured_arm", "oblique_tree")
+ROBOTS = ("measured_arm", "oblique_tree", "seven_joint_arm", "branched_tree")
+WITHOUT_JACOBIAN = ("branched_tree",)
+
+
+def model_file(name):
+    path = os.path.join(ROOT, "models", f"{name}.toml")
+    return path if os.path.exists(path) else os.path.join(ROOT, "tests", "crosscheck", "models", f"{name}.toml")
 
 
 def run(command):
@@ -33,11 +42,12 @@ def run(command):
 
 def measure(eomgen, name, work):
     start = time.perf_counter()
-    run([eomgen, "generate", os.path.join(ROOT, "models", f"{name}.toml"), "-o", work])
+    run([eomgen, "generate", model_file(name), "-o", work])
     generate = time.perf_counter() - start
     binary = os.path.join(work, f"tree_{name}")
     start = time.perf_counter()
-    run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", "-I", work, "-I", HERE, "-I", "/usr/include/eigen3",
+    run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", f"-DJACOBIAN={0 if name in WITHOUT_JACOBIAN else 1}",
+         "-I", work, "-I", HERE, "-I", "/usr/include/eigen3",
          os.path.join(HERE, "rhs_benchmark.cpp"), "-o", binary, "-lmujoco"])
     build = time.perf_counter() - start
     result = json.loads(run([binary, os.path.join(ROOT, "tests", "crosscheck", "mjcf", f"{name}.xml")]).stdout)
@@ -60,8 +70,9 @@ def main():
         for name in robots:
             r = measure(sys.argv[1], name, work)
             ours, theirs, jac, fd = r["eomgen_ns"], r["mujoco_ns"], r["jacobian_ns"], r["finite_difference_ns"]
-            print(f"| {name} | {ours / 1000:.2f} µs | {theirs / 1000:.2f} µs | {theirs / ours:.2f}x | {jac / 1000:.2f} µs "
-                  f"| {jac / ours:.1f} | {fd / jac:.1f}x | {r['header_kb']:.0f} KB | {r['generate']:.2f} s | {r['build']:.1f} s |")
+            jacobian = f"{jac / 1000:.2f} µs | {jac / ours:.1f} | {fd / jac:.1f}x" if jac else "– | – | –"
+            print(f"| {name} | {ours / 1000:.2f} µs | {theirs / 1000:.2f} µs | {theirs / ours:.2f}x | {jacobian} "
+                  f"| {r['header_kb']:.0f} KB | {r['generate']:.2f} s | {r['build']:.1f} s |", flush=True)
     return 0
 
 

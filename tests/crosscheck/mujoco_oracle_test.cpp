@@ -17,8 +17,10 @@
 
 #include <mujoco/mujoco.h>
 
+#include "branched_tree.hpp"
 #include "measured_arm.hpp"
 #include "oblique_tree.hpp"
+#include "seven_joint_arm.hpp"
 
 namespace {
 
@@ -77,6 +79,32 @@ TEST(MujocoOracle, ObliqueJointsThroughOffsetAnchorsMatchMujoco) {
   std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
   EXPECT_LT(worst, 1e-12);
   EXPECT_GT(worst, 0.0) << "two independent computations agree to the last bit at every state: suspicious";
+}
+
+// the robots of tests/crosscheck/models/: a 7-joint arm (a Panda's layout) and a humanoid-like
+// tree of 21 hinges about oblique axes through offset anchors, both joint trees
+TEST(MujocoOracle, SevenJointArmMatchesMujoco) {
+  namespace model = eomgen::models::seven_joint_arm;
+  MujocoModel mj(mjcf("seven_joint_arm.xml"));
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  auto p = model::Parameters<double>().values();
+  auto rhs = [&](const double* x, const double* u, double* xdot) { model::rhs(0.0, x, u, p.data(), xdot); };
+  double worst = worst_relative_difference(mj, int(model::num_coordinates), int(model::num_inputs), rhs, 200);
+  std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(worst, 0.0);
+}
+
+TEST(MujocoOracle, BranchedTreeOf21ObliqueHingesMatchesMujoco) {
+  namespace model = eomgen::models::branched_tree;
+  MujocoModel mj(mjcf("branched_tree.xml"));
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  auto p = model::Parameters<double>().values();
+  auto rhs = [&](const double* x, const double* u, double* xdot) { model::rhs(0.0, x, u, p.data(), xdot); };
+  double worst = worst_relative_difference(mj, int(model::num_coordinates), int(model::num_inputs), rhs, 200);
+  std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(worst, 0.0);
 }
 
 TEST(MujocoOracle, MeasuredArmMatchesMujoco) {

@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Writes the robots of the tree benchmark and of the MuJoCo oracle test, each as an eomgen
+model (tests/crosscheck/models/NAME.toml) and as MJCF (tests/crosscheck/mjcf/NAME.xml), from one
+description (their headers are generated when the tests are built, not kept in generated/: the
+tree's is 3.7 MB):
+
+- seven_joint_arm: the kinematic layout of a 7-joint arm (the Franka Panda's link offsets:
+  0.333, 0.316, 0.0825, 0.384, 0.088 m; links turned by +-90 degrees about x, hinges about z),
+  with link masses, centres and full inertia tensors invented here (positive definite, the
+  triangle inequality held), armature, damping and a motor on every joint;
+- branched_tree: 21 hinges in a humanoid's branching (a spine of 3, two arms of 3, two legs of
+  6) about oblique axes through offset anchors, with the same kinds of bodies.
+
+The numbers are drawn from a fixed seed and written with 6 significant digits. MJCF takes each
+inertia tensor in its principal axes (quat and diaginertia, from numpy's eigh in double
+precision, to about 1e-16 of the tensor): MuJoCo 2.2.2 diagonalizes a fullinertia only to about
+1e-7. Usage: robot_models.py REPOSITORY_ROOT (needs numpy)
+"""
+import os
+import random
+import sys
+
+import numpy as np
+
+
+def number(x):
+    return f"{x:.6g}"
+
+
+def quat_of(R):
+    t = np.trace(R)
+    if t > 0:
+        s = np.sqrt(t + 1) * 2
+        return [s / 4, (R[2, 1] - R[1, 2]) / s, (R[0, 2] - R[2, 0]) / s, (R[1, 0] - R[0, 1]) / s]
+    i = int(np.argmax(np.diag(R)))
+    j, k = (i + 1) % 3, (i + 2) % 3
+    s = np.sqrt(1 + R[i, i] - R[j, j] - R[k, k]) * 2
+    q = [0.0, 0.0, 0.0]
+    q[i], q[j], q[k] = s / 4, (R[j, i] + R[i, j]) / s, (R[k, i] + R[i, k]) / s
+    return [(R[k, j] - R[j, k]) / s] + q
+
+
+def body(rng, scale):
+    """mass, centre, and a full inertia tensor about the centre (rounded, then checked)."""
+    mass = round(rng.uniform(0.5, 4.0) * scale, 4)
+    center = [round(rng.uniform(-0.05, 0.05), 4) for _ in range(3)]
+    while True:
+        principal = sorted(rng.uniform(0.002, 0.03) * scale for _ in range(3))
+        if principal[0] + principal[1] < principal[2]:
+            continue
+        axis = np.array([rng.uniform(-1, 1) for _ in range(3)])
+        axis /= np.linalg.norm(axis)
+        angle = rng.uniform(0, np.pi)
+        K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+        R = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+        inertia = np.round(R @ np.diag(principal) @ R.T, 7)
+        w = np.linalg.eigvalsh(inertia)
+        if w[0] > 0 and w[0] + w[1] >= w[2]:
+            return mass, center, inertia
+
+
+def principal_axes(inertia):
+    w, V = np.linalg.eigh(inertia)
+    if np.linalg.det(V) < 0:
+        V[:, 0] = -V[:, 0]
+    return quat_of(V), w
+
+
+QUARTER = {"+x": ("rot_x(Pi/2)", "0.7071067811865476 0.7071067811865476 0 0"),
+           "-x": ("rot_x(-Pi/2)", "0.7071067811865476 -0.7071067811865476 0 0"), "": (None, None)}
+
+
+def write(root, name, title, comment, links, gravity=9.81):
+    """links: dicts with name, parent, origin, turn ('+x', '-x' or ''), axis, anchor, body."""
+    toml = [f"# {line}".rstrip() for line in comment] + [
+        "", "[model]", f'name       = "{name}"', f'title      = "{title}"', 'method     = "lagrange2"',
+        'kinematics = "recursive"', "", "[parameters]", f"g = {gravity}", "", "[inputs]"]
+    toml += [f"u{i + 1} = 0.0" for i in range(len(links))] + ["", "[coordinates]"]
+    toml += [f"q{i + 1} = {{ initial = {number(0.1 * ((i % 5) - 2))}, rate = 0.0 }}" for i in range(len(links))]
+    kinetic, dissipation, forces = [], [], []
+    for i, link in enumerate(links):
+        q = f"q{i + 1}"
+        toml += ["", "[[frames]]", f'name   = "{link["name"]}"']
+        if link["parent"]:
+            toml.append(f'parent = "{link["parent"]}"')
+        toml.append("origin = [" + ", ".join(f'"{number(x)}"' for x in link["origin"]) + "]")
+        if QUARTER[link["turn"]][0]:
+            toml.append(f'rotation = "{QUARTER[link["turn"]][0]}"')
+        anchor = "" if not any(link["anchor"]) else ", anchor = [" + ", ".join(f'"{number(x)}"' for x in link["anchor"]) + "]"
+        toml.append('joint  = { type = "revolute", axis = [' + ", ".join(f'"{number(x)}"' for x in link["axis"]) + "]"
+                    + anchor + f', coordinate = "{q}" }}')
+        kinetic.append(f"{number(link['armature'])}*der({q})^2")
+        dissipation.append(f"{number(link['damping'])}*der({q})^2")
+        forces.append(f'{q} = "u{i + 1}"')
+    for link in links:
+        mass, center, inertia = link["body"]
+        toml += ["", "[[rigid_bodies]]", f'name    = "{link["name"]}_body"', f'mass    = "{number(mass)}"',
+                 f'frame   = "{link["name"]}"', "center  = [" + ", ".join(f'"{number(x)}"' for x in center) + "]",
+                 "inertia = [" + ", ".join("[" + ", ".join(f'"{number(x)}"' for x in row) + "]" for row in inertia) + "]"]
+    toml += ["", "[gravity]", 'acceleration = ["0", "0", "-g"]', "", "[energy]",
+             'kinetic     = "(' + " + ".join(kinetic) + ')/2"', 'dissipation = "(' + " + ".join(dissipation) + ')/2"',
+             "", "[[forces]]", "generalized = { " + ", ".join(forces) + " }", ""]
+    with open(os.path.join(root, "tests", "crosscheck", "models", f"{name}.toml"), "w") as f:
+        f.write("\n".join(toml))
+
+    xml = [f"<!-- tests/crosscheck/models/{name}.toml for MuJoCo, written by tests/benchmarks/robot_models.py. -->",
+           f'<mujoco model="{name}">', f'  <option gravity="0 0 -{gravity}">', '    <flag contact="disable"/>',
+           "  </option>", "  <worldbody>"]
+    children = {}
+    for i, link in enumerate(links):
+        children.setdefault(link["parent"], []).append(i)
+
+    def emit(i, depth):
+        link = links[i]
+        pad = "  " * depth
+        quat = QUARTER[link["turn"]][1]
+        head = f'{pad}<body name="{link["name"]}" pos="{" ".join(number(x) for x in link["origin"])}"'
+        xml.append(head + (f' quat="{quat}">' if quat else ">"))
+        xml.append(f'{pad}  <joint name="q{i + 1}" type="hinge" axis="{" ".join(number(x) for x in link["axis"])}" '
+                   f'pos="{" ".join(number(x) for x in link["anchor"])}" armature="{number(link["armature"])}" '
+                   f'damping="{number(link["damping"])}"/>')
+        mass, center, inertia = link["body"]
+        quat_i, diag = principal_axes(inertia)
+        xml.append(f'{pad}  <inertial pos="{" ".join(number(x) for x in center)}" mass="{number(mass)}" '
+                   f'quat="{" ".join(repr(float(x)) for x in quat_i)}" diaginertia="{" ".join(repr(float(x)) for x in diag)}"/>')
+        for c in children.get(link["name"], []):
+            emit(c, depth + 1)
+        xml.append(f"{pad}</body>")
+
+    for i in children.get("", []):
+        emit(i, 2)
+    xml += ["  </worldbody>", "  <actuator>"]
+    xml += [f'    <motor name="u{i + 1}" joint="q{i + 1}" gear="1" ctrllimited="false"/>' for i in range(len(links))]
+    xml += ["  </actuator>", "</mujoco>", ""]
+    with open(os.path.join(root, "tests", "crosscheck", "mjcf", f"{name}.xml"), "w") as f:
+        f.write("\n".join(xml))
+
+
+def seven_joint_arm(rng):
+    layout = [((0, 0, 0.333), ""), ((0, 0, 0), "-x"), ((0, -0.316, 0), "+x"), ((0.0825, 0, 0), "+x"),
+              ((-0.0825, 0.384, 0), "-x"), ((0, 0, 0), "+x"), ((0.088, 0, 0), "+x")]
+    links = []
+    for i, (origin, turn) in enumerate(layout):
+        links.append(dict(name=f"link{i + 1}", parent=f"link{i}" if i else "", origin=origin, turn=turn,
+                          axis=(0, 0, 1), anchor=(0, 0, 0), body=body(rng, 1.0 if i < 4 else 0.4),
+                          armature=0.1, damping=1.0))
+    return links
+
+
+def branched_tree(rng):
+    links, names = [], []
+
+    def chain(prefix, parent, count, offset):
+        for k in range(count):
+            axis = [round(rng.uniform(-1, 1), 3) for _ in range(3)]
+            anchor = [round(rng.uniform(-0.03, 0.03), 3) for _ in range(3)]
+            origin = offset if k == 0 else (0, 0, round(-rng.uniform(0.1, 0.3), 3))
+            name = f"{prefix}{k + 1}"
+            links.append(dict(name=name, parent=parent, origin=origin, turn="", axis=axis, anchor=anchor,
+                              body=body(rng, 0.6), armature=0.02, damping=0.2))
+            names.append(name)
+            parent = name
+
+    chain("spine", "", 3, (0, 0, 1.0))
+    chain("left_arm", "spine3", 3, (0, 0.2, 0.1))
+    chain("right_arm", "spine3", 3, (0, -0.2, 0.1))
+    chain("left_leg", "spine1", 6, (0, 0.1, -0.1))
+    chain("right_leg", "spine1", 6, (0, -0.1, -0.1))
+    return links
+
+
+def main():
+    root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    rng = random.Random(38)
+    write(root, "seven_joint_arm", "Seven-joint arm: a Panda's link offsets, invented inertias",
+          ["A 7-joint arm for the tree benchmark and the MuJoCo oracle test: the link offsets of the",
+           "Franka Panda (0.333, 0.316, 0.0825, 0.384, 0.088 m), links turned by +-90 degrees about x,",
+           "hinges about z, with masses, centres and full inertia tensors invented here; armature,",
+           "damping and a motor on each joint. Written by tests/benchmarks/robot_models.py with",
+           "tests/crosscheck/mjcf/seven_joint_arm.xml, the same robot for MuJoCo."], seven_joint_arm(rng))
+    write(root, "branched_tree", "Humanoid-like tree of 21 hinges about oblique axes through offset anchors",
+          ["21 hinges in a humanoid's branching (a spine of 3, two arms of 3, two legs of 6) about",
+           "oblique axes through offset anchors, bodies with full inertia tensors, armature, damping",
+           "and a motor on each joint: the 20+ joint tree of the tree benchmark and the MuJoCo oracle",
+           "test. Written by tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/branched_tree.xml."],
+          branched_tree(rng))
+
+
+if __name__ == "__main__":
+    main()
