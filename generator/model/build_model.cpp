@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -25,7 +26,10 @@ Model ModelBuilder::build() {
   m_.name = f_.name;
   m_.title = f_.title;
   m_.method = f_.method;
-  m_.recursive_kinematics = f_.kinematics == "recursive";
+  // frames with joints are a tree for the spatial recursions unless the file says otherwise
+  bool joints = std::any_of(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) { return f.joint.has_value(); });
+  m_.recursive_kinematics =
+      f_.kinematics == "recursive" || (f_.kinematics_where.line == 0 && joints && f_.method == "lagrange2");
   m_.forward_dynamics = f_.forward_dynamics;
   m_.source = f_.path;
   check_header();

@@ -73,8 +73,7 @@ QUARTER = {"+x": ("rot_x(Pi/2)", "0.7071067811865476 0.7071067811865476 0 0"),
 def write(root, name, title, comment, links, gravity=9.81):
     """links: dicts with name, parent, origin, turn ('+x', '-x' or ''), axis, anchor, body."""
     toml = [f"# {line}".rstrip() for line in comment] + [
-        "", "[model]", f'name       = "{name}"', f'title      = "{title}"', 'method     = "lagrange2"',
-        'kinematics = "recursive"', "", "[parameters]", f"g = {gravity}", "", "[inputs]"]
+        "", "[model]", f'name       = "{name}"', f'title      = "{title}"', 'method     = "lagrange2"', "", "[parameters]", f"g = {gravity}", "", "[inputs]"]
     toml += [f"u{i + 1} = 0.0" for i in range(len(links))] + ["", "[coordinates]"]
     toml += [f"q{i + 1} = {{ initial = {number(0.1 * ((i % 5) - 2))}, rate = 0.0 }}" for i in range(len(links))]
     kinetic, dissipation, forces = [], [], []

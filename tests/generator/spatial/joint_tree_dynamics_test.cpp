@@ -164,6 +164,17 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
   }
 }
 
+TEST(JointTree, FramesWithJointsAreATreeWithoutAnOption) {
+  std::string text = with("recursive");
+  text.erase(text.find("kinematics = \"recursive\"\n"), 25);
+  Model model = built(text);
+  EXPECT_TRUE(model.recursive_kinematics);
+  EXPECT_FALSE(why_not_a_joint_tree(model));
+  text.insert(text.find("\n[parameters]"), "method = \"appell\"\n");
+  EXPECT_FALSE(built(text).recursive_kinematics) << "Appell's equations take the expanded kinematics";
+  EXPECT_FALSE(built(with("expanded")).recursive_kinematics) << "an explicit choice stands";
+}
+
 TEST(JointTree, OtherTreesKeepTheFrameRecursionAndSayWhy) {
   std::string moving = with("recursive");
   moving.replace(moving.find("rotation = \"rot_x(0.3)\""), 23, "rotation = \"rot_x(s)\"");
