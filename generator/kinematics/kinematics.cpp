@@ -29,6 +29,7 @@ bool conserves_energy_without_inputs(const Mechanics& mech, const Symbols& s) {
 }
 
 ex kinetic_energy_of(const Mechanics& mech) {
+  if (mech.tree_kinetic_energy) return tidy(mech.extra_kinetic_energy + *mech.tree_kinetic_energy, mech.motion);
   ex T = mech.extra_kinetic_energy;
   for (const BodyKinematics& b : mech.bodies) {
     for (unsigned a = 0; a < 3; ++a) T += b.mass * GiNaC::pow(b.velocity[a], 2) / 2;
@@ -137,6 +138,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     m.composite_mass_matrix = tree.mass_matrix;
     m.tree_bias_forces = tree.bias_forces;
     m.coordinate_parents = tree.coordinate_parents;
+    m.tree_kinetic_energy = tree.kinetic_energy;
     m.potential_gradient = frames.gradient(model.potential);
   } else {
     tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);

@@ -58,6 +58,7 @@ struct Mechanics {
   /// potential_gradient is then that of [energy] potential alone.
   std::optional<std::vector<GiNaC::ex>> tree_bias_forces;
   std::vector<int> coordinate_parents;  // of the joint tree (Equations::coordinate_parents)
+  std::optional<GiNaC::ex> tree_kinetic_energy;  // the bodies' T by the tree's velocity recursion
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

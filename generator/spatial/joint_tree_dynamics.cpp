@@ -108,6 +108,27 @@ class Tree {
     return tau;
   }
 
+  // T = Σ ½ m |v_o + ω × c|² + ½ ω·I ω over the bodies, with each frame origin's velocity
+  // v_i = E_iᵀ (v_p + ω_p × r_i) + u q̇ (frame coordinates): O(n)
+  ex kinetic_energy() {
+    std::size_t links = model_.frame_links.size();
+    std::vector<Vector3> velocity(links);
+    Vector3 zero{0, 0, 0};
+    ex T = 0;
+    for (std::size_t i = 0; i < links; ++i) {
+      const Link& l = links_[i];
+      int p = model_.frame_links[i].parent;
+      ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
+      Vector3 carried = p < 0 ? zero : times(l.E, velocity[std::size_t(p)] + cross(omega_[std::size_t(p)], l.r), true);
+      velocity[i] = named(out_, i, "tv", carried + scaled(qd, l.u));
+      for (const Body& b : bodies_[i]) {
+        Vector3 v = velocity[i] + cross(omega_[i], b.center);
+        T += b.mass * dot(v, v) / 2 + dot(omega_[i], times(b.inertia, omega_[i])) / 2;
+      }
+    }
+    return T;
+  }
+
   // the composite-rigid-body algorithm
   GiNaC::matrix mass_matrix() {
     std::size_t links = model_.frame_links.size(), n = s_.coordinates.size();
@@ -290,6 +311,7 @@ JointTreeDynamics joint_tree_dynamics(const Model& model, const std::vector<GiNa
   for (ex& f : d.bias_forces) f = -f;
   d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
   d.mass_matrix = tree.mass_matrix();
+  d.kinetic_energy = tree.kinetic_energy();
   d.coordinate_parents = coordinate_parents(model);
   return d;
 }

@@ -33,6 +33,7 @@ struct JointTreeDynamics {
   std::vector<GiNaC::ex> bias_forces;       // −τ(q, q̇, q̈ = 0): as f takes the bodies' forces, gravity included
   std::vector<GiNaC::ex> inverse_dynamics;  // τ(q, q̇, q̈) of the bodies, in the acceleration symbols
   std::vector<int> coordinate_parents;      // Equations::coordinate_parents, or empty
+  GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
 };
 
 /// Why the model is not such a tree (for a note in the header), or nothing when it is.

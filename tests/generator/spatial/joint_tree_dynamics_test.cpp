@@ -161,6 +161,7 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
       }
       near(value_at(recursive.inverse_dynamics[j], at), Mddq - f, fmt::format("tau[{}] = (M q'' - f)[{}]", j, j));
     }
+    near(value_at(recursive.kinetic_energy, at), value_at(expanded.kinetic_energy, full), "T");
   }
 }
 
