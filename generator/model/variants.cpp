@@ -54,9 +54,17 @@ void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
     };
     for (Particle& p : m.particles) place(p.placement);
     for (RigidBody& b : m.rigid_bodies) place(b.placement);
+    // a joint no longer describes a frame whose coordinate is held, tied or approximated: the frame
+    // recursion (substituted here) derives it then; parameters and inputs only change its numbers
+    bool coordinates_change = std::any_of(s.begin(), s.end(), [&](const auto& k) {
+      return std::any_of(m.symbols.coordinates.begin(), m.symbols.coordinates.end(),
+                         [&](const GiNaC::realsymbol& q) { return k.first.has(q); });
+    });
     for (FrameLink& f : m.frame_links) {
       apply(f.relative_rotation, s), apply(f.relative_origin, s), apply(f.rotation, s), apply(f.origin, s);
       for (ElementaryRotation& r : f.sequence) turn(r);
+      if (f.joint && coordinates_change) f.joint.reset();
+      else if (f.joint) apply(f.joint->axis, s), apply(f.joint->anchor, s), apply(f.joint->placement, s), apply(f.joint->placement_origin, s);
     }
     for (Intermediate& i : m.intermediates) apply(i.definition, s);
   } catch (const std::exception& why) {

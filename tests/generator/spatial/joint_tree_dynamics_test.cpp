@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <map>
+#include <fstream>
 #include <random>
 
 #include <fmt/format.h>
@@ -174,6 +175,30 @@ TEST(JointTree, FramesWithJointsAreATreeWithoutAnOption) {
   text.insert(text.find("\n[parameters]"), "method = \"appell\"\n");
   EXPECT_FALSE(built(text).recursive_kinematics) << "Appell's equations take the expanded kinematics";
   EXPECT_FALSE(built(with("expanded")).recursive_kinematics) << "an explicit choice stands";
+}
+
+TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
+  // b held at its initial value −0.4: the same as the expanded model with b held
+  ModelChoice held;
+  held.freeze = {"b"};
+  std::string dir = temporary_directory();
+  for (const char* kinematics : {"recursive", "expanded"}) {
+    std::ofstream(dir + "/" + kinematics + ".toml") << with(kinematics);
+  }
+  Derivation recursive = derive_model_file_for(dir + "/recursive.toml", held);
+  Derivation expanded = derive_model_file_for(dir + "/expanded.toml", held);
+  ASSERT_TRUE(recursive.equations && expanded.equations) << recursive.diagnostics.format() << expanded.diagnostics.format();
+  const Equations& r = *recursive.equations;
+  const Equations& e = *expanded.equations;
+  ASSERT_EQ(r.forcing.size(), 3u);
+  std::map<std::string, double> values{{"m", 1.1}, {"l", 0.7}, {"g", 9.81}, {"a", 0.4}, {"s", -0.2}, {"c", 1.3},
+                                       {"der(a)", 0.8}, {"der(s)", -1.1}, {"der(c)", 2.0}};
+  for (int k = 0; k < 3; ++k) values[fmt::format("ddq{}", k)] = 0.3 * k;
+  GiNaC::exmap at = point_of(r, values), full = point_of(e, values);
+  for (unsigned j = 0; j < 3; ++j) {
+    EXPECT_NEAR(value_at(r.forcing[j], at), value_at(e.forcing[j], full), 1e-11) << j;
+    for (unsigned k = 0; k < 3; ++k) EXPECT_NEAR(value_at(r.mass_matrix(j, k), at), value_at(e.mass_matrix(j, k), full), 1e-11);
+  }
 }
 
 TEST(JointTree, OtherTreesKeepTheFrameRecursionAndSayWhy) {
