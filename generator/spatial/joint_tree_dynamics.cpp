@@ -29,16 +29,6 @@ bool moves(const GiNaC::matrix& R, const Symbols& s) {
 
 GiNaC::matrix identity() { return GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)); }
 
-// Rodrigues: cos φ·I + sin φ·[e]× + (1 − cos φ)·e eᵀ, e a unit vector
-GiNaC::matrix turn(const Vector3& e, const ex& angle) {
-  ex c = GiNaC::cos(angle), s = GiNaC::sin(angle);
-  const ex cross[3][3] = {{0, -e[2], e[1]}, {e[2], 0, -e[0]}, {-e[1], e[0], 0}};
-  GiNaC::matrix R(3, 3);
-  for (unsigned a = 0; a < 3; ++a)
-    for (unsigned b = 0; b < 3; ++b) R(a, b) = (a == b ? c : ex(0)) + s * cross[a][b] + (1 - c) * e[a] * e[b];
-  return R;
-}
-
 // a body in a frame: mass, centre and inertia about the centre, in the frame's coordinates
 struct Body {
   ex mass;
@@ -154,18 +144,18 @@ class Tree {
         for (unsigned a = 0; a < 3; ++a)
           for (unsigned b = 0; b < 3; ++b)
             EJ(a, b) = intermediate(out_, fmt::format("{}.tEJ_{}{}", name(j), axis_names[a], axis_names[b]),
-                                    fmt::format("k_{}_tEJ{}{}", cpp(j), axis_names[a], axis_names[b]), EJ(a, b).expand());
+                                    fmt::format("k_{}_tEJ{}{}", name(j), axis_names[a], axis_names[b]), EJ(a, b).expand());
         for (unsigned a = 0; a < 3; ++a)
           for (unsigned b = 0; b < 3; ++b)
             for (unsigned k = 0; k < 3; ++k) turned(a, b) += EJ(a, k) * c.E(b, k);
         J = J.add(turned).add(shifted(mass[j], c.r, hj));
       }
-      mass[i] = intermediate(out_, fmt::format("{}.tm", name(i)), fmt::format("k_{}_tm", cpp(i)), m.expand());
+      mass[i] = intermediate(out_, fmt::format("{}.tm", name(i)), fmt::format("k_{}_tm", name(i)), m.expand());
       first[i] = named(out_, i, "th", h);
       for (unsigned a = 0; a < 3; ++a)
         for (unsigned b = a; b < 3; ++b) {
           inertia[i](a, b) = intermediate(out_, fmt::format("{}.tJ_{}{}", name(i), axis_names[a], axis_names[b]),
-                                          fmt::format("k_{}_tJ{}{}", cpp(i), axis_names[a], axis_names[b]), J(a, b).expand());
+                                          fmt::format("k_{}_tJ{}{}", name(i), axis_names[a], axis_names[b]), J(a, b).expand());
           inertia[i](b, a) = inertia[i](a, b);
         }
     }
@@ -213,7 +203,9 @@ class Tree {
       } else {
         l.e = j.axis;
         l.u = cross(j.anchor, j.axis);
-        R = turn(j.axis, q);
+        ElementaryRotation about_axis{ElementaryRotation::about_direction, q};
+        about_axis.direction = j.axis;
+        R = rotation_matrix(about_axis);
         r = r + times(j.placement, j.anchor - times(R, j.anchor));
       }
     }
@@ -221,7 +213,7 @@ class Tree {
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b)
         l.E(a, b) = intermediate(out_, fmt::format("{}.tE_{}{}", name(i), axis_names[a], axis_names[b]),
-                                 fmt::format("k_{}_tE{}{}", cpp(i), axis_names[a], axis_names[b]), E(a, b).expand());
+                                 fmt::format("k_{}_tE{}{}", name(i), axis_names[a], axis_names[b]), E(a, b).expand());
     l.r = named(out_, i, "tr", r);
     int p = model_.frame_links[i].parent;
     Vector3 wp = p < 0 ? Vector3{0, 0, 0} : omega_[std::size_t(p)];
@@ -242,14 +234,14 @@ class Tree {
     return J;
   }
 
+  // frame names are identifiers: the same in the printed names and in C++
   std::string name(std::size_t i) const { return model_.frame_links[i].name; }
-  std::string cpp(std::size_t i) const { return model_.frame_links[i].name; }
 
   Vector3 named(std::vector<Intermediate>& out, std::size_t i, const std::string& label, const Vector3& x) const {
     Vector3 v;
     for (unsigned a = 0; a < 3; ++a)
       v[a] = intermediate(out, fmt::format("{}.{}_{}", name(i), label, axis_names[a]),
-                          fmt::format("k_{}_{}_{}", cpp(i), label, axis_names[a]), x[a].expand());
+                          fmt::format("k_{}_{}_{}", name(i), label, axis_names[a]), x[a].expand());
     return v;
   }
 

@@ -69,54 +69,33 @@ double worst_relative_difference(MujocoModel& mj, int n, int m, Rhs rhs, int cou
   return worst;
 }
 
-TEST(MujocoOracle, ObliqueJointsThroughOffsetAnchorsMatchMujoco) {
-  namespace model = eomgen::models::oblique_tree;
-  MujocoModel mj(mjcf("oblique_tree.xml"));
+// the generated model's rhs (with its default parameters) against mj_forward on `file`
+template <class Parameters, class Rhs>
+void expect_matches_mujoco(const std::string& file, int n, int m, Rhs model_rhs) {
+  MujocoModel mj(mjcf(file));
   ASSERT_NE(mj.model, nullptr) << mj.message;
-  auto p = model::Parameters<double>().values();
-  auto rhs = [&](const double* x, const double* u, double* xdot) { model::rhs(0.0, x, u, p.data(), xdot); };
-  double worst = worst_relative_difference(mj, int(model::num_coordinates), int(model::num_inputs), rhs, 200);
-  std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
+  auto p = Parameters().values();
+  auto rhs = [&](const double* x, const double* u, double* xdot) { model_rhs(0.0, x, u, p.data(), xdot); };
+  double worst = worst_relative_difference(mj, n, m, rhs, 200);
+  std::printf("%s: largest difference from MuJoCo's qacc: %.2g of its size\n", file.c_str(), worst);
   EXPECT_LT(worst, 1e-12);
   EXPECT_GT(worst, 0.0) << "two independent computations agree to the last bit at every state: suspicious";
 }
+
+// a generated model's namespace M: its rhs for double, its sizes and its parameters
+#define EXPECT_MATCHES_MUJOCO(M)                                                                            \
+  expect_matches_mujoco<eomgen::models::M::Parameters<double>>(#M ".xml", int(eomgen::models::M::num_coordinates), \
+                                                               int(eomgen::models::M::num_inputs),                   \
+                                                               eomgen::models::M::rhs<double>)
+
+TEST(MujocoOracle, ObliqueJointsThroughOffsetAnchorsMatchMujoco) { EXPECT_MATCHES_MUJOCO(oblique_tree); }
 
 // the robots of tests/crosscheck/models/: a 7-joint arm (a Panda's layout) and a humanoid-like
 // tree of 21 hinges about oblique axes through offset anchors, both joint trees
-TEST(MujocoOracle, SevenJointArmMatchesMujoco) {
-  namespace model = eomgen::models::seven_joint_arm;
-  MujocoModel mj(mjcf("seven_joint_arm.xml"));
-  ASSERT_NE(mj.model, nullptr) << mj.message;
-  auto p = model::Parameters<double>().values();
-  auto rhs = [&](const double* x, const double* u, double* xdot) { model::rhs(0.0, x, u, p.data(), xdot); };
-  double worst = worst_relative_difference(mj, int(model::num_coordinates), int(model::num_inputs), rhs, 200);
-  std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
-  EXPECT_LT(worst, 1e-12);
-  EXPECT_GT(worst, 0.0);
-}
+TEST(MujocoOracle, SevenJointArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(seven_joint_arm); }
 
-TEST(MujocoOracle, BranchedTreeOf21ObliqueHingesMatchesMujoco) {
-  namespace model = eomgen::models::branched_tree;
-  MujocoModel mj(mjcf("branched_tree.xml"));
-  ASSERT_NE(mj.model, nullptr) << mj.message;
-  auto p = model::Parameters<double>().values();
-  auto rhs = [&](const double* x, const double* u, double* xdot) { model::rhs(0.0, x, u, p.data(), xdot); };
-  double worst = worst_relative_difference(mj, int(model::num_coordinates), int(model::num_inputs), rhs, 200);
-  std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
-  EXPECT_LT(worst, 1e-12);
-  EXPECT_GT(worst, 0.0);
-}
+TEST(MujocoOracle, BranchedTreeOf21ObliqueHingesMatchesMujoco) { EXPECT_MATCHES_MUJOCO(branched_tree); }
 
-TEST(MujocoOracle, MeasuredArmMatchesMujoco) {
-  namespace model = eomgen::models::measured_arm;
-  MujocoModel mj(mjcf("measured_arm.xml"));
-  ASSERT_NE(mj.model, nullptr) << mj.message;
-  auto p = model::Parameters<double>().values();
-  auto rhs = [&](const double* x, const double* u, double* xdot) { model::rhs(0.0, x, u, p.data(), xdot); };
-  double worst = worst_relative_difference(mj, int(model::num_coordinates), int(model::num_inputs), rhs, 200);
-  std::printf("largest difference from MuJoCo's qacc: %.2g of its size\n", worst);
-  EXPECT_LT(worst, 1e-12);
-  EXPECT_GT(worst, 0.0) << "two independent computations agree to the last bit at every state: suspicious";
-}
+TEST(MujocoOracle, MeasuredArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(measured_arm); }
 
 }  // namespace

@@ -80,6 +80,24 @@ double value_at(const GiNaC::ex& e, const GiNaC::exmap& point) {
   return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
 }
 
+GiNaC::exmap point_by_name(const Equations& e, const std::map<std::string, double>& values) {
+  const Symbols& s = e.symbols;
+  GiNaC::exmap at;
+  auto time = values.find("t");
+  at[s.time] = time == values.end() ? 0.0 : time->second;
+  for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
+  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
+    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
+    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
+  }
+  for (std::size_t i = 0; i < e.acceleration_symbols.size(); ++i)
+    if (auto a = values.find("ddq" + std::to_string(i)); a != values.end()) at[e.acceleration_symbols[i]] = a->second;
+  for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
+  if (e.acceleration_symbols.empty() || !at.count(e.acceleration_symbols[0])) return at;
+  for (const Intermediate& i : e.acceleration_intermediates) at[i.symbol] = value_at(i.definition, at);
+  return at;
+}
+
 ::testing::AssertionResult agree_at_points(const GiNaC::ex& actual, const GiNaC::ex& expected,
                                            const std::vector<GiNaC::exmap>& points, double tolerance) {
   for (std::size_t k = 0; k < points.size(); ++k) {

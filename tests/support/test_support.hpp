@@ -2,6 +2,7 @@
 /// closed forms over a model's symbols, and comparing at random points.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@ std::vector<GiNaC::exmap> random_points(const Symbols& s, int count, unsigned se
 
 /// The value of e at a point, as a double; fails the test if it is not a real number.
 double value_at(const GiNaC::ex& e, const GiNaC::exmap& point);
+
+/// The point of `e`'s symbols with values given by name (parameters, coordinates, "der(q)", "t"
+/// when given, else 0, and "ddq<k>" for the acceleration symbols when given), its intermediates
+/// (those of recursive kinematics, then those of the inverse dynamics) evaluated in order: for
+/// comparing two derivations of one model, whose symbols are different objects.
+GiNaC::exmap point_by_name(const Equations& e, const std::map<std::string, double>& values);
 
 /// |a − b| ≤ tolerance · max(1, |a|, |b|) at every point.
 ::testing::AssertionResult agree_at_points(const GiNaC::ex& actual, const GiNaC::ex& expected,

@@ -253,19 +253,6 @@ std::string recursive(const std::string& text) {
 }
 
 // the point with the intermediates of recursive kinematics added, each from its definition, in order
-GiNaC::exmap with_intermediates(const Equations& e, const std::map<std::string, double>& values) {
-  const Symbols& s = e.symbols;
-  GiNaC::exmap at;
-  at[s.time] = values.at("t");
-  for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
-  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
-    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
-  }
-  for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
-  return at;
-}
-
 TEST(Frames, RecursiveKinematicsGivesTheEquationsOfTheChainWrittenOut) {
   for (int n : {1, 2, 3}) {
     Equations framed = test::derive_text(recursive(through_frames(n))), full = test::derive_text(written_out(n));
@@ -279,7 +266,7 @@ TEST(Frames, RecursiveKinematicsGivesTheEquationsOfTheChainWrittenOut) {
         values[q] = angle(random);
         values["der(" + q + ")"] = rate(random);
       }
-      GiNaC::exmap at = with_intermediates(framed, values);
+      GiNaC::exmap at = point_by_name(framed, values);
       auto same = [&](const ex& a, const ex& b, const std::string& what) {
         double x = value_at(a, at), y = at_point_by_name(b, full.symbols, values);
         EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what << " of the " << n << "-link chain";

@@ -65,20 +65,6 @@ std::vector<std::map<std::string, double>> random_values(const Symbols& s, int c
   return points;
 }
 
-// the point of `e`'s symbols with these values, its intermediates evaluated in order
-GiNaC::exmap point_of(const Equations& e, const std::map<std::string, double>& values) {
-  const Symbols& s = e.symbols;
-  GiNaC::exmap at;
-  at[s.time] = values.at("t");
-  for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
-  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
-    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
-  }
-  for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
-  return at;
-}
-
 void expect_near(double x, double y, const std::string& what) {
   EXPECT_NEAR(x, y, 1e-12 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
 }
@@ -86,7 +72,7 @@ void expect_near(double x, double y, const std::string& what) {
 void same_equations(const Equations& a, const Equations& b, const std::string& what) {
   ASSERT_EQ(a.forcing.size(), b.forcing.size());
   for (const auto& values : random_values(a.symbols, 8)) {
-    GiNaC::exmap at_a = point_of(a, values), at_b = point_of(b, values);
+    GiNaC::exmap at_a = point_by_name(a, values), at_b = point_by_name(b, values);
     expect_near(value_at(a.mass_matrix(0, 0), at_a), value_at(b.mass_matrix(0, 0), at_b), what + ": M");
     for (std::size_t j = 0; j < a.forcing.size(); ++j)
       expect_near(value_at(a.forcing[j], at_a), value_at(b.forcing[j], at_b), what + ": f");
@@ -97,7 +83,7 @@ void same_equations(const Equations& a, const Equations& b, const std::string& w
 void expect_closed_forms(const Equations& e, const std::string& mass, const std::string& static_force, const std::string& what) {
   for (auto values : random_values(e.symbols, 8)) {
     values["der(q)"] = 0;
-    GiNaC::exmap at = point_of(e, values);
+    GiNaC::exmap at = point_by_name(e, values);
     expect_near(value_at(e.mass_matrix(0, 0), at), value_at(closed_form(e, mass), at), what + ": M");
     expect_near(value_at(e.forcing[0], at), value_at(closed_form(e, static_force), at), what + ": f");
   }

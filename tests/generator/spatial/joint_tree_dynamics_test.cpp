@@ -120,21 +120,6 @@ Model built(const std::string& text) {
   return m;
 }
 
-GiNaC::exmap point_of(const Equations& e, const std::map<std::string, double>& values) {
-  const Symbols& s = e.symbols;
-  GiNaC::exmap at;
-  at[s.time] = 0;
-  for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
-  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
-    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
-  }
-  for (std::size_t i = 0; i < e.acceleration_symbols.size(); ++i) at[e.acceleration_symbols[i]] = values.at(fmt::format("ddq{}", i));
-  for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
-  for (const Intermediate& i : e.acceleration_intermediates) at[i.symbol] = value_at(i.definition, at);
-  return at;
-}
-
 TEST(JointTree, RecursionsGiveTheExpandedEquations) {
   Model model = built(with("recursive"));
   ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
@@ -147,7 +132,7 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
     for (const std::string& p : recursive.symbols.parameter_names) values[p] = scale(random);
     for (const std::string& q : recursive.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
     for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
-    GiNaC::exmap at = point_of(recursive, values), full = point_of(expanded, values);
+    GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
     auto near = [](double x, double y, const std::string& what) {
       EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
     };
@@ -194,7 +179,7 @@ TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
   std::map<std::string, double> values{{"m", 1.1}, {"l", 0.7}, {"g", 9.81}, {"a", 0.4}, {"s", -0.2}, {"c", 1.3},
                                        {"der(a)", 0.8}, {"der(s)", -1.1}, {"der(c)", 2.0}};
   for (int k = 0; k < 3; ++k) values[fmt::format("ddq{}", k)] = 0.3 * k;
-  GiNaC::exmap at = point_of(r, values), full = point_of(e, values);
+  GiNaC::exmap at = point_by_name(r, values), full = point_by_name(e, values);
   for (unsigned j = 0; j < 3; ++j) {
     EXPECT_NEAR(value_at(r.forcing[j], at), value_at(e.forcing[j], full), 1e-11) << j;
     for (unsigned k = 0; k < 3; ++k) EXPECT_NEAR(value_at(r.mass_matrix(j, k), at), value_at(e.mass_matrix(j, k), full), 1e-11);
