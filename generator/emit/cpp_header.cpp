@@ -375,22 +375,7 @@ std::string first_integrals_function(const Equations& e) {
 // the detail namespace: the input type that keeps u out of deducing T, the batched sin and cos when a
 // function uses them, and the LDLᵀ of M (which a model solved by the articulated-body recursion does
 // not use: its functions take M⁻¹ from the tree)
-// a joint tree's coordinate parents when M's zeros are those of the tree (no transformation has
-// filled them in): its factor then has no fill-in (cpp_ldlt.hpp); empty otherwise
-std::vector<int> tree_of_mass_matrix(const Equations& e, std::size_t n) {
-  const std::vector<int>& parent = e.coordinate_parents;
-  if (parent.size() != n || e.mass_matrix.rows() != n) return {};
-  std::vector<std::vector<bool>> related(n, std::vector<bool>(n, false));
-  for (std::size_t i = 0; i < n; ++i)
-    for (int j = int(i); j >= 0; j = parent[std::size_t(j)]) related[i][std::size_t(j)] = related[std::size_t(j)][i] = true;
-  for (unsigned i = 0; i < n; ++i)
-    for (unsigned j = 0; j < n; ++j)
-      if (!related[i][j] && !e.mass_matrix(i, j).is_zero()) return {};
-  return parent;
-}
-
-std::string detail_functions(std::size_t n, bool with_ldlt, bool with_sin_cos, bool with_constants,
-                             const std::vector<int>& tree = {}) {
+std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, bool with_sin_cos, bool with_constants) {
   std::string out =
       "namespace detail {\n\n"
       "/// The input pointer does not take part in deducing T, so a model without\n"
@@ -399,29 +384,7 @@ std::string detail_functions(std::size_t n, bool with_ldlt, bool with_sin_cos, b
       "template <class T>\nusing input_t = typename input_type<T>::type;\n\n";
   if (with_constants) out += cpp_constant_function();
   if (with_sin_cos) out += sin_cos_function();
-  if (with_ldlt) {
-    if (!tree.empty()) {
-      LdltCode ldlt = tree_ldlt_code(tree);
-      out += fmt::format(
-          "/// M = L^T D L for the symmetric positive definite {0}x{0} mass matrix of a tree, factored from\n"
-          "/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j whose joint carries\n"
-          "/// i's, so nothing fills in. M, L: {0}x{0}, row-major (L unit lower triangular, only those\n"
-          "/// entries written); D: {0}.\n"
-          "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
-          "/// Solves L^T D L x = b in place. b: {0}.\n"
-          "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n",
-          n, ldlt.factor, ldlt.solve);
-      return out + "}  // namespace detail\n\n";
-    }
-    LdltCode ldlt = ldlt_code(n);
-    out += fmt::format(
-        "/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix{3}.\n"
-        "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n"
-        "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
-        "/// Solves L D L^T x = b in place. b: {0}.\n"
-        "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n\n",
-        n, ldlt.factor, ldlt.solve, ldlt.unrolled ? ", unrolled" : "");
-  }
+  if (with_ldlt) out += mass_matrix_factorization(e, n);
   return out + "}  // namespace detail\n\n";
 }
 
@@ -540,8 +503,8 @@ std::string emit_cpp_header(const Equations& e) {
       "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
       members, values);
   out += constraint_declarations(e);
-  out += detail_functions(k, e.articulated_accelerations.empty(), functions.find("detail::sin_cos(") != std::string::npos,
-                          uses_constants, tree_of_mass_matrix(e, k));
+  out += detail_functions(e, k, e.articulated_accelerations.empty(), functions.find("detail::sin_cos(") != std::string::npos,
+                          uses_constants);
   out += functions;
   out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
   return out;

@@ -91,4 +91,42 @@ LdltCode tree_ldlt_code(const std::vector<int>& parent) {
 
 LdltCode ldlt_code(std::size_t n) { return n <= unrolled_up_to ? unrolled(n) : loops(n); }
 
+namespace {
+
+// e.coordinate_parents when every nonzero M_ij has one of i, j above the other; empty otherwise
+std::vector<int> tree_of_mass_matrix(const Equations& e, std::size_t n) {
+  const std::vector<int>& parent = e.coordinate_parents;
+  if (parent.size() != n || e.mass_matrix.rows() != n) return {};
+  std::vector<std::vector<bool>> related(n, std::vector<bool>(n, false));
+  for (std::size_t i = 0; i < n; ++i)
+    for (int j = int(i); j >= 0; j = parent[std::size_t(j)]) related[i][std::size_t(j)] = related[std::size_t(j)][i] = true;
+  for (unsigned i = 0; i < n; ++i)
+    for (unsigned j = 0; j < n; ++j)
+      if (!related[i][j] && !e.mass_matrix(i, j).is_zero()) return {};
+  return parent;
+}
+
+}  // namespace
+
+std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
+  const char* functions =
+      "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
+      "/// Solves {2} x = b in place. b: {0}.\n"
+      "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{3}}}\n\n";
+  if (std::vector<int> tree = tree_of_mass_matrix(e, n); !tree.empty()) {
+    LdltCode ldlt = tree_ldlt_code(tree);
+    return fmt::format(
+               "/// M = L^T D L for the symmetric positive definite {0}x{0} mass matrix of a tree, factored from\n"
+               "/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j whose joint carries\n"
+               "/// i's, so nothing fills in. M, L: {0}x{0}, row-major (L unit lower triangular, only those\n"
+               "/// entries written); D: {0}.\n", n) +
+           fmt::format(fmt::runtime(functions), n, ldlt.factor, "L^T D L", ldlt.solve);
+  }
+  LdltCode ldlt = ldlt_code(n);
+  return fmt::format("/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix{1}.\n"
+                     "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n",
+                     n, ldlt.unrolled ? ", unrolled" : "") +
+         fmt::format(fmt::runtime(functions), n, ldlt.factor, "L D L^T", ldlt.solve);
+}
+
 }  // namespace eomgen

@@ -1,10 +1,13 @@
-/// @file The generated header's L D Lᵀ factorization of the mass matrix and its solve, as the
-/// statements of two functions: unrolled for small matrices, loops for large ones.
+/// @file The generated header's factorization of the mass matrix and its solve, detail::ldlt_factor
+/// and detail::ldlt_solve: L D Lᵀ, unrolled for small matrices and loops for large ones, or, for a
+/// tree's M, Lᵀ D L from the leaves without fill-in.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "derive/equations.hpp"
 
 namespace eomgen {
 
@@ -24,5 +27,10 @@ LdltCode ldlt_code(std::size_t n);
 /// the dense factor takes n³/6. The same functions: ldlt_factor writes L and D, ldlt_solve
 /// solves Lᵀ D L x = b (from the leaves up, scaled, then down).
 LdltCode tree_ldlt_code(const std::vector<int>& parent);
+
+/// The two functions, documented, for the n×n M of `e`: the tree's factorization when
+/// e.coordinate_parents gives one and M's zeros are still those of the tree (no transformation has
+/// filled them in), L D Lᵀ otherwise.
+std::string mass_matrix_factorization(const Equations& e, std::size_t n);
 
 }  // namespace eomgen
