@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "kinematics/recursive_kinematics.hpp"
-#include "spatial/joint_tree_dynamics.hpp"
 #include "kinematics/vector3.hpp"
+#include "spatial/joint_tree_dynamics.hpp"
 #include "symbolic/gradient.hpp"
 
 namespace eomgen {
@@ -237,7 +237,7 @@ Mechanics compute_mechanics(const Model& model) {
   if (frames) add_inverse_dynamics(m, model, *frames, in_frame);
   for (const Intermediate& i : m.intermediates) m.motion.symbols.insert(i.symbol);  // a joint tree's, too
   if (frames && !m.composite_mass_matrix) m.composite_mass_matrix = frames->composite_mass_matrix(m.intermediates);
-  else
+  if (!frames)
     for (const auto& q : s.coordinates) m.potential_gradient.push_back(m.potential_energy.diff(q));
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t
   GiNaC::exmap at_rest;
