@@ -107,6 +107,7 @@ ex terms_with(const ex& expanded, const std::vector<GiNaC::realsymbol>& symbols)
 }  // namespace
 
 Equations derive_appell(const Model& model, const Mechanics& mech) {
+  if (mech.tree_velocities) return derive_joint_tree_appell(model, mech);
   const Symbols& s = model.symbols;
   std::size_t n = s.coordinates.size();
   ConstraintSet constraints = constraint_set(model, mech.motion);

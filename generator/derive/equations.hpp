@@ -111,6 +111,8 @@ struct Equations {
   std::vector<GiNaC::realsymbol> coordinate_velocities;      // the model's der(q), when v are pseudo-velocities
   std::vector<NamedSymbolic> pseudo_velocity_definitions;    // s = Y q' + y, as given or chosen
   GiNaC::ex acceleration_energy;                             // S(q, s, s', t), without terms free of s'
+  /// A tree with ball or free joints takes M and f from its recursions and forms no S.
+  bool acceleration_energy_formed() const { return !(acceleration_energy.is_zero() && !inverse_dynamics.empty()); }
   GiNaC::ex hamiltonian;  // Hamilton: H(q, p, t); the velocities are then the momenta p, M = I and f = p'
   /// Hamilton's equations of a larger model, where M⁻¹ would swell: der(q) solves
   /// momentum_mass_matrix·der(q) = p − momentum_bias in the generated code, and H, f, T and the

@@ -22,6 +22,24 @@ namespace {
 
 bool vanishes(const ex& e, const MotionSymbols& motion) { return tidy(e, motion).is_zero(); }
 
+// ∂x/∂v through the intermediates of recursive kinematics, which x may contain (chain rule, each
+// intermediate's derivative once, in their order); the intermediates stay in the result
+ex derivative_through(const ex& x, const GiNaC::symbol& v, const std::vector<Intermediate>& intermediates) {
+  ex d = x.diff(v);
+  GiNaC::exmap of;
+  for (const Intermediate& i : intermediates) {
+    ex di = i.definition.diff(v);
+    GiNaC::exset inside;
+    for (auto it = i.definition.preorder_begin(); it != i.definition.preorder_end(); ++it)
+      if (GiNaC::is_a<GiNaC::symbol>(*it) && of.count(*it)) inside.insert(*it);
+    for (const ex& k : inside) di += i.definition.diff(GiNaC::ex_to<GiNaC::symbol>(k)) * of[k];
+    if (di.is_zero()) continue;
+    of[i.symbol] = di;
+    d += x.diff(i.symbol) * di;
+  }
+  return d;
+}
+
 // what the model's applied forces are at zero inputs
 std::vector<ex> forces_without_inputs(const Mechanics& mech, const Symbols& s) {
   GiNaC::exmap no_inputs;
@@ -102,7 +120,7 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
     for (unsigned i = 0; i < c.size(); ++i) constrained = constrained || !c.jacobian(i, k).is_zero();
     if (constrained) continue;
     std::string name = e.symbols.coordinate_names[k];
-    out.push_back({k, {"p_" + name, L.T.diff(L.qdot[k]),
+    out.push_back({k, {"p_" + name, derivative_through(L.T, L.qdot[k], mech.intermediates),
                        name + " is cyclic: L does not contain it, and no applied force" + at_zero_inputs(mech, e.symbols) +
                            ", dissipation or constraint acts on it, so its momentum ∂L/∂der(" + name +
                            ") is conserved (Hiller §3.8.3)"}});

@@ -1,4 +1,5 @@
 #include "derive/methods.hpp"
+#include "spatial/joint_velocities.hpp"
 
 #include <fmt/format.h>
 
@@ -98,7 +99,7 @@ std::string method_refusal(const Model& model) {
     return fmt::format("method \"{}\" is not available in this version of eomgen; use \"lagrange2\", "
                        "\"lagrange1\" (constraints with multipliers), \"appell\" (pseudo-velocities) or \"hamilton\"",
                        model.method);
-  if (model.recursive_kinematics && model.method != "lagrange2")
+  if (model.recursive_kinematics && model.method != "lagrange2" && !has_spherical_joints(model))
     return fmt::format("recursive kinematics ([model] kinematics = \"recursive\") derives Lagrange's equations of the "
                        "second kind only: use method = \"lagrange2\", or kinematics = \"expanded\" for method \"{}\"",
                        model.method);

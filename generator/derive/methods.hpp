@@ -21,6 +21,10 @@ Equations derive_lagrange1(const Model& model, const Mechanics& mechanics);
 /// with the reason when the pseudo-velocities do not determine the velocities.
 Equations derive_appell(const Model& model, const Mechanics& mechanics);
 
+/// Appell's equations of a tree of joints with ball or free joints (mechanics.tree_velocities set),
+/// from the spatial recursions; derive_appell takes this way for such a model.
+Equations derive_joint_tree_appell(const Model& model, const Mechanics& mechanics);
+
 /// Hamilton's canonical equations in x = [q; p] (Hiller §3.8); holonomic models.
 Equations derive_hamilton(const Model& model, const Mechanics& mechanics);
 

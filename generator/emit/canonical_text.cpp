@@ -59,6 +59,10 @@ std::string constrained_text(const Equations& e) {
     out += fmt::format("s[{}] = {}\n", p.name, canonical_text(p.expression));
   for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j)
     out += fmt::format("{} = {}\n", e.coordinate_velocities[j].get_name(), canonical_text(e.coordinate_rates[j]));
+  if (!e.acceleration_energy_formed()) {
+    out += "# M and f by the tree's recursions: Newton-Euler projected on the pseudo-velocities, as d S / d der(s) is\n";
+    return out;
+  }
   out += fmt::format("# acceleration energy (terms with der(s)); Appell: d S / d der(s) = Pi\nS = {}\n",
                      canonical_text(e.acceleration_energy));
   return out;

@@ -44,6 +44,16 @@ class CppPrinter {
   }
 
  private:
+  // a * or / outside parentheses
+  static bool is_product_text(const std::string& text) {
+    int depth = 0;
+    for (char c : text) {
+      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+      if (depth == 0 && (c == '*' || c == '/')) return true;
+    }
+    return false;
+  }
+
   static std::string wrap(const Code& c, int at_least) {
     return c.precedence >= at_least && c.text[0] != '-' ? c.text : "(" + c.text + ")";
   }
@@ -137,7 +147,8 @@ class CppPrinter {
     if (!denominator.empty()) {
       std::string den;
       for (const std::string& f : denominator) den += (den.empty() ? "" : "*") + f;
-      out += "/" + (denominator.size() == 1 ? den : "(" + den + ")");
+      // the denominator is one factor: x/(s*s), never x/s*s, which C++ reads as (x/s)*s
+      out += "/" + (denominator.size() == 1 && !is_product_text(den) ? den : "(" + den + ")");
     }
     return {sign + out, 2};
   }

@@ -87,7 +87,7 @@ std::string constrained_json(const Equations& e) {
     definitions += (definitions.empty() ? "" : ", ") + quote(p.name) + ": " + expression(p.expression);
   out += ",\n  \"pseudo_velocities\": {" + definitions + "}";
   out += ",\n  \"coordinate_rates\": " + expression_array(e.coordinate_rates);
-  out += ",\n  \"acceleration_energy\": " + expression(e.acceleration_energy);
+  out += ",\n  \"acceleration_energy\": " + (e.acceleration_energy_formed() ? expression(e.acceleration_energy) : "null");
   return out;
 }
 

@@ -92,7 +92,7 @@ std::string emit_latex(const Equations& e) {
     for (std::size_t j = 0; j < e.coordinate_rates.size(); ++j)
       out += fmt::format(" \\\\\n\\dot {{{}}} &= {}", tex_name(e.symbols.coordinate_names[j]), tex(e.coordinate_rates[j]));
     if (e.method == "hamilton") out += fmt::format(" \\\\\nH &= {}", tex(e.hamiltonian));
-    else out += fmt::format(" \\\\\nS &= {}", tex(e.acceleration_energy));
+    else if (e.acceleration_energy_formed()) out += fmt::format(" \\\\\nS &= {}", tex(e.acceleration_energy));
   }
   for (const FirstIntegral& f : e.first_integrals)
     out += fmt::format(" \\\\\n{} &= {} & \\text{{(first integral)}}", tex_name(f.name == "jacobi_integral" ? "h" : f.name == "energy" ? "E" : f.name),

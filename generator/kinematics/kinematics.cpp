@@ -123,21 +123,54 @@ void add_torque(std::vector<ex>& Q, const BodyTorque& m, const BodyKinematics& b
     for (unsigned a = 0; a < 3; ++a) Q[j] += torque[a] * body.angular_velocity_jacobian(a, j);
 }
 
+// An [energy] kinetic T(q, q', t) beside ball or free joints, in the rates of the coordinates whose
+// velocity is their rate (an armature's ½ a q'²): its Lagrange terms M_T q'' + g_T (Hiller §3.3)
+// projected on the pseudo-velocities, Wᵀ(M_T q'' + g_T) with q' = W s; M_T joins the tree's M and
+// −Wᵀ g_T its bias forces (the equations are then those of derive_joint_tree_appell)
+void add_rate_kinetic_energy(Mechanics& m, const Model& model, const JointVelocities& v, const GiNaC::exmap& rates,
+                             std::vector<ex>& tau) {
+  const ex& T = model.kinetic;
+  if (T.is_zero()) return;
+  const Symbols& s = model.symbols;
+  std::size_t n = s.num_coordinates();
+  for (std::size_t j = 0; j < n; ++j) {
+    ex p = T.diff(s.velocities[j]), g = p.diff(s.time) - T.diff(s.coordinates[j]), inertia = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      g += p.diff(s.coordinates[i]) * s.velocities[i];
+      ex M_ji = p.diff(s.velocities[i]);
+      if (M_ji.is_zero()) continue;
+      int a = v.of_coordinate[j], b = v.of_coordinate[i];  // the rates of both are velocities (why_not_a_joint_tree)
+      inertia += M_ji * m.acceleration_symbols[std::size_t(b)];
+      (*m.composite_mass_matrix)(unsigned(a), unsigned(b)) += M_ji.subs(rates);
+    }
+    g = g.subs(rates);
+    for (std::size_t c = 0; c < tau.size(); ++c)
+      if (ex w = v.coordinate_rates[j].diff(v.symbols[c]); !w.is_zero()) {
+        tau[c] += w * (inertia.subs(rates) + g);
+        (*m.tree_bias_forces)[c] -= w * g;
+      }
+  }
+}
+
 // τ = M q'' − f with recursive kinematics (mechanics.hpp): the frames' Newton–Euler recursion, the
 // bodies outside the frames projected on their Jacobians, then the applied forces, [energy] and R
 void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics& frames, const std::vector<bool>& in_frame) {
   const Symbols& s = model.symbols;
   std::size_t n = s.coordinates.size();
-  for (std::size_t k = 0; k < n; ++k) m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
+  bool joint_tree = !why_not_a_joint_tree(model);
+  JointVelocities velocities = joint_tree ? joint_velocities(model) : JointVelocities{};
+  for (std::size_t k = 0; k < (velocities.pseudo ? velocities.symbols.size() : n); ++k)
+    m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   const std::vector<GiNaC::symbol>& ddq = m.acceleration_symbols;
   std::vector<ex> tau;
-  if (!why_not_a_joint_tree(model)) {
+  if (joint_tree) {
     // a tree of joints: M, the bias forces and τ by the recursions in the frames' own coordinates
-    JointTreeDynamics tree = joint_tree_dynamics(model, ddq, m.intermediates, m.acceleration_intermediates);
+    JointTreeDynamics tree = joint_tree_dynamics(model, velocities, ddq, m.intermediates, m.acceleration_intermediates);
     tau = tree.inverse_dynamics;
     m.composite_mass_matrix = tree.mass_matrix;
     m.tree_bias_forces = tree.bias_forces;
-    m.coordinate_parents = tree.coordinate_parents;
+    m.coordinate_parents = tree.velocity_parents;
+    if (velocities.pseudo) m.tree_velocities = velocities;
     m.tree_kinetic_energy = tree.kinetic_energy;
     m.potential_gradient = frames.gradient(model.potential);
   } else {
@@ -159,8 +192,21 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
       if (b.rotates) terms[j].push_back(dot(column(b.angular_velocity_jacobian, unsigned(j)), N));
     }
   }
-  for (std::size_t j = 0; j < n; ++j) tau[j] += GiNaC::add(terms[j]);
   std::vector<ex> potential = frames.gradient(model.potential);
+  if (velocities.pseudo) {
+    // the applied forces along the pseudo-velocities, Wᵀ(∂V/∂q − Q + ∂R/∂q') with q' = W s (Hiller §4.3)
+    GiNaC::exmap rates;
+    for (std::size_t j = 0; j < n; ++j) rates[s.velocities[j]] = velocities.coordinate_rates[j];
+    add_rate_kinetic_energy(m, model, velocities, rates, tau);
+    for (std::size_t j = 0; j < n; ++j) {
+      ex applied = (potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j])).subs(rates);
+      for (std::size_t c = 0; c < tau.size(); ++c)
+        if (ex w = velocities.coordinate_rates[j].diff(velocities.symbols[c]); !w.is_zero()) tau[c] += w * applied;
+    }
+    m.inverse_dynamics = tau;
+    return;
+  }
+  for (std::size_t j = 0; j < n; ++j) tau[j] += GiNaC::add(terms[j]);
   for (std::size_t j = 0; j < n; ++j) {
     tau[j] += potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j]);
     // an [energy] kinetic: d/dt ∂T/∂q'_j − ∂T/∂q_j

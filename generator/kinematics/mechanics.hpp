@@ -9,6 +9,7 @@
 #include <ginac/ginac.h>
 
 #include "model/model.hpp"
+#include "spatial/joint_velocities.hpp"
 #include "symbolic/simplify.hpp"
 
 namespace eomgen {
@@ -59,6 +60,9 @@ struct Mechanics {
   std::optional<std::vector<GiNaC::ex>> tree_bias_forces;
   std::vector<int> coordinate_parents;  // of the joint tree (Equations::coordinate_parents)
   std::optional<GiNaC::ex> tree_kinetic_energy;  // the bodies' T by the tree's velocity recursion
+  /// A joint tree with ball or free joints: its pseudo-velocities, in which M, the bias forces,
+  /// τ and T above are written (spatial/joint_velocities.hpp); the rest stays in q and q'.
+  std::optional<JointVelocities> tree_velocities;
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

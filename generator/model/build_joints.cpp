@@ -50,6 +50,7 @@ std::optional<Vector3> ModelBuilder::joint_axis(const JointEntry& j) {
 std::optional<FrameLink::Joint> ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector3& origin) {
   FrameLink::Joint joint;
   if (j.type == "fixed") return joint;
+  if (j.type == "ball" || j.type == "free") return turn_by_quaternion(j, relative, origin);
   if (j.type.empty() || j.axis.size() != 3) return std::nullopt;  // reported by the parser
   auto q = joint_coordinate(j);
   auto axis = joint_axis(j);
@@ -58,8 +59,8 @@ std::optional<FrameLink::Joint> ModelBuilder::move_by_joint(const JointEntry& j,
     if (q->is_equal(m_.symbols.coordinates[i])) joint.coordinate = int(i);
   joint.axis = unit_direction(*axis);
   ElementaryRotation turn = turn_about(*axis, *q);
+  joint.type = j.type == "prismatic" ? FrameLink::Joint::Type::prismatic : FrameLink::Joint::Type::revolute;
   if (j.type == "prismatic") {
-    joint.prismatic = true;
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b) origin[a] += relative.matrix(a, b) * joint.axis[b] * *q;
     return joint;

@@ -30,6 +30,7 @@ Model ModelBuilder::build() {
   bool joints = std::any_of(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) { return f.joint.has_value(); });
   m_.recursive_kinematics =
       f_.kinematics == "recursive" || (f_.kinematics_where.line == 0 && joints && f_.method == "lagrange2");
+  check_spherical_joints();
   m_.forward_dynamics = f_.forward_dynamics;
   m_.source = f_.path;
   check_header();
@@ -46,6 +47,24 @@ Model ModelBuilder::build() {
   check_forward_dynamics(f_, m_, d_);
   build_scenes_and_variants(f_, m_, d_);
   return m_;
+}
+
+// Ball and free joints have angular velocities as their velocities: Appell's equations over
+// the tree (the method's default for such a model), in recursive kinematics
+void ModelBuilder::check_spherical_joints() {
+  auto spherical = std::find_if(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) {
+    return f.joint && (f.joint->type == "ball" || f.joint->type == "free");
+  });
+  if (spherical == f_.frames.end()) return;
+  std::string why = fmt::format("frame '{}' has a {} joint, whose velocities are its angular velocity (pseudo-velocities)",
+                                spherical->name, spherical->joint->type);
+  if (f_.method_where.line == 0) m_.method = "appell";
+  else if (f_.method != "appell")
+    d_.error(f_.method_where, "model.method", why + fmt::format(": method \"{}\" cannot take them", f_.method),
+             "use method = \"appell\", or leave the method out");
+  if (f_.kinematics_where.line == 0) m_.recursive_kinematics = true;
+  else if (f_.kinematics != "recursive")
+    d_.error(f_.kinematics_where, "model.kinematics", why + ": they are derived over the tree", "leave kinematics out");
 }
 
 std::optional<ex> ModelBuilder::parse(const ExpressionText& text, unsigned allowed, const char* context) {

@@ -33,12 +33,21 @@ struct FrameLink {
   /// (FrameEntry::joint; a frame placed by constants alone is fixed): what the spatial
   /// algorithms over the tree (generator/spatial/) take.
   struct Joint {
-    int coordinate = -1;              // index into the coordinates; -1: fixed
-    bool prismatic = false;
+    enum class Type { fixed, revolute, prismatic, ball, free };
+    Type type = Type::fixed;
+    int coordinate = -1;              // revolute, prismatic: index into the coordinates; else -1
     Vector3 axis{0, 0, 0};            // e, a unit vector in the frame's coordinates
     Vector3 anchor{0, 0, 0};          // a point of a revolute joint's axis, frame coordinates
     GiNaC::matrix placement{3, 3};    // R_p: the frame at the joint's zero, parent coordinates
     Vector3 placement_origin{0, 0, 0};
+    /// ball and free: R = R_p·R(w, x, y, z) by the quaternion's coordinates (indices), normalized in
+    /// R itself; the velocities are ω in the frame's coordinates (pseudo-velocities, Hiller §4.4).
+    /// A ball turns about the anchor; a free joint about the origin, which it moves by `position`
+    /// in the placement's axes, o = o_p + R_p·(x, y, z).
+    std::array<int, 4> quaternion{-1, -1, -1, -1};
+    std::array<int, 3> position{-1, -1, -1};
+    std::vector<GiNaC::realsymbol> angular_velocity;
+    bool spherical() const { return type == Type::ball || type == Type::free; }
   };
   std::optional<Joint> joint;
   std::string name;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ class ModelBuilder {
   // The file's header, symbols, definitions, initial state and outputs (build_model.cpp)
   std::optional<GiNaC::ex> parse(const ExpressionText& text, unsigned allowed, const char* context);
   void check_header();
+  void check_spherical_joints();
   void declare(const std::string& name, SourceLocation where, const std::string& key,
                SymbolKind kind, std::size_t index, const char* what);
   void declare_symbols();
@@ -59,6 +61,12 @@ class ModelBuilder {
   bool is_constant_placement(const Rotation& rotation, const Vector3& origin) const;
   std::optional<GiNaC::ex> joint_coordinate(const JointEntry& joint);
   std::optional<Vector3> joint_axis(const JointEntry& joint);
+  // ball and free joints (build_spherical_joints.cpp)
+  std::optional<FrameLink::Joint> turn_by_quaternion(const JointEntry& joint, Rotation& relative, Vector3& origin);
+  std::optional<std::vector<int>> joint_coordinates(const std::vector<std::string>& names, const SourceLocation& where,
+                                                    const std::string& key);
+  bool name_angular_velocity(const JointEntry& joint, FrameLink::Joint& out);
+  void set_quaternion_rates(const JointEntry& joint, const std::array<int, 4>& quaternion);
 
   // Particles and rigid bodies (build_bodies.cpp)
   GiNaC::ex mass(const ExpressionText& text);
@@ -94,7 +102,8 @@ class ModelBuilder {
   std::map<std::string, SourceLocation> declared_at_;
   std::map<std::string, int> body_names_;
   std::map<std::string, PlacedFrame> frames_;
-  std::map<std::string, int> frame_index_;  // recursive kinematics: a frame's index in m_.frame_links
+  std::map<std::string, int> frame_index_;
+  std::set<std::string> angular_velocity_names_;  // of the ball and free joints so far  // recursive kinematics: a frame's index in m_.frame_links
 };
 
 }  // namespace eomgen

@@ -74,12 +74,18 @@ struct RigidBodyEntry {
 /// [[frames]]: a frame placed in its parent by a rotation and an origin in parent coordinates.
 /// A frame's joint: how it moves in its parent beyond its placement (see FrameEntry).
 struct JointEntry {
-  std::string type;  // revolute, prismatic or fixed
+  std::string type;  // revolute, prismatic, fixed, ball or free
   SourceLocation type_where;
   std::vector<ExpressionText> axis;    // in the frame's own coordinates at the joint's zero
-  std::vector<ExpressionText> anchor;  // revolute: a point of the axis, frame coordinates; empty: the origin
-  std::string coordinate;              // the coordinate that moves it (not for fixed)
+  std::vector<ExpressionText> anchor;  // revolute, ball: a point of the axis (the centre), frame coordinates; empty: the origin
+  std::string coordinate;              // the coordinate that moves it (revolute, prismatic)
   SourceLocation coordinate_where;
+  /// ball and free: the coordinates of the unit quaternion w, x, y, z (MJCF's order), the names of the
+  /// angular velocity's components in the frame (the velocities), and their initial values;
+  /// free: also the coordinates of the origin's position in the parent's axes
+  std::vector<std::string> quaternion, position, angular_velocity;
+  SourceLocation quaternion_where, position_where, angular_velocity_where;
+  std::vector<ExpressionText> initial_angular_velocity;
   SourceLocation where;
   std::string key;
 };

@@ -33,23 +33,78 @@ void read_frame_name(Reader& r, const toml::table& t, const std::string& key, st
 
 namespace {
 
+// a list of `count` names, e.g. quaternion = ["qw", "qx", "qy", "qz"]
+void read_names(Reader& r, const toml::node& node, const std::string& key, std::size_t count,
+                std::vector<std::string>& out, SourceLocation& where) {
+  where = r.at(node);
+  const toml::array* a = node.as_array();
+  if (!a || a->size() != count) {
+    r.error(where, key, fmt::format("expected {} names", count), fmt::format("write {} names from the model, e.g. {}", count,
+            count == 4 ? "[\"qw\", \"qx\", \"qy\", \"qz\"]" : "[\"wx\", \"wy\", \"wz\"]"));
+    return;
+  }
+  out.assign(count, "");
+  for (std::size_t i = 0; i < count; ++i) r.string(*a->get(i), fmt::format("{}[{}]", key, i), out[i]);
+}
+
+const char* const joint_types = "write type = \"revolute\", \"prismatic\", \"ball\", \"free\" or \"fixed\"";
+
+// the keys of a ball or free joint: quaternion, angular_velocity, initial_angular_velocity, position
+void read_spherical_joint(Reader& r, const toml::table& t, const std::string& key, JointEntry& j) {
+  bool free = j.type == "free";
+  if (const toml::node* n = t.get("quaternion")) read_names(r, *n, key + ".quaternion", 4, j.quaternion, j.quaternion_where);
+  else
+    r.error(j.where, key, fmt::format("a {} joint needs the coordinates of its quaternion", j.type),
+            "add quaternion = [\"qw\", \"qx\", \"qy\", \"qz\"], four names from [coordinates] (w first)");
+  if (const toml::node* n = t.get("angular_velocity"))
+    read_names(r, *n, key + ".angular_velocity", 3, j.angular_velocity, j.angular_velocity_where);
+  else
+    r.error(j.where, key, fmt::format("a {} joint needs names for its angular velocity", j.type),
+            "add angular_velocity = [\"wx\", \"wy\", \"wz\"]: the components in the frame, the joint's velocities");
+  if (const toml::node* n = t.get("initial_angular_velocity")) r.vector(*n, key + ".initial_angular_velocity", 3, j.initial_angular_velocity);
+  if (const toml::node* n = t.get("position")) {
+    if (free) read_names(r, *n, key + ".position", 3, j.position, j.position_where);
+    else r.error(r.at(*n), key + ".position", "a ball joint has no position", "use type = \"free\" for a body that also translates");
+  } else if (free) {
+    r.error(j.where, key, "a free joint needs the coordinates of its position",
+            "add position = [\"x\", \"y\", \"z\"], three names from [coordinates] (in the parent's axes)");
+  }
+  if (const toml::node* n = t.get("axis"))
+    r.error(r.at(*n), key + ".axis", fmt::format("a {} joint has no axis", j.type), "it turns about every axis; leave it out");
+  if (const toml::node* n = t.get("coordinate"))
+    r.error(r.at(*n), key + ".coordinate", fmt::format("a {} joint is moved by its quaternion, not one coordinate", j.type),
+            "name its coordinates with quaternion = [...]");
+  if (const toml::node* n = t.get("anchor"); n && free)
+    r.error(r.at(*n), key + ".anchor", "a free joint has no anchor", "it turns about the frame's origin; leave it out");
+}
+
 // joint = { type = "revolute", axis = [...], anchor = [...], coordinate = "q" }
 std::optional<JointEntry> read_joint(Reader& r, const toml::node& node, const std::string& key) {
   const toml::table* t = r.table(node, key, "type, axis, anchor, coordinate");
   if (!t) return std::nullopt;
-  r.check_keys(*t, key, {"type", "axis", "anchor", "coordinate"});
+  r.check_keys(*t, key, {"type", "axis", "anchor", "coordinate", "quaternion", "angular_velocity", "initial_angular_velocity",
+                         "position"});
   JointEntry j;
   j.key = key;
   j.where = r.at(node);
-  const char* types = "write type = \"revolute\", \"prismatic\" or \"fixed\"";
   if (const toml::node* n = t->get("type")) {
     j.type_where = r.at(*n);
     j.type_where.column += 1;
-    if (r.string(*n, key + ".type", j.type) && j.type != "revolute" && j.type != "prismatic" && j.type != "fixed")
-      r.error(j.type_where, key + ".type", fmt::format("'{}' is not a joint type", j.type), types);
+    if (r.string(*n, key + ".type", j.type) && j.type != "revolute" && j.type != "prismatic" && j.type != "fixed" &&
+        j.type != "ball" && j.type != "free")
+      r.error(j.type_where, key + ".type", fmt::format("'{}' is not a joint type", j.type), joint_types);
   } else {
-    r.error(j.where, key, "the joint has no type", types);
+    r.error(j.where, key, "the joint has no type", joint_types);
   }
+  if (j.type == "ball" || j.type == "free") {
+    read_spherical_joint(r, *t, key, j);
+    if (const toml::node* n = t->get("anchor"); n && j.type == "ball") r.vector(*n, key + ".anchor", 3, j.anchor);
+    return j;
+  }
+  for (const char* spherical : {"quaternion", "angular_velocity", "initial_angular_velocity", "position"})
+    if (const toml::node* n = t->get(spherical))
+      r.error(r.at(*n), key + "." + spherical, fmt::format("a {} joint has no {}", j.type.empty() ? "typeless" : j.type, spherical),
+              "only ball and free joints have a quaternion and an angular velocity");
   bool moves = j.type != "fixed";
   if (const toml::node* n = t->get("axis")) r.vector(*n, key + ".axis", 3, j.axis);
   else if (moves && !j.type.empty())

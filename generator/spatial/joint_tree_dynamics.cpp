@@ -1,9 +1,12 @@
 #include "spatial/joint_tree_dynamics.hpp"
 
+#include <array>
+
 #include <fmt/format.h>
 
 #include "kinematics/vector3.hpp"
 #include "model/recursive_frames.hpp"
+#include "spatial/joint_velocities.hpp"
 
 namespace eomgen {
 
@@ -38,7 +41,8 @@ struct Body {
 
 class Tree {
  public:
-  Tree(const Model& model, std::vector<Intermediate>& out) : model_(model), s_(model.symbols), out_(out) {
+  Tree(const Model& model, const JointVelocities& velocities, std::vector<Intermediate>& out)
+      : model_(model), s_(model.symbols), velocities_(velocities), out_(out) {
     std::size_t links = model.frame_links.size();
     bodies_.resize(links);
     for (const Particle& p : model.particles)
@@ -61,19 +65,25 @@ class Tree {
       const Vector3& wp = p < 0 ? zero : omega_[std::size_t(p)];
       const Vector3& alpha_p = p < 0 ? zero : alpha[std::size_t(p)];
       const Vector3& acc_p = p < 0 ? minus_g : acc[std::size_t(p)];
-      ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
-      ex qdd = l.coordinate < 0 ? ex(0) : ddq[std::size_t(l.coordinate)];
       const Vector3& carried = carried_[i];
-      Vector3 al = times(l.E, alpha_p, true) + scaled(qdd, l.e) + scaled(qd, cross(carried, l.e));
+      Vector3 turning = zero, sliding = zero, kept = zero, joint_acc = zero, joint_alpha = zero;
+      for (const Dof& d : l.dofs) {
+        const ex& sdd = ddq[std::size_t(d.velocity)];
+        turning = turning + scaled(d.rate, d.e);
+        sliding = sliding + scaled(d.rate, d.u);
+        if (d.fixed_in_frame) kept = kept + scaled(d.rate, d.u);
+        joint_alpha = joint_alpha + scaled(sdd, d.e);
+        joint_acc = joint_acc + scaled(sdd, d.u);
+      }
+      Vector3 al = times(l.E, alpha_p, true) + joint_alpha + cross(carried, turning);
       // the acceleration of the parent's point at the origin, named before it is turned: the
       // products of E with each of its terms multiplied out would cost three times as much
       Vector3 at_origin = p < 0 ? acc_p : named(out, i, "tx" + tag, acc_p + cross(alpha_p, l.r) + cross(wp, cross(wp, l.r)));
-      Vector3 a = times(l.E, at_origin, true) + scaled(2 * qd, cross(carried, l.u)) + scaled(qdd, l.u) +
-                  scaled(qd * qd, cross(l.e, l.u));
+      Vector3 a = times(l.E, at_origin, true) + scaled(2, cross(carried, sliding)) + joint_acc + cross(turning, kept);
       alpha[i] = named(out, i, "tal" + tag, al);
       acc[i] = named(out, i, "ta" + tag, a);
     }
-    std::vector<ex> tau(s_.coordinates.size(), 0);
+    std::vector<ex> tau(velocities_.symbols.size(), 0);
     for (std::size_t i = links; i-- > 0;) {
       Vector3 F = zero, N = zero;
       for (std::size_t k = 0; k < bodies_[i].size(); ++k) {
@@ -93,7 +103,7 @@ class Tree {
       }
       force[i] = named(out, i, "tF" + tag, F);
       moment[i] = named(out, i, "tN" + tag, N);
-      if (links_[i].coordinate >= 0) tau[std::size_t(links_[i].coordinate)] = dot(links_[i].e, moment[i]) + dot(links_[i].u, force[i]);
+      for (const Dof& d : links_[i].dofs) tau[std::size_t(d.velocity)] = dot(d.e, moment[i]) + dot(d.u, force[i]);
     }
     return tau;
   }
@@ -108,9 +118,9 @@ class Tree {
     for (std::size_t i = 0; i < links; ++i) {
       const Link& l = links_[i];
       int p = model_.frame_links[i].parent;
-      ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
       Vector3 carried = p < 0 ? zero : times(l.E, velocity[std::size_t(p)] + cross(omega_[std::size_t(p)], l.r), true);
-      velocity[i] = named(out_, i, "tv", carried + scaled(qd, l.u));
+      for (const Dof& d : l.dofs) carried = carried + scaled(d.rate, d.u);
+      velocity[i] = named(out_, i, "tv", carried);
       for (const Body& b : bodies_[i]) {
         Vector3 v = velocity[i] + cross(omega_[i], b.center);
         T += b.mass * dot(v, v) / 2 + dot(omega_[i], times(b.inertia, omega_[i])) / 2;
@@ -121,7 +131,7 @@ class Tree {
 
   // the composite-rigid-body algorithm
   GiNaC::matrix mass_matrix() {
-    std::size_t links = model_.frame_links.size(), n = s_.coordinates.size();
+    std::size_t links = model_.frame_links.size(), n = velocities_.symbols.size();
     std::vector<ex> mass(links);
     std::vector<Vector3> first(links);
     std::vector<GiNaC::matrix> inertia(links, GiNaC::matrix(3, 3));
@@ -160,30 +170,41 @@ class Tree {
         }
     }
     GiNaC::matrix M{unsigned(n), unsigned(n)};
-    for (std::size_t i = 0; i < links; ++i) {
-      const Link& l = links_[i];
-      if (l.coordinate < 0) continue;
-      unsigned k = unsigned(l.coordinate);
-      Vector3 p = named(out_, i, fmt::format("tp{}", k), scaled(mass[i], l.u) + cross(l.e, first[i]));
-      Vector3 L = named(out_, i, fmt::format("tL{}", k), times(inertia[i], l.e) + cross(first[i], l.u));
-      M(k, k) = (dot(l.e, L) + dot(l.u, p)).expand();
-      for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
-        const Link& c = links_[std::size_t(at)];
-        p = named(out_, std::size_t(up), fmt::format("tp{}", k), times(c.E, p));
-        L = named(out_, std::size_t(up), fmt::format("tL{}", k), times(c.E, L) + cross(c.r, p));
-        const Link& a = links_[std::size_t(up)];
-        if (a.coordinate < 0) continue;
-        unsigned j = unsigned(a.coordinate);
-        M(j, k) = M(k, j) = (dot(a.e, L) + dot(a.u, p)).expand();
+    for (std::size_t i = 0; i < links; ++i)
+      for (const Dof& d : links_[i].dofs) {
+        unsigned k = unsigned(d.velocity);
+        Vector3 p = named(out_, i, fmt::format("tp{}", k), scaled(mass[i], d.u) + cross(d.e, first[i]));
+        Vector3 L = named(out_, i, fmt::format("tL{}", k), times(inertia[i], d.e) + cross(first[i], d.u));
+        for (const Dof& other : links_[i].dofs)
+          if (other.velocity <= d.velocity) {
+            unsigned j = unsigned(other.velocity);
+            M(j, k) = M(k, j) = (dot(other.e, L) + dot(other.u, p)).expand();
+          }
+        for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
+          const Link& c = links_[std::size_t(at)];
+          p = named(out_, std::size_t(up), fmt::format("tp{}", k), times(c.E, p));
+          L = named(out_, std::size_t(up), fmt::format("tL{}", k), times(c.E, L) + cross(c.r, p));
+          for (const Dof& a : links_[std::size_t(up)].dofs) {
+            unsigned j = unsigned(a.velocity);
+            M(j, k) = M(k, j) = (dot(a.e, L) + dot(a.u, p)).expand();
+          }
+        }
       }
-    }
     return M;
   }
 
  private:
+  // one velocity of a joint: the link's ω and its origin's velocity per unit of it; `fixed_in_frame`
+  // when u turns with the link (a revolute, prismatic or ball joint's), not when it keeps the
+  // parent's axes (a free joint's position)
+  struct Dof {
+    int velocity = -1;
+    ex rate;
+    Vector3 e{0, 0, 0}, u{0, 0, 0};
+    bool fixed_in_frame = true;
+  };
   struct Link {
-    int coordinate = -1;
-    Vector3 e{0, 0, 0}, u{0, 0, 0};  // ω and the origin's velocity per q̇
+    std::vector<Dof> dofs;
     GiNaC::matrix E{3, 3};           // the link's components to its parent's
     Vector3 r{0, 0, 0};              // its origin in its parent's coordinates
   };
@@ -191,21 +212,27 @@ class Tree {
   // E, r and ω of link i, as intermediates
   void place(std::size_t i) {
     const FrameLink::Joint& j = *model_.frame_links[i].joint;
+    using Type = FrameLink::Joint::Type;
     Link l;
-    l.coordinate = j.coordinate;
     GiNaC::matrix R = identity();
-    Vector3 r = j.placement_origin;
-    if (j.coordinate >= 0) {
-      const ex q = s_.coordinates[std::size_t(j.coordinate)];
-      if (j.prismatic) {
-        l.u = j.axis;
-        r = r + times(j.placement, scaled(q, j.axis));
+    Vector3 r = j.placement_origin, zero{0, 0, 0};
+    auto velocity_of = [&](int coordinate) { return velocities_.of_coordinate[std::size_t(coordinate)]; };
+    if (j.type == Type::prismatic) {
+      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], zero, j.axis});
+      r = r + times(j.placement, scaled(s_.coordinates[std::size_t(j.coordinate)], j.axis));
+    } else if (j.type == Type::revolute) {
+      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], j.axis, cross(j.anchor, j.axis)});
+      ElementaryRotation about_axis{ElementaryRotation::about_direction, s_.coordinates[std::size_t(j.coordinate)]};
+      about_axis.direction = j.axis;
+      R = rotation_matrix(about_axis);
+      r = r + times(j.placement, j.anchor - times(R, j.anchor));
+    } else if (j.spherical()) {
+      R = quaternion_rotation(i, j);
+      if (j.type == Type::free) {
+        Vector3 x;
+        for (unsigned k = 0; k < 3; ++k) x[k] = s_.coordinates[std::size_t(j.position[k])];
+        r = r + times(j.placement, x);
       } else {
-        l.e = j.axis;
-        l.u = cross(j.anchor, j.axis);
-        ElementaryRotation about_axis{ElementaryRotation::about_direction, q};
-        about_axis.direction = j.axis;
-        R = rotation_matrix(about_axis);
         r = r + times(j.placement, j.anchor - times(R, j.anchor));
       }
     }
@@ -214,13 +241,52 @@ class Tree {
       for (unsigned b = 0; b < 3; ++b)
         l.E(a, b) = intermediate(out_, fmt::format("{}.tE_{}{}", name(i), axis_names[a], axis_names[b]),
                                  fmt::format("k_{}_tE{}{}", name(i), axis_names[a], axis_names[b]), E(a, b).expand());
+    if (j.spherical()) add_spherical_dofs(j, l);
     l.r = named(out_, i, "tr", r);
     int p = model_.frame_links[i].parent;
-    Vector3 wp = p < 0 ? Vector3{0, 0, 0} : omega_[std::size_t(p)];
-    ex qd = l.coordinate < 0 ? ex(0) : ex(s_.velocities[std::size_t(l.coordinate)]);
+    Vector3 wp = p < 0 ? zero : omega_[std::size_t(p)];
     carried_.push_back(named(out_, i, "twp", times(l.E, wp, true)));
-    omega_.push_back(named(out_, i, "tw", carried_.back() + scaled(qd, l.e)));
+    Vector3 w = carried_.back();
+    for (const Dof& d : l.dofs) w = w + scaled(d.rate, d.e);
+    omega_.push_back(named(out_, i, "tw", w));
     links_.push_back(l);
+  }
+
+  // R(q) of a ball or free joint's quaternion (model/build_spherical_joints.cpp), with 1/|q|² named
+  GiNaC::matrix quaternion_rotation(std::size_t i, const FrameLink::Joint& j) {
+    std::array<ex, 4> q;
+    for (std::size_t k = 0; k < 4; ++k) q[k] = s_.coordinates[std::size_t(j.quaternion[k])];
+    const ex &w = q[0], &x = q[1], &y = q[2], &z = q[3];
+    ex n = intermediate(out_, fmt::format("{}.tqn", name(i)), fmt::format("k_{}_tqn", name(i)),
+                        1 / (w * w + x * x + y * y + z * z));
+    GiNaC::matrix R(3, 3);
+    R(0, 0) = (w * w + x * x - y * y - z * z) * n, R(0, 1) = 2 * (x * y - w * z) * n, R(0, 2) = 2 * (x * z + w * y) * n;
+    R(1, 0) = 2 * (x * y + w * z) * n, R(1, 1) = (w * w - x * x + y * y - z * z) * n, R(1, 2) = 2 * (y * z - w * x) * n;
+    R(2, 0) = 2 * (x * z - w * y) * n, R(2, 1) = 2 * (y * z + w * x) * n, R(2, 2) = (w * w - x * x - y * y + z * z) * n;
+    return R;
+  }
+
+  // a free joint's position: u_k = Eᵀ R_p e_k, the placement's axis k in the link's coordinates;
+  // then ω about the link's axes, through the anchor (a ball's) or the origin (a free joint's)
+  void add_spherical_dofs(const FrameLink::Joint& j, Link& l) const {
+    Vector3 zero{0, 0, 0};
+    if (j.type == FrameLink::Joint::Type::free)
+      for (unsigned k = 0; k < 3; ++k) {
+        Vector3 u;
+        for (unsigned a = 0; a < 3; ++a) {
+          u[a] = 0;
+          for (unsigned b = 0; b < 3; ++b) u[a] += l.E(b, a) * j.placement(b, k);
+        }
+        l.dofs.push_back({velocities_.of_coordinate[std::size_t(j.position[k])], s_.velocities[std::size_t(j.position[k])], zero, u, false});
+      }
+    int first = -1;
+    for (std::size_t v = 0; v < velocities_.symbols.size() && first < 0; ++v)
+      if (velocities_.symbols[v] == j.angular_velocity[0]) first = int(v);
+    for (unsigned k = 0; k < 3; ++k) {
+      Vector3 e{0, 0, 0};
+      e[k] = 1;
+      l.dofs.push_back({first + int(k), j.angular_velocity[k], e, cross(j.anchor, e)});
+    }
   }
 
   // the inertia about a point at −d from the centre (J_O = J_c + m(|d|²I − d dᵀ)), and with s, the
@@ -247,6 +313,7 @@ class Tree {
 
   const Model& model_;
   const Symbols& s_;
+  const JointVelocities& velocities_;
   std::vector<Intermediate>& out_;
   std::vector<std::vector<Body>> bodies_;
   std::vector<Link> links_;
@@ -254,18 +321,26 @@ class Tree {
   std::vector<Vector3> carried_;  // the parent's ω in the link's coordinates
 };
 
-// the coordinate of the nearest joint above each coordinate's own; empty unless every one is
-// above (numbered before) those it carries
-std::vector<int> coordinate_parents(const Model& model) {
-  std::vector<int> parents(model.symbols.coordinates.size(), -1);
-  for (const FrameLink& l : model.frame_links) {
-    if (l.joint->coordinate < 0) continue;
-    int above = l.parent;
-    while (above >= 0 && model.frame_links[std::size_t(above)].joint->coordinate < 0)
-      above = model.frame_links[std::size_t(above)].parent;
-    int parent = above < 0 ? -1 : model.frame_links[std::size_t(above)].joint->coordinate;
-    if (parent >= l.joint->coordinate) return {};
-    parents[std::size_t(l.joint->coordinate)] = parent;
+// for each velocity, the one above it: the one before it in its own joint, or the last of the
+// nearest joint above that has any; empty unless every one is above (numbered before) those it carries
+std::vector<int> velocity_parents(const Model& model, const JointVelocities& v) {
+  std::vector<int> parents(v.symbols.size(), -1), last(model.frame_links.size(), -1);
+  for (std::size_t i = 0; i < model.frame_links.size(); ++i) {
+    const FrameLink& l = model.frame_links[i];
+    std::vector<int> own;
+    if (l.joint->coordinate >= 0) own.push_back(v.of_coordinate[std::size_t(l.joint->coordinate)]);
+    if (l.joint->type == FrameLink::Joint::Type::free)
+      for (int k : l.joint->position) own.push_back(v.of_coordinate[std::size_t(k)]);
+    for (std::size_t k = 0; k < l.joint->angular_velocity.size(); ++k)
+      for (std::size_t s = 0; s < v.symbols.size(); ++s)
+        if (v.symbols[s] == l.joint->angular_velocity[k]) own.push_back(int(s));
+    int above = l.parent < 0 ? -1 : last[std::size_t(l.parent)];
+    for (int s : own) {
+      if (above >= s) return {};
+      parents[std::size_t(s)] = above;
+      above = s;
+    }
+    last[i] = above;
   }
   return parents;
 }
@@ -279,6 +354,10 @@ std::optional<std::string> why_not_a_joint_tree(const Model& model) {
   for (const FrameLink& l : model.frame_links) {
     if (!l.joint) return fmt::format("frame '{}' is not placed by constants and moved by one joint", l.name);
     if (l.joint->coordinate >= 0) ++joints[std::size_t(l.joint->coordinate)];
+    for (int k : l.joint->quaternion)
+      if (k >= 0) ++joints[std::size_t(k)];
+    for (int k : l.joint->position)
+      if (k >= 0) ++joints[std::size_t(k)];
   }
   for (std::size_t k = 0; k < joints.size(); ++k)
     if (joints[k] != 1) return fmt::format("coordinate '{}' moves {} joints, not one", s.coordinate_names[k], joints[k]);
@@ -290,21 +369,27 @@ std::optional<std::string> why_not_a_joint_tree(const Model& model) {
         moves(r.placement.relative, s))
       return fmt::format("rigid body '{}' does not sit still in a frame", r.name);
   if (moves(model.gravity[0] + model.gravity[1] + model.gravity[2], s)) return "gravity changes with q or t";
+  for (const FrameLink& l : model.frame_links)
+    for (int k : l.joint->quaternion)
+      if (k >= 0 && model.kinetic.has(s.velocities[std::size_t(k)]))
+        return fmt::format("its [energy] kinetic has the rate of the quaternion's '{}', whose velocities are an angular "
+                           "velocity", s.coordinate_names[std::size_t(k)]);
   return std::nullopt;
 }
 
-JointTreeDynamics joint_tree_dynamics(const Model& model, const std::vector<GiNaC::symbol>& accelerations,
+JointTreeDynamics joint_tree_dynamics(const Model& model, const JointVelocities& velocities,
+                                      const std::vector<GiNaC::symbol>& accelerations,
                                       std::vector<Intermediate>& intermediates,
                                       std::vector<Intermediate>& acceleration_intermediates) {
-  Tree tree(model, intermediates);
+  Tree tree(model, velocities, intermediates);
   JointTreeDynamics d;
-  std::vector<ex> none(model.symbols.coordinates.size(), 0), ddq(accelerations.begin(), accelerations.end());
+  std::vector<ex> none(velocities.symbols.size(), 0), ddq(accelerations.begin(), accelerations.end());
   d.bias_forces = tree.inverse_dynamics(none, "0", intermediates);
   for (ex& f : d.bias_forces) f = -f;
   d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
   d.mass_matrix = tree.mass_matrix();
   d.kinetic_energy = tree.kinetic_energy();
-  d.coordinate_parents = coordinate_parents(model);
+  d.velocity_parents = velocity_parents(model, velocities);
   return d;
 }
 

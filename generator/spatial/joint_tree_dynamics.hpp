@@ -3,7 +3,9 @@
 /// composite-rigid-body algorithms, in 3-vector form; Hiller §3.9 for the kinematics).
 ///
 /// It applies when every frame is placed in its parent by constants and moved by one joint
-/// (revolute or prismatic about its unit axis e, through its anchor a; or fixed), every
+/// (revolute or prismatic about its unit axis e, through its anchor a; ball or free, whose three
+/// angular velocities are three such axes e_k of the frame, and a free joint's position three
+/// slides along the parent's axes; or fixed), every
 /// coordinate moves exactly one joint, and every body sits still in a frame. A link i with
 /// parent p then has, in its own coordinates (E_i: i's components to p's, r_i: its origin in p):
 ///   ω_i = E_iᵀ ω_p + e q̇
@@ -25,14 +27,16 @@
 #include <ginac/ginac.h>
 
 #include "model/model.hpp"
+#include "spatial/joint_velocities.hpp"
 
 namespace eomgen {
 
+/// In the tree's velocities s (spatial/joint_velocities.hpp): q' but for ball and free joints.
 struct JointTreeDynamics {
   GiNaC::matrix mass_matrix;
-  std::vector<GiNaC::ex> bias_forces;       // −τ(q, q̇, q̈ = 0): as f takes the bodies' forces, gravity included
-  std::vector<GiNaC::ex> inverse_dynamics;  // τ(q, q̇, q̈) of the bodies, in the acceleration symbols
-  std::vector<int> coordinate_parents;      // Equations::coordinate_parents, or empty
+  std::vector<GiNaC::ex> bias_forces;       // −τ(q, s, s' = 0): as f takes the bodies' forces, gravity included
+  std::vector<GiNaC::ex> inverse_dynamics;  // τ(q, s, s') of the bodies, in the acceleration symbols
+  std::vector<int> velocity_parents;        // Equations::coordinate_parents, or empty
   GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
 };
 
@@ -41,7 +45,8 @@ std::optional<std::string> why_not_a_joint_tree(const Model& model);
 
 /// The dynamics above; its quantities are appended to `intermediates` (those of q̈ = 0 and of M)
 /// and to `acceleration_intermediates` (those of the pass with q̈ = `accelerations`).
-JointTreeDynamics joint_tree_dynamics(const Model& model, const std::vector<GiNaC::symbol>& accelerations,
+JointTreeDynamics joint_tree_dynamics(const Model& model, const JointVelocities& velocities,
+                                      const std::vector<GiNaC::symbol>& accelerations,
                                       std::vector<Intermediate>& intermediates,
                                       std::vector<Intermediate>& acceleration_intermediates);
 

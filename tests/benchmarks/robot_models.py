@@ -11,7 +11,7 @@ tree's is 3.7 MB):
 - branched_tree: 21 hinges in a humanoid's branching (a spine of 3, two arms of 3, two legs of
   6) about oblique axes through offset anchors, with the same kinds of bodies.
 
-The numbers are drawn from a fixed seed and written with 6 significant digits. MJCF takes each
+The numbers are drawn from a fixed seed and written with 10 significant digits (all they have). MJCF takes each
 inertia tensor in its principal axes (quat and diaginertia, from numpy's eigh in double
 precision, to about 1e-16 of the tensor): MuJoCo 2.2.2 diagonalizes a fullinertia only to about
 1e-7. Usage: robot_models.py REPOSITORY_ROOT (needs numpy)
@@ -24,7 +24,7 @@ import numpy as np
 
 
 def number(x):
-    return f"{x:.6g}"
+    return f"{x:.10g}"
 
 
 def quat_of(R):
@@ -70,12 +70,27 @@ QUARTER = {"+x": ("rot_x(Pi/2)", "0.7071067811865476 0.7071067811865476 0 0"),
            "-x": ("rot_x(-Pi/2)", "0.7071067811865476 -0.7071067811865476 0 0"), "": (None, None)}
 
 
-def write(root, name, title, comment, links, gravity=9.81):
-    """links: dicts with name, parent, origin, turn ('+x', '-x' or ''), axis, anchor, body."""
+FREE_COORDINATES = ["x", "y", "z", "qw", "qx", "qy", "qz"]
+
+
+def write(root, name, title, comment, links, gravity=9.81, base=None):
+    """links: dicts with name, parent, origin, turn ('+x', '-x' or ''), axis, anchor, body; base:
+    a floating base (name, height, body) on a free joint, the links' root, or None."""
+    method = "appell" if base else "lagrange2"
     toml = [f"# {line}".rstrip() for line in comment] + [
-        "", "[model]", f'name       = "{name}"', f'title      = "{title}"', 'method     = "lagrange2"', "", "[parameters]", f"g = {gravity}", "", "[inputs]"]
+        "", "[model]", f'name       = "{name}"', f'title      = "{title}"', f'method     = "{method}"', "", "[parameters]", f"g = {gravity}", "", "[inputs]"]
     toml += [f"u{i + 1} = 0.0" for i in range(len(links))] + ["", "[coordinates]"]
+    if base:
+        toml += ["x  = 0", "y  = 0", f"z  = {number(base['height'])}", "qw = 1", "qx = 0", "qy = 0", "qz = 0"]
     toml += [f"q{i + 1} = {{ initial = {number(0.1 * ((i % 5) - 2))}, rate = 0.0 }}" for i in range(len(links))]
+    if base:
+        mass, center, inertia = base["body"]
+        toml += ["", "[[frames]]", f'name   = "{base["name"]}"',
+                 'joint  = { type = "free", position = ["x", "y", "z"], quaternion = ["qw", "qx", "qy", "qz"], '
+                 'angular_velocity = ["wx", "wy", "wz"] }',
+                 "", "[[rigid_bodies]]", f'name    = "{base["name"]}_body"', f'mass    = "{number(mass)}"',
+                 f'frame   = "{base["name"]}"', "center  = [" + ", ".join(f'"{number(x)}"' for x in center) + "]",
+                 "inertia = [" + ", ".join("[" + ", ".join(f'"{number(x)}"' for x in row) + "]" for row in inertia) + "]"]
     kinetic, dissipation, forces = [], [], []
     for i, link in enumerate(links):
         q = f"q{i + 1}"
@@ -88,7 +103,8 @@ def write(root, name, title, comment, links, gravity=9.81):
         anchor = "" if not any(link["anchor"]) else ", anchor = [" + ", ".join(f'"{number(x)}"' for x in link["anchor"]) + "]"
         toml.append('joint  = { type = "revolute", axis = [' + ", ".join(f'"{number(x)}"' for x in link["axis"]) + "]"
                     + anchor + f', coordinate = "{q}" }}')
-        kinetic.append(f"{number(link['armature'])}*der({q})^2")
+        if link["armature"]:
+            kinetic.append(f"{number(link['armature'])}*der({q})^2")
         dissipation.append(f"{number(link['damping'])}*der({q})^2")
         forces.append(f'{q} = "u{i + 1}"')
     for link in links:
@@ -96,9 +112,10 @@ def write(root, name, title, comment, links, gravity=9.81):
         toml += ["", "[[rigid_bodies]]", f'name    = "{link["name"]}_body"', f'mass    = "{number(mass)}"',
                  f'frame   = "{link["name"]}"', "center  = [" + ", ".join(f'"{number(x)}"' for x in center) + "]",
                  "inertia = [" + ", ".join("[" + ", ".join(f'"{number(x)}"' for x in row) + "]" for row in inertia) + "]"]
-    toml += ["", "[gravity]", 'acceleration = ["0", "0", "-g"]', "", "[energy]",
-             'kinetic     = "(' + " + ".join(kinetic) + ')/2"', 'dissipation = "(' + " + ".join(dissipation) + ')/2"',
-             "", "[[forces]]", "generalized = { " + ", ".join(forces) + " }", ""]
+    toml += ["", "[gravity]", 'acceleration = ["0", "0", "-g"]', "", "[energy]"]
+    toml += ['kinetic     = "(' + " + ".join(kinetic) + ')/2"'] if kinetic else []
+    toml += ['dissipation = "(' + " + ".join(dissipation) + ')/2"', "", "[[forces]]",
+             "generalized = { " + ", ".join(forces) + " }", ""]
     with open(os.path.join(root, "tests", "crosscheck", "models", f"{name}.toml"), "w") as f:
         f.write("\n".join(toml))
 
@@ -109,6 +126,12 @@ def write(root, name, title, comment, links, gravity=9.81):
     for i, link in enumerate(links):
         children.setdefault(link["parent"], []).append(i)
 
+    def inertial(pad, body):
+        mass, center, inertia = body
+        quat_i, diag = principal_axes(inertia)
+        xml.append(f'{pad}  <inertial pos="{" ".join(number(x) for x in center)}" mass="{number(mass)}" '
+                   f'quat="{" ".join(repr(float(x)) for x in quat_i)}" diaginertia="{" ".join(repr(float(x)) for x in diag)}"/>')
+
     def emit(i, depth):
         link = links[i]
         pad = "  " * depth
@@ -118,14 +141,17 @@ def write(root, name, title, comment, links, gravity=9.81):
         xml.append(f'{pad}  <joint name="q{i + 1}" type="hinge" axis="{" ".join(number(x) for x in link["axis"])}" '
                    f'pos="{" ".join(number(x) for x in link["anchor"])}" armature="{number(link["armature"])}" '
                    f'damping="{number(link["damping"])}"/>')
-        mass, center, inertia = link["body"]
-        quat_i, diag = principal_axes(inertia)
-        xml.append(f'{pad}  <inertial pos="{" ".join(number(x) for x in center)}" mass="{number(mass)}" '
-                   f'quat="{" ".join(repr(float(x)) for x in quat_i)}" diaginertia="{" ".join(repr(float(x)) for x in diag)}"/>')
+        inertial(pad, link["body"])
         for c in children.get(link["name"], []):
             emit(c, depth + 1)
         xml.append(f"{pad}</body>")
 
+    if base:
+        xml += [f'    <body name="{base["name"]}" pos="0 0 {number(base["height"])}">', '      <freejoint name="root"/>']
+        inertial("    ", base["body"])
+        for i in children.get(base["name"], []):
+            emit(i, 3)
+        xml.append("    </body>")
     for i in children.get("", []):
         emit(i, 2)
     xml += ["  </worldbody>", "  <actuator>"]
@@ -168,6 +194,22 @@ def branched_tree(rng):
     return links
 
 
+def quadruped(rng):
+    """a floating torso with four legs of three hinges: hip abduction about x through an offset
+    anchor, hip flexion about y, and a knee about an axis tilted from y."""
+    links = []
+    for leg, (sx, sy) in {"front_left": (1, 1), "front_right": (1, -1), "rear_left": (-1, 1), "rear_right": (-1, -1)}.items():
+        hip, thigh = f"{leg}_hip", f"{leg}_thigh"
+        links.append(dict(name=hip, parent="torso", origin=(0.19 * sx, 0.05 * sy, 0), turn="", axis=(1, 0, 0),
+                          anchor=(0, 0.01 * sy, 0), body=body(rng, 0.3), armature=0.01, damping=0.1))
+        links.append(dict(name=thigh, parent=hip, origin=(0, 0.08 * sy, 0), turn="", axis=(0, 1, 0),
+                          anchor=(0, 0, 0), body=body(rng, 0.4), armature=0.01, damping=0.1))
+        links.append(dict(name=f"{leg}_calf", parent=thigh, origin=(0, 0, -0.21), turn="",
+                          axis=(round(rng.uniform(-0.1, 0.1), 3), 1, round(rng.uniform(-0.1, 0.1), 3)),
+                          anchor=(0, 0, 0.01), body=body(rng, 0.2), armature=0.02, damping=0.1))
+    return links
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
     rng = random.Random(38)
@@ -183,6 +225,13 @@ def main():
            "and a motor on each joint: the 20+ joint tree of the tree benchmark and the MuJoCo oracle",
            "test. Written by tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/branched_tree.xml."],
           branched_tree(rng))
+    write(root, "quadruped", "Quadruped on a floating base: a free torso and four legs of three hinges",
+          ["A quadruped on a floating base for the MuJoCo oracle test: a torso on a free joint (position,",
+           "unit quaternion, angular velocity in the torso's axes: MuJoCo's qpos and qvel layout) and",
+           "four legs of three hinges (hip abduction about x through an offset anchor, hip flexion about",
+           "y, a knee about a tilted axis), bodies with full inertia tensors, armature, damping and a",
+           "motor on each hinge. Written by tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/quadruped.xml."],
+          quadruped(rng), base=dict(name="torso", height=0.45, body=body(rng, 6.0)))
 
 
 if __name__ == "__main__":

@@ -10,7 +10,8 @@ layout, measured inertias, turned by rot_z(q): the frame recursion), models/obli
 (5 joints, branched, oblique axes through offset anchors, a slide, a fixed frame), and
 tests/crosscheck/models/ (robot_models.py): seven_joint_arm (a Panda's layout) and
 branched_tree (21 oblique hinges in a humanoid's branching; its jacobian_state, 1.7 MB of
-code, is left out of the build). Prints a Markdown table.
+code, is left out of the build) and quadruped (a free torso, four legs of three hinges: 19
+coordinates, 18 velocities). Prints a Markdown table.
 
 Usage: tree_benchmark.py EOMGEN [--quick]   (exit 77 without a C++ compiler or MuJoCo)
 """
@@ -24,7 +25,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-ROBOTS = ("measured_arm", "oblique_tree", "seven_joint_arm", "branched_tree")
+ROBOTS = ("measured_arm", "oblique_tree", "seven_joint_arm", "branched_tree", "quadruped")
 WITHOUT_JACOBIAN = ("branched_tree",)
 
 

@@ -4,7 +4,8 @@
 // models/oblique_tree.toml: five joints about oblique axes through offset anchors, a
 // prismatic joint, a fixed frame, a placement given as a matrix, full inertia tensors,
 // armature, damping, a spring and a geared motor. models/measured_arm.toml: three joints with the
-// Panda's first links' layout and measured inertias to 17 digits.
+// Panda's first links' layout and measured inertias to 17 digits. A quadruped on a floating base
+// and a free body: ball and free joints in MuJoCo's qpos and qvel layout.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,7 +21,9 @@
 #include "branched_tree.hpp"
 #include "measured_arm.hpp"
 #include "oblique_tree.hpp"
+#include "quadruped.hpp"
 #include "seven_joint_arm.hpp"
+#include "tumbling_body.hpp"
 
 namespace {
 
@@ -44,26 +47,52 @@ struct MujocoModel {
 
 std::string mjcf(const std::string& name) { return std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/" + name; }
 
+// a random state in MuJoCo's qpos, qvel: angles and positions, unit quaternions for ball and free joints
+void random_state(const mjModel* m, std::mt19937& random, double* qpos, double* qvel) {
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-4.0, 4.0);
+  for (int i = 0; i < m->nq; ++i) qpos[i] = angle(random);
+  for (int i = 0; i < m->nv; ++i) qvel[i] = rate(random);
+  for (int j = 0; j < m->njnt; ++j) {
+    int type = m->jnt_type[j], at = m->jnt_qposadr[j] + (type == mjJNT_FREE ? 3 : 0);
+    if (type == mjJNT_BALL || type == mjJNT_FREE) mju_normalize4(qpos + at);
+  }
+}
+
+// q' of the state by MuJoCo's own integration of the positions (mj_integratePos, which turns a
+// quaternion by exp(ω dt) about the body's axes), as a central difference: to about 1e-10
+std::vector<double> coordinate_rates(const mjModel* m, const double* qpos, const double* qvel) {
+  const double h = 1e-6;
+  std::vector<double> ahead(qpos, qpos + m->nq), behind(ahead), rates(ahead.size());
+  mj_integratePos(m, ahead.data(), qvel, h);
+  mj_integratePos(m, behind.data(), qvel, -h);
+  for (std::size_t i = 0; i < rates.size(); ++i) rates[i] = (ahead[i] - behind[i]) / (2 * h);
+  return rates;
+}
+
 // largest |ours − MuJoCo's| over the largest |qacc|, over `count` random states and controls
 template <class Rhs>
-double worst_relative_difference(MujocoModel& mj, int n, int m, Rhs rhs, int count) {
-  EXPECT_EQ(mj.model->nq, n);
+double worst_relative_difference(MujocoModel& mj, int nq, int nv, int m, Rhs rhs, int count) {
+  EXPECT_EQ(mj.model->nq, nq);
+  EXPECT_EQ(mj.model->nv, nv);
   EXPECT_EQ(mj.model->nu, m);
   std::mt19937 random(2026);
-  std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-4.0, 4.0), control(-2.0, 2.0);
-  std::vector<double> x(2 * n), xdot(2 * n), u(std::max(m, 1));
+  std::uniform_real_distribution<double> control(-2.0, 2.0);
+  std::vector<double> x(std::size_t(nq + nv)), xdot(x.size()), u(std::size_t(std::max(m, 1)));
   double worst = 0;
   for (int k = 0; k < count; ++k) {
-    for (int i = 0; i < n; ++i) mj.data->qpos[i] = x[i] = angle(random), mj.data->qvel[i] = x[n + i] = rate(random);
-    for (int i = 0; i < m; ++i) mj.data->ctrl[i] = u[i] = control(random);
+    random_state(mj.model, random, mj.data->qpos, mj.data->qvel);
+    std::copy(mj.data->qpos, mj.data->qpos + nq, x.begin());
+    std::copy(mj.data->qvel, mj.data->qvel + nv, x.begin() + nq);
+    for (int i = 0; i < m; ++i) mj.data->ctrl[i] = u[std::size_t(i)] = control(random);
     mj_forward(mj.model, mj.data);
     rhs(x.data(), u.data(), xdot.data());
     double size = 0, difference = 0;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < nv; ++i) {
       size = std::max(size, std::abs(mj.data->qacc[i]));
-      difference = std::max(difference, std::abs(xdot[n + i] - mj.data->qacc[i]));
-      EXPECT_EQ(xdot[i], x[n + i]);
+      difference = std::max(difference, std::abs(xdot[std::size_t(nq + i)] - mj.data->qacc[i]));
     }
+    std::vector<double> rates = coordinate_rates(mj.model, mj.data->qpos, mj.data->qvel);
+    for (int i = 0; i < nq; ++i) EXPECT_NEAR(xdot[std::size_t(i)], rates[std::size_t(i)], 1e-8) << "q'[" << i << "]";
     worst = std::max(worst, difference / size);
   }
   return worst;
@@ -71,22 +100,22 @@ double worst_relative_difference(MujocoModel& mj, int n, int m, Rhs rhs, int cou
 
 // the generated model's rhs (with its default parameters) against mj_forward on `file`
 template <class Parameters, class Rhs>
-void expect_matches_mujoco(const std::string& file, int n, int m, Rhs model_rhs) {
+void expect_matches_mujoco(const std::string& file, int nq, int nv, int m, Rhs model_rhs) {
   MujocoModel mj(mjcf(file));
   ASSERT_NE(mj.model, nullptr) << mj.message;
   auto p = Parameters().values();
   auto rhs = [&](const double* x, const double* u, double* xdot) { model_rhs(0.0, x, u, p.data(), xdot); };
-  double worst = worst_relative_difference(mj, n, m, rhs, 200);
+  double worst = worst_relative_difference(mj, nq, nv, m, rhs, 200);
   std::printf("%s: largest difference from MuJoCo's qacc: %.2g of its size\n", file.c_str(), worst);
   EXPECT_LT(worst, 1e-12);
   EXPECT_GT(worst, 0.0) << "two independent computations agree to the last bit at every state: suspicious";
 }
 
 // a generated model's namespace M: its rhs for double, its sizes and its parameters
-#define EXPECT_MATCHES_MUJOCO(M)                                                                            \
-  expect_matches_mujoco<eomgen::models::M::Parameters<double>>(#M ".xml", int(eomgen::models::M::num_coordinates), \
-                                                               int(eomgen::models::M::num_inputs),                   \
-                                                               eomgen::models::M::rhs<double>)
+#define EXPECT_MATCHES_MUJOCO(M)                                                                              \
+  expect_matches_mujoco<eomgen::models::M::Parameters<double>>(                                              \
+      #M ".xml", int(eomgen::models::M::num_coordinates), int(eomgen::models::M::num_velocities),            \
+      int(eomgen::models::M::num_inputs), eomgen::models::M::rhs<double>)
 
 TEST(MujocoOracle, ObliqueJointsThroughOffsetAnchorsMatchMujoco) { EXPECT_MATCHES_MUJOCO(oblique_tree); }
 
@@ -97,5 +126,11 @@ TEST(MujocoOracle, SevenJointArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(seven_joi
 TEST(MujocoOracle, BranchedTreeOf21ObliqueHingesMatchesMujoco) { EXPECT_MATCHES_MUJOCO(branched_tree); }
 
 TEST(MujocoOracle, MeasuredArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(measured_arm); }
+
+// a floating base: a free joint's position, quaternion and angular velocity in MuJoCo's layout,
+// with twelve hinges below it; and the free tumbling body of models/
+TEST(MujocoOracle, QuadrupedOnAFloatingBaseMatchesMujoco) { EXPECT_MATCHES_MUJOCO(quadruped); }
+
+TEST(MujocoOracle, FreeTumblingBodyMatchesMujoco) { EXPECT_MATCHES_MUJOCO(tumbling_body); }
 
 }  // namespace

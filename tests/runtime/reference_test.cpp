@@ -6,11 +6,16 @@
 
 #include <cmath>
 
+#include <cstdio>
+
+#include <Eigen/Dense>
+
 #include "analyse/accuracy.hpp"
 #include "reference/reference_solution.hpp"
 
 #include "../generated/free_rigid_body.hpp"
 #include "../generated/pendulum.hpp"
+#include "../generated/tumbling_body.hpp"
 
 namespace eomgen::test {
 namespace {
@@ -148,6 +153,65 @@ TEST(Reference, FreeRigidBodyMatchesEulersEquationsSolution) {
   double error = runtime::trajectory_error(computed, exact);
   EXPECT_LT(error, 1e-12);
   EXPECT_LT(runtime::trajectory_error(coarse, rows), 1e-12);
+}
+
+// A free body on a quaternion, spun near its intermediate axis (models/tumbling_body.toml,
+// Hiller §3.9.4): over 100 s it flips again and again as Jacobi's solution of Euler's equations
+// says, passes every orientation with no singularity, its centre falls as z0 + vz0 t − g t²/2, and
+// it keeps its energy and its angular momentum R I ω in inertial axes to 1e-10.
+TEST(Reference, FreeBodyOnAQuaternionTumblesAsEulersEquationsSay) {
+  namespace m = eomgen::models::tumbling_body;
+  using W = reference::Wide;
+  std::vector<W> p;
+  for (double v : m::default_parameters) p.push_back(W(v));
+  auto rhs = [&](W t, const W* x, W* xdot) { m::rhs<W>(t, x, nullptr, p.data(), xdot); };
+  std::vector<double> x0(m::default_state.begin(), m::default_state.end()), times = output_times(100, 0.25);
+  auto rows = reference_rows(rhs, m::num_states, x0, times, 0.02);
+  long double I1 = m::default_parameters[0], I2 = m::default_parameters[1], I3 = m::default_parameters[2];
+  double mass = m::default_parameters[3], g = m::default_parameters[4];
+  // x: x, y, z, qw, qx, qy, qz, der(x), der(y), der(z), wx, wy, wz
+  long double w10 = x0[10], w30 = x0[12];
+  ASSERT_EQ(x0[11], 0.0);
+  long double E2 = I1 * w10 * w10 + I3 * w30 * w30, L2 = I1 * I1 * w10 * w10 + I3 * I3 * w30 * w30;
+  ASSERT_GT(L2, E2 * I2);
+  long double w2m = std::sqrt((E2 * I3 - L2) / (I2 * (I3 - I2)));
+  long double rate = std::sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3));
+  long double mm = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1));
+  auto energy = [&](const std::vector<double>& x) {
+    return 0.5 * mass * (x[7] * x[7] + x[8] * x[8] + x[9] * x[9]) + mass * g * x[2] +
+           0.5 * (double(I1) * x[10] * x[10] + double(I2) * x[11] * x[11] + double(I3) * x[12] * x[12]);
+  };
+  auto momentum = [&](const std::vector<double>& x) {
+    Eigen::Quaterniond q(x[3], x[4], x[5], x[6]);
+    return Eigen::Vector3d(q.normalized().toRotationMatrix() *
+                           Eigen::Vector3d(double(I1) * x[10], double(I2) * x[11], double(I3) * x[12]));
+  };
+  double E0 = energy(x0), w0 = std::sqrt(double(w10 * w10 + w30 * w30));
+  Eigen::Vector3d L0 = momentum(x0);
+  double worst_w = 0, worst_E = 0, worst_L = 0, worst_z = 0, worst_norm = 0, largest_wy = 0;
+  int flips = 0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const std::vector<double>& x = rows[k];
+    Jacobi j = jacobi(rate * times[k], mm);
+    long double exact[3] = {w10 * j.cn, w2m * j.sn, w30 * j.dn};
+    for (int a = 0; a < 3; ++a) worst_w = std::max(worst_w, std::abs(x[std::size_t(10 + a)] - double(exact[a])) / w0);
+    worst_E = std::max(worst_E, std::abs(energy(x) - E0) / E0);
+    worst_L = std::max(worst_L, (momentum(x) - L0).norm() / L0.norm());
+    double z = x0[2] + x0[9] * times[k] - g * times[k] * times[k] / 2;
+    worst_z = std::max(worst_z, std::abs(x[2] - z) / std::max(1.0, std::abs(z)));
+    worst_norm = std::max(worst_norm, std::abs(std::sqrt(x[3] * x[3] + x[4] * x[4] + x[5] * x[5] + x[6] * x[6]) - 1));
+    if (k > 0 && rows[k - 1][11] * x[11] < 0) ++flips;
+    largest_wy = std::max(largest_wy, std::abs(x[11]));
+  }
+  std::printf("tumbling body over 100 s: ω %.2g, energy %.2g, angular momentum %.2g, fall %.2g, |q| %.2g; %d flips\n",
+              worst_w, worst_E, worst_L, worst_z, worst_norm, flips);
+  EXPECT_LT(worst_w, 1e-10) << "ω against Jacobi's solution";
+  EXPECT_LT(worst_E, 1e-10) << "energy";
+  EXPECT_LT(worst_L, 1e-10) << "angular momentum in inertial axes";
+  EXPECT_LT(worst_z, 1e-10) << "the centre's fall";
+  EXPECT_LT(worst_norm, 1e-10) << "|q| stays 1";
+  EXPECT_GT(largest_wy, 0.99 * double(w2m)) << "the body turns over to its intermediate axis";
+  EXPECT_GE(flips, 4) << "it flips again and again";
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "emit/cpp_constant.hpp"
+#include "emit/cpp_expression.hpp"
 #include "reference/reference_solution.hpp"
 #include "support/test_support.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -24,6 +25,17 @@ namespace eomgen::test {
 namespace {
 
 using GiNaC::numeric;
+
+// a square in a denominator is one factor: x/((a + b)*(a + b)), never x/(a + b)*(a + b), which C++
+// reads as (x/(a + b))*(a + b) (a quaternion's 1/|q|² differentiated gave exactly that)
+TEST(CppExpression, AProductInADenominatorIsWrapped) {
+  GiNaC::symbol x("x"), a("a"), b("b");
+  auto name = [](const GiNaC::symbol& s) { return s.get_name(); };
+  EXPECT_EQ(cpp_expression(x * GiNaC::pow(a + b, -2), name), "x/((a + b)*(a + b))");
+  EXPECT_EQ(cpp_expression(x * GiNaC::pow(a, -2), name), "x/(a*a)");
+  EXPECT_EQ(cpp_expression(x * GiNaC::pow(a, -1), name), "x/a");
+  EXPECT_EQ(cpp_expression(x * GiNaC::pow(a, -1) * GiNaC::pow(b, -2), name), "x/(a*b*b)");
+}
 
 numeric power_of_two(int k) { return GiNaC::pow(numeric(2), numeric(k)); }
 numeric decimal(const char* digits, int exponent) { return numeric(digits) * GiNaC::pow(numeric(10), numeric(exponent)); }

@@ -164,7 +164,7 @@ TEST(Joints, MisusesAreLocated) {
   EXPECT_NE(zero.find("frames[0].joint.axis: the joint's axis is zero"), std::string::npos) << zero;
   std::string kind = with_joint("{ type = \"hinge\", axis = [\"0\", \"0\", \"1\"], coordinate = \"q\" }");
   EXPECT_NE(kind.find("'hinge' is not a joint type"), std::string::npos) << kind;
-  EXPECT_NE(kind.find("\"revolute\", \"prismatic\" or \"fixed\""), std::string::npos) << kind;
+  EXPECT_NE(kind.find("\"revolute\", \"prismatic\", \"ball\", \"free\" or \"fixed\""), std::string::npos) << kind;
   std::string no_axis = with_joint("{ type = \"prismatic\", coordinate = \"q\" }");
   EXPECT_NE(no_axis.find("a prismatic joint needs an axis"), std::string::npos) << no_axis;
   std::string anchored = with_joint("{ type = \"prismatic\", axis = [\"0\", \"0\", \"1\"], anchor = [\"0\", \"0\", \"1\"], coordinate = \"q\" }");

@@ -1,0 +1,196 @@
+// Ball and free joints (model/build_spherical_joints.cpp, spatial/joint_velocities.hpp): a unit
+// quaternion as coordinates and the angular velocity in the body's axes as velocities.
+// - generated/ball_joint_top.hpp (an asymmetric top on a ball joint whose pivot is not its frame's
+//   origin) satisfies Euler's equations about the pivot with the gravity moment, at random states;
+// - generated/tumbling_body.hpp (a free body): M = diag(m, m, m, A, B, C), the centre falls with g,
+//   ω' follows Euler's equations, q' = ½ q ⊗ (0, ω), and a quaternion of any length is the same
+//   orientation;
+// - misuses of the joint are located, with a fix.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include <Eigen/Dense>
+
+#include "pipeline.hpp"
+#include "support/test_support.hpp"
+
+#include "../generated/ball_joint_top.hpp"
+#include "../generated/tumbling_body.hpp"
+
+namespace eomgen::test {
+namespace {
+
+using Vector = Eigen::Vector3d;
+using Matrix = Eigen::Matrix3d;
+
+// R(q) of a unit quaternion w, x, y, z: body components to inertial
+Matrix rotation_of(double w, double x, double y, double z) {
+  return Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+}
+
+std::array<double, 4> random_quaternion(std::mt19937& random) {
+  std::normal_distribution<double> normal;
+  std::array<double, 4> q{};
+  double n = 0;
+  for (double& c : q) c = normal(random), n += c * c;
+  for (double& c : q) c /= std::sqrt(n);
+  return q;
+}
+
+TEST(SphericalJoints, BallJointTopFollowsEulersEquationsAboutItsPivot) {
+  namespace top = eomgen::models::ball_joint_top;
+  auto p = top::Parameters<double>().values();
+  double m = p[0], g = p[1];
+  Matrix I;
+  I << 0.02, 0.001, -0.002, 0.001, 0.025, 0.0015, -0.002, 0.0015, 0.04;
+  Vector d = Vector(0.12, 0.03, 0.25) - Vector(0.1, 0, 0);  // centre from the pivot, body axes
+  Matrix I_pivot = I + m * (d.squaredNorm() * Matrix::Identity() - d * d.transpose());
+  std::mt19937 random(38);
+  std::uniform_real_distribution<double> rate(-20, 20);
+  for (int k = 0; k < 50; ++k) {
+    auto q = random_quaternion(random);
+    Vector w(rate(random), rate(random), rate(random));
+    double x[7] = {q[0], q[1], q[2], q[3], w[0], w[1], w[2]}, xdot[7];
+    top::rhs<double>(0.0, x, nullptr, p.data(), xdot);
+    Vector gravity_moment = d.cross(rotation_of(q[0], q[1], q[2], q[3]).transpose() * Vector(0, 0, -m * g));
+    Vector expected = I_pivot.ldlt().solve(gravity_moment - w.cross(I_pivot * w));
+    Vector got(xdot[4], xdot[5], xdot[6]);
+    EXPECT_LT((got - expected).norm(), 1e-12 * expected.norm()) << "state " << k << ": " << got.transpose() << " vs "
+                                                                 << expected.transpose();
+  }
+}
+
+TEST(SphericalJoints, FreeBodyHasEulersEquationsAndFallsWithGravity) {
+  namespace body = eomgen::models::tumbling_body;
+  static_assert(body::num_coordinates == 7 && body::num_velocities == 6, "position, quaternion; v, ω");
+  auto p = body::Parameters<double>().values();
+  double A = p[0], B = p[1], C = p[2], m = p[3], g = p[4];
+  std::mt19937 random(39);
+  std::uniform_real_distribution<double> any(-5, 5), length(0.2, 3);
+  for (int k = 0; k < 50; ++k) {
+    auto q = random_quaternion(random);
+    double x[13], xdot[13], M[36];
+    for (int i = 0; i < 3; ++i) x[i] = any(random), x[7 + i] = any(random), x[10 + i] = any(random);
+    for (int i = 0; i < 4; ++i) x[3 + i] = q[std::size_t(i)];
+    body::rhs<double>(0.0, x, nullptr, p.data(), xdot);
+    body::mass_matrix<double>(0.0, x, p.data(), M);
+    const double diagonal[6] = {m, m, m, A, B, C};
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) EXPECT_NEAR(M[6 * i + j], i == j ? diagonal[i] : 0.0, 1e-14 * m) << i << ", " << j;
+    EXPECT_NEAR(xdot[7], 0, 1e-14 * g);
+    EXPECT_NEAR(xdot[8], 0, 1e-14 * g);
+    EXPECT_NEAR(xdot[9], -g, 1e-14 * g);
+    double wx = x[10], wy = x[11], wz = x[12];
+    EXPECT_NEAR(xdot[10], (B - C) * wy * wz / A, 1e-13 * 25);
+    EXPECT_NEAR(xdot[11], (C - A) * wz * wx / B, 1e-13 * 25);
+    EXPECT_NEAR(xdot[12], (A - B) * wx * wy / C, 1e-13 * 25);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(xdot[i], x[7 + i]);
+    // q' = ½ q ⊗ (0, ω): the rate of the rotation is R [ω]×
+    Eigen::Quaterniond rate = Eigen::Quaterniond(x[3], x[4], x[5], x[6]) * Eigen::Quaterniond(0, wx, wy, wz);
+    EXPECT_NEAR(xdot[3], rate.w() / 2, 1e-14 * 5);
+    EXPECT_NEAR(xdot[4], rate.x() / 2, 1e-14 * 5);
+    EXPECT_NEAR(xdot[5], rate.y() / 2, 1e-14 * 5);
+    EXPECT_NEAR(xdot[6], rate.z() / 2, 1e-14 * 5);
+    // a quaternion of another length is the same orientation: the accelerations do not change
+    double s = length(random), scaled[13], scaled_dot[13];
+    std::copy(x, x + 13, scaled);
+    for (int i = 3; i < 7; ++i) scaled[i] *= s;
+    body::rhs<double>(0.0, scaled, nullptr, p.data(), scaled_dot);
+    for (int i = 7; i < 13; ++i) EXPECT_NEAR(scaled_dot[i], xdot[i], 1e-13 * 25);
+  }
+}
+
+std::string diagnostics_of(const std::string& joint, const std::string& extra = "") {
+  std::string text = "[model]\nname = \"ball\"\n" + extra + "\n[coordinates]\nqw = 1\nqx = 0\nqy = 0\nqz = 0\n\n"
+                     "[[frames]]\nname = \"body\"\njoint = " + joint +
+                     "\n\n[[rigid_bodies]]\nname = \"b\"\nframe = \"body\"\nmass = \"1\"\ncenter = [\"0\", \"0\", \"1\"]\n"
+                     "inertia = [\"1\", \"1\", \"1\"]\n";
+  return derive_model_text(text, "bad.toml").diagnostics.format();
+}
+
+TEST(SphericalJoints, MisusesAreLocated) {
+  const std::string q = "quaternion = [\"qw\", \"qx\", \"qy\", \"qz\"]", w = "angular_velocity = [\"wx\", \"wy\", \"wz\"]";
+  std::string fine = diagnostics_of("{ type = \"ball\", " + q + ", " + w + " }");
+  EXPECT_EQ(fine, "") << fine;
+  std::string no_quaternion = diagnostics_of("{ type = \"ball\", " + w + " }");
+  EXPECT_NE(no_quaternion.find("a ball joint needs the coordinates of its quaternion"), std::string::npos) << no_quaternion;
+  std::string three = diagnostics_of("{ type = \"ball\", quaternion = [\"qw\", \"qx\", \"qy\"], " + w + " }");
+  EXPECT_NE(three.find("bad.toml:12:"), std::string::npos) << three;
+  EXPECT_NE(three.find("expected 4 names"), std::string::npos) << three;
+  std::string unknown = diagnostics_of("{ type = \"ball\", quaternion = [\"qw\", \"qx\", \"qy\", \"qv\"], " + w + " }");
+  EXPECT_NE(unknown.find("'qv' is not a coordinate"), std::string::npos) << unknown;
+  std::string no_w = diagnostics_of("{ type = \"ball\", " + q + " }");
+  EXPECT_NE(no_w.find("needs names for its angular velocity"), std::string::npos) << no_w;
+  std::string taken = diagnostics_of("{ type = \"ball\", " + q + ", angular_velocity = [\"qx\", \"wy\", \"wz\"] }");
+  EXPECT_NE(taken.find("'qx' cannot name a velocity: the name is taken"), std::string::npos) << taken;
+  std::string axis = diagnostics_of("{ type = \"ball\", " + q + ", " + w + ", axis = [\"0\", \"0\", \"1\"] }");
+  EXPECT_NE(axis.find("a ball joint has no axis"), std::string::npos) << axis;
+  std::string no_position = diagnostics_of("{ type = \"free\", " + q + ", " + w + " }");
+  EXPECT_NE(no_position.find("a free joint needs the coordinates of its position"), std::string::npos) << no_position;
+  std::string lagrange = diagnostics_of("{ type = \"ball\", " + q + ", " + w + " }", "method = \"lagrange2\"");
+  EXPECT_NE(lagrange.find("bad.toml:3:"), std::string::npos) << lagrange;
+  EXPECT_NE(lagrange.find("use method = \"appell\", or leave the method out"), std::string::npos) << lagrange;
+  std::string expanded = diagnostics_of("{ type = \"ball\", " + q + ", " + w + " }", "kinematics = \"expanded\"");
+  EXPECT_NE(expanded.find("they are derived over the tree"), std::string::npos) << expanded;
+  std::string slerp = diagnostics_of("{ type = \"hinge\", " + q + " }");
+  EXPECT_NE(slerp.find("'hinge' is not a joint type"), std::string::npos) << slerp;
+}
+
+TEST(SphericalJoints, QuaternionRatesFollowFromTheInitialAngularVelocity) {
+  const std::string model = R"toml([model]
+name = "spun"
+
+[coordinates]
+qw = 0.6
+qx = 0.8
+qy = 0
+qz = RATE
+
+[[frames]]
+name = "body"
+joint = { type = "ball", quaternion = ["qw", "qx", "qy", "qz"], angular_velocity = ["wx", "wy", "wz"], initial_angular_velocity = [1, 2, 3] }
+
+[[rigid_bodies]]
+name = "b"
+frame = "body"
+mass = "1"
+center = ["0", "0", "0"]
+inertia = ["1", "2", "3"]
+)toml";
+  auto with = [&](const std::string& qz) {
+    std::string text = model;
+    text.replace(text.find("RATE"), 4, qz);
+    return text;
+  };
+  Equations e = derive_text(with("0"));
+  ASSERT_EQ(e.symbols.initial_velocities.size(), 3u);
+  EXPECT_NEAR(e.symbols.initial_velocities[0], 1, 1e-15);
+  EXPECT_NEAR(e.symbols.initial_velocities[1], 2, 1e-15);
+  EXPECT_NEAR(e.symbols.initial_velocities[2], 3, 1e-15);
+  std::string rated = derive_model_text(with("{ initial = 0, rate = 1 }"), "bad.toml").diagnostics.format();
+  EXPECT_NE(rated.find("coordinate 'qz' has an initial rate"), std::string::npos) << rated;
+  std::string zero = derive_model_text(R"toml([model]
+name = "none"
+[coordinates]
+qw = 0
+qx = 0
+qy = 0
+qz = 0
+[[frames]]
+name = "body"
+joint = { type = "ball", quaternion = ["qw", "qx", "qy", "qz"], angular_velocity = ["wx", "wy", "wz"] }
+[[rigid_bodies]]
+name = "b"
+frame = "body"
+mass = "1"
+center = ["0", "0", "0"]
+inertia = ["1", "2", "3"]
+)toml", "bad.toml").diagnostics.format();
+  EXPECT_NE(zero.find("the initial quaternion is zero"), std::string::npos) << zero;
+}
+
+}  // namespace
+}  // namespace eomgen::test
