@@ -33,6 +33,11 @@ inline constexpr std::array<double, num_inputs> default_inputs{{}};
 /// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
 inline constexpr std::array<bool, num_coordinates> is_cyclic{{true, true, true, false, true}};
 
+/// Ball and free joints: the coordinates w, x, y, z of each quaternion (R is that of q/|q|, and
+/// the motion keeps |q|: a zero eigenvalue of every linearization, left out of verdicts).
+inline constexpr std::size_t num_quaternions = 0;
+inline constexpr std::array<std::size_t, 4 * num_quaternions> quaternion_coordinates{{}};
+
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
 /// scleronomic): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = true;

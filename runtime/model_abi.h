@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define EOMGEN_MODEL_ABI_VERSION 4
+#define EOMGEN_MODEL_ABI_VERSION 5
 
 #ifdef __cplusplus
 extern "C" {
@@ -58,6 +58,9 @@ struct eomgen_model_abi {
   const char* const* first_integral_names;
   eomgen_configuration_function first_integrals;
   int separable_hamiltonian; /* Hamilton's equations with H = T(p) + V(q) */
+  /* ball and free joints: the coordinates w, x, y, z of each quaternion, 4 per quaternion */
+  size_t num_quaternions;
+  const size_t* quaternion_coordinates;
 };
 
 #ifdef __cplusplus
@@ -79,7 +82,8 @@ struct eomgen_model_abi {
       m::multiplier_names.data(), m::baumgarte_alpha, m::baumgarte_beta, m::constraint_jacobian<double>, \
       m::constraint_residuals<double>, m::multipliers<double>, m::rhs_stabilized<double>,              \
       m::jacobian_state_stabilized<double>, m::num_first_integrals, m::first_integral_names.data(),      \
-      m::first_integrals<double>, m::separable_hamiltonian ? 1 : 0};                                   \
+      m::first_integrals<double>, m::separable_hamiltonian ? 1 : 0, m::num_quaternions,                \
+      m::quaternion_coordinates.data()};                                                               \
   return &abi;
 
 /* Defines `eomgen_model()`, the entry point of a compiled model's shared object. */

@@ -2,6 +2,7 @@
 /// the output formats need to name things; the plain result of every method.
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -100,6 +101,9 @@ struct Equations {
   /// is then zero unless one of i, j is above the other, and the header factors M from the leaves
   /// without fill-in (emit/cpp_ldlt.hpp). Empty otherwise.
   std::vector<int> coordinate_parents;
+  /// Ball and free joints: the coordinates w, x, y, z of each unit quaternion, whose length the
+  /// motion keeps (a zero eigenvalue of every linearization, not a property of the system).
+  std::vector<std::array<std::size_t, 4>> quaternions;
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;

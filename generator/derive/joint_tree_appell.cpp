@@ -86,6 +86,10 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
   e.acceleration_intermediates = mech.acceleration_intermediates;
   e.inverse_dynamics = mech.inverse_dynamics;
   e.coordinate_parents = mech.coordinate_parents;
+  for (const FrameLink& l : model.frame_links)
+    if (l.joint && l.joint->spherical())
+      e.quaternions.push_back({std::size_t(l.joint->quaternion[0]), std::size_t(l.joint->quaternion[1]),
+                               std::size_t(l.joint->quaternion[2]), std::size_t(l.joint->quaternion[3])});
   e.kinetic_energy = kinetic_energy_of(mech);
   e.potential_energy = mech.potential_energy;
   e.dissipation = tidy(mech.dissipation.subs(rates), motion);

@@ -416,6 +416,13 @@ std::string source_name(const std::string& path) {
   return path.find("models/") != std::string::npos || path.rfind("models", 0) == 0 ? "models/" + base : base;
 }
 
+std::string quaternion_list(const Equations& e) {
+  std::string out;
+  for (const auto& q : e.quaternions)
+    for (std::size_t c : q) out += (out.empty() ? "" : ", ") + std::to_string(c);
+  return out;
+}
+
 }  // namespace
 
 std::string emit_cpp_header(const Equations& e) {
@@ -486,6 +493,10 @@ std::string emit_cpp_header(const Equations& e) {
       "inline constexpr std::array<double, num_inputs> default_inputs{{{{{}}}}};\n\n"
       "/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).\n"
       "inline constexpr std::array<bool, num_coordinates> is_cyclic{{{{{}}}}};\n\n"
+      "/// Ball and free joints: the coordinates w, x, y, z of each quaternion (R is that of q/|q|, and\n"
+      "/// the motion keeps |q|: a zero eigenvalue of every linearization, left out of verdicts).\n"
+      "inline constexpr std::size_t num_quaternions = {};\n"
+      "inline constexpr std::array<std::size_t, 4 * num_quaternions> quaternion_coordinates{{{{{}}}}};\n\n"
       "/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,\n"
       "/// scleronomic): what an energy-drift check may rely on.\n"
       "inline constexpr bool conserves_energy_without_inputs = {};\n\n"
@@ -494,7 +505,8 @@ std::string emit_cpp_header(const Equations& e) {
       quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(definitions),
       quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
-      number_list(s.input_defaults), cyclic_list(e), e.conserves_energy_without_inputs ? "true" : "false",
+      number_list(s.input_defaults), cyclic_list(e), e.quaternions.size(), quaternion_list(e),
+      e.conserves_energy_without_inputs ? "true" : "false",
       separable_hamiltonian(e) ? "true" : "false");
   out += fmt::format(
       "/// The parameters by name, with the model's defaults; values() gives them in\n"

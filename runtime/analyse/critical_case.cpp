@@ -143,9 +143,8 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
 
 CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x, const StabilityReport& r) {
   CriticalCase c;
-  double largest = -INFINITY;
-  for (auto l : r.eigenvalues) largest = std::max(largest, l.real());
-  c.critical = !r.eigenvalues.empty() && std::abs(largest) <= r.axis_tolerance;
+  // the eigenvalues that count for the verdict: a cyclic momentum's or a quaternion length's zero does not
+  c.critical = !r.eigenvalues.empty() && std::abs(r.stability_degree) <= r.axis_tolerance;
   if (!c.critical) return c;
   const eomgen_model_abi& m = *p.model;
   bool at_rest = true;

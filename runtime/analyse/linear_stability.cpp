@@ -323,7 +323,10 @@ StabilityReport analyse_first_order(const Problem& problem, const std::vector<do
   r.A = reduced_jacobian(problem, x);
   r.B_state = reduced_input_jacobian(problem, x);
   for (int i : reduced_state(m)) r.state_names.push_back(m.state_names[i]);
-  describe_spectrum(r, 0);
+  // a quaternion's length is constant by construction: its zero eigenvalue (eigenvector (q, 0), semisimple
+  // since q' = ½ q ⊗ (0, ω) is orthogonal to q) says nothing about the system
+  describe_spectrum(r, int(m.num_quaternions));
+  r.quaternion_zero_eigenvalues = r.cyclic_zero_eigenvalues, r.cyclic_zero_eigenvalues = 0;
   r.theorems.push_back("the force classification (D, G, K, N) needs M q'' + P q' + Q q = 0; Appell's equations are of "
                        "first order in the pseudo-velocities, so A is analysed directly");
   if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
@@ -396,6 +399,7 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
   int cyclic = 0;
   if (has_pseudo_velocities(m)) {
     A = reduced_jacobian(problem, x);
+    cyclic = int(m.num_quaternions);
   } else if (has_multipliers(m)) {
     A = manifold_linearization(problem, x).A;
   } else {

@@ -34,6 +34,7 @@ struct StabilityReport {
   std::string disagreement;
   double stability_degree = 0;                    // largest real part that counts for the verdict
   int cyclic_zero_eigenvalues = 0;                // zero eigenvalues of conserved cyclic momenta, left out
+  int quaternion_zero_eigenvalues = 0;            // zero eigenvalues of the quaternions' lengths, left out
   double axis_tolerance = 0;                      // a real part within it is on the imaginary axis (system_scales.hpp)
   std::vector<Mode> modes;                        // by undamped frequency, then damped frequency
   std::vector<double> characteristic_polynomial;  // det(λI − A), highest power first (leading 1)

@@ -203,5 +203,46 @@ TEST(ScaleFreeStability, FreeMassIsNotAsymptoticallyStable) {
   EXPECT_EQ(field(field(r, "critical_case"), "energy").text.find("strict minimum"), std::string::npos);
 }
 
+// A body hanging on a ball joint, with damping about every axis and a torsion spring about the
+// vertical (V = 2 k qz², ½ k ψ² for a small turn ψ): asymptotically stable. Its quaternion's length
+// gives one more zero eigenvalue, which says nothing about the system and is left out, at every
+// time scale (g, k scaled by s², c by s).
+TEST(ScaleFreeStability, ABallJointsQuaternionLengthIsLeftOut) {
+  std::string model = write_model("ball_pendulum", R"toml([model]
+name = "ball_pendulum"
+[parameters]
+g = 9.81
+c = 0.1
+k = 2.0
+[gravity]
+acceleration = ["0", "0", "-g"]
+[energy]
+dissipation = "2*c*(der(qw)^2 + der(qx)^2 + der(qy)^2 + der(qz)^2)"
+potential = "2*k*qz^2"
+[coordinates]
+qw = 1
+qx = 0
+qy = 0
+qz = 0
+[[frames]]
+name = "bob"
+joint = { type = "ball", quaternion = ["qw", "qx", "qy", "qz"], angular_velocity = ["wx", "wy", "wz"] }
+[[rigid_bodies]]
+name = "b"
+frame = "bob"
+mass = "1"
+center = ["0", "0", "-1"]
+inertia = ["0.1", "0.1", "0.05"]
+)toml");
+  for (double s : {1e-6, 1.0, 1e6}) {
+    JsonValue r = run_json("stability '" + model + "' " + fmt::format("--set g={:.17g} --set k={:.17g} --set c={:.17g}",
+                                                                      9.81 * s * s, 2.0 * s * s, 0.1 * s));
+    EXPECT_EQ(field(r, "verdict").text, "asymptotically_stable") << "s = " << s;
+    EXPECT_EQ(field(r, "quaternion_zero_eigenvalues").value, 1) << "s = " << s;
+    EXPECT_EQ(field(r, "cyclic_zero_eigenvalues").value, 0) << "s = " << s;
+    EXPECT_EQ(field(field(r, "critical_case"), "first_approximation").text, "") << "not a critical case: s = " << s;
+  }
+}
+
 }  // namespace
 }  // namespace eomgen::test
