@@ -49,6 +49,7 @@ Command add_linear_command(CLI::App& app);
 Command add_scene_command(CLI::App& app);
 Command add_fmu_command(CLI::App& app);
 Command add_ensemble_command(CLI::App& app);
+Command add_import_command(CLI::App& app);
 
 struct LoadedProblem;
 /// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic

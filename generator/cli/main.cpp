@@ -31,7 +31,8 @@ int main(int argc, char** argv) {
   std::vector<Command> commands = {add_derive_command(app), add_generate_command(app), add_simulate_command(app), add_stability_command(app),
                                   add_sweep_command(app), add_bench_command(app), add_run_command(app),
                                   add_diff_command(app), add_check_integral_command(app), add_linear_command(app),
-                                  add_scene_command(app), add_fmu_command(app), add_ensemble_command(app)};
+                                  add_scene_command(app), add_fmu_command(app), add_ensemble_command(app),
+                                  add_import_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

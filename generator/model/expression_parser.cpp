@@ -34,7 +34,7 @@ class Level {
 const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
                                                   "atan", "atan2", "sinh", "cosh", "tanh",
                                                   "exp",  "log",  "sqrt", "abs",  "der"};
-const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "rot_axis", "euler313", "cardan123"};
+const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "rot_axis", "quat", "euler313", "cardan123"};
 
 ex apply_function(const std::string& name, const std::vector<ex>& a) {
   if (name == "sin") return GiNaC::sin(a[0]);
@@ -83,8 +83,10 @@ class Parser {
       if (known == rotation_names.end())
         fail(start, fmt::format("unknown rotation function '{}'", name),
              suggest(name, rotation_names, "rotations"));
-      std::vector<ex> args = arguments(start, name, name == "rot_axis" ? 4 : name.rfind("rot_", 0) == 0 ? 1 : 3);
-      if (name == "rot_axis") {
+      std::vector<ex> args = arguments(start, name, name == "rot_axis" || name == "quat" ? 4 : name.rfind("rot_", 0) == 0 ? 1 : 3);
+      if (name == "quat") {
+        sequence.push_back(quaternion_turn(start, args));
+      } else if (name == "rot_axis") {
         if ((args[0] * args[0] + args[1] * args[1] + args[2] * args[2]).is_zero())
           fail(start, "rot_axis needs a direction that is not zero", "write rot_axis(x, y, z, angle), e.g. rot_axis(1, 1, 0, q)");
         sequence.push_back(turn_about({args[0], args[1], args[2]}, args[3]));
@@ -97,6 +99,22 @@ class Parser {
       if (peek() == '*') { ++pos_; continue; }
       return sequence;
     }
+  }
+
+  // quat(w, x, y, z): the constant turn of the quaternion (MJCF's quat), R(q)/|q|² exact in its numbers
+  ElementaryRotation quaternion_turn(std::size_t start, const std::vector<ex>& q) {
+    for (const ex& c : q)
+      if (!GiNaC::is_a<GiNaC::numeric>(c))
+        fail(start, "quat takes four numbers", "write quat(w, x, y, z), e.g. quat(0.7071, 0.7071, 0, 0); a turn that "
+                                                "moves is rot_axis(x, y, z, angle) or a joint");
+    const ex &w = q[0], &x = q[1], &y = q[2], &z = q[3];
+    ex n = w * w + x * x + y * y + z * z;
+    if (n.is_zero()) fail(start, "quat needs a quaternion that is not zero", "write quat(w, x, y, z), e.g. quat(1, 0, 0, 0)");
+    ElementaryRotation r{ElementaryRotation::constant_matrix, 0};
+    r.constant = GiNaC::matrix{{(w * w + x * x - y * y - z * z) / n, 2 * (x * y - w * z) / n, 2 * (x * z + w * y) / n},
+                               {2 * (x * y + w * z) / n, (w * w - x * x + y * y - z * z) / n, 2 * (y * z - w * x) / n},
+                               {2 * (x * z - w * y) / n, 2 * (y * z + w * x) / n, (w * w - x * x - y * y + z * z) / n}};
+    return r;
   }
 
   void expect_end() {

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "parse/model_file.hpp"
+
+#include "import/model_writer.hpp"
 #include "parse/parse_frames.hpp"
 #include "parse/parse_scenes.hpp"
 #include "parse/toml_reader.hpp"
@@ -402,6 +404,11 @@ ModelFile parse_model_text(const std::string& text, const std::string& path, Dia
 
 ModelFile parse_model_file(const std::string& path, Diagnostics& diagnostics) {
   std::error_code error;
+  std::string extension = std::filesystem::path(path).extension().string();
+  if ((extension == ".xml" || extension == ".urdf") && std::filesystem::is_regular_file(path, error)) {
+    std::optional<std::string> text = imported_model_text(path, diagnostics);
+    return text ? parse_model_text(*text, path, diagnostics) : ModelFile{};
+  }
   if (std::filesystem::is_directory(path, error)) {
     diagnostics.error({path, 0, 0}, "", "this is a directory, not a model file",
                       "name a .toml file, e.g. models/double_pendulum.toml");

@@ -72,6 +72,38 @@ TEST_P(ErrorFile, CorrectedTwinIsAccepted) {
 INSTANTIATE_TEST_SUITE_P(EveryFile, ErrorFile, ::testing::ValuesIn(error_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
+// tests/errors/robots/NAME.xml: a robot file with one mistake and its expected diagnostic in its
+// second line (`<!-- expect: LINE:COLUMN: message -->`): `eomgen import` exits 2 with it and writes nothing
+std::vector<std::string> robot_error_files() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(errors_dir + "/robots"))
+    if (entry.path().extension() == ".xml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class RobotErrorFile : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RobotErrorFile, IsReportedWithItsLineAndNothingIsWritten) {
+  std::string scratch = temporary_directory(), name = GetParam() + ".xml", out = scratch + "/robot.toml";
+  std::string expected = line_starting(errors_dir + "/robots/" + name, "<!-- expect: ");
+  ASSERT_FALSE(expected.empty()) << name << " has no '<!-- expect:' line";
+  expected = expected.substr(0, expected.rfind(" -->"));
+  std::size_t colon = expected.find(':', expected.find(':') + 1);
+  std::string diagnostic = name + ":" + expected.substr(0, colon) + ": error:" + expected.substr(colon + 1);
+  int status = run_command("cd " + errors_dir + "/robots && '" + std::string(EOMGEN_EXECUTABLE) + "' import " + name + " -o '" +
+                           out + "' 2> '" + scratch + "/stderr.txt' > /dev/null");
+  std::string errors = read_file(scratch + "/stderr.txt");
+  EXPECT_EQ(status, 2) << errors;
+  EXPECT_NE(errors.find(diagnostic), std::string::npos) << "expected: " << diagnostic << "\ngot:\n" << errors;
+  EXPECT_FALSE(fs::exists(out)) << "a model file was written despite the error";
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryRobotFile, RobotErrorFile, ::testing::ValuesIn(robot_error_files()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST(ErrorFiles, AtLeastFifteenRobotMistakesAreCovered) { EXPECT_GE(robot_error_files().size(), 15u); }
+
 TEST(ErrorFiles, AtLeastTwentyMistakesAreCovered) { EXPECT_GE(error_files().size(), 20u); }
 
 TEST(ErrorFiles, HugeFileIsRefusedWithoutParsing) {

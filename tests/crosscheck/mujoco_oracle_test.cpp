@@ -25,6 +25,14 @@
 #include "seven_joint_arm.hpp"
 #include "tumbling_body.hpp"
 
+#include "measured_arm_imported.hpp"
+#include "mjcf_features_imported.hpp"
+#include "oblique_tree_imported.hpp"
+#include "quadruped_imported.hpp"
+#include "seven_joint_arm_imported.hpp"
+#include "tumbling_body_imported.hpp"
+#include "two_link_arm_imported.hpp"
+
 namespace {
 
 struct MujocoModel {
@@ -45,7 +53,10 @@ struct MujocoModel {
   std::string message;
 };
 
-std::string mjcf(const std::string& name) { return std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/" + name; }
+// a file of tests/crosscheck/mjcf/, or a path below tests/crosscheck/
+std::string mjcf(const std::string& name) {
+  return std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/" + (name.find('/') == std::string::npos ? "mjcf/" : "") + name;
+}
 
 // a random state in MuJoCo's qpos, qvel: angles and positions, unit quaternions for ball and free joints
 void random_state(const mjModel* m, std::mt19937& random, double* qpos, double* qvel) {
@@ -103,6 +114,8 @@ template <class Parameters, class Rhs>
 void expect_matches_mujoco(const std::string& file, int nq, int nv, int m, Rhs model_rhs) {
   MujocoModel mj(mjcf(file));
   ASSERT_NE(mj.model, nullptr) << mj.message;
+  // joint limits and contacts are what eomgen keeps as information only (a URDF's limits are on)
+  mj.model->opt.disableflags |= mjDSBL_LIMIT | mjDSBL_CONTACT;
   auto p = Parameters().values();
   auto rhs = [&](const double* x, const double* u, double* xdot) { model_rhs(0.0, x, u, p.data(), xdot); };
   double worst = worst_relative_difference(mj, nq, nv, m, rhs, 200);
@@ -132,5 +145,30 @@ TEST(MujocoOracle, MeasuredArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(measured_ar
 TEST(MujocoOracle, QuadrupedOnAFloatingBaseMatchesMujoco) { EXPECT_MATCHES_MUJOCO(quadruped); }
 
 TEST(MujocoOracle, FreeTumblingBodyMatchesMujoco) { EXPECT_MATCHES_MUJOCO(tumbling_body); }
+
+// `eomgen import` of the same MJCF files (tests/CMakeLists.txt imports and generates them): the model
+// file it writes gives MuJoCo's accelerations, motors included
+#define EXPECT_IMPORT_MATCHES_MUJOCO(M)                                                                     \
+  expect_matches_mujoco<eomgen::models::M##_imported::Parameters<double>>(                                \
+      #M ".xml", int(eomgen::models::M##_imported::num_coordinates),                                      \
+      int(eomgen::models::M##_imported::num_velocities), int(eomgen::models::M##_imported::num_inputs),     \
+      eomgen::models::M##_imported::rhs<double>)
+
+TEST(MujocoImport, SevenJointArmImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(seven_joint_arm); }
+TEST(MujocoImport, QuadrupedImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(quadruped); }
+TEST(MujocoImport, ObliqueTreeImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(oblique_tree); }
+TEST(MujocoImport, MeasuredArmImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(measured_arm); }
+TEST(MujocoImport, FreeBodyImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(tumbling_body); }
+
+// defaults and classes, degrees, euler angles in zyx, axisangle, xyaxes, zaxis, inertias from geoms,
+// a free and a ball joint, two hinges in one body, armature, damping, a spring, geared motors
+TEST(MujocoImport, MjcfFeaturesImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(mjcf_features); }
+
+// URDF, read by the same compiler: inertial origins with rpy, joint origins with rpy, an oblique axis
+TEST(MujocoImport, UrdfArmImportsAndMatchesMujoco) {
+  namespace arm = eomgen::models::two_link_arm_imported;
+  expect_matches_mujoco<arm::Parameters<double>>("urdf/two_link_arm.urdf", int(arm::num_coordinates), int(arm::num_velocities),
+                                                 int(arm::num_inputs), arm::rhs<double>);
+}
 
 }  // namespace

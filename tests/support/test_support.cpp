@@ -86,10 +86,9 @@ GiNaC::exmap point_by_name(const Equations& e, const std::map<std::string, doubl
   auto time = values.find("t");
   at[s.time] = time == values.end() ? 0.0 : time->second;
   for (std::size_t i = 0; i < s.parameters.size(); ++i) at[s.parameters[i]] = values.at(s.parameter_names[i]);
-  for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-    at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
-    at[s.velocities[i]] = values.at("der(" + s.coordinate_names[i] + ")");
-  }
+  for (std::size_t i = 0; i < s.coordinates.size(); ++i) at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
+  // the velocities of the state by their names: der(q), or the pseudo-velocities' own
+  for (const GiNaC::realsymbol& v : s.velocities) at[v] = values.at(v.get_name());
   for (std::size_t i = 0; i < e.acceleration_symbols.size(); ++i)
     if (auto a = values.find("ddq" + std::to_string(i)); a != values.end()) at[e.acceleration_symbols[i]] = a->second;
   for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);

@@ -1,0 +1,48 @@
+// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME]: a robot description as a model file.
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "common/output_file.hpp"
+#include "import/model_writer.hpp"
+
+namespace eomgen::cli {
+
+namespace {
+
+int import_robot(const std::string& file, const std::string& output, const std::string& name) {
+  Diagnostics diagnostics;
+  std::optional<std::string> text = imported_model_text(file, diagnostics, false, name);
+  if (report_diagnostics(diagnostics, file)) return exit_user_error;
+  if (output.empty()) {
+    std::cout << *text;
+    return exit_success;
+  }
+  if (std::string failure = write_file_atomically(output, *text); !failure.empty()) {
+    std::cerr << "eomgen: " << failure << "\n";
+    return exit_user_error;
+  }
+  std::cerr << fmt::format("eomgen: imported {} into {}\n", file, output);
+  return exit_success;
+}
+
+}  // namespace
+
+Command add_import_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("import", "Write a robot description (MJCF or URDF, read by MuJoCo's compiler) as a model file");
+  auto file = std::make_shared<std::string>();
+  auto output = std::make_shared<std::string>();
+  auto name = std::make_shared<std::string>();
+  cmd->add_option("file", *file, "The robot's MJCF (.xml) or URDF (.urdf) file; every command also takes one directly")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", *output, "The model file to write (default: standard output)");
+  cmd->add_option("--name", *name, "The model's name, a C++ identifier (default: the robot's, or the file's)");
+  return [cmd, file, output, name]() -> int {
+    if (!cmd->parsed()) return -1;
+    return import_robot(*file, *output, *name);
+  };
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,152 @@
+#include "import/mjcf_reader.hpp"
+
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+
+#include <fmt/format.h>
+#include <mujoco/mujoco.h>
+
+namespace eomgen {
+
+namespace {
+
+std::string name_of(const mjModel* m, const int* addresses, int i) {
+  return addresses ? std::string(m->names + addresses[i]) : std::string();
+}
+
+Triple triple(const mjtNum* x) { return {x[0], x[1], x[2]}; }
+Quaternion quaternion(const mjtNum* x) { return {x[0], x[1], x[2], x[3]}; }
+
+const char* joint_type(int type) {
+  switch (type) {
+    case mjJNT_FREE: return "free";
+    case mjJNT_BALL: return "ball";
+    case mjJNT_SLIDE: return "slide";
+    default: return "hinge";
+  }
+}
+
+RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* qvel) {
+  RobotJoint joint;
+  joint.name = name_of(m, m->name_jntadr, j);
+  joint.type = joint_type(m->jnt_type[j]);
+  joint.axis = triple(m->jnt_axis + 3 * j);
+  joint.anchor = triple(m->jnt_pos + 3 * j);
+  int q = m->jnt_qposadr[j], v = m->jnt_dofadr[j];
+  int nq = m->jnt_type[j] == mjJNT_FREE ? 7 : m->jnt_type[j] == mjJNT_BALL ? 4 : 1, nv = nq == 7 ? 6 : nq == 4 ? 3 : 1;
+  joint.initial_position.assign(qpos + q, qpos + q + nq);
+  joint.initial_velocity.assign(qvel + v, qvel + v + nv);
+  joint.spring_reference.assign(m->qpos_spring + q, m->qpos_spring + q + nq);
+  joint.armature = m->dof_armature[v];
+  joint.damping = m->dof_damping[v];
+  joint.stiffness = m->jnt_stiffness[j];
+  joint.limited = m->jnt_limited[j];
+  joint.range = {m->jnt_range[2 * j], m->jnt_range[2 * j + 1]};
+  return joint;
+}
+
+// what the model cannot carry, each named
+void note_losses(const mjModel* m, Robot& r) {
+  if (m->ntendon) r.warnings.push_back(fmt::format("{} tendon(s): not carried (a tendon's length is no joint)", m->ntendon));
+  for (int e = 0; e < m->neq; ++e)
+    r.warnings.push_back(fmt::format("equality constraint '{}': not carried (closed loops are not imported yet)",
+                                     name_of(m, m->name_eqadr, e)));
+  bool contacts = !(m->opt.disableflags & mjDSBL_CONTACT);
+  int colliding = 0;
+  for (int g = 0; g < m->ngeom && contacts; ++g) colliding += m->geom_contype[g] || m->geom_conaffinity[g];
+  if (colliding) r.warnings.push_back(fmt::format("{} geom(s) that make contacts: contacts are not carried", colliding));
+  for (int v = 0; v < m->nv; ++v)
+    if (m->dof_frictionloss[v] != 0)
+      r.warnings.push_back(fmt::format("dof {} has friction loss {}: not carried (dry friction)", v, m->dof_frictionloss[v]));
+}
+
+void read_actuators(const mjModel* m, Robot& r) {
+  for (int a = 0; a < m->nu; ++a) {
+    std::string name = name_of(m, m->name_actuatoradr, a);
+    if (name.empty()) name = fmt::format("actuator{}", a);
+    bool on_joint = m->actuator_trntype[a] == mjTRN_JOINT, plain = m->actuator_dyntype[a] == mjDYN_NONE &&
+                                                                 m->actuator_gaintype[a] == mjGAIN_FIXED &&
+                                                                 m->actuator_biastype[a] == mjBIAS_NONE;
+    int j = m->actuator_trnid[2 * a];
+    int type = on_joint ? m->jnt_type[j] : -1;
+    if (!on_joint || !plain || type == mjJNT_BALL || type == mjJNT_FREE) {
+      r.warnings.push_back(fmt::format("actuator '{}': only a motor on a hinge or slide (a force gain × gear × control, "
+                                       "no bias, no dynamics) is carried; it is left out", name));
+      continue;
+    }
+    RobotActuator act;
+    act.name = name;
+    act.body = m->jnt_bodyid[j] - 1;
+    act.joint = j - m->body_jntadr[m->jnt_bodyid[j]];
+    act.gain = m->actuator_gainprm[mjNGAIN * a] * m->actuator_gear[6 * a];
+    act.limited = m->actuator_ctrllimited[a];
+    act.range = {m->actuator_ctrlrange[2 * a], m->actuator_ctrlrange[2 * a + 1]};
+    r.actuators.push_back(act);
+  }
+}
+
+}  // namespace
+
+std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10); }
+
+UnreadableRobot unreadable_robot(const std::string& text) {
+  UnreadableRobot u;
+  // the last of these that the text has names the line: "Element 'body', line 5" beats a nested parse error's
+  for (const char* marker : {"Line number=", "line = ", "', line "})
+    if (std::size_t at = text.find(marker); at != std::string::npos) u.line = std::atoi(text.c_str() + at + std::strlen(marker));
+  std::string first = text.substr(0, text.find('\n'));
+  for (const char* prefix : {"Error: ", "XML Error: "})
+    if (first.rfind(prefix, 0) == 0) first = first.substr(std::strlen(prefix));
+  if (first.rfind("XML parse error", 0) == 0) first = "the XML is malformed";
+  if (std::size_t at = text.find("XML_ERROR_FILE_NOT_FOUND"); at != std::string::npos) {
+    std::size_t name = text.find("filename=", at);
+    first = "an included file does not exist" +
+            (name == std::string::npos ? "" : ": " + text.substr(name + 9, text.find_first_of("'\n", name) - name - 9));
+  }
+  if (std::size_t at = text.find("Element '"); at != std::string::npos)
+    first += " (element <" + text.substr(at + 9, text.find('\'', at + 9) - at - 9) + ">)";
+  while (!first.empty() && std::isspace(static_cast<unsigned char>(first.back()))) first.pop_back();
+  u.message = first;
+  return u;
+}
+
+std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> model(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  if (!model) return unreadable_robot(error);
+  const mjModel* m = model.get();
+  Robot r;
+  r.reader = fmt::format("MuJoCo {}'s compiler", mj_version_text());
+  r.name = m->names;  // the model's name comes first
+  r.gravity = triple(m->opt.gravity);
+  const mjtNum* qpos = m->nkey ? m->key_qpos : m->qpos0;
+  std::vector<mjtNum> zero(std::size_t(m->nv), 0.0);
+  const mjtNum* qvel = m->nkey ? m->key_qvel : zero.data();
+  r.initial_state = m->nkey ? fmt::format("keyframe '{}'", name_of(m, m->name_keyadr, 0)) : "qpos0";
+  for (int b = 1; b < m->nbody; ++b) {
+    RobotBody body;
+    body.name = name_of(m, m->name_bodyadr, b);
+    if (body.name.empty()) body.name = fmt::format("body{}", b);
+    body.parent = m->body_parentid[b] - 1;
+    body.position = triple(m->body_pos + 3 * b);
+    body.orientation = quaternion(m->body_quat + 4 * b);
+    for (int k = 0; k < m->body_jntnum[b]; ++k) body.joints.push_back(joint_of(m, m->body_jntadr[b] + k, qpos, qvel));
+    body.mass = m->body_mass[b];
+    body.center = triple(m->body_ipos + 3 * b);
+    body.inertia_axes = quaternion(m->body_iquat + 4 * b);
+    body.principal_inertia = triple(m->body_inertia + 3 * b);
+    r.bodies.push_back(body);
+  }
+  for (int s = 0; s < m->nsite; ++s) {
+    std::string name = name_of(m, m->name_siteadr, s);
+    if (name.empty()) continue;
+    r.sites.push_back({name, m->site_bodyid[s] - 1, triple(m->site_pos + 3 * s)});
+  }
+  read_actuators(m, r);
+  note_losses(m, r);
+  return r;
+}
+
+}  // namespace eomgen

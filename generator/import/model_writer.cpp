@@ -1,0 +1,246 @@
+// The layout of an imported model file: the bodies in tree order, each as a frame per joint (the
+// first placed by the body's position and quaternion, each further one by nothing, as MJCF applies
+// a body's joints one after the other) and a rigid body in the last; a hinge is a revolute joint,
+// a slide a prismatic one, ball and free joints keep their names. Armature, damping and stiffness
+// go into [energy] as ½ a q'², ½ d q'² and ½ k (q − q_spring)² (a ball's damping as ½ d |ω|² =
+// 2 d |q'|² in its quaternion's rates); a motor is an input whose generalized force is gain × u.
+#include "import/model_writer.hpp"
+
+#include "import/mjcf_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <iostream>
+#include <variant>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+namespace {
+
+std::string number(double x) { return x == 0 ? "0" : fmt::format("{}", x); }  // no "-0"
+
+std::string vector_text(const Triple& v) { return fmt::format("[\"{}\", \"{}\", \"{}\"]", number(v[0]), number(v[1]), number(v[2])); }
+
+bool is_identity(const Quaternion& q) { return q[0] == 1 && q[1] == 0 && q[2] == 0 && q[3] == 0; }
+
+std::string rotation_text(const Quaternion& q) {
+  return fmt::format("quat({}, {}, {}, {})", number(q[0]), number(q[1]), number(q[2]), number(q[3]));
+}
+
+// the names of the model's symbols, each used once
+class Names {
+ public:
+  std::string take(const std::string& wanted) {
+    std::string name = identifier_of(wanted), out = name;
+    for (int k = 2; !used_.insert(out).second; ++k) out = fmt::format("{}_{}", name, k);
+    return out;
+  }
+
+ private:
+  std::set<std::string> used_{"t", "der", "Pi", "g"};
+};
+
+// the coordinates and velocities a joint gets, and the text of its frame's joint
+struct JointSymbols {
+  std::vector<std::string> coordinates;  // in qpos order
+  std::vector<std::string> angular;      // ball, free: ω's names
+};
+
+JointSymbols symbols_of(const RobotJoint& j, const std::string& base, Names& names) {
+  JointSymbols s;
+  if (j.type == "free")
+    for (const char* c : {"x", "y", "z"}) s.coordinates.push_back(names.take(base + "_" + c));
+  if (j.type == "free" || j.type == "ball") {
+    for (const char* c : {"qw", "qx", "qy", "qz"}) s.coordinates.push_back(names.take(base + "_" + c));
+    for (const char* c : {"wx", "wy", "wz"}) s.angular.push_back(names.take(base + "_" + c));
+  } else {
+    s.coordinates.push_back(names.take(base));
+  }
+  return s;
+}
+
+std::string names_list(const std::vector<std::string>& names, std::size_t from, std::size_t count) {
+  std::string out;
+  for (std::size_t i = from; i < from + count; ++i) out += (out.empty() ? "\"" : ", \"") + names[i] + "\"";
+  return "[" + out + "]";
+}
+
+std::string joint_text(const RobotJoint& j, const JointSymbols& s) {
+  if (j.type == "hinge" || j.type == "slide") {
+    bool anchored = j.type == "hinge" && (j.anchor[0] != 0 || j.anchor[1] != 0 || j.anchor[2] != 0);
+    return fmt::format("{{ type = \"{}\", axis = {}{}, coordinate = \"{}\" }}", j.type == "hinge" ? "revolute" : "prismatic",
+                       vector_text(j.axis), anchored ? ", anchor = " + vector_text(j.anchor) : "", s.coordinates[0]);
+  }
+  bool free = j.type == "free";
+  std::size_t q = free ? 3 : 0, v = free ? 3 : 0;
+  std::string w0;
+  for (std::size_t k = 0; k < 3; ++k) w0 += (k ? ", " : "") + number(j.initial_velocity[v + k]);
+  return fmt::format("{{ type = \"{}\"{}{}, quaternion = {}, angular_velocity = {}, initial_angular_velocity = [{}] }}", j.type,
+                     free ? ", position = " + names_list(s.coordinates, 0, 3) : "",
+                     !free && (j.anchor[0] != 0 || j.anchor[1] != 0 || j.anchor[2] != 0) ? ", anchor = " + vector_text(j.anchor) : "",
+                     names_list(s.coordinates, q, 4), names_list(s.angular, 0, 3), w0);
+}
+
+struct Sections {
+  std::string coordinates, frames, bodies, inputs, forces, points;
+  std::vector<std::string> kinetic, dissipation, potential, warnings;
+};
+
+// the coordinates' lines: initial values, rates of hinges, slides and a free joint's position
+void add_coordinates(const RobotJoint& j, const JointSymbols& s, Sections& out) {
+  for (std::size_t k = 0; k < s.coordinates.size(); ++k) {
+    bool rated = (j.type == "hinge" || j.type == "slide" || (j.type == "free" && k < 3)) && j.initial_velocity[k] != 0;
+    std::string line = rated ? fmt::format("{} = {{ initial = {}, rate = {} }}", s.coordinates[k], number(j.initial_position[k]),
+                                           number(j.initial_velocity[k]))
+                             : fmt::format("{} = {}", s.coordinates[k], number(j.initial_position[k]));
+    if (j.limited && s.coordinates.size() == 1)
+      line += fmt::format("  # range [{}, {}] in the file: not enforced", number(j.range[0]), number(j.range[1]));
+    out.coordinates += line + "\n";
+  }
+}
+
+// armature, damping and stiffness of one joint into [energy]
+void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string& where, Sections& out) {
+  const std::vector<std::string>& c = s.coordinates;
+  if (j.type == "hinge" || j.type == "slide") {
+    if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*der({})^2", number(j.armature), c[0]));
+    if (j.damping != 0) out.dissipation.push_back(fmt::format("{}*der({})^2", number(j.damping), c[0]));
+    if (j.stiffness != 0)
+      out.potential.push_back(j.spring_reference[0] == 0 ? fmt::format("{}*{}^2", number(j.stiffness), c[0])
+                                                         : fmt::format("{}*({} - {})^2", number(j.stiffness), c[0],
+                                                                       number(j.spring_reference[0])));
+    return;
+  }
+  std::size_t q = j.type == "free" ? 3 : 0;
+  if (j.damping != 0) {
+    if (q) out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2)", number(j.damping), c[0], c[1], c[2]));
+    out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2 + der({})^2)", number(4 * j.damping), c[q],
+                                          c[q + 1], c[q + 2], c[q + 3]));
+  }
+  if (j.armature != 0)
+    out.warnings.push_back(fmt::format("{}: the armature of a {} joint is not carried", where, j.type));
+  if (j.stiffness != 0)
+    out.warnings.push_back(fmt::format("{}: the stiffness of a {} joint is not carried", where, j.type));
+}
+
+// one frame per joint of the body (a body without joints: one fixed frame), its rigid body in the last
+void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::string>& frame_of, Sections& out,
+              std::vector<std::vector<JointSymbols>>& joint_symbols) {
+  const RobotBody& body = robot.bodies[b];
+  std::string frame = frame_of[b], parent = body.parent < 0 ? "" : frame_of[std::size_t(body.parent)];
+  std::size_t count = std::max<std::size_t>(1, body.joints.size());
+  for (std::size_t k = 0; k < count; ++k) {
+    bool last = k + 1 == count;
+    std::string name = last ? frame : frame + "_" + identifier_of(body.joints[k].name.empty() ? fmt::format("joint{}", k + 1)
+                                                                                              : body.joints[k].name);
+    out.frames += "\n[[frames]]\nname = \"" + name + "\"\n";
+    if (!parent.empty()) out.frames += "parent = \"" + parent + "\"\n";
+    bool free = !body.joints.empty() && body.joints[k].type == "free";  // MuJoCo places a free body by its qpos alone
+    if (k == 0 && !free) {
+      if (body.position != Triple{0, 0, 0}) out.frames += "origin = " + vector_text(body.position) + "\n";
+      if (!is_identity(body.orientation)) out.frames += "rotation = \"" + rotation_text(body.orientation) + "\"\n";
+    }
+    if (!body.joints.empty()) {
+      const RobotJoint& j = body.joints[k];
+      std::string base = j.name.empty() ? fmt::format("{}_q{}", frame, k + 1) : j.name;
+      JointSymbols s = symbols_of(j, base, names);
+      joint_symbols[b].push_back(s);
+      out.frames += "joint = " + joint_text(j, s) + "\n";
+      add_coordinates(j, s, out);
+      add_energies(j, s, fmt::format("body '{}', joint '{}'", body.name, base), out);
+    }
+    parent = name;
+  }
+  if (body.mass <= 0) return;
+  out.bodies += fmt::format("\n[[rigid_bodies]]\nname = \"{}\"\nframe = \"{}\"\nmass = \"{}\"\ncenter = {}\n", frame, frame,
+                            number(body.mass), vector_text(body.center));
+  if (!is_identity(body.inertia_axes)) out.bodies += "rotation = \"" + rotation_text(body.inertia_axes) + "\"\n";
+  out.bodies += "inertia = " + vector_text(body.principal_inertia) + "\n";
+}
+
+std::string sum_text(const std::vector<std::string>& terms) {
+  std::string out;
+  for (const std::string& t : terms) out += (out.empty() ? "" : " + ") + t;
+  return "\"(" + out + ")/2\"";
+}
+
+void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Names& names, Sections& out) {
+  std::map<std::string, std::string> forces;
+  std::vector<std::string> order;
+  for (const RobotActuator& a : robot.actuators) {
+    std::string u = names.take(a.name);
+    out.inputs += u + " = 0" +
+                  (a.limited ? fmt::format("  # control range [{}, {}] in the file: not enforced", number(a.range[0]), number(a.range[1])) : "") +
+                  "\n";
+    const std::string& q = joint_symbols[std::size_t(a.body)][std::size_t(a.joint)].coordinates[0];
+    if (!forces.count(q)) order.push_back(q);
+    std::string term = a.gain == 1 ? u : fmt::format("{}*{}", number(a.gain), u);
+    forces[q] += (forces[q].empty() ? "" : " + ") + term;
+  }
+  std::string generalized;
+  for (const std::string& q : order) generalized += (generalized.empty() ? "" : ", ") + fmt::format("{} = \"{}\"", q, forces[q]);
+  if (!generalized.empty()) out.forces = "\n[[forces]]\ngeneralized = { " + generalized + " }\n";
+}
+
+}  // namespace
+
+std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory,
+                                               std::string name) {
+  auto read = read_with_mujoco(path);
+  if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
+    diagnostics.error({path, std::max(failure->line, 1), 1}, "", failure->message,
+                      "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be MJCF that it accepts");
+    return std::nullopt;
+  }
+  const Robot& robot = std::get<Robot>(read);
+  std::string file = std::filesystem::path(path).filename().string();
+  if (in_memory)
+    std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);
+  for (const std::string& w : robot.warnings) std::cerr << "eomgen: warning: " << file << ": " << w << "\n";
+  if (name.empty()) name = identifier_of(robot.name.empty() ? std::filesystem::path(path).stem().string() : robot.name);
+  return model_file_text(robot, name, file);
+}
+
+std::string identifier_of(const std::string& text) {
+  std::string out;
+  for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
+  if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "_" + out;
+  return out;
+}
+
+std::string model_file_text(const Robot& robot, const std::string& name, const std::string& source) {
+  Names names, frames;
+  Sections out;
+  std::vector<std::string> frame_of;
+  for (const RobotBody& b : robot.bodies) frame_of.push_back(frames.take(b.name));
+  std::vector<std::vector<JointSymbols>> joint_symbols(robot.bodies.size());
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b) add_body(robot, b, names, frame_of, out, joint_symbols);
+  add_actuators(robot, joint_symbols, names, out);
+  for (const RobotSite& s : robot.sites)
+    out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
+                              s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
+  std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
+                                 robot.initial_state);
+  std::vector<std::string> warnings = robot.warnings;
+  warnings.insert(warnings.end(), out.warnings.begin(), out.warnings.end());
+  for (const std::string& w : warnings) text += "# not carried: " + w + "\n";
+  text += fmt::format("\n[model]\nname = \"{}\"\ntitle = \"{} (imported)\"\n", name, robot.name.empty() ? name : robot.name);
+  text += "\n[gravity]\nacceleration = " + vector_text(robot.gravity) + "\n";
+  if (!out.inputs.empty()) text += "\n[inputs]\n" + out.inputs;
+  text += "\n[coordinates]\n" + out.coordinates + out.frames + out.bodies + out.points;
+  if (!out.kinetic.empty() || !out.dissipation.empty() || !out.potential.empty()) {
+    text += "\n[energy]\n";
+    if (!out.kinetic.empty()) text += "kinetic = " + sum_text(out.kinetic) + "\n";
+    if (!out.dissipation.empty()) text += "dissipation = " + sum_text(out.dissipation) + "\n";
+    if (!out.potential.empty()) text += "potential = " + sum_text(out.potential) + "\n";
+  }
+  text += out.forces;
+  return text;
+}
+
+}  // namespace eomgen

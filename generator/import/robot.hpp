@@ -1,0 +1,65 @@
+/// @file A robot as a robot description gives it (MJCF, URDF), before it is a model file: bodies
+/// in a tree, each placed in its parent and moved by its joints, with its inertia; actuators,
+/// sites, gravity, the initial state, and what eomgen cannot carry. Plain data between the reader
+/// (mjcf_reader.hpp) and the writer (model_writer.hpp).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace eomgen {
+
+using Triple = std::array<double, 3>;
+using Quaternion = std::array<double, 4>;  // w, x, y, z
+
+struct RobotJoint {
+  std::string name;
+  std::string type;  // hinge, slide, ball or free (MJCF's words)
+  Triple axis{0, 0, 1}, anchor{0, 0, 0};  // in the body's frame
+  double armature = 0, damping = 0, stiffness = 0;
+  std::vector<double> spring_reference;    // the joint's qpos at which the spring is slack
+  std::vector<double> initial_position;    // its part of qpos
+  std::vector<double> initial_velocity;    // its part of qvel
+  bool limited = false;
+  std::array<double, 2> range{0, 0};
+};
+
+struct RobotBody {
+  std::string name;
+  int parent = -1;  // index into Robot::bodies; −1: the world
+  Triple position{0, 0, 0};
+  Quaternion orientation{1, 0, 0, 0};  // in the parent's frame
+  std::vector<RobotJoint> joints;      // applied in order, each in the frame the previous one left
+  double mass = 0;
+  Triple center{0, 0, 0};              // centre of mass in the body's frame
+  Quaternion inertia_axes{1, 0, 0, 0};  // principal axes of inertia in the body's frame
+  Triple principal_inertia{0, 0, 0};
+};
+
+struct RobotActuator {
+  std::string name;
+  int body = -1, joint = -1;  // the joint it drives: index into that body's joints
+  double gain = 1;            // generalized force = gain × control (MJCF: gear × gainprm[0])
+  bool limited = false;
+  std::array<double, 2> range{0, 0};
+};
+
+struct RobotSite {
+  std::string name;
+  int body = -1;
+  Triple position{0, 0, 0};
+};
+
+struct Robot {
+  std::string name;
+  std::string reader;  // what read the file, e.g. "MuJoCo 2.2.2's compiler"
+  std::string initial_state;  // where the initial state comes from
+  Triple gravity{0, 0, -9.81};
+  std::vector<RobotBody> bodies;
+  std::vector<RobotActuator> actuators;
+  std::vector<RobotSite> sites;
+  std::vector<std::string> warnings;  // what the model cannot carry, each naming it
+};
+
+}  // namespace eomgen

@@ -1,0 +1,124 @@
+// The model file `eomgen import` writes (generator/import/model_writer.hpp), from a robot given as
+// plain data: names taken from the robot and made unique, one frame per joint (two hinges in one
+// body become two frames), quaternions written as quat(...), ball damping as ½ d |ω|² in the
+// quaternion's rates, motors as inputs with gain × u; numbers in their shortest exact form. The
+// text derives, and its M is the robot's: for a free body, diag(m, m, m, I).
+#include <gtest/gtest.h>
+
+#include "import/mjcf_reader.hpp"
+#include "import/model_writer.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+Robot two_armed_robot() {
+  Robot r;
+  r.name = "two-armed robot";
+  r.reader = "a test";
+  r.initial_state = "qpos0";
+  RobotBody base;
+  base.name = "base";
+  base.mass = 3.5;
+  base.principal_inertia = {0.1, 0.2, 0.25};
+  RobotJoint root;
+  root.name = "root";
+  root.type = "free";
+  root.initial_position = {0, 0, 1, 1, 0, 0, 0};
+  root.initial_velocity = {0, 0, 0, 0, 0, 0.5};
+  base.joints.push_back(root);
+  RobotBody arm;
+  arm.name = "arm";
+  arm.parent = 0;
+  arm.position = {0.1, 0, 0.2};
+  arm.orientation = {0.5, 0.5, 0.5, 0.5};
+  arm.mass = 0.7;
+  arm.center = {0, 0, -0.1};
+  arm.principal_inertia = {0.01, 0.01, 0.002};
+  for (const char* name : {"pitch", "yaw"}) {
+    RobotJoint hinge;
+    hinge.name = name;
+    hinge.type = "hinge";
+    hinge.axis = {0, 1, 0};
+    hinge.armature = 0.05;
+    hinge.damping = 0.3;
+    hinge.stiffness = 2;
+    hinge.spring_reference = {0.25};
+    hinge.initial_position = {0.1};
+    hinge.initial_velocity = {0};
+    hinge.limited = true;
+    hinge.range = {-1, 1};
+    arm.joints.push_back(hinge);
+  }
+  RobotBody hand;
+  hand.name = "arm";  // a second body of the same name
+  hand.parent = 1;
+  hand.mass = 0.2;
+  hand.principal_inertia = {0.001, 0.001, 0.001};
+  RobotJoint wrist;
+  wrist.name = "wrist";
+  wrist.type = "ball";
+  wrist.damping = 0.4;
+  wrist.initial_position = {1, 0, 0, 0};
+  wrist.initial_velocity = {0, 0, 0};
+  hand.joints.push_back(wrist);
+  r.bodies = {base, arm, hand};
+  r.actuators.push_back({"pitch motor", 1, 0, 25, true, {-1, 1}});
+  r.sites.push_back({"tip", 2, {0, 0, -0.05}});
+  r.warnings.push_back("1 tendon(s): not carried");
+  return r;
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
+  std::string text = model_file_text(two_armed_robot(), "two_armed", "robot.xml");
+  EXPECT_TRUE(has(text, "# not carried: 1 tendon(s): not carried")) << text;
+  EXPECT_TRUE(has(text, "pitch_motor = 0  # control range [-1, 1] in the file: not enforced")) << text;
+  EXPECT_TRUE(has(text, "pitch = 0.1  # range [-1, 1] in the file: not enforced")) << text;
+  EXPECT_TRUE(has(text, "name = \"arm_pitch\"\nparent = \"base\"\norigin = [\"0.1\", \"0\", \"0.2\"]\n"
+                        "rotation = \"quat(0.5, 0.5, 0.5, 0.5)\"\njoint = { type = \"revolute\"")) << text;
+  EXPECT_TRUE(has(text, "name = \"arm\"\nparent = \"arm_pitch\"\njoint = { type = \"revolute\"")) << text;
+  EXPECT_TRUE(has(text, "name = \"arm_2\"\nparent = \"arm\"\njoint = { type = \"ball\"")) << text;
+  EXPECT_TRUE(has(text, "joint = { type = \"free\", position = [\"root_x\", \"root_y\", \"root_z\"], quaternion = "
+                        "[\"root_qw\", \"root_qx\", \"root_qy\", \"root_qz\"], angular_velocity = [\"root_wx\", \"root_wy\", "
+                        "\"root_wz\"], initial_angular_velocity = [0, 0, 0.5] }")) << text;
+  EXPECT_TRUE(has(text, "kinetic = \"(0.05*der(pitch)^2 + 0.05*der(yaw)^2)/2\"")) << text;
+  EXPECT_TRUE(has(text, "1.6*(der(wrist_qw)^2 + der(wrist_qx)^2 + der(wrist_qy)^2 + der(wrist_qz)^2)")) << text;
+  EXPECT_TRUE(has(text, "potential = \"(2*(pitch - 0.25)^2 + 2*(yaw - 0.25)^2)/2\"")) << text;
+  EXPECT_TRUE(has(text, "generalized = { pitch = \"25*pitch_motor\" }")) << text;
+  EXPECT_TRUE(has(text, "[[points]]\nname = \"tip\"\nframe = \"arm_2\"\nposition = [\"0\", \"0\", \"-0.05\"]")) << text;
+  EXPECT_EQ(identifier_of("2nd link-b"), "_2nd_link_b");
+}
+
+TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
+  Robot r = two_armed_robot();
+  r.bodies.resize(1);  // the free base alone
+  r.actuators.clear();
+  r.sites.clear();
+  Equations e = derive_text(model_file_text(r, "base_alone", "robot.xml"));
+  ASSERT_EQ(e.num_velocities(), 6u);
+  ASSERT_EQ(e.symbols.num_coordinates(), 7u);
+  EXPECT_EQ(e.method, "appell");
+  GiNaC::exmap at = point_by_name(e, {{"root_x", 0.3}, {"root_y", -0.2}, {"root_z", 1}, {"root_qw", 0.5}, {"root_qx", 0.5},
+                                      {"root_qy", -0.5}, {"root_qz", 0.5}, {"der(root_x)", 0.1},
+                                      {"der(root_y)", 0.2}, {"der(root_z)", 0.3}, {"root_wx", 1}, {"root_wy", 2}, {"root_wz", 3}});
+  const double diagonal[6] = {3.5, 3.5, 3.5, 0.1, 0.2, 0.25};
+  for (unsigned i = 0; i < 6; ++i)
+    for (unsigned j = 0; j < 6; ++j)
+      EXPECT_NEAR(value_at(e.mass_matrix(i, j), at), i == j ? diagonal[i] : 0.0, 1e-14) << i << ", " << j;
+}
+
+TEST(ModelWriter, MujocosMessagesBecomeALineAndAMessage) {
+  UnreadableRobot a = unreadable_robot("XML Error: problem reading attribute 'pos'\nElement 'body', line 5\n");
+  EXPECT_EQ(a.line, 5);
+  EXPECT_EQ(a.message, "problem reading attribute 'pos' (element <body>)");
+  UnreadableRobot b = unreadable_robot("Error: axis too small in joint 'q' (id = 0)\nObject name = q, id = 0, line = 6, column = -1\n");
+  EXPECT_EQ(b.line, 6);
+  EXPECT_EQ(b.message, "axis too small in joint 'q' (id = 0)");
+  UnreadableRobot c = unreadable_robot("XML Error: Unrecognized XML model type: 'html'");
+  EXPECT_EQ(c.line, 0);
+}
+
+}  // namespace
+}  // namespace eomgen::test
