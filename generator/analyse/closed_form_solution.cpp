@@ -78,11 +78,21 @@ class InverseLaplace {
       ex alpha = (-term.factor.coeff(s_, 1) / 2).normal(), w2 = (term.factor.coeff(s_, 0) - alpha * alpha).normal();
       w2 = GiNaC::factor(w2.numer()) / GiNaC::factor(w2.denom());  // sqrt(g*(m + mc)/(l*mc)), not of a sum of fractions
       ex sign = w2.subs(values_).normal();
+      ex p = term.numerator.coeff(s_, 1), q = term.numerator.coeff(s_, 0);
+      if (sign.is_zero()) {
+        // a double root at the model's values (critical damping): f = (s − α)², so
+        // L⁻¹{(p (s − α) + q + p α)/(s − α)^(2k)} = e^(αt) (p t^(2k−2)/(2k−2)! + (q + p α) t^(2k−1)/(2k−1)!),
+        // the Jordan form's t e^(αt), valid where w2 = 0 (the sinh or sin form is 0/0 there)
+        note(conditions, canonical_text(w2) + " = 0");
+        int m = 2 * term.power;
+        out += GiNaC::exp(alpha * t_) * (p * GiNaC::pow(t_, m - 2) / GiNaC::factorial(m - 2) +
+                                         (q + p * alpha).normal() * GiNaC::pow(t_, m - 1) / GiNaC::factorial(m - 1));
+        continue;
+      }
       bool oscillating = sign.info(GiNaC::info_flags::positive);
       bool decided = w2.info(GiNaC::info_flags::positive) || (-w2).info(GiNaC::info_flags::positive);
       if (!decided) note(conditions, canonical_text(w2) + (oscillating ? " > 0" : " < 0"));
       QuadraticTransforms h = quadratic_transforms(w2, oscillating, term.power, t_);
-      ex p = term.numerator.coeff(s_, 1), q = term.numerator.coeff(s_, 0);
       out += GiNaC::exp(alpha * t_) * (p * h.s[term.power - 1] + (q + p * alpha).normal() * h.one[term.power - 1]);
     }
     return tidy(out);

@@ -1,6 +1,7 @@
 #include "analyse/exact_linear_system.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <fmt/format.h>
@@ -26,6 +27,19 @@ std::optional<GiNaC::numeric> exact_decimal(double v) {
   GiNaC::numeric value(digits.c_str());
   value = value / GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(static_cast<long>(decimals)));
   return negative ? -value : value;
+}
+
+// an angle written as a multiple of π (--at phi=Pi, 3*Pi/4): k π/d with d ≤ 12 when v is the double
+// nearest to it, so that cos(π) is −1 exactly; a decimal that is no such double stays a decimal
+std::optional<ex> exact_angle(double v) {
+  if (v == 0 || !std::isfinite(v)) return std::nullopt;
+  for (long d = 1; d <= 12; ++d) {
+    double k = std::round(v * static_cast<double>(d) / M_PI);
+    if (k == 0 || std::abs(k) > 48 * static_cast<double>(d)) continue;
+    ex angle = GiNaC::numeric(static_cast<long>(k), d) * GiNaC::Pi;
+    if (GiNaC::ex_to<GiNaC::numeric>(angle.evalf()).to_double() == v) return angle;
+  }
+  return std::nullopt;
 }
 
 bool is_rational_number(const ex& v) {
@@ -124,7 +138,8 @@ ExactLinearSystem exact_linear_system(const Equations& e, const std::vector<doub
   }
   for (std::size_t i = 0; i < s.inputs.size(); ++i) exact(s.inputs[i], inputs[i], s.input_names[i]);
   for (std::size_t i = 0; i < n; ++i) {
-    exact(s.coordinates[i], state[i], s.coordinate_names[i]);
+    if (auto angle = exact_angle(state[i])) point.substitution[s.coordinates[i]] = *angle;
+    else exact(s.coordinates[i], state[i], s.coordinate_names[i]);
     exact(s.velocities[i], state[n + i], s.velocities[i].get_name());
   }
   if (!out.refusal.empty()) return out;

@@ -27,10 +27,14 @@ struct DiffCommandOptions {
   std::string self;
   DiffOptions options;
   bool json = false;
+  bool region_is_enough = false;  // --region
 };
 
-// equal on the sampled region only is not shown to be the same: like different, it exits 1
-int status_of(const EquationDiff& d) { return d.verdict == "different" || d.verdict == "equal_on_samples" ? 1 : 0; }
+// equal on the sampled region only is not shown to be the same: like different, it exits 1, unless
+// --region says that region is all the user asks about
+int status_of(const EquationDiff& d, bool region_is_enough) {
+  return d.verdict == "different" || (d.verdict == "equal_on_samples" && !region_is_enough) ? 1 : 0;
+}
 
 // OLD NEW: one comparison, reported in full
 int diff_pair(const DiffCommandOptions& o) {
@@ -47,7 +51,7 @@ int diff_pair(const DiffCommandOptions& o) {
     return exit_user_error;
   }
   std::cout << (o.json ? diff_json(d) : diff_text(d));
-  return status_of(d);
+  return status_of(d, o.region_is_enough);
 }
 
 std::vector<std::string> model_files(const std::vector<std::string>& inputs) {
@@ -99,7 +103,7 @@ int diff_self(const DiffCommandOptions& o) {
                              d.verdict == "different" ? fmt::format(" ({} entries differ, {} symbols added or removed)", different,
                                                                     d.added.size() + d.removed.size())
                                                       : "");
-    worst = std::max(worst, status_of(d));
+    worst = std::max(worst, status_of(d, o.region_is_enough));
   }
   std::filesystem::remove_all(scratch);
   std::cerr << fmt::format("eomgen diff --self: {} models compared with {}\n", files.size(), o.self);
@@ -147,6 +151,9 @@ Command add_diff_command(CLI::App& app) {
   cmd->add_option("--samples", o->options.samples, "Random points of the numeric level (default 16; the seed is fixed)");
   cmd->add_option("--self", o->self, "Another eomgen executable: compare what it derives from each model with what this "
                   "one derives, one line per model");
+  cmd->add_flag("--region", o->region_is_enough, "Take equations equal on the sampled region as the same (exit 0): coordinates "
+               "in (0.2, 1.3) and (-4, 4), velocities in (-2, 2), parameters 0.5 to 2 times their defaults; without it, "
+               "an expression with branches (abs, atan2, a fractional power) equal there only exits 1");
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "text or json")->check(CLI::IsMember({"text", "json"}));
   return [cmd, o, format]() -> int {

@@ -1,8 +1,6 @@
 // Ball and free joints (FrameEntry::joint with type "ball" or "free"): MJCF's ball and free.
 // The frame, placed by R_p and o_p, is turned by the unit quaternion (w, x, y, z) of four
-// coordinates, written homogeneously so that any nonzero quaternion gives a rotation:
-//   R(q) = [[w²+x²−y²−z², 2(xy−wz), 2(xz+wy)], [2(xy+wz), w²−x²+y²−z², 2(yz−wx)],
-//           [2(xz−wy), 2(yz+wx), w²−x²−y²+z²]] / (w²+x²+y²+z²)
+// coordinates, R(q) of model/quaternion.hpp, which any nonzero quaternion makes a rotation:
 //   ball: R = R_p·R(q), o = o_p + R_p·(a − R(q)·a)   (a: the centre, frame coordinates)
 //   free: R = R_p·R(q), o = o_p + R_p·(x, y, z)
 // Its velocities are the components of the frame's angular velocity relative to the parent in
@@ -13,23 +11,12 @@
 #include <fmt/format.h>
 
 #include "model/model_builder.hpp"
+#include "model/quaternion.hpp"
 
 namespace eomgen {
 
 using GiNaC::ex;
 
-namespace {
-
-GiNaC::matrix quaternion_rotation(const ex& w, const ex& x, const ex& y, const ex& z) {
-  ex n = w * w + x * x + y * y + z * z;
-  GiNaC::matrix R(3, 3);
-  R(0, 0) = (w * w + x * x - y * y - z * z) / n, R(0, 1) = 2 * (x * y - w * z) / n, R(0, 2) = 2 * (x * z + w * y) / n;
-  R(1, 0) = 2 * (x * y + w * z) / n, R(1, 1) = (w * w - x * x + y * y - z * z) / n, R(1, 2) = 2 * (y * z - w * x) / n;
-  R(2, 0) = 2 * (x * z - w * y) / n, R(2, 1) = 2 * (y * z + w * x) / n, R(2, 2) = (w * w - x * x - y * y + z * z) / n;
-  return R;
-}
-
-}  // namespace
 
 std::optional<std::vector<int>> ModelBuilder::joint_coordinates(const std::vector<std::string>& names,
                                                                 const SourceLocation& where, const std::string& key) {
@@ -86,10 +73,7 @@ void ModelBuilder::set_quaternion_rates(const JointEntry& j, const std::array<in
   if ((q0[0] * q0[0] + q0[1] * q0[1] + q0[2] * q0[2] + q0[3] * q0[3]).subs(s.default_parameter_values()).evalf().is_zero())
     d_.error(j.quaternion_where, j.key + ".quaternion", "the initial quaternion is zero, which is no orientation",
              "give its coordinates initial values, e.g. qw = 1 for the placement itself");
-  std::array<ex, 4> rate = {-(q0[1] * w[0] + q0[2] * w[1] + q0[3] * w[2]) / 2,
-                            (q0[0] * w[0] + q0[2] * w[2] - q0[3] * w[1]) / 2,
-                            (q0[0] * w[1] + q0[3] * w[0] - q0[1] * w[2]) / 2,
-                            (q0[0] * w[2] + q0[1] * w[1] - q0[2] * w[0]) / 2};
+  std::array<ex, 4> rate = quaternion_rates(q0, {w[0], w[1], w[2]});
   for (std::size_t k = 0; k < 4; ++k) {
     std::size_t c = std::size_t(q[k]);
     s.initial_rate_expressions[c] = rate[k];
@@ -108,7 +92,7 @@ std::optional<FrameLink::Joint> ModelBuilder::turn_by_quaternion(const JointEntr
   set_quaternion_rates(j, joint.quaternion);
   const Symbols& s = m_.symbols;
   const auto c = [&](int k) { return ex(s.coordinates[std::size_t(k)]); };
-  GiNaC::matrix R = quaternion_rotation(c(joint.quaternion[0]), c(joint.quaternion[1]), c(joint.quaternion[2]), c(joint.quaternion[3]));
+  GiNaC::matrix R = quaternion_rotation({c(joint.quaternion[0]), c(joint.quaternion[1]), c(joint.quaternion[2]), c(joint.quaternion[3])});
   Vector3 moved{0, 0, 0};
   if (joint.type == FrameLink::Joint::Type::free) {
     if (j.position.size() != 3) return std::nullopt;

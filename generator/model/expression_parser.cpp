@@ -1,5 +1,7 @@
 #include "model/expression_parser.hpp"
 
+#include "model/quaternion.hpp"
+
 #include <cctype>
 #include <cfloat>
 
@@ -107,13 +109,10 @@ class Parser {
       if (!GiNaC::is_a<GiNaC::numeric>(c))
         fail(start, "quat takes four numbers", "write quat(w, x, y, z), e.g. quat(0.7071, 0.7071, 0, 0); a turn that "
                                                 "moves is rot_axis(x, y, z, angle) or a joint");
-    const ex &w = q[0], &x = q[1], &y = q[2], &z = q[3];
-    ex n = w * w + x * x + y * y + z * z;
-    if (n.is_zero()) fail(start, "quat needs a quaternion that is not zero", "write quat(w, x, y, z), e.g. quat(1, 0, 0, 0)");
+    if ((q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).is_zero())
+      fail(start, "quat needs a quaternion that is not zero", "write quat(w, x, y, z), e.g. quat(1, 0, 0, 0)");
     ElementaryRotation r{ElementaryRotation::constant_matrix, 0};
-    r.constant = GiNaC::matrix{{(w * w + x * x - y * y - z * z) / n, 2 * (x * y - w * z) / n, 2 * (x * z + w * y) / n},
-                               {2 * (x * y + w * z) / n, (w * w - x * x + y * y - z * z) / n, 2 * (y * z - w * x) / n},
-                               {2 * (x * z - w * y) / n, 2 * (y * z + w * x) / n, (w * w - x * x - y * y + z * z) / n}};
+    r.constant = quaternion_rotation({q[0], q[1], q[2], q[3]});
     return r;
   }
 

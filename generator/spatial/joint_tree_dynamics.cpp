@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "kinematics/vector3.hpp"
+#include "model/quaternion.hpp"
 #include "model/recursive_frames.hpp"
 #include "spatial/joint_velocities.hpp"
 
@@ -227,7 +228,7 @@ class Tree {
       R = rotation_matrix(about_axis);
       r = r + times(j.placement, j.anchor - times(R, j.anchor));
     } else if (j.spherical()) {
-      R = quaternion_rotation(i, j);
+      R = joint_rotation(i, j);
       if (j.type == Type::free) {
         Vector3 x;
         for (unsigned k = 0; k < 3; ++k) x[k] = s_.coordinates[std::size_t(j.position[k])];
@@ -252,18 +253,13 @@ class Tree {
     links_.push_back(l);
   }
 
-  // R(q) of a ball or free joint's quaternion (model/build_spherical_joints.cpp), with 1/|q|² named
-  GiNaC::matrix quaternion_rotation(std::size_t i, const FrameLink::Joint& j) {
+  // R(q) of a ball or free joint's quaternion (model/quaternion.hpp), with 1/|q|² named
+  GiNaC::matrix joint_rotation(std::size_t i, const FrameLink::Joint& j) {
     std::array<ex, 4> q;
     for (std::size_t k = 0; k < 4; ++k) q[k] = s_.coordinates[std::size_t(j.quaternion[k])];
-    const ex &w = q[0], &x = q[1], &y = q[2], &z = q[3];
     ex n = intermediate(out_, fmt::format("{}.tqn", name(i)), fmt::format("k_{}_tqn", name(i)),
-                        1 / (w * w + x * x + y * y + z * z));
-    GiNaC::matrix R(3, 3);
-    R(0, 0) = (w * w + x * x - y * y - z * z) * n, R(0, 1) = 2 * (x * y - w * z) * n, R(0, 2) = 2 * (x * z + w * y) * n;
-    R(1, 0) = 2 * (x * y + w * z) * n, R(1, 1) = (w * w - x * x + y * y - z * z) * n, R(1, 2) = 2 * (y * z - w * x) * n;
-    R(2, 0) = 2 * (x * z - w * y) * n, R(2, 1) = 2 * (y * z + w * x) * n, R(2, 2) = (w * w - x * x - y * y + z * z) * n;
-    return R;
+                        1 / (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]));
+    return quaternion_rotation(q, n);
   }
 
   // a free joint's position: u_k = Eᵀ R_p e_k, the placement's axis k in the link's coordinates;

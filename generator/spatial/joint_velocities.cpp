@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "model/quaternion.hpp"
+
 namespace eomgen {
 
 using GiNaC::ex;
@@ -36,8 +38,7 @@ JointVelocities joint_velocities(const Model& model) {
       q[k] = s.coordinates[std::size_t(ball->quaternion[k])], dq[k] = s.velocities[std::size_t(ball->quaternion[k])];
     const std::vector<GiNaC::realsymbol>& w = ball->angular_velocity;
     // q' = ½ q ⊗ (0, ω)
-    std::array<ex, 4> rate = {-(q[1] * w[0] + q[2] * w[1] + q[3] * w[2]) / 2, (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]) / 2,
-                              (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]) / 2, (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]) / 2};
+    std::array<ex, 4> rate = quaternion_rates(q, {w[0], w[1], w[2]});
     for (std::size_t k = 0; k < 4; ++k) v.coordinate_rates[std::size_t(ball->quaternion[k])] = rate[k];
     // ω = 2 vec(q* ⊗ q') / |q|²
     ex norm = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];

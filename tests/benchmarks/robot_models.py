@@ -161,6 +161,33 @@ def write(root, name, title, comment, links, gravity=9.81, base=None):
         f.write("\n".join(xml))
 
 
+def write_urdf(root, name, links):
+    """The same robot as URDF (tests/crosscheck/urdf/NAME.urdf): each link's joint placed by its origin
+    and rpy, its axis in the link's frame, inertials as full tensors about the centre, damping; URDF
+    has no armature and no actuators, so neither has the URDF robot (nor its import)."""
+    rpy = {"+x": "1.5707963267948966 0 0", "-x": "-1.5707963267948966 0 0", "": "0 0 0"}
+    xml = ['<?xml version="1.0"?>',
+           f"<!-- tests/crosscheck/models/{name}.toml as URDF, without armature and motors; written by",
+           "     tests/benchmarks/robot_models.py. MuJoCo's compiler reads it for the MuJoCo oracle test. -->",
+           f'<robot name="{name}">', '  <link name="base"/>']
+    for link in links:
+        mass, center, inertia = link["body"]
+        I = inertia
+        xml += [f'  <link name="{link["name"]}">', "    <inertial>",
+                f'      <origin xyz="{" ".join(number(x) for x in center)}" rpy="0 0 0"/>', f'      <mass value="{number(mass)}"/>',
+                f'      <inertia ixx="{number(I[0][0])}" ixy="{number(I[0][1])}" ixz="{number(I[0][2])}" '
+                f'iyy="{number(I[1][1])}" iyz="{number(I[1][2])}" izz="{number(I[2][2])}"/>', "    </inertial>", "  </link>"]
+    for i, link in enumerate(links):
+        xml += [f'  <joint name="q{i + 1}" type="continuous">', f'    <parent link="{link["parent"] or "base"}"/>',
+                f'    <child link="{link["name"]}"/>',
+                f'    <origin xyz="{" ".join(number(x) for x in link["origin"])}" rpy="{rpy[link["turn"]]}"/>',
+                f'    <axis xyz="{" ".join(number(x) for x in link["axis"])}"/>',
+                f'    <dynamics damping="{number(link["damping"])}"/>', "  </joint>"]
+    xml += ["</robot>", ""]
+    with open(os.path.join(root, "tests", "crosscheck", "urdf", f"{name}.urdf"), "w") as f:
+        f.write("\n".join(xml))
+
+
 def seven_joint_arm(rng):
     layout = [((0, 0, 0.333), ""), ((0, 0, 0), "-x"), ((0, -0.316, 0), "+x"), ((0.0825, 0, 0), "+x"),
               ((-0.0825, 0.384, 0), "-x"), ((0, 0, 0), "+x"), ((0.088, 0, 0), "+x")]
@@ -213,12 +240,14 @@ def quadruped(rng):
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
     rng = random.Random(38)
+    arm = seven_joint_arm(rng)
+    write_urdf(root, "seven_joint_arm", arm)
     write(root, "seven_joint_arm", "Seven-joint arm: a Panda's link offsets, invented inertias",
           ["A 7-joint arm for the tree benchmark and the MuJoCo oracle test: the link offsets of the",
            "Franka Panda (0.333, 0.316, 0.0825, 0.384, 0.088 m), links turned by +-90 degrees about x,",
            "hinges about z, with masses, centres and full inertia tensors invented here; armature,",
            "damping and a motor on each joint. Written by tests/benchmarks/robot_models.py with",
-           "tests/crosscheck/mjcf/seven_joint_arm.xml, the same robot for MuJoCo."], seven_joint_arm(rng))
+           "tests/crosscheck/mjcf/seven_joint_arm.xml, the same robot for MuJoCo."], arm)
     write(root, "branched_tree", "Humanoid-like tree of 21 hinges about oblique axes through offset anchors",
           ["21 hinges in a humanoid's branching (a spine of 3, two arms of 3, two legs of 6) about",
            "oblique axes through offset anchors, bodies with full inertia tensors, armature, damping",

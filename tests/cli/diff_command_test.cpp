@@ -79,6 +79,20 @@ TEST(DiffCommand, TheRollingDiskWithFramesAndRollsIsTheDiskWrittenByHand) {
   EXPECT_NE(r.out.find(": identical\n"), std::string::npos) << r.out;
 }
 
+// |l| for l: equal where the parameters are sampled (positive), not shown equal for l < 0: exit 1,
+// and 0 with --region, which says the sampled region is all that is asked about
+TEST(DiffCommand, EqualOnTheSampledRegionExitsOneUnlessTheRegionIsEnough) {
+  std::string baseline = std::string(EOMGEN_SOURCE_DIR) + "/generated/pendulum.json";
+  std::string branched = changed_pendulum("\"-l*cos(phi)\"", "\"-abs(l)*cos(phi)\"");
+  CommandOutput strict = run_eomgen("diff '" + baseline + "' '" + branched + "'");
+  EXPECT_EQ(strict.status, 1) << strict.out << strict.err;
+  EXPECT_NE(strict.out.find("equal_on_samples"), std::string::npos) << strict.out;
+  EXPECT_NE(strict.out.find("sampled region only"), std::string::npos) << strict.out;
+  CommandOutput region = run_eomgen("diff '" + baseline + "' '" + branched + "' --region");
+  EXPECT_EQ(region.status, 0) << region.out << region.err;
+  EXPECT_NE(region.out.find("equal_on_samples"), std::string::npos) << region.out;
+}
+
 TEST(DiffCommand, RenamingASymbolTheOldSideLacksIsAMistake) {
   CommandOutput r = run_eomgen("diff '" + model_path("pendulum") + "' '" + model_path("pendulum") + "' --rename kk=k");
   EXPECT_EQ(r.status, 2) << r.out;

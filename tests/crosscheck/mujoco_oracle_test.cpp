@@ -31,7 +31,8 @@
 #include "quadruped_imported.hpp"
 #include "seven_joint_arm_imported.hpp"
 #include "tumbling_body_imported.hpp"
-#include "two_link_arm_imported.hpp"
+#include "seven_joint_arm_from_urdf.hpp"
+#include "two_link_arm_from_urdf.hpp"
 
 namespace {
 
@@ -164,11 +165,15 @@ TEST(MujocoImport, FreeBodyImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJO
 // a free and a ball joint, two hinges in one body, armature, damping, a spring, geared motors
 TEST(MujocoImport, MjcfFeaturesImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(mjcf_features); }
 
-// URDF, read by the same compiler: inertial origins with rpy, joint origins with rpy, an oblique axis
-TEST(MujocoImport, UrdfArmImportsAndMatchesMujoco) {
-  namespace arm = eomgen::models::two_link_arm_imported;
-  expect_matches_mujoco<arm::Parameters<double>>("urdf/two_link_arm.urdf", int(arm::num_coordinates), int(arm::num_velocities),
-                                                 int(arm::num_inputs), arm::rhs<double>);
-}
+// URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,
+// an oblique axis; and the seven-joint arm as URDF (without armature and motors, which URDF lacks)
+#define EXPECT_URDF_IMPORT_MATCHES_MUJOCO(M)                                                                  \
+  expect_matches_mujoco<eomgen::models::M##_from_urdf::Parameters<double>>(                                 \
+      "urdf/" #M ".urdf", int(eomgen::models::M##_from_urdf::num_coordinates),                                \
+      int(eomgen::models::M##_from_urdf::num_velocities), int(eomgen::models::M##_from_urdf::num_inputs),     \
+      eomgen::models::M##_from_urdf::rhs<double>)
+
+TEST(MujocoImport, UrdfArmImportsAndMatchesMujoco) { EXPECT_URDF_IMPORT_MATCHES_MUJOCO(two_link_arm); }
+TEST(MujocoImport, SevenJointArmAsUrdfImportsAndMatchesMujoco) { EXPECT_URDF_IMPORT_MATCHES_MUJOCO(seven_joint_arm); }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // the orbit rate n against the Clohessy–Wiltshire solution (Hiller §6.4); the cart
 // pendulum's transfer function X/F in its parameters; repeated complex roots
 // (resonance, t sin) and real irrational roots (cosh); a cubic factor refused.
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -124,6 +125,44 @@ TEST(ClosedFormSolution, ResonanceRealRootsAndACubicFactor) {
   // x''' = x + 1·... : the companion matrix of s^3 - s - 1, irreducible
   ClosedFormSolution cubic = solved({{0, 1, 0}, {0, 0, 1}, {1, 1, 0}});
   EXPECT_NE(cubic.refusal.find("of degree 3"), std::string::npos) << cubic.refusal;
+}
+
+// the inverted pendulum at phi = π (--at phi=Pi): the double nearest π is taken as π, so A is rational
+// (cos π = −1) and the exact analysis applies; 3π/4 is taken as 3π/4, whose cosine is no rational
+TEST(ExactLinearSystem, AnAngleThatIsAMultipleOfPiIsExact) {
+  Equations e = derive_model("pendulum");
+  std::vector<double> p = e.symbols.parameter_defaults, u = e.symbols.input_defaults;
+  ExactLinearSystem upright = exact_linear_system(e, p, u, {M_PI, 0}, false);
+  ASSERT_TRUE(upright.refusal.empty()) << upright.refusal;
+  double g = p[2], l = p[1];
+  EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(upright.A(1, 0).evalf()).to_double(), g / l, 1e-15 * g / l);
+  ExactLinearSystem oblique = exact_linear_system(e, p, u, {3 * M_PI / 4, 0}, false);
+  EXPECT_NE(oblique.refusal.find("sqrt(2)"), std::string::npos) << oblique.refusal;
+  ExactLinearSystem decimal = exact_linear_system(e, p, u, {0.5, 0}, false);
+  EXPECT_NE(decimal.refusal.find("cos(1/2)"), std::string::npos) << decimal.refusal;
+}
+
+// critical damping (c² = 4km at the model's values): the characteristic polynomial's quadratic factor
+// has a double root there, and Φ(t) is the Jordan form's e^(−ct/2m) (1 + ct/2m, t; −kt/m, 1 − ct/2m),
+// not the sinh form, which is 0/0 at c² = 4km; it says where it holds
+TEST(ClosedFormSolution, CriticalDampingIsTheJordanFormsSolution) {
+  GiNaC::symbol m("m"), c("c"), k("k");
+  GiNaC::matrix A{{0, 1}, {-k / m, -c / m}};
+  GiNaC::exmap values{{m, 2}, {c, 4}, {k, 2}};  // c² = 4km = 16
+  ClosedFormSolution solution = closed_form_solution(A, GiNaC::matrix(2, 0), GiNaC::matrix(0, 2), GiNaC::matrix(0, 0), values);
+  ASSERT_TRUE(solution.refusal.empty()) << solution.refusal;
+  ASSERT_EQ(solution.conditions.size(), 1u);
+  EXPECT_NE(solution.conditions[0].find("= 0"), std::string::npos) << solution.conditions[0];
+  ex t = solution.t, decay = GiNaC::exp(-c * t / (2 * m));
+  GiNaC::matrix expected{{decay * (1 + c * t / (2 * m)), decay * t}, {-decay * k * t / m, decay * (1 - c * t / (2 * m))}};
+  for (double time : {0.0, 0.3, 1.7, 6.0}) {
+    GiNaC::exmap at = values;
+    at[t] = time;
+    for (unsigned i = 0; i < 2; ++i)
+      for (unsigned j = 0; j < 2; ++j)
+        EXPECT_NEAR(value_of(solution.fundamental(i, j), at), value_of(expected(i, j), at), 1e-14)
+            << "Φ(" << time << ")[" << i << "][" << j << "] = " << solution.fundamental(i, j);
+  }
 }
 
 }  // namespace
