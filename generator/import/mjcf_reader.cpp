@@ -144,6 +144,12 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     if (name.empty()) continue;
     r.sites.push_back({name, m->site_bodyid[s] - 1, triple(m->site_pos + 3 * s)});
   }
+  for (int k = 0; k < m->nkey; ++k) {
+    std::string name = name_of(m, m->name_keyadr, k);
+    r.keyframes.push_back({name.empty() ? fmt::format("key{}", k) : name,
+                           std::vector<double>(m->key_qpos + k * m->nq, m->key_qpos + (k + 1) * m->nq),
+                           std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
+  }
   read_actuators(m, r);
   note_losses(m, r);
   return r;

@@ -87,7 +87,7 @@ std::string joint_text(const RobotJoint& j, const JointSymbols& s) {
 }
 
 struct Sections {
-  std::string coordinates, frames, bodies, inputs, forces, points;
+  std::string coordinates, frames, bodies, inputs, forces, points, scenes;
   std::vector<std::string> kinetic, dissipation, potential, warnings;
 };
 
@@ -163,6 +163,36 @@ void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::
   out.bodies += "inertia = " + vector_text(body.principal_inertia) + "\n";
 }
 
+// each keyframe as a scene's initial state: positions and rates, a quaternion's rates from ω,
+// q' = ½ q ⊗ (0, ω) (model/quaternion.hpp), since the model's states are named q and der(q)
+void add_keyframes(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Names& names, Sections& out) {
+  for (const RobotKeyframe& key : robot.keyframes) {
+    std::string initial;
+    std::size_t qpos = 0, qvel = 0;
+    auto add = [&](const std::string& state, double value) {
+      initial += (initial.empty() ? "" : ", ") + fmt::format("\"{}\" = {}", state, number(value));
+    };
+    for (std::size_t b = 0; b < robot.bodies.size(); ++b)
+      for (std::size_t k = 0; k < robot.bodies[b].joints.size(); ++k) {
+        const std::string& type = robot.bodies[b].joints[k].type;
+        const std::vector<std::string>& c = joint_symbols[b][k].coordinates;
+        std::size_t moved = type == "free" ? 3 : 0;
+        for (std::size_t i = 0; i < moved; ++i) add(c[i], key.positions[qpos + i]), add("der(" + c[i] + ")", key.velocities[qvel + i]);
+        if (type == "ball" || type == "free") {
+          const double* q = key.positions.data() + qpos + moved;
+          const double* w = key.velocities.data() + qvel + moved;
+          double rate[4] = {-(q[1] * w[0] + q[2] * w[1] + q[3] * w[2]) / 2, (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]) / 2,
+                            (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]) / 2, (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]) / 2};
+          for (std::size_t i = 0; i < 4; ++i) add(c[moved + i], q[i]), add("der(" + c[moved + i] + ")", rate[i]);
+          qpos += moved + 4, qvel += moved + 3;
+        } else {
+          add(c[0], key.positions[qpos++]), add("der(" + c[0] + ")", key.velocities[qvel++]);
+        }
+      }
+    out.scenes += fmt::format("\n[scenes.{}]\ninitial = {{ {} }}\n", names.take(key.name), initial);
+  }
+}
+
 std::string sum_text(const std::vector<std::string>& terms) {
   std::string out;
   for (const std::string& t : terms) out += (out.empty() ? "" : " + ") + t;
@@ -221,6 +251,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   std::vector<std::vector<JointSymbols>> joint_symbols(robot.bodies.size());
   for (std::size_t b = 0; b < robot.bodies.size(); ++b) add_body(robot, b, names, frame_of, out, joint_symbols);
   add_actuators(robot, joint_symbols, names, out);
+  add_keyframes(robot, joint_symbols, names, out);
   for (const RobotSite& s : robot.sites)
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
@@ -239,7 +270,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
     if (!out.dissipation.empty()) text += "dissipation = " + sum_text(out.dissipation) + "\n";
     if (!out.potential.empty()) text += "potential = " + sum_text(out.potential) + "\n";
   }
-  text += out.forces;
+  text += out.forces + out.scenes;
   return text;
 }
 

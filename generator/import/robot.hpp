@@ -51,6 +51,12 @@ struct RobotSite {
   Triple position{0, 0, 0};
 };
 
+/// A named state of the whole robot (an MJCF keyframe): qpos and qvel in MuJoCo's layout.
+struct RobotKeyframe {
+  std::string name;
+  std::vector<double> positions, velocities;
+};
+
 struct Robot {
   std::string name;
   std::string reader;  // what read the file, e.g. "MuJoCo 2.2.2's compiler"
@@ -59,6 +65,7 @@ struct Robot {
   std::vector<RobotBody> bodies;
   std::vector<RobotActuator> actuators;
   std::vector<RobotSite> sites;
+  std::vector<RobotKeyframe> keyframes;
   std::vector<std::string> warnings;  // what the model cannot carry, each naming it
 };
 

@@ -1,7 +1,8 @@
 // The model file `eomgen import` writes (generator/import/model_writer.hpp), from a robot given as
 // plain data: names taken from the robot and made unique, one frame per joint (two hinges in one
 // body become two frames), quaternions written as quat(...), ball damping as ½ d |ω|² in the
-// quaternion's rates, motors as inputs with gain × u; numbers in their shortest exact form. The
+// quaternion's rates, motors as inputs with gain × u, keyframes as scenes; numbers in their shortest
+// exact form. The
 // text derives, and its M is the robot's: for a free body, diag(m, m, m, I).
 #include <gtest/gtest.h>
 
@@ -66,6 +67,8 @@ Robot two_armed_robot() {
   r.actuators.push_back({"pitch motor", 1, 0, 25, true, {-1, 1}});
   r.sites.push_back({"tip", 2, {0, 0, -0.05}});
   r.warnings.push_back("1 tendon(s): not carried");
+  // qpos: root (7), pitch, yaw, wrist (4); qvel: root (6), pitch, yaw, wrist (3)
+  r.keyframes.push_back({"stand", {0, 0, 1, 1, 0, 0, 0, 0.2, -0.1, 1, 0, 0, 0}, {0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 2}});
   return r;
 }
 
@@ -89,6 +92,11 @@ TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   EXPECT_TRUE(has(text, "generalized = { pitch = \"25*pitch_motor\" }")) << text;
   EXPECT_TRUE(has(text, "[[points]]\nname = \"tip\"\nframe = \"arm_2\"\nposition = [\"0\", \"0\", \"-0.05\"]")) << text;
   EXPECT_EQ(identifier_of("2nd link-b"), "_2nd_link_b");
+  // a keyframe is a scene's initial state, a quaternion's rates from ω: q' = ½ q ⊗ (0, ω)
+  EXPECT_TRUE(has(text, "[scenes.stand]\ninitial = { \"root_x\" = 0, \"der(root_x)\" = 0")) << text;
+  EXPECT_TRUE(has(text, "\"root_qz\" = 0, \"der(root_qz)\" = 0.25")) << text;
+  EXPECT_TRUE(has(text, "\"pitch\" = 0.2, \"der(pitch)\" = 1, \"yaw\" = -0.1, \"der(yaw)\" = 0")) << text;
+  EXPECT_TRUE(has(text, "\"wrist_qz\" = 0, \"der(wrist_qz)\" = 1 }")) << text;
 }
 
 TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
