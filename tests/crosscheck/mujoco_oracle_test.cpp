@@ -25,6 +25,7 @@
 #include "seven_joint_arm.hpp"
 #include "tumbling_body.hpp"
 
+#include "ball_chain_imported.hpp"
 #include "measured_arm_imported.hpp"
 #include "mjcf_features_imported.hpp"
 #include "oblique_tree_imported.hpp"
@@ -164,6 +165,9 @@ TEST(MujocoImport, FreeBodyImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJO
 // defaults and classes, degrees, euler angles in zyx, axisangle, xyaxes, zaxis, inertias from geoms,
 // a free and a ball joint, two hinges in one body, armature, damping, a spring, geared motors
 TEST(MujocoImport, MjcfFeaturesImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(mjcf_features); }
+
+// a ball below a ball, in a body that also slides, and a hinge below
+TEST(MujocoImport, BallBelowABallImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(ball_chain); }
 
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,
 // an oblique axis; and the seven-joint arm as URDF (without armature and motors, which URDF lacks)
