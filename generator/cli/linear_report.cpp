@@ -131,6 +131,9 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
   for (const runtime::EigenvalueStructure& e : r.structure.eigenvalues)
     std::cout << fmt::format("    {:<24} algebraic {}, geometric {}, Jordan blocks {}\n", complex_text(e.value),
                              e.algebraic_multiplicity, e.geometric_multiplicity, blocks_text(e.jordan_blocks));
+  if (m.num_quaternions)
+    std::cout << fmt::format("  {} of the zero eigenvalues: the length of each quaternion, constant along every motion "
+                             "(its eigenvector is the quaternion itself)\n", m.num_quaternions);
   if (!r.modes.refusal.empty()) {
     std::cout << "  natural modes: " << r.modes.refusal << "\n";
   } else {

@@ -242,6 +242,9 @@ inertia = ["0.1", "0.1", "0.05"]
     EXPECT_EQ(field(r, "cyclic_zero_eigenvalues").value, 0) << "s = " << s;
     EXPECT_EQ(field(field(r, "critical_case"), "first_approximation").text, "") << "not a critical case: s = " << s;
   }
+  CommandOutput linear = run_eomgen("linear '" + model + "'");
+  EXPECT_EQ(linear.status, 0) << linear.err;
+  EXPECT_NE(linear.out.find("1 of the zero eigenvalues: the length of each quaternion"), std::string::npos) << linear.out;
 }
 
 }  // namespace
