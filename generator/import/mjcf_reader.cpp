@@ -119,7 +119,8 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   const mjModel* m = model.get();
   Robot r;
   r.reader = fmt::format("MuJoCo {}'s compiler", mj_version_text());
-  r.name = m->names;  // the model's name comes first
+  r.name = m->names;  // the model's name comes first; MuJoCo names a nameless model "MuJoCo Model"
+  if (r.name == "MuJoCo Model") r.name.clear();
   r.gravity = triple(m->opt.gravity);
   const mjtNum* qpos = m->nkey ? m->key_qpos : m->qpos0;
   std::vector<mjtNum> zero(std::size_t(m->nv), 0.0);

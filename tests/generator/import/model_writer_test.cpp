@@ -6,6 +6,10 @@
 // text derives, and its M is the robot's: for a free body, diag(m, m, m, I).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
+#include <variant>
+
 #include "import/mjcf_reader.hpp"
 #include "import/model_writer.hpp"
 #include "support/test_support.hpp"
@@ -115,6 +119,47 @@ TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
   for (unsigned i = 0; i < 6; ++i)
     for (unsigned j = 0; j < 6; ++j)
       EXPECT_NEAR(value_at(e.mass_matrix(i, j), at), i == j ? diagonal[i] : 0.0, 1e-14) << i << ", " << j;
+}
+
+// the reader in-process: a nameless model (MuJoCo calls it "MuJoCo Model") takes the file's name, a
+// body's joints come in order with MuJoCo's normalized axes, degrees are radians, a motor's gain is
+// gear × gainprm, a keyframe is read whole
+TEST(MjcfReader, ReadsWhatMujocoCompiled) {
+  std::string path = temporary_directory() + "/nameless.xml";
+  std::ofstream(path) << R"xml(<mujoco>
+  <compiler angle="degree"/>
+  <worldbody>
+    <body name="link" pos="0 0 1" euler="90 0 0">
+      <joint name="a" type="hinge" axis="0 0 2" range="-45 45" limited="true"/>
+      <joint name="b" type="slide" axis="1 0 0"/>
+      <geom type="sphere" size="0.1" mass="2"/>
+    </body>
+  </worldbody>
+  <actuator><motor joint="a" gear="3"/></actuator>
+  <keyframe><key name="bent" qpos="0.5 0.1"/></keyframe>
+</mujoco>)xml";
+  auto read = read_with_mujoco(path);
+  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
+  const Robot& r = std::get<Robot>(read);
+  EXPECT_EQ(r.name, "");
+  ASSERT_EQ(r.bodies.size(), 1u);
+  const RobotBody& b = r.bodies[0];
+  ASSERT_EQ(b.joints.size(), 2u);
+  EXPECT_EQ(b.joints[0].type, "hinge");
+  EXPECT_EQ(b.joints[1].type, "slide");
+  EXPECT_EQ(b.joints[0].axis, (Triple{0, 0, 1}));
+  EXPECT_NEAR(b.joints[0].range[1], M_PI / 4, 1e-15);
+  EXPECT_NEAR(b.orientation[0], std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(b.mass, 2, 1e-15);
+  ASSERT_EQ(r.actuators.size(), 1u);
+  EXPECT_EQ(r.actuators[0].gain, 3);
+  ASSERT_EQ(r.keyframes.size(), 1u);
+  EXPECT_EQ(r.keyframes[0].positions, (std::vector<double>{0.5, 0.1}));
+  EXPECT_EQ(r.initial_state, "keyframe 'bent'");
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("name = \"nameless\""), std::string::npos) << *text;
 }
 
 TEST(ModelWriter, MujocosMessagesBecomeALineAndAMessage) {
