@@ -79,10 +79,13 @@ TEST(LinearSymbolic, RendezvousAndCartPendulumInTheirParameters) {
 }
 
 TEST(LinearSymbolic, RefusalsAreSaid) {
-  // the upright pendulum: cos(pi) is not rational as written (pi is a decimal)
-  CommandOutput upright = run_eomgen("linear '" + model_path("pendulum") + "' --at phi=3.141592653589793 --symbolic");
-  EXPECT_EQ(upright.status, 0) << upright.err;
-  EXPECT_NE(upright.out.find("closed form: none, "), std::string::npos) << upright.out;
+  // the upright pendulum: the double nearest π is taken as π, so cos(π) = −1 and A is rational: the
+  // closed form is the saddle's cosh, not a refusal (as it was when π counted as a decimal)
+  for (const char* at : {"phi=3.141592653589793", "phi=Pi"}) {
+    CommandOutput upright = run_eomgen("linear '" + model_path("pendulum") + "' --at " + at + " --symbolic");
+    EXPECT_EQ(upright.status, 0) << upright.err;
+    EXPECT_NE(upright.out.find("phi(t) = (cosh("), std::string::npos) << at << "\n" << upright.out;
+  }
   // the double pendulum: a biquadratic that does not factor
   JsonValue json = run_json("linear '" + model_path("double_pendulum") + "' --at phi1=0 --at phi2=0 --symbolic");
   EXPECT_NE(json.find("symbolic")->find("refusal")->text.find("of degree 4 in s"), std::string::npos);
