@@ -74,12 +74,11 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
   for (std::size_t j = 0; j < n; ++j)
     applied[j] = (mech.generalized_force[j] - mech.potential_gradient[j] - mech.dissipation.diff(s.velocities[j])).subs(rates);
   e.mass_matrix = GiNaC::matrix(unsigned(k), unsigned(k));
-  e.forcing.assign(k, 0);
+  e.forcing = *mech.tree_bias_forces;
+  for (std::size_t j = 0; j < n; ++j)
+    for (const auto& [c, w] : v.rate_matrix[j]) e.forcing[c] += w * applied[j];
   for (unsigned c = 0; c < k; ++c) {
-    ex f = (*mech.tree_bias_forces)[c];
-    for (std::size_t j = 0; j < n; ++j)
-      if (ex w = v.coordinate_rates[j].diff(v.symbols[c]); !w.is_zero()) f += w * applied[j];
-    e.forcing[c] = tidy(f, motion);
+    e.forcing[c] = tidy(e.forcing[c], motion);
     for (unsigned d = c; d < k; ++d) e.mass_matrix(c, d) = e.mass_matrix(d, c) = tidy((*mech.composite_mass_matrix)(c, d), motion);
   }
   e.acceleration_symbols = mech.acceleration_symbols;

@@ -144,11 +144,11 @@ void add_rate_kinetic_energy(Mechanics& m, const Model& model, const JointVeloci
       (*m.composite_mass_matrix)(unsigned(a), unsigned(b)) += M_ji.subs(rates);
     }
     g = g.subs(rates);
-    for (std::size_t c = 0; c < tau.size(); ++c)
-      if (ex w = v.coordinate_rates[j].diff(v.symbols[c]); !w.is_zero()) {
-        tau[c] += w * (inertia.subs(rates) + g);
-        (*m.tree_bias_forces)[c] -= w * g;
-      }
+    ex lagrange = inertia.subs(rates) + g;
+    for (const auto& [c, w] : v.rate_matrix[j]) {
+      tau[c] += w * lagrange;
+      (*m.tree_bias_forces)[c] -= w * g;
+    }
   }
 }
 
@@ -200,8 +200,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     add_rate_kinetic_energy(m, model, velocities, rates, tau);
     for (std::size_t j = 0; j < n; ++j) {
       ex applied = (potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j])).subs(rates);
-      for (std::size_t c = 0; c < tau.size(); ++c)
-        if (ex w = velocities.coordinate_rates[j].diff(velocities.symbols[c]); !w.is_zero()) tau[c] += w * applied;
+      for (const auto& [c, w] : velocities.rate_matrix[j]) tau[c] += w * applied;
     }
     m.inverse_dynamics = tau;
     return;

@@ -50,6 +50,10 @@ JointVelocities joint_velocities(const Model& model) {
       v.definitions.push_back({w[k].get_name(), omega[k]});
     }
   }
+  v.rate_matrix.resize(n);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t c = 0; c < v.symbols.size(); ++c)
+      if (ex w = v.coordinate_rates[j].diff(v.symbols[c]); !w.is_zero()) v.rate_matrix[j].push_back({c, w});
   return v;
 }
 

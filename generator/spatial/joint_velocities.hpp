@@ -5,6 +5,7 @@
 /// q' = ½ q ⊗ (0, ω), and s = Y(q)·q' with ω = 2 vec(q* ⊗ q')/|q|².
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -18,6 +19,9 @@ struct JointVelocities {
   std::vector<GiNaC::ex> coordinate_rates;   // q' = W(q) s, one per coordinate
   std::vector<NamedSymbolic> definitions;    // s = Y(q) q', one per velocity
   std::vector<int> of_coordinate;            // the velocity that is q', or −1 (a quaternion's)
+  /// W = ∂q'/∂s row by row, its nonzero entries (velocity, W_jc): what projects a coordinate's
+  /// generalized force onto the velocities, Π = Wᵀ Q
+  std::vector<std::vector<std::pair<std::size_t, GiNaC::ex>>> rate_matrix;
   bool pseudo = false;                       // some are angular velocities
 };
 
