@@ -19,7 +19,7 @@ packages=(g++ cmake make pkg-config diffutils python3 python3-sympy python3-nump
           libginac-dev libcln-dev libeigen3-dev libsundials-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev gnuplot-nox
           libgtest-dev libgmock-dev libbenchmark-dev clang libmujoco-dev libxml2-utils
-          openmpi-bin libopenmpi-dev openssh-client)
+          openmpi-bin libopenmpi-dev openssh-client libjs-three chromium)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -671,4 +671,100 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 2;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"top", "rotor"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 2}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, 0}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{1}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  const T q_qw = x[0];
+  const T q_qx = x[1];
+  const T q_qy = x[2];
+  const T q_qz = x[3];
+  const T c0 = q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c1 = -q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c2 = -q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c3 = T(2)*q_qw*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c4 = T(2)*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c5 = -q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c6 = T(2)*q_qy*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_top_Rxx = c0 + c1 + c2 + q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_top_Rxy = T(2)*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - c3;
+  const T k_top_Rxz = T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c4;
+  const T k_top_ox = -(T(1)/T(10))*q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(10))*q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + (T(1)/T(10))*q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + (T(1)/T(10))*q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(1)/T(10);
+  const T k_top_Ryx = T(2)*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c3;
+  const T k_top_Ryy = -c0 - c1 - c5 - q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_top_Ryz = -T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c6;
+  const T k_top_oy = -(T(1)/T(5))*q_qw*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(5))*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_top_Rzx = T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - c4;
+  const T k_top_Rzy = T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c6;
+  const T k_top_Rzz = -c0 - c2 - c5 - q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(5))*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(1);
+  out[3] = k_top_Rxx;
+  out[15] = k_top_Rxx;
+  out[4] = k_top_Rxy;
+  out[16] = k_top_Rxy;
+  out[5] = k_top_Rxz;
+  out[17] = k_top_Rxz;
+  out[0] = k_top_ox;
+  out[12] = (T(1)/T(4))*k_top_Rxz + (T(3)/T(100))*k_top_Rxy + (T(3)/T(25))*k_top_Rxx + k_top_ox;
+  out[6] = k_top_Ryx;
+  out[18] = k_top_Ryx;
+  out[7] = k_top_Ryy;
+  out[19] = k_top_Ryy;
+  out[8] = k_top_Ryz;
+  out[20] = k_top_Ryz;
+  out[1] = k_top_oy;
+  out[13] = (T(1)/T(4))*k_top_Ryz + (T(3)/T(100))*k_top_Ryy + (T(3)/T(25))*k_top_Ryx + k_top_oy;
+  out[9] = k_top_Rzx;
+  out[21] = k_top_Rzx;
+  out[10] = k_top_Rzy;
+  out[22] = k_top_Rzy;
+  out[11] = k_top_Rzz;
+  out[23] = k_top_Rzz;
+  out[2] = k_top_oz;
+  out[14] = (T(1)/T(4))*k_top_Rzz + (T(3)/T(100))*k_top_Rzy + (T(3)/T(25))*k_top_Rzx + k_top_oz;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_m = p[0];
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  const T c0 = T(1)/sqrt(p_m);
+  out[0] = (T(1)/T(10))*c0*sqrt(T(27));
+  out[1] = (T(1)/T(10))*c0*sqrt(T(21));
+  out[2] = (T(1)/T(10))*c0*sqrt(T(3));
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[1];
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = -p_g;
+}
+
 }  // namespace eomgen::models::ball_joint_top

@@ -397,4 +397,73 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 1;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"bead"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_theta = x[0];
+  const T p_r = p[1];
+  const T p_Omega = p[3];
+  const T trig_angle[1] = {q_theta};
+  T trig_sin[1], trig_cos[1];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_theta = trig_sin[0];
+  const T cos_q_theta = trig_cos[0];
+  out[2] = -cos_q_theta*p_r;
+  out[3] = T(1);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(1);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  const T c0 = sin_q_theta;
+  const T c1 = p_Omega*t;
+  out[0] = c0*cos(c1)*p_r;
+  out[1] = c0*p_r*sin(c1);
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[2];
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = -p_g;
+}
+
 }  // namespace eomgen::models::bead_on_rotating_hoop_hamilton

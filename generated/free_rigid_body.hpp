@@ -633,4 +633,86 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 1;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"body"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{2}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_alpha = x[0];
+  const T q_beta = x[1];
+  const T q_gamma = x[2];
+  const T trig_angle[3] = {q_alpha, q_beta, q_gamma};
+  T trig_sin[3], trig_cos[3];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_alpha = trig_sin[0];
+  const T cos_q_alpha = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
+  const T sin_q_gamma = trig_sin[2];
+  const T cos_q_gamma = trig_cos[2];
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  const T c0 = cos_q_gamma;
+  const T c1 = cos_q_beta;
+  out[3] = c0*c1;
+  const T c2 = sin_q_gamma;
+  out[4] = -c1*c2;
+  const T c3 = sin_q_beta;
+  out[5] = c3;
+  const T c4 = sin_q_alpha;
+  out[8] = -c1*c4;
+  const T c5 = cos_q_alpha;
+  out[6] = c0*c3*c4 + c2*c5;
+  out[7] = c0*c5 - c2*c3*c4;
+  out[9] = -c0*c3*c5 + c2*c4;
+  out[10] = c0*c4 + c2*c3*c5;
+  out[11] = c1*c5;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_A = p[0];
+  const T p_B = p[1];
+  const T p_C = p[2];
+  out[0] = sqrt(-T(6)*p_A + T(6)*p_B + T(6)*p_C);
+  out[1] = sqrt(T(6)*p_A - T(6)*p_B + T(6)*p_C);
+  out[2] = sqrt(T(6)*p_A + T(6)*p_B - T(6)*p_C);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = T(0);
+}
+
 }  // namespace eomgen::models::free_rigid_body

@@ -321,4 +321,68 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 1;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"disk"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_xi = x[0];
+  const T q_eta = x[1];
+  const T p_Omega = p[3];
+  out[2] = T(0);
+  out[3] = T(1);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(1);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  const T c0 = p_Omega*t;
+  const T c1 = cos(c0);
+  const T c2 = sin(c0);
+  out[0] = c1*q_xi - c2*q_eta;
+  out[1] = c1*q_eta + c2*q_xi;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = T(0);
+}
+
 }  // namespace eomgen::models::jeffcott_rotor

@@ -1437,4 +1437,196 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 7;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"link1", "link2", "link3", "upper_arm", "forearm", "wrist", "tool"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 0, 0, 2, 2, 2, 3}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, 0, 1, 0, 1, 2, 2}};
+inline constexpr std::size_t num_drawn_shapes = 3;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{3, 4, 5}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1, 1, 1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_q1 = x[0];
+  const T q_q2 = x[1];
+  const T q_q3 = x[2];
+  const T trig_angle[3] = {q_q1, q_q2, q_q3};
+  T trig_sin[3], trig_cos[3];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_q1 = trig_sin[0];
+  const T cos_q_q1 = trig_cos[0];
+  const T sin_q_q2 = trig_sin[1];
+  const T cos_q_q2 = trig_cos[1];
+  const T sin_q_q3 = trig_sin[2];
+  const T cos_q_q3 = trig_cos[2];
+  const T c0 = cos_q_q1;
+  const T c1 = sin_q_q1;
+  const T k_link1_Rxx = c0;
+  const T k_link1_Rxy = -c1;
+  const T k_link1_Ryx = c1;
+  const T k_link1_Ryy = c0;
+  const T k_link2_Rzx = -sin_q_q2;
+  const T k_link2_Rzy = -cos_q_q2;
+  const T c2 = cos_q_q2;
+  const T c3 = sin_q_q2;
+  const T k_link2_Rxx = c2*k_link1_Rxx;
+  const T k_link2_Rxy = -c3*k_link1_Rxx;
+  const T k_link2_Ryx = c2*k_link1_Ryx;
+  const T k_link2_Ryy = -c3*k_link1_Ryx;
+  const T k_link3_Rzx = cos_q_q3*k_link2_Rzx;
+  const T k_link3_Rzy = -k_link2_Rzx*sin_q_q3;
+  const T k_link3_Rzz = -k_link2_Rzy;
+  const T k_link3_oz = -detail::constant<T>(0.316, -2.310862446895044e-17, 1.1103737383464024e-33)*k_link2_Rzy + detail::constant<T>(0.333, 1.7923423961474326e-18, 1.0373249859531103e-34);
+  const T c4 = sin_q_q3;
+  const T c5 = cos_q_q3;
+  const T k_link3_Rxx = c4*k_link1_Rxy + c5*k_link2_Rxx;
+  const T k_link3_Rxy = -c4*k_link2_Rxx + c5*k_link1_Rxy;
+  const T k_link3_Rxz = -k_link2_Rxy;
+  const T k_link3_ox = -detail::constant<T>(0.316, -2.310862446895044e-17, 1.1103737383464024e-33)*k_link2_Rxy;
+  const T k_link3_Ryx = c4*k_link1_Ryy + c5*k_link2_Ryx;
+  const T k_link3_Ryy = -c4*k_link2_Ryx + c5*k_link1_Ryy;
+  const T k_link3_Ryz = -k_link2_Ryy;
+  const T k_link3_oy = -detail::constant<T>(0.316, -2.310862446895044e-17, 1.1103737383464024e-33)*k_link2_Ryy;
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = detail::constant<T>(0.333, 1.7923423961474326e-18, 1.0373249859531103e-34);
+  out[5] = T(0);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  out[12] = T(0);
+  out[13] = T(0);
+  out[14] = detail::constant<T>(0.333, 1.7923423961474326e-18, 1.0373249859531103e-34);
+  out[23] = T(0);
+  out[38] = detail::constant<T>(0.23149106452846602, 1.2664027462305967e-17, 8.517514949138234e-35);
+  out[41] = T(0);
+  out[44] = T(0);
+  out[45] = T(0);
+  out[46] = T(0);
+  out[47] = T(1);
+  out[59] = T(0);
+  out[3] = k_link1_Rxx;
+  out[39] = k_link1_Rxx;
+  out[4] = k_link1_Rxy;
+  out[17] = k_link1_Rxy;
+  out[36] = -detail::constant<T>(0.00192012965686, -1.0586908242894424e-19, -2.9522875505788435e-36)*k_link1_Rxy + detail::constant<T>(0.003912249807868221, -3.9261932099948355e-19, 1.2541391144744843e-35)*k_link1_Rxx;
+  out[40] = k_link1_Rxy;
+  out[53] = k_link1_Rxy;
+  out[6] = k_link1_Ryx;
+  out[42] = k_link1_Ryx;
+  out[7] = k_link1_Ryy;
+  out[20] = k_link1_Ryy;
+  out[37] = -detail::constant<T>(0.00192012965686, -1.0586908242894424e-19, -2.9522875505788435e-36)*k_link1_Ryy + detail::constant<T>(0.003912249807868221, -3.9261932099948355e-19, 1.2541391144744843e-35)*k_link1_Ryx;
+  out[43] = k_link1_Ryy;
+  out[56] = k_link1_Ryy;
+  out[21] = k_link2_Rzx;
+  out[57] = k_link2_Rzx;
+  out[22] = k_link2_Rzy;
+  out[50] = -detail::constant<T>(0.00309141, -6.473267194783148e-20, -5.145295887091989e-37)*k_link2_Rzx - detail::constant<T>(0.02871, 1.5906386491005834e-18, -7.998570093081557e-35)*k_link2_Rzy + detail::constant<T>(0.333, 1.7923423961474326e-18, 1.0373249859531103e-34);
+  out[58] = k_link2_Rzy;
+  out[15] = k_link2_Rxx;
+  out[51] = k_link2_Rxx;
+  out[16] = k_link2_Rxy;
+  out[48] = -detail::constant<T>(0.00309141, -6.473267194783148e-20, -5.145295887091989e-37)*k_link2_Rxx + detail::constant<T>(0.0034931, -5.093035448358023e-20, 7.956980979168852e-37)*k_link1_Rxy - detail::constant<T>(0.02871, 1.5906386491005834e-18, -7.998570093081557e-35)*k_link2_Rxy;
+  out[52] = k_link2_Rxy;
+  out[18] = k_link2_Ryx;
+  out[54] = k_link2_Ryx;
+  out[19] = k_link2_Ryy;
+  out[49] = -detail::constant<T>(0.00309141, -6.473267194783148e-20, -5.145295887091989e-37)*k_link2_Ryx + detail::constant<T>(0.0034931, -5.093035448358023e-20, 7.956980979168852e-37)*k_link1_Ryy - detail::constant<T>(0.02871, 1.5906386491005834e-18, -7.998570093081557e-35)*k_link2_Ryy;
+  out[55] = k_link2_Ryy;
+  out[33] = k_link3_Rzx;
+  out[69] = k_link3_Rzx;
+  out[81] = k_link3_Rzx;
+  out[34] = k_link3_Rzy;
+  out[70] = k_link3_Rzy;
+  out[82] = k_link3_Rzy;
+  out[35] = k_link3_Rzz;
+  out[71] = k_link3_Rzz;
+  out[83] = k_link3_Rzz;
+  out[26] = k_link3_oz;
+  out[62] = detail::constant<T>(0.027518, 1.2068566712077882e-18, -2.7196250751619583e-35)*k_link3_Rzx + detail::constant<T>(0.039252, -1.667112548584555e-19, -6.692030191695315e-36)*k_link3_Rzy - detail::constant<T>(0.06650199999999999, 5.324896327849274e-18, -1.1825111441140928e-35)*k_link3_Rzz + k_link3_oz;
+  out[74] = -(T(107)/T(1000))*k_link3_Rzz + detail::constant<T>(0.08800000000000001, 2.292381054612633e-19, 2.01788283331216e-35)*k_link3_Rzx + k_link3_oz;
+  out[27] = k_link3_Rxx;
+  out[63] = k_link3_Rxx;
+  out[75] = k_link3_Rxx;
+  out[28] = k_link3_Rxy;
+  out[64] = k_link3_Rxy;
+  out[76] = k_link3_Rxy;
+  out[29] = k_link3_Rxz;
+  out[65] = k_link3_Rxz;
+  out[77] = k_link3_Rxz;
+  out[24] = k_link3_ox;
+  out[60] = detail::constant<T>(0.027518, 1.2068566712077882e-18, -2.7196250751619583e-35)*k_link3_Rxx + detail::constant<T>(0.039252, -1.667112548584555e-19, -6.692030191695315e-36)*k_link3_Rxy - detail::constant<T>(0.06650199999999999, 5.324896327849274e-18, -1.1825111441140928e-35)*k_link3_Rxz + k_link3_ox;
+  out[72] = -(T(107)/T(1000))*k_link3_Rxz + detail::constant<T>(0.08800000000000001, 2.292381054612633e-19, 2.01788283331216e-35)*k_link3_Rxx + k_link3_ox;
+  out[30] = k_link3_Ryx;
+  out[66] = k_link3_Ryx;
+  out[78] = k_link3_Ryx;
+  out[31] = k_link3_Ryy;
+  out[67] = k_link3_Ryy;
+  out[79] = k_link3_Ryy;
+  out[32] = k_link3_Ryz;
+  out[68] = k_link3_Ryz;
+  out[80] = k_link3_Ryz;
+  out[25] = k_link3_oy;
+  out[61] = detail::constant<T>(0.027518, 1.2068566712077882e-18, -2.7196250751619583e-35)*k_link3_Ryx + detail::constant<T>(0.039252, -1.667112548584555e-19, -6.692030191695315e-36)*k_link3_Ryy - detail::constant<T>(0.06650199999999999, 5.324896327849274e-18, -1.1825111441140928e-35)*k_link3_Ryz + k_link3_oy;
+  out[73] = -(T(107)/T(1000))*k_link3_Ryz + detail::constant<T>(0.08800000000000001, 2.292381054612633e-19, 2.01788283331216e-35)*k_link3_Ryx + k_link3_oy;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  out[0] = sqrt(detail::constant<T>(0.014915828279506266, -5.442724024269314e-19, 4.6390196248516285e-35));
+  out[1] = sqrt(detail::constant<T>(0.007094020181891124, 3.659992118253921e-19, 2.1823665819772953e-35));
+  out[2] = sqrt(detail::constant<T>(1.6909500692725974, -1.0849474821788372e-16, 4.648971758774251e-33));
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  out[9] = sqrt(detail::constant<T>(0.42795923760544324, 1.389350881402335e-17, 8.882432734879213e-34));
+  out[10] = sqrt(detail::constant<T>(0.054228764030597294, -1.769190612687281e-18, 1.7609165612733698e-34));
+  out[11] = sqrt(detail::constant<T>(0.09346044794905183, 5.5398455949683965e-18, -4.090302191608605e-35));
+  out[12] = T(0);
+  out[13] = T(0);
+  out[14] = T(0);
+  out[15] = T(0);
+  out[16] = T(0);
+  out[17] = T(1);
+  out[18] = sqrt(T(97430000000000)/T(5381007206666667));
+  out[19] = sqrt(detail::constant<T>(0.022146411521686362, -2.1113930517310093e-19, 7.42286912652811e-36));
+  out[20] = sqrt(detail::constant<T>(0.11627377105625161, -4.489102032560729e-18, 3.5400515855805596e-34));
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(0);
+  out[24] = T(0);
+  out[25] = T(0);
+  out[26] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[0];
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = -p_g;
+}
+
 }  // namespace eomgen::models::measured_arm

@@ -830,4 +830,152 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 4;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"bob1", "bob2", "bob3", "bob4"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1, 1, 1, 1}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, 0, 1, 2}};
+inline constexpr std::size_t num_drawn_shapes = 4;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0, 1, 2, 3}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0, 0, 0, 0}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi1 = x[0];
+  const T q_phi2 = x[1];
+  const T q_phi3 = x[2];
+  const T q_phi4 = x[3];
+  const T p_l1 = p[4];
+  const T p_l2 = p[5];
+  const T p_l3 = p[6];
+  const T p_l4 = p[7];
+  const T trig_angle[4] = {q_phi1, q_phi2, q_phi3, q_phi4};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi1 = trig_sin[0];
+  const T cos_q_phi1 = trig_cos[0];
+  const T sin_q_phi2 = trig_sin[1];
+  const T cos_q_phi2 = trig_cos[1];
+  const T sin_q_phi3 = trig_sin[2];
+  const T cos_q_phi3 = trig_cos[2];
+  const T sin_q_phi4 = trig_sin[3];
+  const T cos_q_phi4 = trig_cos[3];
+  out[2] = T(0);
+  out[3] = T(1);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(1);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  out[14] = T(0);
+  out[15] = T(1);
+  out[16] = T(0);
+  out[17] = T(0);
+  out[18] = T(0);
+  out[19] = T(1);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(1);
+  out[26] = T(0);
+  out[27] = T(1);
+  out[28] = T(0);
+  out[29] = T(0);
+  out[30] = T(0);
+  out[31] = T(1);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
+  out[38] = T(0);
+  out[39] = T(1);
+  out[40] = T(0);
+  out[41] = T(0);
+  out[42] = T(0);
+  out[43] = T(1);
+  out[44] = T(0);
+  out[45] = T(0);
+  out[46] = T(0);
+  out[47] = T(1);
+  const T c0 = p_l1*sin_q_phi1;
+  out[0] = c0;
+  const T c1 = cos_q_phi1;
+  out[1] = -c1*p_l1;
+  const T c2 = p_l2*sin_q_phi2;
+  out[12] = c0 + c2;
+  const T c3 = c1*p_l1;
+  const T c4 = cos_q_phi2*p_l2;
+  out[13] = -c3 - c4;
+  const T c5 = p_l3*sin_q_phi3;
+  out[24] = c0 + c2 + c5;
+  out[36] = c0 + c2 + c5 + p_l4*sin_q_phi4;
+  const T c6 = cos_q_phi3*p_l3;
+  out[25] = -c3 - c4 - c6;
+  out[37] = -c3 - c4 - c6 - cos_q_phi4*p_l4;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(0);
+  out[12] = T(0);
+  out[13] = T(0);
+  out[14] = T(0);
+  out[15] = T(0);
+  out[16] = T(0);
+  out[17] = T(1);
+  out[18] = T(0);
+  out[19] = T(0);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(0);
+  out[24] = T(0);
+  out[25] = T(0);
+  out[26] = T(1);
+  out[27] = T(0);
+  out[28] = T(0);
+  out[29] = T(0);
+  out[30] = T(0);
+  out[31] = T(0);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[8];
+  g[0] = T(0);
+  g[1] = -p_g;
+  g[2] = T(0);
+}
+
 }  // namespace eomgen::models::n_link_pendulum_4

@@ -646,4 +646,115 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 3;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"heading", "lean", "disk"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 0, 2}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, 0, 1}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{2}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_x = x[0];
+  const T q_y = x[1];
+  const T q_psi = x[2];
+  const T q_theta = x[3];
+  const T q_phi = x[4];
+  const T p_R = p[1];
+  const T trig_angle[3] = {q_psi, q_theta, q_phi};
+  T trig_sin[3], trig_cos[3];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_psi = trig_sin[0];
+  const T cos_q_psi = trig_cos[0];
+  const T sin_q_theta = trig_sin[1];
+  const T cos_q_theta = trig_cos[1];
+  const T sin_q_phi = trig_sin[2];
+  const T cos_q_phi = trig_cos[2];
+  out[0] = q_x;
+  out[1] = q_y;
+  out[2] = T(0);
+  out[5] = T(0);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  out[12] = q_x;
+  out[13] = q_y;
+  out[14] = T(0);
+  out[21] = T(0);
+  const T c0 = cos_q_psi;
+  out[3] = c0;
+  out[7] = c0;
+  out[15] = c0;
+  const T c1 = sin_q_psi;
+  out[4] = -c1;
+  out[6] = c1;
+  out[18] = c1;
+  const T c2 = cos_q_theta;
+  out[16] = -c1*c2;
+  out[19] = c0*c2;
+  out[23] = c2;
+  out[24] = -c1*c2*p_R + q_x;
+  out[25] = c0*c2*p_R + q_y;
+  out[35] = c2;
+  const T c3 = sin_q_theta;
+  out[22] = c3;
+  out[26] = c3*p_R;
+  const T c4 = c1*c3;
+  out[17] = c4;
+  out[29] = c4;
+  const T c5 = -c0*c3;
+  out[20] = c5;
+  out[32] = c5;
+  const T c6 = cos_q_phi;
+  out[34] = c3*c6;
+  const T c7 = sin_q_phi;
+  out[27] = c0*c6 - c1*c2*c7;
+  out[28] = -c0*c7 - c1*c2*c6;
+  out[30] = c0*c2*c7 + c1*c6;
+  out[31] = c0*c2*c6 - c1*c7;
+  out[33] = c3*c7;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_R = p[1];
+  out[2] = T(0);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  const T c0 = sqrt(T(3))*sqrt(p_R*p_R);
+  out[0] = c0;
+  out[1] = c0;
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[2];
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = -p_g;
+}
+
 }  // namespace eomgen::models::rolling_disk

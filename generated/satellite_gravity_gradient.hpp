@@ -737,4 +737,94 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 1;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"satellite"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{2}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi = x[0];
+  const T q_theta = x[1];
+  const T q_psi = x[2];
+  const T p_Omega = p[4];
+  const T trig_angle[3] = {q_phi, q_theta, q_psi};
+  T trig_sin[3], trig_cos[3];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_theta = trig_sin[1];
+  const T cos_q_theta = trig_cos[1];
+  const T sin_q_psi = trig_sin[2];
+  const T cos_q_psi = trig_cos[2];
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  const T c0 = -p_Omega*t;
+  const T c1 = sin(c0);
+  const T c2 = sin_q_phi;
+  const T c3 = sin_q_psi;
+  const T c4 = cos_q_theta;
+  out[8] = -c2*c4;
+  const T c5 = cos(c0);
+  const T c6 = sin_q_theta;
+  const T c7 = cos_q_phi;
+  out[5] = c1*c4*c7 + c5*c6;
+  out[11] = -c1*c6 + c4*c5*c7;
+  const T c8 = -c1*c6*c7 + c4*c5;
+  const T c9 = cos_q_psi;
+  out[3] = c1*c2*c3 + c8*c9;
+  out[4] = c1*c2*c9 - c3*c8;
+  out[6] = c2*c6*c9 + c3*c7;
+  out[7] = -c2*c3*c6 + c7*c9;
+  const T c10 = c1*c4 + c5*c6*c7;
+  out[9] = -c10*c9 + c2*c3*c5;
+  out[10] = c10*c3 + c2*c5*c9;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_m = p[0];
+  const T p_A = p[1];
+  const T p_B = p[2];
+  const T p_C = p[3];
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  const T c0 = sqrt(T(6));
+  out[0] = c0*sqrt(-(p_A - p_B - p_C)/p_m);
+  out[1] = c0*sqrt((p_A - p_B + p_C)/p_m);
+  out[2] = c0*sqrt((p_A + p_B - p_C)/p_m);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = T(0);
+}
+
 }  // namespace eomgen::models::satellite_gravity_gradient

@@ -730,4 +730,126 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
   detail::constrained_sensitivities(t, x, u, p, alpha, beta, J, static_cast<T*>(nullptr));
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 3;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"slider", "crank", "rod"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1, 2, 2}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, -1, -1}};
+inline constexpr std::size_t num_drawn_shapes = 3;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0, 1, 2}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0, 1, 1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_phi = x[0];
+  const T q_beta = x[1];
+  const T q_x = x[2];
+  const T p_r = p[0];
+  const T p_l = p[1];
+  const T trig_angle[2] = {q_phi, q_beta};
+  T trig_sin[2], trig_cos[2];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_phi = trig_sin[0];
+  const T cos_q_phi = trig_cos[0];
+  const T sin_q_beta = trig_sin[1];
+  const T cos_q_beta = trig_cos[1];
+  out[0] = q_x;
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(1);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(1);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  out[14] = T(0);
+  out[17] = T(0);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(1);
+  out[26] = T(0);
+  out[29] = T(0);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
+  const T c0 = cos_q_phi;
+  out[12] = (T(1)/T(2))*c0*p_r;
+  out[15] = c0;
+  out[19] = c0;
+  const T c1 = sin_q_phi;
+  out[13] = (T(1)/T(2))*c1*p_r;
+  out[16] = -c1;
+  out[18] = c1;
+  const T c2 = cos_q_beta;
+  out[24] = (T(1)/T(2))*c2*p_l + c0*p_r;
+  out[27] = c2;
+  out[31] = c2;
+  const T c3 = sin_q_beta;
+  out[25] = (T(1)/T(2))*c3*p_l + c1*p_r;
+  out[28] = -c3;
+  out[30] = c3;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_r = p[0];
+  const T p_l = p[1];
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  out[9] = sqrt(p_r*p_r);
+  out[10] = T(0);
+  out[11] = T(0);
+  out[12] = T(0);
+  out[13] = T(0);
+  out[14] = T(0);
+  out[15] = T(0);
+  out[16] = T(0);
+  out[17] = T(1);
+  out[18] = sqrt(p_l*p_l);
+  out[19] = T(0);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(0);
+  out[24] = T(0);
+  out[25] = T(0);
+  out[26] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[5];
+  g[0] = T(0);
+  g[1] = -p_g;
+  g[2] = T(0);
+}
+
 }  // namespace eomgen::models::slider_crank

@@ -1607,4 +1607,171 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 5;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"upper", "lower", "rod1", "rod2", "tip"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 0, 2, 2, 3}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, 0, 0, 1, 1}};
+inline constexpr std::size_t num_drawn_shapes = 2;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{2, 3}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1, 1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_a1 = x[0];
+  const T q_b1 = x[1];
+  const T q_a2 = x[2];
+  const T q_b2 = x[3];
+  const T p_l = p[1];
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
+  const T c0 = cos_q_a1;
+  const T c1 = cos_q_b1;
+  const T c2 = sin_q_a1;
+  const T c3 = sin_q_b1;
+  const T k_upper_Rxx = c0;
+  const T k_upper_Rxy = -c1*c2;
+  const T k_upper_Rxz = c2*c3;
+  const T k_upper_Ryx = c2;
+  const T k_upper_Ryy = c0*c1;
+  const T k_upper_Ryz = -c0*c3;
+  const T k_upper_Rzy = c3;
+  const T k_upper_Rzz = c1;
+  const T c4 = cos_q_a2;
+  const T c5 = sin_q_a2;
+  const T c6 = cos_q_b2;
+  const T c7 = sin_q_b2;
+  const T k_lower_Rxx = c4*k_upper_Rxx + c5*k_upper_Rxy;
+  const T k_lower_Rxy = c4*c6*k_upper_Rxy - c5*c6*k_upper_Rxx + c7*k_upper_Rxz;
+  const T k_lower_Rxz = -c4*c7*k_upper_Rxy + c5*c7*k_upper_Rxx + c6*k_upper_Rxz;
+  const T k_lower_ox = -k_upper_Rxz*p_l;
+  const T k_lower_Ryx = c4*k_upper_Ryx + c5*k_upper_Ryy;
+  const T k_lower_Ryy = c4*c6*k_upper_Ryy - c5*c6*k_upper_Ryx + c7*k_upper_Ryz;
+  const T k_lower_Ryz = -c4*c7*k_upper_Ryy + c5*c7*k_upper_Ryx + c6*k_upper_Ryz;
+  const T k_lower_oy = -k_upper_Ryz*p_l;
+  const T k_lower_Rzx = c5*k_upper_Rzy;
+  const T k_lower_Rzy = c4*c6*k_upper_Rzy + c7*k_upper_Rzz;
+  const T k_lower_Rzz = -c4*c7*k_upper_Rzy + c6*k_upper_Rzz;
+  const T k_lower_oz = -k_upper_Rzz*p_l;
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  out[9] = T(0);
+  out[33] = T(0);
+  out[3] = k_upper_Rxx;
+  out[27] = k_upper_Rxx;
+  out[4] = k_upper_Rxy;
+  out[28] = k_upper_Rxy;
+  out[5] = k_upper_Rxz;
+  out[24] = -(T(1)/T(2))*k_upper_Rxz*p_l;
+  out[29] = k_upper_Rxz;
+  out[6] = k_upper_Ryx;
+  out[30] = k_upper_Ryx;
+  out[7] = k_upper_Ryy;
+  out[31] = k_upper_Ryy;
+  out[8] = k_upper_Ryz;
+  out[25] = -(T(1)/T(2))*k_upper_Ryz*p_l;
+  out[32] = k_upper_Ryz;
+  out[10] = k_upper_Rzy;
+  out[34] = k_upper_Rzy;
+  out[11] = k_upper_Rzz;
+  out[26] = -(T(1)/T(2))*k_upper_Rzz*p_l;
+  out[35] = k_upper_Rzz;
+  out[15] = k_lower_Rxx;
+  out[39] = k_lower_Rxx;
+  out[51] = k_lower_Rxx;
+  out[16] = k_lower_Rxy;
+  out[40] = k_lower_Rxy;
+  out[52] = k_lower_Rxy;
+  out[17] = k_lower_Rxz;
+  out[41] = k_lower_Rxz;
+  out[53] = k_lower_Rxz;
+  out[12] = k_lower_ox;
+  out[36] = -(T(1)/T(2))*k_lower_Rxz*p_l + k_lower_ox;
+  out[48] = -k_lower_Rxz*p_l + k_lower_ox;
+  out[18] = k_lower_Ryx;
+  out[42] = k_lower_Ryx;
+  out[54] = k_lower_Ryx;
+  out[19] = k_lower_Ryy;
+  out[43] = k_lower_Ryy;
+  out[55] = k_lower_Ryy;
+  out[20] = k_lower_Ryz;
+  out[44] = k_lower_Ryz;
+  out[56] = k_lower_Ryz;
+  out[13] = k_lower_oy;
+  out[37] = -(T(1)/T(2))*k_lower_Ryz*p_l + k_lower_oy;
+  out[49] = -k_lower_Ryz*p_l + k_lower_oy;
+  out[21] = k_lower_Rzx;
+  out[45] = k_lower_Rzx;
+  out[57] = k_lower_Rzx;
+  out[22] = k_lower_Rzy;
+  out[46] = k_lower_Rzy;
+  out[58] = k_lower_Rzy;
+  out[23] = k_lower_Rzz;
+  out[47] = k_lower_Rzz;
+  out[59] = k_lower_Rzz;
+  out[14] = k_lower_oz;
+  out[38] = -(T(1)/T(2))*k_lower_Rzz*p_l + k_lower_oz;
+  out[50] = -k_lower_Rzz*p_l + k_lower_oz;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_l = p[1];
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  out[12] = T(0);
+  out[13] = T(0);
+  out[14] = T(0);
+  out[15] = T(0);
+  out[16] = T(0);
+  out[17] = T(1);
+  const T c0 = sqrt(p_l*p_l);
+  const T c1 = (T(1)/T(10))*c0*sqrt(T(3));
+  out[0] = c1;
+  out[1] = c1;
+  out[9] = c1;
+  out[10] = c1;
+  const T c2 = (T(1)/T(10))*c0*sqrt(T(97));
+  out[2] = c2;
+  out[11] = c2;
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[2];
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = -p_g;
+}
+
 }  // namespace eomgen::models::spatial_double_pendulum

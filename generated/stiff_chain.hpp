@@ -400,4 +400,104 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 3;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"mass1", "mass2", "mass3"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1, 1, 1}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, -1, -1}};
+inline constexpr std::size_t num_drawn_shapes = 3;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{0, 1, 2}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0, 0, 0}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  const T q_x1 = x[0];
+  const T q_x2 = x[1];
+  const T q_x3 = x[2];
+  out[0] = q_x1;
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(1);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(1);
+  out[8] = T(0);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(1);
+  out[12] = q_x2;
+  out[13] = T(0);
+  out[14] = T(0);
+  out[15] = T(1);
+  out[16] = T(0);
+  out[17] = T(0);
+  out[18] = T(0);
+  out[19] = T(1);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(1);
+  out[24] = q_x3;
+  out[25] = T(0);
+  out[26] = T(0);
+  out[27] = T(1);
+  out[28] = T(0);
+  out[29] = T(0);
+  out[30] = T(0);
+  out[31] = T(1);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  out[0] = T(0);
+  out[1] = T(0);
+  out[2] = T(0);
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  out[9] = T(0);
+  out[10] = T(0);
+  out[11] = T(0);
+  out[12] = T(0);
+  out[13] = T(0);
+  out[14] = T(0);
+  out[15] = T(0);
+  out[16] = T(0);
+  out[17] = T(1);
+  out[18] = T(0);
+  out[19] = T(0);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(0);
+  out[24] = T(0);
+  out[25] = T(0);
+  out[26] = T(1);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = T(0);
+}
+
 }  // namespace eomgen::models::stiff_chain

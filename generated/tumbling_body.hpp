@@ -1331,4 +1331,103 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
   (void)t; (void)x; (void)u; (void)p; (void)lambda;
 }
 
+/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
+/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
+/// 2 capsule, 3 cylinder).
+inline constexpr std::size_t num_drawn_bodies = 2;
+inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"body", "box"}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 2}};
+inline constexpr std::array<int, num_drawn_bodies> drawn_body_parents{{-1, 0}};
+inline constexpr std::size_t num_drawn_shapes = 1;
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_bodies{{1}};
+inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
+
+/// Each drawn body's position (inertial) and rotation R (its axes to inertial ones, row by row).
+/// x: num_states; p: num_parameters; out: 12 per drawn body.
+template <class T>
+void body_poses(T t, const T* x, const T* p, T* out) {
+  (void)t; (void)x; (void)p; (void)out;
+  const T q_x = x[0];
+  const T q_y = x[1];
+  const T q_z = x[2];
+  const T q_qw = x[3];
+  const T q_qx = x[4];
+  const T q_qy = x[5];
+  const T q_qz = x[6];
+  const T c0 = q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c1 = -q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c2 = -q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c3 = T(2)*q_qw*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c4 = T(2)*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c5 = -q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T c6 = T(2)*q_qy*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_body_Rxx = c0 + c1 + c2 + q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_body_Rxy = T(2)*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - c3;
+  const T k_body_Rxz = T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c4;
+  const T k_body_Ryx = T(2)*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c3;
+  const T k_body_Ryy = -c0 - c1 - c5 - q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  const T k_body_Ryz = -T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c6;
+  const T k_body_Rzx = T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - c4;
+  const T k_body_Rzy = T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c6;
+  const T k_body_Rzz = -c0 - c2 - c5 - q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
+  out[0] = q_x;
+  out[1] = q_y;
+  out[2] = q_z;
+  out[12] = q_x;
+  out[13] = q_y;
+  out[14] = q_z;
+  out[3] = k_body_Rxx;
+  out[15] = k_body_Rxx;
+  out[4] = k_body_Rxy;
+  out[16] = k_body_Rxy;
+  out[5] = k_body_Rxz;
+  out[17] = k_body_Rxz;
+  out[6] = k_body_Ryx;
+  out[18] = k_body_Ryx;
+  out[7] = k_body_Ryy;
+  out[19] = k_body_Ryy;
+  out[8] = k_body_Ryz;
+  out[20] = k_body_Ryz;
+  out[9] = k_body_Rzx;
+  out[21] = k_body_Rzx;
+  out[10] = k_body_Rzy;
+  out[22] = k_body_Rzy;
+  out[11] = k_body_Rzz;
+  out[23] = k_body_Rzz;
+}
+
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
+/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+template <class T>
+void drawn_shapes(const T* p, T* out) {
+  (void)p; (void)out;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T p_A = p[0];
+  const T p_B = p[1];
+  const T p_C = p[2];
+  const T p_m = p[3];
+  out[3] = T(0);
+  out[4] = T(0);
+  out[5] = T(0);
+  out[6] = T(0);
+  out[7] = T(0);
+  out[8] = T(1);
+  const T c0 = sqrt(T(6));
+  out[0] = c0*sqrt(-(p_A - p_B - p_C)/p_m);
+  out[1] = c0*sqrt((p_A - p_B + p_C)/p_m);
+  out[2] = c0*sqrt((p_A + p_B - p_C)/p_m);
+}
+
+/// The acceleration of gravity, inertial components. p: num_parameters; g: 3.
+template <class T>
+void gravity(const T* p, T* g) {
+  (void)p;
+  const T p_g = p[4];
+  g[0] = T(0);
+  g[1] = T(0);
+  g[2] = -p_g;
+}
+
 }  // namespace eomgen::models::tumbling_body

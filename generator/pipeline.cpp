@@ -10,6 +10,7 @@
 #include "derive/methods.hpp"
 #include "derive/routh.hpp"
 #include "derive/vanishing_coordinates.hpp"
+#include "kinematics/drawn_bodies.hpp"
 #include "kinematics/mechanics.hpp"
 #include "model/variants.hpp"
 #include "parse/model_file.hpp"
@@ -138,6 +139,8 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     derivation_stage("the first integrals");
     e.first_integrals = find_first_integrals(e, mechanics);
     for (const BodyKinematics& b : mechanics.bodies) e.body_positions.push_back({b.name, b.position});
+    e.drawing = drawn_bodies(model);
+    e.gravity = model.gravity;
     e.scenes = model.scenes;
     e.variants_declared = model.variants;
     derivation_stage("the oriented trigonometric terms");

@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define EOMGEN_MODEL_ABI_VERSION 5
+#define EOMGEN_MODEL_ABI_VERSION 6
 
 #ifdef __cplusplus
 extern "C" {
@@ -19,6 +19,7 @@ typedef double (*eomgen_energy_function)(double t, const double* x, const double
 typedef void (*eomgen_stabilized_function)(double t, const double* x, const double* u, const double* p, double alpha,
                                            double beta, double* out);
 typedef void (*eomgen_residual_function)(double t, const double* x, const double* p, double* position, double* velocity);
+typedef void (*eomgen_parameter_function)(const double* p, double* out);
 typedef void (*eomgen_linearization_function)(double t, const double* x, const double* u, const double* p, double* P,
                                               double* Q, double* B);
 
@@ -61,6 +62,17 @@ struct eomgen_model_abi {
   /* ball and free joints: the coordinates w, x, y, z of each quaternion, 4 per quaternion */
   size_t num_quaternions;
   const size_t* quaternion_coordinates;
+  /* what `eomgen animate` draws: bodies (12 numbers of body_poses each: position, R row by row),
+     their kinds and parents (-1: the ground), shapes on them (9 numbers each), and gravity (3) */
+  size_t num_drawn_bodies;
+  const char* const* drawn_body_names;
+  const int* drawn_body_kinds;
+  const int* drawn_body_parents;
+  size_t num_drawn_shapes;
+  const int* drawn_shape_bodies;
+  const int* drawn_shape_types;
+  eomgen_configuration_function body_poses;
+  eomgen_parameter_function drawn_shapes, gravity;
 };
 
 #ifdef __cplusplus
@@ -83,7 +95,10 @@ struct eomgen_model_abi {
       m::constraint_residuals<double>, m::multipliers<double>, m::rhs_stabilized<double>,              \
       m::jacobian_state_stabilized<double>, m::num_first_integrals, m::first_integral_names.data(),      \
       m::first_integrals<double>, m::separable_hamiltonian ? 1 : 0, m::num_quaternions,                \
-      m::quaternion_coordinates.data()};                                                               \
+      m::quaternion_coordinates.data(), m::num_drawn_bodies, m::drawn_body_names.data(),               \
+      m::drawn_body_kinds.data(), m::drawn_body_parents.data(), m::num_drawn_shapes,                   \
+      m::drawn_shape_bodies.data(), m::drawn_shape_types.data(), m::body_poses<double>,                \
+      m::drawn_shapes<double>, m::gravity<double>};                                                    \
   return &abi;
 
 /* Defines `eomgen_model()`, the entry point of a compiled model's shared object. */

@@ -13,6 +13,7 @@
 
 #include "analyse/equilibrium.hpp"
 #include "common/diagnostic.hpp"
+#include "report/animation.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::cli {
@@ -50,6 +51,7 @@ Command add_scene_command(CLI::App& app);
 Command add_fmu_command(CLI::App& app);
 Command add_ensemble_command(CLI::App& app);
 Command add_import_command(CLI::App& app);
+Command add_animate_command(CLI::App& app);
 
 struct LoadedProblem;
 /// Why stability and sweep cannot analyse this model (Lagrange I always; symbolic
@@ -86,10 +88,22 @@ struct SimulationOptions {
   std::string scene, variant;          // --scene NAME, --variant NAME
   bool t_end_given = false, dt_out_given = false;  // a scene's times give way to --t-end, --dt-out
   double max_rows = 1e6;  // output rows a run may keep in memory (--max-rows)
+  std::string animation;           // --animate FILE.html (animate: -o)
+  std::vector<std::string> trace;  // --trace NAME: bodies whose paths the animation draws
+  bool axes = false;               // --axes
+  bool animate_only = false;
+  bool animation_if_drawn = false;  // `eomgen run`: no page (and no error) for a model that draws nothing       // `eomgen animate`: the page is the result (named after the model by default)
 };
 
 /// Derives, generates, compiles (cached) and simulates; writes the CSV and charts asked for.
 int simulate_model(const SimulationOptions& options);
+
+/// simulate's options (times, integrator, tolerances, --set, --initial, inputs, scene, CSV, charts).
+void add_simulation_options(CLI::App* cmd, SimulationOptions& o);
+/// simulate's and animate's --trace and --axes.
+void add_animation_options(CLI::App* cmd, SimulationOptions& o);
+/// Writes the animation page of a run to o.animation; the exit status when it cannot.
+std::optional<int> write_animation(const runtime::AnimationRecorder& recorder, const SimulationOptions& o);
 
 std::string json_escape(const std::string& s);
 

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
                                   add_sweep_command(app), add_bench_command(app), add_run_command(app),
                                   add_diff_command(app), add_check_integral_command(app), add_linear_command(app),
                                   add_scene_command(app), add_fmu_command(app), add_ensemble_command(app),
-                                  add_import_command(app)};
+                                  add_import_command(app), add_animate_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -24,7 +24,7 @@ Command add_run_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "run",
       "The main job on a model (default: the double pendulum): derive and print its equations, generate its header, "
-      "compile it, simulate it, check the stability of its equilibrium, draw its charts and the work-precision chart");
+      "compile it, simulate it, animate it, check the stability of its equilibrium, draw its charts and the work-precision chart");
   auto model = std::make_shared<std::string>();
   auto directory = std::make_shared<std::string>("eomgen-run");
   cmd->add_option("MODEL", *model, "Model file (TOML); default models/double_pendulum.toml");
@@ -44,6 +44,8 @@ Command add_run_command(CLI::App& app) {
     o.header_dir = *directory;
     o.csv = *directory + "/" + stem + ".csv";
     o.plot = *directory + "/" + stem + ".png";
+    o.animation = *directory + "/" + stem + ".html";
+    o.animation_if_drawn = true;
     o.settings.integrator = "auto";
     o.settings.rtol = 1e-10;
     o.settings.atol = 1e-12;
@@ -53,7 +55,7 @@ Command add_run_command(CLI::App& app) {
       std::cerr << "eomgen run: (no stability report for this model)\n";
     std::cerr << "eomgen run: work against precision of every integrator\n";
     int status = bench_model(path, *directory + "/bench");
-    std::cerr << "eomgen run: header, trajectory, charts and the work-precision report are in " << *directory << "/\n";
+    std::cerr << "eomgen run: header, trajectory, animation, charts and the work-precision report are in " << *directory << "/\n";
     return status;
   };
 }

@@ -61,13 +61,15 @@ std::string json_escape(const std::string& s) {
 
 int simulate_model(const SimulationOptions& options) {
   SimulationOptions o = options;
-  // the file before the run that fills it
-  if (std::string refusal = o.csv.empty() ? "" : output_file_refusal(o.csv); !refusal.empty()) {
-    std::cerr << "eomgen: error: -o: " << refusal << "\n";
-    return exit_user_error;
-  }
+  // the files before the run that fills them
+  for (const std::string* file : {&o.csv, &o.animation})
+    if (std::string refusal = file->empty() ? "" : output_file_refusal(*file); !refusal.empty()) {
+      std::cerr << "eomgen: error: " << (file == &o.csv || o.animate_only ? "-o" : "--animate") << ": " << refusal << "\n";
+      return exit_user_error;
+    }
   LoadedProblem loaded;
   if (auto status = load_problem(o.model, o.sets, loaded, {}, {o.scene, o.variant, {}})) return *status;
+  if (o.animate_only && o.animation.empty()) o.animation = loaded.equations.model_name + ".html";
   if (!o.scene.empty()) apply_scene_times(loaded.equations, o);
   if (!o.header_dir.empty()) {
     if (std::string failure = make_output_directory(o.header_dir); !failure.empty()) {
@@ -118,7 +120,12 @@ int simulate_model(const SimulationOptions& options) {
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
   runtime::SimulationResult result;
   TrajectoryOutput output(m, o.csv);
-  settings.stream = [&output](const runtime::Trajectory& rows) { return output.take(rows); };
+  std::optional<runtime::AnimationRecorder> animation;
+  if (!o.animation.empty() && (m.num_drawn_bodies > 0 || !o.animation_if_drawn)) animation.emplace(m, problem.parameters);
+  settings.stream = [&output, &animation](const runtime::Trajectory& rows) {
+    if (animation) animation->take(rows);
+    return output.take(rows);
+  };
   // Ctrl-C or a TERM ends the run at the next output time; what was computed is written
   try {
     StopOnSignal stop;
@@ -144,6 +151,8 @@ int simulate_model(const SimulationOptions& options) {
     std::cerr << "eomgen: " << output.failure() << "\n";
     return exit_user_error;
   }
+  if (animation)
+    if (auto status = write_animation(*animation, o)) return *status;
   if (!o.plot.empty()) draw_all_charts(o, m, output.chart_rows(), conservative);
   print_summary(settings, m, result, conservative, unforced, o.json, loaded.compiled->reference_scalar);
   if (result.failed) {
@@ -203,6 +212,8 @@ Command add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulationOptions>();
   cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
   add_simulation_options(cmd, *o);
+  cmd->add_option("--animate", o->animation, "Also write the motion as a 3-D animation, one HTML file (see `eomgen animate`)");
+  add_animation_options(cmd, *o);
   auto format = std::make_shared<std::string>("text");
   cmd->add_option("--format", *format, "Summary format: text or json")->check(CLI::IsMember({"text", "json"}));
   return [cmd, o, format]() -> int {

@@ -137,6 +137,10 @@ struct Equations {
     Vector3 position;
   };
   std::vector<BodyPosition> body_positions;  // filled by the pipeline
+  /// What `eomgen animate` draws (Model::drawing), with a tree of particles' rods from each
+  /// particle to the one it hangs from; filled by the pipeline, empty for linearized equations.
+  std::vector<DrawnBody> drawing;
+  Vector3 gravity{0, 0, 0};  // the model's [gravity], for the drawing
   std::vector<Scene> scenes;                 // the model file's [scenes], for simulate --scene and eomgen scene
   std::vector<Variant> variants_declared;    // its [variants], the candidates of eomgen scene
   /// Routh's reduction: R(q, q', t; p) and each eliminated coordinate with its rate der(q_c)(q, q', p)

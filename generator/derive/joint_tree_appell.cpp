@@ -101,6 +101,10 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
   for (const Intermediate& i : e.acceleration_intermediates) used.push_back(i.definition);
   for (const BodyKinematics& b : mech.bodies) used.insert(used.end(), b.position.begin(), b.position.end());
   for (const NamedSymbolic& o : e.outputs) used.push_back(o.expression);
+  for (const DrawnBody& b : model.drawing) {  // the header's body_poses
+    used.insert(used.end(), b.position.begin(), b.position.end());
+    for (unsigned i = 0; i < 9; ++i) used.push_back(b.rotation.op(i));
+  }
   used.insert(used.end(), {e.kinetic_energy, e.potential_energy, e.dissipation});
   e.intermediates = needed(mech.intermediates, used);
   return e;

@@ -53,6 +53,7 @@ Equations linearized_model(const Equations& e, const std::vector<double>& q0, st
   for (NamedSymbolic& o : out.outputs) o.expression = first_order(o.expression, s, point);
   out.first_integrals.clear();
   out.has_linearization = false;
+  out.drawing.clear();  // a linearized rotation is no rotation: nothing to animate
   for (Equations::BodyPosition& b : out.body_positions)
     for (ex& x : b.position) x = first_order(x, s, point);
   return out;

@@ -88,6 +88,7 @@ Equations modal_model(const Equations& linear, const ModalTruncation& mt) {
   for (std::size_t i = 0; i < n; ++i) out.outputs.push_back({s.coordinate_names[i], q[i]});
   for (std::size_t i = 0; i < n; ++i) out.outputs.push_back({s.velocities[i].get_name(), v[i]});
   for (const NamedSymbolic& o : linear.outputs) out.outputs.push_back({o.name, modal(o.expression)});
+  out.drawing.clear();  // a linearized rotation is no rotation: nothing to animate
   for (Equations::BodyPosition& b : out.body_positions)
     for (ex& x : b.position) x = modal(x);
   out.first_integrals.clear();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "kinematics/drawn_bodies.hpp"
+
 namespace eomgen {
 
 using GiNaC::ex;
@@ -46,6 +48,13 @@ void remove_coordinate(Equations& e, std::size_t j) {
   e.body_positions.erase(std::remove_if(e.body_positions.begin(), e.body_positions.end(),
                                         [&](const Equations::BodyPosition& b) { return gone(b.position[0]) || gone(b.position[1]) || gone(b.position[2]); }),
                          e.body_positions.end());
+  remove_drawn_bodies(e.drawing, [&](const DrawnBody& d) {
+    for (const GiNaC::ex& x : d.position)
+      if (gone(x)) return true;
+    for (unsigned i = 0; i < 9; ++i)
+      if (gone(d.rotation.op(i))) return true;
+    return false;
+  });
   e.first_integrals.erase(std::remove_if(e.first_integrals.begin(), e.first_integrals.end(),
                                          [&](const FirstIntegral& f) { return gone(f.expression); }),
                           e.first_integrals.end());

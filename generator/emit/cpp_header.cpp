@@ -10,6 +10,7 @@
 #include "emit/cpp_body_writer.hpp"
 #include "emit/cpp_constant.hpp"
 #include "emit/cpp_constraints.hpp"
+#include "emit/cpp_drawing.hpp"
 #include "emit/cpp_expression.hpp"
 #include "emit/cpp_ldlt.hpp"
 #include "emit/cpp_momentum.hpp"
@@ -336,7 +337,7 @@ std::string all_functions(const Equations& e) {
                                "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
   functions += outputs_function(e);
   functions += first_integrals_function(e);
-  return functions + constraint_functions(e);
+  return functions + constraint_functions(e) + drawing_functions(e);
 }
 
 std::string source_name(const std::string& path) {

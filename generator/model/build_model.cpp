@@ -40,6 +40,7 @@ Model ModelBuilder::build() {
   read_frames();
   read_points();
   read_bodies();
+  read_drawing();
   read_energies_and_forces();
   read_constraints();
   read_outputs();

@@ -134,6 +134,30 @@ struct Variant {
   std::vector<std::pair<std::size_t, GiNaC::ex>> replace;  // parameter = expression
 };
 
+/// A shape the animation draws (ShapeEntry), in its body's axes. Sizes: sphere [radius, 0, 0], box
+/// [x, y, z] side lengths, capsule and cylinder [radius, length, 0] along `axis`. A zero size means
+/// "the viewer chooses" (a particle's sphere).
+struct Shape {
+  enum class Type { sphere, box, capsule, cylinder };
+  Type type = Type::sphere;
+  Vector3 size{0, 0, 0};
+  Vector3 offset{0, 0, 0};
+  Vector3 axis{0, 0, 1};
+};
+
+/// What `eomgen animate` draws of a frame, particle, rigid body or point (model/drawing.hpp): where
+/// it is and how it is turned (its axes to inertial ones), in the model's symbols, its parent in
+/// the drawing (what a rod joins it to) and its shapes.
+struct DrawnBody {
+  enum class Kind { frame, particle, rigid_body, point };
+  std::string name;
+  Kind kind = Kind::frame;
+  Vector3 position{0, 0, 0};
+  GiNaC::matrix rotation{3, 3};
+  int parent = -1;  // index into Model::drawing; -1: the ground
+  std::vector<Shape> shapes;
+};
+
 struct Model {
   std::string name, title, method;
   std::string source;  // the model file's path as given
@@ -154,6 +178,7 @@ struct Model {
   std::string forward_dynamics = "auto";    // "auto", "mass_matrix" or "articulated" (model_file.hpp)
   std::vector<FrameLink> frame_links;        // recursive kinematics: the frames, parents first
   std::vector<Intermediate> intermediates;   // the frames' rotations and origins, in order
+  std::vector<DrawnBody> drawing;            // frames, particles, rigid bodies and points, in that order
 };
 
 /// The derivation methods a model file may name, in the order documented.

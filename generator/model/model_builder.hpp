@@ -85,6 +85,12 @@ class ModelBuilder {
   // inequality, equal for a flat body). Checked with the default parameters.
   void check_realizable(const GiNaC::matrix& I, const RigidBodyEntry& b);
 
+  // What the animation draws (build_drawing.cpp): frames, particles, rigid bodies, points
+  void read_drawing();
+  std::vector<Shape> shapes(const std::vector<ShapeEntry>& entries);
+  // a rigid body without a shape: the box of its mass and inertia
+  Shape inertia_box(const RigidBody& body);
+
   // Energies, forces and constraints (build_forces.cpp)
   std::optional<std::size_t> coordinate_index(const NamedExpression& g, const std::string& key);
   void read_energies_and_forces();

@@ -67,6 +67,10 @@ void substitute_everywhere(Model& m, const GiNaC::exmap& s) {
       else if (f.joint) apply(f.joint->axis, s), apply(f.joint->anchor, s), apply(f.joint->placement, s), apply(f.joint->placement_origin, s);
     }
     for (Intermediate& i : m.intermediates) apply(i.definition, s);
+    for (DrawnBody& d : m.drawing) {
+      apply(d.position, s), apply(d.rotation, s);
+      for (Shape& shape : d.shapes) apply(shape.size, s), apply(shape.offset, s), apply(shape.axis, s);
+    }
   } catch (const std::exception& why) {
     throw std::invalid_argument(fmt::format("an expression breaks: {}", why.what()));
   }

@@ -39,12 +39,23 @@ struct CoordinateEntry {
   std::string key;
 };
 
+/// `shape`: what `eomgen animate` draws for a body or frame, in its own axes (parse/parse_shapes.hpp).
+/// sphere: size = [radius]; box: size = [x, y, z] side lengths; capsule and cylinder: size =
+/// [radius, length] along `axis` (z unless given). Centred at `offset`. Constant expressions.
+struct ShapeEntry {
+  std::string type;
+  std::vector<ExpressionText> size, offset, axis;
+  SourceLocation where;
+  std::string key;
+};
+
 struct ParticleEntry {
   std::string name;
   ExpressionText mass;
   std::vector<ExpressionText> position;  // three components, in `frame` (inertial when empty)
   std::string frame;
   SourceLocation frame_where;
+  std::vector<ShapeEntry> shapes;
   SourceLocation where;
   std::string key;
 };
@@ -67,6 +78,7 @@ struct RigidBodyEntry {
   std::vector<ExpressionText> principal_inertia;    // three moments, or empty
   std::vector<std::vector<ExpressionText>> inertia; // 3×3 body-frame tensor, or empty
   std::optional<ExpressionText> inertia_name;       // when the tensor is a matrix definition
+  std::vector<ShapeEntry> shapes;
   SourceLocation where;
   std::string key;
 };
@@ -100,6 +112,7 @@ struct FrameEntry {
   std::optional<RotationEntry> rotation;  // identity when absent
   std::vector<ExpressionText> origin;     // empty: the parent's origin
   std::optional<JointEntry> joint;
+  std::vector<ShapeEntry> shapes;
   SourceLocation where;
   std::string key;
 };

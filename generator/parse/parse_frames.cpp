@@ -1,5 +1,7 @@
 #include "parse/parse_frames.hpp"
 
+#include "parse/parse_shapes.hpp"
+
 #include <fmt/format.h>
 
 namespace eomgen {
@@ -138,7 +140,7 @@ void read_frames(Reader& r, const toml::node& node, ModelFile& m) {
     std::string key = fmt::format("frames[{}]", i);
     const toml::table* t = r.table((*a)[i], key, "name, parent, rotation, origin, joint");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "parent", "rotation", "origin", "joint"});
+    r.check_keys(*t, key, {"name", "parent", "rotation", "origin", "joint", "shape"});
     FrameEntry f;
     f.key = key;
     f.where = r.at((*a)[i]);
@@ -152,6 +154,7 @@ void read_frames(Reader& r, const toml::node& node, ModelFile& m) {
     if (const toml::node* n = t->get("rotation")) f.rotation = read_rotation(r, *n, key + ".rotation");
     if (const toml::node* n = t->get("origin")) r.vector(*n, key + ".origin", 3, f.origin);
     if (const toml::node* n = t->get("joint")) f.joint = read_joint(r, *n, key + ".joint");
+    read_shapes(r, *t, key, f.shapes);
     m.frames.push_back(f);
   }
 }

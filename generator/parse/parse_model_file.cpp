@@ -9,6 +9,7 @@
 #include "import/model_writer.hpp"
 #include "parse/parse_frames.hpp"
 #include "parse/parse_scenes.hpp"
+#include "parse/parse_shapes.hpp"
 #include "parse/toml_reader.hpp"
 #include "parse/utf8.hpp"
 
@@ -100,12 +101,13 @@ void read_particles(Reader& r, const toml::node& node, ModelFile& m) {
     std::string key = fmt::format("particles[{}]", i);
     const toml::table* t = r.table((*a)[i], key, "name, mass, position, frame");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "mass", "position", "frame"});
+    r.check_keys(*t, key, {"name", "mass", "position", "frame", "shape"});
     ParticleEntry p;
     p.key = key;
     p.where = r.at((*a)[i]);
     p.name = read_name(r, *t, (*a)[i], key);
     read_frame_name(r, *t, key, p.frame, p.frame_where);
+    read_shapes(r, *t, key, p.shapes);
     if (const toml::node* n = t->get("mass")) r.expression(*n, key + ".mass", p.mass);
     else r.error(p.where, key, "missing key 'mass'", "add mass = \"m\" (a parameter or an expression)");
     if (const toml::node* n = t->get("position")) r.vector(*n, key + ".position", 3, p.position);
@@ -137,12 +139,13 @@ void read_rigid_bodies(Reader& r, const toml::node& node, ModelFile& m) {
     std::string key = fmt::format("rigid_bodies[{}]", i);
     const toml::table* t = r.table((*a)[i], key, "name, mass, center, rotation, inertia, frame");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "mass", "center", "rotation", "inertia", "frame"});
+    r.check_keys(*t, key, {"name", "mass", "center", "rotation", "inertia", "frame", "shape"});
     RigidBodyEntry b;
     b.key = key;
     b.where = r.at((*a)[i]);
     b.name = read_name(r, *t, (*a)[i], key);
     read_frame_name(r, *t, key, b.frame, b.frame_where);
+    read_shapes(r, *t, key, b.shapes);
     if (const toml::node* n = t->get("mass")) r.expression(*n, key + ".mass", b.mass);
     else r.error(b.where, key, "missing key 'mass'", "add mass = \"m\"");
     if (const toml::node* n = t->get("center")) r.vector(*n, key + ".center", 3, b.center);

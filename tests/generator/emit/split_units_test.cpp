@@ -25,7 +25,8 @@ TEST(SplitUnits, FindsThePublicFunctionsInTheirOrderWithoutTheDetailOnes) {
   EXPECT_EQ(names, (std::vector<std::string>{"mass_matrix", "forcing", "rhs", "jacobian_state", "jacobian_input", "linearization",
                                              "kinetic_energy", "potential_energy", "outputs", "first_integrals",
                                              "constraint_jacobian", "constraint_residuals", "rhs_stabilized",
-                                             "jacobian_state_stabilized", "multipliers"}));
+                                             "jacobian_state_stabilized", "multipliers", "body_poses", "drawn_shapes",
+                                             "gravity"}));
   const std::string signature = "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)";
   EXPECT_EQ(found[2].signature, signature);
   std::size_t body = header.find(signature + " {\n") + signature.size() + 3;
