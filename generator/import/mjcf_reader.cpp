@@ -140,6 +140,14 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     body.principal_inertia = triple(m->body_inertia + 3 * b);
     r.bodies.push_back(body);
   }
+  // the geoms MuJoCo's viewer shows by default (groups 0 to 2), for the animation
+  static const char* const geom_types[] = {"plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh"};
+  for (int g = 0; g < m->ngeom; ++g) {
+    int b = m->geom_bodyid[g];
+    if (b == 0 || m->geom_group[g] > 2 || m->geom_type[g] < 0 || m->geom_type[g] > 7) continue;
+    r.bodies[std::size_t(b - 1)].geoms.push_back(
+        {geom_types[m->geom_type[g]], triple(m->geom_size + 3 * g), triple(m->geom_pos + 3 * g), quaternion(m->geom_quat + 4 * g)});
+  }
   for (int s = 0; s < m->nsite; ++s) {
     std::string name = name_of(m, m->name_siteadr, s);
     if (name.empty()) continue;

@@ -128,6 +128,46 @@ void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string&
     out.warnings.push_back(fmt::format("{}: the stiffness of a {} joint is not carried", where, j.type));
 }
 
+// v turned by the unit quaternion q (w, x, y, z): v + 2w (u × v) + 2 u × (u × v), u = (x, y, z)
+Triple turned(const Quaternion& q, const Triple& v) {
+  Triple u{q[1], q[2], q[3]};
+  auto cross = [](const Triple& a, const Triple& b) {
+    return Triple{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  Triple c = cross(u, v), d = cross(u, c);
+  return {v[0] + 2 * (q[0] * c[0] + d[0]), v[1] + 2 * (q[0] * c[1] + d[1]), v[2] + 2 * (q[0] * c[2] + d[2])};
+}
+
+// the body's geoms as its frame's shapes (MuJoCo's half sizes become radii, lengths and sides);
+// what a shape cannot be is said
+std::string shapes_text(const RobotBody& body, Sections& out) {
+  std::vector<std::string> shapes;
+  for (const RobotGeom& g : body.geoms) {
+    std::string offset = g.position == Triple{0, 0, 0} ? "" : ", offset = " + vector_text(g.position);
+    if (g.type == "sphere" || g.type == "ellipsoid") {
+      shapes.push_back(fmt::format("{{ type = \"sphere\", size = [\"{}\"]{} }}", number(std::max({g.size[0], g.type == "ellipsoid" ? g.size[1] : 0.0, g.type == "ellipsoid" ? g.size[2] : 0.0})), offset));
+      if (g.type == "ellipsoid") out.warnings.push_back(fmt::format("body '{}': an ellipsoid geom is drawn as a sphere", body.name));
+    } else if (g.type == "capsule" || g.type == "cylinder") {
+      Triple axis = turned(g.orientation, {0, 0, 1});
+      std::string along = axis == Triple{0, 0, 1} ? "" : ", axis = " + vector_text(axis);
+      shapes.push_back(fmt::format("{{ type = \"{}\", size = [\"{}\", \"{}\"]{}{} }}", g.type, number(g.size[0]), number(2 * g.size[1]),
+                                   offset, along));
+    } else if (g.type == "box") {
+      shapes.push_back(fmt::format("{{ type = \"box\", size = [\"{}\", \"{}\", \"{}\"]{} }}", number(2 * g.size[0]),
+                                   number(2 * g.size[1]), number(2 * g.size[2]), offset));
+      if (!is_identity(g.orientation))
+        out.warnings.push_back(fmt::format("body '{}': a turned box geom is drawn along the body's axes", body.name));
+    } else {
+      out.warnings.push_back(fmt::format("body '{}': a {} geom is not drawn by `eomgen animate`", body.name, g.type));
+    }
+  }
+  if (shapes.empty()) return "";
+  if (shapes.size() == 1) return "shape = " + shapes[0] + "\n";
+  std::string list;
+  for (const std::string& s : shapes) list += (list.empty() ? "" : ",\n         ") + s;
+  return "shape = [" + list + "]\n";
+}
+
 // one frame per joint of the body (a body without joints: one fixed frame), its rigid body in the last
 void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::string>& frame_of, Sections& out,
               std::vector<std::vector<JointSymbols>>& joint_symbols) {
@@ -154,6 +194,7 @@ void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::
       add_coordinates(j, s, out);
       add_energies(j, s, fmt::format("body '{}', joint '{}'", body.name, base), out);
     }
+    if (last) out.frames += shapes_text(body, out);
     parent = name;
   }
   if (body.mass <= 0) return;

@@ -25,6 +25,14 @@ struct RobotJoint {
   std::array<double, 2> range{0, 0};
 };
 
+/// A geom that draws the body (MJCF geom: type, half sizes as MuJoCo keeps them, placement in the body).
+struct RobotGeom {
+  std::string type;  // sphere, capsule, cylinder, box, ellipsoid, mesh, …
+  Triple size{0, 0, 0};
+  Triple position{0, 0, 0};
+  Quaternion orientation{1, 0, 0, 0};
+};
+
 struct RobotBody {
   std::string name;
   int parent = -1;  // index into Robot::bodies; −1: the world
@@ -35,6 +43,7 @@ struct RobotBody {
   Triple center{0, 0, 0};              // centre of mass in the body's frame
   Quaternion inertia_axes{1, 0, 0, 0};  // principal axes of inertia in the body's frame
   Triple principal_inertia{0, 0, 0};
+  std::vector<RobotGeom> geoms;  // what `eomgen animate` draws of it
 };
 
 struct RobotActuator {

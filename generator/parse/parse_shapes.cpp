@@ -28,7 +28,13 @@ void read_shape(Reader& r, const toml::node& node, const std::string& key, std::
     return;
   }
   if (const toml::node* n = t->get("size")) {
-    if (!r.vector(*n, key + ".size", shape_size_count(s.type), s.size)) return;
+    std::size_t count = shape_size_count(s.type);
+    if (const toml::array* a = n->as_array(); a && a->size() != count) {
+      r.error(r.at(*n), key + ".size", fmt::format("a {} takes {} size{}, got {}", s.type, count, count == 1 ? "" : "s", a->size()),
+              size_hint);
+      return;
+    }
+    if (!r.vector(*n, key + ".size", count, s.size)) return;
   } else {
     r.error(s.where, key, fmt::format("missing key 'size' of the {}", s.type), size_hint);
     return;

@@ -162,6 +162,30 @@ TEST(MjcfReader, ReadsWhatMujocoCompiled) {
   EXPECT_NE(text->find("name = \"nameless\""), std::string::npos) << *text;
 }
 
+// MuJoCo keeps half sizes and turns a fromto capsule onto its segment: the shapes are full lengths
+// along the segment, at its middle
+TEST(ModelWriter, GeomsBecomeTheBodysShapes) {
+  std::string path = temporary_directory() + "/shapes.xml";
+  std::ofstream(path) << R"xml(<mujoco>
+  <worldbody>
+    <body name="link">
+      <joint name="a" type="hinge" axis="0 1 0"/>
+      <geom type="capsule" fromto="0 0 0 0.4 0 0" size="0.02" mass="1"/>
+      <geom type="box" size="0.1 0.2 0.3" pos="0 0 0.5" mass="1"/>
+      <geom type="sphere" size="0.05" group="3" mass="1"/>
+    </body>
+  </worldbody>
+</mujoco>)xml";
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("shape = [{ type = \"capsule\", size = [\"0.02\", \"0.4\"], offset = [\"0.2\", \"0\", \"0\"], axis = "),
+            std::string::npos) << *text;
+  EXPECT_NE(text->find("{ type = \"box\", size = [\"0.2\", \"0.4\", \"0.6\"], offset = [\"0\", \"0\", \"0.5\"] }]"),
+            std::string::npos) << *text;
+  EXPECT_EQ(text->find("\"sphere\""), std::string::npos) << "a group-3 geom is hidden, as in MuJoCo's viewer";
+}
+
 TEST(ModelWriter, MujocosMessagesBecomeALineAndAMessage) {
   UnreadableRobot a = unreadable_robot("XML Error: problem reading attribute 'pos'\nElement 'body', line 5\n");
   EXPECT_EQ(a.line, 5);
