@@ -29,6 +29,7 @@ TEST(Readme, WhatTheModelsUseIsNotStillToCome) {
       {"rolling contact", "rolling", {"rolling"}},
       {"recursive kinematics", "kinematics = \"recursive\"", {"recursive", "O(n)"}},
       {"joints about any axis", "joint    = { type = \"revolute\"", {"any axis"}},
+      {"shapes to animate", "shape    =", {"animation"}},
   };
   std::string later = still_to_come();
   for (const auto& [feature, marker, words] : features) {
