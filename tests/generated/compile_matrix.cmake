@@ -24,6 +24,11 @@ template void m::jacobian_input<double>(double, const double*, const double*, co
 template double m::kinetic_energy<double>(double, const double*, const double*);
 template double m::potential_energy<double>(double, const double*, const double*);
 template void m::outputs<double>(double, const double*, const double*, const double*, double*);
+template void m::linearization<double>(double, const double*, const double*, const double*, double*, double*, double*);
+template void m::first_integrals<double>(double, const double*, const double*, double*);
+template void m::body_poses<double>(double, const double*, const double*, double*);
+template void m::drawn_shapes<double>(const double*, double*);
+template void m::gravity<double>(const double*, double*);
 template struct m::Parameters<double>;
 ")
   foreach(compiler IN LISTS COMPILERS)
