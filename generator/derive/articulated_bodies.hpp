@@ -12,7 +12,7 @@ namespace eomgen {
 
 /// From this many coordinates on, forward_dynamics = "auto" solves a particle tree by the
 /// recursion: tests/benchmarks/rhs_benchmark.cpp times both forms of the planar chain in one
-/// process (README, "Against SymPy, MuJoCo and hand-written code"). On 2026-11-25 (an Intel Xeon,
+/// process (tests/benchmarks/README.md, "Against SymPy, MuJoCo and hand-written code"). On 2026-11-25 (an Intel Xeon,
 /// sin and cos from the C library) the unrolled LDLᵀ of M took 157 ns against the recursion's 163
 /// at n = 8 and 196 against 186 at n = 9; on 2026-11-26 (an AMD EPYC, sin and cos by
 /// detail::sin_cos) 155 against 142 at n = 7, 196 against 160 at n = 8, 257 against 190 at n = 9.

@@ -15,7 +15,7 @@ using EquationFormat = std::string (*)(const Equations&);
 std::string emit_canonical_text(const Equations& equations);
 /// The equations typeset, Greek names as Greek letters.
 std::string emit_latex(const Equations& equations);
-/// The stable JSON interface documented in the README.
+/// The stable JSON interface documented in generator/README.md ("Output formats").
 std::string emit_json(const Equations& equations);
 
 const std::vector<std::string>& equation_format_names();

@@ -1,5 +1,5 @@
 cmake_minimum_required(VERSION 3.25)
-# CI's share of the sanitizer and fuzz builds (README, "Two builds look for what tests cannot
+# CI's share of the sanitizer and fuzz builds (tests/README.md, "Two builds look for what tests cannot
 # see"): the generator built by clang with AddressSanitizer and UndefinedBehaviorSanitizer, its
 # unit tests run under them, then the libFuzzer target for FUZZ_SECONDS from the seed corpus
 # (models/ and tests/errors/). A sanitizer report, a failed test, a crash or a slow input fails.
