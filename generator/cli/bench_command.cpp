@@ -9,7 +9,7 @@
 
 #include "analyse/work_precision.hpp"
 #include "cli/commands.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"
 #include "report/work_precision_report.hpp"

@@ -105,8 +105,6 @@ void add_animation_options(CLI::App* cmd, SimulationOptions& o);
 /// Writes the animation page of a run to o.animation; the exit status when it cannot.
 std::optional<int> write_animation(const runtime::AnimationRecorder& recorder, const SimulationOptions& o);
 
-std::string json_escape(const std::string& s);
-
 /// Prints a derivation's diagnostics and the closing "nothing written" line; true when there were any.
 bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model_path);
 

@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "compare/diff_report.hpp"
 
 namespace eomgen::cli {

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 
 namespace eomgen::cli {
 
@@ -66,20 +67,20 @@ void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::s
                                  const distribute::Ranks& ranks) {
   std::string crossings, intervals;
   for (const runtime::AxisCrossing& c : s.crossings)
-    crossings += fmt::format("{}{{\"{}\": {}, \"eigenvalue\": {{\"re\": 0, \"im\": {}}}, \"kind\": \"{}\", \"direction\": \"{}\"}}",
-                             crossings.empty() ? "" : ", ", json_escape(parameter), number(c.parameter), number(c.eigenvalue.imag()),
+    crossings += fmt::format("{}{{{}: {}, \"eigenvalue\": {{\"re\": 0, \"im\": {}}}, \"kind\": \"{}\", \"direction\": \"{}\"}}",
+                             crossings.empty() ? "" : ", ", json_quoted(parameter), json_number(c.parameter), json_number(c.eigenvalue.imag()),
                              c.oscillatory ? "oscillatory" : "real", c.destabilizing ? "destabilizing" : "stabilizing");
   std::string marginal;
   for (const runtime::StableInterval& i : s.stable)
     intervals += fmt::format("{}{{\"low\": {}, \"high\": {}, \"open_low\": {}, \"open_high\": {}}}", intervals.empty() ? "" : ", ",
-                             number(i.low), number(i.high), i.open_low ? "true" : "false", i.open_high ? "true" : "false");
+                             json_number(i.low), json_number(i.high), i.open_low ? "true" : "false", i.open_high ? "true" : "false");
   for (const runtime::StableInterval& i : s.marginal)
-    marginal += fmt::format("{}{{\"low\": {}, \"high\": {}}}", marginal.empty() ? "" : ", ", number(i.low), number(i.high));
-  std::cout << fmt::format("{{\"model\": \"{}\", \"parameter\": \"{}\", \"from\": {}, \"to\": {}, \"points\": {}, "
+    marginal += fmt::format("{}{{\"low\": {}, \"high\": {}}}", marginal.empty() ? "" : ", ", json_number(i.low), json_number(i.high));
+  std::cout << fmt::format("{{\"model\": {}, \"parameter\": {}, \"from\": {}, \"to\": {}, \"points\": {}, "
                            "\"crossings\": [{}], \"stable_intervals\": [{}], \"marginal_intervals\": [{}], \"seconds\": {}, "
                            "\"interrupted\": {}, \"ranks\": {}}}\n",
-                           json_escape(model), json_escape(parameter), number(s.axis.low), number(s.axis.high), s.axis.count,
-                           crossings, intervals, marginal, number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
+                           json_quoted(model), json_quoted(parameter), json_number(s.axis.low), json_number(s.axis.high), s.axis.count,
+                           crossings, intervals, marginal, json_number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
 }
 
 }  // namespace eomgen::cli

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "common/diagnostic.hpp"
 
 namespace eomgen::cli {

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 
 namespace eomgen::cli {
 
@@ -24,9 +25,9 @@ std::string quantiles_text(const runtime::SampleStatistics& s, const std::vector
 std::string statistics_json(const runtime::SampleStatistics& s, const std::vector<double>& probabilities) {
   std::string quantiles;
   for (std::size_t i = 0; i < probabilities.size(); ++i)
-    quantiles += fmt::format("{}{{\"p\": {}, \"value\": {}}}", i ? ", " : "", number(probabilities[i]), number(s.quantiles[i]));
+    quantiles += fmt::format("{}{{\"p\": {}, \"value\": {}}}", i ? ", " : "", json_number(probabilities[i]), json_number(s.quantiles[i]));
   return fmt::format("\"count\": {}, \"mean\": {}, \"standard_deviation\": {}, \"standard_error\": {}, \"quantiles\": [{}]",
-                     s.count, number(s.mean), number(s.standard_deviation), number(s.standard_error), quantiles);
+                     s.count, json_number(s.mean), json_number(s.standard_deviation), json_number(s.standard_error), quantiles);
 }
 
 }  // namespace
@@ -103,21 +104,21 @@ void print_ensemble_json(const distribute::EnsembleResult& r, const EnsembleDesc
   const runtime::EnsembleSetup& setup = *d.setup;
   std::string variations, measures, finals;
   for (std::size_t i = 0; i < setup.variations.size(); ++i)
-    variations += fmt::format("{}{{\"name\": \"{}\", \"distribution\": \"{}\"}}", i ? ", " : "",
-                              json_escape(setup.variations[i].name), setup.variations[i].distribution.text());
+    variations += fmt::format("{}{{\"name\": {}, \"distribution\": \"{}\"}}", i ? ", " : "",
+                              json_quoted(setup.variations[i].name), setup.variations[i].distribution.text());
   warn_left_out(r, setup);
   for (std::size_t i = 0; i < r.measures.size(); ++i)
-    measures += fmt::format("{}{{\"measure\": \"{}\", {}, \"left_out\": {}, \"biased\": {}}}", i ? ", " : "",
-                            json_escape(setup.measures[i].text()), statistics_json(r.measures[i], d.probabilities),
+    measures += fmt::format("{}{{\"measure\": {}, {}, \"left_out\": {}, \"biased\": {}}}", i ? ", " : "",
+                            json_quoted(setup.measures[i].text()), statistics_json(r.measures[i], d.probabilities),
                             left_out(r, i), bias_text(r, setup, i).empty() ? "false" : "true");
   for (std::size_t i = 0; i < r.bands.size(); ++i)
-    finals += fmt::format("{}{{\"signal\": \"{}\", {}}}", i ? ", " : "", json_escape(r.bands[i].signal),
+    finals += fmt::format("{}{{\"signal\": {}, {}}}", i ? ", " : "", json_quoted(r.bands[i].signal),
                           statistics_json(r.bands[i].at_time.back(), d.probabilities));
-  std::cout << fmt::format("{{\"model\": \"{}\", \"samples\": {}, \"failed\": {}, \"seed\": {}, \"integrator\": \"{}\", "
+  std::cout << fmt::format("{{\"model\": {}, \"samples\": {}, \"failed\": {}, \"seed\": {}, \"integrator\": \"{}\", "
                            "\"t_end\": {}, \"ranks\": {}, \"seconds\": {}, \"interrupted\": {}, \"variations\": [{}], "
                            "\"measures\": [{}], \"at_end\": [{}]}}\n",
-                           json_escape(d.model), r.samples, r.failed, setup.seed, d.integrator, number(setup.settings.t_end),
-                           d.rank_count, number(r.seconds), r.interrupted ? "true" : "false", variations, measures, finals);
+                           json_quoted(d.model), r.samples, r.failed, setup.seed, d.integrator, json_number(setup.settings.t_end),
+                           d.rank_count, json_number(r.seconds), r.interrupted ? "true" : "false", variations, measures, finals);
 }
 
 }  // namespace eomgen::cli

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 #include "symbolic/canonical_print.hpp"
 
 namespace eomgen::cli {
@@ -69,7 +70,7 @@ void print_closed_form_text(const LinearReport& r) {
 std::string closed_form_json(const LinearReport& r) {
   if (!r.closed_form) return "";
   const LinearClosedForm& c = *r.closed_form;
-  if (!c.refusal.empty()) return fmt::format(", \"symbolic\": {{\"refusal\": \"{}\"}}", json_escape(c.refusal));
+  if (!c.refusal.empty()) return fmt::format(", \"symbolic\": {{\"refusal\": {}}}", json_quoted(c.refusal));
   std::vector<std::string> rows, solution, transfers;
   const GiNaC::matrix& Phi = c.solution.fundamental;
   for (unsigned i = 0; i < Phi.rows(); ++i) {
@@ -79,12 +80,12 @@ std::string closed_form_json(const LinearReport& r) {
     solution.push_back(solution_row(r, i));
   }
   for (const auto& [pair, g] : transfer_texts(r))
-    transfers.push_back(fmt::format("{{\"input\": \"{}\", \"output\": \"{}\", \"G\": \"{}\"}}", json_escape(pair->input),
-                                    json_escape(pair->output), json_escape(g)));
+    transfers.push_back(fmt::format("{{\"input\": {}, \"output\": {}, \"G\": {}}}", json_quoted(pair->input),
+                                    json_quoted(pair->output), json_quoted(g)));
   return fmt::format(", \"symbolic\": {{\"in_parameters\": {}, \"parameter_refusal\": {}, \"assumptions\": {}, \"conditions\": {}, "
                      "\"time\": \"t\", \"fundamental_matrix\": [{}], \"solution\": {}, \"transfer_functions\": [{}]}}",
                      c.in_parameters() ? "true" : "false",
-                     c.parameter_refusal.empty() ? "null" : "\"" + json_escape(c.parameter_refusal) + "\"",
+                     c.parameter_refusal.empty() ? "null" : json_quoted(c.parameter_refusal),
                      json_strings(c.system.assumptions), json_strings(c.solution.conditions), joined(rows, ", "),
                      json_strings(solution), joined(transfers, ", "));
 }

@@ -12,7 +12,7 @@
 #include "cli/linear_charts.hpp"
 #include "cli/linear_report.hpp"
 #include "cli/linear_response_output.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 
 namespace eomgen::cli {
 

@@ -8,10 +8,11 @@
 
 #include "analyse/state_space.hpp"
 #include "cli/commands.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "cli/linear_closed_form_output.hpp"
 #include "cli/linear_report_sections.hpp"
 #include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 #include "symbolic/canonical_print.hpp"
 
 namespace eomgen::cli {
@@ -26,7 +27,7 @@ std::string blocks_text(const std::vector<int>& blocks) {
 
 std::string shape_json(const eomgen_model_abi& m, const Eigen::VectorXd& v) {
   std::string out;
-  for (Eigen::Index i = 0; i < v.size(); ++i) out += fmt::format("{}\"{}\": {}", i ? ", " : "", json_escape(m.coordinate_names[i]), number(v(i)));
+  for (Eigen::Index i = 0; i < v.size(); ++i) out += fmt::format("{}{}: {}", i ? ", " : "", json_quoted(m.coordinate_names[i]), json_number(v(i)));
   return "{" + out + "}";
 }
 
@@ -186,31 +187,31 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
 void print_linear_json(const eomgen_model_abi& m, const runtime::Equilibrium& eq, const LinearReport& r) {
   std::string equilibrium, eigenvalues, modes, fundamental;
   for (std::size_t i = 0; i < m.num_states; ++i)
-    equilibrium += fmt::format("{}\"{}\": {}", i ? ", " : "", json_escape(m.state_names[i]), number(eq.state[i]));
+    equilibrium += fmt::format("{}{}: {}", i ? ", " : "", json_quoted(m.state_names[i]), json_number(eq.state[i]));
   for (const runtime::EigenvalueStructure& e : r.structure.eigenvalues)
     eigenvalues += fmt::format("{}{{\"re\": {}, \"im\": {}, \"algebraic_multiplicity\": {}, \"geometric_multiplicity\": {}, "
-                               "\"jordan_blocks\": {}}}", eigenvalues.empty() ? "" : ", ", number(e.value.real()),
-                               number(e.value.imag()), e.algebraic_multiplicity, e.geometric_multiplicity,
+                               "\"jordan_blocks\": {}}}", eigenvalues.empty() ? "" : ", ", json_number(e.value.real()),
+                               json_number(e.value.imag()), e.algebraic_multiplicity, e.geometric_multiplicity,
                                blocks_text(e.jordan_blocks));
   for (const runtime::NaturalMode& mode : r.modes.modes)
     modes += fmt::format("{}{{\"frequency_rad_s\": {}, \"frequency_hz\": {}, \"period_s\": {}, \"damping_ratio\": {}, "
                          "\"rigid_body\": {}, \"shape\": {}, \"normalization\": \"mass\"}}", modes.empty() ? "" : ", ",
-                         number(mode.omega), number(mode.omega / (2 * M_PI)),
-                         mode.rigid_body ? "null" : number(2 * M_PI / mode.omega), number(mode.damping_ratio),
+                         json_number(mode.omega), json_number(mode.omega / (2 * M_PI)),
+                         mode.rigid_body ? "null" : json_number(2 * M_PI / mode.omega), json_number(mode.damping_ratio),
                          mode.rigid_body ? "true" : "false", shape_json(m, mode.shape));
   for (const auto& [t, Phi] : r.fundamental)
-    fundamental += fmt::format("{}{{\"t\": {}, \"matrix\": {}}}", fundamental.empty() ? "" : ", ", number(t), json_matrix(Phi));
+    fundamental += fmt::format("{}{{\"t\": {}, \"matrix\": {}}}", fundamental.empty() ? "" : ", ", json_number(t), json_matrix(Phi));
   std::cout << fmt::format(
-      "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"state\": {}, \"A\": {}, \"B\": {}, \"characteristic_polynomial\": {}, "
+      "{{\"model\": {}, \"equilibrium\": {{{}}}, \"state\": {}, \"A\": {}, \"B\": {}, \"characteristic_polynomial\": {}, "
       "\"eigenvalues\": [{}], \"jordan_decided\": \"{}\", \"rank_tolerance\": {}, \"structure_uncertain\": {}, \"modes\": [{}], \"rigid_body_modes\": {}, "
       "\"modal_refusal\": {}, \"damping\": {{\"kind\": \"{}\", \"rayleigh_alpha\": {}, \"rayleigh_beta\": {}, \"coupling\": {}}}, "
       "\"orthonormality_error\": {}, \"fundamental_matrix\": [{}]{}{}}}\n",
-      json_escape(m.name), equilibrium, json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B),
+      json_quoted(m.name), equilibrium, json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B),
       json_numbers(r.characteristic_polynomial), eigenvalues, r.decided_exactly ? "exact" : "numeric",
-      number(r.structure.rank_tolerance), r.structure.uncertain ? "true" : "false", modes, r.modes.rigid_body_modes,
-      r.modes.refusal.empty() ? "null" : "\"" + json_escape(r.modes.refusal) + "\"", r.modes.damping,
-      number(r.modes.rayleigh_alpha), number(r.modes.rayleigh_beta), number(r.modes.coupling),
-      number(r.modes.orthonormality_error), fundamental, reach_json(m, r), closed_form_json(r));
+      json_number(r.structure.rank_tolerance), r.structure.uncertain ? "true" : "false", modes, r.modes.rigid_body_modes,
+      r.modes.refusal.empty() ? "null" : json_quoted(r.modes.refusal), r.modes.damping,
+      json_number(r.modes.rayleigh_alpha), json_number(r.modes.rayleigh_beta), json_number(r.modes.coupling),
+      json_number(r.modes.orthonormality_error), fundamental, reach_json(m, r), closed_form_json(r));
 }
 
 }  // namespace eomgen::cli

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 
 namespace eomgen::cli {
 
@@ -43,7 +44,7 @@ std::string roots_text(const std::vector<std::complex<double>>& roots) {
 
 std::string roots_json(const std::vector<std::complex<double>>& roots) {
   std::string out;
-  for (const auto& z : roots) out += fmt::format("{}[{}, {}]", out.empty() ? "" : ", ", number(z.real()), number(z.imag()));
+  for (const auto& z : roots) out += fmt::format("{}[{}, {}]", out.empty() ? "" : ", ", json_number(z.real()), json_number(z.imag()));
   return "[" + out + "]";
 }
 
@@ -110,29 +111,29 @@ std::string reach_json(const eomgen_model_abi& m, const LinearReport& r) {
   std::string modes, transfer;
   for (const runtime::ModeReach& mode : r.reach.modes)
     modes += fmt::format("{}{{\"re\": {}, \"im\": {}, \"controllable\": {}, \"observable\": {}, \"unreachable_states\": {}, "
-                         "\"unseen_states\": {}}}", modes.empty() ? "" : ", ", number(mode.eigenvalue.real()),
-                         number(mode.eigenvalue.imag()), mode.controllable ? "true" : "false", mode.observable ? "true" : "false",
+                         "\"unseen_states\": {}}}", modes.empty() ? "" : ", ", json_number(mode.eigenvalue.real()),
+                         json_number(mode.eigenvalue.imag()), mode.controllable ? "true" : "false", mode.observable ? "true" : "false",
                          json_strings(states_named(m, mode.unreachable)), json_strings(states_named(m, mode.unseen)));
   for (const LinearReport::Pair& p : r.transfer) {
     std::complex<double> dc = p.g.dc_gain();
-    transfer += fmt::format("{}{{\"input\": \"{}\", \"output\": \"{}\", \"poles\": {}, \"zeros\": {}, \"gain\": {}, "
+    transfer += fmt::format("{}{{\"input\": {}, \"output\": {}, \"poles\": {}, \"zeros\": {}, \"gain\": {}, "
                             "\"dc_gain\": {}, \"cancelled_modes\": {}, \"constant\": {}}}", transfer.empty() ? "" : ", ",
-                            json_escape(p.input), json_escape(p.output), roots_json(p.g.poles), roots_json(p.g.zeros),
-                            number(p.g.gain), std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? number(dc.real()) : "null",
+                            json_quoted(p.input), json_quoted(p.output), roots_json(p.g.poles), roots_json(p.g.zeros),
+                            json_number(p.g.gain), std::abs(dc.imag()) < 1e-12 * std::abs(dc) ? json_number(dc.real()) : "null",
                             p.g.removed_modes, p.g.constant() ? "true" : "false");
   }
   std::string constrained;
   for (const runtime::ModalAnalysis::Constrained& c : r.modes.constrained) {
     std::vector<double> omegas = c.omegas;
-    constrained += fmt::format("{}{{\"fixed\": \"{}\", \"frequencies_rad_s\": {}, \"interlaces\": {}}}",
-                               constrained.empty() ? "" : ", ", json_escape(m.coordinate_names[c.fixed]), json_numbers(omegas),
+    constrained += fmt::format("{}{{\"fixed\": {}, \"frequencies_rad_s\": {}, \"interlaces\": {}}}",
+                               constrained.empty() ? "" : ", ", json_quoted(m.coordinate_names[c.fixed]), json_numbers(omegas),
                                c.interlaces ? "true" : "false");
   }
-  std::string bounds = fmt::format(", \"rayleigh_quotient_error\": {}, \"interlacing\": [{}]", number(r.modes.rayleigh_error),
+  std::string bounds = fmt::format(", \"rayleigh_quotient_error\": {}, \"interlacing\": [{}]", json_number(r.modes.rayleigh_error),
                                    constrained);
   const runtime::PrincipalCoordinates& p = r.principal;
   std::string principal = fmt::format(", \"principal_coordinates\": {{\"kind\": \"{}\", \"reason\": {}, \"matrix\": {}, \"equations\": {}}}",
-                                      p.kind, p.reason.empty() ? "null" : "\"" + json_escape(p.reason) + "\"",
+                                      p.kind, p.reason.empty() ? "null" : json_quoted(p.reason),
                                       p.kind == "modal" ? json_matrix(p.modal_matrix) : "null", json_strings(principal_equations(r)));
   return bounds + principal + fmt::format(", \"inputs\": {}, \"outputs\": {}, \"C\": {}, \"D\": {}, \"controllable\": {}, \"observable\": {}, "
                      "\"kalman_ranks\": {{\"controllability\": {}, \"observability\": {}}}, \"mode_reach\": [{}], "

@@ -12,7 +12,7 @@
 
 #include "analyse/linear_response.hpp"
 #include "cli/commands.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "common/output_file.hpp"
 #include "report/gnuplot.hpp"
 

@@ -9,13 +9,14 @@
 #include "analyse/floquet.hpp"
 #include "analyse/time_dependence.hpp"
 #include "cli/commands.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
+#include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 
 namespace eomgen::cli {
 
 namespace {
 
-std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v + 0.0) : "null"; }
 
 std::string multiplier_text(std::complex<double> z) {
   if (std::abs(z.imag()) <= 1e-12 * std::max(1.0, std::abs(z))) return fmt::format("{:.9g}", z.real() + 0.0);
@@ -52,23 +53,23 @@ void print_json(const eomgen_model_abi& m, const std::vector<double>& x, const T
                 const runtime::FloquetReport& r) {
   std::string equilibrium, multipliers, moduli, rows, names;
   for (std::size_t i = 0; i < m.num_states; ++i)
-    equilibrium += fmt::format("{}\"{}\": {}", i ? ", " : "", json_escape(m.state_names[i]), number(x[i]));
+    equilibrium += fmt::format("{}{}: {}", i ? ", " : "", json_quoted(m.state_names[i]), json_number(x[i]));
   for (auto mu : r.multipliers) {
-    multipliers += fmt::format("{}[{}, {}]", multipliers.empty() ? "" : ", ", number(mu.real()), number(mu.imag()));
-    moduli += (moduli.empty() ? "" : ", ") + number(std::abs(mu));
+    multipliers += fmt::format("{}[{}, {}]", multipliers.empty() ? "" : ", ", json_number(mu.real()), json_number(mu.imag()));
+    moduli += (moduli.empty() ? "" : ", ") + json_number(std::abs(mu));
   }
   for (Eigen::Index i = 0; i < r.monodromy.rows(); ++i) {
     std::string row;
-    for (Eigen::Index j = 0; j < r.monodromy.cols(); ++j) row += (j ? ", " : "") + number(r.monodromy(i, j));
+    for (Eigen::Index j = 0; j < r.monodromy.cols(); ++j) row += (j ? ", " : "") + json_number(r.monodromy(i, j));
     rows += (i ? ", [" : "[") + row + "]";
   }
-  for (const std::string& s : r.state_names) names += (names.empty() ? "\"" : ", \"") + json_escape(s) + "\"";
+  for (const std::string& s : r.state_names) names += (names.empty() ? "" : ", ") + json_quoted(s);
   std::cout << fmt::format(
-      "{{\"model\": \"{}\", \"analysis\": \"floquet\", \"period\": {}, \"frequencies\": \"{}\", \"equilibrium\": {{{}}}, "
+      "{{\"model\": \"{}\", \"analysis\": \"floquet\", \"period\": {}, \"frequencies\": {}, \"equilibrium\": {{{}}}, "
       "\"state\": [{}], \"monodromy\": [{}], \"multipliers\": [{}], \"moduli\": [{}], \"error_estimate\": {}, "
-      "\"steps_per_period\": {}, \"cyclic_unit_multipliers\": {}, \"verdict\": \"{}\", \"reason\": \"{}\"}}\n",
-      m.name, number(r.period), json_escape(time.frequencies), equilibrium, names, rows, multipliers, moduli,
-      number(r.error_estimate), r.steps_per_period, r.cyclic_unit_multipliers, r.verdict, json_escape(r.reason));
+      "\"steps_per_period\": {}, \"cyclic_unit_multipliers\": {}, \"verdict\": \"{}\", \"reason\": {}}}\n",
+      m.name, json_number(r.period), json_quoted(time.frequencies), equilibrium, names, rows, multipliers, moduli,
+      json_number(r.error_estimate), r.steps_per_period, r.cyclic_unit_multipliers, r.verdict, json_quoted(r.reason));
 }
 
 }  // namespace

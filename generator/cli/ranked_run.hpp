@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "distribute/ranks.hpp"
 
 namespace eomgen::cli {

@@ -6,16 +6,17 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "emit/formats.hpp"
 
 namespace eomgen::cli {
 
-std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v + 0.0) : "null"; }
+std::string json_number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v + 0.0) : "null"; }
 
 std::string json_matrix(const Eigen::MatrixXd& A) {
   std::string out = "[";
   for (Eigen::Index i = 0; i < A.rows(); ++i) {
     out += i ? ", [" : "[";
-    for (Eigen::Index j = 0; j < A.cols(); ++j) out += (j ? ", " : "") + number(A(i, j));
+    for (Eigen::Index j = 0; j < A.cols(); ++j) out += (j ? ", " : "") + json_number(A(i, j));
     out += "]";
   }
   return out + "]";
@@ -23,13 +24,13 @@ std::string json_matrix(const Eigen::MatrixXd& A) {
 
 std::string json_strings(const std::vector<std::string>& v) {
   std::string out;
-  for (const std::string& s : v) out += (out.empty() ? "\"" : ", \"") + json_escape(s) + "\"";
+  for (const std::string& s : v) out += (out.empty() ? "" : ", ") + json_quoted(s);
   return "[" + out + "]";
 }
 
 std::string json_numbers(const std::vector<double>& v) {
   std::string out;
-  for (double x : v) out += (out.empty() ? "" : ", ") + number(x);
+  for (double x : v) out += (out.empty() ? "" : ", ") + json_number(x);
   return "[" + out + "]";
 }
 

@@ -11,7 +11,7 @@
 namespace eomgen::cli {
 
 /// 17 significant digits; "null" for a value that is not finite.
-std::string number(double v);
+std::string json_number(double v);
 std::string json_matrix(const Eigen::MatrixXd& A);
 std::string json_strings(const std::vector<std::string>& v);
 std::string json_numbers(const std::vector<double>& v);

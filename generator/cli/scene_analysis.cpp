@@ -9,7 +9,7 @@
 #include "analyse/equilibrium.hpp"
 #include "analyse/term_pruning.hpp"
 #include "analyse/work_precision.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "cli/scene_candidates.hpp"
 #include "cli/scene_runs.hpp"
 #include "derive/linear_model.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 
 namespace eomgen::cli {
 

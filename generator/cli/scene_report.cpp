@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
 #include "common/output_file.hpp"
+#include "emit/formats.hpp"
 #include "report/gnuplot.hpp"
 
 namespace eomgen::cli {
@@ -40,13 +41,13 @@ std::vector<const SceneRun*> best_per_candidate(const SceneAnalysis& a) {
 }
 
 std::string run_json(const SceneAnalysis& a, const SceneRun& r) {
-  return fmt::format("{{\"model\": \"{}\", \"integrator\": \"{}\", \"setting\": \"{}\", \"error\": {}, \"cpu_s\": {}, "
+  return fmt::format("{{\"model\": {}, \"integrator\": \"{}\", \"setting\": \"{}\", \"error\": {}, \"cpu_s\": {}, "
                      "\"rhs_evaluations\": {}, \"rhs_operations\": {}, \"work\": {}, \"meets_accuracy\": {}, "
                      "\"rejected_because\": {}}}",
-                     json_escape(a.candidates[r.candidate].model), r.integrator, r.setting, number(r.error),
-                     number(r.cpu_seconds), r.rhs_evaluations, a.candidates[r.candidate].rhs_operations, number(r.work),
+                     json_quoted(a.candidates[r.candidate].model), r.integrator, r.setting, json_number(r.error),
+                     json_number(r.cpu_seconds), r.rhs_evaluations, a.candidates[r.candidate].rhs_operations, json_number(r.work),
                      r.meets_accuracy ? "true" : "false",
-                     r.rejected_because.empty() ? "null" : "\"" + json_escape(r.rejected_because) + "\"");
+                     r.rejected_because.empty() ? "null" : json_quoted(r.rejected_because));
 }
 
 // a candidate the interruption came before
@@ -92,14 +93,14 @@ void print_scene_text(const SceneAnalysis& a) {
 void print_scene_json(const SceneAnalysis& a) {
   std::string runs, outputs;
   for (const SceneRun& r : a.runs) runs += (runs.empty() ? "" : ", ") + run_json(a, r);
-  for (const std::string& y : a.scene.outputs) outputs += fmt::format("{}\"{}\"", outputs.empty() ? "" : ", ", json_escape(y));
-  std::cout << fmt::format("{{\"scene\": \"{}\", \"model\": \"{}\", \"outputs\": [{}], \"accuracy\": {}, \"absolute\": {}, "
+  for (const std::string& y : a.scene.outputs) outputs += fmt::format("{}{}", outputs.empty() ? "" : ", ", json_quoted(y));
+  std::cout << fmt::format("{{\"scene\": {}, \"model\": {}, \"outputs\": [{}], \"accuracy\": {}, \"absolute\": {}, "
                            "\"reference\": {{\"integrator\": \"{}\", \"error_estimate\": {}}}, \"candidates\": [{}], "
                            "\"chosen\": {}, \"closest\": {}, \"noise_note\": {}, \"partial\": {}}}\n",
-                           json_escape(a.scene.name), json_escape(a.model_name), outputs, number(a.scene.accuracy),
-                           number(a.scene.absolute), a.reference_integrator, number(a.reference_error_estimate), runs,
+                           json_quoted(a.scene.name), json_quoted(a.model_name), outputs, json_number(a.scene.accuracy),
+                           json_number(a.scene.absolute), a.reference_integrator, json_number(a.reference_error_estimate), runs,
                            a.chosen ? run_json(a, a.runs[*a.chosen]) : "null", a.closest ? run_json(a, a.runs[*a.closest]) : "null",
-                           a.noise_note.empty() ? "null" : "\"" + json_escape(a.noise_note) + "\"", a.interrupted ? "true" : "false");
+                           a.noise_note.empty() ? "null" : json_quoted(a.noise_note), a.interrupted ? "true" : "false");
 }
 
 std::string write_scene_files(const SceneAnalysis& a, const std::string& directory) {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "cli/scene_analysis.hpp"
 
 namespace eomgen::cli {

@@ -13,7 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/input_signal.hpp"
 #include "cli/simulation_report.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "common/output_file.hpp"
 #include "compile/compile_cache.hpp"
 #include "emit/cpp_header.hpp"
@@ -52,12 +52,6 @@ void apply_scene_times(const Equations& e, SimulationOptions& o) {
 }
 
 }  // namespace
-
-// the inside of a JSON string literal: json_quoted without its quotes
-std::string json_escape(const std::string& s) {
-  std::string quoted = json_quoted(s);
-  return quoted.substr(1, quoted.size() - 2);
-}
 
 int simulate_model(const SimulationOptions& options) {
   SimulationOptions o = options;

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "analyse/conservation.hpp"
+#include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 #include "report/reports.hpp"
 
 namespace eomgen::cli {
@@ -38,13 +40,12 @@ static std::string constraint_summary(const eomgen_model_abi& m, const runtime::
 // the change of every first integral over the run; with inputs acting they need not be constant
 static std::string first_integral_summary(const eomgen_model_abi& m, const runtime::RunSummary& run, bool unforced, bool json) {
   std::vector<runtime::FirstIntegralDrift> drift = runtime::first_integral_drift(m, run);
-  auto number = [](double x) { return std::isfinite(x) ? fmt::format("{:.6g}", x) : std::string("null"); };
   if (json) {
     std::string list;
     for (const runtime::FirstIntegralDrift& d : drift)
-      list += fmt::format("{}{{\"name\": \"{}\", \"initial\": {}, \"max_abs_change\": {}, \"relative_change\": {}}}",
-                          list.empty() ? "" : ", ", json_escape(d.name), number(d.initial), number(d.largest_change),
-                          number(d.relative_change));
+      list += fmt::format("{}{{\"name\": {}, \"initial\": {}, \"max_abs_change\": {}, \"relative_change\": {}}}",
+                          list.empty() ? "" : ", ", json_quoted(d.name), json_number(d.initial), json_number(d.largest_change),
+                          json_number(d.relative_change));
     return fmt::format(", \"first_integrals_conserved\": {}, \"first_integrals\": [{}]", unforced ? "true" : "false", list);
   }
   if (drift.empty()) return "";
@@ -61,8 +62,8 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
   const runtime::SolverStatistics& s = r.statistics;
   double drift = relative_energy_drift(r.summary);
   if (json) {
-    std::string failure = r.failed ? fmt::format("{{\"time\": {:.17g}, \"flag\": {}, \"reason\": \"{}\"}}", r.failure_time,
-                                                 r.solver_flag, json_escape(r.failure))
+    std::string failure = r.failed ? fmt::format("{{\"time\": {:.17g}, \"flag\": {}, \"reason\": {}}}", r.failure_time,
+                                                 r.solver_flag, json_quoted(r.failure))
                                    : "null";
     std::cout << fmt::format(
         "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "

@@ -10,7 +10,7 @@
 #include "analyse/stability_conditions.hpp"
 #include "analyse/state_check.hpp"
 #include "cli/commands.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "cli/routh_reduction.hpp"
 #include "cli/stability_report.hpp"
 

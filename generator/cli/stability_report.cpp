@@ -13,6 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "emit/formats.hpp"
 #include "symbolic/canonical_print.hpp"
 
 namespace eomgen::cli {
@@ -94,14 +95,14 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
                 const std::string& extra) {
   std::string equilibrium;
   for (std::size_t i = 0; i < m.num_states; ++i)
-    equilibrium += fmt::format("{}\"{}\": {}", equilibrium.empty() ? "" : ", ", json_escape(m.state_names[i]), number(eq.state[i]));
+    equilibrium += fmt::format("{}{}: {}", equilibrium.empty() ? "" : ", ", json_quoted(m.state_names[i]), json_number(eq.state[i]));
   std::string eigenvalues, modes;
-  for (auto l : r.eigenvalues) eigenvalues += (eigenvalues.empty() ? "[" : ", [") + number(l.real()) + ", " + number(l.imag()) + "]";
+  for (auto l : r.eigenvalues) eigenvalues += (eigenvalues.empty() ? "[" : ", [") + json_number(l.real()) + ", " + json_number(l.imag()) + "]";
   for (const auto& mode : r.modes)
     modes += fmt::format("{}{{\"eigenvalue\": [{}, {}], \"frequency\": {}, \"undamped_frequency\": {}, "
-                         "\"damping_ratio\": {}}}", modes.empty() ? "" : ", ", number(mode.eigenvalue.real()),
-                         number(mode.eigenvalue.imag()), number(mode.frequency), number(mode.undamped_frequency),
-                         number(mode.damping_ratio));
+                         "\"damping_ratio\": {}}}", modes.empty() ? "" : ", ", json_number(mode.eigenvalue.real()),
+                         json_number(mode.eigenvalue.imag()), json_number(mode.frequency), json_number(mode.undamped_frequency),
+                         json_number(mode.damping_ratio));
   std::vector<std::string> condition_texts, equations;
   if (conditions) {
     for (const GiNaC::ex& c : conditions->conditions) condition_texts.push_back(canonical_text(rounded_for_display(c, 12)) + " > 0");
@@ -114,15 +115,15 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
       "\"cyclic_zero_eigenvalues\": {}, \"quaternion_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
       "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"vanishing_conditions\": {}, \"equilibrium_conditions\": {}, "
       "\"disagreement\": {}, \"critical_case\": {}{}}}\n",
-      m.name, equilibrium, number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
+      m.name, equilibrium, json_number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
-      number(r.stability_degree), r.cyclic_zero_eigenvalues, r.quaternion_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
-      json_numbers(r.hurwitz), number(r.hurwitz_scale), r.hurwitz_ill_conditioned ? "true" : "false", json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
+      json_number(r.stability_degree), r.cyclic_zero_eigenvalues, r.quaternion_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
+      json_numbers(r.hurwitz), json_number(r.hurwitz_scale), r.hurwitz_ill_conditioned ? "true" : "false", json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
       json_strings(condition_texts), json_strings(conditions ? conditions->vanishing : std::vector<std::string>{}),
-      json_strings(equations), r.disagreement.empty() ? "null" : "\"" + json_escape(r.disagreement) + "\"",
-      critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": \"{}\", \"simulation\": \"{}\", "
+      json_strings(equations), r.disagreement.empty() ? "null" : json_quoted(r.disagreement),
+      critical.critical ? fmt::format("{{\"first_approximation\": \"inconclusive\", \"energy\": {}, \"simulation\": {}, "
                                       "\"nonlinear_verdict\": \"{}\"}}",
-                                      json_escape(critical.energy), json_escape(critical.simulation), critical.nonlinear_verdict)
+                                      json_quoted(critical.energy), json_quoted(critical.simulation), critical.nonlinear_verdict)
                         : "null",
       extra);
 }

@@ -16,7 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/count_progress.hpp"
 #include "cli/eigenvalue_sweep_output.hpp"
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 #include "cli/ranked_run.hpp"
 #include "cli/stop_signal.hpp"
 #include "common/output_file.hpp"

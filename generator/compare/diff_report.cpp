@@ -13,7 +13,7 @@ namespace {
 
 std::string quote(const std::string& s) { return json_quoted(s); }
 
-std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
+std::string rounded_number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 
 std::string strings(const std::vector<std::string>& v) {
   std::string out;
@@ -48,7 +48,7 @@ std::string diff_text(const EquationDiff& d) {
     if (c.status == "different")
       out += fmt::format("  different: {} (largest difference {} absolute, {} relative at the random points)\n"
                          "    old: {}\n    new: {}\n",
-                         c.entry, number(c.max_abs_difference), number(c.max_rel_difference), c.old_text, c.new_text);
+                         c.entry, rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference), c.old_text, c.new_text);
   for (const EntryComparison& c : d.entries)
     if (c.status == "equivalent")
       out += fmt::format("  equivalent: {} ({})\n    old: {}\n    new: {}\n", c.entry, level(c), c.old_text, c.new_text);
@@ -69,7 +69,7 @@ std::string diff_json(const EquationDiff& d) {
     entries += fmt::format("{}{{\"entry\": {}, \"status\": \"{}\", \"decided_by\": \"{}\", \"old\": {}, \"new\": {}, "
                            "\"max_abs_difference\": {}, \"max_rel_difference\": {}}}",
                            entries.empty() ? "" : ", ", quote(c.entry), c.status, c.decided_by, quote(c.old_text),
-                           quote(c.new_text), number(c.max_abs_difference), number(c.max_rel_difference));
+                           quote(c.new_text), rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference));
   return fmt::format("{{\"verdict\": \"{}\", \"old\": {}, \"new\": {}, \"symbols\": {{\"added\": {}, \"removed\": {}, "
                      "\"renamed\": [{}], \"defaults_changed\": [{}]}}, \"entries\": [{}], \"entries_only_old\": {}, "
                      "\"entries_only_new\": {}, \"motion\": {}}}\n",

@@ -1,4 +1,5 @@
 #include "emit/fmu_description.hpp"
+#include "emit/formats.hpp"
 
 #include <cstdint>
 #include <set>
@@ -37,7 +38,6 @@ struct Variables {
   std::vector<int> index_of_reference;  // 1-based ScalarVariable index, 0 where no variable stands
 };
 
-std::string number(double v) { return fmt::format("{}", v); }
 
 }  // namespace
 
@@ -67,7 +67,7 @@ std::string fmi2_model_description(const Equations& e, const std::string& guid, 
     std::string derivative = kinematic && i >= n ? fmt::format(" derivative=\"{}\"", i - n + 1) : "";
     add(i, fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"local\" variability=\"continuous\" "
                        "initial=\"exact\">\n      <Real start=\"{}\"{}/>\n    </ScalarVariable>",
-                       xml_escaped(states[i]), i, number(start[i]), derivative));
+                       xml_escaped(states[i]), i, format_number(start[i]), derivative));
   }
   for (std::size_t i = 0; i < S; ++i) {
     if (kinematic && i < n) {
@@ -82,11 +82,11 @@ std::string fmi2_model_description(const Equations& e, const std::string& guid, 
   for (std::size_t i = 0; i < P; ++i)
     add(2 * S + i, fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"parameter\" variability=\"fixed\" "
                                "initial=\"exact\">\n      <Real start=\"{}\"/>\n    </ScalarVariable>",
-                               xml_escaped(s.parameter_names[i]), 2 * S + i, number(s.parameter_defaults[i])));
+                               xml_escaped(s.parameter_names[i]), 2 * S + i, format_number(s.parameter_defaults[i])));
   for (std::size_t i = 0; i < U; ++i)
     add(2 * S + P + i, fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"input\" "
                                    "variability=\"continuous\">\n      <Real start=\"{}\"/>\n    </ScalarVariable>",
-                                   xml_escaped(s.input_names[i]), 2 * S + P + i, number(s.input_defaults[i])));
+                                   xml_escaped(s.input_names[i]), 2 * S + P + i, format_number(s.input_defaults[i])));
   for (std::size_t i = 0; i < Y; ++i)
     add(2 * S + P + U + i, fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"output\" "
                                        "variability=\"continuous\" initial=\"calculated\">\n      <Real/>\n    </ScalarVariable>",

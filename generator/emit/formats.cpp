@@ -16,6 +16,6 @@ std::optional<EquationFormat> find_equation_format(const std::string& name) {
   return std::nullopt;
 }
 
-std::string format_number(double value) { return fmt::format("{}", value); }
+std::string format_number(double value) { return fmt::format("{}", value + 0.0); }  // + 0.0: no "-0"
 
 }  // namespace eomgen

@@ -6,6 +6,7 @@
 // 2 d |q'|² in its quaternion's rates); a motor is an input whose generalized force is gain × u.
 #include "import/model_writer.hpp"
 
+#include "emit/formats.hpp"
 #include "import/mjcf_reader.hpp"
 
 #include <algorithm>
@@ -22,14 +23,13 @@ namespace eomgen {
 
 namespace {
 
-std::string number(double x) { return x == 0 ? "0" : fmt::format("{}", x); }  // no "-0"
 
-std::string vector_text(const Triple& v) { return fmt::format("[\"{}\", \"{}\", \"{}\"]", number(v[0]), number(v[1]), number(v[2])); }
+std::string vector_text(const Triple& v) { return fmt::format("[\"{}\", \"{}\", \"{}\"]", format_number(v[0]), format_number(v[1]), format_number(v[2])); }
 
 bool is_identity(const Quaternion& q) { return q[0] == 1 && q[1] == 0 && q[2] == 0 && q[3] == 0; }
 
 std::string rotation_text(const Quaternion& q) {
-  return fmt::format("quat({}, {}, {}, {})", number(q[0]), number(q[1]), number(q[2]), number(q[3]));
+  return fmt::format("quat({}, {}, {}, {})", format_number(q[0]), format_number(q[1]), format_number(q[2]), format_number(q[3]));
 }
 
 // the names of the model's symbols, each used once
@@ -79,7 +79,7 @@ std::string joint_text(const RobotJoint& j, const JointSymbols& s) {
   bool free = j.type == "free";
   std::size_t q = free ? 3 : 0, v = free ? 3 : 0;
   std::string w0;
-  for (std::size_t k = 0; k < 3; ++k) w0 += (k ? ", " : "") + number(j.initial_velocity[v + k]);
+  for (std::size_t k = 0; k < 3; ++k) w0 += (k ? ", " : "") + format_number(j.initial_velocity[v + k]);
   return fmt::format("{{ type = \"{}\"{}{}, quaternion = {}, angular_velocity = {}, initial_angular_velocity = [{}] }}", j.type,
                      free ? ", position = " + names_list(s.coordinates, 0, 3) : "",
                      !free && (j.anchor[0] != 0 || j.anchor[1] != 0 || j.anchor[2] != 0) ? ", anchor = " + vector_text(j.anchor) : "",
@@ -95,11 +95,11 @@ struct Sections {
 void add_coordinates(const RobotJoint& j, const JointSymbols& s, Sections& out) {
   for (std::size_t k = 0; k < s.coordinates.size(); ++k) {
     bool rated = (j.type == "hinge" || j.type == "slide" || (j.type == "free" && k < 3)) && j.initial_velocity[k] != 0;
-    std::string line = rated ? fmt::format("{} = {{ initial = {}, rate = {} }}", s.coordinates[k], number(j.initial_position[k]),
-                                           number(j.initial_velocity[k]))
-                             : fmt::format("{} = {}", s.coordinates[k], number(j.initial_position[k]));
+    std::string line = rated ? fmt::format("{} = {{ initial = {}, rate = {} }}", s.coordinates[k], format_number(j.initial_position[k]),
+                                           format_number(j.initial_velocity[k]))
+                             : fmt::format("{} = {}", s.coordinates[k], format_number(j.initial_position[k]));
     if (j.limited && s.coordinates.size() == 1)
-      line += fmt::format("  # range [{}, {}] in the file: not enforced", number(j.range[0]), number(j.range[1]));
+      line += fmt::format("  # range [{}, {}] in the file: not enforced", format_number(j.range[0]), format_number(j.range[1]));
     out.coordinates += line + "\n";
   }
 }
@@ -108,18 +108,18 @@ void add_coordinates(const RobotJoint& j, const JointSymbols& s, Sections& out) 
 void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string& where, Sections& out) {
   const std::vector<std::string>& c = s.coordinates;
   if (j.type == "hinge" || j.type == "slide") {
-    if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*der({})^2", number(j.armature), c[0]));
-    if (j.damping != 0) out.dissipation.push_back(fmt::format("{}*der({})^2", number(j.damping), c[0]));
+    if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*der({})^2", format_number(j.armature), c[0]));
+    if (j.damping != 0) out.dissipation.push_back(fmt::format("{}*der({})^2", format_number(j.damping), c[0]));
     if (j.stiffness != 0)
-      out.potential.push_back(j.spring_reference[0] == 0 ? fmt::format("{}*{}^2", number(j.stiffness), c[0])
-                                                         : fmt::format("{}*({} - {})^2", number(j.stiffness), c[0],
-                                                                       number(j.spring_reference[0])));
+      out.potential.push_back(j.spring_reference[0] == 0 ? fmt::format("{}*{}^2", format_number(j.stiffness), c[0])
+                                                         : fmt::format("{}*({} - {})^2", format_number(j.stiffness), c[0],
+                                                                       format_number(j.spring_reference[0])));
     return;
   }
   std::size_t q = j.type == "free" ? 3 : 0;
   if (j.damping != 0) {
-    if (q) out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2)", number(j.damping), c[0], c[1], c[2]));
-    out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2 + der({})^2)", number(4 * j.damping), c[q],
+    if (q) out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2)", format_number(j.damping), c[0], c[1], c[2]));
+    out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2 + der({})^2)", format_number(4 * j.damping), c[q],
                                           c[q + 1], c[q + 2], c[q + 3]));
   }
   if (j.armature != 0)
@@ -145,16 +145,16 @@ std::string shapes_text(const RobotBody& body, Sections& out) {
   for (const RobotGeom& g : body.geoms) {
     std::string offset = g.position == Triple{0, 0, 0} ? "" : ", offset = " + vector_text(g.position);
     if (g.type == "sphere" || g.type == "ellipsoid") {
-      shapes.push_back(fmt::format("{{ type = \"sphere\", size = [\"{}\"]{} }}", number(std::max({g.size[0], g.type == "ellipsoid" ? g.size[1] : 0.0, g.type == "ellipsoid" ? g.size[2] : 0.0})), offset));
+      shapes.push_back(fmt::format("{{ type = \"sphere\", size = [\"{}\"]{} }}", format_number(std::max({g.size[0], g.type == "ellipsoid" ? g.size[1] : 0.0, g.type == "ellipsoid" ? g.size[2] : 0.0})), offset));
       if (g.type == "ellipsoid") out.warnings.push_back(fmt::format("body '{}': an ellipsoid geom is drawn as a sphere", body.name));
     } else if (g.type == "capsule" || g.type == "cylinder") {
       Triple axis = turned(g.orientation, {0, 0, 1});
       std::string along = axis == Triple{0, 0, 1} ? "" : ", axis = " + vector_text(axis);
-      shapes.push_back(fmt::format("{{ type = \"{}\", size = [\"{}\", \"{}\"]{}{} }}", g.type, number(g.size[0]), number(2 * g.size[1]),
+      shapes.push_back(fmt::format("{{ type = \"{}\", size = [\"{}\", \"{}\"]{}{} }}", g.type, format_number(g.size[0]), format_number(2 * g.size[1]),
                                    offset, along));
     } else if (g.type == "box") {
-      shapes.push_back(fmt::format("{{ type = \"box\", size = [\"{}\", \"{}\", \"{}\"]{} }}", number(2 * g.size[0]),
-                                   number(2 * g.size[1]), number(2 * g.size[2]), offset));
+      shapes.push_back(fmt::format("{{ type = \"box\", size = [\"{}\", \"{}\", \"{}\"]{} }}", format_number(2 * g.size[0]),
+                                   format_number(2 * g.size[1]), format_number(2 * g.size[2]), offset));
       if (!is_identity(g.orientation))
         out.warnings.push_back(fmt::format("body '{}': a turned box geom is drawn along the body's axes", body.name));
     } else {
@@ -199,7 +199,7 @@ void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::
   }
   if (body.mass <= 0) return;
   out.bodies += fmt::format("\n[[rigid_bodies]]\nname = \"{}\"\nframe = \"{}\"\nmass = \"{}\"\ncenter = {}\n", frame, frame,
-                            number(body.mass), vector_text(body.center));
+                            format_number(body.mass), vector_text(body.center));
   if (!is_identity(body.inertia_axes)) out.bodies += "rotation = \"" + rotation_text(body.inertia_axes) + "\"\n";
   out.bodies += "inertia = " + vector_text(body.principal_inertia) + "\n";
 }
@@ -211,7 +211,7 @@ void add_keyframes(const Robot& robot, const std::vector<std::vector<JointSymbol
     std::string initial;
     std::size_t qpos = 0, qvel = 0;
     auto add = [&](const std::string& state, double value) {
-      initial += (initial.empty() ? "" : ", ") + fmt::format("\"{}\" = {}", state, number(value));
+      initial += (initial.empty() ? "" : ", ") + fmt::format("\"{}\" = {}", state, format_number(value));
     };
     for (std::size_t b = 0; b < robot.bodies.size(); ++b)
       for (std::size_t k = 0; k < robot.bodies[b].joints.size(); ++k) {
@@ -246,11 +246,11 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
   for (const RobotActuator& a : robot.actuators) {
     std::string u = names.take(a.name);
     out.inputs += u + " = 0" +
-                  (a.limited ? fmt::format("  # control range [{}, {}] in the file: not enforced", number(a.range[0]), number(a.range[1])) : "") +
+                  (a.limited ? fmt::format("  # control range [{}, {}] in the file: not enforced", format_number(a.range[0]), format_number(a.range[1])) : "") +
                   "\n";
     const std::string& q = joint_symbols[std::size_t(a.body)][std::size_t(a.joint)].coordinates[0];
     if (!forces.count(q)) order.push_back(q);
-    std::string term = a.gain == 1 ? u : fmt::format("{}*{}", number(a.gain), u);
+    std::string term = a.gain == 1 ? u : fmt::format("{}*{}", format_number(a.gain), u);
     forces[q] += (forces[q].empty() ? "" : " + ") + term;
   }
   std::string generalized;

@@ -1,4 +1,4 @@
-#include "cli/loaded_model.hpp"
+#include "cli/loaded_problem.hpp"
 
 #include <cmath>
 #include <iostream>
