@@ -47,6 +47,11 @@ struct AnimationScene {
   std::array<double, 3> center{}, view{}, up{}, gravity{};
   double radius = 1;
   bool planar = false;
+  /// A model that travels far beyond its own size (a bicycle riding off, a body falling): the view
+  /// follows the bodies' centroid, `radius` is their own size and `extent` the whole run's
+  bool follow = false;
+  double extent = 1;
+  double floor = -1;  // the lowest point along `up` over the run, from the centre
 };
 AnimationScene animation_scene(const AnimationRecorder& recorder);
 

@@ -47,7 +47,7 @@ std::string json_text(const std::string& s) {
 
 std::string json_numbers(const double* v, std::size_t n) {
   std::string out = "[";
-  for (std::size_t i = 0; i < n; ++i) out += fmt::format("{}{:.9g}", i ? "," : "", std::isfinite(v[i]) ? v[i] : 0.0);
+  for (std::size_t i = 0; i < n; ++i) out += fmt::format("{}{:.9g}", i ? "," : "", std::isfinite(v[i]) ? v[i] + 0.0 : 0.0);
   return out + "]";
 }
 
@@ -134,11 +134,12 @@ std::string animation_page(const AnimationRecorder& r, const AnimationSettings& 
   double ground[3] = {-scene.center[0], -scene.center[1], -scene.center[2]};
   std::string data = fmt::format(
       "{{\"title\":{},\"model\":{},\"bodies\":{},\"rods\":[{}],\"center\":{},\"ground\":{},\"radius\":{:.9g},"
-      "\"view\":{},\"up\":{},\"gravity\":{},\"grid\":{},\"trace\":[{}],\"axes\":{},\"times\":\"{}\",\"poses\":\"{}\"}}",
+      "\"view\":{},\"up\":{},\"gravity\":{},\"grid\":{},\"follow\":{},\"extent\":{:.9g},\"floor\":{:.9g},"
+      "\"trace\":[{}],\"axes\":{},\"times\":\"{}\",\"poses\":\"{}\"}}",
       json_text(settings.title), json_text(m.name), bodies_json(m, r.parameters()), rods, json_numbers(scene.center.data(), 3),
       json_numbers(ground, 3), scene.radius, json_numbers(scene.view.data(), 3), json_numbers(scene.up.data(), 3),
       json_numbers(scene.gravity.data(), 3), !scene.planar && std::hypot(scene.gravity[0], scene.gravity[1], scene.gravity[2]) > 0,
-      trace, settings.axes, base64(r.times().data(), r.times().size() * sizeof(double)), poses);
+      scene.follow, scene.extent, scene.floor, trace, settings.axes, base64(r.times().data(), r.times().size() * sizeof(double)), poses);
   std::string page = animation_page_text;
   std::string title = settings.title;
   for (auto [from, to] : {std::pair<char, const char*>{'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}})

@@ -64,6 +64,20 @@ int plane_normal(const AnimationRecorder& r, const std::array<Point, 2>& box, do
   return -1;
 }
 
+// the lowest point of the run along `up`, from the centre, below the shapes
+AnimationScene with_floor(const AnimationRecorder& r, AnimationScene s, double shape_size) {
+  double lowest = INFINITY;
+  for (std::size_t f = 0; f < r.frames(); ++f)
+    for (std::size_t b = 0; b < r.model().num_drawn_bodies; ++b) {
+      const double* p = r.pose(f, b);
+      double height = 0;
+      for (int i = 0; i < 3; ++i) height += (p[i] - s.center[std::size_t(i)]) * s.up[std::size_t(i)];
+      lowest = std::min(lowest, height);
+    }
+  s.floor = std::isfinite(lowest) ? lowest - shape_size - 0.05 * s.radius : -s.radius;
+  return s;
+}
+
 }  // namespace
 
 AnimationScene animation_scene(const AnimationRecorder& r) {
@@ -88,6 +102,18 @@ AnimationScene animation_scene(const AnimationRecorder& r) {
   for (int i = 0; i < 3; ++i) s.center[std::size_t(i)] = (box[0][i] + box[1][i]) / 2;
   s.radius = std::max(std::hypot(box[1][0] - box[0][0], box[1][1] - box[0][1], box[1][2] - box[0][2]) / 2 + shape_size,
                       scale * 0.5);
+  s.extent = s.radius;
+  // the bodies' own size: their largest distance from their centroid at any frame
+  double own = 0;
+  std::size_t nb = m.num_drawn_bodies;
+  for (std::size_t f = 0; f < r.frames(); ++f) {
+    Point c{0, 0, 0};
+    for (std::size_t b = 0; b < nb; ++b)
+      for (int i = 0; i < 3; ++i) c[std::size_t(i)] += r.pose(f, b)[i] / double(nb);
+    for (std::size_t b = 0; b < nb; ++b) own = std::max(own, distance(r.pose(f, b), c.data()));
+  }
+  own += shape_size;
+  if (own > 0 && 4 * own < s.radius) s.follow = true, s.radius = own;
   Point down = unit(s.gravity);
   int normal = plane_normal(r, box, scale);
   s.planar = normal >= 0;
@@ -96,8 +122,13 @@ AnimationScene animation_scene(const AnimationRecorder& r) {
     n[std::size_t(normal)] = 1;
     s.view = {-n[0], -n[1], -n[2]};
     Point in_plane{-down[0] * (1 - n[0]), -down[1] * (1 - n[1]), -down[2] * (1 - n[2])};
-    s.up = std::hypot(in_plane[0], in_plane[1], in_plane[2]) > 1e-3 ? unit(in_plane) : Point{n[2], n[0], n[1]};
-    return s;
+    // without gravity in the plane: y up in the xy plane, z up in the others
+    Point level = normal == 2 ? Point{0, 1, 0} : Point{0, 0, 1};
+    s.up = std::hypot(in_plane[0], in_plane[1], in_plane[2]) > 1e-3 ? unit(in_plane) : level;
+    // from the side on which the plane's other axis points to the right (x right of y up, x right of z up)
+    Point right = cross(s.view, s.up);
+    if (right[0] + right[1] + right[2] < 0) s.view = n;
+    return with_floor(r, s, shape_size);
   }
   s.up = std::hypot(down[0], down[1], down[2]) > 0 ? Point{-down[0], -down[1], -down[2]} : Point{0, 0, 1};
   int least = 0;
@@ -108,7 +139,7 @@ AnimationScene animation_scene(const AnimationRecorder& r) {
   Point e1 = unit(cross(s.up, axis)), e2 = cross(s.up, e1);
   Point eye = unit({0.8 * e1[0] - e2[0] + 0.5 * s.up[0], 0.8 * e1[1] - e2[1] + 0.5 * s.up[1], 0.8 * e1[2] - e2[2] + 0.5 * s.up[2]});
   s.view = {-eye[0], -eye[1], -eye[2]};
-  return s;
+  return with_floor(r, s, shape_size);
 }
 
 }  // namespace eomgen::runtime

@@ -119,6 +119,20 @@ TEST(Animation, DoublePendulumSceneHasItsTwoRodsAndIsSeenFromItsPlanesNormal) {
   EXPECT_LT(scene.radius, 2.5);
 }
 
+// a free body that falls travels far beyond its own size: the view follows it; the pendulum stays put
+TEST(Animation, AFallingBodyIsFollowedAndAPendulumIsNot) {
+  const eomgen_model_abi& body = *generated_model("tumbling_body").abi;
+  runtime::AnimationScene falling = runtime::animation_scene(recorded_run(body, 3));
+  EXPECT_TRUE(falling.follow);
+  EXPECT_LT(4 * falling.radius, falling.extent);
+  EXPECT_FALSE(falling.planar);
+  EXPECT_NEAR(falling.up[2], 1, 1e-15);  // against gravity, −z
+  runtime::AnimationScene pendulum = runtime::animation_scene(recorded_run(*generated_model("double_pendulum").abi, 2));
+  EXPECT_FALSE(pendulum.follow);
+  EXPECT_EQ(pendulum.extent, pendulum.radius);
+  EXPECT_LT(pendulum.floor, -1.0);  // the lowest bob, below the centre of the scene
+}
+
 TEST(Animation, LongRunsKeepAtMostTwiceTheFramesAskedForEvenlySpaced) {
   const eomgen_model_abi& m = *generated_model("double_pendulum").abi;
   auto recorder = recorded_run(m, 10, 100);
