@@ -81,14 +81,8 @@ void ModelBuilder::read_drawing() {
     m_.drawing.push_back({b.name, DrawnBody::Kind::rigid_body, b.center, b.rotation.matrix,
                           parent_of(f_.rigid_bodies[i].frame), drawn});
   }
-  if (!d_.empty()) return;  // a point's mistakes are reported by read_points
-  for (const PointEntry& p : f_.points) {
-    auto placed = frames_.find(p.frame);
-    if (p.name.empty() || p.position.size() != 3) continue;
-    Vector3 local = vector(p.position, allow_configuration, "a position");
-    Vector3 at = placed == frames_.end() ? local : place_point(placed->second, local);
-    m_.drawing.push_back({p.name, DrawnBody::Kind::point, at, rotation_in(p.frame), parent_of(p.frame), {}});
-  }
+  for (const PlacedPoint& p : placed_points_)
+    m_.drawing.push_back({p.name, DrawnBody::Kind::point, p.position, p.rotation, parent_of(p.frame), {}});
 }
 
 }  // namespace eomgen

@@ -92,6 +92,7 @@ void ModelBuilder::read_points() {
     if (!in || p.name.empty()) continue;
     Vector3 at = place_point(*in, vector(p.position, allow_configuration, "a position"));
     define_whole(p.name, p.where, p.key + ".name", {at[0], at[1], at[2]});
+    placed_points_.push_back({p.name, at, in->rotation.matrix, p.frame});
   }
 }
 

@@ -109,6 +109,14 @@ class ModelBuilder {
   std::map<std::string, int> body_names_;
   std::map<std::string, PlacedFrame> frames_;
   std::map<std::string, int> frame_index_;
+  // the [[points]] as read_points placed them, for the drawing
+  struct PlacedPoint {
+    std::string name;
+    Vector3 position;
+    GiNaC::matrix rotation;
+    std::string frame;
+  };
+  std::vector<PlacedPoint> placed_points_;
   std::set<std::string> angular_velocity_names_;  // of the ball and free joints so far  // recursive kinematics: a frame's index in m_.frame_links
 };
 
