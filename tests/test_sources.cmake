@@ -33,12 +33,12 @@ set(EOMGEN_TEST_FILES
   generator/derive/reduced_models_test.cpp          fast     sanitized
   runtime/constrained_simulation_test.cpp           fast
   runtime/reference_test.cpp                        slow
-  generator/analyse/stability_conditions_test.cpp   fast     sanitized
-  generator/analyse/hamilton_jacobi_test.cpp        fast
-  generator/analyse/exact_jordan_test.cpp           fast     sanitized
-  generator/analyse/closed_form_solution_test.cpp   fast     sanitized
-  generator/analyse/deformed_shapes_test.cpp        fast     sanitized
-  generator/analyse/term_pruning_test.cpp           fast     sanitized
+  generator/symbolic_analysis/stability_conditions_test.cpp   fast     sanitized
+  generator/symbolic_analysis/hamilton_jacobi_test.cpp        fast
+  generator/symbolic_analysis/exact_jordan_test.cpp           fast     sanitized
+  generator/symbolic_analysis/closed_form_solution_test.cpp   fast     sanitized
+  generator/symbolic_analysis/deformed_shapes_test.cpp        fast     sanitized
+  generator/symbolic_analysis/term_pruning_test.cpp           fast     sanitized
   generator/emit/formats_test.cpp                   fast     sanitized
   generator/emit/cpp_constant_test.cpp              slow
   generator/emit/tangent_sweep_test.cpp             fast
@@ -56,6 +56,8 @@ set(EOMGEN_TEST_FILES
   runtime/step_stability_test.cpp                   fast
   runtime/excited_modes_test.cpp                    fast
   runtime/simulation_budget_test.cpp                fast
+  studies/stability_studies_test.cpp                slow
+  studies/run_studies_test.cpp                      slow
   cli/stability_command_test.cpp                    cli
   cli/trustworthy_analysis_test.cpp                 cli
   cli/routh_stability_test.cpp                      cli

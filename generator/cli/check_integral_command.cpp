@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "analyse/hamilton_jacobi.hpp"
+#include "symbolic_analysis/hamilton_jacobi.hpp"
 #include "cli/commands.hpp"
 #include "emit/formats.hpp"
 #include "pipeline.hpp"

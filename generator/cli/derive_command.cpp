@@ -10,14 +10,6 @@
 
 namespace eomgen::cli {
 
-bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model_path) {
-  if (diagnostics.empty()) return false;
-  std::cerr << diagnostics.format();
-  std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", diagnostics.size(),
-                           diagnostics.size() == 1 ? "" : "s", model_path);
-  return true;
-}
-
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
                      bool linearize, const std::vector<std::string>& reduce, const std::string& variant) {
   auto started = std::chrono::steady_clock::now();

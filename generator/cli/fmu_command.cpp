@@ -1,11 +1,11 @@
 /// @file `eomgen fmu MODEL [-o DIR] [--kind me|cs|both]`: the model as an FMU (FMI 2.0) for
-/// Simulink, Dymola, OpenModelica, FMPy and co-simulation masters (cli/fmu_package.hpp).
+/// Simulink, Dymola, OpenModelica, FMPy and co-simulation masters (studies/fmu_package.hpp).
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/fmu_package.hpp"
+#include "studies/fmu_package.hpp"
 #include "common/output_file.hpp"
 #include "pipeline.hpp"
 

@@ -12,8 +12,8 @@
 #include "common/output_file.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/split_units.hpp"
-#include "cli/scene_analysis.hpp"
-#include "cli/split_output.hpp"
+#include "studies/scene_analysis.hpp"
+#include "studies/split_output.hpp"
 #include "pipeline.hpp"
 
 namespace eomgen::cli {

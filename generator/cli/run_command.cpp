@@ -2,6 +2,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "studies/bench_study.hpp"
+#include "studies/stability_study.hpp"
 #include "common/output_file.hpp"
 
 namespace eomgen::cli {

@@ -1,13 +1,13 @@
 /// @file `eomgen scene MODEL NAME`: the cheapest model and integrator that answer the
-/// scene to its accuracy (cli/scene_analysis.hpp), printed and, with -o, written out.
+/// scene to its accuracy (studies/scene_analysis.hpp), printed and, with -o, written out.
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/scene_analysis.hpp"
-#include "cli/scene_report.hpp"
-#include "cli/stop_signal.hpp"
+#include "studies/scene_analysis.hpp"
+#include "studies/scene_report.hpp"
+#include "common/stop_signal.hpp"
 #include "common/output_file.hpp"
 
 namespace eomgen::cli {

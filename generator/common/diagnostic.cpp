@@ -1,6 +1,7 @@
 #include "common/diagnostic.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <cctype>
 #include <tuple>
 
@@ -73,5 +74,14 @@ std::string suggest(const std::string& word, const std::vector<std::string>& can
   for (const std::string& c : candidates) all += (all.empty() ? "" : ", ") + c;
   return fmt::format("valid {}: {}", what, all);
 }
+
+bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model_path) {
+  if (diagnostics.empty()) return false;
+  std::cerr << diagnostics.format();
+  std::cerr << fmt::format("eomgen: {} error{} in {}; nothing written\n", diagnostics.size(),
+                           diagnostics.size() == 1 ? "" : "s", model_path);
+  return true;
+}
+
 
 }  // namespace eomgen

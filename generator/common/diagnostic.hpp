@@ -49,4 +49,8 @@ std::string nearest_name(const std::string& word, const std::vector<std::string>
 std::string suggest(const std::string& word, const std::vector<std::string>& candidates,
                     const std::string& what);
 
+/// Shows a derivation's diagnostics on stderr, once, with the closing "nothing written" line;
+/// true when there were any.
+bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model_path);
+
 }  // namespace eomgen

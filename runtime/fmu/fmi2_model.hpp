@@ -5,6 +5,8 @@
 // integrator; Co-Simulation steps with CVODE (BDF, the analytic Jacobian, rtol from
 // fmi2SetupExperiment or 1e-8, restarted when a state, a parameter or an input is set from outside,
 // and otherwise continued across communication points). There are no events, integers, booleans or strings.
+// CVODE is compiled in only for Co-Simulation (EOMGEN_FMU_CO_SIMULATION): a Model Exchange FMU
+// needs no SUNDIALS on the importer's machine.
 #include <array>
 #include <cmath>
 #include <complex>
@@ -14,10 +16,12 @@
 #include <new>
 #include <string>
 
+#ifdef EOMGEN_FMU_CO_SIMULATION
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#endif
 
 #include "fmi2.h"
 
@@ -37,18 +41,21 @@ struct Instance {
   std::array<double, S> x = model::default_state;
   std::array<double, P> p = model::default_parameters;
   std::array<double, U> u = model::default_inputs;
+  bool cvode_current = false;  // false after a change of x, p or u from outside
+#ifdef EOMGEN_FMU_CO_SIMULATION
   // Co-Simulation: CVODE, made at the first step and after a change of x or p from outside
   SUNContext context = nullptr;
   void* cvode = nullptr;
   N_Vector y = nullptr;
   SUNMatrix matrix = nullptr;
   SUNLinearSolver solver = nullptr;
-  bool cvode_current = false;
+#endif
 
   void error(const std::string& message) const {
     if (logger) logger(environment, name.c_str(), fmi2Error, "error", "%s", message.c_str());
   }
   const double* inputs() const { return U ? u.data() : nullptr; }
+#ifdef EOMGEN_FMU_CO_SIMULATION
   void free_cvode() {
     if (cvode) CVodeFree(&cvode);
     if (solver) SUNLinSolFree(solver);
@@ -57,10 +64,14 @@ struct Instance {
     if (context) SUNContext_Free(&context);
     cvode = nullptr, solver = nullptr, matrix = nullptr, y = nullptr, context = nullptr, cvode_current = false;
   }
+#else
+  void free_cvode() {}
+#endif
 };
 
 Instance* as_instance(fmi2Component c) { return static_cast<Instance*>(c); }
 
+#ifdef EOMGEN_FMU_CO_SIMULATION
 extern "C" int cvode_rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   const Instance& in = *static_cast<const Instance*>(data);
   model::rhs(t, N_VGetArrayPointer(y), in.inputs(), in.p.data(), N_VGetArrayPointer(ydot));
@@ -98,6 +109,7 @@ bool start_cvode(Instance& in) {
   in.cvode_current = true;
   return true;
 }
+#endif
 
 fmi2Status get_real(const Instance& in, fmi2ValueReference r, double& value) {
   if (r < derivatives_from) value = in.x[r];
@@ -190,6 +202,14 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type kind, fmi2String guid, f
                         EOMGEN_FMU_GUID);
     return nullptr;
   }
+#ifndef EOMGEN_FMU_CO_SIMULATION
+  if (kind == fmi2CoSimulation) {
+    if (functions && functions->logger)
+      functions->logger(functions->componentEnvironment, name, fmi2Error, "error",
+                        "this FMU is for Model Exchange only: it was built without Co-Simulation's solver");
+    return nullptr;
+  }
+#endif
   Instance* in = new (std::nothrow) Instance;
   if (!in) return nullptr;
   in->name = name ? name : "";
@@ -316,6 +336,11 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
 }
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real current, fmi2Real step, fmi2Boolean) {
   Instance& in = *as_instance(c);
+#ifndef EOMGEN_FMU_CO_SIMULATION
+  (void)current, (void)step;
+  in.error("this FMU is for Model Exchange only: it has no solver to step with");
+  return fmi2Error;
+#else
   if (std::fabs(current - in.t) > 1e-12 * (1 + std::fabs(current))) in.t = current, in.cvode_current = false;
   if (!in.cvode_current && !start_cvode(in)) {
     in.error("CVODE could not be set up");
@@ -330,6 +355,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real current, fmi2Real step, fmi2Bool
     return fmi2Error;
   }
   return fmi2OK;
+#endif
 }
 fmi2Status fmi2CancelStep(fmi2Component) { return fmi2Error; }
 fmi2Status fmi2GetStatus(fmi2Component, const fmi2StatusKind, fmi2Status* s) {

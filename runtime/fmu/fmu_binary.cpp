@@ -18,7 +18,7 @@ extern const char* const fmi2_model_text;
 namespace fs = std::filesystem;
 
 std::string build_fmu_binary(const std::string& header_text, const std::string& name, const std::string& guid,
-                             const std::string& library_path) {
+                             const std::string& library_path, bool co_simulation) {
   fs::path work = fs::temp_directory_path() / fmt::format("eomgen-fmu-{}-{}", name, ::getpid());
   std::error_code ec;
   fs::remove_all(work, ec);
@@ -29,12 +29,11 @@ std::string build_fmu_binary(const std::string& header_text, const std::string& 
   std::ofstream(work / "fmi2_model.hpp") << fmi2_model_text;
   std::ofstream(work / "fmu.cpp") << fmt::format(
       "// the FMU binary of {0}, built by eomgen\n#include \"{0}.hpp\"\n#define EOMGEN_FMU_MODEL {0}\n"
-      "#define EOMGEN_FMU_GUID \"{1}\"\n#include \"fmi2_model.hpp\"\n",
-      name, guid);
+      "#define EOMGEN_FMU_GUID \"{1}\"\n{2}#include \"fmi2_model.hpp\"\n",
+      name, guid, co_simulation ? "#define EOMGEN_FMU_CO_SIMULATION\n" : "");
   std::string command = fmt::format(
-      "cd '{}' && '{}' -std=c++17 -O2 -fPIC -shared -o model.so fmu.cpp -lsundials_cvode "
-      "-lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense > compile.log 2>&1",
-      work.string(), cxx_compiler());
+      "cd '{}' && '{}' -std=c++17 -O2 -fPIC -shared -o model.so fmu.cpp {} > compile.log 2>&1", work.string(), cxx_compiler(),
+      co_simulation ? "-lsundials_cvode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense" : "");
   if (std::system(command.c_str()) != 0) {
     std::ifstream log(work / "compile.log");
     std::ostringstream first;

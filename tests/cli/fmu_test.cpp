@@ -253,6 +253,37 @@ TEST(Fmu, AModelWithoutOutputsIsWarnedAbout) {
   EXPECT_NE(built.err.find("warning: the model has no [outputs]"), std::string::npos) << built.err;
 }
 
+TEST(Fmu, AModelExchangeBinaryNeedsNoSundials) {
+  // Model Exchange hands x' to the importer's integrator: its binary carries no CVODE, and
+  // refuses to be instantiated for Co-Simulation; the binary of both links CVODE
+  std::string directory = temporary_directory();
+  CommandOutput built = run_eomgen("fmu '" + model_path("damped_two_mass_oscillator") + "' --kind me -o '" + directory + "'");
+  ASSERT_EQ(built.status, 0) << built.err;
+  std::string unzip = "python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' '";
+  ASSERT_EQ(run_command(unzip + directory + "/damped_two_mass_oscillator.fmu' '" + directory + "/me'"), 0);
+  std::string binary = directory + "/me/binaries/linux64/damped_two_mass_oscillator.so";
+  ASSERT_EQ(run_command("readelf -d '" + binary + "' > '" + directory + "/needed.txt'"), 0);
+  std::string needed = read_file(directory + "/needed.txt");
+  EXPECT_NE(needed.find("NEEDED"), std::string::npos) << needed;
+  EXPECT_EQ(needed.find("sundials"), std::string::npos) << needed;
+  Fmi2 f;
+  load(f, binary);
+  Unpacked u;
+  u.guid = read_file(directory + "/me/modelDescription.xml");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(u.guid, m, std::regex("guid=\"([^\"]+)\"")));
+  u.guid = m[1];
+  EXPECT_EQ(f.instantiate("test", fmi2CoSimulation, u.guid.c_str(), "", &callbacks, fmi2False, fmi2False), nullptr);
+  fmi2Component me = f.instantiate("test", fmi2ModelExchange, u.guid.c_str(), "", &callbacks, fmi2False, fmi2False);
+  ASSERT_NE(me, nullptr);
+  f.free_instance(me);
+  Unpacked both = build_and_unpack("damped_two_mass_oscillator", "damped_two_mass_oscillator");
+  ASSERT_EQ(run_command("readelf -d '" + both.directory + "/unzipped/binaries/linux64/damped_two_mass_oscillator.so' > '" +
+                        directory + "/needed_both.txt'"),
+            0);
+  EXPECT_NE(read_file(directory + "/needed_both.txt").find("libsundials_cvode"), std::string::npos);
+}
+
 TEST(Fmu, TheDescriptionNamesWhatTheBinaryComputes) {
   Unpacked u = build_and_unpack("cart_pendulum", "cart_pendulum");
   const std::string& d = u.description;

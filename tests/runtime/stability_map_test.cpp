@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "analyse/equilibrium.hpp"
-#include "analyse/stability_conditions.hpp"
+#include "symbolic_analysis/stability_conditions.hpp"
 #include "analyse/stability_map.hpp"
 #include "generated/header_registry.hpp"
 #include "support/test_support.hpp"

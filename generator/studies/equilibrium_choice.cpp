@@ -1,0 +1,100 @@
+/// @file The equilibrium a stability analysis is about: one named by --at (checked), or one
+/// searched for from the model's initial state; and the models the analyses refuse.
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "analyse/equilibrium.hpp"
+#include "analyse/state_check.hpp"
+#include "studies/equilibrium_choice.hpp"
+#include "studies/exit_status.hpp"
+#include "studies/loaded_problem.hpp"
+#include "studies/routh_reduction.hpp"
+#include "studies/stability_report.hpp"
+#include "symbolic_analysis/stability_conditions.hpp"
+
+namespace eomgen::studies {
+
+namespace {
+
+// the state an --at list names: given values, other coordinates as in the model, other velocities zero
+std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, const std::vector<double>& initial,
+                                                 const std::vector<std::string>& at) {
+  std::vector<double> x = initial;
+  for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) x[i] = 0;
+  if (!assign_states(m, at, "--at", x)) return std::nullopt;
+  return x;
+}
+
+}  // namespace
+
+std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic,
+                                      bool on_manifold) {
+  // stability and sweep analyse a Lagrange I model on its constraint manifold; the symbolic
+  // conditions and `linear` need independent coordinates
+  if (loaded.equations.has_multipliers && (symbolic || !on_manifold)) {
+    std::cerr << fmt::format("eomgen: error: {} is a Lagrange I model: its coordinates are not independent{}\n  hint: "
+                             "derive it with method = \"appell\" (independent pseudo-velocities){}\n", model,
+                             symbolic ? ", and symbolic conditions need them" : "",
+                             symbolic ? ", or leave out --symbolic (the numeric analysis works on the constraint manifold)" : "");
+    return exit_user_error;
+  }
+  if (symbolic && !loaded.equations.intermediates.empty()) {
+    std::cerr << fmt::format("eomgen: error: {}: symbolic stability conditions differentiate equations written out in q; "
+                             "those of recursive kinematics hold the frames' quantities\n  hint: use kinematics = "
+                             "\"expanded\", or leave out --symbolic (the numeric analysis works from the generated code)\n",
+                             model);
+    return exit_user_error;
+  }
+  if (symbolic && loaded.equations.uses_pseudo_velocities()) {
+    std::cerr << "eomgen: error: symbolic stability conditions need the second-order form M q'' + P q' + Q q; Appell "
+                 "models are analysed numerically (leave out --symbolic)\n";
+    return exit_user_error;
+  }
+  return std::nullopt;
+}
+
+// a state where M or f is not finite, or M is singular, has no meaningful linearization
+std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vector<double>& x, const char* which) {
+  std::string why = runtime::unfit_state(problem, 0.0, x);
+  if (why.empty()) return std::nullopt;
+  std::cerr << fmt::format("eomgen: error: no stability analysis at {}: {}\n", which, why);
+  return exit_numerical_failure;
+}
+
+std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at_texts,
+                                  const std::vector<double>& initial, runtime::Equilibrium& out) {
+  const eomgen_model_abi& m = *problem.model;
+  if (!at_texts.empty()) {
+    auto x = state_from_at(m, initial, at_texts);
+    if (!x) return exit_user_error;
+    if (auto status = refuse_unfit(problem, *x, "the state given by --at")) return status;
+    out = runtime::check_equilibrium(problem, *x);
+    if (!out.moving.empty()) {
+      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: {} moves a coordinate that "
+                               "is not cyclic, so the configuration and with it the forces change\n  hint: only cyclic "
+                               "coordinates (ones no equation depends on) may move in a steady motion; leave out --at "
+                               "to search for an equilibrium\n", out.moving);
+      return exit_user_error;
+    }
+    if (!out.converged) {
+      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: the largest residual of "
+                               "the equations of motion is {:.3g} (tolerance {:.3g})\n  hint: leave out --at to search "
+                               "for one from the model's initial values\n", out.residual, out.tolerance);
+      return exit_user_error;
+    }
+    return std::nullopt;
+  }
+  if (auto status = refuse_unfit(problem, initial, "the model's initial state (where the search starts)")) return status;
+  out = runtime::find_equilibrium(problem, initial);
+  if (!out.converged) {
+    std::cerr << fmt::format("eomgen: no equilibrium found near the model's initial values after {} Newton steps "
+                             "(largest residual {:.3g})\n  hint: name one with --at q=VALUE (and --at 'der(q)=VALUE' for a "
+                             "steady motion)\n", out.iterations, out.residual);
+    return exit_numerical_failure;
+  }
+  return refuse_unfit(problem, out.state, "the equilibrium found");
+}
+
+}  // namespace eomgen::studies
