@@ -52,7 +52,7 @@ void print_eigenvalue_sweep_text(const runtime::EigenvalueSweep& s, const std::s
                            "{:.3f} s on {}\n",
                            model, parameter, s.axis.low, s.axis.high, s.axis.count, found, s.seconds, ranks.description());
   if (s.crossings.empty()) std::cout << "  no eigenvalue crosses the imaginary axis in this range\n";
-  else std::cout << "  crossings of the imaginary axis:\n";
+  else std::cout << fmt::format("  crossings of the imaginary axis (each bisected to within {:.2g}):\n", s.resolution);
   for (const runtime::AxisCrossing& c : s.crossings) std::cout << "    " << crossing_text(c, parameter) << "\n";
   if (s.stable.empty()) std::cout << "  asymptotically stable nowhere in this range\n";
   for (const runtime::StableInterval& i : s.stable) std::cout << "  asymptotically stable for " << interval_text(i, parameter) << "\n";
@@ -77,10 +77,10 @@ void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::s
   for (const runtime::StableInterval& i : s.marginal)
     marginal += fmt::format("{}{{\"low\": {}, \"high\": {}}}", marginal.empty() ? "" : ", ", json_number(i.low), json_number(i.high));
   std::cout << fmt::format("{{\"model\": {}, \"parameter\": {}, \"from\": {}, \"to\": {}, \"points\": {}, "
-                           "\"crossings\": [{}], \"stable_intervals\": [{}], \"marginal_intervals\": [{}], \"seconds\": {}, "
+                           "\"crossings\": [{}], \"crossing_resolution\": {}, \"stable_intervals\": [{}], \"marginal_intervals\": [{}], \"seconds\": {}, "
                            "\"interrupted\": {}, \"ranks\": {}}}\n",
                            json_quoted(model), json_quoted(parameter), json_number(s.axis.low), json_number(s.axis.high), s.axis.count,
-                           crossings, intervals, marginal, json_number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
+                           crossings, json_number(s.resolution), intervals, marginal, json_number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
 }
 
 }  // namespace eomgen::studies

@@ -61,6 +61,7 @@ std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start,
   if (std::isnan(at_lo.real()) || std::isnan(at_hi.real())) return std::nullopt;
   while (hi - lo > resolution) {
     double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;  // the doubles between lo and hi are exhausted
     Problem p = at_value(base, parameter, mid);
     PointResult r = analyse_point(p, start(p.parameters), fixed);
     if (!r.found) return std::nullopt;
@@ -75,7 +76,11 @@ std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start,
   AxisCrossing c;
   c.parameter = 0.5 * (lo + hi);
   c.eigenvalue = {0.0, l.imag()};
-  c.oscillatory = std::abs(l.imag()) > std::sqrt(std::max(more.tolerance, 1e-300));
+  // a real double root splits into ±√(rounding): a pair is oscillatory beyond √(tolerance · |λ|max),
+  // which scales with the eigenvalues as they do (√tolerance alone does not)
+  double radius = 0;
+  for (auto e : more.eigenvalues) radius = std::max(radius, std::abs(e));
+  c.oscillatory = std::abs(l.imag()) > std::sqrt(std::max(more.tolerance * radius, 1e-300));
   c.destabilizing = rising;
   return c;
 }
@@ -165,6 +170,9 @@ void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartS
     return CountedSpectrum{s.eigenvalues[k], s.verdicts[k], 0.0, s.tolerances[k]};
   };
   s.crossings.clear();
+  // relative to the sweep's width: an absolute width would be coarser than a sweep over 1e-12
+  // and, beside parameters of 1e12, finer than the doubles there
+  s.resolution = resolution * (s.axis.high - s.axis.low);
   for (std::size_t k = 0; k + 1 < std::size_t(s.axis.count); ++k) {
     if (s.verdicts[k].empty() || s.verdicts[k + 1].empty()) continue;
     CountedSpectrum a = spectrum_at(k), b = spectrum_at(k + 1);
@@ -172,7 +180,7 @@ void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartS
     // count: the grid must be fine enough to see them apart
     if (unstable_count(a) == unstable_count(b)) continue;
     if (auto c = bisect(base, start, fixed, s.axis.parameter, s.axis.value(int(k)), a, s.axis.value(int(k) + 1), b,
-                        resolution))
+                        s.resolution))
       s.crossings.push_back(*c);
   }
   s.stable = intervals_of(s, "asymptotically_stable");

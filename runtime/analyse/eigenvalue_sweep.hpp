@@ -18,7 +18,7 @@
 namespace eomgen::runtime {
 
 struct AxisCrossing {
-  double parameter = 0;                 // where Re λ = 0, bisected to `resolution`
+  double parameter = 0;                 // where Re λ = 0, bisected to EigenvalueSweep::resolution
   std::complex<double> eigenvalue;      // the crossing eigenvalue there (Im ≥ 0)
   bool oscillatory = false;             // a complex pair (Hopf), else a real eigenvalue through 0
   bool destabilizing = false;           // Re λ goes from < 0 to > 0 as the parameter grows
@@ -37,6 +37,7 @@ struct EigenvalueSweep {
   std::vector<std::string> verdicts;  // per point, empty where none was found
   std::vector<double> tolerances;     // per point: within it a real part counts as zero (NaN where none)
   std::vector<AxisCrossing> crossings;
+  double resolution = 0;  // each crossing is bisected to within this, in the parameter
   std::vector<StableInterval> stable;
   std::vector<StableInterval> marginal;  // runs of points that are only marginally stable (ends at grid points)
   bool interrupted = false;
@@ -49,7 +50,8 @@ using StartState = std::function<std::optional<std::vector<double>>(const std::v
 
 /// Sweeps `axis` on `threads` threads (0: all cores). At each point the equilibrium (or
 /// steady motion) is found from `start`, or only checked when `fixed`. Crossings are
-/// bisected to `resolution` in the parameter. With `points` less than the whole axis (a
+/// bisected to `resolution` times the axis' width (high − low), or to the doubles there.
+/// With `points` less than the whole axis (a
 /// share of a distributed sweep) only those points are computed, and the crossings are
 /// left to `locate_axis_crossings` once every share is in.
 EigenvalueSweep sweep_eigenvalues(const Problem& base, const StartState& start, bool fixed, SweepAxis axis,

@@ -34,8 +34,11 @@ double crossing_time(const std::vector<double>& t, const std::vector<double>& v,
   };
   double lo = t[k], hi = t[k + 1];
   if (p(hi) < 0) return lo + (hi - lo) * (level - v[k]) / (v[k + 1] - v[k]);  // the cubic overshoots: linear
-  for (int i = 0; i < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++i) {
+  // to the doubles between lo and hi, whatever the time scale (a floor of 1e-15 s left runs of
+  // picoseconds a single step of bisection)
+  for (int i = 0; i < 200; ++i) {
     double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
     (p(mid) < 0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);

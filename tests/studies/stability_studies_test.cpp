@@ -3,11 +3,14 @@
 // Floquet analysis, Routh's reduction and the linear report, each against its closed form.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <regex>
 
 #include <fmt/format.h>
 
+#include "analyse/eigenvalue_sweep.hpp"
+#include "derive/initial_state.hpp"
 #include "studies/equilibrium_choice.hpp"
 #include "studies/linear_report.hpp"
 #include "studies/periodic_stability.hpp"
@@ -122,6 +125,80 @@ TEST(SweepAxes, EveryCharacterOfEachFieldIsRead) {
   StudyOutput misspelt = run_study([&] { return parse_axis(m, "kk=0:1:3", name) ? 0 : 2; });
   EXPECT_EQ(misspelt.status, 2);
   EXPECT_NE(misspelt.err.find("did you mean 'k'"), std::string::npos) << misspelt.err;
+}
+
+// The sleeping top in Cardan angles, spinning at c' = w about its upright axis: the steady motion
+// is stable when C² w² > 4 (A + m s²) m g s (Maievskii's criterion), w > 67.054 rad/s here, and
+// then only marginally (gyroscopic stabilization, no damping)
+const char* const sleeping_top = R"toml(
+[model]
+name = "sleeping_top"
+title = "a heavy symmetric top spinning upright about a fixed point"
+[parameters]
+m = 0.5
+s = 0.05
+A = 0.0004
+C = 0.0006
+g = 9.81
+w = 80.0
+[coordinates]
+a = 0.0
+b = 0.0
+c = { initial = 0.0, rate = "w" }
+[[rigid_bodies]]
+name = "top"
+mass = "m"
+center = ["s*sin(b)", "-s*sin(a)*cos(b)", "s*cos(a)*cos(b)"]
+rotation = "cardan123(a, b, c)"
+inertia = ["A", "A", "C"]
+[gravity]
+acceleration = ["0", "0", "-g"]
+)toml";
+
+double maievskii_speed() { return 2 * std::sqrt((0.0004 + 0.5 * 0.05 * 0.05) * 0.5 * 9.81 * 0.05) / 0.0006; }
+
+TEST(StabilityStudy, TheSleepingTopIsStableAboveMaievskiisSpeedAndOnlyMarginally) {
+  std::string path = write_study_model("sleeping_top", sleeping_top);
+  ASSERT_NEAR(maievskii_speed(), 67.054, 1e-3);
+  for (double w : {0.95 * maievskii_speed(), 1.05 * maievskii_speed()}) {
+    StabilityOptions o;
+    o.model = path;
+    o.sets = {fmt::format("w={:.17g}", w)};
+    o.json = true;
+    StudyOutput r = run_study([&] { return stability(o); });
+    ASSERT_EQ(r.status, exit_success) << r.err;
+    EXPECT_EQ(verdict_in(r.out), w < maievskii_speed() ? "unstable" : "marginally_stable") << "w = " << w << "\n" << r.out;
+  }
+  // w sets only the initial spin: no condition can be stated in it
+  StabilityOptions symbolic;
+  symbolic.model = path;
+  symbolic.symbolic = "w";
+  StudyOutput refused = run_study([&] { return stability(symbolic); });
+  EXPECT_EQ(refused.status, exit_user_error);
+  EXPECT_NE(refused.err.find("appears neither in the characteristic polynomial"), std::string::npos) << refused.err;
+}
+
+TEST(SweepStudy, TheSleepingTopsSweepEndsItsUnstableRunAtTheCrossingAndSaysMarginal) {
+  LoadedProblem loaded = load(write_study_model("sleeping_top", sleeping_top));
+  const eomgen_model_abi& m = *loaded.compiled->abi();
+  std::string name;
+  std::optional<runtime::SweepAxis> axis = parse_axis(m, "w=40:100:7", name);
+  ASSERT_TRUE(axis);
+  runtime::StartState spinning = [&](const std::vector<double>& parameters) {
+    std::string failed;
+    return initial_state(loaded.equations, parameters, failed);
+  };
+  std::atomic<bool> stop{false};
+  runtime::EigenvalueSweep sweep =
+      runtime::sweep_eigenvalues(loaded.problem, spinning, false, *axis, 1e-10, 1, [](long, long) {}, stop);
+  ASSERT_EQ(sweep.crossings.size(), 1u);
+  EXPECT_NEAR(sweep.crossings[0].parameter, maievskii_speed(), 1e-6);
+  EXPECT_LE(sweep.resolution, 6e-9);
+  EXPECT_TRUE(sweep.stable.empty()) << "no damping: never asymptotically stable";
+  ASSERT_EQ(sweep.marginal.size(), 1u);
+  EXPECT_EQ(sweep.marginal[0].low, 70.0);
+  EXPECT_EQ(sweep.marginal[0].high, 100.0);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(sweep.verdicts[std::size_t(k)], "unstable") << axis->value(k);
 }
 
 TEST(PeriodicStudy, TheMonodromyOfMathieuWithoutExcitationIsTheClosedForm) {
