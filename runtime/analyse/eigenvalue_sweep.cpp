@@ -36,51 +36,60 @@ int unstable_count(const CountedSpectrum& s) {
   return n;
 }
 
-// the eigenvalue (Im ≥ 0) of `s` nearest to `near`
-std::complex<double> nearest(const CountedSpectrum& s, std::complex<double> near) {
-  std::complex<double> best = NAN;
-  for (auto l : s.eigenvalues) {
-    std::complex<double> upper(l.real(), std::abs(l.imag()));
-    if (std::isnan(best.real()) || std::abs(upper - near) < std::abs(best - near)) best = upper;
-  }
-  return best;
+// Eigenvalues to the right of the axis beyond their own rounding (ε·|A|·κ: large for a cluster at
+// zero, a nearly defective pair) and beyond 1e-4 of the verdicts' tolerance: a crossing is then
+// found to the rounding of the eigenvalue that crosses
+bool right_of_axis(const CountedSpectrum& s, std::size_t i) {
+  double rounding = i < s.errors.size() ? s.errors[i] : 0.0;
+  return s.eigenvalues[i].real() > std::max(1e-4 * s.tolerance, rounding);
 }
 
-// The eigenvalue that crosses between a and b: at the more unstable end the unstable one
-// nearest the axis, followed by continuity; Re λ is then bisected to `resolution`.
+int right_of_axis(const CountedSpectrum& s) {
+  int n = 0;
+  for (std::size_t i = 0; i < s.eigenvalues.size(); ++i) n += right_of_axis(s, i);
+  return n;
+}
+
+// The crossing between a and b: bisected on the number of eigenvalues to the right of the axis,
+// which does not depend on telling one eigenvalue from another (following the nearest one jumped
+// to a neighbouring mode of nearly the same frequency), to `resolution` or to the doubles there.
+// The crossing eigenvalue is then the one nearest the axis on the unstable side of the bracket.
 std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start, bool fixed, int parameter, double a,
                                    const CountedSpectrum& sa, double b, const CountedSpectrum& sb, double resolution) {
   bool rising = unstable_count(sb) > unstable_count(sa);
-  const CountedSpectrum& more = rising ? sb : sa;
-  std::complex<double> tracked = NAN;
-  for (auto l : more.eigenvalues)
-    if (l.real() > more.tolerance && l.imag() >= 0 && (std::isnan(tracked.real()) || l.real() < tracked.real())) tracked = l;
-  if (std::isnan(tracked.real())) return std::nullopt;
-  double lo = a, hi = b;  // Re λ < 0 on the stable side of [lo, hi]
-  std::complex<double> at_lo = rising ? nearest(sa, tracked) : tracked, at_hi = rising ? tracked : nearest(sb, tracked);
-  if (std::isnan(at_lo.real()) || std::isnan(at_hi.real())) return std::nullopt;
+  double lo = a, hi = b;
+  // the sweep keeps its points' eigenvalues, not their rounding: the ends once more, with it
+  PointResult first = analyse_point(at_value(base, parameter, a), start(at_value(base, parameter, a).parameters), fixed),
+              last = analyse_point(at_value(base, parameter, b), start(at_value(base, parameter, b).parameters), fixed);
+  if (!first.found || !last.found) return std::nullopt;
+  CountedSpectrum at_lo = first.spectrum, at_hi = last.spectrum;
+  int count_lo = right_of_axis(at_lo), count_hi = right_of_axis(at_hi);
+  if (count_lo == count_hi) return std::nullopt;  // the change is within the verdicts' tolerance only
   while (hi - lo > resolution) {
     double mid = 0.5 * (lo + hi);
     if (!(mid > lo && mid < hi)) break;  // the doubles between lo and hi are exhausted
     Problem p = at_value(base, parameter, mid);
     PointResult r = analyse_point(p, start(p.parameters), fixed);
     if (!r.found) return std::nullopt;
-    std::complex<double> l = nearest(r.spectrum, 0.5 * (at_lo + at_hi));
-    // above the rounding of eigenvalues near a cluster at zero (1e-13 of |A|), far below
-    // the tolerance of the verdicts, so the crossing is found to the rounding of Re λ
-    bool unstable_side = l.real() > 1e-4 * r.spectrum.tolerance;
-    if (unstable_side == rising) hi = mid, at_hi = l;
-    else lo = mid, at_lo = l;
+    int count = right_of_axis(r.spectrum);
+    if (std::abs(count - count_lo) <= std::abs(count - count_hi)) lo = mid, at_lo = r.spectrum;
+    else hi = mid, at_hi = r.spectrum;
   }
-  std::complex<double> l = 0.5 * (at_lo + at_hi);
+  const CountedSpectrum& unstable_end = rising ? at_hi : at_lo;
+  std::complex<double> l = NAN;
+  for (std::size_t i = 0; i < unstable_end.eigenvalues.size(); ++i)
+    if (auto e = unstable_end.eigenvalues[i];
+        right_of_axis(unstable_end, i) && e.imag() >= 0 && (std::isnan(l.real()) || e.real() < l.real()))
+      l = e;
+  if (std::isnan(l.real())) return std::nullopt;
   AxisCrossing c;
   c.parameter = 0.5 * (lo + hi);
   c.eigenvalue = {0.0, l.imag()};
   // a real double root splits into ±√(rounding): a pair is oscillatory beyond √(tolerance · |λ|max),
   // which scales with the eigenvalues as they do (√tolerance alone does not)
   double radius = 0;
-  for (auto e : more.eigenvalues) radius = std::max(radius, std::abs(e));
-  c.oscillatory = std::abs(l.imag()) > std::sqrt(std::max(more.tolerance * radius, 1e-300));
+  for (auto e : unstable_end.eigenvalues) radius = std::max(radius, std::abs(e));
+  c.oscillatory = std::abs(l.imag()) > std::sqrt(std::max(unstable_end.tolerance * radius, 1e-300));
   c.destabilizing = rising;
   return c;
 }
@@ -167,7 +176,7 @@ EigenvalueSweep sweep_eigenvalues(const Problem& base, const StartState& start, 
 
 void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartState& start, bool fixed, double resolution) {
   auto spectrum_at = [&](std::size_t k) {
-    return CountedSpectrum{s.eigenvalues[k], s.verdicts[k], 0.0, s.tolerances[k]};
+    return CountedSpectrum{s.eigenvalues[k], s.verdicts[k], 0.0, s.tolerances[k], {}};
   };
   s.crossings.clear();
   // relative to the sweep's width: an absolute width would be coarser than a sweep over 1e-12

@@ -111,10 +111,11 @@ struct Verdict {
   double degree;
   int cyclic_zeros;
   std::vector<std::complex<double>> counted;  // the eigenvalues without the cyclic zeros
+  std::vector<double> errors;                 // their own rounding
 };
 
 Verdict judge(const Spectrum& s, int cyclic) {
-  Verdict v{"asymptotically_stable", -INFINITY, 0, {}};
+  Verdict v{"asymptotically_stable", -INFINITY, 0, {}, {}};
   std::vector<std::size_t> on_axis;
   for (std::size_t i = 0; i < s.eigenvalues.size(); ++i) {
     std::complex<double> l = s.eigenvalues[i];
@@ -124,6 +125,7 @@ Verdict judge(const Spectrum& s, int cyclic) {
       continue;
     }
     v.counted.push_back(l);
+    v.errors.push_back(s.errors[i]);
     // on the axis within rounding: exactly 0, so an undamped point never counts as decaying
     v.degree = std::max(v.degree, s.on_axis(i) ? 0.0 : l.real());
     if (s.on_axis(i)) on_axis.push_back(i);
@@ -412,7 +414,7 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
 CountedSpectrum counted_spectrum(const Eigen::MatrixXd& A, int cyclic) {
   Spectrum sp = spectrum(A);
   Verdict v = judge(sp, cyclic);
-  return {v.counted, v.verdict, v.degree, sp.tolerance};
+  return {v.counted, v.verdict, v.degree, sp.tolerance, v.errors};
 }
 
 double stability_degree(const Problem& problem, const std::vector<double>& x) { return counted_spectrum(problem, x).degree; }

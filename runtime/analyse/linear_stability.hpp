@@ -64,6 +64,7 @@ struct CountedSpectrum {
   std::vector<std::complex<double>> eigenvalues;
   std::string verdict;
   double degree = 0, tolerance = 0;
+  std::vector<double> errors;  // each eigenvalue's own rounding, ε·|A|·κ (κ its condition number)
 };
 CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<double>& x);
 /// The same for a given first-order matrix A with `cyclic` zero eigenvalues of conserved
