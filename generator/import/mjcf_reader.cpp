@@ -1,5 +1,6 @@
 #include "import/mjcf_reader.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
@@ -85,6 +86,10 @@ void read_actuators(const mjModel* m, Robot& r) {
     act.range = {m->actuator_ctrlrange[2 * a], m->actuator_ctrlrange[2 * a + 1]};
     r.actuators.push_back(act);
   }
+  long clamped = std::count_if(r.actuators.begin(), r.actuators.end(), [](const RobotActuator& a) { return a.limited; });
+  if (clamped)
+    r.warnings.push_back(fmt::format("{} actuator(s) with a control range (ctrllimited): MuJoCo clamps their controls to it, "
+                                     "eomgen's inputs are not clamped (each range is written beside its input)", clamped));
 }
 
 }  // namespace

@@ -40,6 +40,11 @@ class Names {
     for (int k = 2; !used_.insert(out).second; ++k) out = fmt::format("{}_{}", name, k);
     return out;
   }
+  /// `wanted`, or when that is taken `wanted`_`kind` (a motor named after its joint: knee_motor)
+  std::string take(const std::string& wanted, const std::string& kind) {
+    std::string name = identifier_of(wanted);
+    return used_.count(name) ? take(name + "_" + kind) : take(name);
+  }
 
  private:
   std::set<std::string> used_{"t", "der", "Pi", "g"};
@@ -244,7 +249,7 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
   std::map<std::string, std::string> forces;
   std::vector<std::string> order;
   for (const RobotActuator& a : robot.actuators) {
-    std::string u = names.take(a.name);
+    std::string u = names.take(a.name, "motor");
     out.inputs += u + " = 0" +
                   (a.limited ? fmt::format("  # control range [{}, {}] in the file: not enforced", format_number(a.range[0]), format_number(a.range[1])) : "") +
                   "\n";

@@ -17,30 +17,13 @@
 #include "studies/split_output.hpp"
 #include "studies/trajectory_output.hpp"
 #include "study_support.hpp"
+#include "support/small_models.hpp"
 
 namespace eomgen::test {
 namespace {
 
 using namespace eomgen::studies;
 
-const char* const pushed_mass = R"toml(
-[model]
-name = "pushed_mass"
-title = "a free mass pushed by an input force"
-[parameters]
-m = 2.0
-[inputs]
-F = 0.0
-[coordinates]
-x = 0.0
-[[particles]]
-name = "body"
-mass = "m"
-position = ["x", "0", "0"]
-[[forces]]
-at = ["x", "0", "0"]
-force = ["F", "0", "0"]
-)toml";
 
 LoadedProblem load(const std::string& path) {
   LoadedProblem loaded;
@@ -56,7 +39,7 @@ double input_at(const LoadedProblem& loaded, double t) {
 }
 
 TEST(InputSignal, AnExpressionInTimeAndTheParameters) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass));
+  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
   double end = INFINITY;
   StudyOutput r = run_study([&] { return set_input_signal(loaded, {"F=3*sin(2*t)*m"}, "", end).value_or(exit_success); });
   ASSERT_EQ(r.status, exit_success) << r.err;
@@ -70,7 +53,7 @@ TEST(InputSignal, AnExpressionInTimeAndTheParameters) {
 }
 
 TEST(InputSignal, ATableIsInterpolatedLinearlyAndHeldBeyondItsEnds) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass));
+  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
   std::string dir = temporary_directory();
   std::ofstream(dir + "/u.csv") << "t,F\n0,0\n1,1\n5,3\n";
   double end = INFINITY;
@@ -88,7 +71,7 @@ TEST(InputSignal, ATableIsInterpolatedLinearlyAndHeldBeyondItsEnds) {
 }
 
 TEST(EnsembleFlags, VariationsMeasuresAndQuantiles) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass));
+  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
   const eomgen_model_abi& m = *loaded.compiled->abi();
   auto mass = parse_variation(m, "m=normal(2,0.05)");
   ASSERT_TRUE(mass);
@@ -130,7 +113,7 @@ runtime::Trajectory rows_from(double t0, int count) {
 }
 
 TEST(TrajectoryOutput, TheCsvIsWholeOrAbsent) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass));
+  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
   const eomgen_model_abi& m = *loaded.compiled->abi();
   std::string csv = temporary_directory() + "/run.csv";
   {
@@ -204,7 +187,7 @@ TEST(FmuStudy, ALagrangeIModelIsRefusedAndNothingIsWritten) {
 }
 
 TEST(SceneRuns, OutputsByNameAndTheirRange) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass));
+  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
   runtime::Trajectory rows = rows_from(0, 4);
   std::string missing;
   auto outputs = scene_outputs(*loaded.compiled->abi(), rows, {"x", "der(x)"}, missing);

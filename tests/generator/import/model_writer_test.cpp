@@ -69,6 +69,7 @@ Robot two_armed_robot() {
   hand.joints.push_back(wrist);
   r.bodies = {base, arm, hand};
   r.actuators.push_back({"pitch motor", 1, 0, 25, true, {-1, 1}});
+  r.actuators.push_back({"yaw", 1, 1, 10, false, {0, 0}});  // named after its joint, as robot files often do
   r.sites.push_back({"tip", 2, {0, 0, -0.05}});
   r.warnings.push_back("1 tendon(s): not carried");
   // qpos: root (7), pitch, yaw, wrist (4); qvel: root (6), pitch, yaw, wrist (3)
@@ -93,7 +94,8 @@ TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   EXPECT_TRUE(has(text, "kinetic = \"(0.05*der(pitch)^2 + 0.05*der(yaw)^2)/2\"")) << text;
   EXPECT_TRUE(has(text, "1.6*(der(wrist_qw)^2 + der(wrist_qx)^2 + der(wrist_qy)^2 + der(wrist_qz)^2)")) << text;
   EXPECT_TRUE(has(text, "potential = \"(2*(pitch - 0.25)^2 + 2*(yaw - 0.25)^2)/2\"")) << text;
-  EXPECT_TRUE(has(text, "generalized = { pitch = \"25*pitch_motor\" }")) << text;
+  EXPECT_TRUE(has(text, "generalized = { pitch = \"25*pitch_motor\", yaw = \"10*yaw_motor\" }")) << text;
+  EXPECT_TRUE(has(text, "\nyaw_motor = 0\n")) << "a motor named after its joint: " << text;
   EXPECT_TRUE(has(text, "[[points]]\nname = \"tip\"\nframe = \"arm_2\"\nposition = [\"0\", \"0\", \"-0.05\"]")) << text;
   EXPECT_EQ(identifier_of("2nd link-b"), "_2nd_link_b");
   // a keyframe is a scene's initial state, a quaternion's rates from ω: q' = ½ q ⊗ (0, ω)
