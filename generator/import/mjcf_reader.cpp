@@ -51,9 +51,15 @@ RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* q
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
   if (m->ntendon) r.warnings.push_back(fmt::format("{} tendon(s): not carried (a tendon's length is no joint)", m->ntendon));
-  for (int e = 0; e < m->neq; ++e)
-    r.warnings.push_back(fmt::format("equality constraint '{}': not carried (closed loops are not imported yet)",
-                                     name_of(m, m->name_eqadr, e)));
+  static const char* const kinds[] = {"connect", "weld", "joint", "tendon", "distance"};
+  for (int e = 0; e < m->neq; ++e) {
+    std::string name = name_of(m, m->name_eqadr, e);
+    int type = m->eq_type[e];
+    r.warnings.push_back(fmt::format("equality constraint {} ({}): not carried (closed loops and coupled joints are not "
+                                     "imported yet)",
+                                     name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
+                                     type >= 0 && type < 5 ? kinds[type] : "of another kind"));
+  }
   bool contacts = !(m->opt.disableflags & mjDSBL_CONTACT);
   int colliding = 0;
   for (int g = 0; g < m->ngeom && contacts; ++g) colliding += m->geom_contype[g] || m->geom_conaffinity[g];
@@ -67,14 +73,16 @@ void read_actuators(const mjModel* m, Robot& r) {
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
     if (name.empty()) name = fmt::format("actuator{}", a);
-    bool on_joint = m->actuator_trntype[a] == mjTRN_JOINT, plain = m->actuator_dyntype[a] == mjDYN_NONE &&
-                                                                 m->actuator_gaintype[a] == mjGAIN_FIXED &&
-                                                                 m->actuator_biastype[a] == mjBIAS_NONE;
+    // a motor, or a servo whose force is affine in the control, the joint's position and its rate
+    bool on_joint = m->actuator_trntype[a] == mjTRN_JOINT,
+         plain = m->actuator_dyntype[a] == mjDYN_NONE && m->actuator_gaintype[a] == mjGAIN_FIXED &&
+                 (m->actuator_biastype[a] == mjBIAS_NONE || m->actuator_biastype[a] == mjBIAS_AFFINE);
     int j = m->actuator_trnid[2 * a];
     int type = on_joint ? m->jnt_type[j] : -1;
     if (!on_joint || !plain || type == mjJNT_BALL || type == mjJNT_FREE) {
-      r.warnings.push_back(fmt::format("actuator '{}': only a motor on a hinge or slide (a force gain × gear × control, "
-                                       "no bias, no dynamics) is carried; it is left out", name));
+      r.warnings.push_back(fmt::format("actuator '{}': only motors and servos on a hinge or slide (a force affine in the "
+                                       "control, the joint's position and its rate; no dynamics) are carried; it is left out",
+                                       name));
       continue;
     }
     RobotActuator act;
@@ -84,6 +92,12 @@ void read_actuators(const mjModel* m, Robot& r) {
     act.gain = m->actuator_gainprm[mjNGAIN * a] * m->actuator_gear[6 * a];
     act.limited = m->actuator_ctrllimited[a];
     act.range = {m->actuator_ctrlrange[2 * a], m->actuator_ctrlrange[2 * a + 1]};
+    act.gear = m->actuator_gear[6 * a];
+    if (m->actuator_biastype[a] == mjBIAS_AFFINE)
+      act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
+    if (m->actuator_forcelimited[a])
+      r.warnings.push_back(fmt::format("actuator '{}': MuJoCo clamps its force to [{}, {}] (forcelimited); eomgen does not",
+                                       name, m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]));
     r.actuators.push_back(act);
   }
   long clamped = std::count_if(r.actuators.begin(), r.actuators.end(), [](const RobotActuator& a) { return a.limited; });

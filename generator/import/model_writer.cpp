@@ -10,12 +10,15 @@
 #include "import/mjcf_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <variant>
 #include <map>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -249,13 +252,20 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
   std::map<std::string, std::string> forces;
   std::vector<std::string> order;
   for (const RobotActuator& a : robot.actuators) {
-    std::string u = names.take(a.name, "motor");
+    bool servo = a.bias != std::array<double, 3>{0, 0, 0};
+    std::string u = names.take(a.name, servo ? "servo" : "motor");
     out.inputs += u + " = 0" +
                   (a.limited ? fmt::format("  # control range [{}, {}] in the file: not enforced", format_number(a.range[0]), format_number(a.range[1])) : "") +
                   "\n";
     const std::string& q = joint_symbols[std::size_t(a.body)][std::size_t(a.joint)].coordinates[0];
     if (!forces.count(q)) order.push_back(q);
     std::string term = a.gain == 1 ? u : fmt::format("{}*{}", format_number(a.gain), u);
+    // gear · (bias0 + bias1 · gear · q + bias2 · gear · q'): the servo's pull toward u
+    for (auto [coefficient, factor] : {std::pair{a.gear * a.bias[0], std::string()}, std::pair{a.gear * a.gear * a.bias[1], q},
+                                       std::pair{a.gear * a.gear * a.bias[2], "der(" + q + ")"}})
+      if (coefficient != 0)
+        term += fmt::format(" {} {}{}", coefficient < 0 ? "-" : "+", format_number(std::abs(coefficient)),
+                            factor.empty() ? "" : "*" + factor);
     forces[q] += (forces[q].empty() ? "" : " + ") + term;
   }
   std::string generalized;

@@ -30,6 +30,7 @@
 #include "mjcf_features_imported.hpp"
 #include "oblique_tree_imported.hpp"
 #include "quadruped_imported.hpp"
+#include "servo_arm_imported.hpp"
 #include "seven_joint_arm_imported.hpp"
 #include "tumbling_body_imported.hpp"
 #include "seven_joint_arm_from_urdf.hpp"
@@ -168,6 +169,9 @@ TEST(MujocoImport, MjcfFeaturesImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJ
 
 // a ball below a ball, in a body that also slides, and a hinge below
 TEST(MujocoImport, BallBelowABallImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(ball_chain); }
+
+// position, velocity and affine servos beside a motor: each a generalized force affine in u, q and q'
+TEST(MujocoImport, ServosImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(servo_arm); }
 
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,
 // an oblique axis; and the seven-joint arm as URDF (without armature and motors, which URDF lacks)
