@@ -1,7 +1,8 @@
 // The model file `eomgen import` writes (generator/import/model_writer.hpp), from a robot given as
 // plain data: names taken from the robot and made unique, one frame per joint (two hinges in one
 // body become two frames), quaternions written as quat(...), ball damping as ½ d |ω|² in the
-// quaternion's rates, motors as inputs with gain × u, keyframes as scenes; numbers in their shortest
+// quaternion's rates, motors as inputs with gain × u and servos with their bias in q and q', keyframes
+// as scenes; numbers in their shortest
 // exact form. The
 // text derives, and its M is the robot's: for a free body, diag(m, m, m, I).
 #include <gtest/gtest.h>
@@ -103,6 +104,14 @@ TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   EXPECT_TRUE(has(text, "\"root_qz\" = 0, \"der(root_qz)\" = 0.25")) << text;
   EXPECT_TRUE(has(text, "\"pitch\" = 0.2, \"der(pitch)\" = 1, \"yaw\" = -0.1, \"der(yaw)\" = 0")) << text;
   EXPECT_TRUE(has(text, "\"wrist_qz\" = 0, \"der(wrist_qz)\" = 1 }")) << text;
+}
+
+TEST(ModelWriter, AServoPullsItsJointTowardItsControl) {
+  // MJCF: force = gain u + b0 + b1 (gear q) + b2 (gear q'), generalized force gear × force
+  Robot r = two_armed_robot();
+  r.actuators = {{"yaw", 1, 1, 2 * 80, false, {0, 0}, {0.5, -80, -4}, 2}};
+  std::string text = model_file_text(r, "two_armed", "robot.xml");
+  EXPECT_TRUE(has(text, "generalized = { yaw = \"160*yaw_servo + 1 - 320*yaw - 16*der(yaw)\" }")) << text;
 }
 
 TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
