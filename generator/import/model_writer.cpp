@@ -8,13 +8,16 @@
 
 #include "emit/formats.hpp"
 #include "import/mjcf_reader.hpp"
+#include "import/warning_lines.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <variant>
 #include <map>
 #include <set>
@@ -287,7 +290,12 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
   std::string file = std::filesystem::path(path).filename().string();
   if (in_memory)
     std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);
-  for (const std::string& w : robot.warnings) std::cerr << "eomgen: warning: " << file << ": " << w << "\n";
+  std::ifstream in(path);
+  std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string& w : robot.warnings) {
+    int line = warning_line(xml, w);
+    std::cerr << (line > 0 ? fmt::format("{}:{}:1: warning: {}\n", path, line, w) : fmt::format("eomgen: warning: {}: {}\n", file, w));
+  }
   if (name.empty()) name = identifier_of(robot.name.empty() ? std::filesystem::path(path).stem().string() : robot.name);
   return model_file_text(robot, name, file);
 }

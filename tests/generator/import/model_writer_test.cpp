@@ -13,6 +13,7 @@
 
 #include "import/mjcf_reader.hpp"
 #include "import/model_writer.hpp"
+#include "import/warning_lines.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -112,6 +113,22 @@ TEST(ModelWriter, AServoPullsItsJointTowardItsControl) {
   r.actuators = {{"yaw", 1, 1, 2 * 80, false, {0, 0}, {0.5, -80, -4}, 2}};
   std::string text = model_file_text(r, "two_armed", "robot.xml");
   EXPECT_TRUE(has(text, "generalized = { yaw = \"160*yaw_servo + 1 - 320*yaw - 16*der(yaw)\" }")) << text;
+}
+
+TEST(WarningLines, TheSubjectOfAWarningIsFoundInTheFile) {
+  // MuJoCo's compiled model has no source lines: the element is found in the text
+  std::string xml = "<mujoco>\n  <tendon>\n    <fixed name=\"split\"/>\n  </tendon>\n  <equality>\n"
+                    "    <!-- the fingers move together -->\n    <joint joint1=\"a\" joint2=\"b\"/>\n"
+                    "    <connect name=\"loop\" body1=\"c\" body2=\"d\" anchor=\"0 0 0\"/>\n  </equality>\n"
+                    "  <actuator>\n    <motor name=\"knee\" joint=\"knee\"/>\n    <cylinder name=\"lift\" joint=\"z\"/>\n"
+                    "  </actuator>\n</mujoco>\n";
+  EXPECT_EQ(warning_line(xml, "1 tendon(s): not carried (a tendon's length is no joint)"), 2);
+  EXPECT_EQ(warning_line(xml, "equality constraint 1 of 2 (joint): not carried"), 7);
+  EXPECT_EQ(warning_line(xml, "equality constraint 'loop' (connect): not carried"), 8);
+  EXPECT_EQ(warning_line(xml, "actuator 'lift': only motors and servos on a hinge or slide are carried"), 12);
+  EXPECT_EQ(warning_line(xml, "1 actuator(s) with a control range (ctrllimited): MuJoCo clamps"), 10);
+  EXPECT_EQ(warning_line(xml, "3 geom(s) that make contacts: contacts are not carried"), 0) << "no one place";
+  EXPECT_EQ(warning_line(xml, "actuator 'elsewhere': left out"), 0) << "from an <include>d file";
 }
 
 TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
