@@ -83,5 +83,4 @@ bool report_diagnostics(const Diagnostics& diagnostics, const std::string& model
   return true;
 }
 
-
 }  // namespace eomgen

@@ -50,23 +50,25 @@ RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* q
 
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
-  if (m->ntendon) r.warnings.push_back(fmt::format("{} tendon(s): not carried (a tendon's length is no joint)", m->ntendon));
+  if (m->ntendon)
+    r.warnings.push_back({fmt::format("{} tendon(s): not carried (a tendon's length is no joint)", m->ntendon), "tendon", "", 0});
   static const char* const kinds[] = {"connect", "weld", "joint", "tendon", "distance"};
   for (int e = 0; e < m->neq; ++e) {
     std::string name = name_of(m, m->name_eqadr, e);
     int type = m->eq_type[e];
-    r.warnings.push_back(fmt::format("equality constraint {} ({}): not carried (closed loops and coupled joints are not "
-                                     "imported yet)",
-                                     name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
-                                     type >= 0 && type < 5 ? kinds[type] : "of another kind"));
+    r.warnings.push_back({fmt::format("equality constraint {} ({}): not carried (closed loops and coupled joints are not "
+                                      "imported yet)",
+                                      name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
+                                      type >= 0 && type < 5 ? kinds[type] : "of another kind"),
+                          "equality", name, e + 1});
   }
   bool contacts = !(m->opt.disableflags & mjDSBL_CONTACT);
   int colliding = 0;
   for (int g = 0; g < m->ngeom && contacts; ++g) colliding += m->geom_contype[g] || m->geom_conaffinity[g];
-  if (colliding) r.warnings.push_back(fmt::format("{} geom(s) that make contacts: contacts are not carried", colliding));
+  if (colliding) r.warnings.push_back({fmt::format("{} geom(s) that make contacts: contacts are not carried", colliding), "", "", 0});
   for (int v = 0; v < m->nv; ++v)
     if (m->dof_frictionloss[v] != 0)
-      r.warnings.push_back(fmt::format("dof {} has friction loss {}: not carried (dry friction)", v, m->dof_frictionloss[v]));
+      r.warnings.push_back({fmt::format("dof {} has friction loss {}: not carried (dry friction)", v, m->dof_frictionloss[v]), "", "", 0});
 }
 
 void read_actuators(const mjModel* m, Robot& r) {
@@ -80,9 +82,10 @@ void read_actuators(const mjModel* m, Robot& r) {
     int j = m->actuator_trnid[2 * a];
     int type = on_joint ? m->jnt_type[j] : -1;
     if (!on_joint || !plain || type == mjJNT_BALL || type == mjJNT_FREE) {
-      r.warnings.push_back(fmt::format("actuator '{}': only motors and servos on a hinge or slide (a force affine in the "
-                                       "control, the joint's position and its rate; no dynamics) are carried; it is left out",
-                                       name));
+      r.warnings.push_back({fmt::format("actuator '{}': only motors and servos on a hinge or slide (a force affine in the "
+                                        "control, the joint's position and its rate; no dynamics) are carried; it is left out",
+                                        name),
+                            "actuator", name_of(m, m->name_actuatoradr, a), a + 1});
       continue;
     }
     RobotActuator act;
@@ -96,14 +99,16 @@ void read_actuators(const mjModel* m, Robot& r) {
     if (m->actuator_biastype[a] == mjBIAS_AFFINE)
       act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
     if (m->actuator_forcelimited[a])
-      r.warnings.push_back(fmt::format("actuator '{}': MuJoCo clamps its force to [{}, {}] (forcelimited); eomgen does not",
-                                       name, m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]));
+      r.warnings.push_back({fmt::format("actuator '{}': MuJoCo clamps its force to [{}, {}] (forcelimited); eomgen does not",
+                                        name, m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]),
+                            "actuator", name_of(m, m->name_actuatoradr, a), a + 1});
     r.actuators.push_back(act);
   }
   long clamped = std::count_if(r.actuators.begin(), r.actuators.end(), [](const RobotActuator& a) { return a.limited; });
   if (clamped)
-    r.warnings.push_back(fmt::format("{} actuator(s) with a control range (ctrllimited): MuJoCo clamps their controls to it, "
-                                     "eomgen's inputs are not clamped (each range is written beside its input)", clamped));
+    r.warnings.push_back({fmt::format("{} actuator(s) with a control range (ctrllimited): MuJoCo clamps their controls to "
+                                      "it, eomgen's inputs are not clamped (each range is written beside its input)", clamped),
+                          "actuator", "", 0});
 }
 
 }  // namespace

@@ -292,9 +292,10 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
     std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);
   std::ifstream in(path);
   std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const std::string& w : robot.warnings) {
+  for (const RobotWarning& w : robot.warnings) {
     int line = warning_line(xml, w);
-    std::cerr << (line > 0 ? fmt::format("{}:{}:1: warning: {}\n", path, line, w) : fmt::format("eomgen: warning: {}: {}\n", file, w));
+    std::cerr << (line > 0 ? fmt::format("{}:{}:1: warning: {}\n", path, line, w.text)
+                           : fmt::format("eomgen: warning: {}: {}\n", file, w.text));
   }
   if (name.empty()) name = identifier_of(robot.name.empty() ? std::filesystem::path(path).stem().string() : robot.name);
   return model_file_text(robot, name, file);
@@ -321,9 +322,8 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);
-  std::vector<std::string> warnings = robot.warnings;
-  warnings.insert(warnings.end(), out.warnings.begin(), out.warnings.end());
-  for (const std::string& w : warnings) text += "# not carried: " + w + "\n";
+  for (const RobotWarning& w : robot.warnings) text += "# not carried: " + w.text + "\n";
+  for (const std::string& w : out.warnings) text += "# not carried: " + w + "\n";
   text += fmt::format("\n[model]\nname = \"{}\"\ntitle = \"{} (imported)\"\n", name, robot.name.empty() ? name : robot.name);
   text += "\n[gravity]\nacceleration = " + vector_text(robot.gravity) + "\n";
   if (!out.inputs.empty()) text += "\n[inputs]\n" + out.inputs;

@@ -71,6 +71,16 @@ struct RobotKeyframe {
   std::vector<double> positions, velocities;
 };
 
+/// What the model cannot carry, and the element of the file it is about: `section` (actuator,
+/// equality, tendon) and the element's `name`, or its 1-based `ordinal` there when it has none;
+/// an empty section for what has no one place (contacts of many geoms).
+struct RobotWarning {
+  std::string text;
+  std::string section;
+  std::string name;
+  int ordinal = 0;
+};
+
 struct Robot {
   std::string name;
   std::string reader;  // what read the file, e.g. "MuJoCo 2.2.2's compiler"
@@ -80,7 +90,7 @@ struct Robot {
   std::vector<RobotActuator> actuators;
   std::vector<RobotSite> sites;
   std::vector<RobotKeyframe> keyframes;
-  std::vector<std::string> warnings;  // what the model cannot carry, each naming it
+  std::vector<RobotWarning> warnings;  // what the model cannot carry, each naming it
 };
 
 }  // namespace eomgen

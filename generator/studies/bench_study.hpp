@@ -2,7 +2,6 @@
 /// solution; writes the work-precision charts, the runs and a report with the verdict.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 

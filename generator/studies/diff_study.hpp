@@ -3,8 +3,6 @@
 /// what another eomgen executable derives from the same models against this one.
 #pragma once
 
-#include <optional>
-#include <string>
 #include <vector>
 
 #include "compare/diff_report.hpp"

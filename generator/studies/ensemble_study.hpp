@@ -3,7 +3,6 @@
 /// the statistics of the recorded signals over time and of scalar measures per sample.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 

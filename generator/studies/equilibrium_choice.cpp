@@ -1,7 +1,6 @@
 /// @file The equilibrium a stability analysis is about: one named by --at (checked), or one
 /// searched for from the model's initial state; and the models the analyses refuse.
 #include <iostream>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -10,9 +9,6 @@
 #include "studies/equilibrium_choice.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"
-#include "studies/routh_reduction.hpp"
-#include "studies/stability_report.hpp"
-#include "symbolic_analysis/stability_conditions.hpp"
 
 namespace eomgen::studies {
 
@@ -25,6 +21,14 @@ std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, cons
   for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) x[i] = 0;
   if (!assign_states(m, at, "--at", x)) return std::nullopt;
   return x;
+}
+
+// a state where M or f is not finite, or M is singular, has no meaningful linearization
+std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vector<double>& x, const char* which) {
+  std::string why = runtime::unfit_state(problem, 0.0, x);
+  if (why.empty()) return std::nullopt;
+  std::cerr << fmt::format("eomgen: error: no stability analysis at {}: {}\n", which, why);
+  return exit_numerical_failure;
 }
 
 }  // namespace
@@ -53,14 +57,6 @@ std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::str
     return exit_user_error;
   }
   return std::nullopt;
-}
-
-// a state where M or f is not finite, or M is singular, has no meaningful linearization
-std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vector<double>& x, const char* which) {
-  std::string why = runtime::unfit_state(problem, 0.0, x);
-  if (why.empty()) return std::nullopt;
-  std::cerr << fmt::format("eomgen: error: no stability analysis at {}: {}\n", which, why);
-  return exit_numerical_failure;
 }
 
 std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::vector<std::string>& at_texts,

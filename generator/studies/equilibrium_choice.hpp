@@ -16,10 +16,6 @@ namespace eomgen::studies {
 std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::string& model, bool symbolic,
                                      bool on_manifold);
 
-/// Nothing when `x` is a state where M and f are finite and M is regular; else prints why
-/// there is no linearization at `which` and returns the exit status.
-std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vector<double>& x, const char* which);
-
 /// The equilibrium of `problem`: checked when --at names one, else searched for.
 /// Returns the exit status when there is none.
 /// `initial` is the model's initial state (with --set applied): where the search starts,

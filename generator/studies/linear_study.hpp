@@ -3,12 +3,10 @@
 /// blocks, natural frequencies and mass-normalized modes, and Φ(t) = e^{At} (Hiller §6, §8.1).
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "studies/linear_response_output.hpp"
-
 
 namespace eomgen::studies {
 

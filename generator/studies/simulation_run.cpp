@@ -183,5 +183,4 @@ std::optional<int> write_animation(const runtime::AnimationRecorder& recorder, c
   return std::nullopt;
 }
 
-
 }  // namespace eomgen::studies

@@ -19,8 +19,7 @@ struct SimulationOptions {
   std::string input_file;                  // --input-file table.csv
   std::string csv, plot, header_dir;
   std::string plot_xy;  // "X,Y": also Y against X
-  std::string stabilization = "both";
-  std::string reference_scalar;  // filled in by simulate_model from the compiled model  // constrained models: both, baumgarte, projection or none
+  std::string stabilization = "both";  // constrained models: both, baumgarte, projection or none
   bool json = false;
   std::string scene, variant;          // --scene NAME, --variant NAME
   bool t_end_given = false, dt_out_given = false;  // a scene's times give way to --t-end, --dt-out
@@ -28,8 +27,8 @@ struct SimulationOptions {
   std::string animation;           // --animate FILE.html (animate: -o)
   std::vector<std::string> trace;  // --trace NAME: bodies whose paths the animation draws
   bool axes = false;               // --axes
-  bool animate_only = false;
-  bool animation_if_drawn = false;  // `eomgen run`: no page (and no error) for a model that draws nothing       // `eomgen animate`: the page is the result (named after the model by default)
+  bool animate_only = false;        // `eomgen animate`: the page is the result (named after the model by default)
+  bool animation_if_drawn = false;  // `eomgen run`: no page (and no error) for a model that draws nothing
 };
 
 /// Derives, generates, compiles (cached) and simulates; writes the CSV, the charts and the

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "analyse/equilibrium.hpp"
-#include "analyse/state_check.hpp"
+#include "analyse/critical_case.hpp"
+#include "analyse/linear_stability.hpp"
 #include "studies/equilibrium_choice.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"

@@ -3,10 +3,8 @@
 /// apply, and with --symbolic the stability conditions in the parameters.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
-
 
 namespace eomgen::studies {
 

@@ -1,30 +1,16 @@
 /// @file The swept parameters of `eomgen sweep` (NAME=LOW:HIGH:COUNT) and the symbolic
 /// stability margin drawn over its map.
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <iostream>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "analyse/eigenvalue_sweep.hpp"
-#include "analyse/equilibrium.hpp"
 #include "analyse/stability_map.hpp"
-#include "common/count_progress.hpp"
-#include "common/output_file.hpp"
-#include "common/stop_signal.hpp"
-#include "derive/initial_state.hpp"
-#include "distribute/distributed_sweep.hpp"
-#include "distribute/ranks.hpp"
-#include "report/reports.hpp"
-#include "studies/eigenvalue_sweep_output.hpp"
-#include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"
-#include "studies/ranked_run.hpp"
 #include "studies/sweep_axes.hpp"
 #include "symbolic/evaluate.hpp"
 #include "symbolic_analysis/stability_conditions.hpp"
-#include "symbolic_analysis/time_dependence.hpp"
 
 namespace eomgen::studies {
 

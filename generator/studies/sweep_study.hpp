@@ -3,10 +3,8 @@
 /// symbolic boundary over it when asked.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
-
 
 namespace eomgen::studies {
 

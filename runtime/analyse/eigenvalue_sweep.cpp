@@ -57,10 +57,13 @@ int right_of_axis(const CountedSpectrum& s) {
 std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start, bool fixed, int parameter, double a,
                                    const CountedSpectrum& sa, double b, const CountedSpectrum& sb, double resolution) {
   bool rising = unstable_count(sb) > unstable_count(sa);
+  auto analysed_at = [&](double value) {
+    Problem p = at_value(base, parameter, value);
+    return analyse_point(p, start(p.parameters), fixed);
+  };
   double lo = a, hi = b;
   // the sweep keeps its points' eigenvalues, not their rounding: the ends once more, with it
-  PointResult first = analyse_point(at_value(base, parameter, a), start(at_value(base, parameter, a).parameters), fixed),
-              last = analyse_point(at_value(base, parameter, b), start(at_value(base, parameter, b).parameters), fixed);
+  PointResult first = analysed_at(a), last = analysed_at(b);
   if (!first.found || !last.found) return std::nullopt;
   CountedSpectrum at_lo = first.spectrum, at_hi = last.spectrum;
   int count_lo = right_of_axis(at_lo), count_hi = right_of_axis(at_hi);
@@ -68,8 +71,7 @@ std::optional<AxisCrossing> bisect(const Problem& base, const StartState& start,
   while (hi - lo > resolution) {
     double mid = 0.5 * (lo + hi);
     if (!(mid > lo && mid < hi)) break;  // the doubles between lo and hi are exhausted
-    Problem p = at_value(base, parameter, mid);
-    PointResult r = analyse_point(p, start(p.parameters), fixed);
+    PointResult r = analysed_at(mid);
     if (!r.found) return std::nullopt;
     int count = right_of_axis(r.spectrum);
     if (std::abs(count - count_lo) <= std::abs(count - count_hi)) lo = mid, at_lo = r.spectrum;

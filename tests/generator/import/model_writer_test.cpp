@@ -73,7 +73,7 @@ Robot two_armed_robot() {
   r.actuators.push_back({"pitch motor", 1, 0, 25, true, {-1, 1}});
   r.actuators.push_back({"yaw", 1, 1, 10, false, {0, 0}});  // named after its joint, as robot files often do
   r.sites.push_back({"tip", 2, {0, 0, -0.05}});
-  r.warnings.push_back("1 tendon(s): not carried");
+  r.warnings.push_back({"1 tendon(s): not carried", "tendon", "", 0});
   // qpos: root (7), pitch, yaw, wrist (4); qvel: root (6), pitch, yaw, wrist (3)
   r.keyframes.push_back({"stand", {0, 0, 1, 1, 0, 0, 0, 0.2, -0.1, 1, 0, 0, 0}, {0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 2}});
   return r;
@@ -120,15 +120,16 @@ TEST(WarningLines, TheSubjectOfAWarningIsFoundInTheFile) {
   std::string xml = "<mujoco>\n  <tendon>\n    <fixed name=\"split\"/>\n  </tendon>\n  <equality>\n"
                     "    <!-- the fingers move together -->\n    <joint joint1=\"a\" joint2=\"b\"/>\n"
                     "    <connect name=\"loop\" body1=\"c\" body2=\"d\" anchor=\"0 0 0\"/>\n  </equality>\n"
-                    "  <actuator>\n    <motor name=\"knee\" joint=\"knee\"/>\n    <cylinder name=\"lift\" joint=\"z\"/>\n"
+                    "  <actuator>\n    <motor name=\"knee\" joint=\"knee\"/>\n    <cylinder joint=\"z\"/>\n"
                     "  </actuator>\n</mujoco>\n";
-  EXPECT_EQ(warning_line(xml, "1 tendon(s): not carried (a tendon's length is no joint)"), 2);
-  EXPECT_EQ(warning_line(xml, "equality constraint 1 of 2 (joint): not carried"), 7);
-  EXPECT_EQ(warning_line(xml, "equality constraint 'loop' (connect): not carried"), 8);
-  EXPECT_EQ(warning_line(xml, "actuator 'lift': only motors and servos on a hinge or slide are carried"), 12);
-  EXPECT_EQ(warning_line(xml, "1 actuator(s) with a control range (ctrllimited): MuJoCo clamps"), 10);
-  EXPECT_EQ(warning_line(xml, "3 geom(s) that make contacts: contacts are not carried"), 0) << "no one place";
-  EXPECT_EQ(warning_line(xml, "actuator 'elsewhere': left out"), 0) << "from an <include>d file";
+  EXPECT_EQ(warning_line(xml, {"1 tendon(s)", "tendon", "", 0}), 2);
+  EXPECT_EQ(warning_line(xml, {"equality constraint 1 of 2", "equality", "", 1}), 7);
+  EXPECT_EQ(warning_line(xml, {"equality constraint 'loop'", "equality", "loop", 2}), 8);
+  EXPECT_EQ(warning_line(xml, {"actuator 'knee'", "actuator", "knee", 1}), 11);
+  EXPECT_EQ(warning_line(xml, {"actuator 'actuator1'", "actuator", "", 2}), 12) << "an unnamed one by its place";
+  EXPECT_EQ(warning_line(xml, {"1 actuator(s) with a control range", "actuator", "", 0}), 10);
+  EXPECT_EQ(warning_line(xml, {"3 geom(s) that make contacts", "", "", 0}), 0) << "no one place";
+  EXPECT_EQ(warning_line(xml, {"actuator 'elsewhere'", "actuator", "elsewhere", 3}), 0) << "from an <include>d file";
 }
 
 TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
