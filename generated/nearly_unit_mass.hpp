@@ -114,7 +114,8 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
-  M[0] = detail::constant<T>(1.0, 1.5e-20, -1.4342482253919357e-36);
+  const T n0 = detail::constant<T>(1.0, 1.5e-20, -1.4342482253919357e-36);
+  M[0] = n0;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -123,7 +124,8 @@ template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   const T q_x = x[0];
-  f[0] = -detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31)*q_x;
+  const T n0 = detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
+  f[0] = -n0*q_x;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -132,10 +134,12 @@ template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
   const T q_x = x[0];
+  const T n0 = detail::constant<T>(1.0, 1.5e-20, -1.4342482253919357e-36);
+  const T n1 = detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
   T M[1];
-  M[0] = detail::constant<T>(1.0, 1.5e-20, -1.4342482253919357e-36);
+  M[0] = n0;
   T ddq[1];
-  ddq[0] = -detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31)*q_x;
+  ddq[0] = -n1*q_x;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
@@ -150,10 +154,12 @@ template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
   const T q_x = x[0];
+  const T n0 = detail::constant<T>(1.0, 1.5e-20, -1.4342482253919357e-36);
+  const T n1 = detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
   T M[1];
-  M[0] = detail::constant<T>(1.0, 1.5e-20, -1.4342482253919357e-36);
+  M[0] = n0;
   T ddq[1];
-  ddq[0] = -detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31)*q_x;
+  ddq[0] = -n1*q_x;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
@@ -161,7 +167,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[0] = T(0);
   J[1] = T(1);
   T column[1];
-  column[0] = -detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
+  column[0] = -n1;
   detail::ldlt_solve(L, D, column);
   J[2] = column[0];
   column[0] = T(0);
@@ -182,8 +188,9 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
+  const T n0 = detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
   P[0] = T(0);
-  Q[0] = detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
+  Q[0] = n0;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
@@ -191,7 +198,8 @@ template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T dq_x = x[1];
-  return detail::constant<T>(0.5, 7.5e-21, -7.171241126959678e-37)*dq_x*dq_x;
+  const T n0 = detail::constant<T>(0.5, 7.5e-21, -7.171241126959678e-37);
+  return n0*dq_x*dq_x;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -199,7 +207,8 @@ template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
   const T q_x = x[0];
-  return detail::constant<T>(19.739208802178716, 1.01539011974819e-15, 7.038714545358759e-32)*q_x*q_x;
+  const T n0 = detail::constant<T>(19.739208802178716, 1.01539011974819e-15, 7.038714545358759e-32);
+  return n0*q_x*q_x;
 }
 
 /// The model's [outputs], in output_names order. y: 1.
@@ -207,7 +216,8 @@ template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
   const T q_x = x[0];
-  y[0] = -detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31)*q_x;
+  const T n0 = detail::constant<T>(39.47841760435743, 2.03078023949638e-15, 1.4077429090717519e-31);
+  y[0] = -n0*q_x;
 }
 
 /// The first integrals (Hiller §3.6, §3.8.3): the generalized energy and the momenta of cyclic

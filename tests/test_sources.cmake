@@ -14,6 +14,7 @@ set(EOMGEN_TEST_FILES
   generator/model/expression_parser_test.cpp        fast     sanitized
   generator/model/frames_test.cpp                   slow     sanitized
   generator/model/joints_test.cpp                   fast     sanitized
+  generator/spatial/joint_frames_test.cpp           fast     sanitized
   generator/spatial/joint_tree_dynamics_test.cpp    fast     sanitized
   generator/spatial/spherical_joints_test.cpp       fast     sanitized
   generator/import/model_writer_test.cpp            fast     sanitized

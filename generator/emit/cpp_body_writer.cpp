@@ -289,12 +289,35 @@ std::vector<std::string> BodyWriter::batch(const std::vector<ex>& expressions) {
   return out;
 }
 
+namespace {
+
+// Each distinct detail::constant<T>(hi, mid, lo) of `statements` declared once as a local n0, n1, …
+// in the order of first use, and the uses replaced by the names: a number of a joint frame's axes
+// recurs in dozens of statements, and its 60 characters of text would be most of a header.
+std::string with_named_constants(const std::string& statements) {
+  static const std::string call = "detail::constant<T>(";
+  std::map<std::string, std::string> names;
+  std::string declarations, body;
+  std::size_t at = 0;
+  for (std::size_t found; (found = statements.find(call, at)) != std::string::npos;) {
+    std::size_t end = statements.find(')', found) + 1;
+    std::string text = statements.substr(found, end - found);
+    auto [named, added] = names.emplace(text, fmt::format("n{}", names.size()));
+    if (added) declarations += fmt::format("  const T {} = {};\n", named->second, text);
+    body += statements.substr(at, found - at) + named->second;
+    at = end;
+  }
+  return declarations + body + statements.substr(at);
+}
+
+}  // namespace
+
 std::string BodyWriter::finish(const std::string& unused) {
   std::string head = "  " + unused + "\n";
   if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
   for (const auto& in : inputs_)
     if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
-  return head + batched_trig_statements() + statements_;
+  return head + with_named_constants(batched_trig_statements() + statements_);
 }
 
 void BodyWriter::note(const ex& e) {

@@ -7,6 +7,7 @@
 #include "kinematics/vector3.hpp"
 #include "model/quaternion.hpp"
 #include "model/recursive_frames.hpp"
+#include "spatial/joint_frames.hpp"
 #include "spatial/joint_velocities.hpp"
 
 namespace eomgen {
@@ -46,11 +47,11 @@ class Tree {
       : model_(model), s_(model.symbols), velocities_(velocities), out_(out) {
     std::size_t links = model.frame_links.size();
     bodies_.resize(links);
-    for (const Particle& p : model.particles)
-      bodies_[std::size_t(p.placement.frame)].push_back({p.mass, p.placement.local, GiNaC::matrix(3, 3)});
+    for (const FrameLink& l : model.frame_links) frames_.push_back(joint_frame(*l.joint));
+    for (const Particle& p : model.particles) add_body(p.placement.frame, p.mass, p.placement.local, GiNaC::matrix(3, 3));
     for (const RigidBody& r : model.rigid_bodies) {
       const GiNaC::matrix& R = r.placement.relative;
-      bodies_[std::size_t(r.placement.frame)].push_back({r.mass, r.placement.local, R.mul(r.inertia).mul(R.transpose())});
+      add_body(r.placement.frame, r.mass, r.placement.local, R.mul(r.inertia).mul(R.transpose()));
     }
     for (std::size_t i = 0; i < links; ++i) place(i);
   }
@@ -210,20 +211,49 @@ class Tree {
     Vector3 r{0, 0, 0};              // its origin in its parent's coordinates
   };
 
-  // E, r and ω of link i, as intermediates
+  // a body in frame i, moved to the joint frame's coordinates: c' = Cᵀ(c − o), J' = Cᵀ J C
+  void add_body(int frame, const ex& mass, const Vector3& center, const GiNaC::matrix& inertia) {
+    const JointFrame& f = frames_[std::size_t(frame)];
+    Body b{mass, times(f.axes, center - f.origin, true), f.axes.transpose().mul(inertia).mul(f.axes)};
+    if (f.floating) {
+      ex size = GiNaC::abs(center[0]) + GiNaC::abs(center[1]) + GiNaC::abs(center[2]) + GiNaC::abs(f.origin[0]) +
+                GiNaC::abs(f.origin[1]) + GiNaC::abs(f.origin[2]);
+      ex spread = 0;
+      for (unsigned a = 0; a < 3; ++a) spread += GiNaC::abs(inertia(a, a));
+      for (unsigned a = 0; a < 3; ++a) {
+        b.center[a] = rounded_to(without_rounding_residue(b.center[a].expand(), size), size);
+        for (unsigned c = 0; c < 3; ++c)
+          b.inertia(a, c) = rounded_to(without_rounding_residue(b.inertia(a, c).expand(), spread), spread);
+      }
+    }
+    bodies_[std::size_t(frame)].push_back(b);
+  }
+
+  // E, r and ω of link i in the joint frames' coordinates (spatial/joint_frames.hpp): with C_p, o_p
+  // the parent's joint frame and C, o the link's, E' = C_pᵀ E C and r' = C_pᵀ(r + E o − o_p), where
+  // E = R_p R(q) turns the link's frame and r places its origin; as intermediates
   void place(std::size_t i) {
     const FrameLink::Joint& j = *model_.frame_links[i].joint;
     using Type = FrameLink::Joint::Type;
+    const JointFrame& own = frames_[i];
+    int p = model_.frame_links[i].parent;
+    JointFrame world;
+    world.axes = identity();
+    const JointFrame& above = p < 0 ? world : frames_[std::size_t(p)];
+    bool floating = own.floating || above.floating;
     Link l;
     GiNaC::matrix R = identity();
     Vector3 r = j.placement_origin, zero{0, 0, 0};
     auto velocity_of = [&](int coordinate) { return velocities_.of_coordinate[std::size_t(coordinate)]; };
+    ex q = j.coordinate >= 0 ? ex(s_.coordinates[std::size_t(j.coordinate)]) : ex(0);
     if (j.type == Type::prismatic) {
-      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], zero, j.axis});
-      r = r + times(j.placement, scaled(s_.coordinates[std::size_t(j.coordinate)], j.axis));
+      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], zero, joint_direction(j, own)});
+      r = r + times(j.placement, scaled(q, j.axis));
     } else if (j.type == Type::revolute) {
-      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], j.axis, cross(j.anchor, j.axis)});
-      ElementaryRotation about_axis{ElementaryRotation::about_direction, s_.coordinates[std::size_t(j.coordinate)]};
+      Vector3 e = joint_direction(j, own);
+      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], e,
+                        cross(times(own.axes, j.anchor - own.origin, true), e)});
+      ElementaryRotation about_axis{ElementaryRotation::about_direction, q};
       about_axis.direction = j.axis;
       R = rotation_matrix(about_axis);
       r = r + times(j.placement, j.anchor - times(R, j.anchor));
@@ -237,20 +267,53 @@ class Tree {
         r = r + times(j.placement, j.anchor - times(R, j.anchor));
       }
     }
-    GiNaC::matrix E = j.placement.mul(R);
+    GiNaC::matrix E = turn(j, R, above, own);
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b)
         l.E(a, b) = intermediate(out_, fmt::format("{}.tE_{}{}", name(i), axis_names[a], axis_names[b]),
                                  fmt::format("k_{}_tE{}{}", name(i), axis_names[a], axis_names[b]), E(a, b).expand());
-    if (j.spherical()) add_spherical_dofs(j, l);
-    l.r = named(out_, i, "tr", r);
-    int p = model_.frame_links[i].parent;
+    if (j.spherical()) add_spherical_dofs(j, above, own, l);
+    Vector3 origin = r + times(j.placement.mul(R), own.origin) - above.origin;
+    for (ex& x : origin) x = x.expand();
+    Vector3 offset = times(above.axes, origin, true);
+    if (floating) {
+      ex size = GiNaC::abs(origin[0]) + GiNaC::abs(origin[1]) + GiNaC::abs(origin[2]);
+      for (ex& x : offset) x = rounded_to(without_rounding_residue(without_small_terms(x.expand()), size), size);
+    }
+    l.r = named(out_, i, "tr", offset);
     Vector3 wp = p < 0 ? zero : omega_[std::size_t(p)];
     carried_.push_back(named(out_, i, "twp", times(l.E, wp, true)));
     Vector3 w = carried_.back();
     for (const Dof& d : l.dofs) w = w + scaled(d.rate, d.e);
     omega_.push_back(named(out_, i, "tw", w));
     links_.push_back(l);
+  }
+
+  // a revolute or prismatic joint's axis in its joint frame: z, when the frame was built on it
+  static Vector3 joint_direction(const FrameLink::Joint& j, const JointFrame& own) {
+    Vector3 e = times(own.axes, j.axis, true);
+    if (own.floating) return {0, 0, 1};
+    for (ex& x : e) x = x.expand();
+    return e;
+  }
+
+  // E' = C_pᵀ R_p R(q) C; for a joint about z of its joint frame, K·rot_z(q) with the constant
+  // K = C_pᵀ R_p C formed once, so that no rounding residue multiplies cos q or sin q
+  GiNaC::matrix turn(const FrameLink::Joint& j, const GiNaC::matrix& R, const JointFrame& above,
+                     const JointFrame& own) const {
+    Vector3 e = joint_direction(j, own);
+    bool about_z = j.type == FrameLink::Joint::Type::revolute && e[0].is_zero() && e[1].is_zero() && (e[2] - 1).is_zero();
+    GiNaC::matrix K = above.axes.transpose().mul(j.placement).mul(about_z ? own.axes : R.mul(own.axes));
+    bool approximate = above.floating || own.floating;
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b) {
+        K(a, b) = K(a, b).expand();
+        K(a, b) = rotation_entry(approximate ? without_small_terms(K(a, b)) : K(a, b), approximate);
+      }
+    if (!about_z) return K;
+    const ex& q = s_.coordinates[std::size_t(j.coordinate)];
+    GiNaC::matrix rot_z = {{GiNaC::cos(q), -GiNaC::sin(q), 0}, {GiNaC::sin(q), GiNaC::cos(q), 0}, {0, 0, 1}};
+    return K.mul(rot_z);
   }
 
   // R(q) of a ball or free joint's quaternion (model/quaternion.hpp), with 1/|q|² named
@@ -262,26 +325,27 @@ class Tree {
     return quaternion_rotation(q, n);
   }
 
-  // a free joint's position: u_k = Eᵀ R_p e_k, the placement's axis k in the link's coordinates;
+  // a free joint's position: u_k = E'ᵀ C_pᵀ R_p e_k, the placement's axis k in the link's coordinates;
   // then ω about the link's axes, through the anchor (a ball's) or the origin (a free joint's)
-  void add_spherical_dofs(const FrameLink::Joint& j, Link& l) const {
+  void add_spherical_dofs(const FrameLink::Joint& j, const JointFrame& above, const JointFrame& own, Link& l) const {
     Vector3 zero{0, 0, 0};
+    GiNaC::matrix axes = above.axes.transpose().mul(j.placement);
     if (j.type == FrameLink::Joint::Type::free)
       for (unsigned k = 0; k < 3; ++k) {
         Vector3 u;
         for (unsigned a = 0; a < 3; ++a) {
           u[a] = 0;
-          for (unsigned b = 0; b < 3; ++b) u[a] += l.E(b, a) * j.placement(b, k);
+          for (unsigned b = 0; b < 3; ++b) u[a] += l.E(b, a) * axes(b, k);
         }
         l.dofs.push_back({velocities_.of_coordinate[std::size_t(j.position[k])], s_.velocities[std::size_t(j.position[k])], zero, u, false});
       }
-    int first = -1;
+  int first = -1;
     for (std::size_t v = 0; v < velocities_.symbols.size() && first < 0; ++v)
       if (velocities_.symbols[v] == j.angular_velocity[0]) first = int(v);
     for (unsigned k = 0; k < 3; ++k) {
       Vector3 e{0, 0, 0};
       e[k] = 1;
-      l.dofs.push_back({first + int(k), j.angular_velocity[k], e, cross(j.anchor, e)});
+      l.dofs.push_back({first + int(k), j.angular_velocity[k], e, cross(j.anchor - own.origin, e)});
     }
   }
 
@@ -312,6 +376,7 @@ class Tree {
   const JointVelocities& velocities_;
   std::vector<Intermediate>& out_;
   std::vector<std::vector<Body>> bodies_;
+  std::vector<JointFrame> frames_;
   std::vector<Link> links_;
   std::vector<Vector3> omega_;
   std::vector<Vector3> carried_;  // the parent's ω in the link's coordinates

@@ -13,7 +13,7 @@ branched_tree (21 oblique hinges in a humanoid's branching; its jacobian_state, 
 code, is left out of the build) and quadruped (a free torso, four legs of three hinges: 19
 coordinates, 18 velocities). Prints a Markdown table.
 
-Usage: tree_benchmark.py EOMGEN [--quick]   (exit 77 without a C++ compiler or MuJoCo)
+Usage: tree_benchmark.py EOMGEN [--quick] [ROBOT ...]   (exit 77 without a C++ compiler or MuJoCo)
 """
 import json
 import os
@@ -63,7 +63,12 @@ def main():
     if not shutil.which("c++") or not os.path.exists("/usr/include/mujoco/mujoco.h"):
         print("no C++ compiler or no MuJoCo (apt-get install libmujoco-dev): skipped")
         return 77
-    robots = ROBOTS[:1] if "--quick" in sys.argv else ROBOTS
+    named = [a for a in sys.argv[2:] if not a.startswith("--")]
+    unknown = [a for a in named if a not in ROBOTS]
+    if unknown:
+        print(f"unknown robot {unknown[0]}: choose from {', '.join(ROBOTS)}")
+        return 2
+    robots = ROBOTS[:1] if "--quick" in sys.argv else (named or ROBOTS)
     print("| robot | eomgen rhs | MuJoCo mj_forward | MuJoCo / eomgen | jacobian_state | jacobian_state / rhs "
           "| central differences / jacobian_state | header | generate | g++ -O2 (with the benchmark) |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
