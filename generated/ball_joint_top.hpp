@@ -183,10 +183,12 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   f[2] = -k_top_tN0_z;
 }
 
-/// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].
-/// x, xdot: num_states = 7; u: num_inputs (may be null if none); p: num_parameters.
+namespace detail {
+
+/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
+/// ddq: 3; L: 3x3, row-major; D: 3.
 template <class T>
-void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
+void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
   const T q_qw = x[0];
   const T q_qx = x[1];
@@ -229,14 +231,31 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   M[5] = k_top_tJyz;
   M[7] = M[5];
   M[8] = k_top_tJzz;
-  T ddq[3];
   ddq[0] = -k_top_tN0_x;
   ddq[1] = -k_top_tN0_y;
   ddq[2] = -k_top_tN0_z;
-  T L[9];
-  T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
+}
+
+}  // namespace detail
+
+/// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].
+/// x, xdot: num_states = 7; u: num_inputs (may be null if none); p: num_parameters.
+template <class T>
+void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
+  (void)t; (void)x; (void)u; (void)p;
+  const T q_qw = x[0];
+  const T q_qx = x[1];
+  const T q_qy = x[2];
+  const T q_qz = x[3];
+  const T s_wx = x[4];
+  const T s_wy = x[5];
+  const T s_wz = x[6];
+  T ddq[3];
+  T L[9];
+  T D[3];
+  detail::factored_accelerations(t, x, u, p, ddq, L, D);
   xdot[0] = -(T(1)/T(2))*q_qx*s_wx - (T(1)/T(2))*q_qy*s_wy - (T(1)/T(2))*q_qz*s_wz;
   xdot[1] = (T(1)/T(2))*q_qw*s_wx + (T(1)/T(2))*q_qy*s_wz - (T(1)/T(2))*q_qz*s_wy;
   xdot[2] = (T(1)/T(2))*q_qw*s_wy - (T(1)/T(2))*q_qx*s_wz + (T(1)/T(2))*q_qz*s_wx;
@@ -376,48 +395,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T s_wx = x[4];
   const T s_wy = x[5];
   const T s_wz = x[6];
-  const T p_m = p[0];
-  const T p_g = p[1];
-  const T k_top_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_tB0Iw0_x = (T(1)/T(1000))*s_wy + (T(1)/T(50))*s_wx - (T(1)/T(500))*s_wz;
-  const T k_top_tB0Iw0_y = (T(1)/T(1000))*s_wx + (T(1)/T(40))*s_wy + (T(3)/T(2000))*s_wz;
-  const T k_top_tB0Iw0_z = (T(1)/T(25))*s_wz - (T(1)/T(500))*s_wx + (T(3)/T(2000))*s_wy;
-  const T k_top_tJxx = (T(317)/T(5000))*p_m + T(1)/T(50);
-  const T k_top_tJxy = -(T(3)/T(5000))*p_m + T(1)/T(1000);
-  const T k_top_tJxz = -(T(1)/T(200))*p_m - T(1)/T(500);
-  const T k_top_tJyy = (T(629)/T(10000))*p_m + T(1)/T(40);
-  const T k_top_tJyz = -(T(3)/T(400))*p_m + T(3)/T(2000);
-  const T k_top_tJzz = (T(13)/T(10000))*p_m + T(1)/T(25);
-  const T k_top_tEzx = -T(2)*k_top_tqn*q_qw*q_qy + T(2)*k_top_tqn*q_qx*q_qz;
-  const T k_top_tEzy = T(2)*k_top_tqn*q_qw*q_qx + T(2)*k_top_tqn*q_qy*q_qz;
-  const T k_top_tEzz = k_top_tqn*q_qw*q_qw - k_top_tqn*q_qx*q_qx - k_top_tqn*q_qy*q_qy + k_top_tqn*q_qz*q_qz;
-  const T k_top_ta0_x = k_top_tEzx*p_g;
-  const T k_top_ta0_y = k_top_tEzy*p_g;
-  const T k_top_ta0_z = k_top_tEzz*p_g;
-  const T k_top_tB0F0_x = (T(1)/T(4))*p_m*s_wx*s_wz - (T(1)/T(50))*p_m*s_wy*s_wy - (T(1)/T(50))*p_m*s_wz*s_wz + (T(3)/T(100))*p_m*s_wx*s_wy + k_top_ta0_x*p_m;
-  const T k_top_tB0F0_y = (T(1)/T(4))*p_m*s_wy*s_wz + (T(1)/T(50))*p_m*s_wx*s_wy - (T(3)/T(100))*p_m*s_wx*s_wx - (T(3)/T(100))*p_m*s_wz*s_wz + k_top_ta0_y*p_m;
-  const T k_top_tB0F0_z = -(T(1)/T(4))*p_m*s_wx*s_wx - (T(1)/T(4))*p_m*s_wy*s_wy + (T(1)/T(50))*p_m*s_wx*s_wz + (T(3)/T(100))*p_m*s_wy*s_wz + k_top_ta0_z*p_m;
-  const T k_top_tN0_x = -(T(1)/T(4))*k_top_tB0F0_y + (T(3)/T(100))*k_top_tB0F0_z - k_top_tB0Iw0_y*s_wz + k_top_tB0Iw0_z*s_wy;
-  const T k_top_tN0_y = (T(1)/T(4))*k_top_tB0F0_x - (T(1)/T(50))*k_top_tB0F0_z + k_top_tB0Iw0_x*s_wz - k_top_tB0Iw0_z*s_wx;
-  const T k_top_tN0_z = (T(1)/T(50))*k_top_tB0F0_y - (T(3)/T(100))*k_top_tB0F0_x - k_top_tB0Iw0_x*s_wy + k_top_tB0Iw0_y*s_wx;
-  T M[9];
-  M[0] = k_top_tJxx;
-  M[1] = k_top_tJxy;
-  M[3] = M[1];
-  M[2] = k_top_tJxz;
-  M[6] = M[2];
-  M[4] = k_top_tJyy;
-  M[5] = k_top_tJyz;
-  M[7] = M[5];
-  M[8] = k_top_tJzz;
   T ddq[3];
-  ddq[0] = -k_top_tN0_x;
-  ddq[1] = -k_top_tN0_y;
-  ddq[2] = -k_top_tN0_z;
   T L[9];
   T D[3];
-  detail::ldlt_factor(M, L, D);
-  detail::ldlt_solve(L, D, ddq);
+  detail::factored_accelerations(t, x, u, p, ddq, L, D);
   T F[21];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   J[0] = T(0);

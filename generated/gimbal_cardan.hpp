@@ -460,6 +460,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T cos_q_beta = trig_cos[0];
   const T sin_q_gamma = trig_sin[1];
   const T cos_q_gamma = trig_cos[1];
+  T M[9];
   const T c0 = cos_q_beta;
   const T c1 = c0*c0;
   const T c2 = cos_q_gamma;
@@ -467,7 +468,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c4 = sin_q_beta;
   const T c5 = sin_q_gamma;
   const T c6 = c5*c5;
-  T M[9];
   M[0] = c1*c3*p_A + c1*c6*p_B + c4*c4*p_C;
   M[1] = (p_A - p_B)*c0*c2*c5;
   M[3] = M[1];

@@ -418,7 +418,7 @@ std::string without_unused_locals(const std::string& body) {
   return out;
 }
 
-CseBatch accelerations(BodyWriter& w, const Equations& e) {
+CseBatch accelerations(BodyWriter& w, const Equations& e, bool into_arguments) {
   std::size_t n = e.forcing.size();
   std::vector<ex> exprs = upper_triangle(e.mass_matrix, n);
   exprs.insert(exprs.end(), e.forcing.begin(), e.forcing.end());
@@ -427,10 +427,12 @@ CseBatch accelerations(BodyWriter& w, const Equations& e) {
   for (const ex& r : batch.outputs) code.push_back(w.print(r));
   w.line(fmt::format("T M[{}];", n * n));
   write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + n * (n + 1) / 2), n, "M");
-  w.line(fmt::format("T ddq[{}];", n));
+  if (!into_arguments) w.line(fmt::format("T ddq[{}];", n));
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("ddq[{}] = {};", i, code[n * (n + 1) / 2 + i]));
-  w.line(fmt::format("T L[{}];", n * n));
-  w.line(fmt::format("T D[{}];", n));
+  if (!into_arguments) {
+    w.line(fmt::format("T L[{}];", n * n));
+    w.line(fmt::format("T D[{}];", n));
+  }
   w.line("detail::ldlt_factor(M, L, D);");
   w.line("detail::ldlt_solve(L, D, ddq);");
   return batch;

@@ -114,8 +114,9 @@ std::string function(const std::string& doc, const std::string& signature, const
 /// tangent does, and an unused local is an error under -Werror.
 std::string without_unused_locals(const std::string& body);
 /// M and f into local arrays, M = L D L^T, then the accelerations M^-1 f into `ddq`. Returns the
-/// batch, whose outputs are the upper triangle of M, row by row, then f.
-CseBatch accelerations(BodyWriter& w, const Equations& e);
+/// batch, whose outputs are the upper triangle of M, row by row, then f. With `into_arguments`,
+/// ddq, L and D are the function's arguments rather than locals.
+CseBatch accelerations(BodyWriter& w, const Equations& e, bool into_arguments = false);
 
 inline const char* all_unused = "(void)t; (void)x; (void)u; (void)p;";
 

@@ -75,20 +75,6 @@ void coordinate_rates(BodyWriter& w, const Equations& e, const std::string& targ
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("{}[{}] = {};", target, i, rates[i]));
 }
 
-std::string rhs_function(const Equations& e) {
-  if (e.has_multipliers) return constrained_rhs_function(e);
-  if (!e.articulated_accelerations.empty()) return articulated_rhs_function(e);
-  std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
-  BodyWriter w(e);
-  accelerations(w, e);
-  coordinate_rates(w, e, "xdot");
-  for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
-  return function(fmt::format("/// Explicit first-order form x' = [{}; M^-1 f] with x = [q; {}].\n"
-                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
-                              e.uses_pseudo_velocities() ? "W s + w" : "q'", e.uses_pseudo_velocities() ? "s" : "q'", n + k),
-                  "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
-}
-
 // Recursive kinematics (equations.hpp): ∂τ/∂(q, q', u) of the Newton–Euler inverse dynamics
 // τ = M q'' − f at a given q'', by a tangent sweep through the kinematics' intermediates and τ's code
 // (the derivatives of expressions in intermediates, which a symbolic gradient would take for
@@ -96,6 +82,28 @@ std::string rhs_function(const Equations& e) {
 // empty for the other models.
 bool uses_newton_euler_gradient(const Equations& e) {
   return !e.inverse_dynamics.empty() && !e.solves_for_velocities() && e.articulated_accelerations.empty();
+}
+
+std::string rhs_function(const Equations& e) {
+  if (e.has_multipliers) return constrained_rhs_function(e);
+  if (!e.articulated_accelerations.empty()) return articulated_rhs_function(e);
+  std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
+  BodyWriter w(e);
+  if (uses_newton_euler_gradient(e)) {
+    // a tree's M and f are long code, written once, in detail::factored_accelerations
+    w.line(fmt::format("T ddq[{}];", k));
+    w.line(fmt::format("T L[{}];", k * k));
+    w.line(fmt::format("T D[{}];", k));
+    w.line("detail::factored_accelerations(t, x, u, p, ddq, L, D);");
+  } else {
+    accelerations(w, e);
+  }
+  coordinate_rates(w, e, "xdot");
+  for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
+  return function(fmt::format("/// Explicit first-order form x' = [{}; M^-1 f] with x = [q; {}].\n"
+                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
+                              e.uses_pseudo_velocities() ? "W s + w" : "q'", e.uses_pseudo_velocities() ? "s" : "q'", n + k),
+                  "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
 std::string newton_euler_gradient_function(const Equations& e) {
@@ -122,6 +130,21 @@ std::string newton_euler_gradient_function(const Equations& e) {
          "}  // namespace detail\n\n";
 }
 
+// q'' and the factors of M for jacobian_state of a tree, whose own code then is the sweep's call and
+// the solves: rhs's code is not written a second time (it was most of a 21-joint tree's header)
+std::string factored_accelerations_function(const Equations& e) {
+  if (!uses_newton_euler_gradient(e)) return "";
+  std::size_t n = e.num_velocities();
+  BodyWriter w(e);
+  accelerations(w, e, true);
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.\n"
+                              "/// ddq: {0}; L: {0}x{0}, row-major; D: {0}.\n", n),
+                  "void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D)",
+                  w.finish(all_unused)) +
+         "}  // namespace detail\n\n";
+}
+
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
@@ -132,10 +155,14 @@ std::string jacobian_state_function(const Equations& e) {
   BodyWriter w(e);
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
-  accelerations(w, e);
   bool newton_euler = uses_newton_euler_gradient(e);
+  if (!newton_euler) accelerations(w, e);
   if (newton_euler) {
     std::size_t W = N + s.inputs.size();
+    w.line(fmt::format("T ddq[{}];", n));
+    w.line(fmt::format("T L[{}];", n * n));
+    w.line(fmt::format("T D[{}];", n));
+    w.line("detail::factored_accelerations(t, x, u, p, ddq, L, D);");
     w.line(fmt::format("T F[{}];", n * W));
     w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
   }
@@ -190,9 +217,10 @@ std::string jacobian_input_function(const Equations& e) {
   std::size_t nq = s.num_coordinates(), n = e.forcing.size(), m = s.inputs.size();
   BodyWriter w(e);
   if (m > 0) {
-    auto Mcode = w.batch(upper_triangle(e.mass_matrix, n));
     w.line(fmt::format("T M[{}];", n * n));
-    write_symmetric(w, Mcode, n, "M");
+    // a tree's M is long code, written once, in mass_matrix
+    if (uses_newton_euler_gradient(e)) w.line("mass_matrix(t, x, p, M);");
+    else write_symmetric(w, w.batch(upper_triangle(e.mass_matrix, n)), n, "M");
     w.line(fmt::format("T L[{}];", n * n));
     w.line(fmt::format("T D[{}];", n));
     w.line("detail::ldlt_factor(M, L, D);");
@@ -327,7 +355,7 @@ std::string cyclic_list(const Equations& e) {
 // every function of the header but the detail namespace, in the header's order
 std::string all_functions(const Equations& e) {
   std::string functions = constrained_solver(e);
-  functions += mass_matrix_function(e) + forcing_function(e) + rhs_function(e) + newton_euler_gradient_function(e) +
+  functions += mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) + newton_euler_gradient_function(e) +
                jacobian_state_function(e) + jacobian_input_function(e) + linearization_function(e);
   functions += e.articulated_accelerations.empty()
                    ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
