@@ -110,8 +110,8 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   if (mech.tree_velocities) return derive_joint_tree_appell(model, mech);
   const Symbols& s = model.symbols;
   std::size_t n = s.coordinates.size();
-  ConstraintSet constraints = constraint_set(model, mech.motion);
-  require_independent(constraints, s);
+  ConstraintSet constraints = constraint_set(model, mech);
+  require_independent(constraints, s, mech.intermediates);
   auto chosen = pseudo_velocities(model, constraints, mech.motion);
   if (auto* why = std::get_if<std::string>(&chosen)) throw std::invalid_argument(*why);
   const PseudoVelocities& p = std::get<PseudoVelocities>(chosen);

@@ -4,6 +4,8 @@
 #include "derive/constraints.hpp"
 
 #include <cmath>
+#include <functional>
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -21,7 +23,8 @@ std::size_t ConstraintSet::num_holonomic() const {
   return count;
 }
 
-ConstraintSet constraint_set(const Model& model, const MotionSymbols& motion) {
+ConstraintSet constraint_set(const Model& model, const Mechanics& mechanics) {
+  const MotionSymbols& motion = mechanics.motion;
   const Symbols& s = model.symbols;
   std::size_t n = s.coordinates.size(), m = model.constraints.size();
   ConstraintSet c;
@@ -33,6 +36,14 @@ ConstraintSet constraint_set(const Model& model, const MotionSymbols& motion) {
     const Constraint& k = model.constraints[i];
     c.names.push_back(k.name);
     c.holonomic.push_back(k.holonomic);
+    if (!mechanics.constraint_terms.empty()) {
+      const ConstraintTerms& t = mechanics.constraint_terms[i];
+      c.position.push_back(k.holonomic ? tidy(k.expression, motion) : ex(0));
+      for (unsigned j = 0; j < n; ++j) c.jacobian(i, j) = tidy(t.jacobian[j], motion);
+      c.bias.push_back(tidy(t.bias, motion));
+      c.acceleration_bias.push_back(tidy(t.acceleration_bias, motion));
+      continue;
+    }
     ex velocity_level = k.holonomic ? time_derivative(k.expression, s) : k.expression;
     c.position.push_back(k.holonomic ? tidy(k.expression, motion) : ex(0));
     for (unsigned j = 0; j < n; ++j) c.jacobian(i, j) = tidy(velocity_level.diff(s.velocities[j]), motion);
@@ -53,8 +64,10 @@ bool constraints_scleronomic(const ConstraintSet& c, const Symbols& s) {
   return true;
 }
 
-double initial_value(const GiNaC::ex& e, const Symbols& s) {
-  return evaluate(e, [&](const GiNaC::symbol& x) -> double {
+double initial_value(const GiNaC::ex& e, const Symbols& s, const std::vector<Intermediate>& intermediates) {
+  // the intermediates' values in their order, each from those before it
+  std::map<ex, double, GiNaC::ex_is_less> known;
+  std::function<double(const GiNaC::symbol&)> value_of = [&](const GiNaC::symbol& x) -> double {
     for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
       if (x == s.coordinates[i]) return s.initial_coordinates[i];
       if (x == s.velocities[i]) return s.initial_velocities[i];
@@ -63,11 +76,15 @@ double initial_value(const GiNaC::ex& e, const Symbols& s) {
       if (x == s.parameters[i]) return s.parameter_defaults[i];
     for (std::size_t i = 0; i < s.inputs.size(); ++i)
       if (x == s.inputs[i]) return s.input_defaults[i];
+    if (auto found = known.find(x); found != known.end()) return found->second;
     return 0;  // time
-  });
+  };
+  for (const Intermediate& i : intermediates) known[i.symbol] = evaluate(i.definition, value_of);
+  return evaluate(e, value_of);
 }
 
-std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s) {
+std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s,
+                                               const std::vector<Intermediate>& intermediates) {
   // Gram–Schmidt over the rows of C in file order: a row (nearly) in the span of the
   // rows before it adds no restriction
   std::vector<std::vector<double>> basis;
@@ -76,7 +93,7 @@ std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Sym
     std::vector<double> row;
     double size = 0;
     for (unsigned j = 0; j < c.jacobian.cols(); ++j) {
-      row.push_back(initial_value(c.jacobian(i, j), s));
+      row.push_back(initial_value(c.jacobian(i, j), s, intermediates));
       size = std::max(size, std::abs(row.back()));
     }
     for (const auto& b : basis) {
@@ -97,8 +114,8 @@ std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Sym
   return dependent;
 }
 
-void require_independent(const ConstraintSet& c, const Symbols& s) {
-  std::vector<std::string> dependent = dependent_constraints(c, s);
+void require_independent(const ConstraintSet& c, const Symbols& s, const std::vector<Intermediate>& intermediates) {
+  std::vector<std::string> dependent = dependent_constraints(c, s, intermediates);
   if (dependent.empty()) return;
   std::string names;
   for (const std::string& d : dependent) names += (names.empty() ? "'" : ", '") + d + "'";

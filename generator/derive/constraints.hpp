@@ -6,20 +6,24 @@
 
 namespace eomgen {
 
-/// C, b, g and the acceleration bias of every [[constraints]] entry, in file order.
-ConstraintSet constraint_set(const Model& model, const MotionSymbols& motion);
+/// C, b, g and the acceleration bias of every [[constraints]] entry, in file order (through the
+/// frames, Mechanics::constraint_terms, with recursive kinematics).
+ConstraintSet constraint_set(const Model& model, const Mechanics& mechanics);
 
 /// No constraint depends on time: ideal constraints then do no work, and T + V stays.
 bool constraints_scleronomic(const ConstraintSet& constraints, const Symbols& symbols);
 
-/// The value of e at the model's initial state, default parameters and inputs, t = 0.
-double initial_value(const GiNaC::ex& e, const Symbols& symbols);
+/// The value of e at the model's initial state, default parameters and inputs, t = 0, with the
+/// values of `intermediates` (recursive kinematics) computed in their order.
+double initial_value(const GiNaC::ex& e, const Symbols& symbols, const std::vector<Intermediate>& intermediates = {});
 
 /// The constraints whose row of C, at the model's initial state and default parameters,
 /// depends on the rows before it (empty when C has full rank there).
-std::vector<std::string> dependent_constraints(const ConstraintSet& constraints, const Symbols& symbols);
+std::vector<std::string> dependent_constraints(const ConstraintSet& constraints, const Symbols& symbols,
+                                               const std::vector<Intermediate>& intermediates = {});
 
 /// Throws std::invalid_argument naming the dependent constraints, if there are any.
-void require_independent(const ConstraintSet& constraints, const Symbols& symbols);
+void require_independent(const ConstraintSet& constraints, const Symbols& symbols,
+                         const std::vector<Intermediate>& intermediates = {});
 
 }  // namespace eomgen

@@ -10,8 +10,8 @@ namespace eomgen {
 Equations derive_lagrange1(const Model& model, const Mechanics& mechanics) {
   Equations e = derive_lagrange2(model, mechanics);
   e.method = "lagrange1";
-  e.constraints = constraint_set(model, mechanics.motion);
-  require_independent(e.constraints, model.symbols);
+  e.constraints = constraint_set(model, mechanics);
+  require_independent(e.constraints, model.symbols, mechanics.intermediates);
   e.has_multipliers = true;
   e.degrees_of_freedom = model.symbols.coordinates.size() - e.constraints.size();
   e.conserves_energy_without_inputs =

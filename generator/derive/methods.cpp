@@ -99,9 +99,9 @@ std::string method_refusal(const Model& model) {
     return fmt::format("method \"{}\" is not available in this version of eomgen; use \"lagrange2\", "
                        "\"lagrange1\" (constraints with multipliers), \"appell\" (pseudo-velocities) or \"hamilton\"",
                        model.method);
-  if (model.recursive_kinematics && model.method != "lagrange2" && !has_spherical_joints(model))
+  if (model.recursive_kinematics && model.method != "lagrange2" && model.method != "lagrange1" && !has_spherical_joints(model))
     return fmt::format("recursive kinematics ([model] kinematics = \"recursive\") derives Lagrange's equations of the "
-                       "second kind only: use method = \"lagrange2\", or kinematics = \"expanded\" for method \"{}\"",
+                       "second kind or of the first kind only: use method = \"lagrange2\" or \"lagrange1\", or kinematics = \"expanded\" for method \"{}\"",
                        model.method);
   if (model.method == "hamilton" && !model.constraints.empty())
     return "Hamilton's canonical equations here need independent coordinates and no constraints: use method = "

@@ -152,6 +152,25 @@ void add_rate_kinetic_energy(Mechanics& m, const Model& model, const JointVeloci
   }
 }
 
+// C, b and γ of a constraint whose expression holds frames' rotations and origins (points): a holonomic
+// g gives C = ∂g/∂q through the frames, b = ∂g/∂t, γ = g̈ at q̈ = 0; a nonholonomic a·q̇ + b its
+// coefficients and γ = its rate at q̈ = 0 (Hiller §2.2)
+ConstraintTerms constraint_terms(const Constraint& c, const Symbols& s, const RecursiveKinematics& frames) {
+  ConstraintTerms t;
+  if (c.holonomic) {
+    t.jacobian = frames.gradient(c.expression);
+    t.bias = c.expression.diff(s.time);
+    t.acceleration_bias = frames.rate_along_motion(c.expression, true);
+    return t;
+  }
+  GiNaC::exmap at_rest;
+  for (const auto& v : s.velocities) at_rest[v] = 0;
+  for (const auto& v : s.velocities) t.jacobian.push_back(c.expression.diff(v));
+  t.bias = c.expression.subs(at_rest);
+  t.acceleration_bias = frames.rate_along_motion(c.expression, false);
+  return t;
+}
+
 // τ = M q'' − f with recursive kinematics (mechanics.hpp): the frames' Newton–Euler recursion, the
 // bodies outside the frames projected on their Jacobians, then the applied forces, [energy] and R
 void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics& frames, const std::vector<bool>& in_frame) {
@@ -282,6 +301,8 @@ Mechanics compute_mechanics(const Model& model) {
   if (frames) add_inverse_dynamics(m, model, *frames, in_frame);
   for (const Intermediate& i : m.intermediates) m.motion.symbols.insert(i.symbol);  // a joint tree's, too
   if (frames && !m.composite_mass_matrix) m.composite_mass_matrix = frames->composite_mass_matrix(m.intermediates);
+  if (frames)
+    for (const Constraint& c : model.constraints) m.constraint_terms.push_back(constraint_terms(c, s, *frames));
   if (!frames)
     for (const auto& q : s.coordinates) m.potential_gradient.push_back(m.potential_energy.diff(q));
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t

@@ -31,6 +31,13 @@ struct BodyKinematics {
   GiNaC::matrix inertia{3, 3};              // body frame, about the centre of mass
 };
 
+/// A [[constraints]] entry with recursive kinematics: C (one entry per coordinate), b and γ of
+/// C q̈ + γ = 0 through the frames' rotations and origins (RecursiveKinematics::rate_along_motion).
+struct ConstraintTerms {
+  std::vector<GiNaC::ex> jacobian;
+  GiNaC::ex bias, acceleration_bias;
+};
+
 struct Mechanics {
   MotionSymbols motion;              // q, q̇, t, u
   std::vector<BodyKinematics> bodies;
@@ -63,6 +70,8 @@ struct Mechanics {
   /// A joint tree with ball or free joints: its pseudo-velocities, in which M, the bias forces,
   /// τ and T above are written (spatial/joint_velocities.hpp); the rest stays in q and q'.
   std::optional<JointVelocities> tree_velocities;
+  /// Recursive kinematics: each constraint's terms through the frames, in file order.
+  std::vector<ConstraintTerms> constraint_terms;
 };
 
 /// Hiller §2.1, §3.1, §3.9: velocities by the chain rule through q and t,

@@ -24,7 +24,41 @@ ex named_in(std::vector<Intermediate>& out, const std::string& who, const std::s
   return intermediate(out, who + "." + label, cpp, definition.expand());
 }
 
+// entry (a, b) of Ṙ = R[ω]× and of R̈ = R([α]× + [ω]×[ω]×) at q̈ = 0: row a of R times [·]× e_b
+RecursiveKinematics::PoseRates rotation_rates(const FrameMotion& m, unsigned a, unsigned b) {
+  Vector3 e{0, 0, 0};
+  e[b] = 1;
+  Vector3 turning = cross(m.angular_velocity, e);
+  Vector3 accelerating = cross(m.angular_bias, e) + cross(m.angular_velocity, turning);
+  Vector3 row{m.rotation(a, 0), m.rotation(a, 1), m.rotation(a, 2)};
+  return {dot(row, turning), dot(row, accelerating)};
+}
+
 }  // namespace
+
+ex RecursiveKinematics::rate_along_motion(const ex& x, bool twice) const {
+  const Symbols& s = symbols_;
+  GiNaC::exset used;
+  collect_symbols(x, used);
+  // ṡ of each pose symbol as a symbol σ of its own, so that the second derivative sees it
+  std::vector<std::pair<ex, GiNaC::symbol>> rates;
+  for (const ex& u : used)
+    if (pose_rates_.count(u)) rates.emplace_back(u, GiNaC::symbol());
+  auto once = [&](const ex& y, bool second) {
+    ex d = y.diff(s.time);
+    for (std::size_t j = 0; j < s.coordinates.size(); ++j) d += y.diff(s.coordinates[j]) * s.velocities[j];
+    for (const auto& [pose, sigma] : rates) {
+      d += y.diff(GiNaC::ex_to<GiNaC::symbol>(pose)) * sigma;
+      if (second) d += y.diff(sigma) * pose_rates_.at(pose).bias_acceleration;
+    }
+    return d;
+  };
+  ex d = once(x, false);
+  if (twice) d = once(d, true);
+  GiNaC::exmap rate_of;
+  for (const auto& [pose, sigma] : rates) rate_of[sigma] = pose_rates_.at(pose).rate;
+  return d.subs(rate_of);
+}
 
 ex RecursiveKinematics::named(const std::string& name, const std::string& label, const ex& definition) {
   return named_in(intermediates_, name, label, definition);
@@ -58,10 +92,16 @@ RecursiveKinematics::RecursiveKinematics(const Model& model, std::vector<Interme
             Vector3 wb = cross(w, e);
             d.push_back(m.rotation(a, 0) * wb[0] + m.rotation(a, 1) * wb[1] + m.rotation(a, 2) * wb[2]);
           }
+          pose_rates_[m.rotation(a, b)] = rotation_rates(m, a, b);
         }
       if (fresh(m.origin[a])) {
         std::vector<ex>& d = partials_[m.origin[a]];
-        for (unsigned j = 0; j < n; ++j) d.push_back(m.partial_velocity(a, j));
+        ex rate = 0;
+        for (unsigned j = 0; j < n; ++j) {
+          d.push_back(m.partial_velocity(a, j));
+          rate += m.partial_velocity(a, j) * symbols_.velocities[j];
+        }
+        pose_rates_[m.origin[a]] = {rate, m.acceleration_bias[a]};
       }
     }
     frames_.push_back(m);

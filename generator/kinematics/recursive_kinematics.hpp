@@ -34,6 +34,13 @@ struct FrameMotion {
 
 class RecursiveKinematics {
  public:
+  /// A frame's rotation entry or origin component: its rate and its acceleration at q̈ = 0.
+  struct PoseRates {
+    GiNaC::ex rate, bias_acceleration;
+  };
+  /// Whether x is a frame's rotation entry or origin component (a symbol time_derivative follows).
+  bool is_pose(const GiNaC::ex& x) const { return pose_rates_.count(x) > 0; }
+
   /// The motions of the model's frame links, appending their intermediates to `intermediates`.
   RecursiveKinematics(const Model& model, std::vector<Intermediate>& intermediates);
 
@@ -43,6 +50,12 @@ class RecursiveKinematics {
 
   /// ∂x/∂q_j for every j by the chain rule through the frames' rotations and origins.
   std::vector<GiNaC::ex> gradient(const GiNaC::ex& x) const;
+
+  /// dx/dt along the motion without the q̈ terms, for x in q, q̇, t and the frames' rotations and
+  /// origins: Σ ∂x/∂s ṡ + Σ ∂x/∂q_j q̇_j + ∂x/∂t, with Ṙ = R[ω]×, ȯ = V q̇; taken twice
+  /// (`twice`), the second time with R̈ = R([α]× + [ω]×[ω]×) and ö = a of q̈ = 0, the frames'
+  /// bias accelerations: a holonomic constraint's γ (Hiller §2.2).
+  GiNaC::ex rate_along_motion(const GiNaC::ex& x, bool twice) const;
 
   /// The inertia and gravity part of the inverse dynamics, τ_j = Σ over the bodies of
   /// V_j·m(a − g) + W_j·(I α + ω × I ω) at the accelerations `q''` (symbols), by the
@@ -86,6 +99,8 @@ class RecursiveKinematics {
   std::vector<FrameMotion> frames_;
   // a frame's rotation entry or origin component → its partial derivatives by q_j
   std::map<GiNaC::ex, std::vector<GiNaC::ex>, GiNaC::ex_is_less> partials_;
+  // the same → its rate and its bias acceleration (that of q̈ = 0)
+  std::map<GiNaC::ex, PoseRates, GiNaC::ex_is_less> pose_rates_;
 };
 
 }  // namespace eomgen

@@ -29,7 +29,8 @@ Model ModelBuilder::build() {
   // frames with joints are a tree for the spatial recursions unless the file says otherwise
   bool joints = std::any_of(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) { return f.joint.has_value(); });
   m_.recursive_kinematics =
-      f_.kinematics == "recursive" || (f_.kinematics_where.line == 0 && joints && f_.method == "lagrange2");
+      f_.kinematics == "recursive" ||
+      (f_.kinematics_where.line == 0 && joints && (f_.method == "lagrange2" || f_.method == "lagrange1"));
   check_spherical_joints();
   m_.forward_dynamics = f_.forward_dynamics;
   m_.source = f_.path;

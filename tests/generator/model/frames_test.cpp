@@ -308,8 +308,9 @@ TEST(Frames, RecursiveKinematicsGrowsPolynomiallyWithTheChain) {
 TEST(Frames, RecursiveKinematicsMisusesAreLocated) {
   std::string chain = recursive(through_frames(2));
   std::string appell = chain;
-  appell.insert(appell.find("kinematics"), "method = \"lagrange1\"\n");
-  EXPECT_NE(diagnostics_of(appell).find("derives Lagrange's equations of the second kind only"), std::string::npos)
+  appell.insert(appell.find("kinematics"), "method = \"appell\"\n");
+  EXPECT_NE(diagnostics_of(appell).find("derives Lagrange's equations of the second kind or of the first kind only"),
+            std::string::npos)
       << diagnostics_of(appell);
   std::string moving = chain;
   moving.replace(moving.find("rot_z(a1)"), 9, "rot_z(a1 + t)");
