@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
+#include <cmath>
 #include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
@@ -48,18 +50,78 @@ RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* q
   return joint;
 }
 
+bool has_spherical_joints(const mjModel* m) {
+  for (int j = 0; j < m->njnt; ++j)
+    if (m->jnt_type[j] == mjJNT_FREE || m->jnt_type[j] == mjJNT_BALL) return true;
+  return false;
+}
+
+// the equality connects as loops, each with the world components whose rows of the constraint
+// Jacobian (MuJoCo's, at the initial state) are independent of the rows before them
+void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
+  std::unique_ptr<mjData, void (*)(mjData*)> data(mj_makeData(m), mj_deleteData);
+  mjData* d = data.get();
+  for (int i = 0; i < m->nq; ++i) d->qpos[i] = qpos[i];
+  mj_kinematics(m, d);
+  mj_comPos(m, d);
+  std::vector<std::vector<double>> basis;
+  std::vector<mjtNum> first(std::size_t(3 * m->nv)), second(std::size_t(3 * m->nv));
+  for (int e = 0; e < m->neq; ++e) {
+    if (m->eq_type[e] != mjEQ_CONNECT || !m->eq_active[e]) continue;
+    RobotLoop loop;
+    loop.name = name_of(m, m->name_eqadr, e);
+    if (loop.name.empty()) loop.name = fmt::format("loop{}", r.loops.size() + 1);
+    int body[2] = {m->eq_obj1id[e], m->eq_obj2id[e]};
+    loop.body1 = body[0] - 1;
+    loop.body2 = body[1] - 1;
+    loop.anchor1 = triple(m->eq_data + mjNEQDATA * e);
+    loop.anchor2 = triple(m->eq_data + mjNEQDATA * e + 3);
+    mjtNum* jacobian[2] = {first.data(), second.data()};
+    for (int k = 0; k < 2; ++k) {
+      mjtNum point[3];
+      mju_rotVecMat(point, m->eq_data + mjNEQDATA * e + 3 * k, d->xmat + 9 * body[k]);
+      mju_addTo3(point, d->xpos + 3 * body[k]);
+      mj_jac(m, d, jacobian[k], nullptr, point, body[k]);
+    }
+    for (int a = 0; a < 3; ++a) {
+      std::vector<double> row(std::size_t(m->nv));
+      double size = 0, norm = 0;
+      for (int v = 0; v < m->nv; ++v) {
+        row[std::size_t(v)] = first[std::size_t(a * m->nv + v)] - second[std::size_t(a * m->nv + v)];
+        size = std::max(size, std::abs(row[std::size_t(v)]));
+      }
+      for (const std::vector<double>& b : basis) {
+        double along = 0;
+        for (std::size_t v = 0; v < row.size(); ++v) along += row[v] * b[v];
+        for (std::size_t v = 0; v < row.size(); ++v) row[v] -= along * b[v];
+      }
+      for (double x : row) norm += x * x;
+      norm = std::sqrt(norm);
+      loop.kept[std::size_t(a)] = norm > 1e-9 * size && size > 0;
+      if (!loop.kept[std::size_t(a)]) continue;
+      for (double& x : row) x /= norm;
+      basis.push_back(row);
+    }
+    r.loops.push_back(loop);
+  }
+}
+
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
   if (m->ntendon)
     r.warnings.push_back({fmt::format("{} tendon(s): not carried (a tendon's length is no joint)", m->ntendon), "tendon", "", 0});
   static const char* const kinds[] = {"connect", "weld", "joint", "tendon", "distance"};
+  bool loops = !has_spherical_joints(m);
   for (int e = 0; e < m->neq; ++e) {
     std::string name = name_of(m, m->name_eqadr, e);
     int type = m->eq_type[e];
-    r.warnings.push_back({fmt::format("equality constraint {} ({}): not carried (closed loops and coupled joints are not "
-                                      "imported yet)",
+    if (type == mjEQ_CONNECT && loops) continue;
+    r.warnings.push_back({fmt::format("equality constraint {} ({}): not carried ({})",
                                       name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
-                                      type >= 0 && type < 5 ? kinds[type] : "of another kind"),
+                                      type >= 0 && type < 5 ? kinds[type] : "of another kind",
+                                      type == mjEQ_CONNECT ? "a loop in a robot with ball or free joints, whose Appell equations "
+                                                             "take no constraints here yet"
+                                                           : "only connects become constraints"),
                           "equality", name, e + 1});
   }
   bool contacts = !(m->opt.disableflags & mjDSBL_CONTACT);
@@ -184,6 +246,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
   read_actuators(m, r);
+  if (!has_spherical_joints(m)) read_loops(m, qpos, r);
   note_losses(m, r);
   return r;
 }

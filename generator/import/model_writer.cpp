@@ -308,6 +308,33 @@ std::string identifier_of(const std::string& text) {
   return out;
 }
 
+// each loop as two points, one in each body, and a holonomic constraint per independent world
+// component of their distance (MuJoCo's connect is soft, by its solref and solimp; here it is exact)
+std::string loop_constraints(const Robot& robot, const std::vector<std::string>& frame_of, Names& names, Sections& out) {
+  std::string text;
+  for (const RobotLoop& loop : robot.loops) {
+    std::string base = identifier_of(loop.name), ends[2];
+    int bodies[2] = {loop.body1, loop.body2};
+    const Triple* anchors[2] = {&loop.anchor1, &loop.anchor2};
+    for (int k = 0; k < 2; ++k) {
+      ends[k] = names.take(fmt::format("{}_{}", base, k + 1));
+      out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", ends[k],
+                                bodies[k] < 0 ? "" : "frame = \"" + frame_of[std::size_t(bodies[k])] + "\"\n",
+                                vector_text(*anchors[k]));
+    }
+    for (std::size_t a = 0; a < 3; ++a) {
+      const char axis = "xyz"[a];
+      if (!loop.kept[a]) {
+        text += fmt::format("# {}: its {} component follows from the others at the initial state (left out)\n", base, axis);
+        continue;
+      }
+      text += fmt::format("\n[[constraints]]\nname = \"{}\"\nholonomic = \"{}.{} - {}.{}\"\n", names.take(fmt::format("{}_{}", base, axis)),
+                          ends[0], axis, ends[1], axis);
+    }
+  }
+  return text;
+}
+
 std::string model_file_text(const Robot& robot, const std::string& name, const std::string& source) {
   Names names, frames;
   Sections out;
@@ -320,11 +347,14 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   for (const RobotSite& s : robot.sites)
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
+  std::string constraints = loop_constraints(robot, frame_of, names, out);
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);
   for (const RobotWarning& w : robot.warnings) text += "# not carried: " + w.text + "\n";
   for (const std::string& w : out.warnings) text += "# not carried: " + w + "\n";
   text += fmt::format("\n[model]\nname = \"{}\"\ntitle = \"{} (imported)\"\n", name, robot.name.empty() ? name : robot.name);
+  // a loop's constraints take multipliers
+  if (!constraints.empty()) text += "method = \"lagrange1\"\n";
   text += "\n[gravity]\nacceleration = " + vector_text(robot.gravity) + "\n";
   if (!out.inputs.empty()) text += "\n[inputs]\n" + out.inputs;
   text += "\n[coordinates]\n" + out.coordinates + out.frames + out.bodies + out.points;
@@ -334,7 +364,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
     if (!out.dissipation.empty()) text += "dissipation = " + sum_text(out.dissipation) + "\n";
     if (!out.potential.empty()) text += "potential = " + sum_text(out.potential) + "\n";
   }
-  text += out.forces + out.scenes;
+  text += out.forces + constraints + out.scenes;
   return text;
 }
 

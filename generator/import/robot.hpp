@@ -81,6 +81,17 @@ struct RobotWarning {
   int ordinal = 0;
 };
 
+/// A loop closed by an MJCF equality connect: the point at anchor1 of body1 stays on the point at
+/// anchor2 of body2 (−1: the world; anchor2 is then a world point). `kept` are the components, x,
+/// y, z in the world, whose rows of the constraint Jacobian are independent at the initial state
+/// (a planar loop closes with two).
+struct RobotLoop {
+  std::string name;
+  int body1 = -1, body2 = -1;
+  Triple anchor1{0, 0, 0}, anchor2{0, 0, 0};
+  std::array<bool, 3> kept{true, true, true};
+};
+
 struct Robot {
   std::string name;
   std::string reader;  // what read the file, e.g. "MuJoCo 2.2.2's compiler"
@@ -90,6 +101,7 @@ struct Robot {
   std::vector<RobotActuator> actuators;
   std::vector<RobotSite> sites;
   std::vector<RobotKeyframe> keyframes;
+  std::vector<RobotLoop> loops;        // Lagrange I constraints of the model
   std::vector<RobotWarning> warnings;  // what the model cannot carry, each naming it
 };
 
