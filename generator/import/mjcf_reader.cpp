@@ -42,6 +42,7 @@ RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* q
   joint.initial_position.assign(qpos + q, qpos + q + nq);
   joint.initial_velocity.assign(qvel + v, qvel + v + nv);
   joint.spring_reference.assign(m->qpos_spring + q, m->qpos_spring + q + nq);
+  if (nq == 1) joint.reference = m->qpos0[q];
   joint.armature = m->dof_armature[v];
   joint.damping = m->dof_damping[v];
   joint.stiffness = m->jnt_stiffness[j];
@@ -106,6 +107,28 @@ void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
   }
 }
 
+// the equality joints between hinges or slides, as couplings in MuJoCo's polynomial
+void read_couplings(const mjModel* m, Robot& r) {
+  auto one_dof = [&](int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); };
+  for (int e = 0; e < m->neq; ++e) {
+    int first = m->eq_obj1id[e], second = m->eq_obj2id[e];
+    if (m->eq_type[e] != mjEQ_JOINT || !m->eq_active[e] || !one_dof(first) || (second >= 0 && !one_dof(second))) continue;
+    RobotCoupling c;
+    c.name = name_of(m, m->name_eqadr, e);
+    if (c.name.empty()) c.name = fmt::format("coupling{}", r.couplings.size() + 1);
+    auto place = [&](int j, int& body, int& joint, double& reference) {
+      body = m->jnt_bodyid[j] - 1;
+      joint = j - m->body_jntadr[body + 1];
+      reference = m->qpos0[m->jnt_qposadr[j]];
+    };
+    place(first, c.body1, c.joint1, c.reference1);
+    if (second >= 0) place(second, c.body2, c.joint2, c.reference2);
+    for (int k = 0; k < 5; ++k) c.coefficients[std::size_t(k)] = m->eq_data[mjNEQDATA * e + k];
+    c.equality = e;
+    r.couplings.push_back(c);
+  }
+}
+
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
   if (m->ntendon)
@@ -116,12 +139,14 @@ void note_losses(const mjModel* m, Robot& r) {
     std::string name = name_of(m, m->name_eqadr, e);
     int type = m->eq_type[e];
     if (type == mjEQ_CONNECT && loops) continue;
+    auto coupled = [&](const RobotCoupling& c) { return c.equality == e; };
+    if (type == mjEQ_JOINT && loops && std::any_of(r.couplings.begin(), r.couplings.end(), coupled)) continue;
     r.warnings.push_back({fmt::format("equality constraint {} ({}): not carried ({})",
                                       name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
                                       type >= 0 && type < 5 ? kinds[type] : "of another kind",
                                       type == mjEQ_CONNECT ? "a loop in a robot with ball or free joints, whose Appell equations "
                                                              "take no constraints here yet"
-                                                           : "only connects become constraints"),
+                                                           : "only connects and joint couplings of hinges and slides become constraints"),
                           "equality", name, e + 1});
   }
   bool contacts = !(m->opt.disableflags & mjDSBL_CONTACT);
@@ -246,7 +271,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
   read_actuators(m, r);
-  if (!has_spherical_joints(m)) read_loops(m, qpos, r);
+  if (!has_spherical_joints(m)) {
+    read_loops(m, qpos, r);
+    read_couplings(m, r);
+  }
   note_losses(m, r);
   return r;
 }

@@ -149,6 +149,26 @@ Triple turned(const Quaternion& q, const Triple& v) {
   return {v[0] + 2 * (q[0] * c[0] + d[0]), v[1] + 2 * (q[0] * c[1] + d[1]), v[2] + 2 * (q[0] * c[2] + d[2])};
 }
 
+// MuJoCo turns a hinge by qpos − qpos0 and moves a slide by it: the placement (origin, rotation)
+// at q = 0 is the body's at qpos0 turned back by the reference about the axis through the anchor
+// (origin + R(anchor − R_ref anchor), R R_ref, R_ref by −reference), or moved back along the axis
+void at_reference(const RobotJoint& j, Triple& origin, Quaternion& rotation) {
+  if (j.reference == 0 || (j.type != "hinge" && j.type != "slide")) return;
+  if (j.type == "slide") {
+    Triple back = turned(rotation, j.axis);
+    for (std::size_t a = 0; a < 3; ++a) origin[a] -= j.reference * back[a];
+    return;
+  }
+  double half = -j.reference / 2, s = std::sin(half);
+  Quaternion turn{std::cos(half), s * j.axis[0], s * j.axis[1], s * j.axis[2]};
+  Triple moved = turned(turn, j.anchor);
+  Triple shift = turned(rotation, {j.anchor[0] - moved[0], j.anchor[1] - moved[1], j.anchor[2] - moved[2]});
+  for (std::size_t a = 0; a < 3; ++a) origin[a] += shift[a];
+  const Quaternion& q = rotation;
+  rotation = {q[0] * turn[0] - q[1] * turn[1] - q[2] * turn[2] - q[3] * turn[3], q[0] * turn[1] + q[1] * turn[0] + q[2] * turn[3] - q[3] * turn[2],
+              q[0] * turn[2] - q[1] * turn[3] + q[2] * turn[0] + q[3] * turn[1], q[0] * turn[3] + q[1] * turn[2] - q[2] * turn[1] + q[3] * turn[0]};
+}
+
 // the body's geoms as its frame's shapes (MuJoCo's half sizes become radii, lengths and sides);
 // what a shape cannot be is said
 std::string shapes_text(const RobotBody& body, Sections& out) {
@@ -192,10 +212,12 @@ void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::
     out.frames += "\n[[frames]]\nname = \"" + name + "\"\n";
     if (!parent.empty()) out.frames += "parent = \"" + parent + "\"\n";
     bool free = !body.joints.empty() && body.joints[k].type == "free";  // MuJoCo places a free body by its qpos alone
-    if (k == 0 && !free) {
-      if (body.position != Triple{0, 0, 0}) out.frames += "origin = " + vector_text(body.position) + "\n";
-      if (!is_identity(body.orientation)) out.frames += "rotation = \"" + rotation_text(body.orientation) + "\"\n";
-    }
+    Triple origin{0, 0, 0};
+    Quaternion rotation{1, 0, 0, 0};
+    if (k == 0 && !free) origin = body.position, rotation = body.orientation;
+    if (!body.joints.empty()) at_reference(body.joints[k], origin, rotation);
+    if (origin != Triple{0, 0, 0}) out.frames += "origin = " + vector_text(origin) + "\n";
+    if (!is_identity(rotation)) out.frames += "rotation = \"" + rotation_text(rotation) + "\"\n";
     if (!body.joints.empty()) {
       const RobotJoint& j = body.joints[k];
       std::string base = j.name.empty() ? fmt::format("{}_q{}", frame, k + 1) : j.name;
@@ -335,6 +357,32 @@ std::string loop_constraints(const Robot& robot, const std::vector<std::string>&
   return text;
 }
 
+// q1 − ref1 − (c0 + c1 d + … + c4 d⁴), d = q2 − ref2: MuJoCo's joint coupling, its zero terms left out
+std::string coupling_constraints(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Names& names) {
+  std::string text;
+  auto shifted = [](const std::string& q, double reference) {
+    return reference == 0 ? q : fmt::format("({} - {})", q, format_number(reference));
+  };
+  for (const RobotCoupling& c : robot.couplings) {
+    std::string q1 = joint_symbols[std::size_t(c.body1)][std::size_t(c.joint1)].coordinates[0];
+    std::string expression = c.reference1 == 0 ? q1 : fmt::format("{} - {}", q1, format_number(c.reference1));
+    // − c·term, written with the sign c gives it
+    auto minus = [](double coefficient, const std::string& term) {
+      std::string size = format_number(std::abs(coefficient));
+      return fmt::format(" {} {}{}", coefficient < 0 ? "+" : "-", term.empty() ? size : (size == "1" ? "" : size + "*"), term);
+    };
+    if (c.coefficients[0] != 0) expression += minus(c.coefficients[0], "");
+    if (c.body2 >= 0) {
+      std::string d = shifted(joint_symbols[std::size_t(c.body2)][std::size_t(c.joint2)].coordinates[0], c.reference2);
+      for (std::size_t k = 1; k < 5; ++k)
+        if (c.coefficients[k] != 0)
+          expression += minus(c.coefficients[k], d + (k == 1 ? "" : fmt::format("^{}", k)));
+    }
+    text += fmt::format("\n[[constraints]]\nname = \"{}\"\nholonomic = \"{}\"\n", names.take(identifier_of(c.name)), expression);
+  }
+  return text;
+}
+
 std::string model_file_text(const Robot& robot, const std::string& name, const std::string& source) {
   Names names, frames;
   Sections out;
@@ -347,7 +395,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   for (const RobotSite& s : robot.sites)
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
-  std::string constraints = loop_constraints(robot, frame_of, names, out);
+  std::string constraints = loop_constraints(robot, frame_of, names, out) + coupling_constraints(robot, joint_symbols, names);
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);
   for (const RobotWarning& w : robot.warnings) text += "# not carried: " + w.text + "\n";

@@ -19,6 +19,7 @@ struct RobotJoint {
   Triple axis{0, 0, 1}, anchor{0, 0, 0};  // in the body's frame
   double armature = 0, damping = 0, stiffness = 0;
   std::vector<double> spring_reference;    // the joint's qpos at which the spring is slack
+  double reference = 0;                    // a hinge's or slide's qpos0 (MJCF ref): the body's place is at it
   std::vector<double> initial_position;    // its part of qpos
   std::vector<double> initial_velocity;    // its part of qvel
   bool limited = false;
@@ -92,6 +93,16 @@ struct RobotLoop {
   std::array<bool, 3> kept{true, true, true};
 };
 
+/// Joints coupled by an MJCF equality joint: q1 − ref1 = c0 + c1 d + c2 d² + c3 d³ + c4 d⁴ with
+/// d = q2 − ref2 (q1 − ref1 = c0 alone without a second joint); refs are qpos0, joints hinges or slides.
+struct RobotCoupling {
+  std::string name;
+  int body1 = -1, joint1 = -1, body2 = -1, joint2 = -1;  // a body's index and its joint's index in it
+  double reference1 = 0, reference2 = 0;
+  std::array<double, 5> coefficients{0, 0, 0, 0, 0};
+  int equality = -1;  // its place among the file's equality constraints
+};
+
 struct Robot {
   std::string name;
   std::string reader;  // what read the file, e.g. "MuJoCo 2.2.2's compiler"
@@ -102,6 +113,7 @@ struct Robot {
   std::vector<RobotSite> sites;
   std::vector<RobotKeyframe> keyframes;
   std::vector<RobotLoop> loops;        // Lagrange I constraints of the model
+  std::vector<RobotCoupling> couplings;  // the same
   std::vector<RobotWarning> warnings;  // what the model cannot carry, each naming it
 };
 

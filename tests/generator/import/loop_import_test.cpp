@@ -1,4 +1,5 @@
-// A closed loop in MJCF (an equality connect) imported as Lagrange I constraints: two points, one
+// Coupled joints and a closed loop in MJCF (equality joint and connect) imported as Lagrange I
+// constraints. A connect: two points, one
 // in each body, and one holonomic constraint per independent world component of their distance
 // (MuJoCo's own Jacobian at the initial state decides which: a planar loop keeps x and y). The
 // imported four-bar (tests/crosscheck/mjcf/four_bar.xml, its bodies placed at the closed
@@ -80,6 +81,46 @@ TEST(LoopImport, TheImportedFourBarHasTheHandWrittenEquations) {
              fmt::format("C[{}][{}]", i, j));
     }
   }
+}
+
+// MuJoCo's joint coupling q1 − q1₀ = c0 + c1 d + … + c4 d⁴, d = q2 − q2₀ (q1 − q1₀ = c0 alone), with
+// q₀ the joints' qpos0 (here a reference of 0.2°), becomes a holonomic constraint in the coordinates
+TEST(LoopImport, CoupledJointsBecomeAConstraintInTheirCoordinates) {
+  std::string path = temporary_directory() + "/coupled.xml";
+  std::ofstream(path) << R"xml(<mujoco model="coupled">
+  <worldbody>
+    <body name="left" pos="0 0 1">
+      <joint name="a" type="hinge" axis="0 1 0" ref="0.2"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.3" size="0.02" mass="1" contype="0" conaffinity="0"/>
+    </body>
+    <body name="right" pos="0.5 0 1">
+      <joint name="b" type="hinge" axis="0 1 0"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.3" size="0.02" mass="1" contype="0" conaffinity="0"/>
+    </body>
+    <body name="slider" pos="1 0 1">
+      <joint name="s" type="slide" axis="1 0 0"/>
+      <geom type="sphere" size="0.05" mass="0.5" contype="0" conaffinity="0"/>
+    </body>
+  </worldbody>
+  <equality>
+    <joint name="gear" joint1="a" joint2="b" polycoef="0.1 -2 0.5 0 0"/>
+    <joint joint1="s" polycoef="0.05 0 0 0 0"/>
+  </equality>
+</mujoco>)xml";
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_EQ(text->find("not carried"), std::string::npos) << *text;
+  for (const char* line : {"method = \"lagrange1\"", "name = \"gear\"\nholonomic = \"a - 0.003490658503988659 - 0.1 + 2*b - 0.5*b^2\"",
+                           "name = \"coupling2\"\nholonomic = \"s - 0.05\""})
+    EXPECT_NE(text->find(line), std::string::npos) << line << " in\n" << *text;
+  Equations e = derive_text(*text, "coupled.toml");
+  ASSERT_EQ(e.constraints.size(), 2u);
+  GiNaC::exmap at = point_by_name(e, {{"a", 0.4}, {"b", 0.3}, {"s", 0.2}, {"der(a)", 1}, {"der(b)", -2}, {"der(s)", 0.5}});
+  EXPECT_NEAR(value_at(e.constraints.jacobian(0, 0), at), 1, 1e-15);
+  EXPECT_NEAR(value_at(e.constraints.jacobian(0, 1), at), 2 - 0.3, 1e-15);
+  // γ = g̈ at q̈ = 0: the −0.5 b² term gives −ḃ², with ḃ = −2
+  EXPECT_NEAR(value_at(e.constraints.acceleration_bias[0], at), -4, 1e-14);
 }
 
 }  // namespace
