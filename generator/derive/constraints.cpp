@@ -36,16 +36,15 @@ ConstraintSet constraint_set(const Model& model, const Mechanics& mechanics) {
     const Constraint& k = model.constraints[i];
     c.names.push_back(k.name);
     c.holonomic.push_back(k.holonomic);
+    c.position.push_back(k.holonomic ? tidy(k.expression, motion) : ex(0));
     if (!mechanics.constraint_terms.empty()) {
       const ConstraintTerms& t = mechanics.constraint_terms[i];
-      c.position.push_back(k.holonomic ? tidy(k.expression, motion) : ex(0));
       for (unsigned j = 0; j < n; ++j) c.jacobian(i, j) = tidy(t.jacobian[j], motion);
       c.bias.push_back(tidy(t.bias, motion));
       c.acceleration_bias.push_back(tidy(t.acceleration_bias, motion));
       continue;
     }
     ex velocity_level = k.holonomic ? time_derivative(k.expression, s) : k.expression;
-    c.position.push_back(k.holonomic ? tidy(k.expression, motion) : ex(0));
     for (unsigned j = 0; j < n; ++j) c.jacobian(i, j) = tidy(velocity_level.diff(s.velocities[j]), motion);
     c.bias.push_back(tidy(velocity_level.subs(at_rest), motion));
     // d/dt (C q' + b) without the C q'' part: the velocity-level residual is linear in q',

@@ -84,20 +84,22 @@ bool uses_newton_euler_gradient(const Equations& e) {
   return !e.inverse_dynamics.empty() && !e.solves_for_velocities() && e.articulated_accelerations.empty();
 }
 
+// q'' and the factors of M into local arrays ddq, L, D by detail::factored_accelerations
+void call_factored_accelerations(BodyWriter& w, std::size_t n) {
+  w.line(fmt::format("T ddq[{}];", n));
+  w.line(fmt::format("T L[{}];", n * n));
+  w.line(fmt::format("T D[{}];", n));
+  w.line("detail::factored_accelerations(t, x, u, p, ddq, L, D);");
+}
+
 std::string rhs_function(const Equations& e) {
   if (e.has_multipliers) return constrained_rhs_function(e);
   if (!e.articulated_accelerations.empty()) return articulated_rhs_function(e);
   std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
-  if (uses_newton_euler_gradient(e)) {
-    // a tree's M and f are long code, written once, in detail::factored_accelerations
-    w.line(fmt::format("T ddq[{}];", k));
-    w.line(fmt::format("T L[{}];", k * k));
-    w.line(fmt::format("T D[{}];", k));
-    w.line("detail::factored_accelerations(t, x, u, p, ddq, L, D);");
-  } else {
-    accelerations(w, e);
-  }
+  // a tree's M and f are long code, written once, in detail::factored_accelerations
+  if (uses_newton_euler_gradient(e)) call_factored_accelerations(w, k);
+  else accelerations(w, e);
   coordinate_rates(w, e, "xdot");
   for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
   return function(fmt::format("/// Explicit first-order form x' = [{}; M^-1 f] with x = [q; {}].\n"
@@ -159,10 +161,7 @@ std::string jacobian_state_function(const Equations& e) {
   if (!newton_euler) accelerations(w, e);
   if (newton_euler) {
     std::size_t W = N + s.inputs.size();
-    w.line(fmt::format("T ddq[{}];", n));
-    w.line(fmt::format("T L[{}];", n * n));
-    w.line(fmt::format("T D[{}];", n));
-    w.line("detail::factored_accelerations(t, x, u, p, ddq, L, D);");
+    call_factored_accelerations(w, n);
     w.line(fmt::format("T F[{}];", n * W));
     w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
   }

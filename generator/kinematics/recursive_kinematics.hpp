@@ -38,8 +38,6 @@ class RecursiveKinematics {
   struct PoseRates {
     GiNaC::ex rate, bias_acceleration;
   };
-  /// Whether x is a frame's rotation entry or origin component (a symbol time_derivative follows).
-  bool is_pose(const GiNaC::ex& x) const { return pose_rates_.count(x) > 0; }
 
   /// The motions of the model's frame links, appending their intermediates to `intermediates`.
   RecursiveKinematics(const Model& model, std::vector<Intermediate>& intermediates);

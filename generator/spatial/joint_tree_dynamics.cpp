@@ -291,8 +291,8 @@ class Tree {
 
   // a revolute or prismatic joint's axis in its joint frame: z, when the frame was built on it
   static Vector3 joint_direction(const FrameLink::Joint& j, const JointFrame& own) {
-    Vector3 e = times(own.axes, j.axis, true);
     if (own.floating) return {0, 0, 1};
+    Vector3 e = times(own.axes, j.axis, true);
     for (ex& x : e) x = x.expand();
     return e;
   }
@@ -339,7 +339,7 @@ class Tree {
         }
         l.dofs.push_back({velocities_.of_coordinate[std::size_t(j.position[k])], s_.velocities[std::size_t(j.position[k])], zero, u, false});
       }
-  int first = -1;
+    int first = -1;
     for (std::size_t v = 0; v < velocities_.symbols.size() && first < 0; ++v)
       if (velocities_.symbols[v] == j.angular_velocity[0]) first = int(v);
     for (unsigned k = 0; k < 3; ++k) {
