@@ -20,6 +20,7 @@ set(EOMGEN_TEST_FILES
   generator/spatial/spherical_joints_test.cpp       fast     sanitized
   generator/import/model_writer_test.cpp            fast     sanitized
   generator/import/loop_import_test.cpp             fast     sanitized
+  generator/import/urdf_import_test.cpp             fast     sanitized
   generator/symbolic/simplify_test.cpp              fast     sanitized
   generator/symbolic/trig_orientation_test.cpp      fast     sanitized
   generator/symbolic/trig_rational_test.cpp         fast     sanitized

@@ -5,11 +5,15 @@
 #include <cstdlib>
 #include <cstring>
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
+
+#include "import/urdf_static_links.hpp"
 
 namespace eomgen {
 
@@ -57,8 +61,64 @@ bool has_spherical_joints(const mjModel* m) {
   return false;
 }
 
-// the equality connects as loops, each with the world components whose rows of the constraint
-// Jacobian (MuJoCo's, at the initial state) are independent of the rows before them
+// the world components of a loop's distance whose rows (Jacobian `first` − `second`, 3 × nv) are
+// independent of the rows kept before them (Gram–Schmidt into `basis`)
+void keep_independent_rows(const std::vector<mjtNum>& first, const std::vector<mjtNum>& second, int nv,
+                           std::vector<std::vector<double>>& basis, RobotLoop& loop) {
+  for (int a = 0; a < 3; ++a) {
+    std::vector<double> row(static_cast<std::size_t>(nv));
+    double size = 0, norm = 0;
+    for (int v = 0; v < nv; ++v) {
+      row[std::size_t(v)] = first[std::size_t(a * nv + v)] - second[std::size_t(a * nv + v)];
+      size = std::max(size, std::abs(row[std::size_t(v)]));
+    }
+    for (const std::vector<double>& b : basis) {
+      double along = 0;
+      for (std::size_t v = 0; v < row.size(); ++v) along += row[v] * b[v];
+      for (std::size_t v = 0; v < row.size(); ++v) row[v] -= along * b[v];
+    }
+    for (double x : row) norm += x * x;
+    norm = std::sqrt(norm);
+    loop.kept[std::size_t(a)] = norm > 1e-9 * size && size > 0;
+    if (!loop.kept[std::size_t(a)]) continue;
+    for (double& x : row) x /= norm;
+    basis.push_back(row);
+  }
+}
+
+// the loops an equality closes: a connect's two anchors; a weld (MuJoCo 2.2.2: body1's point p
+// coincides with body2's anchor a, and body1's axes turned by the quaternion D are body2's; eq_data
+// = a, p, D, torquescale) as three such pairs, at p and at the tips of unit vectors along D's x and
+// y axes, so that both the position and the orientation are held by points coinciding
+std::vector<RobotLoop> loops_of(const mjModel* m, int e, std::size_t before) {
+  RobotLoop loop;
+  loop.name = name_of(m, m->name_eqadr, e);
+  if (loop.name.empty()) loop.name = fmt::format("loop{}", before + 1);
+  loop.body1 = m->eq_obj1id[e] - 1;
+  loop.body2 = m->eq_obj2id[e] - 1;
+  const mjtNum* data = m->eq_data + mjNEQDATA * e;
+  if (m->eq_type[e] == mjEQ_CONNECT) {
+    loop.anchor1 = triple(data);
+    loop.anchor2 = triple(data + 3);
+    return {loop};
+  }
+  loop.anchor1 = triple(data + 3);
+  loop.anchor2 = triple(data);
+  std::vector<RobotLoop> pairs{loop};
+  mjtNum turn[9];
+  mju_quat2Mat(turn, data + 6);
+  for (std::size_t a = 0; a < 2; ++a) {
+    RobotLoop tip = loop;
+    tip.name += a == 0 ? "_ex" : "_ey";
+    for (std::size_t k = 0; k < 3; ++k) tip.anchor1[k] += turn[3 * k + a];
+    tip.anchor2[a] += 1;
+    pairs.push_back(tip);
+  }
+  return pairs;
+}
+
+// the equality connects and welds as loops, each with the world components whose rows of the
+// constraint Jacobian (MuJoCo's, at the initial state) are independent of the rows before them
 void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
   std::unique_ptr<mjData, void (*)(mjData*)> data(mj_makeData(m), mj_deleteData);
   mjData* d = data.get();
@@ -68,42 +128,20 @@ void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
   std::vector<std::vector<double>> basis;
   std::vector<mjtNum> first(std::size_t(3 * m->nv)), second(std::size_t(3 * m->nv));
   for (int e = 0; e < m->neq; ++e) {
-    if (m->eq_type[e] != mjEQ_CONNECT || !m->eq_active[e]) continue;
-    RobotLoop loop;
-    loop.name = name_of(m, m->name_eqadr, e);
-    if (loop.name.empty()) loop.name = fmt::format("loop{}", r.loops.size() + 1);
-    int body[2] = {m->eq_obj1id[e], m->eq_obj2id[e]};
-    loop.body1 = body[0] - 1;
-    loop.body2 = body[1] - 1;
-    loop.anchor1 = triple(m->eq_data + mjNEQDATA * e);
-    loop.anchor2 = triple(m->eq_data + mjNEQDATA * e + 3);
-    mjtNum* jacobian[2] = {first.data(), second.data()};
-    for (int k = 0; k < 2; ++k) {
-      mjtNum point[3];
-      mju_rotVecMat(point, m->eq_data + mjNEQDATA * e + 3 * k, d->xmat + 9 * body[k]);
-      mju_addTo3(point, d->xpos + 3 * body[k]);
-      mj_jac(m, d, jacobian[k], nullptr, point, body[k]);
-    }
-    for (int a = 0; a < 3; ++a) {
-      std::vector<double> row(std::size_t(m->nv));
-      double size = 0, norm = 0;
-      for (int v = 0; v < m->nv; ++v) {
-        row[std::size_t(v)] = first[std::size_t(a * m->nv + v)] - second[std::size_t(a * m->nv + v)];
-        size = std::max(size, std::abs(row[std::size_t(v)]));
+    if ((m->eq_type[e] != mjEQ_CONNECT && m->eq_type[e] != mjEQ_WELD) || !m->eq_active[e]) continue;
+    for (RobotLoop loop : loops_of(m, e, r.loops.size())) {
+      int body[2] = {loop.body1 + 1, loop.body2 + 1};
+      const Triple* anchor[2] = {&loop.anchor1, &loop.anchor2};
+      mjtNum* jacobian[2] = {first.data(), second.data()};
+      for (int k = 0; k < 2; ++k) {
+        mjtNum point[3], local[3] = {(*anchor[k])[0], (*anchor[k])[1], (*anchor[k])[2]};
+        mju_rotVecMat(point, local, d->xmat + 9 * body[k]);
+        mju_addTo3(point, d->xpos + 3 * body[k]);
+        mj_jac(m, d, jacobian[k], nullptr, point, body[k]);
       }
-      for (const std::vector<double>& b : basis) {
-        double along = 0;
-        for (std::size_t v = 0; v < row.size(); ++v) along += row[v] * b[v];
-        for (std::size_t v = 0; v < row.size(); ++v) row[v] -= along * b[v];
-      }
-      for (double x : row) norm += x * x;
-      norm = std::sqrt(norm);
-      loop.kept[std::size_t(a)] = norm > 1e-9 * size && size > 0;
-      if (!loop.kept[std::size_t(a)]) continue;
-      for (double& x : row) x /= norm;
-      basis.push_back(row);
+      keep_independent_rows(first, second, m->nv, basis, loop);
+      r.loops.push_back(loop);
     }
-    r.loops.push_back(loop);
   }
 }
 
@@ -138,15 +176,15 @@ void note_losses(const mjModel* m, Robot& r) {
   for (int e = 0; e < m->neq; ++e) {
     std::string name = name_of(m, m->name_eqadr, e);
     int type = m->eq_type[e];
-    if (type == mjEQ_CONNECT && loops) continue;
+    if ((type == mjEQ_CONNECT || type == mjEQ_WELD) && loops) continue;
     auto coupled = [&](const RobotCoupling& c) { return c.equality == e; };
     if (type == mjEQ_JOINT && loops && std::any_of(r.couplings.begin(), r.couplings.end(), coupled)) continue;
     r.warnings.push_back({fmt::format("equality constraint {} ({}): not carried ({})",
                                       name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
                                       type >= 0 && type < 5 ? kinds[type] : "of another kind",
-                                      type == mjEQ_CONNECT ? "a loop in a robot with ball or free joints, whose Appell equations "
+                                      type == mjEQ_CONNECT || type == mjEQ_WELD ? "a loop in a robot with ball or free joints, whose Appell equations "
                                                              "take no constraints here yet"
-                                                           : "only connects and joint couplings of hinges and slides become constraints"),
+                                                           : "only connects, welds and joint couplings of hinges and slides become constraints"),
                           "equality", name, e + 1});
   }
   bool contacts = !(m->opt.disableflags & mjDSBL_CONTACT);
@@ -198,6 +236,25 @@ void read_actuators(const mjModel* m, Robot& r) {
                           "actuator", "", 0});
 }
 
+// a URDF is read from memory with its fixed links kept (urdf_static_links.hpp), under its own path,
+// so that MuJoCo still finds the files it names beside it on disk
+mjModel* loaded_model(const std::string& path, char* error, int size) {
+  if (!is_urdf_path(path)) return mj_loadXML(path.c_str(), nullptr, error, size);
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return mj_loadXML(path.c_str(), nullptr, error, size);
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string kept = with_static_links_kept(text.str());
+  auto files = std::make_unique<mjVFS>();
+  mj_defaultVFS(files.get());
+  if (mj_makeEmptyFileVFS(files.get(), path.c_str(), int(kept.size()) + 1) != 0)
+    return mj_loadXML(path.c_str(), nullptr, error, size);
+  std::memcpy(files->filedata[files->nfile - 1], kept.c_str(), kept.size() + 1);
+  mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
+  mj_deleteVFS(files.get());
+  return model;
+}
+
 }  // namespace
 
 std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10); }
@@ -225,7 +282,7 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   char error[1000] = "";
-  std::unique_ptr<mjModel, void (*)(mjModel*)> model(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  std::unique_ptr<mjModel, void (*)(mjModel*)> model(loaded_model(path, error, sizeof error), mj_deleteModel);
   if (!model) return unreadable_robot(error);
   const mjModel* m = model.get();
   Robot r;

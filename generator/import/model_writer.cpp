@@ -330,6 +330,20 @@ std::string identifier_of(const std::string& text) {
   return out;
 }
 
+// a link that only marks a place (fixed, massless, a leaf: a URDF tool flange or a camera mount)
+// is also a point of its name at its frame's origin, for outputs and constraints
+void add_link_points(const Robot& robot, const std::vector<std::string>& frame_of, Names& names, Sections& out) {
+  std::vector<bool> parent(robot.bodies.size(), false);
+  for (const RobotBody& b : robot.bodies)
+    if (b.parent >= 0) parent[std::size_t(b.parent)] = true;
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b) {
+    const RobotBody& body = robot.bodies[b];
+    if (!body.joints.empty() || body.mass > 0 || parent[b]) continue;
+    out.points += fmt::format("\n[[points]]\nname = \"{}\"\nframe = \"{}\"\nposition = [\"0\", \"0\", \"0\"]\n",
+                              names.take(body.name), frame_of[b]);
+  }
+}
+
 // each loop as two points, one in each body, and a holonomic constraint per independent world
 // component of their distance (MuJoCo's connect is soft, by its solref and solimp; here it is exact)
 std::string loop_constraints(const Robot& robot, const std::vector<std::string>& frame_of, Names& names, Sections& out) {
@@ -395,6 +409,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   for (const RobotSite& s : robot.sites)
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
+  add_link_points(robot, frame_of, names, out);
   std::string constraints = loop_constraints(robot, frame_of, names, out) + coupling_constraints(robot, joint_symbols, names);
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);

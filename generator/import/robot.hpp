@@ -82,8 +82,8 @@ struct RobotWarning {
   int ordinal = 0;
 };
 
-/// A loop closed by an MJCF equality connect: the point at anchor1 of body1 stays on the point at
-/// anchor2 of body2 (−1: the world; anchor2 is then a world point). `kept` are the components, x,
+/// A loop closed by an MJCF equality connect, or one of the three a weld is: the point at anchor1 of
+/// body1 stays on the point at anchor2 of body2 (−1: the world; anchor2 is then a world point). `kept` are the components, x,
 /// y, z in the world, whose rows of the constraint Jacobian are independent at the initial state
 /// (a planar loop closes with two).
 struct RobotLoop {

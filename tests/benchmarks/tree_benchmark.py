@@ -13,7 +13,9 @@ branched_tree (21 oblique hinges in a humanoid's branching; with its jacobian_st
 takes about 40 s to compile) and quadruped (a free torso, four legs of three hinges: 19
 coordinates, 18 velocities). Prints a Markdown table.
 
-Usage: tree_benchmark.py EOMGEN [--quick] [ROBOT ...]   (exit 77 without a C++ compiler or MuJoCo)
+Usage: tree_benchmark.py EOMGEN [--quick] [--chart FILE.svg] [ROBOT ...]
+(exit 77 without a C++ compiler or MuJoCo). --chart also draws the times as bars, each robot's
+rhs beside mj_forward, labelled with their ratio (the README's chart).
 """
 import json
 import os
@@ -56,6 +58,31 @@ def measure(eomgen, name, work):
     return result
 
 
+def svg_chart(rows):
+    """Horizontal bars: per robot, eomgen's rhs and MuJoCo's mj_forward in µs, on one linear axis."""
+    width, left, bar, gap, top = 760, 170, 14, 16, 40
+    longest = max(max(r["eomgen_ns"], r["mujoco_ns"]) for _, r in rows) / 1000
+    scale = (width - left - 90) / longest
+    height = top + len(rows) * (2 * bar + gap) + 30
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" font-size="12">',
+           f'<rect width="{width}" height="{height}" fill="white"/>',
+           f'<text x="{left}" y="18" font-size="13">Time per call of the right-hand side [µs] (lower is faster)</text>',
+           f'<rect x="{left}" y="24" width="10" height="10" fill="#1f77b4"/><text x="{left + 14}" y="33">eomgen rhs</text>',
+           f'<rect x="{left + 100}" y="24" width="10" height="10" fill="#bbbbbb"/><text x="{left + 114}" y="33">MuJoCo mj_forward</text>']
+    y = top
+    for name, r in rows:
+        ours, theirs = r["eomgen_ns"] / 1000, r["mujoco_ns"] / 1000
+        out.append(f'<text x="{left - 8}" y="{y + bar + 4}" text-anchor="end">{name}</text>')
+        out.append(f'<rect x="{left}" y="{y}" width="{ours * scale:.1f}" height="{bar}" fill="#1f77b4"/>')
+        out.append(f'<text x="{left + ours * scale + 4:.1f}" y="{y + bar - 3}">{ours:.2f}</text>')
+        out.append(f'<rect x="{left}" y="{y + bar}" width="{theirs * scale:.1f}" height="{bar}" fill="#bbbbbb"/>')
+        out.append(f'<text x="{left + theirs * scale + 4:.1f}" y="{y + 2 * bar - 3}">{theirs:.2f} ({theirs / ours:.1f}x)</text>')
+        y += 2 * bar + gap
+    out.append(f'<line x1="{left}" y1="{top - 4}" x2="{left}" y2="{y}" stroke="black"/>')
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
@@ -63,7 +90,16 @@ def main():
     if not shutil.which("c++") or not os.path.exists("/usr/include/mujoco/mujoco.h"):
         print("no C++ compiler or no MuJoCo (apt-get install libmujoco-dev): skipped")
         return 77
-    named = [a for a in sys.argv[2:] if not a.startswith("--")]
+    arguments = sys.argv[2:]
+    chart = None
+    if "--chart" in arguments:
+        at = arguments.index("--chart")
+        if at + 1 >= len(arguments):
+            print("--chart needs a file name, e.g. --chart trees.svg")
+            return 2
+        chart = arguments[at + 1]
+        del arguments[at:at + 2]
+    named = [a for a in arguments if not a.startswith("--")]
     unknown = [a for a in named if a not in ROBOTS]
     if unknown:
         print(f"unknown robot {unknown[0]}: choose from {', '.join(ROBOTS)}")
@@ -72,13 +108,19 @@ def main():
     print("| robot | eomgen rhs | MuJoCo mj_forward | MuJoCo / eomgen | jacobian_state | jacobian_state / rhs "
           "| central differences / jacobian_state | header | generate | g++ -O2 (with the benchmark) |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    rows = []
     with tempfile.TemporaryDirectory() as work:
         for name in robots:
             r = measure(sys.argv[1], name, work)
+            rows.append((name, r))
             ours, theirs, jac, fd = r["eomgen_ns"], r["mujoco_ns"], r["jacobian_ns"], r["finite_difference_ns"]
             jacobian = f"{jac / 1000:.2f} µs | {jac / ours:.1f} | {fd / jac:.1f}x" if jac else "– | – | –"
             print(f"| {name} | {ours / 1000:.2f} µs | {theirs / 1000:.2f} µs | {theirs / ours:.2f}x | {jacobian} "
                   f"| {r['header_kb']:.0f} KB | {r['generate']:.2f} s | {r['build']:.1f} s |", flush=True)
+    if chart:
+        with open(chart, "w") as f:
+            f.write(svg_chart(rows))
+        print(f"chart: {chart}")
     return 0
 
 

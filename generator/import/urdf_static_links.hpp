@@ -1,0 +1,18 @@
+/// @file A URDF's links fixed to their parents kept as bodies of their own. MuJoCo's URDF reader
+/// fuses such a link into its parent (compiler fusestatic, on by default for URDF), and its name
+/// goes with it: a tool flange or a camera mount a user would want as a frame and a point.
+#pragma once
+
+#include <string>
+
+namespace eomgen {
+
+/// The URDF text with `<mujoco><compiler fusestatic="false"/></mujoco>` in its <robot> (or the
+/// attribute added to the file's own <mujoco><compiler>), unless the file sets fusestatic itself.
+/// Nothing is inserted on a new line, so MuJoCo's line numbers stay those of the file.
+std::string with_static_links_kept(const std::string& urdf);
+
+/// Whether the path names a URDF file (.urdf, any case).
+bool is_urdf_path(const std::string& path);
+
+}  // namespace eomgen

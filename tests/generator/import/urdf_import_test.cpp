@@ -1,0 +1,125 @@
+// URDF links fixed to their parents keep their names (generator/import/urdf_static_links.hpp):
+// MuJoCo's URDF reader would fuse them into their parents, so the file is read from memory with
+// fusestatic off. The text edit leaves every line where it was and respects the file's own
+// <mujoco> section; a massless fixed leaf (a tool flange) becomes a frame and a point of its name;
+// and the robot's dynamics are MuJoCo's: M and the bias forces at random states, against MuJoCo
+// reading the same text. (Reading the file as it is, MuJoCo fuses the flange into the upper arm
+// and re-diagonalizes the sum of their inertias by its eigenvalue iteration, whose rounding
+// moves M by about 1e-11; the fused model has no flange to compare anyway.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <memory>
+#include <random>
+
+#include <fmt/format.h>
+#include <mujoco/mujoco.h>
+
+#include "import/model_writer.hpp"
+#include "import/urdf_static_links.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+long lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+TEST(UrdfStaticLinks, TheCompilerSettingGoesIntoTheRobotOnItsOwnLine) {
+  std::string urdf = "<?xml version=\"1.0\"?>\n<!-- not this <robot> -->\n<robot name=\"r\">\n  <link name=\"a\"/>\n</robot>\n";
+  std::string kept = with_static_links_kept(urdf);
+  EXPECT_EQ(lines(kept), lines(urdf));
+  EXPECT_NE(kept.find("<robot name=\"r\"><mujoco><compiler fusestatic=\"false\"/></mujoco>\n"), std::string::npos) << kept;
+  EXPECT_EQ(kept.find("robot> --><mujoco>"), std::string::npos) << "a comment is no element";
+}
+
+TEST(UrdfStaticLinks, TheFilesOwnMujocoSectionKeepsItsSettings) {
+  std::string with_compiler = "<robot name=\"r\">\n<mujoco>\n<compiler meshdir=\"meshes\"/>\n</mujoco>\n</robot>\n";
+  EXPECT_NE(with_static_links_kept(with_compiler).find("<compiler fusestatic=\"false\" meshdir=\"meshes\"/>"), std::string::npos);
+  std::string without_compiler = "<robot name=\"r\">\n<mujoco>\n<option timestep=\"0.01\"/>\n</mujoco>\n</robot>\n";
+  EXPECT_NE(with_static_links_kept(without_compiler).find("<mujoco><compiler fusestatic=\"false\"/>\n<option"), std::string::npos);
+  std::string chosen = "<robot name=\"r\">\n<mujoco>\n<compiler fusestatic=\"true\"/>\n</mujoco>\n</robot>\n";
+  EXPECT_EQ(with_static_links_kept(chosen), chosen) << "the file's own choice stands";
+  EXPECT_TRUE(is_urdf_path("a/b/robot.URDF"));
+  EXPECT_FALSE(is_urdf_path("robot.xml"));
+}
+
+// a three-link arm with a heavy fixed flange between its last two joints and a massless tool link
+const char* const flanged_arm = R"(<?xml version="1.0"?>
+<robot name="flanged_arm">
+  <link name="base"/>
+  <link name="upper">
+    <inertial><origin xyz="0 0 0.15" rpy="0.1 0.2 0.3"/><mass value="1.2"/><inertia ixx="0.011" ixy="0.001" ixz="-0.0005" iyy="0.012" iyz="0.0002" izz="0.004"/></inertial>
+  </link>
+  <link name="flange">
+    <inertial><origin xyz="0 0.01 0.02" rpy="0 0 0"/><mass value="0.5"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.002" iyz="0" izz="0.0015"/></inertial>
+  </link>
+  <link name="fore">
+    <inertial><origin xyz="0.02 0 0.12" rpy="0 0 0"/><mass value="0.8"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.001"/></inertial>
+  </link>
+  <link name="tool0"/>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="upper"/>
+    <origin xyz="0 0 0.1" rpy="0 0.3 0"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="50" velocity="3"/>
+  </joint>
+  <joint name="mount" type="fixed">
+    <parent link="upper"/><child link="flange"/>
+    <origin xyz="0 0.05 0.3" rpy="0.2 0 0.4"/>
+  </joint>
+  <joint name="elbow" type="continuous">
+    <parent link="flange"/><child link="fore"/>
+    <origin xyz="0 0 0.05" rpy="0 0 0"/><axis xyz="1 0 1"/>
+  </joint>
+  <joint name="tool" type="fixed">
+    <parent link="fore"/><child link="tool0"/>
+    <origin xyz="0 0 0.25" rpy="0 1.5707963267948966 0"/>
+  </joint>
+</robot>
+)";
+
+TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayMujocos) {
+  std::string path = temporary_directory() + "/flanged_arm.urdf";
+  std::ofstream(path) << flanged_arm;
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  for (const char* line : {"name = \"flange\"\nparent = \"upper\"", "name = \"tool0\"\nparent = \"fore\"",
+                           "[[points]]\nname = \"tool0\"\nframe = \"tool0\"\nposition = [\"0\", \"0\", \"0\"]",
+                           "[[rigid_bodies]]\nname = \"flange\""})
+    EXPECT_NE(text->find(line), std::string::npos) << line << " in\n" << *text;
+  EXPECT_EQ(text->find("[[points]]\nname = \"flange\""), std::string::npos) << "a link with mass or children is no mere point";
+  Equations e = derive_text(*text, "flanged_arm.toml");
+  ASSERT_EQ(e.num_velocities(), 2u);
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> fused(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(fused) << error;
+  EXPECT_EQ(fused->nbody, 3) << "MuJoCo reading the file itself fuses the flange and the tool";
+  std::string kept = temporary_directory() + "/kept.urdf";
+  std::ofstream(kept) << with_static_links_kept(flanged_arm);
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(kept.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  ASSERT_EQ(m->nbody, 6) << "the world, the base and four links";
+  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
+  for (int point = 0; point < 5; ++point) {
+    std::map<std::string, double> at;
+    for (int j = 0; j < 2; ++j) {
+      d->qpos[j] = angle(random), d->qvel[j] = rate(random);
+      std::string name = j == 0 ? "shoulder" : "elbow";
+      at[name] = d->qpos[j], at["der(" + name + ")"] = d->qvel[j];
+    }
+    mj_forward(m.get(), d.get());
+    double full[4];
+    mj_fullM(m.get(), full, d->qM);
+    GiNaC::exmap x = point_by_name(e, at);
+    for (unsigned i = 0; i < 2; ++i) {
+      EXPECT_NEAR(value_at(e.forcing[i], x), -d->qfrc_bias[i], 1e-12 * std::max(1.0, std::abs(d->qfrc_bias[i]))) << i;
+      for (unsigned j = 0; j < 2; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[2 * i + j], 1e-13) << i << ", " << j;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace eomgen::test
