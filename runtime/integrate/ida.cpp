@@ -11,6 +11,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -42,12 +43,13 @@ class Ida : public Stepper {
     IDAInit(memory_, residual, s.t_start, y_, yp_);
     // λ and μ enter only the Newton convergence test (their error test is suppressed). μ ≈ 0,
     // so an absolute tolerance as tight as the coordinates' asks Newton for corrections near
-    // roundoff and fails at the first step below rtol ≈ 1e-8. 1e-2 converged for the models
-    // from rtol 1e-6 to 1e-12 and leaves |g| near the coordinates' own tolerance (√rtol did not)
+    // roundoff and fails at the first step below rtol ≈ 1e-8; 1e-2 of their own scales
+    // (algebraic_tolerances) converged from rtol 1e-6 to 1e-12 and leaves |g| near the
+    // coordinates' own tolerance (√rtol did not)
     N_Vector tolerance = N_VClone(y_);
     double* atol = N_VGetArrayPointer(tolerance);
-    double algebraic = 1e-2;
-    for (std::size_t i = 0; i < size; ++i) atol[i] = i < 2 * n_ ? s.atol : algebraic;
+    for (std::size_t i = 0; i < 2 * n_; ++i) atol[i] = s.atol;
+    algebraic_tolerances(x0, s, atol + 2 * n_);
     IDASVtolerances(memory_, s.rtol, tolerance);
     N_VDestroy(tolerance);
     IDASetUserData(memory_, this);
@@ -56,6 +58,7 @@ class Ida : public Stepper {
     IDASetStopTime(memory_, s.t_end);
     IDASetId(memory_, id);
     IDASetSuppressAlg(memory_, SUNTRUE);
+    IDASetInitStep(memory_, initial_step(s));
     N_VDestroy(id);
     matrix_ = SUNDenseMatrix(static_cast<sunindextype>(size), static_cast<sunindextype>(size), context_);
     linear_ = SUNLinSol_Dense(y_, matrix_, context_);
@@ -113,6 +116,55 @@ class Ida : public Stepper {
     m.rhs_stabilized(t, x0.data(), u, p.parameters.data(), 0, 0, xdot.data());
     std::copy(xdot.begin(), xdot.end(), yp);
     m.multipliers(t, x0.data(), u, p.parameters.data(), y + 2 * n_);
+  }
+
+  // 1e-2 of each multiplier's scale: λ_i ~ F/|C_i| (C_i λ_i is a force, F the larger of |f| and
+  // |M q''| at the start) and μ_h ~ V/|C_h| (C_hᵀ μ is a rate, V the larger of |q'| and |q''|·dt_out),
+  // so that the Newton test asks the same of a model in seconds or in microseconds, in meters or
+  // in millimeters (a fixed 1e-2 failed on the four-bar with time in µs: λ ~ 1e12 there)
+  void algebraic_tolerances(const std::vector<double>& x0, const SimulationSettings& s, double* atol) {
+    const Problem& p = f_.problem();
+    const eomgen_model_abi& m = *p.model;
+    std::vector<double> scratch, jacobian(mc_ * n_), mass(n_ * n_), forcing(n_);
+    const double* u = p.inputs_at(s.t_start, scratch);
+    const double* yp = N_VGetArrayPointer(yp_);
+    m.constraint_jacobian(s.t_start, x0.data(), p.parameters.data(), jacobian.data());
+    m.mass_matrix(s.t_start, x0.data(), p.parameters.data(), mass.data());
+    m.forcing(s.t_start, x0.data(), u, p.parameters.data(), forcing.data());
+    double force = 0, rate = 0;
+    for (std::size_t j = 0; j < n_; ++j) {
+      double inertial = 0;
+      for (std::size_t k = 0; k < n_; ++k) inertial += mass[j * n_ + k] * yp[n_ + k];
+      force = std::max({force, std::abs(forcing[j]), std::abs(inertial)});
+      rate = std::max({rate, std::abs(x0[n_ + j]), std::abs(yp[n_ + j]) * std::abs(s.dt_out)});
+    }
+    auto row_size = [&](std::size_t i) {
+      double size = 0;
+      for (std::size_t j = 0; j < n_; ++j) size = std::max(size, std::abs(jacobian[i * n_ + j]));
+      return size;
+    };
+    // a model at rest in equilibrium has no scale of its own: its multipliers stay put anyway
+    auto scaled = [](double numerator, double size) { return numerator > 0 && size > 0 ? 1e-2 * numerator / size : 1e-2; };
+    for (std::size_t i = 0; i < mc_; ++i) atol[i] = scaled(force, row_size(i));
+    for (std::size_t h = 0; h < holonomic_.size(); ++h) atol[mc_ + h] = scaled(rate, row_size(holonomic_[h]));
+  }
+
+  // IDA's own first step, h = min(dt_out/1000, 0.5/‖y'‖) in its weighted norm over q and v, but
+  // not below 1e-6 dt_out: the iteration matrix's rows of q and v grow as 1/h while the constraint
+  // rows stay O(1): at rtol 1e-12 and atol 1e-14 that h was 1.3e-14 on the four-bar (dt_out
+  // 0.01), where the matrix is singular in double, and Newton failed there and at every shorter
+  // step. A first step too long for the tolerances is shortened by the error test instead.
+  double initial_step(const SimulationSettings& s) const {
+    const double* y = N_VGetArrayPointer(y_);
+    const double* yp = N_VGetArrayPointer(yp_);
+    double sum = 0;
+    for (std::size_t i = 0; i < 2 * n_; ++i) {
+      double weighted = yp[i] / (s.rtol * std::abs(y[i]) + s.atol);
+      sum += weighted * weighted;
+    }
+    double norm = std::sqrt(sum / double(2 * n_)), longest = std::abs(s.dt_out) / 1000;
+    double step = norm > 0.5 / longest ? 0.5 / norm : longest;
+    return std::max(step, 1e-6 * std::abs(s.dt_out));
   }
 
   static int residual(realtype t, N_Vector yy, N_Vector yyp, N_Vector rr, void* data) {

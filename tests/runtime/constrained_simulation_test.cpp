@@ -106,6 +106,46 @@ TEST(LagrangeOne, IdaRunsTheSliderCrankWithSmallResiduals) {
   EXPECT_LT(worst, 1e-5);
 }
 
+// At rtol 1e-12, atol 1e-14, IDA's own first step on the four-bar was 1.3e-14 and its Newton
+// failed there (the iteration matrix singular in double). It now runs, also in time units of
+// 1e-6 and 1e6 (g scaled by 1/k² and the rates by 1/k, so that the motion is the same at t·k;
+// the multipliers then scale by 1/k², which a fixed tolerance on them did not follow), and it
+// follows the ODE form integrated by arkode-dp5 at the same tolerances. What the user gives in
+// the time unit scales with it: Baumgarte's gains are rates, and the one atol of q and q' is set
+// for the rates at k = 1e-6 (1e-14 on rates of 1e6 asks for 1e-20 where a rate passes through
+// zero: no Newton iteration meets that). At k = 1e6 no one atol suits both (1e-14 leaves the
+// rates of 1e-6 at 1e-8 of their size, 1e-20 fails where an angle passes through zero), so
+// there the run is checked for its constraints alone.
+TEST(LagrangeOne, IdaStartsAtTightTolerancesOnEveryTimeScale) {
+  const GeneratedModel& g = generated_model("four_bar_linkage");
+  std::size_t gravity = 0;
+  while (std::string(g.abi->parameter_names[gravity]) != "g") ++gravity;
+  for (double k : {1e-6, 1.0, 1e6}) {
+    runtime::SimulationSettings s = accurate(2 * k, "ida");
+    s.dt_out = 0.05 * k;
+    s.atol = 1e-14 / std::min(k, 1.0);
+    std::vector<double> parameters = g.default_parameters;
+    parameters[gravity] /= k * k;
+    std::vector<double> x0 = g.default_state;
+    for (std::size_t i = 3; i < 6; ++i) x0[i] /= k;
+    runtime::Problem problem{g.abi, parameters, g.default_inputs};
+    runtime::SimulationResult dae = runtime::simulate(problem, x0, s);
+    ASSERT_FALSE(dae.failed) << "time unit " << k << ": " << dae.failure;
+    EXPECT_LT(dae.max_position_residual, 10 * s.rtol) << "time unit " << k;  // lengths of order 1
+    if (k > 1) continue;
+    s.integrator = "arkode-dp5";
+    s.baumgarte_alpha = s.baumgarte_beta = g.abi->baumgarte_alpha / k;
+    runtime::SimulationResult ode = runtime::simulate(problem, x0, s);
+    ASSERT_FALSE(ode.failed) << ode.failure;
+    ASSERT_EQ(dae.trajectory.times.size(), ode.trajectory.times.size());
+    double worst = 0;
+    for (std::size_t row = 0; row < dae.trajectory.times.size(); ++row)
+      for (std::size_t i = 0; i < 3; ++i)
+        worst = std::max(worst, std::abs(dae.trajectory.states[row][i] - ode.trajectory.states[row][i]));
+    EXPECT_LT(worst, 1e-8) << "time unit " << k;
+  }
+}
+
 TEST(LagrangeOne, IdaRefusesModelsWithoutMultipliers) {
   EXPECT_THROW(run("knife_edge", accurate(1, "ida")), std::invalid_argument);
 }
