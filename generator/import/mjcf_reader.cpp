@@ -237,13 +237,15 @@ void read_actuators(const mjModel* m, Robot& r) {
 }
 
 // a URDF is read from memory with its fixed links kept (urdf_static_links.hpp), under its own path,
-// so that MuJoCo still finds the files it names beside it on disk
-mjModel* loaded_model(const std::string& path, char* error, int size) {
+// so that MuJoCo still finds the files it names beside it on disk; what its reader would crash on
+// is reported first
+std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, char* error, int size) {
   if (!is_urdf_path(path)) return mj_loadXML(path.c_str(), nullptr, error, size);
   std::ifstream file(path, std::ios::binary);
   if (!file) return mj_loadXML(path.c_str(), nullptr, error, size);
   std::stringstream text;
   text << file.rdbuf();
+  if (UrdfTextMistake mistake = urdf_text_mistake(text.str()); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message};
   std::string kept = with_static_links_kept(text.str());
   auto files = std::make_unique<mjVFS>();
   mj_defaultVFS(files.get());
@@ -282,7 +284,9 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   char error[1000] = "";
-  std::unique_ptr<mjModel, void (*)(mjModel*)> model(loaded_model(path, error, sizeof error), mj_deleteModel);
+  auto loaded = loaded_model(path, error, sizeof error);
+  if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;
+  std::unique_ptr<mjModel, void (*)(mjModel*)> model(std::get<mjModel*>(loaded), mj_deleteModel);
   if (!model) return unreadable_robot(error);
   const mjModel* m = model.get();
   Robot r;

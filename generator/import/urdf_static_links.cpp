@@ -2,14 +2,20 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
+#include <iterator>
+#include <map>
+#include <optional>
+
+#include <fmt/format.h>
 
 namespace eomgen {
 
 namespace {
 
 // where the first element of this name opens, outside comments and declarations (npos: none)
-std::size_t element_start(const std::string& text, const std::string& name) {
-  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 1)) {
+std::size_t element_start(const std::string& text, const std::string& name, std::size_t from = 0) {
+  for (std::size_t at = text.find('<', from); at != std::string::npos; at = text.find('<', at + 1)) {
     if (text.compare(at, 4, "<!--") == 0) {
       at = text.find("-->", at);
       if (at == std::string::npos) return at;
@@ -29,7 +35,91 @@ std::size_t past_tag(const std::string& text, std::size_t start) {
   return end == std::string::npos ? end : end + 1;
 }
 
+// the value of attribute `name` in the tag [start, end), or nothing
+std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
+  for (std::size_t at = text.find(name, start); at != std::string::npos && at < end; at = text.find(name, at + 1)) {
+    std::size_t after = at + name.size();
+    if (!std::isspace(static_cast<unsigned char>(text[at - 1]))) continue;
+    while (after < end && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+    if (after >= end || text[after] != '=') continue;
+    ++after;
+    while (after < end && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+    if (after >= end || (text[after] != '"' && text[after] != '\'')) continue;
+    std::size_t close = text.find(text[after], after + 1);
+    if (close == std::string::npos || close > end) return std::nullopt;
+    return text.substr(after + 1, close - after - 1);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+namespace {
+
+int line_of(const std::string& text, std::size_t at) { return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n')); }
+
+// a <joint> of a type URDF does not have (MuJoCo 2.2.2's reader crashes on it)
+UrdfTextMistake unknown_joint_type(const std::string& urdf) {
+  static const char* const types[] = {"revolute", "continuous", "prismatic", "fixed", "floating", "planar"};
+  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos; at = element_start(urdf, "joint", at + 1)) {
+    std::size_t end = urdf.find('>', at);
+    if (end == std::string::npos) break;
+    // a <transmission>'s <joint> names a joint and has no type
+    if (auto type = attribute(urdf, at, end, "type"); type && std::find(std::begin(types), std::end(types), *type) == std::end(types))
+      return {line_of(urdf, at),
+              fmt::format("joint type '{}' is not URDF's: use revolute, continuous, prismatic, fixed, floating or planar", *type)};
+  }
+  return {};
+}
+
+// a <mass value> below zero (MuJoCo says only that a moving body's mass is too small, with no line)
+UrdfTextMistake negative_mass(const std::string& urdf) {
+  for (std::size_t at = element_start(urdf, "mass"); at != std::string::npos; at = element_start(urdf, "mass", at + 1)) {
+    std::size_t end = urdf.find('>', at);
+    if (end == std::string::npos) break;
+    auto value = attribute(urdf, at, end, "value");
+    if (value && std::strtod(value->c_str(), nullptr) < 0)
+      return {line_of(urdf, at), fmt::format("a link's mass is {}: a mass is positive, or 0 for a link that only marks a place", *value)};
+  }
+  return {};
+}
+
+// joints whose child links lead back to where they started (MuJoCo says "URDF body not found")
+UrdfTextMistake cycle(const std::string& urdf) {
+  struct Edge {
+    std::string joint, parent;
+    std::size_t at;
+  };
+  std::map<std::string, Edge> parent_of;  // by child link
+  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos; at = element_start(urdf, "joint", at + 1)) {
+    std::size_t close = urdf.find("</joint", at), parent = element_start(urdf, "parent", at), child = element_start(urdf, "child", at);
+    if (close == std::string::npos || parent > close || child > close) continue;
+    auto name = attribute(urdf, at, urdf.find('>', at), "name");
+    auto from = attribute(urdf, parent, urdf.find('>', parent), "link");
+    auto to = attribute(urdf, child, urdf.find('>', child), "link");
+    if (from && to) parent_of.emplace(*to, Edge{name.value_or("?"), *from, at});
+  }
+  for (const auto& [link, edge] : parent_of) {
+    std::string path = "'" + edge.joint + "'", up = edge.parent;
+    for (std::size_t steps = 0; steps <= parent_of.size(); ++steps) {
+      if (up == link)
+        return {line_of(urdf, edge.at), fmt::format("the joints {} lead from link '{}' back to itself: a robot's links form a tree", path, link)};
+      auto next = parent_of.find(up);
+      if (next == parent_of.end()) break;
+      path += ", '" + next->second.joint + "'";
+      up = next->second.parent;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+UrdfTextMistake urdf_text_mistake(const std::string& urdf) {
+  for (auto check : {unknown_joint_type, negative_mass, cycle})
+    if (UrdfTextMistake m = check(urdf); m.line > 0) return m;
+  return {};
+}
 
 bool is_urdf_path(const std::string& path) {
   if (path.size() < 5) return false;

@@ -1,4 +1,6 @@
-/// @file A URDF's links fixed to their parents kept as bodies of their own. MuJoCo's URDF reader
+/// @file A URDF's text before MuJoCo's compiler reads it: its links fixed to their parents kept as
+/// bodies of their own, and the mistakes its reader would crash on found first.
+/// Fixed links: MuJoCo's URDF reader
 /// fuses such a link into its parent (compiler fusestatic, on by default for URDF), and its name
 /// goes with it: a tool flange or a camera mount a user would want as a frame and a point.
 #pragma once
@@ -11,6 +13,16 @@ namespace eomgen {
 /// attribute added to the file's own <mujoco><compiler>), unless the file sets fusestatic itself.
 /// Nothing is inserted on a new line, so MuJoCo's line numbers stay those of the file.
 std::string with_static_links_kept(const std::string& urdf);
+
+/// A mistake MuJoCo 2.2.2's URDF reader does not survive, found in the text before it reads it:
+/// a <joint> whose type is none of URDF's (the reader crashes on it), a negative mass and a cycle of
+/// joints (which it reports without a line, or misnamed). Line and message, or
+/// line 0 when there is none.
+struct UrdfTextMistake {
+  int line = 0;
+  std::string message;
+};
+UrdfTextMistake urdf_text_mistake(const std::string& urdf);
 
 /// Whether the path names a URDF file (.urdf, any case).
 bool is_urdf_path(const std::string& path);

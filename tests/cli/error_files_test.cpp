@@ -72,12 +72,12 @@ TEST_P(ErrorFile, CorrectedTwinIsAccepted) {
 INSTANTIATE_TEST_SUITE_P(EveryFile, ErrorFile, ::testing::ValuesIn(error_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
-// tests/errors/robots/NAME.xml: a robot file with one mistake and its expected diagnostic in its
+// tests/errors/robots/NAME.xml or NAME.urdf: a robot file with one mistake and its expected diagnostic in its
 // second line (`<!-- expect: LINE:COLUMN: message -->`): `eomgen import` exits 2 with it and writes nothing
 std::vector<std::string> robot_error_files() {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(errors_dir + "/robots"))
-    if (entry.path().extension() == ".xml") names.push_back(entry.path().stem().string());
+    if (entry.path().extension() == ".xml" || entry.path().extension() == ".urdf") names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -85,7 +85,7 @@ std::vector<std::string> robot_error_files() {
 class RobotErrorFile : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RobotErrorFile, IsReportedWithItsLineAndNothingIsWritten) {
-  std::string scratch = temporary_directory(), name = GetParam() + ".xml", out = scratch + "/robot.toml";
+  std::string scratch = temporary_directory(), name = GetParam(), out = scratch + "/robot.toml";
   std::string expected = line_starting(errors_dir + "/robots/" + name, "<!-- expect: ");
   ASSERT_FALSE(expected.empty()) << name << " has no '<!-- expect:' line";
   expected = expected.substr(0, expected.rfind(" -->"));
@@ -100,7 +100,11 @@ TEST_P(RobotErrorFile, IsReportedWithItsLineAndNothingIsWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryRobotFile, RobotErrorFile, ::testing::ValuesIn(robot_error_files()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '.', '_');
+                           return name;
+                         });
 
 TEST(ErrorFiles, AtLeastFifteenRobotMistakesAreCovered) { EXPECT_GE(robot_error_files().size(), 15u); }
 
