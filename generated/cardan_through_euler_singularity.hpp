@@ -534,7 +534,7 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 
 /// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
 /// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
-/// 2 capsule, 3 cylinder).
+/// 2 capsule, 3 cylinder, 4 ellipsoid).
 inline constexpr std::size_t num_drawn_bodies = 1;
 inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"body"}};
 inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{2}};
@@ -583,8 +583,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[11] = c1*c5;
 }
 
-/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
-/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:
+/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's
+/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;
+/// out: 18 per shape.
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
@@ -600,6 +602,15 @@ void drawn_shapes(const T* p, T* out) {
   out[6] = T(0);
   out[7] = T(0);
   out[8] = T(1);
+  out[9] = T(1);
+  out[10] = T(0);
+  out[11] = T(0);
+  out[12] = T(0);
+  out[13] = T(1);
+  out[14] = T(0);
+  out[15] = T(0);
+  out[16] = T(0);
+  out[17] = T(1);
   const T c0 = sqrt(T(6))*sqrt(p_C);
   out[0] = c0;
   out[1] = c0;

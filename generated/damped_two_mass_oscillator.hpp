@@ -352,7 +352,7 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 
 /// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
 /// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
-/// 2 capsule, 3 cylinder).
+/// 2 capsule, 3 cylinder, 4 ellipsoid).
 inline constexpr std::size_t num_drawn_bodies = 2;
 inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"main", "absorber"}};
 inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1, 1}};
@@ -394,8 +394,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[23] = T(1);
 }
 
-/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
-/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:
+/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's
+/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;
+/// out: 18 per shape.
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
@@ -408,15 +410,33 @@ void drawn_shapes(const T* p, T* out) {
   out[6] = T(0);
   out[7] = T(0);
   out[8] = T(1);
-  out[9] = T(0);
+  out[9] = T(1);
   out[10] = T(0);
   out[11] = T(0);
   out[12] = T(0);
-  out[13] = T(0);
+  out[13] = T(1);
   out[14] = T(0);
   out[15] = T(0);
   out[16] = T(0);
   out[17] = T(1);
+  out[18] = T(0);
+  out[19] = T(0);
+  out[20] = T(0);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(0);
+  out[24] = T(0);
+  out[25] = T(0);
+  out[26] = T(1);
+  out[27] = T(1);
+  out[28] = T(0);
+  out[29] = T(0);
+  out[30] = T(0);
+  out[31] = T(1);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
 }
 
 /// The acceleration of gravity, inertial components. p: num_parameters; g: 3.

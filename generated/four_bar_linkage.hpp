@@ -1150,7 +1150,7 @@ void jacobian_state_stabilized(T t, const T* x, const detail::input_t<T>* u, con
 
 /// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
 /// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
-/// 2 capsule, 3 cylinder).
+/// 2 capsule, 3 cylinder, 4 ellipsoid).
 inline constexpr std::size_t num_drawn_bodies = 8;
 inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"crank_link", "coupler_link", "rocker_link", "crank_bar", "coupler_bar", "rocker_bar", "coupler_end", "rocker_end"}};
 inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 0, 0, 2, 2, 2, 3, 3}};
@@ -1301,8 +1301,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[73] = k_coupler_link_Ryx*p_b + k_coupler_link_oy;
 }
 
-/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
-/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:
+/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's
+/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;
+/// out: 18 per shape.
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
@@ -1318,25 +1320,52 @@ void drawn_shapes(const T* p, T* out) {
   out[6] = T(0);
   out[7] = T(0);
   out[8] = T(1);
-  out[9] = (T(1)/T(25))*sqrt(T(156));
-  out[10] = T(1)/T(50);
-  out[11] = T(1)/T(50);
+  out[9] = T(1);
+  out[10] = T(0);
+  out[11] = T(0);
   out[12] = T(0);
-  out[13] = T(0);
+  out[13] = T(1);
   out[14] = T(0);
   out[15] = T(0);
   out[16] = T(0);
   out[17] = T(1);
-  out[18] = sqrt(T(4011)/T(25000));
+  out[18] = (T(1)/T(25))*sqrt(T(156));
+  out[19] = T(1)/T(50);
+  out[20] = T(1)/T(50);
   out[21] = T(0);
   out[22] = T(0);
   out[23] = T(0);
   out[24] = T(0);
   out[25] = T(0);
   out[26] = T(1);
+  out[27] = T(1);
+  out[28] = T(0);
+  out[29] = T(0);
+  out[30] = T(0);
+  out[31] = T(1);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
+  out[36] = sqrt(T(4011)/T(25000));
+  out[39] = T(0);
+  out[40] = T(0);
+  out[41] = T(0);
+  out[42] = T(0);
+  out[43] = T(0);
+  out[44] = T(1);
+  out[45] = T(1);
+  out[46] = T(0);
+  out[47] = T(0);
+  out[48] = T(0);
+  out[49] = T(1);
+  out[50] = T(0);
+  out[51] = T(0);
+  out[52] = T(0);
+  out[53] = T(1);
   const T c0 = (T(3)/T(25000))*sqrt(T(25000));
-  out[19] = c0;
-  out[20] = c0;
+  out[37] = c0;
+  out[38] = c0;
 }
 
 /// The acceleration of gravity, inertial components. p: num_parameters; g: 3.

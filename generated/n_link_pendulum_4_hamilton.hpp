@@ -758,7 +758,7 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 
 /// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
 /// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
-/// 2 capsule, 3 cylinder).
+/// 2 capsule, 3 cylinder, 4 ellipsoid).
 inline constexpr std::size_t num_drawn_bodies = 4;
 inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"bob1", "bob2", "bob3", "bob4"}};
 inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{1, 1, 1, 1}};
@@ -851,8 +851,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[37] = -c3 - c4 - c6 - cos_q_phi4*p_l4;
 }
 
-/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
-/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:
+/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's
+/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;
+/// out: 18 per shape.
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
@@ -865,11 +867,11 @@ void drawn_shapes(const T* p, T* out) {
   out[6] = T(0);
   out[7] = T(0);
   out[8] = T(1);
-  out[9] = T(0);
+  out[9] = T(1);
   out[10] = T(0);
   out[11] = T(0);
   out[12] = T(0);
-  out[13] = T(0);
+  out[13] = T(1);
   out[14] = T(0);
   out[15] = T(0);
   out[16] = T(0);
@@ -883,15 +885,51 @@ void drawn_shapes(const T* p, T* out) {
   out[24] = T(0);
   out[25] = T(0);
   out[26] = T(1);
-  out[27] = T(0);
+  out[27] = T(1);
   out[28] = T(0);
   out[29] = T(0);
   out[30] = T(0);
-  out[31] = T(0);
+  out[31] = T(1);
   out[32] = T(0);
   out[33] = T(0);
   out[34] = T(0);
   out[35] = T(1);
+  out[36] = T(0);
+  out[37] = T(0);
+  out[38] = T(0);
+  out[39] = T(0);
+  out[40] = T(0);
+  out[41] = T(0);
+  out[42] = T(0);
+  out[43] = T(0);
+  out[44] = T(1);
+  out[45] = T(1);
+  out[46] = T(0);
+  out[47] = T(0);
+  out[48] = T(0);
+  out[49] = T(1);
+  out[50] = T(0);
+  out[51] = T(0);
+  out[52] = T(0);
+  out[53] = T(1);
+  out[54] = T(0);
+  out[55] = T(0);
+  out[56] = T(0);
+  out[57] = T(0);
+  out[58] = T(0);
+  out[59] = T(0);
+  out[60] = T(0);
+  out[61] = T(0);
+  out[62] = T(1);
+  out[63] = T(1);
+  out[64] = T(0);
+  out[65] = T(0);
+  out[66] = T(0);
+  out[67] = T(1);
+  out[68] = T(0);
+  out[69] = T(0);
+  out[70] = T(0);
+  out[71] = T(1);
 }
 
 /// The acceleration of gravity, inertial components. p: num_parameters; g: 3.

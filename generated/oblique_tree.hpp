@@ -2604,7 +2604,7 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 
 /// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
 /// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
-/// 2 capsule, 3 cylinder).
+/// 2 capsule, 3 cylinder, 4 ellipsoid).
 inline constexpr std::size_t num_drawn_bodies = 13;
 inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"base", "arm", "tip", "slider", "bracket", "hand", "base_link", "arm_link", "tip_link", "slider_link", "bracket_link", "hand_link", "fingertip"}};
 inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 0, 0, 0, 0, 0, 2, 2, 2, 2, 2, 2, 3}};
@@ -2871,8 +2871,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[146] = (T(1)/T(20))*k_hand_Rzz + (T(2)/T(25))*k_hand_Rzx + k_hand_oz;
 }
 
-/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
-/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:
+/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's
+/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;
+/// out: 18 per shape.
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
@@ -2888,53 +2890,107 @@ void drawn_shapes(const T* p, T* out) {
   out[6] = T(0);
   out[7] = T(0);
   out[8] = T(1);
-  out[10] = (T(1)/T(40))*sqrt(T(40));
-  out[11] = sqrt(T(19)/T(200));
+  out[9] = T(1);
+  out[10] = T(0);
+  out[11] = T(0);
   out[12] = T(0);
-  out[13] = T(0);
+  out[13] = T(1);
   out[14] = T(0);
   out[15] = T(0);
   out[16] = T(0);
   out[17] = T(1);
-  out[18] = T(3)/T(20);
-  out[20] = (T(1)/T(20))*sqrt(T(21));
+  out[19] = (T(1)/T(40))*sqrt(T(40));
+  out[20] = sqrt(T(19)/T(200));
   out[21] = T(0);
   out[22] = T(0);
   out[23] = T(0);
   out[24] = T(0);
   out[25] = T(0);
   out[26] = T(1);
-  out[27] = T(3)/T(20);
-  out[29] = sqrt(T(3)/T(80));
+  out[27] = T(1);
+  out[28] = T(0);
+  out[29] = T(0);
   out[30] = T(0);
-  out[31] = T(0);
+  out[31] = T(1);
   out[32] = T(0);
   out[33] = T(0);
   out[34] = T(0);
   out[35] = T(1);
-  out[36] = sqrt(T(3)/T(500));
-  out[37] = T(1)/T(10);
-  out[38] = sqrt(T(7)/T(500));
+  out[36] = T(3)/T(20);
+  out[38] = (T(1)/T(20))*sqrt(T(21));
   out[39] = T(0);
   out[40] = T(0);
   out[41] = T(0);
   out[42] = T(0);
   out[43] = T(0);
   out[44] = T(1);
-  out[46] = (T(3)/T(1000))*sqrt(T(1000));
-  out[47] = sqrt(T(21)/T(1000));
+  out[45] = T(1);
+  out[46] = T(0);
+  out[47] = T(0);
   out[48] = T(0);
-  out[49] = T(0);
+  out[49] = T(1);
   out[50] = T(0);
   out[51] = T(0);
   out[52] = T(0);
   out[53] = T(1);
+  out[54] = T(3)/T(20);
+  out[56] = sqrt(T(3)/T(80));
+  out[57] = T(0);
+  out[58] = T(0);
+  out[59] = T(0);
+  out[60] = T(0);
+  out[61] = T(0);
+  out[62] = T(1);
+  out[63] = T(1);
+  out[64] = T(0);
+  out[65] = T(0);
+  out[66] = T(0);
+  out[67] = T(1);
+  out[68] = T(0);
+  out[69] = T(0);
+  out[70] = T(0);
+  out[71] = T(1);
+  out[72] = sqrt(T(3)/T(500));
+  out[73] = T(1)/T(10);
+  out[74] = sqrt(T(7)/T(500));
+  out[75] = T(0);
+  out[76] = T(0);
+  out[77] = T(0);
+  out[78] = T(0);
+  out[79] = T(0);
+  out[80] = T(1);
+  out[81] = T(1);
+  out[82] = T(0);
+  out[83] = T(0);
+  out[84] = T(0);
+  out[85] = T(1);
+  out[86] = T(0);
+  out[87] = T(0);
+  out[88] = T(0);
+  out[89] = T(1);
+  out[91] = (T(3)/T(1000))*sqrt(T(1000));
+  out[92] = sqrt(T(21)/T(1000));
+  out[93] = T(0);
+  out[94] = T(0);
+  out[95] = T(0);
+  out[96] = T(0);
+  out[97] = T(0);
+  out[98] = T(1);
+  out[99] = T(1);
+  out[100] = T(0);
+  out[101] = T(0);
+  out[102] = T(0);
+  out[103] = T(1);
+  out[104] = T(0);
+  out[105] = T(0);
+  out[106] = T(0);
+  out[107] = T(1);
   const T c0 = sqrt(T(3)/T(200));
-  out[9] = c0;
-  out[45] = c0;
+  out[18] = c0;
+  out[90] = c0;
   const T c1 = (T(1)/T(20))*sqrt(T(3));
-  out[19] = c1;
-  out[28] = c1;
+  out[37] = c1;
+  out[55] = c1;
 }
 
 /// The acceleration of gravity, inertial components. p: num_parameters; g: 3.

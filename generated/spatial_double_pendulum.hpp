@@ -1431,7 +1431,7 @@ void multipliers(T t, const T* x, const detail::input_t<T>* u, const T* p, T* la
 
 /// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),
 /// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,
-/// 2 capsule, 3 cylinder).
+/// 2 capsule, 3 cylinder, 4 ellipsoid).
 inline constexpr std::size_t num_drawn_bodies = 5;
 inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{"upper", "lower", "rod1", "rod2", "tip"}};
 inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{0, 0, 2, 2, 3}};
@@ -1554,8 +1554,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[50] = -k_lower_Rzz*p_l + k_lower_oz;
 }
 
-/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the
-/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.
+/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:
+/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's
+/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;
+/// out: 18 per shape.
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
@@ -1569,21 +1571,39 @@ void drawn_shapes(const T* p, T* out) {
   out[6] = T(0);
   out[7] = T(0);
   out[8] = T(1);
+  out[9] = T(1);
+  out[10] = T(0);
+  out[11] = T(0);
   out[12] = T(0);
-  out[13] = T(0);
+  out[13] = T(1);
   out[14] = T(0);
   out[15] = T(0);
   out[16] = T(0);
   out[17] = T(1);
+  out[21] = T(0);
+  out[22] = T(0);
+  out[23] = T(0);
+  out[24] = T(0);
+  out[25] = T(0);
+  out[26] = T(1);
+  out[27] = T(1);
+  out[28] = T(0);
+  out[29] = T(0);
+  out[30] = T(0);
+  out[31] = T(1);
+  out[32] = T(0);
+  out[33] = T(0);
+  out[34] = T(0);
+  out[35] = T(1);
   const T c0 = sqrt(p_l*p_l);
   const T c1 = (T(1)/T(10))*c0*sqrt(T(3));
   out[0] = c1;
   out[1] = c1;
-  out[9] = c1;
-  out[10] = c1;
+  out[18] = c1;
+  out[19] = c1;
   const T c2 = (T(1)/T(10))*c0*sqrt(T(97));
   out[2] = c2;
-  out[11] = c2;
+  out[20] = c2;
 }
 
 /// The acceleration of gravity, inertial components. p: num_parameters; g: 3.

@@ -63,7 +63,7 @@ struct eomgen_model_abi {
   size_t num_quaternions;
   const size_t* quaternion_coordinates;
   /* what `eomgen animate` draws: bodies (12 numbers of body_poses each: position, R row by row),
-     their kinds and parents (-1: the ground), shapes on them (9 numbers each), and gravity (3) */
+     their kinds and parents (-1: the ground), shapes on them (18 numbers each), and gravity (3) */
   size_t num_drawn_bodies;
   const char* const* drawn_body_names;
   const int* drawn_body_kinds;

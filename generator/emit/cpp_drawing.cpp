@@ -29,7 +29,7 @@ std::string declarations(const Equations& e) {
   return fmt::format(
       "/// What `eomgen animate` draws: the frames, particles, rigid bodies and points (kinds 0, 1, 2, 3),\n"
       "/// each joined to its parent (-1: the ground), and the shapes on them (types: 0 sphere, 1 box,\n"
-      "/// 2 capsule, 3 cylinder).\n"
+      "/// 2 capsule, 3 cylinder, 4 ellipsoid).\n"
       "inline constexpr std::size_t num_drawn_bodies = {};\n"
       "inline constexpr std::array<const char*, num_drawn_bodies> drawn_body_names{{{{{}}}}};\n"
       "inline constexpr std::array<int, num_drawn_bodies> drawn_body_kinds{{{{{}}}}};\n"
@@ -58,12 +58,16 @@ std::string shapes_function(const Equations& e) {
   BodyWriter w(e);
   std::vector<ex> values;
   for (const DrawnBody& d : e.drawing)
-    for (const Shape& s : d.shapes)
+    for (const Shape& s : d.shapes) {
       for (const Vector3* v : {&s.size, &s.offset, &s.axis})
         for (const ex& x : *v) values.push_back(x);
+      for (unsigned i = 0; i < 9; ++i) values.push_back(s.rotation.op(i));
+    }
   w.assign(values, [](std::size_t i, const std::string& code) { return fmt::format("out[{}] = {};", i, code); });
-  return function("/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; 0: the\n"
-                  "/// viewer's choice), centre and axis, in its body's axes. p: num_parameters; out: 9 per shape.\n",
+  return function("/// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:\n"
+                  "/// radii; 0: the viewer's choice), centre, axis (a capsule's or cylinder's) and rotation (the shape's\n"
+                  "/// axes in its body's, row by row, applied after the axis), in its body's axes. p: num_parameters;\n"
+                  "/// out: 18 per shape.\n",
                   "void drawn_shapes(const T* p, T* out)", w.finish("(void)p; (void)out;"));
 }
 

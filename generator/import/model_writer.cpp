@@ -8,6 +8,7 @@
 
 #include "emit/formats.hpp"
 #include "import/mjcf_reader.hpp"
+#include "import/urdf_static_links.hpp"
 #include "import/warning_lines.hpp"
 
 #include <algorithm>
@@ -169,25 +170,25 @@ void at_reference(const RobotJoint& j, Triple& origin, Quaternion& rotation) {
               q[0] * turn[2] - q[1] * turn[3] + q[2] * turn[0] + q[3] * turn[1], q[0] * turn[3] + q[1] * turn[2] - q[2] * turn[1] + q[3] * turn[0]};
 }
 
-// the body's geoms as its frame's shapes (MuJoCo's half sizes become radii, lengths and sides);
-// what a shape cannot be is said
+// the body's geoms as its frame's shapes (MuJoCo's half sizes become radii, lengths and sides, a
+// geom's quaternion a capsule's axis or a box's or ellipsoid's rotation); what a shape cannot be is said
 std::string shapes_text(const RobotBody& body, Sections& out) {
   std::vector<std::string> shapes;
   for (const RobotGeom& g : body.geoms) {
     std::string offset = g.position == Triple{0, 0, 0} ? "" : ", offset = " + vector_text(g.position);
-    if (g.type == "sphere" || g.type == "ellipsoid") {
-      shapes.push_back(fmt::format("{{ type = \"sphere\", size = [\"{}\"]{} }}", format_number(std::max({g.size[0], g.type == "ellipsoid" ? g.size[1] : 0.0, g.type == "ellipsoid" ? g.size[2] : 0.0})), offset));
-      if (g.type == "ellipsoid") out.warnings.push_back(fmt::format("body '{}': an ellipsoid geom is drawn as a sphere", body.name));
+    std::string turned_by = is_identity(g.orientation) ? "" : ", rotation = \"" + rotation_text(g.orientation) + "\"";
+    if (g.type == "sphere") {
+      shapes.push_back(fmt::format("{{ type = \"sphere\", size = [\"{}\"]{} }}", format_number(g.size[0]), offset));
+    } else if (g.type == "ellipsoid") {
+      shapes.push_back(fmt::format("{{ type = \"ellipsoid\", size = {}{}{} }}", vector_text(g.size), offset, turned_by));
     } else if (g.type == "capsule" || g.type == "cylinder") {
       Triple axis = turned(g.orientation, {0, 0, 1});
       std::string along = axis == Triple{0, 0, 1} ? "" : ", axis = " + vector_text(axis);
       shapes.push_back(fmt::format("{{ type = \"{}\", size = [\"{}\", \"{}\"]{}{} }}", g.type, format_number(g.size[0]), format_number(2 * g.size[1]),
                                    offset, along));
     } else if (g.type == "box") {
-      shapes.push_back(fmt::format("{{ type = \"box\", size = [\"{}\", \"{}\", \"{}\"]{} }}", format_number(2 * g.size[0]),
-                                   format_number(2 * g.size[1]), format_number(2 * g.size[2]), offset));
-      if (!is_identity(g.orientation))
-        out.warnings.push_back(fmt::format("body '{}': a turned box geom is drawn along the body's axes", body.name));
+      shapes.push_back(fmt::format("{{ type = \"box\", size = [\"{}\", \"{}\", \"{}\"]{}{} }}", format_number(2 * g.size[0]),
+                                   format_number(2 * g.size[1]), format_number(2 * g.size[2]), offset, turned_by));
     } else {
       out.warnings.push_back(fmt::format("body '{}': a {} geom is not drawn by `eomgen animate`", body.name, g.type));
     }
@@ -305,7 +306,8 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
   auto read = read_with_mujoco(path);
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
     diagnostics.error({path, std::max(failure->line, 1), 1}, "", failure->message,
-                      "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be MJCF that it accepts");
+                      "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be " +
+                          (is_urdf_path(path) ? "URDF" : "MJCF") + " that it accepts");
     return std::nullopt;
   }
   const Robot& robot = std::get<Robot>(read);

@@ -14,9 +14,21 @@ GiNaC::matrix identity() { return GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix
 
 Shape::Type shape_type(const std::string& name) {
   if (name == "box") return Shape::Type::box;
+  if (name == "ellipsoid") return Shape::Type::ellipsoid;
   if (name == "capsule") return Shape::Type::capsule;
   if (name == "cylinder") return Shape::Type::cylinder;
   return Shape::Type::sphere;
+}
+
+// the drawing's shapes are constants of the run (drawn_shapes takes the parameters alone)
+bool moves(const GiNaC::matrix& R, const Symbols& s) {
+  for (unsigned i = 0; i < 3; ++i)
+    for (unsigned j = 0; j < 3; ++j) {
+      if (R(i, j).has(s.time)) return true;
+      for (const GiNaC::realsymbol& q : s.coordinates)
+        if (R(i, j).has(q)) return true;
+    }
+  return false;
 }
 
 }  // namespace
@@ -30,6 +42,12 @@ std::vector<Shape> ModelBuilder::shapes(const std::vector<ShapeEntry>& entries) 
       if (auto v = parse(e.size[i], allow_parameters, "a shape's size")) s.size[i] = *v;
     if (!e.offset.empty()) s.offset = vector(e.offset, allow_parameters, "a shape's offset");
     if (!e.axis.empty()) s.axis = vector(e.axis, allow_parameters, "a shape's axis");
+    if (e.rotation) {
+      s.rotation = rotation(e.rotation).matrix;
+      if (moves(s.rotation, m_.symbols))
+        d_.error(e.rotation->where, e.rotation->key, "a shape's rotation must not depend on the motion",
+                 "turn the frame the shape is in; a shape's rotation takes constants and parameters");
+    }
     out.push_back(s);
   }
   return out;

@@ -135,14 +135,16 @@ struct Variant {
 };
 
 /// A shape the animation draws (ShapeEntry), in its body's axes. Sizes: sphere [radius, 0, 0], box
-/// [x, y, z] side lengths, capsule and cylinder [radius, length, 0] along `axis`. A zero size means
-/// "the viewer chooses" (a particle's sphere).
+/// [x, y, z] side lengths, capsule and cylinder [radius, length, 0] along `axis`, ellipsoid [a, b, c]
+/// radii. A zero size means "the viewer chooses" (a particle's sphere). `rotation`: the shape's
+/// axes in the body's (a capsule's axis is turned by it too).
 struct Shape {
-  enum class Type { sphere, box, capsule, cylinder };
+  enum class Type { sphere, box, capsule, cylinder, ellipsoid };
   Type type = Type::sphere;
   Vector3 size{0, 0, 0};
   Vector3 offset{0, 0, 0};
   Vector3 axis{0, 0, 1};
+  GiNaC::matrix rotation = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
 };
 
 /// What `eomgen animate` draws of a frame, particle, rigid body or point (model/drawing.hpp): where

@@ -39,12 +39,22 @@ struct CoordinateEntry {
   std::string key;
 };
 
+/// `rotation`: either a product such as "rot_z(psi)*rot_x(theta)" or a 3×3 array.
+struct RotationEntry {
+  std::optional<ExpressionText> product;
+  std::vector<std::vector<ExpressionText>> matrix;  // rows, when given as an array
+  SourceLocation where;
+  std::string key;
+};
+
 /// `shape`: what `eomgen animate` draws for a body or frame, in its own axes (parse/parse_shapes.hpp).
-/// sphere: size = [radius]; box: size = [x, y, z] side lengths; capsule and cylinder: size =
-/// [radius, length] along `axis` (z unless given). Centred at `offset`. Constant expressions.
+/// sphere: size = [radius]; box: size = [x, y, z] side lengths; ellipsoid: size = [a, b, c] radii;
+/// capsule and cylinder: size = [radius, length] along `axis` (z unless given). Centred at
+/// `offset`, turned by `rotation` (the shape's axes in the body's; after `axis`). Constant expressions.
 struct ShapeEntry {
   std::string type;
   std::vector<ExpressionText> size, offset, axis;
+  std::optional<RotationEntry> rotation;  // its axes in the body's, when given
   SourceLocation where;
   std::string key;
 };
@@ -56,14 +66,6 @@ struct ParticleEntry {
   std::string frame;
   SourceLocation frame_where;
   std::vector<ShapeEntry> shapes;
-  SourceLocation where;
-  std::string key;
-};
-
-/// `rotation`: either a product such as "rot_z(psi)*rot_x(theta)" or a 3×3 array.
-struct RotationEntry {
-  std::optional<ExpressionText> product;
-  std::vector<std::vector<ExpressionText>> matrix;  // rows, when given as an array
   SourceLocation where;
   std::string key;
 };

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "parse/parse_frames.hpp"
+
 namespace eomgen {
 
 using toml_reader::Reader;
@@ -9,22 +11,23 @@ using toml_reader::Reader;
 namespace {
 
 const char* const size_hint =
-    "sphere: size = [radius]; box: size = [x, y, z] (side lengths); capsule, cylinder: size = [radius, length]";
+    "sphere: size = [radius]; box: size = [x, y, z] (side lengths); ellipsoid: size = [a, b, c] (radii); capsule, cylinder: "
+    "size = [radius, length]";
 
 void read_shape(Reader& r, const toml::node& node, const std::string& key, std::vector<ShapeEntry>& out) {
-  const toml::table* t = r.table(node, key, "type, size, offset, axis");
+  const toml::table* t = r.table(node, key, "type, size, offset, axis, rotation");
   if (!t) return;
-  r.check_keys(*t, key, {"type", "size", "offset", "axis"});
+  r.check_keys(*t, key, {"type", "size", "offset", "axis", "rotation"});
   ShapeEntry s;
   s.key = key;
   s.where = r.at(node);
   if (const toml::node* n = t->get("type")) {
     if (r.string(*n, key + ".type", s.type) && shape_size_count(s.type) == 0) {
-      r.error(r.at(*n), key + ".type", fmt::format("'{}' is not a shape", s.type), "use sphere, box, capsule or cylinder");
+      r.error(r.at(*n), key + ".type", fmt::format("'{}' is not a shape", s.type), "use sphere, box, ellipsoid, capsule or cylinder");
       return;
     }
   } else {
-    r.error(s.where, key, "missing key 'type'", "add type = \"sphere\", \"box\", \"capsule\" or \"cylinder\"");
+    r.error(s.where, key, "missing key 'type'", "add type = \"sphere\", \"box\", \"ellipsoid\", \"capsule\" or \"cylinder\"");
     return;
   }
   if (const toml::node* n = t->get("size")) {
@@ -41,11 +44,13 @@ void read_shape(Reader& r, const toml::node& node, const std::string& key, std::
   }
   if (const toml::node* n = t->get("offset")) r.vector(*n, key + ".offset", 3, s.offset);
   if (const toml::node* n = t->get("axis")) {
-    if (s.type == "sphere" || s.type == "box")
-      r.error(r.at(*n), key + ".axis", fmt::format("a {} has no axis", s.type), "only capsules and cylinders take axis = [x, y, z]");
+    if (s.type == "sphere" || s.type == "box" || s.type == "ellipsoid")
+      r.error(r.at(*n), key + ".axis", fmt::format("a {} has no axis", s.type),
+              "only capsules and cylinders take axis = [x, y, z]; turn the others by rotation = \"...\"");
     else
       r.vector(*n, key + ".axis", 3, s.axis);
   }
+  if (const toml::node* n = t->get("rotation")) s.rotation = read_rotation(r, *n, key + ".rotation");
   out.push_back(s);
 }
 
@@ -53,7 +58,7 @@ void read_shape(Reader& r, const toml::node& node, const std::string& key, std::
 
 std::size_t shape_size_count(const std::string& type) {
   if (type == "sphere") return 1;
-  if (type == "box") return 3;
+  if (type == "box" || type == "ellipsoid") return 3;
   if (type == "capsule" || type == "cylinder") return 2;
   return 0;
 }

@@ -57,17 +57,19 @@ const char* kind_name(int kind) {
 }
 
 std::string bodies_json(const eomgen_model_abi& m, const std::vector<double>& p) {
-  static const char* const types[] = {"sphere", "box", "capsule", "cylinder"};
-  std::vector<double> shapes(9 * m.num_drawn_shapes);
+  static const char* const types[] = {"sphere", "box", "capsule", "cylinder", "ellipsoid"};
+  std::vector<double> shapes(18 * m.num_drawn_shapes);
   if (m.num_drawn_shapes) m.drawn_shapes(p.data(), shapes.data());
   std::string out = "[";
   for (std::size_t b = 0; b < m.num_drawn_bodies; ++b) {
     std::string list;
     for (std::size_t k = 0; k < m.num_drawn_shapes; ++k) {
       if (m.drawn_shape_bodies[k] != int(b)) continue;
-      const double* s = &shapes[9 * k];
-      list += fmt::format("{}{{\"type\":\"{}\",\"size\":{},\"offset\":{},\"axis\":{}}}", list.empty() ? "" : ",",
-                          types[m.drawn_shape_types[k] & 3], json_numbers(s, 3), json_numbers(s + 3, 3), json_numbers(s + 6, 3));
+      const double* s = &shapes[18 * k];
+      int type = m.drawn_shape_types[k];
+      list += fmt::format("{}{{\"type\":\"{}\",\"size\":{},\"offset\":{},\"axis\":{},\"rotation\":{}}}", list.empty() ? "" : ",",
+                          types[type >= 0 && type < 5 ? type : 0], json_numbers(s, 3), json_numbers(s + 3, 3), json_numbers(s + 6, 3),
+                          json_numbers(s + 9, 9));
     }
     out += fmt::format("{}{{\"name\":{},\"kind\":\"{}\",\"shapes\":[{}]}}", b ? "," : "", json_text(m.drawn_body_names[b]),
                        kind_name(m.drawn_body_kinds[b]), list);

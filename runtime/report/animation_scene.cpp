@@ -87,12 +87,12 @@ AnimationScene animation_scene(const AnimationRecorder& r) {
   if (m.num_drawn_bodies == 0 || r.frames() == 0) return s;
   std::array<Point, 2> box = bounds(r);
   double extent = std::max({box[1][0] - box[0][0], box[1][1] - box[0][1], box[1][2] - box[0][2]});
-  std::vector<double> shapes(9 * m.num_drawn_shapes);
+  std::vector<double> shapes(18 * m.num_drawn_shapes);
   if (m.num_drawn_shapes) m.drawn_shapes(r.parameters().data(), shapes.data());
   double shape_size = 0;
   for (std::size_t k = 0; k < m.num_drawn_shapes; ++k)
     for (int i = 0; i < 6; ++i)
-      if (std::isfinite(shapes[9 * k + std::size_t(i)])) shape_size = std::max(shape_size, std::abs(shapes[9 * k + std::size_t(i)]));
+      if (std::isfinite(shapes[18 * k + std::size_t(i)])) shape_size = std::max(shape_size, std::abs(shapes[18 * k + std::size_t(i)]));
   double scale = std::max({extent, shape_size, std::hypot(box[0][0], box[0][1], box[0][2]) * 1e-9});
   if (!(scale > 0)) scale = 1;
   s.rods = constant_distance_rods(r, scale);

@@ -64,10 +64,11 @@ TEST(Animation, TopTurnsByItsEulerAnglesAndCarriesItsShapes) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(axis[i], R[3 * i + 2], 1e-14);
   }
   ASSERT_EQ(m.num_drawn_shapes, 2u);  // the disc and the stem of the model file
-  std::vector<double> shapes(9 * m.num_drawn_shapes);
+  std::vector<double> shapes(18 * m.num_drawn_shapes);
   m.drawn_shapes(m.default_parameters, shapes.data());
   EXPECT_EQ(m.drawn_shape_types[0], 3);  // a cylinder
-  EXPECT_NEAR(shapes[9 + 1], m.default_parameters[1], 0);  // the stem is s long
+  EXPECT_NEAR(shapes[18 + 1], m.default_parameters[1], 0);  // the stem is s long
+  for (int i = 0; i < 9; ++i) EXPECT_EQ(shapes[18 + 9 + std::size_t(i)], i % 4 == 0 ? 1.0 : 0.0) << "not turned: R = I";
 }
 
 TEST(Animation, QuaternionOfARotationIsExactForEveryCaseOfShepperdsMethod) {

@@ -202,6 +202,7 @@ TEST(ModelWriter, GeomsBecomeTheBodysShapes) {
       <geom type="capsule" fromto="0 0 0 0.4 0 0" size="0.02" mass="1"/>
       <geom type="box" size="0.1 0.2 0.3" pos="0 0 0.5" mass="1"/>
       <geom type="sphere" size="0.05" group="3" mass="1"/>
+      <geom type="ellipsoid" size="0.1 0.2 0.3" quat="0 1 0 0" mass="1"/>
     </body>
   </worldbody>
 </mujoco>)xml";
@@ -210,8 +211,12 @@ TEST(ModelWriter, GeomsBecomeTheBodysShapes) {
   ASSERT_TRUE(text) << diagnostics.format();
   EXPECT_NE(text->find("shape = [{ type = \"capsule\", size = [\"0.02\", \"0.4\"], offset = [\"0.2\", \"0\", \"0\"], axis = "),
             std::string::npos) << *text;
-  EXPECT_NE(text->find("{ type = \"box\", size = [\"0.2\", \"0.4\", \"0.6\"], offset = [\"0\", \"0\", \"0.5\"] }]"),
+  EXPECT_NE(text->find("{ type = \"box\", size = [\"0.2\", \"0.4\", \"0.6\"], offset = [\"0\", \"0\", \"0.5\"] }"),
             std::string::npos) << *text;
+  EXPECT_NE(text->find("{ type = \"ellipsoid\", size = [\"0.1\", \"0.2\", \"0.3\"], rotation = \"quat(0, 1, 0, 0)\" }"),
+            std::string::npos) << "a turned ellipsoid keeps its turn\n" << *text;
+  Equations e = derive_text(*text, "shapes.toml");
+  EXPECT_EQ(e.drawing[0].shapes.back().type, Shape::Type::ellipsoid);
   EXPECT_EQ(text->find("\"sphere\""), std::string::npos) << "a group-3 geom is hidden, as in MuJoCo's viewer";
 }
 

@@ -328,5 +328,41 @@ TEST(Frames, RecursiveKinematicsMisusesAreLocated) {
   EXPECT_NE(diagnostics_of(unknown).find("unknown kinematics 'recursiv'"), std::string::npos) << diagnostics_of(unknown);
 }
 
+// a shape's rotation (its axes in its body's, after a capsule's axis) and the ellipsoid reach the
+// drawing as written: rot_x(a) with a a parameter, and quat(w, x, y, z) as the frames take it
+TEST(Frames, ShapesAreTurnedByTheirRotation) {
+  Equations e = derive_text(R"toml(
+[model]
+name = "turned_shapes"
+[parameters]
+a = 0.3
+[coordinates]
+q = 0.1
+[[frames]]
+name = "link"
+joint = { type = "revolute", axis = ["0", "0", "1"], coordinate = "q" }
+shape = [{ type = "box", size = ["0.1", "0.2", "0.3"], rotation = "rot_x(a)" },
+         { type = "ellipsoid", size = ["0.1", "0.2", "0.3"], offset = ["0", "0", "0.5"], rotation = "quat(0.5, 0.5, 0.5, 0.5)" }]
+[[rigid_bodies]]
+name = "body"
+frame = "link"
+mass = "1"
+inertia = ["0.1", "0.1", "0.1"]
+)toml");
+  const DrawnBody* link = nullptr;
+  for (const DrawnBody& d : e.drawing)
+    if (d.name == "link") link = &d;
+  ASSERT_NE(link, nullptr);
+  ASSERT_EQ(link->shapes.size(), 2u);
+  GiNaC::exmap at = point_by_name(e, {{"a", 0.3}, {"q", 0.1}, {"der(q)", 0}});
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  const double turned[9] = {1, 0, 0, 0, c, -s, 0, s, c};
+  for (unsigned i = 0; i < 9; ++i) EXPECT_NEAR(value_at(link->shapes[0].rotation.op(i), at), turned[i], 1e-15) << i;
+  EXPECT_EQ(link->shapes[1].type, Shape::Type::ellipsoid);
+  // quat(½, ½, ½, ½) turns x to y, y to z, z to x: its columns are e_y, e_z, e_x
+  const double cycled[9] = {0, 0, 1, 1, 0, 0, 0, 1, 0};
+  for (unsigned i = 0; i < 9; ++i) EXPECT_NEAR(value_at(link->shapes[1].rotation.op(i), at), cycled[i], 1e-15) << i;
+}
+
 }  // namespace
 }  // namespace eomgen::test
