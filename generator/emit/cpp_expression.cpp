@@ -159,11 +159,13 @@ class CppPrinter {
     std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     static const std::vector<std::string> known = {"sin", "cos",  "tan",  "asin", "acos", "atan", "atan2",
                                                    "sinh", "cosh", "tanh", "exp", "log", "abs"};
-    if (std::find(known.begin(), known.end(), name) == known.end())
+    // clamp and below are the header's own (detail_functions), not std's
+    bool own = name == "clamp" || name == "below";
+    if (!own && std::find(known.begin(), known.end(), name) == known.end())
       throw std::runtime_error("no C++ for the function " + name);
     std::string args;
     for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + print(e.op(i)).text;
-    return {name + "(" + args + ")", 4};
+    return {(own ? "detail::" : "") + name + "(" + args + ")", 4};
   }
 
   const std::function<std::string(const GiNaC::symbol&)>& name_of_;

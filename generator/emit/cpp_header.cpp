@@ -331,7 +331,17 @@ std::string first_integrals_function(const Equations& e) {
 // the detail namespace: the input type that keeps u out of deducing T, the batched sin and cos when a
 // function uses them, and the LDLᵀ of M (which a model solved by the articulated-body recursion does
 // not use: its functions take M⁻¹ from the tree)
-std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, bool with_sin_cos, bool with_constants) {
+// clamp(x, lo, hi) of the model (symbolic/clamp.hpp) and the indicator its slopes are written with
+const char* clamp_functions() {
+  return "/// The model's clamp(x, lo, hi): x held to [lo, hi] (a control to its range, as MuJoCo does).\n"
+         "template <class T, class L, class H>\ninline T clamp(const T& x, const L& lo, const H& hi) {\n"
+         "  return x < T(lo) ? T(lo) : (T(hi) < x ? T(hi) : x);\n}\n\n"
+         "/// 1 where a < b, else 0: clamp's slopes are 1 - below(x, lo) - below(hi, x) in x.\n"
+         "template <class A, class B>\ninline A below(const A& a, const B& b) {\n  return a < A(b) ? A(1) : A(0);\n}\n\n";
+}
+
+std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, bool with_sin_cos, bool with_constants,
+                             bool with_clamp) {
   std::string out =
       "namespace detail {\n\n"
       "/// The input pointer does not take part in deducing T, so a model without\n"
@@ -339,6 +349,7 @@ std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, 
       "template <class T>\nstruct input_type {\n  using type = T;\n};\n"
       "template <class T>\nusing input_t = typename input_type<T>::type;\n\n";
   if (with_constants) out += cpp_constant_function();
+  if (with_clamp) out += clamp_functions();
   if (with_sin_cos) out += sin_cos_function();
   if (with_ldlt) out += mass_matrix_factorization(e, n);
   return out + "}  // namespace detail\n\n";
@@ -472,7 +483,8 @@ std::string emit_cpp_header(const Equations& e) {
       members, values);
   out += constraint_declarations(e);
   out += detail_functions(e, k, e.articulated_accelerations.empty(), functions.find("detail::sin_cos(") != std::string::npos,
-                          uses_constants);
+                          uses_constants,
+                          functions.find("detail::clamp(") != std::string::npos || functions.find("detail::below(") != std::string::npos);
   out += functions;
   out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
   return out;

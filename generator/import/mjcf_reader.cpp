@@ -223,17 +223,10 @@ void read_actuators(const mjModel* m, Robot& r) {
     act.gear = m->actuator_gear[6 * a];
     if (m->actuator_biastype[a] == mjBIAS_AFFINE)
       act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
-    if (m->actuator_forcelimited[a])
-      r.warnings.push_back({fmt::format("actuator '{}': MuJoCo clamps its force to [{}, {}] (forcelimited); eomgen does not",
-                                        name, m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]),
-                            "actuator", name_of(m, m->name_actuatoradr, a), a + 1});
+    act.force_limited = m->actuator_forcelimited[a];
+    act.force_range = {m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]};
     r.actuators.push_back(act);
   }
-  long clamped = std::count_if(r.actuators.begin(), r.actuators.end(), [](const RobotActuator& a) { return a.limited; });
-  if (clamped)
-    r.warnings.push_back({fmt::format("{} actuator(s) with a control range (ctrllimited): MuJoCo clamps their controls to "
-                                      "it, eomgen's inputs are not clamped (each range is written beside its input)", clamped),
-                          "actuator", "", 0});
 }
 
 // a URDF is read from memory with its fixed links kept (urdf_static_links.hpp), under its own path,

@@ -274,6 +274,30 @@ std::string sum_text(const std::vector<std::string>& terms) {
   return "\"(" + out + ")/2\"";
 }
 
+// gear × (gainprm·u + bias0 + bias1·gear·q + bias2·gear·q'), MuJoCo's actuator force along its
+// joint times the gear, with u clamped to the control range and the force to the force range
+// where MuJoCo clamps them (ctrllimited, forcelimited)
+std::string actuator_force(const RobotActuator& a, const std::string& u, const std::string& q) {
+  std::string control = a.limited ? fmt::format("clamp({}, {}, {})", u, format_number(a.range[0]), format_number(a.range[1])) : u;
+  auto with_sign = [](double coefficient, const std::string& factor) {
+    return fmt::format(" {} {}{}", coefficient < 0 ? "-" : "+", format_number(std::abs(coefficient)), factor.empty() ? "" : "*" + factor);
+  };
+  std::array<std::pair<double, std::string>, 3> bias{
+      {{a.bias[0], std::string()}, {a.gear * a.bias[1], q}, {a.gear * a.bias[2], "der(" + q + ")"}}};
+  if (!a.force_limited) {
+    std::string term = a.gain == 1 ? control : fmt::format("{}*{}", format_number(a.gain), control);
+    for (const auto& [coefficient, factor] : bias)
+      if (coefficient != 0) term += with_sign(a.gear * coefficient, factor);
+    return term;
+  }
+  double gain = a.gear != 0 ? a.gain / a.gear : 0;  // gainprm
+  std::string force = gain == 1 ? control : fmt::format("{}*{}", format_number(gain), control);
+  for (const auto& [coefficient, factor] : bias)
+    if (coefficient != 0) force += with_sign(coefficient, factor);
+  std::string clamped = fmt::format("clamp({}, {}, {})", force, format_number(a.force_range[0]), format_number(a.force_range[1]));
+  return a.gear == 1 ? clamped : fmt::format("{}*{}", format_number(a.gear), clamped);
+}
+
 void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Names& names, Sections& out) {
   std::map<std::string, std::string> forces;
   std::vector<std::string> order;
@@ -281,18 +305,13 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
     bool servo = a.bias != std::array<double, 3>{0, 0, 0};
     std::string u = names.take(a.name, servo ? "servo" : "motor");
     out.inputs += u + " = 0" +
-                  (a.limited ? fmt::format("  # control range [{}, {}] in the file: not enforced", format_number(a.range[0]), format_number(a.range[1])) : "") +
+                  (a.limited ? fmt::format("  # control range [{}, {}]: clamped, as MuJoCo clamps it", format_number(a.range[0]),
+                                           format_number(a.range[1]))
+                             : "") +
                   "\n";
     const std::string& q = joint_symbols[std::size_t(a.body)][std::size_t(a.joint)].coordinates[0];
     if (!forces.count(q)) order.push_back(q);
-    std::string term = a.gain == 1 ? u : fmt::format("{}*{}", format_number(a.gain), u);
-    // gear · (bias0 + bias1 · gear · q + bias2 · gear · q'): the servo's pull toward u
-    for (auto [coefficient, factor] : {std::pair{a.gear * a.bias[0], std::string()}, std::pair{a.gear * a.gear * a.bias[1], q},
-                                       std::pair{a.gear * a.gear * a.bias[2], "der(" + q + ")"}})
-      if (coefficient != 0)
-        term += fmt::format(" {} {}{}", coefficient < 0 ? "-" : "+", format_number(std::abs(coefficient)),
-                            factor.empty() ? "" : "*" + factor);
-    forces[q] += (forces[q].empty() ? "" : " + ") + term;
+    forces[q] += (forces[q].empty() ? "" : " + ") + actuator_force(a, u, q);
   }
   std::string generalized;
   for (const std::string& q : order) generalized += (generalized.empty() ? "" : ", ") + fmt::format("{} = \"{}\"", q, forces[q]);

@@ -51,13 +51,15 @@ struct RobotActuator {
   std::string name;
   int body = -1, joint = -1;  // the joint it drives: index into that body's joints
   double gain = 1;            // generalized force = gain × control + ... (MJCF: gear × gainprm[0])
-  bool limited = false;
+  bool limited = false;       // the control is clamped to `range` (MJCF ctrllimited)
   std::array<double, 2> range{0, 0};
   /// A servo (MJCF position and velocity actuators, `general` with an affine bias): the force
   /// along the transmission is gainprm·u + bias[0] + bias[1]·gear·q + bias[2]·gear·q', and the
   /// generalized force gear times it
   std::array<double, 3> bias{0, 0, 0};
   double gear = 1;
+  bool force_limited = false;  // the force along the transmission is clamped to `force_range`
+  std::array<double, 2> force_range{0, 0};
 };
 
 struct RobotSite {

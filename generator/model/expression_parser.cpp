@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "symbolic/clamp.hpp"
+
 #include "symbolic/exact_double.hpp"
 
 namespace eomgen {
@@ -35,7 +37,7 @@ class Level {
 
 const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
                                                   "atan", "atan2", "sinh", "cosh", "tanh",
-                                                  "exp",  "log",  "sqrt", "abs",  "der"};
+                                                  "exp",  "log",  "sqrt", "abs",  "clamp", "der"};
 const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "rot_axis", "quat", "euler313", "cardan123"};
 
 ex apply_function(const std::string& name, const std::vector<ex>& a) {
@@ -52,10 +54,11 @@ ex apply_function(const std::string& name, const std::vector<ex>& a) {
   if (name == "exp") return GiNaC::exp(a[0]);
   if (name == "log") return GiNaC::log(a[0]);
   if (name == "sqrt") return GiNaC::sqrt(a[0]);
+  if (name == "clamp") return clamp(a[0], a[1], a[2]);
   return GiNaC::abs(a[0]);
 }
 
-std::size_t arity(const std::string& name) { return name == "atan2" ? 2 : 1; }
+std::size_t arity(const std::string& name) { return name == "atan2" ? 2 : name == "clamp" ? 3 : 1; }
 
 class Parser {
  public:

@@ -1,5 +1,6 @@
 #include "symbolic/evaluate.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace eomgen {
@@ -45,6 +46,8 @@ double evaluate(const GiNaC::ex& e, const std::function<double(const GiNaC::symb
     if (name == "exp") return std::exp(a);
     if (name == "log") return std::log(a);
     if (name == "abs") return std::abs(a);
+    if (name == "clamp") return std::min(std::max(a, evaluate(e.op(1), value_of)), evaluate(e.op(2), value_of));
+    if (name == "below") return a < evaluate(e.op(1), value_of) ? 1.0 : 0.0;
   }
   throw std::runtime_error("cannot evaluate this expression numerically");
 }

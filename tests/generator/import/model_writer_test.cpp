@@ -84,7 +84,7 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   std::string text = model_file_text(two_armed_robot(), "two_armed", "robot.xml");
   EXPECT_TRUE(has(text, "# not carried: 1 tendon(s): not carried")) << text;
-  EXPECT_TRUE(has(text, "pitch_motor = 0  # control range [-1, 1] in the file: not enforced")) << text;
+  EXPECT_TRUE(has(text, "pitch_motor = 0  # control range [-1, 1]: clamped, as MuJoCo clamps it")) << text;
   EXPECT_TRUE(has(text, "pitch = 0.1  # range [-1, 1] in the file: not enforced")) << text;
   EXPECT_TRUE(has(text, "name = \"arm_pitch\"\nparent = \"base\"\norigin = [\"0.1\", \"0\", \"0.2\"]\n"
                         "rotation = \"quat(0.5, 0.5, 0.5, 0.5)\"\njoint = { type = \"revolute\"")) << text;
@@ -96,7 +96,7 @@ TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   EXPECT_TRUE(has(text, "kinetic = \"(0.05*der(pitch)^2 + 0.05*der(yaw)^2)/2\"")) << text;
   EXPECT_TRUE(has(text, "1.6*(der(wrist_qw)^2 + der(wrist_qx)^2 + der(wrist_qy)^2 + der(wrist_qz)^2)")) << text;
   EXPECT_TRUE(has(text, "potential = \"(2*(pitch - 0.25)^2 + 2*(yaw - 0.25)^2)/2\"")) << text;
-  EXPECT_TRUE(has(text, "generalized = { pitch = \"25*pitch_motor\", yaw = \"10*yaw_motor\" }")) << text;
+  EXPECT_TRUE(has(text, "generalized = { pitch = \"25*clamp(pitch_motor, -1, 1)\", yaw = \"10*yaw_motor\" }")) << text;
   EXPECT_TRUE(has(text, "\nyaw_motor = 0\n")) << "a motor named after its joint: " << text;
   EXPECT_TRUE(has(text, "[[points]]\nname = \"tip\"\nframe = \"arm_2\"\nposition = [\"0\", \"0\", \"-0.05\"]")) << text;
   EXPECT_EQ(identifier_of("2nd link-b"), "_2nd_link_b");
@@ -113,6 +113,11 @@ TEST(ModelWriter, AServoPullsItsJointTowardItsControl) {
   r.actuators = {{"yaw", 1, 1, 2 * 80, false, {0, 0}, {0.5, -80, -4}, 2}};
   std::string text = model_file_text(r, "two_armed", "robot.xml");
   EXPECT_TRUE(has(text, "generalized = { yaw = \"160*yaw_servo + 1 - 320*yaw - 16*der(yaw)\" }")) << text;
+  // forcelimited: gear × clamp(force, lo, hi), the force before the gear
+  r.actuators[0].force_limited = true;
+  r.actuators[0].force_range = {-30, 20};
+  text = model_file_text(r, "two_armed", "robot.xml");
+  EXPECT_TRUE(has(text, "generalized = { yaw = \"2*clamp(80*yaw_servo + 0.5 - 160*yaw - 8*der(yaw), -30, 20)\" }")) << text;
 }
 
 TEST(WarningLines, TheSubjectOfAWarningIsFoundInTheFile) {
