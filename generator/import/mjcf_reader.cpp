@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
 
-#include "import/urdf_static_links.hpp"
+#include "import/urdf_text.hpp"
 
 namespace eomgen {
 
@@ -229,17 +229,22 @@ void read_actuators(const mjModel* m, Robot& r) {
   }
 }
 
-// a URDF is read from memory with its fixed links kept (urdf_static_links.hpp), under its own path,
-// so that MuJoCo still finds the files it names beside it on disk; what its reader would crash on
-// is reported first
-std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, char* error, int size) {
-  if (!is_urdf_path(path)) return mj_loadXML(path.c_str(), nullptr, error, size);
+// the text of a URDF file, or nothing for another file (or one that cannot be read: MuJoCo says so)
+std::string urdf_text_of(const std::string& path) {
+  if (!is_urdf_path(path)) return "";
   std::ifstream file(path, std::ios::binary);
-  if (!file) return mj_loadXML(path.c_str(), nullptr, error, size);
   std::stringstream text;
-  text << file.rdbuf();
-  if (UrdfTextMistake mistake = urdf_text_mistake(text.str()); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message};
-  std::string kept = with_static_links_kept(text.str());
+  if (file) text << file.rdbuf();
+  return text.str();
+}
+
+// a URDF is read from memory with its fixed links kept (urdf_text.hpp), under its own path, so
+// that MuJoCo still finds the files it names beside it on disk; what its reader would crash on is
+// reported first
+std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size) {
+  if (urdf.empty()) return mj_loadXML(path.c_str(), nullptr, error, size);
+  if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message};
+  std::string kept = with_static_links_kept(urdf);
   auto files = std::make_unique<mjVFS>();
   mj_defaultVFS(files.get());
   if (mj_makeEmptyFileVFS(files.get(), path.c_str(), int(kept.size()) + 1) != 0)
@@ -248,6 +253,35 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, ch
   mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
   mj_deleteVFS(files.get());
   return model;
+}
+
+// a URDF joint's <mimic>, which MuJoCo's reader ignores, as the coupling q = m q_K + o (a holonomic
+// constraint, as an MJCF equality joint), or a warning where it cannot be one
+void read_mimics(const mjModel* m, const std::string& urdf, Robot& r) {
+  auto one_dof = [&](int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); };
+  for (const UrdfMimic& mimic : urdf_mimics(urdf)) {
+    int first = mj_name2id(m, mjOBJ_JOINT, mimic.joint.c_str()), second = mj_name2id(m, mjOBJ_JOINT, mimic.mimicked.c_str());
+    if (has_spherical_joints(m) || !one_dof(first) || !one_dof(second)) {
+      r.warnings.push_back({fmt::format("joint '{}' mimics '{}': not carried ({})", mimic.joint, mimic.mimicked,
+                                        has_spherical_joints(m) ? "a robot with a floating base takes Appell's equations, "
+                                                                  "which take no constraints here yet"
+                                                                : "only a revolute or prismatic joint that mimics another "
+                                                                  "becomes a constraint"),
+                            "joint", mimic.joint, 0});
+      continue;
+    }
+    RobotCoupling c;
+    c.name = mimic.joint + "_mimics_" + mimic.mimicked;
+    auto place = [&](int j, int& body, int& joint, double& reference) {
+      body = m->jnt_bodyid[j] - 1;
+      joint = j - m->body_jntadr[body + 1];
+      reference = m->qpos0[m->jnt_qposadr[j]];
+    };
+    place(first, c.body1, c.joint1, c.reference1);
+    place(second, c.body2, c.joint2, c.reference2);
+    c.coefficients = {mimic.offset, mimic.multiplier, 0, 0, 0};
+    r.couplings.push_back(c);
+  }
 }
 
 }  // namespace
@@ -277,7 +311,8 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   char error[1000] = "";
-  auto loaded = loaded_model(path, error, sizeof error);
+  std::string urdf = urdf_text_of(path);
+  auto loaded = loaded_model(path, urdf, error, sizeof error);
   if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;
   std::unique_ptr<mjModel, void (*)(mjModel*)> model(std::get<mjModel*>(loaded), mj_deleteModel);
   if (!model) return unreadable_robot(error);
@@ -329,6 +364,11 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     read_loops(m, qpos, r);
     read_couplings(m, r);
   }
+  if (!urdf.empty()) read_mimics(m, urdf, r);
+  if (int fixed = urdf_joint_count(urdf, "fixed"); fixed > 0 && urdf_joint_count(urdf, "floating") > 0)
+    r.warnings.push_back({fmt::format("{} fixed joint(s): their links are fused into their parents and their names are not "
+                                      "kept (MuJoCo puts a floating base's free joint at the top level only)", fixed),
+                          "", "", 0});
   note_losses(m, r);
   return r;
 }

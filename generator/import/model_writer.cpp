@@ -8,7 +8,7 @@
 
 #include "emit/formats.hpp"
 #include "import/mjcf_reader.hpp"
-#include "import/urdf_static_links.hpp"
+#include "import/urdf_text.hpp"
 #include "import/warning_lines.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// URDF links fixed to their parents keep their names (generator/import/urdf_static_links.hpp):
+// URDF links fixed to their parents keep their names (generator/import/urdf_text.hpp):
 // MuJoCo's URDF reader would fuse them into their parents, so the file is read from memory with
 // fusestatic off. The text edit leaves every line where it was and respects the file's own
 // <mujoco> section; a massless fixed leaf (a tool flange) becomes a frame and a point of its name;
@@ -17,7 +17,7 @@
 #include <mujoco/mujoco.h>
 
 #include "import/model_writer.hpp"
-#include "import/urdf_static_links.hpp"
+#include "import/urdf_text.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -119,6 +119,64 @@ TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayMujocos) {
       for (unsigned j = 0; j < 2; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[2 * i + j], 1e-13) << i << ", " << j;
     }
   }
+}
+
+// a joint's <mimic> (MuJoCo's URDF reader ignores it) is the holonomic constraint q = m q_K + o; on a
+// floating base it is named as not carried, and so are the fixed links (MuJoCo must fuse them there)
+const char* const gripper = R"(<?xml version="1.0"?>
+<robot name="gripper">
+  <link name="palm"/>
+  <link name="left">
+    <inertial><origin xyz="0 0 0.03"/><mass value="0.1"/><inertia ixx="0.0001" ixy="0" ixz="0" iyy="0.0001" iyz="0" izz="0.00002"/></inertial>
+  </link>
+  <link name="right">
+    <inertial><origin xyz="0 0 0.03"/><mass value="0.1"/><inertia ixx="0.0001" ixy="0" ixz="0" iyy="0.0001" iyz="0" izz="0.00002"/></inertial>
+  </link>
+  <joint name="left_finger" type="prismatic">
+    <parent link="palm"/><child link="left"/><origin xyz="0 0.02 0"/><axis xyz="0 1 0"/>
+    <limit lower="0" upper="0.04" effort="20" velocity="0.2"/>
+  </joint>
+  <joint name="right_finger" type="prismatic">
+    <parent link="palm"/><child link="right"/><origin xyz="0 -0.02 0"/><axis xyz="0 1 0"/>
+    <limit lower="-0.04" upper="0" effort="20" velocity="0.2"/>
+    <mimic joint="left_finger" multiplier="-1" offset="0.001"/>
+  </joint>
+</robot>
+)";
+
+TEST(UrdfImport, AMimicJointIsAConstraint) {
+  auto mimics = urdf_mimics(gripper);
+  ASSERT_EQ(mimics.size(), 1u);
+  EXPECT_EQ(mimics[0].joint, "right_finger");
+  EXPECT_EQ(mimics[0].mimicked, "left_finger");
+  EXPECT_EQ(mimics[0].multiplier, -1);
+  EXPECT_EQ(mimics[0].offset, 0.001);
+  EXPECT_EQ(mimics[0].line, 14);
+  std::string path = temporary_directory() + "/gripper.urdf";
+  std::ofstream(path) << gripper;
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  for (const char* line : {"method = \"lagrange1\"", "name = \"right_finger_mimics_left_finger\"\nholonomic = \"right_finger - 0.001 + left_finger\""})
+    EXPECT_NE(text->find(line), std::string::npos) << line << " in\n" << *text;
+  Equations e = derive_text(*text, "gripper.toml");
+  ASSERT_EQ(e.constraints.size(), 1u);
+  GiNaC::exmap at = point_by_name(e, {{"left_finger", 0.01}, {"right_finger", -0.009}, {"der(left_finger)", 0.1}, {"der(right_finger)", -0.1}});
+  EXPECT_NEAR(value_at(e.constraints.position[0], at), 0, 1e-17) << "the fingers close together";
+  // on a floating base (Appell's equations, no constraints yet) the mimic is named as not carried
+  EXPECT_EQ(urdf_joint_count(gripper, "prismatic"), 2);
+  std::string floating = gripper;
+  floating.replace(floating.find("<link name=\"palm\"/>"), 19,
+                   "<link name=\"base\"/><link name=\"palm\"><inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" "
+                   "ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial></link><joint name=\"root\" "
+                   "type=\"floating\"><parent link=\"base\"/><child link=\"palm\"/></joint><link name=\"tool\"/><joint "
+                   "name=\"flange\" type=\"fixed\"><parent link=\"palm\"/><child link=\"tool\"/></joint>");
+  std::ofstream(path) << floating;
+  text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("# not carried: joint 'right_finger' mimics 'left_finger': not carried"), std::string::npos) << *text;
+  EXPECT_EQ(text->find("[[constraints]]"), std::string::npos) << *text;
+  EXPECT_NE(text->find("# not carried: 1 fixed joint(s): their links are fused into their parents"), std::string::npos) << *text;
 }
 
 }  // namespace

@@ -1,16 +1,19 @@
 /// @file A URDF's text before MuJoCo's compiler reads it: its links fixed to their parents kept as
-/// bodies of their own, and the mistakes its reader would crash on found first.
-/// Fixed links: MuJoCo's URDF reader
+/// bodies of their own, the mistakes its reader would crash on found first, and what it ignores
+/// read here (a joint's <mimic>). Fixed links: MuJoCo's URDF reader
 /// fuses such a link into its parent (compiler fusestatic, on by default for URDF), and its name
 /// goes with it: a tool flange or a camera mount a user would want as a frame and a point.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace eomgen {
 
 /// The URDF text with `<mujoco><compiler fusestatic="false"/></mujoco>` in its <robot> (or the
-/// attribute added to the file's own <mujoco><compiler>), unless the file sets fusestatic itself.
+/// attribute added to the file's own <mujoco><compiler>), unless the file sets fusestatic itself
+/// or has a floating joint: MuJoCo puts a free joint at the top level only, so the massless link
+/// a floating base hangs from must be fused into the world.
 /// Nothing is inserted on a new line, so MuJoCo's line numbers stay those of the file.
 std::string with_static_links_kept(const std::string& urdf);
 
@@ -23,6 +26,18 @@ struct UrdfTextMistake {
   std::string message;
 };
 UrdfTextMistake urdf_text_mistake(const std::string& urdf);
+
+/// A joint that follows another, <mimic joint="K" multiplier="m" offset="o"/>: q = m q_K + o
+/// (MuJoCo 2.2.2's URDF reader ignores it). `line` is the joint's.
+struct UrdfMimic {
+  std::string joint, mimicked;
+  double multiplier = 1, offset = 0;
+  int line = 0;
+};
+std::vector<UrdfMimic> urdf_mimics(const std::string& urdf);
+
+/// How many of the URDF's joints are of this type ("floating", "fixed", ...).
+int urdf_joint_count(const std::string& urdf, const std::string& type);
 
 /// Whether the path names a URDF file (.urdf, any case).
 bool is_urdf_path(const std::string& path);

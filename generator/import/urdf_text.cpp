@@ -1,4 +1,4 @@
-#include "import/urdf_static_links.hpp"
+#include "import/urdf_text.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -121,6 +121,30 @@ UrdfTextMistake urdf_text_mistake(const std::string& urdf) {
   return {};
 }
 
+int urdf_joint_count(const std::string& urdf, const std::string& type) {
+  int count = 0;
+  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos; at = element_start(urdf, "joint", at + 1))
+    if (std::size_t end = urdf.find('>', at); end != std::string::npos && attribute(urdf, at, end, "type") == type) ++count;
+  return count;
+}
+
+std::vector<UrdfMimic> urdf_mimics(const std::string& urdf) {
+  std::vector<UrdfMimic> out;
+  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos; at = element_start(urdf, "joint", at + 1)) {
+    std::size_t close = urdf.find("</joint", at), mimic = element_start(urdf, "mimic", at);
+    if (close == std::string::npos || mimic == std::string::npos || mimic > close) continue;
+    std::size_t end = urdf.find('>', mimic);
+    auto name = attribute(urdf, at, urdf.find('>', at), "name");
+    auto mimicked = attribute(urdf, mimic, end, "joint");
+    if (!name || !mimicked) continue;
+    UrdfMimic m{*name, *mimicked, 1, 0, line_of(urdf, at)};
+    if (auto v = attribute(urdf, mimic, end, "multiplier")) m.multiplier = std::strtod(v->c_str(), nullptr);
+    if (auto v = attribute(urdf, mimic, end, "offset")) m.offset = std::strtod(v->c_str(), nullptr);
+    out.push_back(m);
+  }
+  return out;
+}
+
 bool is_urdf_path(const std::string& path) {
   if (path.size() < 5) return false;
   std::string tail = path.substr(path.size() - 5);
@@ -131,7 +155,8 @@ bool is_urdf_path(const std::string& path) {
 std::string with_static_links_kept(const std::string& urdf) {
   std::string text = urdf;
   std::size_t robot = element_start(text, "robot");
-  if (robot == std::string::npos || text.find("fusestatic") != std::string::npos) return text;
+  if (robot == std::string::npos || text.find("fusestatic") != std::string::npos || urdf_joint_count(urdf, "floating") > 0)
+    return text;
   std::size_t mujoco = element_start(text, "mujoco");
   if (mujoco == std::string::npos) {
     std::size_t inside = past_tag(text, robot);
