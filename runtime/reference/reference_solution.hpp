@@ -59,6 +59,9 @@ class Wide {
   friend Wide sqrt(Wide a) { return of(sqrtq(a.v_)); }
   friend Wide pow(Wide a, Wide b) { return of(powq(a.v_, b.v_)); }
   friend Wide abs(Wide a) { return of(fabsq(a.v_)); }
+  // for a model's clamp(x, lo, hi)
+  friend bool operator<(Wide a, Wide b) { return a.v_ < b.v_; }
+  friend bool operator>(Wide a, Wide b) { return a.v_ > b.v_; }
 
  private:
   __float128 v_ = 0;

@@ -1,7 +1,8 @@
 /// @file A scalar type that allows only what the generated headers may use:
-/// explicit construction from a number, the four operations, unary minus and
-/// math functions found by argument-dependent lookup. Any implicit conversion,
-/// comparison, compound assignment or std:: call in a header fails to compile.
+/// explicit construction from a number, the four operations, unary minus, `<`
+/// (which only a model's clamp(x, lo, hi) uses) and math functions found by
+/// argument-dependent lookup. Any implicit conversion, other comparison, compound
+/// assignment or std:: call in a header fails to compile.
 #pragma once
 
 #include <cmath>
@@ -21,6 +22,7 @@ class Scalar {
   friend Scalar operator*(Scalar a, Scalar b) { return Scalar(a.v_ * b.v_); }
   friend Scalar operator/(Scalar a, Scalar b) { return Scalar(a.v_ / b.v_); }
   friend Scalar operator-(Scalar a) { return Scalar(-a.v_); }
+  friend bool operator<(Scalar a, Scalar b) { return a.v_ < b.v_; }
 
  private:
   double v_ = 0;
