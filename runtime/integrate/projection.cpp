@@ -38,6 +38,19 @@ std::vector<long> dependent_columns(const Matrix& C, const std::vector<bool>& gi
   return chosen;
 }
 
+// g counts as met below 1e-14 of its own scale, |C_r|·|q| (largest entries): a loop in micrometres
+// is closed to 1e-14 of its size, not to 1e-14 m (an absolute 1e-14 left a pendulum of 1 µm off
+// its rod by 0.15 %); with every coordinate 0 the scale is |C_r| alone
+bool constraints_met(const Eigen::VectorXd& g, const Matrix& Ch, const double* q, std::size_t n) {
+  double size = 0;
+  for (std::size_t j = 0; j < n; ++j) size = std::max(size, std::abs(q[j]));
+  for (long r = 0; r < g.size(); ++r) {
+    double scale = Ch.row(r).lpNorm<Eigen::Infinity>() * (size > 0 ? size : 1.0);
+    if (!(std::abs(g[r]) <= 1e-14 * scale)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool ConstraintProjection::make_consistent(double t, double* x, const std::vector<bool>& given) {
@@ -58,9 +71,9 @@ bool ConstraintProjection::make_consistent(double t, double* x, const std::vecto
     Eigen::VectorXd g(holonomic.size());
     for (std::size_t r = 0; r < holonomic.size(); ++r) g[static_cast<long>(r)] = position[static_cast<std::size_t>(holonomic[r])];
     if (!g.allFinite() || iteration == 50) return false;
-    if (g.lpNorm<Eigen::Infinity>() < 1e-14) break;
     Matrix C = constraint_jacobian(p_, t, x), Ch(holonomic.size(), n);
     for (std::size_t r = 0; r < holonomic.size(); ++r) Ch.row(static_cast<long>(r)) = C.row(holonomic[r]);
+    if (constraints_met(g, Ch, x, n)) break;
     std::vector<long> dependent = dependent_columns(Ch, given_positions);
     if (dependent.size() != holonomic.size()) return project_positions(t, x);  // dependent constraints here
     Eigen::MatrixXd block(Ch.rows(), Ch.rows());
@@ -107,9 +120,9 @@ bool ConstraintProjection::project_positions(double t, double* x) {
     Eigen::VectorXd g(rows.size());
     for (std::size_t r = 0; r < rows.size(); ++r) g[r] = position[rows[r]];
     if (!g.allFinite()) return false;
-    if (g.lpNorm<Eigen::Infinity>() < 1e-14) return true;
     Matrix C = constraint_jacobian(p_, t, x), Ch(rows.size(), n);
     for (std::size_t r = 0; r < rows.size(); ++r) Ch.row(r) = C.row(rows[r]);
+    if (constraints_met(g, Ch, x, n)) return true;
     Eigen::LDLT<Eigen::MatrixXd> normal(Ch * Ch.transpose());
     if (normal.info() != Eigen::Success || normal.vectorD().cwiseAbs().minCoeff() < 1e-14 * normal.vectorD().cwiseAbs().maxCoeff())
       return false;
