@@ -3,6 +3,8 @@
 /// a(q,t)·q' + b(q,t) = 0 gives C = a directly.
 #include "derive/constraints.hpp"
 
+#include "common/independent_rows.hpp"
+
 #include <cmath>
 #include <functional>
 #include <map>
@@ -84,31 +86,13 @@ double initial_value(const GiNaC::ex& e, const Symbols& s, const std::vector<Int
 
 std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s,
                                                const std::vector<Intermediate>& intermediates) {
-  // Gram–Schmidt over the rows of C in file order: a row (nearly) in the span of the
-  // rows before it adds no restriction
-  std::vector<std::vector<double>> basis;
+  // the rows of C in file order: a row (nearly) in the span of the rows before it adds no restriction
+  IndependentRows rows;
   std::vector<std::string> dependent;
   for (unsigned i = 0; i < c.size(); ++i) {
     std::vector<double> row;
-    double size = 0;
-    for (unsigned j = 0; j < c.jacobian.cols(); ++j) {
-      row.push_back(initial_value(c.jacobian(i, j), s, intermediates));
-      size = std::max(size, std::abs(row.back()));
-    }
-    for (const auto& b : basis) {
-      double dot = 0;
-      for (std::size_t j = 0; j < row.size(); ++j) dot += row[j] * b[j];
-      for (std::size_t j = 0; j < row.size(); ++j) row[j] -= dot * b[j];
-    }
-    double norm = 0;
-    for (double v : row) norm += v * v;
-    norm = std::sqrt(norm);
-    if (!(norm > 1e-9 * std::max(size, 1e-300))) {
-      dependent.push_back(c.names[i]);
-      continue;
-    }
-    for (double& v : row) v /= norm;
-    basis.push_back(row);
+    for (unsigned j = 0; j < c.jacobian.cols(); ++j) row.push_back(initial_value(c.jacobian(i, j), s, intermediates));
+    if (!rows.add(row)) dependent.push_back(c.names[i]);
   }
   return dependent;
 }

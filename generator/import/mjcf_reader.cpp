@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
 
+#include "common/independent_rows.hpp"
 #include "import/urdf_text.hpp"
 
 namespace eomgen {
@@ -62,27 +63,13 @@ bool has_spherical_joints(const mjModel* m) {
 }
 
 // the world components of a loop's distance whose rows (Jacobian `first` − `second`, 3 × nv) are
-// independent of the rows kept before them (Gram–Schmidt into `basis`)
+// independent of the rows kept before them
 void keep_independent_rows(const std::vector<mjtNum>& first, const std::vector<mjtNum>& second, int nv,
-                           std::vector<std::vector<double>>& basis, RobotLoop& loop) {
+                           IndependentRows& kept, RobotLoop& loop) {
   for (int a = 0; a < 3; ++a) {
     std::vector<double> row(static_cast<std::size_t>(nv));
-    double size = 0, norm = 0;
-    for (int v = 0; v < nv; ++v) {
-      row[std::size_t(v)] = first[std::size_t(a * nv + v)] - second[std::size_t(a * nv + v)];
-      size = std::max(size, std::abs(row[std::size_t(v)]));
-    }
-    for (const std::vector<double>& b : basis) {
-      double along = 0;
-      for (std::size_t v = 0; v < row.size(); ++v) along += row[v] * b[v];
-      for (std::size_t v = 0; v < row.size(); ++v) row[v] -= along * b[v];
-    }
-    for (double x : row) norm += x * x;
-    norm = std::sqrt(norm);
-    loop.kept[std::size_t(a)] = norm > 1e-9 * size && size > 0;
-    if (!loop.kept[std::size_t(a)]) continue;
-    for (double& x : row) x /= norm;
-    basis.push_back(row);
+    for (int v = 0; v < nv; ++v) row[std::size_t(v)] = first[std::size_t(a * nv + v)] - second[std::size_t(a * nv + v)];
+    loop.kept[std::size_t(a)] = kept.add(row);
   }
 }
 
@@ -125,7 +112,7 @@ void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
   for (int i = 0; i < m->nq; ++i) d->qpos[i] = qpos[i];
   mj_kinematics(m, d);
   mj_comPos(m, d);
-  std::vector<std::vector<double>> basis;
+  IndependentRows independent;
   std::vector<mjtNum> first(std::size_t(3 * m->nv)), second(std::size_t(3 * m->nv));
   for (int e = 0; e < m->neq; ++e) {
     if ((m->eq_type[e] != mjEQ_CONNECT && m->eq_type[e] != mjEQ_WELD) || !m->eq_active[e]) continue;
@@ -139,7 +126,7 @@ void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
         mju_addTo3(point, d->xpos + 3 * body[k]);
         mj_jac(m, d, jacobian[k], nullptr, point, body[k]);
       }
-      keep_independent_rows(first, second, m->nv, basis, loop);
+      keep_independent_rows(first, second, m->nv, independent, loop);
       r.loops.push_back(loop);
     }
   }
