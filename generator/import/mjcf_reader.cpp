@@ -56,6 +56,15 @@ RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* q
   return joint;
 }
 
+bool one_dof_joint(const mjModel* m, int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); }
+
+// joint j of the model as a body's index, the joint's place among that body's joints, and its qpos0
+void place_joint(const mjModel* m, int j, int& body, int& joint, double& reference) {
+  body = m->jnt_bodyid[j] - 1;
+  joint = j - m->body_jntadr[body + 1];
+  reference = m->qpos0[m->jnt_qposadr[j]];
+}
+
 bool has_spherical_joints(const mjModel* m) {
   for (int j = 0; j < m->njnt; ++j)
     if (m->jnt_type[j] == mjJNT_FREE || m->jnt_type[j] == mjJNT_BALL) return true;
@@ -134,20 +143,15 @@ void read_loops(const mjModel* m, const mjtNum* qpos, Robot& r) {
 
 // the equality joints between hinges or slides, as couplings in MuJoCo's polynomial
 void read_couplings(const mjModel* m, Robot& r) {
-  auto one_dof = [&](int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); };
   for (int e = 0; e < m->neq; ++e) {
     int first = m->eq_obj1id[e], second = m->eq_obj2id[e];
-    if (m->eq_type[e] != mjEQ_JOINT || !m->eq_active[e] || !one_dof(first) || (second >= 0 && !one_dof(second))) continue;
+    if (m->eq_type[e] != mjEQ_JOINT || !m->eq_active[e] || !one_dof_joint(m, first) || (second >= 0 && !one_dof_joint(m, second)))
+      continue;
     RobotCoupling c;
     c.name = name_of(m, m->name_eqadr, e);
     if (c.name.empty()) c.name = fmt::format("coupling{}", r.couplings.size() + 1);
-    auto place = [&](int j, int& body, int& joint, double& reference) {
-      body = m->jnt_bodyid[j] - 1;
-      joint = j - m->body_jntadr[body + 1];
-      reference = m->qpos0[m->jnt_qposadr[j]];
-    };
-    place(first, c.body1, c.joint1, c.reference1);
-    if (second >= 0) place(second, c.body2, c.joint2, c.reference2);
+    place_joint(m, first, c.body1, c.joint1, c.reference1);
+    if (second >= 0) place_joint(m, second, c.body2, c.joint2, c.reference2);
     for (int k = 0; k < 5; ++k) c.coefficients[std::size_t(k)] = m->eq_data[mjNEQDATA * e + k];
     c.equality = e;
     r.couplings.push_back(c);
@@ -245,27 +249,21 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
 // a URDF joint's <mimic>, which MuJoCo's reader ignores, as the coupling q = m q_K + o (a holonomic
 // constraint, as an MJCF equality joint), or a warning where it cannot be one
 void read_mimics(const mjModel* m, const std::string& urdf, Robot& r) {
-  auto one_dof = [&](int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); };
+  bool floating = has_spherical_joints(m);
   for (const UrdfMimic& mimic : urdf_mimics(urdf)) {
     int first = mj_name2id(m, mjOBJ_JOINT, mimic.joint.c_str()), second = mj_name2id(m, mjOBJ_JOINT, mimic.mimicked.c_str());
-    if (has_spherical_joints(m) || !one_dof(first) || !one_dof(second)) {
+    if (floating || !one_dof_joint(m, first) || !one_dof_joint(m, second)) {
       r.warnings.push_back({fmt::format("joint '{}' mimics '{}': not carried ({})", mimic.joint, mimic.mimicked,
-                                        has_spherical_joints(m) ? "a robot with a floating base takes Appell's equations, "
-                                                                  "which take no constraints here yet"
-                                                                : "only a revolute or prismatic joint that mimics another "
-                                                                  "becomes a constraint"),
+                                        floating ? "a robot with a floating base takes Appell's equations, which take no "
+                                                   "constraints here yet"
+                                                 : "only a revolute or prismatic joint that mimics another becomes a constraint"),
                             "joint", mimic.joint, 0});
       continue;
     }
     RobotCoupling c;
     c.name = mimic.joint + "_mimics_" + mimic.mimicked;
-    auto place = [&](int j, int& body, int& joint, double& reference) {
-      body = m->jnt_bodyid[j] - 1;
-      joint = j - m->body_jntadr[body + 1];
-      reference = m->qpos0[m->jnt_qposadr[j]];
-    };
-    place(first, c.body1, c.joint1, c.reference1);
-    place(second, c.body2, c.joint2, c.reference2);
+    place_joint(m, first, c.body1, c.joint1, c.reference1);
+    place_joint(m, second, c.body2, c.joint2, c.reference2);
     c.coefficients = {mimic.offset, mimic.multiplier, 0, 0, 0};
     r.couplings.push_back(c);
   }

@@ -150,6 +150,12 @@ Triple turned(const Quaternion& q, const Triple& v) {
   return {v[0] + 2 * (q[0] * c[0] + d[0]), v[1] + 2 * (q[0] * c[1] + d[1]), v[2] + 2 * (q[0] * c[2] + d[2])};
 }
 
+// the Hamilton product a ⊗ b: turning by b, then by a
+Quaternion product(const Quaternion& a, const Quaternion& b) {
+  return {a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3], a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+          a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1], a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
+}
+
 // MuJoCo turns a hinge by qpos − qpos0 and moves a slide by it: the placement (origin, rotation)
 // at q = 0 is the body's at qpos0 turned back by the reference about the axis through the anchor
 // (origin + R(anchor − R_ref anchor), R R_ref, R_ref by −reference), or moved back along the axis
@@ -165,9 +171,7 @@ void at_reference(const RobotJoint& j, Triple& origin, Quaternion& rotation) {
   Triple moved = turned(turn, j.anchor);
   Triple shift = turned(rotation, {j.anchor[0] - moved[0], j.anchor[1] - moved[1], j.anchor[2] - moved[2]});
   for (std::size_t a = 0; a < 3; ++a) origin[a] += shift[a];
-  const Quaternion& q = rotation;
-  rotation = {q[0] * turn[0] - q[1] * turn[1] - q[2] * turn[2] - q[3] * turn[3], q[0] * turn[1] + q[1] * turn[0] + q[2] * turn[3] - q[3] * turn[2],
-              q[0] * turn[2] - q[1] * turn[3] + q[2] * turn[0] + q[3] * turn[1], q[0] * turn[3] + q[1] * turn[2] - q[2] * turn[1] + q[3] * turn[0]};
+  rotation = product(rotation, turn);
 }
 
 // the body's geoms as its frame's shapes (MuJoCo's half sizes become radii, lengths and sides, a

@@ -52,10 +52,6 @@ std::optional<std::string> attribute(const std::string& text, std::size_t start,
   return std::nullopt;
 }
 
-}  // namespace
-
-namespace {
-
 int line_of(const std::string& text, std::size_t at) { return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n')); }
 
 // a <joint> of a type URDF does not have (MuJoCo 2.2.2's reader crashes on it)

@@ -20,17 +20,6 @@ Shape::Type shape_type(const std::string& name) {
   return Shape::Type::sphere;
 }
 
-// the drawing's shapes are constants of the run (drawn_shapes takes the parameters alone)
-bool moves(const GiNaC::matrix& R, const Symbols& s) {
-  for (unsigned i = 0; i < 3; ++i)
-    for (unsigned j = 0; j < 3; ++j) {
-      if (R(i, j).has(s.time)) return true;
-      for (const GiNaC::realsymbol& q : s.coordinates)
-        if (R(i, j).has(q)) return true;
-    }
-  return false;
-}
-
 }  // namespace
 
 std::vector<Shape> ModelBuilder::shapes(const std::vector<ShapeEntry>& entries) {
@@ -44,7 +33,8 @@ std::vector<Shape> ModelBuilder::shapes(const std::vector<ShapeEntry>& entries) 
     if (!e.axis.empty()) s.axis = vector(e.axis, allow_parameters, "a shape's axis");
     if (e.rotation) {
       s.rotation = rotation(e.rotation).matrix;
-      if (moves(s.rotation, m_.symbols))
+      // the drawing's shapes are constants of the run (drawn_shapes takes the parameters alone)
+      if (moves_with(s.rotation, m_.symbols))
         d_.error(e.rotation->where, e.rotation->key, "a shape's rotation must not depend on the motion",
                  "turn the frame the shape is in; a shape's rotation takes constants and parameters");
     }

@@ -13,8 +13,6 @@ namespace eomgen {
 
 using GiNaC::ex;
 
-namespace {
-
 bool moves_with(const GiNaC::matrix& R, const Symbols& s) {
   for (unsigned i = 0; i < 3; ++i)
     for (unsigned j = 0; j < 3; ++j) {
@@ -24,8 +22,6 @@ bool moves_with(const GiNaC::matrix& R, const Symbols& s) {
     }
   return false;
 }
-
-}  // namespace
 
 std::optional<ex> ModelBuilder::joint_coordinate(const JointEntry& j) {
   const Symbols& s = m_.symbols;
