@@ -83,6 +83,13 @@ struct Equations {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
+  /// A joint tree without ball and free joints: inverse_dynamics is the bodies' τ plus
+  /// applied_inverse_dynamics, and the bodies' ∂τ/∂q and ∂τ/∂q' (n×n) are in closed form
+  /// (spatial/joint_tree_derivatives.hpp), in acceleration_intermediates: the header's tangent
+  /// sweep then runs through the applied part alone. Empty otherwise.
+  std::vector<GiNaC::ex> applied_inverse_dynamics;
+  GiNaC::matrix bodies_gradient_coordinates{0, 0}, bodies_gradient_velocities{0, 0};
+  bool has_bodies_gradient() const { return bodies_gradient_coordinates.rows() > 0; }
   /// Forward dynamics by the articulated-body recursion (derive/articulated_bodies.hpp), when the
   /// model is a tree of particles and [model] forward_dynamics chooses it: q'' in the recursion's
   /// quantities, for the generated rhs. Empty when the rhs solves M q'' = f. Not printed.

@@ -116,17 +116,30 @@ std::string newton_euler_gradient_function(const Equations& e) {
   std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
   directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
   directions.insert(directions.end(), s.inputs.begin(), s.inputs.end());
+  // a joint tree's bodies have their derivatives in closed form: the sweep runs through the rest
+  bool closed_form = e.has_bodies_gradient();
+  const std::vector<ex>& swept = closed_form ? e.applied_inverse_dynamics : e.inverse_dynamics;
   TangentSweep sweep(w, directions);
-  sweep.follow(w.write_intermediates_of(e.inverse_dynamics));
-  CseBatch tau = w.reduced_batch(e.inverse_dynamics);
+  sweep.follow(w.write_intermediates_of(swept));
+  CseBatch tau = w.reduced_batch(swept);
   sweep.follow(tau);
   std::vector<ex> entries;
   for (std::size_t i = 0; i < n; ++i)
     for (const ex& d : sweep.derivatives(tau.outputs[i])) entries.push_back(d);
+  for (std::size_t i = 0; i < n && closed_form; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      entries[i * W + j] += e.bodies_gradient_coordinates(unsigned(i), unsigned(j));
+      entries[i * W + n + j] += e.bodies_gradient_velocities(unsigned(i), unsigned(j));
+    }
   w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
   return "namespace detail {\n\n" +
-         function(fmt::format("/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
-                              "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n", n, W),
+         function(fmt::format(fmt::runtime(closed_form
+                                  ? "/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
+                                    "/// part in closed form, in world coordinates; a tangent sweep through the rest).\n"
+                                    "/// ddq: {0}; F: {0}x{1}, row-major.\n"
+                                  : "/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
+                                    "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n"),
+                              n, W),
                   "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
                   without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")))) +
          "}  // namespace detail\n\n";

@@ -182,6 +182,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   const std::vector<GiNaC::symbol>& ddq = m.acceleration_symbols;
   std::vector<ex> tau;
+  std::optional<InverseDynamicsGradient> bodies_gradient;
   if (joint_tree) {
     // a tree of joints: M, the bias forces and τ by the recursions in the frames' own coordinates
     JointTreeDynamics tree = joint_tree_dynamics(model, velocities, ddq, m.intermediates, m.acceleration_intermediates);
@@ -192,6 +193,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     if (velocities.pseudo) m.tree_velocities = velocities;
     m.tree_kinetic_energy = tree.kinetic_energy;
     m.potential_gradient = frames.gradient(model.potential);
+    bodies_gradient = tree.gradient;
   } else {
     tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);
   }
@@ -224,16 +226,21 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     m.inverse_dynamics = tau;
     return;
   }
-  for (std::size_t j = 0; j < n; ++j) tau[j] += GiNaC::add(terms[j]);
+  std::vector<ex> applied(n);
   for (std::size_t j = 0; j < n; ++j) {
-    tau[j] += potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j]);
+    applied[j] = GiNaC::add(terms[j]) + potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j]);
     // an [energy] kinetic: d/dt ∂T/∂q'_j − ∂T/∂q_j
     if (model.kinetic.is_zero()) continue;
     ex p = model.kinetic.diff(s.velocities[j]);
-    tau[j] += p.diff(s.time) - model.kinetic.diff(s.coordinates[j]);
-    for (std::size_t k = 0; k < n; ++k) tau[j] += p.diff(s.coordinates[k]) * s.velocities[k] + p.diff(s.velocities[k]) * ddq[k];
+    applied[j] += p.diff(s.time) - model.kinetic.diff(s.coordinates[j]);
+    for (std::size_t k = 0; k < n; ++k) applied[j] += p.diff(s.coordinates[k]) * s.velocities[k] + p.diff(s.velocities[k]) * ddq[k];
   }
+  for (std::size_t j = 0; j < n; ++j) tau[j] += applied[j];
   m.inverse_dynamics = tau;
+  if (!bodies_gradient) return;
+  m.applied_inverse_dynamics = applied;
+  m.bodies_gradient_coordinates = bodies_gradient->coordinates;
+  m.bodies_gradient_velocities = bodies_gradient->velocities;
 }
 
 }  // namespace

@@ -195,6 +195,28 @@ class Tree {
     return M;
   }
 
+  // the links as the closed-form derivatives take them, for a tree of joints of one velocity each
+  std::vector<TreeLink> layout() const {
+    std::vector<TreeLink> out;
+    for (std::size_t i = 0; i < links_.size(); ++i) {
+      TreeLink t;
+      t.name = name(i);
+      t.parent = model_.frame_links[i].parent;
+      t.turn = links_[i].E;
+      t.offset = links_[i].r;
+      if (!links_[i].dofs.empty()) {
+        const Dof& d = links_[i].dofs.front();
+        t.velocity = d.velocity;
+        t.rate = d.rate;
+        t.axis = d.e;
+        t.origin_velocity = d.u;
+      }
+      for (const Body& b : bodies_[i]) t.bodies.push_back({b.mass, b.center, b.inertia});
+      out.push_back(t);
+    }
+    return out;
+  }
+
  private:
   // one velocity of a joint: the link's ω and its origin's velocity per unit of it; `fixed_in_frame`
   // when u turns with the link (a revolute, prismatic or ball joint's), not when it keeps the
@@ -448,6 +470,8 @@ JointTreeDynamics joint_tree_dynamics(const Model& model, const JointVelocities&
   d.bias_forces = tree.inverse_dynamics(none, "0", intermediates);
   for (ex& f : d.bias_forces) f = -f;
   d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
+  if (!velocities.pseudo)
+    d.gradient = joint_tree_gradient(tree.layout(), model.gravity, ddq, velocities.symbols.size(), acceleration_intermediates);
   d.mass_matrix = tree.mass_matrix();
   d.kinetic_energy = tree.kinetic_energy();
   d.velocity_parents = velocity_parents(model, velocities);

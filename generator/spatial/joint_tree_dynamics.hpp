@@ -27,6 +27,7 @@
 #include <ginac/ginac.h>
 
 #include "model/model.hpp"
+#include "spatial/joint_tree_derivatives.hpp"
 #include "spatial/joint_velocities.hpp"
 
 namespace eomgen {
@@ -38,13 +39,17 @@ struct JointTreeDynamics {
   std::vector<GiNaC::ex> inverse_dynamics;  // τ(q, s, s') of the bodies, in the acceleration symbols
   std::vector<int> velocity_parents;        // Equations::coordinate_parents, or empty
   GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
+  /// ∂τ/∂(q, q') of inverse_dynamics in closed form (spatial/joint_tree_derivatives.hpp), for a
+  /// tree without ball and free joints
+  std::optional<InverseDynamicsGradient> gradient;
 };
 
 /// Why the model is not such a tree (for a note in the header), or nothing when it is.
 std::optional<std::string> why_not_a_joint_tree(const Model& model);
 
 /// The dynamics above; its quantities are appended to `intermediates` (those of q̈ = 0 and of M)
-/// and to `acceleration_intermediates` (those of the pass with q̈ = `accelerations`).
+/// and to `acceleration_intermediates` (those of the pass with q̈ = `accelerations`, and of the
+/// gradient).
 JointTreeDynamics joint_tree_dynamics(const Model& model, const JointVelocities& velocities,
                                       const std::vector<GiNaC::symbol>& accelerations,
                                       std::vector<Intermediate>& intermediates,

@@ -3,7 +3,8 @@
 // multiplied out): a branched tree with a revolute joint about an oblique axis through an
 // offset anchor, a prismatic joint, a fixed frame, a particle and rigid bodies with full
 // inertia tensors turned in their frames. M and f agree at random states; the inverse dynamics
-// τ(q, q̇, q̈) of the recursion (the code jacobian_state differentiates) is M q̈ − f at random q̈;
+// τ(q, q̇, q̈) of the recursion (the code jacobian_state differentiates) is M q̈ − f at random q̈, and
+// its derivatives in closed form are those of M q̈ − f differentiated symbolically;
 // and a model that is not such a tree keeps the frame recursion, with its reason.
 #include <gtest/gtest.h>
 
@@ -148,6 +149,42 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
       near(value_at(recursive.inverse_dynamics[j], at), Mddq - f, fmt::format("tau[{}] = (M q'' - f)[{}]", j, j));
     }
     near(value_at(recursive.kinetic_energy, at), value_at(expanded.kinetic_energy, full), "T");
+  }
+}
+
+// the bodies' ∂τ/∂q and ∂τ/∂q' in closed form (spatial/joint_tree_derivatives.hpp), plus the
+// derivatives of the applied part, are those of M q'' − f of the expanded derivation, differentiated
+// symbolically: the oblique axis, the slide, the fixed frame and the turned inertias included
+TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
+  Equations recursive = derive_text(with("recursive")), expanded = derive_text(with("expanded"));
+  ASSERT_TRUE(recursive.has_bodies_gradient());
+  ASSERT_EQ(recursive.applied_inverse_dynamics.size(), 4u);
+  std::vector<ex> tau(4);
+  std::vector<GiNaC::symbol> ddq(4);
+  for (unsigned j = 0; j < 4; ++j) {
+    tau[j] = -expanded.forcing[j];
+    for (unsigned k = 0; k < 4; ++k) tau[j] += expanded.mass_matrix(j, k) * ddq[k];
+  }
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3), scale(0.5, 2);
+  for (int point = 0; point < 6; ++point) {
+    std::map<std::string, double> values;
+    for (const std::string& p : recursive.symbols.parameter_names) values[p] = scale(random);
+    for (const std::string& q : recursive.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
+    for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
+    GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
+    for (unsigned k = 0; k < 4; ++k) full[ddq[k]] = values.at(fmt::format("ddq{}", k));
+    for (unsigned j = 0; j < 4; ++j)
+      for (unsigned c = 0; c < 4; ++c) {
+        double by_q = value_at(recursive.bodies_gradient_coordinates(j, c), at) +
+                      value_at(recursive.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]), at);
+        double by_rate = value_at(recursive.bodies_gradient_velocities(j, c), at) +
+                         value_at(recursive.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]), at);
+        double want_q = value_at(tau[j].diff(expanded.symbols.coordinates[c]), full);
+        double want_rate = value_at(tau[j].diff(expanded.symbols.velocities[c]), full);
+        EXPECT_NEAR(by_q, want_q, 1e-11 * std::max(1.0, std::abs(want_q))) << "dtau" << j << "/dq" << c << " at " << point;
+        EXPECT_NEAR(by_rate, want_rate, 1e-11 * std::max(1.0, std::abs(want_rate))) << "dtau" << j << "/dq'" << c;
+      }
   }
 }
 
