@@ -125,33 +125,15 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 
 }  // namespace detail
 
-/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
-/// x: num_states; p: num_parameters; M: 3x3, row-major.
-template <class T>
-void mass_matrix(T t, const T* x, const T* p, T* M) {
-  (void)t; (void)x; (void)p;
-  const T p_m = p[0];
-  const T k_top_tJxx = (T(317)/T(5000))*p_m + T(1)/T(50);
-  const T k_top_tJxy = -(T(3)/T(5000))*p_m + T(1)/T(1000);
-  const T k_top_tJxz = -(T(1)/T(200))*p_m - T(1)/T(500);
-  const T k_top_tJyy = (T(629)/T(10000))*p_m + T(1)/T(40);
-  const T k_top_tJyz = -(T(3)/T(400))*p_m + T(3)/T(2000);
-  const T k_top_tJzz = (T(13)/T(10000))*p_m + T(1)/T(25);
-  M[0] = k_top_tJxx;
-  M[1] = k_top_tJxy;
-  M[3] = M[1];
-  M[2] = k_top_tJxz;
-  M[6] = M[2];
-  M[4] = k_top_tJyy;
-  M[5] = k_top_tJyz;
-  M[7] = M[5];
-  M[8] = k_top_tJzz;
-}
+namespace detail {
 
-/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
-/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 3.
+/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.
+/// M: 3x3, row-major; f: 3.
 template <class T>
-void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   const T q_qw = x[0];
   const T q_qx = x[1];
@@ -166,6 +148,12 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T k_top_tB0Iw0_x = (T(1)/T(1000))*s_wy + (T(1)/T(50))*s_wx - (T(1)/T(500))*s_wz;
   const T k_top_tB0Iw0_y = (T(1)/T(1000))*s_wx + (T(1)/T(40))*s_wy + (T(3)/T(2000))*s_wz;
   const T k_top_tB0Iw0_z = (T(1)/T(25))*s_wz - (T(1)/T(500))*s_wx + (T(3)/T(2000))*s_wy;
+  const T k_top_tJxx = (T(317)/T(5000))*p_m + T(1)/T(50);
+  const T k_top_tJxy = -(T(3)/T(5000))*p_m + T(1)/T(1000);
+  const T k_top_tJxz = -(T(1)/T(200))*p_m - T(1)/T(500);
+  const T k_top_tJyy = (T(629)/T(10000))*p_m + T(1)/T(40);
+  const T k_top_tJyz = -(T(3)/T(400))*p_m + T(3)/T(2000);
+  const T k_top_tJzz = (T(13)/T(10000))*p_m + T(1)/T(25);
   const T k_top_tEzx = -T(2)*k_top_tqn*q_qw*q_qy + T(2)*k_top_tqn*q_qx*q_qz;
   const T k_top_tEzy = T(2)*k_top_tqn*q_qw*q_qx + T(2)*k_top_tqn*q_qy*q_qz;
   const T k_top_tEzz = k_top_tqn*q_qw*q_qw - k_top_tqn*q_qx*q_qx - k_top_tqn*q_qy*q_qy + k_top_tqn*q_qz*q_qz;
@@ -178,9 +166,38 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T k_top_tN0_x = -(T(1)/T(4))*k_top_tB0F0_y + (T(3)/T(100))*k_top_tB0F0_z - k_top_tB0Iw0_y*s_wz + k_top_tB0Iw0_z*s_wy;
   const T k_top_tN0_y = (T(1)/T(4))*k_top_tB0F0_x - (T(1)/T(50))*k_top_tB0F0_z + k_top_tB0Iw0_x*s_wz - k_top_tB0Iw0_z*s_wx;
   const T k_top_tN0_z = (T(1)/T(50))*k_top_tB0F0_y - (T(3)/T(100))*k_top_tB0F0_x - k_top_tB0Iw0_x*s_wy + k_top_tB0Iw0_y*s_wx;
+  M[0] = k_top_tJxx;
+  M[1] = k_top_tJxy;
+  M[3] = M[1];
+  M[2] = k_top_tJxz;
+  M[6] = M[2];
+  M[4] = k_top_tJyy;
+  M[5] = k_top_tJyz;
+  M[7] = M[5];
+  M[8] = k_top_tJzz;
   f[0] = -k_top_tN0_x;
   f[1] = -k_top_tN0_y;
   f[2] = -k_top_tN0_z;
+}
+
+}  // namespace detail
+
+/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
+/// x: num_states; p: num_parameters; M: 3x3, row-major.
+template <class T>
+void mass_matrix(T t, const T* x, const T* p, T* M) {
+  (void)t; (void)x; (void)p;
+  T f[3];
+  detail::mass_matrix_and_forcing(t, x, nullptr, p, M, f);
+}
+
+/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
+/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 3.
+template <class T>
+void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[9];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, f);
 }
 
 namespace detail {
@@ -190,50 +207,8 @@ namespace detail {
 template <class T>
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
-  const T q_qw = x[0];
-  const T q_qx = x[1];
-  const T q_qy = x[2];
-  const T q_qz = x[3];
-  const T s_wx = x[4];
-  const T s_wy = x[5];
-  const T s_wz = x[6];
-  const T p_m = p[0];
-  const T p_g = p[1];
-  const T k_top_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_tB0Iw0_x = (T(1)/T(1000))*s_wy + (T(1)/T(50))*s_wx - (T(1)/T(500))*s_wz;
-  const T k_top_tB0Iw0_y = (T(1)/T(1000))*s_wx + (T(1)/T(40))*s_wy + (T(3)/T(2000))*s_wz;
-  const T k_top_tB0Iw0_z = (T(1)/T(25))*s_wz - (T(1)/T(500))*s_wx + (T(3)/T(2000))*s_wy;
-  const T k_top_tJxx = (T(317)/T(5000))*p_m + T(1)/T(50);
-  const T k_top_tJxy = -(T(3)/T(5000))*p_m + T(1)/T(1000);
-  const T k_top_tJxz = -(T(1)/T(200))*p_m - T(1)/T(500);
-  const T k_top_tJyy = (T(629)/T(10000))*p_m + T(1)/T(40);
-  const T k_top_tJyz = -(T(3)/T(400))*p_m + T(3)/T(2000);
-  const T k_top_tJzz = (T(13)/T(10000))*p_m + T(1)/T(25);
-  const T k_top_tEzx = -T(2)*k_top_tqn*q_qw*q_qy + T(2)*k_top_tqn*q_qx*q_qz;
-  const T k_top_tEzy = T(2)*k_top_tqn*q_qw*q_qx + T(2)*k_top_tqn*q_qy*q_qz;
-  const T k_top_tEzz = k_top_tqn*q_qw*q_qw - k_top_tqn*q_qx*q_qx - k_top_tqn*q_qy*q_qy + k_top_tqn*q_qz*q_qz;
-  const T k_top_ta0_x = k_top_tEzx*p_g;
-  const T k_top_ta0_y = k_top_tEzy*p_g;
-  const T k_top_ta0_z = k_top_tEzz*p_g;
-  const T k_top_tB0F0_x = (T(1)/T(4))*p_m*s_wx*s_wz - (T(1)/T(50))*p_m*s_wy*s_wy - (T(1)/T(50))*p_m*s_wz*s_wz + (T(3)/T(100))*p_m*s_wx*s_wy + k_top_ta0_x*p_m;
-  const T k_top_tB0F0_y = (T(1)/T(4))*p_m*s_wy*s_wz + (T(1)/T(50))*p_m*s_wx*s_wy - (T(3)/T(100))*p_m*s_wx*s_wx - (T(3)/T(100))*p_m*s_wz*s_wz + k_top_ta0_y*p_m;
-  const T k_top_tB0F0_z = -(T(1)/T(4))*p_m*s_wx*s_wx - (T(1)/T(4))*p_m*s_wy*s_wy + (T(1)/T(50))*p_m*s_wx*s_wz + (T(3)/T(100))*p_m*s_wy*s_wz + k_top_ta0_z*p_m;
-  const T k_top_tN0_x = -(T(1)/T(4))*k_top_tB0F0_y + (T(3)/T(100))*k_top_tB0F0_z - k_top_tB0Iw0_y*s_wz + k_top_tB0Iw0_z*s_wy;
-  const T k_top_tN0_y = (T(1)/T(4))*k_top_tB0F0_x - (T(1)/T(50))*k_top_tB0F0_z + k_top_tB0Iw0_x*s_wz - k_top_tB0Iw0_z*s_wx;
-  const T k_top_tN0_z = (T(1)/T(50))*k_top_tB0F0_y - (T(3)/T(100))*k_top_tB0F0_x - k_top_tB0Iw0_x*s_wy + k_top_tB0Iw0_y*s_wx;
   T M[9];
-  M[0] = k_top_tJxx;
-  M[1] = k_top_tJxy;
-  M[3] = M[1];
-  M[2] = k_top_tJxz;
-  M[6] = M[2];
-  M[4] = k_top_tJyy;
-  M[5] = k_top_tJyz;
-  M[7] = M[5];
-  M[8] = k_top_tJzz;
-  ddq[0] = -k_top_tN0_x;
-  ddq[1] = -k_top_tN0_y;
-  ddq[2] = -k_top_tN0_z;
+  detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
 }

@@ -239,51 +239,15 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
 
 }  // namespace detail
 
-/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
-/// x: num_states; p: num_parameters; M: 3x3, row-major.
-template <class T>
-void mass_matrix(T t, const T* x, const T* p, T* M) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_coupler = x[1];
-  const T p_a = p[0];
-  const T p_b = p[1];
-  const T p_c = p[2];
-  const T trig_angle[1] = {q_coupler};
-  T trig_sin[1], trig_cos[1];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_coupler = trig_sin[0];
-  const T cos_q_coupler = trig_cos[0];
-  const T c0 = cos_q_coupler;
-  const T c1 = sin_q_coupler;
-  const T k_coupler_link_tExx = c0;
-  const T k_coupler_link_tExy = -c1;
-  const T k_coupler_link_tEyx = c1;
-  const T k_coupler_link_tEyy = c0;
-  const T k_rocker_link_tJzz = (T(1)/T(8))*p_c*p_c + T(67)/T(10000);
-  const T k_coupler_link_th_x = (T(3)/T(10))*p_b;
-  const T k_coupler_link_tJzz = (T(3)/T(20))*p_b*p_b + T(157)/T(12500);
-  const T k_coupler_link_tEh_x = (T(3)/T(500))*k_coupler_link_tExy + k_coupler_link_tExx*k_coupler_link_th_x;
-  const T k_crank_link_tp1_y = -(T(3)/T(500))*k_coupler_link_tEyx + k_coupler_link_tEyy*k_coupler_link_th_x;
-  const T k_crank_link_tJzz = (T(27)/T(40))*p_a*p_a + T(1)/T(1000) + T(2)*k_coupler_link_tEh_x*p_a + k_coupler_link_tJzz;
-  const T k_crank_link_tL1_z = k_coupler_link_tJzz + k_crank_link_tp1_y*p_a;
-  M[2] = T(0);
-  M[6] = M[2];
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = k_rocker_link_tJzz;
-  M[4] = k_coupler_link_tJzz;
-  M[0] = k_crank_link_tJzz;
-  M[1] = k_crank_link_tL1_z;
-  M[3] = M[1];
-}
+namespace detail {
 
-/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
-/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 3.
+/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.
+/// M: 3x3, row-major; f: 3.
 template <class T>
-void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -315,12 +279,19 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T k_coupler_link_tEyy = c0;
   const T k_coupler_link_tw_z = dq_coupler + dq_crank;
   const T k_rocker_link_tEyy = cos_q_rocker;
+  const T k_rocker_link_tJzz = (T(1)/T(8))*p_c*p_c + T(67)/T(10000);
+  const T k_coupler_link_th_x = (T(3)/T(10))*p_b;
+  const T k_coupler_link_tJzz = (T(3)/T(20))*p_b*p_b + T(157)/T(12500);
   const T k_crank_link_ta0_x = k_crank_link_tEyx*p_g;
   const T k_crank_link_ta0_y = k_crank_link_tEyy*p_g;
   const T k_rocker_link_ta0_y = k_rocker_link_tEyy*p_g;
+  const T k_coupler_link_tEh_x = (T(3)/T(500))*k_coupler_link_tExy + k_coupler_link_tExx*k_coupler_link_th_x;
+  const T k_crank_link_tp1_y = -(T(3)/T(500))*k_coupler_link_tEyx + k_coupler_link_tEyy*k_coupler_link_th_x;
   const T k_coupler_link_tx0_x = -dq_crank*dq_crank*p_a + k_crank_link_ta0_x;
   const T k_rocker_link_tB0F0_y = (T(1)/T(2))*k_rocker_link_ta0_y;
   const T k_crank_link_tB0F0_y = (T(3)/T(10))*k_crank_link_ta0_y;
+  const T k_crank_link_tJzz = (T(27)/T(40))*p_a*p_a + T(1)/T(1000) + T(2)*k_coupler_link_tEh_x*p_a + k_coupler_link_tJzz;
+  const T k_crank_link_tL1_z = k_coupler_link_tJzz + k_crank_link_tp1_y*p_a;
   const T k_coupler_link_ta0_x = k_coupler_link_tExx*k_coupler_link_tx0_x + k_coupler_link_tEyx*k_crank_link_ta0_y;
   const T k_coupler_link_ta0_y = k_coupler_link_tExy*k_coupler_link_tx0_x + k_coupler_link_tEyy*k_crank_link_ta0_y;
   const T k_rocker_link_tN0_z = (T(1)/T(2))*k_rocker_link_tB0F0_y*p_c;
@@ -329,9 +300,38 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T k_coupler_link_tN0_z = -(T(1)/T(100))*k_coupler_link_tB0F0_x + (T(1)/T(2))*k_coupler_link_tB0F0_y*p_b;
   const T k_coupler_link_tFp0_y = k_coupler_link_tB0F0_x*k_coupler_link_tEyx + k_coupler_link_tB0F0_y*k_coupler_link_tEyy;
   const T k_crank_link_tN0_z = (T(1)/T(2))*k_crank_link_tB0F0_y*p_a + k_coupler_link_tFp0_y*p_a + k_coupler_link_tN0_z;
-  f[2] = -k_rocker_link_tN0_z;
-  f[1] = -k_coupler_link_tN0_z;
+  M[0] = k_crank_link_tJzz;
+  M[1] = k_crank_link_tL1_z;
+  M[3] = M[1];
+  M[2] = T(0);
+  M[6] = M[2];
+  M[4] = k_coupler_link_tJzz;
+  M[5] = T(0);
+  M[7] = M[5];
+  M[8] = k_rocker_link_tJzz;
   f[0] = -k_crank_link_tN0_z;
+  f[1] = -k_coupler_link_tN0_z;
+  f[2] = -k_rocker_link_tN0_z;
+}
+
+}  // namespace detail
+
+/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
+/// x: num_states; p: num_parameters; M: 3x3, row-major.
+template <class T>
+void mass_matrix(T t, const T* x, const T* p, T* M) {
+  (void)t; (void)x; (void)p;
+  T f[3];
+  detail::mass_matrix_and_forcing(t, x, nullptr, p, M, f);
+}
+
+/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
+/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 3.
+template <class T>
+void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[9];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, f);
 }
 
 namespace detail {
@@ -341,70 +341,8 @@ namespace detail {
 template <class T>
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_crank = x[0];
-  const T q_coupler = x[1];
-  const T q_rocker = x[2];
-  const T dq_crank = x[3];
-  const T dq_coupler = x[4];
-  const T p_a = p[0];
-  const T p_b = p[1];
-  const T p_c = p[2];
-  const T p_g = p[4];
-  const T trig_angle[3] = {q_crank, q_coupler, q_rocker};
-  T trig_sin[3], trig_cos[3];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_crank = trig_sin[0];
-  const T cos_q_crank = trig_cos[0];
-  const T sin_q_coupler = trig_sin[1];
-  const T cos_q_coupler = trig_cos[1];
-  const T cos_q_rocker = trig_cos[2];
-  const T c0 = cos_q_coupler;
-  const T c1 = sin_q_coupler;
-  const T k_crank_link_tEyx = sin_q_crank;
-  const T k_crank_link_tEyy = cos_q_crank;
-  const T k_coupler_link_tExx = c0;
-  const T k_coupler_link_tExy = -c1;
-  const T k_coupler_link_tEyx = c1;
-  const T k_coupler_link_tEyy = c0;
-  const T k_coupler_link_tw_z = dq_coupler + dq_crank;
-  const T k_rocker_link_tEyy = cos_q_rocker;
-  const T k_rocker_link_tJzz = (T(1)/T(8))*p_c*p_c + T(67)/T(10000);
-  const T k_coupler_link_th_x = (T(3)/T(10))*p_b;
-  const T k_coupler_link_tJzz = (T(3)/T(20))*p_b*p_b + T(157)/T(12500);
-  const T k_crank_link_ta0_x = k_crank_link_tEyx*p_g;
-  const T k_crank_link_ta0_y = k_crank_link_tEyy*p_g;
-  const T k_rocker_link_ta0_y = k_rocker_link_tEyy*p_g;
-  const T k_coupler_link_tEh_x = (T(3)/T(500))*k_coupler_link_tExy + k_coupler_link_tExx*k_coupler_link_th_x;
-  const T k_crank_link_tp1_y = -(T(3)/T(500))*k_coupler_link_tEyx + k_coupler_link_tEyy*k_coupler_link_th_x;
-  const T k_coupler_link_tx0_x = -dq_crank*dq_crank*p_a + k_crank_link_ta0_x;
-  const T k_rocker_link_tB0F0_y = (T(1)/T(2))*k_rocker_link_ta0_y;
-  const T k_crank_link_tB0F0_y = (T(3)/T(10))*k_crank_link_ta0_y;
-  const T k_crank_link_tJzz = (T(27)/T(40))*p_a*p_a + T(1)/T(1000) + T(2)*k_coupler_link_tEh_x*p_a + k_coupler_link_tJzz;
-  const T k_crank_link_tL1_z = k_coupler_link_tJzz + k_crank_link_tp1_y*p_a;
-  const T k_coupler_link_ta0_x = k_coupler_link_tExx*k_coupler_link_tx0_x + k_coupler_link_tEyx*k_crank_link_ta0_y;
-  const T k_coupler_link_ta0_y = k_coupler_link_tExy*k_coupler_link_tx0_x + k_coupler_link_tEyy*k_crank_link_ta0_y;
-  const T k_rocker_link_tN0_z = (T(1)/T(2))*k_rocker_link_tB0F0_y*p_c;
-  const T k_coupler_link_tB0F0_x = -(T(3)/T(10))*k_coupler_link_tw_z*k_coupler_link_tw_z*p_b + (T(3)/T(5))*k_coupler_link_ta0_x;
-  const T k_coupler_link_tB0F0_y = (T(3)/T(5))*k_coupler_link_ta0_y - (T(3)/T(500))*k_coupler_link_tw_z*k_coupler_link_tw_z;
-  const T k_coupler_link_tN0_z = -(T(1)/T(100))*k_coupler_link_tB0F0_x + (T(1)/T(2))*k_coupler_link_tB0F0_y*p_b;
-  const T k_coupler_link_tFp0_y = k_coupler_link_tB0F0_x*k_coupler_link_tEyx + k_coupler_link_tB0F0_y*k_coupler_link_tEyy;
-  const T k_crank_link_tN0_z = (T(1)/T(2))*k_crank_link_tB0F0_y*p_a + k_coupler_link_tFp0_y*p_a + k_coupler_link_tN0_z;
   T M[9];
-  M[0] = k_crank_link_tJzz;
-  M[1] = k_crank_link_tL1_z;
-  M[3] = M[1];
-  M[2] = T(0);
-  M[6] = M[2];
-  M[4] = k_coupler_link_tJzz;
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = k_rocker_link_tJzz;
-  ddq[0] = -k_crank_link_tN0_z;
-  ddq[1] = -k_coupler_link_tN0_z;
-  ddq[2] = -k_rocker_link_tN0_z;
+  detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
 }
@@ -421,9 +359,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'
-/// part in closed form, in world coordinates; a tangent sweep through the rest).
-/// ddq: 3; F: 3x6, row-major.
+/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// tangent sweep through the frames' recursion). ddq: 3; F: 3x6, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -435,11 +372,9 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T q_rocker = x[2];
   const T dq_crank = x[3];
   const T dq_coupler = x[4];
-  const T dq_rocker = x[5];
   const T p_a = p[0];
   const T p_b = p[1];
   const T p_c = p[2];
-  const T p_d = p[3];
   const T p_g = p[4];
   const T trig_angle[3] = {q_crank, q_coupler, q_rocker};
   T trig_sin[3], trig_cos[3];
@@ -454,90 +389,80 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c2 = cos_q_coupler;
   const T c3 = sin_q_coupler;
   const T c5 = sin_q_rocker;
-  const T k_crank_link_tExx = c0;
-  const T k_crank_link_tExy = -c1;
   const T k_crank_link_tEyx = c1;
   const T k_crank_link_tEyy = c0;
   const T k_coupler_link_tExx = c2;
   const T k_coupler_link_tExy = -c3;
   const T k_coupler_link_tEyx = c3;
   const T k_coupler_link_tEyy = c2;
-  const T k_rocker_link_tEyx = c5;
-  const T k_crank_link_gB0c_y = (T(1)/T(2))*k_crank_link_tEyx*p_a;
-  const T k_coupler_link_gR00 = k_coupler_link_tExx*k_crank_link_tExx + k_coupler_link_tEyx*k_crank_link_tExy;
-  const T k_coupler_link_gR01 = k_coupler_link_tExy*k_crank_link_tExx + k_coupler_link_tEyy*k_crank_link_tExy;
-  const T k_coupler_link_gR10 = k_coupler_link_tExx*k_crank_link_tEyx + k_coupler_link_tEyx*k_crank_link_tEyy;
-  const T k_coupler_link_gR11 = k_coupler_link_tExy*k_crank_link_tEyx + k_coupler_link_tEyy*k_crank_link_tEyy;
-  const T k_coupler_link_go_x = k_crank_link_tExx*p_a;
-  const T k_coupler_link_go_y = k_crank_link_tEyx*p_a;
-  const T k_coupler_link_gvw_z = dq_coupler + dq_crank;
-  const T k_coupler_link_gaw_z = ddq[0] + ddq[1];
-  const T k_rocker_link_gSv_y = -p_d;
-  const T k_rocker_link_gB0c_y = (T(1)/T(2))*k_rocker_link_tEyx*p_c;
-  const T k_crank_link_gIh_y = (T(3)/T(10))*k_crank_link_gB0c_y;
-  const T k_coupler_link_gSv_y = -k_coupler_link_go_x;
-  const T k_coupler_link_gvv_x = dq_coupler*k_coupler_link_go_y;
-  const T k_coupler_link_gdSv_y = dq_crank*k_coupler_link_go_y;
-  const T k_coupler_link_gB0c_x = (T(1)/T(100))*k_coupler_link_gR01 + (T(1)/T(2))*k_coupler_link_gR00*p_b + k_coupler_link_go_x;
-  const T k_coupler_link_gB0c_y = (T(1)/T(100))*k_coupler_link_gR11 + (T(1)/T(2))*k_coupler_link_gR10*p_b + k_coupler_link_go_y;
-  const T k_rocker_link_gvv_y = dq_rocker*k_rocker_link_gSv_y;
-  const T k_rocker_link_gIh_y = (T(1)/T(2))*k_rocker_link_gB0c_y;
-  const T c6 = -dq_rocker*k_rocker_link_gIh_y;
-  const T k_coupler_link_gvv_y = dq_coupler*k_coupler_link_gSv_y;
-  const T k_coupler_link_gav_y = ddq[1]*k_coupler_link_gSv_y + dq_coupler*k_coupler_link_go_y*k_coupler_link_gvw_z - dq_coupler*k_coupler_link_gvv_x + p_g;
-  const T k_coupler_link_gdSv_x = -dq_crank*k_coupler_link_gSv_y;
-  const T k_coupler_link_gddSv_x = -ddq[0]*k_coupler_link_gSv_y - dq_crank*k_coupler_link_gdSv_y + p_g;
-  const T k_coupler_link_gIh_x = (T(3)/T(5))*k_coupler_link_gB0c_x;
-  const T k_coupler_link_gIh_y = (T(3)/T(5))*k_coupler_link_gB0c_y;
-  const T k_rocker_link_gIvv_x = c6;
-  const T k_rocker_link_gD22 = T(2)*k_rocker_link_gIh_y*k_rocker_link_gvv_y;
-  const T k_rocker_link_gD24 = c6;
-  const T k_rocker_link_gISv_x = -k_rocker_link_gIh_y;
-  const T c7 = (T(3)/T(5))*k_coupler_link_gvv_y + k_coupler_link_gIh_x*k_coupler_link_gvw_z;
-  const T c8 = -(T(3)/T(5))*k_coupler_link_gvv_x + k_coupler_link_gIh_y*k_coupler_link_gvw_z;
-  const T k_coupler_link_gav_x = ddq[1]*k_coupler_link_go_y - dq_coupler*k_coupler_link_gSv_y*k_coupler_link_gvw_z + dq_coupler*k_coupler_link_gvv_y;
-  const T k_coupler_link_gddSv_y = ddq[0]*k_coupler_link_go_y + dq_crank*k_coupler_link_gdSv_x;
-  const T k_coupler_link_gIvv_x = -c8;
-  const T k_coupler_link_gIvv_y = c7;
-  const T k_coupler_link_gD22 = T(2)*k_coupler_link_gIh_x*k_coupler_link_gvv_x + T(2)*k_coupler_link_gIh_y*k_coupler_link_gvv_y;
-  const T k_coupler_link_gD23 = -c7;
-  const T k_coupler_link_gD24 = -c8;
-  const T k_crank_link_gCh_y = k_coupler_link_gIh_y + k_crank_link_gIh_y;
-  const T k_coupler_link_gISv_x = (T(3)/T(5))*k_coupler_link_go_y - k_coupler_link_gIh_y;
-  const T k_coupler_link_gISv_y = (T(3)/T(5))*k_coupler_link_gSv_y + k_coupler_link_gIh_x;
-  const T k_rocker_link_gDSw_z = k_rocker_link_gD22 + k_rocker_link_gD24*k_rocker_link_gSv_y;
-  const T k_rocker_link_gSPw_z = -k_rocker_link_gIvv_x*k_rocker_link_gSv_y;
-  const T k_rocker_link_gBSv_y = k_rocker_link_gD24 - k_rocker_link_gIvv_x;
-  const T k_coupler_link_gFv_x = (T(3)/T(5))*k_coupler_link_gav_x - k_coupler_link_gIh_y*k_coupler_link_gaw_z - k_coupler_link_gIvv_y*k_coupler_link_gvw_z;
-  const T k_coupler_link_gFv_y = (T(3)/T(5))*k_coupler_link_gav_y + k_coupler_link_gIh_x*k_coupler_link_gaw_z + k_coupler_link_gIvv_x*k_coupler_link_gvw_z;
-  const T k_crank_link_gISv_x = -k_crank_link_gCh_y;
-  const T k_coupler_link_gDSw_z = k_coupler_link_gD22 + k_coupler_link_gD23*k_coupler_link_go_y + k_coupler_link_gD24*k_coupler_link_gSv_y;
-  const T k_coupler_link_gSPw_z = -k_coupler_link_gIvv_x*k_coupler_link_gSv_y + k_coupler_link_gIvv_y*k_coupler_link_go_y;
-  const T k_coupler_link_gSPv_x = -k_coupler_link_gIvv_y;
-  const T k_coupler_link_gBSv_y = k_coupler_link_gD24 - k_coupler_link_gIvv_x;
-  const T k_rocker_link_gBSw_z = k_rocker_link_gDSw_z - k_rocker_link_gSPw_z;
-  const T k_coupler_link_gBSw_z = k_coupler_link_gDSw_z - k_coupler_link_gSPw_z;
-  const T k_coupler_link_gBSv_x = k_coupler_link_gD23 - k_coupler_link_gSPv_x;
-  const T k_coupler_link_gGw_z = k_coupler_link_gD23*k_coupler_link_gdSv_x + k_coupler_link_gD24*k_coupler_link_gdSv_y - k_coupler_link_gFv_x*k_coupler_link_gSv_y + k_coupler_link_gFv_y*k_coupler_link_go_y + k_coupler_link_gIh_x*k_coupler_link_gddSv_y - k_coupler_link_gIh_y*k_coupler_link_gddSv_x - k_coupler_link_gIvv_x*k_coupler_link_gdSv_y + k_coupler_link_gIvv_y*k_coupler_link_gdSv_x;
-  const T k_coupler_link_gHw_z = T(2)*k_coupler_link_gIh_x*k_coupler_link_gdSv_y - T(2)*k_coupler_link_gIh_y*k_coupler_link_gdSv_x + k_coupler_link_gDSw_z + k_coupler_link_gSPw_z;
+  const T k_coupler_link_tw_z = dq_coupler + dq_crank;
+  const T c0_d0 = -c1;
+  const T c1_d0 = c0;
+  const T c2_d1 = -c3;
+  const T c3_d1 = c2;
+  const T c4_d2 = -c5;
+  const T k_coupler_link_tExy_d1 = -c3_d1;
+  const T k_crank_link_ta_x = k_crank_link_tEyx*p_g;
+  const T k_crank_link_ta_y = k_crank_link_tEyy*p_g;
+  const T k_coupler_link_tal_z = ddq[0] + ddq[1];
+  const T k_coupler_link_tx_x = -dq_crank*dq_crank*p_a + k_crank_link_ta_x;
+  const T k_coupler_link_tx_y = ddq[0]*p_a + k_crank_link_ta_y;
+  const T k_coupler_link_ta_x = k_coupler_link_tExx*k_coupler_link_tx_x + k_coupler_link_tEyx*k_coupler_link_tx_y;
+  const T k_coupler_link_ta_y = k_coupler_link_tExy*k_coupler_link_tx_x + k_coupler_link_tEyy*k_coupler_link_tx_y;
+  const T k_coupler_link_tB0F_x = -(T(3)/T(10))*k_coupler_link_tw_z*k_coupler_link_tw_z*p_b + (T(3)/T(5))*k_coupler_link_ta_x - (T(3)/T(500))*k_coupler_link_tal_z;
+  const T k_coupler_link_tB0F_y = (T(3)/T(10))*k_coupler_link_tal_z*p_b + (T(3)/T(5))*k_coupler_link_ta_y - (T(3)/T(500))*k_coupler_link_tw_z*k_coupler_link_tw_z;
+  const T k_crank_link_ta_x_d0 = c1_d0*p_g;
+  const T k_crank_link_ta_y_d0 = c0_d0*p_g;
+  const T k_rocker_link_ta_y_d2 = c4_d2*p_g;
+  const T k_coupler_link_tx_x_d3 = -T(2)*dq_crank*p_a;
+  const T k_rocker_link_tB0F_y_d2 = (T(1)/T(2))*k_rocker_link_ta_y_d2;
+  const T k_crank_link_tB0F_y_d0 = (T(3)/T(10))*k_crank_link_ta_y_d0;
+  const T k_coupler_link_ta_x_d0 = k_coupler_link_tExx*k_crank_link_ta_x_d0 + k_coupler_link_tEyx*k_crank_link_ta_y_d0;
+  const T k_coupler_link_ta_x_d1 = c2_d1*k_coupler_link_tx_x + c3_d1*k_coupler_link_tx_y;
+  const T k_coupler_link_ta_x_d3 = k_coupler_link_tExx*k_coupler_link_tx_x_d3;
+  const T k_coupler_link_ta_y_d0 = k_coupler_link_tExy*k_crank_link_ta_x_d0 + k_coupler_link_tEyy*k_crank_link_ta_y_d0;
+  const T k_coupler_link_ta_y_d1 = c2_d1*k_coupler_link_tx_y + k_coupler_link_tExy_d1*k_coupler_link_tx_x;
+  const T k_coupler_link_ta_y_d3 = k_coupler_link_tExy*k_coupler_link_tx_x_d3;
+  const T k_rocker_link_tN_z_d2 = (T(1)/T(2))*k_rocker_link_tB0F_y_d2*p_c;
+  const T c6 = -(T(3)/T(5))*k_coupler_link_tw_z*p_b;
+  const T k_coupler_link_tB0F_x_d0 = (T(3)/T(5))*k_coupler_link_ta_x_d0;
+  const T k_coupler_link_tB0F_x_d1 = (T(3)/T(5))*k_coupler_link_ta_x_d1;
+  const T k_coupler_link_tB0F_x_d3 = (T(3)/T(5))*k_coupler_link_ta_x_d3 + c6;
+  const T k_coupler_link_tB0F_x_d4 = c6;
+  const T k_coupler_link_tB0F_y_d0 = (T(3)/T(5))*k_coupler_link_ta_y_d0;
+  const T k_coupler_link_tB0F_y_d1 = (T(3)/T(5))*k_coupler_link_ta_y_d1;
+  const T k_coupler_link_tB0F_y_d3 = -(T(3)/T(250))*k_coupler_link_tw_z + (T(3)/T(5))*k_coupler_link_ta_y_d3;
+  const T k_coupler_link_tB0F_y_d4 = -(T(3)/T(250))*k_coupler_link_tw_z;
+  const T k_coupler_link_tN_z_d0 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d0 + (T(1)/T(2))*k_coupler_link_tB0F_y_d0*p_b;
+  const T k_coupler_link_tN_z_d1 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d1 + (T(1)/T(2))*k_coupler_link_tB0F_y_d1*p_b;
+  const T k_coupler_link_tN_z_d3 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d3 + (T(1)/T(2))*k_coupler_link_tB0F_y_d3*p_b;
+  const T k_coupler_link_tN_z_d4 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d4 + (T(1)/T(2))*k_coupler_link_tB0F_y_d4*p_b;
+  const T k_coupler_link_tFp_y_d0 = k_coupler_link_tB0F_x_d0*k_coupler_link_tEyx + k_coupler_link_tB0F_y_d0*k_coupler_link_tEyy;
+  const T k_coupler_link_tFp_y_d1 = c2_d1*k_coupler_link_tB0F_y + c3_d1*k_coupler_link_tB0F_x + k_coupler_link_tB0F_x_d1*k_coupler_link_tEyx + k_coupler_link_tB0F_y_d1*k_coupler_link_tEyy;
+  const T k_coupler_link_tFp_y_d3 = k_coupler_link_tB0F_x_d3*k_coupler_link_tEyx + k_coupler_link_tB0F_y_d3*k_coupler_link_tEyy;
+  const T k_coupler_link_tFp_y_d4 = k_coupler_link_tB0F_x_d4*k_coupler_link_tEyx + k_coupler_link_tB0F_y_d4*k_coupler_link_tEyy;
+  const T k_crank_link_tN_z_d0 = (T(1)/T(2))*k_crank_link_tB0F_y_d0*p_a + k_coupler_link_tFp_y_d0*p_a + k_coupler_link_tN_z_d0;
+  const T k_crank_link_tN_z_d1 = k_coupler_link_tFp_y_d1*p_a + k_coupler_link_tN_z_d1;
+  const T k_crank_link_tN_z_d3 = k_coupler_link_tFp_y_d3*p_a + k_coupler_link_tN_z_d3;
+  const T k_crank_link_tN_z_d4 = k_coupler_link_tFp_y_d4*p_a + k_coupler_link_tN_z_d4;
+  F[0] = k_crank_link_tN_z_d0;
+  F[1] = k_crank_link_tN_z_d1;
   F[2] = T(0);
+  F[3] = k_crank_link_tN_z_d3;
+  F[4] = k_crank_link_tN_z_d4;
   F[5] = T(0);
+  F[6] = k_coupler_link_tN_z_d0;
+  F[7] = k_coupler_link_tN_z_d1;
   F[8] = T(0);
+  F[9] = k_coupler_link_tN_z_d3;
+  F[10] = k_coupler_link_tN_z_d4;
   F[11] = T(0);
   F[12] = T(0);
   F[13] = T(0);
+  F[14] = k_rocker_link_tN_z_d2;
   F[15] = T(0);
   F[16] = T(0);
-  F[14] = k_rocker_link_gISv_x*p_g;
-  F[3] = k_coupler_link_gD22;
-  F[6] = k_coupler_link_gISv_x*p_g;
-  F[0] = k_crank_link_gISv_x*p_g;
-  F[17] = k_rocker_link_gBSv_y*k_rocker_link_gSv_y + k_rocker_link_gBSw_z;
-  F[9] = k_coupler_link_gBSw_z;
-  F[7] = k_coupler_link_gBSv_x*k_coupler_link_gdSv_x + k_coupler_link_gBSv_y*k_coupler_link_gdSv_y + k_coupler_link_gISv_x*k_coupler_link_gddSv_x + k_coupler_link_gISv_y*k_coupler_link_gddSv_y;
-  F[10] = T(2)*k_coupler_link_gISv_x*k_coupler_link_gdSv_x + T(2)*k_coupler_link_gISv_y*k_coupler_link_gdSv_y + k_coupler_link_gBSv_x*k_coupler_link_go_y + k_coupler_link_gBSv_y*k_coupler_link_gSv_y + k_coupler_link_gBSw_z;
-  F[1] = k_coupler_link_gGw_z;
-  F[4] = k_coupler_link_gHw_z;
+  F[17] = T(0);
 }
 
 }  // namespace detail

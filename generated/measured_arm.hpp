@@ -190,244 +190,15 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 
 }  // namespace detail
 
-/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
-/// x: num_states; p: num_parameters; M: 3x3, row-major.
-template <class T>
-void mass_matrix(T t, const T* x, const T* p, T* M) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_q1 = x[0];
-  const T q_q2 = x[1];
-  const T q_q3 = x[2];
-  const T n0 = detail::constant<T>(0.016496666981279964, 1.793690561210224e-19, -5.765600439773264e-36);
-  const T n1 = detail::constant<T>(0.05287838367784716, 2.0046450057129747e-18, 1.8529259644501925e-34);
-  const T n2 = detail::constant<T>(0.05649492794615914, 1.5148542386271332e-18, 9.276818476626836e-35);
-  const T n3 = detail::constant<T>(0.19520278188242482, -8.353762160689835e-18, 2.4101770776399e-34);
-  const T n4 = detail::constant<T>(0.21323407039973644, -1.0432130260049605e-17, -5.426734283663489e-34);
-  const T n5 = detail::constant<T>(0.0007688782130451123, 1.354980474254796e-20, 6.629176271360093e-37);
-  const T n6 = detail::constant<T>(0.033562583390596507, 3.282478250860296e-18, -1.6247876588803076e-34);
-  const T n7 = detail::constant<T>(0.04442367618459533, -2.23487496691882e-18, 7.872202557900561e-35);
-  const T n8 = detail::constant<T>(0.0036165442683119757, -5.610989809163977e-20, 3.772085540610908e-36);
-  const T n9 = detail::constant<T>(0.008248333490639982, 8.96845280605112e-20, -2.882800219886632e-36);
-  const T n10 = detail::constant<T>(6.985898871117772e-06, -4.013663610218169e-22, -2.2119593202448896e-38);
-  const T n11 = detail::constant<T>(0.003982417525003518, 3.1419555288195813e-19, -4.336877935574085e-36);
-  const T n12 = detail::constant<T>(0.316, -2.310862446895044e-17, 1.1103737383464024e-33);
-  const T n13 = detail::constant<T>(0.009211406029436134, -2.9910746472617164e-19, -6.38979231287893e-36);
-  const T n14 = detail::constant<T>(0.04637327921946798, -3.854491166496069e-20, -9.056501409623765e-37);
-  const T n15 = detail::constant<T>(0.018249203037059097, 1.184120958109966e-18, -7.905445156506045e-35);
-  const T n16 = detail::constant<T>(0.004377256276090555, -1.751087398402021e-19, 2.3968946749962426e-37);
-  const T n17 = detail::constant<T>(0.005487647513641595, 3.9370258408640885e-19, 1.996514381981651e-35);
-  const T n18 = detail::constant<T>(0.08884473378783202, -5.0637685211952534e-18, -2.8949960120579388e-34);
-  const T n19 = detail::constant<T>(0.126729176925648, 1.2679475659883296e-17, 5.429084469648901e-34);
-  const T trig_angle[3] = {q_q1, q_q2, q_q3};
-  T trig_sin[3], trig_cos[3];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_q1 = trig_sin[0];
-  const T cos_q_q1 = trig_cos[0];
-  const T sin_q_q2 = trig_sin[1];
-  const T cos_q_q2 = trig_cos[1];
-  const T sin_q_q3 = trig_sin[2];
-  const T cos_q_q3 = trig_cos[2];
-  const T c0 = cos_q_q1;
-  const T c1 = sin_q_q1;
-  const T c2 = -sin_q_q2;
-  const T c3 = sin_q_q3;
-  const T c4 = cos_q_q3;
-  const T c5 = c4*c4;
-  const T c6 = c3*c3;
-  const T k_link1_Rxx = c0;
-  const T k_link1_Rxy = -c1;
-  const T k_link1_Ryx = c1;
-  const T k_link1_Ryy = c0;
-  const T k_link2_Rzx = c2;
-  const T k_link2_W_q1_x = c2;
-  const T k_link2_W_q1_y = -cos_q_q2;
-  const T k_link3_W_q2_x = c3;
-  const T k_link3_W_q2_y = c4;
-  const T k_link2_Jd_x = n0*c3*c4 + n1*c6 + n2*c5 + n3;
-  const T k_link2_Jd_z = -n0*c3*c4 + n1*c5 + n2*c6 + n4;
-  const T k_link2_Jo_x = n5 + n6*c3 + n7*c4;
-  const T k_link2_Jo_y = n8*c3*c4 - n9*c5 + n9*c6 + n10;
-  const T k_link2_Jo_z = -n11 + n6*c4 - n7*c3;
-  const T c7 = cos_q_q2;
-  const T c8 = sin_q_q2;
-  const T k_link2_Rxx = c7*k_link1_Rxx;
-  const T k_link2_Ryx = c7*k_link1_Ryx;
-  const T k_link3_Rzx = c4*k_link2_Rzx;
-  const T k_link3_Rzy = -c3*k_link2_Rzx;
-  const T k_link3_W_q1_x = c4*k_link2_W_q1_x;
-  const T k_link3_V_q1_x = -n12*k_link1_Rxy*k_link2_W_q1_x;
-  const T k_link3_W_q1_y = -c3*k_link2_W_q1_x;
-  const T k_link3_V_q1_y = -n12*k_link1_Ryy*k_link2_W_q1_x;
-  const T k_link3_W_q1_z = -k_link2_W_q1_y;
-  const T k_link3_V_q2_z = n12*k_link2_Rzx;
-  const T k_link1_Jd_z = T(2)*c7*c8*k_link2_Jo_z + c8*c8*k_link2_Jd_x + n13 + n14*c7*c7;
-  const T k_link3_Rxx = c3*k_link1_Rxy + c4*k_link2_Rxx;
-  const T k_link3_Rxy = -c3*k_link2_Rxx + c4*k_link1_Rxy;
-  const T k_link3_Ryx = c3*k_link1_Ryy + c4*k_link2_Ryx;
-  const T k_link3_Ryy = -c3*k_link2_Ryx + c4*k_link1_Ryy;
-  const T k_link3_V_q2_x = n12*k_link2_Rxx;
-  const T k_link3_V_q2_y = n12*k_link2_Ryx;
-  M[8] = n15;
-  M[4] = k_link2_Jd_z;
-  M[1] = k_link2_Jo_x*k_link2_W_q1_y + k_link2_Jo_y*k_link2_W_q1_x;
-  M[3] = M[1];
-  M[0] = k_link1_Jd_z;
-  M[2] = -n16*k_link3_W_q1_y - n17*k_link3_W_q1_x + n15*k_link3_W_q1_z + n18*k_link3_Rxy*k_link3_V_q1_x + n18*k_link3_Ryy*k_link3_V_q1_y - n19*k_link3_Rxx*k_link3_V_q1_x - n19*k_link3_Ryx*k_link3_V_q1_y;
-  M[6] = M[2];
-  M[5] = -n16*k_link3_W_q2_y - n17*k_link3_W_q2_x + n18*k_link3_Rxy*k_link3_V_q2_x + n18*k_link3_Ryy*k_link3_V_q2_y + n18*k_link3_Rzy*k_link3_V_q2_z - n19*k_link3_Rxx*k_link3_V_q2_x - n19*k_link3_Ryx*k_link3_V_q2_y - n19*k_link3_Rzx*k_link3_V_q2_z;
-  M[7] = M[5];
-}
-
-/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
-/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 3.
-template <class T>
-void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
-  (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_q1 = x[0];
-  const T q_q2 = x[1];
-  const T q_q3 = x[2];
-  const T dq_q1 = x[3];
-  const T dq_q2 = x[4];
-  const T dq_q3 = x[5];
-  const T p_g = p[0];
-  const T u_tau1 = u[0];
-  const T u_tau2 = u[1];
-  const T u_tau3 = u[2];
-  const T n0 = detail::constant<T>(0.316, -2.310862446895044e-17, 1.1103737383464024e-33);
-  const T n1 = detail::constant<T>(0.00192012965686, -1.0586908242894424e-19, -2.9522875505788435e-36);
-  const T n2 = detail::constant<T>(0.003912249807868221, -3.9261932099948355e-19, 1.2541391144744843e-35);
-  const T n3 = detail::constant<T>(0.0034931, -5.093035448358023e-20, 7.956980979168852e-37);
-  const T n4 = detail::constant<T>(0.00309141, -6.473267194783148e-20, -5.145295887091989e-37);
-  const T n5 = detail::constant<T>(0.02871, 1.5906386491005834e-18, -7.998570093081557e-35);
-  const T n6 = detail::constant<T>(0.027518, 1.2068566712077882e-18, -2.7196250751619583e-35);
-  const T n7 = detail::constant<T>(0.039252, -1.667112548584555e-19, -6.692030191695315e-36);
-  const T n8 = detail::constant<T>(0.06650199999999999, 5.324896327849274e-18, -1.1825111441140928e-35);
-  const T n9 = detail::constant<T>(0.0007040000000000001, -5.0115415130043173e-20, -1.8825541784584064e-36);
-  const T n10 = detail::constant<T>(0.001087000000000001, 5.710146297366237e-20, -4.078163726904908e-37);
-  const T n11 = detail::constant<T>(0.003925, 4.302913498259841e-19, -2.125204959837676e-35);
-  const T n12 = detail::constant<T>(0.004761, -7.314116190082131e-21, -4.778614550147635e-37);
-  const T n13 = detail::constant<T>(0.007962000407278538, 1.8853373745314457e-19, 2.315936172541736e-36);
-  const T n14 = detail::constant<T>(0.010830000000000001, -8.413278354646537e-20, 3.507214018259882e-36);
-  const T n15 = detail::constant<T>(0.012804999999999999, 3.2505117989012434e-19, -9.485300565637862e-36);
-  const T n16 = detail::constant<T>(0.018032999592721463, 6.650661302337539e-20, 2.316020933240292e-36);
-  const T n17 = detail::constant<T>(0.026412, -4.483969579259792e-19, -3.773233869491512e-35);
-  const T n18 = detail::constant<T>(0.02811, 1.4296563105299357e-18, -9.107905741048604e-35);
-  const T n19 = detail::constant<T>(0.036155, 1.361932706027801e-18, 3.8405064610556594e-35);
-  const T n20 = detail::constant<T>(0.037242000000000004, -2.2672532174492517e-18, 1.3923123933025657e-35);
-  const T n21 = detail::constant<T>(0.08884473378783202, -5.0637685211952534e-18, -2.8949960120579388e-34);
-  const T n22 = detail::constant<T>(0.1, 4.448884876874217e-18, 3.6309652831063284e-34);
-  const T n23 = detail::constant<T>(0.126729176925648, 1.2679475659883296e-17, 5.429084469648901e-34);
-  const T n24 = detail::constant<T>(0.21470864475464801, -1.1181729573859872e-17, 4.430577436723192e-34);
-  const T n25 = detail::constant<T>(0.6469260930209849, 3.413991678025923e-17, -2.796198214453277e-33);
-  const T n26 = detail::constant<T>(2e-20, 9.693457091580856e-38, 8.687808479867215e-54);
-  const T n27 = detail::constant<T>(3.2286043240000004, -2.139744760323083e-16, -4.776422902205608e-33);
-  const T n28 = detail::constant<T>(4.97068383900065, 3.1575008654035627e-16, 1.0906693982847618e-32);
-  const T n29 = detail::constant<T>(0.001999913793226003, 1.7356042784056126e-19, 5.7807428226417375e-36);
-  const T n30 = detail::constant<T>(0.018573248130632478, 9.687208501795096e-19, -3.9765912920833616e-35);
-  const T n31 = detail::constant<T>(0.020147999592721462, 1.241122573076791e-18, 2.9015036363340115e-36);
-  const T trig_angle[3] = {q_q1, q_q2, q_q3};
-  T trig_sin[3], trig_cos[3];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_q1 = trig_sin[0];
-  const T cos_q_q1 = trig_cos[0];
-  const T sin_q_q2 = trig_sin[1];
-  const T cos_q_q2 = trig_cos[1];
-  const T sin_q_q3 = trig_sin[2];
-  const T cos_q_q3 = trig_cos[2];
-  const T c0 = cos_q_q1;
-  const T c1 = sin_q_q1;
-  const T c2 = sin_q_q2;
-  const T c3 = -c2;
-  const T c4 = cos_q_q2;
-  const T c5 = -c4;
-  const T k_link1_Rxx = c0;
-  const T k_link1_Rxy = -c1;
-  const T k_link1_Ryx = c1;
-  const T k_link1_Ryy = c0;
-  const T k_link2_Rzx = c3;
-  const T k_link2_Rzy = c5;
-  const T k_link2_W_q1_x = c3;
-  const T k_link2_W_q1_y = c5;
-  const T k_link2_omega_x = -c2*dq_q1;
-  const T k_link2_alpha_x = -c4*dq_q1*dq_q2;
-  const T k_link2_omega_y = -c4*dq_q1;
-  const T k_link2_alpha_y = c2*dq_q1*dq_q2;
-  const T k_link3_W_q2_x = sin_q_q3;
-  const T k_link3_W_q2_y = cos_q_q3;
-  const T c6 = cos_q_q3;
-  const T c7 = sin_q_q3;
-  const T k_link2_Rxx = c4*k_link1_Rxx;
-  const T k_link2_Rxy = -c2*k_link1_Rxx;
-  const T k_link2_Ryx = c4*k_link1_Ryx;
-  const T k_link2_Ryy = -c2*k_link1_Ryx;
-  const T k_link3_Rzx = c6*k_link2_Rzx;
-  const T k_link3_Rzy = -c7*k_link2_Rzx;
-  const T k_link3_Rzz = -k_link2_Rzy;
-  const T k_link3_W_q1_x = c6*k_link2_W_q1_x;
-  const T k_link3_V_q1_x = -n0*k_link1_Rxy*k_link2_W_q1_x;
-  const T k_link3_W_q1_y = -c7*k_link2_W_q1_x;
-  const T k_link3_V_q1_y = -n0*k_link1_Ryy*k_link2_W_q1_x;
-  const T k_link3_W_q1_z = -k_link2_W_q1_y;
-  const T k_link3_V_q2_z = n0*k_link2_Rzx;
-  const T k_link3_omega_x = c6*k_link2_omega_x + c7*dq_q2;
-  const T k_link3_alpha_x = c6*dq_q2*dq_q3 + c6*k_link2_alpha_x - c7*dq_q3*k_link2_omega_x;
-  const T k_link3_omega_y = c6*dq_q2 - c7*k_link2_omega_x;
-  const T k_link3_alpha_y = -c6*dq_q3*k_link2_omega_x - c7*dq_q2*dq_q3 - c7*k_link2_alpha_x;
-  const T k_link3_omega_z = dq_q3 - k_link2_omega_y;
-  const T k_link3_alpha_z = -k_link2_alpha_y;
-  const T k_link3_acc_z = n0*dq_q2*dq_q2*k_link2_Rzy - n0*k_link2_Rzx*k_link2_omega_x*k_link2_omega_y + n0*k_link2_Rzy*k_link2_omega_x*k_link2_omega_x;
-  const T k_upper_arm_cm_V_q1_x = n1*k_link1_Rxx + n2*k_link1_Rxy;
-  const T k_upper_arm_cm_V_q1_y = n1*k_link1_Ryx + n2*k_link1_Ryy;
-  const T k_upper_arm_cm_acc_x = n1*dq_q1*dq_q1*k_link1_Rxy - n2*dq_q1*dq_q1*k_link1_Rxx;
-  const T k_upper_arm_cm_acc_y = n1*dq_q1*dq_q1*k_link1_Ryy - n2*dq_q1*dq_q1*k_link1_Ryx;
-  const T k_forearm_cm_V_q1_z = n3*k_link2_Rzx*k_link2_W_q1_y - n3*k_link2_Rzy*k_link2_W_q1_x;
-  const T k_forearm_cm_V_q2_z = -n4*k_link2_Rzy + n5*k_link2_Rzx;
-  const T k_forearm_cm_acc_z = n4*dq_q2*dq_q2*k_link2_Rzx + n4*k_link2_Rzx*k_link2_omega_y*k_link2_omega_y - n4*k_link2_Rzy*k_link2_omega_x*k_link2_omega_y + n3*dq_q2*k_link2_Rzx*k_link2_omega_x + n3*dq_q2*k_link2_Rzy*k_link2_omega_y + n3*k_link2_Rzx*k_link2_alpha_y - n3*k_link2_Rzy*k_link2_alpha_x + n5*dq_q2*dq_q2*k_link2_Rzy - n5*k_link2_Rzx*k_link2_omega_x*k_link2_omega_y + n5*k_link2_Rzy*k_link2_omega_x*k_link2_omega_x;
-  const T k_link3_Rxx = c6*k_link2_Rxx + c7*k_link1_Rxy;
-  const T k_link3_Rxy = c6*k_link1_Rxy - c7*k_link2_Rxx;
-  const T k_link3_Rxz = -k_link2_Rxy;
-  const T k_link3_Ryx = c6*k_link2_Ryx + c7*k_link1_Ryy;
-  const T k_link3_Ryy = c6*k_link1_Ryy - c7*k_link2_Ryx;
-  const T k_link3_Ryz = -k_link2_Ryy;
-  const T k_link3_V_q2_x = n0*k_link2_Rxx;
-  const T k_link3_V_q2_y = n0*k_link2_Ryx;
-  const T k_link3_acc_x = n0*dq_q2*dq_q2*k_link2_Rxy - n0*dq_q2*k_link1_Rxy*k_link2_omega_y - n0*k_link1_Rxy*k_link2_alpha_x - n0*k_link2_Rxx*k_link2_omega_x*k_link2_omega_y + n0*k_link2_Rxy*k_link2_omega_x*k_link2_omega_x;
-  const T k_link3_acc_y = n0*dq_q2*dq_q2*k_link2_Ryy - n0*dq_q2*k_link1_Ryy*k_link2_omega_y - n0*k_link1_Ryy*k_link2_alpha_x - n0*k_link2_Ryx*k_link2_omega_x*k_link2_omega_y + n0*k_link2_Ryy*k_link2_omega_x*k_link2_omega_x;
-  const T k_forearm_cm_V_q1_x = n4*k_link1_Rxy*k_link2_W_q1_y + n3*k_link2_Rxx*k_link2_W_q1_y - n3*k_link2_Rxy*k_link2_W_q1_x - n5*k_link1_Rxy*k_link2_W_q1_x;
-  const T k_forearm_cm_V_q1_y = n4*k_link1_Ryy*k_link2_W_q1_y + n3*k_link2_Ryx*k_link2_W_q1_y - n3*k_link2_Ryy*k_link2_W_q1_x - n5*k_link1_Ryy*k_link2_W_q1_x;
-  const T k_forearm_cm_V_q2_x = -n4*k_link2_Rxy + n5*k_link2_Rxx;
-  const T k_forearm_cm_V_q2_y = -n4*k_link2_Ryy + n5*k_link2_Ryx;
-  const T k_forearm_cm_acc_x = n4*dq_q2*dq_q2*k_link2_Rxx - n4*dq_q2*k_link1_Rxy*k_link2_omega_x + n4*k_link1_Rxy*k_link2_alpha_y + n4*k_link2_Rxx*k_link2_omega_y*k_link2_omega_y - n4*k_link2_Rxy*k_link2_omega_x*k_link2_omega_y + n3*dq_q2*k_link2_Rxx*k_link2_omega_x + n3*dq_q2*k_link2_Rxy*k_link2_omega_y - n3*k_link1_Rxy*k_link2_omega_x*k_link2_omega_x - n3*k_link1_Rxy*k_link2_omega_y*k_link2_omega_y + n3*k_link2_Rxx*k_link2_alpha_y - n3*k_link2_Rxy*k_link2_alpha_x + n5*dq_q2*dq_q2*k_link2_Rxy - n5*dq_q2*k_link1_Rxy*k_link2_omega_y - n5*k_link1_Rxy*k_link2_alpha_x - n5*k_link2_Rxx*k_link2_omega_x*k_link2_omega_y + n5*k_link2_Rxy*k_link2_omega_x*k_link2_omega_x;
-  const T k_forearm_cm_acc_y = n4*dq_q2*dq_q2*k_link2_Ryx - n4*dq_q2*k_link1_Ryy*k_link2_omega_x + n4*k_link1_Ryy*k_link2_alpha_y + n4*k_link2_Ryx*k_link2_omega_y*k_link2_omega_y - n4*k_link2_Ryy*k_link2_omega_x*k_link2_omega_y + n3*dq_q2*k_link2_Ryx*k_link2_omega_x + n3*dq_q2*k_link2_Ryy*k_link2_omega_y - n3*k_link1_Ryy*k_link2_omega_x*k_link2_omega_x - n3*k_link1_Ryy*k_link2_omega_y*k_link2_omega_y + n3*k_link2_Ryx*k_link2_alpha_y - n3*k_link2_Ryy*k_link2_alpha_x + n5*dq_q2*dq_q2*k_link2_Ryy - n5*dq_q2*k_link1_Ryy*k_link2_omega_y - n5*k_link1_Ryy*k_link2_alpha_x - n5*k_link2_Ryx*k_link2_omega_x*k_link2_omega_y + n5*k_link2_Ryy*k_link2_omega_x*k_link2_omega_x;
-  const T k_wrist_cm_V_q1_z = n6*k_link3_Rzy*k_link3_W_q1_z - n6*k_link3_Rzz*k_link3_W_q1_y - n7*k_link3_Rzx*k_link3_W_q1_z + n7*k_link3_Rzz*k_link3_W_q1_x - n8*k_link3_Rzx*k_link3_W_q1_y + n8*k_link3_Rzy*k_link3_W_q1_x;
-  const T k_wrist_cm_V_q2_z = -n6*k_link3_Rzz*k_link3_W_q2_y + n7*k_link3_Rzz*k_link3_W_q2_x - n8*k_link3_Rzx*k_link3_W_q2_y + n8*k_link3_Rzy*k_link3_W_q2_x + k_link3_V_q2_z;
-  const T k_wrist_cm_V_q3_z = n6*k_link3_Rzy - n7*k_link3_Rzx;
-  const T k_wrist_cm_acc_z = -n6*k_link3_Rzx*k_link3_omega_y*k_link3_omega_y - n6*k_link3_Rzx*k_link3_omega_z*k_link3_omega_z + n6*k_link3_Rzy*k_link3_alpha_z + n6*k_link3_Rzy*k_link3_omega_x*k_link3_omega_y - n6*k_link3_Rzz*k_link3_alpha_y + n6*k_link3_Rzz*k_link3_omega_x*k_link3_omega_z - n7*k_link3_Rzx*k_link3_alpha_z + n7*k_link3_Rzx*k_link3_omega_x*k_link3_omega_y - n7*k_link3_Rzy*k_link3_omega_x*k_link3_omega_x - n7*k_link3_Rzy*k_link3_omega_z*k_link3_omega_z + n7*k_link3_Rzz*k_link3_alpha_x + n7*k_link3_Rzz*k_link3_omega_y*k_link3_omega_z - n8*k_link3_Rzx*k_link3_alpha_y - n8*k_link3_Rzx*k_link3_omega_x*k_link3_omega_z + n8*k_link3_Rzy*k_link3_alpha_x - n8*k_link3_Rzy*k_link3_omega_y*k_link3_omega_z + n8*k_link3_Rzz*k_link3_omega_x*k_link3_omega_x + n8*k_link3_Rzz*k_link3_omega_y*k_link3_omega_y + k_link3_acc_z;
-  const T k_wrist_cm_V_q1_x = n6*k_link3_Rxy*k_link3_W_q1_z - n6*k_link3_Rxz*k_link3_W_q1_y - n7*k_link3_Rxx*k_link3_W_q1_z + n7*k_link3_Rxz*k_link3_W_q1_x - n8*k_link3_Rxx*k_link3_W_q1_y + n8*k_link3_Rxy*k_link3_W_q1_x + k_link3_V_q1_x;
-  const T k_wrist_cm_V_q1_y = n6*k_link3_Ryy*k_link3_W_q1_z - n6*k_link3_Ryz*k_link3_W_q1_y - n7*k_link3_Ryx*k_link3_W_q1_z + n7*k_link3_Ryz*k_link3_W_q1_x - n8*k_link3_Ryx*k_link3_W_q1_y + n8*k_link3_Ryy*k_link3_W_q1_x + k_link3_V_q1_y;
-  const T k_wrist_cm_V_q2_x = -n6*k_link3_Rxz*k_link3_W_q2_y + n7*k_link3_Rxz*k_link3_W_q2_x - n8*k_link3_Rxx*k_link3_W_q2_y + n8*k_link3_Rxy*k_link3_W_q2_x + k_link3_V_q2_x;
-  const T k_wrist_cm_V_q2_y = -n6*k_link3_Ryz*k_link3_W_q2_y + n7*k_link3_Ryz*k_link3_W_q2_x - n8*k_link3_Ryx*k_link3_W_q2_y + n8*k_link3_Ryy*k_link3_W_q2_x + k_link3_V_q2_y;
-  const T k_wrist_cm_V_q3_x = n6*k_link3_Rxy - n7*k_link3_Rxx;
-  const T k_wrist_cm_V_q3_y = n6*k_link3_Ryy - n7*k_link3_Ryx;
-  const T k_wrist_cm_acc_x = -n6*k_link3_Rxx*k_link3_omega_y*k_link3_omega_y - n6*k_link3_Rxx*k_link3_omega_z*k_link3_omega_z + n6*k_link3_Rxy*k_link3_alpha_z + n6*k_link3_Rxy*k_link3_omega_x*k_link3_omega_y - n6*k_link3_Rxz*k_link3_alpha_y + n6*k_link3_Rxz*k_link3_omega_x*k_link3_omega_z - n7*k_link3_Rxx*k_link3_alpha_z + n7*k_link3_Rxx*k_link3_omega_x*k_link3_omega_y - n7*k_link3_Rxy*k_link3_omega_x*k_link3_omega_x - n7*k_link3_Rxy*k_link3_omega_z*k_link3_omega_z + n7*k_link3_Rxz*k_link3_alpha_x + n7*k_link3_Rxz*k_link3_omega_y*k_link3_omega_z - n8*k_link3_Rxx*k_link3_alpha_y - n8*k_link3_Rxx*k_link3_omega_x*k_link3_omega_z + n8*k_link3_Rxy*k_link3_alpha_x - n8*k_link3_Rxy*k_link3_omega_y*k_link3_omega_z + n8*k_link3_Rxz*k_link3_omega_x*k_link3_omega_x + n8*k_link3_Rxz*k_link3_omega_y*k_link3_omega_y + k_link3_acc_x;
-  const T k_wrist_cm_acc_y = -n6*k_link3_Ryx*k_link3_omega_y*k_link3_omega_y - n6*k_link3_Ryx*k_link3_omega_z*k_link3_omega_z + n6*k_link3_Ryy*k_link3_alpha_z + n6*k_link3_Ryy*k_link3_omega_x*k_link3_omega_y - n6*k_link3_Ryz*k_link3_alpha_y + n6*k_link3_Ryz*k_link3_omega_x*k_link3_omega_z - n7*k_link3_Ryx*k_link3_alpha_z + n7*k_link3_Ryx*k_link3_omega_x*k_link3_omega_y - n7*k_link3_Ryy*k_link3_omega_x*k_link3_omega_x - n7*k_link3_Ryy*k_link3_omega_z*k_link3_omega_z + n7*k_link3_Ryz*k_link3_alpha_x + n7*k_link3_Ryz*k_link3_omega_y*k_link3_omega_z - n8*k_link3_Ryx*k_link3_alpha_y - n8*k_link3_Ryx*k_link3_omega_x*k_link3_omega_z + n8*k_link3_Ryy*k_link3_alpha_x - n8*k_link3_Ryy*k_link3_omega_y*k_link3_omega_z + n8*k_link3_Ryz*k_link3_omega_x*k_link3_omega_x + n8*k_link3_Ryz*k_link3_omega_y*k_link3_omega_y + k_link3_acc_y;
-  f[0] = (T(1013)/T(40000))*k_link3_W_q1_x*k_link3_omega_y*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q1_x*k_link3_alpha_z + (T(2849)/T(250000))*k_link3_W_q1_x*k_link3_omega_x*k_link3_omega_y - (T(2849)/T(250000))*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_x + (T(2849)/T(250000))*k_link3_W_q1_y*k_link3_omega_z*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q1_z*k_link3_alpha_x - (T(2849)/T(250000))*k_link3_W_q1_z*k_link3_omega_y*k_link3_omega_z + (T(423)/T(200000))*dq_q2*k_link2_W_q1_x*k_link2_omega_y + n9*dq_q2*dq_q2*k_link2_W_q1_x - n9*k_link2_W_q1_x*k_link2_omega_y*k_link2_omega_y + n9*k_link2_W_q1_y*k_link2_omega_x*k_link2_omega_y + n10*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_y - n11*dq_q2*k_link2_W_q1_x*k_link2_omega_x + n11*dq_q2*k_link2_W_q1_y*k_link2_omega_y + n11*k_link2_W_q1_x*k_link2_alpha_y + n11*k_link2_W_q1_y*k_link2_alpha_x + n12*k_link3_W_q1_x*k_link3_alpha_y - n12*k_link3_W_q1_x*k_link3_omega_x*k_link3_omega_z + n12*k_link3_W_q1_y*k_link3_alpha_x + n12*k_link3_W_q1_y*k_link3_omega_y*k_link3_omega_z + n12*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_x - n12*k_link3_W_q1_z*k_link3_omega_y*k_link3_omega_y - n13*k_link2_W_q1_x*k_link2_alpha_x - n14*k_link3_W_q1_z*k_link3_alpha_z + n15*k_link3_W_q1_x*k_link3_omega_y*k_link3_omega_y - n15*k_link3_W_q1_x*k_link3_omega_z*k_link3_omega_z + n15*k_link3_W_q1_y*k_link3_alpha_z - n15*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_y + n15*k_link3_W_q1_z*k_link3_alpha_y + n15*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_z + n16*dq_q2*k_link2_W_q1_y*k_link2_omega_x - n17*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_z - n18*k_link2_W_q1_y*k_link2_alpha_y - n19*k_link3_W_q1_y*k_link3_alpha_y - n20*k_link3_W_q1_x*k_link3_alpha_x - n21*k_link3_Rzy*k_link3_W_q1_z*p_g + n21*k_link3_Rzz*k_link3_W_q1_y*p_g - n22*dq_q1 + n23*k_link3_Rzx*k_link3_W_q1_z*p_g - n23*k_link3_Rzz*k_link3_W_q1_x*p_g + n24*k_link3_Rzx*k_link3_W_q1_y*p_g - n24*k_link3_Rzy*k_link3_W_q1_x*p_g - n25*k_forearm_cm_V_q1_x*k_forearm_cm_acc_x - n25*k_forearm_cm_V_q1_y*k_forearm_cm_acc_y - n25*k_forearm_cm_V_q1_z*k_forearm_cm_acc_z - n26*dq_q2*dq_q2*k_link2_W_q1_y - n26*k_link2_W_q1_x*k_link2_omega_x*k_link2_omega_y + n26*k_link2_W_q1_y*k_link2_omega_x*k_link2_omega_x - n27*k_wrist_cm_V_q1_x*k_wrist_cm_acc_x - n27*k_wrist_cm_V_q1_y*k_wrist_cm_acc_y - n27*k_wrist_cm_V_q1_z*k_wrist_cm_acc_z - n28*k_upper_arm_cm_V_q1_x*k_upper_arm_cm_acc_x - n28*k_upper_arm_cm_V_q1_y*k_upper_arm_cm_acc_y + u_tau1;
-  f[1] = (T(1013)/T(40000))*k_link3_W_q2_x*k_link3_omega_y*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q2_x*k_link3_alpha_z + (T(2849)/T(250000))*k_link3_W_q2_x*k_link3_omega_x*k_link3_omega_y - (T(2849)/T(250000))*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_x + (T(2849)/T(250000))*k_link3_W_q2_y*k_link3_omega_z*k_link3_omega_z - n9*dq_q2*k_link2_omega_x - n9*k_link2_alpha_y + n29*k_link2_Rzy*p_g + n11*k_link2_omega_x*k_link2_omega_x - n11*k_link2_omega_y*k_link2_omega_y + n12*k_link3_W_q2_x*k_link3_alpha_y - n12*k_link3_W_q2_x*k_link3_omega_x*k_link3_omega_z + n12*k_link3_W_q2_y*k_link3_alpha_x + n12*k_link3_W_q2_y*k_link3_omega_y*k_link3_omega_z + n15*k_link3_W_q2_x*k_link3_omega_y*k_link3_omega_y - n15*k_link3_W_q2_x*k_link3_omega_z*k_link3_omega_z + n15*k_link3_W_q2_y*k_link3_alpha_z - n15*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_y - n30*k_link2_Rzx*p_g - n31*k_link2_omega_x*k_link2_omega_y - n17*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_z - n19*k_link3_W_q2_y*k_link3_alpha_y - n20*k_link3_W_q2_x*k_link3_alpha_x + n21*k_link3_Rzz*k_link3_W_q2_y*p_g - n22*dq_q2 - n23*k_link3_Rzz*k_link3_W_q2_x*p_g + n24*k_link3_Rzx*k_link3_W_q2_y*p_g - n24*k_link3_Rzy*k_link3_W_q2_x*p_g - n25*k_forearm_cm_V_q2_x*k_forearm_cm_acc_x - n25*k_forearm_cm_V_q2_y*k_forearm_cm_acc_y - n25*k_forearm_cm_V_q2_z*k_forearm_cm_acc_z + n26*dq_q2*k_link2_omega_y - n26*k_link2_alpha_x - n27*k_link3_V_q2_z*p_g - n27*k_wrist_cm_V_q2_x*k_wrist_cm_acc_x - n27*k_wrist_cm_V_q2_y*k_wrist_cm_acc_y - n27*k_wrist_cm_V_q2_z*k_wrist_cm_acc_z + u_tau2;
-  f[2] = (T(2849)/T(250000))*k_link3_alpha_x - (T(2849)/T(250000))*k_link3_omega_y*k_link3_omega_z + n10*k_link3_omega_x*k_link3_omega_y + n12*k_link3_omega_x*k_link3_omega_x - n12*k_link3_omega_y*k_link3_omega_y - n14*k_link3_alpha_z + n15*k_link3_alpha_y + n15*k_link3_omega_x*k_link3_omega_z - n21*k_link3_Rzy*p_g - n22*dq_q3 + n23*k_link3_Rzx*p_g - n27*k_wrist_cm_V_q3_x*k_wrist_cm_acc_x - n27*k_wrist_cm_V_q3_y*k_wrist_cm_acc_y - n27*k_wrist_cm_V_q3_z*k_wrist_cm_acc_z + u_tau3;
-}
-
 namespace detail {
 
-/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
-/// ddq: 3; L: 3x3, row-major; D: 3.
+/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.
+/// M: 3x3, row-major; f: 3.
 template <class T>
-void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -585,7 +356,6 @@ void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T*
   const T k_wrist_cm_V_q3_y = n20*k_link3_Ryy - n21*k_link3_Ryx;
   const T k_wrist_cm_acc_x = -n20*k_link3_Rxx*k_link3_omega_y*k_link3_omega_y - n20*k_link3_Rxx*k_link3_omega_z*k_link3_omega_z + n20*k_link3_Rxy*k_link3_alpha_z + n20*k_link3_Rxy*k_link3_omega_x*k_link3_omega_y - n20*k_link3_Rxz*k_link3_alpha_y + n20*k_link3_Rxz*k_link3_omega_x*k_link3_omega_z - n21*k_link3_Rxx*k_link3_alpha_z + n21*k_link3_Rxx*k_link3_omega_x*k_link3_omega_y - n21*k_link3_Rxy*k_link3_omega_x*k_link3_omega_x - n21*k_link3_Rxy*k_link3_omega_z*k_link3_omega_z + n21*k_link3_Rxz*k_link3_alpha_x + n21*k_link3_Rxz*k_link3_omega_y*k_link3_omega_z - n22*k_link3_Rxx*k_link3_alpha_y - n22*k_link3_Rxx*k_link3_omega_x*k_link3_omega_z + n22*k_link3_Rxy*k_link3_alpha_x - n22*k_link3_Rxy*k_link3_omega_y*k_link3_omega_z + n22*k_link3_Rxz*k_link3_omega_x*k_link3_omega_x + n22*k_link3_Rxz*k_link3_omega_y*k_link3_omega_y + k_link3_acc_x;
   const T k_wrist_cm_acc_y = -n20*k_link3_Ryx*k_link3_omega_y*k_link3_omega_y - n20*k_link3_Ryx*k_link3_omega_z*k_link3_omega_z + n20*k_link3_Ryy*k_link3_alpha_z + n20*k_link3_Ryy*k_link3_omega_x*k_link3_omega_y - n20*k_link3_Ryz*k_link3_alpha_y + n20*k_link3_Ryz*k_link3_omega_x*k_link3_omega_z - n21*k_link3_Ryx*k_link3_alpha_z + n21*k_link3_Ryx*k_link3_omega_x*k_link3_omega_y - n21*k_link3_Ryy*k_link3_omega_x*k_link3_omega_x - n21*k_link3_Ryy*k_link3_omega_z*k_link3_omega_z + n21*k_link3_Ryz*k_link3_alpha_x + n21*k_link3_Ryz*k_link3_omega_y*k_link3_omega_z - n22*k_link3_Ryx*k_link3_alpha_y - n22*k_link3_Ryx*k_link3_omega_x*k_link3_omega_z + n22*k_link3_Ryy*k_link3_alpha_x - n22*k_link3_Ryy*k_link3_omega_y*k_link3_omega_z + n22*k_link3_Ryz*k_link3_omega_x*k_link3_omega_x + n22*k_link3_Ryz*k_link3_omega_y*k_link3_omega_y + k_link3_acc_y;
-  T M[9];
   M[0] = k_link1_Jd_z;
   M[1] = k_link2_Jo_x*k_link2_W_q1_y + k_link2_Jo_y*k_link2_W_q1_x;
   M[3] = M[1];
@@ -595,9 +365,41 @@ void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T*
   M[5] = -n23*k_link3_W_q2_y - n24*k_link3_W_q2_x + n26*k_link3_Rxy*k_link3_V_q2_x + n26*k_link3_Ryy*k_link3_V_q2_y + n26*k_link3_Rzy*k_link3_V_q2_z - n27*k_link3_Rxx*k_link3_V_q2_x - n27*k_link3_Ryx*k_link3_V_q2_y - n27*k_link3_Rzx*k_link3_V_q2_z;
   M[7] = M[5];
   M[8] = n25;
-  ddq[0] = (T(1013)/T(40000))*k_link3_W_q1_x*k_link3_omega_y*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q1_x*k_link3_alpha_z + (T(2849)/T(250000))*k_link3_W_q1_x*k_link3_omega_x*k_link3_omega_y - (T(2849)/T(250000))*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_x + (T(2849)/T(250000))*k_link3_W_q1_y*k_link3_omega_z*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q1_z*k_link3_alpha_x - (T(2849)/T(250000))*k_link3_W_q1_z*k_link3_omega_y*k_link3_omega_z + (T(423)/T(200000))*dq_q2*k_link2_W_q1_x*k_link2_omega_y + n28*dq_q2*dq_q2*k_link2_W_q1_x - n28*k_link2_W_q1_x*k_link2_omega_y*k_link2_omega_y + n28*k_link2_W_q1_y*k_link2_omega_x*k_link2_omega_y + n29*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_y - n30*dq_q2*k_link2_W_q1_x*k_link2_omega_x + n30*dq_q2*k_link2_W_q1_y*k_link2_omega_y + n30*k_link2_W_q1_x*k_link2_alpha_y + n30*k_link2_W_q1_y*k_link2_alpha_x + n31*k_link3_W_q1_x*k_link3_alpha_y - n31*k_link3_W_q1_x*k_link3_omega_x*k_link3_omega_z + n31*k_link3_W_q1_y*k_link3_alpha_x + n31*k_link3_W_q1_y*k_link3_omega_y*k_link3_omega_z + n31*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_x - n31*k_link3_W_q1_z*k_link3_omega_y*k_link3_omega_y - n32*k_link2_W_q1_x*k_link2_alpha_x - n33*k_link3_W_q1_z*k_link3_alpha_z + n34*k_link3_W_q1_x*k_link3_omega_y*k_link3_omega_y - n34*k_link3_W_q1_x*k_link3_omega_z*k_link3_omega_z + n34*k_link3_W_q1_y*k_link3_alpha_z - n34*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_y + n34*k_link3_W_q1_z*k_link3_alpha_y + n34*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_z + n35*dq_q2*k_link2_W_q1_y*k_link2_omega_x - n36*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_z - n37*k_link2_W_q1_y*k_link2_alpha_y - n38*k_link3_W_q1_y*k_link3_alpha_y - n39*k_link3_W_q1_x*k_link3_alpha_x - n26*k_link3_Rzy*k_link3_W_q1_z*p_g + n26*k_link3_Rzz*k_link3_W_q1_y*p_g - n40*dq_q1 + n27*k_link3_Rzx*k_link3_W_q1_z*p_g - n27*k_link3_Rzz*k_link3_W_q1_x*p_g + n41*k_link3_Rzx*k_link3_W_q1_y*p_g - n41*k_link3_Rzy*k_link3_W_q1_x*p_g - n42*k_forearm_cm_V_q1_x*k_forearm_cm_acc_x - n42*k_forearm_cm_V_q1_y*k_forearm_cm_acc_y - n42*k_forearm_cm_V_q1_z*k_forearm_cm_acc_z - n43*dq_q2*dq_q2*k_link2_W_q1_y - n43*k_link2_W_q1_x*k_link2_omega_x*k_link2_omega_y + n43*k_link2_W_q1_y*k_link2_omega_x*k_link2_omega_x - n44*k_wrist_cm_V_q1_x*k_wrist_cm_acc_x - n44*k_wrist_cm_V_q1_y*k_wrist_cm_acc_y - n44*k_wrist_cm_V_q1_z*k_wrist_cm_acc_z - n45*k_upper_arm_cm_V_q1_x*k_upper_arm_cm_acc_x - n45*k_upper_arm_cm_V_q1_y*k_upper_arm_cm_acc_y + u_tau1;
-  ddq[1] = (T(1013)/T(40000))*k_link3_W_q2_x*k_link3_omega_y*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q2_x*k_link3_alpha_z + (T(2849)/T(250000))*k_link3_W_q2_x*k_link3_omega_x*k_link3_omega_y - (T(2849)/T(250000))*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_x + (T(2849)/T(250000))*k_link3_W_q2_y*k_link3_omega_z*k_link3_omega_z - n28*dq_q2*k_link2_omega_x - n28*k_link2_alpha_y + n46*k_link2_Rzy*p_g + n30*k_link2_omega_x*k_link2_omega_x - n30*k_link2_omega_y*k_link2_omega_y + n31*k_link3_W_q2_x*k_link3_alpha_y - n31*k_link3_W_q2_x*k_link3_omega_x*k_link3_omega_z + n31*k_link3_W_q2_y*k_link3_alpha_x + n31*k_link3_W_q2_y*k_link3_omega_y*k_link3_omega_z + n34*k_link3_W_q2_x*k_link3_omega_y*k_link3_omega_y - n34*k_link3_W_q2_x*k_link3_omega_z*k_link3_omega_z + n34*k_link3_W_q2_y*k_link3_alpha_z - n34*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_y - n47*k_link2_Rzx*p_g - n48*k_link2_omega_x*k_link2_omega_y - n36*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_z - n38*k_link3_W_q2_y*k_link3_alpha_y - n39*k_link3_W_q2_x*k_link3_alpha_x + n26*k_link3_Rzz*k_link3_W_q2_y*p_g - n40*dq_q2 - n27*k_link3_Rzz*k_link3_W_q2_x*p_g + n41*k_link3_Rzx*k_link3_W_q2_y*p_g - n41*k_link3_Rzy*k_link3_W_q2_x*p_g - n42*k_forearm_cm_V_q2_x*k_forearm_cm_acc_x - n42*k_forearm_cm_V_q2_y*k_forearm_cm_acc_y - n42*k_forearm_cm_V_q2_z*k_forearm_cm_acc_z + n43*dq_q2*k_link2_omega_y - n43*k_link2_alpha_x - n44*k_link3_V_q2_z*p_g - n44*k_wrist_cm_V_q2_x*k_wrist_cm_acc_x - n44*k_wrist_cm_V_q2_y*k_wrist_cm_acc_y - n44*k_wrist_cm_V_q2_z*k_wrist_cm_acc_z + u_tau2;
-  ddq[2] = (T(2849)/T(250000))*k_link3_alpha_x - (T(2849)/T(250000))*k_link3_omega_y*k_link3_omega_z + n29*k_link3_omega_x*k_link3_omega_y + n31*k_link3_omega_x*k_link3_omega_x - n31*k_link3_omega_y*k_link3_omega_y - n33*k_link3_alpha_z + n34*k_link3_alpha_y + n34*k_link3_omega_x*k_link3_omega_z - n26*k_link3_Rzy*p_g - n40*dq_q3 + n27*k_link3_Rzx*p_g - n44*k_wrist_cm_V_q3_x*k_wrist_cm_acc_x - n44*k_wrist_cm_V_q3_y*k_wrist_cm_acc_y - n44*k_wrist_cm_V_q3_z*k_wrist_cm_acc_z + u_tau3;
+  f[0] = (T(1013)/T(40000))*k_link3_W_q1_x*k_link3_omega_y*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q1_x*k_link3_alpha_z + (T(2849)/T(250000))*k_link3_W_q1_x*k_link3_omega_x*k_link3_omega_y - (T(2849)/T(250000))*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_x + (T(2849)/T(250000))*k_link3_W_q1_y*k_link3_omega_z*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q1_z*k_link3_alpha_x - (T(2849)/T(250000))*k_link3_W_q1_z*k_link3_omega_y*k_link3_omega_z + (T(423)/T(200000))*dq_q2*k_link2_W_q1_x*k_link2_omega_y + n28*dq_q2*dq_q2*k_link2_W_q1_x - n28*k_link2_W_q1_x*k_link2_omega_y*k_link2_omega_y + n28*k_link2_W_q1_y*k_link2_omega_x*k_link2_omega_y + n29*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_y - n30*dq_q2*k_link2_W_q1_x*k_link2_omega_x + n30*dq_q2*k_link2_W_q1_y*k_link2_omega_y + n30*k_link2_W_q1_x*k_link2_alpha_y + n30*k_link2_W_q1_y*k_link2_alpha_x + n31*k_link3_W_q1_x*k_link3_alpha_y - n31*k_link3_W_q1_x*k_link3_omega_x*k_link3_omega_z + n31*k_link3_W_q1_y*k_link3_alpha_x + n31*k_link3_W_q1_y*k_link3_omega_y*k_link3_omega_z + n31*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_x - n31*k_link3_W_q1_z*k_link3_omega_y*k_link3_omega_y - n32*k_link2_W_q1_x*k_link2_alpha_x - n33*k_link3_W_q1_z*k_link3_alpha_z + n34*k_link3_W_q1_x*k_link3_omega_y*k_link3_omega_y - n34*k_link3_W_q1_x*k_link3_omega_z*k_link3_omega_z + n34*k_link3_W_q1_y*k_link3_alpha_z - n34*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_y + n34*k_link3_W_q1_z*k_link3_alpha_y + n34*k_link3_W_q1_z*k_link3_omega_x*k_link3_omega_z + n35*dq_q2*k_link2_W_q1_y*k_link2_omega_x - n36*k_link3_W_q1_y*k_link3_omega_x*k_link3_omega_z - n37*k_link2_W_q1_y*k_link2_alpha_y - n38*k_link3_W_q1_y*k_link3_alpha_y - n39*k_link3_W_q1_x*k_link3_alpha_x - n26*k_link3_Rzy*k_link3_W_q1_z*p_g + n26*k_link3_Rzz*k_link3_W_q1_y*p_g - n40*dq_q1 + n27*k_link3_Rzx*k_link3_W_q1_z*p_g - n27*k_link3_Rzz*k_link3_W_q1_x*p_g + n41*k_link3_Rzx*k_link3_W_q1_y*p_g - n41*k_link3_Rzy*k_link3_W_q1_x*p_g - n42*k_forearm_cm_V_q1_x*k_forearm_cm_acc_x - n42*k_forearm_cm_V_q1_y*k_forearm_cm_acc_y - n42*k_forearm_cm_V_q1_z*k_forearm_cm_acc_z - n43*dq_q2*dq_q2*k_link2_W_q1_y - n43*k_link2_W_q1_x*k_link2_omega_x*k_link2_omega_y + n43*k_link2_W_q1_y*k_link2_omega_x*k_link2_omega_x - n44*k_wrist_cm_V_q1_x*k_wrist_cm_acc_x - n44*k_wrist_cm_V_q1_y*k_wrist_cm_acc_y - n44*k_wrist_cm_V_q1_z*k_wrist_cm_acc_z - n45*k_upper_arm_cm_V_q1_x*k_upper_arm_cm_acc_x - n45*k_upper_arm_cm_V_q1_y*k_upper_arm_cm_acc_y + u_tau1;
+  f[1] = (T(1013)/T(40000))*k_link3_W_q2_x*k_link3_omega_y*k_link3_omega_z + (T(2849)/T(250000))*k_link3_W_q2_x*k_link3_alpha_z + (T(2849)/T(250000))*k_link3_W_q2_x*k_link3_omega_x*k_link3_omega_y - (T(2849)/T(250000))*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_x + (T(2849)/T(250000))*k_link3_W_q2_y*k_link3_omega_z*k_link3_omega_z - n28*dq_q2*k_link2_omega_x - n28*k_link2_alpha_y + n46*k_link2_Rzy*p_g + n30*k_link2_omega_x*k_link2_omega_x - n30*k_link2_omega_y*k_link2_omega_y + n31*k_link3_W_q2_x*k_link3_alpha_y - n31*k_link3_W_q2_x*k_link3_omega_x*k_link3_omega_z + n31*k_link3_W_q2_y*k_link3_alpha_x + n31*k_link3_W_q2_y*k_link3_omega_y*k_link3_omega_z + n34*k_link3_W_q2_x*k_link3_omega_y*k_link3_omega_y - n34*k_link3_W_q2_x*k_link3_omega_z*k_link3_omega_z + n34*k_link3_W_q2_y*k_link3_alpha_z - n34*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_y - n47*k_link2_Rzx*p_g - n48*k_link2_omega_x*k_link2_omega_y - n36*k_link3_W_q2_y*k_link3_omega_x*k_link3_omega_z - n38*k_link3_W_q2_y*k_link3_alpha_y - n39*k_link3_W_q2_x*k_link3_alpha_x + n26*k_link3_Rzz*k_link3_W_q2_y*p_g - n40*dq_q2 - n27*k_link3_Rzz*k_link3_W_q2_x*p_g + n41*k_link3_Rzx*k_link3_W_q2_y*p_g - n41*k_link3_Rzy*k_link3_W_q2_x*p_g - n42*k_forearm_cm_V_q2_x*k_forearm_cm_acc_x - n42*k_forearm_cm_V_q2_y*k_forearm_cm_acc_y - n42*k_forearm_cm_V_q2_z*k_forearm_cm_acc_z + n43*dq_q2*k_link2_omega_y - n43*k_link2_alpha_x - n44*k_link3_V_q2_z*p_g - n44*k_wrist_cm_V_q2_x*k_wrist_cm_acc_x - n44*k_wrist_cm_V_q2_y*k_wrist_cm_acc_y - n44*k_wrist_cm_V_q2_z*k_wrist_cm_acc_z + u_tau2;
+  f[2] = (T(2849)/T(250000))*k_link3_alpha_x - (T(2849)/T(250000))*k_link3_omega_y*k_link3_omega_z + n29*k_link3_omega_x*k_link3_omega_y + n31*k_link3_omega_x*k_link3_omega_x - n31*k_link3_omega_y*k_link3_omega_y - n33*k_link3_alpha_z + n34*k_link3_alpha_y + n34*k_link3_omega_x*k_link3_omega_z - n26*k_link3_Rzy*p_g - n40*dq_q3 + n27*k_link3_Rzx*p_g - n44*k_wrist_cm_V_q3_x*k_wrist_cm_acc_x - n44*k_wrist_cm_V_q3_y*k_wrist_cm_acc_y - n44*k_wrist_cm_V_q3_z*k_wrist_cm_acc_z + u_tau3;
+}
+
+}  // namespace detail
+
+/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
+/// x: num_states; p: num_parameters; M: 3x3, row-major.
+template <class T>
+void mass_matrix(T t, const T* x, const T* p, T* M) {
+  (void)t; (void)x; (void)p;
+  T f[3];
+  const detail::input_t<T> no_inputs[3] = {};
+  detail::mass_matrix_and_forcing(t, x, no_inputs, p, M, f);
+}
+
+/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
+/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 3.
+template <class T>
+void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[9];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, f);
+}
+
+namespace detail {
+
+/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
+/// ddq: 3; L: 3x3, row-major; D: 3.
+template <class T>
+void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[9];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
 }

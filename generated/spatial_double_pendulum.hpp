@@ -182,224 +182,15 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 
 }  // namespace detail
 
-/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
-/// x: num_states; p: num_parameters; M: 4x4, row-major.
-template <class T>
-void mass_matrix(T t, const T* x, const T* p, T* M) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_a1 = x[0];
-  const T q_b1 = x[1];
-  const T q_a2 = x[2];
-  const T q_b2 = x[3];
-  const T p_m = p[0];
-  const T p_l = p[1];
-  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
-  T trig_sin[4], trig_cos[4];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_a1 = trig_sin[0];
-  const T cos_q_a1 = trig_cos[0];
-  const T sin_q_b1 = trig_sin[1];
-  const T cos_q_b1 = trig_cos[1];
-  const T sin_q_a2 = trig_sin[2];
-  const T cos_q_a2 = trig_cos[2];
-  const T sin_q_b2 = trig_sin[3];
-  const T cos_q_b2 = trig_cos[3];
-  const T c0 = cos_q_a1;
-  const T c1 = cos_q_b1;
-  const T c2 = sin_q_a1;
-  const T c3 = sin_q_b1;
-  const T c4 = cos_q_b2;
-  const T c5 = sin_q_a2;
-  const T c6 = sin_q_b2;
-  const T c7 = (T(1)/T(3))*p_l*p_l*p_m;
-  const T k_upper_Rxx = c0;
-  const T k_upper_Rxy = -c1*c2;
-  const T k_upper_Rxz = c2*c3;
-  const T k_upper_Ryx = c2;
-  const T k_upper_Ryy = c0*c1;
-  const T k_upper_Ryz = -c0*c3;
-  const T k_upper_Rzy = c3;
-  const T k_upper_Rzz = c1;
-  const T k_upper_W_a1_y = c3;
-  const T k_upper_W_a1_z = c1;
-  const T k_lower_W_b1_x = cos_q_a2;
-  const T k_lower_W_b1_y = -c4*c5;
-  const T k_lower_W_b1_z = c5*c6;
-  const T k_lower_W_a2_y = c6;
-  const T k_lower_W_a2_z = c4;
-  const T k_lower_h_z = -(T(1)/T(2))*p_l*p_m;
-  const T k_lower_Jd_x = c7;
-  const T k_lower_Jd_y = c7;
-  const T k_lower_Jd_z = (T(1)/T(200))*p_l*p_l*p_m;
-  const T c8 = cos_q_a2;
-  const T c9 = c6*c6;
-  const T c10 = c5*c5;
-  const T c11 = (T(4)/T(3))*p_l*p_l*p_m;
-  const T c12 = -T(2)*c4*k_lower_h_z*p_l;
-  const T c13 = c8*c8;
-  const T c14 = c4*c4;
-  const T k_lower_Rxx = c5*k_upper_Rxy + c8*k_upper_Rxx;
-  const T k_lower_Rxy = -c4*c5*k_upper_Rxx + c4*c8*k_upper_Rxy + c6*k_upper_Rxz;
-  const T k_lower_Ryx = c5*k_upper_Ryy + c8*k_upper_Ryx;
-  const T k_lower_Ryy = -c4*c5*k_upper_Ryx + c4*c8*k_upper_Ryy + c6*k_upper_Ryz;
-  const T k_lower_Rzx = c5*k_upper_Rzy;
-  const T k_lower_Rzy = c4*c8*k_upper_Rzy + c6*k_upper_Rzz;
-  const T k_lower_W_a1_x = c5*k_upper_W_a1_y;
-  const T k_lower_V_a1_x = -k_upper_Rxx*k_upper_W_a1_y*p_l;
-  const T k_lower_W_a1_y = c4*c8*k_upper_W_a1_y + c6*k_upper_W_a1_z;
-  const T k_lower_V_a1_y = -k_upper_Ryx*k_upper_W_a1_y*p_l;
-  const T k_lower_W_a1_z = c4*k_upper_W_a1_z - c6*c8*k_upper_W_a1_y;
-  const T k_lower_V_b1_x = k_upper_Rxy*p_l;
-  const T k_lower_V_b1_y = k_upper_Ryy*p_l;
-  const T k_lower_V_b1_z = k_upper_Rzy*p_l;
-  const T k_upper_Jd_x = c10*c14*k_lower_Jd_y + c10*c9*k_lower_Jd_z + c11 + c12 + c13*k_lower_Jd_x;
-  const T k_upper_Jd_y = c10*k_lower_Jd_x + c11 + c12 + c13*c14*k_lower_Jd_y + c13*c9*k_lower_Jd_z;
-  const T k_upper_Jd_z = (T(1)/T(200))*p_l*p_l*p_m + c14*k_lower_Jd_z + c9*k_lower_Jd_y;
-  const T k_upper_Jo_x = c4*c6*c8*k_lower_Jd_y - c4*c6*c8*k_lower_Jd_z - c6*c8*k_lower_h_z*p_l;
-  const T k_upper_Jo_y = -c4*c5*c6*k_lower_Jd_y + c4*c5*c6*k_lower_Jd_z + c5*c6*k_lower_h_z*p_l;
-  const T k_upper_Jo_z = -c14*c5*c8*k_lower_Jd_y - c5*c8*c9*k_lower_Jd_z + c5*c8*k_lower_Jd_x;
-  M[11] = T(0);
-  M[14] = M[11];
-  M[15] = k_lower_Jd_x;
-  M[10] = c4*k_lower_Jd_z*k_lower_W_a2_z + c6*k_lower_Jd_y*k_lower_W_a2_y;
-  M[3] = k_lower_Jd_x*k_lower_W_a1_x - k_lower_Rxy*k_lower_V_a1_x*k_lower_h_z - k_lower_Ryy*k_lower_V_a1_y*k_lower_h_z;
-  M[12] = M[3];
-  M[2] = c4*k_lower_Jd_z*k_lower_W_a1_z + c6*k_lower_Jd_y*k_lower_W_a1_y + c6*k_lower_Rxx*k_lower_V_a1_x*k_lower_h_z + c6*k_lower_Ryx*k_lower_V_a1_y*k_lower_h_z;
-  M[8] = M[2];
-  M[6] = c4*k_lower_Jd_z*k_lower_W_b1_z + c6*k_lower_Jd_y*k_lower_W_b1_y + c6*k_lower_Rxx*k_lower_V_b1_x*k_lower_h_z + c6*k_lower_Ryx*k_lower_V_b1_y*k_lower_h_z + c6*k_lower_Rzx*k_lower_V_b1_z*k_lower_h_z;
-  M[9] = M[6];
-  M[7] = k_lower_Jd_x*k_lower_W_b1_x - k_lower_Rxy*k_lower_V_b1_x*k_lower_h_z - k_lower_Ryy*k_lower_V_b1_y*k_lower_h_z - k_lower_Rzy*k_lower_V_b1_z*k_lower_h_z;
-  M[13] = M[7];
-  M[5] = k_upper_Jd_x;
-  M[0] = c1*k_upper_Jd_z*k_upper_W_a1_z + c1*k_upper_Jo_x*k_upper_W_a1_y + c3*k_upper_Jd_y*k_upper_W_a1_y + c3*k_upper_Jo_x*k_upper_W_a1_z;
-  M[1] = k_upper_Jo_y*k_upper_W_a1_z + k_upper_Jo_z*k_upper_W_a1_y;
-  M[4] = M[1];
-}
-
-/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
-/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 4.
-template <class T>
-void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
-  (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_a1 = x[0];
-  const T q_b1 = x[1];
-  const T q_a2 = x[2];
-  const T q_b2 = x[3];
-  const T dq_a1 = x[4];
-  const T dq_b1 = x[5];
-  const T dq_a2 = x[6];
-  const T dq_b2 = x[7];
-  const T p_m = p[0];
-  const T p_l = p[1];
-  const T p_g = p[2];
-  const T u_push = u[0];
-  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
-  T trig_sin[4], trig_cos[4];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_a1 = trig_sin[0];
-  const T cos_q_a1 = trig_cos[0];
-  const T sin_q_b1 = trig_sin[1];
-  const T cos_q_b1 = trig_cos[1];
-  const T sin_q_a2 = trig_sin[2];
-  const T cos_q_a2 = trig_cos[2];
-  const T sin_q_b2 = trig_sin[3];
-  const T cos_q_b2 = trig_cos[3];
-  const T c0 = cos_q_a1;
-  const T c1 = cos_q_b1;
-  const T c2 = sin_q_a1;
-  const T c3 = sin_q_b1;
-  const T c4 = cos_q_b2;
-  const T c5 = sin_q_a2;
-  const T c6 = sin_q_b2;
-  const T k_upper_Rxx = c0;
-  const T k_upper_Rxy = -c1*c2;
-  const T k_upper_Rxz = c2*c3;
-  const T k_upper_Ryx = c2;
-  const T k_upper_Ryy = c0*c1;
-  const T k_upper_Ryz = -c0*c3;
-  const T k_upper_Rzy = c3;
-  const T k_upper_Rzz = c1;
-  const T k_upper_W_a1_y = c3;
-  const T k_upper_W_a1_z = c1;
-  const T k_upper_omega_y = c3*dq_a1;
-  const T k_upper_alpha_y = c1*dq_a1*dq_b1;
-  const T k_upper_omega_z = c1*dq_a1;
-  const T k_upper_alpha_z = -c3*dq_a1*dq_b1;
-  const T k_lower_W_b1_x = cos_q_a2;
-  const T k_lower_W_b1_y = -c4*c5;
-  const T k_lower_W_b1_z = c5*c6;
-  const T k_lower_W_a2_y = c6;
-  const T k_lower_W_a2_z = c4;
-  const T c7 = cos_q_a2;
-  const T c8 = c6*c6;
-  const T c9 = c4*c4;
-  const T k_lower_Rxx = c5*k_upper_Rxy + c7*k_upper_Rxx;
-  const T k_lower_Rxy = -c4*c5*k_upper_Rxx + c4*c7*k_upper_Rxy + c6*k_upper_Rxz;
-  const T k_lower_Rxz = c4*k_upper_Rxz + c5*c6*k_upper_Rxx - c6*c7*k_upper_Rxy;
-  const T k_lower_Ryx = c5*k_upper_Ryy + c7*k_upper_Ryx;
-  const T k_lower_Ryy = -c4*c5*k_upper_Ryx + c4*c7*k_upper_Ryy + c6*k_upper_Ryz;
-  const T k_lower_Ryz = c4*k_upper_Ryz + c5*c6*k_upper_Ryx - c6*c7*k_upper_Ryy;
-  const T k_lower_Rzx = c5*k_upper_Rzy;
-  const T k_lower_Rzy = c4*c7*k_upper_Rzy + c6*k_upper_Rzz;
-  const T k_lower_Rzz = c4*k_upper_Rzz - c6*c7*k_upper_Rzy;
-  const T k_lower_W_a1_x = c5*k_upper_W_a1_y;
-  const T k_lower_V_a1_x = -k_upper_Rxx*k_upper_W_a1_y*p_l;
-  const T k_lower_W_a1_y = c4*c7*k_upper_W_a1_y + c6*k_upper_W_a1_z;
-  const T k_lower_V_a1_y = -k_upper_Ryx*k_upper_W_a1_y*p_l;
-  const T k_lower_W_a1_z = c4*k_upper_W_a1_z - c6*c7*k_upper_W_a1_y;
-  const T k_lower_V_b1_x = k_upper_Rxy*p_l;
-  const T k_lower_V_b1_y = k_upper_Ryy*p_l;
-  const T k_lower_V_b1_z = k_upper_Rzy*p_l;
-  const T k_lower_omega_x = c5*k_upper_omega_y + c7*dq_b1 + dq_b2;
-  const T k_lower_alpha_x = -c5*c8*dq_a2*dq_b1 - c5*c9*dq_a2*dq_b1 + c5*k_upper_alpha_y + c7*c8*dq_a2*k_upper_omega_y + c7*c9*dq_a2*k_upper_omega_y;
-  const T k_lower_acc_x = dq_b1*dq_b1*k_upper_Rxz*p_l - dq_b1*k_upper_Rxx*k_upper_omega_z*p_l - k_upper_Rxx*k_upper_alpha_y*p_l - k_upper_Rxy*k_upper_omega_y*k_upper_omega_z*p_l + k_upper_Rxz*k_upper_omega_y*k_upper_omega_y*p_l;
-  const T k_lower_omega_y = -c4*c5*dq_b1 + c4*c7*k_upper_omega_y + c6*dq_a2 + c6*k_upper_omega_z;
-  const T k_lower_alpha_y = -c4*c5*dq_a2*k_upper_omega_y - c4*c7*dq_a2*dq_b1 + c4*c7*k_upper_alpha_y + c4*dq_a2*dq_b2 + c4*dq_b2*k_upper_omega_z + c5*c6*dq_b1*dq_b2 - c6*c7*dq_b2*k_upper_omega_y + c6*k_upper_alpha_z;
-  const T k_lower_acc_y = dq_b1*dq_b1*k_upper_Ryz*p_l - dq_b1*k_upper_Ryx*k_upper_omega_z*p_l - k_upper_Ryx*k_upper_alpha_y*p_l - k_upper_Ryy*k_upper_omega_y*k_upper_omega_z*p_l + k_upper_Ryz*k_upper_omega_y*k_upper_omega_y*p_l;
-  const T k_lower_omega_z = c4*dq_a2 + c4*k_upper_omega_z + c5*c6*dq_b1 - c6*c7*k_upper_omega_y;
-  const T k_lower_alpha_z = c4*c5*dq_b1*dq_b2 - c4*c7*dq_b2*k_upper_omega_y + c4*k_upper_alpha_z + c5*c6*dq_a2*k_upper_omega_y + c6*c7*dq_a2*dq_b1 - c6*c7*k_upper_alpha_y - c6*dq_a2*dq_b2 - c6*dq_b2*k_upper_omega_z;
-  const T k_lower_acc_z = dq_b1*dq_b1*k_upper_Rzz*p_l - k_upper_Rzy*k_upper_omega_y*k_upper_omega_z*p_l + k_upper_Rzz*k_upper_omega_y*k_upper_omega_y*p_l;
-  const T k_rod1_cm_V_a1_x = -(T(1)/T(2))*k_upper_Rxx*k_upper_W_a1_y*p_l;
-  const T k_rod1_cm_V_a1_y = -(T(1)/T(2))*k_upper_Ryx*k_upper_W_a1_y*p_l;
-  const T k_rod1_cm_V_b1_x = (T(1)/T(2))*k_upper_Rxy*p_l;
-  const T k_rod1_cm_V_b1_y = (T(1)/T(2))*k_upper_Ryy*p_l;
-  const T k_rod1_cm_V_b1_z = (T(1)/T(2))*k_upper_Rzy*p_l;
-  const T k_rod1_cm_acc_x = (T(1)/T(2))*dq_b1*dq_b1*k_upper_Rxz*p_l - (T(1)/T(2))*dq_b1*k_upper_Rxx*k_upper_omega_z*p_l - (T(1)/T(2))*k_upper_Rxx*k_upper_alpha_y*p_l - (T(1)/T(2))*k_upper_Rxy*k_upper_omega_y*k_upper_omega_z*p_l + (T(1)/T(2))*k_upper_Rxz*k_upper_omega_y*k_upper_omega_y*p_l;
-  const T k_rod1_cm_acc_y = (T(1)/T(2))*dq_b1*dq_b1*k_upper_Ryz*p_l - (T(1)/T(2))*dq_b1*k_upper_Ryx*k_upper_omega_z*p_l - (T(1)/T(2))*k_upper_Ryx*k_upper_alpha_y*p_l - (T(1)/T(2))*k_upper_Ryy*k_upper_omega_y*k_upper_omega_z*p_l + (T(1)/T(2))*k_upper_Ryz*k_upper_omega_y*k_upper_omega_y*p_l;
-  const T k_rod1_cm_acc_z = (T(1)/T(2))*dq_b1*dq_b1*k_upper_Rzz*p_l - (T(1)/T(2))*k_upper_Rzy*k_upper_omega_y*k_upper_omega_z*p_l + (T(1)/T(2))*k_upper_Rzz*k_upper_omega_y*k_upper_omega_y*p_l;
-  const T k_rod2_cm_V_a1_x = -(T(1)/T(2))*k_lower_Rxx*k_lower_W_a1_y*p_l + (T(1)/T(2))*k_lower_Rxy*k_lower_W_a1_x*p_l + k_lower_V_a1_x;
-  const T k_rod2_cm_V_a1_y = -(T(1)/T(2))*k_lower_Ryx*k_lower_W_a1_y*p_l + (T(1)/T(2))*k_lower_Ryy*k_lower_W_a1_x*p_l + k_lower_V_a1_y;
-  const T k_rod2_cm_V_a1_z = -(T(1)/T(2))*k_lower_Rzx*k_lower_W_a1_y*p_l + (T(1)/T(2))*k_lower_Rzy*k_lower_W_a1_x*p_l;
-  const T k_rod2_cm_V_b1_x = -(T(1)/T(2))*k_lower_Rxx*k_lower_W_b1_y*p_l + (T(1)/T(2))*k_lower_Rxy*k_lower_W_b1_x*p_l + k_lower_V_b1_x;
-  const T k_rod2_cm_V_b1_y = -(T(1)/T(2))*k_lower_Ryx*k_lower_W_b1_y*p_l + (T(1)/T(2))*k_lower_Ryy*k_lower_W_b1_x*p_l + k_lower_V_b1_y;
-  const T k_rod2_cm_V_b1_z = -(T(1)/T(2))*k_lower_Rzx*k_lower_W_b1_y*p_l + (T(1)/T(2))*k_lower_Rzy*k_lower_W_b1_x*p_l + k_lower_V_b1_z;
-  const T k_rod2_cm_V_a2_x = -(T(1)/T(2))*k_lower_Rxx*k_lower_W_a2_y*p_l;
-  const T k_rod2_cm_V_a2_y = -(T(1)/T(2))*k_lower_Ryx*k_lower_W_a2_y*p_l;
-  const T k_rod2_cm_V_a2_z = -(T(1)/T(2))*k_lower_Rzx*k_lower_W_a2_y*p_l;
-  const T k_rod2_cm_V_b2_x = (T(1)/T(2))*k_lower_Rxy*p_l;
-  const T k_rod2_cm_V_b2_y = (T(1)/T(2))*k_lower_Ryy*p_l;
-  const T k_rod2_cm_V_b2_z = (T(1)/T(2))*k_lower_Rzy*p_l;
-  const T k_rod2_cm_acc_x = -(T(1)/T(2))*k_lower_Rxx*k_lower_alpha_y*p_l - (T(1)/T(2))*k_lower_Rxx*k_lower_omega_x*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rxy*k_lower_alpha_x*p_l - (T(1)/T(2))*k_lower_Rxy*k_lower_omega_y*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rxz*k_lower_omega_x*k_lower_omega_x*p_l + (T(1)/T(2))*k_lower_Rxz*k_lower_omega_y*k_lower_omega_y*p_l + k_lower_acc_x;
-  const T k_rod2_cm_acc_y = -(T(1)/T(2))*k_lower_Ryx*k_lower_alpha_y*p_l - (T(1)/T(2))*k_lower_Ryx*k_lower_omega_x*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Ryy*k_lower_alpha_x*p_l - (T(1)/T(2))*k_lower_Ryy*k_lower_omega_y*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Ryz*k_lower_omega_x*k_lower_omega_x*p_l + (T(1)/T(2))*k_lower_Ryz*k_lower_omega_y*k_lower_omega_y*p_l + k_lower_acc_y;
-  const T k_rod2_cm_acc_z = -(T(1)/T(2))*k_lower_Rzx*k_lower_alpha_y*p_l - (T(1)/T(2))*k_lower_Rzx*k_lower_omega_x*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rzy*k_lower_alpha_x*p_l - (T(1)/T(2))*k_lower_Rzy*k_lower_omega_y*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rzz*k_lower_omega_x*k_lower_omega_x*p_l + (T(1)/T(2))*k_lower_Rzz*k_lower_omega_y*k_lower_omega_y*p_l + k_lower_acc_z;
-  f[0] = -(T(1)/T(12))*k_lower_W_a1_x*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(12))*k_lower_W_a1_y*k_lower_alpha_y*p_l*p_l*p_m - (T(1)/T(12))*k_upper_W_a1_y*k_upper_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_a1_y*p_g*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*k_lower_W_a1_x*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_a1_z*k_lower_alpha_z*p_l*p_l*p_m - (T(1)/T(200))*k_upper_W_a1_z*k_upper_alpha_z*p_l*p_l*p_m - (T(47)/T(600))*dq_b1*k_upper_W_a1_y*k_upper_omega_z*p_l*p_l*p_m + (T(47)/T(600))*k_lower_W_a1_x*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_a1_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_a1_y*p_l*u_push + k_lower_Rxy*k_lower_W_a1_x*p_l*u_push + k_lower_V_a1_x*u_push - k_rod1_cm_V_a1_x*k_rod1_cm_acc_x*p_m - k_rod1_cm_V_a1_y*k_rod1_cm_acc_y*p_m - k_rod2_cm_V_a1_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_a1_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_a1_z*k_rod2_cm_acc_z*p_m;
-  f[1] = -(T(1)/T(12))*k_lower_W_b1_x*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(12))*k_lower_W_b1_y*k_lower_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_b1_y*p_g*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*k_lower_W_b1_x*p_g*p_l*p_m - (T(1)/T(2))*k_upper_Rzy*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_b1_z*k_lower_alpha_z*p_l*p_l*p_m + (T(47)/T(600))*k_lower_W_b1_x*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_b1_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m + (T(47)/T(600))*k_upper_omega_y*k_upper_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_b1_y*p_l*u_push + k_lower_Rxy*k_lower_W_b1_x*p_l*u_push + k_lower_V_b1_x*u_push - k_lower_V_b1_z*p_g*p_m - k_rod1_cm_V_b1_x*k_rod1_cm_acc_x*p_m - k_rod1_cm_V_b1_y*k_rod1_cm_acc_y*p_m - k_rod1_cm_V_b1_z*k_rod1_cm_acc_z*p_m - k_rod2_cm_V_b1_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_b1_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_b1_z*k_rod2_cm_acc_z*p_m;
-  f[2] = -(T(1)/T(12))*k_lower_W_a2_y*k_lower_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_a2_y*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_a2_z*k_lower_alpha_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_a2_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_a2_y*p_l*u_push - k_rod2_cm_V_a2_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_a2_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_a2_z*k_rod2_cm_acc_z*p_m;
-  f[3] = -(T(1)/T(12))*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*p_g*p_l*p_m + (T(47)/T(600))*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m + k_lower_Rxy*p_l*u_push - k_rod2_cm_V_b2_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_b2_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_b2_z*k_rod2_cm_acc_z*p_m;
-}
-
 namespace detail {
 
-/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
-/// ddq: 4; L: 4x4, row-major; D: 4.
+/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.
+/// M: 4x4, row-major; f: 4.
 template <class T>
-void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
   using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
@@ -520,7 +311,6 @@ void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T*
   const T k_rod2_cm_acc_x = -(T(1)/T(2))*k_lower_Rxx*k_lower_alpha_y*p_l - (T(1)/T(2))*k_lower_Rxx*k_lower_omega_x*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rxy*k_lower_alpha_x*p_l - (T(1)/T(2))*k_lower_Rxy*k_lower_omega_y*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rxz*k_lower_omega_x*k_lower_omega_x*p_l + (T(1)/T(2))*k_lower_Rxz*k_lower_omega_y*k_lower_omega_y*p_l + k_lower_acc_x;
   const T k_rod2_cm_acc_y = -(T(1)/T(2))*k_lower_Ryx*k_lower_alpha_y*p_l - (T(1)/T(2))*k_lower_Ryx*k_lower_omega_x*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Ryy*k_lower_alpha_x*p_l - (T(1)/T(2))*k_lower_Ryy*k_lower_omega_y*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Ryz*k_lower_omega_x*k_lower_omega_x*p_l + (T(1)/T(2))*k_lower_Ryz*k_lower_omega_y*k_lower_omega_y*p_l + k_lower_acc_y;
   const T k_rod2_cm_acc_z = -(T(1)/T(2))*k_lower_Rzx*k_lower_alpha_y*p_l - (T(1)/T(2))*k_lower_Rzx*k_lower_omega_x*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rzy*k_lower_alpha_x*p_l - (T(1)/T(2))*k_lower_Rzy*k_lower_omega_y*k_lower_omega_z*p_l + (T(1)/T(2))*k_lower_Rzz*k_lower_omega_x*k_lower_omega_x*p_l + (T(1)/T(2))*k_lower_Rzz*k_lower_omega_y*k_lower_omega_y*p_l + k_lower_acc_z;
-  T M[16];
   M[0] = c1*k_upper_Jd_z*k_upper_W_a1_z + c1*k_upper_Jo_x*k_upper_W_a1_y + c3*k_upper_Jd_y*k_upper_W_a1_y + c3*k_upper_Jo_x*k_upper_W_a1_z;
   M[1] = k_upper_Jo_y*k_upper_W_a1_z + k_upper_Jo_z*k_upper_W_a1_y;
   M[4] = M[1];
@@ -537,10 +327,42 @@ void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T*
   M[11] = T(0);
   M[14] = M[11];
   M[15] = k_lower_Jd_x;
-  ddq[0] = -(T(1)/T(12))*k_lower_W_a1_x*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(12))*k_lower_W_a1_y*k_lower_alpha_y*p_l*p_l*p_m - (T(1)/T(12))*k_upper_W_a1_y*k_upper_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_a1_y*p_g*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*k_lower_W_a1_x*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_a1_z*k_lower_alpha_z*p_l*p_l*p_m - (T(1)/T(200))*k_upper_W_a1_z*k_upper_alpha_z*p_l*p_l*p_m - (T(47)/T(600))*dq_b1*k_upper_W_a1_y*k_upper_omega_z*p_l*p_l*p_m + (T(47)/T(600))*k_lower_W_a1_x*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_a1_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_a1_y*p_l*u_push + k_lower_Rxy*k_lower_W_a1_x*p_l*u_push + k_lower_V_a1_x*u_push - k_rod1_cm_V_a1_x*k_rod1_cm_acc_x*p_m - k_rod1_cm_V_a1_y*k_rod1_cm_acc_y*p_m - k_rod2_cm_V_a1_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_a1_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_a1_z*k_rod2_cm_acc_z*p_m;
-  ddq[1] = -(T(1)/T(12))*k_lower_W_b1_x*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(12))*k_lower_W_b1_y*k_lower_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_b1_y*p_g*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*k_lower_W_b1_x*p_g*p_l*p_m - (T(1)/T(2))*k_upper_Rzy*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_b1_z*k_lower_alpha_z*p_l*p_l*p_m + (T(47)/T(600))*k_lower_W_b1_x*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_b1_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m + (T(47)/T(600))*k_upper_omega_y*k_upper_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_b1_y*p_l*u_push + k_lower_Rxy*k_lower_W_b1_x*p_l*u_push + k_lower_V_b1_x*u_push - k_lower_V_b1_z*p_g*p_m - k_rod1_cm_V_b1_x*k_rod1_cm_acc_x*p_m - k_rod1_cm_V_b1_y*k_rod1_cm_acc_y*p_m - k_rod1_cm_V_b1_z*k_rod1_cm_acc_z*p_m - k_rod2_cm_V_b1_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_b1_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_b1_z*k_rod2_cm_acc_z*p_m;
-  ddq[2] = -(T(1)/T(12))*k_lower_W_a2_y*k_lower_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_a2_y*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_a2_z*k_lower_alpha_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_a2_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_a2_y*p_l*u_push - k_rod2_cm_V_a2_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_a2_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_a2_z*k_rod2_cm_acc_z*p_m;
-  ddq[3] = -(T(1)/T(12))*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*p_g*p_l*p_m + (T(47)/T(600))*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m + k_lower_Rxy*p_l*u_push - k_rod2_cm_V_b2_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_b2_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_b2_z*k_rod2_cm_acc_z*p_m;
+  f[0] = -(T(1)/T(12))*k_lower_W_a1_x*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(12))*k_lower_W_a1_y*k_lower_alpha_y*p_l*p_l*p_m - (T(1)/T(12))*k_upper_W_a1_y*k_upper_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_a1_y*p_g*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*k_lower_W_a1_x*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_a1_z*k_lower_alpha_z*p_l*p_l*p_m - (T(1)/T(200))*k_upper_W_a1_z*k_upper_alpha_z*p_l*p_l*p_m - (T(47)/T(600))*dq_b1*k_upper_W_a1_y*k_upper_omega_z*p_l*p_l*p_m + (T(47)/T(600))*k_lower_W_a1_x*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_a1_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_a1_y*p_l*u_push + k_lower_Rxy*k_lower_W_a1_x*p_l*u_push + k_lower_V_a1_x*u_push - k_rod1_cm_V_a1_x*k_rod1_cm_acc_x*p_m - k_rod1_cm_V_a1_y*k_rod1_cm_acc_y*p_m - k_rod2_cm_V_a1_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_a1_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_a1_z*k_rod2_cm_acc_z*p_m;
+  f[1] = -(T(1)/T(12))*k_lower_W_b1_x*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(12))*k_lower_W_b1_y*k_lower_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_b1_y*p_g*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*k_lower_W_b1_x*p_g*p_l*p_m - (T(1)/T(2))*k_upper_Rzy*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_b1_z*k_lower_alpha_z*p_l*p_l*p_m + (T(47)/T(600))*k_lower_W_b1_x*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_b1_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m + (T(47)/T(600))*k_upper_omega_y*k_upper_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_b1_y*p_l*u_push + k_lower_Rxy*k_lower_W_b1_x*p_l*u_push + k_lower_V_b1_x*u_push - k_lower_V_b1_z*p_g*p_m - k_rod1_cm_V_b1_x*k_rod1_cm_acc_x*p_m - k_rod1_cm_V_b1_y*k_rod1_cm_acc_y*p_m - k_rod1_cm_V_b1_z*k_rod1_cm_acc_z*p_m - k_rod2_cm_V_b1_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_b1_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_b1_z*k_rod2_cm_acc_z*p_m;
+  f[2] = -(T(1)/T(12))*k_lower_W_a2_y*k_lower_alpha_y*p_l*p_l*p_m + (T(1)/T(2))*k_lower_Rzx*k_lower_W_a2_y*p_g*p_l*p_m - (T(1)/T(200))*k_lower_W_a2_z*k_lower_alpha_z*p_l*p_l*p_m - (T(47)/T(600))*k_lower_W_a2_y*k_lower_omega_x*k_lower_omega_z*p_l*p_l*p_m - k_lower_Rxx*k_lower_W_a2_y*p_l*u_push - k_rod2_cm_V_a2_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_a2_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_a2_z*k_rod2_cm_acc_z*p_m;
+  f[3] = -(T(1)/T(12))*k_lower_alpha_x*p_l*p_l*p_m - (T(1)/T(2))*k_lower_Rzy*p_g*p_l*p_m + (T(47)/T(600))*k_lower_omega_y*k_lower_omega_z*p_l*p_l*p_m + k_lower_Rxy*p_l*u_push - k_rod2_cm_V_b2_x*k_rod2_cm_acc_x*p_m - k_rod2_cm_V_b2_y*k_rod2_cm_acc_y*p_m - k_rod2_cm_V_b2_z*k_rod2_cm_acc_z*p_m;
+}
+
+}  // namespace detail
+
+/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
+/// x: num_states; p: num_parameters; M: 4x4, row-major.
+template <class T>
+void mass_matrix(T t, const T* x, const T* p, T* M) {
+  (void)t; (void)x; (void)p;
+  T f[4];
+  const detail::input_t<T> no_inputs[1] = {};
+  detail::mass_matrix_and_forcing(t, x, no_inputs, p, M, f);
+}
+
+/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
+/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 4.
+template <class T>
+void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[16];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, f);
+}
+
+namespace detail {
+
+/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
+/// ddq: 4; L: 4x4, row-major; D: 4.
+template <class T>
+void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[16];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
 }

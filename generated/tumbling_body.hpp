@@ -249,87 +249,15 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 
 }  // namespace detail
 
-/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
-/// x: num_states; p: num_parameters; M: 6x6, row-major.
-template <class T>
-void mass_matrix(T t, const T* x, const T* p, T* M) {
-  (void)t; (void)x; (void)p;
-  const T q_qw = x[3];
-  const T q_qx = x[4];
-  const T q_qy = x[5];
-  const T q_qz = x[6];
-  const T p_A = p[0];
-  const T p_B = p[1];
-  const T p_C = p[2];
-  const T p_m = p[3];
-  const T k_body_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c0 = -k_body_tqn*q_qw*q_qw;
-  const T c1 = k_body_tqn*q_qz*q_qz;
-  const T c2 = -k_body_tqn*q_qx*q_qx;
-  const T c3 = T(2)*k_body_tqn*q_qx*q_qy;
-  const T c4 = T(2)*k_body_tqn*q_qw*q_qy;
-  const T c5 = -k_body_tqn*q_qy*q_qy;
-  const T c6 = T(2)*k_body_tqn*q_qy*q_qz;
-  const T k_body_tExx = -c0 - c1 - c2 - k_body_tqn*q_qy*q_qy;
-  const T k_body_tExy = -T(2)*k_body_tqn*q_qw*q_qz + c3;
-  const T k_body_tExz = T(2)*k_body_tqn*q_qx*q_qz + c4;
-  const T k_body_tEyx = T(2)*k_body_tqn*q_qw*q_qz + c3;
-  const T k_body_tEyy = -c0 - c1 - c5 - k_body_tqn*q_qx*q_qx;
-  const T k_body_tEyz = -T(2)*k_body_tqn*q_qw*q_qx + c6;
-  const T k_body_tEzx = T(2)*k_body_tqn*q_qx*q_qz - c4;
-  const T k_body_tEzy = T(2)*k_body_tqn*q_qw*q_qx + c6;
-  const T k_body_tEzz = c1 + c2 + c5 + k_body_tqn*q_qw*q_qw;
-  const T k_body_tp0_x = k_body_tExx*p_m;
-  const T k_body_tp0_y = k_body_tExy*p_m;
-  const T k_body_tp0_z = k_body_tExz*p_m;
-  const T k_body_tp1_x = k_body_tEyx*p_m;
-  const T k_body_tp1_y = k_body_tEyy*p_m;
-  const T k_body_tp1_z = k_body_tEyz*p_m;
-  const T k_body_tp2_x = k_body_tEzx*p_m;
-  const T k_body_tp2_y = k_body_tEzy*p_m;
-  const T k_body_tp2_z = k_body_tEzz*p_m;
-  M[3] = T(0);
-  M[18] = M[3];
-  M[4] = T(0);
-  M[24] = M[4];
-  M[5] = T(0);
-  M[30] = M[5];
-  M[9] = T(0);
-  M[19] = M[9];
-  M[10] = T(0);
-  M[25] = M[10];
-  M[11] = T(0);
-  M[31] = M[11];
-  M[15] = T(0);
-  M[20] = M[15];
-  M[16] = T(0);
-  M[26] = M[16];
-  M[17] = T(0);
-  M[32] = M[17];
-  M[21] = p_A;
-  M[22] = T(0);
-  M[27] = M[22];
-  M[23] = T(0);
-  M[33] = M[23];
-  M[28] = p_B;
-  M[29] = T(0);
-  M[34] = M[29];
-  M[35] = p_C;
-  M[0] = k_body_tExx*k_body_tp0_x + k_body_tExy*k_body_tp0_y + k_body_tExz*k_body_tp0_z;
-  M[1] = k_body_tExx*k_body_tp1_x + k_body_tExy*k_body_tp1_y + k_body_tExz*k_body_tp1_z;
-  M[6] = M[1];
-  M[7] = k_body_tEyx*k_body_tp1_x + k_body_tEyy*k_body_tp1_y + k_body_tEyz*k_body_tp1_z;
-  M[2] = k_body_tExx*k_body_tp2_x + k_body_tExy*k_body_tp2_y + k_body_tExz*k_body_tp2_z;
-  M[12] = M[2];
-  M[8] = k_body_tEyx*k_body_tp2_x + k_body_tEyy*k_body_tp2_y + k_body_tEyz*k_body_tp2_z;
-  M[13] = M[8];
-  M[14] = k_body_tEzx*k_body_tp2_x + k_body_tEzy*k_body_tp2_y + k_body_tEzz*k_body_tp2_z;
-}
+namespace detail {
 
-/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
-/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 6.
+/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.
+/// M: 6x6, row-major; f: 6.
 template <class T>
-void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
   const T q_qw = x[3];
   const T q_qx = x[4];
@@ -369,15 +297,80 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T k_body_ta0_x = k_body_tEzx*p_g;
   const T k_body_ta0_y = k_body_tEzy*p_g;
   const T k_body_ta0_z = k_body_tEzz*p_g;
+  const T k_body_tp0_x = k_body_tExx*p_m;
+  const T k_body_tp0_y = k_body_tExy*p_m;
+  const T k_body_tp0_z = k_body_tExz*p_m;
+  const T k_body_tp1_x = k_body_tEyx*p_m;
+  const T k_body_tp1_y = k_body_tEyy*p_m;
+  const T k_body_tp1_z = k_body_tEyz*p_m;
+  const T k_body_tp2_x = k_body_tEzx*p_m;
+  const T k_body_tp2_y = k_body_tEzy*p_m;
+  const T k_body_tp2_z = k_body_tEzz*p_m;
   const T k_body_tB0F0_x = k_body_ta0_x*p_m;
   const T k_body_tB0F0_y = k_body_ta0_y*p_m;
   const T k_body_tB0F0_z = k_body_ta0_z*p_m;
-  f[3] = -k_body_tN0_x;
-  f[4] = -k_body_tN0_y;
-  f[5] = -k_body_tN0_z;
+  M[0] = k_body_tExx*k_body_tp0_x + k_body_tExy*k_body_tp0_y + k_body_tExz*k_body_tp0_z;
+  M[1] = k_body_tExx*k_body_tp1_x + k_body_tExy*k_body_tp1_y + k_body_tExz*k_body_tp1_z;
+  M[6] = M[1];
+  M[2] = k_body_tExx*k_body_tp2_x + k_body_tExy*k_body_tp2_y + k_body_tExz*k_body_tp2_z;
+  M[12] = M[2];
+  M[3] = T(0);
+  M[18] = M[3];
+  M[4] = T(0);
+  M[24] = M[4];
+  M[5] = T(0);
+  M[30] = M[5];
+  M[7] = k_body_tEyx*k_body_tp1_x + k_body_tEyy*k_body_tp1_y + k_body_tEyz*k_body_tp1_z;
+  M[8] = k_body_tEyx*k_body_tp2_x + k_body_tEyy*k_body_tp2_y + k_body_tEyz*k_body_tp2_z;
+  M[13] = M[8];
+  M[9] = T(0);
+  M[19] = M[9];
+  M[10] = T(0);
+  M[25] = M[10];
+  M[11] = T(0);
+  M[31] = M[11];
+  M[14] = k_body_tEzx*k_body_tp2_x + k_body_tEzy*k_body_tp2_y + k_body_tEzz*k_body_tp2_z;
+  M[15] = T(0);
+  M[20] = M[15];
+  M[16] = T(0);
+  M[26] = M[16];
+  M[17] = T(0);
+  M[32] = M[17];
+  M[21] = p_A;
+  M[22] = T(0);
+  M[27] = M[22];
+  M[23] = T(0);
+  M[33] = M[23];
+  M[28] = p_B;
+  M[29] = T(0);
+  M[34] = M[29];
+  M[35] = p_C;
   f[0] = -k_body_tB0F0_x*k_body_tExx - k_body_tB0F0_y*k_body_tExy - k_body_tB0F0_z*k_body_tExz;
   f[1] = -k_body_tB0F0_x*k_body_tEyx - k_body_tB0F0_y*k_body_tEyy - k_body_tB0F0_z*k_body_tEyz;
   f[2] = -k_body_tB0F0_x*k_body_tEzx - k_body_tB0F0_y*k_body_tEzy - k_body_tB0F0_z*k_body_tEzz;
+  f[3] = -k_body_tN0_x;
+  f[4] = -k_body_tN0_y;
+  f[5] = -k_body_tN0_z;
+}
+
+}  // namespace detail
+
+/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
+/// x: num_states; p: num_parameters; M: 6x6, row-major.
+template <class T>
+void mass_matrix(T t, const T* x, const T* p, T* M) {
+  (void)t; (void)x; (void)p;
+  T f[6];
+  detail::mass_matrix_and_forcing(t, x, nullptr, p, M, f);
+}
+
+/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
+/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: 6.
+template <class T>
+void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
+  (void)t; (void)x; (void)u; (void)p;
+  T M[36];
+  detail::mass_matrix_and_forcing(t, x, u, p, M, f);
 }
 
 namespace detail {
@@ -387,99 +380,8 @@ namespace detail {
 template <class T>
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
-  const T q_qw = x[3];
-  const T q_qx = x[4];
-  const T q_qy = x[5];
-  const T q_qz = x[6];
-  const T s_wx = x[10];
-  const T s_wy = x[11];
-  const T s_wz = x[12];
-  const T p_A = p[0];
-  const T p_B = p[1];
-  const T p_C = p[2];
-  const T p_m = p[3];
-  const T p_g = p[4];
-  const T k_body_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_body_tB0Iw0_x = p_A*s_wx;
-  const T k_body_tB0Iw0_y = p_B*s_wy;
-  const T k_body_tB0Iw0_z = p_C*s_wz;
-  const T c0 = -k_body_tqn*q_qw*q_qw;
-  const T c1 = k_body_tqn*q_qz*q_qz;
-  const T c2 = -k_body_tqn*q_qx*q_qx;
-  const T c3 = T(2)*k_body_tqn*q_qx*q_qy;
-  const T c4 = T(2)*k_body_tqn*q_qw*q_qy;
-  const T c5 = -k_body_tqn*q_qy*q_qy;
-  const T c6 = T(2)*k_body_tqn*q_qy*q_qz;
-  const T k_body_tExx = -c0 - c1 - c2 - k_body_tqn*q_qy*q_qy;
-  const T k_body_tExy = -T(2)*k_body_tqn*q_qw*q_qz + c3;
-  const T k_body_tExz = T(2)*k_body_tqn*q_qx*q_qz + c4;
-  const T k_body_tEyx = T(2)*k_body_tqn*q_qw*q_qz + c3;
-  const T k_body_tEyy = -c0 - c1 - c5 - k_body_tqn*q_qx*q_qx;
-  const T k_body_tEyz = -T(2)*k_body_tqn*q_qw*q_qx + c6;
-  const T k_body_tEzx = T(2)*k_body_tqn*q_qx*q_qz - c4;
-  const T k_body_tEzy = T(2)*k_body_tqn*q_qw*q_qx + c6;
-  const T k_body_tEzz = c1 + c2 + c5 + k_body_tqn*q_qw*q_qw;
-  const T k_body_tN0_x = -k_body_tB0Iw0_y*s_wz + k_body_tB0Iw0_z*s_wy;
-  const T k_body_tN0_y = k_body_tB0Iw0_x*s_wz - k_body_tB0Iw0_z*s_wx;
-  const T k_body_tN0_z = -k_body_tB0Iw0_x*s_wy + k_body_tB0Iw0_y*s_wx;
-  const T k_body_ta0_x = k_body_tEzx*p_g;
-  const T k_body_ta0_y = k_body_tEzy*p_g;
-  const T k_body_ta0_z = k_body_tEzz*p_g;
-  const T k_body_tp0_x = k_body_tExx*p_m;
-  const T k_body_tp0_y = k_body_tExy*p_m;
-  const T k_body_tp0_z = k_body_tExz*p_m;
-  const T k_body_tp1_x = k_body_tEyx*p_m;
-  const T k_body_tp1_y = k_body_tEyy*p_m;
-  const T k_body_tp1_z = k_body_tEyz*p_m;
-  const T k_body_tp2_x = k_body_tEzx*p_m;
-  const T k_body_tp2_y = k_body_tEzy*p_m;
-  const T k_body_tp2_z = k_body_tEzz*p_m;
-  const T k_body_tB0F0_x = k_body_ta0_x*p_m;
-  const T k_body_tB0F0_y = k_body_ta0_y*p_m;
-  const T k_body_tB0F0_z = k_body_ta0_z*p_m;
   T M[36];
-  M[0] = k_body_tExx*k_body_tp0_x + k_body_tExy*k_body_tp0_y + k_body_tExz*k_body_tp0_z;
-  M[1] = k_body_tExx*k_body_tp1_x + k_body_tExy*k_body_tp1_y + k_body_tExz*k_body_tp1_z;
-  M[6] = M[1];
-  M[2] = k_body_tExx*k_body_tp2_x + k_body_tExy*k_body_tp2_y + k_body_tExz*k_body_tp2_z;
-  M[12] = M[2];
-  M[3] = T(0);
-  M[18] = M[3];
-  M[4] = T(0);
-  M[24] = M[4];
-  M[5] = T(0);
-  M[30] = M[5];
-  M[7] = k_body_tEyx*k_body_tp1_x + k_body_tEyy*k_body_tp1_y + k_body_tEyz*k_body_tp1_z;
-  M[8] = k_body_tEyx*k_body_tp2_x + k_body_tEyy*k_body_tp2_y + k_body_tEyz*k_body_tp2_z;
-  M[13] = M[8];
-  M[9] = T(0);
-  M[19] = M[9];
-  M[10] = T(0);
-  M[25] = M[10];
-  M[11] = T(0);
-  M[31] = M[11];
-  M[14] = k_body_tEzx*k_body_tp2_x + k_body_tEzy*k_body_tp2_y + k_body_tEzz*k_body_tp2_z;
-  M[15] = T(0);
-  M[20] = M[15];
-  M[16] = T(0);
-  M[26] = M[16];
-  M[17] = T(0);
-  M[32] = M[17];
-  M[21] = p_A;
-  M[22] = T(0);
-  M[27] = M[22];
-  M[23] = T(0);
-  M[33] = M[23];
-  M[28] = p_B;
-  M[29] = T(0);
-  M[34] = M[29];
-  M[35] = p_C;
-  ddq[0] = -k_body_tB0F0_x*k_body_tExx - k_body_tB0F0_y*k_body_tExy - k_body_tB0F0_z*k_body_tExz;
-  ddq[1] = -k_body_tB0F0_x*k_body_tEyx - k_body_tB0F0_y*k_body_tEyy - k_body_tB0F0_z*k_body_tEyz;
-  ddq[2] = -k_body_tB0F0_x*k_body_tEzx - k_body_tB0F0_y*k_body_tEzy - k_body_tB0F0_z*k_body_tEzz;
-  ddq[3] = -k_body_tN0_x;
-  ddq[4] = -k_body_tN0_y;
-  ddq[5] = -k_body_tN0_z;
+  detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
 }

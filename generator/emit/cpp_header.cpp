@@ -17,6 +17,7 @@
 #include "emit/cpp_trig.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/formats.hpp"
+#include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -38,18 +39,27 @@ std::string number_list(const std::vector<double>& values) {
 }
 
 
+bool uses_newton_euler_gradient(const Equations& e);
+
 std::string mass_matrix_function(const Equations& e) {
   if (!e.articulated_inverse_dynamics.empty()) return articulated_mass_matrix_function(e);
-  std::size_t n = e.forcing.size();
+  std::size_t n = e.forcing.size(), m = e.symbols.inputs.size();
   BodyWriter w(e);
-  std::vector<std::pair<std::size_t, std::size_t>> entry;
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t k = j; k < n; ++k) entry.emplace_back(j, k);
-  w.assign(upper_triangle(e.mass_matrix, n), [&](std::size_t at, const std::string& code) {
-    auto [j, k] = entry[at];
-    std::string s = fmt::format("M[{}] = {};", j * n + k, code);
-    return j == k ? s : s + fmt::format("\n  M[{}] = M[{}];", k * n + j, j * n + k);
-  });
+  if (uses_newton_euler_gradient(e)) {
+    // M does not depend on u: f is taken at u = 0 and dropped
+    w.line(fmt::format("T f[{}];", n));
+    if (m > 0) w.line(fmt::format("const detail::input_t<T> no_inputs[{}] = {{}};", m));
+    w.line(fmt::format("detail::mass_matrix_and_forcing(t, x, {}, p, M, f);", m > 0 ? "no_inputs" : "nullptr"));
+  } else {
+    std::vector<std::pair<std::size_t, std::size_t>> entry;
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = j; k < n; ++k) entry.emplace_back(j, k);
+    w.assign(upper_triangle(e.mass_matrix, n), [&](std::size_t at, const std::string& code) {
+      auto [j, k] = entry[at];
+      std::string s = fmt::format("M[{}] = {};", j * n + k, code);
+      return j == k ? s : s + fmt::format("\n  M[{}] = M[{}];", k * n + j, j * n + k);
+    });
+  }
   return function(fmt::format("/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.\n"
                               "/// x: num_states; p: num_parameters; M: {}x{}, row-major.\n", n, n),
                   "void mass_matrix(T t, const T* x, const T* p, T* M)", w.finish("(void)t; (void)x; (void)p;"));
@@ -58,7 +68,12 @@ std::string mass_matrix_function(const Equations& e) {
 std::string forcing_function(const Equations& e) {
   BodyWriter w(e);
   const std::vector<ex>& f = e.articulated_inverse_dynamics.empty() ? e.forcing : e.articulated_inverse_dynamics.forcing;
-  w.assign(f, [](std::size_t i, const std::string& code) { return fmt::format("f[{}] = {};", i, code); });
+  if (uses_newton_euler_gradient(e)) {
+    w.line(fmt::format("T M[{}];", f.size() * f.size()));
+    w.line("detail::mass_matrix_and_forcing(t, x, u, p, M, f);");
+  } else {
+    w.assign(f, [](std::size_t i, const std::string& code) { return fmt::format("f[{}] = {};", i, code); });
+  }
   return function(fmt::format("/// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.\n"
                               "/// x: num_states; u: num_inputs (may be null if none); p: num_parameters; f: {}.\n", e.forcing.size()),
                   "void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f)", w.finish(all_unused));
@@ -108,16 +123,15 @@ std::string rhs_function(const Equations& e) {
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
-std::string newton_euler_gradient_function(const Equations& e) {
-  if (!uses_newton_euler_gradient(e)) return "";
+// the body of detail::inverse_dynamics_gradient: a tangent sweep through τ's code, or with
+// `closed_form` the bodies' part in closed form and a sweep through the applied part alone
+std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form) {
   const Symbols& s = e.symbols;
   std::size_t n = e.num_velocities(), W = s.num_coordinates() + n + s.inputs.size();
   BodyWriter w(e);
   std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
   directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
   directions.insert(directions.end(), s.inputs.begin(), s.inputs.end());
-  // a joint tree's bodies have their derivatives in closed form: the sweep runs through the rest
-  bool closed_form = e.has_bodies_gradient();
   const std::vector<ex>& swept = closed_form ? e.applied_inverse_dynamics : e.inverse_dynamics;
   TangentSweep sweep(w, directions);
   sweep.follow(w.write_intermediates_of(swept));
@@ -132,6 +146,28 @@ std::string newton_euler_gradient_function(const Equations& e) {
       entries[i * W + n + j] += e.bodies_gradient_velocities(unsigned(i), unsigned(j));
     }
   w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
+  return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
+}
+
+std::string newton_euler_gradient_function(const Equations& e) {
+  if (!uses_newton_euler_gradient(e)) return "";
+  std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n + e.symbols.inputs.size();
+  const char* signature = "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)";
+  // the closed form costs about a thousand operations per link, the sweep a few hundred per pair
+  // of a joint and one it carries: up to a dozen joints both are written and the one with fewer
+  // operations kept (a 5-joint tree's sweep has 4,014 where the closed form has 4,824, and ran
+  // 1.24 times as fast; a 7-joint arm's 10,695 against 6,678); beyond, the closed form, whose
+  // share grows with the depth (a 21-joint tree: 44,773 against 25,942), without the sweep's
+  // second of generating
+  constexpr std::size_t compared_up_to = 12;
+  bool closed_form = e.has_bodies_gradient() && n > compared_up_to;
+  std::string body = inverse_dynamics_gradient_body(e, closed_form);
+  if (e.has_bodies_gradient() && !closed_form) {
+    std::string closed = inverse_dynamics_gradient_body(e, true);
+    auto operations = [&](const std::string& b) { return count_operations(function("", signature, b), "inverse_dynamics_gradient", n); };
+    closed_form = operations(closed) < operations(body);
+    if (closed_form) body = std::move(closed);
+  }
   return "namespace detail {\n\n" +
          function(fmt::format(fmt::runtime(closed_form
                                   ? "/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
@@ -140,8 +176,28 @@ std::string newton_euler_gradient_function(const Equations& e) {
                                   : "/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
                                     "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n"),
                               n, W),
-                  "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
-                  without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")))) +
+                  signature, body) +
+         "}  // namespace detail\n\n";
+}
+
+// a tree's M and f are long code, most of a 21-joint tree's header when mass_matrix, forcing and
+// factored_accelerations each wrote them: written once, here, and those three call it
+std::string mass_matrix_and_forcing_function(const Equations& e) {
+  if (!uses_newton_euler_gradient(e)) return "";
+  std::size_t n = e.num_velocities(), upper = n * (n + 1) / 2;
+  BodyWriter w(e);
+  std::vector<ex> entries = upper_triangle(e.mass_matrix, n);
+  entries.insert(entries.end(), e.forcing.begin(), e.forcing.end());
+  std::vector<std::string> code = w.batch(entries);
+  write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + long(upper)), n, "M");
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("f[{}] = {};", i, code[upper + i]));
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.\n"
+                              "/// M: {0}x{0}, row-major; f: {0}.\n", n),
+                  // inlined where it is called: a call passed M through memory, and rhs took 12-18 % longer
+                  "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
+                  "inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f)",
+                  w.finish(all_unused)) +
          "}  // namespace detail\n\n";
 }
 
@@ -151,7 +207,10 @@ std::string factored_accelerations_function(const Equations& e) {
   if (!uses_newton_euler_gradient(e)) return "";
   std::size_t n = e.num_velocities();
   BodyWriter w(e);
-  accelerations(w, e, true);
+  w.line(fmt::format("T M[{}];", n * n));
+  w.line("detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);");
+  w.line("detail::ldlt_factor(M, L, D);");
+  w.line("detail::ldlt_solve(L, D, ddq);");
   return "namespace detail {\n\n" +
          function(fmt::format("/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.\n"
                               "/// ddq: {0}; L: {0}x{0}, row-major; D: {0}.\n", n),
@@ -385,7 +444,7 @@ std::string cyclic_list(const Equations& e) {
 // every function of the header but the detail namespace, in the header's order
 std::string all_functions(const Equations& e) {
   std::string functions = constrained_solver(e);
-  functions += mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) + newton_euler_gradient_function(e) +
+  functions += mass_matrix_and_forcing_function(e) + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) + newton_euler_gradient_function(e) +
                jacobian_state_function(e) + jacobian_input_function(e) + linearization_function(e);
   functions += e.articulated_accelerations.empty()
                    ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
