@@ -83,8 +83,8 @@ struct Equations {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
-  /// A joint tree without ball and free joints: inverse_dynamics is the bodies' τ plus
-  /// applied_inverse_dynamics, and the bodies' ∂τ/∂q and ∂τ/∂q' (n×n) are in closed form
+  /// A joint tree: inverse_dynamics is the bodies' τ plus applied_inverse_dynamics, and the
+  /// bodies' ∂τ/∂q (velocities × coordinates) and ∂τ/∂s (velocities × velocities) are in closed form
   /// (spatial/joint_tree_derivatives.hpp), in acceleration_intermediates: the header's tangent
   /// sweep then runs through the applied part alone. Empty otherwise.
   std::vector<GiNaC::ex> applied_inverse_dynamics;

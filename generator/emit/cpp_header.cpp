@@ -140,11 +140,11 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   std::vector<ex> entries;
   for (std::size_t i = 0; i < n; ++i)
     for (const ex& d : sweep.derivatives(tau.outputs[i])) entries.push_back(d);
-  for (std::size_t i = 0; i < n && closed_form; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      entries[i * W + j] += e.bodies_gradient_coordinates(unsigned(i), unsigned(j));
-      entries[i * W + n + j] += e.bodies_gradient_velocities(unsigned(i), unsigned(j));
-    }
+  std::size_t nq = s.num_coordinates();
+  for (std::size_t i = 0; i < n && closed_form; ++i) {
+    for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += e.bodies_gradient_coordinates(unsigned(i), unsigned(j));
+    for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += e.bodies_gradient_velocities(unsigned(i), unsigned(j));
+  }
   w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }

@@ -218,12 +218,18 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     // the applied forces along the pseudo-velocities, Wᵀ(∂V/∂q − Q + ∂R/∂q') with q' = W s (Hiller §4.3)
     GiNaC::exmap rates;
     for (std::size_t j = 0; j < n; ++j) rates[s.velocities[j]] = velocities.coordinate_rates[j];
-    add_rate_kinetic_energy(m, model, velocities, rates, tau);
+    std::vector<ex> projected(tau.size(), 0);
+    add_rate_kinetic_energy(m, model, velocities, rates, projected);
     for (std::size_t j = 0; j < n; ++j) {
       ex applied = (potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j])).subs(rates);
-      for (const auto& [c, w] : velocities.rate_matrix[j]) tau[c] += w * applied;
+      for (const auto& [c, w] : velocities.rate_matrix[j]) projected[c] += w * applied;
     }
+    for (std::size_t c = 0; c < tau.size(); ++c) tau[c] += projected[c];
     m.inverse_dynamics = tau;
+    if (!bodies_gradient) return;
+    m.applied_inverse_dynamics = projected;
+    m.bodies_gradient_coordinates = bodies_gradient->coordinates;
+    m.bodies_gradient_velocities = bodies_gradient->velocities;
     return;
   }
   std::vector<ex> applied(n);

@@ -59,8 +59,8 @@ struct Mechanics {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
-  /// A joint tree without ball and free joints: inverse_dynamics is the bodies' τ plus
-  /// applied_inverse_dynamics, and the bodies' ∂τ/∂q and ∂τ/∂q' are in closed form
+  /// A joint tree: inverse_dynamics is the bodies' τ plus applied_inverse_dynamics, and the
+  /// bodies' ∂τ/∂q and ∂τ/∂s are in closed form
   /// (spatial/joint_tree_derivatives.hpp), in acceleration_intermediates. Empty otherwise.
   std::vector<GiNaC::ex> applied_inverse_dynamics;
   GiNaC::matrix bodies_gradient_coordinates{0, 0}, bodies_gradient_velocities{0, 0};

@@ -62,12 +62,12 @@ class Gradient {
     std::size_t n = links.size();
     R_.resize(n, GiNaC::matrix(3, 3));
     origin_.resize(n);
-    S_.resize(n), v_.resize(n), a_.resize(n), dS_.resize(n), ddS_.resize(n);
+    S_.resize(n), v_.resize(n), a_.resize(n), still_v_.resize(n), still_a_.resize(n), turning_v_.resize(n);
     inertia_.resize(n), force_.resize(n), momentum_.resize(n);
     D_.resize(n, GiNaC::matrix(6, 6));
   }
 
-  // world poses, twists, accelerations and the links' own inertias, forces and B, parents first
+  // world poses, twists, accelerations and the links' own inertias, forces and D, parents first
   void forward(const Vector3& gravity, const std::vector<ex>& ddq) {
     Six rest, fall{{0, 0, 0}, eomgen::scaled(-1, gravity)};
     for (std::size_t i = 0; i < links_.size(); ++i) {
@@ -81,21 +81,33 @@ class Gradient {
         for (unsigned b = 0; b < 3; ++b)
           R_[i](a, b) = name(i, fmt::format("gR{}{}", a, b), R(a, b));
       origin_[i] = named(i, "go", root ? l.offset : origin_[p] + eomgen::times(R_[p], l.offset));
-      v_[i] = vp;
-      a_[i] = ap;
-      if (l.velocity >= 0) {
-        Vector3 s = eomgen::times(R_[i], l.axis);
-        S_[i] = named(i, "gS", Six{s, cross(origin_[i], s) + eomgen::times(R_[i], l.origin_velocity)});
-        v_[i] = named(i, "gv", vp + scaled(l.rate, S_[i]));
-        a_[i] = named(i, "ga", ap + scaled(ddq[std::size_t(l.velocity)], S_[i]) + scaled(l.rate, motion_cross(v_[i], S_[i])));
-        dS_[i] = named(i, "gdS", motion_cross(vp, S_[i]));
-        ddS_[i] = named(i, "gddS", motion_cross(ap, S_[i]) + motion_cross(vp, dS_[i]));
+      // v = v_λ + V_p + V_b and a = a_λ + Σ S s' + v × V_b + v_λ × V_p: the columns that turn with
+      // the link change as v × S, those that keep the parent's axes as v_λ × S
+      Six kept, turning, driven, kept_driven;
+      for (std::size_t c = 0; c < l.columns.size(); ++c) {
+        const TreeLink::Column& col = l.columns[c];
+        Vector3 s = eomgen::times(R_[i], col.axis);
+        std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
+        S_[i].push_back(named(i, "gS" + tag, Six{s, cross(origin_[i], s) + eomgen::times(R_[i], col.origin_velocity)}));
+        Six rate = scaled(col.rate, S_[i][c]), push = scaled(ddq[std::size_t(col.velocity)], S_[i][c]);
+        if (col.turns_with_link) turning = turning + rate;
+        else kept = kept + rate, kept_driven = kept_driven + push;
+        driven = driven + push;
+      }
+      turning_v_[i] = turning;
+      if (l.columns.empty()) {
+        v_[i] = vp, a_[i] = ap;
+      } else {
+        v_[i] = named(i, "gv", vp + kept + turning);
+        a_[i] = named(i, "ga", ap + driven + motion_cross(v_[i], turning) + motion_cross(vp, kept));
+        still_v_[i] = named(i, "gw", vp + kept);
+        still_a_[i] = named(i, "gW", ap + kept_driven + motion_cross(vp, kept));
       }
       own_inertia(i);
     }
   }
 
-  // composite inertias, forces and B, leaves first
+  // composite inertias, forces, momenta and D, leaves first
   void backward() {
     for (std::size_t i = links_.size(); i-- > 0;) {
       for (std::size_t c = i + 1; c < links_.size(); ++c) {
@@ -115,35 +127,71 @@ class Gradient {
     }
   }
 
-  InverseDynamicsGradient pairs(std::size_t n) {
-    InverseDynamicsGradient g{GiNaC::matrix(unsigned(n), unsigned(n)), GiNaC::matrix(unsigned(n), unsigned(n))};
-    std::vector<Six> IS(links_.size()), BS(links_.size()), G(links_.size()), H(links_.size());
-    for (std::size_t j = 0; j < links_.size(); ++j) {
-      if (links_[j].velocity < 0) continue;
-      // B^C x = D x + x ×* P, so B^C S = D S + S ×* P and B^Cᵀ S = D S − S ×* P
-      Six DS = named(j, "gDS", times(D_[j], S_[j])), SP = named(j, "gSP", force_cross(S_[j], momentum_[j]));
-      IS[j] = named(j, "gIS", apply(inertia_[j], S_[j]));
-      BS[j] = named(j, "gBS", DS + scaled(-1, SP));
-      G[j] = named(j, "gG", force_cross(S_[j], force_[j]) + apply(inertia_[j], ddS_[j]) + times(D_[j], dS_[j]) +
-                                force_cross(dS_[j], momentum_[j]));
-      H[j] = named(j, "gH", apply(inertia_[j], scaled(2, dS_[j])) + DS + SP);
-    }
-    for (std::size_t k = 0; k < links_.size(); ++k) {
-      if (links_[k].velocity < 0) continue;
-      unsigned row = unsigned(links_[k].velocity);
-      for (int j = int(k); j >= 0; j = links_[std::size_t(j)].parent) {
-        std::size_t at = std::size_t(j);
-        if (links_[at].velocity < 0) continue;
-        unsigned column = unsigned(links_[at].velocity);
-        // k carries j's joint (k in Φ_j)
-        g.coordinates(row, column) = (power(ddS_[at], IS[k]) + power(dS_[at], BS[k])).expand();
-        g.velocities(row, column) = (2 * power(dS_[at], IS[k]) + power(S_[at], BS[k])).expand();
-        if (at == k) continue;
-        // j above k: τ_j sees Φ_k's change through F_j only
-        g.coordinates(column, row) = power(S_[at], G[k]).expand();
-        g.velocities(column, row) = power(S_[at], H[k]).expand();
+  InverseDynamicsGradient pairs(std::size_t velocities, std::size_t coordinates) {
+    InverseDynamicsGradient g{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
+                              GiNaC::matrix(unsigned(velocities), unsigned(velocities))};
+    std::size_t n = links_.size();
+    // per column (a row of τ): I^C S and B^Cᵀ S = D S − S ×* P; per direction (a coordinate) Ψ',
+    // Ψ'' and G; per column as a direction (its velocity) A = (w + u) × S and H
+    std::vector<std::vector<Six>> IS(n), BS(n), dS(n), ddS(n), G(n), A(n), H(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const TreeLink& l = links_[j];
+      bool root = l.parent < 0;
+      Six rest, vp = root ? rest : v_[std::size_t(l.parent)];
+      for (std::size_t c = 0; c < l.columns.size(); ++c) {
+        const Six& S = S_[j][c];
+        std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
+        // B^C x = D x + x ×* P
+        Six DS = named(j, "gDS" + tag, times(D_[j], S)), SP = named(j, "gSP" + tag, force_cross(S, momentum_[j]));
+        IS[j].push_back(named(j, "gIS" + tag, apply(inertia_[j], S)));
+        BS[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
+        // A = (w + u) × S: for a turning column u = v_j = w + V_b, whose S × S part vanishes, so
+        // that a hinge has A = 2 v_λ × S
+        Six twice = scaled(2, motion_cross(still_v_[j], S));
+        if (!l.columns[c].turns_with_link) A[j].push_back(named(j, "gA" + tag, motion_cross(still_v_[j] + vp, S)));
+        else if (l.columns.size() == 1) A[j].push_back(named(j, "gA" + tag, twice));
+        else A[j].push_back(named(j, "gA" + tag, twice + motion_cross(turning_v_[j], S)));
+        H[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A[j][c]) + DS + SP));
+      }
+      for (std::size_t d = 0; d < l.directions.size(); ++d) {
+        Six T;
+        for (const auto& [c, weight] : l.directions[d].weights) T = T + scaled(weight, S_[j][c]);
+        std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
+        if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
+          T = named(j, "gT" + tag, T);
+        dS[j].push_back(named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
+        ddS[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS[j][d])));
+        G[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS[j][d]) +
+                                             times(D_[j], dS[j][d]) + force_cross(dS[j][d], momentum_[j])));
       }
     }
+    for (std::size_t k = 0; k < n; ++k)
+      for (int up = int(k); up >= 0; up = links_[std::size_t(up)].parent) {
+        std::size_t j = std::size_t(up);
+        // the directions of j in the rows of k, which j's joint carries (or k = j)
+        for (std::size_t r = 0; r < links_[k].columns.size(); ++r) {
+          const TreeLink::Column& row = links_[k].columns[r];
+          unsigned i = unsigned(row.velocity);
+          for (std::size_t d = 0; d < links_[j].directions.size(); ++d) {
+            unsigned q = unsigned(links_[j].directions[d].coordinate);
+            bool carried = j != k || row.turns_with_link;
+            g.coordinates(i, q) = (carried ? power(ddS[j][d], IS[k][r]) + power(dS[j][d], BS[k][r])
+                                           : power(S_[k][r], G[j][d])).expand();
+          }
+          for (std::size_t c = 0; c < links_[j].columns.size(); ++c)
+            g.velocities(i, unsigned(links_[j].columns[c].velocity)) =
+                (power(A[j][c], IS[k][r]) + power(S_[j][c], BS[k][r])).expand();
+        }
+        if (j == k) continue;
+        // the directions of k in the rows of j, above it: through F_j alone
+        for (std::size_t r = 0; r < links_[j].columns.size(); ++r) {
+          unsigned i = unsigned(links_[j].columns[r].velocity);
+          for (std::size_t d = 0; d < links_[k].directions.size(); ++d)
+            g.coordinates(i, unsigned(links_[k].directions[d].coordinate)) = power(S_[j][r], G[k][d]).expand();
+          for (std::size_t c = 0; c < links_[k].columns.size(); ++c)
+            g.velocities(i, unsigned(links_[k].columns[c].velocity)) = power(S_[j][r], H[k][c]).expand();
+        }
+      }
     return g;
   }
 
@@ -208,7 +256,10 @@ class Gradient {
   std::vector<Intermediate>& out_;
   std::vector<GiNaC::matrix> R_;
   std::vector<Vector3> origin_;
-  std::vector<Six> S_, v_, a_, dS_, ddS_;
+  std::vector<std::vector<Six>> S_;  // per column
+  std::vector<Six> v_, a_;
+  std::vector<Six> still_v_, still_a_;  // w and W: the joint's motion that its coordinates do not turn
+  std::vector<Six> turning_v_;          // V_b: the turning columns' part of the joint's velocity
   std::vector<SpatialInertia> inertia_;
   std::vector<Six> force_, momentum_;
   std::vector<GiNaC::matrix> D_;  // symmetric
@@ -217,11 +268,12 @@ class Gradient {
 }  // namespace
 
 InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
-                                            const std::vector<ex>& ddq, std::size_t n, std::vector<Intermediate>& out) {
+                                            const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
+                                            std::vector<Intermediate>& out) {
   Gradient g(links, out);
   g.forward(gravity, ddq);
   g.backward();
-  return g.pairs(n);
+  return g.pairs(velocities, coordinates);
 }
 
 }  // namespace eomgen

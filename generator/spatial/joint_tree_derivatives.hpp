@@ -15,6 +15,15 @@
 /// Per link a fixed cost; per pair of a joint and one it carries, two dot products of six-vectors
 /// (with I^C_k S_k and B^C_kᵀ S_k formed once per link), where the tangent sweep through the
 /// recursion in joint frames transports tangents of forces and moments for each pair.
+///
+/// A joint of several velocities (ball, free) has one S per velocity. Those that keep the parent's
+/// axes (a free joint's position) do not turn when the joint's coordinates change: with w = v_λ + V_p
+/// (V_p their part of the joint's velocity) and W = a_λ + A_p + v_λ × V_p (A_p = Σ S s' over them),
+/// a coordinate whose unit change is the twist T has Ψ' = w × T and Ψ'' = W × T + w × Ψ', and its
+/// own velocity c has 2Ψ' replaced by (w + u_c) × S_c, u_c = v_j for a turning column, v_λ for
+/// one that keeps the parent's axes; rows of the joint's own non-turning columns take the formula
+/// "above j" (for a hinge, w = v_λ, W = a_λ and T = S: the formulas above). A quaternion component's
+/// T is Σ_k Y_kc S_k over the turning columns, Y = ∂s/∂q' (spatial/joint_velocities.hpp).
 #pragma once
 
 #include <string>
@@ -27,16 +36,30 @@
 namespace eomgen {
 
 /// A link of the tree in its parent's joint frame (spatial/joint_tree_dynamics.hpp): its turn E
-/// (own components to the parent's), the offset r of its origin, its one joint's axis e and the
-/// origin's velocity u per unit rate (none for a fixed link), and its bodies in its own coordinates.
+/// (own components to the parent's), the offset r of its origin, its joint's velocities and the
+/// coordinates that move it, and its bodies in its own coordinates.
 struct TreeLink {
   std::string name;
   int parent = -1;
   GiNaC::matrix turn{3, 3};
   Vector3 offset{0, 0, 0};
-  int velocity = -1;  // the velocity (and coordinate) of its joint, −1 for a fixed link
-  GiNaC::ex rate = 0;
-  Vector3 axis{0, 0, 0}, origin_velocity{0, 0, 0};
+  /// One velocity of the joint: the link's ω (axis) and its origin's velocity per unit rate, in the
+  /// link's coordinates; `turns_with_link` unless it keeps the parent's axes (a free joint's position)
+  struct Column {
+    int velocity = -1;
+    GiNaC::ex rate = 0;
+    Vector3 axis{0, 0, 0}, origin_velocity{0, 0, 0};
+    bool turns_with_link = true;
+  };
+  std::vector<Column> columns;
+  /// A coordinate of the joint and the twist its unit change gives the link, as weights of the
+  /// columns: 1 on its own column (a hinge's angle, a slide's or free joint's position), or a
+  /// quaternion component's angular velocity per unit rate on the three turning columns
+  struct Direction {
+    int coordinate = -1;
+    std::vector<std::pair<std::size_t, GiNaC::ex>> weights;
+  };
+  std::vector<Direction> directions;
   struct Body {
     GiNaC::ex mass;
     Vector3 center;
@@ -46,14 +69,14 @@ struct TreeLink {
 };
 
 struct InverseDynamicsGradient {
-  GiNaC::matrix coordinates;  // ∂τ_i/∂q_j, n×n
-  GiNaC::matrix velocities;   // ∂τ_i/∂q'_j, n×n
+  GiNaC::matrix coordinates;  // ∂τ_i/∂q_j, velocities × coordinates
+  GiNaC::matrix velocities;   // ∂τ_i/∂s_j, velocities × velocities
 };
 
-/// The derivatives above, of τ at the accelerations `ddq`, for n coordinates each moving one link
-/// (links parents first); their quantities are appended to `out` as intermediates.
+/// The derivatives above, of τ at the accelerations `ddq`, for the tree's velocities and
+/// coordinates (links parents first); their quantities are appended to `out` as intermediates.
 InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
-                                            const std::vector<GiNaC::ex>& ddq, std::size_t n,
-                                            std::vector<Intermediate>& out);
+                                            const std::vector<GiNaC::ex>& ddq, std::size_t velocities,
+                                            std::size_t coordinates, std::vector<Intermediate>& out);
 
 }  // namespace eomgen

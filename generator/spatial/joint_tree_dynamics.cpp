@@ -195,21 +195,32 @@ class Tree {
     return M;
   }
 
-  // the links as the closed-form derivatives take them, for a tree of joints of one velocity each
+  // the links as the closed-form derivatives take them: each joint's velocities, and the twist of
+  // each of its coordinates (a quaternion component's through Y = ∂s/∂q' of the joint's ω)
   std::vector<TreeLink> layout() const {
     std::vector<TreeLink> out;
     for (std::size_t i = 0; i < links_.size(); ++i) {
+      const FrameLink::Joint& j = *model_.frame_links[i].joint;
       TreeLink t;
       t.name = name(i);
       t.parent = model_.frame_links[i].parent;
       t.turn = links_[i].E;
       t.offset = links_[i].r;
-      if (!links_[i].dofs.empty()) {
-        const Dof& d = links_[i].dofs.front();
-        t.velocity = d.velocity;
-        t.rate = d.rate;
-        t.axis = d.e;
-        t.origin_velocity = d.u;
+      for (const Dof& d : links_[i].dofs) t.columns.push_back({d.velocity, d.rate, d.e, d.u, d.fixed_in_frame});
+      if (j.coordinate >= 0) t.directions.push_back({j.coordinate, {{0, 1}}});
+      if (j.type == FrameLink::Joint::Type::free)
+        for (std::size_t k = 0; k < 3; ++k) t.directions.push_back({j.position[k], {{k, 1}}});
+      if (j.spherical()) {
+        std::size_t first_turning = j.type == FrameLink::Joint::Type::free ? 3 : 0;
+        for (int c : j.quaternion) {
+          TreeLink::Direction q{c, {}};
+          for (std::size_t k = 0; k < 3; ++k) {
+            const TreeLink::Column& turning = t.columns[first_turning + k];
+            ex y = velocities_.definitions[std::size_t(turning.velocity)].expression.diff(s_.velocities[std::size_t(c)]);
+            if (!y.is_zero()) q.weights.push_back({first_turning + k, y});
+          }
+          t.directions.push_back(q);
+        }
       }
       for (const Body& b : bodies_[i]) t.bodies.push_back({b.mass, b.center, b.inertia});
       out.push_back(t);
@@ -470,8 +481,8 @@ JointTreeDynamics joint_tree_dynamics(const Model& model, const JointVelocities&
   d.bias_forces = tree.inverse_dynamics(none, "0", intermediates);
   for (ex& f : d.bias_forces) f = -f;
   d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
-  if (!velocities.pseudo)
-    d.gradient = joint_tree_gradient(tree.layout(), model.gravity, ddq, velocities.symbols.size(), acceleration_intermediates);
+  d.gradient = joint_tree_gradient(tree.layout(), model.gravity, ddq, velocities.symbols.size(),
+                                   model.symbols.coordinates.size(), acceleration_intermediates);
   d.mass_matrix = tree.mass_matrix();
   d.kinetic_energy = tree.kinetic_energy();
   d.velocity_parents = velocity_parents(model, velocities);

@@ -39,8 +39,7 @@ struct JointTreeDynamics {
   std::vector<GiNaC::ex> inverse_dynamics;  // τ(q, s, s') of the bodies, in the acceleration symbols
   std::vector<int> velocity_parents;        // Equations::coordinate_parents, or empty
   GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
-  /// ∂τ/∂(q, q') of inverse_dynamics in closed form (spatial/joint_tree_derivatives.hpp), for a
-  /// tree without ball and free joints
+  /// ∂τ/∂q and ∂τ/∂s of inverse_dynamics in closed form (spatial/joint_tree_derivatives.hpp)
   std::optional<InverseDynamicsGradient> gradient;
 };
 
