@@ -1,6 +1,7 @@
 // MuJoCo as an independent oracle for rigid-body trees: the generated rhs of a model and
 // MuJoCo's mj_forward on the same robot written as MJCF (tests/crosscheck/mjcf/) give the
-// same accelerations at random states and controls, to 1e-12 of their size.
+// same accelerations at random states and controls, to 1e-12 of their size, and jacobian_state
+// agrees with central differences of MuJoCo's accelerations.
 // models/oblique_tree.toml: five joints about oblique axes through offset anchors, a
 // prismatic joint, a fixed frame, a placement given as a matrix, full inertia tensors,
 // armature, damping, a spring and a geared motor. models/measured_arm.toml: three joints with the
@@ -134,6 +135,66 @@ void expect_matches_mujoco(const std::string& file, int nq, int nv, int m, Rhs m
       int(eomgen::models::M::num_inputs), eomgen::models::M::rhs<double>)
 
 TEST(MujocoOracle, ObliqueJointsThroughOffsetAnchorsMatchMujoco) { EXPECT_MATCHES_MUJOCO(oblique_tree); }
+
+// jacobian_state's ∂q''/∂(q, q') against central differences of MuJoCo's qacc in every qpos entry
+// (MuJoCo turns by q/|q| as the header does, so a quaternion's raw components are directions too)
+// and every qvel entry, at random states and controls: the closed-form derivatives of the tree
+// recursions (the arm, the 21-joint tree, the quadruped) and the tangent sweep (the oblique tree)
+template <class Parameters, class Jacobian>
+void expect_jacobian_matches_mujoco(const std::string& file, int nq, int nv, int m, Jacobian model_jacobian) {
+  MujocoModel mj(mjcf(file));
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  mj.model->opt.disableflags |= mjDSBL_LIMIT | mjDSBL_CONTACT;
+  auto p = Parameters().values();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> control(-2.0, 2.0);
+  int n = nq + nv;
+  std::vector<double> x(static_cast<std::size_t>(n)), J(static_cast<std::size_t>(n * n)),
+      u(static_cast<std::size_t>(std::max(m, 1))), ahead(static_cast<std::size_t>(nv)), behind(static_cast<std::size_t>(nv));
+  double worst = 0;
+  for (int k = 0; k < 3; ++k) {
+    random_state(mj.model, random, mj.data->qpos, mj.data->qvel);
+    for (int i = 0; i < m; ++i) mj.data->ctrl[i] = u[std::size_t(i)] = control(random);
+    std::copy(mj.data->qpos, mj.data->qpos + nq, x.begin());
+    std::copy(mj.data->qvel, mj.data->qvel + nv, x.begin() + nq);
+    model_jacobian(0.0, x.data(), u.data(), p.data(), J.data());
+    double size = 0, difference = 0;
+    // mj_forward normalizes the quaternions of qpos in place: each evaluation starts from x
+    auto accelerations = [&](int j, double step, std::vector<double>& qacc) {
+      std::copy(x.begin(), x.begin() + nq, mj.data->qpos);
+      std::copy(x.begin() + nq, x.end(), mj.data->qvel);
+      (j < nq ? mj.data->qpos[j] : mj.data->qvel[j - nq]) += step;
+      mj_forward(mj.model, mj.data);
+      std::copy(mj.data->qacc, mj.data->qacc + nv, qacc.begin());
+    };
+    for (int j = 0; j < n; ++j) {
+      double h = 1e-6 * std::max(1.0, std::abs(x[std::size_t(j)]));
+      accelerations(j, h, ahead);
+      accelerations(j, -h, behind);
+      for (int i = 0; i < nv; ++i) {
+        double ours = J[std::size_t((nq + i) * n + j)], central = (ahead[std::size_t(i)] - behind[std::size_t(i)]) / (2 * h);
+        size = std::max(size, std::abs(ours));
+        difference = std::max(difference, std::abs(ours - central));
+      }
+    }
+    worst = std::max(worst, difference / size);
+  }
+  std::printf("%s: jacobian_state against MuJoCo's central differences: %.2g of its largest entry\n", file.c_str(), worst);
+  // central differences with h = 1e-6 are good to about 1e-9 of the entries
+  EXPECT_LT(worst, 1e-7);
+}
+
+#define EXPECT_JACOBIAN_MATCHES_MUJOCO(M)                                                                     \
+  expect_jacobian_matches_mujoco<eomgen::models::M::Parameters<double>>(                                     \
+      #M ".xml", int(eomgen::models::M::num_coordinates), int(eomgen::models::M::num_velocities),            \
+      int(eomgen::models::M::num_inputs), eomgen::models::M::jacobian_state<double>)
+
+TEST(MujocoOracle, JacobiansMatchMujocosDifferences) {
+  EXPECT_JACOBIAN_MATCHES_MUJOCO(seven_joint_arm);
+  EXPECT_JACOBIAN_MATCHES_MUJOCO(branched_tree);
+  EXPECT_JACOBIAN_MATCHES_MUJOCO(quadruped);
+  EXPECT_JACOBIAN_MATCHES_MUJOCO(oblique_tree);
+}
 
 // the robots of tests/crosscheck/models/: a 7-joint arm (a Panda's layout) and a humanoid-like
 // tree of 21 hinges about oblique axes through offset anchors, both joint trees
