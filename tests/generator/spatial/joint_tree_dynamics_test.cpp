@@ -121,18 +121,24 @@ Model built(const std::string& text) {
   return m;
 }
 
+// parameters, coordinates, their rates and the four accelerations ddq0…ddq3, by name
+std::map<std::string, double> random_point(const Equations& e, std::mt19937& random) {
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3), scale(0.5, 2);
+  std::map<std::string, double> values;
+  for (const std::string& p : e.symbols.parameter_names) values[p] = scale(random);
+  for (const std::string& q : e.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
+  for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
+  return values;
+}
+
 TEST(JointTree, RecursionsGiveTheExpandedEquations) {
   Model model = built(with("recursive"));
   ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
   Equations recursive = derive_text(with("recursive")), expanded = derive_text(with("expanded"));
   ASSERT_EQ(recursive.inverse_dynamics.size(), 4u);
   std::mt19937 random(5);
-  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3), scale(0.5, 2);
   for (int point = 0; point < 10; ++point) {
-    std::map<std::string, double> values;
-    for (const std::string& p : recursive.symbols.parameter_names) values[p] = scale(random);
-    for (const std::string& q : recursive.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
-    for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
+    std::map<std::string, double> values = random_point(recursive, random);
     GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
     auto near = [](double x, double y, const std::string& what) {
       EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
@@ -166,12 +172,8 @@ TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
     for (unsigned k = 0; k < 4; ++k) tau[j] += expanded.mass_matrix(j, k) * ddq[k];
   }
   std::mt19937 random(11);
-  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3), scale(0.5, 2);
   for (int point = 0; point < 6; ++point) {
-    std::map<std::string, double> values;
-    for (const std::string& p : recursive.symbols.parameter_names) values[p] = scale(random);
-    for (const std::string& q : recursive.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
-    for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
+    std::map<std::string, double> values = random_point(recursive, random);
     GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
     for (unsigned k = 0; k < 4; ++k) full[ddq[k]] = values.at(fmt::format("ddq{}", k));
     for (unsigned j = 0; j < 4; ++j)
