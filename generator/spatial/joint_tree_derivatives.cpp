@@ -127,13 +127,11 @@ class Gradient {
     }
   }
 
-  InverseDynamicsGradient pairs(std::size_t velocities, std::size_t coordinates) {
-    InverseDynamicsGradient g{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
-                              GiNaC::matrix(unsigned(velocities), unsigned(velocities))};
+  // per column (a row of τ): I^C S and B^Cᵀ S = D S − S ×* P; per direction (a coordinate) Ψ',
+  // Ψ'' and G; per column as a direction (its velocity) A = (w + u) × S and H
+  void joint_quantities() {
     std::size_t n = links_.size();
-    // per column (a row of τ): I^C S and B^Cᵀ S = D S − S ×* P; per direction (a coordinate) Ψ',
-    // Ψ'' and G; per column as a direction (its velocity) A = (w + u) × S and H
-    std::vector<std::vector<Six>> IS(n), BS(n), dS(n), ddS(n), G(n), A(n), H(n);
+    IS_.resize(n), BS_.resize(n), dS_.resize(n), ddS_.resize(n), G_.resize(n), A_.resize(n), H_.resize(n);
     for (std::size_t j = 0; j < n; ++j) {
       const TreeLink& l = links_[j];
       bool root = l.parent < 0;
@@ -143,15 +141,15 @@ class Gradient {
         std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
         // B^C x = D x + x ×* P
         Six DS = named(j, "gDS" + tag, times(D_[j], S)), SP = named(j, "gSP" + tag, force_cross(S, momentum_[j]));
-        IS[j].push_back(named(j, "gIS" + tag, apply(inertia_[j], S)));
-        BS[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
+        IS_[j].push_back(named(j, "gIS" + tag, apply(inertia_[j], S)));
+        BS_[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
         // A = (w + u) × S: for a turning column u = v_j = w + V_b, whose S × S part vanishes, so
         // that a hinge has A = 2 v_λ × S
         Six twice = scaled(2, motion_cross(still_v_[j], S));
-        if (!l.columns[c].turns_with_link) A[j].push_back(named(j, "gA" + tag, motion_cross(still_v_[j] + vp, S)));
-        else if (l.columns.size() == 1) A[j].push_back(named(j, "gA" + tag, twice));
-        else A[j].push_back(named(j, "gA" + tag, twice + motion_cross(turning_v_[j], S)));
-        H[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A[j][c]) + DS + SP));
+        if (!l.columns[c].turns_with_link) A_[j].push_back(named(j, "gA" + tag, motion_cross(still_v_[j] + vp, S)));
+        else if (l.columns.size() == 1) A_[j].push_back(named(j, "gA" + tag, twice));
+        else A_[j].push_back(named(j, "gA" + tag, twice + motion_cross(turning_v_[j], S)));
+        H_[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A_[j][c]) + DS + SP));
       }
       for (std::size_t d = 0; d < l.directions.size(); ++d) {
         Six T;
@@ -159,13 +157,19 @@ class Gradient {
         std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
         if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
           T = named(j, "gT" + tag, T);
-        dS[j].push_back(named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
-        ddS[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS[j][d])));
-        G[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS[j][d]) +
-                                             times(D_[j], dS[j][d]) + force_cross(dS[j][d], momentum_[j])));
+        dS_[j].push_back(named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
+        ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
+        G_[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS_[j][d]) +
+                                             times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
       }
     }
-    for (std::size_t k = 0; k < n; ++k)
+  }
+
+  // each pair of a link k and a link j at or above it: j's directions in k's rows, and k's in j's
+  InverseDynamicsGradient pairs(std::size_t velocities, std::size_t coordinates) const {
+    InverseDynamicsGradient g{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
+                              GiNaC::matrix(unsigned(velocities), unsigned(velocities))};
+    for (std::size_t k = 0; k < links_.size(); ++k)
       for (int up = int(k); up >= 0; up = links_[std::size_t(up)].parent) {
         std::size_t j = std::size_t(up);
         // the directions of j in the rows of k, which j's joint carries (or k = j)
@@ -175,21 +179,21 @@ class Gradient {
           for (std::size_t d = 0; d < links_[j].directions.size(); ++d) {
             unsigned q = unsigned(links_[j].directions[d].coordinate);
             bool carried = j != k || row.turns_with_link;
-            g.coordinates(i, q) = (carried ? power(ddS[j][d], IS[k][r]) + power(dS[j][d], BS[k][r])
-                                           : power(S_[k][r], G[j][d])).expand();
+            g.coordinates(i, q) = (carried ? power(ddS_[j][d], IS_[k][r]) + power(dS_[j][d], BS_[k][r])
+                                           : power(S_[k][r], G_[j][d])).expand();
           }
           for (std::size_t c = 0; c < links_[j].columns.size(); ++c)
             g.velocities(i, unsigned(links_[j].columns[c].velocity)) =
-                (power(A[j][c], IS[k][r]) + power(S_[j][c], BS[k][r])).expand();
+                (power(A_[j][c], IS_[k][r]) + power(S_[j][c], BS_[k][r])).expand();
         }
         if (j == k) continue;
         // the directions of k in the rows of j, above it: through F_j alone
         for (std::size_t r = 0; r < links_[j].columns.size(); ++r) {
           unsigned i = unsigned(links_[j].columns[r].velocity);
           for (std::size_t d = 0; d < links_[k].directions.size(); ++d)
-            g.coordinates(i, unsigned(links_[k].directions[d].coordinate)) = power(S_[j][r], G[k][d]).expand();
+            g.coordinates(i, unsigned(links_[k].directions[d].coordinate)) = power(S_[j][r], G_[k][d]).expand();
           for (std::size_t c = 0; c < links_[k].columns.size(); ++c)
-            g.velocities(i, unsigned(links_[k].columns[c].velocity)) = power(S_[j][r], H[k][c]).expand();
+            g.velocities(i, unsigned(links_[k].columns[c].velocity)) = power(S_[j][r], H_[k][c]).expand();
         }
       }
     return g;
@@ -263,6 +267,7 @@ class Gradient {
   std::vector<SpatialInertia> inertia_;
   std::vector<Six> force_, momentum_;
   std::vector<GiNaC::matrix> D_;  // symmetric
+  std::vector<std::vector<Six>> IS_, BS_, dS_, ddS_, G_, A_, H_;  // joint_quantities()
 };
 
 }  // namespace
@@ -273,6 +278,7 @@ InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, 
   Gradient g(links, out);
   g.forward(gravity, ddq);
   g.backward();
+  g.joint_quantities();
   return g.pairs(velocities, coordinates);
 }
 
