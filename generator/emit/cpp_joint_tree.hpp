@@ -1,0 +1,29 @@
+/// @file The generated header's functions for a tree whose τ = M q'' − f comes from the
+/// Newton–Euler recursion (recursive kinematics, joint trees): M and f written once
+/// (detail::mass_matrix_and_forcing), the factored accelerations that rhs and jacobian_state call,
+/// and ∂τ/∂(q, q', u) (detail::inverse_dynamics_gradient) by a tangent sweep or, for a joint tree,
+/// the bodies' part in closed form, whichever has fewer operations.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "derive/equations.hpp"
+#include "emit/cpp_body_writer.hpp"
+
+namespace eomgen {
+
+/// Recursive kinematics (equations.hpp): ∂τ/∂(q, q', u) of the Newton–Euler inverse dynamics at a
+/// given q'' is written once, for jacobian_state (q'' from the solve) and linearization (q'' = 0),
+/// and M and f once; false for the other models.
+bool uses_newton_euler_gradient(const Equations& e);
+/// q'' and the factors of M into local arrays ddq, L, D by detail::factored_accelerations.
+void call_factored_accelerations(BodyWriter& w, std::size_t n);
+
+/// detail::mass_matrix_and_forcing, detail::factored_accelerations and
+/// detail::inverse_dynamics_gradient; each "" for the other models.
+std::string mass_matrix_and_forcing_function(const Equations& e);
+std::string factored_accelerations_function(const Equations& e);
+std::string newton_euler_gradient_function(const Equations& e);
+
+}  // namespace eomgen
