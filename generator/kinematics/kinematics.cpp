@@ -171,6 +171,18 @@ ConstraintTerms constraint_terms(const Constraint& c, const Symbols& s, const Re
   return t;
 }
 
+// τ = the bodies' τ + the applied part; a joint tree keeps the two apart, for its bodies' closed-form
+// derivatives (Mechanics::applied_inverse_dynamics)
+void add_applied(Mechanics& m, std::vector<ex> tau, const std::vector<ex>& applied,
+                 const std::optional<InverseDynamicsGradient>& bodies_gradient) {
+  for (std::size_t j = 0; j < tau.size(); ++j) tau[j] += applied[j];
+  m.inverse_dynamics = tau;
+  if (!bodies_gradient) return;
+  m.applied_inverse_dynamics = applied;
+  m.bodies_gradient_coordinates = bodies_gradient->coordinates;
+  m.bodies_gradient_velocities = bodies_gradient->velocities;
+}
+
 // τ = M q'' − f with recursive kinematics (mechanics.hpp): the frames' Newton–Euler recursion, the
 // bodies outside the frames projected on their Jacobians, then the applied forces, [energy] and R
 void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics& frames, const std::vector<bool>& in_frame) {
@@ -218,18 +230,13 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     // the applied forces along the pseudo-velocities, Wᵀ(∂V/∂q − Q + ∂R/∂q') with q' = W s (Hiller §4.3)
     GiNaC::exmap rates;
     for (std::size_t j = 0; j < n; ++j) rates[s.velocities[j]] = velocities.coordinate_rates[j];
-    std::vector<ex> projected(tau.size(), 0);
-    add_rate_kinetic_energy(m, model, velocities, rates, projected);
+    std::vector<ex> applied(tau.size(), 0);
+    add_rate_kinetic_energy(m, model, velocities, rates, applied);
     for (std::size_t j = 0; j < n; ++j) {
-      ex applied = (potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j])).subs(rates);
-      for (const auto& [c, w] : velocities.rate_matrix[j]) projected[c] += w * applied;
+      ex force = (potential[j] - m.generalized_force[j] + m.dissipation.diff(s.velocities[j])).subs(rates);
+      for (const auto& [c, w] : velocities.rate_matrix[j]) applied[c] += w * force;
     }
-    for (std::size_t c = 0; c < tau.size(); ++c) tau[c] += projected[c];
-    m.inverse_dynamics = tau;
-    if (!bodies_gradient) return;
-    m.applied_inverse_dynamics = projected;
-    m.bodies_gradient_coordinates = bodies_gradient->coordinates;
-    m.bodies_gradient_velocities = bodies_gradient->velocities;
+    add_applied(m, tau, applied, bodies_gradient);
     return;
   }
   std::vector<ex> applied(n);
@@ -241,12 +248,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     applied[j] += p.diff(s.time) - model.kinetic.diff(s.coordinates[j]);
     for (std::size_t k = 0; k < n; ++k) applied[j] += p.diff(s.coordinates[k]) * s.velocities[k] + p.diff(s.velocities[k]) * ddq[k];
   }
-  for (std::size_t j = 0; j < n; ++j) tau[j] += applied[j];
-  m.inverse_dynamics = tau;
-  if (!bodies_gradient) return;
-  m.applied_inverse_dynamics = applied;
-  m.bodies_gradient_coordinates = bodies_gradient->coordinates;
-  m.bodies_gradient_velocities = bodies_gradient->velocities;
+  add_applied(m, tau, applied, bodies_gradient);
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include "symbolic/clamp.hpp"
-
 #include "symbolic/exact_double.hpp"
 
 namespace eomgen {

@@ -40,7 +40,7 @@ struct JointTreeDynamics {
   std::vector<int> velocity_parents;        // Equations::coordinate_parents, or empty
   GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
   /// ∂τ/∂q and ∂τ/∂s of inverse_dynamics in closed form (spatial/joint_tree_derivatives.hpp)
-  std::optional<InverseDynamicsGradient> gradient;
+  InverseDynamicsGradient gradient;
 };
 
 /// Why the model is not such a tree (for a note in the header), or nothing when it is.
