@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "emit/cpp_expression.hpp"
+#include "emit/statement_order.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/gradient.hpp"
 #include "symbolic/trig_expansion.hpp"
@@ -317,7 +318,7 @@ std::string BodyWriter::finish(const std::string& unused) {
   if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
   for (const auto& in : inputs_)
     if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
-  return head + with_named_constants(batched_trig_statements() + statements_);
+  return head + with_named_constants(batched_trig_statements() + in_order_of_use(statements_));
 }
 
 void BodyWriter::note(const ex& e) {
@@ -356,26 +357,6 @@ void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::
 std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
   return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
 }
-
-namespace {
-
-bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-template <class Visit>
-void for_each_identifier(const std::string& text, std::size_t from, std::size_t to, Visit visit) {
-  for (std::size_t i = from; i < to;) {
-    if (!is_identifier_char(text[i])) {
-      ++i;
-      continue;
-    }
-    std::size_t end = i;
-    while (end < to && is_identifier_char(text[end])) ++end;
-    if (!std::isdigit(static_cast<unsigned char>(text[i]))) visit(std::string_view(text).substr(i, end - i));
-    i = end;
-  }
-}
-
-}  // namespace
 
 std::string without_unused_locals(const std::string& body) {
   struct Line {
