@@ -123,6 +123,33 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[2] = b[2] - L[6]*b[0];
 }
 
+/// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[6], l1 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[2*m + c] - l1*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[7], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+  }
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -421,56 +448,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[25] = -(T(1)/T(2))*q_qy;
   J[26] = (T(1)/T(2))*q_qx;
   J[27] = (T(1)/T(2))*q_qw;
-  T column[3];
-  column[0] = -F[0];
-  column[1] = -F[7];
-  column[2] = -F[14];
-  detail::ldlt_solve(L, D, column);
-  J[28] = column[0];
-  J[35] = column[1];
-  J[42] = column[2];
-  column[0] = -F[1];
-  column[1] = -F[8];
-  column[2] = -F[15];
-  detail::ldlt_solve(L, D, column);
-  J[29] = column[0];
-  J[36] = column[1];
-  J[43] = column[2];
-  column[0] = -F[2];
-  column[1] = -F[9];
-  column[2] = -F[16];
-  detail::ldlt_solve(L, D, column);
-  J[30] = column[0];
-  J[37] = column[1];
-  J[44] = column[2];
-  column[0] = -F[3];
-  column[1] = -F[10];
-  column[2] = -F[17];
-  detail::ldlt_solve(L, D, column);
-  J[31] = column[0];
-  J[38] = column[1];
-  J[45] = column[2];
-  column[0] = -F[4];
-  column[1] = -F[11];
-  column[2] = -F[18];
-  detail::ldlt_solve(L, D, column);
-  J[32] = column[0];
-  J[39] = column[1];
-  J[46] = column[2];
-  column[0] = -F[5];
-  column[1] = -F[12];
-  column[2] = -F[19];
-  detail::ldlt_solve(L, D, column);
-  J[33] = column[0];
-  J[40] = column[1];
-  J[47] = column[2];
-  column[0] = -F[6];
-  column[1] = -F[13];
-  column[2] = -F[20];
-  detail::ldlt_solve(L, D, column);
-  J[34] = column[0];
-  J[41] = column[1];
-  J[48] = column[2];
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 7; ++j) J[(4 + i) * 7 + j] = -F[i * 7 + j];
+  detail::ldlt_solve_rows<7>(L, D, J + 28);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -161,6 +161,17 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0]/D[0];
 }
 
+/// As ldlt_solve, for the m columns of B (1xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  for (std::size_t i = 0; i < 1; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -256,13 +267,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c1 = cos_q_theta;
   J[0] = T(0);
   J[1] = T(1);
-  T column[1];
-  column[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c1*c1*p_Omega*p_Omega*p_m*p_r*p_r - c1*p_g*p_m*p_r;
-  detail::ldlt_solve(L, D, column);
-  J[2] = column[0];
-  column[0] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[3] = column[0];
+  J[2] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c1*c1*p_Omega*p_Omega*p_m*p_r*p_r - c1*p_g*p_m*p_r;
+  J[3] = T(0);
+  detail::ldlt_solve_rows<2>(L, D, J + 2);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -182,6 +182,33 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
 }
 
+/// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[6], l1 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[3], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -370,49 +397,25 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  T column[3];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[18] = column[0];
-  J[24] = column[1];
-  J[30] = column[2];
-  column[0] = T(0);
-  column[1] = -p_kf - p_kr;
-  column[2] = -c1*c3;
-  detail::ldlt_solve(L, D, column);
-  J[19] = column[0];
-  J[25] = column[1];
-  J[31] = column[2];
-  column[0] = T(0);
-  column[1] = -c0*c2*dq_theta - c1*c3;
-  column[2] = T(2)*c0*c3*c6*dq_theta + c0*c0*c4 + c0*c1*q_z - c0*c2*dq_z - c4*c5;
-  detail::ldlt_solve(L, D, column);
-  J[20] = column[0];
-  J[26] = column[1];
-  J[32] = column[2];
-  column[0] = -T(2)*dq_x*p_cw;
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[21] = column[0];
-  J[27] = column[1];
-  J[33] = column[2];
-  column[0] = T(0);
-  column[1] = -p_cf - p_cr;
-  column[2] = c7;
-  detail::ldlt_solve(L, D, column);
-  J[22] = column[0];
-  J[28] = column[1];
-  J[34] = column[2];
-  column[0] = T(0);
-  column[1] = c7;
-  column[2] = -c5*c6;
-  detail::ldlt_solve(L, D, column);
-  J[23] = column[0];
-  J[29] = column[1];
-  J[35] = column[2];
+  J[18] = T(0);
+  J[19] = T(0);
+  J[20] = T(0);
+  J[21] = -T(2)*dq_x*p_cw;
+  J[22] = T(0);
+  J[23] = T(0);
+  J[24] = T(0);
+  J[25] = -p_kf - p_kr;
+  J[26] = -c0*c2*dq_theta - c1*c3;
+  J[27] = T(0);
+  J[28] = -p_cf - p_cr;
+  J[29] = c7;
+  J[30] = T(0);
+  J[31] = -c1*c3;
+  J[32] = T(2)*c0*c3*c6*dq_theta + c0*c0*c4 + c0*c1*q_z - c0*c2*dq_z - c4*c5;
+  J[33] = T(0);
+  J[34] = c7;
+  J[35] = -c5*c6;
+  detail::ldlt_solve_rows<6>(L, D, J + 18);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -439,14 +442,10 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   B[0] = T(0);
   B[1] = T(0);
   B[2] = T(0);
-  T column[3];
-  column[0] = T(1);
-  column[1] = T(0);
-  column[2] = -p_h;
-  detail::ldlt_solve(L, D, column);
-  B[3] = column[0];
-  B[4] = column[1];
-  B[5] = column[2];
+  B[3] = T(1);
+  B[4] = T(0);
+  B[5] = -p_h;
+  detail::ldlt_solve_rows<1>(L, D, B + 3);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

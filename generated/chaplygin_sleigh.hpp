@@ -165,6 +165,25 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[2]*b[1];
 }
 
+/// As ldlt_solve, for the m columns of B (2xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[2];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[2];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -280,32 +299,17 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[12] = T(0);
   J[13] = T(0);
   J[14] = T(1);
-  T column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[15] = column[0];
-  J[20] = column[1];
-  column[0] = T(0);
-  column[1] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[16] = column[0];
-  J[21] = column[1];
-  column[0] = T(0);
-  column[1] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[17] = column[0];
-  J[22] = column[1];
-  column[0] = T(0);
-  column[1] = -p_a*p_m*s_w;
-  detail::ldlt_solve(L, D, column);
-  J[18] = column[0];
-  J[23] = column[1];
-  column[0] = T(2)*p_a*p_m*s_w;
-  column[1] = -p_a*p_m*s_v;
-  detail::ldlt_solve(L, D, column);
-  J[19] = column[0];
-  J[24] = column[1];
+  J[15] = T(0);
+  J[16] = T(0);
+  J[17] = T(0);
+  J[18] = T(0);
+  J[19] = T(2)*p_a*p_m*s_w;
+  J[20] = T(0);
+  J[21] = T(0);
+  J[22] = T(0);
+  J[23] = -p_a*p_m*s_w;
+  J[24] = -p_a*p_m*s_v;
+  detail::ldlt_solve_rows<5>(L, D, J + 15);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

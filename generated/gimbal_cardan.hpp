@@ -172,6 +172,33 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
 }
 
+/// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[6], l1 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[3], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -395,49 +422,25 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  T column[3];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[18] = column[0];
-  J[24] = column[1];
-  J[30] = column[2];
-  column[0] = T(2)*(c3*c6*c7*p_A + c3*c7*c9*p_B - c3*c7*p_C)*ddq[0] + T(4)*c0*c3*c5*c7*c8*dq_alpha*dq_gamma - c0*c3*c5*c8*dq_beta*dq_beta - c0*c5*c7*c8*ddq[1] - c1*c6*c7*dq_beta*dq_gamma - c10*c14*c9*dq_alpha*dq_beta + c10*c4*c9*dq_alpha*dq_beta + c11*c14*c6*dq_alpha*dq_beta - c11*c4*c6*dq_alpha*dq_beta + c14*dq_alpha*dq_beta*p_C + c2*c7*c9*dq_beta*dq_gamma - c3*ddq[2]*p_C + c3*u_Mz - c4*dq_alpha*dq_beta*p_C - c5*c7*u_Mx + c7*c8*u_My;
-  column[1] = -c0*c5*c7*c8*ddq[0] + c1*c7*c9*dq_alpha*dq_gamma - c12*c14*c6*dq_alpha*dq_alpha + c12*c4*c6*dq_alpha*dq_alpha + c13*c14*c9*dq_alpha*dq_alpha - c13*c4*c9*dq_alpha*dq_alpha - c2*c6*c7*dq_alpha*dq_gamma;
-  column[2] = -T(2)*c0*c3*c5*c7*c8*dq_alpha*dq_alpha + c0*c6*c7*dq_alpha*dq_beta - c0*c7*c9*dq_alpha*dq_beta - c3*ddq[0]*p_C + c7*dq_alpha*dq_beta*p_C;
-  detail::ldlt_solve(L, D, column);
-  J[19] = column[0];
-  J[25] = column[1];
-  J[31] = column[2];
-  column[0] = T(2)*(c4*c5*c8*p_A - c4*c5*c8*p_B)*ddq[0] - T(2)*c0*c4*c6*dq_alpha*dq_gamma + T(2)*c0*c4*c9*dq_alpha*dq_gamma - T(2)*c1*c3*c5*c8*dq_beta*dq_gamma + T(2)*c10*c3*c5*c7*c8*dq_alpha*dq_beta + T(2)*c11*c3*c5*c7*c8*dq_alpha*dq_beta - T(2)*c2*c3*c5*c8*dq_beta*dq_gamma - c0*c6*c7*dq_beta*dq_beta + c0*c7*c9*dq_beta*dq_beta - c15*ddq[1] - c3*c5*u_My - c3*c8*u_Mx;
-  column[1] = -T(2)*(c5*c8*p_A - c5*c8*p_B)*ddq[1] + T(2)*c0*c6*dq_beta*dq_gamma - T(2)*c0*c9*dq_beta*dq_gamma - T(2)*c1*c3*c5*c8*dq_alpha*dq_gamma - T(2)*c12*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c13*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c2*c3*c5*c8*dq_alpha*dq_gamma - c15*ddq[0] + c5*u_Mx - c8*u_My;
-  column[2] = T(4)*c0*c3*c5*c8*dq_alpha*dq_beta + c0*c4*c6*dq_alpha*dq_alpha - c0*c4*c9*dq_alpha*dq_alpha - c0*c6*dq_beta*dq_beta + c0*c9*dq_beta*dq_beta;
-  detail::ldlt_solve(L, D, column);
-  J[20] = column[0];
-  J[26] = column[1];
-  J[32] = column[2];
-  column[0] = -T(2)*c0*c4*c5*c8*dq_gamma + c10*c3*c7*c9*dq_beta - c11*c3*c6*c7*dq_beta - c3*c7*dq_beta*p_C;
-  column[1] = T(2)*c12*c3*c6*c7*dq_alpha - T(2)*c13*c3*c7*c9*dq_alpha - c1*c3*c9*dq_gamma + c2*c3*c6*dq_gamma;
-  column[2] = -c0*c3*c6*dq_beta + c0*c3*c9*dq_beta - c16 - c3*dq_beta*p_C;
-  detail::ldlt_solve(L, D, column);
-  J[21] = column[0];
-  J[27] = column[1];
-  J[33] = column[2];
-  column[0] = -T(2)*c0*c5*c7*c8*dq_beta + c1*c3*c6*dq_gamma + c10*c3*c7*c9*dq_alpha - c11*c3*c6*c7*dq_alpha - c2*c3*c9*dq_gamma - c3*c7*dq_alpha*p_C;
-  column[1] = T(2)*c0*c5*c8*dq_gamma;
-  column[2] = -c0*c3*c6*dq_alpha + c0*c3*c9*dq_alpha - c17 - c3*dq_alpha*p_C;
-  detail::ldlt_solve(L, D, column);
-  J[22] = column[0];
-  J[28] = column[1];
-  J[34] = column[2];
-  column[0] = c1*c3*c6*dq_beta + c16 - c2*c3*c9*dq_beta;
-  column[1] = -c1*c3*c9*dq_alpha + c17 + c2*c3*c6*dq_alpha;
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[23] = column[0];
-  J[29] = column[1];
-  J[35] = column[2];
+  J[18] = T(0);
+  J[19] = T(2)*(c3*c6*c7*p_A + c3*c7*c9*p_B - c3*c7*p_C)*ddq[0] + T(4)*c0*c3*c5*c7*c8*dq_alpha*dq_gamma - c0*c3*c5*c8*dq_beta*dq_beta - c0*c5*c7*c8*ddq[1] - c1*c6*c7*dq_beta*dq_gamma - c10*c14*c9*dq_alpha*dq_beta + c10*c4*c9*dq_alpha*dq_beta + c11*c14*c6*dq_alpha*dq_beta - c11*c4*c6*dq_alpha*dq_beta + c14*dq_alpha*dq_beta*p_C + c2*c7*c9*dq_beta*dq_gamma - c3*ddq[2]*p_C + c3*u_Mz - c4*dq_alpha*dq_beta*p_C - c5*c7*u_Mx + c7*c8*u_My;
+  J[20] = T(2)*(c4*c5*c8*p_A - c4*c5*c8*p_B)*ddq[0] - T(2)*c0*c4*c6*dq_alpha*dq_gamma + T(2)*c0*c4*c9*dq_alpha*dq_gamma - T(2)*c1*c3*c5*c8*dq_beta*dq_gamma + T(2)*c10*c3*c5*c7*c8*dq_alpha*dq_beta + T(2)*c11*c3*c5*c7*c8*dq_alpha*dq_beta - T(2)*c2*c3*c5*c8*dq_beta*dq_gamma - c0*c6*c7*dq_beta*dq_beta + c0*c7*c9*dq_beta*dq_beta - c15*ddq[1] - c3*c5*u_My - c3*c8*u_Mx;
+  J[21] = -T(2)*c0*c4*c5*c8*dq_gamma + c10*c3*c7*c9*dq_beta - c11*c3*c6*c7*dq_beta - c3*c7*dq_beta*p_C;
+  J[22] = -T(2)*c0*c5*c7*c8*dq_beta + c1*c3*c6*dq_gamma + c10*c3*c7*c9*dq_alpha - c11*c3*c6*c7*dq_alpha - c2*c3*c9*dq_gamma - c3*c7*dq_alpha*p_C;
+  J[23] = c1*c3*c6*dq_beta + c16 - c2*c3*c9*dq_beta;
+  J[24] = T(0);
+  J[25] = -c0*c5*c7*c8*ddq[0] + c1*c7*c9*dq_alpha*dq_gamma - c12*c14*c6*dq_alpha*dq_alpha + c12*c4*c6*dq_alpha*dq_alpha + c13*c14*c9*dq_alpha*dq_alpha - c13*c4*c9*dq_alpha*dq_alpha - c2*c6*c7*dq_alpha*dq_gamma;
+  J[26] = -T(2)*(c5*c8*p_A - c5*c8*p_B)*ddq[1] + T(2)*c0*c6*dq_beta*dq_gamma - T(2)*c0*c9*dq_beta*dq_gamma - T(2)*c1*c3*c5*c8*dq_alpha*dq_gamma - T(2)*c12*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c13*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c2*c3*c5*c8*dq_alpha*dq_gamma - c15*ddq[0] + c5*u_Mx - c8*u_My;
+  J[27] = T(2)*c12*c3*c6*c7*dq_alpha - T(2)*c13*c3*c7*c9*dq_alpha - c1*c3*c9*dq_gamma + c2*c3*c6*dq_gamma;
+  J[28] = T(2)*c0*c5*c8*dq_gamma;
+  J[29] = -c1*c3*c9*dq_alpha + c17 + c2*c3*c6*dq_alpha;
+  J[30] = T(0);
+  J[31] = -T(2)*c0*c3*c5*c7*c8*dq_alpha*dq_alpha + c0*c6*c7*dq_alpha*dq_beta - c0*c7*c9*dq_alpha*dq_beta - c3*ddq[0]*p_C + c7*dq_alpha*dq_beta*p_C;
+  J[32] = T(4)*c0*c3*c5*c8*dq_alpha*dq_beta + c0*c4*c6*dq_alpha*dq_alpha - c0*c4*c9*dq_alpha*dq_alpha - c0*c6*dq_beta*dq_beta + c0*c9*dq_beta*dq_beta;
+  J[33] = -c0*c3*c6*dq_beta + c0*c3*c9*dq_beta - c16 - c3*dq_beta*p_C;
+  J[34] = -c0*c3*c6*dq_alpha + c0*c3*c9*dq_alpha - c17 - c3*dq_alpha*p_C;
+  J[35] = T(0);
+  detail::ldlt_solve_rows<6>(L, D, J + 18);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -489,28 +492,16 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   B[6] = T(0);
   B[7] = T(0);
   B[8] = T(0);
-  T column[3];
-  column[0] = c0*c2;
-  column[1] = c5;
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  B[9] = column[0];
-  B[12] = column[1];
-  B[15] = column[2];
-  column[0] = -c0*c5;
-  column[1] = c2;
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  B[10] = column[0];
-  B[13] = column[1];
-  B[16] = column[2];
-  column[0] = c4;
-  column[1] = T(0);
-  column[2] = T(1);
-  detail::ldlt_solve(L, D, column);
-  B[11] = column[0];
-  B[14] = column[1];
-  B[17] = column[2];
+  B[9] = c0*c2;
+  B[10] = -c0*c5;
+  B[11] = c4;
+  B[12] = c5;
+  B[13] = c2;
+  B[14] = T(0);
+  B[15] = T(0);
+  B[16] = T(0);
+  B[17] = T(1);
+  detail::ldlt_solve_rows<3>(L, D, B + 9);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

@@ -188,6 +188,33 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
 }
 
+/// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[6], l1 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[3], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+  }
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -935,49 +962,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  T column[3];
-  column[0] = -F[0];
-  column[1] = -F[9];
-  column[2] = -F[18];
-  detail::ldlt_solve(L, D, column);
-  J[18] = column[0];
-  J[24] = column[1];
-  J[30] = column[2];
-  column[0] = -F[1];
-  column[1] = -F[10];
-  column[2] = -F[19];
-  detail::ldlt_solve(L, D, column);
-  J[19] = column[0];
-  J[25] = column[1];
-  J[31] = column[2];
-  column[0] = -F[2];
-  column[1] = -F[11];
-  column[2] = -F[20];
-  detail::ldlt_solve(L, D, column);
-  J[20] = column[0];
-  J[26] = column[1];
-  J[32] = column[2];
-  column[0] = -F[3];
-  column[1] = -F[12];
-  column[2] = -F[21];
-  detail::ldlt_solve(L, D, column);
-  J[21] = column[0];
-  J[27] = column[1];
-  J[33] = column[2];
-  column[0] = -F[4];
-  column[1] = -F[13];
-  column[2] = -F[22];
-  detail::ldlt_solve(L, D, column);
-  J[22] = column[0];
-  J[28] = column[1];
-  J[34] = column[2];
-  column[0] = -F[5];
-  column[1] = -F[14];
-  column[2] = -F[23];
-  detail::ldlt_solve(L, D, column);
-  J[23] = column[0];
-  J[29] = column[1];
-  J[35] = column[2];
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 6; ++j) J[(3 + i) * 6 + j] = -F[i * 9 + j];
+  detail::ldlt_solve_rows<6>(L, D, J + 18);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -999,28 +986,16 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   B[6] = T(0);
   B[7] = T(0);
   B[8] = T(0);
-  T column[3];
-  column[0] = T(1);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  B[9] = column[0];
-  B[12] = column[1];
-  B[15] = column[2];
-  column[0] = T(0);
-  column[1] = T(1);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  B[10] = column[0];
-  B[13] = column[1];
-  B[16] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(1);
-  detail::ldlt_solve(L, D, column);
-  B[11] = column[0];
-  B[14] = column[1];
-  B[17] = column[2];
+  B[9] = T(1);
+  B[10] = T(0);
+  B[11] = T(0);
+  B[12] = T(0);
+  B[13] = T(1);
+  B[14] = T(0);
+  B[15] = T(0);
+  B[16] = T(0);
+  B[17] = T(1);
+  detail::ldlt_solve_rows<3>(L, D, B + 9);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

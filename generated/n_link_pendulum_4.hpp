@@ -184,6 +184,41 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[4]*b[1] - L[8]*b[2] - L[12]*b[3];
 }
 
+/// As ldlt_solve, for the m columns of B (4xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[4];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[8], l1 = L[9];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  {
+    const T l0 = L[12], l1 = L[13], l2 = L[14];
+    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[14];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c];
+  }
+  {
+    const T l0 = L[9], l1 = L[13];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c];
+  }
+  {
+    const T l0 = L[4], l1 = L[8], l2 = L[12];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -527,79 +562,39 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[29] = T(0);
   J[30] = T(0);
   J[31] = T(1);
-  T column[4];
-  column[0] = -c18 - c19 - c2*c6*p_g*p_l1 - c20 - c22 - c23 - c25;
-  column[1] = c26 + c27;
-  column[2] = -c0*c13*ddq[0]*p_l1*p_l3 + c0*c17*dq_phi1*dq_phi1*p_l1*p_l3;
-  column[3] = -c12*ddq[0]*p_l1*p_l4*p_m4 + c24*dq_phi1*dq_phi1*p_l1*p_l4*p_m4;
-  detail::ldlt_solve(L, D, column);
-  J[32] = column[0];
-  J[40] = column[1];
-  J[48] = column[2];
-  J[56] = column[3];
-  column[0] = c20 + c22;
-  column[1] = -c1*c5*p_g*p_l2 - c26 - c27 - c29 - c30 - c31 - c33;
-  column[2] = c34 + c35;
-  column[3] = c14*ddq[1]*p_l2*p_l4*p_m4 + c32*dq_phi2*dq_phi2*p_l2*p_l4*p_m4;
-  detail::ldlt_solve(L, D, column);
-  J[33] = column[0];
-  J[41] = column[1];
-  J[49] = column[2];
-  J[57] = column[3];
-  column[0] = c18 + c19;
-  column[1] = c29 + c30;
-  column[2] = c0*c13*ddq[0]*p_l1*p_l3 - c0*c17*dq_phi1*dq_phi1*p_l1*p_l3 - c0*c8*p_g*p_l3 - c34 - c35 - c37 - c38;
-  column[3] = -c39 - c40;
-  detail::ldlt_solve(L, D, column);
-  J[34] = column[0];
-  J[42] = column[1];
-  J[50] = column[2];
-  J[58] = column[3];
-  column[0] = c23 + c25;
-  column[1] = c31 + c33;
-  column[2] = c37 + c38;
-  column[3] = -c10*p_g*p_l4*p_m4 + c12*ddq[0]*p_l1*p_l4*p_m4 - c14*ddq[1]*p_l2*p_l4*p_m4 - c24*dq_phi1*dq_phi1*p_l1*p_l4*p_m4 - c32*dq_phi2*dq_phi2*p_l2*p_l4*p_m4 + c39 + c40;
-  detail::ldlt_solve(L, D, column);
-  J[35] = column[0];
-  J[43] = column[1];
-  J[51] = column[2];
-  J[59] = column[3];
-  column[0] = T(0);
-  column[1] = -T(2)*c1*c11*dq_phi1*p_l1*p_l2;
-  column[2] = -T(2)*c0*c13*dq_phi1*p_l1*p_l3;
-  column[3] = -T(2)*c12*dq_phi1*p_l1*p_l4*p_m4;
-  detail::ldlt_solve(L, D, column);
-  J[36] = column[0];
-  J[44] = column[1];
-  J[52] = column[2];
-  J[60] = column[3];
-  column[0] = T(2)*c1*c11*dq_phi2*p_l1*p_l2;
-  column[1] = T(0);
-  column[2] = T(2)*c0*c15*dq_phi2*p_l2*p_l3;
-  column[3] = T(2)*c14*dq_phi2*p_l2*p_l4*p_m4;
-  detail::ldlt_solve(L, D, column);
-  J[37] = column[0];
-  J[45] = column[1];
-  J[53] = column[2];
-  J[61] = column[3];
-  column[0] = T(2)*c0*c13*dq_phi3*p_l1*p_l3;
-  column[1] = -T(2)*c0*c15*dq_phi3*p_l2*p_l3;
-  column[2] = T(0);
-  column[3] = -T(2)*c16*dq_phi3*p_l3*p_l4*p_m4;
-  detail::ldlt_solve(L, D, column);
-  J[38] = column[0];
-  J[46] = column[1];
-  J[54] = column[2];
-  J[62] = column[3];
-  column[0] = T(2)*c12*dq_phi4*p_l1*p_l4*p_m4;
-  column[1] = -T(2)*c14*dq_phi4*p_l2*p_l4*p_m4;
-  column[2] = T(2)*c16*dq_phi4*p_l3*p_l4*p_m4;
-  column[3] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[39] = column[0];
-  J[47] = column[1];
-  J[55] = column[2];
-  J[63] = column[3];
+  J[32] = -c18 - c19 - c2*c6*p_g*p_l1 - c20 - c22 - c23 - c25;
+  J[33] = c20 + c22;
+  J[34] = c18 + c19;
+  J[35] = c23 + c25;
+  J[36] = T(0);
+  J[37] = T(2)*c1*c11*dq_phi2*p_l1*p_l2;
+  J[38] = T(2)*c0*c13*dq_phi3*p_l1*p_l3;
+  J[39] = T(2)*c12*dq_phi4*p_l1*p_l4*p_m4;
+  J[40] = c26 + c27;
+  J[41] = -c1*c5*p_g*p_l2 - c26 - c27 - c29 - c30 - c31 - c33;
+  J[42] = c29 + c30;
+  J[43] = c31 + c33;
+  J[44] = -T(2)*c1*c11*dq_phi1*p_l1*p_l2;
+  J[45] = T(0);
+  J[46] = -T(2)*c0*c15*dq_phi3*p_l2*p_l3;
+  J[47] = -T(2)*c14*dq_phi4*p_l2*p_l4*p_m4;
+  J[48] = -c0*c13*ddq[0]*p_l1*p_l3 + c0*c17*dq_phi1*dq_phi1*p_l1*p_l3;
+  J[49] = c34 + c35;
+  J[50] = c0*c13*ddq[0]*p_l1*p_l3 - c0*c17*dq_phi1*dq_phi1*p_l1*p_l3 - c0*c8*p_g*p_l3 - c34 - c35 - c37 - c38;
+  J[51] = c37 + c38;
+  J[52] = -T(2)*c0*c13*dq_phi1*p_l1*p_l3;
+  J[53] = T(2)*c0*c15*dq_phi2*p_l2*p_l3;
+  J[54] = T(0);
+  J[55] = T(2)*c16*dq_phi4*p_l3*p_l4*p_m4;
+  J[56] = -c12*ddq[0]*p_l1*p_l4*p_m4 + c24*dq_phi1*dq_phi1*p_l1*p_l4*p_m4;
+  J[57] = c14*ddq[1]*p_l2*p_l4*p_m4 + c32*dq_phi2*dq_phi2*p_l2*p_l4*p_m4;
+  J[58] = -c39 - c40;
+  J[59] = -c10*p_g*p_l4*p_m4 + c12*ddq[0]*p_l1*p_l4*p_m4 - c14*ddq[1]*p_l2*p_l4*p_m4 - c24*dq_phi1*dq_phi1*p_l1*p_l4*p_m4 - c32*dq_phi2*dq_phi2*p_l2*p_l4*p_m4 + c39 + c40;
+  J[60] = -T(2)*c12*dq_phi1*p_l1*p_l4*p_m4;
+  J[61] = T(2)*c14*dq_phi2*p_l2*p_l4*p_m4;
+  J[62] = -T(2)*c16*dq_phi3*p_l3*p_l4*p_m4;
+  J[63] = T(0);
+  detail::ldlt_solve_rows<8>(L, D, J + 32);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

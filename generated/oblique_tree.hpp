@@ -237,6 +237,45 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[4] = b[4] - L[20]*b[0];
 }
 
+/// As ldlt_solve, for the m columns of B (5xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[23];
+    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[4*m + c];
+  }
+  {
+    const T l0 = L[11];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[20], l1 = L[15], l2 = L[10], l3 = L[5];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 5; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[5];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[11], l1 = L[10];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+  }
+  {
+    const T l0 = L[15];
+    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[23], l1 = L[20];
+    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[0*m + c];
+  }
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -1645,117 +1684,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[47] = T(0);
   J[48] = T(0);
   J[49] = T(1);
-  T column[5];
-  column[0] = -F[0];
-  column[1] = -F[11];
-  column[2] = -F[22];
-  column[3] = -F[33];
-  column[4] = -F[44];
-  detail::ldlt_solve(L, D, column);
-  J[50] = column[0];
-  J[60] = column[1];
-  J[70] = column[2];
-  J[80] = column[3];
-  J[90] = column[4];
-  column[0] = -F[1];
-  column[1] = -F[12];
-  column[2] = -F[23];
-  column[3] = -F[34];
-  column[4] = -F[45];
-  detail::ldlt_solve(L, D, column);
-  J[51] = column[0];
-  J[61] = column[1];
-  J[71] = column[2];
-  J[81] = column[3];
-  J[91] = column[4];
-  column[0] = -F[2];
-  column[1] = -F[13];
-  column[2] = -F[24];
-  column[3] = -F[35];
-  column[4] = -F[46];
-  detail::ldlt_solve(L, D, column);
-  J[52] = column[0];
-  J[62] = column[1];
-  J[72] = column[2];
-  J[82] = column[3];
-  J[92] = column[4];
-  column[0] = -F[3];
-  column[1] = -F[14];
-  column[2] = -F[25];
-  column[3] = -F[36];
-  column[4] = -F[47];
-  detail::ldlt_solve(L, D, column);
-  J[53] = column[0];
-  J[63] = column[1];
-  J[73] = column[2];
-  J[83] = column[3];
-  J[93] = column[4];
-  column[0] = -F[4];
-  column[1] = -F[15];
-  column[2] = -F[26];
-  column[3] = -F[37];
-  column[4] = -F[48];
-  detail::ldlt_solve(L, D, column);
-  J[54] = column[0];
-  J[64] = column[1];
-  J[74] = column[2];
-  J[84] = column[3];
-  J[94] = column[4];
-  column[0] = -F[5];
-  column[1] = -F[16];
-  column[2] = -F[27];
-  column[3] = -F[38];
-  column[4] = -F[49];
-  detail::ldlt_solve(L, D, column);
-  J[55] = column[0];
-  J[65] = column[1];
-  J[75] = column[2];
-  J[85] = column[3];
-  J[95] = column[4];
-  column[0] = -F[6];
-  column[1] = -F[17];
-  column[2] = -F[28];
-  column[3] = -F[39];
-  column[4] = -F[50];
-  detail::ldlt_solve(L, D, column);
-  J[56] = column[0];
-  J[66] = column[1];
-  J[76] = column[2];
-  J[86] = column[3];
-  J[96] = column[4];
-  column[0] = -F[7];
-  column[1] = -F[18];
-  column[2] = -F[29];
-  column[3] = -F[40];
-  column[4] = -F[51];
-  detail::ldlt_solve(L, D, column);
-  J[57] = column[0];
-  J[67] = column[1];
-  J[77] = column[2];
-  J[87] = column[3];
-  J[97] = column[4];
-  column[0] = -F[8];
-  column[1] = -F[19];
-  column[2] = -F[30];
-  column[3] = -F[41];
-  column[4] = -F[52];
-  detail::ldlt_solve(L, D, column);
-  J[58] = column[0];
-  J[68] = column[1];
-  J[78] = column[2];
-  J[88] = column[3];
-  J[98] = column[4];
-  column[0] = -F[9];
-  column[1] = -F[20];
-  column[2] = -F[31];
-  column[3] = -F[42];
-  column[4] = -F[53];
-  detail::ldlt_solve(L, D, column);
-  J[59] = column[0];
-  J[69] = column[1];
-  J[79] = column[2];
-  J[89] = column[3];
-  J[99] = column[4];
+  for (std::size_t i = 0; i < 5; ++i)
+    for (std::size_t j = 0; j < 10; ++j) J[(5 + i) * 10 + j] = -F[i * 11 + j];
+  detail::ldlt_solve_rows<10>(L, D, J + 50);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -1773,18 +1704,12 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   B[2] = T(0);
   B[3] = T(0);
   B[4] = T(0);
-  T column[5];
-  column[0] = T(0);
-  column[1] = T(2);
-  column[2] = T(0);
-  column[3] = T(0);
-  column[4] = T(0);
-  detail::ldlt_solve(L, D, column);
-  B[5] = column[0];
-  B[6] = column[1];
-  B[7] = column[2];
-  B[8] = column[3];
-  B[9] = column[4];
+  B[5] = T(0);
+  B[6] = T(2);
+  B[7] = T(0);
+  B[8] = T(0);
+  B[9] = T(0);
+  detail::ldlt_solve_rows<1>(L, D, B + 5);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

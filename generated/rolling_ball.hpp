@@ -170,6 +170,33 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
 }
 
+/// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[6], l1 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[3], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -345,63 +372,31 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[37] = T(0);
   J[38] = -c2*c5;
   J[39] = c2*c4;
-  T column[3];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[40] = column[0];
-  J[48] = column[1];
-  J[56] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[41] = column[0];
-  J[49] = column[1];
-  J[57] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[42] = column[0];
-  J[50] = column[1];
-  J[58] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[43] = column[0];
-  J[51] = column[1];
-  J[59] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[44] = column[0];
-  J[52] = column[1];
-  J[60] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[45] = column[0];
-  J[53] = column[1];
-  J[61] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[46] = column[0];
-  J[54] = column[1];
-  J[62] = column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[47] = column[0];
-  J[55] = column[1];
-  J[63] = column[2];
+  J[40] = T(0);
+  J[41] = T(0);
+  J[42] = T(0);
+  J[43] = T(0);
+  J[44] = T(0);
+  J[45] = T(0);
+  J[46] = T(0);
+  J[47] = T(0);
+  J[48] = T(0);
+  J[49] = T(0);
+  J[50] = T(0);
+  J[51] = T(0);
+  J[52] = T(0);
+  J[53] = T(0);
+  J[54] = T(0);
+  J[55] = T(0);
+  J[56] = T(0);
+  J[57] = T(0);
+  J[58] = T(0);
+  J[59] = T(0);
+  J[60] = T(0);
+  J[61] = T(0);
+  J[62] = T(0);
+  J[63] = T(0);
+  detail::ldlt_solve_rows<8>(L, D, J + 40);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

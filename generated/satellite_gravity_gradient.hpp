@@ -173,6 +173,33 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
 }
 
+/// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[6], l1 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+  }
+  {
+    const T l0 = L[3], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -429,49 +456,25 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  T column[3];
-  column[0] = T(16)*c0*c11*c13*c14*c5*c9*p_Omega*p_Omega - T(2)*c0*c11*c13*c5*c9*dq_theta*p_Omega + T(2)*c0*c11*c14*c5*c7*c9*dq_psi*p_Omega - T(4)*c10*c12*c15*p_A*p_Omega*p_Omega + T(4)*c10*c12*c16*p_A*p_Omega*p_Omega + T(4)*c10*c15*p_B*p_Omega*p_Omega - T(4)*c10*c16*p_B*p_Omega*p_Omega - T(4)*c12*c15*c6*p_B*p_Omega*p_Omega + T(4)*c12*c16*c6*p_B*p_Omega*p_Omega + T(4)*c15*c6*p_A*p_Omega*p_Omega - T(4)*c15*c8*p_C*p_Omega*p_Omega - T(4)*c16*c6*p_A*p_Omega*p_Omega + T(4)*c16*c8*p_C*p_Omega*p_Omega + c0*c10*c12*c14*dq_theta*p_Omega + c0*c10*c13*c7*dq_psi*p_Omega - c0*c12*c14*c6*dq_theta*p_Omega - c0*c13*c6*c7*dq_psi*p_Omega + c12*c14*dq_theta*p_C*p_Omega - c13*c7*dq_psi*p_C*p_Omega + c14*c17*c8*dq_theta*p_Omega;
-  column[1] = T(2)*c0*c11*c13*c5*c9*dq_phi*p_Omega + T(2)*c0*c13*c5*c9*dq_psi*p_Omega - T(2)*c1*c10*c11*c13*c14*c7*p_Omega*p_Omega + T(2)*c11*c13*c14*c2*c6*c7*p_Omega*p_Omega + T(6)*c10*c11*c13*c14*c7*p_A*p_Omega*p_Omega + T(6)*c11*c13*c14*c6*c7*p_B*p_Omega*p_Omega - T(6)*c11*c13*c14*c7*p_C*p_Omega*p_Omega - c1*c10*c12*c14*dq_phi*p_Omega + c1*c10*c14*c8*dq_phi*p_Omega - c10*c11*c14*c4*dq_psi*p_Omega - c10*c14*dq_phi*p_B*p_Omega + c11*c14*c3*c6*dq_psi*p_Omega + c12*c14*c2*c6*dq_phi*p_Omega - c14*c2*c6*c8*dq_phi*p_Omega - c14*c6*dq_phi*p_A*p_Omega + c18 + c19;
-  column[2] = -T(2)*c0*c11*c14*c5*c7*c9*dq_phi*p_Omega - T(2)*c0*c13*c5*c9*dq_theta*p_Omega + T(8)*c0*c12*c13*c14*c5*c9*p_Omega*p_Omega + T(8)*c0*c13*c14*c5*c9*p_Omega*p_Omega + c0*c10*c11*c14*dq_theta*p_Omega - c0*c10*c13*c7*dq_phi*p_Omega - c0*c11*c14*c6*dq_theta*p_Omega + c0*c13*c6*c7*dq_phi*p_Omega + c11*c14*dq_theta*p_C*p_Omega + c13*c7*dq_phi*p_C*p_Omega - c20 - c21 - c22 - c23;
-  detail::ldlt_solve(L, D, column);
-  J[18] = column[0];
-  J[24] = column[1];
-  J[30] = column[2];
-  column[0] = T(2)*(c10*c11*c7*p_A + c11*c6*c7*p_B - c11*c7*p_C)*ddq[0] + T(2)*c0*c10*c11*c13*c7*dq_theta*p_Omega - T(2)*c0*c11*c13*c6*c7*dq_theta*p_Omega - T(2)*c0*c12*c13*c5*c9*dq_psi*p_Omega + T(2)*c0*c13*c5*c8*c9*dq_psi*p_Omega + T(2)*c0*c14*c5*c7*c9*dq_theta*p_Omega - T(2)*c10*c12*dq_phi*dq_theta*p_A + T(2)*c10*c8*dq_phi*dq_theta*p_A - T(2)*c11*c13*c17*c7*dq_theta*p_Omega + T(2)*c11*c13*c7*dq_theta*p_C*p_Omega - T(2)*c12*c6*dq_phi*dq_theta*p_B + T(2)*c12*dq_phi*dq_theta*p_C + T(2)*c6*c8*dq_phi*dq_theta*p_B - T(2)*c8*dq_phi*dq_theta*p_C + T(4)*c0*c11*c5*c7*c9*dq_phi*dq_psi + T(8)*c10*c11*c13*c14*c7*p_A*p_Omega*p_Omega + T(8)*c11*c13*c14*c6*c7*p_B*p_Omega*p_Omega - T(8)*c11*c13*c14*c7*p_C*p_Omega*p_Omega + c0*c10*c11*c14*dq_psi*p_Omega - c0*c10*c11*dq_psi*dq_theta - c0*c11*c14*c6*dq_psi*p_Omega - c0*c11*c5*c9*ddq[1] + c0*c11*c6*dq_psi*dq_theta - c0*c5*c7*c9*dq_theta*dq_theta - c11*c14*dq_psi*p_C*p_Omega + c11*dq_psi*dq_theta*p_C + c18 + c19 - c7*ddq[2]*p_C;
-  column[1] = -T(2)*c0*c14*c5*c7*c9*dq_phi*p_Omega + T(3)*c10*c12*c16*p_A*p_Omega*p_Omega - T(3)*c10*c16*c8*p_A*p_Omega*p_Omega + T(3)*c12*c16*c6*p_B*p_Omega*p_Omega - T(3)*c12*c16*p_C*p_Omega*p_Omega - T(3)*c16*c6*c8*p_B*p_Omega*p_Omega + T(3)*c16*c8*p_C*p_Omega*p_Omega + T(4)*c0*c11*c13*c14*c5*c9*p_Omega*p_Omega - T(4)*c1*c10*c11*c13*c7*dq_phi*p_Omega + T(4)*c11*c13*c2*c6*c7*dq_phi*p_Omega - c0*c11*c5*c9*ddq[0] + c1*c10*c12*c15*p_Omega*p_Omega - c1*c10*c12*dq_phi*dq_phi - c1*c10*c15*c8*p_Omega*p_Omega + c1*c10*c8*dq_phi*dq_phi - c10*c11*c4*dq_phi*dq_psi - c10*c13*c4*c7*dq_psi*p_Omega + c11*c3*c6*dq_phi*dq_psi - c12*c15*c2*c6*p_Omega*p_Omega + c12*c2*c6*dq_phi*dq_phi + c13*c3*c6*c7*dq_psi*p_Omega + c15*c2*c6*c8*p_Omega*p_Omega - c2*c6*c8*dq_phi*dq_phi;
-  column[2] = T(2)*c0*c11*c15*c5*c7*c9*p_Omega*p_Omega - T(2)*c0*c11*c5*c7*c9*dq_phi*dq_phi + T(2)*c0*c12*c13*c5*c9*dq_phi*p_Omega - T(2)*c0*c13*c5*c8*c9*dq_phi*p_Omega - T(6)*c0*c11*c16*c5*c7*c9*p_Omega*p_Omega - c0*c10*c11*c14*dq_phi*p_Omega + c0*c10*c11*dq_phi*dq_theta + c0*c10*c13*c7*dq_theta*p_Omega + c0*c11*c14*c6*dq_phi*p_Omega - c0*c11*c6*dq_phi*dq_theta - c0*c13*c6*c7*dq_theta*p_Omega + c11*c14*dq_phi*p_C*p_Omega + c11*dq_phi*dq_theta*p_C + c13*c7*dq_theta*p_C*p_Omega + c24 + c25 - c7*ddq[0]*p_C;
-  detail::ldlt_solve(L, D, column);
-  J[19] = column[0];
-  J[25] = column[1];
-  J[31] = column[2];
-  column[0] = T(2)*(c5*c8*c9*p_A - c5*c8*c9*p_B)*ddq[0] + T(2)*c0*c10*c11*c13*c7*dq_psi*p_Omega + T(2)*c0*c10*c11*c14*dq_theta*p_Omega - T(2)*c0*c10*c8*dq_phi*dq_psi - T(2)*c0*c11*c13*c6*c7*dq_psi*p_Omega - T(2)*c0*c11*c14*c6*dq_theta*p_Omega + T(2)*c0*c6*c8*dq_phi*dq_psi - T(4)*c0*c12*c13*c5*c9*dq_theta*p_Omega + T(4)*c0*c14*c5*c7*c9*dq_psi*p_Omega - T(4)*c0*c5*c7*c9*dq_psi*dq_theta - T(4)*c11*c5*c7*c9*dq_phi*dq_theta*p_A + T(4)*c11*c5*c7*c9*dq_phi*dq_theta*p_B - T(8)*c12*c13*c14*c5*c9*p_A*p_Omega*p_Omega + T(8)*c12*c13*c14*c5*c9*p_B*p_Omega*p_Omega - T(8)*c13*c14*c5*c9*p_A*p_Omega*p_Omega + T(8)*c13*c14*c5*c9*p_B*p_Omega*p_Omega - c0*c10*c11*dq_theta*dq_theta + c0*c11*c6*dq_theta*dq_theta - c20 - c21 - c22 - c23 - c26*ddq[1];
-  column[1] = -T(2)*(c5*c9*p_A - c5*c9*p_B)*ddq[1] - T(2)*c0*c10*c11*c14*dq_phi*p_Omega - T(2)*c0*c10*c14*dq_psi*p_Omega + T(2)*c0*c10*dq_psi*dq_theta + T(2)*c0*c11*c14*c6*dq_phi*p_Omega + T(2)*c0*c14*c6*dq_psi*p_Omega - T(2)*c0*c6*dq_psi*dq_theta + T(2)*c1*c11*c15*c5*c7*c9*p_Omega*p_Omega - T(2)*c1*c11*c5*c7*c9*dq_phi*dq_phi + T(2)*c1*c12*c13*c5*c9*dq_phi*p_Omega - T(2)*c1*c13*c5*c8*c9*dq_phi*p_Omega + T(2)*c11*c13*c3*c5*c9*dq_psi*p_Omega + T(2)*c11*c13*c4*c5*c9*dq_psi*p_Omega + T(2)*c11*c15*c2*c5*c7*c9*p_Omega*p_Omega - T(2)*c11*c2*c5*c7*c9*dq_phi*dq_phi + T(2)*c12*c13*c2*c5*c9*dq_phi*p_Omega - T(2)*c13*c2*c5*c8*c9*dq_phi*p_Omega - T(2)*c13*c5*c9*dq_phi*p_A*p_Omega + T(2)*c13*c5*c9*dq_phi*p_B*p_Omega - T(2)*c3*c5*c7*c9*dq_phi*dq_psi - T(2)*c4*c5*c7*c9*dq_phi*dq_psi + T(6)*c11*c16*c5*c7*c9*p_A*p_Omega*p_Omega - T(6)*c11*c16*c5*c7*c9*p_B*p_Omega*p_Omega + c24 + c25 - c26*ddq[0];
-  column[2] = T(16)*c0*c11*c13*c14*c5*c9*p_Omega*p_Omega - T(2)*c0*c10*c11*c13*c7*dq_phi*p_Omega + T(2)*c0*c10*c14*dq_theta*p_Omega + T(2)*c0*c11*c13*c6*c7*dq_phi*p_Omega - T(2)*c0*c14*c6*dq_theta*p_Omega - T(3)*c0*c10*c12*c16*p_Omega*p_Omega + T(3)*c0*c10*c15*p_Omega*p_Omega + T(3)*c0*c12*c16*c6*p_Omega*p_Omega - T(3)*c0*c15*c6*p_Omega*p_Omega - T(4)*c0*c11*c13*c5*c9*dq_theta*p_Omega - T(4)*c0*c14*c5*c7*c9*dq_phi*p_Omega + T(4)*c0*c5*c7*c9*dq_phi*dq_theta + c0*c10*c12*c15*p_Omega*p_Omega - c0*c10*c16*p_Omega*p_Omega + c0*c10*c8*dq_phi*dq_phi - c0*c10*dq_theta*dq_theta - c0*c12*c15*c6*p_Omega*p_Omega + c0*c16*c6*p_Omega*p_Omega - c0*c6*c8*dq_phi*dq_phi + c0*c6*dq_theta*dq_theta;
-  detail::ldlt_solve(L, D, column);
-  J[20] = column[0];
-  J[26] = column[1];
-  J[32] = column[2];
-  column[0] = -T(2)*c0*c5*c8*c9*dq_psi + T(2)*c10*c11*c7*dq_theta*p_A + T(2)*c11*c6*c7*dq_theta*p_B - T(2)*c11*c7*dq_theta*p_C;
-  column[1] = -T(2)*c0*c11*c14*c5*c9*p_Omega + T(2)*c1*c10*c11*c7*dq_phi - T(2)*c11*c2*c6*c7*dq_phi - c1*c10*c12*c13*p_Omega + c1*c10*c13*c8*p_Omega - c10*c13*p_B*p_Omega + c10*c4*c7*dq_psi + c12*c13*c2*c6*p_Omega - c13*c2*c6*c8*p_Omega - c13*c6*p_A*p_Omega - c3*c6*c7*dq_psi;
-  column[2] = -c27 - c28 - c29 - c30 - c31 - c32 - c33 - c7*dq_theta*p_C;
-  detail::ldlt_solve(L, D, column);
-  J[21] = column[0];
-  J[27] = column[1];
-  J[33] = column[2];
-  column[0] = T(2)*c0*c11*c14*c5*c9*p_Omega - T(2)*c0*c11*c5*c9*dq_theta + T(2)*c10*c11*c7*dq_phi*p_A + T(2)*c11*c6*c7*dq_phi*p_B - T(2)*c11*c7*dq_phi*p_C + c0*c10*c12*c13*p_Omega + c0*c10*c7*dq_psi - c0*c12*c13*c6*p_Omega - c0*c6*c7*dq_psi + c12*c13*p_C*p_Omega + c13*c17*c8*p_Omega - c7*dq_psi*p_C;
-  column[1] = T(2)*c0*c5*c9*dq_psi;
-  column[2] = T(2)*c0*c14*c5*c9*p_Omega - T(2)*c0*c5*c9*dq_theta + c0*c10*c11*c13*p_Omega - c0*c10*c7*dq_phi - c0*c11*c13*c6*p_Omega + c0*c6*c7*dq_phi + c11*c13*p_C*p_Omega - c7*dq_phi*p_C;
-  detail::ldlt_solve(L, D, column);
-  J[22] = column[0];
-  J[28] = column[1];
-  J[34] = column[2];
-  column[0] = c27 + c28 + c29 + c30 + c31 + c32 + c33 - c7*dq_theta*p_C;
-  column[1] = -T(2)*c0*c14*c5*c9*p_Omega + T(2)*c0*c5*c9*dq_theta - c10*c11*c13*c4*p_Omega + c10*c4*c7*dq_phi + c11*c13*c3*c6*p_Omega - c3*c6*c7*dq_phi;
-  column[2] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[23] = column[0];
-  J[29] = column[1];
-  J[35] = column[2];
+  J[18] = T(16)*c0*c11*c13*c14*c5*c9*p_Omega*p_Omega - T(2)*c0*c11*c13*c5*c9*dq_theta*p_Omega + T(2)*c0*c11*c14*c5*c7*c9*dq_psi*p_Omega - T(4)*c10*c12*c15*p_A*p_Omega*p_Omega + T(4)*c10*c12*c16*p_A*p_Omega*p_Omega + T(4)*c10*c15*p_B*p_Omega*p_Omega - T(4)*c10*c16*p_B*p_Omega*p_Omega - T(4)*c12*c15*c6*p_B*p_Omega*p_Omega + T(4)*c12*c16*c6*p_B*p_Omega*p_Omega + T(4)*c15*c6*p_A*p_Omega*p_Omega - T(4)*c15*c8*p_C*p_Omega*p_Omega - T(4)*c16*c6*p_A*p_Omega*p_Omega + T(4)*c16*c8*p_C*p_Omega*p_Omega + c0*c10*c12*c14*dq_theta*p_Omega + c0*c10*c13*c7*dq_psi*p_Omega - c0*c12*c14*c6*dq_theta*p_Omega - c0*c13*c6*c7*dq_psi*p_Omega + c12*c14*dq_theta*p_C*p_Omega - c13*c7*dq_psi*p_C*p_Omega + c14*c17*c8*dq_theta*p_Omega;
+  J[19] = T(2)*(c10*c11*c7*p_A + c11*c6*c7*p_B - c11*c7*p_C)*ddq[0] + T(2)*c0*c10*c11*c13*c7*dq_theta*p_Omega - T(2)*c0*c11*c13*c6*c7*dq_theta*p_Omega - T(2)*c0*c12*c13*c5*c9*dq_psi*p_Omega + T(2)*c0*c13*c5*c8*c9*dq_psi*p_Omega + T(2)*c0*c14*c5*c7*c9*dq_theta*p_Omega - T(2)*c10*c12*dq_phi*dq_theta*p_A + T(2)*c10*c8*dq_phi*dq_theta*p_A - T(2)*c11*c13*c17*c7*dq_theta*p_Omega + T(2)*c11*c13*c7*dq_theta*p_C*p_Omega - T(2)*c12*c6*dq_phi*dq_theta*p_B + T(2)*c12*dq_phi*dq_theta*p_C + T(2)*c6*c8*dq_phi*dq_theta*p_B - T(2)*c8*dq_phi*dq_theta*p_C + T(4)*c0*c11*c5*c7*c9*dq_phi*dq_psi + T(8)*c10*c11*c13*c14*c7*p_A*p_Omega*p_Omega + T(8)*c11*c13*c14*c6*c7*p_B*p_Omega*p_Omega - T(8)*c11*c13*c14*c7*p_C*p_Omega*p_Omega + c0*c10*c11*c14*dq_psi*p_Omega - c0*c10*c11*dq_psi*dq_theta - c0*c11*c14*c6*dq_psi*p_Omega - c0*c11*c5*c9*ddq[1] + c0*c11*c6*dq_psi*dq_theta - c0*c5*c7*c9*dq_theta*dq_theta - c11*c14*dq_psi*p_C*p_Omega + c11*dq_psi*dq_theta*p_C + c18 + c19 - c7*ddq[2]*p_C;
+  J[20] = T(2)*(c5*c8*c9*p_A - c5*c8*c9*p_B)*ddq[0] + T(2)*c0*c10*c11*c13*c7*dq_psi*p_Omega + T(2)*c0*c10*c11*c14*dq_theta*p_Omega - T(2)*c0*c10*c8*dq_phi*dq_psi - T(2)*c0*c11*c13*c6*c7*dq_psi*p_Omega - T(2)*c0*c11*c14*c6*dq_theta*p_Omega + T(2)*c0*c6*c8*dq_phi*dq_psi - T(4)*c0*c12*c13*c5*c9*dq_theta*p_Omega + T(4)*c0*c14*c5*c7*c9*dq_psi*p_Omega - T(4)*c0*c5*c7*c9*dq_psi*dq_theta - T(4)*c11*c5*c7*c9*dq_phi*dq_theta*p_A + T(4)*c11*c5*c7*c9*dq_phi*dq_theta*p_B - T(8)*c12*c13*c14*c5*c9*p_A*p_Omega*p_Omega + T(8)*c12*c13*c14*c5*c9*p_B*p_Omega*p_Omega - T(8)*c13*c14*c5*c9*p_A*p_Omega*p_Omega + T(8)*c13*c14*c5*c9*p_B*p_Omega*p_Omega - c0*c10*c11*dq_theta*dq_theta + c0*c11*c6*dq_theta*dq_theta - c20 - c21 - c22 - c23 - c26*ddq[1];
+  J[21] = -T(2)*c0*c5*c8*c9*dq_psi + T(2)*c10*c11*c7*dq_theta*p_A + T(2)*c11*c6*c7*dq_theta*p_B - T(2)*c11*c7*dq_theta*p_C;
+  J[22] = T(2)*c0*c11*c14*c5*c9*p_Omega - T(2)*c0*c11*c5*c9*dq_theta + T(2)*c10*c11*c7*dq_phi*p_A + T(2)*c11*c6*c7*dq_phi*p_B - T(2)*c11*c7*dq_phi*p_C + c0*c10*c12*c13*p_Omega + c0*c10*c7*dq_psi - c0*c12*c13*c6*p_Omega - c0*c6*c7*dq_psi + c12*c13*p_C*p_Omega + c13*c17*c8*p_Omega - c7*dq_psi*p_C;
+  J[23] = c27 + c28 + c29 + c30 + c31 + c32 + c33 - c7*dq_theta*p_C;
+  J[24] = T(2)*c0*c11*c13*c5*c9*dq_phi*p_Omega + T(2)*c0*c13*c5*c9*dq_psi*p_Omega - T(2)*c1*c10*c11*c13*c14*c7*p_Omega*p_Omega + T(2)*c11*c13*c14*c2*c6*c7*p_Omega*p_Omega + T(6)*c10*c11*c13*c14*c7*p_A*p_Omega*p_Omega + T(6)*c11*c13*c14*c6*c7*p_B*p_Omega*p_Omega - T(6)*c11*c13*c14*c7*p_C*p_Omega*p_Omega - c1*c10*c12*c14*dq_phi*p_Omega + c1*c10*c14*c8*dq_phi*p_Omega - c10*c11*c14*c4*dq_psi*p_Omega - c10*c14*dq_phi*p_B*p_Omega + c11*c14*c3*c6*dq_psi*p_Omega + c12*c14*c2*c6*dq_phi*p_Omega - c14*c2*c6*c8*dq_phi*p_Omega - c14*c6*dq_phi*p_A*p_Omega + c18 + c19;
+  J[25] = -T(2)*c0*c14*c5*c7*c9*dq_phi*p_Omega + T(3)*c10*c12*c16*p_A*p_Omega*p_Omega - T(3)*c10*c16*c8*p_A*p_Omega*p_Omega + T(3)*c12*c16*c6*p_B*p_Omega*p_Omega - T(3)*c12*c16*p_C*p_Omega*p_Omega - T(3)*c16*c6*c8*p_B*p_Omega*p_Omega + T(3)*c16*c8*p_C*p_Omega*p_Omega + T(4)*c0*c11*c13*c14*c5*c9*p_Omega*p_Omega - T(4)*c1*c10*c11*c13*c7*dq_phi*p_Omega + T(4)*c11*c13*c2*c6*c7*dq_phi*p_Omega - c0*c11*c5*c9*ddq[0] + c1*c10*c12*c15*p_Omega*p_Omega - c1*c10*c12*dq_phi*dq_phi - c1*c10*c15*c8*p_Omega*p_Omega + c1*c10*c8*dq_phi*dq_phi - c10*c11*c4*dq_phi*dq_psi - c10*c13*c4*c7*dq_psi*p_Omega + c11*c3*c6*dq_phi*dq_psi - c12*c15*c2*c6*p_Omega*p_Omega + c12*c2*c6*dq_phi*dq_phi + c13*c3*c6*c7*dq_psi*p_Omega + c15*c2*c6*c8*p_Omega*p_Omega - c2*c6*c8*dq_phi*dq_phi;
+  J[26] = -T(2)*(c5*c9*p_A - c5*c9*p_B)*ddq[1] - T(2)*c0*c10*c11*c14*dq_phi*p_Omega - T(2)*c0*c10*c14*dq_psi*p_Omega + T(2)*c0*c10*dq_psi*dq_theta + T(2)*c0*c11*c14*c6*dq_phi*p_Omega + T(2)*c0*c14*c6*dq_psi*p_Omega - T(2)*c0*c6*dq_psi*dq_theta + T(2)*c1*c11*c15*c5*c7*c9*p_Omega*p_Omega - T(2)*c1*c11*c5*c7*c9*dq_phi*dq_phi + T(2)*c1*c12*c13*c5*c9*dq_phi*p_Omega - T(2)*c1*c13*c5*c8*c9*dq_phi*p_Omega + T(2)*c11*c13*c3*c5*c9*dq_psi*p_Omega + T(2)*c11*c13*c4*c5*c9*dq_psi*p_Omega + T(2)*c11*c15*c2*c5*c7*c9*p_Omega*p_Omega - T(2)*c11*c2*c5*c7*c9*dq_phi*dq_phi + T(2)*c12*c13*c2*c5*c9*dq_phi*p_Omega - T(2)*c13*c2*c5*c8*c9*dq_phi*p_Omega - T(2)*c13*c5*c9*dq_phi*p_A*p_Omega + T(2)*c13*c5*c9*dq_phi*p_B*p_Omega - T(2)*c3*c5*c7*c9*dq_phi*dq_psi - T(2)*c4*c5*c7*c9*dq_phi*dq_psi + T(6)*c11*c16*c5*c7*c9*p_A*p_Omega*p_Omega - T(6)*c11*c16*c5*c7*c9*p_B*p_Omega*p_Omega + c24 + c25 - c26*ddq[0];
+  J[27] = -T(2)*c0*c11*c14*c5*c9*p_Omega + T(2)*c1*c10*c11*c7*dq_phi - T(2)*c11*c2*c6*c7*dq_phi - c1*c10*c12*c13*p_Omega + c1*c10*c13*c8*p_Omega - c10*c13*p_B*p_Omega + c10*c4*c7*dq_psi + c12*c13*c2*c6*p_Omega - c13*c2*c6*c8*p_Omega - c13*c6*p_A*p_Omega - c3*c6*c7*dq_psi;
+  J[28] = T(2)*c0*c5*c9*dq_psi;
+  J[29] = -T(2)*c0*c14*c5*c9*p_Omega + T(2)*c0*c5*c9*dq_theta - c10*c11*c13*c4*p_Omega + c10*c4*c7*dq_phi + c11*c13*c3*c6*p_Omega - c3*c6*c7*dq_phi;
+  J[30] = -T(2)*c0*c11*c14*c5*c7*c9*dq_phi*p_Omega - T(2)*c0*c13*c5*c9*dq_theta*p_Omega + T(8)*c0*c12*c13*c14*c5*c9*p_Omega*p_Omega + T(8)*c0*c13*c14*c5*c9*p_Omega*p_Omega + c0*c10*c11*c14*dq_theta*p_Omega - c0*c10*c13*c7*dq_phi*p_Omega - c0*c11*c14*c6*dq_theta*p_Omega + c0*c13*c6*c7*dq_phi*p_Omega + c11*c14*dq_theta*p_C*p_Omega + c13*c7*dq_phi*p_C*p_Omega - c20 - c21 - c22 - c23;
+  J[31] = T(2)*c0*c11*c15*c5*c7*c9*p_Omega*p_Omega - T(2)*c0*c11*c5*c7*c9*dq_phi*dq_phi + T(2)*c0*c12*c13*c5*c9*dq_phi*p_Omega - T(2)*c0*c13*c5*c8*c9*dq_phi*p_Omega - T(6)*c0*c11*c16*c5*c7*c9*p_Omega*p_Omega - c0*c10*c11*c14*dq_phi*p_Omega + c0*c10*c11*dq_phi*dq_theta + c0*c10*c13*c7*dq_theta*p_Omega + c0*c11*c14*c6*dq_phi*p_Omega - c0*c11*c6*dq_phi*dq_theta - c0*c13*c6*c7*dq_theta*p_Omega + c11*c14*dq_phi*p_C*p_Omega + c11*dq_phi*dq_theta*p_C + c13*c7*dq_theta*p_C*p_Omega + c24 + c25 - c7*ddq[0]*p_C;
+  J[32] = T(16)*c0*c11*c13*c14*c5*c9*p_Omega*p_Omega - T(2)*c0*c10*c11*c13*c7*dq_phi*p_Omega + T(2)*c0*c10*c14*dq_theta*p_Omega + T(2)*c0*c11*c13*c6*c7*dq_phi*p_Omega - T(2)*c0*c14*c6*dq_theta*p_Omega - T(3)*c0*c10*c12*c16*p_Omega*p_Omega + T(3)*c0*c10*c15*p_Omega*p_Omega + T(3)*c0*c12*c16*c6*p_Omega*p_Omega - T(3)*c0*c15*c6*p_Omega*p_Omega - T(4)*c0*c11*c13*c5*c9*dq_theta*p_Omega - T(4)*c0*c14*c5*c7*c9*dq_phi*p_Omega + T(4)*c0*c5*c7*c9*dq_phi*dq_theta + c0*c10*c12*c15*p_Omega*p_Omega - c0*c10*c16*p_Omega*p_Omega + c0*c10*c8*dq_phi*dq_phi - c0*c10*dq_theta*dq_theta - c0*c12*c15*c6*p_Omega*p_Omega + c0*c16*c6*p_Omega*p_Omega - c0*c6*c8*dq_phi*dq_phi + c0*c6*dq_theta*dq_theta;
+  J[33] = -c27 - c28 - c29 - c30 - c31 - c32 - c33 - c7*dq_theta*p_C;
+  J[34] = T(2)*c0*c14*c5*c9*p_Omega - T(2)*c0*c5*c9*dq_theta + c0*c10*c11*c13*p_Omega - c0*c10*c7*dq_phi - c0*c11*c13*c6*p_Omega + c0*c6*c7*dq_phi + c11*c13*p_C*p_Omega - c7*dq_phi*p_C;
+  J[35] = T(0);
+  detail::ldlt_solve_rows<6>(L, D, J + 18);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

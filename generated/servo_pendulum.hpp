@@ -189,6 +189,17 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0]/D[0];
 }
 
+/// As ldlt_solve, for the m columns of B (1xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  for (std::size_t i = 0; i < 1; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -295,13 +306,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c1 = T(1) - detail::below(-c0, -p_tau_max) - detail::below(p_tau_max, -c0);
   J[0] = T(0);
   J[1] = T(1);
-  T column[1];
-  column[0] = -c1*p_kp - cos_q_phi*p_g*p_m*p_s;
-  detail::ldlt_solve(L, D, column);
-  J[2] = column[0];
-  column[0] = -c1*p_kd;
-  detail::ldlt_solve(L, D, column);
-  J[3] = column[0];
+  J[2] = -c1*p_kp - cos_q_phi*p_g*p_m*p_s;
+  J[3] = -c1*p_kd;
+  detail::ldlt_solve_rows<2>(L, D, J + 2);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -328,10 +335,8 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_factor(M, L, D);
   const T c0 = -(detail::clamp(u_u, -T(1), T(1)) - q_phi)*p_kp + dq_phi*p_kd;
   B[0] = T(0);
-  T column[1];
-  column[0] = (T(1) - detail::below(-c0, -p_tau_max) - detail::below(p_tau_max, -c0))*(T(1) - detail::below(T(1), u_u) - detail::below(u_u, -T(1)))*p_kp;
-  detail::ldlt_solve(L, D, column);
-  B[1] = column[0];
+  B[1] = (T(1) - detail::below(-c0, -p_tau_max) - detail::below(p_tau_max, -c0))*(T(1) - detail::below(T(1), u_u) - detail::below(u_u, -T(1)))*p_kp;
+  detail::ldlt_solve_rows<1>(L, D, B + 1);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

@@ -180,6 +180,41 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[4]*b[1] - L[8]*b[2] - L[12]*b[3];
 }
 
+/// As ldlt_solve, for the m columns of B (4xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[4];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[8], l1 = L[9];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+  }
+  {
+    const T l0 = L[12], l1 = L[13], l2 = L[14];
+    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[14];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c];
+  }
+  {
+    const T l0 = L[9], l1 = L[13];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c];
+  }
+  {
+    const T l0 = L[4], l1 = L[8], l2 = L[12];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c];
+  }
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -847,79 +882,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[29] = T(0);
   J[30] = T(0);
   J[31] = T(1);
-  T column[4];
-  column[0] = -F[0];
-  column[1] = -F[9];
-  column[2] = -F[18];
-  column[3] = -F[27];
-  detail::ldlt_solve(L, D, column);
-  J[32] = column[0];
-  J[40] = column[1];
-  J[48] = column[2];
-  J[56] = column[3];
-  column[0] = -F[1];
-  column[1] = -F[10];
-  column[2] = -F[19];
-  column[3] = -F[28];
-  detail::ldlt_solve(L, D, column);
-  J[33] = column[0];
-  J[41] = column[1];
-  J[49] = column[2];
-  J[57] = column[3];
-  column[0] = -F[2];
-  column[1] = -F[11];
-  column[2] = -F[20];
-  column[3] = -F[29];
-  detail::ldlt_solve(L, D, column);
-  J[34] = column[0];
-  J[42] = column[1];
-  J[50] = column[2];
-  J[58] = column[3];
-  column[0] = -F[3];
-  column[1] = -F[12];
-  column[2] = -F[21];
-  column[3] = -F[30];
-  detail::ldlt_solve(L, D, column);
-  J[35] = column[0];
-  J[43] = column[1];
-  J[51] = column[2];
-  J[59] = column[3];
-  column[0] = -F[4];
-  column[1] = -F[13];
-  column[2] = -F[22];
-  column[3] = -F[31];
-  detail::ldlt_solve(L, D, column);
-  J[36] = column[0];
-  J[44] = column[1];
-  J[52] = column[2];
-  J[60] = column[3];
-  column[0] = -F[5];
-  column[1] = -F[14];
-  column[2] = -F[23];
-  column[3] = -F[32];
-  detail::ldlt_solve(L, D, column);
-  J[37] = column[0];
-  J[45] = column[1];
-  J[53] = column[2];
-  J[61] = column[3];
-  column[0] = -F[6];
-  column[1] = -F[15];
-  column[2] = -F[24];
-  column[3] = -F[33];
-  detail::ldlt_solve(L, D, column);
-  J[38] = column[0];
-  J[46] = column[1];
-  J[54] = column[2];
-  J[62] = column[3];
-  column[0] = -F[7];
-  column[1] = -F[16];
-  column[2] = -F[25];
-  column[3] = -F[34];
-  detail::ldlt_solve(L, D, column);
-  J[39] = column[0];
-  J[47] = column[1];
-  J[55] = column[2];
-  J[63] = column[3];
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 8; ++j) J[(4 + i) * 8 + j] = -F[i * 9 + j];
+  detail::ldlt_solve_rows<8>(L, D, J + 32);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -976,16 +941,11 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   B[1] = T(0);
   B[2] = T(0);
   B[3] = T(0);
-  T column[4];
-  column[0] = -k_lower_Rxx*k_lower_W_a1_y*p_l + k_lower_Rxy*k_lower_W_a1_x*p_l + k_lower_V_a1_x;
-  column[1] = -k_lower_Rxx*k_lower_W_b1_y*p_l + k_lower_Rxy*k_lower_W_b1_x*p_l + k_lower_V_b1_x;
-  column[2] = -k_lower_Rxx*k_lower_W_a2_y*p_l;
-  column[3] = k_lower_Rxy*p_l;
-  detail::ldlt_solve(L, D, column);
-  B[4] = column[0];
-  B[5] = column[1];
-  B[6] = column[2];
-  B[7] = column[3];
+  B[4] = -k_lower_Rxx*k_lower_W_a1_y*p_l + k_lower_Rxy*k_lower_W_a1_x*p_l + k_lower_V_a1_x;
+  B[5] = -k_lower_Rxx*k_lower_W_b1_y*p_l + k_lower_Rxy*k_lower_W_b1_x*p_l + k_lower_V_b1_x;
+  B[6] = -k_lower_Rxx*k_lower_W_a2_y*p_l;
+  B[7] = k_lower_Rxy*p_l;
+  detail::ldlt_solve_rows<1>(L, D, B + 4);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

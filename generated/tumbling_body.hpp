@@ -247,6 +247,57 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[5] = b[5] - L[30]*b[0];
 }
 
+/// As ldlt_solve, for the m columns of B (6xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[34];
+    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c];
+  }
+  {
+    const T l0 = L[33], l1 = L[27];
+    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c];
+  }
+  {
+    const T l0 = L[32], l1 = L[26], l2 = L[20];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c];
+  }
+  {
+    const T l0 = L[31], l1 = L[25], l2 = L[19], l3 = L[13];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c];
+  }
+  {
+    const T l0 = L[30], l1 = L[24], l2 = L[18], l3 = L[12], l4 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
+  }
+  for (std::size_t i = 0; i < 6; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  {
+    const T l0 = L[13], l1 = L[12];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+  }
+  {
+    const T l0 = L[20], l1 = L[19], l2 = L[18];
+    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
+  }
+  {
+    const T l0 = L[27], l1 = L[26], l2 = L[25], l3 = L[24];
+    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c];
+  }
+  {
+    const T l0 = L[34], l1 = L[33], l2 = L[32], l3 = L[31], l4 = L[30];
+    for (std::size_t c = 0; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c];
+  }
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -757,176 +808,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[88] = -(T(1)/T(2))*q_qy;
   J[89] = (T(1)/T(2))*q_qx;
   J[90] = (T(1)/T(2))*q_qw;
-  T column[6];
-  column[0] = -F[0];
-  column[1] = -F[13];
-  column[2] = -F[26];
-  column[3] = -F[39];
-  column[4] = -F[52];
-  column[5] = -F[65];
-  detail::ldlt_solve(L, D, column);
-  J[91] = column[0];
-  J[104] = column[1];
-  J[117] = column[2];
-  J[130] = column[3];
-  J[143] = column[4];
-  J[156] = column[5];
-  column[0] = -F[1];
-  column[1] = -F[14];
-  column[2] = -F[27];
-  column[3] = -F[40];
-  column[4] = -F[53];
-  column[5] = -F[66];
-  detail::ldlt_solve(L, D, column);
-  J[92] = column[0];
-  J[105] = column[1];
-  J[118] = column[2];
-  J[131] = column[3];
-  J[144] = column[4];
-  J[157] = column[5];
-  column[0] = -F[2];
-  column[1] = -F[15];
-  column[2] = -F[28];
-  column[3] = -F[41];
-  column[4] = -F[54];
-  column[5] = -F[67];
-  detail::ldlt_solve(L, D, column);
-  J[93] = column[0];
-  J[106] = column[1];
-  J[119] = column[2];
-  J[132] = column[3];
-  J[145] = column[4];
-  J[158] = column[5];
-  column[0] = -F[3];
-  column[1] = -F[16];
-  column[2] = -F[29];
-  column[3] = -F[42];
-  column[4] = -F[55];
-  column[5] = -F[68];
-  detail::ldlt_solve(L, D, column);
-  J[94] = column[0];
-  J[107] = column[1];
-  J[120] = column[2];
-  J[133] = column[3];
-  J[146] = column[4];
-  J[159] = column[5];
-  column[0] = -F[4];
-  column[1] = -F[17];
-  column[2] = -F[30];
-  column[3] = -F[43];
-  column[4] = -F[56];
-  column[5] = -F[69];
-  detail::ldlt_solve(L, D, column);
-  J[95] = column[0];
-  J[108] = column[1];
-  J[121] = column[2];
-  J[134] = column[3];
-  J[147] = column[4];
-  J[160] = column[5];
-  column[0] = -F[5];
-  column[1] = -F[18];
-  column[2] = -F[31];
-  column[3] = -F[44];
-  column[4] = -F[57];
-  column[5] = -F[70];
-  detail::ldlt_solve(L, D, column);
-  J[96] = column[0];
-  J[109] = column[1];
-  J[122] = column[2];
-  J[135] = column[3];
-  J[148] = column[4];
-  J[161] = column[5];
-  column[0] = -F[6];
-  column[1] = -F[19];
-  column[2] = -F[32];
-  column[3] = -F[45];
-  column[4] = -F[58];
-  column[5] = -F[71];
-  detail::ldlt_solve(L, D, column);
-  J[97] = column[0];
-  J[110] = column[1];
-  J[123] = column[2];
-  J[136] = column[3];
-  J[149] = column[4];
-  J[162] = column[5];
-  column[0] = -F[7];
-  column[1] = -F[20];
-  column[2] = -F[33];
-  column[3] = -F[46];
-  column[4] = -F[59];
-  column[5] = -F[72];
-  detail::ldlt_solve(L, D, column);
-  J[98] = column[0];
-  J[111] = column[1];
-  J[124] = column[2];
-  J[137] = column[3];
-  J[150] = column[4];
-  J[163] = column[5];
-  column[0] = -F[8];
-  column[1] = -F[21];
-  column[2] = -F[34];
-  column[3] = -F[47];
-  column[4] = -F[60];
-  column[5] = -F[73];
-  detail::ldlt_solve(L, D, column);
-  J[99] = column[0];
-  J[112] = column[1];
-  J[125] = column[2];
-  J[138] = column[3];
-  J[151] = column[4];
-  J[164] = column[5];
-  column[0] = -F[9];
-  column[1] = -F[22];
-  column[2] = -F[35];
-  column[3] = -F[48];
-  column[4] = -F[61];
-  column[5] = -F[74];
-  detail::ldlt_solve(L, D, column);
-  J[100] = column[0];
-  J[113] = column[1];
-  J[126] = column[2];
-  J[139] = column[3];
-  J[152] = column[4];
-  J[165] = column[5];
-  column[0] = -F[10];
-  column[1] = -F[23];
-  column[2] = -F[36];
-  column[3] = -F[49];
-  column[4] = -F[62];
-  column[5] = -F[75];
-  detail::ldlt_solve(L, D, column);
-  J[101] = column[0];
-  J[114] = column[1];
-  J[127] = column[2];
-  J[140] = column[3];
-  J[153] = column[4];
-  J[166] = column[5];
-  column[0] = -F[11];
-  column[1] = -F[24];
-  column[2] = -F[37];
-  column[3] = -F[50];
-  column[4] = -F[63];
-  column[5] = -F[76];
-  detail::ldlt_solve(L, D, column);
-  J[102] = column[0];
-  J[115] = column[1];
-  J[128] = column[2];
-  J[141] = column[3];
-  J[154] = column[4];
-  J[167] = column[5];
-  column[0] = -F[12];
-  column[1] = -F[25];
-  column[2] = -F[38];
-  column[3] = -F[51];
-  column[4] = -F[64];
-  column[5] = -F[77];
-  detail::ldlt_solve(L, D, column);
-  J[103] = column[0];
-  J[116] = column[1];
-  J[129] = column[2];
-  J[142] = column[3];
-  J[155] = column[4];
-  J[168] = column[5];
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = 0; j < 13; ++j) J[(7 + i) * 13 + j] = -F[i * 13 + j];
+  detail::ldlt_solve_rows<13>(L, D, J + 91);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -102,6 +102,25 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[2]*b[1];
 }
 
+/// As ldlt_solve, for the m columns of B (2xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[2];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[2];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -213,27 +232,15 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  T column[2];
-  column[0] = -p_k1 - p_k2;
-  column[1] = p_k2;
-  detail::ldlt_solve(L, D, column);
-  J[8] = column[0];
-  J[12] = column[1];
-  column[0] = p_k2;
-  column[1] = -p_k2 - p_k3;
-  detail::ldlt_solve(L, D, column);
-  J[9] = column[0];
-  J[13] = column[1];
-  column[0] = -c0 - p_alpha*p_m1 - p_beta*p_k1;
-  column[1] = c0;
-  detail::ldlt_solve(L, D, column);
-  J[10] = column[0];
-  J[14] = column[1];
-  column[0] = c0;
-  column[1] = -c0 - p_alpha*p_m2 - p_beta*p_k3;
-  detail::ldlt_solve(L, D, column);
-  J[11] = column[0];
-  J[15] = column[1];
+  J[8] = -p_k1 - p_k2;
+  J[9] = p_k2;
+  J[10] = -c0 - p_alpha*p_m1 - p_beta*p_k1;
+  J[11] = c0;
+  J[12] = p_k2;
+  J[13] = -p_k2 - p_k3;
+  J[14] = c0;
+  J[15] = -c0 - p_alpha*p_m2 - p_beta*p_k3;
+  detail::ldlt_solve_rows<4>(L, D, J + 8);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -253,12 +260,9 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_factor(M, L, D);
   B[0] = T(0);
   B[1] = T(0);
-  T column[2];
-  column[0] = T(0);
-  column[1] = T(1);
-  detail::ldlt_solve(L, D, column);
-  B[2] = column[0];
-  B[3] = column[1];
+  B[2] = T(0);
+  B[3] = T(1);
+  detail::ldlt_solve_rows<1>(L, D, B + 2);
 }
 
 /// Linearization M q'' + P q' + Q q = B u about the state x, valid where q'' = 0

@@ -170,6 +170,25 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[2]*b[1];
 }
 
+/// As ldlt_solve, for the m columns of B (2xm, row-major) at once: each row's operations in
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
+template <std::size_t m, class T>
+inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
+  (void)L;
+  {
+    const T l0 = L[2];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const T r = T(1)/D[i];
+    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+  }
+  {
+    const T l0 = L[2];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c];
+  }
+}
+
 }  // namespace detail
 
 /// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.
@@ -316,27 +335,15 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  T column[2];
-  column[0] = T(0);
-  column[1] = T(0);
-  detail::ldlt_solve(L, D, column);
-  J[8] = column[0];
-  J[12] = column[1];
-  column[0] = -T(4)*c0*c1*ddq[0]*p_l*p_l*p_m*p_n*p_n - T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - c0*p_kappa;
-  column[1] = -T(2)*c1*p_g*p_l*p_m + T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  detail::ldlt_solve(L, D, column);
-  J[9] = column[0];
-  J[13] = column[1];
-  column[0] = -T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
-  column[1] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  detail::ldlt_solve(L, D, column);
-  J[10] = column[0];
-  J[14] = column[1];
-  column[0] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  column[1] = -p_b;
-  detail::ldlt_solve(L, D, column);
-  J[11] = column[0];
-  J[15] = column[1];
+  J[8] = T(0);
+  J[9] = -T(4)*c0*c1*ddq[0]*p_l*p_l*p_m*p_n*p_n - T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - c0*p_kappa;
+  J[10] = -T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
+  J[11] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  J[12] = T(0);
+  J[13] = -T(2)*c1*p_g*p_l*p_m + T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  J[14] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  J[15] = -p_b;
+  detail::ldlt_solve_rows<4>(L, D, J + 8);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

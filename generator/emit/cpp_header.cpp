@@ -103,7 +103,7 @@ std::string rhs_function(const Equations& e) {
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
-// dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), solved column by column with the factored M
+// dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), all columns solved at once with the factored M
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
   if (e.solves_for_velocities()) return momentum_jacobian_state_function(e);
@@ -153,12 +153,15 @@ std::string jacobian_state_function(const Equations& e) {
     for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == nq + i ? 1 : 0));
   }
-  w.line(fmt::format("T column[{}];", n));
-  for (std::size_t j = 0; j < N; ++j) {
-    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * n + i]));
-    w.line("detail::ldlt_solve(L, D, column);");
-    for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("J[{}] = column[{}];", (nq + i) * N + j, i));
+  // the lower block's rows, −∂τ/∂x, then M^-1 applied to all its columns at once
+  if (newton_euler) {
+    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
+    w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[({1} + i) * {0} + j] = -F[i * {2} + j];", N, nq, N + s.inputs.size()));
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = {};", (nq + i) * N + j, code[j * n + i]));
   }
+  w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, J + {});", N, nq * N));
   return function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is\n"
                               "/// M^-1 (df/dx - (dM/dx) {}'). J: {}x{}, row-major.\n",
                               e.uses_pseudo_velocities() ? "s" : "q'", N, N),
@@ -188,12 +191,9 @@ std::string jacobian_input_function(const Equations& e) {
     auto code = w.batch(columns);
     for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = T(0);", i * m + j));
-    w.line(fmt::format("T column[{}];", n));
-    for (std::size_t j = 0; j < m; ++j) {
-      for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("column[{}] = {};", i, code[j * n + i]));
-      w.line("detail::ldlt_solve(L, D, column);");
-      for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("B[{}] = column[{}];", (nq + i) * m + j, i));
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", (nq + i) * m + j, code[j * n + i]));
+    w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, B + {});", m, nq * m));
   }
   return function(fmt::format("/// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.\n"
                               "/// B: {}x{}, row-major (nothing is written when the model has no inputs).\n", nq + n, m),

@@ -14,6 +14,9 @@ namespace eomgen {
 struct LdltCode {
   std::string factor;  // body of ldlt_factor(const T* M, T* L, T* D)
   std::string solve;   // body of ldlt_solve(const T* L, const T* D, T* b)
+  // body of ldlt_solve_rows<m>(const T* L, const T* D, T* B): the same row operations on the m
+  // columns of B at once
+  std::string solve_rows;
   bool unrolled = true;
 };
 
