@@ -1,0 +1,96 @@
+// The generated factorization and solves of the mass matrix (emit/cpp_ldlt): dense and unrolled,
+// dense in loops, and a tree's from the leaves, each compiled and run on a random symmetric
+// positive definite M of its shape; ldlt_solve and ldlt_solve_rows must solve M x = b to rounding.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "emit/cpp_ldlt.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+std::string functions(const std::string& name, const LdltCode& code) {
+  return fmt::format(
+      "namespace {0} {{\n"
+      "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n"
+      "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n"
+      "template <std::size_t m, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{3}}}\n"
+      "}}\n",
+      name, code.factor, code.solve, code.solve_rows);
+}
+
+// M random, symmetric and diagonally dominant (so positive definite), zero where `related` says (a
+// tree's M is zero between coordinates on different branches). Both solves against M X = B, 7 columns.
+const char* check = R"cpp(
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+template <class Related, class Factor, class Solve, class SolveRows>
+int check(const char* name, int n, Related related, Factor factor, Solve solve, SolveRows solve_rows) {
+  constexpr int m = 7;
+  std::mt19937 g(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> M(n * n, 0.0), L(n * n, 0.0), D(n), B(n * m), X, column(n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j)
+      if (related(i, j)) M[i * n + j] = M[j * n + i] = i == j ? n + 1.0 + u(g) : u(g);
+  for (double& b : B) b = u(g);
+  X = B;
+  factor(M.data(), L.data(), D.data());
+  solve_rows(L.data(), D.data(), X.data());
+  double worst = 0, worst_columns = 0;
+  for (int c = 0; c < m; ++c) {
+    for (int i = 0; i < n; ++i) column[i] = B[i * m + c];
+    solve(L.data(), D.data(), column.data());
+    for (int i = 0; i < n; ++i) {
+      double r = -B[i * m + c], rc = -B[i * m + c];
+      for (int k = 0; k < n; ++k) r += M[i * n + k] * X[k * m + c], rc += M[i * n + k] * column[k];
+      worst = std::fmax(worst, std::fabs(r));
+      worst_columns = std::fmax(worst_columns, std::fabs(rc));
+    }
+  }
+  std::printf("%s: |M X - B| %.3g by rows, %.3g by columns\n", name, worst, worst_columns);
+  return worst < 1e-13 && worst_columns < 1e-13 ? 0 : 1;
+}
+int main() {
+  const int parent[] = {PARENTS};
+  auto in_tree = [&](int i, int j) {
+    for (int k = i; k >= 0; k = parent[k]) if (k == j) return true;
+    for (int k = j; k >= 0; k = parent[k]) if (k == i) return true;
+    return false;
+  };
+  auto dense = [](int, int) { return true; };
+  int failures = 0;
+  failures += check("unrolled", 5, dense, unrolled::ldlt_factor<double>, unrolled::ldlt_solve<double>, unrolled::ldlt_solve_rows<7, double>);
+  failures += check("loops", 30, dense, loops::ldlt_factor<double>, loops::ldlt_solve<double>, loops::ldlt_solve_rows<7, double>);
+  failures += check("tree", TREE_SIZE, in_tree, tree::ldlt_factor<double>, tree::ldlt_solve<double>, tree::ldlt_solve_rows<7, double>);
+  return failures;
+}
+)cpp";
+
+TEST(MassMatrixFactorization, BothSolvesSolveDenseAndTreeMatrices) {
+  // a floating base's six velocities in a chain, two legs of three hinges and an arm of two
+  std::vector<int> parent = {-1, 0, 1, 2, 3, 4, 5, 6, 7, 5, 9, 10, 5, 12};
+  std::string parents;
+  for (int p : parent) parents += fmt::format("{}{}", parents.empty() ? "" : ", ", p);
+  std::string dir = temporary_directory();
+  {
+    std::ofstream out(dir + "/check.cpp");
+    out << "#include <cstddef>\n#define PARENTS " << parents << "\n#define TREE_SIZE " << parent.size() << "\n"
+        << functions("unrolled", ldlt_code(5)) << functions("loops", ldlt_code(30))
+        << functions("tree", tree_ldlt_code(parent)) << check;
+  }
+  EXPECT_EQ(run_command("cd '" + dir + "' && c++ -std=c++17 -O1 -Wall -Wextra -Werror check.cpp -o check && ./check"), 0);
+  EXPECT_FALSE(ldlt_code(30).unrolled) << "the loops are checked";
+  EXPECT_TRUE(ldlt_code(5).unrolled);
+}
+
+}  // namespace
+}  // namespace eomgen::test
