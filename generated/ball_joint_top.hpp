@@ -448,9 +448,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[25] = -(T(1)/T(2))*q_qy;
   J[26] = (T(1)/T(2))*q_qx;
   J[27] = (T(1)/T(2))*q_qw;
+  T* rows = J + 28;
   for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 7; ++j) J[(4 + i) * 7 + j] = -F[i * 7 + j];
-  detail::ldlt_solve_rows<7>(L, D, J + 28);
+    for (std::size_t j = 0; j < 7; ++j) rows[i * 7 + j] = -F[i * 7 + j];
+  detail::ldlt_solve_rows<7>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -266,9 +266,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c1 = cos_q_theta;
   J[0] = T(0);
   J[1] = T(1)/(p_m*p_r*p_r);
-  J[2] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c1*c1*p_Omega*p_Omega*p_m*p_r*p_r - c1*p_g*p_m*p_r;
-  J[3] = T(0);
-  detail::ldlt_solve_rows<2>(L, D, J + 2);
+  T* rows = J + 2;
+  rows[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c1*c1*p_Omega*p_Omega*p_m*p_r*p_r - c1*p_g*p_m*p_r;
+  rows[1] = T(0);
+  detail::ldlt_solve_rows<2>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

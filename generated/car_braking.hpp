@@ -397,25 +397,26 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  J[18] = T(0);
-  J[19] = T(0);
-  J[20] = T(0);
-  J[21] = -T(2)*dq_x*p_cw;
-  J[22] = T(0);
-  J[23] = T(0);
-  J[24] = T(0);
-  J[25] = -p_kf - p_kr;
-  J[26] = -c0*c2*dq_theta - c1*c3;
-  J[27] = T(0);
-  J[28] = -p_cf - p_cr;
-  J[29] = c7;
-  J[30] = T(0);
-  J[31] = -c1*c3;
-  J[32] = T(2)*c0*c3*c6*dq_theta + c0*c0*c4 + c0*c1*q_z - c0*c2*dq_z - c4*c5;
-  J[33] = T(0);
-  J[34] = c7;
-  J[35] = -c5*c6;
-  detail::ldlt_solve_rows<6>(L, D, J + 18);
+  T* rows = J + 18;
+  rows[0] = T(0);
+  rows[1] = T(0);
+  rows[2] = T(0);
+  rows[3] = -T(2)*dq_x*p_cw;
+  rows[4] = T(0);
+  rows[5] = T(0);
+  rows[6] = T(0);
+  rows[7] = -p_kf - p_kr;
+  rows[8] = -c0*c2*dq_theta - c1*c3;
+  rows[9] = T(0);
+  rows[10] = -p_cf - p_cr;
+  rows[11] = c7;
+  rows[12] = T(0);
+  rows[13] = -c1*c3;
+  rows[14] = T(2)*c0*c3*c6*dq_theta + c0*c0*c4 + c0*c1*q_z - c0*c2*dq_z - c4*c5;
+  rows[15] = T(0);
+  rows[16] = c7;
+  rows[17] = -c5*c6;
+  detail::ldlt_solve_rows<6>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

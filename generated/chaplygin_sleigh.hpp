@@ -299,17 +299,18 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[12] = T(0);
   J[13] = T(0);
   J[14] = T(1);
-  J[15] = T(0);
-  J[16] = T(0);
-  J[17] = T(0);
-  J[18] = T(0);
-  J[19] = T(2)*p_a*p_m*s_w;
-  J[20] = T(0);
-  J[21] = T(0);
-  J[22] = T(0);
-  J[23] = -p_a*p_m*s_w;
-  J[24] = -p_a*p_m*s_v;
-  detail::ldlt_solve_rows<5>(L, D, J + 15);
+  T* rows = J + 15;
+  rows[0] = T(0);
+  rows[1] = T(0);
+  rows[2] = T(0);
+  rows[3] = T(0);
+  rows[4] = T(2)*p_a*p_m*s_w;
+  rows[5] = T(0);
+  rows[6] = T(0);
+  rows[7] = T(0);
+  rows[8] = -p_a*p_m*s_w;
+  rows[9] = -p_a*p_m*s_v;
+  detail::ldlt_solve_rows<5>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -352,15 +352,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = -c0*c4*p_g*p_l1 - c7 - c8;
-  J[9] = c7 + c8;
-  J[10] = T(0);
-  J[11] = T(2)*c5*dq_phi2*p_l1*p_l2*p_m2;
-  J[12] = c10 + c9;
-  J[13] = -c10 - c3*p_g*p_l2*p_m2 - c9;
-  J[14] = -T(2)*c5*dq_phi1*p_l1*p_l2*p_m2;
-  J[15] = T(0);
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = -c0*c4*p_g*p_l1 - c7 - c8;
+  rows[1] = c7 + c8;
+  rows[2] = T(0);
+  rows[3] = T(2)*c5*dq_phi2*p_l1*p_l2*p_m2;
+  rows[4] = c10 + c9;
+  rows[5] = -c10 - c3*p_g*p_l2*p_m2 - c9;
+  rows[6] = -T(2)*c5*dq_phi1*p_l1*p_l2*p_m2;
+  rows[7] = T(0);
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

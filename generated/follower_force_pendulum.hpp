@@ -342,15 +342,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = -T(2)*p_c - c6 - c8 - c9;
-  J[9] = c6 + c8 + c9 + p_c;
-  J[10] = T(0);
-  J[11] = T(2)*c4*dq_phi2*p_l*p_l*p_m;
-  J[12] = c10;
-  J[13] = -c10;
-  J[14] = -T(2)*c4*dq_phi1*p_l*p_l*p_m;
-  J[15] = T(0);
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = -T(2)*p_c - c6 - c8 - c9;
+  rows[1] = c6 + c8 + c9 + p_c;
+  rows[2] = T(0);
+  rows[3] = T(2)*c4*dq_phi2*p_l*p_l*p_m;
+  rows[4] = c10;
+  rows[5] = -c10;
+  rows[6] = -T(2)*c4*dq_phi1*p_l*p_l*p_m;
+  rows[7] = T(0);
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

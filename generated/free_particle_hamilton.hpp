@@ -189,15 +189,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1)/p_m;
-  J[8] = T(0);
-  J[9] = T(0);
-  J[10] = T(0);
-  J[11] = T(0);
-  J[12] = T(0);
-  J[13] = T(0);
-  J[14] = T(0);
-  J[15] = T(0);
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = T(0);
+  rows[1] = T(0);
+  rows[2] = T(0);
+  rows[3] = T(0);
+  rows[4] = T(0);
+  rows[5] = T(0);
+  rows[6] = T(0);
+  rows[7] = T(0);
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

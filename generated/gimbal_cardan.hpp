@@ -422,25 +422,26 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  J[18] = T(0);
-  J[19] = T(2)*(c3*c6*c7*p_A + c3*c7*c9*p_B - c3*c7*p_C)*ddq[0] + T(4)*c0*c3*c5*c7*c8*dq_alpha*dq_gamma - c0*c3*c5*c8*dq_beta*dq_beta - c0*c5*c7*c8*ddq[1] - c1*c6*c7*dq_beta*dq_gamma - c10*c14*c9*dq_alpha*dq_beta + c10*c4*c9*dq_alpha*dq_beta + c11*c14*c6*dq_alpha*dq_beta - c11*c4*c6*dq_alpha*dq_beta + c14*dq_alpha*dq_beta*p_C + c2*c7*c9*dq_beta*dq_gamma - c3*ddq[2]*p_C + c3*u_Mz - c4*dq_alpha*dq_beta*p_C - c5*c7*u_Mx + c7*c8*u_My;
-  J[20] = T(2)*(c4*c5*c8*p_A - c4*c5*c8*p_B)*ddq[0] - T(2)*c0*c4*c6*dq_alpha*dq_gamma + T(2)*c0*c4*c9*dq_alpha*dq_gamma - T(2)*c1*c3*c5*c8*dq_beta*dq_gamma + T(2)*c10*c3*c5*c7*c8*dq_alpha*dq_beta + T(2)*c11*c3*c5*c7*c8*dq_alpha*dq_beta - T(2)*c2*c3*c5*c8*dq_beta*dq_gamma - c0*c6*c7*dq_beta*dq_beta + c0*c7*c9*dq_beta*dq_beta - c15*ddq[1] - c3*c5*u_My - c3*c8*u_Mx;
-  J[21] = -T(2)*c0*c4*c5*c8*dq_gamma + c10*c3*c7*c9*dq_beta - c11*c3*c6*c7*dq_beta - c3*c7*dq_beta*p_C;
-  J[22] = -T(2)*c0*c5*c7*c8*dq_beta + c1*c3*c6*dq_gamma + c10*c3*c7*c9*dq_alpha - c11*c3*c6*c7*dq_alpha - c2*c3*c9*dq_gamma - c3*c7*dq_alpha*p_C;
-  J[23] = c1*c3*c6*dq_beta + c16 - c2*c3*c9*dq_beta;
-  J[24] = T(0);
-  J[25] = -c0*c5*c7*c8*ddq[0] + c1*c7*c9*dq_alpha*dq_gamma - c12*c14*c6*dq_alpha*dq_alpha + c12*c4*c6*dq_alpha*dq_alpha + c13*c14*c9*dq_alpha*dq_alpha - c13*c4*c9*dq_alpha*dq_alpha - c2*c6*c7*dq_alpha*dq_gamma;
-  J[26] = -T(2)*(c5*c8*p_A - c5*c8*p_B)*ddq[1] + T(2)*c0*c6*dq_beta*dq_gamma - T(2)*c0*c9*dq_beta*dq_gamma - T(2)*c1*c3*c5*c8*dq_alpha*dq_gamma - T(2)*c12*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c13*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c2*c3*c5*c8*dq_alpha*dq_gamma - c15*ddq[0] + c5*u_Mx - c8*u_My;
-  J[27] = T(2)*c12*c3*c6*c7*dq_alpha - T(2)*c13*c3*c7*c9*dq_alpha - c1*c3*c9*dq_gamma + c2*c3*c6*dq_gamma;
-  J[28] = T(2)*c0*c5*c8*dq_gamma;
-  J[29] = -c1*c3*c9*dq_alpha + c17 + c2*c3*c6*dq_alpha;
-  J[30] = T(0);
-  J[31] = -T(2)*c0*c3*c5*c7*c8*dq_alpha*dq_alpha + c0*c6*c7*dq_alpha*dq_beta - c0*c7*c9*dq_alpha*dq_beta - c3*ddq[0]*p_C + c7*dq_alpha*dq_beta*p_C;
-  J[32] = T(4)*c0*c3*c5*c8*dq_alpha*dq_beta + c0*c4*c6*dq_alpha*dq_alpha - c0*c4*c9*dq_alpha*dq_alpha - c0*c6*dq_beta*dq_beta + c0*c9*dq_beta*dq_beta;
-  J[33] = -c0*c3*c6*dq_beta + c0*c3*c9*dq_beta - c16 - c3*dq_beta*p_C;
-  J[34] = -c0*c3*c6*dq_alpha + c0*c3*c9*dq_alpha - c17 - c3*dq_alpha*p_C;
-  J[35] = T(0);
-  detail::ldlt_solve_rows<6>(L, D, J + 18);
+  T* rows = J + 18;
+  rows[0] = T(0);
+  rows[1] = T(2)*(c3*c6*c7*p_A + c3*c7*c9*p_B - c3*c7*p_C)*ddq[0] + T(4)*c0*c3*c5*c7*c8*dq_alpha*dq_gamma - c0*c3*c5*c8*dq_beta*dq_beta - c0*c5*c7*c8*ddq[1] - c1*c6*c7*dq_beta*dq_gamma - c10*c14*c9*dq_alpha*dq_beta + c10*c4*c9*dq_alpha*dq_beta + c11*c14*c6*dq_alpha*dq_beta - c11*c4*c6*dq_alpha*dq_beta + c14*dq_alpha*dq_beta*p_C + c2*c7*c9*dq_beta*dq_gamma - c3*ddq[2]*p_C + c3*u_Mz - c4*dq_alpha*dq_beta*p_C - c5*c7*u_Mx + c7*c8*u_My;
+  rows[2] = T(2)*(c4*c5*c8*p_A - c4*c5*c8*p_B)*ddq[0] - T(2)*c0*c4*c6*dq_alpha*dq_gamma + T(2)*c0*c4*c9*dq_alpha*dq_gamma - T(2)*c1*c3*c5*c8*dq_beta*dq_gamma + T(2)*c10*c3*c5*c7*c8*dq_alpha*dq_beta + T(2)*c11*c3*c5*c7*c8*dq_alpha*dq_beta - T(2)*c2*c3*c5*c8*dq_beta*dq_gamma - c0*c6*c7*dq_beta*dq_beta + c0*c7*c9*dq_beta*dq_beta - c15*ddq[1] - c3*c5*u_My - c3*c8*u_Mx;
+  rows[3] = -T(2)*c0*c4*c5*c8*dq_gamma + c10*c3*c7*c9*dq_beta - c11*c3*c6*c7*dq_beta - c3*c7*dq_beta*p_C;
+  rows[4] = -T(2)*c0*c5*c7*c8*dq_beta + c1*c3*c6*dq_gamma + c10*c3*c7*c9*dq_alpha - c11*c3*c6*c7*dq_alpha - c2*c3*c9*dq_gamma - c3*c7*dq_alpha*p_C;
+  rows[5] = c1*c3*c6*dq_beta + c16 - c2*c3*c9*dq_beta;
+  rows[6] = T(0);
+  rows[7] = -c0*c5*c7*c8*ddq[0] + c1*c7*c9*dq_alpha*dq_gamma - c12*c14*c6*dq_alpha*dq_alpha + c12*c4*c6*dq_alpha*dq_alpha + c13*c14*c9*dq_alpha*dq_alpha - c13*c4*c9*dq_alpha*dq_alpha - c2*c6*c7*dq_alpha*dq_gamma;
+  rows[8] = -T(2)*(c5*c8*p_A - c5*c8*p_B)*ddq[1] + T(2)*c0*c6*dq_beta*dq_gamma - T(2)*c0*c9*dq_beta*dq_gamma - T(2)*c1*c3*c5*c8*dq_alpha*dq_gamma - T(2)*c12*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c13*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c2*c3*c5*c8*dq_alpha*dq_gamma - c15*ddq[0] + c5*u_Mx - c8*u_My;
+  rows[9] = T(2)*c12*c3*c6*c7*dq_alpha - T(2)*c13*c3*c7*c9*dq_alpha - c1*c3*c9*dq_gamma + c2*c3*c6*dq_gamma;
+  rows[10] = T(2)*c0*c5*c8*dq_gamma;
+  rows[11] = -c1*c3*c9*dq_alpha + c17 + c2*c3*c6*dq_alpha;
+  rows[12] = T(0);
+  rows[13] = -T(2)*c0*c3*c5*c7*c8*dq_alpha*dq_alpha + c0*c6*c7*dq_alpha*dq_beta - c0*c7*c9*dq_alpha*dq_beta - c3*ddq[0]*p_C + c7*dq_alpha*dq_beta*p_C;
+  rows[14] = T(4)*c0*c3*c5*c8*dq_alpha*dq_beta + c0*c4*c6*dq_alpha*dq_alpha - c0*c4*c9*dq_alpha*dq_alpha - c0*c6*dq_beta*dq_beta + c0*c9*dq_beta*dq_beta;
+  rows[15] = -c0*c3*c6*dq_beta + c0*c3*c9*dq_beta - c16 - c3*dq_beta*p_C;
+  rows[16] = -c0*c3*c6*dq_alpha + c0*c3*c9*dq_alpha - c17 - c3*dq_alpha*p_C;
+  rows[17] = T(0);
+  detail::ldlt_solve_rows<6>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

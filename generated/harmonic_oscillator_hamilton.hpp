@@ -162,9 +162,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, ddq);
   J[0] = T(0);
   J[1] = T(1)/p_m;
-  J[2] = -p_k;
-  J[3] = T(0);
-  detail::ldlt_solve_rows<2>(L, D, J + 2);
+  T* rows = J + 2;
+  rows[0] = -p_k;
+  rows[1] = T(0);
+  detail::ldlt_solve_rows<2>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

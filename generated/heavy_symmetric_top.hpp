@@ -383,25 +383,26 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  J[18] = T(0);
-  J[19] = -T(2)*(c0*c2*c3 - c0*c3*p_C)*ddq[0] - T(2)*c4*c5*dq_psi*dq_theta + T(2)*c4*c6*dq_psi*dq_theta + c0*dq_phi*dq_theta*p_C + c3*ddq[2]*p_C;
-  J[20] = T(0);
-  J[21] = -T(2)*c0*c3*c4*dq_theta;
-  J[22] = -c7;
-  J[23] = c8;
-  J[24] = T(0);
-  J[25] = -c0*dq_phi*dq_psi*p_C + c0*p_g*p_m*p_s + c4*c5*dq_psi*dq_psi - c4*c6*dq_psi*dq_psi;
-  J[26] = T(0);
-  J[27] = c7;
-  J[28] = T(0);
-  J[29] = -c3*dq_psi*p_C;
-  J[30] = T(0);
-  J[31] = c0*dq_psi*dq_theta*p_C + c3*ddq[0]*p_C;
-  J[32] = T(0);
-  J[33] = c8;
-  J[34] = c3*dq_psi*p_C;
-  J[35] = T(0);
-  detail::ldlt_solve_rows<6>(L, D, J + 18);
+  T* rows = J + 18;
+  rows[0] = T(0);
+  rows[1] = -T(2)*(c0*c2*c3 - c0*c3*p_C)*ddq[0] - T(2)*c4*c5*dq_psi*dq_theta + T(2)*c4*c6*dq_psi*dq_theta + c0*dq_phi*dq_theta*p_C + c3*ddq[2]*p_C;
+  rows[2] = T(0);
+  rows[3] = -T(2)*c0*c3*c4*dq_theta;
+  rows[4] = -c7;
+  rows[5] = c8;
+  rows[6] = T(0);
+  rows[7] = -c0*dq_phi*dq_psi*p_C + c0*p_g*p_m*p_s + c4*c5*dq_psi*dq_psi - c4*c6*dq_psi*dq_psi;
+  rows[8] = T(0);
+  rows[9] = c7;
+  rows[10] = T(0);
+  rows[11] = -c3*dq_psi*p_C;
+  rows[12] = T(0);
+  rows[13] = c0*dq_psi*dq_theta*p_C + c3*ddq[0]*p_C;
+  rows[14] = T(0);
+  rows[15] = c8;
+  rows[16] = c3*dq_psi*p_C;
+  rows[17] = T(0);
+  detail::ldlt_solve_rows<6>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -216,15 +216,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = c0;
-  J[9] = T(0);
-  J[10] = -p_d;
-  J[11] = T(2)*p_Omega*p_m;
-  J[12] = T(0);
-  J[13] = c0;
-  J[14] = -T(2)*p_Omega*p_m;
-  J[15] = -p_d;
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = c0;
+  rows[1] = T(0);
+  rows[2] = -p_d;
+  rows[3] = T(2)*p_Omega*p_m;
+  rows[4] = T(0);
+  rows[5] = c0;
+  rows[6] = -T(2)*p_Omega*p_m;
+  rows[7] = -p_d;
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

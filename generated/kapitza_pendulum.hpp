@@ -269,9 +269,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c1 = cos_q_phi;
   J[0] = T(0);
   J[1] = T(1);
-  J[2] = c1*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w - c1*p_g*p_l*p_m;
-  J[3] = T(0);
-  detail::ldlt_solve_rows<2>(L, D, J + 2);
+  T* rows = J + 2;
+  rows[0] = c1*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w - c1*p_g*p_l*p_m;
+  rows[1] = T(0);
+  detail::ldlt_solve_rows<2>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -290,17 +290,18 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[12] = T(0);
   J[13] = T(0);
   J[14] = T(1);
-  J[15] = T(0);
-  J[16] = T(0);
-  J[17] = T(0);
-  J[18] = T(0);
-  J[19] = T(0);
-  J[20] = T(0);
-  J[21] = T(0);
-  J[22] = T(0);
-  J[23] = T(0);
-  J[24] = T(0);
-  detail::ldlt_solve_rows<5>(L, D, J + 15);
+  T* rows = J + 15;
+  rows[0] = T(0);
+  rows[1] = T(0);
+  rows[2] = T(0);
+  rows[3] = T(0);
+  rows[4] = T(0);
+  rows[5] = T(0);
+  rows[6] = T(0);
+  rows[7] = T(0);
+  rows[8] = T(0);
+  rows[9] = T(0);
+  detail::ldlt_solve_rows<5>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

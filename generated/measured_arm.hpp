@@ -962,9 +962,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
+  T* rows = J + 18;
   for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 6; ++j) J[(3 + i) * 6 + j] = -F[i * 9 + j];
-  detail::ldlt_solve_rows<6>(L, D, J + 18);
+    for (std::size_t j = 0; j < 6; ++j) rows[i * 6 + j] = -F[i * 9 + j];
+  detail::ldlt_solve_rows<6>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

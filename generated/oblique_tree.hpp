@@ -1684,9 +1684,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[47] = T(0);
   J[48] = T(0);
   J[49] = T(1);
+  T* rows = J + 50;
   for (std::size_t i = 0; i < 5; ++i)
-    for (std::size_t j = 0; j < 10; ++j) J[(5 + i) * 10 + j] = -F[i * 11 + j];
-  detail::ldlt_solve_rows<10>(L, D, J + 50);
+    for (std::size_t j = 0; j < 10; ++j) rows[i * 10 + j] = -F[i * 11 + j];
+  detail::ldlt_solve_rows<10>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -264,9 +264,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::ldlt_solve(L, D, ddq);
   J[0] = T(0);
   J[1] = T(1);
-  J[2] = -cos_q_phi*p_g*p_l*p_m;
-  J[3] = -p_d;
-  detail::ldlt_solve_rows<2>(L, D, J + 2);
+  T* rows = J + 2;
+  rows[0] = -cos_q_phi*p_g*p_l*p_m;
+  rows[1] = -p_d;
+  detail::ldlt_solve_rows<2>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

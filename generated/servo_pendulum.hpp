@@ -306,9 +306,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c1 = T(1) - detail::below(-c0, -p_tau_max) - detail::below(p_tau_max, -c0);
   J[0] = T(0);
   J[1] = T(1);
-  J[2] = -c1*p_kp - cos_q_phi*p_g*p_m*p_s;
-  J[3] = -c1*p_kd;
-  detail::ldlt_solve_rows<2>(L, D, J + 2);
+  T* rows = J + 2;
+  rows[0] = -c1*p_kp - cos_q_phi*p_g*p_m*p_s;
+  rows[1] = -c1*p_kd;
+  detail::ldlt_solve_rows<2>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -249,25 +249,26 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  J[18] = T(3)*p_m*p_n*p_n;
-  J[19] = T(0);
-  J[20] = T(0);
-  J[21] = T(0);
-  J[22] = T(2)*p_m*p_n;
-  J[23] = T(0);
-  J[24] = T(0);
-  J[25] = T(0);
-  J[26] = T(0);
-  J[27] = -T(2)*p_m*p_n;
-  J[28] = T(0);
-  J[29] = T(0);
-  J[30] = T(0);
-  J[31] = T(0);
-  J[32] = -p_m*p_n*p_n;
-  J[33] = T(0);
-  J[34] = T(0);
-  J[35] = T(0);
-  detail::ldlt_solve_rows<6>(L, D, J + 18);
+  T* rows = J + 18;
+  rows[0] = T(3)*p_m*p_n*p_n;
+  rows[1] = T(0);
+  rows[2] = T(0);
+  rows[3] = T(0);
+  rows[4] = T(2)*p_m*p_n;
+  rows[5] = T(0);
+  rows[6] = T(0);
+  rows[7] = T(0);
+  rows[8] = T(0);
+  rows[9] = -T(2)*p_m*p_n;
+  rows[10] = T(0);
+  rows[11] = T(0);
+  rows[12] = T(0);
+  rows[13] = T(0);
+  rows[14] = -p_m*p_n*p_n;
+  rows[15] = T(0);
+  rows[16] = T(0);
+  rows[17] = T(0);
+  detail::ldlt_solve_rows<6>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

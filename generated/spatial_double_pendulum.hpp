@@ -882,9 +882,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[29] = T(0);
   J[30] = T(0);
   J[31] = T(1);
+  T* rows = J + 32;
   for (std::size_t i = 0; i < 4; ++i)
-    for (std::size_t j = 0; j < 8; ++j) J[(4 + i) * 8 + j] = -F[i * 9 + j];
-  detail::ldlt_solve_rows<8>(L, D, J + 32);
+    for (std::size_t j = 0; j < 8; ++j) rows[i * 8 + j] = -F[i * 9 + j];
+  detail::ldlt_solve_rows<8>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -314,15 +314,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = -c1*p_g*p_l*p_m - c2*dq_phi*dq_phi*p_l*p_l*p_m + c3*dq_phi*dq_phi*p_l*p_l*p_m;
-  J[9] = T(0);
-  J[10] = T(0);
-  J[11] = T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
-  J[12] = -T(2)*c0*c1*ddq[1]*p_l*p_l*p_m + T(2)*c2*dq_phi*dq_theta*p_l*p_l*p_m - T(2)*c3*dq_phi*dq_theta*p_l*p_l*p_m;
-  J[13] = T(0);
-  J[14] = -T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
-  J[15] = -T(2)*c0*c1*dq_theta*p_l*p_l*p_m;
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = -c1*p_g*p_l*p_m - c2*dq_phi*dq_phi*p_l*p_l*p_m + c3*dq_phi*dq_phi*p_l*p_l*p_m;
+  rows[1] = T(0);
+  rows[2] = T(0);
+  rows[3] = T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
+  rows[4] = -T(2)*c0*c1*ddq[1]*p_l*p_l*p_m + T(2)*c2*dq_phi*dq_theta*p_l*p_l*p_m - T(2)*c3*dq_phi*dq_theta*p_l*p_l*p_m;
+  rows[5] = T(0);
+  rows[6] = -T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
+  rows[7] = -T(2)*c0*c1*dq_theta*p_l*p_l*p_m;
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -271,25 +271,26 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[15] = T(0);
   J[16] = T(0);
   J[17] = T(1);
-  J[18] = -T(2)*p_k;
-  J[19] = p_k;
-  J[20] = T(0);
-  J[21] = T(0);
-  J[22] = T(0);
-  J[23] = T(0);
-  J[24] = p_k;
-  J[25] = -T(2)*p_k - p_K;
-  J[26] = c0;
-  J[27] = T(0);
-  J[28] = -p_c;
-  J[29] = p_c;
-  J[30] = T(0);
-  J[31] = c0;
-  J[32] = -c0;
-  J[33] = T(0);
-  J[34] = p_c;
-  J[35] = -p_c;
-  detail::ldlt_solve_rows<6>(L, D, J + 18);
+  T* rows = J + 18;
+  rows[0] = -T(2)*p_k;
+  rows[1] = p_k;
+  rows[2] = T(0);
+  rows[3] = T(0);
+  rows[4] = T(0);
+  rows[5] = T(0);
+  rows[6] = p_k;
+  rows[7] = -T(2)*p_k - p_K;
+  rows[8] = c0;
+  rows[9] = T(0);
+  rows[10] = -p_c;
+  rows[11] = p_c;
+  rows[12] = T(0);
+  rows[13] = c0;
+  rows[14] = -c0;
+  rows[15] = T(0);
+  rows[16] = p_c;
+  rows[17] = -p_c;
+  detail::ldlt_solve_rows<6>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -232,15 +232,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = -p_k1 - p_k2;
-  J[9] = p_k2;
-  J[10] = -c0 - p_alpha*p_m1 - p_beta*p_k1;
-  J[11] = c0;
-  J[12] = p_k2;
-  J[13] = -p_k2 - p_k3;
-  J[14] = c0;
-  J[15] = -c0 - p_alpha*p_m2 - p_beta*p_k3;
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = -p_k1 - p_k2;
+  rows[1] = p_k2;
+  rows[2] = -c0 - p_alpha*p_m1 - p_beta*p_k1;
+  rows[3] = c0;
+  rows[4] = p_k2;
+  rows[5] = -p_k2 - p_k3;
+  rows[6] = c0;
+  rows[7] = -c0 - p_alpha*p_m2 - p_beta*p_k3;
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

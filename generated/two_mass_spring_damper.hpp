@@ -223,15 +223,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = -p_k1 - p_k2;
-  J[9] = p_k2;
-  J[10] = -p_d1 - p_d2;
-  J[11] = p_d2;
-  J[12] = p_k2;
-  J[13] = -p_k2;
-  J[14] = p_d2;
-  J[15] = -p_d2;
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = -p_k1 - p_k2;
+  rows[1] = p_k2;
+  rows[2] = -p_d1 - p_d2;
+  rows[3] = p_d2;
+  rows[4] = p_k2;
+  rows[5] = -p_k2;
+  rows[6] = p_d2;
+  rows[7] = -p_d2;
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -335,15 +335,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = T(0);
-  J[9] = -T(4)*c0*c1*ddq[0]*p_l*p_l*p_m*p_n*p_n - T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - c0*p_kappa;
-  J[10] = -T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
-  J[11] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  J[12] = T(0);
-  J[13] = -T(2)*c1*p_g*p_l*p_m + T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  J[14] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  J[15] = -p_b;
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = T(0);
+  rows[1] = -T(4)*c0*c1*ddq[0]*p_l*p_l*p_m*p_n*p_n - T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - c0*p_kappa;
+  rows[2] = -T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
+  rows[3] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  rows[4] = T(0);
+  rows[5] = -T(2)*c1*p_g*p_l*p_m + T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  rows[6] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  rows[7] = -p_b;
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

@@ -254,15 +254,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[5] = T(0);
   J[6] = T(0);
   J[7] = T(1);
-  J[8] = -p_K0_11*p_g;
-  J[9] = -p_K0_12*p_g - p_K2_12*p_v*p_v;
-  J[10] = T(0);
-  J[11] = -p_C1_12*p_v;
-  J[12] = -p_K0_12*p_g;
-  J[13] = -p_K0_22*p_g - p_K2_22*p_v*p_v;
-  J[14] = -p_C1_21*p_v;
-  J[15] = -p_C1_22*p_v;
-  detail::ldlt_solve_rows<4>(L, D, J + 8);
+  T* rows = J + 8;
+  rows[0] = -p_K0_11*p_g;
+  rows[1] = -p_K0_12*p_g - p_K2_12*p_v*p_v;
+  rows[2] = T(0);
+  rows[3] = -p_C1_12*p_v;
+  rows[4] = -p_K0_12*p_g;
+  rows[5] = -p_K0_22*p_g - p_K2_22*p_v*p_v;
+  rows[6] = -p_C1_21*p_v;
+  rows[7] = -p_C1_22*p_v;
+  detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

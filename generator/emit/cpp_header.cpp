@@ -158,21 +158,16 @@ std::string jacobian_state_function(const Equations& e) {
   // they are solved one column longer in a local array (the quadruped's jacobian_state ran 1.09
   // times as fast so). Below six velocities the copies would cost more than the loops save.
   std::size_t width = N % 2 && n >= 6 ? N + 1 : N;
-  std::string solved = width == N ? fmt::format("J + {}", nq * N) : "rows";
-  if (width != N) w.line(fmt::format("T rows[{}] = {{}};", n * width));
-  auto row_entry = [&](const std::string& i, const std::string& j) {
-    return width == N ? fmt::format("J[({} + {}) * {} + {}]", nq, i, N, j) : fmt::format("rows[{} * {} + {}]", i, width, j);
-  };
+  if (width == N) w.line(fmt::format("T* rows = J + {};", nq * N));
+  else w.line(fmt::format("T rows[{}] = {{}};", n * width));
   if (newton_euler) {
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
-    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) {} = -F[i * {} + j];", N, row_entry("i", "j"), N + s.inputs.size()));
+    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) rows[i * {} + j] = -F[i * {} + j];", N, width, N + s.inputs.size()));
   } else {
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < N; ++j)
-        w.line(width == N ? fmt::format("J[{}] = {};", (nq + i) * N + j, code[j * n + i])
-                          : fmt::format("rows[{}] = {};", i * width + j, code[j * n + i]));
+      for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("rows[{}] = {};", i * width + j, code[j * n + i]));
   }
-  w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, {});", width, solved));
+  w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, rows);", width));
   if (width != N) {
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
     w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[({1} + i) * {0} + j] = rows[i * {2} + j];", N, nq, width));
