@@ -25,7 +25,24 @@ PlacedFrame place_recursive_frame(Model& model, const std::string& name, int par
     above.rotation.matrix = p.rotation;
     above.origin = p.origin;
   }
-  PlacedFrame placed = place_frame(above, relative, origin);
+  // a relative rotation or origin whose entries are sums (a joint about an oblique axis through an
+  // anchor: a + b cos q + c sin q) is named first, so that each entry of the world pose is three
+  // products of named entries, not the expansion of all of them
+  // (at the root, the world pose is the relative one, named below)
+  auto name_sum = [&](const ex& x, const std::string& quantity, const std::string& axes_of) {
+    ex expanded = x.expand();
+    if (parent < 0 || !GiNaC::is_a<GiNaC::add>(expanded)) return x;
+    return intermediate(model.intermediates, fmt::format("{}.{}_{}", name, quantity, axes_of),
+                        fmt::format("k_{}_{}{}", name, quantity, axes_of), expanded);
+  };
+  Rotation named = relative;
+  Vector3 named_origin = origin;
+  for (unsigned a = 0; a < 3; ++a) {
+    for (unsigned b = 0; b < 3; ++b)
+      named.matrix(a, b) = name_sum(relative.matrix(a, b), "E", fmt::format("{}{}", axes[a], axes[b]));
+    named_origin[a] = name_sum(origin[a], "r", std::string(1, axes[a]));
+  }
+  PlacedFrame placed = place_frame(above, named, named_origin);
   FrameLink link;
   link.name = name;
   link.parent = parent;

@@ -6,6 +6,7 @@
 // 3×3 matrix definition serves as a rotation, an inertia and by entry; and each misuse is located.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -303,6 +304,47 @@ TEST(Frames, RecursiveKinematicsGrowsPolynomiallyWithTheChain) {
   double growth = double(eight) / double(four);
   EXPECT_GT(growth, 2.0);
   EXPECT_LT(growth, 10.0) << four << " characters at n = 4, " << eight << " at n = 8";
+}
+
+// A joint about an oblique axis through an anchor turns its frame by E = a + b cos q + c sin q and
+// moves its origin by r alike: both are named, so that each entry of the world pose is three products
+// of named entries (R = R_p E, o = o_p + R_p r), not the expansion of all of them.
+TEST(Frames, ObliqueJointsComposeNamedRelativePoses) {
+  Equations e = test::derive_text(R"toml([model]
+name = "oblique"
+
+[coordinates]
+a = 0.1
+b = 0.2
+
+[[frames]]
+name = "base"
+joint = { type = "revolute", axis = ["1", "2", "2"], anchor = ["0.1", "0", "0"], coordinate = "a" }
+
+[[frames]]
+name = "arm"
+parent = "base"
+origin = ["0", "0", "0.3"]
+joint = { type = "revolute", axis = ["2", "-1", "2"], anchor = ["0", "0.05", "0"], coordinate = "b" }
+
+[[rigid_bodies]]
+name = "link"
+mass = "1"
+frame = "arm"
+center = ["0.1", "0", "0"]
+inertia = ["0.01", "0.02", "0.03"]
+)toml");
+  std::map<std::string, ex> definition;
+  for (const Intermediate& i : e.intermediates) definition[i.symbol.get_name()] = i.definition;
+  for (const char* axes : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"}) {
+    ASSERT_TRUE(definition.count(fmt::format("arm.E_{}", axes))) << axes;
+    ex R = definition.at(fmt::format("arm.R_{}", axes));
+    EXPECT_LE(R.nops(), 3u) << "arm.R_" << axes << " = " << R;
+  }
+  for (const char* axis : {"x", "y", "z"}) {
+    ex o = definition.at(fmt::format("arm.o_{}", axis));
+    EXPECT_LE(o.nops(), 4u) << "arm.o_" << axis << " = " << o;
+  }
 }
 
 TEST(Frames, RecursiveKinematicsMisusesAreLocated) {
