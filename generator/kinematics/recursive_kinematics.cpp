@@ -16,14 +16,6 @@ const char* axis_names = "xyz";
 
 bool is_identity(const GiNaC::matrix& R) { return ex(R).is_equal(GiNaC::unit_matrix(3)); }
 
-// the intermediate WHO.LABEL, in C++ k_WHO_LABEL
-ex named_in(std::vector<Intermediate>& out, const std::string& who, const std::string& label, const ex& definition) {
-  std::string cpp = "k_" + who + "_" + label;
-  for (char& c : cpp)
-    if (c == '.') c = '_';
-  return intermediate(out, who + "." + label, cpp, definition.expand());
-}
-
 // entry (a, b) of Ṙ = R[ω]× and of R̈ = R([α]× + [ω]×[ω]×) at q̈ = 0: row a of R times [·]× e_b
 RecursiveKinematics::PoseRates rotation_rates(const FrameMotion& m, unsigned a, unsigned b) {
   Vector3 e{0, 0, 0};
@@ -61,7 +53,7 @@ ex RecursiveKinematics::rate_along_motion(const ex& x, bool twice) const {
 }
 
 ex RecursiveKinematics::named(const std::string& name, const std::string& label, const ex& definition) {
-  return named_in(intermediates_, name, label, definition);
+  return named_intermediate(intermediates_, name, label, definition);
 }
 
 RecursiveKinematics::RecursiveKinematics(const Model& model, std::vector<Intermediate>& intermediates)
@@ -146,7 +138,7 @@ FrameMotion RecursiveKinematics::child(const FrameMotion& p, const GiNaC::matrix
 Vector3 RecursiveKinematics::named_vector(std::vector<Intermediate>& out, const std::string& who,
                                           const std::string& label, const Vector3& x) {
   Vector3 v;
-  for (unsigned a = 0; a < 3; ++a) v[a] = named_in(out, who, fmt::format("{}_{}", label, axis_names[a]), x[a]);
+  for (unsigned a = 0; a < 3; ++a) v[a] = named_intermediate(out, who, fmt::format("{}_{}", label, axis_names[a]), x[a]);
   return v;
 }
 

@@ -16,6 +16,14 @@ ex intermediate(std::vector<Intermediate>& intermediates, const std::string& nam
   return i.symbol;
 }
 
+ex named_intermediate(std::vector<Intermediate>& intermediates, const std::string& who, const std::string& label,
+                      const ex& definition) {
+  std::string cpp = "k_" + who + "_" + label;
+  for (char& c : cpp)
+    if (c == '.') c = '_';
+  return intermediate(intermediates, who + "." + label, cpp, definition.expand());
+}
+
 PlacedFrame place_recursive_frame(Model& model, const std::string& name, int parent, const Rotation& relative,
                                   const Vector3& origin) {
   static const char* axes = "xyz";
@@ -30,8 +38,9 @@ PlacedFrame place_recursive_frame(Model& model, const std::string& name, int par
   // products of named entries, not the expansion of all of them
   // (at the root, the world pose is the relative one, named below)
   auto name_sum = [&](const ex& x, const std::string& quantity, const std::string& axes_of) {
+    if (parent < 0) return x;
     ex expanded = x.expand();
-    if (parent < 0 || !GiNaC::is_a<GiNaC::add>(expanded)) return x;
+    if (!GiNaC::is_a<GiNaC::add>(expanded)) return x;
     return intermediate(model.intermediates, fmt::format("{}.{}_{}", name, quantity, axes_of),
                         fmt::format("k_{}_{}{}", name, quantity, axes_of), expanded);
   };

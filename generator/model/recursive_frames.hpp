@@ -16,6 +16,10 @@ namespace eomgen {
 /// of `model` named `name` (printed) and `cpp_name` (in generated code).
 GiNaC::ex intermediate(std::vector<Intermediate>& intermediates, const std::string& name, const std::string& cpp_name,
                        const GiNaC::ex& definition);
+/// intermediate() of `definition` expanded, printed WHO.LABEL and named k_WHO_LABEL in C++ (a dot
+/// in WHO becomes _): a frame's or link's quantity.
+GiNaC::ex named_intermediate(std::vector<Intermediate>& intermediates, const std::string& who, const std::string& label,
+                             const GiNaC::ex& definition);
 
 /// Adds the frame `name` in `parent` (an index into model.frame_links, -1 for the inertial
 /// frame) to the model's frame links, and returns it placed in its intermediates.

@@ -238,8 +238,7 @@ class Gradient {
   }
 
   ex name(std::size_t i, const std::string& label, const ex& value) {
-    return intermediate(out_, fmt::format("{}.{}", links_[i].name, label), fmt::format("k_{}_{}", links_[i].name, label),
-                        value.expand());
+    return named_intermediate(out_, links_[i].name, label, value);
   }
   Vector3 named(std::size_t i, const std::string& label, const Vector3& x) {
     return {name(i, label + "_x", x[0]), name(i, label + "_y", x[1]), name(i, label + "_z", x[2])};

@@ -162,7 +162,7 @@ class Tree {
             for (unsigned k = 0; k < 3; ++k) turned(a, b) += EJ(a, k) * c.E(b, k);
         J = J.add(turned).add(shifted(mass[j], c.r, hj));
       }
-      mass[i] = intermediate(out_, fmt::format("{}.tm", name(i)), fmt::format("k_{}_tm", name(i)), m.expand());
+      mass[i] = named_intermediate(out_, name(i), "tm", m);
       first[i] = named(out_, i, "th", h);
       for (unsigned a = 0; a < 3; ++a)
         for (unsigned b = a; b < 3; ++b) {
@@ -398,9 +398,7 @@ class Tree {
 
   Vector3 named(std::vector<Intermediate>& out, std::size_t i, const std::string& label, const Vector3& x) const {
     Vector3 v;
-    for (unsigned a = 0; a < 3; ++a)
-      v[a] = intermediate(out, fmt::format("{}.{}_{}", name(i), label, axis_names[a]),
-                          fmt::format("k_{}_{}_{}", name(i), label, axis_names[a]), x[a].expand());
+    for (unsigned a = 0; a < 3; ++a) v[a] = named_intermediate(out, name(i), fmt::format("{}_{}", label, axis_names[a]), x[a]);
     return v;
   }
 
