@@ -6,6 +6,9 @@
 // generated with the other [model] forward_dynamics), that header's rhs too, and the largest
 // difference between the two forms' results.
 // -DJACOBIAN=0 leaves the Jacobian out (long chains, whose dense jacobian_state takes minutes to compile).
+// -DTREE_PEERS=1 (tree_benchmark.py) also times Featherstone's articulated-body algorithm written by
+// hand over Eigen (articulated_body.hpp) on the MJCF, and MuJoCo's finite-difference derivatives
+// mjd_transitionFD (forward differences, its default) against jacobian_state.
 // Built by peer_benchmark.py: c++ -O2 -DMODEL=NAME [-DOTHER=NAME2] -DPLANAR=0|1 -I DIR rhs_benchmark.cpp -lmujoco
 #include <algorithm>
 #include <cmath>
@@ -17,6 +20,13 @@
 #include <mujoco/mujoco.h>
 
 #include "batch_timing.hpp"
+
+#ifndef TREE_PEERS
+#define TREE_PEERS 0
+#endif
+#if TREE_PEERS
+#include "articulated_body.hpp"
+#endif
 
 #ifndef JACOBIAN
 #define JACOBIAN 1
@@ -75,13 +85,34 @@ int main(int argc, char** argv) {
   HandWritten hand;
   volatile double sink = 0;
   int calls = std::max(20, 200000 / (n * n + 10));
-  std::vector<double> ours, theirs, mujoco, jacobian, differences, other_form;
+  std::vector<double> ours, theirs, mujoco, jacobian, differences, other_form, articulated, transition;
+#if TREE_PEERS
+  // the articulated-body peer at MuJoCo's state (no controls), and its qacc against MuJoCo's there
+  if (!mj) return 2;
+  featherstone::ArticulatedBody<double> aba(mj);
+  std::vector<double> no_forces(std::size_t(mj->nv), 0.0), aba_qacc(std::size_t(mj->nv));
+  std::vector<double> A(std::size_t(2 * mj->nv + mj->na) * std::size_t(2 * mj->nv + mj->na));
+  mj_forward(mj, data);
+  aba.accelerations(data->qpos, data->qvel, no_forces.data(), aba_qacc.data());
+  double aba_differs = 0, qacc_size = 0;
+  for (int i = 0; i < mj->nv; ++i) {
+    qacc_size = std::max(qacc_size, std::abs(data->qacc[i]));
+    aba_differs = std::max(aba_differs, std::abs(aba_qacc[std::size_t(i)] - data->qacc[i]));
+  }
+  aba_differs /= std::max(qacc_size, 1e-300);
+#else
+  double aba_differs = 0;
+#endif
   for (int rep = 0; rep < 15; ++rep) {
     ours.push_back(time_batch([&] { model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data()); sink = sink + xdot[N - 1]; }, calls));
 #ifdef OTHER
     other_form.push_back(time_batch([&] { other::rhs(0.0, x.data(), u.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
 #endif
     if (mj) mujoco.push_back(time_batch([&] { mj_forward(mj, data); sink = sink + data->qacc[0]; }, calls));
+#if TREE_PEERS
+    articulated.push_back(time_batch([&] { aba.accelerations(data->qpos, data->qvel, no_forces.data(), aba_qacc.data()); sink = sink + aba_qacc[0]; }, calls));
+    transition.push_back(time_batch([&] { mjd_transitionFD(mj, data, 1e-6, 0, A.data(), nullptr, nullptr, nullptr); sink = sink + A[0]; }, std::max(5, calls / N)));
+#endif
     if (PLANAR) theirs.push_back(time_batch([&] { hand.rhs(x.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
 #if JACOBIAN
     jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; }, std::max(5, calls / N)));
@@ -131,10 +162,11 @@ int main(int argc, char** argv) {
   auto or_null = [](const std::vector<double>& v) { return v.empty() ? std::string("null") : std::to_string(median(v)); };
   std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %s, \"eigen_ns\": %s, \"jacobian_ns\": %s, "
               "\"finite_difference_ns\": %s, \"hand_written_difference\": %.2g, \"other_form_ns\": %s, "
-              "\"forms_differ\": %.2g, \"error\": %.2g, \"other_form_error\": %.2g}\n",
+              "\"forms_differ\": %.2g, \"error\": %.2g, \"other_form_error\": %.2g, \"featherstone_ns\": %s, "
+              "\"featherstone_differs\": %.2g, \"transition_fd_ns\": %s}\n",
               median(ours), or_null(mujoco).c_str(), or_null(theirs).c_str(), or_null(jacobian).c_str(),
               or_null(differences).c_str(), agreement, or_null(other_form).c_str(),
-              forms_differ, own_error, other_error);
+              forms_differ, own_error, other_error, or_null(articulated).c_str(), aba_differs, or_null(transition).c_str());
   if (mj) mj_deleteData(data), mj_deleteModel(mj);
   return sink == 12345.678 ? 3 : 0;
 }

@@ -2,20 +2,24 @@
 """Rigid-body trees against MuJoCo, in one process per robot: the generated rhs and
 jacobian_state against mj_forward on the same robot as MJCF (tests/crosscheck/mjcf/,
 where tests/crosscheck/mujoco_oracle_test.cpp checks that both give the same qacc to
-1e-12), with interleaved repetitions and medians (rhs_benchmark.cpp). Also the header's
-size, the time `eomgen generate` takes, and g++ -O2 of rhs and jacobian_state.
+1e-12), and against Featherstone's articulated-body algorithm written by hand over Eigen
+(articulated_body.hpp, checked against MuJoCo in tests/crosscheck/articulated_body_test.cpp);
+jacobian_state against central differences of the rhs and against MuJoCo's mjd_transitionFD.
+Interleaved repetitions and medians (rhs_benchmark.cpp). Also the header's size, the time
+`eomgen generate` takes, and g++ -O2 of a translation unit that calls rhs and jacobian_state.
 
 Robots (written here): models/measured_arm.toml (3 hinges, the Panda's first links'
 layout, measured inertias, turned by rot_z(q): the frame recursion), models/oblique_tree.toml
 (5 joints, branched, oblique axes through offset anchors, a slide, a fixed frame), and
 tests/crosscheck/models/ (robot_models.py): seven_joint_arm (a Panda's layout) and
 branched_tree (21 oblique hinges in a humanoid's branching; with its jacobian_state it
-takes about 40 s to compile) and quadruped (a free torso, four legs of three hinges: 19
+takes about 16 s to compile) and quadruped (a free torso, four legs of three hinges: 19
 coordinates, 18 velocities). Prints a Markdown table.
 
 Usage: tree_benchmark.py EOMGEN [--quick] [--chart FILE.svg] [ROBOT ...]
 (exit 77 without a C++ compiler or MuJoCo). --chart also draws the times as bars, each robot's
-rhs beside mj_forward, labelled with their ratio (the README's chart).
+rhs beside mj_forward and the articulated-body algorithm by hand, labelled with their ratios to
+it (the README's chart).
 """
 import json
 import os
@@ -47,37 +51,52 @@ def measure(eomgen, name, work):
     start = time.perf_counter()
     run([eomgen, "generate", model_file(name), "-o", work])
     generate = time.perf_counter() - start
-    binary = os.path.join(work, f"tree_{name}")
+    # g++ -O2 of the header's rhs and jacobian_state alone, as a user's translation unit compiles them
+    unit = os.path.join(work, f"unit_{name}.cpp")
+    with open(unit, "w") as f:
+        f.write(f'#include "{name}.hpp"\n'
+                f"namespace robot = eomgen::models::{name};\n"
+                "void rhs(const double* x, const double* u, const double* p, double* xdot) { robot::rhs(0.0, x, u, p, xdot); }\n"
+                "void jacobian(const double* x, const double* u, const double* p, double* J) "
+                "{ robot::jacobian_state(0.0, x, u, p, J); }\n")
     start = time.perf_counter()
-    run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", f"-DJACOBIAN={0 if name in WITHOUT_JACOBIAN else 1}",
+    run(["c++", "-O2", "-std=c++17", "-c", "-I", work, unit, "-o", unit + ".o"])
+    build = time.perf_counter() - start
+    binary = os.path.join(work, f"tree_{name}")
+    run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", f"-DJACOBIAN={0 if name in WITHOUT_JACOBIAN else 1}", "-DTREE_PEERS=1",
          "-I", work, "-I", HERE, "-I", "/usr/include/eigen3",
          os.path.join(HERE, "rhs_benchmark.cpp"), "-o", binary, "-lmujoco"])
-    build = time.perf_counter() - start
     result = json.loads(run([binary, os.path.join(ROOT, "tests", "crosscheck", "mjcf", f"{name}.xml")]).stdout)
     result.update(generate=generate, build=build, header_kb=os.path.getsize(os.path.join(work, f"{name}.hpp")) / 1000)
     return result
 
 
 def svg_chart(rows):
-    """Horizontal bars: per robot, eomgen's rhs and MuJoCo's mj_forward in µs, on one linear axis."""
+    """Horizontal bars: per robot, eomgen's rhs, MuJoCo's mj_forward and the articulated-body
+    algorithm by hand in µs, on one linear axis."""
     width, left, bar, gap, top = 760, 170, 14, 16, 40
-    longest = max(max(r["eomgen_ns"], r["mujoco_ns"]) for _, r in rows) / 1000
+    peers = (("eomgen rhs", "eomgen_ns", "#1f77b4"), ("MuJoCo mj_forward", "mujoco_ns", "#bbbbbb"),
+             ("articulated-body algorithm by hand (Eigen)", "featherstone_ns", "#e0a060"))
+    longest = max(r[key] for _, r in rows for _, key, _ in peers) / 1000
     scale = (width - left - 90) / longest
-    height = top + len(rows) * (2 * bar + gap) + 30
+    height = top + len(rows) * (len(peers) * bar + gap) + 30
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" font-size="12">',
            f'<rect width="{width}" height="{height}" fill="white"/>',
-           f'<text x="{left}" y="18" font-size="13">Time per call of the right-hand side [µs] (lower is faster)</text>',
-           f'<rect x="{left}" y="24" width="10" height="10" fill="#1f77b4"/><text x="{left + 14}" y="33">eomgen rhs</text>',
-           f'<rect x="{left + 100}" y="24" width="10" height="10" fill="#bbbbbb"/><text x="{left + 114}" y="33">MuJoCo mj_forward</text>']
+           f'<text x="{left}" y="18" font-size="13">Time per call of the right-hand side [µs] (lower is faster)</text>']
+    x = left
+    for label, _, colour in peers:
+        out.append(f'<rect x="{x}" y="24" width="10" height="10" fill="{colour}"/><text x="{x + 14}" y="33">{label}</text>')
+        x += 24 + 7 * len(label)
     y = top
     for name, r in rows:
-        ours, theirs = r["eomgen_ns"] / 1000, r["mujoco_ns"] / 1000
+        ours = r["eomgen_ns"] / 1000
         out.append(f'<text x="{left - 8}" y="{y + bar + 4}" text-anchor="end">{name}</text>')
-        out.append(f'<rect x="{left}" y="{y}" width="{ours * scale:.1f}" height="{bar}" fill="#1f77b4"/>')
-        out.append(f'<text x="{left + ours * scale + 4:.1f}" y="{y + bar - 3}">{ours:.2f}</text>')
-        out.append(f'<rect x="{left}" y="{y + bar}" width="{theirs * scale:.1f}" height="{bar}" fill="#bbbbbb"/>')
-        out.append(f'<text x="{left + theirs * scale + 4:.1f}" y="{y + 2 * bar - 3}">{theirs:.2f} ({theirs / ours:.1f}x)</text>')
-        y += 2 * bar + gap
+        for k, (_, key, colour) in enumerate(peers):
+            t = r[key] / 1000
+            label = f"{t:.2f}" if k == 0 else f"{t:.2f} ({t / ours:.1f}x)"
+            out.append(f'<rect x="{left}" y="{y + k * bar}" width="{t * scale:.1f}" height="{bar}" fill="{colour}"/>')
+            out.append(f'<text x="{left + t * scale + 4:.1f}" y="{y + (k + 1) * bar - 3}">{label}</text>')
+        y += len(peers) * bar + gap
     out.append(f'<line x1="{left}" y1="{top - 4}" x2="{left}" y2="{y}" stroke="black"/>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
@@ -105,17 +124,24 @@ def main():
         print(f"unknown robot {unknown[0]}: choose from {', '.join(ROBOTS)}")
         return 2
     robots = ROBOTS[:1] if "--quick" in sys.argv else (named or ROBOTS)
-    print("| robot | eomgen rhs | MuJoCo mj_forward | MuJoCo / eomgen | jacobian_state | jacobian_state / rhs "
-          "| central differences / jacobian_state | header | generate | g++ -O2 (with the benchmark) |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    print("| robot | eomgen rhs | MuJoCo mj_forward | MuJoCo / eomgen | ABA by hand (Eigen) | ABA / eomgen "
+          "| jacobian_state | jacobian_state / rhs | central differences / jacobian_state "
+          "| mjd_transitionFD / jacobian_state | header | generate | g++ -O2 of rhs and jacobian_state |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for name in robots:
             r = measure(sys.argv[1], name, work)
             rows.append((name, r))
             ours, theirs, jac, fd = r["eomgen_ns"], r["mujoco_ns"], r["jacobian_ns"], r["finite_difference_ns"]
-            jacobian = f"{jac / 1000:.2f} µs | {jac / ours:.1f} | {fd / jac:.1f}x" if jac else "– | – | –"
-            print(f"| {name} | {ours / 1000:.2f} µs | {theirs / 1000:.2f} µs | {theirs / ours:.2f}x | {jacobian} "
+            aba, transition = r["featherstone_ns"], r["transition_fd_ns"]
+            if r["featherstone_differs"] > 1e-10:
+                raise RuntimeError(f"{name}: the articulated-body peer's qacc differs from MuJoCo's by "
+                                   f"{r['featherstone_differs']:.2g} of its size")
+            jacobian = (f"{jac / 1000:.2f} µs | {jac / ours:.1f} | {fd / jac:.1f}x | {transition / jac:.1f}x"
+                        if jac else "– | – | – | –")
+            print(f"| {name} | {ours / 1000:.2f} µs | {theirs / 1000:.2f} µs | {theirs / ours:.2f}x "
+                  f"| {aba / 1000:.2f} µs | {aba / ours:.2f}x | {jacobian} "
                   f"| {r['header_kb']:.0f} KB | {r['generate']:.2f} s | {r['build']:.1f} s |", flush=True)
     if chart:
         with open(chart, "w") as f:

@@ -19,6 +19,8 @@
 
 #include <mujoco/mujoco.h>
 
+#include "mujoco_model.hpp"
+
 #include "branched_tree.hpp"
 #include "measured_arm.hpp"
 #include "oblique_tree.hpp"
@@ -38,40 +40,6 @@
 #include "two_link_arm_from_urdf.hpp"
 
 namespace {
-
-struct MujocoModel {
-  explicit MujocoModel(const std::string& file) {
-    char error[1000] = "";
-    model = mj_loadXML(file.c_str(), nullptr, error, sizeof error);
-    message = error;
-    if (model) data = mj_makeData(model);
-  }
-  ~MujocoModel() {
-    if (data) mj_deleteData(data);
-    if (model) mj_deleteModel(model);
-  }
-  MujocoModel(const MujocoModel&) = delete;
-  MujocoModel& operator=(const MujocoModel&) = delete;
-  mjModel* model = nullptr;
-  mjData* data = nullptr;
-  std::string message;
-};
-
-// a file of tests/crosscheck/mjcf/, or a path below tests/crosscheck/
-std::string mjcf(const std::string& name) {
-  return std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/" + (name.find('/') == std::string::npos ? "mjcf/" : "") + name;
-}
-
-// a random state in MuJoCo's qpos, qvel: angles and positions, unit quaternions for ball and free joints
-void random_state(const mjModel* m, std::mt19937& random, double* qpos, double* qvel) {
-  std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-4.0, 4.0);
-  for (int i = 0; i < m->nq; ++i) qpos[i] = angle(random);
-  for (int i = 0; i < m->nv; ++i) qvel[i] = rate(random);
-  for (int j = 0; j < m->njnt; ++j) {
-    int type = m->jnt_type[j], at = m->jnt_qposadr[j] + (type == mjJNT_FREE ? 3 : 0);
-    if (type == mjJNT_BALL || type == mjJNT_FREE) mju_normalize4(qpos + at);
-  }
-}
 
 // q' of the state by MuJoCo's own integration of the positions (mj_integratePos, which turns a
 // quaternion by exp(ω dt) about the body's axes), as a central difference: to about 1e-10
