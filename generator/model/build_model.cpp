@@ -87,8 +87,8 @@ void ModelBuilder::check_header() {
              suggest(f_.method, methods, "methods"));
   if (f_.kinematics != "expanded" && f_.kinematics != "recursive")
     d_.error(f_.kinematics_where, "model.kinematics", fmt::format("unknown kinematics '{}'", f_.kinematics),
-             "use \"expanded\" (positions and rotations multiplied out, the default) or \"recursive\" (frames "
-             "composed link by link, for long chains)");
+             "use \"expanded\" (positions and rotations multiplied out) or \"recursive\" (frames composed link "
+             "by link, for long chains; the default when frames carry joints), or leave kinematics out");
 }
 
 void ModelBuilder::declare(const std::string& name, SourceLocation where, const std::string& key,
