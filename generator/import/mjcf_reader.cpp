@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <cmath>
@@ -229,20 +230,53 @@ std::string urdf_text_of(const std::string& path) {
   return text.str();
 }
 
-// a URDF is read from memory with its fixed links kept (urdf_text.hpp), under its own path, so
-// that MuJoCo still finds the files it names beside it on disk; what its reader would crash on is
-// reported first
-std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size) {
+// the URDF text read by MuJoCo from memory under the file's own path, so that it still finds the
+// files the text names beside it on disk
+mjModel* loaded_text(const std::string& path, const std::string& text, char* error, int size) {
+  auto files = std::make_unique<mjVFS>();
+  mj_defaultVFS(files.get());
+  if (mj_makeEmptyFileVFS(files.get(), path.c_str(), int(text.size()) + 1) != 0)
+    return mj_loadXML(path.c_str(), nullptr, error, size);
+  std::memcpy(files->filedata[files->nfile - 1], text.c_str(), text.size() + 1);
+  mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
+  mj_deleteVFS(files.get());
+  return model;
+}
+
+// whether MuJoCo's message is about a mesh file it could not find or read
+bool about_a_mesh(const std::string& message) {
+  for (const char* mark : {"mesh", "Mesh", "STL file", "OBJ file", "MSH file"})
+    if (message.find(mark) != std::string::npos) return true;
+  return false;
+}
+
+// a URDF is read with its fixed links kept (urdf_text.hpp); what its reader would crash on is
+// reported first, and when MuJoCo cannot read its meshes (ROS packages' COLLADA files and
+// package:// paths) it is read again without them, which `meshes_left_out` then counts
+std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size,
+                                                     int& meshes_left_out) {
+  meshes_left_out = 0;
   if (urdf.empty()) return mj_loadXML(path.c_str(), nullptr, error, size);
   if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message};
   std::string kept = with_static_links_kept(urdf);
-  auto files = std::make_unique<mjVFS>();
-  mj_defaultVFS(files.get());
-  if (mj_makeEmptyFileVFS(files.get(), path.c_str(), int(kept.size()) + 1) != 0)
-    return mj_loadXML(path.c_str(), nullptr, error, size);
-  std::memcpy(files->filedata[files->nfile - 1], kept.c_str(), kept.size() + 1);
-  mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
-  mj_deleteVFS(files.get());
+  mjModel* model = loaded_text(path, kept, error, size);
+  if (model || !about_a_mesh(error)) return model;
+  int left_out = 0;
+  std::string first_error = error;
+  std::string without = without_mesh_geometry(kept, left_out);
+  if (left_out == 0) return nullptr;
+  model = loaded_text(path, without, error, size);
+  if (!model) {
+    // what stops it now, said to be of the file without its meshes
+    std::string second = error;
+    std::size_t end = second.find('\n');
+    second.insert(end == std::string::npos ? second.size() : end,
+                  fmt::format(" (read without its {} mesh(es), which MuJoCo could not read)", left_out));
+    std::snprintf(error, std::size_t(size), "%s", second.c_str());
+    return nullptr;
+  }
+  meshes_left_out = left_out;
+  std::snprintf(error, std::size_t(size), "%s", first_error.c_str());
   return model;
 }
 
@@ -297,7 +331,8 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   char error[1000] = "";
   std::string urdf = urdf_text_of(path);
-  auto loaded = loaded_model(path, urdf, error, sizeof error);
+  int meshes_left_out = 0;
+  auto loaded = loaded_model(path, urdf, error, sizeof error, meshes_left_out);
   if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;
   std::unique_ptr<mjModel, void (*)(mjModel*)> model(std::get<mjModel*>(loaded), mj_deleteModel);
   if (!model) return unreadable_robot(error);
@@ -354,6 +389,13 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     r.warnings.push_back({fmt::format("{} fixed joint(s): their links are fused into their parents and their names are not "
                                       "kept (MuJoCo puts a floating base's free joint at the top level only)", fixed),
                           "", "", 0});
+  if (meshes_left_out > 0) {
+    std::string why = unreadable_robot(error).message;
+    r.warnings.push_back({fmt::format("{} <visual> or <collision> mesh(es) not read ({}): the dynamics come from each "
+                                      "link's <inertial>; the animation draws no shape for them",
+                                      meshes_left_out, why),
+                          "", "", 0});
+  }
   note_losses(m, r);
   return r;
 }

@@ -148,6 +148,26 @@ bool is_urdf_path(const std::string& path) {
   return tail == ".urdf";
 }
 
+std::string without_mesh_geometry(const std::string& urdf, int& left_out) {
+  std::string text = urdf;
+  left_out = 0;
+  for (const char* name : {"visual", "collision"}) {
+    std::string closing = fmt::format("</{}", name);
+    for (std::size_t at = element_start(text, name); at != std::string::npos; at = element_start(text, name, at + 1)) {
+      std::size_t open_end = text.find('>', at);
+      if (open_end == std::string::npos || text[open_end - 1] == '/') continue;
+      std::size_t close = text.find(closing, open_end), end = close == std::string::npos ? close : past_tag(text, close);
+      if (end == std::string::npos) break;
+      std::size_t mesh = element_start(text, "mesh", open_end);
+      if (mesh == std::string::npos || mesh > close) continue;
+      std::string breaks(std::size_t(std::count(text.begin() + long(at), text.begin() + long(end), '\n')), '\n');
+      text.replace(at, end - at, breaks);
+      ++left_out;
+    }
+  }
+  return text;
+}
+
 std::string with_static_links_kept(const std::string& urdf) {
   std::string text = urdf;
   std::size_t robot = element_start(text, "robot");

@@ -17,6 +17,12 @@ namespace eomgen {
 /// Nothing is inserted on a new line, so MuJoCo's line numbers stay those of the file.
 std::string with_static_links_kept(const std::string& urdf);
 
+/// The URDF text without the <visual> and <collision> elements whose geometry is a <mesh>, each
+/// replaced by the line breaks it had (so that line numbers stay the file's), and how many went:
+/// for a URDF whose meshes MuJoCo 2.2.2 cannot read (COLLADA .dae, package:// paths, files not
+/// beside it). The dynamics come from each link's <inertial>; the shapes only draw and collide.
+std::string without_mesh_geometry(const std::string& urdf, int& left_out);
+
 /// A mistake MuJoCo 2.2.2's URDF reader does not survive, found in the text before it reads it:
 /// a <joint> whose type is none of URDF's (the reader crashes on it), a negative mass and a cycle of
 /// joints (which it reports without a line, or misnamed). Line and message, or

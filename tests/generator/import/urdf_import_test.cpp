@@ -179,5 +179,47 @@ TEST(UrdfImport, AMimicJointIsAConstraint) {
   EXPECT_NE(text->find("# not carried: 1 fixed joint(s): their links are fused into their parents"), std::string::npos) << *text;
 }
 
+// a URDF from a ROS package names meshes MuJoCo 2.2.2 cannot read (COLLADA, package:// paths, files
+// not beside it): the robot is read again without them, its dynamics unchanged, and says so
+TEST(UrdfImport, MeshesThatCannotBeReadAreLeftOutAndNamed) {
+  std::string plain = flanged_arm, meshed = flanged_arm;
+  const std::string upper = "<link name=\"upper\">\n";
+  meshed.insert(meshed.find(upper) + upper.size(),
+                "    <visual><geometry><mesh filename=\"package://arm/meshes/upper.dae\"/></geometry></visual>\n"
+                "    <collision>\n      <geometry><mesh filename=\"upper.stl\" scale=\"0.001 0.001 0.001\"/></geometry>\n    </collision>\n"
+                "    <visual><geometry><box size=\"0.05 0.05 0.3\"/></geometry></visual>\n");
+  plain.insert(plain.find(upper) + upper.size(), "\n\n\n\n    <visual><geometry><box size=\"0.05 0.05 0.3\"/></geometry></visual>\n");
+  int left_out = 0;
+  std::string without = without_mesh_geometry(meshed, left_out);
+  EXPECT_EQ(left_out, 2);
+  EXPECT_EQ(lines(without), lines(meshed)) << "line numbers stay the file's";
+  EXPECT_EQ(without.find("<mesh"), std::string::npos) << without;
+  EXPECT_NE(without.find("<box size=\"0.05 0.05 0.3\"/>"), std::string::npos) << "a shape that is no mesh stays";
+  std::string path = temporary_directory() + "/meshed_arm.urdf", plain_path = temporary_directory() + "/plain_arm.urdf";
+  std::ofstream(path) << meshed;
+  std::ofstream(plain_path) << plain;
+  Diagnostics diagnostics, plain_diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  auto plain_text = imported_model_text(plain_path, plain_diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  ASSERT_TRUE(plain_text) << plain_diagnostics.format();
+  const std::string note = "# not carried: 2 <visual> or <collision> mesh(es) not read (";
+  std::size_t at = text->find(note);
+  ASSERT_NE(at, std::string::npos) << *text;
+  std::string rest = *text;
+  rest.erase(at, rest.find('\n', at) + 1 - at);
+  rest.replace(rest.find("meshed_arm.urdf"), 15, "plain_arm.urdf");
+  EXPECT_EQ(rest, *plain_text) << "the same model but for the note";
+  // what stops the file without its meshes is said of it: here a moving link without mass
+  std::string massless = meshed;
+  massless.replace(massless.find("<mass value=\"0.8\"/><inertia ixx=\"0.006\" ixy=\"0\" ixz=\"0\" iyy=\"0.006\""), 58,
+                   "<mass value=\"0\"/><inertia ixx=\"0\" ixy=\"0\" ixz=\"0\" iyy=\"0\"");
+  massless.replace(massless.find("izz=\"0.001\"/></inertial>\n  </link>\n  <link name=\"tool0\"/>"), 11, "izz=\"0\"");
+  std::ofstream(path) << massless;
+  Diagnostics refused;
+  EXPECT_FALSE(imported_model_text(path, refused, false));
+  EXPECT_NE(refused.format().find("(read without its 2 mesh(es), which MuJoCo could not read)"), std::string::npos) << refused.format();
+}
+
 }  // namespace
 }  // namespace eomgen::test
