@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include <mujoco/mujoco.h>
 
 #include "common/independent_rows.hpp"
+#include "import/newer_mjcf.hpp"
 #include "import/urdf_text.hpp"
 
 namespace eomgen {
@@ -250,33 +252,61 @@ bool about_a_mesh(const std::string& message) {
   return false;
 }
 
+// what was left out of the file so that MuJoCo 2.2.2 could read it
+struct LeftOut {
+  int meshes = 0;
+  std::string mesh_error;                // why: MuJoCo's message about the first mesh
+  std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
+};
+
+// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses
+mjModel* loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
+  mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
+  std::string text;
+  for (int round = 0; !model && round < 20; ++round) {
+    std::optional<NewerAttribute> newer = newer_attribute_refused(error);
+    if (!newer) break;
+    if (text.empty()) {
+      std::ifstream file(path, std::ios::binary);
+      std::stringstream read;
+      read << file.rdbuf();
+      text = read.str();
+    }
+    std::string edited = without_newer_attribute(text, *newer);
+    if (edited == text) break;
+    text = edited;
+    left_out.newer.push_back(*newer);
+    model = loaded_text(path, text, error, size);
+  }
+  return model;
+}
+
 // a URDF is read with its fixed links kept (urdf_text.hpp); what its reader would crash on is
 // reported first, and when MuJoCo cannot read its meshes (ROS packages' COLLADA files and
-// package:// paths) it is read again without them, which `meshes_left_out` then counts
+// package:// paths) it is read again without them
 std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size,
-                                                     int& meshes_left_out) {
-  meshes_left_out = 0;
-  if (urdf.empty()) return mj_loadXML(path.c_str(), nullptr, error, size);
+                                                     LeftOut& left_out) {
+  if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
   if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message};
   std::string kept = with_static_links_kept(urdf);
   mjModel* model = loaded_text(path, kept, error, size);
   if (model || !about_a_mesh(error)) return model;
-  int left_out = 0;
+  int left_out_meshes = 0;
   std::string first_error = error;
-  std::string without = without_mesh_geometry(kept, left_out);
-  if (left_out == 0) return nullptr;
+  std::string without = without_mesh_geometry(kept, left_out_meshes);
+  if (left_out_meshes == 0) return nullptr;
   model = loaded_text(path, without, error, size);
   if (!model) {
     // what stops it now, said to be of the file without its meshes
     std::string second = error;
     std::size_t end = second.find('\n');
     second.insert(end == std::string::npos ? second.size() : end,
-                  fmt::format(" (read without its {} mesh(es), which MuJoCo could not read)", left_out));
+                  fmt::format(" (read without its {} mesh(es), which MuJoCo could not read)", left_out_meshes));
     std::snprintf(error, std::size_t(size), "%s", second.c_str());
     return nullptr;
   }
-  meshes_left_out = left_out;
-  std::snprintf(error, std::size_t(size), "%s", first_error.c_str());
+  left_out.meshes = left_out_meshes;
+  left_out.mesh_error = first_error;
   return model;
 }
 
@@ -331,8 +361,8 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   char error[1000] = "";
   std::string urdf = urdf_text_of(path);
-  int meshes_left_out = 0;
-  auto loaded = loaded_model(path, urdf, error, sizeof error, meshes_left_out);
+  LeftOut left_out;
+  auto loaded = loaded_model(path, urdf, error, sizeof error, left_out);
   if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;
   std::unique_ptr<mjModel, void (*)(mjModel*)> model(std::get<mjModel*>(loaded), mj_deleteModel);
   if (!model) return unreadable_robot(error);
@@ -389,13 +419,15 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     r.warnings.push_back({fmt::format("{} fixed joint(s): their links are fused into their parents and their names are not "
                                       "kept (MuJoCo puts a floating base's free joint at the top level only)", fixed),
                           "", "", 0});
-  if (meshes_left_out > 0) {
-    std::string why = unreadable_robot(error).message;
+  if (left_out.meshes > 0)
     r.warnings.push_back({fmt::format("{} <visual> or <collision> mesh(es) not read ({}): the dynamics come from each "
                                       "link's <inertial>; the animation draws no shape for them",
-                                      meshes_left_out, why),
+                                      left_out.meshes, unreadable_robot(left_out.mesh_error).message),
                           "", "", 0});
-  }
+  for (const NewerAttribute& a : left_out.newer)
+    r.warnings.push_back({fmt::format("'{}' is MuJoCo 2.3's or 3's, which MuJoCo {} does not read: left out; {}{}", a.name,
+                                      mj_version_text(), a.consequence, a.enters_equations ? "" : ", which does not enter the equations"),
+                          "", "", 0});
   note_losses(m, r);
   return r;
 }
