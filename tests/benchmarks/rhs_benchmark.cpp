@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
   for (double& v : x) v = uniform(random);
   for (int i = 0; mj && i < mj->nq; ++i) data->qpos[i] = uniform(random);
   for (int i = 0; mj && i < mj->nv; ++i) data->qvel[i] = uniform(random);
+  if (mj) mj_normalizeQuat(mj, data->qpos);  // a ball or free joint's quaternion of unit length
   auto p = model::Parameters<double>().values();
   HandWritten hand;
   volatile double sink = 0;
