@@ -224,25 +224,47 @@ void read_actuators(const mjModel* m, Robot& r) {
 }
 
 // the text of a URDF file, or nothing for another file (or one that cannot be read: MuJoCo says so)
-std::string urdf_text_of(const std::string& path) {
-  if (!is_urdf_path(path)) return "";
+std::string text_of_file(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   std::stringstream text;
   if (file) text << file.rdbuf();
   return text.str();
 }
 
-// the URDF text read by MuJoCo from memory under the file's own path, so that it still finds the
-// files the text names beside it on disk
-mjModel* loaded_text(const std::string& path, const std::string& text, char* error, int size) {
+std::string urdf_text_of(const std::string& path) { return is_urdf_path(path) ? text_of_file(path) : ""; }
+
+// the texts read by MuJoCo from memory, the first under the file's own path: it finds the files it
+// names beside it on disk, and those it includes among the texts (by their names without a path)
+mjModel* loaded_texts(const std::string& path, const std::vector<std::pair<std::string, std::string>>& texts, char* error,
+                      int size) {
   auto files = std::make_unique<mjVFS>();
   mj_defaultVFS(files.get());
-  if (mj_makeEmptyFileVFS(files.get(), path.c_str(), int(text.size()) + 1) != 0)
-    return mj_loadXML(path.c_str(), nullptr, error, size);
-  std::memcpy(files->filedata[files->nfile - 1], text.c_str(), text.size() + 1);
+  for (const auto& [name, text] : texts) {
+    if (mj_makeEmptyFileVFS(files.get(), name.c_str(), int(text.size()) + 1) != 0) {
+      mj_deleteVFS(files.get());
+      return mj_loadXML(path.c_str(), nullptr, error, size);
+    }
+    std::memcpy(files->filedata[files->nfile - 1], text.c_str(), text.size() + 1);
+  }
   mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
   mj_deleteVFS(files.get());
   return model;
+}
+
+mjModel* loaded_text(const std::string& path, const std::string& text, char* error, int size) {
+  return loaded_texts(path, {{path, text}}, error, size);
+}
+
+// the MJCF file and, after it, every file it includes, however deep (MuJoCo takes each name
+// relative to the first file's folder)
+std::vector<std::pair<std::string, std::string>> mjcf_sources(const std::string& path) {
+  std::string folder = path.substr(0, path.find_last_of('/') + 1);
+  std::vector<std::pair<std::string, std::string>> sources{{path, text_of_file(path)}};
+  for (std::size_t k = 0; k < sources.size() && sources.size() < 64; ++k)
+    for (const std::string& name : included_files(std::string(sources[k].second)))
+      if (std::none_of(sources.begin(), sources.end(), [&](const auto& s) { return s.first == folder + name; }))
+        sources.emplace_back(folder + name, text_of_file(folder + name));
+  return sources;
 }
 
 // whether MuJoCo's message is about a mesh file it could not find or read
@@ -259,24 +281,24 @@ struct LeftOut {
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
 };
 
-// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses
+// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses,
+// in the file and in those it includes
 mjModel* loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
   mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
-  std::string text;
+  std::vector<std::pair<std::string, std::string>> sources;
   for (int round = 0; !model && round < 20; ++round) {
     std::optional<NewerAttribute> newer = newer_attribute_refused(error);
     if (!newer) break;
-    if (text.empty()) {
-      std::ifstream file(path, std::ios::binary);
-      std::stringstream read;
-      read << file.rdbuf();
-      text = read.str();
+    if (sources.empty()) sources = mjcf_sources(path);
+    bool edited = false;
+    for (auto& [name, text] : sources) {
+      std::string without = without_newer_attribute(text, *newer);
+      edited = edited || without != text;
+      text = without;
     }
-    std::string edited = without_newer_attribute(text, *newer);
-    if (edited == text) break;
-    text = edited;
+    if (!edited) break;
     left_out.newer.push_back(*newer);
-    model = loaded_text(path, text, error, size);
+    model = loaded_texts(path, sources, error, size);
   }
   return model;
 }

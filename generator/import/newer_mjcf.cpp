@@ -76,4 +76,25 @@ std::string without_newer_attribute(const std::string& mjcf, const NewerAttribut
   return text;
 }
 
+std::vector<std::string> included_files(const std::string& mjcf) {
+  std::vector<std::string> out;
+  for (std::size_t at = mjcf.find('<'); at != std::string::npos; at = mjcf.find('<', at + 1)) {
+    if (mjcf.compare(at, 4, "<!--") == 0) {
+      at = mjcf.find("-->", at);
+      if (at == std::string::npos) break;
+      continue;
+    }
+    if (mjcf.compare(at, 8, "<include") != 0 || at + 8 >= mjcf.size() || !std::isspace(static_cast<unsigned char>(mjcf[at + 8])))
+      continue;
+    std::size_t end = mjcf.find('>', at), file = mjcf.find("file", at);
+    if (end == std::string::npos || file == std::string::npos || file > end) continue;
+    std::size_t quote = mjcf.find_first_of("\"'", file);
+    if (quote == std::string::npos || quote > end) continue;
+    std::size_t close = mjcf.find(mjcf[quote], quote + 1);
+    if (close == std::string::npos || close > end) continue;
+    out.push_back(mjcf.substr(quote + 1, close - quote - 1));
+  }
+  return out;
+}
+
 }  // namespace eomgen

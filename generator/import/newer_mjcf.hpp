@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace eomgen {
 
@@ -22,5 +23,8 @@ std::optional<NewerAttribute> newer_attribute_refused(const std::string& mujoco_
 /// The MJCF text without the attribute wherever it is set (integrator="implicitfast" becomes
 /// MuJoCo 2.2.2's "implicit"); nothing else moves, line breaks included.
 std::string without_newer_attribute(const std::string& mjcf, const NewerAttribute& attribute);
+
+/// The files an MJCF text includes (<include file="..."/>, outside comments), as written, in order.
+std::vector<std::string> included_files(const std::string& mjcf);
 
 }  // namespace eomgen

@@ -3,7 +3,10 @@
 // read is the one of the file without them; an attribute that is not known (a typo) stays an error.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "import/model_writer.hpp"
 #include "import/newer_mjcf.hpp"
@@ -79,6 +82,26 @@ TEST(NewerMjcf, AFileOfMujoco3IsReadWithoutItsNewerAttributes) {
   Diagnostics refused;
   EXPECT_FALSE(imported_model_text(newer_path, refused, false));
   EXPECT_NE(refused.format().find("unrecognized attribute: 'dampin'"), std::string::npos) << refused.format();
+}
+
+// mujoco_menagerie's scene.xml includes the robot's file, whose attributes are MuJoCo 3's
+TEST(NewerMjcf, AnIncludedFileIsReadWithoutItsNewerAttributesToo) {
+  EXPECT_EQ(included_files("<mujoco>\n<!-- <include file=\"no.xml\"/> -->\n  <include file=\"robot.xml\"/>\n"
+                           "<include  file='parts/arm.xml' />\n<includes file=\"no.xml\"/>\n</mujoco>\n"),
+            (std::vector<std::string>{"robot.xml", "parts/arm.xml"}));
+  std::string folder = temporary_directory() + "/scene";
+  std::filesystem::create_directories(folder);
+  std::string robot = pendulum;
+  robot.erase(robot.find("  <option"), robot.find("/>\n") + 3 - robot.find("  <option"));
+  std::ofstream(folder + "/robot.xml") << robot;
+  std::ofstream(folder + "/scene.xml") << "<mujoco model=\"scene\">\n  <option integrator=\"implicitfast\"/>\n"
+                                          "  <include file=\"robot.xml\"/>\n</mujoco>\n";
+  Diagnostics diagnostics;
+  auto text = imported_model_text(folder + "/scene.xml", diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  for (const char* name : {"'implicitfast'", "'actuatorfrcrange'", "'gravcomp'"})
+    EXPECT_NE(text->find(std::string("# not carried: ") + name), std::string::npos) << name << " in\n" << *text;
+  EXPECT_NE(text->find("der(j1)"), std::string::npos) << *text;
 }
 
 }  // namespace
