@@ -61,6 +61,10 @@ struct FirstIntegral {
   std::string name;        // "energy" (T + V), "jacobi_integral", or p_<coordinate>
   GiNaC::ex expression;    // in the state's variables
   std::string reason;      // why it is conserved, in words
+  /// A momentum that is row `mass_matrix_row` of M times the velocities (T = ½ vᵀ M v and the
+  /// coordinate's rate a velocity of its own, checked at two states): the header writes it from
+  /// mass_matrix, where its chain rule through a tree's quantities can run to megabytes. −1: not so.
+  int mass_matrix_row = -1;
 };
 
 /// The derived equations of motion M·v' = f with q' = v, or, for Appell's equations,

@@ -8,10 +8,14 @@
 /// nothing else acts on q_k: d/dt p_k = ∂L/∂q_k + (Q − ∂R/∂q̇ + Cᵀλ)_k.
 #include "derive/first_integrals.hpp"
 
+#include <cmath>
+#include <limits>
+#include <map>
 #include <optional>
 #include <utility>
 
 #include "derive/constraints.hpp"
+#include "symbolic/evaluate.hpp"
 #include "symbolic/trig_rational.hpp"
 
 namespace eomgen {
@@ -128,6 +132,66 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
   return out;
 }
 
+// a state where each coordinate, velocity and parameter has a value of its own (`seed` picks one of
+// several), inputs zero; the values of x and of each intermediate before it; NaN for a symbol that
+// is none of these
+class StateValues {
+ public:
+  StateValues(const Equations& e, int seed) : e_(e) {
+    const Symbols& s = e.symbols;
+    auto spread = [&](std::size_t i, double scale) { return scale * std::sin(1.3 + 0.71 * double(i) + 2.9 * seed); };
+    for (std::size_t i = 0; i < s.coordinates.size(); ++i) known_[s.coordinates[i]] = spread(i, 1.1);
+    for (std::size_t i = 0; i < s.velocities.size(); ++i) known_[s.velocities[i]] = spread(i + 50, 1.7);
+    for (std::size_t i = 0; i < s.parameters.size(); ++i) known_[s.parameters[i]] = s.parameter_defaults[i];
+    for (const auto& u : s.inputs) known_[u] = 0;
+    known_[s.time] = 0.37 + seed;
+    for (const Intermediate& i : e.intermediates) known_[i.symbol] = (*this)(i.definition);
+  }
+  double operator()(const ex& x) const {
+    return evaluate(x, [&](const GiNaC::symbol& y) {
+      auto found = known_.find(y);
+      return found == known_.end() ? std::numeric_limits<double>::quiet_NaN() : found->second;
+    });
+  }
+  double velocity(std::size_t j) const { return known_.at(e_.symbols.velocities[j]); }
+
+ private:
+  const Equations& e_;
+  std::map<ex, double, GiNaC::ex_is_less> known_;
+};
+
+// whether x has more than `limit` nodes (counting stops there)
+bool larger_than(const ex& x, std::size_t limit) {
+  std::size_t nodes = 0;
+  for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+    if (++nodes > limit) return true;
+  return false;
+}
+
+// the row j of M whose product with the velocities is the momentum of coordinate k, at two states
+// to 1e-12 of the largest term, when q'_k is the velocity j itself and the momentum is long (a
+// short one, such as (m_c + m) x' + m l cos θ θ', stays as it is: cheaper than forming M); −1 otherwise
+int mass_matrix_row(const Equations& e, std::size_t k, const ex& momentum) {
+  if (!larger_than(momentum, 2000)) return -1;
+  const Symbols& s = e.symbols;
+  std::size_t n = s.velocities.size();
+  if (e.mass_matrix.rows() != n || e.has_multipliers) return -1;
+  int j = -1;
+  for (std::size_t m = 0; m < n; ++m)
+    if (e.uses_pseudo_velocities() ? (e.coordinate_rates[k] - s.velocities[m]).is_zero() : m == k) j = int(m);
+  if (j < 0) return -1;
+  for (int seed = 0; seed < 2; ++seed) {
+    StateValues at(e, seed);
+    double p = at(momentum), row = 0, largest = std::abs(p);
+    for (std::size_t m = 0; m < n; ++m) {
+      double term = at(e.mass_matrix(unsigned(j), unsigned(m))) * at.velocity(m);
+      row += term, largest = std::max(largest, std::abs(term));
+    }
+    if (!(std::abs(p - row) <= 1e-12 * largest)) return -1;
+  }
+  return j;
+}
+
 }  // namespace
 
 std::vector<FirstIntegral> find_first_integrals(const Equations& e, const Mechanics& mech) {
@@ -150,6 +214,7 @@ std::vector<FirstIntegral> find_first_integrals(const Equations& e, const Mechan
   }
   for (auto& [k, p] : cyclic_momenta(e, mech, L)) {
     p.expression = hamilton ? ex(e.symbols.velocities[k]) : in_state(p.expression);
+    if (!hamilton) p.mass_matrix_row = mass_matrix_row(e, k, p.expression);
     found.push_back(p);
   }
   return found;

@@ -283,11 +283,23 @@ std::string first_integrals_function(const Equations& e) {
   // the energy T + V is the sum of the two functions above: not written out a second time
   std::vector<ex> values;
   std::vector<std::size_t> written;
-  for (std::size_t i = 0; i < e.first_integrals.size(); ++i)
-    if ((e.first_integrals[i].expression - e.kinetic_energy - e.potential_energy).is_zero())
+  bool mass_matrix_formed = false;
+  std::size_t n = e.num_velocities(), nq = e.symbols.coordinates.size();
+  for (std::size_t i = 0; i < e.first_integrals.size(); ++i) {
+    const FirstIntegral& f = e.first_integrals[i];
+    if ((f.expression - e.kinetic_energy - e.potential_energy).is_zero()) {
       w.line(fmt::format("out[{}] = kinetic_energy(t, x, p) + potential_energy(t, x, p);", i));
-    else
-      values.push_back(e.first_integrals[i].expression), written.push_back(i);
+    } else if (f.mass_matrix_row >= 0) {
+      // the momentum as M's row times the velocities (derive/equations.hpp: FirstIntegral)
+      if (!mass_matrix_formed) w.line(fmt::format("T M[{}];", n * n)), w.line("mass_matrix(t, x, p, M);");
+      mass_matrix_formed = true;
+      w.line(fmt::format("out[{}] = T(0);", i));
+      w.line(fmt::format("for (std::size_t j = 0; j < {}; ++j) out[{}] += M[{} + j] * x[{} + j];", n, i,
+                         std::size_t(f.mass_matrix_row) * n, nq));
+    } else {
+      values.push_back(f.expression), written.push_back(i);
+    }
+  }
   w.assign(values, [&](std::size_t k, const std::string& code) { return fmt::format("out[{}] = {};", written[k], code); });
   return out + function("/// The first integrals' values, in first_integral_names order. out: num_first_integrals.\n",
                         "void first_integrals(T t, const T* x, const T* p, T* out)",

@@ -178,6 +178,35 @@ TEST(MujocoOracle, QuadrupedOnAFloatingBaseMatchesMujoco) { EXPECT_MATCHES_MUJOC
 
 TEST(MujocoOracle, FreeTumblingBodyMatchesMujoco) { EXPECT_MATCHES_MUJOCO(tumbling_body); }
 
+// a floating base's horizontal momenta, which the header forms from the row of M (their chain rule
+// through the tree is long: derive/equations.hpp, FirstIntegral), are the robot's linear momentum as
+// MuJoCo has it: its subtree's mass times the velocity of its centre of mass (mj_subtreeVel)
+TEST(MujocoOracle, AFloatingBasesMomentaAreMujocosLinearMomentum) {
+  namespace robot = eomgen::models::quadruped;
+  ASSERT_EQ(robot::num_first_integrals, 2u);
+  EXPECT_STREQ(robot::first_integral_names[0], "p_x");
+  EXPECT_STREQ(robot::first_integral_names[1], "p_y");
+  MujocoModel mj(mjcf("quadruped.xml"));
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  auto p = robot::Parameters<double>().values();
+  std::mt19937 random(11);
+  std::vector<double> x(robot::num_states);
+  double out[2];
+  for (int k = 0; k < 20; ++k) {
+    random_state(mj.model, random, mj.data->qpos, mj.data->qvel);
+    std::copy(mj.data->qpos, mj.data->qpos + mj.model->nq, x.begin());
+    std::copy(mj.data->qvel, mj.data->qvel + mj.model->nv, x.begin() + mj.model->nq);
+    mj_forward(mj.model, mj.data);
+    mj_subtreeVel(mj.model, mj.data);
+    robot::first_integrals(0.0, x.data(), p.data(), out);
+    double mass = mj.model->body_subtreemass[1];
+    for (int i = 0; i < 2; ++i) {
+      double momentum = mass * mj.data->subtree_linvel[3 + i];
+      EXPECT_NEAR(out[i], momentum, 1e-12 * std::max(1.0, mass * 4)) << "state " << k << ", p[" << i << "]";
+    }
+  }
+}
+
 // `eomgen import` of the same MJCF files (tests/CMakeLists.txt imports and generates them): the model
 // file it writes gives MuJoCo's accelerations, motors included
 #define EXPECT_IMPORT_MATCHES_MUJOCO(M)                                                                     \

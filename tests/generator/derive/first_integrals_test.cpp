@@ -34,6 +34,18 @@ void expect_integral(const Equations& e, const std::string& name, const std::str
   EXPECT_FALSE(f->reason.empty());
 }
 
+// a long momentum (a floating base's, through the tree's quantities) is M's row times the velocities
+// for the header, checked at two states; a short one stays an expression of its own
+TEST(FirstIntegrals, ALongMomentumIsARowOfTheMassMatrix) {
+  Derivation d = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/quadruped.toml");
+  ASSERT_TRUE(d.equations) << d.diagnostics.format();
+  const Equations& e = *d.equations;
+  EXPECT_EQ(names(e), (std::vector<std::string>{"p_x", "p_y"}));
+  EXPECT_EQ(find(e, "p_x")->mass_matrix_row, 0);
+  EXPECT_EQ(find(e, "p_y")->mass_matrix_row, 1);
+  EXPECT_EQ(find(derive_model("cart_pendulum"), "p_x")->mass_matrix_row, -1) << "(m_c + m) x' + m l cos θ θ' stays";
+}
+
 TEST(FirstIntegrals, SphericalPendulumKeepsEnergyAndTheAzimuthalMomentum) {
   Equations e = derive_model("spherical_pendulum");
   EXPECT_EQ(names(e), (std::vector<std::string>{"energy", "p_phi"}));
