@@ -6,13 +6,11 @@
 #include "common/independent_rows.hpp"
 
 #include <cmath>
-#include <functional>
-#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "symbolic/evaluate.hpp"
+#include "derive/state_values.hpp"
 #include "symbolic/gradient.hpp"
 
 namespace eomgen {
@@ -66,22 +64,7 @@ bool constraints_scleronomic(const ConstraintSet& c, const Symbols& s) {
 }
 
 double initial_value(const GiNaC::ex& e, const Symbols& s, const std::vector<Intermediate>& intermediates) {
-  // the intermediates' values in their order, each from those before it
-  std::map<ex, double, GiNaC::ex_is_less> known;
-  std::function<double(const GiNaC::symbol&)> value_of = [&](const GiNaC::symbol& x) -> double {
-    for (std::size_t i = 0; i < s.coordinates.size(); ++i) {
-      if (x == s.coordinates[i]) return s.initial_coordinates[i];
-      if (x == s.velocities[i]) return s.initial_velocities[i];
-    }
-    for (std::size_t i = 0; i < s.parameters.size(); ++i)
-      if (x == s.parameters[i]) return s.parameter_defaults[i];
-    for (std::size_t i = 0; i < s.inputs.size(); ++i)
-      if (x == s.inputs[i]) return s.input_defaults[i];
-    if (auto found = known.find(x); found != known.end()) return found->second;
-    return 0;  // time
-  };
-  for (const Intermediate& i : intermediates) known[i.symbol] = evaluate(i.definition, value_of);
-  return evaluate(e, value_of);
+  return StateValues::initial(s, intermediates)(e);
 }
 
 std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Symbols& s,
@@ -89,9 +72,10 @@ std::vector<std::string> dependent_constraints(const ConstraintSet& c, const Sym
   // the rows of C in file order: a row (nearly) in the span of the rows before it adds no restriction
   IndependentRows rows;
   std::vector<std::string> dependent;
+  StateValues initial = StateValues::initial(s, intermediates);
   for (unsigned i = 0; i < c.size(); ++i) {
     std::vector<double> row;
-    for (unsigned j = 0; j < c.jacobian.cols(); ++j) row.push_back(initial_value(c.jacobian(i, j), s, intermediates));
+    for (unsigned j = 0; j < c.jacobian.cols(); ++j) row.push_back(initial(c.jacobian(i, j)));
     if (!rows.add(row)) dependent.push_back(c.names[i]);
   }
   return dependent;

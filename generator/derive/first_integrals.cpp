@@ -9,13 +9,11 @@
 #include "derive/first_integrals.hpp"
 
 #include <cmath>
-#include <limits>
-#include <map>
 #include <optional>
 #include <utility>
 
 #include "derive/constraints.hpp"
-#include "symbolic/evaluate.hpp"
+#include "derive/state_values.hpp"
 #include "symbolic/trig_rational.hpp"
 
 namespace eomgen {
@@ -132,33 +130,18 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
   return out;
 }
 
-// a state where each coordinate, velocity and parameter has a value of its own (`seed` picks one of
-// several), inputs zero; the values of x and of each intermediate before it; NaN for a symbol that
-// is none of these
-class StateValues {
- public:
-  StateValues(const Equations& e, int seed) : e_(e) {
-    const Symbols& s = e.symbols;
-    auto spread = [&](std::size_t i, double scale) { return scale * std::sin(1.3 + 0.71 * double(i) + 2.9 * seed); };
-    for (std::size_t i = 0; i < s.coordinates.size(); ++i) known_[s.coordinates[i]] = spread(i, 1.1);
-    for (std::size_t i = 0; i < s.velocities.size(); ++i) known_[s.velocities[i]] = spread(i + 50, 1.7);
-    for (std::size_t i = 0; i < s.parameters.size(); ++i) known_[s.parameters[i]] = s.parameter_defaults[i];
-    for (const auto& u : s.inputs) known_[u] = 0;
-    known_[s.time] = 0.37 + seed;
-    for (const Intermediate& i : e.intermediates) known_[i.symbol] = (*this)(i.definition);
-  }
-  double operator()(const ex& x) const {
-    return evaluate(x, [&](const GiNaC::symbol& y) {
-      auto found = known_.find(y);
-      return found == known_.end() ? std::numeric_limits<double>::quiet_NaN() : found->second;
-    });
-  }
-  double velocity(std::size_t j) const { return known_.at(e_.symbols.velocities[j]); }
-
- private:
-  const Equations& e_;
-  std::map<ex, double, GiNaC::ex_is_less> known_;
-};
+// a state where each coordinate and velocity has a value of its own (`seed` picks one of several),
+// inputs zero
+StateValues spread_state(const Equations& e, int seed) {
+  auto spread = [&](std::size_t count, std::size_t from, double scale) {
+    std::vector<double> x(count);
+    for (std::size_t i = 0; i < count; ++i) x[i] = scale * std::sin(1.3 + 0.71 * double(i + from) + 2.9 * seed);
+    return x;
+  };
+  const Symbols& s = e.symbols;
+  return StateValues(s, e.intermediates, spread(s.coordinates.size(), 0, 1.1), spread(s.velocities.size(), 50, 1.7),
+                     std::vector<double>(s.inputs.size(), 0.0), 0.37 + seed);
+}
 
 // whether x has more than `limit` nodes (counting stops there)
 bool larger_than(const ex& x, std::size_t limit) {
@@ -181,10 +164,10 @@ int mass_matrix_row(const Equations& e, std::size_t k, const ex& momentum) {
     if (e.uses_pseudo_velocities() ? (e.coordinate_rates[k] - s.velocities[m]).is_zero() : m == k) j = int(m);
   if (j < 0) return -1;
   for (int seed = 0; seed < 2; ++seed) {
-    StateValues at(e, seed);
+    StateValues at = spread_state(e, seed);
     double p = at(momentum), row = 0, largest = std::abs(p);
     for (std::size_t m = 0; m < n; ++m) {
-      double term = at(e.mass_matrix(unsigned(j), unsigned(m))) * at.velocity(m);
+      double term = at(e.mass_matrix(unsigned(j), unsigned(m))) * at(s.velocities[m]);
       row += term, largest = std::max(largest, std::abs(term));
     }
     if (!(std::abs(p - row) <= 1e-12 * largest)) return -1;

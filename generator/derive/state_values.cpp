@@ -1,0 +1,30 @@
+#include "derive/state_values.hpp"
+
+#include <limits>
+
+#include "symbolic/evaluate.hpp"
+
+namespace eomgen {
+
+StateValues::StateValues(const Symbols& s, const std::vector<Intermediate>& intermediates, const std::vector<double>& coordinates,
+                         const std::vector<double>& velocities, const std::vector<double>& inputs, double time) {
+  for (std::size_t i = 0; i < s.coordinates.size() && i < coordinates.size(); ++i) known_[s.coordinates[i]] = coordinates[i];
+  for (std::size_t i = 0; i < s.velocities.size() && i < velocities.size(); ++i) known_[s.velocities[i]] = velocities[i];
+  for (std::size_t i = 0; i < s.parameters.size(); ++i) known_[s.parameters[i]] = s.parameter_defaults[i];
+  for (std::size_t i = 0; i < s.inputs.size() && i < inputs.size(); ++i) known_[s.inputs[i]] = inputs[i];
+  known_[s.time] = time;
+  for (const Intermediate& i : intermediates) known_[i.symbol] = (*this)(i.definition);
+}
+
+StateValues StateValues::initial(const Symbols& s, const std::vector<Intermediate>& intermediates) {
+  return StateValues(s, intermediates, s.initial_coordinates, s.initial_velocities, s.input_defaults, 0);
+}
+
+double StateValues::operator()(const GiNaC::ex& x) const {
+  return evaluate(x, [&](const GiNaC::symbol& y) {
+    auto found = known_.find(y);
+    return found == known_.end() ? std::numeric_limits<double>::quiet_NaN() : found->second;
+  });
+}
+
+}  // namespace eomgen

@@ -1,0 +1,28 @@
+/// @file Values of expressions at one state of a model, in double precision: its coordinates,
+/// velocities, inputs and time given, the parameters at their defaults, and the intermediates of
+/// recursive kinematics evaluated once, in their order, for every expression asked after.
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "model/model.hpp"
+
+namespace eomgen {
+
+class StateValues {
+ public:
+  StateValues(const Symbols& symbols, const std::vector<Intermediate>& intermediates, const std::vector<double>& coordinates,
+              const std::vector<double>& velocities, const std::vector<double>& inputs, double time);
+  /// The model's initial state, its default inputs and t = 0.
+  static StateValues initial(const Symbols& symbols, const std::vector<Intermediate>& intermediates);
+  /// The value of x; NaN when it has a symbol that is none of the model's nor an intermediate.
+  double operator()(const GiNaC::ex& x) const;
+
+ private:
+  std::map<GiNaC::ex, double, GiNaC::ex_is_less> known_;
+};
+
+}  // namespace eomgen
