@@ -1,6 +1,6 @@
 #include "import/newer_mjcf.hpp"
 
-#include <cctype>
+#include "import/xml_text.hpp"
 
 namespace eomgen {
 
@@ -60,40 +60,27 @@ std::string without_newer_attribute(const std::string& mjcf, const NewerAttribut
       text.replace(at, 14, "\"implicit\"");
     return text;
   }
-  // ` name = "value"` with either quote, where the name stands alone (not the tail of another)
-  for (std::size_t at = text.find(attribute.name); at != std::string::npos; at = text.find(attribute.name, at + 1)) {
-    if (at == 0 || !std::isspace(static_cast<unsigned char>(text[at - 1]))) continue;
-    std::size_t after = at + attribute.name.size();
-    while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after])) && text[after] != '\n') ++after;
-    if (after >= text.size() || text[after] != '=') continue;
-    ++after;
-    while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after])) && text[after] != '\n') ++after;
-    if (after >= text.size() || (text[after] != '"' && text[after] != '\'')) continue;
-    std::size_t close = text.find(text[after], after + 1);
-    if (close == std::string::npos || text.find('\n', after) < close) continue;
-    text.erase(at, close + 1 - at);
+  // in every tag, outside comments
+  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 1)) {
+    if (text.compare(at, 4, "<!--") == 0) {
+      at = text.find("-->", at);
+      if (at == std::string::npos) break;
+      continue;
+    }
+    std::size_t end = text.find('>', at);
+    if (end == std::string::npos) break;
+    while (auto span = attribute_span(text, at, end, attribute.name)) {
+      text.erase(span->first, span->second - span->first);
+      end -= span->second - span->first;
+    }
   }
   return text;
 }
 
 std::vector<std::string> included_files(const std::string& mjcf) {
   std::vector<std::string> out;
-  for (std::size_t at = mjcf.find('<'); at != std::string::npos; at = mjcf.find('<', at + 1)) {
-    if (mjcf.compare(at, 4, "<!--") == 0) {
-      at = mjcf.find("-->", at);
-      if (at == std::string::npos) break;
-      continue;
-    }
-    if (mjcf.compare(at, 8, "<include") != 0 || at + 8 >= mjcf.size() || !std::isspace(static_cast<unsigned char>(mjcf[at + 8])))
-      continue;
-    std::size_t end = mjcf.find('>', at), file = mjcf.find("file", at);
-    if (end == std::string::npos || file == std::string::npos || file > end) continue;
-    std::size_t quote = mjcf.find_first_of("\"'", file);
-    if (quote == std::string::npos || quote > end) continue;
-    std::size_t close = mjcf.find(mjcf[quote], quote + 1);
-    if (close == std::string::npos || close > end) continue;
-    out.push_back(mjcf.substr(quote + 1, close - quote - 1));
-  }
+  for (std::size_t at = element_start(mjcf, "include"); at != std::string::npos; at = element_start(mjcf, "include", at + 1))
+    if (auto file = attribute(mjcf, at, past_tag(mjcf, at), "file")) out.push_back(*file);
   return out;
 }
 

@@ -9,48 +9,11 @@
 
 #include <fmt/format.h>
 
+#include "import/xml_text.hpp"
+
 namespace eomgen {
 
 namespace {
-
-// where the first element of this name opens, outside comments and declarations (npos: none)
-std::size_t element_start(const std::string& text, const std::string& name, std::size_t from = 0) {
-  for (std::size_t at = text.find('<', from); at != std::string::npos; at = text.find('<', at + 1)) {
-    if (text.compare(at, 4, "<!--") == 0) {
-      at = text.find("-->", at);
-      if (at == std::string::npos) return at;
-      continue;
-    }
-    std::size_t end = at + 1 + name.size();
-    if (text.compare(at + 1, name.size(), name) == 0 && end < text.size() &&
-        (std::isspace(static_cast<unsigned char>(text[end])) || text[end] == '>' || text[end] == '/'))
-      return at;
-  }
-  return std::string::npos;
-}
-
-// just past the '>' that closes the tag opening at `start`
-std::size_t past_tag(const std::string& text, std::size_t start) {
-  std::size_t end = text.find('>', start);
-  return end == std::string::npos ? end : end + 1;
-}
-
-// the value of attribute `name` in the tag [start, end), or nothing
-std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
-  for (std::size_t at = text.find(name, start); at != std::string::npos && at < end; at = text.find(name, at + 1)) {
-    std::size_t after = at + name.size();
-    if (!std::isspace(static_cast<unsigned char>(text[at - 1]))) continue;
-    while (after < end && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
-    if (after >= end || text[after] != '=') continue;
-    ++after;
-    while (after < end && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
-    if (after >= end || (text[after] != '"' && text[after] != '\'')) continue;
-    std::size_t close = text.find(text[after], after + 1);
-    if (close == std::string::npos || close > end) return std::nullopt;
-    return text.substr(after + 1, close - after - 1);
-  }
-  return std::nullopt;
-}
 
 int line_of(const std::string& text, std::size_t at) { return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n')); }
 

@@ -1,0 +1,56 @@
+#include "import/xml_text.hpp"
+
+#include <cctype>
+
+namespace eomgen {
+
+namespace {
+
+bool space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
+}  // namespace
+
+std::size_t element_start(const std::string& text, const std::string& name, std::size_t from) {
+  for (std::size_t at = text.find('<', from); at != std::string::npos; at = text.find('<', at + 1)) {
+    if (text.compare(at, 4, "<!--") == 0) {
+      at = text.find("-->", at);
+      if (at == std::string::npos) return at;
+      continue;
+    }
+    std::size_t end = at + 1 + name.size();
+    if (text.compare(at + 1, name.size(), name) == 0 && end < text.size() && (space(text[end]) || text[end] == '>' || text[end] == '/'))
+      return at;
+  }
+  return std::string::npos;
+}
+
+std::size_t past_tag(const std::string& text, std::size_t start) {
+  std::size_t end = text.find('>', start);
+  return end == std::string::npos ? end : end + 1;
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> attribute_span(const std::string& text, std::size_t start,
+                                                                  std::size_t end, const std::string& name) {
+  for (std::size_t at = text.find(name, start); at != std::string::npos && at < end; at = text.find(name, at + 1)) {
+    if (at == 0 || !space(text[at - 1])) continue;
+    std::size_t after = at + name.size();
+    while (after < end && space(text[after])) ++after;
+    if (after >= end || text[after] != '=') continue;
+    ++after;
+    while (after < end && space(text[after])) ++after;
+    if (after >= end || (text[after] != '"' && text[after] != '\'')) continue;
+    std::size_t close = text.find(text[after], after + 1);
+    if (close == std::string::npos || close > end) return std::nullopt;
+    return std::make_pair(at, close + 1);
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
+  auto span = attribute_span(text, start, end, name);
+  if (!span) return std::nullopt;
+  std::size_t open = text.find_first_of("\"'", span->first + name.size());
+  return text.substr(open + 1, span->second - open - 2);
+}
+
+}  // namespace eomgen

@@ -1,0 +1,26 @@
+/// @file Reading and editing XML as text, where the file is changed before MuJoCo's compiler
+/// reads it (urdf_text.hpp, newer_mjcf.hpp): only what those edits need, every other byte and line
+/// break kept where it was.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace eomgen {
+
+/// Where the first element of this name opens at or after `from`, outside comments (npos: none).
+std::size_t element_start(const std::string& text, const std::string& name, std::size_t from = 0);
+
+/// Just past the '>' that closes the tag opening at `start` (npos: none).
+std::size_t past_tag(const std::string& text, std::size_t start);
+
+/// Where `name="value"` (either quote) stands in the tag [start, end): from the name to just past
+/// the closing quote, the name standing alone (not the tail of another); nothing when it does not.
+std::optional<std::pair<std::size_t, std::size_t>> attribute_span(const std::string& text, std::size_t start,
+                                                                  std::size_t end, const std::string& name);
+
+/// The value of attribute `name` in the tag [start, end), or nothing.
+std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name);
+
+}  // namespace eomgen
