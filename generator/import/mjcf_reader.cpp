@@ -1,5 +1,7 @@
 #include "import/mjcf_reader.hpp"
 
+#include "import/joint_followers.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -161,6 +163,25 @@ void read_couplings(const mjModel* m, Robot& r) {
   }
 }
 
+const char* const appell_takes_no_constraints =
+    "a robot with ball or free joints takes Appell's equations, which take no constraints here yet; only a linear coupling "
+    "of two hinges or slides, not driven by an actuator, becomes a joint that follows the other's coordinate";
+
+// A robot with ball or free joints takes Appell's equations, which take no constraints here yet: its
+// couplings stay only where a joint follows another's coordinate, the others are named as not carried.
+void keep_followers(Robot& r) {
+  std::vector<JointFollower> followers = joint_followers(r);
+  std::vector<RobotCoupling> kept;
+  for (std::size_t k = 0; k < r.couplings.size(); ++k) {
+    const RobotCoupling& c = r.couplings[k];
+    bool follows = std::any_of(followers.begin(), followers.end(), [&](const JointFollower& f) { return f.coupling == k; });
+    if (follows) kept.push_back(c);
+    else if (c.equality < 0)  // (an equality's is named by note_losses)
+      r.warnings.push_back({fmt::format("{}: not carried ({})", c.name, appell_takes_no_constraints), "joint", c.name, 0});
+  }
+  r.couplings = kept;
+}
+
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
   if (m->ntendon)
@@ -172,12 +193,13 @@ void note_losses(const mjModel* m, Robot& r) {
     int type = m->eq_type[e];
     if ((type == mjEQ_CONNECT || type == mjEQ_WELD) && loops) continue;
     auto coupled = [&](const RobotCoupling& c) { return c.equality == e; };
-    if (type == mjEQ_JOINT && loops && std::any_of(r.couplings.begin(), r.couplings.end(), coupled)) continue;
+    if (type == mjEQ_JOINT && std::any_of(r.couplings.begin(), r.couplings.end(), coupled)) continue;
     r.warnings.push_back({fmt::format("equality constraint {} ({}): not carried ({})",
                                       name.empty() ? fmt::format("{} of {}", e + 1, m->neq) : "'" + name + "'",
                                       type >= 0 && type < 5 ? kinds[type] : "of another kind",
                                       type == mjEQ_CONNECT || type == mjEQ_WELD ? "a loop in a robot with ball or free joints, whose Appell equations "
                                                              "take no constraints here yet"
+                                      : type == mjEQ_JOINT && !loops ? appell_takes_no_constraints
                                                            : "only connects, welds and joint couplings of hinges and slides become constraints"),
                           "equality", name, e + 1});
   }
@@ -332,17 +354,15 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   return model;
 }
 
-// a URDF joint's <mimic>, which MuJoCo's reader ignores, as the coupling q = m q_K + o (a holonomic
-// constraint, as an MJCF equality joint), or a warning where it cannot be one
+// a URDF joint's <mimic>, which MuJoCo's reader ignores, as the coupling q = m q_K + o (a joint that
+// follows the other's coordinate, joint_followers.hpp, or a holonomic constraint, as an MJCF equality
+// joint), or a warning where it cannot be one
 void read_mimics(const mjModel* m, const std::string& urdf, Robot& r) {
-  bool floating = has_spherical_joints(m);
   for (const UrdfMimic& mimic : urdf_mimics(urdf)) {
     int first = mj_name2id(m, mjOBJ_JOINT, mimic.joint.c_str()), second = mj_name2id(m, mjOBJ_JOINT, mimic.mimicked.c_str());
-    if (floating || !one_dof_joint(m, first) || !one_dof_joint(m, second)) {
-      r.warnings.push_back({fmt::format("joint '{}' mimics '{}': not carried ({})", mimic.joint, mimic.mimicked,
-                                        floating ? "a robot with a floating base takes Appell's equations, which take no "
-                                                   "constraints here yet"
-                                                 : "only a revolute or prismatic joint that mimics another becomes a constraint"),
+    if (!one_dof_joint(m, first) || !one_dof_joint(m, second)) {
+      r.warnings.push_back({fmt::format("joint '{}' mimics '{}': not carried (only a revolute or prismatic joint that mimics "
+                                        "another is carried)", mimic.joint, mimic.mimicked),
                             "joint", mimic.joint, 0});
       continue;
     }
@@ -432,11 +452,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
   read_actuators(m, r);
-  if (!has_spherical_joints(m)) {
-    read_loops(m, qpos, r);
-    read_couplings(m, r);
-  }
+  if (!has_spherical_joints(m)) read_loops(m, qpos, r);
+  read_couplings(m, r);
   if (!urdf.empty()) read_mimics(m, urdf, r);
+  if (has_spherical_joints(m)) keep_followers(r);
   if (int fixed = urdf_joint_count(urdf, "fixed"); fixed > 0 && urdf_joint_count(urdf, "floating") > 0)
     r.warnings.push_back({fmt::format("{} fixed joint(s): their links are fused into their parents and their names are not "
                                       "kept (MuJoCo puts a floating base's free joint at the top level only)", fixed),

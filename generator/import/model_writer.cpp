@@ -7,6 +7,7 @@
 #include "import/model_writer.hpp"
 
 #include "emit/formats.hpp"
+#include "import/joint_followers.hpp"
 #include "import/mjcf_reader.hpp"
 #include "import/urdf_text.hpp"
 #include "import/warning_lines.hpp"
@@ -61,6 +62,21 @@ class Names {
 struct JointSymbols {
   std::vector<std::string> coordinates;  // in qpos order
   std::vector<std::string> angular;      // ball, free: ω's names
+  /// a hinge or slide that follows another joint's coordinate `leader` (joint_followers.hpp): it
+  /// moves by multiplier·leader + offset, and its own name in `coordinates` is not declared
+  std::string leader;
+  double multiplier = 1, offset = 0;
+  bool follows() const { return !leader.empty(); }
+  // the hinge's or slide's angle and rate in the model's coordinates
+  std::string angle() const {
+    if (!follows()) return coordinates[0];
+    std::string scaled = multiplier == 1 ? leader : fmt::format("{}*{}", format_number(multiplier), leader);
+    if (offset == 0) return "(" + scaled + ")";
+    return fmt::format("({} {} {})", scaled, offset < 0 ? "-" : "+", format_number(std::abs(offset)));
+  }
+  std::string rate() const {
+    return follows() ? fmt::format("({}*der({}))", format_number(multiplier), leader) : "der(" + coordinates[0] + ")";
+  }
 };
 
 JointSymbols symbols_of(const RobotJoint& j, const std::string& base, Names& names) {
@@ -85,8 +101,10 @@ std::string names_list(const std::vector<std::string>& names, std::size_t from, 
 std::string joint_text(const RobotJoint& j, const JointSymbols& s) {
   if (j.type == "hinge" || j.type == "slide") {
     bool anchored = j.type == "hinge" && (j.anchor[0] != 0 || j.anchor[1] != 0 || j.anchor[2] != 0);
-    return fmt::format("{{ type = \"{}\", axis = {}{}, coordinate = \"{}\" }}", j.type == "hinge" ? "revolute" : "prismatic",
-                       vector_text(j.axis), anchored ? ", anchor = " + vector_text(j.anchor) : "", s.coordinates[0]);
+    std::string follows = s.follows() ? fmt::format(", multiplier = {}, offset = {}", format_number(s.multiplier), format_number(s.offset)) : "";
+    return fmt::format("{{ type = \"{}\", axis = {}{}, coordinate = \"{}\"{} }}", j.type == "hinge" ? "revolute" : "prismatic",
+                       vector_text(j.axis), anchored ? ", anchor = " + vector_text(j.anchor) : "",
+                       s.follows() ? s.leader : s.coordinates[0], follows);
   }
   bool free = j.type == "free";
   std::size_t q = free ? 3 : 0, v = free ? 3 : 0;
@@ -105,6 +123,7 @@ struct Sections {
 
 // the coordinates' lines: initial values, rates of hinges, slides and a free joint's position
 void add_coordinates(const RobotJoint& j, const JointSymbols& s, Sections& out) {
+  if (s.follows()) return;
   for (std::size_t k = 0; k < s.coordinates.size(); ++k) {
     bool rated = (j.type == "hinge" || j.type == "slide" || (j.type == "free" && k < 3)) && j.initial_velocity[k] != 0;
     std::string line = rated ? fmt::format("{} = {{ initial = {}, rate = {} }}", s.coordinates[k], format_number(j.initial_position[k]),
@@ -120,11 +139,11 @@ void add_coordinates(const RobotJoint& j, const JointSymbols& s, Sections& out) 
 void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string& where, Sections& out) {
   const std::vector<std::string>& c = s.coordinates;
   if (j.type == "hinge" || j.type == "slide") {
-    if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*der({})^2", format_number(j.armature), c[0]));
-    if (j.damping != 0) out.dissipation.push_back(fmt::format("{}*der({})^2", format_number(j.damping), c[0]));
+    if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*{}^2", format_number(j.armature), s.rate()));
+    if (j.damping != 0) out.dissipation.push_back(fmt::format("{}*{}^2", format_number(j.damping), s.rate()));
     if (j.stiffness != 0)
-      out.potential.push_back(j.spring_reference[0] == 0 ? fmt::format("{}*{}^2", format_number(j.stiffness), c[0])
-                                                         : fmt::format("{}*({} - {})^2", format_number(j.stiffness), c[0],
+      out.potential.push_back(j.spring_reference[0] == 0 ? fmt::format("{}*{}^2", format_number(j.stiffness), s.angle())
+                                                         : fmt::format("{}*({} - {})^2", format_number(j.stiffness), s.angle(),
                                                                        format_number(j.spring_reference[0])));
     return;
   }
@@ -204,9 +223,20 @@ std::string shapes_text(const RobotBody& body, Sections& out) {
   return "shape = [" + list + "]\n";
 }
 
+// every joint's symbols, bodies in order and their joints in order, named after the joints
+std::vector<std::vector<JointSymbols>> all_joint_symbols(const Robot& robot, const std::vector<std::string>& frame_of, Names& names) {
+  std::vector<std::vector<JointSymbols>> symbols(robot.bodies.size());
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b)
+    for (std::size_t k = 0; k < robot.bodies[b].joints.size(); ++k) {
+      const RobotJoint& j = robot.bodies[b].joints[k];
+      symbols[b].push_back(symbols_of(j, j.name.empty() ? fmt::format("{}_q{}", frame_of[b], k + 1) : j.name, names));
+    }
+  return symbols;
+}
+
 // one frame per joint of the body (a body without joints: one fixed frame), its rigid body in the last
-void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::string>& frame_of, Sections& out,
-              std::vector<std::vector<JointSymbols>>& joint_symbols) {
+void add_body(const Robot& robot, std::size_t b, std::vector<std::string>& frame_of, Sections& out,
+              const std::vector<std::vector<JointSymbols>>& joint_symbols) {
   const RobotBody& body = robot.bodies[b];
   std::string frame = frame_of[b], parent = body.parent < 0 ? "" : frame_of[std::size_t(body.parent)];
   std::size_t count = std::max<std::size_t>(1, body.joints.size());
@@ -226,8 +256,8 @@ void add_body(const Robot& robot, std::size_t b, Names& names, std::vector<std::
     if (!body.joints.empty()) {
       const RobotJoint& j = body.joints[k];
       std::string base = j.name.empty() ? fmt::format("{}_q{}", frame, k + 1) : j.name;
-      JointSymbols s = symbols_of(j, base, names);
-      joint_symbols[b].push_back(s);
+      const JointSymbols& s = joint_symbols[b][k];
+      if (s.follows()) out.frames += fmt::format("# joint '{}' follows the coordinate '{}' (a mimic or linear coupling)\n", base, s.leader);
       out.frames += "joint = " + joint_text(j, s) + "\n";
       add_coordinates(j, s, out);
       add_energies(j, s, fmt::format("body '{}', joint '{}'", body.name, base), out);
@@ -264,6 +294,8 @@ void add_keyframes(const Robot& robot, const std::vector<std::vector<JointSymbol
                             (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]) / 2, (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]) / 2};
           for (std::size_t i = 0; i < 4; ++i) add(c[moved + i], q[i]), add("der(" + c[moved + i] + ")", rate[i]);
           qpos += moved + 4, qvel += moved + 3;
+        } else if (joint_symbols[b][k].follows()) {
+          ++qpos, ++qvel;  // the leader's state sets it
         } else {
           add(c[0], key.positions[qpos++]), add("der(" + c[0] + ")", key.velocities[qvel++]);
         }
@@ -397,13 +429,19 @@ std::string loop_constraints(const Robot& robot, const std::vector<std::string>&
 }
 
 // q1 − ref1 − (c0 + c1 d + … + c4 d⁴), d = q2 − ref2: MuJoCo's joint coupling, its zero terms left out
-std::string coupling_constraints(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Names& names) {
+std::string coupling_constraints(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols,
+                                 const std::vector<JointFollower>& followers, Names& names) {
   std::string text;
+  std::set<std::size_t> followed;
+  for (const JointFollower& f : followers) followed.insert(f.coupling);
   auto shifted = [](const std::string& q, double reference) {
     return reference == 0 ? q : fmt::format("({} - {})", q, format_number(reference));
   };
-  for (const RobotCoupling& c : robot.couplings) {
-    std::string q1 = joint_symbols[std::size_t(c.body1)][std::size_t(c.joint1)].coordinates[0];
+  for (std::size_t k = 0; k < robot.couplings.size(); ++k) {
+    const RobotCoupling& c = robot.couplings[k];
+    if (followed.count(k)) continue;
+    // (a joint that follows another's coordinate enters by its angle in that coordinate)
+    std::string q1 = joint_symbols[std::size_t(c.body1)][std::size_t(c.joint1)].angle();
     std::string expression = c.reference1 == 0 ? q1 : fmt::format("{} - {}", q1, format_number(c.reference1));
     // − c·term, written with the sign c gives it
     auto minus = [](double coefficient, const std::string& term) {
@@ -412,7 +450,7 @@ std::string coupling_constraints(const Robot& robot, const std::vector<std::vect
     };
     if (c.coefficients[0] != 0) expression += minus(c.coefficients[0], "");
     if (c.body2 >= 0) {
-      std::string d = shifted(joint_symbols[std::size_t(c.body2)][std::size_t(c.joint2)].coordinates[0], c.reference2);
+      std::string d = shifted(joint_symbols[std::size_t(c.body2)][std::size_t(c.joint2)].angle(), c.reference2);
       for (std::size_t k = 1; k < 5; ++k)
         if (c.coefficients[k] != 0)
           expression += minus(c.coefficients[k], d + (k == 1 ? "" : fmt::format("^{}", k)));
@@ -427,15 +465,21 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   Sections out;
   std::vector<std::string> frame_of;
   for (const RobotBody& b : robot.bodies) frame_of.push_back(frames.take(b.name));
-  std::vector<std::vector<JointSymbols>> joint_symbols(robot.bodies.size());
-  for (std::size_t b = 0; b < robot.bodies.size(); ++b) add_body(robot, b, names, frame_of, out, joint_symbols);
+  std::vector<std::vector<JointSymbols>> joint_symbols = all_joint_symbols(robot, frame_of, names);
+  std::vector<JointFollower> followers = joint_followers(robot);
+  for (const JointFollower& f : followers) {
+    JointSymbols& s = joint_symbols[std::size_t(f.body)][std::size_t(f.joint)];
+    s.leader = joint_symbols[std::size_t(f.leader_body)][std::size_t(f.leader_joint)].coordinates[0];
+    s.multiplier = f.multiplier, s.offset = f.offset;
+  }
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b) add_body(robot, b, frame_of, out, joint_symbols);
   add_actuators(robot, joint_symbols, names, out);
   add_keyframes(robot, joint_symbols, names, out);
   for (const RobotSite& s : robot.sites)
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
   add_link_points(robot, frame_of, names, out);
-  std::string constraints = loop_constraints(robot, frame_of, names, out) + coupling_constraints(robot, joint_symbols, names);
+  std::string constraints = loop_constraints(robot, frame_of, names, out) + coupling_constraints(robot, joint_symbols, followers, names);
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);
   for (const RobotWarning& w : robot.warnings) text += "# not carried: " + w.text + "\n";

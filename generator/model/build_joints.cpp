@@ -4,7 +4,8 @@
 // by q along e:
 //   revolute:  R = R_p·R_e(q),  o = o_p + R_p·(a − R_e(q)·a)
 //   prismatic: R = R_p,         o = o_p + R_p·e·q
-// so that the anchor stays where it is and q = 0 is the placement.
+// so that the anchor stays where it is and q = 0 is the placement. A joint that follows a
+// coordinate (a mimic) moves by m·q + c in place of q.
 #include <fmt/format.h>
 
 #include "model/model_builder.hpp"
@@ -43,6 +44,31 @@ std::optional<Vector3> ModelBuilder::joint_axis(const JointEntry& j) {
   return e;
 }
 
+// a joint that follows a coordinate (URDF's mimic): multiplier and offset constants, the
+// multiplier not zero (such a joint would not move: a fixed one)
+bool ModelBuilder::follow(const JointEntry& j, FrameLink::Joint& joint) {
+  bool valid = true;
+  auto constant = [&](const std::optional<ExpressionText>& text, ex& out, bool nonzero) {
+    if (!text) return;
+    auto e = parse(*text, allow_parameters, "a joint's multiplier or offset");
+    if (!e) {
+      valid = false;
+      return;
+    }
+    auto value = constant_value(e->subs(m_.symbols.default_parameter_values()), m_.symbols);
+    if (!value || (nonzero && *value == 0)) {
+      d_.error(text->where, text->key, value ? "the multiplier is zero: the joint would not move" : "it is not a constant",
+               value ? "use type = \"fixed\" for a joint that does not move" : "give a number or an expression of parameters");
+      valid = false;
+      return;
+    }
+    out = *e;
+  };
+  constant(j.multiplier, joint.multiplier, true);
+  constant(j.offset, joint.offset, false);
+  return valid;
+}
+
 std::optional<FrameLink::Joint> ModelBuilder::move_by_joint(const JointEntry& j, Rotation& relative, Vector3& origin) {
   FrameLink::Joint joint;
   if (j.type == "fixed") return joint;
@@ -50,9 +76,10 @@ std::optional<FrameLink::Joint> ModelBuilder::move_by_joint(const JointEntry& j,
   if (j.type.empty() || j.axis.size() != 3) return std::nullopt;  // reported by the parser
   auto q = joint_coordinate(j);
   auto axis = joint_axis(j);
-  if (!q || !axis) return std::nullopt;
+  if (!q || !axis || !follow(j, joint)) return std::nullopt;
   for (std::size_t i = 0; i < m_.symbols.coordinates.size(); ++i)
     if (q->is_equal(m_.symbols.coordinates[i])) joint.coordinate = int(i);
+  q = joint.multiplier * *q + joint.offset;
   joint.axis = unit_direction(*axis);
   ElementaryRotation turn = turn_about(*axis, *q);
   joint.type = j.type == "prismatic" ? FrameLink::Joint::Type::prismatic : FrameLink::Joint::Type::revolute;

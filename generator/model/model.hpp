@@ -36,6 +36,9 @@ struct FrameLink {
     enum class Type { fixed, revolute, prismatic, ball, free };
     Type type = Type::fixed;
     int coordinate = -1;              // revolute, prismatic: index into the coordinates; else -1
+    /// the joint turns or slides by multiplier·q + offset (constants): 1 and 0 but for a joint
+    /// that follows another's coordinate (URDF's mimic)
+    GiNaC::ex multiplier = 1, offset = 0;
     Vector3 axis{0, 0, 0};            // e, a unit vector in the frame's coordinates
     Vector3 anchor{0, 0, 0};          // a point of a revolute joint's axis, frame coordinates
     GiNaC::matrix placement{3, 3};    // R_p: the frame at the joint's zero, parent coordinates

@@ -64,6 +64,7 @@ class ModelBuilder {
   bool is_constant_placement(const Rotation& rotation, const Vector3& origin) const;
   std::optional<GiNaC::ex> joint_coordinate(const JointEntry& joint);
   std::optional<Vector3> joint_axis(const JointEntry& joint);
+  bool follow(const JointEntry& joint, FrameLink::Joint& out);
   // ball and free joints (build_spherical_joints.cpp)
   std::optional<FrameLink::Joint> turn_by_quaternion(const JointEntry& joint, Rotation& relative, Vector3& origin);
   std::optional<std::vector<int>> joint_coordinates(const std::vector<std::string>& names, const SourceLocation& where,

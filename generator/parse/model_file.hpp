@@ -94,6 +94,9 @@ struct JointEntry {
   std::vector<ExpressionText> anchor;  // revolute, ball: a point of the axis (the centre), frame coordinates; empty: the origin
   std::string coordinate;              // the coordinate that moves it (revolute, prismatic)
   SourceLocation coordinate_where;
+  /// A joint that follows another's coordinate (URDF's mimic, a gear): it turns or slides by
+  /// multiplier·q + offset; absent: by q
+  std::optional<ExpressionText> multiplier, offset;
   /// ball and free: the coordinates of the unit quaternion w, x, y, z (MJCF's order), the names of the
   /// angular velocity's components in the frame (the velocities), and their initial values;
   /// free: also the coordinates of the origin's position in the parent's axes

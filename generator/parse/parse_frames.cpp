@@ -84,8 +84,8 @@ void read_spherical_joint(Reader& r, const toml::table& t, const std::string& ke
 std::optional<JointEntry> read_joint(Reader& r, const toml::node& node, const std::string& key) {
   const toml::table* t = r.table(node, key, "type, axis, anchor, coordinate");
   if (!t) return std::nullopt;
-  r.check_keys(*t, key, {"type", "axis", "anchor", "coordinate", "quaternion", "angular_velocity", "initial_angular_velocity",
-                         "position"});
+  r.check_keys(*t, key, {"type", "axis", "anchor", "coordinate", "multiplier", "offset", "quaternion", "angular_velocity",
+                         "initial_angular_velocity", "position"});
   JointEntry j;
   j.key = key;
   j.where = r.at(node);
@@ -98,6 +98,16 @@ std::optional<JointEntry> read_joint(Reader& r, const toml::node& node, const st
   } else {
     r.error(j.where, key, "the joint has no type", joint_types);
   }
+  for (const char* follows : {"multiplier", "offset"})
+    if (const toml::node* n = t->get(follows)) {
+      if (j.type != "revolute" && j.type != "prismatic") {
+        r.error(r.at(*n), key + "." + follows, fmt::format("a {} joint has no {}", j.type.empty() ? "typeless" : j.type, follows),
+                "only a revolute or prismatic joint follows a coordinate by multiplier·q + offset; leave it out");
+        continue;
+      }
+      ExpressionText e;
+      if (r.expression(*n, key + "." + follows, e)) (follows[0] == 'm' ? j.multiplier : j.offset) = e;
+    }
   if (j.type == "ball" || j.type == "free") {
     read_spherical_joint(r, *t, key, j);
     if (const toml::node* n = t->get("anchor"); n && j.type == "ball") r.vector(*n, key + ".anchor", 3, j.anchor);

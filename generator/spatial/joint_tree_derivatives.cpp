@@ -165,7 +165,9 @@ class Gradient {
     }
   }
 
-  // each pair of a link k and a link j at or above it: j's directions in k's rows, and k's in j's
+  // each pair of a link k and a link j at or above it: j's directions in k's rows, and k's in j's;
+  // summed where several joints follow one coordinate (their S carry the multiplier, so that by the
+  // chain rule each pair of links adds its part)
   InverseDynamicsGradient pairs(std::size_t velocities, std::size_t coordinates) const {
     InverseDynamicsGradient g{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
                               GiNaC::matrix(unsigned(velocities), unsigned(velocities))};
@@ -179,11 +181,11 @@ class Gradient {
           for (std::size_t d = 0; d < links_[j].directions.size(); ++d) {
             unsigned q = unsigned(links_[j].directions[d].coordinate);
             bool carried = j != k || row.turns_with_link;
-            g.coordinates(i, q) = (carried ? power(ddS_[j][d], IS_[k][r]) + power(dS_[j][d], BS_[k][r])
+            g.coordinates(i, q) += (carried ? power(ddS_[j][d], IS_[k][r]) + power(dS_[j][d], BS_[k][r])
                                            : power(S_[k][r], G_[j][d])).expand();
           }
           for (std::size_t c = 0; c < links_[j].columns.size(); ++c)
-            g.velocities(i, unsigned(links_[j].columns[c].velocity)) =
+            g.velocities(i, unsigned(links_[j].columns[c].velocity)) +=
                 (power(A_[j][c], IS_[k][r]) + power(S_[j][c], BS_[k][r])).expand();
         }
         if (j == k) continue;
@@ -191,9 +193,9 @@ class Gradient {
         for (std::size_t r = 0; r < links_[j].columns.size(); ++r) {
           unsigned i = unsigned(links_[j].columns[r].velocity);
           for (std::size_t d = 0; d < links_[k].directions.size(); ++d)
-            g.coordinates(i, unsigned(links_[k].directions[d].coordinate)) = power(S_[j][r], G_[k][d]).expand();
+            g.coordinates(i, unsigned(links_[k].directions[d].coordinate)) += power(S_[j][r], G_[k][d]).expand();
           for (std::size_t c = 0; c < links_[k].columns.size(); ++c)
-            g.velocities(i, unsigned(links_[k].columns[c].velocity)) = power(S_[j][r], H_[k][c]).expand();
+            g.velocities(i, unsigned(links_[k].columns[c].velocity)) += power(S_[j][r], H_[k][c]).expand();
         }
       }
     return g;

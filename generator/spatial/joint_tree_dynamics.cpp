@@ -105,7 +105,8 @@ class Tree {
       }
       force[i] = named(out, i, "tF" + tag, F);
       moment[i] = named(out, i, "tN" + tag, N);
-      for (const Dof& d : links_[i].dofs) tau[std::size_t(d.velocity)] = dot(d.e, moment[i]) + dot(d.u, force[i]);
+      // += : the joints that follow one coordinate each add their share (their e and u carry m)
+      for (const Dof& d : links_[i].dofs) tau[std::size_t(d.velocity)] += dot(d.e, moment[i]) + dot(d.u, force[i]);
     }
     return tau;
   }
@@ -180,19 +181,29 @@ class Tree {
         for (const Dof& other : links_[i].dofs)
           if (other.velocity <= d.velocity) {
             unsigned j = unsigned(other.velocity);
-            M(j, k) = M(k, j) = (dot(other.e, L) + dot(other.u, p)).expand();
+            add_symmetric(M, j, k, (dot(other.e, L) + dot(other.u, p)).expand(), false);
           }
         for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
           const Link& c = links_[std::size_t(at)];
           p = named(out_, std::size_t(up), fmt::format("tp{}", k), times(c.E, p));
           L = named(out_, std::size_t(up), fmt::format("tL{}", k), times(c.E, L) + cross(c.r, p));
-          for (const Dof& a : links_[std::size_t(up)].dofs) {
-            unsigned j = unsigned(a.velocity);
-            M(j, k) = M(k, j) = (dot(a.e, L) + dot(a.u, p)).expand();
-          }
+          for (const Dof& a : links_[std::size_t(up)].dofs)
+            add_symmetric(M, unsigned(a.velocity), k, (dot(a.e, L) + dot(a.u, p)).expand(), true);
         }
       }
     return M;
+  }
+
+  // M_jk and M_kj of a pair of joints: their sum over every pair of links whose joints the two
+  // velocities drive (more than one when a joint follows another's coordinate); a pair of two
+  // links that one velocity drives gives M_kk twice, once for each order
+  static void add_symmetric(GiNaC::matrix& M, unsigned j, unsigned k, const ex& x, bool two_links) {
+    if (j == k) {
+      M(k, k) += two_links ? 2 * x : x;
+      return;
+    }
+    M(j, k) += x;
+    M(k, j) += x;
   }
 
   // the links as the closed-form derivatives take them: each joint's velocities, and the twist of
@@ -278,14 +289,16 @@ class Tree {
     GiNaC::matrix R = identity();
     Vector3 r = j.placement_origin, zero{0, 0, 0};
     auto velocity_of = [&](int coordinate) { return velocities_.of_coordinate[std::size_t(coordinate)]; };
-    ex q = j.coordinate >= 0 ? ex(s_.coordinates[std::size_t(j.coordinate)]) : ex(0);
+    // a joint that follows its coordinate by m·q + c moves m times as fast: its e and u carry m
+    ex q = joint_angle(j);
     if (j.type == Type::prismatic) {
-      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], zero, joint_direction(j, own)});
+      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], zero,
+                        scaled(j.multiplier, joint_direction(j, own))});
       r = r + times(j.placement, scaled(q, j.axis));
     } else if (j.type == Type::revolute) {
       Vector3 e = joint_direction(j, own);
-      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], e,
-                        cross(times(own.axes, j.anchor - own.origin, true), e)});
+      l.dofs.push_back({velocity_of(j.coordinate), s_.velocities[std::size_t(j.coordinate)], scaled(j.multiplier, e),
+                        scaled(j.multiplier, cross(times(own.axes, j.anchor - own.origin, true), e))});
       ElementaryRotation about_axis{ElementaryRotation::about_direction, q};
       about_axis.direction = j.axis;
       R = rotation_matrix(about_axis);
@@ -344,9 +357,14 @@ class Tree {
         K(a, b) = rotation_entry(approximate ? without_small_terms(K(a, b)) : K(a, b), approximate);
       }
     if (!about_z) return K;
-    const ex& q = s_.coordinates[std::size_t(j.coordinate)];
+    ex q = joint_angle(j);
     GiNaC::matrix rot_z = {{GiNaC::cos(q), -GiNaC::sin(q), 0}, {GiNaC::sin(q), GiNaC::cos(q), 0}, {0, 0, 1}};
     return K.mul(rot_z);
+  }
+
+  // the angle or travel of a revolute or prismatic joint: its coordinate, or m·q + c for a follower
+  ex joint_angle(const FrameLink::Joint& j) const {
+    return j.coordinate < 0 ? ex(0) : j.multiplier * s_.coordinates[std::size_t(j.coordinate)] + j.offset;
   }
 
   // R(q) of a ball or free joint's quaternion (model/quaternion.hpp), with 1/|q|² named
@@ -415,8 +433,10 @@ class Tree {
 
 // for each velocity, the one above it: the one before it in its own joint, or the last of the
 // nearest joint above that has any; empty unless every one is above (numbered before) those it carries
+// and drives one joint (M of joints that follow another's coordinate is not a tree's)
 std::vector<int> velocity_parents(const Model& model, const JointVelocities& v) {
   std::vector<int> parents(v.symbols.size(), -1), last(model.frame_links.size(), -1);
+  std::vector<bool> driving(v.symbols.size(), false);
   for (std::size_t i = 0; i < model.frame_links.size(); ++i) {
     const FrameLink& l = model.frame_links[i];
     std::vector<int> own;
@@ -428,7 +448,8 @@ std::vector<int> velocity_parents(const Model& model, const JointVelocities& v) 
         if (v.symbols[s] == l.joint->angular_velocity[k]) own.push_back(int(s));
     int above = l.parent < 0 ? -1 : last[std::size_t(l.parent)];
     for (int s : own) {
-      if (above >= s) return {};
+      if (above >= s || driving[std::size_t(s)]) return {};
+      driving[std::size_t(s)] = true;
       parents[std::size_t(s)] = above;
       above = s;
     }
@@ -451,8 +472,19 @@ std::optional<std::string> why_not_a_joint_tree(const Model& model) {
     for (int k : l.joint->position)
       if (k >= 0) ++joints[std::size_t(k)];
   }
+  // a coordinate may move several revolute or prismatic joints (those that follow it, URDF's mimic)
   for (std::size_t k = 0; k < joints.size(); ++k)
-    if (joints[k] != 1) return fmt::format("coordinate '{}' moves {} joints, not one", s.coordinate_names[k], joints[k]);
+    if (joints[k] == 0) return fmt::format("coordinate '{}' moves no joint", s.coordinate_names[k]);
+  for (const FrameLink& l : model.frame_links)
+    for (int k : l.joint->quaternion)
+      if (k >= 0 && joints[std::size_t(k)] != 1)
+        return fmt::format("coordinate '{}' of a quaternion moves {} joints, not one", s.coordinate_names[std::size_t(k)],
+                           joints[std::size_t(k)]);
+  for (const FrameLink& l : model.frame_links)
+    for (int k : l.joint->position)
+      if (k >= 0 && joints[std::size_t(k)] != 1)
+        return fmt::format("coordinate '{}' of a free joint's position moves {} joints, not one",
+                           s.coordinate_names[std::size_t(k)], joints[std::size_t(k)]);
   for (const Particle& p : model.particles)
     if (p.placement.frame < 0 || moves(p.placement.local[0] + p.placement.local[1] + p.placement.local[2], s))
       return fmt::format("particle '{}' does not sit still in a frame", p.name);

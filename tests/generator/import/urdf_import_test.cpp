@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -121,8 +122,10 @@ TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayMujocos) {
   }
 }
 
-// a joint's <mimic> (MuJoCo's URDF reader ignores it) is the holonomic constraint q = m q_K + o; on a
-// floating base it is named as not carried, and so are the fixed links (MuJoCo must fuse them there)
+// a joint's <mimic> (MuJoCo's URDF reader ignores it) follows the coordinate it mimics
+// (joint_follower_import_test.cpp checks the dynamics); one that mimics a follower (a chain) is the
+// holonomic constraint q = m q_K + o, and on a floating base, which takes no constraints, it is named as
+// not carried, as are the fixed links (MuJoCo must fuse them there)
 const char* const gripper = R"(<?xml version="1.0"?>
 <robot name="gripper">
   <link name="palm"/>
@@ -131,6 +134,9 @@ const char* const gripper = R"(<?xml version="1.0"?>
   </link>
   <link name="right">
     <inertial><origin xyz="0 0 0.03"/><mass value="0.1"/><inertia ixx="0.0001" ixy="0" ixz="0" iyy="0.0001" iyz="0" izz="0.00002"/></inertial>
+  </link>
+  <link name="thumb">
+    <inertial><origin xyz="0 0 0.02"/><mass value="0.05"/><inertia ixx="0.00005" ixy="0" ixz="0" iyy="0.00005" iyz="0" izz="0.00001"/></inertial>
   </link>
   <joint name="left_finger" type="prismatic">
     <parent link="palm"/><child link="left"/><origin xyz="0 0.02 0"/><axis xyz="0 1 0"/>
@@ -141,29 +147,39 @@ const char* const gripper = R"(<?xml version="1.0"?>
     <limit lower="-0.04" upper="0" effort="20" velocity="0.2"/>
     <mimic joint="left_finger" multiplier="-1" offset="0.001"/>
   </joint>
+  <joint name="thumb_joint" type="revolute">
+    <parent link="palm"/><child link="thumb"/><origin xyz="0.02 0 0"/><axis xyz="1 0 0"/>
+    <limit lower="-1" upper="1" effort="20" velocity="0.2"/>
+    <mimic joint="right_finger" multiplier="30"/>
+  </joint>
 </robot>
 )";
 
-TEST(UrdfImport, AMimicJointIsAConstraint) {
+TEST(UrdfImport, AMimicJointFollowsItsCoordinateAndAChainOfThemIsAConstraint) {
   auto mimics = urdf_mimics(gripper);
-  ASSERT_EQ(mimics.size(), 1u);
+  ASSERT_EQ(mimics.size(), 2u);
   EXPECT_EQ(mimics[0].joint, "right_finger");
   EXPECT_EQ(mimics[0].mimicked, "left_finger");
   EXPECT_EQ(mimics[0].multiplier, -1);
   EXPECT_EQ(mimics[0].offset, 0.001);
-  EXPECT_EQ(mimics[0].line, 14);
+  EXPECT_EQ(mimics[0].line, 17);
+  EXPECT_EQ(mimics[1].multiplier, 30);
+  EXPECT_EQ(mimics[1].offset, 0);
   std::string path = temporary_directory() + "/gripper.urdf";
   std::ofstream(path) << gripper;
   Diagnostics diagnostics;
   auto text = imported_model_text(path, diagnostics, false);
   ASSERT_TRUE(text) << diagnostics.format();
-  for (const char* line : {"method = \"lagrange1\"", "name = \"right_finger_mimics_left_finger\"\nholonomic = \"right_finger - 0.001 + left_finger\""})
+  for (const char* line : {"coordinate = \"left_finger\", multiplier = -1, offset = 0.001 }", "method = \"lagrange1\"",
+                           "name = \"thumb_joint_mimics_right_finger\"\nholonomic = \"thumb_joint - 30*(-1*left_finger + 0.001)\""})
     EXPECT_NE(text->find(line), std::string::npos) << line << " in\n" << *text;
   Equations e = derive_text(*text, "gripper.toml");
   ASSERT_EQ(e.constraints.size(), 1u);
-  GiNaC::exmap at = point_by_name(e, {{"left_finger", 0.01}, {"right_finger", -0.009}, {"der(left_finger)", 0.1}, {"der(right_finger)", -0.1}});
-  EXPECT_NEAR(value_at(e.constraints.position[0], at), 0, 1e-17) << "the fingers close together";
-  // on a floating base (Appell's equations, no constraints yet) the mimic is named as not carried
+  EXPECT_EQ(e.symbols.coordinate_names, (std::vector<std::string>{"left_finger", "thumb_joint"}));
+  GiNaC::exmap at = point_by_name(e, {{"left_finger", 0.01}, {"thumb_joint", -0.27}, {"der(left_finger)", 0.1}, {"der(thumb_joint)", 3}});
+  // zero to the rounding of numbers of size 0.27
+  EXPECT_NEAR(value_at(e.constraints.position[0], at), 0, 4 * 0.27 * std::numeric_limits<double>::epsilon()) << "the thumb turns with the finger";
+  // on a floating base (Appell's equations, no constraints yet) the chained mimic is named as not carried
   EXPECT_EQ(urdf_joint_count(gripper, "prismatic"), 2);
   std::string floating = gripper;
   floating.replace(floating.find("<link name=\"palm\"/>"), 19,
@@ -174,9 +190,13 @@ TEST(UrdfImport, AMimicJointIsAConstraint) {
   std::ofstream(path) << floating;
   text = imported_model_text(path, diagnostics, false);
   ASSERT_TRUE(text) << diagnostics.format();
-  EXPECT_NE(text->find("# not carried: joint 'right_finger' mimics 'left_finger': not carried"), std::string::npos) << *text;
+  EXPECT_NE(text->find("coordinate = \"left_finger\", multiplier = -1, offset = 0.001 }"), std::string::npos) << *text;
+  EXPECT_NE(text->find("# not carried: thumb_joint_mimics_right_finger: not carried (a robot with ball or free joints"),
+            std::string::npos) << *text;
   EXPECT_EQ(text->find("[[constraints]]"), std::string::npos) << *text;
   EXPECT_NE(text->find("# not carried: 1 fixed joint(s): their links are fused into their parents"), std::string::npos) << *text;
+  Equations floating_equations = derive_text(*text, "floating_gripper.toml");
+  EXPECT_EQ(floating_equations.symbols.coordinate_names.size(), 9u) << "7 of the free joint, the left finger, the thumb";
 }
 
 // a URDF from a ROS package names meshes MuJoCo 2.2.2 cannot read (COLLADA, package:// paths, files

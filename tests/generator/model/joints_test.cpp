@@ -120,6 +120,22 @@ TEST(Joints, PrismaticSlidesAlongItsUnitAxis) {
   }
 }
 
+// a joint that follows q by m·q + c (URDF's mimic) is the rotor turned by that angle: with the
+// oblique rotor above, angle θ = −2.5 q + 0.3 gives M = 6.25·M_θ and f = −2.5·f_θ(θ)
+TEST(Joints, AJointThatFollowsACoordinateTurnsByItsMultipleAndOffset) {
+  for (const char* kinematics : {"expanded", "recursive"}) {
+    Equations e = derive_text(rotor(kinematics,
+        "joint = { type = \"revolute\", axis = [\"1\", \"2\", \"2\"], anchor = [\"0.1\", \"0.2\", \"-0.1\"], "
+        "coordinate = \"q\", multiplier = -2.5, offset = \"0.3\" }"));
+    expect_closed_forms(e, "6.25*((A + 4*B + 4*C)/9 + m*1.94/9)",
+                        "-2.5*m*g*(0.3*sin(0.3 - 2.5*q) + 0.7/3*cos(0.3 - 2.5*q) - 0.4/9*sin(0.3 - 2.5*q))", kinematics);
+    Equations slide = derive_text(rotor(kinematics,
+        "rotation = \"rot_x(0.5)\"\njoint = { type = \"prismatic\", axis = [\"0\", \"3\", \"4\"], coordinate = \"q\", "
+        "multiplier = \"B\", offset = -1 }"));
+    expect_closed_forms(slide, "m*B^2", "-B*m*g*(3*sin(0.5) + 4*cos(0.5))/5", kinematics);
+  }
+}
+
 TEST(Joints, FixedJointKeepsThePlacement) {
   Equations fixed = derive_text(rotor("recursive", "rotation = \"rot_z(q)\"\njoint = { type = \"fixed\" }"));
   Equations plain = derive_text(rotor("recursive", "rotation = \"rot_z(q)\""));
@@ -173,6 +189,12 @@ TEST(Joints, MisusesAreLocated) {
   EXPECT_NE(moved.find("a fixed joint has no coordinate"), std::string::npos) << moved;
   std::string misspelt = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"1\"], coordinate = \"q\", anchr = [\"0\", \"0\", \"0\"] }");
   EXPECT_NE(misspelt.find("anchor"), std::string::npos) << misspelt;
+  std::string still = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"1\"], coordinate = \"q\", multiplier = 0 }");
+  EXPECT_NE(still.find("frames[0].joint.multiplier: the multiplier is zero: the joint would not move"), std::string::npos) << still;
+  std::string moving = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"1\"], coordinate = \"q\", offset = \"q\" }");
+  EXPECT_NE(moving.find("frames[0].joint.offset: coordinate 'q' in a joint's multiplier or offset"), std::string::npos) << moving;
+  std::string fixed = with_joint("{ type = \"fixed\", multiplier = 2 }");
+  EXPECT_NE(fixed.find("frames[0].joint.multiplier: a fixed joint has no multiplier"), std::string::npos) << fixed;
   std::string coupled = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"q\"], coordinate = \"q\" }");
   EXPECT_NE(coupled.find("frames[0].joint.axis"), std::string::npos) << "an axis is constant:\n" << coupled;
 }

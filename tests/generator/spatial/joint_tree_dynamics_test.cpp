@@ -131,11 +131,12 @@ std::map<std::string, double> random_point(const Equations& e, std::mt19937& ran
   return values;
 }
 
-TEST(JointTree, RecursionsGiveTheExpandedEquations) {
-  Model model = built(with("recursive"));
+// M, f, τ and T of the recursions against the expanded derivation of the same model, at random states
+void expect_expanded_equations(const std::string& recursive_text, const std::string& expanded_text, unsigned n) {
+  Model model = built(recursive_text);
   ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
-  Equations recursive = derive_text(with("recursive")), expanded = derive_text(with("expanded"));
-  ASSERT_EQ(recursive.inverse_dynamics.size(), 4u);
+  Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
+  ASSERT_EQ(recursive.inverse_dynamics.size(), n);
   std::mt19937 random(5);
   for (int point = 0; point < 10; ++point) {
     std::map<std::string, double> values = random_point(recursive, random);
@@ -143,11 +144,11 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
     auto near = [](double x, double y, const std::string& what) {
       EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
     };
-    for (unsigned j = 0; j < 4; ++j) {
+    for (unsigned j = 0; j < n; ++j) {
       double f = value_at(recursive.forcing[j], at);
       near(f, value_at(expanded.forcing[j], full), fmt::format("f[{}]", j));
       double Mddq = 0;
-      for (unsigned k = 0; k < 4; ++k) {
+      for (unsigned k = 0; k < n; ++k) {
         double M = value_at(recursive.mass_matrix(j, k), at);
         near(M, value_at(expanded.mass_matrix(j, k), full), fmt::format("M[{}][{}]", j, k));
         Mddq += M * values.at(fmt::format("ddq{}", k));
@@ -159,22 +160,22 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
 }
 
 // the bodies' ∂τ/∂q and ∂τ/∂q' in closed form (spatial/joint_tree_derivatives.hpp), plus the
-// derivatives of the applied part, are those of M q'' − f of the expanded derivation, differentiated
-// symbolically: the oblique axis, the slide, the fixed frame and the turned inertias included
-TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
-  Equations recursive = derive_text(with("recursive")), expanded = derive_text(with("expanded"));
+// derivatives of the applied part, against those of M q'' − f of the expanded derivation,
+// differentiated symbolically
+void expect_expanded_derivatives(const std::string& recursive_text, const std::string& expanded_text, unsigned n) {
+  Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
   ASSERT_TRUE(recursive.has_bodies_gradient());
-  ASSERT_EQ(recursive.applied_inverse_dynamics.size(), 4u);
-  std::vector<ex> tau(4);
-  std::vector<GiNaC::symbol> ddq(4);
-  for (unsigned j = 0; j < 4; ++j) {
+  ASSERT_EQ(recursive.applied_inverse_dynamics.size(), n);
+  std::vector<ex> tau(n);
+  std::vector<GiNaC::symbol> ddq(n);
+  for (unsigned j = 0; j < n; ++j) {
     tau[j] = -expanded.forcing[j];
-    for (unsigned k = 0; k < 4; ++k) tau[j] += expanded.mass_matrix(j, k) * ddq[k];
+    for (unsigned k = 0; k < n; ++k) tau[j] += expanded.mass_matrix(j, k) * ddq[k];
   }
   // each derivative taken once, then evaluated at the points
-  GiNaC::matrix closed_q(4, 4), closed_rate(4, 4), expected_q(4, 4), expected_rate(4, 4);
-  for (unsigned j = 0; j < 4; ++j)
-    for (unsigned c = 0; c < 4; ++c) {
+  GiNaC::matrix closed_q(n, n), closed_rate(n, n), expected_q(n, n), expected_rate(n, n);
+  for (unsigned j = 0; j < n; ++j)
+    for (unsigned c = 0; c < n; ++c) {
       closed_q(j, c) = recursive.bodies_gradient_coordinates(j, c) + recursive.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]);
       closed_rate(j, c) = recursive.bodies_gradient_velocities(j, c) + recursive.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]);
       expected_q(j, c) = tau[j].diff(expanded.symbols.coordinates[c]);
@@ -184,15 +185,64 @@ TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
   for (int point = 0; point < 6; ++point) {
     std::map<std::string, double> values = random_point(recursive, random);
     GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
-    for (unsigned k = 0; k < 4; ++k) full[ddq[k]] = values.at(fmt::format("ddq{}", k));
-    for (unsigned j = 0; j < 4; ++j)
-      for (unsigned c = 0; c < 4; ++c) {
+    for (unsigned k = 0; k < n; ++k) full[ddq[k]] = values.at(fmt::format("ddq{}", k));
+    for (unsigned j = 0; j < n; ++j)
+      for (unsigned c = 0; c < n; ++c) {
         double by_q = value_at(closed_q(j, c), at), by_rate = value_at(closed_rate(j, c), at);
         double want_q = value_at(expected_q(j, c), full), want_rate = value_at(expected_rate(j, c), full);
         EXPECT_NEAR(by_q, want_q, 1e-11 * std::max(1.0, std::abs(want_q))) << "dtau" << j << "/dq" << c << " at " << point;
         EXPECT_NEAR(by_rate, want_rate, 1e-11 * std::max(1.0, std::abs(want_rate))) << "dtau" << j << "/dq'" << c;
       }
   }
+}
+
+TEST(JointTree, RecursionsGiveTheExpandedEquations) {
+  expect_expanded_equations(with("recursive"), with("expanded"), 4);
+}
+
+// the oblique axis, the slide, the fixed frame and the turned inertias included
+TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
+  expect_expanded_derivatives(with("recursive"), with("expanded"), 4);
+}
+
+// The tree with joints that follow another joint's coordinate (URDF's mimic): the arm turned by
+// −0.7 c + 0.2, c the hand's angle in another branch, and a copy of the tree where the hand
+// follows the base's angle a, its ancestor, by 2 a − 0.1 and the slide follows it too. The
+// recursions add each joint's share to the rows and columns of the coordinate it follows.
+std::string with_followers(const std::string& kinematics, bool ancestor) {
+  std::string text = with(kinematics);
+  auto replace = [&](const std::string& from, const std::string& to) {
+    std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  if (!ancestor) {
+    replace("coordinate = \"b\"", "coordinate = \"c\", multiplier = \"-0.7\", offset = 0.2");
+    replace("b = -0.4\n", "");
+  } else {
+    replace("coordinate = \"c\"", "coordinate = \"a\", multiplier = 2, offset = \"-l/4\"");
+    replace("c = 0.7\n", "");
+    replace("coordinate = \"s\"", "coordinate = \"a\", multiplier = \"0.05\"");
+    replace("s = 0.1\n", "");
+    replace("potential = \"20*s^2\"", "potential = \"20*b^2\"");
+  }
+  return text;
+}
+
+TEST(JointTree, JointsThatFollowACoordinateGiveTheExpandedEquations) {
+  expect_expanded_equations(with_followers("recursive", false), with_followers("expanded", false), 3);
+  expect_expanded_equations(with_followers("recursive", true), with_followers("expanded", true), 2);
+}
+
+TEST(JointTree, JointsThatFollowACoordinateHaveTheExpandedDerivatives) {
+  expect_expanded_derivatives(with_followers("recursive", false), with_followers("expanded", false), 3);
+  expect_expanded_derivatives(with_followers("recursive", true), with_followers("expanded", true), 2);
+}
+
+// their M is not a tree's (the arm's angle couples two branches): the header factors it densely
+TEST(JointTree, JointsThatFollowACoordinateFactorMDensely) {
+  EXPECT_TRUE(derive_text(with_followers("recursive", false)).coordinate_parents.empty());
+  EXPECT_FALSE(derive_text(with("recursive")).coordinate_parents.empty());
 }
 
 TEST(JointTree, FramesWithJointsAreATreeWithoutAnOption) {
@@ -237,12 +287,12 @@ TEST(JointTree, OtherTreesKeepTheFrameRecursionAndSayWhy) {
   auto why = why_not_a_joint_tree(model);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find("frame 'base' is not placed by constants and moved by one joint"), std::string::npos) << *why;
-  std::string twice = with("recursive");
-  twice.replace(twice.find("coordinate = \"b\""), 16, "coordinate = \"a\"");
-  twice.replace(twice.find("b = -0.4\n"), 9, "");
-  why = why_not_a_joint_tree(built(twice));
+  std::string idle = with("recursive");
+  idle.replace(idle.find("c = 0.7\n"), 8, "c = 0.7\nmotor = 0\n");
+  idle.replace(idle.find("potential = "), 12, "kinetic = \"0.01*der(motor)^2\"\npotential = ");
+  why = why_not_a_joint_tree(built(idle));
   ASSERT_TRUE(why);
-  EXPECT_NE(why->find("coordinate 'a' moves 2 joints, not one"), std::string::npos) << *why;
+  EXPECT_NE(why->find("coordinate 'motor' moves no joint"), std::string::npos) << *why;
 }
 
 }  // namespace
