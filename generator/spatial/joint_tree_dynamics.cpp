@@ -173,11 +173,17 @@ class Tree {
         }
     }
     GiNaC::matrix M{unsigned(n), unsigned(n)};
+    // the momenta are named after the velocity, and after the link too where one velocity drives
+    // several links (joints that follow a coordinate), whose momenta are carried up separately
+    std::vector<int> driven(n, 0);
+    for (const Link& l : links_)
+      for (const Dof& d : l.dofs) ++driven[std::size_t(d.velocity)];
     for (std::size_t i = 0; i < links; ++i)
       for (const Dof& d : links_[i].dofs) {
         unsigned k = unsigned(d.velocity);
-        Vector3 p = named(out_, i, fmt::format("tp{}", k), scaled(mass[i], d.u) + cross(d.e, first[i]));
-        Vector3 L = named(out_, i, fmt::format("tL{}", k), times(inertia[i], d.e) + cross(first[i], d.u));
+        std::string tag = driven[k] > 1 ? fmt::format("{}_{}", k, name(i)) : std::to_string(k);
+        Vector3 p = named(out_, i, "tp" + tag, scaled(mass[i], d.u) + cross(d.e, first[i]));
+        Vector3 L = named(out_, i, "tL" + tag, times(inertia[i], d.e) + cross(first[i], d.u));
         for (const Dof& other : links_[i].dofs)
           if (other.velocity <= d.velocity) {
             unsigned j = unsigned(other.velocity);
@@ -185,8 +191,8 @@ class Tree {
           }
         for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
           const Link& c = links_[std::size_t(at)];
-          p = named(out_, std::size_t(up), fmt::format("tp{}", k), times(c.E, p));
-          L = named(out_, std::size_t(up), fmt::format("tL{}", k), times(c.E, L) + cross(c.r, p));
+          p = named(out_, std::size_t(up), "tp" + tag, times(c.E, p));
+          L = named(out_, std::size_t(up), "tL" + tag, times(c.E, L) + cross(c.r, p));
           for (const Dof& a : links_[std::size_t(up)].dofs)
             add_symmetric(M, unsigned(a.velocity), k, (dot(a.e, L) + dot(a.u, p)).expand(), true);
         }

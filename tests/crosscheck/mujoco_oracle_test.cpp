@@ -22,6 +22,7 @@
 #include "mujoco_model.hpp"
 
 #include "branched_tree.hpp"
+#include "geared_gripper.hpp"
 #include "measured_arm.hpp"
 #include "oblique_tree.hpp"
 #include "quadruped.hpp"
@@ -177,6 +178,64 @@ TEST(MujocoOracle, MeasuredArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(measured_ar
 TEST(MujocoOracle, QuadrupedOnAFloatingBaseMatchesMujoco) { EXPECT_MATCHES_MUJOCO(quadruped); }
 
 TEST(MujocoOracle, FreeTumblingBodyMatchesMujoco) { EXPECT_MATCHES_MUJOCO(tumbling_body); }
+
+// joints that follow another joint's coordinate (models/geared_gripper.toml: the right finger turns
+// by −1.2 grip + 0.05, the counterweight slides by −0.04 shoulder) against MuJoCo's robot with the two
+// as joints of their own: at its state with the followers placed so (qpos = m q + c, qvel = m q'),
+// M = Jᵀ M_free J and f = Jᵀ (qfrc_passive + qfrc_actuator − qfrc_bias), J the constant gear ratios
+TEST(MujocoOracle, JointsThatFollowACoordinateAreMujocosRobotGeared) {
+  namespace robot = eomgen::models::geared_gripper;
+  MujocoModel mj(mjcf("geared_gripper_free.xml"));
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  const int n = int(robot::num_velocities), nv = mj.model->nv;
+  ASSERT_EQ(n, 3);
+  ASSERT_EQ(nv, 5);
+  // MuJoCo's dofs (rack, shoulder, elbow, grip, right_grip) by ours (shoulder, elbow, grip): ratio, offset
+  struct Follows {
+    int coordinate;
+    double ratio, offset;
+  };
+  const Follows dof[5] = {{0, -0.04, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {2, -1.2, 0.05}};
+  auto p = robot::Parameters<double>().values();
+  std::mt19937 random(2027);
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-4.0, 4.0), control(-2.0, 2.0);
+  std::vector<double> M(static_cast<std::size_t>(n * n)), f(static_cast<std::size_t>(n)), free_M(static_cast<std::size_t>(nv * nv));
+  double worst = 0;
+  for (int k = 0; k < 100; ++k) {
+    double x[6], u[1] = {control(random)};
+    for (int i = 0; i < 6; ++i) x[i] = i < n ? angle(random) : rate(random);
+    for (int i = 0; i < nv; ++i) {
+      mj.data->qpos[i] = dof[i].ratio * x[dof[i].coordinate] + dof[i].offset;
+      mj.data->qvel[i] = dof[i].ratio * x[3 + dof[i].coordinate];
+    }
+    mj.data->ctrl[0] = u[0];
+    mj_forward(mj.model, mj.data);
+    mj_fullM(mj.model, free_M.data(), mj.data->qM);
+    robot::mass_matrix(0.0, x, p.data(), M.data());
+    robot::forcing(0.0, x, u, p.data(), f.data());
+    double M_size = 0, f_size = 0, M_difference = 0, f_difference = 0;
+    for (int a = 0; a < n; ++a) {
+      double reduced_f = 0;
+      for (int i = 0; i < nv; ++i)
+        if (dof[i].coordinate == a)
+          reduced_f += dof[i].ratio * (mj.data->qfrc_passive[i] + mj.data->qfrc_actuator[i] - mj.data->qfrc_bias[i]);
+      f_size = std::max(f_size, std::abs(reduced_f));
+      f_difference = std::max(f_difference, std::abs(f[std::size_t(a)] - reduced_f));
+      for (int b = 0; b < n; ++b) {
+        double reduced_M = 0;
+        for (int i = 0; i < nv; ++i)
+          for (int j = 0; j < nv; ++j)
+            if (dof[i].coordinate == a && dof[j].coordinate == b) reduced_M += dof[i].ratio * free_M[std::size_t(i * nv + j)] * dof[j].ratio;
+        M_size = std::max(M_size, std::abs(reduced_M));
+        M_difference = std::max(M_difference, std::abs(M[std::size_t(a * n + b)] - reduced_M));
+      }
+    }
+    worst = std::max({worst, M_difference / M_size, f_difference / f_size});
+  }
+  std::printf("geared_gripper: largest difference from MuJoCo's reduced M and f: %.2g of their size\n", worst);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(worst, 0.0) << "two independent computations agree to the last bit at every state: suspicious";
+}
 
 // a floating base's horizontal momenta, which the header forms from the row of M (their chain rule
 // through the tree is long: derive/equations.hpp, FirstIntegral), are the robot's linear momentum as
