@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
+#include <stdexcept>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -96,6 +98,11 @@ std::shared_ptr<const BodyWriter::IntermediateGraph> BodyWriter::intermediate_gr
   for (const std::vector<Intermediate>* part : parts) all.insert(all.end(), part->begin(), part->end());
   auto graph = std::make_shared<IntermediateGraph>();
   graph->all = std::move(all);
+  // two quantities of one C++ name would be a header that does not compile: said here instead
+  std::set<std::string> cpp_names;
+  for (const Intermediate& i : graph->all)
+    if (!cpp_names.insert(i.cpp_name).second)
+      throw std::logic_error("two intermediate quantities are both named '" + i.cpp_name + "' in C++");
   for (std::size_t i = 0; i < graph->all.size(); ++i) graph->index[graph->all[i].symbol] = i;
   for (const Intermediate& i : graph->all) {
     GiNaC::exset used;
