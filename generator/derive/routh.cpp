@@ -6,6 +6,8 @@
 /// − ∂D/∂q̇_r turns a steady motion (q_r constant, q̇_c constant) into an equilibrium.
 #include "derive/routh.hpp"
 
+#include "derive/constraints.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -64,15 +66,6 @@ Symbols reduced_symbols(const Symbols& s, const std::vector<std::size_t>& elimin
   return r;
 }
 
-// the value of e at the model's initial state and default parameters
-double initial_value_of(const ex& e, const Symbols& s) {
-  GiNaC::exmap at = s.default_parameter_values();
-  for (std::size_t j = 0; j < s.coordinates.size(); ++j)
-    at[s.coordinates[j]] = s.initial_coordinates[j], at[s.velocities[j]] = s.initial_velocities[j];
-  at[s.time] = 0;
-  for (std::size_t j = 0; j < s.inputs.size(); ++j) at[s.inputs[j]] = s.input_defaults[j];
-  return GiNaC::ex_to<GiNaC::numeric>(e.subs(at).evalf()).to_double();
-}
 
 }  // namespace
 
@@ -101,7 +94,7 @@ Equations derive_routh(const Model& model, const Mechanics& mech, const std::vec
   std::vector<double> momentum_values;
   for (unsigned i = 0; i < c; ++i) {
     ex p = T.diff(s.velocities[eliminated[i]]);
-    momentum_values.push_back(initial_value_of(p, s));
+    momentum_values.push_back(initial_value(p, s));
     for (unsigned j = 0; j < c; ++j) A(i, j) = p.diff(s.velocities[eliminated[j]]);
     rhs(i, 0) = momenta[i] - p.subs(cyclic_at_rest);
   }
