@@ -1,6 +1,7 @@
 #include "import/mjcf_reader.hpp"
 
 #include "import/joint_followers.hpp"
+#include "import/missing_meshes.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -257,8 +258,9 @@ std::string urdf_text_of(const std::string& path) { return is_urdf_path(path) ? 
 
 // the texts read by MuJoCo from memory, the first under the file's own path: it finds the files it
 // names beside it on disk, and those it includes among the texts (by their names without a path)
+// (texts end in a 0 for the XML parser; `files`, such as meshes, are their bytes alone)
 mjModel* loaded_texts(const std::string& path, const std::vector<std::pair<std::string, std::string>>& texts, char* error,
-                      int size) {
+                      int size, const std::vector<std::pair<std::string, std::string>>& files_too = {}) {
   auto files = std::make_unique<mjVFS>();
   mj_defaultVFS(files.get());
   for (const auto& [name, text] : texts) {
@@ -267,6 +269,14 @@ mjModel* loaded_texts(const std::string& path, const std::vector<std::pair<std::
       return mj_loadXML(path.c_str(), nullptr, error, size);
     }
     std::memcpy(files->filedata[files->nfile - 1], text.c_str(), text.size() + 1);
+  }
+  for (const auto& [name, bytes] : files_too) {
+    if (mj_makeEmptyFileVFS(files.get(), name.c_str(), int(bytes.size())) != 0) {
+      mj_deleteVFS(files.get());
+      std::snprintf(error, std::size_t(size), "MuJoCo's virtual file system has no room for '%s'", name.c_str());
+      return nullptr;
+    }
+    std::memcpy(files->filedata[files->nfile - 1], bytes.data(), bytes.size());
   }
   mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
   mj_deleteVFS(files.get());
@@ -300,15 +310,33 @@ bool about_a_mesh(const std::string& message) {
 struct LeftOut {
   int meshes = 0;
   std::string mesh_error;                // why: MuJoCo's message about the first mesh
+  int unread_mesh_files = 0;             // MJCF: mesh files read as placeholders (missing_meshes.hpp)
+  std::string unread_mesh_names;         // the first of them
+  std::vector<int> mesh_sized_geoms;     // geoms that a placeholder sized: not drawn
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
 };
 
 // an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses,
-// in the file and in those it includes
-mjModel* loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
+// in the file and in those it includes, and with a placeholder for each mesh file it cannot read,
+// kept only when no body takes its inertia from a mesh (missing_meshes.hpp)
+std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
   mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
   std::vector<std::pair<std::string, std::string>> sources;
-  for (int round = 0; !model && round < 20; ++round) {
+  std::vector<UnreadableMesh> meshes;
+  auto load = [&](double mesh_size) {
+    if (sources.empty()) sources = mjcf_sources(path);
+    std::vector<std::pair<std::string, std::string>> placeholders;
+    for (const UnreadableMesh& mesh : meshes) placeholders.push_back(*placeholder_mesh(mesh, mesh_size));
+    return loaded_texts(path, sources, error, size, placeholders);
+  };
+  for (int round = 0; !model && round < 400; ++round) {
+    if (std::optional<UnreadableMesh> mesh = unreadable_mesh(error); mesh && placeholder_mesh(*mesh, 1)) {
+      auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
+      if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
+      meshes.push_back(*mesh);
+      model = load(0.01);
+      continue;
+    }
     std::optional<NewerAttribute> newer = newer_attribute_refused(error);
     if (!newer) break;
     if (sources.empty()) sources = mjcf_sources(path);
@@ -320,8 +348,34 @@ mjModel* loaded_mjcf(const std::string& path, char* error, int size, LeftOut& le
     }
     if (!edited) break;
     left_out.newer.push_back(*newer);
-    model = loaded_texts(path, sources, error, size);
+    model = load(0.01);
   }
+  if (!model || meshes.empty()) return model;
+  std::unique_ptr<mjModel, void (*)(mjModel*)> larger(load(0.02), mj_deleteModel);
+  if (!larger) {
+    mj_deleteModel(model);
+    return nullptr;
+  }
+  MeshDependence dependence = mesh_dependence(model, larger.get());
+  // named as the file names them, relative to its folder (MuJoCo's message has the folder in front)
+  std::string folder = path.substr(0, path.find_last_of('/') + 1), files;
+  for (std::size_t k = 0; k < meshes.size() && k < 3; ++k) {
+    const std::string& file = meshes[k].file;
+    files += (k ? ", '" : "'") + (file.rfind(folder, 0) == 0 ? file.substr(folder.size()) : file) + "'";
+  }
+  if (meshes.size() > 3) files += fmt::format(" and {} more", meshes.size() - 3);
+  if (!dependence.body.empty()) {
+    mj_deleteModel(model);
+    const std::string& text = sources[0].second;
+    std::size_t at = text.find("name=\"" + dependence.body + "\"");
+    return UnreadableRobot{at == std::string::npos ? 0 : int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1,
+                           fmt::format("body '{}' takes its mass and inertia from its geoms, a mesh among them, and MuJoCo "
+                                       "cannot read the mesh file(s) {}", dependence.body, files),
+                           "put the mesh files where the file names them, or give the body an <inertial>"};
+  }
+  left_out.unread_mesh_files = int(meshes.size());
+  left_out.unread_mesh_names = files;
+  left_out.mesh_sized_geoms = dependence.geoms;
   return model;
 }
 
@@ -331,7 +385,7 @@ mjModel* loaded_mjcf(const std::string& path, char* error, int size, LeftOut& le
 std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size,
                                                      LeftOut& left_out) {
   if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
-  if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message};
+  if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message, ""};
   std::string kept = with_static_links_kept(urdf);
   mjModel* model = loaded_text(path, kept, error, size);
   if (model || !about_a_mesh(error)) return model;
@@ -437,6 +491,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   for (int g = 0; g < m->ngeom; ++g) {
     int b = m->geom_bodyid[g];
     if (b == 0 || m->geom_group[g] > 2 || m->geom_type[g] < 0 || m->geom_type[g] > 7) continue;
+    if (std::find(left_out.mesh_sized_geoms.begin(), left_out.mesh_sized_geoms.end(), g) != left_out.mesh_sized_geoms.end()) continue;
     r.bodies[std::size_t(b - 1)].geoms.push_back(
         {geom_types[m->geom_type[g]], triple(m->geom_size + 3 * g), triple(m->geom_pos + 3 * g), quaternion(m->geom_quat + 4 * g)});
   }
@@ -464,6 +519,11 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     r.warnings.push_back({fmt::format("{} <visual> or <collision> mesh(es) not read ({}): the dynamics come from each "
                                       "link's <inertial>; the animation draws no shape for them",
                                       left_out.meshes, unreadable_robot(left_out.mesh_error).message),
+                          "", "", 0});
+  if (left_out.unread_mesh_files > 0)
+    r.warnings.push_back({fmt::format("{} mesh file(s) MuJoCo cannot read ({}): every body's mass and inertia come from its "
+                                      "<inertial> (checked), and the animation draws no shape for them",
+                                      left_out.unread_mesh_files, left_out.unread_mesh_names),
                           "", "", 0});
   for (const NewerAttribute& a : left_out.newer)
     r.warnings.push_back({fmt::format("'{}' is MuJoCo 2.3's or 3's, which MuJoCo {} does not read: left out; {}{}", a.name,

@@ -13,6 +13,7 @@ namespace eomgen {
 struct UnreadableRobot {
   int line = 0;
   std::string message;
+  std::string hint;  // what to do; empty: that the file must be one MuJoCo's compiler accepts
 };
 
 /// The robot of an MJCF file, or why MuJoCo cannot read it.

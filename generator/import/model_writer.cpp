@@ -75,7 +75,8 @@ struct JointSymbols {
     return fmt::format("({} {} {})", scaled, offset < 0 ? "-" : "+", format_number(std::abs(offset)));
   }
   std::string rate() const {
-    return follows() ? fmt::format("({}*der({}))", format_number(multiplier), leader) : "der(" + coordinates[0] + ")";
+    if (!follows() || multiplier == 1) return "der(" + (follows() ? leader : coordinates[0]) + ")";
+    return fmt::format("({}*der({}))", format_number(multiplier), leader);
   }
 };
 
@@ -101,7 +102,8 @@ std::string names_list(const std::vector<std::string>& names, std::size_t from, 
 std::string joint_text(const RobotJoint& j, const JointSymbols& s) {
   if (j.type == "hinge" || j.type == "slide") {
     bool anchored = j.type == "hinge" && (j.anchor[0] != 0 || j.anchor[1] != 0 || j.anchor[2] != 0);
-    std::string follows = s.follows() ? fmt::format(", multiplier = {}, offset = {}", format_number(s.multiplier), format_number(s.offset)) : "";
+    std::string follows = s.follows() && s.multiplier != 1 ? ", multiplier = " + format_number(s.multiplier) : "";
+    if (s.follows() && s.offset != 0) follows += ", offset = " + format_number(s.offset);
     return fmt::format("{{ type = \"{}\", axis = {}{}, coordinate = \"{}\"{} }}", j.type == "hinge" ? "revolute" : "prismatic",
                        vector_text(j.axis), anchored ? ", anchor = " + vector_text(j.anchor) : "",
                        s.follows() ? s.leader : s.coordinates[0], follows);
@@ -361,8 +363,9 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
   auto read = read_with_mujoco(path);
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
     diagnostics.error({path, std::max(failure->line, 1), 1}, "", failure->message,
-                      "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be " +
-                          (is_urdf_path(path) ? "URDF" : "MJCF") + " that it accepts");
+                      !failure->hint.empty() ? failure->hint
+                                             : "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be " +
+                                                   (is_urdf_path(path) ? "URDF" : "MJCF") + " that it accepts");
     return std::nullopt;
   }
   const Robot& robot = std::get<Robot>(read);
