@@ -7,8 +7,7 @@ namespace eomgen {
 
 std::vector<JointFollower> joint_followers(const Robot& robot) {
   using Joint = std::pair<int, int>;
-  std::set<Joint> actuated, following, leading;
-  for (const RobotActuator& a : robot.actuators) actuated.insert({a.body, a.joint});
+  std::set<Joint> following, leading;
   auto type = [&](int body, int joint) {
     return robot.bodies[std::size_t(body)].joints[std::size_t(joint)].type;
   };
@@ -20,7 +19,7 @@ std::vector<JointFollower> joint_followers(const Robot& robot) {
     Joint follower{c.body1, c.joint1}, leader{c.body2, c.joint2};
     auto moves_by_one = [&](const Joint& j) { return type(j.first, j.second) == "hinge" || type(j.first, j.second) == "slide"; };
     if (follower == leader || !moves_by_one(follower) || !moves_by_one(leader)) continue;
-    if (actuated.count(follower) || following.count(follower) || leading.count(follower) || following.count(leader)) continue;
+    if (following.count(follower) || leading.count(follower) || following.count(leader)) continue;
     following.insert(follower);
     leading.insert(leader);
     double m = c.coefficients[1];

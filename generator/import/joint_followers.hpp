@@ -23,8 +23,8 @@ struct JointFollower {
 };
 
 /// The couplings that become followers: linear (c2 = c3 = c4 = 0, c1 ≠ 0) between hinges or slides
-/// (a rack and pinion too), the follower driven by no actuator (its force would act along the leader scaled), and
-/// no chains: a joint follows at most one, and a leader follows none. The others stay constraints.
+/// (a rack and pinion too), and no chains: a joint follows at most one, and a leader follows none.
+/// The others stay constraints. (An actuator on a follower acts on the leader, m times its force.)
 std::vector<JointFollower> joint_followers(const Robot& robot);
 
 }  // namespace eomgen

@@ -1,6 +1,7 @@
 #include "import/mjcf_reader.hpp"
 
 #include "import/joint_followers.hpp"
+#include "import/massless_bodies.hpp"
 #include "import/missing_meshes.hpp"
 
 #include <algorithm>
@@ -185,8 +186,24 @@ void keep_followers(Robot& r) {
 
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
-  if (m->ntendon)
-    r.warnings.push_back({fmt::format("{} tendon(s): not carried (a tendon's length is no joint)", m->ntendon), "tendon", "", 0});
+  // a fixed tendon that only transmits a carried actuator's force is carried; its own spring,
+  // damping, friction and limits are not, nor is any other tendon
+  int lost = 0;
+  for (int t = 0; t < m->ntendon; ++t) {
+    bool transmits = false;
+    for (int a = 0; a < m->nu; ++a) {
+      std::string name = name_of(m, m->name_actuatoradr, a);
+      if (name.empty()) name = fmt::format("actuator{}", a);
+      transmits = transmits || (m->actuator_trntype[a] == mjTRN_TENDON && m->actuator_trnid[2 * a] == t &&
+                                std::any_of(r.actuators.begin(), r.actuators.end(), [&](const RobotActuator& c) { return c.name == name; }));
+    }
+    bool passive = m->tendon_stiffness[t] != 0 || m->tendon_damping[t] != 0 || m->tendon_frictionloss[t] != 0 || m->tendon_limited[t];
+    lost += !transmits || passive;
+  }
+  if (lost)
+    r.warnings.push_back({fmt::format("{} tendon(s): not carried (only a fixed tendon that transmits an actuator's force is "
+                                      "carried, without a spring, damping, friction or limits of its own)", lost),
+                          "tendon", "", 0});
   static const char* const kinds[] = {"connect", "weld", "joint", "tendon", "distance"};
   bool loops = !has_spherical_joints(m);
   for (int e = 0; e < m->neq; ++e) {
@@ -213,6 +230,21 @@ void note_losses(const mjModel* m, Robot& r) {
       r.warnings.push_back({fmt::format("dof {} has friction loss {}: not carried (dry friction)", v, m->dof_frictionloss[v]), "", "", 0});
 }
 
+// a fixed tendon's joints and coefficients (MJCF's <fixed>: every wrap a hinge or slide), or nothing
+std::optional<std::vector<TendonJoint>> fixed_tendon(const mjModel* m, int t) {
+  std::vector<TendonJoint> joints;
+  for (int w = m->tendon_adr[t]; w < m->tendon_adr[t] + m->tendon_num[t]; ++w) {
+    if (m->wrap_type[w] != mjWRAP_JOINT || !one_dof_joint(m, m->wrap_objid[w])) return std::nullopt;
+    TendonJoint joint;
+    double reference = 0;
+    place_joint(m, m->wrap_objid[w], joint.body, joint.joint, reference);
+    joint.coefficient = m->wrap_prm[w];
+    joints.push_back(joint);
+  }
+  if (joints.empty()) return std::nullopt;
+  return joints;
+}
+
 void read_actuators(const mjModel* m, Robot& r) {
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
@@ -222,18 +254,21 @@ void read_actuators(const mjModel* m, Robot& r) {
          plain = m->actuator_dyntype[a] == mjDYN_NONE && m->actuator_gaintype[a] == mjGAIN_FIXED &&
                  (m->actuator_biastype[a] == mjBIAS_NONE || m->actuator_biastype[a] == mjBIAS_AFFINE);
     int j = m->actuator_trnid[2 * a];
-    int type = on_joint ? m->jnt_type[j] : -1;
-    if (!on_joint || !plain || type == mjJNT_BALL || type == mjJNT_FREE) {
-      r.warnings.push_back({fmt::format("actuator '{}': only motors and servos on a hinge or slide (a force affine in the "
-                                        "control, the joint's position and its rate; no dynamics) are carried; it is left out",
+    std::optional<std::vector<TendonJoint>> tendon;
+    if (m->actuator_trntype[a] == mjTRN_TENDON) tendon = fixed_tendon(m, j);
+    if (!plain || (!on_joint && !tendon) || (on_joint && !one_dof_joint(m, j))) {
+      r.warnings.push_back({fmt::format("actuator '{}': only motors and servos on a hinge or slide, or on a fixed tendon of "
+                                        "them (a force affine in the control, the position and its rate; no dynamics) are "
+                                        "carried; it is left out",
                                         name),
                             "actuator", name_of(m, m->name_actuatoradr, a), a + 1});
       continue;
     }
     RobotActuator act;
     act.name = name;
-    act.body = m->jnt_bodyid[j] - 1;
-    act.joint = j - m->body_jntadr[m->jnt_bodyid[j]];
+    double reference = 0;
+    if (tendon) act.tendon = *tendon;
+    else place_joint(m, j, act.body, act.joint, reference);
     act.gain = m->actuator_gainprm[mjNGAIN * a] * m->actuator_gear[6 * a];
     act.limited = m->actuator_ctrllimited[a];
     act.range = {m->actuator_ctrlrange[2 * a], m->actuator_ctrlrange[2 * a + 1]};
@@ -313,8 +348,20 @@ struct LeftOut {
   int unread_mesh_files = 0;             // MJCF: mesh files read as placeholders (missing_meshes.hpp)
   std::string unread_mesh_names;         // the first of them
   std::vector<int> mesh_sized_geoms;     // geoms that a placeholder sized: not drawn
+  bool mass_bounds = false;              // read with massless_bodies.hpp's bounds
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
 };
+
+// the model read with the mass bounds, or why not when a joint moves no mass (its M would be singular)
+std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, const LeftOut& left_out, const std::string& text) {
+  if (!left_out.mass_bounds) return model;
+  std::string joint = joint_moving_no_mass(model);
+  if (joint.empty()) return model;
+  mj_deleteModel(model);
+  return UnreadableRobot{line_naming(text, joint), fmt::format("joint '{}' moves no body with mass or inertia, so that the robot's mass matrix is singular "
+                                        "(MuJoCo refuses such moving bodies)", joint),
+                         "give the bodies it moves an <inertial> with a mass and inertia"};
+}
 
 // an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses,
 // in the file and in those it includes, and with a placeholder for each mesh file it cannot read,
@@ -330,6 +377,15 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     return loaded_texts(path, sources, error, size, placeholders);
   };
   for (int round = 0; !model && round < 400; ++round) {
+    if (!left_out.mass_bounds && refuses_massless_bodies(error, sources.empty() ? text_of_file(path) : sources[0].second)) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      std::string bounded = with_mass_bounds(sources[0].second);
+      if (bounded == sources[0].second) break;
+      sources[0].second = bounded;
+      left_out.mass_bounds = true;
+      model = load(0.01);
+      continue;
+    }
     if (std::optional<UnreadableMesh> mesh = unreadable_mesh(error); mesh && placeholder_mesh(*mesh, 1)) {
       auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
       if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
@@ -350,7 +406,8 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     left_out.newer.push_back(*newer);
     model = load(0.01);
   }
-  if (!model || meshes.empty()) return model;
+  if (!model) return model;
+  if (meshes.empty()) return without_massless_joints(model, left_out, text_of_file(path));
   std::unique_ptr<mjModel, void (*)(mjModel*)> larger(load(0.02), mj_deleteModel);
   if (!larger) {
     mj_deleteModel(model);
@@ -376,7 +433,7 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
   left_out.unread_mesh_files = int(meshes.size());
   left_out.unread_mesh_names = files;
   left_out.mesh_sized_geoms = dependence.geoms;
-  return model;
+  return without_massless_joints(model, left_out, text_of_file(path));
 }
 
 // a URDF is read with its fixed links kept (urdf_text.hpp); what its reader would crash on is
@@ -387,13 +444,21 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
   if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message, ""};
   std::string kept = with_static_links_kept(urdf);
-  mjModel* model = loaded_text(path, kept, error, size);
-  if (model || !about_a_mesh(error)) return model;
+  // the text, or when MuJoCo refuses its massless moving bodies, the text with the mass bounds
+  auto load = [&](const std::string& text) {
+    mjModel* loaded = loaded_text(path, text, error, size);
+    if (loaded || !refuses_massless_bodies(error, text) || with_mass_bounds(text) == text) return loaded;
+    left_out.mass_bounds = true;
+    return loaded_text(path, with_mass_bounds(text), error, size);
+  };
+  mjModel* model = load(kept);
+  if (model) return without_massless_joints(model, left_out, urdf);
+  if (!about_a_mesh(error)) return model;
   int left_out_meshes = 0;
   std::string first_error = error;
   std::string without = without_mesh_geometry(kept, left_out_meshes);
   if (left_out_meshes == 0) return nullptr;
-  model = loaded_text(path, without, error, size);
+  model = load(without);
   if (!model) {
     // what stops it now, said to be of the file without its meshes
     std::string second = error;
@@ -405,7 +470,7 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   }
   left_out.meshes = left_out_meshes;
   left_out.mesh_error = first_error;
-  return model;
+  return without_massless_joints(model, left_out, urdf);
 }
 
 // a URDF joint's <mimic>, which MuJoCo's reader ignores, as the coupling q = m q_K + o (a joint that
@@ -485,6 +550,15 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
     body.inertia_axes = quaternion(m->body_iquat + 4 * b);
     body.principal_inertia = triple(m->body_inertia + 3 * b);
     r.bodies.push_back(body);
+  }
+  if (left_out.mass_bounds) {
+    std::vector<std::string> massless = without_mass_bounds(r.bodies);
+    std::string names;
+    for (std::size_t k = 0; k < massless.size() && k < 4; ++k) names += (k ? ", '" : "'") + massless[k] + "'";
+    if (massless.size() > 4) names += fmt::format(" and {} more", massless.size() - 4);
+    r.notes.push_back(fmt::format("{} moving body(ies) without mass or inertia ({}), which MuJoCo {} refuses: read with its "
+                                  "compiler's mass bounds, then taken back to zero",
+                                  massless.size(), names, mj_version_text()));
   }
   // the geoms MuJoCo's viewer shows by default (groups 0 to 2), for the animation
   static const char* const geom_types[] = {"plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh"};

@@ -313,15 +313,15 @@ std::string sum_text(const std::vector<std::string>& terms) {
 }
 
 // gear × (gainprm·u + bias0 + bias1·gear·q + bias2·gear·q'), MuJoCo's actuator force along its
-// joint times the gear, with u clamped to the control range and the force to the force range
-// where MuJoCo clamps them (ctrllimited, forcelimited)
-std::string actuator_force(const RobotActuator& a, const std::string& u, const std::string& q) {
+// joint (q its angle, or a fixed tendon's length) times the gear, with u clamped to the control range
+// and the force to the force range where MuJoCo clamps them (ctrllimited, forcelimited)
+std::string actuator_force(const RobotActuator& a, const std::string& u, const std::string& q, const std::string& rate) {
   std::string control = a.limited ? fmt::format("clamp({}, {}, {})", u, format_number(a.range[0]), format_number(a.range[1])) : u;
   auto with_sign = [](double coefficient, const std::string& factor) {
     return fmt::format(" {} {}{}", coefficient < 0 ? "-" : "+", format_number(std::abs(coefficient)), factor.empty() ? "" : "*" + factor);
   };
   std::array<std::pair<double, std::string>, 3> bias{
-      {{a.bias[0], std::string()}, {a.gear * a.bias[1], q}, {a.gear * a.bias[2], "der(" + q + ")"}}};
+      {{a.bias[0], std::string()}, {a.gear * a.bias[1], q}, {a.gear * a.bias[2], rate}}};
   if (!a.force_limited) {
     std::string term = a.gain == 1 ? control : fmt::format("{}*{}", format_number(a.gain), control);
     for (const auto& [coefficient, factor] : bias)
@@ -347,9 +347,29 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
                                            format_number(a.range[1]))
                              : "") +
                   "\n";
-    const std::string& q = joint_symbols[std::size_t(a.body)][std::size_t(a.joint)].coordinates[0];
-    if (!forces.count(q)) order.push_back(q);
-    forces[q] += (forces[q].empty() ? "" : " + ") + actuator_force(a, u, q);
+    // the joints it moves: its own, or its fixed tendon's, each with its coefficient
+    std::vector<TendonJoint> moved = a.tendon.empty() ? std::vector<TendonJoint>{{a.body, a.joint, 1}} : a.tendon;
+    std::string length, rate;
+    std::vector<std::pair<std::string, double>> weights;  // generalized force per coordinate: weight × F
+    for (const TendonJoint& j : moved) {
+      const JointSymbols& s = joint_symbols[std::size_t(j.body)][std::size_t(j.joint)];
+      std::string c = j.coefficient == 1 ? "" : format_number(j.coefficient) + "*";
+      length += (length.empty() ? "" : " + ") + c + s.angle();
+      rate += (rate.empty() ? "" : " + ") + c + s.rate();
+      // a joint that follows a coordinate passes m times its force on to it
+      std::string coordinate = s.follows() ? s.leader : s.coordinates[0];
+      double weight = j.coefficient * (s.follows() ? s.multiplier : 1);
+      auto same = [&](const auto& w) { return w.first == coordinate; };
+      if (auto found = std::find_if(weights.begin(), weights.end(), same); found != weights.end()) found->second += weight;
+      else weights.emplace_back(coordinate, weight);
+    }
+    if (moved.size() > 1) length = "(" + length + ")", rate = "(" + rate + ")";
+    std::string force = actuator_force(a, u, length, rate);
+    for (const auto& [q, weight] : weights) {
+      if (weight == 0) continue;
+      if (!forces.count(q)) order.push_back(q);
+      forces[q] += (forces[q].empty() ? "" : " + ") + (weight == 1 ? force : fmt::format("{}*({})", format_number(weight), force));
+    }
   }
   std::string generalized;
   for (const std::string& q : order) generalized += (generalized.empty() ? "" : ", ") + fmt::format("{} = \"{}\"", q, forces[q]);
@@ -374,6 +394,7 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
     std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);
   std::ifstream in(path);
   std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string& note : robot.notes) std::cerr << fmt::format("eomgen: note: {}: {}\n", file, note);
   for (const RobotWarning& w : robot.warnings) {
     int line = warning_line(xml, w);
     std::cerr << (line > 0 ? fmt::format("{}:{}:1: warning: {}\n", path, line, w.text)
@@ -485,6 +506,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   std::string constraints = loop_constraints(robot, frame_of, names, out) + coupling_constraints(robot, joint_symbols, followers, names);
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);
+  for (const std::string& note : robot.notes) text += "# note: " + note + "\n";
   for (const RobotWarning& w : robot.warnings) text += "# not carried: " + w.text + "\n";
   for (const std::string& w : out.warnings) text += "# not carried: " + w + "\n";
   text += fmt::format("\n[model]\nname = \"{}\"\ntitle = \"{} (imported)\"\n", name, robot.name.empty() ? name : robot.name);

@@ -47,9 +47,15 @@ struct RobotBody {
   std::vector<RobotGeom> geoms;  // what `eomgen animate` draws of it
 };
 
+/// One joint of a fixed tendon (MJCF's <fixed>): its length is Σ coefficient × the joint's qpos.
+struct TendonJoint {
+  int body = -1, joint = -1;
+  double coefficient = 1;
+};
+
 struct RobotActuator {
   std::string name;
-  int body = -1, joint = -1;  // the joint it drives: index into that body's joints
+  int body = -1, joint = -1;  // the joint it drives: index into that body's joints (or `tendon`)
   double gain = 1;            // generalized force = gain × control + ... (MJCF: gear × gainprm[0])
   bool limited = false;       // the control is clamped to `range` (MJCF ctrllimited)
   std::array<double, 2> range{0, 0};
@@ -60,6 +66,10 @@ struct RobotActuator {
   double gear = 1;
   bool force_limited = false;  // the force along the transmission is clamped to `force_range`
   std::array<double, 2> force_range{0, 0};
+  /// or the fixed tendon it pulls (then body and joint are −1): its force F along the tendon is
+  /// the generalized force coefficient × F on each of the tendon's joints, and its position above
+  /// is the tendon's length
+  std::vector<TendonJoint> tendon{};
 };
 
 struct RobotSite {
@@ -117,6 +127,7 @@ struct Robot {
   std::vector<RobotLoop> loops;        // Lagrange I constraints of the model
   std::vector<RobotCoupling> couplings;  // the same
   std::vector<RobotWarning> warnings;  // what the model cannot carry, each naming it
+  std::vector<std::string> notes;      // how the file was read where that is not plain (carried nonetheless)
 };
 
 }  // namespace eomgen

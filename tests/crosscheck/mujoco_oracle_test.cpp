@@ -35,10 +35,12 @@
 #include "oblique_tree_imported.hpp"
 #include "quadruped_imported.hpp"
 #include "servo_arm_imported.hpp"
+#include "tendon_gripper_imported.hpp"
 #include "seven_joint_arm_imported.hpp"
 #include "tumbling_body_imported.hpp"
 #include "seven_joint_arm_from_urdf.hpp"
 #include "two_link_arm_from_urdf.hpp"
+#include "two_axis_shoulder_from_urdf.hpp"
 
 namespace {
 
@@ -292,6 +294,10 @@ TEST(MujocoImport, BallBelowABallImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHE
 // position, velocity and affine servos beside a motor: each a generalized force affine in u, q and q'
 TEST(MujocoImport, ServosImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(servo_arm); }
 
+// actuators on fixed tendons: a servo on the two fingers' ½ q1 + ½ q2 (as mujoco_menagerie's Panda
+// hand), a force-limited motor on 2 q1 − 0.3 q3, and a motor on a joint
+TEST(MujocoImport, ActuatorsOnFixedTendonsImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(tendon_gripper); }
+
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,
 // an oblique axis; and the seven-joint arm as URDF (without armature and motors, which URDF lacks)
 #define EXPECT_URDF_IMPORT_MATCHES_MUJOCO(M)                                                                  \
@@ -302,5 +308,14 @@ TEST(MujocoImport, ServosImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(se
 
 TEST(MujocoImport, UrdfArmImportsAndMatchesMujoco) { EXPECT_URDF_IMPORT_MATCHES_MUJOCO(two_link_arm); }
 TEST(MujocoImport, SevenJointArmAsUrdfImportsAndMatchesMujoco) { EXPECT_URDF_IMPORT_MATCHES_MUJOCO(seven_joint_arm); }
+
+// a URDF's two-axis shoulder, two joints with a massless link between them, which MuJoCo refuses
+// (eomgen reads it with the compiler's mass bounds, import/massless_bodies.hpp): against the MJCF
+// arm with both joints in one body
+TEST(MujocoImport, AMasslessLinkBetweenTwoJointsImportsAndMatchesMujoco) {
+  namespace robot = eomgen::models::two_axis_shoulder_from_urdf;
+  expect_matches_mujoco<robot::Parameters<double>>("two_axis_shoulder.xml", int(robot::num_coordinates), int(robot::num_velocities),
+                                                   int(robot::num_inputs), robot::rhs<double>);
+}
 
 }  // namespace

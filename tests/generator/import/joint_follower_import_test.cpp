@@ -114,6 +114,12 @@ void expect_reduction(const std::string& follower_text, const std::string& free_
     free_values[follower] = m * values.at(leader) + c;
     free_values["der(" + follower + ")"] = m * values.at("der(" + leader + ")");
     GiNaC::exmap at = point_by_name(reduced, values), at_full = point_by_name(full, free_values);
+    // the controls, the same by name in both
+    for (std::size_t i = 0; i < reduced.symbols.inputs.size(); ++i) {
+      double u = rate(random);
+      at[reduced.symbols.inputs[i]] = u;
+      at_full[full.symbols.inputs[index_of(full.symbols.input_names, reduced.symbols.input_names[i])]] = u;
+    }
     std::vector<std::vector<double>> M_full(n_full, std::vector<double>(n_full));
     std::vector<double> f_full(n_full);
     double M_scale = 0, f_scale = 0;
@@ -161,7 +167,8 @@ TEST(JointFollowerImport, AMimicJointOnAFloatingBaseFollowsToo) {
 }
 
 // MuJoCo's q1 − q1₀ = c0 + c1 (q2 − q2₀), linear: the follower turns by c1 q2 + q1₀ + c0 − c1 q2₀ in
-// the model's angles, which are MuJoCo's qpos (a reference of 0.2 on the follower, 0.1 on the leader)
+// the model's angles, which are MuJoCo's qpos (a reference of 0.2 on the follower, 0.1 on the leader);
+// a servo on the follower pulls on the leader with c1 times its force
 TEST(JointFollowerImport, ALinearJointCouplingIsAFollowerAndAQuadraticOneAConstraint) {
   std::string robot = R"xml(<mujoco model="geared">
   <compiler angle="radian"/>
@@ -181,6 +188,7 @@ TEST(JointFollowerImport, ALinearJointCouplingIsAFollowerAndAQuadraticOneAConstr
     </body>
   </worldbody>
   <equality>EQUALITY</equality>
+  <actuator><position name="driven_servo" joint="a" kp="3"/></actuator>
 </mujoco>)xml";
   auto with = [&](const std::string& equality) {
     std::string text = robot;

@@ -230,12 +230,10 @@ TEST(UrdfImport, MeshesThatCannotBeReadAreLeftOutAndNamed) {
   rest.erase(at, rest.find('\n', at) + 1 - at);
   rest.replace(rest.find("meshed_arm.urdf"), 15, "plain_arm.urdf");
   EXPECT_EQ(rest, *plain_text) << "the same model but for the note";
-  // what stops the file without its meshes is said of it: here a moving link without mass
-  std::string massless = meshed;
-  massless.replace(massless.find("<mass value=\"0.8\"/><inertia ixx=\"0.006\" ixy=\"0\" ixz=\"0\" iyy=\"0.006\""), 58,
-                   "<mass value=\"0\"/><inertia ixx=\"0\" ixy=\"0\" ixz=\"0\" iyy=\"0\"");
-  massless.replace(massless.find("izz=\"0.001\"/></inertial>\n  </link>\n  <link name=\"tool0\"/>"), 11, "izz=\"0\"");
-  std::ofstream(path) << massless;
+  // what stops the file without its meshes is said of it: here an inertia that no body has (A + B < C)
+  std::string impossible = meshed;
+  impossible.replace(impossible.find("izz=\"0.001\"/></inertial>\n  </link>\n  <link name=\"tool0\"/>"), 11, "izz=\"0.05\"");
+  std::ofstream(path) << impossible;
   Diagnostics refused;
   EXPECT_FALSE(imported_model_text(path, refused, false));
   EXPECT_NE(refused.format().find("(read without its 2 mesh(es), which MuJoCo could not read)"), std::string::npos) << refused.format();
