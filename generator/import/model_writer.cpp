@@ -70,6 +70,7 @@ struct JointSymbols {
   // the hinge's or slide's angle and rate in the model's coordinates
   std::string angle() const {
     if (!follows()) return coordinates[0];
+    if (multiplier == 1 && offset == 0) return leader;
     std::string scaled = multiplier == 1 ? leader : fmt::format("{}*{}", format_number(multiplier), leader);
     if (offset == 0) return "(" + scaled + ")";
     return fmt::format("({} {} {})", scaled, offset < 0 ? "-" : "+", format_number(std::abs(offset)));
