@@ -119,10 +119,12 @@ std::string with(const std::string& kinematics) {
   return text;
 }
 
-TEST(TreeConstraints, ThroughTheFramesTheyAreThoseOfTheExpandedDerivation) {
-  Equations recursive = derive_text(with("")), expanded = derive_text(with("kinematics = \"expanded\""));
+// g, b, γ, C, M and f of the two derivations at random states
+void expect_expanded_constraints(const std::string& recursive_text, const std::string& expanded_text) {
+  Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
   ASSERT_FALSE(recursive.intermediates.empty()) << "frames with joints take the recursive kinematics under Lagrange I";
-  ASSERT_EQ(recursive.constraints.size(), 3u);
+  const unsigned m = unsigned(recursive.constraints.size()), n = unsigned(recursive.forcing.size());
+  ASSERT_EQ(m, expanded.constraints.size());
   std::mt19937 random(11);
   std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
   for (int point = 0; point < 12; ++point) {
@@ -133,19 +135,39 @@ TEST(TreeConstraints, ThroughTheFramesTheyAreThoseOfTheExpandedDerivation) {
       EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
     };
     const ConstraintSet &r = recursive.constraints, &e = expanded.constraints;
-    for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned i = 0; i < m; ++i) {
       near(value_at(r.position[i], at), value_at(e.position[i], full), fmt::format("g[{}]", i));
       near(value_at(r.bias[i], at), value_at(e.bias[i], full), fmt::format("b[{}]", i));
       near(value_at(r.acceleration_bias[i], at), value_at(e.acceleration_bias[i], full), fmt::format("gamma[{}]", i));
-      for (unsigned j = 0; j < 4; ++j)
+      for (unsigned j = 0; j < n; ++j)
         near(value_at(r.jacobian(i, j), at), value_at(e.jacobian(i, j), full), fmt::format("C[{}][{}]", i, j));
     }
-    for (unsigned j = 0; j < 4; ++j) {
+    for (unsigned j = 0; j < n; ++j) {
       near(value_at(recursive.forcing[j], at), value_at(expanded.forcing[j], full), fmt::format("f[{}]", j));
-      for (unsigned k = 0; k < 4; ++k)
+      for (unsigned k = 0; k < n; ++k)
         near(value_at(recursive.mass_matrix(j, k), at), value_at(expanded.mass_matrix(j, k), full), fmt::format("M[{}][{}]", j, k));
     }
   }
+}
+
+TEST(TreeConstraints, ThroughTheFramesTheyAreThoseOfTheExpandedDerivation) {
+  ASSERT_EQ(derive_text(with("")).constraints.size(), 3u);
+  expect_expanded_constraints(with(""), with("kinematics = \"expanded\""));
+}
+
+// the hand's joint following the base's coordinate (−1.5 a + 0.2, a mimic), the constraint on
+// reach left out: its partial velocities and bias accelerations through the frames carry the multiplier
+TEST(TreeConstraints, AJointThatFollowsACoordinateGivesTheExpandedConstraints) {
+  auto following = [](std::string text) {
+    text.replace(text.find("coordinate = \"c\""), 16, "coordinate = \"a\", multiplier = -1.5, offset = 0.2");
+    text.replace(text.find("c = 0.7\n"), 8, "");
+    text.replace(text.find("knob.x*der(c)"), 13, "knob.x*der(b)");
+    std::size_t reach = text.find("[[constraints]]\nname = \"reach\"");  // two constraints on three coordinates
+    text.erase(reach, text.find("[[constraints]]", reach + 1) - reach);
+    return text;
+  };
+  ASSERT_EQ(derive_text(following(with(""))).forcing.size(), 3u);
+  expect_expanded_constraints(following(with("")), following(with("kinematics = \"expanded\"")));
 }
 
 TEST(TreeConstraints, ADependentConstraintIsFoundThroughTheFrames) {
