@@ -1,30 +1,47 @@
 #include "import/joint_followers.hpp"
 
-#include <set>
+#include <algorithm>
+#include <map>
 #include <utility>
 
 namespace eomgen {
 
 std::vector<JointFollower> joint_followers(const Robot& robot) {
   using Joint = std::pair<int, int>;
-  std::set<Joint> following, leading;
-  auto type = [&](int body, int joint) {
-    return robot.bodies[std::size_t(body)].joints[std::size_t(joint)].type;
+  auto moves_by_one = [&](const Joint& j) {
+    const std::string& type = robot.bodies[std::size_t(j.first)].joints[std::size_t(j.second)].type;
+    return type == "hinge" || type == "slide";
   };
-  std::vector<JointFollower> out;
+  // each joint's coupling to the joint it follows, θ = m θ_leader + o (the first, where a joint has several)
+  struct Link {
+    std::size_t coupling;
+    Joint leader;
+    double multiplier, offset;
+  };
+  std::map<Joint, Link> follows;
   for (std::size_t k = 0; k < robot.couplings.size(); ++k) {
     const RobotCoupling& c = robot.couplings[k];
     if (c.body2 < 0 || c.coefficients[1] == 0 || c.coefficients[2] != 0 || c.coefficients[3] != 0 || c.coefficients[4] != 0)
       continue;
     Joint follower{c.body1, c.joint1}, leader{c.body2, c.joint2};
-    auto moves_by_one = [&](const Joint& j) { return type(j.first, j.second) == "hinge" || type(j.first, j.second) == "slide"; };
-    if (follower == leader || !moves_by_one(follower) || !moves_by_one(leader)) continue;
-    if (following.count(follower) || leading.count(follower) || following.count(leader)) continue;
-    following.insert(follower);
-    leading.insert(leader);
+    if (follower == leader || !moves_by_one(follower) || !moves_by_one(leader) || follows.count(follower)) continue;
     double m = c.coefficients[1];
-    out.push_back({k, c.body1, c.joint1, c.body2, c.joint2, m, c.reference1 + c.coefficients[0] - m * c.reference2});
+    follows[follower] = {k, leader, m, c.reference1 + c.coefficients[0] - m * c.reference2};
   }
+  // a chain of them composed down to the joint at its head, θ = m (m' θ'' + o') + o; a cycle has no
+  // head, and its couplings stay constraints
+  std::vector<JointFollower> out;
+  for (const auto& [follower, link] : follows) {
+    Link head = link;
+    std::size_t steps = 0;
+    for (auto up = follows.find(head.leader); up != follows.end() && steps <= follows.size(); up = follows.find(head.leader), ++steps)
+      head = {head.coupling, up->second.leader, head.multiplier * up->second.multiplier,
+              head.multiplier * up->second.offset + head.offset};
+    if (steps > follows.size()) continue;
+    out.push_back({link.coupling, follower.first, follower.second, head.leader.first, head.leader.second, head.multiplier, head.offset});
+  }
+  // in the couplings' order, as the file gives them
+  std::sort(out.begin(), out.end(), [](const JointFollower& a, const JointFollower& b) { return a.coupling < b.coupling; });
   return out;
 }
 

@@ -23,8 +23,9 @@ struct JointFollower {
 };
 
 /// The couplings that become followers: linear (c2 = c3 = c4 = 0, c1 ≠ 0) between hinges or slides
-/// (a rack and pinion too), and no chains: a joint follows at most one, and a leader follows none.
-/// The others stay constraints. (An actuator on a follower acts on the leader, m times its force.)
+/// (a rack and pinion too), a joint's first such coupling where it has several. A chain of them
+/// follows the joint at its head, the multipliers and offsets composed; a cycle stays constraints,
+/// as do the others. (An actuator on a follower acts on the leader, m times its force.)
 std::vector<JointFollower> joint_followers(const Robot& robot);
 
 }  // namespace eomgen

@@ -72,6 +72,21 @@ void place_joint(const mjModel* m, int j, int& body, int& joint, double& referen
   reference = m->qpos0[m->jnt_qposadr[j]];
 }
 
+// a fixed tendon's joints and coefficients (MJCF's <fixed>: every wrap a hinge or slide), or nothing
+std::optional<std::vector<TendonJoint>> fixed_tendon(const mjModel* m, int t) {
+  std::vector<TendonJoint> joints;
+  for (int w = m->tendon_adr[t]; w < m->tendon_adr[t] + m->tendon_num[t]; ++w) {
+    if (m->wrap_type[w] != mjWRAP_JOINT || !one_dof_joint(m, m->wrap_objid[w])) return std::nullopt;
+    TendonJoint joint;
+    double reference = 0;
+    place_joint(m, m->wrap_objid[w], joint.body, joint.joint, reference);
+    joint.coefficient = m->wrap_prm[w];
+    joints.push_back(joint);
+  }
+  if (joints.empty()) return std::nullopt;
+  return joints;
+}
+
 bool has_spherical_joints(const mjModel* m) {
   for (int j = 0; j < m->njnt; ++j)
     if (m->jnt_type[j] == mjJNT_FREE || m->jnt_type[j] == mjJNT_BALL) return true;
@@ -189,20 +204,11 @@ void note_losses(const mjModel* m, Robot& r) {
   // a fixed tendon that only transmits a carried actuator's force is carried; its own spring,
   // damping, friction and limits are not, nor is any other tendon
   int lost = 0;
-  for (int t = 0; t < m->ntendon; ++t) {
-    bool transmits = false;
-    for (int a = 0; a < m->nu; ++a) {
-      std::string name = name_of(m, m->name_actuatoradr, a);
-      if (name.empty()) name = fmt::format("actuator{}", a);
-      transmits = transmits || (m->actuator_trntype[a] == mjTRN_TENDON && m->actuator_trnid[2 * a] == t &&
-                                std::any_of(r.actuators.begin(), r.actuators.end(), [&](const RobotActuator& c) { return c.name == name; }));
-    }
-    bool passive = m->tendon_stiffness[t] != 0 || m->tendon_damping[t] != 0 || m->tendon_frictionloss[t] != 0 || m->tendon_limited[t];
-    lost += !transmits || passive;
-  }
+  for (int t = 0; t < m->ntendon; ++t)
+    lost += !fixed_tendon(m, t) || m->tendon_frictionloss[t] != 0 || m->tendon_limited[t];
   if (lost)
-    r.warnings.push_back({fmt::format("{} tendon(s): not carried (only a fixed tendon that transmits an actuator's force is "
-                                      "carried, without a spring, damping, friction or limits of its own)", lost),
+    r.warnings.push_back({fmt::format("{} tendon(s): not carried (a fixed tendon of hinges and slides is carried with its "
+                                      "actuators, spring and damper, not its friction or limits; no other tendon is)", lost),
                           "tendon", "", 0});
   static const char* const kinds[] = {"connect", "weld", "joint", "tendon", "distance"};
   bool loops = !has_spherical_joints(m);
@@ -230,19 +236,16 @@ void note_losses(const mjModel* m, Robot& r) {
       r.warnings.push_back({fmt::format("dof {} has friction loss {}: not carried (dry friction)", v, m->dof_frictionloss[v]), "", "", 0});
 }
 
-// a fixed tendon's joints and coefficients (MJCF's <fixed>: every wrap a hinge or slide), or nothing
-std::optional<std::vector<TendonJoint>> fixed_tendon(const mjModel* m, int t) {
-  std::vector<TendonJoint> joints;
-  for (int w = m->tendon_adr[t]; w < m->tendon_adr[t] + m->tendon_num[t]; ++w) {
-    if (m->wrap_type[w] != mjWRAP_JOINT || !one_dof_joint(m, m->wrap_objid[w])) return std::nullopt;
-    TendonJoint joint;
-    double reference = 0;
-    place_joint(m, m->wrap_objid[w], joint.body, joint.joint, reference);
-    joint.coefficient = m->wrap_prm[w];
-    joints.push_back(joint);
+
+// the springs and dampers of fixed tendons (MuJoCo's passive force along the tendon)
+void read_tendon_springs(const mjModel* m, Robot& r) {
+  for (int t = 0; t < m->ntendon; ++t) {
+    std::optional<std::vector<TendonJoint>> joints = fixed_tendon(m, t);
+    if (!joints || (m->tendon_stiffness[t] == 0 && m->tendon_damping[t] == 0)) continue;
+    std::string name = name_of(m, m->name_tendonadr, t);
+    r.tendon_springs.push_back({name.empty() ? fmt::format("tendon{}", t + 1) : name, *joints, m->tendon_stiffness[t],
+                                m->tendon_damping[t], m->tendon_lengthspring[t]});
   }
-  if (joints.empty()) return std::nullopt;
-  return joints;
 }
 
 void read_actuators(const mjModel* m, Robot& r) {
@@ -581,6 +584,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
   read_actuators(m, r);
+  read_tendon_springs(m, r);
   if (!has_spherical_joints(m)) read_loops(m, qpos, r);
   read_couplings(m, r);
   if (!urdf.empty()) read_mimics(m, urdf, r);

@@ -337,6 +337,34 @@ std::string actuator_force(const RobotActuator& a, const std::string& u, const s
   return a.gear == 1 ? clamped : fmt::format("{}*{}", format_number(a.gear), clamped);
 }
 
+// Σ cᵢ θᵢ and Σ cᵢ θᵢ' of the joints, in the model's coordinates (a single joint's own angle and rate)
+std::pair<std::string, std::string> length_and_rate(const std::vector<TendonJoint>& joints,
+                                                    const std::vector<std::vector<JointSymbols>>& joint_symbols) {
+  std::string length, rate;
+  for (const TendonJoint& j : joints) {
+    const JointSymbols& s = joint_symbols[std::size_t(j.body)][std::size_t(j.joint)];
+    double size = length.empty() ? j.coefficient : std::abs(j.coefficient);
+    std::string sign = length.empty() ? "" : j.coefficient < 0 ? " - " : " + ";
+    std::string c = size == 1 ? "" : size == -1 ? "-" : format_number(size) + "*";
+    length += sign + c + s.angle();
+    rate += sign + c + s.rate();
+  }
+  if (joints.size() > 1) length = "(" + length + ")", rate = "(" + rate + ")";
+  return {length, rate};
+}
+
+// a fixed tendon's spring and damper: ½ k (L − L₀)² and ½ d L'² into [energy]
+void add_tendon_springs(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Sections& out) {
+  for (const RobotTendonSpring& t : robot.tendon_springs) {
+    auto [length, rate] = length_and_rate(t.joints, joint_symbols);
+    if (t.stiffness != 0)
+      out.potential.push_back(t.rest_length == 0 ? fmt::format("{}*{}^2", format_number(t.stiffness), length)
+                                                 : fmt::format("{}*({} - {})^2", format_number(t.stiffness), length,
+                                                               format_number(t.rest_length)));
+    if (t.damping != 0) out.dissipation.push_back(fmt::format("{}*{}^2", format_number(t.damping), rate));
+  }
+}
+
 void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbols>>& joint_symbols, Names& names, Sections& out) {
   std::map<std::string, std::string> forces;
   std::vector<std::string> order;
@@ -350,13 +378,10 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
                   "\n";
     // the joints it moves: its own, or its fixed tendon's, each with its coefficient
     std::vector<TendonJoint> moved = a.tendon.empty() ? std::vector<TendonJoint>{{a.body, a.joint, 1}} : a.tendon;
-    std::string length, rate;
+    auto [length, rate] = length_and_rate(moved, joint_symbols);
     std::vector<std::pair<std::string, double>> weights;  // generalized force per coordinate: weight × F
     for (const TendonJoint& j : moved) {
       const JointSymbols& s = joint_symbols[std::size_t(j.body)][std::size_t(j.joint)];
-      std::string c = j.coefficient == 1 ? "" : format_number(j.coefficient) + "*";
-      length += (length.empty() ? "" : " + ") + c + s.angle();
-      rate += (rate.empty() ? "" : " + ") + c + s.rate();
       // a joint that follows a coordinate passes m times its force on to it
       std::string coordinate = s.follows() ? s.leader : s.coordinates[0];
       double weight = j.coefficient * (s.follows() ? s.multiplier : 1);
@@ -364,7 +389,6 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
       if (auto found = std::find_if(weights.begin(), weights.end(), same); found != weights.end()) found->second += weight;
       else weights.emplace_back(coordinate, weight);
     }
-    if (moved.size() > 1) length = "(" + length + ")", rate = "(" + rate + ")";
     std::string force = actuator_force(a, u, length, rate);
     for (const auto& [q, weight] : weights) {
       if (weight == 0) continue;
@@ -499,6 +523,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
   }
   for (std::size_t b = 0; b < robot.bodies.size(); ++b) add_body(robot, b, frame_of, out, joint_symbols);
   add_actuators(robot, joint_symbols, names, out);
+  add_tendon_springs(robot, joint_symbols, out);
   add_keyframes(robot, joint_symbols, names, out);
   for (const RobotSite& s : robot.sites)
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),

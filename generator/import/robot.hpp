@@ -115,6 +115,14 @@ struct RobotCoupling {
   int equality = -1;  // its place among the file's equality constraints
 };
 
+/// A fixed tendon's spring and damper (MJCF's stiffness, damping, springlength): the force
+/// −stiffness (L − rest_length) − damping L' along its length L = Σ cᵢ qᵢ.
+struct RobotTendonSpring {
+  std::string name;
+  std::vector<TendonJoint> joints;
+  double stiffness = 0, damping = 0, rest_length = 0;
+};
+
 struct Robot {
   std::string name;
   std::string reader;  // what read the file, e.g. "MuJoCo 2.2.2's compiler"
@@ -126,6 +134,7 @@ struct Robot {
   std::vector<RobotKeyframe> keyframes;
   std::vector<RobotLoop> loops;        // Lagrange I constraints of the model
   std::vector<RobotCoupling> couplings;  // the same
+  std::vector<RobotTendonSpring> tendon_springs;
   std::vector<RobotWarning> warnings;  // what the model cannot carry, each naming it
   std::vector<std::string> notes;      // how the file was read where that is not plain (carried nonetheless)
 };
