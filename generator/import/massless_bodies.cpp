@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <regex>
 
+#include <fmt/format.h>
+
 namespace eomgen {
 
 bool refuses_massless_bodies(const std::string& message, const std::string& text) {
@@ -22,7 +24,7 @@ int line_naming(const std::string& text, const std::string& name) {
 }
 
 std::string with_mass_bounds(const std::string& text) {
-  const std::string bounds = " boundmass=\"2e-15\" boundinertia=\"2e-15\"";
+  const std::string bounds = fmt::format(" boundmass=\"{0}\" boundinertia=\"{0}\"", massless_bound);
   std::string out = text;
   std::size_t mujoco = element_start(out, "mujoco");
   if (mujoco == std::string::npos) {  // a URDF without a <mujoco> element

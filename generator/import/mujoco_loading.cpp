@@ -1,0 +1,228 @@
+// Loading a robot file with MuJoCo 2.2.2's compiler, from memory where the file needs changes
+// first: MuJoCo 3's attributes left out (newer_mjcf.hpp), placeholders for mesh files it cannot read
+// (missing_meshes.hpp), mass bounds for moving bodies without mass (massless_bodies.hpp), a URDF's
+// fixed links kept and its unreadable meshes left out (urdf_text.hpp).
+#include "import/mujoco_loading.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "import/massless_bodies.hpp"
+#include "import/missing_meshes.hpp"
+#include "import/urdf_text.hpp"
+
+namespace eomgen {
+
+std::string text_of_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::stringstream text;
+  if (file) text << file.rdbuf();
+  return text.str();
+}
+
+namespace {
+
+// the texts read by MuJoCo from memory, the first under the file's own path: it finds the files it
+// names beside it on disk, and those it includes among the texts (by their names without a path)
+// (texts end in a 0 for the XML parser; `files`, such as meshes, are their bytes alone)
+mjModel* loaded_texts(const std::string& path, const std::vector<std::pair<std::string, std::string>>& texts, char* error,
+                      int size, const std::vector<std::pair<std::string, std::string>>& files_too = {}) {
+  auto files = std::make_unique<mjVFS>();
+  mj_defaultVFS(files.get());
+  for (const auto& [name, text] : texts) {
+    if (mj_makeEmptyFileVFS(files.get(), name.c_str(), int(text.size()) + 1) != 0) {
+      mj_deleteVFS(files.get());
+      return mj_loadXML(path.c_str(), nullptr, error, size);
+    }
+    std::memcpy(files->filedata[files->nfile - 1], text.c_str(), text.size() + 1);
+  }
+  for (const auto& [name, bytes] : files_too) {
+    if (mj_makeEmptyFileVFS(files.get(), name.c_str(), int(bytes.size())) != 0) {
+      mj_deleteVFS(files.get());
+      std::snprintf(error, std::size_t(size), "MuJoCo's virtual file system has no room for '%s'", name.c_str());
+      return nullptr;
+    }
+    std::memcpy(files->filedata[files->nfile - 1], bytes.data(), bytes.size());
+  }
+  mjModel* model = mj_loadXML(path.c_str(), files.get(), error, size);
+  mj_deleteVFS(files.get());
+  return model;
+}
+
+mjModel* loaded_text(const std::string& path, const std::string& text, char* error, int size) {
+  return loaded_texts(path, {{path, text}}, error, size);
+}
+
+// the MJCF file and, after it, every file it includes, however deep (MuJoCo takes each name
+// relative to the first file's folder)
+std::vector<std::pair<std::string, std::string>> mjcf_sources(const std::string& path) {
+  std::string folder = path.substr(0, path.find_last_of('/') + 1);
+  std::vector<std::pair<std::string, std::string>> sources{{path, text_of_file(path)}};
+  for (std::size_t k = 0; k < sources.size() && sources.size() < 64; ++k)
+    for (const std::string& name : included_files(std::string(sources[k].second)))
+      if (std::none_of(sources.begin(), sources.end(), [&](const auto& s) { return s.first == folder + name; }))
+        sources.emplace_back(folder + name, text_of_file(folder + name));
+  return sources;
+}
+
+// whether MuJoCo's message is about a mesh file it could not find or read
+bool about_a_mesh(const std::string& message) {
+  for (const char* mark : {"mesh", "Mesh", "STL file", "OBJ file", "MSH file"})
+    if (message.find(mark) != std::string::npos) return true;
+  return false;
+}
+
+
+// the model read with the mass bounds, or why not when a joint moves no mass (its M would be singular)
+std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, const LeftOut& left_out, const std::string& text) {
+  if (!left_out.mass_bounds) return model;
+  std::string joint = joint_moving_no_mass(model);
+  if (joint.empty()) return model;
+  mj_deleteModel(model);
+  return UnreadableRobot{line_naming(text, joint), fmt::format("joint '{}' moves no body with mass or inertia, so that the robot's mass matrix is singular "
+                                        "(MuJoCo refuses such moving bodies)", joint),
+                         "give the bodies it moves an <inertial> with a mass and inertia"};
+}
+
+// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses,
+// in the file and in those it includes, and with a placeholder for each mesh file it cannot read,
+// kept only when no body takes its inertia from a mesh (missing_meshes.hpp)
+std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
+  mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
+  std::vector<std::pair<std::string, std::string>> sources;
+  std::vector<UnreadableMesh> meshes;
+  auto load = [&](double mesh_size) {
+    if (sources.empty()) sources = mjcf_sources(path);
+    std::vector<std::pair<std::string, std::string>> placeholders;
+    for (const UnreadableMesh& mesh : meshes) placeholders.push_back(*placeholder_mesh(mesh, mesh_size));
+    return loaded_texts(path, sources, error, size, placeholders);
+  };
+  for (int round = 0; !model && round < 400; ++round) {
+    if (!left_out.mass_bounds && refuses_massless_bodies(error, sources.empty() ? text_of_file(path) : sources[0].second)) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      std::string bounded = with_mass_bounds(sources[0].second);
+      if (bounded == sources[0].second) break;
+      sources[0].second = bounded;
+      left_out.mass_bounds = true;
+      model = load(0.01);
+      continue;
+    }
+    if (std::optional<UnreadableMesh> mesh = unreadable_mesh(error); mesh && placeholder_mesh(*mesh, 1)) {
+      auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
+      if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
+      meshes.push_back(*mesh);
+      model = load(0.01);
+      continue;
+    }
+    std::optional<NewerAttribute> newer = newer_attribute_refused(error);
+    if (!newer) break;
+    if (sources.empty()) sources = mjcf_sources(path);
+    bool edited = false;
+    for (auto& [name, text] : sources) {
+      std::string without = without_newer_attribute(text, *newer);
+      edited = edited || without != text;
+      text = without;
+    }
+    if (!edited) break;
+    left_out.newer.push_back(*newer);
+    model = load(0.01);
+  }
+  if (!model) return model;
+  if (meshes.empty()) return without_massless_joints(model, left_out, sources.empty() ? std::string() : sources[0].second);
+  std::unique_ptr<mjModel, void (*)(mjModel*)> larger(load(0.02), mj_deleteModel);
+  if (!larger) {
+    mj_deleteModel(model);
+    return nullptr;
+  }
+  MeshDependence dependence = mesh_dependence(model, larger.get());
+  // named as the file names them, relative to its folder (MuJoCo's message has the folder in front)
+  std::string folder = path.substr(0, path.find_last_of('/') + 1), files;
+  for (std::size_t k = 0; k < meshes.size() && k < 3; ++k) {
+    const std::string& file = meshes[k].file;
+    files += (k ? ", '" : "'") + (file.rfind(folder, 0) == 0 ? file.substr(folder.size()) : file) + "'";
+  }
+  if (meshes.size() > 3) files += fmt::format(" and {} more", meshes.size() - 3);
+  if (!dependence.body.empty()) {
+    mj_deleteModel(model);
+    const std::string& text = sources[0].second;
+    std::size_t at = text.find("name=\"" + dependence.body + "\"");
+    return UnreadableRobot{at == std::string::npos ? 0 : int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1,
+                           fmt::format("body '{}' takes its mass and inertia from its geoms, a mesh among them, and MuJoCo "
+                                       "cannot read the mesh file(s) {}", dependence.body, files),
+                           "put the mesh files where the file names them, or give the body an <inertial>"};
+  }
+  left_out.unread_mesh_files = int(meshes.size());
+  left_out.unread_mesh_names = files;
+  left_out.mesh_sized_geoms = dependence.geoms;
+  return without_massless_joints(model, left_out, sources.empty() ? std::string() : sources[0].second);
+}
+
+}  // namespace
+
+// a URDF is read with its fixed links kept (urdf_text.hpp); what its reader would crash on is
+// reported first, and when MuJoCo cannot read its meshes (ROS packages' COLLADA files and
+// package:// paths) it is read again without them
+std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size,
+                                                     LeftOut& left_out) {
+  if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
+  if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message, ""};
+  std::string kept = with_static_links_kept(urdf);
+  // the text, or when MuJoCo refuses its massless moving bodies, the text with the mass bounds
+  auto load = [&](const std::string& text) {
+    mjModel* loaded = loaded_text(path, text, error, size);
+    if (loaded || !refuses_massless_bodies(error, text) || with_mass_bounds(text) == text) return loaded;
+    left_out.mass_bounds = true;
+    return loaded_text(path, with_mass_bounds(text), error, size);
+  };
+  mjModel* model = load(kept);
+  if (model) return without_massless_joints(model, left_out, urdf);
+  if (!about_a_mesh(error)) return model;
+  int left_out_meshes = 0;
+  std::string first_error = error;
+  std::string without = without_mesh_geometry(kept, left_out_meshes);
+  if (left_out_meshes == 0) return nullptr;
+  model = load(without);
+  if (!model) {
+    // what stops it now, said to be of the file without its meshes
+    std::string second = error;
+    std::size_t end = second.find('\n');
+    second.insert(end == std::string::npos ? second.size() : end,
+                  fmt::format(" (read without its {} mesh(es), which MuJoCo could not read)", left_out_meshes));
+    std::snprintf(error, std::size_t(size), "%s", second.c_str());
+    return nullptr;
+  }
+  left_out.meshes = left_out_meshes;
+  left_out.mesh_error = first_error;
+  return without_massless_joints(model, left_out, urdf);
+}
+
+UnreadableRobot unreadable_robot(const std::string& text) {
+  UnreadableRobot u;
+  // the last of these that the text has names the line: "Element 'body', line 5" beats a nested parse error's
+  for (const char* marker : {"Line number=", "line = ", "', line "})
+    if (std::size_t at = text.find(marker); at != std::string::npos) u.line = std::atoi(text.c_str() + at + std::strlen(marker));
+  std::string first = text.substr(0, text.find('\n'));
+  for (const char* prefix : {"Error: ", "XML Error: "})
+    if (first.rfind(prefix, 0) == 0) first = first.substr(std::strlen(prefix));
+  if (first.rfind("XML parse error", 0) == 0) first = "the XML is malformed";
+  if (std::size_t at = text.find("XML_ERROR_FILE_NOT_FOUND"); at != std::string::npos) {
+    std::size_t name = text.find("filename=", at);
+    first = "an included file does not exist" +
+            (name == std::string::npos ? "" : ": " + text.substr(name + 9, text.find_first_of("'\n", name) - name - 9));
+  }
+  if (std::size_t at = text.find("Element '"); at != std::string::npos)
+    first += " (element <" + text.substr(at + 9, text.find('\'', at + 9) - at - 9) + ">)";
+  while (!first.empty() && std::isspace(static_cast<unsigned char>(first.back()))) first.pop_back();
+  u.message = first;
+  return u;
+}
+
+}  // namespace eomgen

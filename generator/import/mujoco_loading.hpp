@@ -1,0 +1,47 @@
+/// @file Loading a robot file with MuJoCo 2.2.2's compiler (mj_loadXML), read again from memory
+/// with the changes a file needs first, each recorded for a warning: MuJoCo 3's attributes left out
+/// (newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
+/// for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
+/// meshes left out (urdf_text.hpp).
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "import/newer_mjcf.hpp"
+
+namespace eomgen {
+
+/// Why MuJoCo cannot read the file: its message, and the line it names (0: none).
+struct UnreadableRobot {
+  int line = 0;
+  std::string message;
+  std::string hint;  // what to do; empty: that the file must be one MuJoCo's compiler accepts
+};
+
+/// MuJoCo's error text as a message and a line ("line = 9", "Line number=5").
+UnreadableRobot unreadable_robot(const std::string& mujoco_error);
+
+/// What was left out of or changed in the file so that MuJoCo 2.2.2 could read it.
+struct LeftOut {
+  int meshes = 0;
+  std::string mesh_error;                // why: MuJoCo's message about the first mesh
+  int unread_mesh_files = 0;             // MJCF: mesh files read as placeholders (missing_meshes.hpp)
+  std::string unread_mesh_names;         // the first of them
+  std::vector<int> mesh_sized_geoms;     // geoms that a placeholder sized: not drawn
+  bool mass_bounds = false;              // read with massless_bodies.hpp's bounds
+  std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
+};
+
+/// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in
+/// `left_out`; nullptr with MuJoCo's message in `error` (of `size` bytes), or why it is refused.
+std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size,
+                                                     LeftOut& left_out);
+
+/// The file's bytes, or nothing when it cannot be read (MuJoCo says so then).
+std::string text_of_file(const std::string& path);
+
+}  // namespace eomgen
