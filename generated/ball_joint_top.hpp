@@ -124,8 +124,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -137,7 +138,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[2*m + c] - l1*B[1*m + c];
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -269,7 +270,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
 /// tangent sweep through the frames' recursion). ddq: 3; F: 3x7, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
@@ -418,8 +419,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T L[9];
   T D[3];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  T F[21];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   J[0] = T(0);
   J[1] = -(T(1)/T(2))*s_wx;
   J[2] = -(T(1)/T(2))*s_wy;
@@ -449,9 +448,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[26] = (T(1)/T(2))*q_qx;
   J[27] = (T(1)/T(2))*q_qw;
   T* rows = J + 28;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 7; ++j) rows[i * 7 + j] = -F[i * 7 + j];
-  detail::ldlt_solve_rows<7>(L, D, rows);
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::ldlt_solve_rows<7, true>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -470,27 +468,10 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T ddq[3] = {};
   T F[21];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[4];
-  P[1] = F[5];
-  P[2] = F[6];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  Q[3] = F[3];
-  P[3] = F[11];
-  P[4] = F[12];
-  P[5] = F[13];
-  Q[4] = F[7];
-  Q[5] = F[8];
-  Q[6] = F[9];
-  Q[7] = F[10];
-  P[6] = F[18];
-  P[7] = F[19];
-  P[8] = F[20];
-  Q[8] = F[14];
-  Q[9] = F[15];
-  Q[10] = F[16];
-  Q[11] = F[17];
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) P[i * 3 + j] = F[i * 7 + 4 + j];
+    for (std::size_t j = 0; j < 4; ++j) Q[i * 4 + j] = F[i * 7 + j];
+  }
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

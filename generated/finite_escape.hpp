@@ -93,12 +93,13 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (1xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   for (std::size_t i = 0; i < 1; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
 }

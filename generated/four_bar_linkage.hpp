@@ -177,8 +177,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -186,7 +187,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c];
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -378,7 +379,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
 /// tangent sweep through the frames' recursion). ddq: 3; F: 3x6, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
@@ -508,24 +509,10 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T ddq[3] = {};
   T F[18];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[3];
-  P[1] = F[4];
-  P[2] = F[5];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  P[3] = F[9];
-  P[4] = F[10];
-  P[5] = F[11];
-  Q[3] = F[6];
-  Q[4] = F[7];
-  Q[5] = F[8];
-  P[6] = F[15];
-  P[7] = F[16];
-  P[8] = F[17];
-  Q[6] = F[12];
-  Q[7] = F[13];
-  Q[8] = F[14];
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) P[i * 3 + j] = F[i * 6 + 3 + j];
+    for (std::size_t j = 0; j < 3; ++j) Q[i * 3 + j] = F[i * 6 + j];
+  }
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

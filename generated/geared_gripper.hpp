@@ -189,8 +189,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -202,7 +203,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -443,8 +444,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
-/// tangent sweep through the frames' recursion). ddq: 3; F: 3x7, row-major.
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// tangent sweep through the frames' recursion). ddq: 3; F: 3x6, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -834,21 +835,18 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   F[3] = k_upper_tN_z_d3;
   F[4] = k_upper_tN_z_d4;
   F[5] = k_upper_tN_z_d5;
-  F[6] = T(0);
-  F[7] = k_forearm_tN_z_d0;
-  F[8] = k_forearm_tN_z_d1;
-  F[9] = k_forearm_tN_z_d2;
-  F[10] = k_forearm_tN_z_d3;
-  F[11] = T(3)/T(10) + k_forearm_tN_z_d4;
-  F[12] = k_forearm_tN_z_d5;
-  F[13] = T(0);
-  F[14] = -(T(6)/T(5))*k_right_tN_z_d0 + k_left_tN_z_d0;
-  F[15] = -(T(6)/T(5))*k_right_tN_z_d1 + k_left_tN_z_d1;
-  F[16] = -(T(6)/T(5))*k_right_tN_z_d2 + k_left_tN_z_d2;
-  F[17] = -(T(6)/T(5))*k_right_tN_z_d3 + k_left_tN_z_d3;
-  F[18] = -(T(6)/T(5))*k_right_tN_z_d4 + k_left_tN_z_d4;
-  F[19] = -(T(6)/T(5))*k_right_tN_z_d5 + T(9)/T(125) + k_left_tN_z_d5;
-  F[20] = -T(1);
+  F[6] = k_forearm_tN_z_d0;
+  F[7] = k_forearm_tN_z_d1;
+  F[8] = k_forearm_tN_z_d2;
+  F[9] = k_forearm_tN_z_d3;
+  F[10] = T(3)/T(10) + k_forearm_tN_z_d4;
+  F[11] = k_forearm_tN_z_d5;
+  F[12] = -(T(6)/T(5))*k_right_tN_z_d0 + k_left_tN_z_d0;
+  F[13] = -(T(6)/T(5))*k_right_tN_z_d1 + k_left_tN_z_d1;
+  F[14] = -(T(6)/T(5))*k_right_tN_z_d2 + k_left_tN_z_d2;
+  F[15] = -(T(6)/T(5))*k_right_tN_z_d3 + k_left_tN_z_d3;
+  F[16] = -(T(6)/T(5))*k_right_tN_z_d4 + k_left_tN_z_d4;
+  F[17] = -(T(6)/T(5))*k_right_tN_z_d5 + T(9)/T(125) + k_left_tN_z_d5;
 }
 
 }  // namespace detail
@@ -862,8 +860,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T L[9];
   T D[3];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  T F[21];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -883,9 +879,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[16] = T(0);
   J[17] = T(1);
   T* rows = J + 18;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 6; ++j) rows[i * 6 + j] = -F[i * 7 + j];
-  detail::ldlt_solve_rows<6>(L, D, rows);
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::ldlt_solve_rows<6, true>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -914,29 +909,15 @@ template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
   const T ddq[3] = {};
-  T F[21];
+  T F[18];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[3];
-  P[1] = F[4];
-  P[2] = F[5];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  B[0] = -F[6];
-  P[3] = F[10];
-  P[4] = F[11];
-  P[5] = F[12];
-  Q[3] = F[7];
-  Q[4] = F[8];
-  Q[5] = F[9];
-  B[1] = -F[13];
-  P[6] = F[17];
-  P[7] = F[18];
-  P[8] = F[19];
-  Q[6] = F[14];
-  Q[7] = F[15];
-  Q[8] = F[16];
-  B[2] = -F[20];
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) P[i * 3 + j] = F[i * 6 + 3 + j];
+    for (std::size_t j = 0; j < 3; ++j) Q[i * 3 + j] = F[i * 6 + j];
+  }
+  B[0] = T(0);
+  B[1] = T(0);
+  B[2] = T(1);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

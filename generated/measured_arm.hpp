@@ -189,8 +189,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -202,7 +203,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -452,8 +453,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
-/// tangent sweep through the frames' recursion). ddq: 3; F: 3x9, row-major.
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// tangent sweep through the frames' recursion). ddq: 3; F: 3x6, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -908,27 +909,18 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   F[3] = n106 + k_link1_N_z_d3;
   F[4] = k_link2_N_z_d4;
   F[5] = k_link2_N_z_d5;
-  F[6] = -T(1);
-  F[7] = T(0);
-  F[8] = T(0);
-  F[9] = c0_d0*k_link2_N_y + k_link1_Rxy*k_link2_N_x_d0 + k_link1_Rxy_d0*k_link2_N_x + k_link1_Ryy*k_link2_N_y_d0;
-  F[10] = k_link1_Rxy*k_link2_N_x_d1 + k_link1_Ryy*k_link2_N_y_d1;
-  F[11] = k_link1_Rxy*k_link2_N_x_d2 + k_link1_Ryy*k_link2_N_y_d2;
-  F[12] = k_link1_Rxy*k_link2_N_x_d3 + k_link1_Ryy*k_link2_N_y_d3;
-  F[13] = n106 + k_link1_Rxy*k_link2_N_x_d4 + k_link1_Ryy*k_link2_N_y_d4;
-  F[14] = k_link1_Rxy*k_link2_N_x_d5 + k_link1_Ryy*k_link2_N_y_d5;
-  F[15] = T(0);
-  F[16] = -T(1);
-  F[17] = T(0);
-  F[18] = k_link3_N_x*k_link3_Rxz_d0 + k_link3_N_x_d0*k_link3_Rxz + k_link3_N_y*k_link3_Ryz_d0 + k_link3_N_y_d0*k_link3_Ryz + k_link3_N_z_d0*k_link3_Rzz;
-  F[19] = k_link3_N_x*k_link3_Rxz_d1 + k_link3_N_x_d1*k_link3_Rxz + k_link3_N_y*k_link3_Ryz_d1 + k_link3_N_y_d1*k_link3_Ryz + k_link3_N_z*k_link3_Rzz_d1 + k_link3_N_z_d1*k_link3_Rzz;
-  F[20] = k_link3_N_x_d2*k_link3_Rxz + k_link3_N_y_d2*k_link3_Ryz + k_link3_N_z_d2*k_link3_Rzz;
-  F[21] = k_link3_N_x_d3*k_link3_Rxz + k_link3_N_y_d3*k_link3_Ryz + k_link3_N_z_d3*k_link3_Rzz;
-  F[22] = k_link3_N_x_d4*k_link3_Rxz + k_link3_N_y_d4*k_link3_Ryz + k_link3_N_z_d4*k_link3_Rzz;
-  F[23] = n106 + k_link3_N_x_d5*k_link3_Rxz + k_link3_N_y_d5*k_link3_Ryz + k_link3_N_z_d5*k_link3_Rzz;
-  F[24] = T(0);
-  F[25] = T(0);
-  F[26] = -T(1);
+  F[6] = c0_d0*k_link2_N_y + k_link1_Rxy*k_link2_N_x_d0 + k_link1_Rxy_d0*k_link2_N_x + k_link1_Ryy*k_link2_N_y_d0;
+  F[7] = k_link1_Rxy*k_link2_N_x_d1 + k_link1_Ryy*k_link2_N_y_d1;
+  F[8] = k_link1_Rxy*k_link2_N_x_d2 + k_link1_Ryy*k_link2_N_y_d2;
+  F[9] = k_link1_Rxy*k_link2_N_x_d3 + k_link1_Ryy*k_link2_N_y_d3;
+  F[10] = n106 + k_link1_Rxy*k_link2_N_x_d4 + k_link1_Ryy*k_link2_N_y_d4;
+  F[11] = k_link1_Rxy*k_link2_N_x_d5 + k_link1_Ryy*k_link2_N_y_d5;
+  F[12] = k_link3_N_x*k_link3_Rxz_d0 + k_link3_N_x_d0*k_link3_Rxz + k_link3_N_y*k_link3_Ryz_d0 + k_link3_N_y_d0*k_link3_Ryz + k_link3_N_z_d0*k_link3_Rzz;
+  F[13] = k_link3_N_x*k_link3_Rxz_d1 + k_link3_N_x_d1*k_link3_Rxz + k_link3_N_y*k_link3_Ryz_d1 + k_link3_N_y_d1*k_link3_Ryz + k_link3_N_z*k_link3_Rzz_d1 + k_link3_N_z_d1*k_link3_Rzz;
+  F[14] = k_link3_N_x_d2*k_link3_Rxz + k_link3_N_y_d2*k_link3_Ryz + k_link3_N_z_d2*k_link3_Rzz;
+  F[15] = k_link3_N_x_d3*k_link3_Rxz + k_link3_N_y_d3*k_link3_Ryz + k_link3_N_z_d3*k_link3_Rzz;
+  F[16] = k_link3_N_x_d4*k_link3_Rxz + k_link3_N_y_d4*k_link3_Ryz + k_link3_N_z_d4*k_link3_Rzz;
+  F[17] = n106 + k_link3_N_x_d5*k_link3_Rxz + k_link3_N_y_d5*k_link3_Ryz + k_link3_N_z_d5*k_link3_Rzz;
 }
 
 }  // namespace detail
@@ -942,8 +934,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T L[9];
   T D[3];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  T F[27];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -963,9 +953,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[16] = T(0);
   J[17] = T(1);
   T* rows = J + 18;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 6; ++j) rows[i * 6 + j] = -F[i * 9 + j];
-  detail::ldlt_solve_rows<6>(L, D, rows);
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::ldlt_solve_rows<6, true>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -1006,35 +995,21 @@ template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
   const T ddq[3] = {};
-  T F[27];
+  T F[18];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[3];
-  P[1] = F[4];
-  P[2] = F[5];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  B[0] = -F[6];
-  B[1] = -F[7];
-  B[2] = -F[8];
-  P[3] = F[12];
-  P[4] = F[13];
-  P[5] = F[14];
-  Q[3] = F[9];
-  Q[4] = F[10];
-  Q[5] = F[11];
-  B[3] = -F[15];
-  B[4] = -F[16];
-  B[5] = -F[17];
-  P[6] = F[21];
-  P[7] = F[22];
-  P[8] = F[23];
-  Q[6] = F[18];
-  Q[7] = F[19];
-  Q[8] = F[20];
-  B[6] = -F[24];
-  B[7] = -F[25];
-  B[8] = -F[26];
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) P[i * 3 + j] = F[i * 6 + 3 + j];
+    for (std::size_t j = 0; j < 3; ++j) Q[i * 3 + j] = F[i * 6 + j];
+  }
+  B[0] = T(1);
+  B[1] = T(0);
+  B[2] = T(0);
+  B[3] = T(0);
+  B[4] = T(1);
+  B[5] = T(0);
+  B[6] = T(0);
+  B[7] = T(0);
+  B[8] = T(1);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -238,8 +238,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (5xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -255,7 +256,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c];
   }
   for (std::size_t i = 0; i < 5; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -752,8 +753,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
-/// tangent sweep through the frames' recursion). ddq: 5; F: 5x11, row-major.
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// tangent sweep through the frames' recursion). ddq: 5; F: 5x10, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -948,27 +949,22 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T cos_q_q3 = trig_cos[2];
   const T sin_q_q5 = trig_sin[3];
   const T cos_q_q5 = trig_cos[3];
-  F[10] = T(0);
+  F[13] = T(0);
   F[14] = T(0);
-  F[15] = T(0);
+  F[18] = T(0);
   F[19] = T(0);
-  F[20] = T(0);
-  F[21] = -T(2);
-  F[25] = T(0);
-  F[26] = T(0);
-  F[30] = T(0);
+  F[23] = T(0);
+  F[24] = T(0);
+  F[28] = T(0);
+  F[29] = T(0);
   F[31] = T(0);
   F[32] = T(0);
-  F[34] = T(0);
-  F[35] = T(0);
-  F[39] = T(0);
-  F[40] = T(0);
-  F[43] = T(0);
-  F[45] = T(0);
+  F[36] = T(0);
+  F[37] = T(0);
+  F[41] = T(0);
+  F[42] = T(0);
   F[46] = T(0);
-  F[50] = T(0);
-  F[51] = T(0);
-  F[54] = T(0);
+  F[47] = T(0);
   const T c8 = cos_q_q3;
   const T k_tip_tExx = -n0*c8;
   const T c9 = sin_q_q3;
@@ -999,7 +995,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_ta_y_d0 = k_arm_ta_x_d0*k_tip_tExy + k_arm_ta_y_d0*k_tip_tEyy + k_arm_ta_z_d0*k_tip_tEzy;
   const T k_tip_tB0F_y_d0 = (T(2)/T(5))*k_tip_ta_y_d0;
   const T k_tip_tN_z_d0 = -(T(1)/T(20))*k_tip_tB0F_y_d0 + (T(3)/T(100))*k_tip_tB0F_x_d0;
-  F[22] = k_tip_tN_z_d0;
+  F[20] = k_tip_tN_z_d0;
   const T k_arm_tEzx = -n8*c7 + n9*c6;
   const T k_arm_twp_x = dq_q1*k_arm_tEzx;
   const T k_arm_tEzy = n8*c6 + n9*c7;
@@ -1055,7 +1051,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c23 = -T(5)*k_tip_twp_y + T(6)*k_tip_twp_x;
   const T k_tip_tB0F_y_d1 = (T(1)/T(250))*c23*k_tip_twp_x_d1 - (T(1)/T(50))*k_tip_tal_z_d1 - (T(1)/T(50))*k_tip_twp_x*k_tip_twp_y_d1 + (T(2)/T(5))*k_tip_ta_y_d1 + (T(3)/T(125))*k_tip_tw_z*k_tip_twp_z_d1;
   const T k_tip_tN_z_d1 = (T(1)/T(10000))*k_tip_tal_y_d1 - (T(1)/T(20))*k_tip_tB0F_y_d1 + (T(1)/T(400))*k_tip_tal_z_d1 + (T(1)/T(5000))*k_tip_tal_x_d1 + (T(3)/T(100))*k_tip_tB0F_x_d1 - k_tip_tB0Iw_x*k_tip_twp_y_d1 - k_tip_tB0Iw_x_d1*k_tip_twp_y + k_tip_tB0Iw_y*k_tip_twp_x_d1 + k_tip_tB0Iw_y_d1*k_tip_twp_x;
-  F[23] = k_tip_tN_z_d1;
+  F[21] = k_tip_tN_z_d1;
   const T c9_d2 = c8;
   const T c8_d2 = -c9;
   const T k_tip_tExx_d2 = -n0*c8_d2;
@@ -1084,7 +1080,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_ta_y_d2 = c8_d2*k_tip_tx_y + k_tip_tExy_d2*k_tip_tx_x + k_tip_tEzy_d2*k_tip_tx_z;
   const T k_tip_tB0F_y_d2 = (T(1)/T(250))*c23*k_tip_twp_x_d2 - (T(1)/T(50))*k_tip_twp_x*k_tip_twp_y_d2 + (T(2)/T(5))*k_tip_ta_y_d2;
   const T k_tip_tN_z_d2 = (T(1)/T(10000))*k_tip_tal_y_d2 - (T(1)/T(20))*k_tip_tB0F_y_d2 + (T(1)/T(5000))*k_tip_tal_x_d2 + (T(3)/T(100))*k_tip_tB0F_x_d2 - k_tip_tB0Iw_x*k_tip_twp_y_d2 - k_tip_tB0Iw_x_d2*k_tip_twp_y + k_tip_tB0Iw_y*k_tip_twp_x_d2 + k_tip_tB0Iw_y_d2*k_tip_twp_x;
-  F[24] = k_tip_tN_z_d2;
+  F[22] = k_tip_tN_z_d2;
   const T k_tip_twp_x_d5 = -n10*k_tip_tEzx + k_arm_tEzx*k_tip_tExx + k_arm_tEzy*k_tip_tEyx;
   const T k_tip_twp_y_d5 = -n10*k_tip_tEzy + k_arm_tEzx*k_tip_tExy + k_arm_tEzy*k_tip_tEyy;
   const T k_tip_twp_z_d5 = n19 - n0*k_arm_tEzx;
@@ -1110,7 +1106,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_ta_y_d5 = k_tip_tExy*k_tip_tx_x_d5 + k_tip_tEyy*k_tip_tx_y_d5 + k_tip_tEzy*k_tip_tx_z_d5;
   const T k_tip_tB0F_y_d5 = (T(1)/T(250))*c23*k_tip_twp_x_d5 - (T(1)/T(50))*k_tip_tal_z_d5 - (T(1)/T(50))*k_tip_twp_x*k_tip_twp_y_d5 + (T(2)/T(5))*k_tip_ta_y_d5 + (T(3)/T(125))*k_tip_tw_z*k_tip_twp_z_d5;
   const T k_tip_tN_z_d5 = (T(1)/T(10000))*k_tip_tal_y_d5 - (T(1)/T(20))*k_tip_tB0F_y_d5 + (T(1)/T(400))*k_tip_tal_z_d5 + (T(1)/T(5000))*k_tip_tal_x_d5 + (T(3)/T(100))*k_tip_tB0F_x_d5 - k_tip_tB0Iw_x*k_tip_twp_y_d5 - k_tip_tB0Iw_x_d5*k_tip_twp_y + k_tip_tB0Iw_y*k_tip_twp_x_d5 + k_tip_tB0Iw_y_d5*k_tip_twp_x;
-  F[27] = k_tip_tN_z_d5;
+  F[25] = k_tip_tN_z_d5;
   const T k_tip_tB0Iw_x_d6 = (T(1)/T(1000))*k_tip_tEzx - n26;
   const T k_tip_tB0Iw_y_d6 = (T(1)/T(500))*k_tip_tEzy - n27;
   const T k_arm_tal_y_d6 = -k_arm_twp_x;
@@ -1126,12 +1122,12 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_ta_y_d6 = k_tip_tExy*k_tip_tx_x_d6 + k_tip_tEyy*k_tip_tx_y_d6 + k_tip_tEzy*k_tip_tx_z_d6;
   const T k_tip_tB0F_y_d6 = (T(1)/T(250))*c23*k_tip_tEzx - (T(1)/T(50))*k_tip_tEzy*k_tip_twp_x - (T(1)/T(50))*k_tip_tal_z_d6 + (T(2)/T(5))*k_tip_ta_y_d6 - n29*k_tip_tw_z;
   const T k_tip_tN_z_d6 = (T(1)/T(10000))*k_tip_tal_y_d6 - (T(1)/T(20))*k_tip_tB0F_y_d6 + (T(1)/T(400))*k_tip_tal_z_d6 + (T(1)/T(5000))*k_tip_tal_x_d6 + (T(3)/T(100))*k_tip_tB0F_x_d6 - k_tip_tB0Iw_x*k_tip_tEzy - k_tip_tB0Iw_x_d6*k_tip_twp_y + k_tip_tB0Iw_y*k_tip_tEzx + k_tip_tB0Iw_y_d6*k_tip_twp_x;
-  F[28] = k_tip_tN_z_d6;
+  F[26] = k_tip_tN_z_d6;
   const T k_tip_tal_y_d7 = -k_tip_twp_x;
   const T k_tip_tB0F_x_d7 = (T(1)/T(25))*k_tip_tw_z;
   const T k_tip_tB0F_y_d7 = (T(3)/T(125))*k_tip_tw_z;
   const T k_tip_tN_z_d7 = (T(1)/T(10000))*k_tip_tal_y_d7 + (T(1)/T(10000))*k_tip_twp_x - (T(1)/T(20))*k_tip_tB0F_y_d7 + (T(3)/T(100))*k_tip_tB0F_x_d7;
-  F[29] = T(1)/T(10) + k_tip_tN_z_d7;
+  F[27] = T(1)/T(10) + k_tip_tN_z_d7;
   const T k_arm_tB0F_x_d0 = (T(6)/T(5))*k_arm_ta_x_d0;
   const T k_arm_tB0F_y_d0 = (T(6)/T(5))*k_arm_ta_y_d0;
   const T k_tip_ta_z_d0 = -n0*k_arm_ta_x_d0 - n0*k_arm_ta_z_d0;
@@ -1141,7 +1137,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_tFp_x_d0 = -n0*k_tip_tB0F_z_d0 + k_tip_tB0F_x_d0*k_tip_tExx + k_tip_tB0F_y_d0*k_tip_tExy;
   const T k_tip_tFp_y_d0 = k_tip_tB0F_x_d0*k_tip_tEyx + k_tip_tB0F_y_d0*k_tip_tEyy;
   const T k_arm_tN_z_d0 = -(T(1)/T(4))*k_tip_tFp_x_d0 - (T(3)/T(25))*k_arm_tB0F_x_d0 + n15*k_tip_tFp_y_d0 + n30*k_arm_tB0F_y_d0 - n0*k_tip_tN_z_d0 + k_tip_tEzx*k_tip_tN_x_d0 + k_tip_tEzy*k_tip_tN_y_d0;
-  F[11] = k_arm_tN_z_d0;
+  F[10] = k_arm_tN_z_d0;
   const T k_arm_tB0Iw_x = -(T(1)/T(2000))*k_arm_tw_z + n31*k_arm_twp_y + n32*k_arm_twp_x;
   const T k_arm_tB0Iw_y = (T(1)/T(250))*k_arm_twp_y + n31*k_arm_twp_x + n33*k_arm_tw_z;
   const T k_arm_tB0Iw_x_d1 = n31*k_arm_twp_y_d1 + n32*k_arm_twp_x_d1;
@@ -1162,7 +1158,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_tFp_x_d1 = -n0*k_tip_tB0F_z_d1 + k_tip_tB0F_x_d1*k_tip_tExx + k_tip_tB0F_y_d1*k_tip_tExy;
   const T k_tip_tFp_y_d1 = k_tip_tB0F_x_d1*k_tip_tEyx + k_tip_tB0F_y_d1*k_tip_tEyy;
   const T k_arm_tN_z_d1 = -(T(1)/T(2000))*k_arm_tal_x_d1 - (T(1)/T(4))*k_tip_tFp_x_d1 - (T(3)/T(25))*k_arm_tB0F_x_d1 + n33*k_arm_tal_y_d1 + n15*k_tip_tFp_y_d1 + n30*k_arm_tB0F_y_d1 - n0*k_tip_tN_z_d1 - k_arm_tB0Iw_x*k_arm_twp_y_d1 - k_arm_tB0Iw_x_d1*k_arm_twp_y + k_arm_tB0Iw_y*k_arm_twp_x_d1 + k_arm_tB0Iw_y_d1*k_arm_twp_x + k_tip_tEzx*k_tip_tN_x_d1 + k_tip_tEzy*k_tip_tN_y_d1;
-  F[12] = k_arm_tN_z_d1;
+  F[11] = k_arm_tN_z_d1;
   const T k_tip_tal_x = dq_q3*k_tip_twp_y + k_arm_tal_x*k_tip_tExx + k_arm_tal_y*k_tip_tEyx + k_arm_tal_z*k_tip_tEzx;
   const T k_tip_tal_z = ddq[2] - n0*k_arm_tal_x - n0*k_arm_tal_z;
   const T k_tip_tal_y = -dq_q3*k_tip_twp_x + k_arm_tal_x*k_tip_tExy + k_arm_tal_y*k_tip_tEyy + k_arm_tal_z*k_tip_tEzy;
@@ -1181,7 +1177,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_tFp_x_d2 = -n0*k_tip_tB0F_z_d2 + k_tip_tB0F_x*k_tip_tExx_d2 + k_tip_tB0F_x_d2*k_tip_tExx + k_tip_tB0F_y*k_tip_tExy_d2 + k_tip_tB0F_y_d2*k_tip_tExy;
   const T k_tip_tFp_y_d2 = c8_d2*k_tip_tB0F_y + c9_d2*k_tip_tB0F_x + k_tip_tB0F_x_d2*k_tip_tEyx + k_tip_tB0F_y_d2*k_tip_tEyy;
   const T k_arm_tN_z_d2 = -(T(1)/T(4))*k_tip_tFp_x_d2 + n15*k_tip_tFp_y_d2 - n0*k_tip_tN_z_d2 + k_tip_tEzx*k_tip_tN_x_d2 + k_tip_tEzx_d2*k_tip_tN_x + k_tip_tEzy*k_tip_tN_y_d2 + k_tip_tEzy_d2*k_tip_tN_y;
-  F[13] = k_arm_tN_z_d2;
+  F[12] = k_arm_tN_z_d2;
   const T k_arm_tB0Iw_x_d5 = n31*k_arm_tEzy + n32*k_arm_tEzx + n42;
   const T k_arm_tB0Iw_y_d5 = (T(1)/T(250))*k_arm_tEzy - n43 + n31*k_arm_tEzx;
   const T k_arm_tB0F_x_d5 = (T(6)/T(5))*k_arm_ta_x_d5 + n44*k_arm_twp_x + n45*k_arm_tw_z - n38*k_arm_tal_y_d5 - n39*c17*k_arm_tEzy - n40*c16*k_arm_tEzx;
@@ -1194,7 +1190,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_tFp_x_d5 = -n0*k_tip_tB0F_z_d5 + k_tip_tB0F_x_d5*k_tip_tExx + k_tip_tB0F_y_d5*k_tip_tExy;
   const T k_tip_tFp_y_d5 = k_tip_tB0F_x_d5*k_tip_tEyx + k_tip_tB0F_y_d5*k_tip_tEyy;
   const T k_arm_tN_z_d5 = -(T(1)/T(2000))*k_arm_tal_x_d5 - (T(1)/T(4))*k_tip_tFp_x_d5 - (T(3)/T(25))*k_arm_tB0F_x_d5 + n33*k_arm_tal_y_d5 + n15*k_tip_tFp_y_d5 + n30*k_arm_tB0F_y_d5 - n0*k_tip_tN_z_d5 - k_arm_tB0Iw_x*k_arm_tEzy - k_arm_tB0Iw_x_d5*k_arm_twp_y + k_arm_tB0Iw_y*k_arm_tEzx + k_arm_tB0Iw_y_d5*k_arm_twp_x + k_tip_tEzx*k_tip_tN_x_d5 + k_tip_tEzy*k_tip_tN_y_d5;
-  F[16] = k_arm_tN_z_d5;
+  F[15] = k_arm_tN_z_d5;
   const T k_arm_tB0F_x_d6 = -n38*k_arm_tal_y_d6 - n38*k_arm_twp_x - n47*k_arm_tw_z;
   const T k_arm_tB0F_y_d6 = -(T(36)/T(125))*k_arm_tw_z;
   const T k_tip_tB0Iw_z_d6 = (T(1)/T(10000))*k_tip_tEzy + (T(1)/T(5000))*k_tip_tEzx - n48;
@@ -1205,14 +1201,14 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_tip_tFp_x_d6 = -n0*k_tip_tB0F_z_d6 + k_tip_tB0F_x_d6*k_tip_tExx + k_tip_tB0F_y_d6*k_tip_tExy;
   const T k_tip_tFp_y_d6 = k_tip_tB0F_x_d6*k_tip_tEyx + k_tip_tB0F_y_d6*k_tip_tEyy;
   const T k_arm_tN_z_d6 = -(T(1)/T(4))*k_tip_tFp_x_d6 - (T(3)/T(25))*k_arm_tB0F_x_d6 + n33*k_arm_tal_y_d6 + n33*k_arm_twp_x + n15*k_tip_tFp_y_d6 + n30*k_arm_tB0F_y_d6 - n0*k_tip_tN_z_d6 + k_tip_tEzx*k_tip_tN_x_d6 + k_tip_tEzy*k_tip_tN_y_d6;
-  F[17] = T(3)/T(10) + k_arm_tN_z_d6;
+  F[16] = T(3)/T(10) + k_arm_tN_z_d6;
   const T k_tip_tB0F_z_d7 = (T(1)/T(50))*k_tip_tal_y_d7 - (T(1)/T(50))*k_tip_twp_x - (T(3)/T(125))*k_tip_twp_y;
   const T k_tip_tN_x_d7 = -(T(1)/T(10000))*k_tip_tw_z - (T(3)/T(100))*k_tip_tB0F_z_d7 + (T(7)/T(2000))*k_tip_twp_y - k_tip_tB0Iw_y;
   const T k_tip_tN_y_d7 = (T(1)/T(20))*k_tip_tB0F_z_d7 - (T(1)/T(400))*k_tip_twp_x + (T(1)/T(500))*k_tip_tal_y_d7 + (T(1)/T(5000))*k_tip_tw_z + k_tip_tB0Iw_x;
   const T k_tip_tFp_x_d7 = -n0*k_tip_tB0F_z_d7 + k_tip_tB0F_x_d7*k_tip_tExx + k_tip_tB0F_y_d7*k_tip_tExy;
   const T k_tip_tFp_y_d7 = k_tip_tB0F_x_d7*k_tip_tEyx + k_tip_tB0F_y_d7*k_tip_tEyy;
   const T k_arm_tN_z_d7 = -(T(1)/T(4))*k_tip_tFp_x_d7 + n15*k_tip_tFp_y_d7 - n0*k_tip_tN_z_d7 + k_tip_tEzx*k_tip_tN_x_d7 + k_tip_tEzy*k_tip_tN_y_d7;
-  F[18] = k_arm_tN_z_d7;
+  F[17] = k_arm_tN_z_d7;
   const T c10 = sin_q_q5;
   const T k_hand_tExx = n51*c10;
   const T c11 = cos_q_q5;
@@ -1231,7 +1227,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_hand_ta_y_d0 = k_bracket_ta_y_d0*k_hand_tEyy + k_bracket_ta_z_d0*k_hand_tEzy + k_hand_tExy*k_slider_ta_y_d0;
   const T k_hand_tB0F_y_d0 = (T(3)/T(5))*k_hand_ta_y_d0;
   const T k_hand_tN_z_d0 = -n62*k_hand_tB0F_x_d0 + n63*k_hand_tB0F_y_d0;
-  F[44] = k_hand_tN_z_d0;
+  F[40] = k_hand_tN_z_d0;
   const T k_slider_tx_x_d3 = -n64*ddq[0] + n65*dq_q1*dq_q1;
   const T k_slider_tx_y_d3 = -n64*dq_q1*dq_q1 - n65*ddq[0];
   const T k_slider_ta_y_d3 = n56*k_slider_tx_x_d3 + n57*k_slider_tx_y_d3;
@@ -1244,7 +1240,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_hand_ta_y_d3 = k_bracket_ta_y_d3*k_hand_tEyy + k_bracket_ta_z_d3*k_hand_tEzy + k_hand_tExy*k_slider_ta_y_d3;
   const T k_hand_tB0F_y_d3 = (T(3)/T(5))*k_hand_ta_y_d3;
   const T k_hand_tN_z_d3 = -n62*k_hand_tB0F_x_d3 + n63*k_hand_tB0F_y_d3;
-  F[47] = k_hand_tN_z_d3;
+  F[43] = k_hand_tN_z_d3;
   const T k_slider_twp_y = -n66*dq_q1;
   const T k_slider_twp_x = n67*dq_q1;
   const T k_slider_twp_z = n68*dq_q1;
@@ -1299,7 +1295,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c28 = n80*k_hand_twp_x - n87*k_hand_tw_z;
   const T k_hand_tB0F_y_d4 = (T(3)/T(5))*k_hand_ta_y_d4 + n83*k_hand_tal_x_d4 + n88*c27*k_hand_twp_x_d4 + n88*c28*k_hand_twp_y_d4;
   const T k_hand_tN_z_d4 = n75*k_hand_tal_y_d4 - n62*k_hand_tB0F_x_d4 + n63*k_hand_tB0F_y_d4 + n74*k_hand_tal_x_d4 - k_hand_tB0Iw_x*k_hand_twp_y_d4 - k_hand_tB0Iw_x_d4*k_hand_twp_y + k_hand_tB0Iw_y*k_hand_twp_x_d4 + k_hand_tB0Iw_y_d4*k_hand_twp_x;
-  F[48] = k_hand_tN_z_d4;
+  F[44] = k_hand_tN_z_d4;
   const T k_hand_twp_x_d5 = -n66*k_hand_tExx - n89*k_hand_tEyx + n90*k_hand_tEzx;
   const T k_hand_twp_y_d5 = -n66*k_hand_tExy - n89*k_hand_tEyy + n90*k_hand_tEzy;
   const T k_hand_tB0Iw_x_d5 = -n72*k_hand_twp_y_d5 + n73*k_hand_twp_x_d5 - n91;
@@ -1324,7 +1320,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_hand_ta_y_d5 = k_hand_tExy*k_hand_tx_x_d5 + k_hand_tEyy*k_hand_tx_y_d5 + k_hand_tEzy*k_hand_tx_z_d5;
   const T k_hand_tB0F_y_d5 = (T(3)/T(5))*k_hand_ta_y_d5 + n113*k_hand_twp_y + n115*k_hand_tw_z + n83*k_hand_tal_x_d5 + n88*c27*k_hand_twp_x_d5 + n88*c28*k_hand_twp_y_d5;
   const T k_hand_tN_z_d5 = n75*k_hand_tal_y_d5 - n62*k_hand_tB0F_x_d5 + n63*k_hand_tB0F_y_d5 + n74*k_hand_tal_x_d5 - k_hand_tB0Iw_x*k_hand_twp_y_d5 - k_hand_tB0Iw_x_d5*k_hand_twp_y + k_hand_tB0Iw_y*k_hand_twp_x_d5 + k_hand_tB0Iw_y_d5*k_hand_twp_x;
-  F[49] = k_hand_tN_z_d5;
+  F[45] = k_hand_tN_z_d5;
   const T k_slider_ta_y_d8 = -T(2)*k_slider_twp_x;
   const T k_slider_ta_x_d8 = T(2)*k_slider_twp_y;
   const T k_bracket_ta_y_d8 = -(T(4)/T(5))*k_slider_ta_x_d8;
@@ -1334,12 +1330,12 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_hand_ta_y_d8 = k_bracket_ta_y_d8*k_hand_tEyy + k_bracket_ta_z_d8*k_hand_tEzy + k_hand_tExy*k_slider_ta_y_d8;
   const T k_hand_tB0F_y_d8 = (T(3)/T(5))*k_hand_ta_y_d8;
   const T k_hand_tN_z_d8 = -n62*k_hand_tB0F_x_d8 + n63*k_hand_tB0F_y_d8;
-  F[52] = k_hand_tN_z_d8;
+  F[48] = k_hand_tN_z_d8;
   const T k_hand_tal_y_d9 = -k_hand_twp_x;
   const T k_hand_tB0F_x_d9 = -n83*k_hand_tal_y_d9 - n83*k_hand_twp_x - n116*k_hand_tw_z;
   const T k_hand_tB0F_y_d9 = -n117*k_hand_tw_z;
   const T k_hand_tN_z_d9 = n75*k_hand_tal_y_d9 + n75*k_hand_twp_x - n62*k_hand_tB0F_x_d9 + n63*k_hand_tB0F_y_d9;
-  F[53] = T(1)/T(20) + k_hand_tN_z_d9;
+  F[49] = T(1)/T(20) + k_hand_tN_z_d9;
   const T k_hand_tal_y = -dq_q5*k_hand_twp_x + k_bracket_tal_y*k_hand_tEyy + k_bracket_tal_z*k_hand_tEzy + k_hand_tExy*k_slider_tal_y;
   const T k_hand_tal_z = ddq[4] - n69*k_slider_tal_y + n70*k_bracket_tal_z + n71*k_bracket_tal_y;
   const T k_hand_ta_x = k_hand_tExx*k_hand_tx_x + k_hand_tEyx*k_hand_tx_y + k_hand_tEzx*k_hand_tx_z;
@@ -1353,7 +1349,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_hand_tFp_y_d4 = n71*k_hand_tB0F_z_d4 + k_hand_tB0F_x*k_hand_tEyx_d4 + k_hand_tB0F_x_d4*k_hand_tEyx + k_hand_tB0F_y*k_hand_tEyy_d4 + k_hand_tB0F_y_d4*k_hand_tEyy;
   const T k_hand_tFp_z_d4 = n70*k_hand_tB0F_z_d4 + k_hand_tB0F_x*k_hand_tEzx_d4 + k_hand_tB0F_x_d4*k_hand_tEzx + k_hand_tB0F_y*k_hand_tEzy_d4 + k_hand_tB0F_y_d4*k_hand_tEzy;
   const T k_bracket_tFp_z_d4 = (T(3)/T(5))*k_hand_tFp_y_d4 + (T(4)/T(5))*k_hand_tFp_z_d4;
-  F[37] = k_bracket_tFp_z_d4;
+  F[34] = k_bracket_tFp_z_d4;
   const T k_bracket_tB0F_y_d8 = (T(3)/T(10))*k_bracket_ta_y_d8;
   const T k_hand_ta_z_d8 = -n69*k_slider_ta_y_d8 + n70*k_bracket_ta_z_d8 + n71*k_bracket_ta_y_d8;
   const T k_hand_tB0F_z_d8 = (T(3)/T(5))*k_hand_ta_z_d8;
@@ -1363,12 +1359,12 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_hand_tFp_z_d8 = n70*k_hand_tB0F_z_d8 + k_hand_tB0F_x_d8*k_hand_tEzx + k_hand_tB0F_y_d8*k_hand_tEzy;
   const T k_bracket_tF_z_d8 = k_bracket_tB0F_z_d8 + k_hand_tFp_z_d8;
   const T k_bracket_tFp_z_d8 = (T(3)/T(5))*k_bracket_tF_y_d8 + (T(4)/T(5))*k_bracket_tF_z_d8;
-  F[41] = T(2) + k_bracket_tFp_z_d8;
+  F[38] = T(2) + k_bracket_tFp_z_d8;
   const T k_hand_tB0F_z_d9 = n117*k_hand_twp_y - n119*k_hand_tal_y_d9 + n119*k_hand_twp_x;
   const T k_hand_tFp_y_d9 = n71*k_hand_tB0F_z_d9 + k_hand_tB0F_x_d9*k_hand_tEyx + k_hand_tB0F_y_d9*k_hand_tEyy;
   const T k_hand_tFp_z_d9 = n70*k_hand_tB0F_z_d9 + k_hand_tB0F_x_d9*k_hand_tEzx + k_hand_tB0F_y_d9*k_hand_tEzy;
   const T k_bracket_tFp_z_d9 = (T(3)/T(5))*k_hand_tFp_y_d9 + (T(4)/T(5))*k_hand_tFp_z_d9;
-  F[42] = k_bracket_tFp_z_d9;
+  F[39] = k_bracket_tFp_z_d9;
   const T k_slider_tB0F_z_d0 = (T(4)/T(5))*k_slider_ta_z_d0;
   const T k_bracket_tB0F_y_d0 = (T(3)/T(10))*k_bracket_ta_y_d0;
   const T k_hand_ta_z_d0 = -n69*k_slider_ta_y_d0 + n70*k_bracket_ta_z_d0 + n71*k_bracket_ta_y_d0;
@@ -1380,7 +1376,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_bracket_tF_z_d0 = k_bracket_tB0F_z_d0 + k_hand_tFp_z_d0;
   const T k_bracket_tFp_z_d0 = (T(3)/T(5))*k_bracket_tF_y_d0 + (T(4)/T(5))*k_bracket_tF_z_d0;
   const T k_slider_tF_z_d0 = k_bracket_tFp_z_d0 + k_slider_tB0F_z_d0;
-  F[33] = k_slider_tF_z_d0;
+  F[30] = k_slider_tF_z_d0;
   const T k_slider_tB0F_z_d3 = (T(4)/T(5))*k_slider_ta_z_d3;
   const T k_bracket_tB0F_y_d3 = (T(3)/T(10))*k_bracket_ta_y_d3;
   const T k_hand_ta_z_d3 = -n69*k_slider_ta_y_d3 + n70*k_bracket_ta_z_d3 + n71*k_bracket_ta_y_d3;
@@ -1392,7 +1388,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_bracket_tF_z_d3 = k_bracket_tB0F_z_d3 + k_hand_tFp_z_d3;
   const T k_bracket_tFp_z_d3 = (T(3)/T(5))*k_bracket_tF_y_d3 + (T(4)/T(5))*k_bracket_tF_z_d3;
   const T k_slider_tF_z_d3 = k_bracket_tFp_z_d3 + k_slider_tB0F_z_d3;
-  F[36] = T(40) + k_slider_tF_z_d3;
+  F[33] = T(40) + k_slider_tF_z_d3;
   const T k_slider_tB0F_z_d5 = (T(4)/T(5))*k_slider_ta_z_d5 + n123*k_slider_twp_z + n124*k_slider_twp_y - n125*k_slider_twp_x;
   const T k_bracket_tB0F_y_d5 = (T(3)/T(10))*k_bracket_ta_y_d5 + n126*k_bracket_twp_y + n127*k_slider_twp_y - n128*k_bracket_twp_z;
   const T k_hand_ta_z_d5 = -n69*k_hand_tx_x_d5 + n70*k_hand_tx_z_d5 + n71*k_hand_tx_y_d5;
@@ -1404,7 +1400,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_bracket_tF_z_d5 = k_bracket_tB0F_z_d5 + k_hand_tFp_z_d5;
   const T k_bracket_tFp_z_d5 = (T(3)/T(5))*k_bracket_tF_y_d5 + (T(4)/T(5))*k_bracket_tF_z_d5;
   const T k_slider_tF_z_d5 = k_bracket_tFp_z_d5 + k_slider_tB0F_z_d5;
-  F[38] = k_slider_tF_z_d5;
+  F[35] = k_slider_tF_z_d5;
   const T k_base_tB0F_x_d0 = (T(5)/T(2))*k_base_ta_x_d0;
   const T k_base_tB0F_y_d0 = (T(5)/T(2))*k_base_ta_y_d0;
   const T k_arm_tB0F_z_d0 = (T(6)/T(5))*k_arm_ta_z_d0;
@@ -1632,62 +1628,11 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T L[25];
   T D[5];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  T F[55];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  J[0] = T(0);
-  J[1] = T(0);
-  J[2] = T(0);
-  J[3] = T(0);
-  J[4] = T(0);
-  J[5] = T(1);
-  J[6] = T(0);
-  J[7] = T(0);
-  J[8] = T(0);
-  J[9] = T(0);
-  J[10] = T(0);
-  J[11] = T(0);
-  J[12] = T(0);
-  J[13] = T(0);
-  J[14] = T(0);
-  J[15] = T(0);
-  J[16] = T(1);
-  J[17] = T(0);
-  J[18] = T(0);
-  J[19] = T(0);
-  J[20] = T(0);
-  J[21] = T(0);
-  J[22] = T(0);
-  J[23] = T(0);
-  J[24] = T(0);
-  J[25] = T(0);
-  J[26] = T(0);
-  J[27] = T(1);
-  J[28] = T(0);
-  J[29] = T(0);
-  J[30] = T(0);
-  J[31] = T(0);
-  J[32] = T(0);
-  J[33] = T(0);
-  J[34] = T(0);
-  J[35] = T(0);
-  J[36] = T(0);
-  J[37] = T(0);
-  J[38] = T(1);
-  J[39] = T(0);
-  J[40] = T(0);
-  J[41] = T(0);
-  J[42] = T(0);
-  J[43] = T(0);
-  J[44] = T(0);
-  J[45] = T(0);
-  J[46] = T(0);
-  J[47] = T(0);
-  J[48] = T(0);
-  J[49] = T(1);
+  for (std::size_t i = 0; i < 50; ++i) J[i] = T(0);
+  for (std::size_t i = 0; i < 5; ++i) J[i * 10 + 5 + i] = T(1);
   T* rows = J + 50;
-  for (std::size_t i = 0; i < 5; ++i)
-    for (std::size_t j = 0; j < 10; ++j) rows[i * 10 + j] = -F[i * 11 + j];
-  detail::ldlt_solve_rows<10>(L, D, rows);
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::ldlt_solve_rows<10, true>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -1720,63 +1665,17 @@ template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
   const T ddq[5] = {};
-  T F[55];
+  T F[50];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[5];
-  P[1] = F[6];
-  P[2] = F[7];
-  P[3] = F[8];
-  P[4] = F[9];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  Q[3] = F[3];
-  Q[4] = F[4];
-  B[0] = -F[10];
-  P[5] = F[16];
-  P[6] = F[17];
-  P[7] = F[18];
-  P[8] = F[19];
-  P[9] = F[20];
-  Q[5] = F[11];
-  Q[6] = F[12];
-  Q[7] = F[13];
-  Q[8] = F[14];
-  Q[9] = F[15];
-  B[1] = -F[21];
-  P[10] = F[27];
-  P[11] = F[28];
-  P[12] = F[29];
-  P[13] = F[30];
-  P[14] = F[31];
-  Q[10] = F[22];
-  Q[11] = F[23];
-  Q[12] = F[24];
-  Q[13] = F[25];
-  Q[14] = F[26];
-  B[2] = -F[32];
-  P[15] = F[38];
-  P[16] = F[39];
-  P[17] = F[40];
-  P[18] = F[41];
-  P[19] = F[42];
-  Q[15] = F[33];
-  Q[16] = F[34];
-  Q[17] = F[35];
-  Q[18] = F[36];
-  Q[19] = F[37];
-  B[3] = -F[43];
-  P[20] = F[49];
-  P[21] = F[50];
-  P[22] = F[51];
-  P[23] = F[52];
-  P[24] = F[53];
-  Q[20] = F[44];
-  Q[21] = F[45];
-  Q[22] = F[46];
-  Q[23] = F[47];
-  Q[24] = F[48];
-  B[4] = -F[54];
+  for (std::size_t i = 0; i < 5; ++i) {
+    for (std::size_t j = 0; j < 5; ++j) P[i * 5 + j] = F[i * 10 + 5 + j];
+    for (std::size_t j = 0; j < 5; ++j) Q[i * 5 + j] = F[i * 10 + j];
+  }
+  B[0] = T(0);
+  B[1] = T(2);
+  B[2] = T(0);
+  B[3] = T(0);
+  B[4] = T(0);
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

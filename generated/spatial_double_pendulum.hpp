@@ -181,8 +181,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (4xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -198,7 +199,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
   }
   for (std::size_t i = 0; i < 4; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -425,8 +426,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
-/// tangent sweep through the frames' recursion). ddq: 4; F: 4x9, row-major.
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// tangent sweep through the frames' recursion). ddq: 4; F: 4x8, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -489,9 +490,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_lower_Rzy = c4*c6*k_upper_Rzy + c7*k_upper_Rzz;
   const T k_lower_Rzz = -c4*c7*k_upper_Rzy + c6*k_upper_Rzz;
   const T k_lower_W_a1_x = c5*k_upper_W_a1_y;
-  const T k_lower_V_a1_x = -k_upper_Rxx*k_upper_W_a1_y*p_l;
   const T k_lower_W_a1_y = c4*c6*k_upper_W_a1_y + c7*k_upper_W_a1_z;
-  const T k_lower_V_b1_x = k_upper_Rxy*p_l;
   const T k_lower_omega_x = c4*dq_b1 + c5*k_upper_omega_y + dq_b2;
   const T k_lower_omega_y = c4*c6*k_upper_omega_y - c5*c6*dq_b1 + c7*dq_a2 + c7*k_upper_omega_z;
   const T k_lower_omega_z = -c4*c7*k_upper_omega_y + c5*c7*dq_b1 + c6*dq_a2 + c6*k_upper_omega_z;
@@ -793,38 +792,34 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_upper_N_z_d5 = (T(1)/T(2))*k_rod1_cm_F_x_d5*k_upper_Ryz*p_l - (T(1)/T(2))*k_rod1_cm_F_y_d5*k_upper_Rxz*p_l + k_lower_N_z_d5 + k_rod1_cm_N_z_d5 + k_rod2_cm_F_x_d5*k_upper_Ryz*p_l - k_rod2_cm_F_y_d5*k_upper_Rxz*p_l;
   const T k_upper_N_z_d6 = k_lower_N_z_d6 + k_rod2_cm_F_x_d6*k_upper_Ryz*p_l - k_rod2_cm_F_y_d6*k_upper_Rxz*p_l;
   const T k_upper_N_z_d7 = k_lower_N_z_d7 + k_rod2_cm_F_x_d7*k_upper_Ryz*p_l - k_rod2_cm_F_y_d7*k_upper_Rxz*p_l;
-  F[8] = k_lower_Rxx*k_lower_W_a1_y*p_l - k_lower_Rxy*k_lower_W_a1_x*p_l - k_lower_V_a1_x;
-  F[9] = c0_d0*k_upper_N_x + c2_d0*k_upper_N_y + k_lower_Rxx_d0*k_lower_W_b1_y*p_l*u_push - k_lower_Rxy_d0*k_lower_W_b1_x*p_l*u_push - k_lower_V_b1_x_d0*u_push + k_upper_N_x_d0*k_upper_Rxx + k_upper_N_y_d0*k_upper_Ryx;
-  F[10] = k_lower_Rxx_d1*k_lower_W_b1_y*p_l*u_push - k_lower_Rxy_d1*k_lower_W_b1_x*p_l*u_push - k_lower_V_b1_x_d1*u_push + k_upper_N_x_d1*k_upper_Rxx + k_upper_N_y_d1*k_upper_Ryx;
-  F[11] = k_lower_Rxx*k_lower_W_b1_y_d2*p_l*u_push + k_lower_Rxx_d2*k_lower_W_b1_y*p_l*u_push - k_lower_Rxy*k_lower_W_b1_x_d2*p_l*u_push - k_lower_Rxy_d2*k_lower_W_b1_x*p_l*u_push + k_upper_N_x_d2*k_upper_Rxx + k_upper_N_y_d2*k_upper_Ryx;
-  F[12] = k_lower_Rxx*k_lower_W_b1_y_d3*p_l*u_push - k_lower_Rxy_d3*k_lower_W_b1_x*p_l*u_push + k_upper_N_x_d3*k_upper_Rxx + k_upper_N_y_d3*k_upper_Ryx;
-  F[13] = k_upper_N_x_d4*k_upper_Rxx + k_upper_N_y_d4*k_upper_Ryx;
-  F[14] = k_upper_N_x_d5*k_upper_Rxx + k_upper_N_y_d5*k_upper_Ryx;
-  F[15] = k_upper_N_x_d6*k_upper_Rxx + k_upper_N_y_d6*k_upper_Ryx;
-  F[16] = k_upper_N_x_d7*k_upper_Rxx + k_upper_N_y_d7*k_upper_Ryx;
-  F[17] = k_lower_Rxx*k_lower_W_b1_y*p_l - k_lower_Rxy*k_lower_W_b1_x*p_l - k_lower_V_b1_x;
-  F[26] = k_lower_Rxx*k_lower_W_a2_y*p_l;
-  F[27] = k_lower_N_x*k_lower_Rxx_d0 + k_lower_N_x_d0*k_lower_Rxx + k_lower_N_y*k_lower_Ryx_d0 + k_lower_N_y_d0*k_lower_Ryx + k_lower_N_z_d0*k_lower_Rzx - k_lower_Rxy_d0*p_l*u_push;
-  F[28] = k_lower_N_x*k_lower_Rxx_d1 + k_lower_N_x_d1*k_lower_Rxx + k_lower_N_y*k_lower_Ryx_d1 + k_lower_N_y_d1*k_lower_Ryx + k_lower_N_z*k_lower_Rzx_d1 + k_lower_N_z_d1*k_lower_Rzx - k_lower_Rxy_d1*p_l*u_push;
-  F[29] = k_lower_N_x*k_lower_Rxx_d2 + k_lower_N_x_d2*k_lower_Rxx + k_lower_N_y*k_lower_Ryx_d2 + k_lower_N_y_d2*k_lower_Ryx + k_lower_N_z*k_lower_Rzx_d2 + k_lower_N_z_d2*k_lower_Rzx - k_lower_Rxy_d2*p_l*u_push;
-  F[30] = k_lower_N_x_d3*k_lower_Rxx + k_lower_N_y_d3*k_lower_Ryx + k_lower_N_z_d3*k_lower_Rzx - k_lower_Rxy_d3*p_l*u_push;
-  F[31] = k_lower_N_x_d4*k_lower_Rxx + k_lower_N_y_d4*k_lower_Ryx + k_lower_N_z_d4*k_lower_Rzx;
-  F[32] = k_lower_N_x_d5*k_lower_Rxx + k_lower_N_y_d5*k_lower_Ryx + k_lower_N_z_d5*k_lower_Rzx;
-  F[33] = k_lower_N_x_d6*k_lower_Rxx + k_lower_N_y_d6*k_lower_Ryx + k_lower_N_z_d6*k_lower_Rzx;
-  F[34] = k_lower_N_x_d7*k_lower_Rxx + k_lower_N_y_d7*k_lower_Ryx + k_lower_N_z_d7*k_lower_Rzx;
-  F[35] = -k_lower_Rxy*p_l;
+  F[8] = c0_d0*k_upper_N_x + c2_d0*k_upper_N_y + k_lower_Rxx_d0*k_lower_W_b1_y*p_l*u_push - k_lower_Rxy_d0*k_lower_W_b1_x*p_l*u_push - k_lower_V_b1_x_d0*u_push + k_upper_N_x_d0*k_upper_Rxx + k_upper_N_y_d0*k_upper_Ryx;
+  F[9] = k_lower_Rxx_d1*k_lower_W_b1_y*p_l*u_push - k_lower_Rxy_d1*k_lower_W_b1_x*p_l*u_push - k_lower_V_b1_x_d1*u_push + k_upper_N_x_d1*k_upper_Rxx + k_upper_N_y_d1*k_upper_Ryx;
+  F[10] = k_lower_Rxx*k_lower_W_b1_y_d2*p_l*u_push + k_lower_Rxx_d2*k_lower_W_b1_y*p_l*u_push - k_lower_Rxy*k_lower_W_b1_x_d2*p_l*u_push - k_lower_Rxy_d2*k_lower_W_b1_x*p_l*u_push + k_upper_N_x_d2*k_upper_Rxx + k_upper_N_y_d2*k_upper_Ryx;
+  F[11] = k_lower_Rxx*k_lower_W_b1_y_d3*p_l*u_push - k_lower_Rxy_d3*k_lower_W_b1_x*p_l*u_push + k_upper_N_x_d3*k_upper_Rxx + k_upper_N_y_d3*k_upper_Ryx;
+  F[12] = k_upper_N_x_d4*k_upper_Rxx + k_upper_N_y_d4*k_upper_Ryx;
+  F[13] = k_upper_N_x_d5*k_upper_Rxx + k_upper_N_y_d5*k_upper_Ryx;
+  F[14] = k_upper_N_x_d6*k_upper_Rxx + k_upper_N_y_d6*k_upper_Ryx;
+  F[15] = k_upper_N_x_d7*k_upper_Rxx + k_upper_N_y_d7*k_upper_Ryx;
+  F[24] = k_lower_N_x*k_lower_Rxx_d0 + k_lower_N_x_d0*k_lower_Rxx + k_lower_N_y*k_lower_Ryx_d0 + k_lower_N_y_d0*k_lower_Ryx + k_lower_N_z_d0*k_lower_Rzx - k_lower_Rxy_d0*p_l*u_push;
+  F[25] = k_lower_N_x*k_lower_Rxx_d1 + k_lower_N_x_d1*k_lower_Rxx + k_lower_N_y*k_lower_Ryx_d1 + k_lower_N_y_d1*k_lower_Ryx + k_lower_N_z*k_lower_Rzx_d1 + k_lower_N_z_d1*k_lower_Rzx - k_lower_Rxy_d1*p_l*u_push;
+  F[26] = k_lower_N_x*k_lower_Rxx_d2 + k_lower_N_x_d2*k_lower_Rxx + k_lower_N_y*k_lower_Ryx_d2 + k_lower_N_y_d2*k_lower_Ryx + k_lower_N_z*k_lower_Rzx_d2 + k_lower_N_z_d2*k_lower_Rzx - k_lower_Rxy_d2*p_l*u_push;
+  F[27] = k_lower_N_x_d3*k_lower_Rxx + k_lower_N_y_d3*k_lower_Ryx + k_lower_N_z_d3*k_lower_Rzx - k_lower_Rxy_d3*p_l*u_push;
+  F[28] = k_lower_N_x_d4*k_lower_Rxx + k_lower_N_y_d4*k_lower_Ryx + k_lower_N_z_d4*k_lower_Rzx;
+  F[29] = k_lower_N_x_d5*k_lower_Rxx + k_lower_N_y_d5*k_lower_Ryx + k_lower_N_z_d5*k_lower_Rzx;
+  F[30] = k_lower_N_x_d6*k_lower_Rxx + k_lower_N_y_d6*k_lower_Ryx + k_lower_N_z_d6*k_lower_Rzx;
+  F[31] = k_lower_N_x_d7*k_lower_Rxx + k_lower_N_y_d7*k_lower_Ryx + k_lower_N_z_d7*k_lower_Rzx;
   const T c51 = c6*k_lower_Rzz + c7*k_lower_Rzy;
   const T c52 = c6*k_lower_Rxz + c7*k_lower_Rxy;
   const T c53 = c1*k_upper_Rxz + c3*k_upper_Rxy;
   const T c54 = c6*k_lower_Ryz + c7*k_lower_Ryy;
-  F[18] = c51*k_lower_N_z_d0 + c52*k_lower_N_x_d0 + c54*k_lower_N_y_d0 + c6*k_lower_N_x*k_lower_Rxz_d0 + c6*k_lower_N_y*k_lower_Ryz_d0 + c7*k_lower_N_x*k_lower_Rxy_d0 + c7*k_lower_N_y*k_lower_Ryy_d0 + k_lower_Rxx_d0*k_lower_W_a2_y*p_l*u_push;
-  F[19] = c51*k_lower_N_z_d1 + c52*k_lower_N_x_d1 + c54*k_lower_N_y_d1 + c6*k_lower_N_x*k_lower_Rxz_d1 + c6*k_lower_N_y*k_lower_Ryz_d1 + c6*k_lower_N_z*k_lower_Rzz_d1 + c7*k_lower_N_x*k_lower_Rxy_d1 + c7*k_lower_N_y*k_lower_Ryy_d1 + c7*k_lower_N_z*k_lower_Rzy_d1 + k_lower_Rxx_d1*k_lower_W_a2_y*p_l*u_push;
-  F[20] = c51*k_lower_N_z_d2 + c52*k_lower_N_x_d2 + c54*k_lower_N_y_d2 + c6*k_lower_N_x*k_lower_Rxz_d2 + c6*k_lower_N_y*k_lower_Ryz_d2 + c6*k_lower_N_z*k_lower_Rzz_d2 + c7*k_lower_N_x*k_lower_Rxy_d2 + c7*k_lower_N_y*k_lower_Ryy_d2 + c7*k_lower_N_z*k_lower_Rzy_d2 + k_lower_Rxx_d2*k_lower_W_a2_y*p_l*u_push;
-  F[21] = (k_lower_N_x*k_lower_Rxy + k_lower_N_y*k_lower_Ryy + k_lower_N_z*k_lower_Rzy)*c7_d3 + (k_lower_N_x*k_lower_Rxz + k_lower_N_y*k_lower_Ryz + k_lower_N_z*k_lower_Rzz)*c6_d3 + c51*k_lower_N_z_d3 + c52*k_lower_N_x_d3 + c54*k_lower_N_y_d3 + c6*k_lower_N_x*k_lower_Rxz_d3 + c6*k_lower_N_y*k_lower_Ryz_d3 + c6*k_lower_N_z*k_lower_Rzz_d3 + c7*k_lower_N_x*k_lower_Rxy_d3 + c7*k_lower_N_y*k_lower_Ryy_d3 + c7*k_lower_N_z*k_lower_Rzy_d3 + k_lower_Rxx*k_lower_W_a2_y_d3*p_l*u_push;
-  F[22] = c51*k_lower_N_z_d4 + c52*k_lower_N_x_d4 + c54*k_lower_N_y_d4;
-  F[23] = c51*k_lower_N_z_d5 + c52*k_lower_N_x_d5 + c54*k_lower_N_y_d5;
-  F[24] = c51*k_lower_N_z_d6 + c52*k_lower_N_x_d6 + c54*k_lower_N_y_d6;
-  F[25] = c51*k_lower_N_z_d7 + c52*k_lower_N_x_d7 + c54*k_lower_N_y_d7;
+  F[16] = c51*k_lower_N_z_d0 + c52*k_lower_N_x_d0 + c54*k_lower_N_y_d0 + c6*k_lower_N_x*k_lower_Rxz_d0 + c6*k_lower_N_y*k_lower_Ryz_d0 + c7*k_lower_N_x*k_lower_Rxy_d0 + c7*k_lower_N_y*k_lower_Ryy_d0 + k_lower_Rxx_d0*k_lower_W_a2_y*p_l*u_push;
+  F[17] = c51*k_lower_N_z_d1 + c52*k_lower_N_x_d1 + c54*k_lower_N_y_d1 + c6*k_lower_N_x*k_lower_Rxz_d1 + c6*k_lower_N_y*k_lower_Ryz_d1 + c6*k_lower_N_z*k_lower_Rzz_d1 + c7*k_lower_N_x*k_lower_Rxy_d1 + c7*k_lower_N_y*k_lower_Ryy_d1 + c7*k_lower_N_z*k_lower_Rzy_d1 + k_lower_Rxx_d1*k_lower_W_a2_y*p_l*u_push;
+  F[18] = c51*k_lower_N_z_d2 + c52*k_lower_N_x_d2 + c54*k_lower_N_y_d2 + c6*k_lower_N_x*k_lower_Rxz_d2 + c6*k_lower_N_y*k_lower_Ryz_d2 + c6*k_lower_N_z*k_lower_Rzz_d2 + c7*k_lower_N_x*k_lower_Rxy_d2 + c7*k_lower_N_y*k_lower_Ryy_d2 + c7*k_lower_N_z*k_lower_Rzy_d2 + k_lower_Rxx_d2*k_lower_W_a2_y*p_l*u_push;
+  F[19] = (k_lower_N_x*k_lower_Rxy + k_lower_N_y*k_lower_Ryy + k_lower_N_z*k_lower_Rzy)*c7_d3 + (k_lower_N_x*k_lower_Rxz + k_lower_N_y*k_lower_Ryz + k_lower_N_z*k_lower_Rzz)*c6_d3 + c51*k_lower_N_z_d3 + c52*k_lower_N_x_d3 + c54*k_lower_N_y_d3 + c6*k_lower_N_x*k_lower_Rxz_d3 + c6*k_lower_N_y*k_lower_Ryz_d3 + c6*k_lower_N_z*k_lower_Rzz_d3 + c7*k_lower_N_x*k_lower_Rxy_d3 + c7*k_lower_N_y*k_lower_Ryy_d3 + c7*k_lower_N_z*k_lower_Rzy_d3 + k_lower_Rxx*k_lower_W_a2_y_d3*p_l*u_push;
+  F[20] = c51*k_lower_N_z_d4 + c52*k_lower_N_x_d4 + c54*k_lower_N_y_d4;
+  F[21] = c51*k_lower_N_z_d5 + c52*k_lower_N_x_d5 + c54*k_lower_N_y_d5;
+  F[22] = c51*k_lower_N_z_d6 + c52*k_lower_N_x_d6 + c54*k_lower_N_y_d6;
+  F[23] = c51*k_lower_N_z_d7 + c52*k_lower_N_x_d7 + c54*k_lower_N_y_d7;
   const T c55 = c1*k_upper_Rzz + c3*k_upper_Rzy;
   const T c56 = c1*k_upper_Ryz + c3*k_upper_Ryy;
   F[0] = c1*k_upper_N_x*k_upper_Rxz_d0 + c1*k_upper_N_y*k_upper_Ryz_d0 + c3*k_upper_N_x*k_upper_Rxy_d0 + c3*k_upper_N_y*k_upper_Ryy_d0 + c53*k_upper_N_x_d0 + c55*k_upper_N_z_d0 + c56*k_upper_N_y_d0 + k_lower_Rxx_d0*k_lower_W_a1_y*p_l*u_push - k_lower_Rxy_d0*k_lower_W_a1_x*p_l*u_push - k_lower_V_a1_x_d0*u_push;
@@ -848,8 +843,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T L[16];
   T D[4];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  T F[36];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -883,9 +876,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[30] = T(0);
   J[31] = T(1);
   T* rows = J + 32;
-  for (std::size_t i = 0; i < 4; ++i)
-    for (std::size_t j = 0; j < 8; ++j) rows[i * 8 + j] = -F[i * 9 + j];
-  detail::ldlt_solve_rows<8>(L, D, rows);
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::ldlt_solve_rows<8, true>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.
@@ -955,45 +947,57 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
+  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
+  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
+  using std::sqrt; using std::pow; using std::abs;
+  const T q_a1 = x[0];
+  const T q_b1 = x[1];
+  const T q_a2 = x[2];
+  const T q_b2 = x[3];
+  const T p_l = p[1];
+  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
+  T trig_sin[4], trig_cos[4];
+  detail::sin_cos(trig_angle, trig_sin, trig_cos);
+  const T sin_q_a1 = trig_sin[0];
+  const T cos_q_a1 = trig_cos[0];
+  const T sin_q_b1 = trig_sin[1];
+  const T cos_q_b1 = trig_cos[1];
+  const T sin_q_a2 = trig_sin[2];
+  const T cos_q_a2 = trig_cos[2];
+  const T sin_q_b2 = trig_sin[3];
+  const T cos_q_b2 = trig_cos[3];
   const T ddq[4] = {};
-  T F[36];
+  T F[32];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[4];
-  P[1] = F[5];
-  P[2] = F[6];
-  P[3] = F[7];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  Q[3] = F[3];
-  B[0] = -F[8];
-  P[4] = F[13];
-  P[5] = F[14];
-  P[6] = F[15];
-  P[7] = F[16];
-  Q[4] = F[9];
-  Q[5] = F[10];
-  Q[6] = F[11];
-  Q[7] = F[12];
-  B[1] = -F[17];
-  P[8] = F[22];
-  P[9] = F[23];
-  P[10] = F[24];
-  P[11] = F[25];
-  Q[8] = F[18];
-  Q[9] = F[19];
-  Q[10] = F[20];
-  Q[11] = F[21];
-  B[2] = -F[26];
-  P[12] = F[31];
-  P[13] = F[32];
-  P[14] = F[33];
-  P[15] = F[34];
-  Q[12] = F[27];
-  Q[13] = F[28];
-  Q[14] = F[29];
-  Q[15] = F[30];
-  B[3] = -F[35];
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t j = 0; j < 4; ++j) P[i * 4 + j] = F[i * 8 + 4 + j];
+    for (std::size_t j = 0; j < 4; ++j) Q[i * 4 + j] = F[i * 8 + j];
+  }
+  const T c0 = cos_q_b1;
+  const T c1 = sin_q_a1;
+  const T c2 = sin_q_b1;
+  const T k_upper_Rxx = cos_q_a1;
+  const T k_upper_Rxy = -c0*c1;
+  const T k_upper_Rxz = c1*c2;
+  const T k_upper_W_a1_y = c2;
+  const T k_upper_W_a1_z = c0;
+  const T k_lower_W_b1_x = cos_q_a2;
+  const T k_lower_W_b1_y = -cos_q_b2*sin_q_a2;
+  const T k_lower_W_a2_y = sin_q_b2;
+  const T c3 = cos_q_a2;
+  const T c4 = sin_q_a2;
+  const T c5 = cos_q_b2;
+  const T c6 = sin_q_b2;
+  const T k_lower_Rxx = c3*k_upper_Rxx + c4*k_upper_Rxy;
+  const T k_lower_Rxy = c3*c5*k_upper_Rxy - c4*c5*k_upper_Rxx + c6*k_upper_Rxz;
+  const T k_lower_W_a1_x = c4*k_upper_W_a1_y;
+  const T k_lower_V_a1_x = -k_upper_Rxx*k_upper_W_a1_y*p_l;
+  const T k_lower_W_a1_y = c3*c5*k_upper_W_a1_y + c6*k_upper_W_a1_z;
+  const T k_lower_V_b1_x = k_upper_Rxy*p_l;
+  B[0] = -k_lower_Rxx*k_lower_W_a1_y*p_l + k_lower_Rxy*k_lower_W_a1_x*p_l + k_lower_V_a1_x;
+  B[1] = -k_lower_Rxx*k_lower_W_b1_y*p_l + k_lower_Rxy*k_lower_W_b1_x*p_l + k_lower_V_b1_x;
+  B[2] = -k_lower_Rxx*k_lower_W_a2_y*p_l;
+  B[3] = k_lower_Rxy*p_l;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -248,8 +248,9 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
 }
 
 /// As ldlt_solve, for the m columns of B (6xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.
-template <std::size_t m, class T>
+/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// `negated` solves for -x (exactly: the reciprocals' sign carries through).
+template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
@@ -273,7 +274,7 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
     for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
   }
   for (std::size_t i = 0; i < 6; ++i) {
-    const T r = T(1)/D[i];
+    const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
@@ -475,7 +476,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
 /// tangent sweep through the frames' recursion). ddq: 6; F: 6x13, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
@@ -715,8 +716,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T L[36];
   T D[6];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  T F[78];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -809,9 +808,11 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[89] = (T(1)/T(2))*q_qx;
   J[90] = (T(1)/T(2))*q_qw;
   T rows[84] = {};
+  T F[78];
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
   for (std::size_t i = 0; i < 6; ++i)
-    for (std::size_t j = 0; j < 13; ++j) rows[i * 14 + j] = -F[i * 13 + j];
-  detail::ldlt_solve_rows<14>(L, D, rows);
+    for (std::size_t j = 0; j < 13; ++j) rows[i * 14 + j] = F[i * 13 + j];
+  detail::ldlt_solve_rows<14, true>(L, D, rows);
   for (std::size_t i = 0; i < 6; ++i)
     for (std::size_t j = 0; j < 13; ++j) J[(7 + i) * 13 + j] = rows[i * 14 + j];
 }
@@ -832,84 +833,10 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T ddq[6] = {};
   T F[78];
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  P[0] = F[7];
-  P[1] = F[8];
-  P[2] = F[9];
-  P[3] = F[10];
-  P[4] = F[11];
-  P[5] = F[12];
-  Q[0] = F[0];
-  Q[1] = F[1];
-  Q[2] = F[2];
-  Q[3] = F[3];
-  Q[4] = F[4];
-  Q[5] = F[5];
-  Q[6] = F[6];
-  P[6] = F[20];
-  P[7] = F[21];
-  P[8] = F[22];
-  P[9] = F[23];
-  P[10] = F[24];
-  P[11] = F[25];
-  Q[7] = F[13];
-  Q[8] = F[14];
-  Q[9] = F[15];
-  Q[10] = F[16];
-  Q[11] = F[17];
-  Q[12] = F[18];
-  Q[13] = F[19];
-  P[12] = F[33];
-  P[13] = F[34];
-  P[14] = F[35];
-  P[15] = F[36];
-  P[16] = F[37];
-  P[17] = F[38];
-  Q[14] = F[26];
-  Q[15] = F[27];
-  Q[16] = F[28];
-  Q[17] = F[29];
-  Q[18] = F[30];
-  Q[19] = F[31];
-  Q[20] = F[32];
-  P[18] = F[46];
-  P[19] = F[47];
-  P[20] = F[48];
-  P[21] = F[49];
-  P[22] = F[50];
-  P[23] = F[51];
-  Q[21] = F[39];
-  Q[22] = F[40];
-  Q[23] = F[41];
-  Q[24] = F[42];
-  Q[25] = F[43];
-  Q[26] = F[44];
-  Q[27] = F[45];
-  P[24] = F[59];
-  P[25] = F[60];
-  P[26] = F[61];
-  P[27] = F[62];
-  P[28] = F[63];
-  P[29] = F[64];
-  Q[28] = F[52];
-  Q[29] = F[53];
-  Q[30] = F[54];
-  Q[31] = F[55];
-  Q[32] = F[56];
-  Q[33] = F[57];
-  Q[34] = F[58];
-  P[30] = F[72];
-  P[31] = F[73];
-  P[32] = F[74];
-  P[33] = F[75];
-  P[34] = F[76];
-  P[35] = F[77];
-  Q[35] = F[65];
-  Q[36] = F[66];
-  Q[37] = F[67];
-  Q[38] = F[68];
-  Q[39] = F[69];
-  Q[40] = F[70];
-  Q[41] = F[71];
+  for (std::size_t i = 0; i < 6; ++i) {
+    for (std::size_t j = 0; j < 6; ++j) P[i * 6 + j] = F[i * 13 + 7 + j];
+    for (std::size_t j = 0; j < 7; ++j) Q[i * 7 + j] = F[i * 13 + j];
+  }
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -103,6 +103,10 @@ std::string rhs_function(const Equations& e) {
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
+// a Jacobian's constant block is written entry by entry in a small model, where it reads as the
+// matrix it is, and in a loop beyond (a 21-joint tree's were 30 KB of lines)
+constexpr std::size_t fill_by_lines_up_to = 36;
+
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), all columns solved at once with the factored M
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
@@ -115,12 +119,7 @@ std::string jacobian_state_function(const Equations& e) {
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
   bool newton_euler = uses_newton_euler_gradient(e);
   if (!newton_euler) accelerations(w, e);
-  if (newton_euler) {
-    std::size_t W = N + s.inputs.size();
-    call_factored_accelerations(w, n);
-    w.line(fmt::format("T F[{}];", n * W));
-    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
-  }
+  if (newton_euler) call_factored_accelerations(w, n);
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c = −∂τ_i/∂x_j  (M depends on q only)
   // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
   std::vector<std::vector<ex>> rows;
@@ -141,17 +140,18 @@ std::string jacobian_state_function(const Equations& e) {
   for (std::size_t j = 0; j < N && !newton_euler; ++j)
     for (unsigned i = 0; i < n; ++i) columns.push_back(rows[i][j]);
   std::vector<std::string> code = w.batch(columns);
-  for (std::size_t j = 0; j < N && newton_euler; ++j)
-    for (std::size_t i = 0; i < n; ++i) code.push_back(fmt::format("-F[{}]", i * (N + s.inputs.size()) + j));
   if (e.uses_pseudo_velocities()) {
     std::vector<ex> top;
     for (const ex& rate : e.coordinate_rates)
       for (const ex& d : gradient(rate, state)) top.push_back(d);
     auto top_code = w.batch(top);
     for (std::size_t i = 0; i < nq * N; ++i) w.line(fmt::format("J[{}] = {};", i, top_code[i]));
-  } else {
+  } else if (nq * N <= fill_by_lines_up_to) {
     for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == nq + i ? 1 : 0));
+  } else {
+    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) J[i] = T(0);", nq * N));
+    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) J[i * {} + {} + i] = T(1);", nq, N, nq));
   }
   // the lower block's rows, −∂τ/∂x, then M^-1 applied to all its columns at once. With nq ≠ n the
   // rows may have an odd length, which g++ -O2 does not vectorize (it would need a remainder loop):
@@ -160,14 +160,20 @@ std::string jacobian_state_function(const Equations& e) {
   std::size_t width = N % 2 && n >= 6 ? N + 1 : N;
   if (width == N) w.line(fmt::format("T* rows = J + {};", nq * N));
   else w.line(fmt::format("T rows[{}] = {{}};", n * width));
-  if (newton_euler) {
+  // a tree's rows are ∂τ/∂x, written in place by the gradient when they need no padding, and
+  // negated in the solve
+  if (newton_euler && width == N) {
+    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
+  } else if (newton_euler) {
+    w.line(fmt::format("T F[{}];", n * N));
+    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
-    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) rows[i * {} + j] = -F[i * {} + j];", N, width, N + s.inputs.size()));
+    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) rows[i * {} + j] = F[i * {} + j];", N, width, N));
   } else {
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("rows[{}] = {};", i * width + j, code[j * n + i]));
   }
-  w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, rows);", width));
+  w.line(fmt::format("detail::ldlt_solve_rows<{}{}>(L, D, rows);", width, newton_euler ? ", true" : ""));
   if (width != N) {
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
     w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[({1} + i) * {0} + j] = rows[i * {2} + j];", N, nq, width));
@@ -199,8 +205,10 @@ std::string jacobian_input_function(const Equations& e) {
     for (std::size_t j = 0; j < m; ++j)
       for (std::size_t i = 0; i < n; ++i) columns.push_back(rows[i][j]);
     auto code = w.batch(columns);
-    for (std::size_t i = 0; i < nq; ++i)
-      for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = T(0);", i * m + j));
+    if (nq * m <= fill_by_lines_up_to)
+      for (std::size_t i = 0; i < nq * m; ++i) w.line(fmt::format("B[{}] = T(0);", i));
+    else
+      w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) B[i] = T(0);", nq * m));
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", (nq + i) * m + j, code[j * n + i]));
     w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, B + {});", m, nq * m));
@@ -220,16 +228,17 @@ std::string linearization_function(const Equations& e) {
   std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
       coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
   if (uses_newton_euler_gradient(e)) {
-    // f = −τ at q'' = 0 (equations.hpp): P = ∂τ/∂q', Q = ∂τ/∂q, B = −∂τ/∂u
-    std::size_t W = nq + n + m;
+    // f = −τ at q'' = 0 (equations.hpp): P = ∂τ/∂q', Q = ∂τ/∂q, and B = ∂f/∂u below
+    std::size_t W = nq + n;
     w.line(fmt::format("const T ddq[{}] = {{}};", n));
     w.line(fmt::format("T F[{}];", n * W));
     w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = F[{}];", i * n + j, i * W + nq + j));
-      for (std::size_t j = 0; j < nq; ++j) w.line(fmt::format("Q[{}] = F[{}];", i * nq + j, i * W + j));
-      for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = -F[{}];", i * m + j, i * W + nq + n + j));
-    }
+    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) {{", n));
+    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) P[i * {} + j] = F[i * {} + {} + j];", n, n, W, nq));
+    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) Q[i * {} + j] = F[i * {} + j];", nq, nq, W));
+    w.line("}");
+    for (unsigned i = 0; i < n; ++i)
+      for (const ex& d : gradient(e.forcing[i], inputs)) entries.push_back(d);
   }
   for (unsigned i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
     for (const ex& d : gradient(e.forcing[i], velocities)) entries.push_back(-d);
@@ -238,6 +247,8 @@ std::string linearization_function(const Equations& e) {
   }
   auto code = w.batch(entries);
   std::size_t at = 0;
+  for (std::size_t i = 0; i < n && uses_newton_euler_gradient(e); ++i)
+    for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", i * m + j, code[at++]));
   for (std::size_t i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
     for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = {};", i * n + j, code[at++]));
     for (std::size_t j = 0; j < nq; ++j) w.line(fmt::format("Q[{}] = {};", i * nq + j, code[at++]));

@@ -26,11 +26,10 @@ namespace {
 // `closed_form` the bodies' part in closed form and a sweep through the applied part alone
 std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form) {
   const Symbols& s = e.symbols;
-  std::size_t n = e.num_velocities(), W = s.num_coordinates() + n + s.inputs.size();
+  std::size_t n = e.num_velocities(), W = s.num_coordinates() + n;
   BodyWriter w(e);
   std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
   directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
-  directions.insert(directions.end(), s.inputs.begin(), s.inputs.end());
   const std::vector<ex>& swept = closed_form ? e.applied_inverse_dynamics : e.inverse_dynamics;
   TangentSweep sweep(w, directions);
   sweep.follow(w.write_intermediates_of(swept));
@@ -52,7 +51,7 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
 
 std::string newton_euler_gradient_function(const Equations& e) {
   if (!uses_newton_euler_gradient(e)) return "";
-  std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n + e.symbols.inputs.size();
+  std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
   const char* signature = "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)";
   // the closed form costs about a thousand operations per link, the sweep a few hundred per pair
   // of a joint and one it carries: up to a dozen joints both are written and the one with fewer
@@ -71,10 +70,10 @@ std::string newton_euler_gradient_function(const Equations& e) {
   }
   return "namespace detail {\n\n" +
          function(fmt::format(fmt::runtime(closed_form
-                                  ? "/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
+                                  ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
                                     "/// part in closed form, in world coordinates; a tangent sweep through the rest).\n"
                                     "/// ddq: {0}; F: {0}x{1}, row-major.\n"
-                                  : "/// d tau/d(q, q', u) of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
+                                  : "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
                                     "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n"),
                               n, W),
                   signature, body) +

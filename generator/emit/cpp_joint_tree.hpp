@@ -1,7 +1,7 @@
 /// @file The generated header's functions for a tree whose τ = M q'' − f comes from the
 /// Newton–Euler recursion (recursive kinematics, joint trees): M and f written once
 /// (detail::mass_matrix_and_forcing), the factored accelerations that rhs and jacobian_state call,
-/// and ∂τ/∂(q, q', u) (detail::inverse_dynamics_gradient) by a tangent sweep or, for a joint tree,
+/// and ∂τ/∂(q, q') (detail::inverse_dynamics_gradient) by a tangent sweep or, for a joint tree,
 /// the bodies' part in closed form, whichever has fewer operations.
 #pragma once
 
@@ -13,9 +13,10 @@
 
 namespace eomgen {
 
-/// Recursive kinematics (equations.hpp): ∂τ/∂(q, q', u) of the Newton–Euler inverse dynamics at a
+/// Recursive kinematics (equations.hpp): ∂τ/∂(q, q') of the Newton–Euler inverse dynamics at a
 /// given q'' is written once, for jacobian_state (q'' from the solve) and linearization (q'' = 0),
-/// and M and f once; false for the other models.
+/// and M and f once; false for the other models. (∂τ/∂u = −∂f/∂u is short, and only linearization
+/// needs it: jacobian_state's rows are then the gradient's, written in place.)
 bool uses_newton_euler_gradient(const Equations& e);
 /// q'' and the factors of M into local arrays ddq, L, D by detail::factored_accelerations.
 void call_factored_accelerations(BodyWriter& w, std::size_t n);

@@ -26,7 +26,7 @@ std::string subtract_rows(std::size_t to, const std::vector<std::pair<std::strin
 }
 
 std::string scale_rows(std::size_t n) {
-  return fmt::format("  for (std::size_t i = 0; i < {}; ++i) {{\n    const T r = T(1)/D[i];\n"
+  return fmt::format("  for (std::size_t i = 0; i < {}; ++i) {{\n    const T r = T(negated ? -1 : 1)/D[i];\n"
                      "    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;\n  }}\n", n);
 }
 
@@ -171,8 +171,9 @@ std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
       "/// Solves {2} x = b in place. b: {0}.\n"
       "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{3}}}\n\n"
       "/// As ldlt_solve, for the m columns of B ({0}xm, row-major) at once: each row's operations in\n"
-      "/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once.\n"
-      "template <std::size_t m, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{4}}}\n\n";
+      "/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;\n"
+      "/// `negated` solves for -x (exactly: the reciprocals' sign carries through).\n"
+      "template <std::size_t m, bool negated = false, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{4}}}\n\n";
   if (std::vector<int> tree = tree_of_mass_matrix(e, n); !tree.empty()) {
     LdltCode ldlt = tree_ldlt_code(tree);
     return fmt::format(

@@ -136,6 +136,17 @@ class Gradient {
       const TreeLink& l = links_[j];
       bool root = l.parent < 0;
       Six rest, vp = root ? rest : v_[std::size_t(l.parent)];
+      for (std::size_t d = 0; d < l.directions.size(); ++d) {
+        Six T;
+        for (const auto& [c, weight] : l.directions[d].weights) T = T + scaled(weight, S_[j][c]);
+        std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
+        if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
+          T = named(j, "gT" + tag, T);
+        dS_[j].push_back(named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
+        ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
+        G_[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS_[j][d]) +
+                                             times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
+      }
       for (std::size_t c = 0; c < l.columns.size(); ++c) {
         const Six& S = S_[j][c];
         std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
@@ -147,20 +158,11 @@ class Gradient {
         // that a hinge has A = 2 v_λ × S
         Six twice = scaled(2, motion_cross(still_v_[j], S));
         if (!l.columns[c].turns_with_link) A_[j].push_back(named(j, "gA" + tag, motion_cross(still_v_[j] + vp, S)));
+        else if (l.columns.size() == 1 && own_direction(j) >= 0)  // a hinge's or slide's T = S: A = 2 Ψ'
+          A_[j].push_back(named(j, "gA" + tag, scaled(2, dS_[j][std::size_t(own_direction(j))])));
         else if (l.columns.size() == 1) A_[j].push_back(named(j, "gA" + tag, twice));
         else A_[j].push_back(named(j, "gA" + tag, twice + motion_cross(turning_v_[j], S)));
         H_[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A_[j][c]) + DS + SP));
-      }
-      for (std::size_t d = 0; d < l.directions.size(); ++d) {
-        Six T;
-        for (const auto& [c, weight] : l.directions[d].weights) T = T + scaled(weight, S_[j][c]);
-        std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
-        if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
-          T = named(j, "gT" + tag, T);
-        dS_[j].push_back(named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
-        ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
-        G_[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS_[j][d]) +
-                                             times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
       }
     }
   }
@@ -202,6 +204,16 @@ class Gradient {
   }
 
  private:
+  // the direction of a one-column joint whose twist is that column's S (weight 1), or −1
+  int own_direction(std::size_t j) const {
+    const TreeLink& l = links_[j];
+    for (std::size_t d = 0; d < l.directions.size(); ++d) {
+      const auto& w = l.directions[d].weights;
+      if (w.size() == 1 && w[0].first == 0 && (w[0].second - 1).is_zero()) return int(d);
+    }
+    return -1;
+  }
+
   // the link's bodies about O: J_O = Σ R J_c Rᵀ + m(|c|² 1 − c cᵀ) with c = o + R c_local; then
   // f = I a + v ×* I v, and B x = I (x × v) + x ×* (I v) + v ×* (I x) as D x + x ×* P with the momentum
   // P = I v and the symmetric D = −(K + Kᵀ), K = I (v×), since v ×* = −(v×)ᵀ: 21 entries to carry up

@@ -1,6 +1,7 @@
 // The generated factorization and solves of the mass matrix (emit/cpp_ldlt): dense and unrolled,
 // dense in loops, and a tree's from the leaves, each compiled and run on a random symmetric
-// positive definite M of its shape; ldlt_solve and ldlt_solve_rows must solve M x = b to rounding.
+// positive definite M of its shape; ldlt_solve and ldlt_solve_rows must solve M x = b to rounding,
+// and ldlt_solve_rows<m, true> give exactly −x (jacobian_state's rows are ∂τ/∂x, solved negated).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -20,7 +21,7 @@ std::string functions(const std::string& name, const LdltCode& code) {
       "namespace {0} {{\n"
       "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n"
       "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n"
-      "template <std::size_t m, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{3}}}\n"
+      "template <std::size_t m, bool negated = false, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{3}}}\n"
       "}}\n",
       name, code.factor, code.solve, code.solve_rows);
 }
@@ -32,8 +33,9 @@ const char* check = R"cpp(
 #include <cstdio>
 #include <random>
 #include <vector>
-template <class Related, class Factor, class Solve, class SolveRows>
-int check(const char* name, int n, Related related, Factor factor, Solve solve, SolveRows solve_rows) {
+template <class Related, class Factor, class Solve, class SolveRows, class NegatedRows>
+int check(const char* name, int n, Related related, Factor factor, Solve solve, SolveRows solve_rows,
+          NegatedRows negated_rows) {
   constexpr int m = 7;
   std::mt19937 g(3);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -45,6 +47,10 @@ int check(const char* name, int n, Related related, Factor factor, Solve solve, 
   X = B;
   factor(M.data(), L.data(), D.data());
   solve_rows(L.data(), D.data(), X.data());
+  std::vector<double> Y = B;
+  negated_rows(L.data(), D.data(), Y.data());
+  int unequal = 0;
+  for (std::size_t k = 0; k < Y.size(); ++k) unequal += Y[k] != -X[k];
   double worst = 0, worst_columns = 0;
   for (int c = 0; c < m; ++c) {
     for (int i = 0; i < n; ++i) column[i] = B[i * m + c];
@@ -56,8 +62,8 @@ int check(const char* name, int n, Related related, Factor factor, Solve solve, 
       worst_columns = std::fmax(worst_columns, std::fabs(rc));
     }
   }
-  std::printf("%s: |M X - B| %.3g by rows, %.3g by columns\n", name, worst, worst_columns);
-  return worst < 1e-13 && worst_columns < 1e-13 ? 0 : 1;
+  std::printf("%s: |M X - B| %.3g by rows, %.3g by columns; %d negated entries not -X\n", name, worst, worst_columns, unequal);
+  return worst < 1e-13 && worst_columns < 1e-13 && unequal == 0 ? 0 : 1;
 }
 int main() {
   const int parent[] = {PARENTS};
@@ -68,9 +74,12 @@ int main() {
   };
   auto dense = [](int, int) { return true; };
   int failures = 0;
-  failures += check("unrolled", 5, dense, unrolled::ldlt_factor<double>, unrolled::ldlt_solve<double>, unrolled::ldlt_solve_rows<7, double>);
-  failures += check("loops", 30, dense, loops::ldlt_factor<double>, loops::ldlt_solve<double>, loops::ldlt_solve_rows<7, double>);
-  failures += check("tree", TREE_SIZE, in_tree, tree::ldlt_factor<double>, tree::ldlt_solve<double>, tree::ldlt_solve_rows<7, double>);
+  failures += check("unrolled", 5, dense, unrolled::ldlt_factor<double>, unrolled::ldlt_solve<double>, unrolled::ldlt_solve_rows<7, false, double>,
+                    unrolled::ldlt_solve_rows<7, true, double>);
+  failures += check("loops", 30, dense, loops::ldlt_factor<double>, loops::ldlt_solve<double>, loops::ldlt_solve_rows<7, false, double>,
+                    loops::ldlt_solve_rows<7, true, double>);
+  failures += check("tree", TREE_SIZE, in_tree, tree::ldlt_factor<double>, tree::ldlt_solve<double>, tree::ldlt_solve_rows<7, false, double>,
+                    tree::ldlt_solve_rows<7, true, double>);
   return failures;
 }
 )cpp";
