@@ -201,8 +201,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  f[0] = c0*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
+  f[0] = cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta - p_g*p_m*p_r*sin_q_theta;
 }
 
 /// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].
@@ -224,11 +223,10 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   T M[1];
   M[0] = T(1);
   T ddq[1];
-  ddq[0] = c0*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
+  ddq[0] = cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta - p_g*p_m*p_r*sin_q_theta;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
@@ -255,20 +253,18 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   T M[1];
   M[0] = T(1);
   T ddq[1];
-  ddq[0] = c0*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - c0*p_g*p_m*p_r;
+  ddq[0] = cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta - p_g*p_m*p_r*sin_q_theta;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = cos_q_theta;
   J[0] = T(0);
   J[1] = T(1)/(p_m*p_r*p_r);
   T* rows = J + 2;
-  rows[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c1*c1*p_Omega*p_Omega*p_m*p_r*p_r - c1*p_g*p_m*p_r;
+  rows[0] = cos_q_theta*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r - cos_q_theta*p_g*p_m*p_r - p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta;
   rows[1] = T(0);
   detail::ldlt_solve_rows<2>(L, D, rows);
 }
@@ -299,9 +295,8 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = cos_q_theta;
   P[0] = T(0);
-  Q[0] = -c0*c0*p_Omega*p_Omega*p_m*p_r*p_r + c0*p_g*p_m*p_r + p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta;
+  Q[0] = -cos_q_theta*cos_q_theta*p_Omega*p_Omega*p_m*p_r*p_r + cos_q_theta*p_g*p_m*p_r + p_Omega*p_Omega*p_m*p_r*p_r*sin_q_theta*sin_q_theta;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
@@ -443,10 +438,9 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[9] = T(0);
   out[10] = T(0);
   out[11] = T(1);
-  const T c0 = sin_q_theta;
   const T c1 = p_Omega*t;
-  out[0] = c0*cos(c1)*p_r;
-  out[1] = c0*p_r*sin(c1);
+  out[0] = cos(c1)*p_r*sin_q_theta;
+  out[1] = p_r*sin(c1)*sin_q_theta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

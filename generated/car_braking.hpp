@@ -258,12 +258,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   f[0] = -dq_x*dq_x*p_cw + u_F;
-  const T c0 = sin_q_theta;
   const T c1 = -p_a*p_kf + p_b*p_kr;
   const T c2 = p_a*p_cf - p_b*p_cr;
-  const T c3 = cos_q_theta;
-  f[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c0*c1 + c2*c3*dq_theta;
-  f[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*c3*c3*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c3 - c1*c3*q_z + c2*c3*dq_z - p_h*u_F;
+  f[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c1*sin_q_theta + c2*cos_q_theta*dq_theta;
+  f[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*cos_q_theta*cos_q_theta*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*cos_q_theta*sin_q_theta - c1*cos_q_theta*q_z + c2*cos_q_theta*dq_z - p_h*u_F;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -295,10 +293,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   const T c1 = -p_a*p_kf + p_b*p_kr;
   const T c2 = p_a*p_cf - p_b*p_cr;
-  const T c3 = cos_q_theta;
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
@@ -311,8 +307,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   M[8] = p_Iyy;
   T ddq[3];
   ddq[0] = -dq_x*dq_x*p_cw + u_F;
-  ddq[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c0*c1 + c2*c3*dq_theta;
-  ddq[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*c3*c3*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c3 - c1*c3*q_z + c2*c3*dq_z - p_h*u_F;
+  ddq[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c1*sin_q_theta + c2*cos_q_theta*dq_theta;
+  ddq[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*cos_q_theta*cos_q_theta*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*cos_q_theta*sin_q_theta - c1*cos_q_theta*q_z + c2*cos_q_theta*dq_z - p_h*u_F;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
@@ -354,10 +350,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   const T c1 = -p_a*p_kf + p_b*p_kr;
   const T c2 = p_a*p_cf - p_b*p_cr;
-  const T c3 = cos_q_theta;
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
@@ -370,16 +364,16 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   M[8] = p_Iyy;
   T ddq[3];
   ddq[0] = -dq_x*dq_x*p_cw + u_F;
-  ddq[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c0*c1 + c2*c3*dq_theta;
-  ddq[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*c3*c3*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c3 - c1*c3*q_z + c2*c3*dq_z - p_h*u_F;
+  ddq[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c1*sin_q_theta + c2*cos_q_theta*dq_theta;
+  ddq[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*cos_q_theta*cos_q_theta*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*cos_q_theta*sin_q_theta - c1*cos_q_theta*q_z + c2*cos_q_theta*dq_z - p_h*u_F;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
   const T c4 = p_a*p_a*p_kf + p_b*p_b*p_kr;
-  const T c5 = c3*c3;
+  const T c5 = cos_q_theta*cos_q_theta;
   const T c6 = p_a*p_a*p_cf + p_b*p_b*p_cr;
-  const T c7 = c2*c3;
+  const T c7 = c2*cos_q_theta;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -407,13 +401,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   rows[5] = T(0);
   rows[6] = T(0);
   rows[7] = -p_kf - p_kr;
-  rows[8] = -c0*c2*dq_theta - c1*c3;
+  rows[8] = -c1*cos_q_theta - c2*dq_theta*sin_q_theta;
   rows[9] = T(0);
   rows[10] = -p_cf - p_cr;
   rows[11] = c7;
   rows[12] = T(0);
-  rows[13] = -c1*c3;
-  rows[14] = T(2)*c0*c3*c6*dq_theta + c0*c0*c4 + c0*c1*q_z - c0*c2*dq_z - c4*c5;
+  rows[13] = -c1*cos_q_theta;
+  rows[14] = T(2)*c6*cos_q_theta*dq_theta*sin_q_theta + c1*q_z*sin_q_theta - c2*dq_z*sin_q_theta - c4*c5 + c4*sin_q_theta*sin_q_theta;
   rows[15] = T(0);
   rows[16] = c7;
   rows[17] = -c5*c6;
@@ -478,13 +472,11 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   const T c0 = p_a*p_cf - p_b*p_cr;
-  const T c1 = cos_q_theta;
-  const T c2 = -c0*c1;
-  const T c3 = sin_q_theta;
+  const T c2 = -c0*cos_q_theta;
   const T c4 = -p_a*p_kf + p_b*p_kr;
-  const T c5 = c1*c4;
+  const T c5 = c4*cos_q_theta;
   const T c6 = p_a*p_a*p_cf + p_b*p_b*p_cr;
-  const T c7 = c1*c1;
+  const T c7 = cos_q_theta*cos_q_theta;
   const T c8 = p_a*p_a*p_kf + p_b*p_b*p_kr;
   P[0] = T(2)*dq_x*p_cw;
   P[1] = T(0);
@@ -498,14 +490,14 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   P[5] = c2;
   Q[3] = T(0);
   Q[4] = p_kf + p_kr;
-  Q[5] = c0*c3*dq_theta + c5;
+  Q[5] = c0*dq_theta*sin_q_theta + c5;
   B[1] = T(0);
   P[6] = T(0);
   P[7] = c2;
   P[8] = c6*c7;
   Q[6] = T(0);
   Q[7] = c5;
-  Q[8] = -T(2)*c1*c3*c6*dq_theta + c0*c3*dq_z - c3*c3*c8 - c3*c4*q_z + c7*c8;
+  Q[8] = -T(2)*c6*cos_q_theta*dq_theta*sin_q_theta + c0*dq_z*sin_q_theta - c4*q_z*sin_q_theta + c7*c8 - c8*sin_q_theta*sin_q_theta;
   B[2] = -p_h;
 }
 
@@ -538,8 +530,7 @@ T potential_energy(T t, const T* x, const T* p) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
-  const T c0 = sin_q_theta;
-  return (T(1)/T(2))*(p_a*p_a*p_kf + p_b*p_b*p_kr)*c0*c0 + (T(1)/T(2))*(p_kf + p_kr)*q_z*q_z - (p_a*p_kf - p_b*p_kr)*c0*q_z;
+  return (T(1)/T(2))*(p_a*p_a*p_kf + p_b*p_b*p_kr)*sin_q_theta*sin_q_theta + (T(1)/T(2))*(p_kf + p_kr)*q_z*q_z - (p_a*p_kf - p_b*p_kr)*q_z*sin_q_theta;
 }
 
 /// The model's [outputs], in output_names order. y: 1.
@@ -638,12 +629,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[7] = T(1);
   out[8] = T(0);
   out[10] = T(0);
-  const T c0 = cos_q_theta;
-  out[3] = c0;
-  out[11] = c0;
-  const T c1 = sin_q_theta;
-  out[5] = c1;
-  out[9] = -c1;
+  out[3] = cos_q_theta;
+  out[11] = cos_q_theta;
+  out[5] = sin_q_theta;
+  out[9] = -sin_q_theta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

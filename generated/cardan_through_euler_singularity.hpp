@@ -222,9 +222,8 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
-  const T c0 = sin_q_beta;
-  M[0] = c0*c0*p_C + cos_q_beta*cos_q_beta*p_A;
-  M[2] = c0*p_C;
+  M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
+  M[2] = p_C*sin_q_beta;
   M[6] = M[2];
 }
 
@@ -248,11 +247,9 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   const T c0 = -p_A + p_C;
-  const T c1 = sin_q_beta;
-  const T c2 = cos_q_beta;
-  f[0] = -T(2)*c0*c1*c2*dq_alpha*dq_beta - c2*dq_beta*dq_gamma*p_C;
-  f[1] = c0*c1*c2*dq_alpha*dq_alpha + c2*dq_alpha*dq_gamma*p_C;
-  f[2] = -c2*dq_alpha*dq_beta*p_C;
+  f[0] = -T(2)*c0*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - cos_q_beta*dq_beta*dq_gamma*p_C;
+  f[1] = c0*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta + cos_q_beta*dq_alpha*dq_gamma*p_C;
+  f[2] = -cos_q_beta*dq_alpha*dq_beta*p_C;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -275,22 +272,20 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   const T c0 = -p_A + p_C;
-  const T c1 = sin_q_beta;
-  const T c2 = cos_q_beta;
   T M[9];
-  M[0] = c1*c1*p_C + c2*c2*p_A;
+  M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c1*p_C;
+  M[2] = p_C*sin_q_beta;
   M[6] = M[2];
   M[4] = p_A;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
   T ddq[3];
-  ddq[0] = -T(2)*c0*c1*c2*dq_alpha*dq_beta - c2*dq_beta*dq_gamma*p_C;
-  ddq[1] = c0*c1*c2*dq_alpha*dq_alpha + c2*dq_alpha*dq_gamma*p_C;
-  ddq[2] = -c2*dq_alpha*dq_beta*p_C;
+  ddq[0] = -T(2)*c0*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - cos_q_beta*dq_beta*dq_gamma*p_C;
+  ddq[1] = c0*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta + cos_q_beta*dq_alpha*dq_gamma*p_C;
+  ddq[2] = -cos_q_beta*dq_alpha*dq_beta*p_C;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
@@ -323,30 +318,28 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   const T c0 = -p_A + p_C;
-  const T c1 = sin_q_beta;
-  const T c2 = cos_q_beta;
   T M[9];
-  M[0] = c1*c1*p_C + c2*c2*p_A;
+  M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c1*p_C;
+  M[2] = p_C*sin_q_beta;
   M[6] = M[2];
   M[4] = p_A;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
   T ddq[3];
-  ddq[0] = -T(2)*c0*c1*c2*dq_alpha*dq_beta - c2*dq_beta*dq_gamma*p_C;
-  ddq[1] = c0*c1*c2*dq_alpha*dq_alpha + c2*dq_alpha*dq_gamma*p_C;
-  ddq[2] = -c2*dq_alpha*dq_beta*p_C;
+  ddq[0] = -T(2)*c0*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - cos_q_beta*dq_beta*dq_gamma*p_C;
+  ddq[1] = c0*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta + cos_q_beta*dq_alpha*dq_gamma*p_C;
+  ddq[2] = -cos_q_beta*dq_alpha*dq_beta*p_C;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c3 = c1*c1;
-  const T c4 = c2*c2;
-  const T c5 = T(2)*c0*c1*c2*dq_alpha + c2*dq_gamma*p_C;
-  const T c6 = -c2*dq_beta*p_C;
+  const T c3 = sin_q_beta*sin_q_beta;
+  const T c4 = cos_q_beta*cos_q_beta;
+  const T c5 = T(2)*c0*cos_q_beta*dq_alpha*sin_q_beta + cos_q_beta*dq_gamma*p_C;
+  const T c6 = -cos_q_beta*dq_beta*p_C;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -367,22 +360,22 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[17] = T(1);
   T* rows = J + 18;
   rows[0] = T(0);
-  rows[1] = T(2)*(c1*c2*p_A - c1*c2*p_C)*ddq[0] + T(2)*c0*c3*dq_alpha*dq_beta - T(2)*c0*c4*dq_alpha*dq_beta + c1*dq_beta*dq_gamma*p_C - c2*ddq[2]*p_C;
+  rows[1] = T(2)*(cos_q_beta*p_A*sin_q_beta - cos_q_beta*p_C*sin_q_beta)*ddq[0] + T(2)*c0*c3*dq_alpha*dq_beta - T(2)*c0*c4*dq_alpha*dq_beta - cos_q_beta*ddq[2]*p_C + dq_beta*dq_gamma*p_C*sin_q_beta;
   rows[2] = T(0);
-  rows[3] = -T(2)*c0*c1*c2*dq_beta;
+  rows[3] = -T(2)*c0*cos_q_beta*dq_beta*sin_q_beta;
   rows[4] = -c5;
   rows[5] = c6;
   rows[6] = T(0);
-  rows[7] = -c0*c3*dq_alpha*dq_alpha + c0*c4*dq_alpha*dq_alpha - c1*dq_alpha*dq_gamma*p_C;
+  rows[7] = -c0*c3*dq_alpha*dq_alpha + c0*c4*dq_alpha*dq_alpha - dq_alpha*dq_gamma*p_C*sin_q_beta;
   rows[8] = T(0);
   rows[9] = c5;
   rows[10] = T(0);
-  rows[11] = c2*dq_alpha*p_C;
+  rows[11] = cos_q_beta*dq_alpha*p_C;
   rows[12] = T(0);
-  rows[13] = c1*dq_alpha*dq_beta*p_C - c2*ddq[0]*p_C;
+  rows[13] = -cos_q_beta*ddq[0]*p_C + dq_alpha*dq_beta*p_C*sin_q_beta;
   rows[14] = T(0);
   rows[15] = c6;
-  rows[16] = -c2*dq_alpha*p_C;
+  rows[16] = -cos_q_beta*dq_alpha*p_C;
   rows[17] = T(0);
   detail::ldlt_solve_rows<6>(L, D, rows);
 }
@@ -415,29 +408,27 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   const T c0 = -p_A + p_C;
-  const T c1 = sin_q_beta;
-  const T c2 = cos_q_beta;
-  const T c3 = T(2)*c0*c1*c2*dq_alpha + c2*dq_gamma*p_C;
-  const T c4 = c2*dq_beta*p_C;
-  const T c5 = c1*c1;
-  const T c6 = c2*c2;
-  P[0] = T(2)*c0*c1*c2*dq_beta;
+  const T c3 = T(2)*c0*cos_q_beta*dq_alpha*sin_q_beta + cos_q_beta*dq_gamma*p_C;
+  const T c4 = cos_q_beta*dq_beta*p_C;
+  const T c5 = sin_q_beta*sin_q_beta;
+  const T c6 = cos_q_beta*cos_q_beta;
+  P[0] = T(2)*c0*cos_q_beta*dq_beta*sin_q_beta;
   P[1] = c3;
   P[2] = c4;
   Q[0] = T(0);
-  Q[1] = -T(2)*c0*c5*dq_alpha*dq_beta + T(2)*c0*c6*dq_alpha*dq_beta - c1*dq_beta*dq_gamma*p_C;
+  Q[1] = -T(2)*c0*c5*dq_alpha*dq_beta + T(2)*c0*c6*dq_alpha*dq_beta - dq_beta*dq_gamma*p_C*sin_q_beta;
   Q[2] = T(0);
   P[3] = -c3;
   P[4] = T(0);
-  P[5] = -c2*dq_alpha*p_C;
+  P[5] = -cos_q_beta*dq_alpha*p_C;
   Q[3] = T(0);
-  Q[4] = c0*c5*dq_alpha*dq_alpha - c0*c6*dq_alpha*dq_alpha + c1*dq_alpha*dq_gamma*p_C;
+  Q[4] = c0*c5*dq_alpha*dq_alpha - c0*c6*dq_alpha*dq_alpha + dq_alpha*dq_gamma*p_C*sin_q_beta;
   Q[5] = T(0);
   P[6] = c4;
-  P[7] = c2*dq_alpha*p_C;
+  P[7] = cos_q_beta*dq_alpha*p_C;
   P[8] = T(0);
   Q[6] = T(0);
-  Q[7] = -c1*dq_alpha*dq_beta*p_C;
+  Q[7] = -dq_alpha*dq_beta*p_C*sin_q_beta;
   Q[8] = T(0);
 }
 
@@ -459,8 +450,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
-  const T c0 = sin_q_beta;
-  return (T(1)/T(2))*c0*c0*dq_alpha*dq_alpha*p_C + (T(1)/T(2))*cos_q_beta*cos_q_beta*dq_alpha*dq_alpha*p_A + (T(1)/T(2))*dq_beta*dq_beta*p_A + (T(1)/T(2))*dq_gamma*dq_gamma*p_C + c0*dq_alpha*dq_gamma*p_C;
+  return (T(1)/T(2))*cos_q_beta*cos_q_beta*dq_alpha*dq_alpha*p_A + (T(1)/T(2))*dq_alpha*dq_alpha*p_C*sin_q_beta*sin_q_beta + (T(1)/T(2))*dq_beta*dq_beta*p_A + (T(1)/T(2))*dq_gamma*dq_gamma*p_C + dq_alpha*dq_gamma*p_C*sin_q_beta;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -499,9 +489,8 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
-  const T c0 = sin_q_beta;
-  out[1] = c0*c0*dq_alpha*p_C + c0*dq_gamma*p_C + cos_q_beta*cos_q_beta*dq_alpha*p_A;
-  out[2] = c0*dq_alpha*p_C + dq_gamma*p_C;
+  out[1] = cos_q_beta*cos_q_beta*dq_alpha*p_A + dq_alpha*p_C*sin_q_beta*sin_q_beta + dq_gamma*p_C*sin_q_beta;
+  out[2] = dq_alpha*p_C*sin_q_beta + dq_gamma*p_C;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.
@@ -571,21 +560,15 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[0] = T(0);
   out[1] = T(0);
   out[2] = T(0);
-  const T c0 = cos_q_gamma;
-  const T c1 = cos_q_beta;
-  out[3] = c0*c1;
-  const T c2 = sin_q_gamma;
-  out[4] = -c1*c2;
-  const T c3 = sin_q_beta;
-  out[5] = c3;
-  const T c4 = sin_q_alpha;
-  out[8] = -c1*c4;
-  const T c5 = cos_q_alpha;
-  out[6] = c0*c3*c4 + c2*c5;
-  out[7] = c0*c5 - c2*c3*c4;
-  out[9] = -c0*c3*c5 + c2*c4;
-  out[10] = c0*c4 + c2*c3*c5;
-  out[11] = c1*c5;
+  out[3] = cos_q_beta*cos_q_gamma;
+  out[4] = -cos_q_beta*sin_q_gamma;
+  out[5] = sin_q_beta;
+  out[8] = -cos_q_beta*sin_q_alpha;
+  out[6] = cos_q_alpha*sin_q_gamma + cos_q_gamma*sin_q_alpha*sin_q_beta;
+  out[7] = cos_q_alpha*cos_q_gamma - sin_q_alpha*sin_q_beta*sin_q_gamma;
+  out[9] = -cos_q_alpha*cos_q_gamma*sin_q_beta + sin_q_alpha*sin_q_gamma;
+  out[10] = cos_q_alpha*sin_q_beta*sin_q_gamma + cos_q_gamma*sin_q_alpha;
+  out[11] = cos_q_alpha*cos_q_beta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

@@ -228,9 +228,8 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
-  const T c0 = sin_q_theta;
-  f[0] = c0*dq_theta*dq_theta*p_l*p_m + u_F;
-  f[1] = -c0*p_g*p_l*p_m;
+  f[0] = dq_theta*dq_theta*p_l*p_m*sin_q_theta + u_F;
+  f[1] = -p_g*p_l*p_m*sin_q_theta;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -253,15 +252,14 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   T M[4];
   M[0] = p_m + p_mc;
   M[1] = cos_q_theta*p_l*p_m;
   M[2] = M[1];
   M[3] = p_l*p_l*p_m;
   T ddq[2];
-  ddq[0] = c0*dq_theta*dq_theta*p_l*p_m + u_F;
-  ddq[1] = -c0*p_g*p_l*p_m;
+  ddq[0] = dq_theta*dq_theta*p_l*p_m*sin_q_theta + u_F;
+  ddq[1] = -p_g*p_l*p_m*sin_q_theta;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
@@ -292,20 +290,18 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   T M[4];
   M[0] = p_m + p_mc;
   M[1] = cos_q_theta*p_l*p_m;
   M[2] = M[1];
   M[3] = p_l*p_l*p_m;
   T ddq[2];
-  ddq[0] = c0*dq_theta*dq_theta*p_l*p_m + u_F;
-  ddq[1] = -c0*p_g*p_l*p_m;
+  ddq[0] = dq_theta*dq_theta*p_l*p_m*sin_q_theta + u_F;
+  ddq[1] = -p_g*p_l*p_m*sin_q_theta;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = cos_q_theta;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1);
@@ -316,11 +312,11 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[7] = T(1);
   T* rows = J + 8;
   rows[0] = T(0);
-  rows[1] = c0*ddq[1]*p_l*p_m + c1*dq_theta*dq_theta*p_l*p_m;
+  rows[1] = cos_q_theta*dq_theta*dq_theta*p_l*p_m + ddq[1]*p_l*p_m*sin_q_theta;
   rows[2] = T(0);
-  rows[3] = T(2)*c0*dq_theta*p_l*p_m;
+  rows[3] = T(2)*dq_theta*p_l*p_m*sin_q_theta;
   rows[4] = T(0);
-  rows[5] = c0*ddq[0]*p_l*p_m - c1*p_g*p_l*p_m;
+  rows[5] = -cos_q_theta*p_g*p_l*p_m + ddq[0]*p_l*p_m*sin_q_theta;
   rows[6] = T(0);
   rows[7] = T(0);
   detail::ldlt_solve_rows<4>(L, D, rows);
@@ -376,16 +372,15 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = cos_q_theta;
   P[0] = T(0);
   P[1] = -T(2)*dq_theta*p_l*p_m*sin_q_theta;
   Q[0] = T(0);
-  Q[1] = -c0*dq_theta*dq_theta*p_l*p_m;
+  Q[1] = -cos_q_theta*dq_theta*dq_theta*p_l*p_m;
   B[0] = T(1);
   P[2] = T(0);
   P[3] = T(0);
   Q[2] = T(0);
-  Q[3] = c0*p_g*p_l*p_m;
+  Q[3] = cos_q_theta*p_g*p_l*p_m;
   B[1] = T(0);
 }
 

@@ -241,11 +241,9 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T cos_q_phi1 = trig_cos[0];
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
-  const T c0 = sin_q_phi1;
-  const T c1 = sin_q_phi2;
-  const T c2 = -c0*cos_q_phi2 + c1*cos_q_phi1;
-  f[0] = -(p_m1 + p_m2)*c0*p_g*p_l1 + c2*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
-  f[1] = -c1*p_g*p_l2*p_m2 - c2*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
+  const T c2 = cos_q_phi1*sin_q_phi2 - cos_q_phi2*sin_q_phi1;
+  f[0] = -(p_m1 + p_m2)*p_g*p_l1*sin_q_phi1 + c2*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
+  f[1] = -c2*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 - p_g*p_l2*p_m2*sin_q_phi2;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -274,19 +272,15 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
   const T c0 = p_m1 + p_m2;
-  const T c1 = sin_q_phi1;
-  const T c2 = sin_q_phi2;
-  const T c3 = cos_q_phi2;
-  const T c4 = cos_q_phi1;
-  const T c5 = -c1*c3 + c2*c4;
+  const T c5 = cos_q_phi1*sin_q_phi2 - cos_q_phi2*sin_q_phi1;
   T M[4];
   M[0] = c0*p_l1*p_l1;
-  M[1] = (c1*c2 + c3*c4)*p_l1*p_l2*p_m2;
+  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
   M[2] = M[1];
   M[3] = p_l2*p_l2*p_m2;
   T ddq[2];
-  ddq[0] = -c0*c1*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
-  ddq[1] = -c2*p_g*p_l2*p_m2 - c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
+  ddq[0] = -c0*p_g*p_l1*sin_q_phi1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
+  ddq[1] = -c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 - p_g*p_l2*p_m2*sin_q_phi2;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
@@ -323,24 +317,20 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
   const T c0 = p_m1 + p_m2;
-  const T c1 = sin_q_phi1;
-  const T c2 = sin_q_phi2;
-  const T c3 = cos_q_phi2;
-  const T c4 = cos_q_phi1;
-  const T c5 = -c1*c3 + c2*c4;
+  const T c5 = cos_q_phi1*sin_q_phi2 - cos_q_phi2*sin_q_phi1;
   T M[4];
   M[0] = c0*p_l1*p_l1;
-  M[1] = (c1*c2 + c3*c4)*p_l1*p_l2*p_m2;
+  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
   M[2] = M[1];
   M[3] = p_l2*p_l2*p_m2;
   T ddq[2];
-  ddq[0] = -c0*c1*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
-  ddq[1] = -c2*p_g*p_l2*p_m2 - c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
+  ddq[0] = -c0*p_g*p_l1*sin_q_phi1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
+  ddq[1] = -c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 - p_g*p_l2*p_m2*sin_q_phi2;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c6 = c1*c2 + c3*c4;
+  const T c6 = cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2;
   const T c7 = c6*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
   const T c8 = c5*ddq[1]*p_l1*p_l2*p_m2;
   const T c9 = c6*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
@@ -354,12 +344,12 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[6] = T(0);
   J[7] = T(1);
   T* rows = J + 8;
-  rows[0] = -c0*c4*p_g*p_l1 - c7 - c8;
+  rows[0] = -c0*cos_q_phi1*p_g*p_l1 - c7 - c8;
   rows[1] = c7 + c8;
   rows[2] = T(0);
   rows[3] = T(2)*c5*dq_phi2*p_l1*p_l2*p_m2;
   rows[4] = c10 + c9;
-  rows[5] = -c10 - c3*p_g*p_l2*p_m2 - c9;
+  rows[5] = -c10 - c9 - cos_q_phi2*p_g*p_l2*p_m2;
   rows[6] = -T(2)*c5*dq_phi1*p_l1*p_l2*p_m2;
   rows[7] = T(0);
   detail::ldlt_solve_rows<4>(L, D, rows);
@@ -426,21 +416,17 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T cos_q_phi1 = trig_cos[0];
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
-  const T c0 = sin_q_phi1;
-  const T c1 = cos_q_phi2;
-  const T c2 = sin_q_phi2;
-  const T c3 = cos_q_phi1;
-  const T c4 = -c0*c1 + c2*c3;
-  const T c5 = c0*c2 + c1*c3;
+  const T c4 = cos_q_phi1*sin_q_phi2 - cos_q_phi2*sin_q_phi1;
+  const T c5 = cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2;
   P[0] = T(0);
   P[1] = -T(2)*c4*dq_phi2*p_l1*p_l2*p_m2;
-  Q[0] = (p_m1 + p_m2)*c3*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
+  Q[0] = (p_m1 + p_m2)*cos_q_phi1*p_g*p_l1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
   Q[1] = -c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2;
   B[0] = T(1);
   P[2] = T(2)*c4*dq_phi1*p_l1*p_l2*p_m2;
   P[3] = T(0);
   Q[2] = -c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
-  Q[3] = c1*p_g*p_l2*p_m2 + c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2;
+  Q[3] = c5*dq_phi1*dq_phi1*p_l1*p_l2*p_m2 + cos_q_phi2*p_g*p_l2*p_m2;
   B[1] = T(0);
 }
 
@@ -611,9 +597,8 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   const T c0 = p_l1*sin_q_phi1;
   out[0] = c0;
   out[12] = c0 + p_l2*sin_q_phi2;
-  const T c1 = cos_q_phi1;
-  out[1] = -c1*p_l1;
-  out[13] = -c1*p_l1 - cos_q_phi2*p_l2;
+  out[1] = -cos_q_phi1*p_l1;
+  out[13] = -cos_q_phi1*p_l1 - cos_q_phi2*p_l2;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

@@ -224,18 +224,14 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
-  const T c0 = cos_q_beta;
-  const T c1 = c0*c0;
-  const T c2 = cos_q_gamma;
-  const T c3 = c2*c2;
-  const T c4 = sin_q_beta;
-  M[2] = c4*p_C;
+  const T c1 = cos_q_beta*cos_q_beta;
+  const T c3 = cos_q_gamma*cos_q_gamma;
+  M[2] = p_C*sin_q_beta;
   M[6] = M[2];
-  const T c5 = sin_q_gamma;
-  M[1] = (p_A - p_B)*c0*c2*c5;
+  M[1] = (p_A - p_B)*cos_q_beta*cos_q_gamma*sin_q_gamma;
   M[3] = M[1];
-  const T c6 = c5*c5;
-  M[0] = c1*c3*p_A + c1*c6*p_B + c4*c4*p_C;
+  const T c6 = sin_q_gamma*sin_q_gamma;
+  M[0] = c1*c3*p_A + c1*c6*p_B + p_C*sin_q_beta*sin_q_beta;
   M[4] = c3*p_B + c6*p_A;
 }
 
@@ -265,16 +261,12 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T c0 = -p_A + p_B;
   const T c1 = c0 - p_C;
   const T c2 = c0 + p_C;
-  const T c3 = sin_q_beta;
-  const T c4 = cos_q_beta;
-  const T c5 = cos_q_gamma;
-  const T c6 = c5*c5;
-  const T c7 = sin_q_gamma;
-  const T c8 = c7*c7;
-  f[1] = -(p_A - p_C)*c3*c4*c6*dq_alpha*dq_alpha - (p_B - p_C)*c3*c4*c8*dq_alpha*dq_alpha + T(2)*c0*c5*c7*dq_beta*dq_gamma - c1*c4*c8*dq_alpha*dq_gamma + c2*c4*c6*dq_alpha*dq_gamma;
-  const T c9 = c4*c4;
-  f[0] = (T(2)*p_A - p_C)*c3*c4*c6*dq_alpha*dq_beta + (T(2)*p_B - p_C)*c3*c4*c8*dq_alpha*dq_beta - T(2)*c0*c5*c7*c9*dq_alpha*dq_gamma - c0*c3*c5*c7*dq_beta*dq_beta + c1*c4*c6*dq_beta*dq_gamma - c2*c4*c8*dq_beta*dq_gamma - c3*c4*dq_alpha*dq_beta*p_C;
-  f[2] = -c0*c4*c6*dq_alpha*dq_beta + c0*c4*c8*dq_alpha*dq_beta + c0*c5*c7*c9*dq_alpha*dq_alpha - c0*c5*c7*dq_beta*dq_beta - c4*dq_alpha*dq_beta*p_C;
+  const T c6 = cos_q_gamma*cos_q_gamma;
+  const T c8 = sin_q_gamma*sin_q_gamma;
+  f[1] = -(p_A - p_C)*c6*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta - (p_B - p_C)*c8*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta + T(2)*c0*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma - c1*c8*cos_q_beta*dq_alpha*dq_gamma + c2*c6*cos_q_beta*dq_alpha*dq_gamma;
+  const T c9 = cos_q_beta*cos_q_beta;
+  f[0] = (T(2)*p_A - p_C)*c6*cos_q_beta*dq_alpha*dq_beta*sin_q_beta + (T(2)*p_B - p_C)*c8*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - T(2)*c0*c9*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma - c0*cos_q_gamma*dq_beta*dq_beta*sin_q_beta*sin_q_gamma + c1*c6*cos_q_beta*dq_beta*dq_gamma - c2*c8*cos_q_beta*dq_beta*dq_gamma - cos_q_beta*dq_alpha*dq_beta*p_C*sin_q_beta;
+  f[2] = -c0*c6*cos_q_beta*dq_alpha*dq_beta + c0*c8*cos_q_beta*dq_alpha*dq_beta + c0*c9*cos_q_gamma*dq_alpha*dq_alpha*sin_q_gamma - c0*cos_q_gamma*dq_beta*dq_beta*sin_q_gamma - cos_q_beta*dq_alpha*dq_beta*p_C;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -303,27 +295,23 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T c0 = -p_A + p_B;
   const T c1 = c0 - p_C;
   const T c2 = c0 + p_C;
-  const T c3 = cos_q_beta;
-  const T c4 = c3*c3;
-  const T c5 = cos_q_gamma;
-  const T c6 = c5*c5;
-  const T c7 = sin_q_beta;
-  const T c8 = sin_q_gamma;
-  const T c9 = c8*c8;
+  const T c4 = cos_q_beta*cos_q_beta;
+  const T c6 = cos_q_gamma*cos_q_gamma;
+  const T c9 = sin_q_gamma*sin_q_gamma;
   T M[9];
-  M[0] = c4*c6*p_A + c4*c9*p_B + c7*c7*p_C;
-  M[1] = -c0*c3*c5*c8;
+  M[0] = c4*c6*p_A + c4*c9*p_B + p_C*sin_q_beta*sin_q_beta;
+  M[1] = -c0*cos_q_beta*cos_q_gamma*sin_q_gamma;
   M[3] = M[1];
-  M[2] = c7*p_C;
+  M[2] = p_C*sin_q_beta;
   M[6] = M[2];
   M[4] = c6*p_B + c9*p_A;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
   T ddq[3];
-  ddq[0] = (T(2)*p_A - p_C)*c3*c6*c7*dq_alpha*dq_beta + (T(2)*p_B - p_C)*c3*c7*c9*dq_alpha*dq_beta - T(2)*c0*c4*c5*c8*dq_alpha*dq_gamma - c0*c5*c7*c8*dq_beta*dq_beta + c1*c3*c6*dq_beta*dq_gamma - c2*c3*c9*dq_beta*dq_gamma - c3*c7*dq_alpha*dq_beta*p_C;
-  ddq[1] = -(p_A - p_C)*c3*c6*c7*dq_alpha*dq_alpha - (p_B - p_C)*c3*c7*c9*dq_alpha*dq_alpha + T(2)*c0*c5*c8*dq_beta*dq_gamma - c1*c3*c9*dq_alpha*dq_gamma + c2*c3*c6*dq_alpha*dq_gamma;
-  ddq[2] = -c0*c3*c6*dq_alpha*dq_beta + c0*c3*c9*dq_alpha*dq_beta + c0*c4*c5*c8*dq_alpha*dq_alpha - c0*c5*c8*dq_beta*dq_beta - c3*dq_alpha*dq_beta*p_C;
+  ddq[0] = (T(2)*p_A - p_C)*c6*cos_q_beta*dq_alpha*dq_beta*sin_q_beta + (T(2)*p_B - p_C)*c9*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - T(2)*c0*c4*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma - c0*cos_q_gamma*dq_beta*dq_beta*sin_q_beta*sin_q_gamma + c1*c6*cos_q_beta*dq_beta*dq_gamma - c2*c9*cos_q_beta*dq_beta*dq_gamma - cos_q_beta*dq_alpha*dq_beta*p_C*sin_q_beta;
+  ddq[1] = -(p_A - p_C)*c6*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta - (p_B - p_C)*c9*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta + T(2)*c0*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma - c1*c9*cos_q_beta*dq_alpha*dq_gamma + c2*c6*cos_q_beta*dq_alpha*dq_gamma;
+  ddq[2] = c0*c4*cos_q_gamma*dq_alpha*dq_alpha*sin_q_gamma - c0*c6*cos_q_beta*dq_alpha*dq_beta + c0*c9*cos_q_beta*dq_alpha*dq_beta - c0*cos_q_gamma*dq_beta*dq_beta*sin_q_gamma - cos_q_beta*dq_alpha*dq_beta*p_C;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
@@ -362,27 +350,23 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c0 = -p_A + p_B;
   const T c1 = c0 - p_C;
   const T c2 = c0 + p_C;
-  const T c3 = cos_q_beta;
-  const T c4 = c3*c3;
-  const T c5 = cos_q_gamma;
-  const T c6 = c5*c5;
-  const T c7 = sin_q_beta;
-  const T c8 = sin_q_gamma;
-  const T c9 = c8*c8;
+  const T c4 = cos_q_beta*cos_q_beta;
+  const T c6 = cos_q_gamma*cos_q_gamma;
+  const T c9 = sin_q_gamma*sin_q_gamma;
   T M[9];
-  M[0] = c4*c6*p_A + c4*c9*p_B + c7*c7*p_C;
-  M[1] = -c0*c3*c5*c8;
+  M[0] = c4*c6*p_A + c4*c9*p_B + p_C*sin_q_beta*sin_q_beta;
+  M[1] = -c0*cos_q_beta*cos_q_gamma*sin_q_gamma;
   M[3] = M[1];
-  M[2] = c7*p_C;
+  M[2] = p_C*sin_q_beta;
   M[6] = M[2];
   M[4] = c6*p_B + c9*p_A;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
   T ddq[3];
-  ddq[0] = (T(2)*p_A - p_C)*c3*c6*c7*dq_alpha*dq_beta + (T(2)*p_B - p_C)*c3*c7*c9*dq_alpha*dq_beta - T(2)*c0*c4*c5*c8*dq_alpha*dq_gamma - c0*c5*c7*c8*dq_beta*dq_beta + c1*c3*c6*dq_beta*dq_gamma - c2*c3*c9*dq_beta*dq_gamma - c3*c7*dq_alpha*dq_beta*p_C;
-  ddq[1] = -(p_A - p_C)*c3*c6*c7*dq_alpha*dq_alpha - (p_B - p_C)*c3*c7*c9*dq_alpha*dq_alpha + T(2)*c0*c5*c8*dq_beta*dq_gamma - c1*c3*c9*dq_alpha*dq_gamma + c2*c3*c6*dq_alpha*dq_gamma;
-  ddq[2] = -c0*c3*c6*dq_alpha*dq_beta + c0*c3*c9*dq_alpha*dq_beta + c0*c4*c5*c8*dq_alpha*dq_alpha - c0*c5*c8*dq_beta*dq_beta - c3*dq_alpha*dq_beta*p_C;
+  ddq[0] = (T(2)*p_A - p_C)*c6*cos_q_beta*dq_alpha*dq_beta*sin_q_beta + (T(2)*p_B - p_C)*c9*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - T(2)*c0*c4*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma - c0*cos_q_gamma*dq_beta*dq_beta*sin_q_beta*sin_q_gamma + c1*c6*cos_q_beta*dq_beta*dq_gamma - c2*c9*cos_q_beta*dq_beta*dq_gamma - cos_q_beta*dq_alpha*dq_beta*p_C*sin_q_beta;
+  ddq[1] = -(p_A - p_C)*c6*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta - (p_B - p_C)*c9*cos_q_beta*dq_alpha*dq_alpha*sin_q_beta + T(2)*c0*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma - c1*c9*cos_q_beta*dq_alpha*dq_gamma + c2*c6*cos_q_beta*dq_alpha*dq_gamma;
+  ddq[2] = c0*c4*cos_q_gamma*dq_alpha*dq_alpha*sin_q_gamma - c0*c6*cos_q_beta*dq_alpha*dq_beta + c0*c9*cos_q_beta*dq_alpha*dq_beta - c0*cos_q_gamma*dq_beta*dq_beta*sin_q_gamma - cos_q_beta*dq_alpha*dq_beta*p_C;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
@@ -391,10 +375,10 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c11 = -T(2)*p_A + p_C;
   const T c12 = -p_A + p_C;
   const T c13 = p_B - p_C;
-  const T c14 = c7*c7;
-  const T c15 = -c0*c3*c6 + c0*c3*c9;
-  const T c16 = -T(2)*c0*c4*c5*c8*dq_alpha;
-  const T c17 = T(2)*c0*c5*c8*dq_beta;
+  const T c14 = sin_q_beta*sin_q_beta;
+  const T c15 = -c0*c6*cos_q_beta + c0*c9*cos_q_beta;
+  const T c16 = -T(2)*c0*c4*cos_q_gamma*dq_alpha*sin_q_gamma;
+  const T c17 = T(2)*c0*cos_q_gamma*dq_beta*sin_q_gamma;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -415,22 +399,22 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[17] = T(1);
   T* rows = J + 18;
   rows[0] = T(0);
-  rows[1] = T(2)*(c3*c6*c7*p_A + c3*c7*c9*p_B - c3*c7*p_C)*ddq[0] + T(4)*c0*c3*c5*c7*c8*dq_alpha*dq_gamma - c0*c3*c5*c8*dq_beta*dq_beta - c0*c5*c7*c8*ddq[1] - c1*c6*c7*dq_beta*dq_gamma - c10*c14*c9*dq_alpha*dq_beta + c10*c4*c9*dq_alpha*dq_beta + c11*c14*c6*dq_alpha*dq_beta - c11*c4*c6*dq_alpha*dq_beta + c14*dq_alpha*dq_beta*p_C + c2*c7*c9*dq_beta*dq_gamma - c3*ddq[2]*p_C - c4*dq_alpha*dq_beta*p_C;
-  rows[2] = T(2)*(c4*c5*c8*p_A - c4*c5*c8*p_B)*ddq[0] - T(2)*c0*c4*c6*dq_alpha*dq_gamma + T(2)*c0*c4*c9*dq_alpha*dq_gamma - T(2)*c1*c3*c5*c8*dq_beta*dq_gamma + T(2)*c10*c3*c5*c7*c8*dq_alpha*dq_beta + T(2)*c11*c3*c5*c7*c8*dq_alpha*dq_beta - T(2)*c2*c3*c5*c8*dq_beta*dq_gamma - c0*c6*c7*dq_beta*dq_beta + c0*c7*c9*dq_beta*dq_beta - c15*ddq[1];
-  rows[3] = -T(2)*c0*c4*c5*c8*dq_gamma + c10*c3*c7*c9*dq_beta - c11*c3*c6*c7*dq_beta - c3*c7*dq_beta*p_C;
-  rows[4] = -T(2)*c0*c5*c7*c8*dq_beta + c1*c3*c6*dq_gamma + c10*c3*c7*c9*dq_alpha - c11*c3*c6*c7*dq_alpha - c2*c3*c9*dq_gamma - c3*c7*dq_alpha*p_C;
-  rows[5] = c1*c3*c6*dq_beta + c16 - c2*c3*c9*dq_beta;
+  rows[1] = T(2)*(c6*cos_q_beta*p_A*sin_q_beta + c9*cos_q_beta*p_B*sin_q_beta - cos_q_beta*p_C*sin_q_beta)*ddq[0] + T(4)*c0*cos_q_beta*cos_q_gamma*dq_alpha*dq_gamma*sin_q_beta*sin_q_gamma - c0*cos_q_beta*cos_q_gamma*dq_beta*dq_beta*sin_q_gamma - c0*cos_q_gamma*ddq[1]*sin_q_beta*sin_q_gamma - c1*c6*dq_beta*dq_gamma*sin_q_beta - c10*c14*c9*dq_alpha*dq_beta + c10*c4*c9*dq_alpha*dq_beta + c11*c14*c6*dq_alpha*dq_beta - c11*c4*c6*dq_alpha*dq_beta + c14*dq_alpha*dq_beta*p_C + c2*c9*dq_beta*dq_gamma*sin_q_beta - c4*dq_alpha*dq_beta*p_C - cos_q_beta*ddq[2]*p_C;
+  rows[2] = T(2)*(c4*cos_q_gamma*p_A*sin_q_gamma - c4*cos_q_gamma*p_B*sin_q_gamma)*ddq[0] - T(2)*c0*c4*c6*dq_alpha*dq_gamma + T(2)*c0*c4*c9*dq_alpha*dq_gamma - T(2)*c1*cos_q_beta*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma + T(2)*c10*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_beta*sin_q_gamma + T(2)*c11*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_beta*sin_q_gamma - T(2)*c2*cos_q_beta*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma - c0*c6*dq_beta*dq_beta*sin_q_beta + c0*c9*dq_beta*dq_beta*sin_q_beta - c15*ddq[1];
+  rows[3] = -T(2)*c0*c4*cos_q_gamma*dq_gamma*sin_q_gamma + c10*c9*cos_q_beta*dq_beta*sin_q_beta - c11*c6*cos_q_beta*dq_beta*sin_q_beta - cos_q_beta*dq_beta*p_C*sin_q_beta;
+  rows[4] = -T(2)*c0*cos_q_gamma*dq_beta*sin_q_beta*sin_q_gamma + c1*c6*cos_q_beta*dq_gamma + c10*c9*cos_q_beta*dq_alpha*sin_q_beta - c11*c6*cos_q_beta*dq_alpha*sin_q_beta - c2*c9*cos_q_beta*dq_gamma - cos_q_beta*dq_alpha*p_C*sin_q_beta;
+  rows[5] = c1*c6*cos_q_beta*dq_beta + c16 - c2*c9*cos_q_beta*dq_beta;
   rows[6] = T(0);
-  rows[7] = -c0*c5*c7*c8*ddq[0] + c1*c7*c9*dq_alpha*dq_gamma - c12*c14*c6*dq_alpha*dq_alpha + c12*c4*c6*dq_alpha*dq_alpha + c13*c14*c9*dq_alpha*dq_alpha - c13*c4*c9*dq_alpha*dq_alpha - c2*c6*c7*dq_alpha*dq_gamma;
-  rows[8] = -T(2)*(c5*c8*p_A - c5*c8*p_B)*ddq[1] + T(2)*c0*c6*dq_beta*dq_gamma - T(2)*c0*c9*dq_beta*dq_gamma - T(2)*c1*c3*c5*c8*dq_alpha*dq_gamma - T(2)*c12*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c13*c3*c5*c7*c8*dq_alpha*dq_alpha - T(2)*c2*c3*c5*c8*dq_alpha*dq_gamma - c15*ddq[0];
-  rows[9] = T(2)*c12*c3*c6*c7*dq_alpha - T(2)*c13*c3*c7*c9*dq_alpha - c1*c3*c9*dq_gamma + c2*c3*c6*dq_gamma;
-  rows[10] = T(2)*c0*c5*c8*dq_gamma;
-  rows[11] = -c1*c3*c9*dq_alpha + c17 + c2*c3*c6*dq_alpha;
+  rows[7] = -c0*cos_q_gamma*ddq[0]*sin_q_beta*sin_q_gamma + c1*c9*dq_alpha*dq_gamma*sin_q_beta - c12*c14*c6*dq_alpha*dq_alpha + c12*c4*c6*dq_alpha*dq_alpha + c13*c14*c9*dq_alpha*dq_alpha - c13*c4*c9*dq_alpha*dq_alpha - c2*c6*dq_alpha*dq_gamma*sin_q_beta;
+  rows[8] = -T(2)*(cos_q_gamma*p_A*sin_q_gamma - cos_q_gamma*p_B*sin_q_gamma)*ddq[1] + T(2)*c0*c6*dq_beta*dq_gamma - T(2)*c0*c9*dq_beta*dq_gamma - T(2)*c1*cos_q_beta*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma - T(2)*c12*cos_q_beta*cos_q_gamma*dq_alpha*dq_alpha*sin_q_beta*sin_q_gamma - T(2)*c13*cos_q_beta*cos_q_gamma*dq_alpha*dq_alpha*sin_q_beta*sin_q_gamma - T(2)*c2*cos_q_beta*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma - c15*ddq[0];
+  rows[9] = T(2)*c12*c6*cos_q_beta*dq_alpha*sin_q_beta - T(2)*c13*c9*cos_q_beta*dq_alpha*sin_q_beta - c1*c9*cos_q_beta*dq_gamma + c2*c6*cos_q_beta*dq_gamma;
+  rows[10] = T(2)*c0*cos_q_gamma*dq_gamma*sin_q_gamma;
+  rows[11] = -c1*c9*cos_q_beta*dq_alpha + c17 + c2*c6*cos_q_beta*dq_alpha;
   rows[12] = T(0);
-  rows[13] = -T(2)*c0*c3*c5*c7*c8*dq_alpha*dq_alpha + c0*c6*c7*dq_alpha*dq_beta - c0*c7*c9*dq_alpha*dq_beta - c3*ddq[0]*p_C + c7*dq_alpha*dq_beta*p_C;
-  rows[14] = T(4)*c0*c3*c5*c8*dq_alpha*dq_beta + c0*c4*c6*dq_alpha*dq_alpha - c0*c4*c9*dq_alpha*dq_alpha - c0*c6*dq_beta*dq_beta + c0*c9*dq_beta*dq_beta;
-  rows[15] = -c0*c3*c6*dq_beta + c0*c3*c9*dq_beta - c16 - c3*dq_beta*p_C;
-  rows[16] = -c0*c3*c6*dq_alpha + c0*c3*c9*dq_alpha - c17 - c3*dq_alpha*p_C;
+  rows[13] = -T(2)*c0*cos_q_beta*cos_q_gamma*dq_alpha*dq_alpha*sin_q_beta*sin_q_gamma + c0*c6*dq_alpha*dq_beta*sin_q_beta - c0*c9*dq_alpha*dq_beta*sin_q_beta - cos_q_beta*ddq[0]*p_C + dq_alpha*dq_beta*p_C*sin_q_beta;
+  rows[14] = T(4)*c0*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_gamma + c0*c4*c6*dq_alpha*dq_alpha - c0*c4*c9*dq_alpha*dq_alpha - c0*c6*dq_beta*dq_beta + c0*c9*dq_beta*dq_beta;
+  rows[15] = -c0*c6*cos_q_beta*dq_beta + c0*c9*cos_q_beta*dq_beta - c16 - cos_q_beta*dq_beta*p_C;
+  rows[16] = -c0*c6*cos_q_beta*dq_alpha + c0*c9*cos_q_beta*dq_alpha - c17 - cos_q_beta*dq_alpha*p_C;
   rows[17] = T(0);
   detail::ldlt_solve_rows<6>(L, D, rows);
 }
@@ -473,34 +457,30 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c4 = p_B - p_C;
   const T c5 = c2 - p_C;
   const T c6 = c2 + p_C;
-  const T c7 = sin_q_beta;
-  const T c8 = sin_q_gamma;
-  const T c9 = c8*c8;
-  const T c10 = cos_q_beta;
-  const T c11 = cos_q_gamma;
-  const T c12 = c11*c11;
-  const T c13 = c10*c10;
-  const T c14 = -T(2)*c11*c13*c2*c8*dq_alpha;
-  const T c15 = c7*c7;
-  const T c16 = T(2)*c11*c2*c8*dq_beta;
-  P[0] = T(2)*c11*c13*c2*c8*dq_gamma - c0*c10*c7*c9*dq_beta + c1*c10*c12*c7*dq_beta + c10*c7*dq_beta*p_C;
-  P[1] = T(2)*c11*c2*c7*c8*dq_beta - c0*c10*c7*c9*dq_alpha + c1*c10*c12*c7*dq_alpha - c10*c12*c5*dq_gamma + c10*c6*c9*dq_gamma + c10*c7*dq_alpha*p_C;
-  P[2] = -c10*c12*c5*dq_beta + c10*c6*c9*dq_beta - c14;
+  const T c9 = sin_q_gamma*sin_q_gamma;
+  const T c12 = cos_q_gamma*cos_q_gamma;
+  const T c13 = cos_q_beta*cos_q_beta;
+  const T c14 = -T(2)*c13*c2*cos_q_gamma*dq_alpha*sin_q_gamma;
+  const T c15 = sin_q_beta*sin_q_beta;
+  const T c16 = T(2)*c2*cos_q_gamma*dq_beta*sin_q_gamma;
+  P[0] = T(2)*c13*c2*cos_q_gamma*dq_gamma*sin_q_gamma - c0*c9*cos_q_beta*dq_beta*sin_q_beta + c1*c12*cos_q_beta*dq_beta*sin_q_beta + cos_q_beta*dq_beta*p_C*sin_q_beta;
+  P[1] = T(2)*c2*cos_q_gamma*dq_beta*sin_q_beta*sin_q_gamma - c0*c9*cos_q_beta*dq_alpha*sin_q_beta + c1*c12*cos_q_beta*dq_alpha*sin_q_beta - c12*c5*cos_q_beta*dq_gamma + c6*c9*cos_q_beta*dq_gamma + cos_q_beta*dq_alpha*p_C*sin_q_beta;
+  P[2] = -c12*c5*cos_q_beta*dq_beta - c14 + c6*c9*cos_q_beta*dq_beta;
   Q[0] = T(0);
-  Q[1] = -T(4)*c10*c11*c2*c7*c8*dq_alpha*dq_gamma - c0*c13*c9*dq_alpha*dq_beta + c0*c15*c9*dq_alpha*dq_beta + c1*c12*c13*dq_alpha*dq_beta - c1*c12*c15*dq_alpha*dq_beta + c10*c11*c2*c8*dq_beta*dq_beta + c12*c5*c7*dq_beta*dq_gamma + c13*dq_alpha*dq_beta*p_C - c15*dq_alpha*dq_beta*p_C - c6*c7*c9*dq_beta*dq_gamma;
-  Q[2] = -T(2)*c0*c10*c11*c7*c8*dq_alpha*dq_beta - T(2)*c1*c10*c11*c7*c8*dq_alpha*dq_beta + T(2)*c10*c11*c5*c8*dq_beta*dq_gamma + T(2)*c10*c11*c6*c8*dq_beta*dq_gamma + T(2)*c12*c13*c2*dq_alpha*dq_gamma - T(2)*c13*c2*c9*dq_alpha*dq_gamma + c12*c2*c7*dq_beta*dq_beta - c2*c7*c9*dq_beta*dq_beta;
-  P[3] = -T(2)*c10*c12*c3*c7*dq_alpha + T(2)*c10*c4*c7*c9*dq_alpha - c10*c12*c6*dq_gamma + c10*c5*c9*dq_gamma;
-  P[4] = -T(2)*c11*c2*c8*dq_gamma;
-  P[5] = -c10*c12*c6*dq_alpha + c10*c5*c9*dq_alpha - c16;
+  Q[1] = -T(4)*c2*cos_q_beta*cos_q_gamma*dq_alpha*dq_gamma*sin_q_beta*sin_q_gamma - c0*c13*c9*dq_alpha*dq_beta + c0*c15*c9*dq_alpha*dq_beta + c1*c12*c13*dq_alpha*dq_beta - c1*c12*c15*dq_alpha*dq_beta + c12*c5*dq_beta*dq_gamma*sin_q_beta + c13*dq_alpha*dq_beta*p_C - c15*dq_alpha*dq_beta*p_C + c2*cos_q_beta*cos_q_gamma*dq_beta*dq_beta*sin_q_gamma - c6*c9*dq_beta*dq_gamma*sin_q_beta;
+  Q[2] = -T(2)*c0*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_beta*sin_q_gamma - T(2)*c1*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_beta*sin_q_gamma + T(2)*c12*c13*c2*dq_alpha*dq_gamma - T(2)*c13*c2*c9*dq_alpha*dq_gamma + T(2)*c5*cos_q_beta*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma + T(2)*c6*cos_q_beta*cos_q_gamma*dq_beta*dq_gamma*sin_q_gamma + c12*c2*dq_beta*dq_beta*sin_q_beta - c2*c9*dq_beta*dq_beta*sin_q_beta;
+  P[3] = -T(2)*c12*c3*cos_q_beta*dq_alpha*sin_q_beta + T(2)*c4*c9*cos_q_beta*dq_alpha*sin_q_beta - c12*c6*cos_q_beta*dq_gamma + c5*c9*cos_q_beta*dq_gamma;
+  P[4] = -T(2)*c2*cos_q_gamma*dq_gamma*sin_q_gamma;
+  P[5] = -c12*c6*cos_q_beta*dq_alpha - c16 + c5*c9*cos_q_beta*dq_alpha;
   Q[3] = T(0);
-  Q[4] = -c12*c13*c3*dq_alpha*dq_alpha + c12*c15*c3*dq_alpha*dq_alpha + c12*c6*c7*dq_alpha*dq_gamma + c13*c4*c9*dq_alpha*dq_alpha - c15*c4*c9*dq_alpha*dq_alpha - c5*c7*c9*dq_alpha*dq_gamma;
-  Q[5] = T(2)*c10*c11*c3*c7*c8*dq_alpha*dq_alpha + T(2)*c10*c11*c4*c7*c8*dq_alpha*dq_alpha + T(2)*c10*c11*c5*c8*dq_alpha*dq_gamma + T(2)*c10*c11*c6*c8*dq_alpha*dq_gamma - T(2)*c12*c2*dq_beta*dq_gamma + T(2)*c2*c9*dq_beta*dq_gamma;
-  P[6] = c10*c12*c2*dq_beta - c10*c2*c9*dq_beta + c10*dq_beta*p_C + c14;
-  P[7] = c10*c12*c2*dq_alpha - c10*c2*c9*dq_alpha + c10*dq_alpha*p_C + c16;
+  Q[4] = -c12*c13*c3*dq_alpha*dq_alpha + c12*c15*c3*dq_alpha*dq_alpha + c12*c6*dq_alpha*dq_gamma*sin_q_beta + c13*c4*c9*dq_alpha*dq_alpha - c15*c4*c9*dq_alpha*dq_alpha - c5*c9*dq_alpha*dq_gamma*sin_q_beta;
+  Q[5] = -T(2)*c12*c2*dq_beta*dq_gamma + T(2)*c2*c9*dq_beta*dq_gamma + T(2)*c3*cos_q_beta*cos_q_gamma*dq_alpha*dq_alpha*sin_q_beta*sin_q_gamma + T(2)*c4*cos_q_beta*cos_q_gamma*dq_alpha*dq_alpha*sin_q_beta*sin_q_gamma + T(2)*c5*cos_q_beta*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma + T(2)*c6*cos_q_beta*cos_q_gamma*dq_alpha*dq_gamma*sin_q_gamma;
+  P[6] = c12*c2*cos_q_beta*dq_beta + c14 - c2*c9*cos_q_beta*dq_beta + cos_q_beta*dq_beta*p_C;
+  P[7] = c12*c2*cos_q_beta*dq_alpha + c16 - c2*c9*cos_q_beta*dq_alpha + cos_q_beta*dq_alpha*p_C;
   P[8] = T(0);
   Q[6] = T(0);
-  Q[7] = T(2)*c10*c11*c2*c7*c8*dq_alpha*dq_alpha - c12*c2*c7*dq_alpha*dq_beta + c2*c7*c9*dq_alpha*dq_beta - c7*dq_alpha*dq_beta*p_C;
-  Q[8] = -T(4)*c10*c11*c2*c8*dq_alpha*dq_beta - c12*c13*c2*dq_alpha*dq_alpha + c12*c2*dq_beta*dq_beta + c13*c2*c9*dq_alpha*dq_alpha - c2*c9*dq_beta*dq_beta;
+  Q[7] = T(2)*c2*cos_q_beta*cos_q_gamma*dq_alpha*dq_alpha*sin_q_beta*sin_q_gamma - c12*c2*dq_alpha*dq_beta*sin_q_beta + c2*c9*dq_alpha*dq_beta*sin_q_beta - dq_alpha*dq_beta*p_C*sin_q_beta;
+  Q[8] = -T(4)*c2*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_gamma - c12*c13*c2*dq_alpha*dq_alpha + c12*c2*dq_beta*dq_beta + c13*c2*c9*dq_alpha*dq_alpha - c2*c9*dq_beta*dq_beta;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
@@ -525,14 +505,10 @@ T kinetic_energy(T t, const T* x, const T* p) {
   const T cos_q_beta = trig_cos[0];
   const T sin_q_gamma = trig_sin[1];
   const T cos_q_gamma = trig_cos[1];
-  const T c0 = cos_q_gamma;
-  const T c1 = cos_q_beta;
-  const T c2 = sin_q_gamma;
-  const T c3 = c0*c0;
-  const T c4 = c1*c1;
-  const T c5 = c2*c2;
-  const T c6 = sin_q_beta;
-  return (T(1)/T(2))*c3*c4*dq_alpha*dq_alpha*p_A + (T(1)/T(2))*c3*dq_beta*dq_beta*p_B + (T(1)/T(2))*c4*c5*dq_alpha*dq_alpha*p_B + (T(1)/T(2))*c5*dq_beta*dq_beta*p_A + (T(1)/T(2))*c6*c6*dq_alpha*dq_alpha*p_C + (T(1)/T(2))*dq_gamma*dq_gamma*p_C + (p_A - p_B)*c0*c1*c2*dq_alpha*dq_beta + c6*dq_alpha*dq_gamma*p_C;
+  const T c3 = cos_q_gamma*cos_q_gamma;
+  const T c4 = cos_q_beta*cos_q_beta;
+  const T c5 = sin_q_gamma*sin_q_gamma;
+  return (T(1)/T(2))*c3*c4*dq_alpha*dq_alpha*p_A + (T(1)/T(2))*c3*dq_beta*dq_beta*p_B + (T(1)/T(2))*c4*c5*dq_alpha*dq_alpha*p_B + (T(1)/T(2))*c5*dq_beta*dq_beta*p_A + (T(1)/T(2))*dq_alpha*dq_alpha*p_C*sin_q_beta*sin_q_beta + (T(1)/T(2))*dq_gamma*dq_gamma*p_C + (p_A - p_B)*cos_q_beta*cos_q_gamma*dq_alpha*dq_beta*sin_q_gamma + dq_alpha*dq_gamma*p_C*sin_q_beta;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -561,11 +537,8 @@ void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   const T cos_q_beta = trig_cos[0];
   const T sin_q_gamma = trig_sin[1];
   const T cos_q_gamma = trig_cos[1];
-  const T c0 = sin_q_gamma;
-  const T c1 = cos_q_gamma;
-  const T c2 = cos_q_beta;
-  y[0] = c0*dq_beta + c1*c2*dq_alpha;
-  y[1] = -c0*c2*dq_alpha + c1*dq_beta;
+  y[0] = cos_q_beta*cos_q_gamma*dq_alpha + dq_beta*sin_q_gamma;
+  y[1] = -cos_q_beta*dq_alpha*sin_q_gamma + cos_q_gamma*dq_beta;
   y[2] = dq_alpha*sin_q_beta + dq_gamma;
 }
 
@@ -597,12 +570,8 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T sin_q_gamma = trig_sin[1];
   const T cos_q_gamma = trig_cos[1];
   out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
-  const T c0 = sin_q_beta;
-  const T c1 = cos_q_beta;
-  const T c2 = c1*c1;
-  const T c3 = sin_q_gamma;
-  const T c4 = cos_q_gamma;
-  out[1] = (p_A - p_B)*c1*c3*c4*dq_beta + c0*c0*dq_alpha*p_C + c0*dq_gamma*p_C + c2*c3*c3*dq_alpha*p_B + c2*c4*c4*dq_alpha*p_A;
+  const T c2 = cos_q_beta*cos_q_beta;
+  out[1] = (p_A - p_B)*cos_q_beta*cos_q_gamma*dq_beta*sin_q_gamma + c2*cos_q_gamma*cos_q_gamma*dq_alpha*p_A + c2*dq_alpha*p_B*sin_q_gamma*sin_q_gamma + dq_alpha*p_C*sin_q_beta*sin_q_beta + dq_gamma*p_C*sin_q_beta;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.
@@ -672,21 +641,15 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[0] = T(0);
   out[1] = T(0);
   out[2] = T(0);
-  const T c0 = cos_q_gamma;
-  const T c1 = cos_q_beta;
-  out[3] = c0*c1;
-  const T c2 = sin_q_gamma;
-  out[4] = -c1*c2;
-  const T c3 = sin_q_beta;
-  out[5] = c3;
-  const T c4 = sin_q_alpha;
-  out[8] = -c1*c4;
-  const T c5 = cos_q_alpha;
-  out[6] = c0*c3*c4 + c2*c5;
-  out[7] = c0*c5 - c2*c3*c4;
-  out[9] = -c0*c3*c5 + c2*c4;
-  out[10] = c0*c4 + c2*c3*c5;
-  out[11] = c1*c5;
+  out[3] = cos_q_beta*cos_q_gamma;
+  out[4] = -cos_q_beta*sin_q_gamma;
+  out[5] = sin_q_beta;
+  out[8] = -cos_q_beta*sin_q_alpha;
+  out[6] = cos_q_alpha*sin_q_gamma + cos_q_gamma*sin_q_alpha*sin_q_beta;
+  out[7] = cos_q_alpha*cos_q_gamma - sin_q_alpha*sin_q_beta*sin_q_gamma;
+  out[9] = -cos_q_alpha*cos_q_gamma*sin_q_beta + sin_q_alpha*sin_q_gamma;
+  out[10] = cos_q_alpha*sin_q_beta*sin_q_gamma + cos_q_gamma*sin_q_alpha;
+  out[11] = cos_q_alpha*cos_q_beta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

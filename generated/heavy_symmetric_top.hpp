@@ -226,11 +226,10 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
-  const T c0 = cos_q_theta;
-  M[2] = c0*p_C;
+  M[2] = cos_q_theta*p_C;
   M[6] = M[2];
   const T c1 = p_A + p_m*p_s*p_s;
-  M[0] = c0*c0*p_C + c1*sin_q_theta*sin_q_theta;
+  M[0] = c1*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*p_C;
   M[4] = c1;
 }
 
@@ -256,12 +255,10 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  f[2] = c0*dq_psi*dq_theta*p_C;
+  f[2] = dq_psi*dq_theta*p_C*sin_q_theta;
   const T c1 = p_A - p_C + p_m*p_s*p_s;
-  const T c2 = cos_q_theta;
-  f[0] = -T(2)*c0*c1*c2*dq_psi*dq_theta + c0*dq_phi*dq_theta*p_C;
-  f[1] = c0*c1*c2*dq_psi*dq_psi - c0*dq_phi*dq_psi*p_C + c0*p_g*p_m*p_s;
+  f[0] = -T(2)*c1*cos_q_theta*dq_psi*dq_theta*sin_q_theta + dq_phi*dq_theta*p_C*sin_q_theta;
+  f[1] = c1*cos_q_theta*dq_psi*dq_psi*sin_q_theta - dq_phi*dq_psi*p_C*sin_q_theta + p_g*p_m*p_s*sin_q_theta;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -286,25 +283,23 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = cos_q_theta;
   const T c1 = p_m*p_s*p_s;
   const T c2 = c1 + p_A;
-  const T c3 = sin_q_theta;
   const T c4 = c1 + p_A - p_C;
   T M[9];
-  M[0] = c0*c0*p_C + c2*c3*c3;
+  M[0] = c2*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*p_C;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c0*p_C;
+  M[2] = cos_q_theta*p_C;
   M[6] = M[2];
   M[4] = c2;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
   T ddq[3];
-  ddq[0] = -T(2)*c0*c3*c4*dq_psi*dq_theta + c3*dq_phi*dq_theta*p_C;
-  ddq[1] = c0*c3*c4*dq_psi*dq_psi - c3*dq_phi*dq_psi*p_C + c3*p_g*p_m*p_s;
-  ddq[2] = c3*dq_psi*dq_theta*p_C;
+  ddq[0] = -T(2)*c4*cos_q_theta*dq_psi*dq_theta*sin_q_theta + dq_phi*dq_theta*p_C*sin_q_theta;
+  ddq[1] = c4*cos_q_theta*dq_psi*dq_psi*sin_q_theta - dq_phi*dq_psi*p_C*sin_q_theta + p_g*p_m*p_s*sin_q_theta;
+  ddq[2] = dq_psi*dq_theta*p_C*sin_q_theta;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
@@ -339,33 +334,31 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = cos_q_theta;
   const T c1 = p_m*p_s*p_s;
   const T c2 = c1 + p_A;
-  const T c3 = sin_q_theta;
   const T c4 = c1 + p_A - p_C;
   T M[9];
-  M[0] = c0*c0*p_C + c2*c3*c3;
+  M[0] = c2*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*p_C;
   M[1] = T(0);
   M[3] = M[1];
-  M[2] = c0*p_C;
+  M[2] = cos_q_theta*p_C;
   M[6] = M[2];
   M[4] = c2;
   M[5] = T(0);
   M[7] = M[5];
   M[8] = p_C;
   T ddq[3];
-  ddq[0] = -T(2)*c0*c3*c4*dq_psi*dq_theta + c3*dq_phi*dq_theta*p_C;
-  ddq[1] = c0*c3*c4*dq_psi*dq_psi - c3*dq_phi*dq_psi*p_C + c3*p_g*p_m*p_s;
-  ddq[2] = c3*dq_psi*dq_theta*p_C;
+  ddq[0] = -T(2)*c4*cos_q_theta*dq_psi*dq_theta*sin_q_theta + dq_phi*dq_theta*p_C*sin_q_theta;
+  ddq[1] = c4*cos_q_theta*dq_psi*dq_psi*sin_q_theta - dq_phi*dq_psi*p_C*sin_q_theta + p_g*p_m*p_s*sin_q_theta;
+  ddq[2] = dq_psi*dq_theta*p_C*sin_q_theta;
   T L[9];
   T D[3];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c5 = c0*c0;
-  const T c6 = c3*c3;
-  const T c7 = T(2)*c0*c3*c4*dq_psi - c3*dq_phi*p_C;
-  const T c8 = c3*dq_theta*p_C;
+  const T c5 = cos_q_theta*cos_q_theta;
+  const T c6 = sin_q_theta*sin_q_theta;
+  const T c7 = T(2)*c4*cos_q_theta*dq_psi*sin_q_theta - dq_phi*p_C*sin_q_theta;
+  const T c8 = dq_theta*p_C*sin_q_theta;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(0);
@@ -386,22 +379,22 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[17] = T(1);
   T* rows = J + 18;
   rows[0] = T(0);
-  rows[1] = -T(2)*(c0*c2*c3 - c0*c3*p_C)*ddq[0] - T(2)*c4*c5*dq_psi*dq_theta + T(2)*c4*c6*dq_psi*dq_theta + c0*dq_phi*dq_theta*p_C + c3*ddq[2]*p_C;
+  rows[1] = -T(2)*(c2*cos_q_theta*sin_q_theta - cos_q_theta*p_C*sin_q_theta)*ddq[0] - T(2)*c4*c5*dq_psi*dq_theta + T(2)*c4*c6*dq_psi*dq_theta + cos_q_theta*dq_phi*dq_theta*p_C + ddq[2]*p_C*sin_q_theta;
   rows[2] = T(0);
-  rows[3] = -T(2)*c0*c3*c4*dq_theta;
+  rows[3] = -T(2)*c4*cos_q_theta*dq_theta*sin_q_theta;
   rows[4] = -c7;
   rows[5] = c8;
   rows[6] = T(0);
-  rows[7] = -c0*dq_phi*dq_psi*p_C + c0*p_g*p_m*p_s + c4*c5*dq_psi*dq_psi - c4*c6*dq_psi*dq_psi;
+  rows[7] = c4*c5*dq_psi*dq_psi - c4*c6*dq_psi*dq_psi - cos_q_theta*dq_phi*dq_psi*p_C + cos_q_theta*p_g*p_m*p_s;
   rows[8] = T(0);
   rows[9] = c7;
   rows[10] = T(0);
-  rows[11] = -c3*dq_psi*p_C;
+  rows[11] = -dq_psi*p_C*sin_q_theta;
   rows[12] = T(0);
-  rows[13] = c0*dq_psi*dq_theta*p_C + c3*ddq[0]*p_C;
+  rows[13] = cos_q_theta*dq_psi*dq_theta*p_C + ddq[0]*p_C*sin_q_theta;
   rows[14] = T(0);
   rows[15] = c8;
-  rows[16] = c3*dq_psi*p_C;
+  rows[16] = dq_psi*p_C*sin_q_theta;
   rows[17] = T(0);
   detail::ldlt_solve_rows<6>(L, D, rows);
 }
@@ -436,30 +429,28 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   const T c1 = p_A - p_C + p_m*p_s*p_s;
-  const T c2 = cos_q_theta;
-  const T c3 = T(2)*c0*c1*c2*dq_psi - c0*dq_phi*p_C;
-  const T c4 = -c0*dq_theta*p_C;
-  const T c5 = c2*c2;
-  const T c6 = c0*c0;
-  P[0] = T(2)*c0*c1*c2*dq_theta;
+  const T c3 = T(2)*c1*cos_q_theta*dq_psi*sin_q_theta - dq_phi*p_C*sin_q_theta;
+  const T c4 = -dq_theta*p_C*sin_q_theta;
+  const T c5 = cos_q_theta*cos_q_theta;
+  const T c6 = sin_q_theta*sin_q_theta;
+  P[0] = T(2)*c1*cos_q_theta*dq_theta*sin_q_theta;
   P[1] = c3;
   P[2] = c4;
   Q[0] = T(0);
-  Q[1] = T(2)*c1*c5*dq_psi*dq_theta - T(2)*c1*c6*dq_psi*dq_theta - c2*dq_phi*dq_theta*p_C;
+  Q[1] = T(2)*c1*c5*dq_psi*dq_theta - T(2)*c1*c6*dq_psi*dq_theta - cos_q_theta*dq_phi*dq_theta*p_C;
   Q[2] = T(0);
   P[3] = -c3;
   P[4] = T(0);
-  P[5] = c0*dq_psi*p_C;
+  P[5] = dq_psi*p_C*sin_q_theta;
   Q[3] = T(0);
-  Q[4] = -c1*c5*dq_psi*dq_psi + c1*c6*dq_psi*dq_psi + c2*dq_phi*dq_psi*p_C - c2*p_g*p_m*p_s;
+  Q[4] = -c1*c5*dq_psi*dq_psi + c1*c6*dq_psi*dq_psi + cos_q_theta*dq_phi*dq_psi*p_C - cos_q_theta*p_g*p_m*p_s;
   Q[5] = T(0);
   P[6] = c4;
-  P[7] = -c0*dq_psi*p_C;
+  P[7] = -dq_psi*p_C*sin_q_theta;
   P[8] = T(0);
   Q[6] = T(0);
-  Q[7] = -c2*dq_psi*dq_theta*p_C;
+  Q[7] = -cos_q_theta*dq_psi*dq_theta*p_C;
   Q[8] = T(0);
 }
 
@@ -483,9 +474,8 @@ T kinetic_energy(T t, const T* x, const T* p) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = cos_q_theta;
   const T c1 = p_A + p_m*p_s*p_s;
-  return (T(1)/T(2))*c0*c0*dq_psi*dq_psi*p_C + (T(1)/T(2))*c1*dq_psi*dq_psi*sin_q_theta*sin_q_theta + (T(1)/T(2))*c1*dq_theta*dq_theta + (T(1)/T(2))*dq_phi*dq_phi*p_C + c0*dq_phi*dq_psi*p_C;
+  return (T(1)/T(2))*c1*dq_psi*dq_psi*sin_q_theta*sin_q_theta + (T(1)/T(2))*c1*dq_theta*dq_theta + (T(1)/T(2))*cos_q_theta*cos_q_theta*dq_psi*dq_psi*p_C + (T(1)/T(2))*dq_phi*dq_phi*p_C + cos_q_theta*dq_phi*dq_psi*p_C;
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.
@@ -549,9 +539,8 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
-  const T c0 = cos_q_theta;
-  out[1] = (p_A + p_m*p_s*p_s)*dq_psi*sin_q_theta*sin_q_theta + c0*c0*dq_psi*p_C + c0*dq_phi*p_C;
-  out[2] = c0*dq_psi*p_C + dq_phi*p_C;
+  out[1] = (p_A + p_m*p_s*p_s)*dq_psi*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*dq_psi*p_C + cos_q_theta*dq_phi*p_C;
+  out[2] = cos_q_theta*dq_psi*p_C + dq_phi*p_C;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.
@@ -619,24 +608,18 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   const T cos_q_theta = trig_cos[1];
   const T sin_q_phi = trig_sin[2];
   const T cos_q_phi = trig_cos[2];
-  const T c0 = sin_q_theta;
-  const T c1 = sin_q_psi;
-  out[0] = c0*c1*p_s;
-  out[5] = c0*c1;
-  const T c2 = cos_q_psi;
-  out[1] = -c0*c2*p_s;
-  out[8] = -c0*c2;
-  const T c3 = cos_q_theta;
-  out[2] = c3*p_s;
-  out[11] = c3;
-  const T c4 = cos_q_phi;
-  out[10] = c0*c4;
-  const T c5 = sin_q_phi;
-  out[3] = -c1*c3*c5 + c2*c4;
-  out[4] = -c1*c3*c4 - c2*c5;
-  out[6] = c1*c4 + c2*c3*c5;
-  out[7] = -c1*c5 + c2*c3*c4;
-  out[9] = c0*c5;
+  out[0] = p_s*sin_q_psi*sin_q_theta;
+  out[5] = sin_q_psi*sin_q_theta;
+  out[1] = -cos_q_psi*p_s*sin_q_theta;
+  out[8] = -cos_q_psi*sin_q_theta;
+  out[2] = cos_q_theta*p_s;
+  out[11] = cos_q_theta;
+  out[10] = cos_q_phi*sin_q_theta;
+  out[3] = cos_q_phi*cos_q_psi - cos_q_theta*sin_q_phi*sin_q_psi;
+  out[4] = -cos_q_phi*cos_q_theta*sin_q_psi - cos_q_psi*sin_q_phi;
+  out[6] = cos_q_phi*sin_q_psi + cos_q_psi*cos_q_theta*sin_q_phi;
+  out[7] = cos_q_phi*cos_q_psi*cos_q_theta - sin_q_phi*sin_q_psi;
+  out[9] = sin_q_phi*sin_q_theta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

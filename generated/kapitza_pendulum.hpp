@@ -204,8 +204,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_phi = trig_sin[0];
-  const T c0 = sin_q_phi;
-  f[0] = c0*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w - c0*p_g*p_l*p_m;
+  f[0] = cos(p_w*t)*p_a*p_l*p_m*p_w*p_w*sin_q_phi - p_g*p_l*p_m*sin_q_phi;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -226,11 +225,10 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_phi = trig_sin[0];
-  const T c0 = sin_q_phi;
   T M[1];
   M[0] = p_l*p_l*p_m;
   T ddq[1];
-  ddq[0] = c0*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w - c0*p_g*p_l*p_m;
+  ddq[0] = cos(p_w*t)*p_a*p_l*p_m*p_w*p_w*sin_q_phi - p_g*p_l*p_m*sin_q_phi;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
@@ -258,20 +256,18 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_phi = trig_sin[0];
   const T cos_q_phi = trig_cos[0];
-  const T c0 = sin_q_phi;
   T M[1];
   M[0] = p_l*p_l*p_m;
   T ddq[1];
-  ddq[0] = c0*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w - c0*p_g*p_l*p_m;
+  ddq[0] = cos(p_w*t)*p_a*p_l*p_m*p_w*p_w*sin_q_phi - p_g*p_l*p_m*sin_q_phi;
   T L[1];
   T D[1];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = cos_q_phi;
   J[0] = T(0);
   J[1] = T(1);
   T* rows = J + 2;
-  rows[0] = c1*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w - c1*p_g*p_l*p_m;
+  rows[0] = cos(p_w*t)*cos_q_phi*p_a*p_l*p_m*p_w*p_w - cos_q_phi*p_g*p_l*p_m;
   rows[1] = T(0);
   detail::ldlt_solve_rows<2>(L, D, rows);
 }
@@ -302,9 +298,8 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T cos_q_phi = trig_cos[0];
-  const T c0 = cos_q_phi;
   P[0] = T(0);
-  Q[0] = -c0*cos(p_w*t)*p_a*p_l*p_m*p_w*p_w + c0*p_g*p_l*p_m;
+  Q[0] = -cos(p_w*t)*cos_q_phi*p_a*p_l*p_m*p_w*p_w + cos_q_phi*p_g*p_l*p_m;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.

@@ -274,17 +274,15 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c0 = sin_q_phi;
-  const T c1 = cos_q_phi;
   J[0] = T(0);
   J[1] = T(0);
-  J[2] = -c0*s_v;
-  J[3] = c1;
+  J[2] = -s_v*sin_q_phi;
+  J[3] = cos_q_phi;
   J[4] = T(0);
   J[5] = T(0);
   J[6] = T(0);
-  J[7] = c1*s_v;
-  J[8] = c0;
+  J[7] = cos_q_phi*s_v;
+  J[8] = sin_q_phi;
   J[9] = T(0);
   J[10] = T(0);
   J[11] = T(0);
@@ -466,12 +464,10 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[9] = T(0);
   out[10] = T(0);
   out[11] = T(1);
-  const T c0 = cos_q_phi;
-  out[3] = c0;
-  out[7] = c0;
-  const T c1 = sin_q_phi;
-  out[4] = -c1;
-  out[6] = c1;
+  out[3] = cos_q_phi;
+  out[7] = cos_q_phi;
+  out[4] = -sin_q_phi;
+  out[6] = sin_q_phi;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

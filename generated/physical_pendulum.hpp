@@ -425,14 +425,12 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[9] = T(0);
   out[10] = T(0);
   out[11] = T(1);
-  const T c0 = sin_q_phi;
-  out[0] = c0*p_s;
-  out[4] = -c0;
-  out[6] = c0;
-  const T c1 = cos_q_phi;
-  out[1] = -c1*p_s;
-  out[3] = c1;
-  out[7] = c1;
+  out[0] = p_s*sin_q_phi;
+  out[4] = -sin_q_phi;
+  out[6] = sin_q_phi;
+  out[1] = -cos_q_phi*p_s;
+  out[3] = cos_q_phi;
+  out[7] = cos_q_phi;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

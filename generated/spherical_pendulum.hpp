@@ -227,10 +227,8 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
-  f[0] = c0*c1*dq_phi*dq_phi*p_l*p_l*p_m - c0*p_g*p_l*p_m;
-  f[1] = -T(2)*c0*c1*dq_phi*dq_theta*p_l*p_l*p_m;
+  f[0] = cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta - p_g*p_l*p_m*sin_q_theta;
+  f[1] = -T(2)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*sin_q_theta;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -252,16 +250,14 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
   T M[4];
   M[0] = p_l*p_l*p_m;
   M[1] = T(0);
   M[2] = M[1];
-  M[3] = c0*c0*p_l*p_l*p_m;
+  M[3] = p_l*p_l*p_m*sin_q_theta*sin_q_theta;
   T ddq[2];
-  ddq[0] = c0*c1*dq_phi*dq_phi*p_l*p_l*p_m - c0*p_g*p_l*p_m;
-  ddq[1] = -T(2)*c0*c1*dq_phi*dq_theta*p_l*p_l*p_m;
+  ddq[0] = cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta - p_g*p_l*p_m*sin_q_theta;
+  ddq[1] = -T(2)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*sin_q_theta;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
@@ -291,22 +287,20 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
   T M[4];
   M[0] = p_l*p_l*p_m;
   M[1] = T(0);
   M[2] = M[1];
-  M[3] = c0*c0*p_l*p_l*p_m;
+  M[3] = p_l*p_l*p_m*sin_q_theta*sin_q_theta;
   T ddq[2];
-  ddq[0] = c0*c1*dq_phi*dq_phi*p_l*p_l*p_m - c0*p_g*p_l*p_m;
-  ddq[1] = -T(2)*c0*c1*dq_phi*dq_theta*p_l*p_l*p_m;
+  ddq[0] = cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta - p_g*p_l*p_m*sin_q_theta;
+  ddq[1] = -T(2)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*sin_q_theta;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c2 = c0*c0;
-  const T c3 = c1*c1;
+  const T c2 = sin_q_theta*sin_q_theta;
+  const T c3 = cos_q_theta*cos_q_theta;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1);
@@ -316,14 +310,14 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[6] = T(0);
   J[7] = T(1);
   T* rows = J + 8;
-  rows[0] = -c1*p_g*p_l*p_m - c2*dq_phi*dq_phi*p_l*p_l*p_m + c3*dq_phi*dq_phi*p_l*p_l*p_m;
+  rows[0] = -c2*dq_phi*dq_phi*p_l*p_l*p_m + c3*dq_phi*dq_phi*p_l*p_l*p_m - cos_q_theta*p_g*p_l*p_m;
   rows[1] = T(0);
   rows[2] = T(0);
-  rows[3] = T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
-  rows[4] = -T(2)*c0*c1*ddq[1]*p_l*p_l*p_m + T(2)*c2*dq_phi*dq_theta*p_l*p_l*p_m - T(2)*c3*dq_phi*dq_theta*p_l*p_l*p_m;
+  rows[3] = T(2)*cos_q_theta*dq_phi*p_l*p_l*p_m*sin_q_theta;
+  rows[4] = T(2)*c2*dq_phi*dq_theta*p_l*p_l*p_m - T(2)*c3*dq_phi*dq_theta*p_l*p_l*p_m - T(2)*cos_q_theta*ddq[1]*p_l*p_l*p_m*sin_q_theta;
   rows[5] = T(0);
-  rows[6] = -T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
-  rows[7] = -T(2)*c0*c1*dq_theta*p_l*p_l*p_m;
+  rows[6] = -T(2)*cos_q_theta*dq_phi*p_l*p_l*p_m*sin_q_theta;
+  rows[7] = -T(2)*cos_q_theta*dq_theta*p_l*p_l*p_m*sin_q_theta;
   detail::ldlt_solve_rows<4>(L, D, rows);
 }
 
@@ -354,16 +348,14 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
-  const T c2 = c0*c0;
-  const T c3 = c1*c1;
+  const T c2 = sin_q_theta*sin_q_theta;
+  const T c3 = cos_q_theta*cos_q_theta;
   P[0] = T(0);
-  P[1] = -T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
-  Q[0] = c1*p_g*p_l*p_m + c2*dq_phi*dq_phi*p_l*p_l*p_m - c3*dq_phi*dq_phi*p_l*p_l*p_m;
+  P[1] = -T(2)*cos_q_theta*dq_phi*p_l*p_l*p_m*sin_q_theta;
+  Q[0] = c2*dq_phi*dq_phi*p_l*p_l*p_m - c3*dq_phi*dq_phi*p_l*p_l*p_m + cos_q_theta*p_g*p_l*p_m;
   Q[1] = T(0);
-  P[2] = T(2)*c0*c1*dq_phi*p_l*p_l*p_m;
-  P[3] = T(2)*c0*c1*dq_theta*p_l*p_l*p_m;
+  P[2] = T(2)*cos_q_theta*dq_phi*p_l*p_l*p_m*sin_q_theta;
+  P[3] = T(2)*cos_q_theta*dq_theta*p_l*p_l*p_m*sin_q_theta;
   Q[2] = -T(2)*c2*dq_phi*dq_theta*p_l*p_l*p_m + T(2)*c3*dq_phi*dq_theta*p_l*p_l*p_m;
   Q[3] = T(0);
 }
@@ -507,9 +499,8 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[9] = T(0);
   out[10] = T(0);
   out[11] = T(1);
-  const T c0 = sin_q_theta;
-  out[0] = c0*cos_q_phi*p_l;
-  out[1] = c0*p_l*sin_q_phi;
+  out[0] = cos_q_phi*p_l*sin_q_theta;
+  out[1] = p_l*sin_q_phi*sin_q_theta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

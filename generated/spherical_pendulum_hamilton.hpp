@@ -217,8 +217,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   f[1] = T(0);
-  const T c0 = sin_q_theta;
-  f[0] = -c0*p_g*p_l*p_m + cos_q_theta*s_p_phi*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
+  f[0] = cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta) - p_g*p_l*p_m*sin_q_theta;
 }
 
 /// Explicit first-order form x' = [W s + w; M^-1 f] with x = [q; s].
@@ -240,21 +239,20 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   T M[4];
   M[0] = T(1);
   M[1] = T(0);
   M[2] = M[1];
   M[3] = T(1);
   T ddq[2];
-  ddq[0] = -c0*p_g*p_l*p_m + cos_q_theta*s_p_phi*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
+  ddq[0] = cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta) - p_g*p_l*p_m*sin_q_theta;
   ddq[1] = T(0);
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
   xdot[0] = s_p_theta/(p_l*p_l*p_m);
-  xdot[1] = s_p_phi/(c0*c0*p_l*p_l*p_m);
+  xdot[1] = s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta);
   xdot[2] = ddq[0];
   xdot[3] = ddq[1];
 }
@@ -277,33 +275,31 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
   T M[4];
   M[0] = T(1);
   M[1] = T(0);
   M[2] = M[1];
   M[3] = T(1);
   T ddq[2];
-  ddq[0] = -c0*p_g*p_l*p_m + cos_q_theta*s_p_phi*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
+  ddq[0] = cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta) - p_g*p_l*p_m*sin_q_theta;
   ddq[1] = T(0);
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c1 = cos_q_theta;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1)/(p_l*p_l*p_m);
   J[3] = T(0);
-  J[4] = -T(2)*c1*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
+  J[4] = -T(2)*cos_q_theta*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta);
   J[5] = T(0);
   J[6] = T(0);
-  J[7] = T(1)/(c0*c0*p_l*p_l*p_m);
+  J[7] = T(1)/(p_l*p_l*p_m*sin_q_theta*sin_q_theta);
   T* rows = J + 8;
-  rows[0] = -T(3)*c1*c1*s_p_phi*s_p_phi/(c0*c0*c0*c0*p_l*p_l*p_m) - c1*p_g*p_l*p_m - s_p_phi*s_p_phi/(c0*c0*p_l*p_l*p_m);
+  rows[0] = -T(3)*cos_q_theta*cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta*sin_q_theta) - cos_q_theta*p_g*p_l*p_m - s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta);
   rows[1] = T(0);
   rows[2] = T(0);
-  rows[3] = T(2)*c1*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
+  rows[3] = T(2)*cos_q_theta*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta);
   rows[4] = T(0);
   rows[5] = T(0);
   rows[6] = T(0);
@@ -337,11 +333,9 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
   P[0] = T(0);
-  P[1] = -T(2)*c1*s_p_phi/(c0*c0*c0*p_l*p_l*p_m);
-  Q[0] = T(3)*c1*c1*s_p_phi*s_p_phi/(c0*c0*c0*c0*p_l*p_l*p_m) + c1*p_g*p_l*p_m + s_p_phi*s_p_phi/(c0*c0*p_l*p_l*p_m);
+  P[1] = -T(2)*cos_q_theta*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta);
+  Q[0] = T(3)*cos_q_theta*cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta*sin_q_theta) + cos_q_theta*p_g*p_l*p_m + s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta);
   Q[1] = T(0);
   P[2] = T(0);
   P[3] = T(0);
@@ -478,9 +472,8 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[9] = T(0);
   out[10] = T(0);
   out[11] = T(1);
-  const T c0 = sin_q_theta;
-  out[0] = c0*cos_q_phi*p_l;
-  out[1] = c0*p_l*sin_q_phi;
+  out[0] = cos_q_phi*p_l*sin_q_theta;
+  out[1] = p_l*sin_q_phi*sin_q_theta;
 }
 
 /// Each drawn shape's sizes (sphere: radius; box: sides; capsule, cylinder: radius, length; ellipsoid:

@@ -238,10 +238,8 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = cos_q_theta;
-  const T c1 = sin_q_theta;
-  f[0] = -T(4)*c0*c1*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + c0*p_kappa - p_P;
-  f[1] = T(2)*c0*c1*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c1*p_g*p_l*p_m - dq_theta*p_b;
+  f[0] = -T(4)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta + cos_q_theta*p_kappa - p_P;
+  f[1] = T(2)*cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta - T(2)*p_g*p_l*p_m*sin_q_theta - dq_theta*p_b;
 }
 
 /// Explicit first-order form x' = [q'; M^-1 f] with x = [q; q'].
@@ -268,16 +266,14 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
   T M[4];
-  M[0] = T(2)*c0*c0*p_l*p_l*p_m*p_n*p_n + p_J;
+  M[0] = T(2)*p_l*p_l*p_m*p_n*p_n*sin_q_theta*sin_q_theta + p_J;
   M[1] = T(0);
   M[2] = M[1];
   M[3] = T(2)*p_l*p_l*p_m;
   T ddq[2];
-  ddq[0] = -T(4)*c0*c1*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + c1*p_kappa - p_P;
-  ddq[1] = T(2)*c0*c1*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c0*p_g*p_l*p_m - dq_theta*p_b;
+  ddq[0] = -T(4)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta + cos_q_theta*p_kappa - p_P;
+  ddq[1] = T(2)*cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta - T(2)*p_g*p_l*p_m*sin_q_theta - dq_theta*p_b;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
@@ -312,22 +308,20 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
   T M[4];
-  M[0] = T(2)*c0*c0*p_l*p_l*p_m*p_n*p_n + p_J;
+  M[0] = T(2)*p_l*p_l*p_m*p_n*p_n*sin_q_theta*sin_q_theta + p_J;
   M[1] = T(0);
   M[2] = M[1];
   M[3] = T(2)*p_l*p_l*p_m;
   T ddq[2];
-  ddq[0] = -T(4)*c0*c1*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + c1*p_kappa - p_P;
-  ddq[1] = T(2)*c0*c1*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c0*p_g*p_l*p_m - dq_theta*p_b;
+  ddq[0] = -T(4)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta + cos_q_theta*p_kappa - p_P;
+  ddq[1] = T(2)*cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta - T(2)*p_g*p_l*p_m*sin_q_theta - dq_theta*p_b;
   T L[4];
   T D[2];
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
-  const T c2 = c1*c1;
-  const T c3 = c0*c0;
+  const T c2 = cos_q_theta*cos_q_theta;
+  const T c3 = sin_q_theta*sin_q_theta;
   J[0] = T(0);
   J[1] = T(0);
   J[2] = T(1);
@@ -338,12 +332,12 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[7] = T(1);
   T* rows = J + 8;
   rows[0] = T(0);
-  rows[1] = -T(4)*c0*c1*ddq[0]*p_l*p_l*p_m*p_n*p_n - T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - c0*p_kappa;
-  rows[2] = -T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
-  rows[3] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  rows[1] = -T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - T(4)*cos_q_theta*ddq[0]*p_l*p_l*p_m*p_n*p_n*sin_q_theta - p_kappa*sin_q_theta;
+  rows[2] = -T(4)*cos_q_theta*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta;
+  rows[3] = -T(4)*cos_q_theta*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta;
   rows[4] = T(0);
-  rows[5] = -T(2)*c1*p_g*p_l*p_m + T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
-  rows[6] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  rows[5] = T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n - T(2)*cos_q_theta*p_g*p_l*p_m;
+  rows[6] = T(4)*cos_q_theta*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta;
   rows[7] = -p_b;
   detail::ldlt_solve_rows<4>(L, D, rows);
 }
@@ -378,18 +372,16 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  const T c0 = sin_q_theta;
-  const T c1 = cos_q_theta;
-  const T c2 = c1*c1;
-  const T c3 = c0*c0;
-  P[0] = T(4)*c0*c1*dq_theta*p_l*p_l*p_m*p_n*p_n;
-  P[1] = T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  const T c2 = cos_q_theta*cos_q_theta;
+  const T c3 = sin_q_theta*sin_q_theta;
+  P[0] = T(4)*cos_q_theta*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta;
+  P[1] = T(4)*cos_q_theta*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta;
   Q[0] = T(0);
-  Q[1] = T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + c0*p_kappa;
-  P[2] = -T(4)*c0*c1*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  Q[1] = T(4)*c2*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n - T(4)*c3*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n + p_kappa*sin_q_theta;
+  P[2] = -T(4)*cos_q_theta*dq_phi*p_l*p_l*p_m*p_n*p_n*sin_q_theta;
   P[3] = p_b;
   Q[2] = T(0);
-  Q[3] = T(2)*c1*p_g*p_l*p_m - T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n + T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n;
+  Q[3] = -T(2)*c2*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n + T(2)*c3*dq_phi*dq_phi*p_l*p_l*p_m*p_n*p_n + T(2)*cos_q_theta*p_g*p_l*p_m;
 }
 
 /// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
@@ -529,14 +521,13 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   out[21] = T(0);
   out[22] = T(0);
   out[23] = T(1);
-  const T c0 = sin_q_theta;
   const T c1 = p_n*q_phi;
   const T c2 = cos(c1);
-  out[0] = c0*c2*p_l;
-  out[12] = -c0*c2*p_l;
+  out[0] = c2*p_l*sin_q_theta;
+  out[12] = -c2*p_l*sin_q_theta;
   const T c3 = sin(c1);
-  out[1] = c0*c3*p_l;
-  out[13] = -c0*c3*p_l;
+  out[1] = c3*p_l*sin_q_theta;
+  out[13] = -c3*p_l*sin_q_theta;
   const T c4 = -cos_q_theta*p_l;
   out[2] = c4;
   out[14] = c4;

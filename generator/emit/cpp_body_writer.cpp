@@ -149,16 +149,12 @@ void BodyWriter::define_intermediates(const std::vector<ex>& expressions, CseBat
       if (level[i] == at) these.push_back(i), definitions.push_back(expand_trig_of_sums(all[i].definition));
     CseBatch b = cse_.add(definitions);
     for (const Temporary& t : b.temporaries) {
-      names_[t.name] = t.name.get_name();
-      note(t.definition);
-      statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
+      define_local(t.name, t.name.get_name(), t.definition);
       written.temporaries.push_back(t);
     }
     for (std::size_t k = 0; k < these.size(); ++k) {
       const Intermediate& i = all[these[k]];
-      note(b.outputs[k]);
-      statements_ += fmt::format("  const T {} = {};\n", i.cpp_name, code(b.outputs[k]));
-      names_[i.symbol] = i.cpp_name;
+      define_local(i.symbol, i.cpp_name, b.outputs[k]);
       intermediate_written_[these[k]] = true;
       written.temporaries.push_back({i.symbol, b.outputs[k]});
     }
@@ -212,6 +208,11 @@ std::string BodyWriter::name_of(const GiNaC::symbol& symbol) const {
   return found != names_.end() ? found->second : symbol.get_name();
 }
 
+std::string BodyWriter::own_name_of(const GiNaC::symbol& symbol) const {
+  auto found = own_names_.find(symbol);
+  return found != own_names_.end() ? found->second : name_of(symbol);
+}
+
 void BodyWriter::solve_velocities() {
   const Equations& e = equations_;
   if (velocities_solved_ || !e.solves_for_velocities()) return;
@@ -250,10 +251,18 @@ CseBatch BodyWriter::unwritten_batch(const std::vector<ex>& expressions) {
   return written;
 }
 
-void BodyWriter::write_temporary(const Temporary& t) {
-  names_[t.name] = t.name.get_name();
-  note(t.definition);
-  statements_ += fmt::format("  const T {} = {};\n", t.name.get_name(), code(t.definition));
+void BodyWriter::write_temporary(const Temporary& t) { define_local(t.name, t.name.get_name(), t.definition); }
+
+// a local whose value is another's name (a joint's cos q shared by two entries of its turn) is
+// that name wherever it is used: the arm's header had 115 such lines
+void BodyWriter::define_local(const ex& symbol, const std::string& cpp_name, const ex& definition) {
+  note(definition);
+  std::string value = code(definition);
+  bool alias = !value.empty() && !std::isdigit(static_cast<unsigned char>(value[0])) &&
+               std::all_of(value.begin(), value.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  names_[symbol] = alias ? value : cpp_name;
+  own_names_[symbol] = cpp_name;
+  if (!alias) statements_ += fmt::format("  const T {} = {};\n", cpp_name, value);
 }
 
 // (the intermediates among the temporaries are written already, as they were defined)

@@ -51,6 +51,10 @@ class BodyWriter {
   CseBatch write_intermediates_of(const std::vector<GiNaC::ex>& expressions);
   /// The C++ name a symbol is printed as.
   std::string name_of(const GiNaC::symbol& symbol) const;
+  /// The name of the local a temporary or intermediate would have been: the one it is printed as,
+  /// or its own when its value was another's name and is printed so (names derived from it, a
+  /// tangent's, stay as unique as the temporaries).
+  std::string own_name_of(const GiNaC::symbol& symbol) const;
   /// For sin or cos of one of the function's inputs (a coordinate, parameter, input or t): the
   /// name of its value, sin_q_phi say, which detail::sin_cos computes at the start of the
   /// function, all angles at once (two at a time for double). "" for any other call.
@@ -72,6 +76,7 @@ class BodyWriter {
   // the temporaries of a batch and the reduced expressions, before any is written
   CseBatch unwritten_batch(const std::vector<GiNaC::ex>& expressions);
   void write_temporary(const Temporary& t);
+  void define_local(const GiNaC::ex& symbol, const std::string& cpp_name, const GiNaC::ex& definition);
 
   const Equations& equations_;
   bool velocities_solved_ = false;
@@ -81,7 +86,7 @@ class BodyWriter {
   std::map<GiNaC::ex, std::pair<bool, bool>, GiNaC::ex_is_less> trig_used_;
   std::string batched_trig_statements() const;
   std::vector<GiNaC::symbol> accelerations_;
-  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_;
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_, own_names_;
   GiNaC::exset used_;
   bool uses_functions_ = false;
   CommonSubexpressions cse_;

@@ -49,7 +49,7 @@ void TangentSweep::follow(const CseBatch& batch) {
     }
     std::vector<std::string> code = writer_.batch(values);
     for (std::size_t i = 0; i < written.size(); ++i) {
-      std::string name = fmt::format("{}_d{}", writer_.name_of(t.name), written[i]);
+      std::string name = fmt::format("{}_d{}", writer_.own_name_of(t.name), written[i]);
       GiNaC::symbol tangent(name);
       writer_.name(tangent, name);
       writer_.line(fmt::format("const T {} = {};", name, code[i]));
