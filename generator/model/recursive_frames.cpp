@@ -8,9 +8,26 @@ namespace eomgen {
 
 using GiNaC::ex;
 
+namespace {
+
+// a number, or a symbol or sin or cos of one, or its negative: written where it is used, it costs
+// no more than its name (a turn by ±90° about x is a permutation of the entries with signs). (A
+// multiple, m·c, costs a product at each use.)
+bool is_signed_atom(const ex& x) {
+  auto atom = [](const ex& a) {
+    return GiNaC::is_a<GiNaC::symbol>(a) || ((GiNaC::is_the_function<GiNaC::sin_SERIAL>(a) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(a)) &&
+                                            GiNaC::is_a<GiNaC::symbol>(a.op(0)));
+  };
+  if (GiNaC::is_a<GiNaC::numeric>(x) || atom(x)) return true;
+  return GiNaC::is_a<GiNaC::mul>(x) && x.nops() == 2 &&
+         (((x.op(0) + 1).is_zero() && atom(x.op(1))) || ((x.op(1) + 1).is_zero() && atom(x.op(0))));
+}
+
+}  // namespace
+
 ex intermediate(std::vector<Intermediate>& intermediates, const std::string& name, const std::string& cpp_name,
                 const ex& definition) {
-  if (GiNaC::is_a<GiNaC::numeric>(definition) || GiNaC::is_a<GiNaC::symbol>(definition)) return definition;
+  if (is_signed_atom(definition)) return definition;
   Intermediate i{GiNaC::symbol(name), definition, cpp_name};
   intermediates.push_back(i);
   return i.symbol;

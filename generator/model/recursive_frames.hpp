@@ -12,8 +12,9 @@
 
 namespace eomgen {
 
-/// `definition` itself when it is a constant or a single symbol, otherwise a new intermediate
-/// of `model` named `name` (printed) and `cpp_name` (in generated code).
+/// `definition` itself when it is a constant, or a symbol or the sine or cosine of one or the
+/// negative of either, otherwise a new intermediate of `model` named `name` (printed) and `cpp_name` (in
+/// generated code).
 GiNaC::ex intermediate(std::vector<Intermediate>& intermediates, const std::string& name, const std::string& cpp_name,
                        const GiNaC::ex& definition);
 /// intermediate() of `definition` expanded, printed WHO.LABEL and named k_WHO_LABEL in C++ (a dot
