@@ -988,7 +988,8 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   }
 }
 
-/// Kinetic energy T = q'^T M q' / 2, with M from mass_matrix. x: num_states; p: num_parameters.
+/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.
+/// x: num_states; p: num_parameters.
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   T M[16];

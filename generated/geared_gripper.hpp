@@ -891,52 +891,16 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   B[2] = T(1);
 }
 
-/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
+/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.
+/// x: num_states; p: num_parameters.
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_elbow = x[1];
-  const T q_grip = x[2];
-  const T dq_shoulder = x[3];
-  const T dq_elbow = x[4];
-  const T dq_grip = x[5];
-  const T n0 = detail::constant<T>(0.19611613513818404, -1.2604324072451997e-17, -3.0828443251607257e-34);
-  const T n1 = detail::constant<T>(0.9805806756909201, 4.800068210025567e-17, 1.5410657484392143e-33);
-  const T n2 = detail::constant<T>(0.3392809137890584, -1.625436552221617e-17, -8.102959802445676e-34);
-  const T n3 = detail::constant<T>(0.03622403846153846, 1.240033716735175e-18, -6.727888828237913e-35);
-  const T trig_angle[2] = {q_elbow, q_grip};
-  T trig_sin[2], trig_cos[2];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_elbow = trig_sin[0];
-  const T cos_q_elbow = trig_cos[0];
-  const T sin_q_grip = trig_sin[1];
-  const T cos_q_grip = trig_cos[1];
-  const T c0 = -(T(6)/T(5))*q_grip + T(1)/T(20);
-  const T c3 = cos(c0);
-  const T c4 = sin(c0);
-  const T k_forearm_tEzx = n0*sin_q_elbow + n1*cos_q_elbow;
-  const T k_forearm_tEzy = n0*cos_q_elbow - n1*sin_q_elbow;
-  const T k_left_tw_z = dq_elbow + dq_grip;
-  const T k_right_tExy = -c4;
-  const T k_right_tw_z = -(T(6)/T(5))*dq_grip + dq_elbow;
-  const T k_counterweight_tv_z = -(T(1)/T(25))*dq_shoulder;
-  const T k_forearm_tv_z = n2*dq_shoulder;
-  const T k_left_tv_x = (T(1)/T(100))*dq_elbow*sin_q_grip - (T(3)/T(10))*cos_q_grip*dq_elbow;
-  const T k_left_tv_y = (T(1)/T(100))*cos_q_grip*dq_elbow + (T(3)/T(10))*dq_elbow*sin_q_grip;
-  const T k_forearm_twp_x = dq_shoulder*k_forearm_tEzx;
-  const T k_forearm_twp_y = dq_shoulder*k_forearm_tEzy;
-  const T k_right_tv_x = -(T(1)/T(20))*c4*dq_elbow - (T(3)/T(10))*c3*dq_elbow;
-  const T k_right_tv_y = -(T(1)/T(20))*c3*dq_elbow - (T(3)/T(10))*dq_elbow*k_right_tExy;
-  const T k_left_twp_x = cos_q_grip*k_forearm_twp_x + k_forearm_twp_y*sin_q_grip;
-  const T k_left_twp_y = cos_q_grip*k_forearm_twp_y - k_forearm_twp_x*sin_q_grip;
-  const T k_right_twp_x = c3*k_forearm_twp_x + c4*k_forearm_twp_y;
-  const T k_right_twp_y = c3*k_forearm_twp_y + k_forearm_twp_x*k_right_tExy;
-  const T k_left_tv_z = -(T(1)/T(100))*k_forearm_twp_y + (T(3)/T(10))*k_forearm_twp_x + k_forearm_tv_z;
-  const T k_right_tv_z = (T(1)/T(20))*k_forearm_twp_y + (T(3)/T(10))*k_forearm_twp_x + k_forearm_tv_z;
-  return (T(1)/T(1250))*k_left_tv_y*k_left_tw_z - (T(1)/T(1250))*k_left_tv_z*k_left_twp_y - (T(1)/T(1250))*k_right_tv_y*k_right_tw_z + (T(1)/T(1250))*k_right_tv_z*k_right_twp_y + (T(1)/T(25))*k_left_tv_x*k_left_tv_x + (T(1)/T(25))*k_left_tv_y*k_left_tv_y + (T(1)/T(25))*k_left_tv_z*k_left_tv_z + (T(1)/T(25))*k_right_tv_x*k_right_tv_x + (T(1)/T(25))*k_right_tv_y*k_right_tv_y + (T(1)/T(25))*k_right_tv_z*k_right_tv_z + (T(1)/T(5000))*dq_elbow*k_forearm_twp_x + (T(1417)/T(100000))*dq_elbow*dq_elbow + (T(159)/T(200000))*k_forearm_twp_y*k_forearm_twp_y - (T(2)/T(625))*k_left_tv_x*k_left_tw_z + (T(2)/T(625))*k_left_tv_z*k_left_twp_x - (T(2)/T(625))*k_right_tv_x*k_right_tw_z + (T(2)/T(625))*k_right_tv_z*k_right_twp_x + (T(21)/T(20000))*k_forearm_twp_x*k_forearm_twp_y + (T(23)/T(1600))*k_forearm_twp_x*k_forearm_twp_x + (T(27)/T(200))*k_forearm_tv_z*k_forearm_twp_x - (T(3)/T(100000))*k_left_twp_x*k_left_twp_y + (T(3)/T(100000))*k_right_twp_x*k_right_twp_y + (T(61)/T(25000))*dq_grip*dq_grip + (T(89)/T(1000000))*k_left_twp_x*k_left_twp_x + (T(89)/T(1000000))*k_right_twp_x*k_right_twp_x + (T(9)/T(1000))*k_forearm_tv_z*k_forearm_twp_y + (T(9)/T(1000000))*k_left_twp_y*k_left_twp_y + (T(9)/T(1000000))*k_right_twp_y*k_right_twp_y + (T(9)/T(20))*k_forearm_tv_z*k_forearm_tv_z + (T(93)/T(1000000))*k_left_tw_z*k_left_tw_z + (T(93)/T(1000000))*k_right_tw_z*k_right_tw_z + n3*dq_shoulder*dq_shoulder + k_counterweight_tv_z*k_counterweight_tv_z;
+  T M[9];
+  mass_matrix(t, x, p, M);
+  T twice = T(0);
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) twice = twice + x[3 + i] * M[i * 3 + j] * x[3 + j];
+  return twice / T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

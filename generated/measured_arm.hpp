@@ -960,97 +960,16 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   B[8] = T(1);
 }
 
-/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
+/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.
+/// x: num_states; p: num_parameters.
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_q1 = x[0];
-  const T q_q2 = x[1];
-  const T q_q3 = x[2];
-  const T dq_q1 = x[3];
-  const T dq_q2 = x[4];
-  const T dq_q3 = x[5];
-  const T n0 = detail::constant<T>(0.316, -2.310862446895044e-17, 1.1103737383464024e-33);
-  const T n1 = detail::constant<T>(0.00192012965686, -1.0586908242894424e-19, -2.9522875505788435e-36);
-  const T n2 = detail::constant<T>(0.003912249807868221, -3.9261932099948355e-19, 1.2541391144744843e-35);
-  const T n3 = detail::constant<T>(0.00309141, -6.473267194783148e-20, -5.145295887091989e-37);
-  const T n4 = detail::constant<T>(0.02871, 1.5906386491005834e-18, -7.998570093081557e-35);
-  const T n5 = detail::constant<T>(0.0034931, -5.093035448358023e-20, 7.956980979168852e-37);
-  const T n6 = detail::constant<T>(0.027518, 1.2068566712077882e-18, -2.7196250751619583e-35);
-  const T n7 = detail::constant<T>(0.039252, -1.667112548584555e-19, -6.692030191695315e-36);
-  const T n8 = detail::constant<T>(0.06650199999999999, 5.324896327849274e-18, -1.1825111441140928e-35);
-  const T n9 = detail::constant<T>(0.0007040000000000001, -5.0115415130043173e-20, -1.8825541784584064e-36);
-  const T n10 = detail::constant<T>(0.003925, 4.302913498259841e-19, -2.125204959837676e-35);
-  const T n11 = detail::constant<T>(0.003981000203639269, 9.426686872657228e-20, 1.157968086270868e-36);
-  const T n12 = detail::constant<T>(0.0045584999185800555, -2.3078791591137815e-19, 4.3912785794617077e-36);
-  const T n13 = detail::constant<T>(0.004761, -7.314116190082131e-21, -4.778614550147635e-37);
-  const T n14 = detail::constant<T>(0.0054150000000000005, -4.206639177323268e-20, 1.753607009129941e-36);
-  const T n15 = detail::constant<T>(0.012804999999999999, 3.2505117989012434e-19, -9.485300565637862e-36);
-  const T n16 = detail::constant<T>(0.0129975, 1.2752017523825998e-19, 2.315978552891014e-36);
-  const T n17 = detail::constant<T>(0.014055, 7.148281552649678e-19, -4.553952870524302e-35);
-  const T n18 = detail::constant<T>(0.0180775, 6.809663530139005e-19, 1.9202532305278297e-35);
-  const T n19 = detail::constant<T>(0.018621000000000002, -1.1336266087246258e-18, 6.961561966512828e-36);
-  const T n20 = detail::constant<T>(0.32346304651049246, 1.7069958390129615e-17, -1.3980991072266385e-33);
-  const T n21 = detail::constant<T>(1.6143021620000002, -1.0698723801615415e-16, -2.388211451102804e-33);
-  const T n22 = detail::constant<T>(2.485341919500325, 1.5787504327017813e-16, 5.453346991423809e-33);
-  const T n23 = detail::constant<T>(2e-20, 9.693457091580856e-38, 8.687808479867215e-54);
-  const T trig_angle[3] = {q_q1, q_q2, q_q3};
-  T trig_sin[3], trig_cos[3];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_q1 = trig_sin[0];
-  const T cos_q_q1 = trig_cos[0];
-  const T sin_q_q2 = trig_sin[1];
-  const T cos_q_q2 = trig_cos[1];
-  const T sin_q_q3 = trig_sin[2];
-  const T cos_q_q3 = trig_cos[2];
-  const T c4 = -cos_q_q3*sin_q_q2;
-  const T c5 = sin_q_q2*sin_q_q3;
-  const T k_link2_Rxx = cos_q_q1*cos_q_q2;
-  const T k_link2_Rxy = -cos_q_q1*sin_q_q2;
-  const T k_link2_Ryx = cos_q_q2*sin_q_q1;
-  const T k_link2_Ryy = -sin_q_q1*sin_q_q2;
-  const T k_link2_omega_x = -dq_q1*sin_q_q2;
-  const T k_link2_omega_y = -cos_q_q2*dq_q1;
-  const T k_link3_V_q1_x = -n0*sin_q_q1*sin_q_q2;
-  const T k_link3_V_q1_y = n0*cos_q_q1*sin_q_q2;
-  const T k_link3_V_q2_z = -n0*sin_q_q2;
-  const T k_upper_arm_cm_V_q1_x = n1*cos_q_q1 - n2*sin_q_q1;
-  const T k_upper_arm_cm_V_q1_y = n1*sin_q_q1 + n2*cos_q_q1;
-  const T k_forearm_cm_V_q2_z = n3*cos_q_q2 - n4*sin_q_q2;
-  const T k_link3_Rxx = cos_q_q3*k_link2_Rxx - sin_q_q1*sin_q_q3;
-  const T k_link3_Rxy = -cos_q_q3*sin_q_q1 - k_link2_Rxx*sin_q_q3;
-  const T k_link3_Ryx = cos_q_q1*sin_q_q3 + cos_q_q3*k_link2_Ryx;
-  const T k_link3_Ryy = cos_q_q1*cos_q_q3 - k_link2_Ryx*sin_q_q3;
-  const T k_link3_V_q2_x = n0*k_link2_Rxx;
-  const T k_link3_V_q2_y = n0*k_link2_Ryx;
-  const T k_link3_omega_x = cos_q_q3*k_link2_omega_x + dq_q2*sin_q_q3;
-  const T k_link3_omega_y = cos_q_q3*dq_q2 - k_link2_omega_x*sin_q_q3;
-  const T k_link3_omega_z = dq_q3 - k_link2_omega_y;
-  const T k_upper_arm_cm_v_x = dq_q1*k_upper_arm_cm_V_q1_x;
-  const T k_upper_arm_cm_v_y = dq_q1*k_upper_arm_cm_V_q1_y;
-  const T k_forearm_cm_V_q1_x = n3*cos_q_q2*sin_q_q1 - n5*cos_q_q2*k_link2_Rxx + n5*k_link2_Rxy*sin_q_q2 - n4*sin_q_q1*sin_q_q2;
-  const T k_forearm_cm_V_q1_y = -n3*cos_q_q1*cos_q_q2 - n5*cos_q_q2*k_link2_Ryx + n5*k_link2_Ryy*sin_q_q2 + n4*cos_q_q1*sin_q_q2;
-  const T k_forearm_cm_V_q2_x = -n3*k_link2_Rxy + n4*k_link2_Rxx;
-  const T k_forearm_cm_V_q2_y = -n3*k_link2_Ryy + n4*k_link2_Ryx;
-  const T k_forearm_cm_v_z = dq_q2*k_forearm_cm_V_q2_z;
-  const T k_wrist_cm_V_q1_z = -n6*c5*cos_q_q2 + n6*c5*cos_q_q2 - n7*c4*cos_q_q2 + n7*c4*cos_q_q2 - n8*c4*c5 + n8*c4*c5;
-  const T k_wrist_cm_V_q2_z = -n6*cos_q_q2*cos_q_q3 + n7*cos_q_q2*sin_q_q3 - n8*c4*cos_q_q3 + n8*c5*sin_q_q3 + k_link3_V_q2_z;
-  const T k_wrist_cm_V_q3_z = n6*c5 - n7*c4;
-  const T k_forearm_cm_v_x = dq_q1*k_forearm_cm_V_q1_x + dq_q2*k_forearm_cm_V_q2_x;
-  const T k_forearm_cm_v_y = dq_q1*k_forearm_cm_V_q1_y + dq_q2*k_forearm_cm_V_q2_y;
-  const T k_wrist_cm_V_q1_x = n6*c5*k_link2_Rxy + n6*cos_q_q2*k_link3_Rxy - n7*c4*k_link2_Rxy - n7*cos_q_q2*k_link3_Rxx + n8*c4*k_link3_Rxy - n8*c5*k_link3_Rxx + k_link3_V_q1_x;
-  const T k_wrist_cm_V_q1_y = n6*c5*k_link2_Ryy + n6*cos_q_q2*k_link3_Ryy - n7*c4*k_link2_Ryy - n7*cos_q_q2*k_link3_Ryx + n8*c4*k_link3_Ryy - n8*c5*k_link3_Ryx + k_link3_V_q1_y;
-  const T k_wrist_cm_V_q2_x = n6*cos_q_q3*k_link2_Rxy - n7*k_link2_Rxy*sin_q_q3 - n8*cos_q_q3*k_link3_Rxx + n8*k_link3_Rxy*sin_q_q3 + k_link3_V_q2_x;
-  const T k_wrist_cm_V_q2_y = n6*cos_q_q3*k_link2_Ryy - n7*k_link2_Ryy*sin_q_q3 - n8*cos_q_q3*k_link3_Ryx + n8*k_link3_Ryy*sin_q_q3 + k_link3_V_q2_y;
-  const T k_wrist_cm_V_q3_x = n6*k_link3_Rxy - n7*k_link3_Rxx;
-  const T k_wrist_cm_V_q3_y = n6*k_link3_Ryy - n7*k_link3_Ryx;
-  const T k_wrist_cm_v_z = dq_q1*k_wrist_cm_V_q1_z + dq_q2*k_wrist_cm_V_q2_z + dq_q3*k_wrist_cm_V_q3_z;
-  const T k_wrist_cm_v_x = dq_q1*k_wrist_cm_V_q1_x + dq_q2*k_wrist_cm_V_q2_x + dq_q3*k_wrist_cm_V_q3_x;
-  const T k_wrist_cm_v_y = dq_q1*k_wrist_cm_V_q1_y + dq_q2*k_wrist_cm_V_q2_y + dq_q3*k_wrist_cm_V_q3_y;
-  return -(T(2849)/T(250000))*k_link3_omega_x*k_link3_omega_z + n9*dq_q2*k_link2_omega_y - n10*k_link2_omega_x*k_link2_omega_y + n11*k_link2_omega_x*k_link2_omega_x + n12*dq_q1*dq_q1 - n13*k_link3_omega_x*k_link3_omega_y + n14*k_link3_omega_z*k_link3_omega_z - n15*k_link3_omega_y*k_link3_omega_z + n16*dq_q2*dq_q2 + n17*k_link2_omega_y*k_link2_omega_y + n18*k_link3_omega_y*k_link3_omega_y + n19*k_link3_omega_x*k_link3_omega_x + n20*k_forearm_cm_v_x*k_forearm_cm_v_x + n20*k_forearm_cm_v_y*k_forearm_cm_v_y + n20*k_forearm_cm_v_z*k_forearm_cm_v_z + n21*k_wrist_cm_v_x*k_wrist_cm_v_x + n21*k_wrist_cm_v_y*k_wrist_cm_v_y + n21*k_wrist_cm_v_z*k_wrist_cm_v_z + n22*k_upper_arm_cm_v_x*k_upper_arm_cm_v_x + n22*k_upper_arm_cm_v_y*k_upper_arm_cm_v_y + n23*dq_q2*k_link2_omega_x;
+  T M[9];
+  mass_matrix(t, x, p, M);
+  T twice = T(0);
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) twice = twice + x[3 + i] * M[i * 3 + j] * x[3 + j];
+  return twice / T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

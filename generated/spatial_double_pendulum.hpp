@@ -929,79 +929,16 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   B[3] = k_lower_Rxy*p_l;
 }
 
-/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
+/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.
+/// x: num_states; p: num_parameters.
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
-  (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
-  const T q_a1 = x[0];
-  const T q_b1 = x[1];
-  const T q_a2 = x[2];
-  const T q_b2 = x[3];
-  const T dq_a1 = x[4];
-  const T dq_b1 = x[5];
-  const T dq_a2 = x[6];
-  const T dq_b2 = x[7];
-  const T p_m = p[0];
-  const T p_l = p[1];
-  const T trig_angle[4] = {q_a1, q_b1, q_a2, q_b2};
-  T trig_sin[4], trig_cos[4];
-  detail::sin_cos(trig_angle, trig_sin, trig_cos);
-  const T sin_q_a1 = trig_sin[0];
-  const T cos_q_a1 = trig_cos[0];
-  const T sin_q_b1 = trig_sin[1];
-  const T cos_q_b1 = trig_cos[1];
-  const T sin_q_a2 = trig_sin[2];
-  const T cos_q_a2 = trig_cos[2];
-  const T sin_q_b2 = trig_sin[3];
-  const T cos_q_b2 = trig_cos[3];
-  const T c5 = sin_q_a2*sin_q_b1;
-  const T c7 = cos_q_a2*cos_q_b2*sin_q_b1 + cos_q_b1*sin_q_b2;
-  const T k_upper_Rxy = -cos_q_b1*sin_q_a1;
-  const T k_upper_Rxz = sin_q_a1*sin_q_b1;
-  const T k_upper_Ryy = cos_q_a1*cos_q_b1;
-  const T k_upper_Ryz = -cos_q_a1*sin_q_b1;
-  const T k_upper_omega_y = dq_a1*sin_q_b1;
-  const T k_upper_omega_z = cos_q_b1*dq_a1;
-  const T k_lower_V_a1_x = -cos_q_a1*p_l*sin_q_b1;
-  const T k_lower_V_a1_y = -p_l*sin_q_a1*sin_q_b1;
-  const T k_lower_W_b1_y = -cos_q_b2*sin_q_a2;
-  const T k_lower_V_b1_z = p_l*sin_q_b1;
-  const T k_rod1_cm_V_a1_x = -(T(1)/T(2))*cos_q_a1*p_l*sin_q_b1;
-  const T k_rod1_cm_V_a1_y = -(T(1)/T(2))*p_l*sin_q_a1*sin_q_b1;
-  const T k_rod1_cm_V_b1_z = (T(1)/T(2))*p_l*sin_q_b1;
-  const T k_lower_Rxx = cos_q_a1*cos_q_a2 + k_upper_Rxy*sin_q_a2;
-  const T k_lower_Rxy = -cos_q_a1*cos_q_b2*sin_q_a2 + cos_q_a2*cos_q_b2*k_upper_Rxy + k_upper_Rxz*sin_q_b2;
-  const T k_lower_Ryx = cos_q_a2*sin_q_a1 + k_upper_Ryy*sin_q_a2;
-  const T k_lower_Ryy = cos_q_a2*cos_q_b2*k_upper_Ryy - cos_q_b2*sin_q_a1*sin_q_a2 + k_upper_Ryz*sin_q_b2;
-  const T k_lower_V_b1_x = k_upper_Rxy*p_l;
-  const T k_lower_V_b1_y = k_upper_Ryy*p_l;
-  const T k_lower_omega_x = cos_q_a2*dq_b1 + dq_b2 + k_upper_omega_y*sin_q_a2;
-  const T k_lower_omega_y = cos_q_a2*cos_q_b2*k_upper_omega_y - cos_q_b2*dq_b1*sin_q_a2 + dq_a2*sin_q_b2 + k_upper_omega_z*sin_q_b2;
-  const T k_lower_omega_z = -cos_q_a2*k_upper_omega_y*sin_q_b2 + cos_q_b2*dq_a2 + cos_q_b2*k_upper_omega_z + dq_b1*sin_q_a2*sin_q_b2;
-  const T k_rod1_cm_V_b1_x = (T(1)/T(2))*k_upper_Rxy*p_l;
-  const T k_rod1_cm_V_b1_y = (T(1)/T(2))*k_upper_Ryy*p_l;
-  const T k_rod1_cm_v_z = dq_b1*k_rod1_cm_V_b1_z;
-  const T k_rod2_cm_V_a1_z = (T(1)/T(2))*c5*c7*p_l - (T(1)/T(2))*c5*c7*p_l;
-  const T k_rod2_cm_V_b1_z = -(T(1)/T(2))*c5*k_lower_W_b1_y*p_l + (T(1)/T(2))*c7*cos_q_a2*p_l + k_lower_V_b1_z;
-  const T k_rod2_cm_V_a2_z = -(T(1)/T(2))*c5*p_l*sin_q_b2;
-  const T k_rod2_cm_V_b2_z = (T(1)/T(2))*c7*p_l;
-  const T k_rod1_cm_v_x = dq_a1*k_rod1_cm_V_a1_x + dq_b1*k_rod1_cm_V_b1_x;
-  const T k_rod1_cm_v_y = dq_a1*k_rod1_cm_V_a1_y + dq_b1*k_rod1_cm_V_b1_y;
-  const T k_rod2_cm_V_a1_x = (T(1)/T(2))*c5*k_lower_Rxy*p_l - (T(1)/T(2))*c7*k_lower_Rxx*p_l + k_lower_V_a1_x;
-  const T k_rod2_cm_V_a1_y = (T(1)/T(2))*c5*k_lower_Ryy*p_l - (T(1)/T(2))*c7*k_lower_Ryx*p_l + k_lower_V_a1_y;
-  const T k_rod2_cm_V_b1_x = (T(1)/T(2))*cos_q_a2*k_lower_Rxy*p_l - (T(1)/T(2))*k_lower_Rxx*k_lower_W_b1_y*p_l + k_lower_V_b1_x;
-  const T k_rod2_cm_V_b1_y = (T(1)/T(2))*cos_q_a2*k_lower_Ryy*p_l - (T(1)/T(2))*k_lower_Ryx*k_lower_W_b1_y*p_l + k_lower_V_b1_y;
-  const T k_rod2_cm_V_a2_x = -(T(1)/T(2))*k_lower_Rxx*p_l*sin_q_b2;
-  const T k_rod2_cm_V_a2_y = -(T(1)/T(2))*k_lower_Ryx*p_l*sin_q_b2;
-  const T k_rod2_cm_V_b2_x = (T(1)/T(2))*k_lower_Rxy*p_l;
-  const T k_rod2_cm_V_b2_y = (T(1)/T(2))*k_lower_Ryy*p_l;
-  const T k_rod2_cm_v_z = dq_a1*k_rod2_cm_V_a1_z + dq_a2*k_rod2_cm_V_a2_z + dq_b1*k_rod2_cm_V_b1_z + dq_b2*k_rod2_cm_V_b2_z;
-  const T k_rod2_cm_v_x = dq_a1*k_rod2_cm_V_a1_x + dq_a2*k_rod2_cm_V_a2_x + dq_b1*k_rod2_cm_V_b1_x + dq_b2*k_rod2_cm_V_b2_x;
-  const T k_rod2_cm_v_y = dq_a1*k_rod2_cm_V_a1_y + dq_a2*k_rod2_cm_V_a2_y + dq_b1*k_rod2_cm_V_b1_y + dq_b2*k_rod2_cm_V_b2_y;
-  return (T(1)/T(2))*k_rod1_cm_v_x*k_rod1_cm_v_x*p_m + (T(1)/T(2))*k_rod1_cm_v_y*k_rod1_cm_v_y*p_m + (T(1)/T(2))*k_rod1_cm_v_z*k_rod1_cm_v_z*p_m + (T(1)/T(2))*k_rod2_cm_v_x*k_rod2_cm_v_x*p_m + (T(1)/T(2))*k_rod2_cm_v_y*k_rod2_cm_v_y*p_m + (T(1)/T(2))*k_rod2_cm_v_z*k_rod2_cm_v_z*p_m + (T(1)/T(24))*dq_b1*dq_b1*p_l*p_l*p_m + (T(1)/T(24))*k_lower_omega_x*k_lower_omega_x*p_l*p_l*p_m + (T(1)/T(24))*k_lower_omega_y*k_lower_omega_y*p_l*p_l*p_m + (T(1)/T(24))*k_upper_omega_y*k_upper_omega_y*p_l*p_l*p_m + (T(1)/T(400))*k_lower_omega_z*k_lower_omega_z*p_l*p_l*p_m + (T(1)/T(400))*k_upper_omega_z*k_upper_omega_z*p_l*p_l*p_m;
+  T M[16];
+  mass_matrix(t, x, p, M);
+  T twice = T(0);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 4; ++j) twice = twice + x[4 + i] * M[i * 4 + j] * x[4 + j];
+  return twice / T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

@@ -839,45 +839,16 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   }
 }
 
-/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.
+/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.
+/// x: num_states; p: num_parameters.
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
-  (void)t; (void)x; (void)p;
-  const T q_qw = x[3];
-  const T q_qx = x[4];
-  const T q_qy = x[5];
-  const T q_qz = x[6];
-  const T dq_x = x[7];
-  const T dq_y = x[8];
-  const T dq_z = x[9];
-  const T s_wx = x[10];
-  const T s_wy = x[11];
-  const T s_wz = x[12];
-  const T p_A = p[0];
-  const T p_B = p[1];
-  const T p_C = p[2];
-  const T p_m = p[3];
-  const T k_body_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c0 = -k_body_tqn*q_qw*q_qw;
-  const T c1 = k_body_tqn*q_qz*q_qz;
-  const T c2 = -k_body_tqn*q_qx*q_qx;
-  const T c3 = T(2)*k_body_tqn*q_qx*q_qy;
-  const T c4 = T(2)*k_body_tqn*q_qw*q_qy;
-  const T c5 = -k_body_tqn*q_qy*q_qy;
-  const T c6 = T(2)*k_body_tqn*q_qy*q_qz;
-  const T k_body_tExx = -c0 - c1 - c2 - k_body_tqn*q_qy*q_qy;
-  const T k_body_tExy = -T(2)*k_body_tqn*q_qw*q_qz + c3;
-  const T k_body_tExz = T(2)*k_body_tqn*q_qx*q_qz + c4;
-  const T k_body_tEyx = T(2)*k_body_tqn*q_qw*q_qz + c3;
-  const T k_body_tEyy = -c0 - c1 - c5 - k_body_tqn*q_qx*q_qx;
-  const T k_body_tEyz = -T(2)*k_body_tqn*q_qw*q_qx + c6;
-  const T k_body_tEzx = T(2)*k_body_tqn*q_qx*q_qz - c4;
-  const T k_body_tEzy = T(2)*k_body_tqn*q_qw*q_qx + c6;
-  const T k_body_tEzz = c1 + c2 + c5 + k_body_tqn*q_qw*q_qw;
-  const T k_body_tv_x = dq_x*k_body_tExx + dq_y*k_body_tEyx + dq_z*k_body_tEzx;
-  const T k_body_tv_y = dq_x*k_body_tExy + dq_y*k_body_tEyy + dq_z*k_body_tEzy;
-  const T k_body_tv_z = dq_x*k_body_tExz + dq_y*k_body_tEyz + dq_z*k_body_tEzz;
-  return (T(1)/T(2))*k_body_tv_x*k_body_tv_x*p_m + (T(1)/T(2))*k_body_tv_y*k_body_tv_y*p_m + (T(1)/T(2))*k_body_tv_z*k_body_tv_z*p_m + (T(1)/T(2))*p_A*s_wx*s_wx + (T(1)/T(2))*p_B*s_wy*s_wy + (T(1)/T(2))*p_C*s_wz*s_wz;
+  T M[36];
+  mass_matrix(t, x, p, M);
+  T twice = T(0);
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t j = 0; j < 6; ++j) twice = twice + x[7 + i] * M[i * 6 + j] * x[7 + j];
+  return twice / T(2);
 }
 
 /// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.

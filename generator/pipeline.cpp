@@ -8,6 +8,7 @@
 #include "common/deadline.hpp"
 #include "derive/first_integrals.hpp"
 #include "derive/methods.hpp"
+#include "derive/quadratic_kinetic_energy.hpp"
 #include "derive/routh.hpp"
 #include "derive/vanishing_coordinates.hpp"
 #include "kinematics/drawn_bodies.hpp"
@@ -145,6 +146,7 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     e.variants_declared = model.variants;
     derivation_stage("the oriented trigonometric terms");
     orient(e);
+    e.kinetic_energy_from_mass_matrix = kinetic_energy_is_quadratic_form(e);
     derivation_stage("the finished equations");
     return e;
   } catch (const std::invalid_argument& why) {

@@ -40,6 +40,7 @@ set(EOMGEN_TEST_FILES
   generator/derive/constrained_derivation_test.cpp  fast     sanitized
   generator/derive/hamilton_test.cpp                slow
   generator/derive/first_integrals_test.cpp         fast     sanitized
+  generator/derive/quadratic_kinetic_energy_test.cpp fast
   generator/derive/routh_test.cpp                   fast     sanitized
   generator/derive/reduced_models_test.cpp          fast     sanitized
   runtime/constrained_simulation_test.cpp           fast

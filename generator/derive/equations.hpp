@@ -118,6 +118,9 @@ struct Equations {
   GiNaC::matrix mass_matrix;           // n × n, symmetric
   std::vector<GiNaC::ex> forcing;      // n
   GiNaC::ex kinetic_energy, potential_energy, dissipation;
+  /// T = ½ vᵀ M v (derive/quadratic_kinetic_energy.hpp): the header's kinetic_energy then takes
+  /// M from mass_matrix instead of writing the recursion's T out again. Set by the pipeline.
+  bool kinetic_energy_from_mass_matrix = false;
   std::vector<NamedSymbolic> outputs;
   ConstraintSet constraints;
   bool has_multipliers = false;  // Lagrange I: M q'' = f + Cᵀλ, solved together with C q'' + γ = 0

@@ -130,19 +130,6 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
   return out;
 }
 
-// a state where each coordinate and velocity has a value of its own (`seed` picks one of several),
-// inputs zero
-StateValues spread_state(const Equations& e, int seed) {
-  auto spread = [&](std::size_t count, std::size_t from, double scale) {
-    std::vector<double> x(count);
-    for (std::size_t i = 0; i < count; ++i) x[i] = scale * std::sin(1.3 + 0.71 * double(i + from) + 2.9 * seed);
-    return x;
-  };
-  const Symbols& s = e.symbols;
-  return StateValues(s, e.intermediates, spread(s.coordinates.size(), 0, 1.1), spread(s.velocities.size(), 50, 1.7),
-                     std::vector<double>(s.inputs.size(), 0.0), 0.37 + seed);
-}
-
 // whether x has more than `limit` nodes (counting stops there)
 bool larger_than(const ex& x, std::size_t limit) {
   std::size_t nodes = 0;
@@ -166,7 +153,7 @@ int mass_matrix_row(const Equations& e, std::size_t k, const ex& momentum) {
     if (e.uses_pseudo_velocities() ? (e.coordinate_rates[k] - s.velocities[m]).is_zero() : m == k) j = int(m);
   if (j < 0) return -1;
   for (int seed = 0; seed < 2; ++seed) {
-    StateValues at = spread_state(e, seed);
+    StateValues at = StateValues::spread(e.symbols, e.intermediates, seed);
     double p = at(momentum), row = 0, largest = std::abs(p);
     for (std::size_t m = 0; m < n; ++m) {
       double term = at(e.mass_matrix(unsigned(j), unsigned(m))) * at(s.velocities[m]);

@@ -1,5 +1,6 @@
 #include "derive/state_values.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "symbolic/evaluate.hpp"
@@ -18,6 +19,16 @@ StateValues::StateValues(const Symbols& s, const std::vector<Intermediate>& inte
 
 StateValues StateValues::initial(const Symbols& s, const std::vector<Intermediate>& intermediates) {
   return StateValues(s, intermediates, s.initial_coordinates, s.initial_velocities, s.input_defaults, 0);
+}
+
+StateValues StateValues::spread(const Symbols& s, const std::vector<Intermediate>& intermediates, int seed) {
+  auto spread = [&](std::size_t count, std::size_t from, double scale) {
+    std::vector<double> x(count);
+    for (std::size_t i = 0; i < count; ++i) x[i] = scale * std::sin(1.3 + 0.71 * double(i + from) + 2.9 * seed);
+    return x;
+  };
+  return StateValues(s, intermediates, spread(s.coordinates.size(), 0, 1.1), spread(s.velocities.size(), 50, 1.7),
+                     std::vector<double>(s.inputs.size(), 0.0), 0.37 + seed);
 }
 
 double StateValues::operator()(const GiNaC::ex& x) const {

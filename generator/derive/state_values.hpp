@@ -18,6 +18,9 @@ class StateValues {
               const std::vector<double>& velocities, const std::vector<double>& inputs, double time);
   /// The model's initial state, its default inputs and t = 0.
   static StateValues initial(const Symbols& symbols, const std::vector<Intermediate>& intermediates);
+  /// A state where each coordinate and velocity has a value of its own, inputs zero (`seed` picks
+  /// one of several): for checking an identity at a point no model is likely to single out.
+  static StateValues spread(const Symbols& symbols, const std::vector<Intermediate>& intermediates, int seed);
   /// The value of x; NaN when it has a symbol that is none of the model's nor an intermediate.
   double operator()(const GiNaC::ex& x) const;
 

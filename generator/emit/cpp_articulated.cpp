@@ -298,17 +298,6 @@ std::string articulated_jacobian_input_function(const Equations& e) {
                   w.finish(all_unused + std::string(" (void)B;")));
 }
 
-// a tree of particles is scleronomic and has no [energy] kinetic, so T = ½ q'ᵀ M q' exactly (Hiller §3.5)
-std::string articulated_kinetic_energy_function(const Equations& e) {
-  std::size_t n = e.symbols.num_coordinates();
-  return function("/// Kinetic energy T = q'^T M q' / 2, with M from mass_matrix. x: num_states; p: num_parameters.\n",
-                  "T kinetic_energy(T t, const T* x, const T* p)",
-                  fmt::format("  T M[{0}];\n  mass_matrix(t, x, p, M);\n  T twice = T(0);\n"
-                              "  for (std::size_t i = 0; i < {1}; ++i)\n    for (std::size_t j = 0; j < {1}; ++j)"
-                              " twice = twice + x[{1} + i] * M[i * {1} + j] * x[{1} + j];\n  return twice / T(2);\n",
-                              n * n, n));
-}
-
 // M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3), read off ∂τ/∂(q, q', u) there
 std::string articulated_linearization_function(const Equations& e) {
   const Symbols& s = e.symbols;

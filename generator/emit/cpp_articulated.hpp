@@ -20,7 +20,5 @@ std::string articulated_inverse_dynamics_gradient_function(const Equations& e);
 /// jacobian_input from the input columns of ∂τ/∂(q, q', u) alone, M⁻¹ by the recursion.
 std::string articulated_jacobian_input_function(const Equations& e);
 std::string articulated_linearization_function(const Equations& e);
-/// kinetic_energy as q'ᵀ M q' / 2 with M from mass_matrix.
-std::string articulated_kinetic_energy_function(const Equations& e);
 
 }  // namespace eomgen
