@@ -11,6 +11,7 @@
 
 #include "emit/cpp_expression.hpp"
 #include "emit/statement_order.hpp"
+#include "emit/zero_entries.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/gradient.hpp"
 #include "symbolic/trig_expansion.hpp"
@@ -371,7 +372,7 @@ void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::
 }
 
 std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
-  return doc + "template <class T>\n" + signature + " {\n" + body + "}\n\n";
+  return doc + "template <class T>\n" + signature + " {\n" + with_zero_fills(signature, body) + "}\n\n";
 }
 
 std::string without_unused_locals(const std::string& body) {

@@ -18,6 +18,7 @@
 #include "emit/cpp_header.hpp"
 #include "emit/cpp_joint_tree.hpp"
 #include "emit/formats.hpp"
+#include "emit/zero_entries.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/cse.hpp"
@@ -103,10 +104,6 @@ std::string rhs_function(const Equations& e) {
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 
-// a Jacobian's constant block is written entry by entry in a small model, where it reads as the
-// matrix it is, and in a loop beyond (a 21-joint tree's were 30 KB of lines)
-constexpr std::size_t fill_by_lines_up_to = 36;
-
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), all columns solved at once with the factored M
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
@@ -146,7 +143,7 @@ std::string jacobian_state_function(const Equations& e) {
       for (const ex& d : gradient(rate, state)) top.push_back(d);
     auto top_code = w.batch(top);
     for (std::size_t i = 0; i < nq * N; ++i) w.line(fmt::format("J[{}] = {};", i, top_code[i]));
-  } else if (nq * N <= fill_by_lines_up_to) {
+  } else if (nq * N <= entries_by_lines_up_to) {  // the matrix it is, in a small model
     for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == nq + i ? 1 : 0));
   } else {
@@ -205,10 +202,7 @@ std::string jacobian_input_function(const Equations& e) {
     for (std::size_t j = 0; j < m; ++j)
       for (std::size_t i = 0; i < n; ++i) columns.push_back(rows[i][j]);
     auto code = w.batch(columns);
-    if (nq * m <= fill_by_lines_up_to)
-      for (std::size_t i = 0; i < nq * m; ++i) w.line(fmt::format("B[{}] = T(0);", i));
-    else
-      w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) B[i] = T(0);", nq * m));
+    for (std::size_t i = 0; i < nq * m; ++i) w.line(fmt::format("B[{}] = T(0);", i));
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", (nq + i) * m + j, code[j * n + i]));
     w.line(fmt::format("detail::ldlt_solve_rows<{}>(L, D, B + {});", m, nq * m));
