@@ -14,7 +14,7 @@ StateValues::StateValues(const Symbols& s, const std::vector<Intermediate>& inte
   for (std::size_t i = 0; i < s.parameters.size(); ++i) known_[s.parameters[i]] = s.parameter_defaults[i];
   for (std::size_t i = 0; i < s.inputs.size() && i < inputs.size(); ++i) known_[s.inputs[i]] = inputs[i];
   known_[s.time] = time;
-  for (const Intermediate& i : intermediates) known_[i.symbol] = (*this)(i.definition);
+  for (const Intermediate& i : intermediates) definitions_.emplace(i.symbol, i.definition);
 }
 
 StateValues StateValues::initial(const Symbols& s, const std::vector<Intermediate>& intermediates) {
@@ -32,10 +32,16 @@ StateValues StateValues::spread(const Symbols& s, const std::vector<Intermediate
 }
 
 double StateValues::operator()(const GiNaC::ex& x) const {
-  return evaluate(x, [&](const GiNaC::symbol& y) {
-    auto found = known_.find(y);
-    return found == known_.end() ? std::numeric_limits<double>::quiet_NaN() : found->second;
-  });
+  return evaluate(x, [&](const GiNaC::symbol& y) { return value_of(y); });
+}
+
+double StateValues::value_of(const GiNaC::symbol& y) const {
+  if (auto found = known_.find(y); found != known_.end()) return found->second;
+  auto definition = definitions_.find(y);
+  if (definition == definitions_.end()) return std::numeric_limits<double>::quiet_NaN();
+  double value = (*this)(definition->second);
+  known_[y] = value;
+  return value;
 }
 
 }  // namespace eomgen

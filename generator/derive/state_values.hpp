@@ -1,6 +1,7 @@
 /// @file Values of expressions at one state of a model, in double precision: its coordinates,
 /// velocities, inputs and time given, the parameters at their defaults, and the intermediates of
-/// recursive kinematics evaluated once, in their order, for every expression asked after.
+/// recursive kinematics each evaluated once, when an expression asked first needs it (a check of
+/// T and M needs a tree's kinematics and inertias, not its gradient's thousands of quantities).
 #pragma once
 
 #include <map>
@@ -25,7 +26,9 @@ class StateValues {
   double operator()(const GiNaC::ex& x) const;
 
  private:
-  std::map<GiNaC::ex, double, GiNaC::ex_is_less> known_;
+  double value_of(const GiNaC::symbol& symbol) const;
+  mutable std::map<GiNaC::ex, double, GiNaC::ex_is_less> known_;  // and the intermediates evaluated so far
+  std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> definitions_;
 };
 
 }  // namespace eomgen
