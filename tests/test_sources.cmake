@@ -57,6 +57,7 @@ set(EOMGEN_TEST_FILES
   generator/emit/statement_order_test.cpp           fast
   generator/emit/ldlt_test.cpp                      fast
   generator/emit/zero_entries_test.cpp              fast
+  generator/emit/robot_header_size_test.cpp         fast
   generator/emit/split_units_test.cpp               slow
   generator/emit/sin_cos_test.cpp                   slow
   runtime/simulate_test.cpp                         cli

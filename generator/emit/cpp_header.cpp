@@ -262,8 +262,8 @@ std::string linearization_function(const Equations& e) {
 // in the recursion's quantities was as long as their M (99 KB of a 21-joint tree's header)
 std::string kinetic_energy_from_mass_matrix_function(const Equations& e) {
   std::size_t nq = e.symbols.num_coordinates(), n = e.num_velocities();
-  return function(fmt::format("/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.\n"
-                              "/// x: num_states; p: num_parameters.\n"),
+  return function("/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.\n"
+                  "/// x: num_states; p: num_parameters.\n",
                   "T kinetic_energy(T t, const T* x, const T* p)",
                   fmt::format("  T M[{0}];\n  mass_matrix(t, x, p, M);\n  T twice = T(0);\n"
                               "  for (std::size_t i = 0; i < {1}; ++i)\n    for (std::size_t j = 0; j < {1}; ++j)"
