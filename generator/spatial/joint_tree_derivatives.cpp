@@ -1,5 +1,7 @@
 #include "spatial/joint_tree_derivatives.hpp"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "kinematics/vector3.hpp"
@@ -65,6 +67,7 @@ class Gradient {
     S_.resize(n), v_.resize(n), a_.resize(n), still_v_.resize(n), still_a_.resize(n), turning_v_.resize(n);
     inertia_.resize(n), force_.resize(n), momentum_.resize(n);
     D_.resize(n, GiNaC::matrix(6, 6));
+    hinge_dS_.resize(n);
   }
 
   // world poses, twists, accelerations and the links' own inertias, forces and D, parents first
@@ -99,7 +102,13 @@ class Gradient {
         v_[i] = vp, a_[i] = ap;
       } else {
         v_[i] = named(i, "gv", vp + kept + turning);
-        a_[i] = named(i, "ga", ap + driven + motion_cross(v_[i], turning) + motion_cross(vp, kept));
+        if (is_hinge(i)) {
+          // v × S s' = s' (v_λ + S s') × S = s' Ψ': Ψ' = v_λ × S named here, once, for Ψ'' and the pairs
+          hinge_dS_[i] = named(i, "gdS", motion_cross(vp, S_[i][0]));
+          a_[i] = named(i, "ga", ap + driven + scaled(l.columns[0].rate, *hinge_dS_[i]));
+        } else {
+          a_[i] = named(i, "ga", ap + driven + motion_cross(v_[i], turning) + motion_cross(vp, kept));
+        }
         still_v_[i] = named(i, "gw", vp + kept);
         still_a_[i] = named(i, "gW", ap + kept_driven + motion_cross(vp, kept));
       }
@@ -142,7 +151,8 @@ class Gradient {
         std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
         if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
           T = named(j, "gT" + tag, T);
-        dS_[j].push_back(named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
+        dS_[j].push_back(hinge_dS_[j] && int(d) == own_direction(j) ? *hinge_dS_[j]
+                                                                   : named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
         ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
         G_[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS_[j][d]) +
                                              times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
@@ -204,6 +214,13 @@ class Gradient {
   }
 
  private:
+  // a joint of one column that turns with its link, whose coordinate's twist is that column's S
+  // (a hinge or a slide, a follower's too): its own velocity's Ψ' is v_λ × S
+  bool is_hinge(std::size_t j) const {
+    const TreeLink& l = links_[j];
+    return l.columns.size() == 1 && l.columns[0].turns_with_link && own_direction(j) >= 0;
+  }
+
   // the direction of a one-column joint whose twist is that column's S (weight 1), or −1
   int own_direction(std::size_t j) const {
     const TreeLink& l = links_[j];
@@ -281,6 +298,7 @@ class Gradient {
   std::vector<Six> force_, momentum_;
   std::vector<GiNaC::matrix> D_;  // symmetric
   std::vector<std::vector<Six>> IS_, BS_, dS_, ddS_, G_, A_, H_;  // joint_quantities()
+  std::vector<std::optional<Six>> hinge_dS_;                     // a hinge's Ψ', from forward()
 };
 
 }  // namespace
