@@ -1602,12 +1602,16 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
+  for (std::size_t i = 0; i < 50; ++i) J[i] = T(0);
   T ddq[5];
   T L[25];
   T D[5];
   detail::factored_accelerations(t, x, u, p, ddq, L, D);
-  for (std::size_t i = 0; i < 50; ++i) J[i] = T(0);
-  for (std::size_t i = 0; i < 5; ++i) J[i * 10 + 5 + i] = T(1);
+  J[5] = T(1);
+  J[16] = T(1);
+  J[27] = T(1);
+  J[38] = T(1);
+  J[49] = T(1);
   T* rows = J + 50;
   detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
   detail::ldlt_solve_rows<10, true>(L, D, rows);

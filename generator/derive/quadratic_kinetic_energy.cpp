@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "derive/state_values.hpp"
+#include "symbolic/gradient.hpp"
 
 namespace eomgen {
 
@@ -11,17 +12,19 @@ namespace {
 
 // whether T is written in the recursion's quantities (then it is long code, however short it looks)
 bool uses_intermediates(const Equations& e) {
-  for (const Intermediate& i : e.intermediates)
-    if (e.kinetic_energy.has(i.symbol)) return true;
-  return false;
+  GiNaC::exset used;
+  collect_symbols(e.kinetic_energy, used);
+  return std::any_of(e.intermediates.begin(), e.intermediates.end(), [&](const Intermediate& i) { return used.count(i.symbol) > 0; });
 }
 
 }  // namespace
 
 bool kinetic_energy_is_quadratic_form(const Equations& e) {
+  // a tree of particles is scleronomic and has no [energy] kinetic, so T = ½ q'ᵀ M q' exactly (Hiller §3.5)
+  if (!e.articulated_accelerations.empty()) return true;
   std::size_t n = e.num_velocities();
   if (e.inverse_dynamics.empty() || e.has_multipliers || e.solves_for_velocities() || e.mass_matrix.rows() != n ||
-      !e.articulated_accelerations.empty() || !uses_intermediates(e))
+      !uses_intermediates(e))
     return false;
   // two states, since one could make a linear term vanish by chance
   for (int seed = 0; seed < 2; ++seed) {

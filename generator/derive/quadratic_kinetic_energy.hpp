@@ -7,9 +7,10 @@
 
 namespace eomgen {
 
-/// True for equations from recursive kinematics or a joint tree whose T is written in the
-/// recursion's quantities (long code) where T = ½ vᵀ M v at two states, to 1e-12 of the largest
-/// term; false otherwise (a T in the model's symbols alone, a top's, stays the formula it is).
+/// True for a tree of particles solved by the articulated-body recursion, and for equations from
+/// recursive kinematics or a joint tree whose T is written in the recursion's quantities (long
+/// code) where T = ½ vᵀ M v at two states, to 1e-12 of the largest term; false otherwise (a T in
+/// the model's symbols alone, a top's, stays the formula it is).
 bool kinetic_energy_is_quadratic_form(const Equations& e);
 
 }  // namespace eomgen

@@ -259,8 +259,7 @@ void BodyWriter::write_temporary(const Temporary& t) { define_local(t.name, t.na
 void BodyWriter::define_local(const ex& symbol, const std::string& cpp_name, const ex& definition) {
   note(definition);
   std::string value = code(definition);
-  bool alias = !value.empty() && !std::isdigit(static_cast<unsigned char>(value[0])) &&
-               std::all_of(value.begin(), value.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  bool alias = is_identifier(value);
   names_[symbol] = alias ? value : cpp_name;
   own_names_[symbol] = cpp_name;
   if (!alias) statements_ += fmt::format("  const T {} = {};\n", cpp_name, value);

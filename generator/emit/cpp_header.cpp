@@ -18,7 +18,6 @@
 #include "emit/cpp_header.hpp"
 #include "emit/cpp_joint_tree.hpp"
 #include "emit/formats.hpp"
-#include "emit/zero_entries.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/cse.hpp"
@@ -143,12 +142,9 @@ std::string jacobian_state_function(const Equations& e) {
       for (const ex& d : gradient(rate, state)) top.push_back(d);
     auto top_code = w.batch(top);
     for (std::size_t i = 0; i < nq * N; ++i) w.line(fmt::format("J[{}] = {};", i, top_code[i]));
-  } else if (nq * N <= entries_by_lines_up_to) {  // the matrix it is, in a small model
+  } else {
     for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == nq + i ? 1 : 0));
-  } else {
-    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) J[i] = T(0);", nq * N));
-    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) J[i * {} + {} + i] = T(1);", nq, N, nq));
   }
   // the lower block's rows, −∂τ/∂x, then M^-1 applied to all its columns at once. With nq ≠ n the
   // rows may have an odd length, which g++ -O2 does not vectorize (it would need a remainder loop):
@@ -257,9 +253,8 @@ std::string linearization_function(const Equations& e) {
                   w.finish(all_unused + std::string(" (void)B;")));
 }
 
-// a tree of particles is scleronomic and has no [energy] kinetic, so T = ½ q'ᵀ M q' exactly (Hiller
-// §3.5); recursive kinematics and joint trees when kinetic_energy_from_mass_matrix says so: their T
-// in the recursion's quantities was as long as their M (99 KB of a 21-joint tree's header)
+// when T = ½ vᵀ M v (derive/quadratic_kinetic_energy.hpp): a tree's T in the recursion's
+// quantities was as long as its M (99 KB of a 21-joint tree's header)
 std::string kinetic_energy_from_mass_matrix_function(const Equations& e) {
   std::size_t nq = e.symbols.num_coordinates(), n = e.num_velocities();
   return function("/// Kinetic energy T = v^T M v / 2 of the state's velocities v, with M from mass_matrix.\n"
@@ -371,10 +366,10 @@ std::string all_functions(const Equations& e) {
   std::string functions = constrained_solver(e);
   functions += mass_matrix_and_forcing_function(e) + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) + newton_euler_gradient_function(e) +
                jacobian_state_function(e) + jacobian_input_function(e) + linearization_function(e);
-  functions += e.articulated_accelerations.empty() && !e.kinetic_energy_from_mass_matrix
-                   ? scalar_function(e, "kinetic_energy", e.kinetic_energy,
-                                     "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n")
-                   : kinetic_energy_from_mass_matrix_function(e);
+  functions += e.kinetic_energy_from_mass_matrix
+                   ? kinetic_energy_from_mass_matrix_function(e)
+                   : scalar_function(e, "kinetic_energy", e.kinetic_energy,
+                                     "/// Kinetic energy T(q, q', t). x: num_states; p: num_parameters.\n");
   functions += scalar_function(e, "potential_energy", e.potential_energy,
                                "/// Potential energy V(q, t) of gravity and [energy] potential. x: num_states; p: num_parameters.\n");
   functions += outputs_function(e);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "emit/statement_order.hpp"
+
 namespace eomgen {
 
 namespace {
@@ -21,11 +23,9 @@ std::vector<std::string> lines_of(const std::string& body) {
   return lines;
 }
 
-bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 bool mentions(const std::string& line, const std::string& name) {
   for (std::size_t at = line.find(name); at != std::string::npos; at = line.find(name, at + 1))
-    if ((at == 0 || !identifier_char(line[at - 1])) && (at + name.size() == line.size() || !identifier_char(line[at + name.size()])))
+    if ((at == 0 || !is_identifier_char(line[at - 1])) && (at + name.size() == line.size() || !is_identifier_char(line[at + name.size()])))
       return true;
   return false;
 }
@@ -73,7 +73,7 @@ std::vector<std::string> output_arrays(const std::string& signature) {
   for (std::size_t at = signature.find("T* "); at != std::string::npos; at = signature.find("T* ", at + 3)) {
     if (at < 2 || (signature.compare(at - 1, 1, "(") != 0 && signature.compare(at - 2, 2, ", ") != 0)) continue;
     std::size_t end = at + 3;
-    while (end < signature.size() && identifier_char(signature[end])) ++end;
+    while (end < signature.size() && is_identifier_char(signature[end])) ++end;
     names.push_back(signature.substr(at + 3, end - at - 3));
   }
   return names;

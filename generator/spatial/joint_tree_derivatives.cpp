@@ -151,8 +151,7 @@ class Gradient {
         std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
         if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
           T = named(j, "gT" + tag, T);
-        dS_[j].push_back(hinge_dS_[j] && int(d) == own_direction(j) ? *hinge_dS_[j]
-                                                                   : named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
+        dS_[j].push_back(hinge_dS_[j] ? *hinge_dS_[j] : named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
         ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
         G_[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS_[j][d]) +
                                              times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
@@ -166,12 +165,12 @@ class Gradient {
         BS_[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
         // A = (w + u) × S: for a turning column u = v_j = w + V_b, whose S × S part vanishes, so
         // that a hinge has A = 2 v_λ × S
-        Six twice = scaled(2, motion_cross(still_v_[j], S));
-        if (!l.columns[c].turns_with_link) A_[j].push_back(named(j, "gA" + tag, motion_cross(still_v_[j] + vp, S)));
-        else if (l.columns.size() == 1 && own_direction(j) >= 0)  // a hinge's or slide's T = S: A = 2 Ψ'
-          A_[j].push_back(named(j, "gA" + tag, scaled(2, dS_[j][std::size_t(own_direction(j))])));
-        else if (l.columns.size() == 1) A_[j].push_back(named(j, "gA" + tag, twice));
-        else A_[j].push_back(named(j, "gA" + tag, twice + motion_cross(turning_v_[j], S)));
+        Six A;
+        if (!l.columns[c].turns_with_link) A = motion_cross(still_v_[j] + vp, S);
+        else if (is_hinge(j)) A = scaled(2, *hinge_dS_[j]);  // T = S: A = 2 Ψ'
+        else if (l.columns.size() == 1) A = scaled(2, motion_cross(still_v_[j], S));
+        else A = scaled(2, motion_cross(still_v_[j], S)) + motion_cross(turning_v_[j], S);
+        A_[j].push_back(named(j, "gA" + tag, A));
         H_[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A_[j][c]) + DS + SP));
       }
     }
