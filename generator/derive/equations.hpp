@@ -10,6 +10,7 @@
 #include <ginac/ginac.h>
 
 #include "model/model.hpp"
+#include "spatial/joint_tree_derivatives.hpp"
 
 namespace eomgen {
 
@@ -93,6 +94,9 @@ struct Equations {
   /// sweep then runs through the applied part alone. Empty otherwise.
   std::vector<GiNaC::ex> applied_inverse_dynamics;
   GiNaC::matrix bodies_gradient_coordinates{0, 0}, bodies_gradient_velocities{0, 0};
+  /// a long tree of hinges and slides: the bodies' derivatives are the header's loops over these
+  /// links, and the two matrices above zero (emit/cpp_tree_gradient_loops.hpp)
+  std::optional<HingeTreeLinks> bodies_gradient_loops;
   bool has_bodies_gradient() const { return bodies_gradient_coordinates.rows() > 0; }
   /// Forward dynamics by the articulated-body recursion (derive/articulated_bodies.hpp), when the
   /// model is a tree of particles and [model] forward_dynamics chooses it: q'' in the recursion's

@@ -162,6 +162,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.applied_inverse_dynamics = mech.applied_inverse_dynamics;
   e.bodies_gradient_coordinates = mech.bodies_gradient_coordinates;
   e.bodies_gradient_velocities = mech.bodies_gradient_velocities;
+  e.bodies_gradient_loops = mech.bodies_gradient_loops;
   e.coordinate_parents = mech.coordinate_parents;
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;

@@ -4,6 +4,7 @@
 
 #include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
+#include "emit/cpp_tree_gradient_loops.hpp"
 
 namespace eomgen {
 
@@ -44,6 +45,7 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
     for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += e.bodies_gradient_velocities(unsigned(i), unsigned(j));
   }
   w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
+  if (closed_form && e.bodies_gradient_loops) call_tree_gradient_loops(w, *e.bodies_gradient_loops, nq, W);
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
@@ -60,7 +62,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
   // share grows with the depth (a 21-joint tree: 44,773 against 25,942), without the sweep's
   // second of generating
   constexpr std::size_t compared_up_to = 12;
-  bool closed_form = e.has_bodies_gradient() && n > compared_up_to;
+  bool closed_form = e.has_bodies_gradient() && (n > compared_up_to || e.bodies_gradient_loops);
   std::string body = inverse_dynamics_gradient_body(e, closed_form);
   if (e.has_bodies_gradient() && !closed_form) {
     std::string closed = inverse_dynamics_gradient_body(e, true);
@@ -68,8 +70,12 @@ std::string newton_euler_gradient_function(const Equations& e) {
     closed_form = operations(closed) < operations(body);
     if (closed_form) body = std::move(closed);
   }
-  return "namespace detail {\n\n" +
-         function(fmt::format(fmt::runtime(closed_form
+  return tree_gradient_loops_function(e) + "namespace detail {\n\n" +
+         function(fmt::format(fmt::runtime(e.bodies_gradient_loops
+                                  ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
+                                    "/// part by detail::hinge_tree_gradient's loops; a tangent sweep through the rest).\n"
+                                    "/// ddq: {0}; F: {0}x{1}, row-major.\n"
+                                  : closed_form
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
                                     "/// part in closed form, in world coordinates; a tangent sweep through the rest).\n"
                                     "/// ddq: {0}; F: {0}x{1}, row-major.\n"

@@ -2,7 +2,8 @@
 /// Newton–Euler recursion (recursive kinematics, joint trees): M and f written once
 /// (detail::mass_matrix_and_forcing), the factored accelerations that rhs and jacobian_state call,
 /// and ∂τ/∂(q, q') (detail::inverse_dynamics_gradient) by a tangent sweep or, for a joint tree,
-/// the bodies' part in closed form, whichever has fewer operations.
+/// the bodies' part in closed form, whichever has fewer operations; for a long tree of hinges and
+/// slides the closed form's loops (emit/cpp_tree_gradient_loops.hpp).
 #pragma once
 
 #include <cstddef>

@@ -181,6 +181,7 @@ void add_applied(Mechanics& m, std::vector<ex> tau, const std::vector<ex>& appli
   m.applied_inverse_dynamics = applied;
   m.bodies_gradient_coordinates = bodies_gradient->coordinates;
   m.bodies_gradient_velocities = bodies_gradient->velocities;
+  m.bodies_gradient_loops = bodies_gradient->loops;
 }
 
 // τ = M q'' − f with recursive kinematics (mechanics.hpp): the frames' Newton–Euler recursion, the

@@ -9,6 +9,7 @@
 #include <ginac/ginac.h>
 
 #include "model/model.hpp"
+#include "spatial/joint_tree_derivatives.hpp"
 #include "spatial/joint_velocities.hpp"
 #include "symbolic/simplify.hpp"
 
@@ -64,6 +65,7 @@ struct Mechanics {
   /// (spatial/joint_tree_derivatives.hpp), in acceleration_intermediates. Empty otherwise.
   std::vector<GiNaC::ex> applied_inverse_dynamics;
   GiNaC::matrix bodies_gradient_coordinates{0, 0}, bodies_gradient_velocities{0, 0};
+  std::optional<HingeTreeLinks> bodies_gradient_loops;  // InverseDynamicsGradient::loops
   /// Recursive kinematics: the bodies' M by the composite-body recursion, when it applies.
   std::optional<GiNaC::matrix> composite_mass_matrix;
   /// A tree of frames joined by joints (spatial/joint_tree_dynamics.hpp): the bodies' part of f,

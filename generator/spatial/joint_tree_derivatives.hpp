@@ -26,6 +26,8 @@
 /// T is Σ_k Y_kc S_k over the turning columns, Y = ∂s/∂q' (spatial/joint_velocities.hpp).
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,10 +70,35 @@ struct TreeLink {
   std::vector<Body> bodies;
 };
 
+/// The derivatives above for a long tree of hinges and slides, as loops over its links in the
+/// header (emit/cpp_tree_gradient_loops.hpp), from each link's data in its parent's joint frame:
+/// its parent, its joint's velocity and coordinate (−1 for a fixed link), its turn E (row-major)
+/// and offset r, its joint's column (axis and origin velocity, in its own coordinates) and that
+/// column's rate, and its bodies' spatial inertia about its origin in its own coordinates
+/// (m, h = Σ m c, J's xx xy xz yy yz zz); the loops form the world poses, twists and inertias,
+/// v, a, Ψ', Ψ'', the composite quantities and the pairs from them.
+struct HingeTreeLinks {
+  std::vector<int> parent, velocity, coordinate;
+  std::vector<std::array<GiNaC::ex, 9>> turn;
+  std::vector<Vector3> offset;
+  std::vector<std::array<GiNaC::ex, 6>> column;
+  std::vector<GiNaC::ex> rate;
+  std::vector<std::array<GiNaC::ex, 10>> inertia;
+  Vector3 gravity{0, 0, 0};
+};
+
 struct InverseDynamicsGradient {
   GiNaC::matrix coordinates;  // ∂τ_i/∂q_j, velocities × coordinates
   GiNaC::matrix velocities;   // ∂τ_i/∂s_j, velocities × velocities
+  /// set for a long tree of hinges and slides, whose derivatives are then those loops' (the two
+  /// matrices above zero)
+  std::optional<HingeTreeLinks> loops;
 };
+
+/// Straight-line code for a tree's gradient grows with its pairs of joints, loops do not: a tree
+/// of more than 8 joints (the measured crossover, in joint_tree_derivatives.cpp), each a hinge or
+/// a slide with a velocity of its own, takes the loops (HingeTreeLinks).
+bool gradient_in_loops(const std::vector<TreeLink>& links);
 
 /// The derivatives above, of τ at the accelerations `ddq`, for the tree's velocities and
 /// coordinates (links parents first); their quantities are appended to `out` as intermediates.

@@ -13,7 +13,7 @@ layout, measured inertias, turned by rot_z(q): the frame recursion), models/obli
 (5 joints, branched, oblique axes through offset anchors, a slide, a fixed frame), and
 tests/crosscheck/models/ (robot_models.py): seven_joint_arm (a Panda's layout) and
 branched_tree (21 oblique hinges in a humanoid's branching; with its jacobian_state it
-takes about 16 s to compile) and quadruped (a free torso, four legs of three hinges: 19
+takes about 9 s to compile) and quadruped (a free torso, four legs of three hinges: 19
 coordinates, 18 velocities). Prints a Markdown table.
 
 Usage: tree_benchmark.py EOMGEN [--quick] [--chart FILE.svg] [ROBOT ...]

@@ -4,7 +4,7 @@
 // springs and a damper (the applied part, which the closed form leaves out). At random states,
 // with the quaternion off its unit length, each entry against central differences of the bodies'
 // τ = inverse_dynamics − applied_inverse_dynamics, evaluated from the recursion's own definitions;
-// and a free body carried by a hinge and a slide.
+// and a free body carried by a hinge and a slide. Which trees take the gradient's loops.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -224,6 +224,41 @@ TEST(JointTreeDerivatives, FloatingBaseAgreesWithCentralDifferences) { expect_cl
 
 TEST(JointTreeDerivatives, FreeBodyOnAMovingParentAgreesWithCentralDifferences) {
   expect_closed_form_agrees(carried, 9, 8);
+}
+
+// a chain of hinges about oblique axes through offset anchors, a body on each link; with `ball`,
+// a ball joint at its root
+std::string hinge_chain(int hinges, bool ball) {
+  std::string coordinates, frames, bodies;
+  if (ball) {
+    coordinates += "bw = 1\nbx = 0\nby = 0\nbz = 0\n";
+    frames += "[[frames]]\nname = \"root\"\njoint = { type = \"ball\", quaternion = [\"bw\", \"bx\", \"by\", \"bz\"], "
+              "angular_velocity = [\"ox\", \"oy\", \"oz\"] }\n\n";
+  }
+  for (int k = 0; k < hinges; ++k) {
+    coordinates += fmt::format("a{} = 0.{}\n", k, k + 1);
+    std::string parent = k ? fmt::format("parent = \"link{}\"\n", k - 1) : ball ? "parent = \"root\"\n" : "";
+    frames += fmt::format("[[frames]]\nname = \"link{0}\"\n{1}origin = [\"0\", \"0.0{2}\", \"-0.2\"]\n"
+                          "joint = {{ type = \"revolute\", axis = [\"1\", \"{2}\", \"2\"], anchor = [\"0.01\", \"0\", \"0\"], "
+                          "coordinate = \"a{0}\" }}\n\n",
+                          k, parent, k % 3 + 1);
+    bodies += fmt::format("[[rigid_bodies]]\nname = \"body{0}\"\nmass = \"1.{0}\"\nframe = \"link{0}\"\n"
+                          "center = [\"0.01\", \"0\", \"-0.1\"]\ninertia = [\"0.01\", \"0.02\", \"0.015\"]\n\n",
+                          k);
+  }
+  return "[model]\nname = \"chain\"\n\n[coordinates]\n" + coordinates + "\n" + frames + bodies +
+         "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
+}
+
+// beyond 8 joints a tree of hinges and slides takes the loops (the measured crossover); a ball
+// joint keeps the straight-line closed form, whose formulas have its several columns
+TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
+  EXPECT_FALSE(derive_text(hinge_chain(8, false)).bodies_gradient_loops);
+  Equations nine = derive_text(hinge_chain(9, false));
+  ASSERT_TRUE(nine.bodies_gradient_loops);
+  EXPECT_EQ(nine.bodies_gradient_loops->parent, (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_TRUE(derive_text(hinge_chain(9, true)).has_bodies_gradient());
+  EXPECT_FALSE(derive_text(hinge_chain(9, true)).bodies_gradient_loops) << "a ball joint at the root";
 }
 
 }  // namespace

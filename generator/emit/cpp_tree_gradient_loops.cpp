@@ -1,0 +1,253 @@
+#include "emit/cpp_tree_gradient_loops.hpp"
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+using GiNaC::ex;
+
+namespace {
+
+// Six-vectors in world Plücker coordinates about the origin, motions (ω; v) and forces (n; f); a
+// spatial inertia as (m, h = m c, J_O: xx xy xz yy yz zz); a link's bias D (the symmetric part of
+// B x = I (x × v) + x ×* (I v) + v ×* (I x) that is not x ×* P, spatial/joint_tree_derivatives.cpp)
+// as its angular block's xx xy xz yy yz zz and the vector c of its off-diagonal blocks
+// [c×] and −[c×]: with v = (ω; u), D_ωω = K + Kᵀ − (u hᵀ + h uᵀ) + 2 (h·u) 1, K = [ω×] J_O, and
+// c = ω × h + m u, while the linear block vanishes. 9 numbers to sum up the tree, not 21.
+constexpr const char* six_vector_helpers = R"(template <class T>
+inline void tree_motion_cross(const T* m, const T* x, T* y) {
+  y[0] = m[1]*x[2] - m[2]*x[1];
+  y[1] = m[2]*x[0] - m[0]*x[2];
+  y[2] = m[0]*x[1] - m[1]*x[0];
+  y[3] = m[1]*x[5] - m[2]*x[4] + m[4]*x[2] - m[5]*x[1];
+  y[4] = m[2]*x[3] - m[0]*x[5] + m[5]*x[0] - m[3]*x[2];
+  y[5] = m[0]*x[4] - m[1]*x[3] + m[3]*x[1] - m[4]*x[0];
+}
+
+template <class T>
+inline void tree_force_cross(const T* m, const T* f, T* y) {
+  y[0] = m[1]*f[2] - m[2]*f[1] + m[4]*f[5] - m[5]*f[4];
+  y[1] = m[2]*f[0] - m[0]*f[2] + m[5]*f[3] - m[3]*f[5];
+  y[2] = m[0]*f[1] - m[1]*f[0] + m[3]*f[4] - m[4]*f[3];
+  y[3] = m[1]*f[5] - m[2]*f[4];
+  y[4] = m[2]*f[3] - m[0]*f[5];
+  y[5] = m[0]*f[4] - m[1]*f[3];
+}
+
+template <class T>
+inline T tree_power(const T* m, const T* f) {
+  return m[0]*f[0] + m[1]*f[1] + m[2]*f[2] + m[3]*f[3] + m[4]*f[4] + m[5]*f[5];
+}
+
+// (J ω + h × v; m v − h × ω)
+template <class T>
+inline void tree_inertia_times(const T* I, const T* x, T* y) {
+  y[0] = I[4]*x[0] + I[5]*x[1] + I[6]*x[2] + I[2]*x[5] - I[3]*x[4];
+  y[1] = I[5]*x[0] + I[7]*x[1] + I[8]*x[2] + I[3]*x[3] - I[1]*x[5];
+  y[2] = I[6]*x[0] + I[8]*x[1] + I[9]*x[2] + I[1]*x[4] - I[2]*x[3];
+  y[3] = I[0]*x[3] - I[2]*x[2] + I[3]*x[1];
+  y[4] = I[0]*x[4] - I[3]*x[0] + I[1]*x[2];
+  y[5] = I[0]*x[5] - I[1]*x[1] + I[2]*x[0];
+}
+
+// (D_ωω ω + c × v; ω × c)
+template <class T>
+inline void tree_bias_times(const T* D, const T* x, T* y) {
+  y[0] = D[0]*x[0] + D[1]*x[1] + D[2]*x[2] + D[7]*x[5] - D[8]*x[4];
+  y[1] = D[1]*x[0] + D[3]*x[1] + D[4]*x[2] + D[8]*x[3] - D[6]*x[5];
+  y[2] = D[2]*x[0] + D[4]*x[1] + D[5]*x[2] + D[6]*x[4] - D[7]*x[3];
+  y[3] = x[1]*D[8] - x[2]*D[7];
+  y[4] = x[2]*D[6] - x[0]*D[8];
+  y[5] = x[0]*D[7] - x[1]*D[6];
+}
+
+// the link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
+// column (axis a; origin velocity b) in its own coordinates: (R a; o x R a + R b); its inertia
+// about the world origin from its own about its origin (m, h, J):
+// (m, m o + R h, R J R^T + m (|o|^2 1 - o o^T) + 2 (o . R h) 1 - (R h o^T + o (R h)^T))
+template <class T>
+inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* column, const T* own, T* R, T* o,
+                       T* S, T* C) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) R[3*i + j] = Rp[3*i]*E[j] + Rp[3*i + 1]*E[3 + j] + Rp[3*i + 2]*E[6 + j];
+    o[i] = op[i] + Rp[3*i]*r[0] + Rp[3*i + 1]*r[1] + Rp[3*i + 2]*r[2];
+  }
+  T b[3], Rh[3], RJ[3][3];
+  const T J[3][3] = {{own[4], own[5], own[6]}, {own[5], own[7], own[8]}, {own[6], own[8], own[9]}};
+  for (int i = 0; i < 3; ++i) {
+    S[i] = R[3*i]*column[0] + R[3*i + 1]*column[1] + R[3*i + 2]*column[2];
+    b[i] = R[3*i]*column[3] + R[3*i + 1]*column[4] + R[3*i + 2]*column[5];
+    Rh[i] = R[3*i]*own[1] + R[3*i + 1]*own[2] + R[3*i + 2]*own[3];
+    for (int j = 0; j < 3; ++j) RJ[i][j] = R[3*i]*J[0][j] + R[3*i + 1]*J[1][j] + R[3*i + 2]*J[2][j];
+  }
+  S[3] = o[1]*S[2] - o[2]*S[1] + b[0];
+  S[4] = o[2]*S[0] - o[0]*S[2] + b[1];
+  S[5] = o[0]*S[1] - o[1]*S[0] + b[2];
+  const T m = own[0], oo = o[0]*o[0] + o[1]*o[1] + o[2]*o[2], oh = o[0]*Rh[0] + o[1]*Rh[1] + o[2]*Rh[2];
+  C[0] = m;
+  for (int i = 0; i < 3; ++i) C[1 + i] = m*o[i] + Rh[i];
+  const int rows[6] = {0, 0, 0, 1, 1, 2}, cols[6] = {0, 1, 2, 1, 2, 2};
+  for (int k = 0; k < 6; ++k) {
+    const int i = rows[k], j = cols[k];
+    const T turned = RJ[i][0]*R[3*j] + RJ[i][1]*R[3*j + 1] + RJ[i][2]*R[3*j + 2];
+    const T shift = -(m*o[i]*o[j] + Rh[i]*o[j] + o[i]*Rh[j]);
+    C[4 + k] = i == j ? turned + shift + m*oo + T(2)*oh : turned + shift;
+  }
+}
+
+template <class T>
+inline void tree_own_bias(const T* I, const T* v, T* D) {
+  const T J[3][3] = {{I[4], I[5], I[6]}, {I[5], I[7], I[8]}, {I[6], I[8], I[9]}};
+  T K[3][3];
+  for (int s = 0; s < 3; ++s) {
+    K[0][s] = v[1]*J[2][s] - v[2]*J[1][s];
+    K[1][s] = v[2]*J[0][s] - v[0]*J[2][s];
+    K[2][s] = v[0]*J[1][s] - v[1]*J[0][s];
+  }
+  const T* h = I + 1;
+  const T* u = v + 3;
+  const T hu = h[0]*u[0] + h[1]*u[1] + h[2]*u[2];
+  D[0] = T(2)*(K[0][0] - u[0]*h[0] + hu);
+  D[1] = K[0][1] + K[1][0] - (u[0]*h[1] + h[0]*u[1]);
+  D[2] = K[0][2] + K[2][0] - (u[0]*h[2] + h[0]*u[2]);
+  D[3] = T(2)*(K[1][1] - u[1]*h[1] + hu);
+  D[4] = K[1][2] + K[2][1] - (u[1]*h[2] + h[1]*u[2]);
+  D[5] = T(2)*(K[2][2] - u[2]*h[2] + hu);
+  D[6] = v[1]*h[2] - v[2]*h[1] + I[0]*u[0];
+  D[7] = v[2]*h[0] - v[0]*h[2] + I[0]*u[1];
+  D[8] = v[0]*h[1] - v[1]*h[0] + I[0]*u[2];
+}
+
+)";
+
+// The recursion and the pairs of spatial/joint_tree_derivatives.hpp for a hinge or a slide (T = S,
+// w = v_λ, W = a_λ, A = 2 Ψ'), over the links' tables.
+constexpr const char* gradient_template = R"(/// d tau/d(q, q') of a tree of hinges and slides, its bodies' part, added into F (rows of width W, the
+/// velocities' columns after the nq coordinates' ones): the analytic derivatives of the Newton-Euler
+/// recursion (Carpentier and Mansard 2018) in world coordinates, from each link's joint twist S,
+/// its rate and its bodies' spatial inertia about the origin. A fixed link has velocity -1.
+template <std::size_t L, class T>
+void hinge_tree_gradient(const int (&parent)[L], const int (&velocity)[L], const int (&coordinate)[L],
+                         const T (&turn)[L][9], const T (&offset)[L][3], const T (&column)[L][6], const T (&rate)[L],
+                         const T (&inertia)[L][10], const T* ddq, const T* gravity, std::size_t nq, std::size_t W,
+                         T* F) {
+  // world poses, twists S and inertias C; v, a (the root's a is -gravity), Psi' = v_p x S,
+  // Psi'' = a_p x S + v_p x Psi'; each link's force C a + v x* C v, momentum P = C v and bias D,
+  // summed into the composites
+  T R[L][9], o[L][3], S[L][6], v[L][6], a[L][6], dS[L][6], ddS[L][6], C[L][10], force[L][6], P[L][6], D[L][9];
+  const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
+  const T fall[6] = {T(0), T(0), T(0), -gravity[0], -gravity[1], -gravity[2]};
+  const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
+  for (std::size_t i = 0; i < L; ++i) {
+    tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], turn[i], offset[i],
+               column[i], inertia[i], R[i], o[i], S[i], C[i]);
+    const T* vp = parent[i] < 0 ? rest : v[parent[i]];
+    const T* ap = parent[i] < 0 ? fall : a[parent[i]];
+    if (velocity[i] < 0) {
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k], dS[i][k] = ddS[i][k] = T(0);
+    } else {
+      T aS[6], vdS[6];
+      tree_motion_cross(vp, S[i], dS[i]);
+      tree_motion_cross(ap, S[i], aS);
+      tree_motion_cross(vp, dS[i], vdS);
+      const T s = rate[i], dds = ddq[velocity[i]];
+      for (int k = 0; k < 6; ++k) {
+        v[i][k] = vp[k] + s*S[i][k];
+        a[i][k] = ap[k] + dds*S[i][k] + s*dS[i][k];
+        ddS[i][k] = aS[k] + vdS[k];
+      }
+    }
+    T Ca[6], vP[6];
+    tree_inertia_times(C[i], v[i], P[i]);
+    tree_inertia_times(C[i], a[i], Ca);
+    tree_force_cross(v[i], P[i], vP);
+    for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vP[k];
+    tree_own_bias(C[i], v[i], D[i]);
+  }
+  for (std::size_t i = L; i-- > 0;) {
+    const int p = parent[i];
+    if (p < 0) continue;
+    for (int k = 0; k < 10; ++k) C[p][k] = C[p][k] + C[i][k];
+    for (int k = 0; k < 6; ++k) force[p][k] = force[p][k] + force[i][k], P[p][k] = P[p][k] + P[i][k];
+    for (int k = 0; k < 9; ++k) D[p][k] = D[p][k] + D[i][k];
+  }
+  // per joint: C S, B^T S = D S - S x* P, G = S x* F + C Psi'' + D Psi' + Psi' x* P and
+  // H = C A + D S + S x* P with A = 2 Psi'
+  T CS[L][6], BS[L][6], G[L][6], H[L][6];
+  for (std::size_t j = 0; j < L; ++j) {
+    if (velocity[j] < 0) continue;
+    T DS[6], SP[6], SF[6], Cdd[6], Dd[6], dP[6], Cd[6];
+    tree_inertia_times(C[j], S[j], CS[j]);
+    tree_bias_times(D[j], S[j], DS);
+    tree_force_cross(S[j], P[j], SP);
+    tree_force_cross(S[j], force[j], SF);
+    tree_inertia_times(C[j], ddS[j], Cdd);
+    tree_bias_times(D[j], dS[j], Dd);
+    tree_force_cross(dS[j], P[j], dP);
+    tree_inertia_times(C[j], dS[j], Cd);
+    for (int k = 0; k < 6; ++k) {
+      BS[j][k] = DS[k] - SP[k];
+      G[j][k] = SF[k] + Cdd[k] + Dd[k] + dP[k];
+      H[j][k] = T(2)*Cd[k] + DS[k] + SP[k];
+    }
+  }
+  // each joint k and each joint j at or above it: j's coordinate and velocity in k's row, k's in j's
+  for (std::size_t k = 0; k < L; ++k) {
+    if (velocity[k] < 0) continue;
+    T* row = F + std::size_t(velocity[k])*W;
+    for (int j = int(k); j >= 0; j = parent[j]) {
+      if (velocity[j] < 0) continue;
+      const std::size_t q = std::size_t(coordinate[j]), s = nq + std::size_t(velocity[j]);
+      row[q] = row[q] + tree_power(ddS[j], CS[k]) + tree_power(dS[j], BS[k]);
+      row[s] = row[s] + T(2)*tree_power(dS[j], CS[k]) + tree_power(S[j], BS[k]);
+      if (j == int(k)) continue;
+      T* above = F + std::size_t(velocity[j])*W;
+      const std::size_t qk = std::size_t(coordinate[k]), sk = nq + std::size_t(velocity[k]);
+      above[qk] = above[qk] + tree_power(S[j], G[k]);
+      above[sk] = above[sk] + tree_power(S[j], H[k]);
+    }
+  }
+}
+
+)";
+
+std::string table(const std::vector<int>& entries) {
+  std::string text;
+  for (std::size_t i = 0; i < entries.size(); ++i) text += (i ? ", " : "") + std::to_string(entries[i]);
+  return text;
+}
+
+}  // namespace
+
+std::string tree_gradient_loops_function(const Equations& e) {
+  if (!e.bodies_gradient_loops) return "";
+  return "namespace detail {\n\n" + std::string(six_vector_helpers) + gradient_template + "}  // namespace detail\n\n";
+}
+
+void call_tree_gradient_loops(BodyWriter& w, const HingeTreeLinks& links, std::size_t coordinates, std::size_t width) {
+  std::size_t L = links.parent.size();
+  w.line(fmt::format("static constexpr int tree_parent[{}] = {{{}}};", L, table(links.parent)));
+  w.line(fmt::format("static constexpr int tree_velocity[{}] = {{{}}};", L, table(links.velocity)));
+  w.line(fmt::format("static constexpr int tree_coordinate[{}] = {{{}}};", L, table(links.coordinate)));
+  w.line(fmt::format("T tree_turn[{0}][9], tree_offset[{0}][3], tree_column[{0}][6], tree_rate[{0}], tree_inertia[{0}][10], "
+                     "tree_gravity[3];", L));
+  std::vector<ex> inputs;
+  std::vector<std::string> targets;
+  auto add = [&](const std::string& array, std::size_t i, std::size_t k, const ex& value) {
+    inputs.push_back(value);
+    targets.push_back(fmt::format("{}[{}][{}]", array, i, k));
+  };
+  for (std::size_t i = 0; i < L; ++i) {
+    for (std::size_t k = 0; k < 9; ++k) add("tree_turn", i, k, links.turn[i][k]);
+    for (std::size_t k = 0; k < 3; ++k) add("tree_offset", i, k, links.offset[i][k]);
+    for (std::size_t k = 0; k < 6; ++k) add("tree_column", i, k, links.column[i][k]);
+    inputs.push_back(links.rate[i]), targets.push_back(fmt::format("tree_rate[{}]", i));
+    for (std::size_t k = 0; k < 10; ++k) add("tree_inertia", i, k, links.inertia[i][k]);
+  }
+  for (unsigned k = 0; k < 3; ++k) inputs.push_back(links.gravity[k]), targets.push_back(fmt::format("tree_gravity[{}]", k));
+  w.assign(inputs, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+  w.line(fmt::format("hinge_tree_gradient(tree_parent, tree_velocity, tree_coordinate, tree_turn, tree_offset, tree_column, "
+                     "tree_rate, tree_inertia, ddq, tree_gravity, {}, {}, F);", coordinates, width));
+}
+
+}  // namespace eomgen
