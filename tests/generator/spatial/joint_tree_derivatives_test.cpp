@@ -259,6 +259,10 @@ TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   EXPECT_EQ(nine.bodies_gradient_loops->parent, (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 6, 7}));
   EXPECT_TRUE(derive_text(hinge_chain(9, true)).has_bodies_gradient());
   EXPECT_FALSE(derive_text(hinge_chain(9, true)).bodies_gradient_loops) << "a ball joint at the root";
+  // tests/crosscheck/robot_jacobian_test.cpp checks this one's loops against the complex step
+  Derivation hand = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/gantry_hand.toml");
+  ASSERT_TRUE(hand.equations) << hand.diagnostics.format();
+  EXPECT_TRUE(hand.equations->bodies_gradient_loops) << "a slide and a fixed link among 11 joints";
 }
 
 }  // namespace
