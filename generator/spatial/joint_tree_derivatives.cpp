@@ -358,18 +358,13 @@ class Gradient {
 
 }  // namespace
 
-bool gradient_in_loops(const std::vector<TreeLink>& links) {
-  std::vector<Intermediate> unused;
-  std::size_t joints = 0;
-  for (const TreeLink& l : links) joints += l.columns.empty() ? 0 : 1;
-  return joints > loops_beyond_joints && Gradient(links, unused).hinges_only();
-}
-
 InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                             const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                             std::vector<Intermediate>& out) {
   Gradient g(links, out);
-  if (gradient_in_loops(links)) {
+  std::size_t joints = 0;
+  for (const TreeLink& l : links) joints += l.columns.empty() ? 0 : 1;
+  if (joints > loops_beyond_joints && g.hinges_only()) {
     InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
                                  GiNaC::matrix(unsigned(velocities), unsigned(velocities)), g.loop_inputs(gravity)};
     return zero;

@@ -12,23 +12,19 @@
 namespace eomgen::test {
 namespace {
 
-TEST(RobotHeaders, TheSevenJointArmsHeaderIsAtMost200KB) {
-  Derivation d = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/seven_joint_arm.toml");
+// the header of a robot of tests/crosscheck/models/ within `limit` bytes, its gradient in loops or not
+void expect_header_within(const std::string& robot, std::size_t limit, bool loops) {
+  Derivation d = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/" + robot + ".toml");
   ASSERT_TRUE(d.equations) << d.diagnostics.format();
   std::size_t bytes = emit_cpp_header(*d.equations).size();
-  std::printf("seven_joint_arm.hpp: %zu bytes\n", bytes);
-  EXPECT_LE(bytes, 200000u);
-  EXPECT_FALSE(d.equations->bodies_gradient_loops);
+  std::printf("%s.hpp: %zu bytes\n", robot.c_str(), bytes);
+  EXPECT_LE(bytes, limit);
+  EXPECT_EQ(bool(d.equations->bodies_gradient_loops), loops) << robot;
 }
 
-TEST(RobotHeaders, TheTwentyOneJointTreesHeaderIsAtMost600KB) {
-  Derivation d = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/branched_tree.toml");
-  ASSERT_TRUE(d.equations) << d.diagnostics.format();
-  std::size_t bytes = emit_cpp_header(*d.equations).size();
-  std::printf("branched_tree.hpp: %zu bytes\n", bytes);
-  EXPECT_LE(bytes, 600000u);
-  EXPECT_TRUE(d.equations->bodies_gradient_loops);
-}
+TEST(RobotHeaders, TheSevenJointArmsHeaderIsAtMost200KB) { expect_header_within("seven_joint_arm", 200000, false); }
+
+TEST(RobotHeaders, TheTwentyOneJointTreesHeaderIsAtMost600KB) { expect_header_within("branched_tree", 600000, true); }
 
 }  // namespace
 }  // namespace eomgen::test
