@@ -86,6 +86,10 @@ int main(int argc, char** argv) {
   HandWritten hand;
   volatile double sink = 0;
   int calls = std::max(20, 200000 / (n * n + 10));
+  // jacobian_state costs a few rhs: its batches about as long in time as the rhs's. (Batches of
+  // calls / N were 10 calls on the 21-joint tree, timed right after mjd_transitionFD had taken the
+  // caches: they measured the first call's cache misses, 3.7 rhs where longer batches give 3.0.)
+  int jacobian_calls = std::max(5, calls / 4);
   std::vector<double> ours, theirs, mujoco, jacobian, differences, other_form, articulated, transition;
 #if TREE_PEERS
   // the articulated-body peer at MuJoCo's state (no controls), and its qacc against MuJoCo's there
@@ -116,7 +120,7 @@ int main(int argc, char** argv) {
 #endif
     if (PLANAR) theirs.push_back(time_batch([&] { hand.rhs(x.data(), p.data(), xdot_hand.data()); sink = sink + xdot_hand[N - 1]; }, calls));
 #if JACOBIAN
-    jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; }, std::max(5, calls / N)));
+    jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; }, jacobian_calls));
     differences.push_back(time_batch([&] {
       for (int j = 0; j < N; ++j) {
         double h = 1e-7 * std::max(1.0, std::abs(x[j])), keep = x[j];
