@@ -4,6 +4,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,16 @@ struct TreeInverseDynamics {
   /// q'' = M⁻¹ b by the recursion for generalized forces b given as symbols (the Jacobian's solves)
   std::vector<GiNaC::symbol> forces;
   std::vector<GiNaC::ex> accelerations_of_forces;
-  bool empty() const { return axes.empty(); }
+};
+
+/// Forward dynamics by the articulated-body recursion (derive/articulated_bodies.hpp): q'' in the
+/// recursion's quantities, for the generated rhs, and the same tree's M, f and ∂τ/∂(q, q', u)
+/// (q'' held as Equations::acceleration_symbols) in them, equal to Equations::mass_matrix and
+/// forcing. Not printed.
+struct ArticulatedForwardDynamics {
+  std::vector<Intermediate> intermediates;
+  std::vector<GiNaC::ex> accelerations;
+  TreeInverseDynamics inverse_dynamics;
 };
 
 /// A quantity that stays constant along every motion at zero inputs (Hiller §3.6, §3.8.3).
@@ -88,29 +98,20 @@ struct Equations {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
-  /// A joint tree: inverse_dynamics is the bodies' τ plus applied_inverse_dynamics, and the
-  /// bodies' ∂τ/∂q (velocities × coordinates) and ∂τ/∂s (velocities × velocities) are in closed form
-  /// (spatial/joint_tree_derivatives.hpp), in acceleration_intermediates: the header's tangent
-  /// sweep then runs through the applied part alone. Empty otherwise.
-  std::vector<GiNaC::ex> applied_inverse_dynamics;
-  GiNaC::matrix bodies_gradient_coordinates{0, 0}, bodies_gradient_velocities{0, 0};
-  /// a long tree of hinges and slides: the bodies' derivatives are the header's loops over these
-  /// links, and the two matrices above zero (emit/cpp_tree_gradient_loops.hpp)
-  std::optional<HingeTreeLinks> bodies_gradient_loops;
-  bool has_bodies_gradient() const { return bodies_gradient_coordinates.rows() > 0; }
-  /// Forward dynamics by the articulated-body recursion (derive/articulated_bodies.hpp), when the
-  /// model is a tree of particles and [model] forward_dynamics chooses it: q'' in the recursion's
-  /// quantities, for the generated rhs. Empty when the rhs solves M q'' = f. Not printed.
-  std::vector<Intermediate> articulated_intermediates;
-  std::vector<GiNaC::ex> articulated_accelerations;
-  /// With it, the same tree's M, f and ∂τ/∂(q, q', u) (q'' held as acceleration_symbols) in the
-  /// recursion's quantities, for the header: equal to those of mass_matrix and forcing.
-  TreeInverseDynamics articulated_inverse_dynamics;
-  /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
-  void solve_by_mass_matrix() {
-    articulated_intermediates.clear(), articulated_accelerations.clear();
-    articulated_inverse_dynamics = TreeInverseDynamics{};
+  /// A joint tree: inverse_dynamics is the bodies' τ plus the applied part, and the bodies' ∂τ/∂q
+  /// (velocities × coordinates) and ∂τ/∂s (velocities × velocities) are in closed form, in
+  /// acceleration_intermediates, or the header's loops over a long tree's links: the header's
+  /// tangent sweep then runs through the applied part alone. Empty otherwise.
+  std::optional<BodiesGradient> bodies_gradient;
+  /// the links of those loops (emit/cpp_tree_gradient_loops.hpp), or null
+  const HingeTreeLinks* gradient_loops() const {
+    return bodies_gradient && bodies_gradient->closed_form.loops ? &*bodies_gradient->closed_form.loops : nullptr;
   }
+  /// Forward dynamics by the articulated-body recursion of a tree of particles, when [model]
+  /// forward_dynamics chooses it; without it the rhs solves M q'' = f.
+  std::optional<ArticulatedForwardDynamics> articulated;
+  /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
+  void solve_by_mass_matrix() { articulated.reset(); }
   /// A tree of joints (spatial/joint_tree_dynamics.hpp): for each coordinate, the coordinate of the
   /// nearest joint above its own (−1 at a root), when every one is above those it carries; M_ij
   /// is then zero unless one of i, j is above the other, and the header factors M from the leaves

@@ -84,10 +84,7 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
   e.acceleration_symbols = mech.acceleration_symbols;
   e.acceleration_intermediates = mech.acceleration_intermediates;
   e.inverse_dynamics = mech.inverse_dynamics;
-  e.applied_inverse_dynamics = mech.applied_inverse_dynamics;
-  e.bodies_gradient_coordinates = mech.bodies_gradient_coordinates;
-  e.bodies_gradient_velocities = mech.bodies_gradient_velocities;
-  e.bodies_gradient_loops = mech.bodies_gradient_loops;
+  e.bodies_gradient = mech.bodies_gradient;
   e.coordinate_parents = mech.coordinate_parents;
   for (const FrameLink& l : model.frame_links)
     if (l.joint && l.joint->spherical())

@@ -99,12 +99,13 @@ void choose_forward_dynamics(const Model& model, const Mechanics& mech, const Pa
   ArticulatedAccelerations solution = articulated_accelerations(model, mech, tree);
   std::size_t n = model.symbols.num_coordinates();
   for (std::size_t k = 0; k < n; ++k) e.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
-  e.articulated_inverse_dynamics =
+  ArticulatedForwardDynamics& articulated = e.articulated.emplace();
+  articulated.inverse_dynamics =
       articulated_inverse_dynamics(model, mech, tree, solution, e.acceleration_symbols, solution.intermediates);
-  e.articulated_inverse_dynamics.forces = solution.forces;
-  e.articulated_inverse_dynamics.accelerations_of_forces = solution.accelerations_of_forces;
-  e.articulated_intermediates = std::move(solution.intermediates);
-  e.articulated_accelerations = std::move(solution.accelerations);
+  articulated.inverse_dynamics.forces = solution.forces;
+  articulated.inverse_dynamics.accelerations_of_forces = solution.accelerations_of_forces;
+  articulated.intermediates = std::move(solution.intermediates);
+  articulated.accelerations = std::move(solution.accelerations);
 }
 
 }  // namespace
@@ -159,10 +160,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   e.acceleration_symbols = mech.acceleration_symbols;
   e.acceleration_intermediates = mech.acceleration_intermediates;
   e.inverse_dynamics = mech.inverse_dynamics;
-  e.applied_inverse_dynamics = mech.applied_inverse_dynamics;
-  e.bodies_gradient_coordinates = mech.bodies_gradient_coordinates;
-  e.bodies_gradient_velocities = mech.bodies_gradient_velocities;
-  e.bodies_gradient_loops = mech.bodies_gradient_loops;
+  e.bodies_gradient = mech.bodies_gradient;
   e.coordinate_parents = mech.coordinate_parents;
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;

@@ -1,5 +1,5 @@
 /// @file The generated header's functions for a model whose rhs solves for q'' by the
-/// articulated-body recursion (Equations::articulated_accelerations): the rhs itself, O(n) code
+/// articulated-body recursion (Equations::articulated): the rhs itself, O(n) code
 /// without M; M and ∂τ/∂(q, q', u) of τ = M q'' − f as loops over the coupled pairs of coordinates
 /// (∂τ/∂x written once, for linearization); and jacobian_input, which applies M⁻¹ by the same
 /// recursion, a block of columns at a time (jacobian_state: emit/cpp_articulated_jacobian.hpp).

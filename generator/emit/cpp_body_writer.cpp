@@ -81,7 +81,9 @@ BodyWriter::BodyWriter(const Equations& e)
 // the graph holds them, so no other expression can take their place and pass for them).
 std::shared_ptr<const BodyWriter::IntermediateGraph> BodyWriter::intermediate_graph(const Equations& e) {
   thread_local std::shared_ptr<const IntermediateGraph> last;
-  const std::vector<Intermediate>* parts[] = {&e.intermediates, &e.acceleration_intermediates, &e.articulated_intermediates};
+  static const std::vector<Intermediate> none;
+  const std::vector<Intermediate>* parts[] = {&e.intermediates, &e.acceleration_intermediates,
+                                              e.articulated ? &e.articulated->intermediates : &none};
   auto unchanged = [&] {
     std::size_t at = 0;
     for (const std::vector<Intermediate>* part : parts)

@@ -17,6 +17,7 @@
 #include "emit/cpp_trig.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/cpp_joint_tree.hpp"
+#include "emit/dynamics_form.hpp"
 #include "emit/formats.hpp"
 #include "model/symbols.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -39,10 +40,11 @@ std::string number_list(const std::vector<double>& values) {
 
 
 std::string mass_matrix_function(const Equations& e) {
-  if (!e.articulated_inverse_dynamics.empty()) return articulated_mass_matrix_function(e);
+  DynamicsForm form = dynamics_form(e);
+  if (form == DynamicsForm::particle_tree) return articulated_mass_matrix_function(e);
   std::size_t n = e.forcing.size(), m = e.symbols.inputs.size();
   BodyWriter w(e);
-  if (uses_newton_euler_gradient(e)) {
+  if (form == DynamicsForm::newton_euler) {
     // M does not depend on u: f is taken at u = 0 and dropped
     w.line(fmt::format("T f[{}];", n));
     if (m > 0) w.line(fmt::format("const detail::input_t<T> no_inputs[{}] = {{}};", m));
@@ -64,8 +66,9 @@ std::string mass_matrix_function(const Equations& e) {
 
 std::string forcing_function(const Equations& e) {
   BodyWriter w(e);
-  const std::vector<ex>& f = e.articulated_inverse_dynamics.empty() ? e.forcing : e.articulated_inverse_dynamics.forcing;
-  if (uses_newton_euler_gradient(e)) {
+  DynamicsForm form = dynamics_form(e);
+  const std::vector<ex>& f = form == DynamicsForm::particle_tree ? e.articulated->inverse_dynamics.forcing : e.forcing;
+  if (form == DynamicsForm::newton_euler) {
     w.line(fmt::format("T M[{}];", f.size() * f.size()));
     w.line("detail::mass_matrix_and_forcing(t, x, u, p, M, f);");
   } else {
@@ -89,11 +92,12 @@ void coordinate_rates(BodyWriter& w, const Equations& e, const std::string& targ
 
 std::string rhs_function(const Equations& e) {
   if (e.has_multipliers) return constrained_rhs_function(e);
-  if (!e.articulated_accelerations.empty()) return articulated_rhs_function(e);
+  DynamicsForm form = dynamics_form(e);
+  if (form == DynamicsForm::particle_tree) return articulated_rhs_function(e);
   std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
   // a tree's M and f are long code, written once, in detail::factored_accelerations
-  if (uses_newton_euler_gradient(e)) call_factored_accelerations(w, k);
+  if (form == DynamicsForm::newton_euler) call_factored_accelerations(w, k);
   else accelerations(w, e);
   coordinate_rates(w, e, "xdot");
   for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = ddq[{}];", n + i, i));
@@ -106,14 +110,15 @@ std::string rhs_function(const Equations& e) {
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), all columns solved at once with the factored M
 std::string jacobian_state_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
-  if (e.solves_for_velocities()) return momentum_jacobian_state_function(e);
-  if (!e.articulated_accelerations.empty()) return articulated_jacobian_state_function(e);
+  DynamicsForm form = dynamics_form(e);
+  if (form == DynamicsForm::momentum) return momentum_jacobian_state_function(e);
+  if (form == DynamicsForm::particle_tree) return articulated_jacobian_state_function(e);
   const Symbols& s = e.symbols;
   std::size_t nq = s.num_coordinates(), n = e.num_velocities(), N = nq + n;
   BodyWriter w(e);
   std::vector<ex> state(s.coordinates.begin(), s.coordinates.end()), coordinates = state;
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
-  bool newton_euler = uses_newton_euler_gradient(e);
+  bool newton_euler = form == DynamicsForm::newton_euler;
   if (!newton_euler) accelerations(w, e);
   if (newton_euler) call_factored_accelerations(w, n);
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c = −∂τ_i/∂x_j  (M depends on q only)
@@ -179,14 +184,15 @@ std::string jacobian_state_function(const Equations& e) {
 
 std::string jacobian_input_function(const Equations& e) {
   if (e.has_multipliers) return constrained_jacobian_input_function(e);
-  if (!e.articulated_accelerations.empty()) return articulated_jacobian_input_function(e);
+  DynamicsForm form = dynamics_form(e);
+  if (form == DynamicsForm::particle_tree) return articulated_jacobian_input_function(e);
   const Symbols& s = e.symbols;
   std::size_t nq = s.num_coordinates(), n = e.forcing.size(), m = s.inputs.size();
   BodyWriter w(e);
   if (m > 0) {
     w.line(fmt::format("T M[{}];", n * n));
     // a tree's M is long code, written once, in mass_matrix
-    if (uses_newton_euler_gradient(e)) w.line("mass_matrix(t, x, p, M);");
+    if (form == DynamicsForm::newton_euler) w.line("mass_matrix(t, x, p, M);");
     else write_symmetric(w, w.batch(upper_triangle(e.mass_matrix, n)), n, "M");
     w.line(fmt::format("T L[{}];", n * n));
     w.line(fmt::format("T D[{}];", n));
@@ -210,14 +216,16 @@ std::string jacobian_input_function(const Equations& e) {
 
 // M q'' + P q' + Q q = B u about a state with q'' = 0 (Hiller §5.3): P = -df/dq', Q = -df/dq, B = df/du
 std::string linearization_function(const Equations& e) {
-  if (e.solves_for_velocities()) return momentum_linearization_function(e);
-  if (!e.articulated_accelerations.empty()) return articulated_linearization_function(e);
+  DynamicsForm form = dynamics_form(e);
+  if (form == DynamicsForm::momentum) return momentum_linearization_function(e);
+  if (form == DynamicsForm::particle_tree) return articulated_linearization_function(e);
+  bool newton_euler = form == DynamicsForm::newton_euler;
   const Symbols& s = e.symbols;
   std::size_t n = e.forcing.size(), nq = s.num_coordinates(), m = s.inputs.size();
   BodyWriter w(e);
   std::vector<ex> entries, velocities(s.velocities.begin(), s.velocities.end()),
       coordinates(s.coordinates.begin(), s.coordinates.end()), inputs(s.inputs.begin(), s.inputs.end());
-  if (uses_newton_euler_gradient(e)) {
+  if (newton_euler) {
     // f = −τ at q'' = 0 (equations.hpp): P = ∂τ/∂q', Q = ∂τ/∂q, and B = ∂f/∂u below
     std::size_t W = nq + n;
     w.line(fmt::format("const T ddq[{}] = {{}};", n));
@@ -230,16 +238,16 @@ std::string linearization_function(const Equations& e) {
     for (unsigned i = 0; i < n; ++i)
       for (const ex& d : gradient(e.forcing[i], inputs)) entries.push_back(d);
   }
-  for (unsigned i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
+  for (unsigned i = 0; i < n && !newton_euler; ++i) {
     for (const ex& d : gradient(e.forcing[i], velocities)) entries.push_back(-d);
     for (const ex& d : gradient(e.forcing[i], coordinates)) entries.push_back(-d);
     for (const ex& d : gradient(e.forcing[i], inputs)) entries.push_back(d);
   }
   auto code = w.batch(entries);
   std::size_t at = 0;
-  for (std::size_t i = 0; i < n && uses_newton_euler_gradient(e); ++i)
+  for (std::size_t i = 0; i < n && newton_euler; ++i)
     for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", i * m + j, code[at++]));
-  for (std::size_t i = 0; i < n && e.inverse_dynamics.empty(); ++i) {
+  for (std::size_t i = 0; i < n && !newton_euler; ++i) {
     for (std::size_t j = 0; j < n; ++j) w.line(fmt::format("P[{}] = {};", i * n + j, code[at++]));
     for (std::size_t j = 0; j < nq; ++j) w.line(fmt::format("Q[{}] = {};", i * nq + j, code[at++]));
     for (std::size_t j = 0; j < m; ++j) w.line(fmt::format("B[{}] = {};", i * m + j, code[at++]));
@@ -393,6 +401,7 @@ std::string quaternion_list(const Equations& e) {
 
 std::string emit_cpp_header(const Equations& e) {
   const Symbols& s = e.symbols;
+  const DynamicsForm form = dynamics_form(e);
   std::size_t n = s.num_coordinates(), k = e.num_velocities();
   std::vector<std::string> velocities, states = s.coordinate_names, outputs;
   for (const auto& v : s.velocities) velocities.push_back(v.get_name());
@@ -435,11 +444,11 @@ std::string emit_cpp_header(const Equations& e) {
           ? "Appell's equations M(q,t) s' = f(q, s, u, t) with q' = W(q,t) s + w(q,t); state x = [q; s]."
       : e.has_multipliers
           ? "Lagrange I: M(q,t) q'' = f(q, q', u, t) + C(q,t)^T lambda with C q'' + gamma = 0; state x = [q; q']."
-      : !e.inverse_dynamics.empty()
+      : form == DynamicsForm::newton_euler
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Recursive kinematics: each "
             "function computes the frames' and bodies' quantities it needs (k_...) first; jacobian_state and\n"
             "// linearization differentiate the Newton-Euler inverse dynamics tau = M q'' - f (forward mode)."
-      : !e.articulated_accelerations.empty()
+      : form == DynamicsForm::particle_tree
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
             "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix, forcing "
             "and jacobian_state use the same tree (M_jl = m S_j . S_l; jacobian_state entry by entry from the\n"
@@ -482,7 +491,7 @@ std::string emit_cpp_header(const Equations& e) {
       "  std::array<Scalar, num_parameters> values() const {{ return {{{{{}}}}}; }}\n}};\n\n",
       members, values);
   out += constraint_declarations(e);
-  out += detail_functions(e, k, e.articulated_accelerations.empty(), functions.find("detail::sin_cos(") != std::string::npos,
+  out += detail_functions(e, k, form != DynamicsForm::particle_tree, functions.find("detail::sin_cos(") != std::string::npos,
                           uses_constants,
                           uses_clamp);
   out += functions;

@@ -5,14 +5,11 @@
 #include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
 #include "emit/cpp_tree_gradient_loops.hpp"
+#include "emit/dynamics_form.hpp"
 
 namespace eomgen {
 
 using GiNaC::ex;
-
-bool uses_newton_euler_gradient(const Equations& e) {
-  return !e.inverse_dynamics.empty() && !e.solves_for_velocities() && e.articulated_accelerations.empty();
-}
 
 void call_factored_accelerations(BodyWriter& w, std::size_t n) {
   w.line(fmt::format("T ddq[{}];", n));
@@ -31,7 +28,7 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   BodyWriter w(e);
   std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
   directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
-  const std::vector<ex>& swept = closed_form ? e.applied_inverse_dynamics : e.inverse_dynamics;
+  const std::vector<ex>& swept = closed_form ? e.bodies_gradient->applied_inverse_dynamics : e.inverse_dynamics;
   TangentSweep sweep(w, directions);
   sweep.follow(w.write_intermediates_of(swept));
   CseBatch tau = w.reduced_batch(swept);
@@ -40,19 +37,20 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   for (std::size_t i = 0; i < n; ++i)
     for (const ex& d : sweep.derivatives(tau.outputs[i])) entries.push_back(d);
   std::size_t nq = s.num_coordinates();
-  for (std::size_t i = 0; i < n && closed_form; ++i) {
-    for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += e.bodies_gradient_coordinates(unsigned(i), unsigned(j));
-    for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += e.bodies_gradient_velocities(unsigned(i), unsigned(j));
+  const InverseDynamicsGradient* bodies = closed_form ? &e.bodies_gradient->closed_form : nullptr;
+  for (std::size_t i = 0; i < n && bodies; ++i) {
+    for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += bodies->coordinates(unsigned(i), unsigned(j));
+    for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += bodies->velocities(unsigned(i), unsigned(j));
   }
   w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
-  if (closed_form && e.bodies_gradient_loops) call_tree_gradient_loops(w, *e.bodies_gradient_loops, nq, W);
+  if (bodies && bodies->loops) call_tree_gradient_loops(w, *bodies->loops, nq, W);
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
 }  // namespace
 
 std::string newton_euler_gradient_function(const Equations& e) {
-  if (!uses_newton_euler_gradient(e)) return "";
+  if (dynamics_form(e) != DynamicsForm::newton_euler) return "";
   std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
   const char* signature = "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)";
   // the closed form costs about a thousand operations per link, the sweep a few hundred per pair
@@ -62,16 +60,17 @@ std::string newton_euler_gradient_function(const Equations& e) {
   // share grows with the depth (a 21-joint tree: 44,773 against 25,942), without the sweep's
   // second of generating
   constexpr std::size_t compared_up_to = 12;
-  bool closed_form = e.has_bodies_gradient() && (n > compared_up_to || e.bodies_gradient_loops);
+  bool loops = e.gradient_loops();
+  bool closed_form = e.bodies_gradient && (n > compared_up_to || loops);
   std::string body = inverse_dynamics_gradient_body(e, closed_form);
-  if (e.has_bodies_gradient() && !closed_form) {
+  if (e.bodies_gradient && !closed_form) {
     std::string closed = inverse_dynamics_gradient_body(e, true);
     auto operations = [&](const std::string& b) { return count_operations(function("", signature, b), "inverse_dynamics_gradient", n); };
     closed_form = operations(closed) < operations(body);
     if (closed_form) body = std::move(closed);
   }
   return tree_gradient_loops_function(e) + "namespace detail {\n\n" +
-         function(fmt::format(fmt::runtime(e.bodies_gradient_loops
+         function(fmt::format(fmt::runtime(loops
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
                                     "/// part by detail::hinge_tree_gradient's loops; a tangent sweep through the rest).\n"
                                     "/// ddq: {0}; F: {0}x{1}, row-major.\n"
@@ -89,7 +88,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
 // a tree's M and f are long code, most of a 21-joint tree's header when mass_matrix, forcing and
 // factored_accelerations each wrote them: written once, here, and those three call it
 std::string mass_matrix_and_forcing_function(const Equations& e) {
-  if (!uses_newton_euler_gradient(e)) return "";
+  if (dynamics_form(e) != DynamicsForm::newton_euler) return "";
   std::size_t n = e.num_velocities(), upper = n * (n + 1) / 2;
   BodyWriter w(e);
   std::vector<ex> entries = upper_triangle(e.mass_matrix, n);
@@ -110,7 +109,7 @@ std::string mass_matrix_and_forcing_function(const Equations& e) {
 // q'' and the factors of M for jacobian_state of a tree, whose own code then is the sweep's call and
 // the solves: rhs's code is not written a second time (it was most of a 21-joint tree's header)
 std::string factored_accelerations_function(const Equations& e) {
-  if (!uses_newton_euler_gradient(e)) return "";
+  if (dynamics_form(e) != DynamicsForm::newton_euler) return "";
   std::size_t n = e.num_velocities();
   BodyWriter w(e);
   w.line(fmt::format("T M[{}];", n * n));

@@ -14,16 +14,14 @@
 
 namespace eomgen {
 
-/// Recursive kinematics (equations.hpp): ∂τ/∂(q, q') of the Newton–Euler inverse dynamics at a
-/// given q'' is written once, for jacobian_state (q'' from the solve) and linearization (q'' = 0),
-/// and M and f once; false for the other models. (∂τ/∂u = −∂f/∂u is short, and only linearization
-/// needs it: jacobian_state's rows are then the gradient's, written in place.)
-bool uses_newton_euler_gradient(const Equations& e);
 /// q'' and the factors of M into local arrays ddq, L, D by detail::factored_accelerations.
 void call_factored_accelerations(BodyWriter& w, std::size_t n);
 
 /// detail::mass_matrix_and_forcing, detail::factored_accelerations and
-/// detail::inverse_dynamics_gradient; each "" for the other models.
+/// detail::inverse_dynamics_gradient, for DynamicsForm::newton_euler: ∂τ/∂(q, q') at a given q''
+/// is written once, for jacobian_state (q'' from the solve) and linearization (q'' = 0), and M and
+/// f once. (∂τ/∂u = −∂f/∂u is short, and only linearization needs it: jacobian_state's rows are
+/// then the gradient's, written in place.) Each "" for the other forms.
 std::string mass_matrix_and_forcing_function(const Equations& e);
 std::string factored_accelerations_function(const Equations& e);
 std::string newton_euler_gradient_function(const Equations& e);

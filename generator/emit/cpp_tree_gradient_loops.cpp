@@ -220,7 +220,7 @@ std::string table(const std::vector<int>& entries) {
 }  // namespace
 
 std::string tree_gradient_loops_function(const Equations& e) {
-  if (!e.bodies_gradient_loops) return "";
+  if (!e.gradient_loops()) return "";
   return "namespace detail {\n\n" + std::string(six_vector_helpers) + gradient_template + "}  // namespace detail\n\n";
 }
 

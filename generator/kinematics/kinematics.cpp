@@ -172,16 +172,13 @@ ConstraintTerms constraint_terms(const Constraint& c, const Symbols& s, const Re
 }
 
 // τ = the bodies' τ + the applied part; a joint tree keeps the two apart, for its bodies' closed-form
-// derivatives (Mechanics::applied_inverse_dynamics)
+// derivatives (Mechanics::bodies_gradient)
 void add_applied(Mechanics& m, std::vector<ex> tau, const std::vector<ex>& applied,
                  const std::optional<InverseDynamicsGradient>& bodies_gradient) {
   for (std::size_t j = 0; j < tau.size(); ++j) tau[j] += applied[j];
   m.inverse_dynamics = tau;
   if (!bodies_gradient) return;
-  m.applied_inverse_dynamics = applied;
-  m.bodies_gradient_coordinates = bodies_gradient->coordinates;
-  m.bodies_gradient_velocities = bodies_gradient->velocities;
-  m.bodies_gradient_loops = bodies_gradient->loops;
+  m.bodies_gradient = BodiesGradient{applied, *bodies_gradient};
 }
 
 // τ = M q'' − f with recursive kinematics (mechanics.hpp): the frames' Newton–Euler recursion, the

@@ -60,12 +60,9 @@ struct Mechanics {
   std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> acceleration_intermediates;
   std::vector<GiNaC::ex> inverse_dynamics;
-  /// A joint tree: inverse_dynamics is the bodies' τ plus applied_inverse_dynamics, and the
-  /// bodies' ∂τ/∂q and ∂τ/∂s are in closed form
-  /// (spatial/joint_tree_derivatives.hpp), in acceleration_intermediates. Empty otherwise.
-  std::vector<GiNaC::ex> applied_inverse_dynamics;
-  GiNaC::matrix bodies_gradient_coordinates{0, 0}, bodies_gradient_velocities{0, 0};
-  std::optional<HingeTreeLinks> bodies_gradient_loops;  // InverseDynamicsGradient::loops
+  /// A joint tree: inverse_dynamics is the bodies' τ plus the applied part, and the bodies'
+  /// ∂τ/∂q and ∂τ/∂s are in closed form, in acceleration_intermediates.
+  std::optional<BodiesGradient> bodies_gradient;
   /// Recursive kinematics: the bodies' M by the composite-body recursion, when it applies.
   std::optional<GiNaC::matrix> composite_mass_matrix;
   /// A tree of frames joined by joints (spatial/joint_tree_dynamics.hpp): the bodies' part of f,

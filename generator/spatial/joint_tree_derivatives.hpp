@@ -95,6 +95,14 @@ struct InverseDynamicsGradient {
   std::optional<HingeTreeLinks> loops;
 };
 
+/// A joint tree's τ in two parts for its derivatives: the bodies', whose ∂τ/∂(q, s) are the
+/// closed form above, and the rest (applied forces, [energy], dissipation), whose derivatives the
+/// header's tangent sweep takes.
+struct BodiesGradient {
+  std::vector<GiNaC::ex> applied_inverse_dynamics;
+  InverseDynamicsGradient closed_form;
+};
+
 /// The derivatives above, of τ at the accelerations `ddq`, for the tree's velocities and
 /// coordinates (links parents first); their quantities are appended to `out` as intermediates.
 /// Straight-line code for them grows with the tree's pairs of joints, loops do not: a tree of

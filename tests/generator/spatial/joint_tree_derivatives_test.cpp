@@ -3,7 +3,7 @@
 // offset anchor below it, a hinge about an oblique axis and a slide on that, a fixed frame, and
 // springs and a damper (the applied part, which the closed form leaves out). At random states,
 // with the quaternion off its unit length, each entry against central differences of the bodies'
-// τ = inverse_dynamics − applied_inverse_dynamics, evaluated from the recursion's own definitions;
+// τ = inverse_dynamics − bodies_gradient->applied_inverse_dynamics, evaluated from the recursion's own definitions;
 // and a free body carried by a hinge and a slide. Which trees take the gradient's loops.
 #include <gtest/gtest.h>
 
@@ -178,12 +178,12 @@ inertia = [["0.008", "0.0004", "-0.0002"], ["0.0004", "0.011", "0.0003"], ["-0.0
 // with the quaternions off unit length.
 void expect_closed_form_agrees(const char* text, std::size_t coordinates, std::size_t velocities) {
   Equations e = derive_text(text);
-  ASSERT_TRUE(e.has_bodies_gradient());
+  ASSERT_TRUE(e.bodies_gradient);
   const Symbols& sym = e.symbols;
   std::size_t nq = sym.num_coordinates(), n = e.num_velocities();
   ASSERT_EQ(nq, coordinates);
   ASSERT_EQ(n, velocities);
-  ASSERT_EQ(e.bodies_gradient_coordinates.cols(), nq);
+  ASSERT_EQ(e.bodies_gradient->closed_form.coordinates.cols(), nq);
   std::mt19937 random(17);
   std::uniform_real_distribution<double> value(-1, 1), scale(0.6, 1.8);
   for (int point = 0; point < 2; ++point) {
@@ -198,7 +198,7 @@ void expect_closed_form_agrees(const char* text, std::size_t coordinates, std::s
     auto bodies_tau = [&](const std::map<std::string, double>& values_at) {
       GiNaC::exmap p = point_by_name(e, values_at);
       std::vector<double> tau(n);
-      for (std::size_t i = 0; i < n; ++i) tau[i] = value_at(e.inverse_dynamics[i], p) - value_at(e.applied_inverse_dynamics[i], p);
+      for (std::size_t i = 0; i < n; ++i) tau[i] = value_at(e.inverse_dynamics[i], p) - value_at(e.bodies_gradient->applied_inverse_dynamics[i], p);
       return tau;
     };
     GiNaC::exmap at = point_by_name(e, values);
@@ -214,9 +214,9 @@ void expect_closed_form_agrees(const char* text, std::size_t coordinates, std::s
       }
     };
     for (unsigned c = 0; c < nq; ++c)
-      check(sym.coordinate_names[c], [&](unsigned i) { return e.bodies_gradient_coordinates(i, c); });
+      check(sym.coordinate_names[c], [&](unsigned i) { return e.bodies_gradient->closed_form.coordinates(i, c); });
     for (unsigned c = 0; c < n; ++c)
-      check(sym.velocities[c].get_name(), [&](unsigned i) { return e.bodies_gradient_velocities(i, c); });
+      check(sym.velocities[c].get_name(), [&](unsigned i) { return e.bodies_gradient->closed_form.velocities(i, c); });
   }
 }
 
@@ -253,16 +253,16 @@ std::string hinge_chain(int hinges, bool ball) {
 // beyond 8 joints a tree of hinges and slides takes the loops (the measured crossover); a ball
 // joint keeps the straight-line closed form, whose formulas have its several columns
 TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
-  EXPECT_FALSE(derive_text(hinge_chain(8, false)).bodies_gradient_loops);
+  EXPECT_FALSE(derive_text(hinge_chain(8, false)).gradient_loops());
   Equations nine = derive_text(hinge_chain(9, false));
-  ASSERT_TRUE(nine.bodies_gradient_loops);
-  EXPECT_EQ(nine.bodies_gradient_loops->parent, (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 6, 7}));
-  EXPECT_TRUE(derive_text(hinge_chain(9, true)).has_bodies_gradient());
-  EXPECT_FALSE(derive_text(hinge_chain(9, true)).bodies_gradient_loops) << "a ball joint at the root";
+  ASSERT_TRUE(nine.gradient_loops());
+  EXPECT_EQ(nine.gradient_loops()->parent, (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_TRUE(derive_text(hinge_chain(9, true)).bodies_gradient);
+  EXPECT_FALSE(derive_text(hinge_chain(9, true)).gradient_loops()) << "a ball joint at the root";
   // tests/crosscheck/robot_jacobian_test.cpp checks this one's loops against the complex step
   Derivation hand = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/gantry_hand.toml");
   ASSERT_TRUE(hand.equations) << hand.diagnostics.format();
-  EXPECT_TRUE(hand.equations->bodies_gradient_loops) << "a slide and a fixed link among 11 joints";
+  EXPECT_TRUE(hand.equations->gradient_loops()) << "a slide and a fixed link among 11 joints";
 }
 
 }  // namespace

@@ -164,8 +164,9 @@ void expect_expanded_equations(const std::string& recursive_text, const std::str
 // differentiated symbolically
 void expect_expanded_derivatives(const std::string& recursive_text, const std::string& expanded_text, unsigned n) {
   Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
-  ASSERT_TRUE(recursive.has_bodies_gradient());
-  ASSERT_EQ(recursive.applied_inverse_dynamics.size(), n);
+  ASSERT_TRUE(recursive.bodies_gradient);
+  const BodiesGradient& bodies = *recursive.bodies_gradient;
+  ASSERT_EQ(bodies.applied_inverse_dynamics.size(), n);
   std::vector<ex> tau(n);
   std::vector<GiNaC::symbol> ddq(n);
   for (unsigned j = 0; j < n; ++j) {
@@ -176,8 +177,8 @@ void expect_expanded_derivatives(const std::string& recursive_text, const std::s
   GiNaC::matrix closed_q(n, n), closed_rate(n, n), expected_q(n, n), expected_rate(n, n);
   for (unsigned j = 0; j < n; ++j)
     for (unsigned c = 0; c < n; ++c) {
-      closed_q(j, c) = recursive.bodies_gradient_coordinates(j, c) + recursive.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]);
-      closed_rate(j, c) = recursive.bodies_gradient_velocities(j, c) + recursive.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]);
+      closed_q(j, c) = bodies.closed_form.coordinates(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]);
+      closed_rate(j, c) = bodies.closed_form.velocities(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]);
       expected_q(j, c) = tau[j].diff(expanded.symbols.coordinates[c]);
       expected_rate(j, c) = tau[j].diff(expanded.symbols.velocities[c]);
     }

@@ -1,0 +1,40 @@
+// The header's form of dynamics, chosen once per model (emit/dynamics_form): each form on a model
+// of models/ that must take it, and the header of each written in that form.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "emit/cpp_header.hpp"
+#include "emit/dynamics_form.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+void expect_form(const std::string& model, DynamicsForm form, const char* mark) {
+  Equations e = derive_model(model);
+  EXPECT_EQ(dynamics_form(e), form) << model;
+  EXPECT_NE(emit_cpp_header(e).find(mark), std::string::npos) << model << " lacks " << mark;
+}
+
+TEST(DynamicsForm, EachModelTakesItsForm) {
+  expect_form("double_pendulum", DynamicsForm::mass_matrix, "detail::ldlt_factor(M, L, D);");
+  expect_form("n_link_pendulum_4_hamilton", DynamicsForm::momentum, "der(q) solves");
+  expect_form("spatial_double_pendulum", DynamicsForm::newton_euler, "detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
+  expect_form("tumbling_body", DynamicsForm::newton_euler, "detail::factored_accelerations(t, x, u, p, ddq, L, D);");
+  expect_form("crane_hook_tree", DynamicsForm::particle_tree, "articulated-body recursion");
+}
+
+// Lagrange I's multipliers come on top of the form: a four-bar of joints keeps the tree's M and
+// f and solves its rhs with the constraints
+TEST(DynamicsForm, ConstraintsComeOnTopOfTheForm) {
+  Equations e = derive_model("four_bar_linkage");
+  ASSERT_TRUE(e.has_multipliers);
+  EXPECT_EQ(dynamics_form(e), DynamicsForm::newton_euler);
+  std::string header = emit_cpp_header(e);
+  EXPECT_NE(header.find("detail::mass_matrix_and_forcing(t, x,"), std::string::npos);
+  EXPECT_NE(header.find("lambda"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace eomgen::test
