@@ -16,10 +16,12 @@ branched_tree (21 oblique hinges in a humanoid's branching; with its jacobian_st
 takes about 9 s to compile) and quadruped (a free torso, four legs of three hinges: 19
 coordinates, 18 velocities). Prints a Markdown table.
 
-Usage: tree_benchmark.py EOMGEN [--quick] [--chart FILE.svg] [ROBOT ...]
+Usage: tree_benchmark.py EOMGEN [--quick] [--chart FILE.svg] [--flags "FLAGS"] [ROBOT ...]
 (exit 77 without a C++ compiler or MuJoCo). --chart also draws the times as bars, each robot's
 rhs beside mj_forward and the articulated-body algorithm by hand, labelled with their ratios to
-it (the README's chart).
+it (the README's chart). --flags compiles the timing program (the generated header and the
+algorithm by hand) with FLAGS instead of -O2, e.g. "-O3 -march=native" as Pinocchio is built;
+MuJoCo stays Debian's build, and the last column stays g++ -O2.
 """
 import json
 import os
@@ -47,7 +49,7 @@ def run(command):
     return r
 
 
-def measure(eomgen, name, work):
+def measure(eomgen, name, work, flags):
     start = time.perf_counter()
     run([eomgen, "generate", model_file(name), "-o", work])
     generate = time.perf_counter() - start
@@ -63,7 +65,7 @@ def measure(eomgen, name, work):
     run(["c++", "-O2", "-std=c++17", "-c", "-I", work, unit, "-o", unit + ".o"])
     build = time.perf_counter() - start
     binary = os.path.join(work, f"tree_{name}")
-    run(["c++", "-O2", "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", f"-DJACOBIAN={0 if name in WITHOUT_JACOBIAN else 1}", "-DTREE_PEERS=1",
+    run(["c++", *flags, "-std=c++17", f"-DMODEL={name}", "-DPLANAR=0", f"-DJACOBIAN={0 if name in WITHOUT_JACOBIAN else 1}", "-DTREE_PEERS=1",
          "-I", work, "-I", HERE, "-I", "/usr/include/eigen3",
          os.path.join(HERE, "rhs_benchmark.cpp"), "-o", binary, "-lmujoco"])
     result = json.loads(run([binary, os.path.join(ROOT, "tests", "crosscheck", "mjcf", f"{name}.xml")]).stdout)
@@ -118,12 +120,21 @@ def main():
             return 2
         chart = arguments[at + 1]
         del arguments[at:at + 2]
+    flags = ["-O2"]
+    if "--flags" in arguments:
+        at = arguments.index("--flags")
+        if at + 1 >= len(arguments) or not arguments[at + 1].strip():
+            print('--flags needs the compiler options in one argument, e.g. --flags "-O3 -march=native"')
+            return 2
+        flags = arguments[at + 1].split()
+        del arguments[at:at + 2]
     named = [a for a in arguments if not a.startswith("--")]
     unknown = [a for a in named if a not in ROBOTS]
     if unknown:
         print(f"unknown robot {unknown[0]}: choose from {', '.join(ROBOTS)}")
         return 2
     robots = ROBOTS[:1] if "--quick" in sys.argv else (named or ROBOTS)
+    print(f"Timing program compiled with c++ {' '.join(flags)}; MuJoCo as Debian builds it.\n")
     print("| robot | eomgen rhs | MuJoCo mj_forward | MuJoCo / eomgen | ABA by hand (Eigen) | ABA / eomgen "
           "| jacobian_state | jacobian_state / rhs | central differences / jacobian_state "
           "| mjd_transitionFD / jacobian_state | header | generate | g++ -O2 of rhs and jacobian_state |")
@@ -131,7 +142,7 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for name in robots:
-            r = measure(sys.argv[1], name, work)
+            r = measure(sys.argv[1], name, work, flags)
             rows.append((name, r))
             ours, theirs, jac, fd = r["eomgen_ns"], r["mujoco_ns"], r["jacobian_ns"], r["finite_difference_ns"]
             aba, transition = r["featherstone_ns"], r["transition_fd_ns"]
