@@ -61,38 +61,13 @@ inline void tree_bias_times(const T* D, const T* x, T* y) {
   y[5] = x[0]*D[7] - x[1]*D[6];
 }
 
-// the link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
-// column (axis a; origin velocity b) in its own coordinates: (R a; o x R a + R b); its inertia
-// about the world origin from its own about its origin (m, h, J):
-// (m, m o + R h, R J R^T + m (|o|^2 1 - o o^T) + 2 (o . R h) 1 - (R h o^T + o (R h)^T))
-template <class T>
-inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* column, const T* own, T* R, T* o,
-                       T* S, T* C) {
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) R[3*i + j] = Rp[3*i]*E[j] + Rp[3*i + 1]*E[3 + j] + Rp[3*i + 2]*E[6 + j];
-    o[i] = op[i] + Rp[3*i]*r[0] + Rp[3*i + 1]*r[1] + Rp[3*i + 2]*r[2];
-  }
-  T b[3], Rh[3], RJ[3][3];
-  const T J[3][3] = {{own[4], own[5], own[6]}, {own[5], own[7], own[8]}, {own[6], own[8], own[9]}};
-  for (int i = 0; i < 3; ++i) {
-    S[i] = R[3*i]*column[0] + R[3*i + 1]*column[1] + R[3*i + 2]*column[2];
-    b[i] = R[3*i]*column[3] + R[3*i + 1]*column[4] + R[3*i + 2]*column[5];
-    Rh[i] = R[3*i]*own[1] + R[3*i + 1]*own[2] + R[3*i + 2]*own[3];
-    for (int j = 0; j < 3; ++j) RJ[i][j] = R[3*i]*J[0][j] + R[3*i + 1]*J[1][j] + R[3*i + 2]*J[2][j];
-  }
-  S[3] = o[1]*S[2] - o[2]*S[1] + b[0];
-  S[4] = o[2]*S[0] - o[0]*S[2] + b[1];
-  S[5] = o[0]*S[1] - o[1]*S[0] + b[2];
-  const T m = own[0], oo = o[0]*o[0] + o[1]*o[1] + o[2]*o[2], oh = o[0]*Rh[0] + o[1]*Rh[1] + o[2]*Rh[2];
-  C[0] = m;
-  for (int i = 0; i < 3; ++i) C[1 + i] = m*o[i] + Rh[i];
-  const int rows[6] = {0, 0, 0, 1, 1, 2}, cols[6] = {0, 1, 2, 1, 2, 2};
-  for (int k = 0; k < 6; ++k) {
-    const int i = rows[k], j = cols[k];
-    const T turned = RJ[i][0]*R[3*j] + RJ[i][1]*R[3*j + 1] + RJ[i][2]*R[3*j + 2];
-    const T shift = -(m*o[i]*o[j] + Rh[i]*o[j] + o[i]*Rh[j]);
-    C[4 + k] = i == j ? turned + shift + m*oo + T(2)*oh : turned + shift;
-  }
+// the sums of a link's composite quantities into its parent's: the part copied first, so that the
+// compiler, which cannot know that a parent is not its child, adds them as vectors
+template <std::size_t n, class T>
+inline void tree_add_into(T (&sum)[n], const T (&part)[n]) {
+  T copy[n];
+  for (std::size_t k = 0; k < n; ++k) copy[k] = part[k];
+  for (std::size_t k = 0; k < n; ++k) sum[k] = sum[k] + copy[k];
 }
 
 template <class T>
@@ -167,9 +142,10 @@ void hinge_tree_gradient(const int (&parent)[L], const int (&velocity)[L], const
   for (std::size_t i = L; i-- > 0;) {
     const int p = parent[i];
     if (p < 0) continue;
-    for (int k = 0; k < 10; ++k) C[p][k] = C[p][k] + C[i][k];
-    for (int k = 0; k < 6; ++k) force[p][k] = force[p][k] + force[i][k], P[p][k] = P[p][k] + P[i][k];
-    for (int k = 0; k < 9; ++k) D[p][k] = D[p][k] + D[i][k];
+    tree_add_into(C[p], C[i]);
+    tree_add_into(force[p], force[i]);
+    tree_add_into(P[p], P[i]);
+    tree_add_into(D[p], D[i]);
   }
   // per joint: C S, B^T S = D S - S x* P, G = S x* F + C Psi'' + D Psi' + Psi' x* P and
   // H = C A + D S + S x* P with A = 2 Psi'
@@ -211,6 +187,53 @@ void hinge_tree_gradient(const int (&parent)[L], const int (&velocity)[L], const
 
 )";
 
+// The link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
+// column (axis a; origin velocity b) in its own coordinates: (R a; o × R a + R b); its inertia about
+// the world origin from its own about its origin (m, h, J):
+// (m, m o + R h, R J Rᵀ + m (|o|² 1 − o oᵀ) + 2 (o·R h) 1 − (R h oᵀ + o (R h)ᵀ)). Written out entry
+// by entry, with the results in locals until the end: as loops over pointers that may alias, g++
+// -O2 neither unrolls nor keeps them in registers (a third more instructions on the 21-joint tree).
+std::string tree_place_function() {
+  std::string f = "// the link's pose, its joint's twist and its inertia about the world origin (R J R^T shifted to the\n"
+                  "// origin), from its parent's pose and its own constants\n"
+                  "template <class T>\n"
+                  "inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* column, const T* own, "
+                  "T* R, T* o,\n                       T* S, T* C) {\n";
+  auto line = [&](const std::string& text) { f += "  " + text + "\n"; };
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      line(fmt::format("const T R{0}{1} = Rp[{2}]*E[{1}] + Rp[{3}]*E[{4}] + Rp[{5}]*E[{6}];", i, j, 3 * i, 3 * i + 1,
+                       3 + j, 3 * i + 2, 6 + j));
+  for (int i = 0; i < 3; ++i)
+    line(fmt::format("const T o{0} = op[{0}] + Rp[{1}]*r[0] + Rp[{2}]*r[1] + Rp[{3}]*r[2];", i, 3 * i, 3 * i + 1, 3 * i + 2));
+  line("const T m = own[0], J00 = own[4], J01 = own[5], J02 = own[6], J11 = own[7], J12 = own[8], J22 = own[9];");
+  const char* J[3][3] = {{"J00", "J01", "J02"}, {"J01", "J11", "J12"}, {"J02", "J12", "J22"}};
+  for (int i = 0; i < 3; ++i) {
+    line(fmt::format("const T s{0} = R{0}0*column[0] + R{0}1*column[1] + R{0}2*column[2];", i));
+    line(fmt::format("const T b{0} = R{0}0*column[3] + R{0}1*column[4] + R{0}2*column[5];", i));
+    line(fmt::format("const T h{0} = R{0}0*own[1] + R{0}1*own[2] + R{0}2*own[3];", i));
+    for (int j = 0; j < 3; ++j)
+      line(fmt::format("const T RJ{0}{1} = R{0}0*{2} + R{0}1*{3} + R{0}2*{4};", i, j, J[0][j], J[1][j], J[2][j]));
+  }
+  line("S[0] = s0; S[1] = s1; S[2] = s2;");
+  line("S[3] = o1*s2 - o2*s1 + b0;");
+  line("S[4] = o2*s0 - o0*s2 + b1;");
+  line("S[5] = o0*s1 - o1*s0 + b2;");
+  line("const T oo = o0*o0 + o1*o1 + o2*o2, oh2 = T(2)*(o0*h0 + o1*h1 + o2*h2);");
+  line("const T c0 = m*o0 + h0, c1 = m*o1 + h1, c2 = m*o2 + h2;");
+  line("C[0] = m; C[1] = c0; C[2] = c1; C[3] = c2;");
+  const int rows[6] = {0, 0, 0, 1, 1, 2}, cols[6] = {0, 1, 2, 1, 2, 2};
+  for (int k = 0; k < 6; ++k) {
+    int i = rows[k], j = cols[k];
+    // m o_i o_j + (R h)_i o_j + o_i (R h)_j = c_i o_j + o_i (R h)_j
+    line(fmt::format("C[{0}] = RJ{1}0*R{2}0 + RJ{1}1*R{2}1 + RJ{1}2*R{2}2 - (c{1}*o{2} + o{1}*h{2}){3};", 4 + k, i, j,
+                     i == j ? " + m*oo + oh2" : ""));
+  }
+  for (int i = 0; i < 3; ++i) line(fmt::format("R[{0}] = R{1}0; R[{2}] = R{1}1; R[{3}] = R{1}2;", 3 * i, i, 3 * i + 1, 3 * i + 2));
+  line("o[0] = o0; o[1] = o1; o[2] = o2;");
+  return f + "}\n\n";
+}
+
 std::string table(const std::vector<int>& entries) {
   std::string text;
   for (std::size_t i = 0; i < entries.size(); ++i) text += (i ? ", " : "") + std::to_string(entries[i]);
@@ -221,7 +244,8 @@ std::string table(const std::vector<int>& entries) {
 
 std::string tree_gradient_loops_function(const Equations& e) {
   if (!e.gradient_loops()) return "";
-  return "namespace detail {\n\n" + std::string(six_vector_helpers) + gradient_template + "}  // namespace detail\n\n";
+  return "namespace detail {\n\n" + std::string(six_vector_helpers) + tree_place_function() + gradient_template +
+         "}  // namespace detail\n\n";
 }
 
 void call_tree_gradient_loops(BodyWriter& w, const HingeTreeLinks& links, std::size_t coordinates, std::size_t width) {
