@@ -9,10 +9,10 @@
 
 namespace eomgen {
 
-bool refuses_massless_bodies(const std::string& message, const std::string& text) {
+bool refuses_massless_bodies(const std::string& message, const std::vector<std::string>& texts) {
   if (message.find("mass and inertia of moving bodies must be larger than mjMINVAL") == std::string::npos) return false;
   static const std::regex negative("(?:mass|value|density)\\s*=\\s*[\"']\\s*-");
-  return !std::regex_search(text, negative);
+  return std::none_of(texts.begin(), texts.end(), [](const std::string& text) { return std::regex_search(text, negative); });
 }
 
 int line_naming(const std::string& text, const std::string& name) {

@@ -18,9 +18,10 @@ namespace eomgen {
 /// Just above MuJoCo's mjMINVAL (1e-15), so that the raised bodies pass its check.
 inline constexpr double massless_bound = 2e-15;
 
-/// Whether MuJoCo's message is its refusal of a moving body without mass or inertia, and the file's
-/// `text` gives no mass or density below zero (which the bounds would hide: that refusal stands).
-bool refuses_massless_bodies(const std::string& message, const std::string& text);
+/// Whether MuJoCo's message is its refusal of a moving body without mass or inertia, and the robot's
+/// `texts` (an MJCF file's own and those it includes) give no mass or density below zero (which the
+/// bounds would hide: that refusal stands).
+bool refuses_massless_bodies(const std::string& message, const std::vector<std::string>& texts);
 
 /// The file's text with its compiler's boundmass and boundinertia set to massless_bound: in its
 /// <compiler>, or a <compiler> added first in its <mujoco> (a URDF: a <mujoco> added first in <robot>).

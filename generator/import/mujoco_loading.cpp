@@ -105,9 +105,15 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     for (const UnreadableMesh& mesh : meshes) placeholders.push_back(*placeholder_mesh(mesh, mesh_size));
     return loaded_texts(path, sources, error, size, placeholders);
   };
+  // the file's text and those it includes: a negative mass in any of them, which the bounds would hide
+  auto source_texts = [&] {
+    if (sources.empty()) sources = mjcf_sources(path);
+    std::vector<std::string> texts;
+    for (const auto& source : sources) texts.push_back(source.second);
+    return texts;
+  };
   for (int round = 0; !model && round < 400; ++round) {
-    if (!left_out.mass_bounds && refuses_massless_bodies(error, sources.empty() ? text_of_file(path) : sources[0].second)) {
-      if (sources.empty()) sources = mjcf_sources(path);
+    if (!left_out.mass_bounds && refuses_massless_bodies(error, source_texts())) {
       std::string bounded = with_mass_bounds(sources[0].second);
       if (bounded == sources[0].second) break;
       sources[0].second = bounded;
@@ -178,7 +184,7 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   // the text, or when MuJoCo refuses its massless moving bodies, the text with the mass bounds
   auto load = [&](const std::string& text) {
     mjModel* loaded = loaded_text(path, text, error, size);
-    if (loaded || !refuses_massless_bodies(error, text) || with_mass_bounds(text) == text) return loaded;
+    if (loaded || !refuses_massless_bodies(error, {text}) || with_mass_bounds(text) == text) return loaded;
     left_out.mass_bounds = true;
     return loaded_text(path, with_mass_bounds(text), error, size);
   };
@@ -221,6 +227,11 @@ UnreadableRobot unreadable_robot(const std::string& text) {
   if (std::size_t at = text.find("Element '"); at != std::string::npos)
     first += " (element <" + text.substr(at + 9, text.find('\'', at + 9) - at - 9) + ">)";
   while (!first.empty() && std::isspace(static_cast<unsigned char>(first.back()))) first.pop_back();
+  // no line (an element of an included file): the object's name is what finds it
+  if (std::size_t at = text.find("Object name = "); u.line <= 0 && at != std::string::npos) {
+    std::string name = text.substr(at + 14, text.find_first_of(",\n", at + 14) - at - 14);
+    if (!name.empty()) first += " ('" + name + "')";
+  }
   u.message = first;
   return u;
 }

@@ -234,6 +234,10 @@ TEST(ModelWriter, MujocosMessagesBecomeALineAndAMessage) {
   EXPECT_EQ(b.message, "axis too small in joint 'q' (id = 0)");
   UnreadableRobot c = unreadable_robot("XML Error: Unrecognized XML model type: 'html'");
   EXPECT_EQ(c.line, 0);
+  UnreadableRobot d = unreadable_robot("Error: mass and inertia of moving bodies must be larger than mjMINVAL\n"
+                                       "Object name = link, id = 1, line = 0, column = -1");
+  EXPECT_EQ(d.line, 0);
+  EXPECT_EQ(d.message, "mass and inertia of moving bodies must be larger than mjMINVAL ('link')") << "no line: the name finds it";
 }
 
 }  // namespace
