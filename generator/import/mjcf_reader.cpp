@@ -319,7 +319,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   auto loaded = loaded_model(path, urdf, error, sizeof error, left_out);
   if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;
   std::unique_ptr<mjModel, void (*)(mjModel*)> model(std::get<mjModel*>(loaded), mj_deleteModel);
-  if (!model) return unreadable_robot(error);
+  if (!model) return urdf.empty() ? unreadable_mjcf(error, path) : unreadable_robot(error);
   const mjModel* m = model.get();
   Robot r;
   r.reader = fmt::format("MuJoCo {}'s compiler", mj_version_text());

@@ -276,7 +276,7 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
                                                std::string name) {
   auto read = read_with_mujoco(path);
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
-    diagnostics.error({path, std::max(failure->line, 1), 1}, "", failure->message,
+    diagnostics.error({failure->file.empty() ? path : failure->file, std::max(failure->line, 1), 1}, "", failure->message,
                       !failure->hint.empty() ? failure->hint
                                              : "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be " +
                                                    (is_urdf_path(path) ? "URDF" : "MJCF") + " that it accepts");

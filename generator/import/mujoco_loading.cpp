@@ -227,12 +227,24 @@ UnreadableRobot unreadable_robot(const std::string& text) {
   if (std::size_t at = text.find("Element '"); at != std::string::npos)
     first += " (element <" + text.substr(at + 9, text.find('\'', at + 9) - at - 9) + ">)";
   while (!first.empty() && std::isspace(static_cast<unsigned char>(first.back()))) first.pop_back();
-  // no line (an element of an included file): the object's name is what finds it
-  if (std::size_t at = text.find("Object name = "); u.line <= 0 && at != std::string::npos) {
-    std::string name = text.substr(at + 14, text.find_first_of(",\n", at + 14) - at - 14);
-    if (!name.empty()) first += " ('" + name + "')";
-  }
+  if (std::size_t at = text.find("Object name = "); at != std::string::npos)
+    u.object = text.substr(at + 14, text.find_first_of(",\n", at + 14) - at - 14);
+  // no line (as for an element of an included file): the object's name is what finds it
+  if (u.line <= 0 && !u.object.empty()) first += " ('" + u.object + "')";
   u.message = first;
+  return u;
+}
+
+UnreadableRobot unreadable_mjcf(const std::string& mujoco_error, const std::string& path) {
+  UnreadableRobot u = unreadable_robot(mujoco_error);
+  if (u.line > 0 || u.object.empty()) return u;
+  std::vector<std::pair<std::string, std::string>> sources = mjcf_sources(path);
+  for (std::size_t k = 0; k < sources.size(); ++k)
+    if (int line = line_naming(sources[k].second, u.object); line > 0) {
+      u.line = line;
+      if (k > 0) u.file = sources[k].first;
+      break;
+    }
   return u;
 }
 

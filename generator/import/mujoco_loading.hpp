@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -17,13 +18,22 @@ namespace eomgen {
 
 /// Why MuJoCo cannot read the file: its message, and the line it names (0: none).
 struct UnreadableRobot {
+  UnreadableRobot() = default;
+  UnreadableRobot(int line_, std::string message_, std::string hint_)
+      : line(line_), message(std::move(message_)), hint(std::move(hint_)) {}
   int line = 0;
   std::string message;
-  std::string hint;  // what to do; empty: that the file must be one MuJoCo's compiler accepts
+  std::string hint;    // what to do; empty: that the file must be one MuJoCo's compiler accepts
+  std::string file;    // the file of the line when it is one the file includes; empty: the file itself
+  std::string object;  // the name of the object MuJoCo's message is about, if it names one
 };
 
 /// MuJoCo's error text as a message and a line ("line = 9", "Line number=5").
 UnreadableRobot unreadable_robot(const std::string& mujoco_error);
+
+/// As unreadable_robot, for the MJCF file at `path`: where MuJoCo gives no line (an element of an
+/// included file), the first line in the file or those it includes that names its object.
+UnreadableRobot unreadable_mjcf(const std::string& mujoco_error, const std::string& path);
 
 /// What was left out of or changed in the file so that MuJoCo 2.2.2 could read it.
 struct LeftOut {

@@ -4,6 +4,7 @@
 // diagnostic and write nothing, and exit 0 on the second.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 
@@ -73,7 +74,8 @@ INSTANTIATE_TEST_SUITE_P(EveryFile, ErrorFile, ::testing::ValuesIn(error_files()
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // tests/errors/robots/NAME.xml or NAME.urdf: a robot file with one mistake and its expected diagnostic in its
-// second line (`<!-- expect: LINE:COLUMN: message -->`): `eomgen import` exits 2 with it and writes nothing
+// second line (`<!-- expect: LINE:COLUMN: message -->`, or `FILE:LINE:COLUMN: message` for a mistake in a
+// file it includes, FILE as the include names it): `eomgen import` exits 2 with it and writes nothing
 std::vector<std::string> robot_error_files() {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(errors_dir + "/robots"))
@@ -89,8 +91,13 @@ TEST_P(RobotErrorFile, IsReportedWithItsLineAndNothingIsWritten) {
   std::string expected = line_starting(errors_dir + "/robots/" + name, "<!-- expect: ");
   ASSERT_FALSE(expected.empty()) << name << " has no '<!-- expect:' line";
   expected = expected.substr(0, expected.rfind(" -->"));
+  std::string file = name;
+  if (!std::isdigit(static_cast<unsigned char>(expected[0]))) {
+    file = expected.substr(0, expected.find(':'));
+    expected = expected.substr(file.size() + 1);
+  }
   std::size_t colon = expected.find(':', expected.find(':') + 1);
-  std::string diagnostic = name + ":" + expected.substr(0, colon) + ": error:" + expected.substr(colon + 1);
+  std::string diagnostic = file + ":" + expected.substr(0, colon) + ": error:" + expected.substr(colon + 1);
   int status = run_command("cd " + errors_dir + "/robots && '" + std::string(EOMGEN_EXECUTABLE) + "' import " + name + " -o '" +
                            out + "' 2> '" + scratch + "/stderr.txt' > /dev/null");
   std::string errors = read_file(scratch + "/stderr.txt");
