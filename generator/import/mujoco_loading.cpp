@@ -30,6 +30,9 @@ std::string text_of_file(const std::string& path) {
 
 namespace {
 
+// files by name and text: a robot file and those it includes
+using Sources = std::vector<std::pair<std::string, std::string>>;
+
 // the texts read by MuJoCo from memory, the first under the file's own path: it finds the files it
 // names beside it on disk, and those it includes among the texts (by their names without a path)
 // (texts end in a 0 for the XML parser; `files`, such as meshes, are their bytes alone)
@@ -63,7 +66,7 @@ mjModel* loaded_text(const std::string& path, const std::string& text, char* err
 
 // the MJCF file and, after it, every file it includes, however deep (MuJoCo takes each name
 // relative to the first file's folder)
-std::vector<std::pair<std::string, std::string>> mjcf_sources(const std::string& path) {
+Sources mjcf_sources(const std::string& path) {
   std::string folder = path.substr(0, path.find_last_of('/') + 1);
   std::vector<std::pair<std::string, std::string>> sources{{path, text_of_file(path)}};
   for (std::size_t k = 0; k < sources.size() && sources.size() < 64; ++k)
@@ -71,6 +74,19 @@ std::vector<std::pair<std::string, std::string>> mjcf_sources(const std::string&
       if (std::none_of(sources.begin(), sources.end(), [&](const auto& s) { return s.first == folder + name; }))
         sources.emplace_back(folder + name, text_of_file(folder + name));
   return sources;
+}
+
+// where no line is known, the first line that names the object, in the file (sources[0]) or in one
+// it includes: an included file's elements have no line in MuJoCo's messages
+UnreadableRobot located(UnreadableRobot u, const Sources& sources) {
+  if (u.line > 0 || u.object.empty()) return u;
+  for (std::size_t k = 0; k < sources.size(); ++k)
+    if (int line = line_naming(sources[k].second, u.object); line > 0) {
+      u.line = line;
+      if (k > 0) u.file = sources[k].first;
+      break;
+    }
+  return u;
 }
 
 // whether MuJoCo's message is about a mesh file it could not find or read
@@ -82,14 +98,16 @@ bool about_a_mesh(const std::string& message) {
 
 
 // the model read with the mass bounds, or why not when a joint moves no mass (its M would be singular)
-std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, const LeftOut& left_out, const std::string& text) {
+std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, const LeftOut& left_out, const Sources& sources) {
   if (!left_out.mass_bounds) return model;
   std::string joint = joint_moving_no_mass(model);
   if (joint.empty()) return model;
   mj_deleteModel(model);
-  return UnreadableRobot{line_naming(text, joint), fmt::format("joint '{}' moves no body with mass or inertia, so that the robot's mass matrix is singular "
-                                        "(MuJoCo refuses such moving bodies)", joint),
-                         "give the bodies it moves an <inertial> with a mass and inertia"};
+  UnreadableRobot u(0, fmt::format("joint '{}' moves no body with mass or inertia, so that the robot's mass matrix is singular "
+                                   "(MuJoCo refuses such moving bodies)", joint),
+                    "give the bodies it moves an <inertial> with a mass and inertia");
+  u.object = joint;
+  return located(u, sources);
 }
 
 // an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses,
@@ -142,7 +160,7 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     model = load(0.01);
   }
   if (!model) return model;
-  if (meshes.empty()) return without_massless_joints(model, left_out, sources.empty() ? std::string() : sources[0].second);
+  if (meshes.empty()) return without_massless_joints(model, left_out, sources);
   std::unique_ptr<mjModel, void (*)(mjModel*)> larger(load(0.02), mj_deleteModel);
   if (!larger) {
     mj_deleteModel(model);
@@ -158,17 +176,16 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
   if (meshes.size() > 3) files += fmt::format(" and {} more", meshes.size() - 3);
   if (!dependence.body.empty()) {
     mj_deleteModel(model);
-    const std::string& text = sources[0].second;
-    std::size_t at = text.find("name=\"" + dependence.body + "\"");
-    return UnreadableRobot{at == std::string::npos ? 0 : int(std::count(text.begin(), text.begin() + long(at), '\n')) + 1,
-                           fmt::format("body '{}' takes its mass and inertia from its geoms, a mesh among them, and MuJoCo "
-                                       "cannot read the mesh file(s) {}", dependence.body, files),
-                           "put the mesh files where the file names them, or give the body an <inertial>"};
+    UnreadableRobot u(0, fmt::format("body '{}' takes its mass and inertia from its geoms, a mesh among them, and MuJoCo "
+                                     "cannot read the mesh file(s) {}", dependence.body, files),
+                      "put the mesh files where the file names them, or give the body an <inertial>");
+    u.object = dependence.body;
+    return located(u, sources);
   }
   left_out.unread_mesh_files = int(meshes.size());
   left_out.unread_mesh_names = files;
   left_out.mesh_sized_geoms = dependence.geoms;
-  return without_massless_joints(model, left_out, sources.empty() ? std::string() : sources[0].second);
+  return without_massless_joints(model, left_out, sources);
 }
 
 }  // namespace
@@ -189,7 +206,7 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
     return loaded_text(path, with_mass_bounds(text), error, size);
   };
   mjModel* model = load(kept);
-  if (model) return without_massless_joints(model, left_out, urdf);
+  if (model) return without_massless_joints(model, left_out, {{path, urdf}});
   if (!about_a_mesh(error)) return model;
   int left_out_meshes = 0;
   std::string first_error = error;
@@ -207,7 +224,7 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   }
   left_out.meshes = left_out_meshes;
   left_out.mesh_error = first_error;
-  return without_massless_joints(model, left_out, urdf);
+  return without_massless_joints(model, left_out, {{path, urdf}});
 }
 
 UnreadableRobot unreadable_robot(const std::string& text) {
@@ -237,15 +254,7 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 
 UnreadableRobot unreadable_mjcf(const std::string& mujoco_error, const std::string& path) {
   UnreadableRobot u = unreadable_robot(mujoco_error);
-  if (u.line > 0 || u.object.empty()) return u;
-  std::vector<std::pair<std::string, std::string>> sources = mjcf_sources(path);
-  for (std::size_t k = 0; k < sources.size(); ++k)
-    if (int line = line_naming(sources[k].second, u.object); line > 0) {
-      u.line = line;
-      if (k > 0) u.file = sources[k].first;
-      break;
-    }
-  return u;
+  return u.line > 0 || u.object.empty() ? u : located(u, mjcf_sources(path));
 }
 
 }  // namespace eomgen
