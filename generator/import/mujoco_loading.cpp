@@ -36,8 +36,7 @@ using Sources = std::vector<std::pair<std::string, std::string>>;
 // the texts read by MuJoCo from memory, the first under the file's own path: it finds the files it
 // names beside it on disk, and those it includes among the texts (by their names without a path)
 // (texts end in a 0 for the XML parser; `files`, such as meshes, are their bytes alone)
-mjModel* loaded_texts(const std::string& path, const std::vector<std::pair<std::string, std::string>>& texts, char* error,
-                      int size, const std::vector<std::pair<std::string, std::string>>& files_too = {}) {
+mjModel* loaded_texts(const std::string& path, const Sources& texts, char* error, int size, const Sources& files_too = {}) {
   auto files = std::make_unique<mjVFS>();
   mj_defaultVFS(files.get());
   for (const auto& [name, text] : texts) {
@@ -68,7 +67,7 @@ mjModel* loaded_text(const std::string& path, const std::string& text, char* err
 // relative to the first file's folder)
 Sources mjcf_sources(const std::string& path) {
   std::string folder = path.substr(0, path.find_last_of('/') + 1);
-  std::vector<std::pair<std::string, std::string>> sources{{path, text_of_file(path)}};
+  Sources sources{{path, text_of_file(path)}};
   for (std::size_t k = 0; k < sources.size() && sources.size() < 64; ++k)
     for (const std::string& name : included_files(std::string(sources[k].second)))
       if (std::none_of(sources.begin(), sources.end(), [&](const auto& s) { return s.first == folder + name; }))
@@ -115,7 +114,7 @@ std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, 
 // kept only when no body takes its inertia from a mesh (missing_meshes.hpp)
 std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
   mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
-  std::vector<std::pair<std::string, std::string>> sources;
+  Sources sources;
   std::vector<UnreadableMesh> meshes;
   auto load = [&](double mesh_size) {
     if (sources.empty()) sources = mjcf_sources(path);
