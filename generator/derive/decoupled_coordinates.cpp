@@ -10,8 +10,6 @@ using GiNaC::ex;
 
 namespace {
 
-bool uses(const ex& e, const Symbols& s, std::size_t j) { return e.has(s.coordinates[j]) || e.has(s.velocities[j]); }
-
 // the coordinates the names read, or nothing when a name is unknown
 std::vector<bool> named_coordinates(const Equations& e, const std::vector<std::string>& needed) {
   const Symbols& s = e.symbols;
@@ -23,7 +21,7 @@ std::vector<bool> named_coordinates(const Equations& e, const std::vector<std::s
     for (const NamedSymbolic& o : e.outputs)
       if (o.name == name) {
         found = true;
-        for (std::size_t j = 0; j < s.num_coordinates(); ++j) in[j] = in[j] || uses(o.expression, s, j);
+        for (std::size_t j = 0; j < s.num_coordinates(); ++j) in[j] = in[j] || s.involves(o.expression, j);
       }
     if (!found) return {};
   }
@@ -35,9 +33,9 @@ bool feeds_back(const Equations& e, const std::vector<bool>& in, std::size_t j) 
   const Symbols& s = e.symbols;
   for (unsigned i = 0; i < in.size(); ++i) {
     if (!in[i]) continue;
-    if (uses(e.forcing[i], s, j) || !e.mass_matrix(i, unsigned(j)).normal().is_zero()) return true;
+    if (s.involves(e.forcing[i], j) || !e.mass_matrix(i, unsigned(j)).normal().is_zero()) return true;
     for (unsigned k = 0; k < in.size(); ++k)
-      if (in[k] && uses(e.mass_matrix(i, k), s, j)) return true;
+      if (in[k] && s.involves(e.mass_matrix(i, k), j)) return true;
   }
   return false;
 }

@@ -10,14 +10,12 @@ using GiNaC::ex;
 
 namespace {
 
-bool uses(const ex& e, const Symbols& s, std::size_t j) { return e.has(s.coordinates[j]) || e.has(s.velocities[j]); }
-
 bool kept(const Equations& e, const std::vector<std::string>& keep, std::size_t j) {
   const Symbols& s = e.symbols;
   for (const std::string& name : keep) {
     if (name == s.coordinate_names[j] || name == s.velocities[j].get_name()) return true;
     for (const NamedSymbolic& o : e.outputs)
-      if (o.name == name && uses(o.expression, s, j)) return true;
+      if (o.name == name && s.involves(o.expression, j)) return true;
   }
   return false;
 }
@@ -29,9 +27,9 @@ bool vanishes(const Equations& e, std::size_t j) {
   if (!e.forcing[j].normal().is_zero()) return false;
   for (unsigned i = 0; i < n; ++i) {
     if (!e.mass_matrix(unsigned(j), i).normal().is_zero() || !e.mass_matrix(i, unsigned(j)).normal().is_zero()) return false;
-    if (i != j && (uses(e.forcing[i], s, j))) return false;
+    if (i != j && s.involves(e.forcing[i], j)) return false;
     for (unsigned k = 0; k < n; ++k)
-      if (uses(e.mass_matrix(i, k), s, j)) return false;
+      if (s.involves(e.mass_matrix(i, k), j)) return false;
   }
   return true;
 }
@@ -42,7 +40,7 @@ bool vanishes(const Equations& e, std::size_t j) {
 void remove_coordinate(Equations& e, std::size_t j) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates();
-  auto gone = [&](const ex& x) { return uses(x, s, j); };
+  auto gone = [&](const ex& x) { return s.involves(x, j); };
   e.outputs.erase(std::remove_if(e.outputs.begin(), e.outputs.end(), [&](const NamedSymbolic& o) { return gone(o.expression); }),
                   e.outputs.end());
   e.body_positions.erase(std::remove_if(e.body_positions.begin(), e.body_positions.end(),
@@ -79,7 +77,7 @@ std::vector<std::string> remove_vanishing_coordinates(Equations& e, const std::v
   for (bool changed = true; changed && e.symbols.num_coordinates() > 1;) {
     changed = false;
     for (std::size_t j = 0; j < e.symbols.num_coordinates(); ++j)
-      if (vanishes(e, j) && !kept(e, keep, j) && !uses(e.kinetic_energy + e.potential_energy + e.dissipation, e.symbols, j)) {
+      if (vanishes(e, j) && !kept(e, keep, j) && !e.symbols.involves(e.kinetic_energy + e.potential_energy + e.dissipation, j)) {
         removed.push_back(e.symbols.coordinate_names[j]);
         remove_coordinate(e, j);
         changed = true;

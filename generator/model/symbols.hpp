@@ -42,6 +42,8 @@ struct Symbols {
   std::map<std::string, SymbolInfo> by_name;
 
   std::size_t num_coordinates() const { return coordinates.size(); }
+  /// Whether `e` contains coordinate j or its rate.
+  bool involves(const GiNaC::ex& e, std::size_t j) const { return e.has(coordinates[j]) || e.has(velocities[j]); }
   /// Every name that may appear in an expression, for hints.
   std::vector<std::string> all_names() const;
   /// parameter symbol -> default value

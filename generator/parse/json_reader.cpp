@@ -14,9 +14,9 @@ const JsonValue* JsonValue::find(const std::string& key) const {
 
 namespace {
 
-class Reader {
+class JsonParser {
  public:
-  Reader(const std::string& text, const std::string& path) : s_(text), path_(path) {}
+  JsonParser(const std::string& text, const std::string& path) : s_(text), path_(path) {}
 
   // value: object | array | string | number | true | false | null
   JsonValue value(int depth) {
@@ -175,12 +175,12 @@ class Reader {
 }  // namespace
 
 std::optional<JsonValue> parse_json(const std::string& text, const std::string& path, Diagnostics& diagnostics) {
-  Reader reader(text, path);
+  JsonParser reader(text, path);
   try {
     JsonValue v = reader.value(0);
     reader.finish();
     return v;
-  } catch (const Reader::Failure& f) {
+  } catch (const JsonParser::Failure& f) {
     diagnostics.error(f.where, "", "not valid JSON: " + f.message, "a derived-equations file is written by `eomgen derive MODEL --format json`");
     return std::nullopt;
   }

@@ -7,6 +7,7 @@
 
 #include "kinematics/vector3.hpp"
 #include "model/recursive_frames.hpp"
+#include "spatial/spatial_algebra.hpp"
 
 namespace eomgen {
 
@@ -22,51 +23,6 @@ namespace {
 // joints' 558 KB against 1089 KB).
 constexpr std::size_t loops_beyond_joints = 8;
 
-using eomgen::operator+;
-using eomgen::operator-;
-
-// a motion (ω; v_O) or a force (n_O; f) in world Plücker coordinates, about the world origin O
-struct Six {
-  Vector3 top{0, 0, 0}, bottom{0, 0, 0};
-  const ex& operator[](unsigned k) const { return k < 3 ? top[k] : bottom[k - 3]; }
-};
-
-Six operator+(const Six& a, const Six& b) { return {a.top + b.top, a.bottom + b.bottom}; }
-Six scaled(const ex& s, const Six& a) { return {eomgen::scaled(s, a.top), eomgen::scaled(s, a.bottom)}; }
-
-Six motion_cross(const Six& m, const Six& x) {
-  return {cross(m.top, x.top), cross(m.top, x.bottom) + cross(m.bottom, x.top)};
-}
-
-Six force_cross(const Six& m, const Six& f) {
-  return {cross(m.top, f.top) + cross(m.bottom, f.bottom), cross(m.top, f.bottom)};
-}
-
-// the components' dot product: a motion's power against a force
-ex power(const Six& m, const Six& f) { return dot(m.top, f.top) + dot(m.bottom, f.bottom); }
-
-// mass, first moment h = m c and inertia J about O
-struct SpatialInertia {
-  ex mass = 0;
-  Vector3 first{0, 0, 0};
-  GiNaC::matrix J{3, 3};
-};
-
-// the momentum of the twist x: (J ω + h × v; m v − h × ω)
-Six apply(const SpatialInertia& I, const Six& x) {
-  return {times(I.J, x.top) + cross(I.first, x.bottom), eomgen::scaled(I.mass, x.bottom) - cross(I.first, x.top)};
-}
-
-Six times(const GiNaC::matrix& B, const Six& x, bool transposed = false) {
-  Six y;
-  for (unsigned r = 0; r < 6; ++r) {
-    ex sum = 0;
-    for (unsigned c = 0; c < 6; ++c) sum += (transposed ? B(c, r) : B(r, c)) * x[c];
-    (r < 3 ? y.top[r] : y.bottom[r - 3]) = sum;
-  }
-  return y;
-}
-
 class Gradient {
  public:
   Gradient(const std::vector<TreeLink>& links, std::vector<Intermediate>& out) : links_(links), out_(out) {
@@ -81,27 +37,27 @@ class Gradient {
 
   // world poses, twists, accelerations and the links' own inertias, forces and D, parents first
   void forward(const Vector3& gravity, const std::vector<ex>& ddq) {
-    Six rest, fall{{0, 0, 0}, eomgen::scaled(-1, gravity)};
+    SpatialVector rest, fall{{0, 0, 0}, scaled(-1, gravity)};
     for (std::size_t i = 0; i < links_.size(); ++i) {
       const TreeLink& l = links_[i];
       bool root = l.parent < 0;
       std::size_t p = root ? 0 : std::size_t(l.parent);
-      const Six& vp = root ? rest : v_[p];
-      const Six& ap = root ? fall : a_[p];
+      const SpatialVector& vp = root ? rest : v_[p];
+      const SpatialVector& ap = root ? fall : a_[p];
       GiNaC::matrix R = root ? l.turn : R_[p].mul(l.turn);
       for (unsigned a = 0; a < 3; ++a)
         for (unsigned b = 0; b < 3; ++b)
           R_[i](a, b) = name(i, fmt::format("gR{}{}", a, b), R(a, b));
-      origin_[i] = named(i, "go", root ? l.offset : origin_[p] + eomgen::times(R_[p], l.offset));
+      origin_[i] = named(i, "go", root ? l.offset : origin_[p] + times(R_[p], l.offset));
       // v = v_λ + V_p + V_b and a = a_λ + Σ S s' + v × V_b + v_λ × V_p: the columns that turn with
       // the link change as v × S, those that keep the parent's axes as v_λ × S
-      Six kept, turning, driven, kept_driven;
+      SpatialVector kept, turning, driven, kept_driven;
       for (std::size_t c = 0; c < l.columns.size(); ++c) {
         const TreeLink::Column& col = l.columns[c];
-        Vector3 s = eomgen::times(R_[i], col.axis);
+        Vector3 s = times(R_[i], col.axis);
         std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
-        S_[i].push_back(named(i, "gS" + tag, Six{s, cross(origin_[i], s) + eomgen::times(R_[i], col.origin_velocity)}));
-        Six rate = scaled(col.rate, S_[i][c]), push = scaled(ddq[std::size_t(col.velocity)], S_[i][c]);
+        S_[i].push_back(named(i, "gS" + tag, SpatialVector{s, cross(origin_[i], s) + times(R_[i], col.origin_velocity)}));
+        SpatialVector rate = scaled(col.rate, S_[i][c]), push = scaled(ddq[std::size_t(col.velocity)], S_[i][c]);
         if (col.turns_with_link) turning = turning + rate;
         else kept = kept + rate, kept_driven = kept_driven + push;
         driven = driven + push;
@@ -153,9 +109,9 @@ class Gradient {
     for (std::size_t j = 0; j < n; ++j) {
       const TreeLink& l = links_[j];
       bool root = l.parent < 0;
-      Six rest, vp = root ? rest : v_[std::size_t(l.parent)];
+      SpatialVector rest, vp = root ? rest : v_[std::size_t(l.parent)];
       for (std::size_t d = 0; d < l.directions.size(); ++d) {
-        Six T;
+        SpatialVector T;
         for (const auto& [c, weight] : l.directions[d].weights) T = T + scaled(weight, S_[j][c]);
         std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
         if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
@@ -166,15 +122,15 @@ class Gradient {
                                              times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
       }
       for (std::size_t c = 0; c < l.columns.size(); ++c) {
-        const Six& S = S_[j][c];
+        const SpatialVector& S = S_[j][c];
         std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
         // B^C x = D x + x ×* P
-        Six DS = named(j, "gDS" + tag, times(D_[j], S)), SP = named(j, "gSP" + tag, force_cross(S, momentum_[j]));
+        SpatialVector DS = named(j, "gDS" + tag, times(D_[j], S)), SP = named(j, "gSP" + tag, force_cross(S, momentum_[j]));
         IS_[j].push_back(named(j, "gIS" + tag, apply(inertia_[j], S)));
         BS_[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
         // A = (w + u) × S: for a turning column u = v_j = w + V_b, whose S × S part vanishes, so
         // that a hinge has A = 2 v_λ × S
-        Six A;
+        SpatialVector A;
         if (!l.columns[c].turns_with_link) A = motion_cross(still_v_[j] + vp, S);
         else if (is_hinge(j)) A = scaled(2, *hinge_dS_[j]);  // T = S: A = 2 Ψ'
         else if (l.columns.size() == 1) A = scaled(2, motion_cross(still_v_[j], S));
@@ -295,7 +251,7 @@ class Gradient {
     SpatialInertia I;
     for (std::size_t k = 0; k < l.bodies.size(); ++k) {
       const TreeLink::Body& b = l.bodies[k];
-      Vector3 c = named(i, fmt::format("gB{}c", k), origin_[i] + eomgen::times(R_[i], b.center));
+      Vector3 c = named(i, fmt::format("gB{}c", k), origin_[i] + times(R_[i], b.center));
       GiNaC::matrix RJ = R_[i].mul(b.inertia);
       for (unsigned r = 0; r < 3; ++r)
         for (unsigned s = 0; s < 3; ++s) RJ(r, s) = name(i, fmt::format("gB{}RJ{}{}", k, r, s), RJ(r, s));
@@ -307,16 +263,16 @@ class Gradient {
           I.J(r, s) += turned + b.mass * ((r == s ? cc : ex(0)) - c[r] * c[s]);
         }
       I.mass += b.mass;
-      I.first = I.first + eomgen::scaled(b.mass, c);
+      I.first = I.first + scaled(b.mass, c);
     }
     if (l.bodies.empty()) return;
     inertia_[i] = named(i, "gI", I);
-    Six Iv = named(i, "gIv", apply(inertia_[i], v_[i]));
+    SpatialVector Iv = named(i, "gIv", apply(inertia_[i], v_[i]));
     force_[i] = apply(inertia_[i], a_[i]) + force_cross(v_[i], Iv);
     momentum_[i] = Iv;
     GiNaC::symbol x[6];
-    Six X{{x[0], x[1], x[2]}, {x[3], x[4], x[5]}};
-    Six Dx = apply(inertia_[i], motion_cross(X, v_[i])) + force_cross(v_[i], apply(inertia_[i], X));
+    SpatialVector X{{x[0], x[1], x[2]}, {x[3], x[4], x[5]}};
+    SpatialVector Dx = apply(inertia_[i], motion_cross(X, v_[i])) + force_cross(v_[i], apply(inertia_[i], X));
     for (unsigned r = 0; r < 6; ++r) {
       ex row = Dx[r].expand();
       for (unsigned c = r; c < 6; ++c) D_[i](r, c) = D_[i](c, r) = row.coeff(x[c]);
@@ -329,7 +285,7 @@ class Gradient {
   Vector3 named(std::size_t i, const std::string& label, const Vector3& x) {
     return {name(i, label + "_x", x[0]), name(i, label + "_y", x[1]), name(i, label + "_z", x[2])};
   }
-  Six named(std::size_t i, const std::string& label, const Six& x) {
+  SpatialVector named(std::size_t i, const std::string& label, const SpatialVector& x) {
     return {named(i, label + "w", x.top), named(i, label + "v", x.bottom)};
   }
   SpatialInertia named(std::size_t i, const std::string& label, const SpatialInertia& I) {
@@ -345,15 +301,15 @@ class Gradient {
   std::vector<Intermediate>& out_;
   std::vector<GiNaC::matrix> R_;
   std::vector<Vector3> origin_;
-  std::vector<std::vector<Six>> S_;  // per column
-  std::vector<Six> v_, a_;
-  std::vector<Six> still_v_, still_a_;  // w and W: the joint's motion that its coordinates do not turn
-  std::vector<Six> turning_v_;          // V_b: the turning columns' part of the joint's velocity
+  std::vector<std::vector<SpatialVector>> S_;  // per column
+  std::vector<SpatialVector> v_, a_;
+  std::vector<SpatialVector> still_v_, still_a_;  // w and W: the joint's motion that its coordinates do not turn
+  std::vector<SpatialVector> turning_v_;          // V_b: the turning columns' part of the joint's velocity
   std::vector<SpatialInertia> inertia_;
-  std::vector<Six> force_, momentum_;
+  std::vector<SpatialVector> force_, momentum_;
   std::vector<GiNaC::matrix> D_;  // symmetric
-  std::vector<std::vector<Six>> IS_, BS_, dS_, ddS_, G_, A_, H_;  // joint_quantities()
-  std::vector<std::optional<Six>> hinge_dS_;                     // a hinge's Ψ', from forward()
+  std::vector<std::vector<SpatialVector>> IS_, BS_, dS_, ddS_, G_, A_, H_;  // joint_quantities()
+  std::vector<std::optional<SpatialVector>> hinge_dS_;                     // a hinge's Ψ', from forward()
 };
 
 }  // namespace

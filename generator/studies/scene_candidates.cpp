@@ -9,6 +9,7 @@
 #include "analyse/state_space.hpp"
 #include "derive/decoupled_coordinates.hpp"
 #include "derive/modal_model.hpp"
+#include "studies/scene_runs.hpp"
 
 namespace eomgen::studies {
 
@@ -18,11 +19,6 @@ std::string joined(const std::vector<std::string>& names) {
   std::string out;
   for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
   return out;
-}
-
-double range_of(const std::vector<double>& v) {
-  auto [low, high] = std::minmax_element(v.begin(), v.end());
-  return v.empty() ? 0 : *high - *low;
 }
 
 // coordinates the outputs do not name whose range of motion stays below the accuracy times the

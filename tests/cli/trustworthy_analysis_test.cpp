@@ -21,13 +21,6 @@ std::string fmt_number(double v) {
   return text;
 }
 
-// writes a model file into a fresh folder and returns its path
-std::string write_model(const std::string& name, const std::string& text) {
-  std::string path = temporary_directory() + "/" + name + ".toml";
-  std::ofstream(path) << text;
-  return path;
-}
-
 const char* const oscillator = R"toml(
 [model]
 name = "oscillator"

@@ -142,12 +142,6 @@ const JsonValue& field(const JsonValue& v, const std::string& key) {
   return found ? *found : missing;
 }
 
-std::string write_model(const std::string& name, const std::string& text) {
-  std::string path = temporary_directory() + "/" + name + ".toml";
-  std::ofstream(path) << text;
-  return path;
-}
-
 const char* const oscillator = R"toml([model]
 name = "oscillator"
 title = "mass, damper and spring, the spring FORCE"

@@ -37,12 +37,6 @@ double json_number(const std::string& json, const std::string& key) {
   return std::stod(m[1]);
 }
 
-std::string write_model(const std::string& name, const std::string& text) {
-  std::string path = temporary_directory() + "/" + name + ".toml";
-  std::ofstream(path) << text;
-  return path;
-}
-
 std::vector<std::vector<double>> read_csv(const std::string& path, std::string& header) {
   return read_numeric_csv(path, &header);
 }

@@ -25,13 +25,6 @@ namespace {
 using namespace eomgen::studies;
 
 
-LoadedProblem load(const std::string& path) {
-  LoadedProblem loaded;
-  StudyOutput r = run_study([&] { return load_problem(path, {}, loaded).value_or(exit_success); });
-  EXPECT_EQ(r.status, exit_success) << r.err;
-  return loaded;
-}
-
 double input_at(const LoadedProblem& loaded, double t) {
   double u = NAN;
   loaded.problem.input_signal(t, &u);
@@ -39,7 +32,7 @@ double input_at(const LoadedProblem& loaded, double t) {
 }
 
 TEST(InputSignal, AnExpressionInTimeAndTheParameters) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
+  LoadedProblem loaded = load(write_model("pushed_mass", pushed_mass_model));
   double end = INFINITY;
   StudyOutput r = run_study([&] { return set_input_signal(loaded, {"F=3*sin(2*t)*m"}, "", end).value_or(exit_success); });
   ASSERT_EQ(r.status, exit_success) << r.err;
@@ -53,7 +46,7 @@ TEST(InputSignal, AnExpressionInTimeAndTheParameters) {
 }
 
 TEST(InputSignal, ATableIsInterpolatedLinearlyAndHeldBeyondItsEnds) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
+  LoadedProblem loaded = load(write_model("pushed_mass", pushed_mass_model));
   std::string dir = temporary_directory();
   std::ofstream(dir + "/u.csv") << "t,F\n0,0\n1,1\n5,3\n";
   double end = INFINITY;
@@ -71,7 +64,7 @@ TEST(InputSignal, ATableIsInterpolatedLinearlyAndHeldBeyondItsEnds) {
 }
 
 TEST(EnsembleFlags, VariationsMeasuresAndQuantiles) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
+  LoadedProblem loaded = load(write_model("pushed_mass", pushed_mass_model));
   const eomgen_model_abi& m = *loaded.compiled->abi();
   auto mass = parse_variation(m, "m=normal(2,0.05)");
   ASSERT_TRUE(mass);
@@ -113,7 +106,7 @@ runtime::Trajectory rows_from(double t0, int count) {
 }
 
 TEST(TrajectoryOutput, TheCsvIsWholeOrAbsent) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
+  LoadedProblem loaded = load(write_model("pushed_mass", pushed_mass_model));
   const eomgen_model_abi& m = *loaded.compiled->abi();
   std::string csv = temporary_directory() + "/run.csv";
   {
@@ -154,7 +147,7 @@ TEST(SplitOutput, AllFilesOrNone) {
 TEST(DiffStudy, AModelAgainstItselfAndAgainstAChangedOne) {
   std::string pendulum = model_path("pendulum");
   std::string text = read_file(pendulum);
-  std::string changed = write_study_model("pendulum", text.replace(text.find("position = [\"l*sin(phi)\""),
+  std::string changed = write_model("pendulum", text.replace(text.find("position = [\"l*sin(phi)\""),
                                                                     std::string("position = [\"l*sin(phi)\"").size(),
                                                                     "position = [\"l*sin(phi)*1.5\""));
   ComparisonOptions same;
@@ -187,7 +180,7 @@ TEST(FmuStudy, ALagrangeIModelIsRefusedAndNothingIsWritten) {
 }
 
 TEST(SceneRuns, OutputsByNameAndTheirRange) {
-  LoadedProblem loaded = load(write_study_model("pushed_mass", pushed_mass_model));
+  LoadedProblem loaded = load(write_model("pushed_mass", pushed_mass_model));
   runtime::Trajectory rows = rows_from(0, 4);
   std::string missing;
   auto outputs = scene_outputs(*loaded.compiled->abi(), rows, {"x", "der(x)"}, missing);

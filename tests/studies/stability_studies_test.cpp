@@ -25,7 +25,7 @@ namespace {
 using namespace eomgen::studies;
 
 // m x'' + c x' + k x = 0, with g pulling along x: the equilibrium is x = m g / k
-const char* const oscillator = R"toml(
+const char* const hanging_oscillator = R"toml(
 [model]
 name = "hanging_oscillator"
 title = "a mass on a spring and a damper, pulled along x"
@@ -45,20 +45,13 @@ potential = "k*x^2/2 - m*g*x"
 dissipation = "c*der(x)^2/2"
 )toml";
 
-LoadedProblem load(const std::string& path, const std::vector<std::string>& sets = {}) {
-  LoadedProblem loaded;
-  StudyOutput r = run_study([&] { return load_problem(path, sets, loaded).value_or(exit_success); });
-  EXPECT_EQ(r.status, exit_success) << r.err;
-  return loaded;
-}
-
 std::string verdict_in(const std::string& json) {
   std::smatch m;
   return std::regex_search(json, m, std::regex(R"re("verdict": "([a-z_]+)")re")) ? m[1].str() : "";
 }
 
 TEST(EquilibriumChoice, FoundFromTheInitialStateOrCheckedWhereGiven) {
-  LoadedProblem loaded = load(write_study_model("hanging_oscillator", oscillator));
+  LoadedProblem loaded = load(write_model("hanging_oscillator", hanging_oscillator));
   ASSERT_TRUE(loaded.compiled);
   runtime::Equilibrium eq;
   StudyOutput found = run_study(
@@ -90,7 +83,7 @@ TEST(EquilibriumChoice, ALagrangeIModelIsRefusedForSymbolicConditions) {
 
 TEST(StabilityStudy, TheDampedOscillatorIsAsymptoticallyStableAtEveryScale) {
   // k·s², c·s, m: time scaled by s; eigenvalues −c/(2m) ± i·sqrt(k/m − c²/4m²), times s
-  std::string path = write_study_model("hanging_oscillator", oscillator);
+  std::string path = write_model("hanging_oscillator", hanging_oscillator);
   for (double s : {1e-6, 1.0, 1e6}) {
     StabilityOptions o;
     o.model = path;
@@ -103,7 +96,7 @@ TEST(StabilityStudy, TheDampedOscillatorIsAsymptoticallyStableAtEveryScale) {
 }
 
 TEST(SweepAxes, EveryCharacterOfEachFieldIsRead) {
-  LoadedProblem loaded = load(write_study_model("hanging_oscillator", oscillator));
+  LoadedProblem loaded = load(write_model("hanging_oscillator", hanging_oscillator));
   const eomgen_model_abi& m = *loaded.compiled->abi();
   std::string name;
   std::optional<runtime::SweepAxis> axis;
@@ -166,7 +159,7 @@ double maievskii_speed(const LoadedProblem& top) {
 }
 
 TEST(StabilityStudy, TheSleepingTopIsStableAboveMaievskiisSpeedAndOnlyMarginally) {
-  std::string path = write_study_model("sleeping_top", sleeping_top);
+  std::string path = write_model("sleeping_top", sleeping_top);
   double critical = maievskii_speed(load(path));
   ASSERT_NEAR(critical, 67.054, 1e-3) << "the speed issue 37 names";
   for (double w : {0.95 * critical, 1.05 * critical}) {
@@ -188,7 +181,7 @@ TEST(StabilityStudy, TheSleepingTopIsStableAboveMaievskiisSpeedAndOnlyMarginally
 }
 
 TEST(SweepStudy, TheSleepingTopsSweepEndsItsUnstableRunAtTheCrossingAndSaysMarginal) {
-  LoadedProblem loaded = load(write_study_model("sleeping_top", sleeping_top));
+  LoadedProblem loaded = load(write_model("sleeping_top", sleeping_top));
   const eomgen_model_abi& m = *loaded.compiled->abi();
   std::string name;
   std::optional<runtime::SweepAxis> axis = parse_axis(m, "w=40:100:7", name);
@@ -247,7 +240,7 @@ TEST(RouthStudy, AMomentumGivenWithAtEliminatesItsCyclicCoordinate) {
 }
 
 TEST(LinearStudy, TheOscillatorsMatricesAndEigenvalues) {
-  LoadedProblem loaded = load(write_study_model("hanging_oscillator", oscillator));
+  LoadedProblem loaded = load(write_model("hanging_oscillator", hanging_oscillator));
   std::vector<double> x{9.81 / 400.0, 0.0};
   LinearReport r = linear_report(loaded.problem, x, LinearRequest{{0.1}, {}, {}, false}, &loaded.equations);
   ASSERT_EQ(r.A.rows(), 2);

@@ -4,13 +4,14 @@
 #pragma once
 
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "studies/exit_status.hpp"
+#include "studies/loaded_problem.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -31,11 +32,12 @@ inline StudyOutput run_study(const std::function<int()>& study) {
   return {status, out, err};
 }
 
-/// Writes a model file into a fresh folder; its path.
-inline std::string write_study_model(const std::string& name, const std::string& text) {
-  std::string path = temporary_directory() + "/" + name + ".toml";
-  std::ofstream(path) << text;
-  return path;
+/// The model file at `path` loaded as the commands load it (with `sets` applied); a failure fails the test.
+inline studies::LoadedProblem load(const std::string& path, const std::vector<std::string>& sets = {}) {
+  studies::LoadedProblem loaded;
+  StudyOutput r = run_study([&] { return studies::load_problem(path, sets, loaded).value_or(studies::exit_success); });
+  EXPECT_EQ(r.status, studies::exit_success) << r.err;
+  return loaded;
 }
 
 }  // namespace eomgen::test

@@ -155,6 +155,12 @@ std::string temporary_directory() {
   return directories.make();
 }
 
+std::string write_model(const std::string& name, const std::string& text) {
+  std::string path = temporary_directory() + "/" + name + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
 CommandOutput run_eomgen(const std::string& arguments) {
   std::string scratch = temporary_directory();
   int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +

@@ -55,6 +55,9 @@ std::string read_file(const std::string& path);
 /// EOMGEN_KEEP_TEST_FILES is set.
 std::string temporary_directory();
 
+/// Writes `text` as the model file NAME.toml into a fresh temporary directory; its path.
+std::string write_model(const std::string& name, const std::string& text);
+
 struct CommandOutput {
   int status;
   std::string out, err;
