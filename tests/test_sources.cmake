@@ -91,7 +91,7 @@ set(EOMGEN_TEST_FILES
   cli/diff_command_test.cpp                         cli
   cli/bench_command_test.cpp                        cli
   cli/failure_scenes_test.cpp                       cli
-  cli/determinism_test.cpp                          cli
+  cli/determinism_test.cpp                          slow
   cli/error_files_test.cpp                          cli
   cli/distributed_runs_test.cpp                     cli
   cli/ensemble_command_test.cpp                     cli

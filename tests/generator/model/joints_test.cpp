@@ -21,7 +21,7 @@ namespace {
 
 using GiNaC::ex;
 
-const char* header = R"toml([model]
+const char* one_joint_model = R"toml([model]
 name = "joint"
 kinematics = "KINEMATICS"
 
@@ -40,7 +40,7 @@ acceleration = ["0", "0", "-g"]
 )toml";
 
 std::string with_kinematics(const std::string& kinematics) {
-  std::string text = header;
+  std::string text = one_joint_model;
   text.replace(text.find("KINEMATICS"), 10, kinematics);
   return text;
 }
@@ -170,10 +170,10 @@ TEST(Joints, RotAxisIsRodriguesRotation) {
   same_equations(by_rot_axis, by_joint, "rot_axis");
 }
 
-std::string diagnostics_of(const std::string& text) { return derive_model_text(text, "bad.toml").diagnostics.format(); }
+std::string joint_diagnostics(const std::string& text) { return derive_model_text(text, "bad.toml").diagnostics.format(); }
 
 TEST(Joints, MisusesAreLocated) {
-  auto with_joint = [](const std::string& joint) { return diagnostics_of(rotor("recursive", "joint = " + joint)); };
+  auto with_joint = [](const std::string& joint) { return joint_diagnostics(rotor("recursive", "joint = " + joint)); };
   std::string unknown = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"1\"], coordinate = \"p\" }");
   EXPECT_NE(unknown.find("bad.toml:20:68: error: frames[0].joint.coordinate: 'p' is not a coordinate"), std::string::npos) << unknown;
   std::string zero = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"0\"], coordinate = \"q\" }");

@@ -113,7 +113,7 @@ nonholonomic = "tip.y*der(a) + knob.x*der(c) - der(d)"
 acceleration = ["0", "0", "-g"]
 )toml";
 
-std::string with(const std::string& kinematics) {
+std::string loop_with(const std::string& kinematics) {
   std::string text = loop;
   text.replace(text.find("KINEMATICS"), 10, kinematics);
   return text;
@@ -151,8 +151,8 @@ void expect_expanded_constraints(const std::string& recursive_text, const std::s
 }
 
 TEST(TreeConstraints, ThroughTheFramesTheyAreThoseOfTheExpandedDerivation) {
-  ASSERT_EQ(derive_text(with("")).constraints.size(), 3u);
-  expect_expanded_constraints(with(""), with("kinematics = \"expanded\""));
+  ASSERT_EQ(derive_text(loop_with("")).constraints.size(), 3u);
+  expect_expanded_constraints(loop_with(""), loop_with("kinematics = \"expanded\""));
 }
 
 // the hand's joint following the base's coordinate (−1.5 a + 0.2, a mimic), the constraint on
@@ -166,12 +166,12 @@ TEST(TreeConstraints, AJointThatFollowsACoordinateGivesTheExpandedConstraints) {
     text.erase(reach, text.find("[[constraints]]", reach + 1) - reach);
     return text;
   };
-  ASSERT_EQ(derive_text(following(with(""))).forcing.size(), 3u);
-  expect_expanded_constraints(following(with("")), following(with("kinematics = \"expanded\"")));
+  ASSERT_EQ(derive_text(following(loop_with(""))).forcing.size(), 3u);
+  expect_expanded_constraints(following(loop_with("")), following(loop_with("kinematics = \"expanded\"")));
 }
 
 TEST(TreeConstraints, ADependentConstraintIsFoundThroughTheFrames) {
-  std::string text = with("");
+  std::string text = loop_with("");
   std::size_t rolling = text.find("[[constraints]]\nname = \"rolling\"");
   text.replace(rolling, text.find("[gravity]") - rolling,
                "[[constraints]]\nname = \"twice\"\nholonomic = \"2*tip.z - 0.6*tip.x + 0.2*knob.y - 1\"\n\n");
