@@ -38,12 +38,17 @@ std::string cxx_compiler() {
 
 namespace {
 
-// GCC's -O2 grows faster than linearly in the size of one straight-line function: a header of a
-// megabyte (the nonlinear bicycle's Lagrange I Jacobian) takes minutes at -O2 and one at -O1
+// GCC's time grows faster than linearly in the size of one straight-line function, most of it in
+// register allocation: the nonlinear bicycle's header (1.1 MB, most of it its Lagrange I Jacobian)
+// took minutes at -O2, 88 s at -O1 and 9 s at -O0 (2026-11-28), and a 10 s simulation of it took at
+// most a second or two longer at -O0; so near a megabyte the first answer comes a minute sooner at
+// -O0, while a long run that pays for -O1 can build the header with its own flags
 constexpr std::size_t large_header_bytes = 400'000;
+constexpr std::size_t huge_header_bytes = 800'000;
 
 std::string compile_flags(const std::string& header_text) {
-  const char* level = header_text.size() > large_header_bytes ? "-O1" : "-O2";
+  std::size_t size = header_text.size();
+  const char* level = size > huge_header_bytes ? "-O0" : size > large_header_bytes ? "-O1" : "-O2";
   return fmt::format("-std=c++17 {} -fPIC -shared {}", level, EOMGEN_DRIVER_REFERENCE_FLAGS);
 }
 

@@ -21,7 +21,7 @@ std::string fmt_number(double v) {
   return text;
 }
 
-const char* const oscillator = R"toml(
+const char* const twenty_radian_oscillator = R"toml(
 [model]
 name = "oscillator"
 title = "one mass on a spring: omega = sqrt(k/m) = 20 rad/s"
@@ -242,7 +242,7 @@ TEST(StabilityOutput, SymbolicConditionsThatAlwaysHoldSaySo) {
 
 TEST(FixedSteps, AStepBeyondTheStabilityLimitIsNamedAndNeverExitsZero) {
   // ω = sqrt(k/m) = 20 rad/s: RK4 is stable up to h = 2√2/20 = 0.1414 s, Verlet up to 2/20 = 0.1 s
-  std::string model = write_model("oscillator", oscillator);
+  std::string model = write_model("oscillator", twenty_radian_oscillator);
   struct Case {
     const char* integrator;
     double step;
@@ -272,14 +272,14 @@ TEST(FixedSteps, AStepBeyondTheStabilityLimitIsNamedAndNeverExitsZero) {
 }
 
 TEST(FixedSteps, AStepLongerThanTheOutputIntervalIsSaid) {
-  CommandOutput r = run_eomgen("simulate '" + write_model("oscillator", oscillator) +
+  CommandOutput r = run_eomgen("simulate '" + write_model("oscillator", twenty_radian_oscillator) +
                                "' --integrator rk4 --step 0.2 --t-end 1");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("the step 0.2 s is longer than the output interval 0.01 s"), std::string::npos) << r.err;
 }
 
 TEST(DefaultIntegrator, ChosenFromTheModelAndSaid) {
-  std::string oscillator_model = write_model("oscillator", oscillator);
+  std::string oscillator_model = write_model("oscillator", twenty_radian_oscillator);
   CommandOutput smooth = run_eomgen("simulate '" + oscillator_model + "' --t-end 10 --format json");
   ASSERT_EQ(smooth.status, 0) << smooth.err;
   EXPECT_NE(smooth.err.find("integrator arkode-dp5: the model is not stiff"), std::string::npos) << smooth.err;
