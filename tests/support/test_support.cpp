@@ -9,6 +9,7 @@
 #include <mutex>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -153,6 +154,12 @@ class ScratchDirectories {
 std::string temporary_directory() {
   static ScratchDirectories directories;
   return directories.make();
+}
+
+std::string with_kinematics(std::string model_text, const std::string& kinematics) {
+  std::size_t at = model_text.find("KINEMATICS");
+  if (at == std::string::npos) throw std::invalid_argument("with_kinematics: the model text has no KINEMATICS");
+  return model_text.replace(at, 10, kinematics);
 }
 
 std::string write_model(const std::string& name, const std::string& text) {

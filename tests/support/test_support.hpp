@@ -55,6 +55,10 @@ std::string read_file(const std::string& path);
 /// EOMGEN_KEEP_TEST_FILES is set.
 std::string temporary_directory();
 
+/// A model text with its placeholder KINEMATICS replaced: the tests that compare the recursive
+/// kinematics with the expanded derivation write one model for both.
+std::string with_kinematics(std::string model_text, const std::string& kinematics);
+
 /// Writes `text` as the model file NAME.toml into a fresh temporary directory; its path.
 std::string write_model(const std::string& name, const std::string& text);
 

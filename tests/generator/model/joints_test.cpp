@@ -39,14 +39,8 @@ q = 0.4
 acceleration = ["0", "0", "-g"]
 )toml";
 
-std::string with_kinematics(const std::string& kinematics) {
-  std::string text = one_joint_model;
-  text.replace(text.find("KINEMATICS"), 10, kinematics);
-  return text;
-}
-
 std::string rotor(const std::string& kinematics, const std::string& frame) {
-  return with_kinematics(kinematics) + "\n[[frames]]\nname = \"arm\"\n" + frame +
+  return with_kinematics(one_joint_model, kinematics) + "\n[[frames]]\nname = \"arm\"\n" + frame +
          "\n\n[[rigid_bodies]]\nname = \"rotor\"\nmass = \"m\"\nframe = \"arm\"\ncenter = [\"0.3\", \"-0.1\", \"0.2\"]\n"
          "inertia = [\"A\", \"B\", \"C\"]\n";
 }

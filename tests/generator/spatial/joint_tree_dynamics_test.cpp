@@ -107,12 +107,6 @@ potential = "20*s^2"
 dissipation = "0.3*der(a)^2/2"
 )toml";
 
-std::string with(const std::string& kinematics) {
-  std::string text = tree;
-  text.replace(text.find("KINEMATICS"), 10, kinematics);
-  return text;
-}
-
 Model built(const std::string& text) {
   Diagnostics d;
   ModelFile file = parse_model_text(text, "tree.toml", d);
@@ -198,12 +192,12 @@ void expect_expanded_derivatives(const std::string& recursive_text, const std::s
 }
 
 TEST(JointTree, RecursionsGiveTheExpandedEquations) {
-  expect_expanded_equations(with("recursive"), with("expanded"), 4);
+  expect_expanded_equations(with_kinematics(tree, "recursive"), with_kinematics(tree, "expanded"), 4);
 }
 
 // the oblique axis, the slide, the fixed frame and the turned inertias included
 TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
-  expect_expanded_derivatives(with("recursive"), with("expanded"), 4);
+  expect_expanded_derivatives(with_kinematics(tree, "recursive"), with_kinematics(tree, "expanded"), 4);
 }
 
 // The tree with joints that follow another joint's coordinate (URDF's mimic): the arm turned by
@@ -211,7 +205,7 @@ TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
 // follows the base's angle a, its ancestor, by 2 a − 0.1 and the slide follows it too. The
 // recursions add each joint's share to the rows and columns of the coordinate it follows.
 std::string with_followers(const std::string& kinematics, bool ancestor) {
-  std::string text = with(kinematics);
+  std::string text = with_kinematics(tree, kinematics);
   auto replace = [&](const std::string& from, const std::string& to) {
     std::size_t at = text.find(from);
     ASSERT_NE(at, std::string::npos) << from;
@@ -243,18 +237,18 @@ TEST(JointTree, JointsThatFollowACoordinateHaveTheExpandedDerivatives) {
 // their M is not a tree's (the arm's angle couples two branches): the header factors it densely
 TEST(JointTree, JointsThatFollowACoordinateFactorMDensely) {
   EXPECT_TRUE(derive_text(with_followers("recursive", false)).coordinate_parents.empty());
-  EXPECT_FALSE(derive_text(with("recursive")).coordinate_parents.empty());
+  EXPECT_FALSE(derive_text(with_kinematics(tree, "recursive")).coordinate_parents.empty());
 }
 
 TEST(JointTree, FramesWithJointsAreATreeWithoutAnOption) {
-  std::string text = with("recursive");
+  std::string text = with_kinematics(tree, "recursive");
   text.erase(text.find("kinematics = \"recursive\"\n"), 25);
   Model model = built(text);
   EXPECT_TRUE(model.recursive_kinematics);
   EXPECT_FALSE(why_not_a_joint_tree(model));
   text.insert(text.find("\n[parameters]"), "method = \"appell\"\n");
   EXPECT_FALSE(built(text).recursive_kinematics) << "Appell's equations take the expanded kinematics";
-  EXPECT_FALSE(built(with("expanded")).recursive_kinematics) << "an explicit choice stands";
+  EXPECT_FALSE(built(with_kinematics(tree, "expanded")).recursive_kinematics) << "an explicit choice stands";
 }
 
 TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
@@ -263,7 +257,7 @@ TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
   held.freeze = {"b"};
   std::string dir = temporary_directory();
   for (const char* kinematics : {"recursive", "expanded"}) {
-    std::ofstream(dir + "/" + kinematics + ".toml") << with(kinematics);
+    std::ofstream(dir + "/" + kinematics + ".toml") << with_kinematics(tree, kinematics);
   }
   Derivation recursive = derive_model_file_for(dir + "/recursive.toml", held);
   Derivation expanded = derive_model_file_for(dir + "/expanded.toml", held);
@@ -282,13 +276,13 @@ TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
 }
 
 TEST(JointTree, OtherTreesKeepTheFrameRecursionAndSayWhy) {
-  std::string moving = with("recursive");
+  std::string moving = with_kinematics(tree, "recursive");
   moving.replace(moving.find("rotation = \"rot_x(0.3)\""), 23, "rotation = \"rot_x(s)\"");
   Model model = built(moving);
   auto why = why_not_a_joint_tree(model);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find("frame 'base' is not placed by constants and moved by one joint"), std::string::npos) << *why;
-  std::string idle = with("recursive");
+  std::string idle = with_kinematics(tree, "recursive");
   idle.replace(idle.find("c = 0.7\n"), 8, "c = 0.7\nmotor = 0\n");
   idle.replace(idle.find("potential = "), 12, "kinetic = \"0.01*der(motor)^2\"\npotential = ");
   why = why_not_a_joint_tree(built(idle));

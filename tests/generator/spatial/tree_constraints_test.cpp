@@ -113,12 +113,6 @@ nonholonomic = "tip.y*der(a) + knob.x*der(c) - der(d)"
 acceleration = ["0", "0", "-g"]
 )toml";
 
-std::string loop_with(const std::string& kinematics) {
-  std::string text = loop;
-  text.replace(text.find("KINEMATICS"), 10, kinematics);
-  return text;
-}
-
 // g, b, γ, C, M and f of the two derivations at random states
 void expect_expanded_constraints(const std::string& recursive_text, const std::string& expanded_text) {
   Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
@@ -151,8 +145,8 @@ void expect_expanded_constraints(const std::string& recursive_text, const std::s
 }
 
 TEST(TreeConstraints, ThroughTheFramesTheyAreThoseOfTheExpandedDerivation) {
-  ASSERT_EQ(derive_text(loop_with("")).constraints.size(), 3u);
-  expect_expanded_constraints(loop_with(""), loop_with("kinematics = \"expanded\""));
+  ASSERT_EQ(derive_text(with_kinematics(loop, "")).constraints.size(), 3u);
+  expect_expanded_constraints(with_kinematics(loop, ""), with_kinematics(loop, "kinematics = \"expanded\""));
 }
 
 // the hand's joint following the base's coordinate (−1.5 a + 0.2, a mimic), the constraint on
@@ -166,12 +160,12 @@ TEST(TreeConstraints, AJointThatFollowsACoordinateGivesTheExpandedConstraints) {
     text.erase(reach, text.find("[[constraints]]", reach + 1) - reach);
     return text;
   };
-  ASSERT_EQ(derive_text(following(loop_with(""))).forcing.size(), 3u);
-  expect_expanded_constraints(following(loop_with("")), following(loop_with("kinematics = \"expanded\"")));
+  ASSERT_EQ(derive_text(following(with_kinematics(loop, ""))).forcing.size(), 3u);
+  expect_expanded_constraints(following(with_kinematics(loop, "")), following(with_kinematics(loop, "kinematics = \"expanded\"")));
 }
 
 TEST(TreeConstraints, ADependentConstraintIsFoundThroughTheFrames) {
-  std::string text = loop_with("");
+  std::string text = with_kinematics(loop, "");
   std::size_t rolling = text.find("[[constraints]]\nname = \"rolling\"");
   text.replace(rolling, text.find("[gravity]") - rolling,
                "[[constraints]]\nname = \"twice\"\nholonomic = \"2*tip.z - 0.6*tip.x + 0.2*knob.y - 1\"\n\n");
