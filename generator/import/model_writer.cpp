@@ -11,6 +11,7 @@
 #include "import/model_sections.hpp"
 #include "import/transmission_text.hpp"
 #include "import/mjcf_reader.hpp"
+#include "import/mujoco_loading.hpp"
 #include "import/urdf_text.hpp"
 #include "import/warning_lines.hpp"
 
@@ -19,9 +20,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <variant>
 #include <map>
 #include <set>
@@ -286,13 +285,14 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
   std::string file = std::filesystem::path(path).filename().string();
   if (in_memory)
     std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);
-  std::ifstream in(path);
-  std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // a URDF includes nothing; an MJCF's warnings may be about an element of a file it includes
+  std::vector<std::pair<std::string, std::string>> sources =
+      is_urdf_path(path) ? std::vector<std::pair<std::string, std::string>>{{path, text_of_file(path)}} : mjcf_sources(path);
   for (const std::string& note : robot.notes) std::cerr << fmt::format("eomgen: note: {}: {}\n", file, note);
   for (const RobotWarning& w : robot.warnings) {
-    int line = warning_line(xml, w);
-    std::cerr << (line > 0 ? fmt::format("{}:{}:1: warning: {}\n", path, line, w.text)
-                           : fmt::format("eomgen: warning: {}: {}\n", file, w.text));
+    WarningPlace place = warning_place(sources, w);
+    std::cerr << (place.line > 0 ? fmt::format("{}:{}:1: warning: {}\n", place.file, place.line, w.text)
+                                 : fmt::format("eomgen: warning: {}: {}\n", file, w.text));
   }
   if (name.empty()) name = identifier_of(robot.name.empty() ? std::filesystem::path(path).stem().string() : robot.name);
   return model_file_text(robot, name, file);

@@ -28,6 +28,16 @@ std::string text_of_file(const std::string& path) {
   return text.str();
 }
 
+std::vector<std::pair<std::string, std::string>> mjcf_sources(const std::string& path) {
+  std::string folder = path.substr(0, path.find_last_of('/') + 1);
+  std::vector<std::pair<std::string, std::string>> sources{{path, text_of_file(path)}};
+  for (std::size_t k = 0; k < sources.size() && sources.size() < 64; ++k)
+    for (const std::string& name : included_files(std::string(sources[k].second)))
+      if (std::none_of(sources.begin(), sources.end(), [&](const auto& s) { return s.first == folder + name; }))
+        sources.emplace_back(folder + name, text_of_file(folder + name));
+  return sources;
+}
+
 namespace {
 
 // files by name and text: a robot file and those it includes
@@ -61,18 +71,6 @@ mjModel* loaded_texts(const std::string& path, const Sources& texts, char* error
 
 mjModel* loaded_text(const std::string& path, const std::string& text, char* error, int size) {
   return loaded_texts(path, {{path, text}}, error, size);
-}
-
-// the MJCF file and, after it, every file it includes, however deep (MuJoCo takes each name
-// relative to the first file's folder)
-Sources mjcf_sources(const std::string& path) {
-  std::string folder = path.substr(0, path.find_last_of('/') + 1);
-  Sources sources{{path, text_of_file(path)}};
-  for (std::size_t k = 0; k < sources.size() && sources.size() < 64; ++k)
-    for (const std::string& name : included_files(std::string(sources[k].second)))
-      if (std::none_of(sources.begin(), sources.end(), [&](const auto& s) { return s.first == folder + name; }))
-        sources.emplace_back(folder + name, text_of_file(folder + name));
-  return sources;
 }
 
 // where no line is known, the first line that names the object, in the file (sources[0]) or in one

@@ -54,4 +54,8 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
 /// The file's bytes, or nothing when it cannot be read (MuJoCo says so then).
 std::string text_of_file(const std::string& path);
 
+/// The MJCF file at `path` and, after it, every file it includes however deep, each by its path
+/// (MuJoCo takes an included name relative to the first file's folder) and its text.
+std::vector<std::pair<std::string, std::string>> mjcf_sources(const std::string& path);
+
 }  // namespace eomgen

@@ -34,4 +34,17 @@ int warning_line(const std::string& xml, const RobotWarning& warning) {
   return line_at(xml, section);
 }
 
+WarningPlace warning_place(const std::vector<std::pair<std::string, std::string>>& sources, const RobotWarning& warning) {
+  if (sources.empty()) return {};
+  if (int line = warning_line(sources[0].second, warning); line > 0) return {sources[0].first, line};
+  std::vector<std::size_t> with_section;
+  for (std::size_t k = 0; k < sources.size() && !warning.section.empty(); ++k)
+    if (sources[k].second.find("<" + warning.section) != std::string::npos) with_section.push_back(k);
+  bool by_place = warning.name.empty() && warning.ordinal > 0;
+  if (by_place && !(with_section.size() == 1 && with_section[0] > 0)) return {};
+  for (std::size_t k : with_section)
+    if (int line = warning_line(sources[k].second, warning); k > 0 && line > 0) return {sources[k].first, line};
+  return {};
+}
+
 }  // namespace eomgen

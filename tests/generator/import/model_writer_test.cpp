@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <variant>
 
@@ -135,6 +136,50 @@ TEST(WarningLines, TheSubjectOfAWarningIsFoundInTheFile) {
   EXPECT_EQ(warning_line(xml, {"1 actuator(s) with a control range", "actuator", "", 0}), 10);
   EXPECT_EQ(warning_line(xml, {"3 geom(s) that make contacts", "", "", 0}), 0) << "no one place";
   EXPECT_EQ(warning_line(xml, {"actuator 'elsewhere'", "actuator", "elsewhere", 3}), 0) << "from an <include>d file";
+}
+
+TEST(WarningLines, AWarningAboutAnIncludedElementNamesThatFile) {
+  std::vector<std::pair<std::string, std::string>> sources{
+      {"robot.xml", "<mujoco>\n  <include file=\"parts/arm.xml\"/>\n  <include file=\"parts/hand.xml\"/>\n"
+                    "  <tendon>\n    <fixed name=\"split\"/>\n  </tendon>\n</mujoco>\n"},
+      {"parts/arm.xml", "<mujoco>\n  <actuator>\n    <motor name=\"knee\" joint=\"knee\"/>\n"
+                        "    <cylinder joint=\"z\"/>\n  </actuator>\n</mujoco>\n"},
+      {"parts/hand.xml", "<mujoco>\n  <equality>\n    <joint joint1=\"a\" joint2=\"b\"/>\n  </equality>\n"
+                         "  <equality>\n    <joint name=\"grip\" joint1=\"c\" joint2=\"d\"/>\n  </equality>\n</mujoco>\n"}};
+  auto expect_place = [&](const RobotWarning& w, const std::string& file, int line) {
+    WarningPlace place = warning_place(sources, w);
+    EXPECT_EQ(place.file, file) << w.text;
+    EXPECT_EQ(place.line, line) << w.text;
+  };
+  expect_place({"1 tendon(s)", "tendon", "", 0}, "robot.xml", 4);
+  expect_place({"actuator 'knee'", "actuator", "knee", 1}, "parts/arm.xml", 3);
+  expect_place({"actuator 'actuator2'", "actuator", "", 2}, "parts/arm.xml", 4);
+  expect_place({"1 actuator(s) with a control range", "actuator", "", 0}, "parts/arm.xml", 2);
+  expect_place({"equality constraint 'grip'", "equality", "grip", 2}, "parts/hand.xml", 6);
+  expect_place({"equality constraint 1", "equality", "", 1}, "parts/hand.xml", 3);
+  expect_place({"actuator 'nowhere'", "actuator", "nowhere", 3}, "", 0);
+  // the robot file has a section of its own: an unnamed element's place may count across files
+  sources[0].second.insert(sources[0].second.find("  <tendon>"), "  <actuator>\n    <motor joint=\"hip\"/>\n  </actuator>\n");
+  expect_place({"actuator 'actuator3'", "actuator", "", 3}, "", 0);
+  expect_place({"actuator 'knee'", "actuator", "knee", 2}, "parts/arm.xml", 3);
+}
+
+// `eomgen import`'s warnings name the included file and the line of the element they are about
+TEST(WarningLines, ImportLocatesAWarningInAnIncludedFile) {
+  std::string dir = temporary_directory();
+  std::filesystem::create_directories(dir + "/parts");
+  std::ofstream(dir + "/robot.xml") << "<mujoco model=\"pendulum\">\n  <worldbody>\n    <body name=\"link\">\n"
+                                       "      <joint name=\"swing\" type=\"hinge\" axis=\"0 1 0\"/>\n"
+                                       "      <geom type=\"capsule\" fromto=\"0 0 0 0 0 -0.5\" size=\"0.02\" mass=\"1\"/>\n"
+                                       "    </body>\n  </worldbody>\n  <include file=\"parts/drive.xml\"/>\n</mujoco>\n";
+  std::ofstream(dir + "/parts/drive.xml") << "<mujoco>\n  <actuator>\n    <motor name=\"push\" joint=\"swing\"/>\n"
+                                             "    <cylinder name=\"piston\" joint=\"swing\"/>\n  </actuator>\n</mujoco>\n";
+  Diagnostics diagnostics;
+  testing::internal::CaptureStderr();
+  auto text = imported_model_text(dir + "/robot.xml", diagnostics, false);
+  std::string err = testing::internal::GetCapturedStderr();
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(err.find(dir + "/parts/drive.xml:4:1: warning: actuator 'piston'"), std::string::npos) << err;
 }
 
 TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
