@@ -24,24 +24,8 @@ int line_naming(const std::string& text, const std::string& name) {
 }
 
 std::string with_mass_bounds(const std::string& text) {
-  const std::string bounds = fmt::format(" boundmass=\"{0}\" boundinertia=\"{0}\"", massless_bound);
-  std::string out = text;
-  std::size_t mujoco = element_start(out, "mujoco");
-  if (mujoco == std::string::npos) {  // a URDF without a <mujoco> element
-    std::size_t robot = element_start(out, "robot");
-    std::size_t inside = robot == std::string::npos ? robot : past_tag(out, robot);
-    if (inside == std::string::npos || out[inside - 2] == '/') return text;
-    return out.insert(inside, "<mujoco><compiler" + bounds + "/></mujoco>");
-  }
-  std::size_t compiler = element_start(out.substr(0, out.find("</mujoco", mujoco)), "compiler", mujoco);
-  if (compiler != std::string::npos) {
-    std::size_t end = past_tag(out, compiler);
-    if (attribute(out, compiler, end, "boundmass") || attribute(out, compiler, end, "boundinertia")) return text;
-    return out.insert(compiler + 9, bounds);
-  }
-  std::size_t inside = past_tag(out, mujoco);
-  if (inside == std::string::npos || out[inside - 2] == '/') return text;
-  return out.insert(inside, "<compiler" + bounds + "/>");
+  return with_compiler_attributes(text, fmt::format(" boundmass=\"{0}\" boundinertia=\"{0}\"", massless_bound),
+                                  {"boundmass", "boundinertia"});
 }
 
 std::string joint_moving_no_mass(const mjModel* model) {

@@ -229,6 +229,14 @@ void add_body(const Robot& robot, std::size_t b, std::vector<std::string>& frame
                             format_number(body.mass), vector_text(body.center));
   if (!is_identity(body.inertia_axes)) out.bodies += "rotation = \"" + rotation_text(body.inertia_axes) + "\"\n";
   out.bodies += "inertia = " + vector_text(body.principal_inertia) + "\n";
+  // a robot file's inertia that no rigid body has (import/unbalanced_inertias.hpp), kept as it states it
+  const Triple& m = body.principal_inertia;
+  double largest = std::max({m[0], m[1], m[2]});
+  for (std::size_t k = 0; k < 3; ++k)
+    if (m[(k + 1) % 3] + m[(k + 2) % 3] - m[k] < -1e-12 * largest || m[k] < 0) {
+      out.bodies += "unphysical_inertia = true  # breaks A + B >= C or has a moment below zero, as the robot file states it\n";
+      break;
+    }
 }
 
 // each keyframe as a scene's initial state: positions and rates, a quaternion's rates from ω,

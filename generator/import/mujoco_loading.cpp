@@ -17,6 +17,7 @@
 
 #include "import/massless_bodies.hpp"
 #include "import/missing_meshes.hpp"
+#include "import/unbalanced_inertias.hpp"
 #include "import/urdf_text.hpp"
 
 namespace eomgen {
@@ -195,12 +196,25 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
   if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message, ""};
   std::string kept = with_static_links_kept(urdf);
-  // the text, or when MuJoCo refuses its massless moving bodies, the text with the mass bounds
-  auto load = [&](const std::string& text) {
-    mjModel* loaded = loaded_text(path, text, error, size);
-    if (loaded || !refuses_massless_bodies(error, {text}) || with_mass_bounds(text) == text) return loaded;
-    left_out.mass_bounds = true;
-    return loaded_text(path, with_mass_bounds(text), error, size);
+  // the text, or when MuJoCo refuses its massless moving bodies or an inertia with A + B < C, the
+  // text with the mass bounds or balanceinertia (each kept for a second reading without meshes)
+  auto load = [&](std::string text) {
+    if (left_out.mass_bounds) text = with_mass_bounds(text);
+    if (left_out.balanced_inertias) text = with_balanced_inertias(text);
+    for (;;) {
+      mjModel* loaded = loaded_text(path, text, error, size);
+      if (loaded) return loaded;
+      std::string next = text;
+      if (!left_out.mass_bounds && refuses_massless_bodies(error, {text})) {
+        next = with_mass_bounds(text);
+        left_out.mass_bounds = next != text;
+      } else if (!left_out.balanced_inertias && refuses_unbalanced_inertia(error)) {
+        next = with_balanced_inertias(text);
+        left_out.balanced_inertias = next != text;
+      }
+      if (next == text) return loaded;
+      text = next;
+    }
   };
   mjModel* model = load(kept);
   if (model) return without_massless_joints(model, left_out, {{path, urdf}});

@@ -43,6 +43,7 @@ struct LeftOut {
   std::string unread_mesh_names;         // the first of them
   std::vector<int> mesh_sized_geoms;     // geoms that a placeholder sized: not drawn
   bool mass_bounds = false;              // read with massless_bodies.hpp's bounds
+  bool balanced_inertias = false;        // a URDF read with balanceinertia (unbalanced_inertias.hpp)
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
 };
 

@@ -132,25 +132,10 @@ std::string without_mesh_geometry(const std::string& urdf, int& left_out) {
 }
 
 std::string with_static_links_kept(const std::string& urdf) {
-  std::string text = urdf;
-  std::size_t robot = element_start(text, "robot");
-  if (robot == std::string::npos || text.find("fusestatic") != std::string::npos || urdf_joint_count(urdf, "floating") > 0)
-    return text;
-  std::size_t mujoco = element_start(text, "mujoco");
-  if (mujoco == std::string::npos) {
-    std::size_t inside = past_tag(text, robot);
-    if (inside != std::string::npos && text[inside - 2] != '/')
-      text.insert(inside, "<mujoco><compiler fusestatic=\"false\"/></mujoco>");
-    return text;
-  }
-  std::size_t compiler = element_start(text.substr(0, text.find("</mujoco", mujoco)), "compiler");
-  if (compiler != std::string::npos && compiler > mujoco) {
-    text.insert(compiler + 9, " fusestatic=\"false\"");
-    return text;
-  }
-  std::size_t inside = past_tag(text, mujoco);
-  if (inside != std::string::npos && text[inside - 2] != '/') text.insert(inside, "<compiler fusestatic=\"false\"/>");
-  return text;
+  if (element_start(urdf, "robot") == std::string::npos || urdf.find("fusestatic") != std::string::npos ||
+      urdf_joint_count(urdf, "floating") > 0)
+    return urdf;
+  return with_compiler_attributes(urdf, " fusestatic=\"false\"", {"fusestatic"});
 }
 
 }  // namespace eomgen

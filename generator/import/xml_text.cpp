@@ -53,4 +53,25 @@ std::optional<std::string> attribute(const std::string& text, std::size_t start,
   return text.substr(open + 1, span->second - open - 2);
 }
 
+std::string with_compiler_attributes(const std::string& text, const std::string& attributes, const std::vector<std::string>& names) {
+  std::string out = text;
+  std::size_t mujoco = element_start(out, "mujoco");
+  if (mujoco == std::string::npos) {
+    std::size_t robot = element_start(out, "robot");
+    std::size_t inside = robot == std::string::npos ? robot : past_tag(out, robot);
+    if (inside == std::string::npos || out[inside - 2] == '/') return text;
+    return out.insert(inside, "<mujoco><compiler" + attributes + "/></mujoco>");
+  }
+  std::size_t compiler = element_start(out.substr(0, out.find("</mujoco", mujoco)), "compiler", mujoco);
+  if (compiler != std::string::npos) {
+    std::size_t end = past_tag(out, compiler);
+    for (const std::string& name : names)
+      if (attribute(out, compiler, end, name)) return text;
+    return out.insert(compiler + 9, attributes);
+  }
+  std::size_t inside = past_tag(out, mujoco);
+  if (inside == std::string::npos || out[inside - 2] == '/') return text;
+  return out.insert(inside, "<compiler" + attributes + "/>");
+}
+
 }  // namespace eomgen

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace eomgen {
 
@@ -22,5 +23,11 @@ std::optional<std::pair<std::size_t, std::size_t>> attribute_span(const std::str
 
 /// The value of attribute `name` in the tag [start, end), or nothing.
 std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name);
+
+/// `text` with `attributes` (` name="value"`, each with a space in front) in the <compiler> of its
+/// <mujoco>: added to the compiler there, or in a <compiler> put first in <mujoco>, or for a URDF
+/// without one in a <mujoco><compiler/></mujoco> put first in <robot>. Unchanged when that compiler
+/// sets one of `names` itself, or there is no place for them (an empty root element).
+std::string with_compiler_attributes(const std::string& text, const std::string& attributes, const std::vector<std::string>& names);
 
 }  // namespace eomgen

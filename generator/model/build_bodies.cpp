@@ -146,9 +146,10 @@ GiNaC::matrix ModelBuilder::inertia(const RigidBodyEntry& b) {
     for (std::size_t i = 0; i < 3; ++i) {
       I(i, i) = moments[i];
       auto v = constant_value(moments[i], m_.symbols);
-      if (v && *v < 0)
+      if (v && *v < 0 && !b.unphysical_inertia)
         d_.error(b.principal_inertia[i].where, b.principal_inertia[i].key,
-                 fmt::format("the principal moment is {} with the default parameters; it must not be negative", *v));
+                 fmt::format("the principal moment is {} with the default parameters; it must not be negative", *v),
+                 "a robot file's values that are meant as they stand: unphysical_inertia = true");
     }
   } else if (b.inertia.size() == 3) {
     for (std::size_t i = 0; i < 3; ++i) {
@@ -185,7 +186,7 @@ void ModelBuilder::check_realizable(const GiNaC::matrix& I, const RigidBodyEntry
                     minor2(0, 2) >= -tol * scale && minor2(1, 2) >= -tol * scale && det >= -tol * scale * scale;
   // [0, 0, Izz]: the shorthand of planar models, where only one moment ever acts
   int zero_moments = (v[0][0] == 0) + (v[1][1] == 0) + (v[2][2] == 0);
-  if (realizable || (!b.principal_inertia.empty() && zero_moments == 2)) return;
+  if (realizable || b.unphysical_inertia || (!b.principal_inertia.empty() && zero_moments == 2)) return;
   const ExpressionText& at = b.principal_inertia.empty() ? b.inertia[0][0] : b.principal_inertia[0];
   std::string what = b.principal_inertia.empty()
                          ? "its principal moments"
@@ -194,7 +195,7 @@ void ModelBuilder::check_realizable(const GiNaC::matrix& I, const RigidBodyEntry
            fmt::format("no rigid body has this inertia: {} break the triangle inequality (each principal moment is at "
                        "most the sum of the other two) with the default parameters", what),
            "check the axes and the values; a planar model that only needs Izz can give a thin plate's moments, "
-           "[Izz/2, Izz/2, Izz]");
+           "[Izz/2, Izz/2, Izz]; a robot file's values that are meant as they stand: unphysical_inertia = true");
 }
 
 }  // namespace eomgen

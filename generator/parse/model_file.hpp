@@ -80,6 +80,10 @@ struct RigidBodyEntry {
   std::vector<ExpressionText> principal_inertia;    // three moments, or empty
   std::vector<std::vector<ExpressionText>> inertia; // 3×3 body-frame tensor, or empty
   std::optional<ExpressionText> inertia_name;       // when the tensor is a matrix definition
+  /// unphysical_inertia = true: an inertia that breaks the triangle inequality, or has a negative
+  /// principal moment, is taken as given (a robot file's values, as `eomgen import` writes them)
+  /// instead of refused as a mistake
+  bool unphysical_inertia = false;
   std::vector<ShapeEntry> shapes;
   SourceLocation where;
   std::string key;

@@ -139,7 +139,7 @@ void read_rigid_bodies(Reader& r, const toml::node& node, ModelFile& m) {
     std::string key = fmt::format("rigid_bodies[{}]", i);
     const toml::table* t = r.table((*a)[i], key, "name, mass, center, rotation, inertia, frame");
     if (!t) continue;
-    r.check_keys(*t, key, {"name", "mass", "center", "rotation", "inertia", "frame", "shape"});
+    r.check_keys(*t, key, {"name", "mass", "center", "rotation", "inertia", "frame", "shape", "unphysical_inertia"});
     RigidBodyEntry b;
     b.key = key;
     b.where = r.at((*a)[i]);
@@ -155,6 +155,7 @@ void read_rigid_bodies(Reader& r, const toml::node& node, ModelFile& m) {
     if (const toml::node* n = t->get("rotation")) b.rotation = read_rotation(r, *n, key + ".rotation");
     if (const toml::node* n = t->get("inertia")) read_inertia(r, *n, key + ".inertia", b);
     else r.error(b.where, key, "missing key 'inertia'", "add inertia = [\"A\", \"B\", \"C\"] (principal moments)");
+    if (const toml::node* n = t->get("unphysical_inertia")) r.boolean(*n, key + ".unphysical_inertia", b.unphysical_inertia);
     m.rigid_bodies.push_back(b);
   }
 }

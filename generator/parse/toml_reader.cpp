@@ -65,6 +65,16 @@ bool Reader::string(const toml::node& node, const std::string& key, std::string&
   return false;
 }
 
+bool Reader::boolean(const toml::node& node, const std::string& key, bool& out) {
+  if (const auto* b = node.as_boolean()) {
+    out = b->get();
+    return true;
+  }
+  error(at(node), key, fmt::format("expected true or false, got {}", type_name(node)),
+        node.is_string() ? "write true or false without quotes" : "");
+  return false;
+}
+
 bool Reader::number(const toml::node& node, const std::string& key, double& out) {
   if (auto v = node.value<double>(); v && (node.is_integer() || node.is_floating_point())) {
     if (!std::isfinite(*v)) {

@@ -36,6 +36,7 @@ class Reader {
   const toml::array* array(const toml::node& node, const std::string& key, const char* what);
   bool string(const toml::node& node, const std::string& key, std::string& out);
   bool number(const toml::node& node, const std::string& key, double& out);
+  bool boolean(const toml::node& node, const std::string& key, bool& out);
 
   /// An expression: a string, or a number written as such.
   bool expression(const toml::node& node, const std::string& key, ExpressionText& out);

@@ -242,9 +242,9 @@ TEST(UrdfImport, MeshesThatCannotBeReadAreLeftOutAndNamed) {
   rest.erase(at, rest.find('\n', at) + 1 - at);
   rest.replace(rest.find("meshed_arm.urdf"), 15, "plain_arm.urdf");
   EXPECT_EQ(rest, *plain_text) << "the same model but for the note";
-  // what stops the file without its meshes is said of it: here an inertia that no body has (A + B < C)
+  // what stops the file without its meshes is said of it: here a joint axis of length zero
   std::string impossible = meshed;
-  impossible.replace(impossible.find("izz=\"0.001\"/></inertial>\n  </link>\n  <link name=\"tool0\"/>"), 11, "izz=\"0.05\"");
+  impossible.replace(impossible.find("<axis xyz=\"0 1 0\"/>"), 19, "<axis xyz=\"0 0 0\"/>");
   std::ofstream(path) << impossible;
   Diagnostics refused;
   EXPECT_FALSE(imported_model_text(path, refused, false));

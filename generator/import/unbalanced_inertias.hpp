@@ -1,0 +1,41 @@
+/// @file Inertias that break the triangle inequality of principal moments, A + B ≥ C. A rigid body's
+/// cannot, yet URDF files often carry such values (a dummy link's `ixx = ixy = … = 1e-6`, rounded
+/// CAD output), and URDF readers such as Pinocchio's take them as written. MuJoCo's compiler refuses
+/// them ("inertia must satisfy A + B >= C"); with its `balanceinertia` it replaces each by the mean
+/// of its three moments, which changes the dynamics. So a URDF it refuses is read again with
+/// `balanceinertia`, and each body MuJoCo balanced is given back the inertia its link's <inertial>
+/// states.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "import/robot.hpp"
+
+namespace eomgen {
+
+/// Whether MuJoCo's message is its refusal of an inertia with A + B < C.
+bool refuses_unbalanced_inertia(const std::string& mujoco_error);
+
+/// The URDF's text with its compiler's balanceinertia on (unchanged when it sets it itself).
+std::string with_balanced_inertias(const std::string& urdf);
+
+/// A link's inertia about its centre of mass as its <inertial> states it, in the link's frame:
+/// principal moments and the quaternion of their axes (MuJoCo's body_inertia and body_iquat).
+struct LinkInertia {
+  std::string link;
+  double mass = 0;
+  Triple principal{0, 0, 0};
+  Quaternion axes{1, 0, 0, 0};
+  bool unbalanced = false;  // A + B < C for some order of the moments, or a moment below zero
+};
+
+/// Every link of the URDF text with an <inertial> and an <inertia>, in the file's order.
+std::vector<LinkInertia> urdf_link_inertias(const std::string& urdf);
+
+/// The bodies whose three principal moments MuJoCo made equal take their link's inertia from the
+/// URDF text, where the body is that link alone (its mass is the link's); the names of those whose
+/// stated inertia breaks A + B ≥ C.
+std::vector<std::string> with_stated_inertias(std::vector<RobotBody>& bodies, const std::string& urdf);
+
+}  // namespace eomgen
