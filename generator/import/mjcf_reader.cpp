@@ -308,32 +308,29 @@ void read_mimics(const mjModel* m, const std::string& urdf, Robot& r) {
   }
 }
 
+// the first four names, quoted, and how many more
+std::string listed(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t k = 0; k < names.size() && k < 4; ++k) text += (k ? ", '" : "'") + names[k] + "'";
+  if (names.size() > 4) text += fmt::format(" and {} more", names.size() - 4);
+  return text;
+}
+
 // a URDF read with balanceinertia: each body MuJoCo balanced given back its link's inertia, with a
-// warning naming the links whose inertia no rigid body has, and one for those left balanced
+// warning naming the links whose inertia no rigid body has, and one for those left balanced (fused)
 void note_stated_inertias(const std::string& urdf, Robot& r) {
-  std::vector<std::string> given_back = with_stated_inertias(r.bodies, urdf), kept;
-  // a link not given back is one MuJoCo fused into another body (or one it did not balance, by rounding)
-  for (const LinkInertia& l : urdf_link_inertias(urdf)) {
-    auto alone = std::find_if(r.bodies.begin(), r.bodies.end(), [&](const RobotBody& b) { return b.name == l.link && b.mass == l.mass; });
-    if (l.unbalanced && alone == r.bodies.end()) kept.push_back(l.link);
-  }
-  auto listed = [](const std::vector<std::string>& names) {
-    std::string text;
-    for (std::size_t k = 0; k < names.size() && k < 4; ++k) text += (k ? ", '" : "'") + names[k] + "'";
-    if (names.size() > 4) text += fmt::format(" and {} more", names.size() - 4);
-    return text;
-  };
-  if (!given_back.empty())
+  StatedInertias stated = with_stated_inertias(r.bodies, urdf);
+  if (!stated.given_back.empty())
     r.warnings.push_back({fmt::format("{} link(s) whose <inertia> no rigid body has ({}: a principal moment above the sum of "
                                       "the other two, or below zero), which MuJoCo {} refuses: taken as the file states it, "
                                       "as URDF readers do",
-                                      given_back.size(), listed(given_back), mj_version_text()),
-                          "link", given_back[0], 0});
-  if (!kept.empty())
+                                      stated.given_back.size(), listed(stated.given_back), mj_version_text()),
+                          "link", stated.given_back[0], 0});
+  if (!stated.left_balanced.empty())
     r.warnings.push_back({fmt::format("{} link(s) whose <inertia> no rigid body has ({}) are fused with other links by MuJoCo {}: "
                                       "their body's principal moments are MuJoCo's balanced ones (their mean), not the file's",
-                                      kept.size(), listed(kept), mj_version_text()),
-                          "link", kept[0], 0});
+                                      stated.left_balanced.size(), listed(stated.left_balanced), mj_version_text()),
+                          "link", stated.left_balanced[0], 0});
 }
 
 }  // namespace
@@ -375,12 +372,9 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
   }
   if (left_out.mass_bounds) {
     std::vector<std::string> massless = without_mass_bounds(r.bodies);
-    std::string names;
-    for (std::size_t k = 0; k < massless.size() && k < 4; ++k) names += (k ? ", '" : "'") + massless[k] + "'";
-    if (massless.size() > 4) names += fmt::format(" and {} more", massless.size() - 4);
     r.notes.push_back(fmt::format("{} moving body(ies) without mass or inertia ({}), which MuJoCo {} refuses: read with its "
                                   "compiler's mass bounds, then taken back to zero",
-                                  massless.size(), names, mj_version_text()));
+                                  massless.size(), listed(massless), mj_version_text()));
   }
   if (left_out.balanced_inertias) note_stated_inertias(urdf, r);
   // the geoms MuJoCo's viewer shows by default (groups 0 to 2), for the animation

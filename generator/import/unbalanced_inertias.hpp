@@ -33,9 +33,14 @@ struct LinkInertia {
 /// Every link of the URDF text with an <inertial> and an <inertia>, in the file's order.
 std::vector<LinkInertia> urdf_link_inertias(const std::string& urdf);
 
-/// The bodies whose three principal moments MuJoCo made equal take their link's inertia from the
-/// URDF text, where the body is that link alone (its mass is the link's); the names of those whose
-/// stated inertia breaks A + B ≥ C.
-std::vector<std::string> with_stated_inertias(std::vector<RobotBody>& bodies, const std::string& urdf);
+/// The links of the URDF text whose inertia no rigid body has: given back as stated, and left with
+/// MuJoCo's balanced moments (fused into another body).
+struct StatedInertias {
+  std::vector<std::string> given_back, left_balanced;
+};
+
+/// Each body that is one link of the URDF text alone (its mass is the link's) and whose three
+/// principal moments MuJoCo made equal takes that link's inertia from the text.
+StatedInertias with_stated_inertias(std::vector<RobotBody>& bodies, const std::string& urdf);
 
 }  // namespace eomgen
