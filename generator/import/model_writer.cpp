@@ -290,6 +290,14 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
     return std::nullopt;
   }
   const Robot& robot = std::get<Robot>(read);
+  // a robot that nothing moves has no equations of motion: said here, not as an empty [coordinates]
+  if (std::all_of(robot.bodies.begin(), robot.bodies.end(), [](const RobotBody& b) { return b.joints.empty(); })) {
+    diagnostics.error({path, 1, 1}, "", "no joint of the robot moves: it has no coordinates and no equations of motion",
+                      is_urdf_path(path) ? "a URDF's revolute, continuous, prismatic, planar and floating joints move; "
+                                           "fixed ones do not"
+                                         : "an MJCF body moves by a <joint> or <freejoint> in it");
+    return std::nullopt;
+  }
   std::string file = std::filesystem::path(path).filename().string();
   if (in_memory)
     std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);

@@ -251,5 +251,18 @@ TEST(UrdfImport, MeshesThatCannotBeReadAreLeftOutAndNamed) {
   EXPECT_NE(refused.format().find("(read without its 2 mesh(es), which MuJoCo could not read)"), std::string::npos) << refused.format();
 }
 
+// a robot whose joints are all fixed has nothing to move: the import says so, and writes nothing
+TEST(UrdfImport, ARobotThatNothingMovesIsRefused) {
+  std::string path = temporary_directory() + "/bolted.urdf";
+  std::ofstream(path) << "<robot name=\"bolted\">\n  <link name=\"base\"/>\n  <link name=\"sensor\">\n"
+                         "    <inertial><mass value=\"0.3\"/><inertia ixx=\"1e-4\" ixy=\"0\" ixz=\"0\" iyy=\"1e-4\" iyz=\"0\" izz=\"1e-4\"/></inertial>\n"
+                         "  </link>\n  <joint name=\"mount\" type=\"fixed\">\n    <parent link=\"base\"/>\n    <child link=\"sensor\"/>\n"
+                         "  </joint>\n</robot>\n";
+  Diagnostics diagnostics;
+  EXPECT_FALSE(imported_model_text(path, diagnostics, false));
+  EXPECT_NE(diagnostics.format().find("no joint of the robot moves"), std::string::npos) << diagnostics.format();
+  EXPECT_NE(diagnostics.format().find("fixed ones do not"), std::string::npos) << diagnostics.format();
+}
+
 }  // namespace
 }  // namespace eomgen::test
