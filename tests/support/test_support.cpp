@@ -162,11 +162,13 @@ std::string with_kinematics(std::string model_text, const std::string& kinematic
   return model_text.replace(at, 10, kinematics);
 }
 
-std::string write_model(const std::string& name, const std::string& text) {
-  std::string path = temporary_directory() + "/" + name + ".toml";
+std::string write_file(const std::string& file_name, const std::string& text) {
+  std::string path = temporary_directory() + "/" + file_name;
   std::ofstream(path) << text;
   return path;
 }
+
+std::string write_model(const std::string& name, const std::string& text) { return write_file(name + ".toml", text); }
 
 CommandOutput run_eomgen(const std::string& arguments) {
   std::string scratch = temporary_directory();

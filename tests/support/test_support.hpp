@@ -59,6 +59,9 @@ std::string temporary_directory();
 /// kinematics with the expanded derivation write one model for both.
 std::string with_kinematics(std::string model_text, const std::string& kinematics);
 
+/// Writes `text` as the file FILE_NAME (a robot's `arm.urdf`) into a fresh temporary directory; its path.
+std::string write_file(const std::string& file_name, const std::string& text);
+
 /// Writes `text` as the model file NAME.toml into a fresh temporary directory; its path.
 std::string write_model(const std::string& name, const std::string& text);
 

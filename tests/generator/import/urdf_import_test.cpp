@@ -253,11 +253,10 @@ TEST(UrdfImport, MeshesThatCannotBeReadAreLeftOutAndNamed) {
 
 // a robot whose joints are all fixed has nothing to move: the import says so, and writes nothing
 TEST(UrdfImport, ARobotThatNothingMovesIsRefused) {
-  std::string path = temporary_directory() + "/bolted.urdf";
-  std::ofstream(path) << "<robot name=\"bolted\">\n  <link name=\"base\"/>\n  <link name=\"sensor\">\n"
+  std::string path = write_file("bolted.urdf", "<robot name=\"bolted\">\n  <link name=\"base\"/>\n  <link name=\"sensor\">\n"
                          "    <inertial><mass value=\"0.3\"/><inertia ixx=\"1e-4\" ixy=\"0\" ixz=\"0\" iyy=\"1e-4\" iyz=\"0\" izz=\"1e-4\"/></inertial>\n"
                          "  </link>\n  <joint name=\"mount\" type=\"fixed\">\n    <parent link=\"base\"/>\n    <child link=\"sensor\"/>\n"
-                         "  </joint>\n</robot>\n";
+                         "  </joint>\n</robot>\n");
   Diagnostics diagnostics;
   EXPECT_FALSE(imported_model_text(path, diagnostics, false));
   EXPECT_NE(diagnostics.format().find("no joint of the robot moves"), std::string::npos) << diagnostics.format();
