@@ -1,7 +1,6 @@
 #include "spatial/joint_tree_derivatives.hpp"
 
 #include <optional>
-#include <set>
 
 #include <fmt/format.h>
 
@@ -15,13 +14,17 @@ using GiNaC::ex;
 
 namespace {
 
-// The loops run as fast as straight-line code or faster beyond 8 joints: jacobian_state, g++ -O2
+// The loops run as fast as straight-line code or faster beyond 8 velocities: jacobian_state, g++ -O2
 // -march=native, the fastest of 93 batches, the two forms' headers timed in turn: trees of oblique
 // hinges in tests/benchmarks/robot_models.py's branching, 9 joints 2.67 µs against 2.93, 13 joints
 // 4.58 against 4.82, 21 joints 8.5 against 9.8; the 7-joint arm, whose axes and ±90° turns
 // straight-line code folds, 1.99 against 1.47. Their header is smaller at every size (the 21
-// joints' 558 KB against 1089 KB).
-constexpr std::size_t loops_beyond_joints = 8;
+// joints' 558 KB against 1089 KB). Joints that follow another's coordinate add links but no
+// velocities, and the straight-line sums fold them: Pinocchio's panda.urdf (9 joints, its second
+// finger a follower: 8 velocities) 2.0 µs against the loops' 2.9, tests/crosscheck's gantry hand
+// with its fingers' outer joints followers (11 joints, 5 velocities) 3.8 rhs against 4.5. So the
+// crossover counts velocities.
+constexpr std::size_t loops_beyond_velocities = 8;
 
 class Gradient {
  public:
@@ -212,15 +215,12 @@ class Gradient {
     return in;
   }
 
-  // every joint a hinge or a slide with a velocity of its own (the loops' formulas; joints that
-  // follow another's coordinate keep the straight-line sums), or none (a fixed link)
+  // every joint a hinge or a slide (the loops' formulas), or none (a fixed link); a joint that
+  // follows another's coordinate (URDF's mimic) is a hinge whose S carries its multiplier and whose
+  // rows and columns the loops add into its leader's, as pairs() does
   bool hinges_only() const {
-    std::set<int> velocities;
-    for (std::size_t j = 0; j < links_.size(); ++j) {
-      if (links_[j].columns.empty()) continue;
-      if (!is_hinge(j) || links_[j].directions.size() != 1 || !velocities.insert(links_[j].columns[0].velocity).second)
-        return false;
-    }
+    for (std::size_t j = 0; j < links_.size(); ++j)
+      if (!links_[j].columns.empty() && (!is_hinge(j) || links_[j].directions.size() != 1)) return false;
     return true;
   }
 
@@ -318,9 +318,7 @@ InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, 
                                             const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                             std::vector<Intermediate>& out) {
   Gradient g(links, out);
-  std::size_t joints = 0;
-  for (const TreeLink& l : links) joints += l.columns.empty() ? 0 : 1;
-  if (joints > loops_beyond_joints && g.hinges_only()) {
+  if (velocities > loops_beyond_velocities && g.hinges_only()) {
     InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
                                  GiNaC::matrix(unsigned(velocities), unsigned(velocities)), g.loop_inputs(gravity)};
     return zero;

@@ -106,8 +106,9 @@ struct BodiesGradient {
 /// The derivatives above, of τ at the accelerations `ddq`, for the tree's velocities and
 /// coordinates (links parents first); their quantities are appended to `out` as intermediates.
 /// Straight-line code for them grows with the tree's pairs of joints, loops do not: a tree of
-/// more than 8 joints (the measured crossover, in joint_tree_derivatives.cpp), each a hinge or a
-/// slide with a velocity of its own, gets the loops' inputs instead (InverseDynamicsGradient::loops).
+/// more than 8 velocities (the measured crossover, in joint_tree_derivatives.cpp) whose joints
+/// are hinges and slides, those that follow another's coordinate too, gets the loops' inputs
+/// instead (InverseDynamicsGradient::loops).
 InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                             const std::vector<GiNaC::ex>& ddq, std::size_t velocities,
                                             std::size_t coordinates, std::vector<Intermediate>& out);

@@ -5,6 +5,8 @@
 // condition number near 1e4): each entry to 1e-12 of its row's largest. The 21-joint tree's and
 // the 11-joint gantry hand's gradients (a slide and a fixed link among its links) are the loops of
 // detail::hinge_tree_gradient (spatial/joint_tree_derivatives.hpp), the arm's straight-line code.
+// The coupled hand is the gantry hand whose fingers' outer joints follow their first (mimic
+// joints): its loops add each follower's rows and columns into its leader's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "branched_tree.hpp"
+#include "coupled_hand.hpp"
 #include "gantry_hand.hpp"
 #include "seven_joint_arm.hpp"
 
@@ -60,6 +63,10 @@ double worst_against_complex_step(std::size_t states, std::size_t inputs, std::v
 TEST(RobotJacobians, TheTreesLoopsAreTheComplexStepDerivative) {
   EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(branched_tree);
   EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(gantry_hand);
+}
+
+TEST(RobotJacobians, TheLoopsOfJointsThatFollowACoordinateAreTheComplexStepDerivative) {
+  EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(coupled_hand);
 }
 
 TEST(RobotJacobians, TheArmsStraightLineCodeIsTheComplexStepDerivative) { EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(seven_joint_arm); }

@@ -250,8 +250,9 @@ std::string hinge_chain(int hinges, bool ball) {
          "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
 }
 
-// beyond 8 joints a tree of hinges and slides takes the loops (the measured crossover); a ball
-// joint keeps the straight-line closed form, whose formulas have its several columns
+// beyond 8 velocities a tree of hinges and slides takes the loops (the measured crossover), with
+// joints that follow another's coordinate among them; a ball joint keeps the straight-line closed
+// form, whose formulas have its several columns
 TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   EXPECT_FALSE(derive_text(hinge_chain(8, false)).gradient_loops());
   Equations nine = derive_text(hinge_chain(9, false));
@@ -263,6 +264,16 @@ TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   Derivation hand = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/gantry_hand.toml");
   ASSERT_TRUE(hand.equations) << hand.diagnostics.format();
   EXPECT_TRUE(hand.equations->gradient_loops()) << "a slide and a fixed link among 11 joints";
+  // nine hinges, the last following the eighth's coordinate: 8 velocities, straight-line sums
+  std::string follower = hinge_chain(9, false);
+  follower.replace(follower.find("a8 = 0.9\n"), 9, "");
+  follower.replace(follower.find("coordinate = \"a8\""), 17, "coordinate = \"a7\", multiplier = -2");
+  EXPECT_FALSE(derive_text(follower).gradient_loops()) << follower;
+  // 11 joints, 9 velocities, two distal hinges following their middle ones: into their leaders'
+  Derivation coupled = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/coupled_hand.toml");
+  ASSERT_TRUE(coupled.equations) << coupled.diagnostics.format();
+  ASSERT_TRUE(coupled.equations->gradient_loops());
+  EXPECT_EQ(coupled.equations->gradient_loops()->velocity, (std::vector<int>{0, 1, -1, 2, 3, 3, 4, 5, 5, 6, 7, 8}));
 }
 
 }  // namespace
