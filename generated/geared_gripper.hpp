@@ -162,30 +162,51 @@ inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
 }
 #endif
 
-/// M = L D L^T for the symmetric positive definite 3x3 mass matrix, unrolled.
-/// M, L: 3x3, row-major (L unit lower triangular, only below the diagonal written); D: 3.
+/// M = L^T D L for the symmetric positive definite 3x3 mass matrix of a tree, factored from
+/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j above i in the
+/// tree (or in the chain that joints following another's coordinate make), so nothing fills
+/// in beyond it. M, L: 3x3, row-major (L unit lower triangular, only those entries
+/// written); D: 3.
 template <class T>
 inline void ldlt_factor(const T* M, T* L, T* D) {
   (void)L;
   D[0] = M[0];
-  L[3] = (M[3])/D[0];
-  L[6] = (M[6])/D[0];
-  D[1] = M[4] - L[3]*L[3]*D[0];
-  L[7] = (M[7] - L[6]*L[3]*D[0])/D[1];
-  D[2] = M[8] - L[6]*L[6]*D[0] - L[7]*L[7]*D[1];
+  D[1] = M[4];
+  L[3] = M[3];
+  D[2] = M[8];
+  L[7] = M[7];
+  L[6] = M[6];
+  {
+    const T a = L[7]/D[2];
+    D[1] = D[1] - a*L[7];
+    L[3] = L[3] - a*L[6];
+    L[7] = a;
+  }
+  {
+    const T a = L[6]/D[2];
+    D[0] = D[0] - a*L[6];
+    L[6] = a;
+  }
+  {
+    const T a = L[3]/D[1];
+    D[0] = D[0] - a*L[3];
+    L[3] = a;
+  }
 }
 
-/// Solves L D L^T x = b in place. b: 3.
+/// Solves L^T D L x = b in place. b: 3.
 template <class T>
 inline void ldlt_solve(const T* L, const T* D, T* b) {
   (void)L;
-  b[1] = b[1] - L[3]*b[0];
-  b[2] = b[2] - L[6]*b[0] - L[7]*b[1];
+  b[1] = b[1] - L[7]*b[2];
+  b[0] = b[0] - L[6]*b[2];
+  b[0] = b[0] - L[3]*b[1];
   b[0] = b[0]/D[0];
   b[1] = b[1]/D[1];
   b[2] = b[2]/D[2];
-  b[1] = b[1] - L[7]*b[2];
-  b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
+  b[1] = b[1] - L[3]*b[0];
+  b[2] = b[2] - L[7]*b[1];
+  b[2] = b[2] - L[6]*b[0];
 }
 
 /// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
@@ -195,24 +216,24 @@ template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
-    const T l0 = L[3];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    const T l0 = L[7];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
   }
   {
-    const T l0 = L[6], l1 = L[7];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+    const T l0 = L[6], l1 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[2*m + c] - l1*B[1*m + c];
   }
   for (std::size_t i = 0; i < 3; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
     for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
-    const T l0 = L[7];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+    const T l0 = L[3];
+    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
   }
   {
-    const T l0 = L[3], l1 = L[6];
-    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+    const T l0 = L[7], l1 = L[6];
+    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
   }
 }
 

@@ -163,9 +163,10 @@ inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
 #endif
 
 /// M = L^T D L for the symmetric positive definite 5x5 mass matrix of a tree, factored from
-/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j whose joint carries
-/// i's, so nothing fills in. M, L: 5x5, row-major (L unit lower triangular, only those
-/// entries written); D: 5.
+/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j above i in the
+/// tree (or in the chain that joints following another's coordinate make), so nothing fills
+/// in beyond it. M, L: 5x5, row-major (L unit lower triangular, only those entries
+/// written); D: 5.
 template <class T>
 inline void ldlt_factor(const T* M, T* L, T* D) {
   (void)L;

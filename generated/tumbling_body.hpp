@@ -81,9 +81,10 @@ template <class T>
 using input_t = typename input_type<T>::type;
 
 /// M = L^T D L for the symmetric positive definite 6x6 mass matrix of a tree, factored from
-/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j whose joint carries
-/// i's, so nothing fills in. M, L: 6x6, row-major (L unit lower triangular, only those
-/// entries written); D: 6.
+/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j above i in the
+/// tree (or in the chain that joints following another's coordinate make), so nothing fills
+/// in beyond it. M, L: 6x6, row-major (L unit lower triangular, only those entries
+/// written); D: 6.
 template <class T>
 inline void ldlt_factor(const T* M, T* L, T* D) {
   (void)L;

@@ -112,10 +112,11 @@ struct Equations {
   std::optional<ArticulatedForwardDynamics> articulated;
   /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
   void solve_by_mass_matrix() { articulated.reset(); }
-  /// A tree of joints (spatial/joint_tree_dynamics.hpp): for each coordinate, the coordinate of the
-  /// nearest joint above its own (−1 at a root), when every one is above those it carries; M_ij
-  /// is then zero unless one of i, j is above the other, and the header factors M from the leaves
-  /// without fill-in (emit/cpp_ldlt.hpp). Empty otherwise.
+  /// A tree of joints (spatial/joint_tree_dynamics.hpp): for each coordinate, the one above it
+  /// (−1 at a root): for a tree numbered parents first, the coordinate of the nearest joint above
+  /// its own; with joints that follow another's coordinate, or another numbering, the one that the
+  /// factorization's fill-in puts there. M_ij is zero unless one of i, j is above the other, and
+  /// the header factors M from the leaves (emit/cpp_ldlt.hpp). Empty otherwise.
   std::vector<int> coordinate_parents;
   /// Ball and free joints: the coordinates w, x, y, z of each unit quaternion, whose length the
   /// motion keeps (a zero eigenvalue of every linearization, not a property of the system).

@@ -178,9 +178,10 @@ std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
     LdltCode ldlt = tree_ldlt_code(tree);
     return fmt::format(
                "/// M = L^T D L for the symmetric positive definite {0}x{0} mass matrix of a tree, factored from\n"
-               "/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j whose joint carries\n"
-               "/// i's, so nothing fills in. M, L: {0}x{0}, row-major (L unit lower triangular, only those\n"
-               "/// entries written); D: {0}.\n", n) +
+               "/// the leaves (Featherstone's LTDL): L_ij is nonzero only for a coordinate j above i in the\n"
+               "/// tree (or in the chain that joints following another's coordinate make), so nothing fills\n"
+               "/// in beyond it. M, L: {0}x{0}, row-major (L unit lower triangular, only those entries\n"
+               "/// written); D: {0}.\n", n) +
            fmt::format(fmt::runtime(functions), n, ldlt.factor, "L^T D L", ldlt.solve, ldlt.solve_rows);
   }
   LdltCode ldlt = ldlt_code(n);

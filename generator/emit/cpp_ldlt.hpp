@@ -26,9 +26,10 @@ LdltCode ldlt_code(std::size_t n);
 
 /// For the M of a tree (Featherstone's LTDL, RBDA §6.5): with parent[i] < i the coordinate above
 /// i (−1 at a root) and M_ij = 0 unless one of i, j is above the other, M = Lᵀ D L factored from
-/// the leaves, which fills in nothing: L_ij ≠ 0 only for j above i, O(n·depth) operations where
-/// the dense factor takes n³/6. The same functions: ldlt_factor writes L and D, ldlt_solve
-/// solves Lᵀ D L x = b (from the leaves up, scaled, then down).
+/// the leaves: L_ij ≠ 0 only for j above i, O(n·depth) operations where the dense factor takes
+/// n³/6. Eliminating k changes only entries between coordinates above k, so whatever fills in
+/// stays on the chains (zeros of M there are allowed). The same functions: ldlt_factor writes L
+/// and D, ldlt_solve solves Lᵀ D L x = b (from the leaves up, scaled, then down).
 LdltCode tree_ldlt_code(const std::vector<int>& parent);
 
 /// The two functions, documented, for the n×n M of `e`: the tree's factorization when

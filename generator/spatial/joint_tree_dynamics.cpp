@@ -437,29 +437,46 @@ class Tree {
   std::vector<Vector3> carried_;  // the parent's ω in the link's coordinates
 };
 
-// for each velocity, the one above it: the one before it in its own joint, or the last of the
-// nearest joint above that has any; empty unless every one is above (numbered before) those it carries
-// and drives one joint (M of joints that follow another's coordinate is not a tree's)
-std::vector<int> velocity_parents(const Model& model, const JointVelocities& v) {
-  std::vector<int> parents(v.symbols.size(), -1), last(model.frame_links.size(), -1);
-  std::vector<bool> driving(v.symbols.size(), false);
+// the velocities that drive each link's joint: a hinge's or slide's coordinate's (that of a
+// joint that follows it too), a free joint's position's and a ball's or free joint's angular ones
+std::vector<std::vector<int>> driving_velocities(const Model& model, const JointVelocities& v) {
+  std::vector<std::vector<int>> driving(model.frame_links.size());
   for (std::size_t i = 0; i < model.frame_links.size(); ++i) {
     const FrameLink& l = model.frame_links[i];
-    std::vector<int> own;
-    if (l.joint->coordinate >= 0) own.push_back(v.of_coordinate[std::size_t(l.joint->coordinate)]);
+    if (l.joint->coordinate >= 0) driving[i].push_back(v.of_coordinate[std::size_t(l.joint->coordinate)]);
     if (l.joint->type == FrameLink::Joint::Type::free)
-      for (int k : l.joint->position) own.push_back(v.of_coordinate[std::size_t(k)]);
+      for (int k : l.joint->position) driving[i].push_back(v.of_coordinate[std::size_t(k)]);
     for (std::size_t k = 0; k < l.joint->angular_velocity.size(); ++k)
       for (std::size_t s = 0; s < v.symbols.size(); ++s)
-        if (v.symbols[s] == l.joint->angular_velocity[k]) own.push_back(int(s));
-    int above = l.parent < 0 ? -1 : last[std::size_t(l.parent)];
-    for (int s : own) {
-      if (above >= s || driving[std::size_t(s)]) return {};
-      driving[std::size_t(s)] = true;
-      parents[std::size_t(s)] = above;
-      above = s;
-    }
-    last[i] = above;
+        if (v.symbols[s] == l.joint->angular_velocity[k]) driving[i].push_back(int(s));
+  }
+  return driving;
+}
+
+// For each velocity k, the one the factorization of M from the leaves (emit/cpp_ldlt.hpp) treats
+// as above it: M_jk can be nonzero only when a joint that j drives carries one that k drives (or
+// is it); eliminating k, from the last, couples the others of row k among themselves. So the
+// nearest of them, p, is k's parent, and the rest join row p; then every nonzero left of k's
+// diagonal, filled in or not, is on k's chain of parents. For a tree numbered parents first whose
+// every velocity drives one joint this is the nearest velocity above, with no fill-in; joints that
+// follow another's coordinate (URDF's mimic) and numberings that are not parents first fill in
+// only what they couple.
+std::vector<int> velocity_parents(const Model& model, const JointVelocities& v) {
+  std::size_t n = v.symbols.size();
+  std::vector<std::vector<int>> driving = driving_velocities(model, v);
+  std::vector<std::vector<bool>> coupled(n, std::vector<bool>(n, false));
+  for (std::size_t b = 0; b < driving.size(); ++b)
+    for (int a = int(b); a >= 0; a = model.frame_links[std::size_t(a)].parent)
+      for (int j : driving[std::size_t(a)])
+        for (int k : driving[b]) coupled[std::size_t(j)][std::size_t(k)] = coupled[std::size_t(k)][std::size_t(j)] = true;
+  std::vector<int> parents(n, -1);
+  for (std::size_t k = n; k-- > 0;) {
+    int p = -1;
+    for (std::size_t j = 0; j < k; ++j)
+      if (coupled[k][j]) p = int(j);
+    parents[k] = p;
+    for (std::size_t j = 0; p >= 0 && j < std::size_t(p); ++j)
+      if (coupled[k][j]) coupled[std::size_t(p)][j] = coupled[j][std::size_t(p)] = true;
   }
   return parents;
 }

@@ -1,6 +1,6 @@
 // The generated factorization and solves of the mass matrix (emit/cpp_ldlt): dense and unrolled,
 // dense in loops, and a tree's from the leaves, each compiled and run on a random symmetric
-// positive definite M of its shape; ldlt_solve and ldlt_solve_rows must solve M x = b to rounding,
+// positive definite M of its shape (the tree's also with zeros on its chains that fill in); ldlt_solve and ldlt_solve_rows must solve M x = b to rounding,
 // and ldlt_solve_rows<m, true> give exactly −x (jacobian_state's rows are ∂τ/∂x, solved negated).
 #include <gtest/gtest.h>
 
@@ -80,6 +80,16 @@ int main() {
                     loops::ldlt_solve_rows<7, true, double>);
   failures += check("tree", TREE_SIZE, in_tree, tree::ldlt_factor<double>, tree::ldlt_solve<double>, tree::ldlt_solve_rows<7, false, double>,
                     tree::ldlt_solve_rows<7, true, double>);
+  // zeros on the chains, which the factorization from the leaves fills in (the parents that
+  // joints following another's coordinate or a numbering not parents first give)
+  auto filled_in = [&](int i, int j) {
+    const int zero[][2] = {{1, 0}, {2, 0}, {4, 2}, {7, 3}, {10, 5}, {12, 0}};
+    for (const auto& z : zero)
+      if ((i == z[0] && j == z[1]) || (i == z[1] && j == z[0])) return false;
+    return in_tree(i, j);
+  };
+  failures += check("tree, filled in", TREE_SIZE, filled_in, tree::ldlt_factor<double>, tree::ldlt_solve<double>,
+                    tree::ldlt_solve_rows<7, false, double>, tree::ldlt_solve_rows<7, true, double>);
   return failures;
 }
 )cpp";

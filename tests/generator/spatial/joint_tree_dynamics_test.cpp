@@ -234,10 +234,18 @@ TEST(JointTree, JointsThatFollowACoordinateHaveTheExpandedDerivatives) {
   expect_expanded_derivatives(with_followers("recursive", true), with_followers("expanded", true), 2);
 }
 
-// their M is not a tree's (the arm's angle couples two branches): the header factors it densely
-TEST(JointTree, JointsThatFollowACoordinateFactorMDensely) {
-  EXPECT_TRUE(derive_text(with_followers("recursive", false)).coordinate_parents.empty());
-  EXPECT_FALSE(derive_text(with_kinematics(tree, "recursive")).coordinate_parents.empty());
+// the velocity above each in the factorization of M from the leaves (emit/cpp_ldlt.hpp): the tree's
+// (b and s on the base's a, c on the slide's s); when the hand's c also turns the arm, c couples
+// both branches and sits below s, itself below a; with the tree's a numbered last, eliminating a
+// couples b, s and c, and the fill-in makes one chain
+TEST(JointTree, TheFactorizationOfMFollowsTheTreeAndItsFillIn) {
+  EXPECT_EQ(derive_text(with_kinematics(tree, "recursive")).coordinate_parents, (std::vector<int>{-1, 0, 0, 2}));
+  EXPECT_EQ(derive_text(with_followers("recursive", false)).coordinate_parents, (std::vector<int>{-1, 0, 1}));
+  EXPECT_EQ(derive_text(with_followers("recursive", true)).coordinate_parents, (std::vector<int>{-1, 0}));
+  std::string last = with_kinematics(tree, "recursive");
+  last.erase(last.find("a = 0.3\n"), 8);
+  last.insert(last.find("c = 0.7\n") + 8, "a = 0.3\n");
+  EXPECT_EQ(derive_text(last).coordinate_parents, (std::vector<int>{-1, 0, 1, 2})) << last;
 }
 
 TEST(JointTree, FramesWithJointsAreATreeWithoutAnOption) {
