@@ -1,4 +1,4 @@
-// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME]: a robot description as a model file.
+// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME] [--free-base]: a robot description as a model file.
 #include <iostream>
 
 #include <fmt/format.h>
@@ -11,9 +11,9 @@ namespace eomgen::cli {
 
 namespace {
 
-int import_robot(const std::string& file, const std::string& output, const std::string& name) {
+int import_robot(const std::string& file, const std::string& output, const std::string& name, bool free_base) {
   Diagnostics diagnostics;
-  std::optional<std::string> text = imported_model_text(file, diagnostics, false, name);
+  std::optional<std::string> text = imported_model_text(file, diagnostics, false, name, free_base);
   if (report_diagnostics(diagnostics, file)) return exit_user_error;
   if (output.empty()) {
     std::cout << *text;
@@ -39,9 +39,13 @@ Command add_import_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", *output, "The model file to write (default: standard output)");
   cmd->add_option("--name", *name, "The model's name, a C++ identifier (default: the robot's, or the file's)");
-  return [cmd, file, output, name]() -> int {
+  auto free_base = std::make_shared<bool>(false);
+  cmd->add_flag("--free-base", *free_base,
+                "URDF: hang the root link from the world by a free joint (position, unit quaternion, angular velocity), "
+                "as a humanoid's or a quadruped's base floats; URDF fixes the root link to the world");
+  return [cmd, file, output, name, free_base]() -> int {
     if (!cmd->parsed()) return -1;
-    return import_robot(*file, *output, *name);
+    return import_robot(*file, *output, *name, *free_base);
   };
 }
 

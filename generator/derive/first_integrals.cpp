@@ -24,6 +24,17 @@ namespace {
 
 bool vanishes(const ex& e, const MotionSymbols& motion) { return tidy(e, motion).is_zero(); }
 
+// whether x has more than `limit` nodes (counting stops there)
+bool larger_than(const ex& x, std::size_t limit) {
+  std::size_t nodes = 0;
+  for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+    if (++nodes > limit) return true;
+  return false;
+}
+
+// the size up to which a first integral in pseudo-velocities is brought to its simplest form
+constexpr std::size_t simplified_up_to = 2000;
+
 // ∂x/∂v through the intermediates of recursive kinematics, which x may contain (chain rule, each
 // intermediate's derivative once, in their order); the intermediates stay in the result
 ex derivative_through(const ex& x, const GiNaC::symbol& v, const std::vector<Intermediate>& intermediates) {
@@ -130,13 +141,6 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
   return out;
 }
 
-// whether x has more than `limit` nodes (counting stops there)
-bool larger_than(const ex& x, std::size_t limit) {
-  std::size_t nodes = 0;
-  for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
-    if (++nodes > limit) return true;
-  return false;
-}
 
 // the row j of M whose product with the velocities is the momentum of coordinate k, at two states
 // to 1e-12 of the largest term, when q'_k is the velocity j itself and the momentum is long (a
@@ -176,8 +180,13 @@ std::vector<FirstIntegral> find_first_integrals(const Equations& e, const Mechan
   MotionSymbols motion = motion_symbols(e.symbols);
   GiNaC::exmap rates;  // q' = coordinate_rates(q, s, t) writes them in the state's variables
   for (std::size_t j = 0; e.uses_pseudo_velocities() && j < L.qdot.size(); ++j) rates[L.qdot[j]] = e.coordinate_rates[j];
+  // a long expression is left as the rates make it: brought to one fraction, a floating humanoid's
+  // (Talos, 38 velocities) momenta took over three minutes, and the header writes a long momentum
+  // as a row of M anyway (mass_matrix_row)
   auto in_state = [&](const ex& x) {
-    return rates.empty() ? x : simplify_trig_rational(tidy(x.subs(rates), motion), motion);
+    if (rates.empty()) return x;
+    ex written = x.subs(rates);
+    return larger_than(written, simplified_up_to) ? written : simplify_trig_rational(tidy(written, motion), motion);
   };
   std::vector<FirstIntegral> found;
   if (auto h = generalized_energy(e, mech, L)) {

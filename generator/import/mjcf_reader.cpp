@@ -20,6 +20,7 @@
 #include <mujoco/mujoco.h>
 
 #include "common/independent_rows.hpp"
+#include "import/free_base.hpp"
 #include "import/newer_mjcf.hpp"
 #include "import/urdf_text.hpp"
 
@@ -338,9 +339,17 @@ void note_stated_inertias(const std::string& urdf, Robot& r) {
 std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10); }
 
 
-std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path) {
+std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, bool free_base) {
   char error[1000] = "";
   std::string urdf = urdf_text_of(path);
+  if (free_base && urdf.empty())
+    return UnreadableRobot{1, "--free-base sets a URDF robot's root link free; this file is MJCF",
+                           "in MJCF, put <freejoint/> in the root body, and import without --free-base"};
+  if (free_base) {
+    FreeBase freed = with_free_base(urdf);
+    if (!freed.problem.empty()) return UnreadableRobot{freed.line, freed.problem, freed.hint};
+    urdf = freed.text;
+  }
   LeftOut left_out;
   auto loaded = loaded_model(path, urdf, error, sizeof error, left_out);
   if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;

@@ -280,8 +280,8 @@ std::string sum_text(const std::vector<std::string>& terms) {
 }  // namespace
 
 std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory,
-                                               std::string name) {
-  auto read = read_with_mujoco(path);
+                                               std::string name, bool free_base) {
+  auto read = read_with_mujoco(path, free_base);
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
     diagnostics.error({failure->file.empty() ? path : failure->file, std::max(failure->line, 1), 1}, "", failure->message,
                       !failure->hint.empty() ? failure->hint

@@ -15,8 +15,6 @@ namespace eomgen {
 
 namespace {
 
-int line_of(const std::string& text, std::size_t at) { return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n')); }
-
 // a <joint> of a type URDF does not have (MuJoCo 2.2.2's reader crashes on it)
 UrdfTextMistake unknown_joint_type(const std::string& urdf) {
   static const char* const types[] = {"revolute", "continuous", "prismatic", "fixed", "floating", "planar"};
@@ -47,22 +45,16 @@ UrdfTextMistake negative_mass(const std::string& urdf) {
 UrdfTextMistake cycle(const std::string& urdf) {
   struct Edge {
     std::string joint, parent;
-    std::size_t at;
+    int line;
   };
   std::map<std::string, Edge> parent_of;  // by child link
-  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos; at = element_start(urdf, "joint", at + 1)) {
-    std::size_t close = urdf.find("</joint", at), parent = element_start(urdf, "parent", at), child = element_start(urdf, "child", at);
-    if (close == std::string::npos || parent > close || child > close) continue;
-    auto name = attribute(urdf, at, urdf.find('>', at), "name");
-    auto from = attribute(urdf, parent, urdf.find('>', parent), "link");
-    auto to = attribute(urdf, child, urdf.find('>', child), "link");
-    if (from && to) parent_of.emplace(*to, Edge{name.value_or("?"), *from, at});
-  }
+  for (const UrdfJoint& j : urdf_joints(urdf))
+    if (!j.parent.empty() && !j.child.empty()) parent_of.emplace(j.child, Edge{j.name.empty() ? "?" : j.name, j.parent, j.line});
   for (const auto& [link, edge] : parent_of) {
     std::string path = "'" + edge.joint + "'", up = edge.parent;
     for (std::size_t steps = 0; steps <= parent_of.size(); ++steps) {
       if (up == link)
-        return {line_of(urdf, edge.at), fmt::format("the joints {} lead from link '{}' back to itself: a robot's links form a tree", path, link)};
+        return {edge.line, fmt::format("the joints {} lead from link '{}' back to itself: a robot's links form a tree", path, link)};
       auto next = parent_of.find(up);
       if (next == parent_of.end()) break;
       path += ", '" + next->second.joint + "'";
@@ -73,6 +65,20 @@ UrdfTextMistake cycle(const std::string& urdf) {
 }
 
 }  // namespace
+
+std::vector<UrdfJoint> urdf_joints(const std::string& urdf) {
+  std::vector<UrdfJoint> joints;
+  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos; at = element_start(urdf, "joint", at + 1)) {
+    std::size_t close = urdf.find("</joint", at), parent = element_start(urdf, "parent", at), child = element_start(urdf, "child", at);
+    // a <transmission>'s <joint> names a joint and has neither parent nor child
+    if (close == std::string::npos || parent > close || child > close) continue;
+    std::size_t end = urdf.find('>', at);
+    joints.push_back({attribute(urdf, at, end, "name").value_or(""), attribute(urdf, at, end, "type").value_or(""),
+                      attribute(urdf, parent, urdf.find('>', parent), "link").value_or(""),
+                      attribute(urdf, child, urdf.find('>', child), "link").value_or(""), line_of(urdf, at)});
+  }
+  return joints;
+}
 
 UrdfTextMistake urdf_text_mistake(const std::string& urdf) {
   for (auto check : {unknown_joint_type, negative_mass, cycle})

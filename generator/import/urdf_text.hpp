@@ -42,6 +42,14 @@ struct UrdfMimic {
 };
 std::vector<UrdfMimic> urdf_mimics(const std::string& urdf);
 
+/// A <joint> of the robot (one with a <parent> and a <child>; a <transmission>'s <joint> only names
+/// one): its name, type, parent and child links ("" where the text has none) and its line.
+struct UrdfJoint {
+  std::string name, type, parent, child;
+  int line = 0;
+};
+std::vector<UrdfJoint> urdf_joints(const std::string& urdf);
+
 /// How many of the URDF's joints are of this type ("floating", "fixed", ...).
 int urdf_joint_count(const std::string& urdf, const std::string& type);
 

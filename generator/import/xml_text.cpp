@@ -1,5 +1,6 @@
 #include "import/xml_text.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 namespace eomgen {
@@ -9,6 +10,8 @@ namespace {
 bool space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 
 }  // namespace
+
+int line_of(const std::string& text, std::size_t at) { return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n')); }
 
 std::size_t element_start(const std::string& text, const std::string& name, std::size_t from) {
   for (std::size_t at = text.find('<', from); at != std::string::npos; at = text.find('<', at + 1)) {

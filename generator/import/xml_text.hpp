@@ -13,6 +13,9 @@ namespace eomgen {
 /// Where the first element of this name opens at or after `from`, outside comments (npos: none).
 std::size_t element_start(const std::string& text, const std::string& name, std::size_t from = 0);
 
+/// The line, from 1, of the character at `at`.
+int line_of(const std::string& text, std::size_t at);
+
 /// Just past the '>' that closes the tag opening at `start` (npos: none).
 std::size_t past_tag(const std::string& text, std::size_t start);
 

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/trig_functions.hpp"
 
 namespace eomgen {
 
@@ -43,9 +44,6 @@ ex product(const std::vector<ex>& factors, std::size_t skip_a = SIZE_MAX, std::s
     if (i != skip_a && i != skip_b) p *= factors[i];
   return p;
 }
-
-bool is_sin(const ex& e) { return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e); }
-bool is_cos(const ex& e) { return GiNaC::is_the_function<GiNaC::cos_SERIAL>(e); }
 
 ex sum(const std::vector<ex>& terms) {
   GiNaC::exvector v(terms.begin(), terms.end());

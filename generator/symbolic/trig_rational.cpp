@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/trig_functions.hpp"
 
 namespace eomgen {
 
@@ -10,9 +11,6 @@ namespace {
 
 using GiNaC::ex;
 
-bool is_sin(const ex& e) { return GiNaC::is_the_function<GiNaC::sin_SERIAL>(e); }
-bool is_cos(const ex& e) { return GiNaC::is_the_function<GiNaC::cos_SERIAL>(e); }
-bool is_tan(const ex& e) { return GiNaC::is_the_function<GiNaC::tan_SERIAL>(e); }
 
 // the arguments of sin, cos and tan; false when another function (or a nested one) appears
 bool trig_arguments(const ex& e, GiNaC::exset& arguments) {

@@ -1,0 +1,103 @@
+// `eomgen import --free-base` (generator/import/free_base.hpp): a URDF's root link hung from the
+// world by a free joint, inserted on the <robot> line so that every line keeps its number; the
+// robots it cannot set free (and an MJCF robot) refused with the line and what to do; and the
+// imported floating arm's M: its translational block is the robot's whole mass (MuJoCo's layout:
+// the base's linear velocity in world axes), its joints' block that of the same arm on a fixed base.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "import/free_base.hpp"
+#include "import/model_writer.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+long lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+const char* const arm = R"(<?xml version="1.0"?>
+<robot name="arm">
+  <link name="base"/>
+  <link name="upper"/>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="upper"/>
+  </joint>
+</robot>
+)";
+
+TEST(FreeBase, TheRootLinkHangsFromTheWorldByAFloatingJointOnTheRobotsLine) {
+  FreeBase freed = with_free_base(arm);
+  ASSERT_TRUE(freed.problem.empty()) << freed.problem;
+  EXPECT_EQ(freed.joint, "root");
+  EXPECT_EQ(lines(freed.text), lines(arm));
+  EXPECT_NE(freed.text.find("<robot name=\"arm\"><link name=\"world\"/><joint name=\"root\" type=\"floating\"><parent "
+                            "link=\"world\"/><child link=\"base\"/></joint>\n"),
+            std::string::npos)
+      << freed.text;
+  std::string named_root = arm;
+  named_root.replace(named_root.find("\"shoulder\""), 10, "\"root\"");
+  EXPECT_EQ(with_free_base(named_root).joint, "root_2") << "a name no joint has";
+}
+
+TEST(FreeBase, WhatCannotBeSetFreeIsRefusedWithItsLine) {
+  std::string floating = arm;
+  floating.replace(floating.find("revolute"), 8, "floating");
+  FreeBase already = with_free_base(floating);
+  EXPECT_EQ(already.line, 5);
+  EXPECT_EQ(already.text, floating) << "unchanged";
+  EXPECT_NE(already.problem.find("'shoulder' already makes the robot's base float"), std::string::npos) << already.problem;
+  std::string welded = arm;
+  welded.replace(welded.find("<link name=\"base\"/>"), 19, "<link name=\"world\"/>");
+  welded.replace(welded.find("<parent link=\"base\"/>"), 21, "<parent link=\"world\"/>");
+  FreeBase world = with_free_base(welded);
+  EXPECT_EQ(world.line, 5);
+  EXPECT_NE(world.hint.find("make joint 'shoulder' type=\"floating\""), std::string::npos) << world.hint;
+  std::string two = arm;
+  two.insert(two.find("</robot>"), "  <link name=\"loose\"/>\n");
+  EXPECT_NE(with_free_base(two).problem.find("2 root links ('base' and 'loose')"), std::string::npos) << with_free_base(two).problem;
+}
+
+TEST(FreeBase, AnMjcfRobotIsToldWhereItsFreeJointGoes) {
+  Diagnostics diagnostics;
+  std::string mjcf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml";
+  EXPECT_FALSE(imported_model_text(mjcf, diagnostics, false, "", true));
+  EXPECT_NE(diagnostics.format().find("put <freejoint/> in the root body"), std::string::npos) << diagnostics.format();
+}
+
+// M with the shoulder at 0.4, the elbow at −0.7 and the base at the origin, unturned
+std::vector<std::vector<double>> mass_matrix_at_rest(const std::string& model_text) {
+  Equations e = derive_text(model_text);
+  std::map<std::string, double> values{{"shoulder", 0.4}, {"elbow", -0.7}};
+  for (const std::string& name : e.symbols.coordinate_names) values.emplace(name, name == "root_qw" ? 1.0 : 0.0);
+  for (const GiNaC::realsymbol& v : e.symbols.velocities) values[v.get_name()] = 0;
+  GiNaC::exmap at = point_by_name(e, values);
+  std::vector<std::vector<double>> M(e.mass_matrix.rows(), std::vector<double>(e.mass_matrix.cols()));
+  for (unsigned r = 0; r < e.mass_matrix.rows(); ++r)
+    for (unsigned c = 0; c < e.mass_matrix.cols(); ++c) M[r][c] = value_at(e.mass_matrix(r, c), at);
+  return M;
+}
+
+TEST(FreeBase, TheFloatingArmCarriesItsWholeMassAndItsJointsInertia) {
+  std::string urdf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
+  Diagnostics free_diagnostics, fixed_diagnostics;
+  std::optional<std::string> floating = imported_model_text(urdf, free_diagnostics, false, "floating_arm", true);
+  std::optional<std::string> fixed = imported_model_text(urdf, fixed_diagnostics, false, "fixed_arm");
+  ASSERT_TRUE(floating && fixed) << free_diagnostics.format() << fixed_diagnostics.format();
+  EXPECT_NE(floating->find("joint = { type = \"free\", position = [\"root_x\", \"root_y\", \"root_z\"], quaternion = "
+                           "[\"root_qw\", \"root_qx\", \"root_qy\", \"root_qz\"]"),
+            std::string::npos)
+      << *floating;
+  std::vector<std::vector<double>> M = mass_matrix_at_rest(*floating), M_fixed = mass_matrix_at_rest(*fixed);
+  ASSERT_EQ(M.size(), 8u);
+  ASSERT_EQ(M_fixed.size(), 2u);
+  const double mass = 2.0 + 1.2 + 0.8;  // the three links' <mass>
+  for (std::size_t r = 0; r < 3; ++r)
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(M[r][c], r == c ? mass : 0.0, 1e-14) << r << ", " << c;
+  for (std::size_t r = 0; r < 2; ++r)
+    for (std::size_t c = 0; c < 2; ++c) EXPECT_NEAR(M[6 + r][6 + c], M_fixed[r][c], 1e-14) << r << ", " << c;
+}
+
+}  // namespace
+}  // namespace eomgen::test
