@@ -2,6 +2,7 @@
 
 #include "support/test_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -167,6 +168,8 @@ std::string write_file(const std::string& file_name, const std::string& text) {
   std::ofstream(path) << text;
   return path;
 }
+
+long line_breaks(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 std::string write_model(const std::string& name, const std::string& text) { return write_file(name + ".toml", text); }
 

@@ -62,6 +62,9 @@ std::string with_kinematics(std::string model_text, const std::string& kinematic
 /// Writes `text` as the file FILE_NAME (a robot's `arm.urdf`) into a fresh temporary directory; its path.
 std::string write_file(const std::string& file_name, const std::string& text);
 
+/// How many line breaks the text has (an edit that keeps every line where it was keeps this).
+long line_breaks(const std::string& text);
+
 /// Writes `text` as the model file NAME.toml into a fresh temporary directory; its path.
 std::string write_model(const std::string& name, const std::string& text);
 

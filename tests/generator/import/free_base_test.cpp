@@ -5,8 +5,9 @@
 // the base's linear velocity in world axes), its joints' block that of the same arm on a fixed base.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <map>
+#include <optional>
+#include <vector>
 
 #include "import/free_base.hpp"
 #include "import/model_writer.hpp"
@@ -15,9 +16,7 @@
 namespace eomgen::test {
 namespace {
 
-long lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
-
-const char* const arm = R"(<?xml version="1.0"?>
+const char* const two_links = R"(<?xml version="1.0"?>
 <robot name="arm">
   <link name="base"/>
   <link name="upper"/>
@@ -28,33 +27,33 @@ const char* const arm = R"(<?xml version="1.0"?>
 )";
 
 TEST(FreeBase, TheRootLinkHangsFromTheWorldByAFloatingJointOnTheRobotsLine) {
-  FreeBase freed = with_free_base(arm);
+  FreeBase freed = with_free_base(two_links);
   ASSERT_TRUE(freed.problem.empty()) << freed.problem;
   EXPECT_EQ(freed.joint, "root");
-  EXPECT_EQ(lines(freed.text), lines(arm));
+  EXPECT_EQ(line_breaks(freed.text), line_breaks(two_links));
   EXPECT_NE(freed.text.find("<robot name=\"arm\"><link name=\"world\"/><joint name=\"root\" type=\"floating\"><parent "
                             "link=\"world\"/><child link=\"base\"/></joint>\n"),
             std::string::npos)
       << freed.text;
-  std::string named_root = arm;
+  std::string named_root = two_links;
   named_root.replace(named_root.find("\"shoulder\""), 10, "\"root\"");
   EXPECT_EQ(with_free_base(named_root).joint, "root_2") << "a name no joint has";
 }
 
 TEST(FreeBase, WhatCannotBeSetFreeIsRefusedWithItsLine) {
-  std::string floating = arm;
+  std::string floating = two_links;
   floating.replace(floating.find("revolute"), 8, "floating");
   FreeBase already = with_free_base(floating);
   EXPECT_EQ(already.line, 5);
   EXPECT_EQ(already.text, floating) << "unchanged";
   EXPECT_NE(already.problem.find("'shoulder' already makes the robot's base float"), std::string::npos) << already.problem;
-  std::string welded = arm;
+  std::string welded = two_links;
   welded.replace(welded.find("<link name=\"base\"/>"), 19, "<link name=\"world\"/>");
   welded.replace(welded.find("<parent link=\"base\"/>"), 21, "<parent link=\"world\"/>");
   FreeBase world = with_free_base(welded);
   EXPECT_EQ(world.line, 5);
   EXPECT_NE(world.hint.find("make joint 'shoulder' type=\"floating\""), std::string::npos) << world.hint;
-  std::string two = arm;
+  std::string two = two_links;
   two.insert(two.find("</robot>"), "  <link name=\"loose\"/>\n");
   EXPECT_NE(with_free_base(two).problem.find("2 root links ('base' and 'loose')"), std::string::npos) << with_free_base(two).problem;
 }

@@ -24,12 +24,10 @@
 namespace eomgen::test {
 namespace {
 
-long lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
-
 TEST(UrdfStaticLinks, TheCompilerSettingGoesIntoTheRobotOnItsOwnLine) {
   std::string urdf = "<?xml version=\"1.0\"?>\n<!-- not this <robot> -->\n<robot name=\"r\">\n  <link name=\"a\"/>\n</robot>\n";
   std::string kept = with_static_links_kept(urdf);
-  EXPECT_EQ(lines(kept), lines(urdf));
+  EXPECT_EQ(line_breaks(kept), line_breaks(urdf));
   EXPECT_NE(kept.find("<robot name=\"r\"><mujoco><compiler fusestatic=\"false\"/></mujoco>\n"), std::string::npos) << kept;
   EXPECT_EQ(kept.find("robot> --><mujoco>"), std::string::npos) << "a comment is no element";
 }
@@ -224,7 +222,7 @@ TEST(UrdfImport, MeshesThatCannotBeReadAreLeftOutAndNamed) {
   int left_out = 0;
   std::string without = without_mesh_geometry(meshed, left_out);
   EXPECT_EQ(left_out, 2);
-  EXPECT_EQ(lines(without), lines(meshed)) << "line numbers stay the file's";
+  EXPECT_EQ(line_breaks(without), line_breaks(meshed)) << "line numbers stay the file's";
   EXPECT_EQ(without.find("<mesh"), std::string::npos) << without;
   EXPECT_NE(without.find("<box size=\"0.05 0.05 0.3\"/>"), std::string::npos) << "a shape that is no mesh stays";
   std::string path = temporary_directory() + "/meshed_arm.urdf", plain_path = temporary_directory() + "/plain_arm.urdf";
