@@ -141,7 +141,6 @@ std::vector<std::pair<std::size_t, FirstIntegral>> cyclic_momenta(const Equation
   return out;
 }
 
-
 // the row j of M whose product with the velocities is the momentum of coordinate k, at two states
 // to 1e-12 of the largest term, when q'_k is the velocity j itself and the momentum is long (a
 // short one, such as (m_c + m) x' + m l cos θ θ', stays as it is: cheaper than forming M); −1

@@ -1,7 +1,8 @@
 // The generated factorization and solves of the mass matrix (emit/cpp_ldlt): dense and unrolled,
 // dense in loops, and a tree's from the leaves, each compiled and run on a random symmetric
-// positive definite M of its shape (the tree's also with zeros on its chains that fill in); ldlt_solve and ldlt_solve_rows must solve M x = b to rounding,
-// and ldlt_solve_rows<m, true> give exactly −x (jacobian_state's rows are ∂τ/∂x, solved negated).
+// positive definite M of its shape (the tree's also with zeros on its chains that fill in);
+// ldlt_solve and ldlt_solve_rows must solve M x = b to rounding, and ldlt_solve_rows<m, true>
+// give exactly −x (jacobian_state's rows are ∂τ/∂x, solved negated).
 #include <gtest/gtest.h>
 
 #include <fstream>
