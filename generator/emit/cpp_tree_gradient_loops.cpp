@@ -96,16 +96,66 @@ inline void tree_own_bias(const T* I, const T* v, T* D) {
 )";
 
 // The recursion and the pairs of spatial/joint_tree_derivatives.hpp for a hinge or a slide (T = S,
-// w = v_λ, W = a_λ, A = 2 Ψ'), over the links' tables.
-constexpr const char* gradient_template = R"(/// d tau/d(q, q') of a tree of hinges and slides, its bodies' part, added into F (rows of width W, the
+// w = v_λ, W = a_λ, A = 2 Ψ'), over the links' tables; and for a first link's joint of several
+// velocities (a floating base), the general formulas with its motion given.
+constexpr const char* gradient_template = R"(/// A root joint of several velocities (a floating base) in world coordinates: per velocity its S,
+/// A = (w + u) x S and whether it turns with the link; per coordinate its twist, Psi' and Psi'';
+/// the link's v and a.
+template <class T>
+struct tree_jointed_root {
+  std::size_t columns, directions;
+  int velocity[6], coordinate[7];
+  bool turns[6];
+  T S[6][6], A[6][6], twist[7][6], dS[7][6], ddS[7][6], v[6], a[6];
+};
+
+/// The root joint's own pairs, from the whole tree's composite inertia C, force, momentum P and bias
+/// D: a row r of a column that turns with the link takes a direction d as Psi''_d . C S_r +
+/// Psi'_d . B^T S_r, a row that keeps the parent's axes as S_r . G_d, G_d = T_d x* F + C Psi''_d
+/// + D Psi'_d + Psi'_d x* P; a column c as A_c . C S_r + S_c . B^T S_r.
+template <class T>
+void tree_root_pairs(const tree_jointed_root<T>& root, const T* C, const T* force, const T* P, const T* D,
+                     std::size_t nq, std::size_t W, T* F) {
+  T CS[6][6], BS[6][6], G[7][6];
+  for (std::size_t c = 0; c < root.columns; ++c) {
+    T DS[6], SP[6];
+    tree_inertia_times(C, root.S[c], CS[c]);
+    tree_bias_times(D, root.S[c], DS);
+    tree_force_cross(root.S[c], P, SP);
+    for (int k = 0; k < 6; ++k) BS[c][k] = DS[k] - SP[k];
+  }
+  for (std::size_t d = 0; d < root.directions; ++d) {
+    T TF[6], Cdd[6], Dd[6], dP[6];
+    tree_force_cross(root.twist[d], force, TF);
+    tree_inertia_times(C, root.ddS[d], Cdd);
+    tree_bias_times(D, root.dS[d], Dd);
+    tree_force_cross(root.dS[d], P, dP);
+    for (int k = 0; k < 6; ++k) G[d][k] = TF[k] + Cdd[k] + Dd[k] + dP[k];
+  }
+  for (std::size_t r = 0; r < root.columns; ++r) {
+    T* row = F + std::size_t(root.velocity[r])*W;
+    for (std::size_t d = 0; d < root.directions; ++d) {
+      T& x = row[root.coordinate[d]];
+      x = x + (root.turns[r] ? tree_power(root.ddS[d], CS[r]) + tree_power(root.dS[d], BS[r])
+                             : tree_power(root.S[r], G[d]));
+    }
+    for (std::size_t c = 0; c < root.columns; ++c) {
+      T& x = row[nq + std::size_t(root.velocity[c])];
+      x = x + tree_power(root.A[c], CS[r]) + tree_power(root.S[c], BS[r]);
+    }
+  }
+}
+
+/// d tau/d(q, q') of a tree of hinges and slides, its bodies' part, added into F (rows of width W, the
 /// velocities' columns after the nq coordinates' ones): the analytic derivatives of the Newton-Euler
 /// recursion (Carpentier and Mansard 2018) in world coordinates, from each link's joint twist S,
-/// its rate and its bodies' spatial inertia about the origin. A fixed link has velocity -1.
+/// its rate and its bodies' spatial inertia about the origin. A fixed link has velocity -1, and so
+/// has the first link when `root` gives its joint.
 template <std::size_t L, class T>
 void hinge_tree_gradient(const int (&parent)[L], const int (&velocity)[L], const int (&coordinate)[L],
                          const T (&turn)[L][9], const T (&offset)[L][3], const T (&column)[L][6], const T (&rate)[L],
                          const T (&inertia)[L][10], const T* ddq, const T* gravity, std::size_t nq, std::size_t W,
-                         T* F) {
+                         T* F, const tree_jointed_root<T>* root = nullptr) {
   // world poses, twists S and inertias C; v, a (the root's a is -gravity), Psi' = v_p x S,
   // Psi'' = a_p x S + v_p x Psi'; each link's force C a + v x* C v, momentum P = C v and bias D,
   // summed into the composites
@@ -116,8 +166,8 @@ void hinge_tree_gradient(const int (&parent)[L], const int (&velocity)[L], const
   for (std::size_t i = 0; i < L; ++i) {
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], turn[i], offset[i],
                column[i], inertia[i], R[i], o[i], S[i], C[i]);
-    const T* vp = parent[i] < 0 ? rest : v[parent[i]];
-    const T* ap = parent[i] < 0 ? fall : a[parent[i]];
+    const T* vp = parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]];
+    const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
     if (velocity[i] < 0) {
       for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k], dS[i][k] = ddS[i][k] = T(0);
     } else {
@@ -171,18 +221,33 @@ void hinge_tree_gradient(const int (&parent)[L], const int (&velocity)[L], const
   for (std::size_t k = 0; k < L; ++k) {
     if (velocity[k] < 0) continue;
     T* row = F + std::size_t(velocity[k])*W;
+    const std::size_t qk = std::size_t(coordinate[k]), sk = nq + std::size_t(velocity[k]);
+    int top = int(k);
     for (int j = int(k); j >= 0; j = parent[j]) {
+      top = j;
       if (velocity[j] < 0) continue;
       const std::size_t q = std::size_t(coordinate[j]), s = nq + std::size_t(velocity[j]);
       row[q] = row[q] + tree_power(ddS[j], CS[k]) + tree_power(dS[j], BS[k]);
       row[s] = row[s] + T(2)*tree_power(dS[j], CS[k]) + tree_power(S[j], BS[k]);
       if (j == int(k)) continue;
       T* above = F + std::size_t(velocity[j])*W;
-      const std::size_t qk = std::size_t(coordinate[k]), sk = nq + std::size_t(velocity[k]);
       above[qk] = above[qk] + tree_power(S[j], G[k]);
       above[sk] = above[sk] + tree_power(S[j], H[k]);
     }
+    if (!root || top != 0) continue;
+    for (std::size_t d = 0; d < root->directions; ++d) {
+      T& x = row[root->coordinate[d]];
+      x = x + tree_power(root->ddS[d], CS[k]) + tree_power(root->dS[d], BS[k]);
+    }
+    for (std::size_t c = 0; c < root->columns; ++c) {
+      T& x = row[nq + std::size_t(root->velocity[c])];
+      x = x + tree_power(root->A[c], CS[k]) + tree_power(root->S[c], BS[k]);
+      T* above = F + std::size_t(root->velocity[c])*W;
+      above[qk] = above[qk] + tree_power(root->S[c], G[k]);
+      above[sk] = above[sk] + tree_power(root->S[c], H[k]);
+    }
   }
+  if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
 }
 
 )";
@@ -241,6 +306,23 @@ std::string table(const std::vector<int>& entries) {
   return text;
 }
 
+// detail::tree_jointed_root tree_root: its tables as constants, its motion among the inputs
+void declare_jointed_root(BodyWriter& w, const JointedRoot& root, std::vector<ex>& inputs, std::vector<std::string>& targets) {
+  w.line("detail::tree_jointed_root<T> tree_root;");
+  w.line(fmt::format("tree_root.columns = {}; tree_root.directions = {};", root.velocity.size(), root.coordinate.size()));
+  for (std::size_t c = 0; c < root.velocity.size(); ++c)
+    w.line(fmt::format("tree_root.velocity[{0}] = {1}; tree_root.turns[{0}] = {2};", c, root.velocity[c], root.turns[c] ? "true" : "false"));
+  for (std::size_t d = 0; d < root.coordinate.size(); ++d) w.line(fmt::format("tree_root.coordinate[{}] = {};", d, root.coordinate[d]));
+  auto add = [&](const std::string& array, const std::array<ex, 6>& x) {
+    for (std::size_t k = 0; k < 6; ++k) inputs.push_back(x[k]), targets.push_back(fmt::format("tree_root.{}[{}]", array, k));
+  };
+  auto add_rows = [&](const std::string& array, const std::vector<std::array<ex, 6>>& rows) {
+    for (std::size_t i = 0; i < rows.size(); ++i) add(fmt::format("{}[{}]", array, i), rows[i]);
+  };
+  add_rows("S", root.S), add_rows("A", root.A), add_rows("twist", root.twist), add_rows("dS", root.dS), add_rows("ddS", root.ddS);
+  add("v", root.v), add("a", root.a);
+}
+
 }  // namespace
 
 std::string tree_gradient_loops_function(const Equations& e) {
@@ -270,9 +352,11 @@ void call_tree_gradient_loops(BodyWriter& w, const HingeTreeLinks& links, std::s
     for (std::size_t k = 0; k < 10; ++k) add("tree_inertia", i, k, links.inertia[i][k]);
   }
   for (unsigned k = 0; k < 3; ++k) inputs.push_back(links.gravity[k]), targets.push_back(fmt::format("tree_gravity[{}]", k));
+  if (links.root) declare_jointed_root(w, *links.root, inputs, targets);
   w.assign(inputs, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
   w.line(fmt::format("hinge_tree_gradient(tree_parent, tree_velocity, tree_coordinate, tree_turn, tree_offset, tree_column, "
-                     "tree_rate, tree_inertia, ddq, tree_gravity, {}, {}, F);", coordinates, width));
+                     "tree_rate, tree_inertia, ddq, tree_gravity, {}, {}, F{});",
+                     coordinates, width, links.root ? ", &tree_root" : ""));
 }
 
 }  // namespace eomgen

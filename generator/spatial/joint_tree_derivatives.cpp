@@ -23,7 +23,13 @@ namespace {
 // velocities, and the straight-line sums fold them: Pinocchio's panda.urdf (9 joints, its second
 // finger a follower: 8 velocities) 2.0 µs against the loops' 2.9, tests/crosscheck's gantry hand
 // with its fingers' outer joints followers (11 joints, 5 velocities) 3.8 rhs against 4.5. So the
-// crossover counts velocities.
+// crossover counts velocities. Below a free joint (its motion straight-line, the hinges in the
+// loops) the two forms run within a few per cent of each other from 9 velocities on (a free torso
+// and two legs of 3 hinges: 2.16 µs against 2.10; of 8: 4.9 against 5.05; tests/crosscheck's
+// quadruped, 18 velocities: 6.8 against 6.8), while the header is a third smaller (the
+// quadruped's 307 KB against 718 KB, g++ 4 s against 18 s) and, for a floating humanoid,
+// several times smaller (Talos, 38 velocities: 1.17 MB against 3.3 MB, g++ 18 s against 386 s,
+// jacobian_state 28 µs against 52).
 constexpr std::size_t loops_beyond_velocities = 8;
 
 class Gradient {
@@ -40,47 +46,52 @@ class Gradient {
 
   // world poses, twists, accelerations and the links' own inertias, forces and D, parents first
   void forward(const Vector3& gravity, const std::vector<ex>& ddq) {
-    SpatialVector rest, fall{{0, 0, 0}, scaled(-1, gravity)};
     for (std::size_t i = 0; i < links_.size(); ++i) {
-      const TreeLink& l = links_[i];
-      bool root = l.parent < 0;
-      std::size_t p = root ? 0 : std::size_t(l.parent);
-      const SpatialVector& vp = root ? rest : v_[p];
-      const SpatialVector& ap = root ? fall : a_[p];
-      GiNaC::matrix R = root ? l.turn : R_[p].mul(l.turn);
-      for (unsigned a = 0; a < 3; ++a)
-        for (unsigned b = 0; b < 3; ++b)
-          R_[i](a, b) = name(i, fmt::format("gR{}{}", a, b), R(a, b));
-      origin_[i] = named(i, "go", root ? l.offset : origin_[p] + times(R_[p], l.offset));
-      // v = v_λ + V_p + V_b and a = a_λ + Σ S s' + v × V_b + v_λ × V_p: the columns that turn with
-      // the link change as v × S, those that keep the parent's axes as v_λ × S
-      SpatialVector kept, turning, driven, kept_driven;
-      for (std::size_t c = 0; c < l.columns.size(); ++c) {
-        const TreeLink::Column& col = l.columns[c];
-        Vector3 s = times(R_[i], col.axis);
-        std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
-        S_[i].push_back(named(i, "gS" + tag, SpatialVector{s, cross(origin_[i], s) + times(R_[i], col.origin_velocity)}));
-        SpatialVector rate = scaled(col.rate, S_[i][c]), push = scaled(ddq[std::size_t(col.velocity)], S_[i][c]);
-        if (col.turns_with_link) turning = turning + rate;
-        else kept = kept + rate, kept_driven = kept_driven + push;
-        driven = driven + push;
-      }
-      turning_v_[i] = turning;
-      if (l.columns.empty()) {
-        v_[i] = vp, a_[i] = ap;
-      } else {
-        v_[i] = named(i, "gv", vp + kept + turning);
-        if (is_hinge(i)) {
-          // v × S s' = s' (v_λ + S s') × S = s' Ψ': Ψ' = v_λ × S named here, once, for Ψ'' and the pairs
-          hinge_dS_[i] = named(i, "gdS", motion_cross(vp, S_[i][0]));
-          a_[i] = named(i, "ga", ap + driven + scaled(l.columns[0].rate, *hinge_dS_[i]));
-        } else {
-          a_[i] = named(i, "ga", ap + driven + motion_cross(v_[i], turning) + motion_cross(vp, kept));
-        }
-        still_v_[i] = named(i, "gw", vp + kept);
-        still_a_[i] = named(i, "gW", ap + kept_driven + motion_cross(vp, kept));
-      }
+      place(i, gravity, ddq);
       own_inertia(i);
+    }
+  }
+
+  // link i's world pose, its joint's twists S, its v and a, and the joint's w, W and V_b
+  void place(std::size_t i, const Vector3& gravity, const std::vector<ex>& ddq) {
+    const TreeLink& l = links_[i];
+    bool root = l.parent < 0;
+    std::size_t p = root ? 0 : std::size_t(l.parent);
+    SpatialVector rest, fall{{0, 0, 0}, scaled(-1, gravity)};
+    const SpatialVector& vp = root ? rest : v_[p];
+    const SpatialVector& ap = root ? fall : a_[p];
+    GiNaC::matrix R = root ? l.turn : R_[p].mul(l.turn);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b)
+        R_[i](a, b) = name(i, fmt::format("gR{}{}", a, b), R(a, b));
+    origin_[i] = named(i, "go", root ? l.offset : origin_[p] + times(R_[p], l.offset));
+    // v = v_λ + V_p + V_b and a = a_λ + Σ S s' + v × V_b + v_λ × V_p: the columns that turn with
+    // the link change as v × S, those that keep the parent's axes as v_λ × S
+    SpatialVector kept, turning, driven, kept_driven;
+    for (std::size_t c = 0; c < l.columns.size(); ++c) {
+      const TreeLink::Column& col = l.columns[c];
+      Vector3 s = times(R_[i], col.axis);
+      std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
+      S_[i].push_back(named(i, "gS" + tag, SpatialVector{s, cross(origin_[i], s) + times(R_[i], col.origin_velocity)}));
+      SpatialVector rate = scaled(col.rate, S_[i][c]), push = scaled(ddq[std::size_t(col.velocity)], S_[i][c]);
+      if (col.turns_with_link) turning = turning + rate;
+      else kept = kept + rate, kept_driven = kept_driven + push;
+      driven = driven + push;
+    }
+    turning_v_[i] = turning;
+    if (l.columns.empty()) {
+      v_[i] = vp, a_[i] = ap;
+    } else {
+      v_[i] = named(i, "gv", vp + kept + turning);
+      if (is_hinge(i)) {
+        // v × S s' = s' (v_λ + S s') × S = s' Ψ': Ψ' = v_λ × S named here, once, for Ψ'' and the pairs
+        hinge_dS_[i] = named(i, "gdS", motion_cross(vp, S_[i][0]));
+        a_[i] = named(i, "ga", ap + driven + scaled(l.columns[0].rate, *hinge_dS_[i]));
+      } else {
+        a_[i] = named(i, "ga", ap + driven + motion_cross(v_[i], turning) + motion_cross(vp, kept));
+      }
+      still_v_[i] = named(i, "gw", vp + kept);
+      still_a_[i] = named(i, "gW", ap + kept_driven + motion_cross(vp, kept));
     }
   }
 
@@ -104,43 +115,61 @@ class Gradient {
     }
   }
 
-  // per column (a row of τ): I^C S and B^Cᵀ S = D S − S ×* P; per direction (a coordinate) Ψ',
-  // Ψ'' and G; per column as a direction (its velocity) A = (w + u) × S and H
+  // per direction (a coordinate) its twist T, Ψ' and Ψ'' and then G; per column (a row of τ) I^C S
+  // and B^Cᵀ S = D S − S ×* P, and as a direction (its velocity) A = (w + u) × S and H
   void joint_quantities() {
+    for (std::size_t j = 0; j < links_.size(); ++j) {
+      joint_motion(j);
+      joint_forces(j);
+    }
+  }
+
+  // T, Ψ', Ψ'' and A of joint j, which its links' motion gives (place() first)
+  void joint_motion(std::size_t j) {
     std::size_t n = links_.size();
-    IS_.resize(n), BS_.resize(n), dS_.resize(n), ddS_.resize(n), G_.resize(n), A_.resize(n), H_.resize(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const TreeLink& l = links_[j];
-      bool root = l.parent < 0;
-      SpatialVector rest, vp = root ? rest : v_[std::size_t(l.parent)];
-      for (std::size_t d = 0; d < l.directions.size(); ++d) {
-        SpatialVector T;
-        for (const auto& [c, weight] : l.directions[d].weights) T = T + scaled(weight, S_[j][c]);
-        std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
-        if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
-          T = named(j, "gT" + tag, T);
-        dS_[j].push_back(hinge_dS_[j] ? *hinge_dS_[j] : named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
-        ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
-        G_[j].push_back(named(j, "gG" + tag, force_cross(T, force_[j]) + apply(inertia_[j], ddS_[j][d]) +
-                                             times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
-      }
-      for (std::size_t c = 0; c < l.columns.size(); ++c) {
-        const SpatialVector& S = S_[j][c];
-        std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
-        // B^C x = D x + x ×* P
-        SpatialVector DS = named(j, "gDS" + tag, times(D_[j], S)), SP = named(j, "gSP" + tag, force_cross(S, momentum_[j]));
-        IS_[j].push_back(named(j, "gIS" + tag, apply(inertia_[j], S)));
-        BS_[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
-        // A = (w + u) × S: for a turning column u = v_j = w + V_b, whose S × S part vanishes, so
-        // that a hinge has A = 2 v_λ × S
-        SpatialVector A;
-        if (!l.columns[c].turns_with_link) A = motion_cross(still_v_[j] + vp, S);
-        else if (is_hinge(j)) A = scaled(2, *hinge_dS_[j]);  // T = S: A = 2 Ψ'
-        else if (l.columns.size() == 1) A = scaled(2, motion_cross(still_v_[j], S));
-        else A = scaled(2, motion_cross(still_v_[j], S)) + motion_cross(turning_v_[j], S);
-        A_[j].push_back(named(j, "gA" + tag, A));
-        H_[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A_[j][c]) + DS + SP));
-      }
+    twist_.resize(n), dS_.resize(n), ddS_.resize(n), A_.resize(n);
+    const TreeLink& l = links_[j];
+    SpatialVector rest, vp = l.parent < 0 ? rest : v_[std::size_t(l.parent)];
+    for (std::size_t d = 0; d < l.directions.size(); ++d) {
+      SpatialVector T;
+      for (const auto& [c, weight] : l.directions[d].weights) T = T + scaled(weight, S_[j][c]);
+      std::string tag = l.directions.size() > 1 ? std::to_string(d) : "";
+      if (l.directions.size() > 1 || l.directions[d].weights.size() != 1 || !(l.directions[d].weights[0].second - 1).is_zero())
+        T = named(j, "gT" + tag, T);
+      twist_[j].push_back(T);
+      dS_[j].push_back(hinge_dS_[j] ? *hinge_dS_[j] : named(j, "gdS" + tag, motion_cross(still_v_[j], T)));
+      ddS_[j].push_back(named(j, "gddS" + tag, motion_cross(still_a_[j], T) + motion_cross(still_v_[j], dS_[j][d])));
+    }
+    for (std::size_t c = 0; c < l.columns.size(); ++c) {
+      const SpatialVector& S = S_[j][c];
+      // A = (w + u) × S: for a turning column u = v_j = w + V_b, whose S × S part vanishes, so
+      // that a hinge has A = 2 v_λ × S
+      SpatialVector A;
+      if (!l.columns[c].turns_with_link) A = motion_cross(still_v_[j] + vp, S);
+      else if (is_hinge(j)) A = scaled(2, *hinge_dS_[j]);  // T = S: A = 2 Ψ'
+      else if (l.columns.size() == 1) A = scaled(2, motion_cross(still_v_[j], S));
+      else A = scaled(2, motion_cross(still_v_[j], S)) + motion_cross(turning_v_[j], S);
+      A_[j].push_back(named(j, "gA" + (l.columns.size() > 1 ? std::to_string(c) : ""), A));
+    }
+  }
+
+  // G, I^C S, B^Cᵀ S and H of joint j, from the composite quantities (backward() first)
+  void joint_forces(std::size_t j) {
+    std::size_t n = links_.size();
+    IS_.resize(n), BS_.resize(n), G_.resize(n), H_.resize(n);
+    const TreeLink& l = links_[j];
+    for (std::size_t d = 0; d < l.directions.size(); ++d)
+      G_[j].push_back(named(j, "gG" + (l.directions.size() > 1 ? std::to_string(d) : ""),
+                            force_cross(twist_[j][d], force_[j]) + apply(inertia_[j], ddS_[j][d]) +
+                                times(D_[j], dS_[j][d]) + force_cross(dS_[j][d], momentum_[j])));
+    for (std::size_t c = 0; c < l.columns.size(); ++c) {
+      const SpatialVector& S = S_[j][c];
+      std::string tag = l.columns.size() > 1 ? std::to_string(c) : "";
+      // B^C x = D x + x ×* P
+      SpatialVector DS = named(j, "gDS" + tag, times(D_[j], S)), SP = named(j, "gSP" + tag, force_cross(S, momentum_[j]));
+      IS_[j].push_back(named(j, "gIS" + tag, apply(inertia_[j], S)));
+      BS_[j].push_back(named(j, "gBS" + tag, DS + scaled(-1, SP)));
+      H_[j].push_back(named(j, "gH" + tag, apply(inertia_[j], A_[j][c]) + DS + SP));
     }
   }
 
@@ -180,14 +209,16 @@ class Gradient {
     return g;
   }
 
-  // the loops' inputs (HingeTreeLinks): the links' own data, their bodies summed about their origins
-  HingeTreeLinks loop_inputs(const Vector3& gravity) const {
+  // the loops' inputs (HingeTreeLinks): the links' own data, their bodies summed about their origins;
+  // a jointed root's table entries a fixed link's
+  HingeTreeLinks loop_inputs(const Vector3& gravity, std::optional<JointedRoot> root) const {
     HingeTreeLinks in;
     in.gravity = gravity;
+    in.root = std::move(root);
     for (std::size_t i = 0; i < links_.size(); ++i) {
       const TreeLink& l = links_[i];
       in.parent.push_back(l.parent);
-      bool jointed = !l.columns.empty();
+      bool jointed = !l.columns.empty() && !(i == 0 && in.root);
       in.velocity.push_back(jointed ? l.columns[0].velocity : -1);
       in.coordinate.push_back(jointed ? l.directions[std::size_t(own_direction(i))].coordinate : -1);
       in.rate.push_back(jointed ? l.columns[0].rate : ex(0));
@@ -215,13 +246,39 @@ class Gradient {
     return in;
   }
 
-  // every joint a hinge or a slide (the loops' formulas), or none (a fixed link); a joint that
-  // follows another's coordinate (URDF's mimic) is a hinge whose S carries its multiplier and whose
-  // rows and columns the loops add into its leader's, as pairs() does
-  bool hinges_only() const {
-    for (std::size_t j = 0; j < links_.size(); ++j)
+  // every joint a hinge or a slide (the loops' formulas), or none (a fixed link), but the first
+  // link's, which may be of any kind (a floating base); a joint that follows another's coordinate
+  // (URDF's mimic) is a hinge whose S carries its multiplier and whose rows and columns the loops
+  // add into its leader's, as pairs() does
+  bool loops_take_it() const {
+    for (std::size_t j = 1; j < links_.size(); ++j)
       if (!links_[j].columns.empty() && (!is_hinge(j) || links_[j].directions.size() != 1)) return false;
     return true;
+  }
+
+  // the first link's joint when it is of several velocities: its motion, straight-line
+  std::optional<JointedRoot> jointed_root(const Vector3& gravity, const std::vector<ex>& ddq) {
+    if (links_.empty() || links_[0].columns.empty() || (is_hinge(0) && links_[0].directions.size() == 1)) return std::nullopt;
+    place(0, gravity, ddq);
+    joint_motion(0);
+    auto six = [](const SpatialVector& x) {
+      return std::array<ex, 6>{x.top[0], x.top[1], x.top[2], x.bottom[0], x.bottom[1], x.bottom[2]};
+    };
+    JointedRoot root{{}, {}, {}, {}, {}, {}, {}, {}, six(v_[0]), six(a_[0])};
+    const TreeLink& l = links_[0];
+    for (std::size_t c = 0; c < l.columns.size(); ++c) {
+      root.velocity.push_back(l.columns[c].velocity);
+      root.turns.push_back(l.columns[c].turns_with_link);
+      root.S.push_back(six(S_[0][c]));
+      root.A.push_back(six(A_[0][c]));
+    }
+    for (std::size_t d = 0; d < l.directions.size(); ++d) {
+      root.coordinate.push_back(l.directions[d].coordinate);
+      root.twist.push_back(six(twist_[0][d]));
+      root.dS.push_back(six(dS_[0][d]));
+      root.ddS.push_back(six(ddS_[0][d]));
+    }
+    return root;
   }
 
  private:
@@ -308,7 +365,8 @@ class Gradient {
   std::vector<SpatialInertia> inertia_;
   std::vector<SpatialVector> force_, momentum_;
   std::vector<GiNaC::matrix> D_;  // symmetric
-  std::vector<std::vector<SpatialVector>> IS_, BS_, dS_, ddS_, G_, A_, H_;  // joint_quantities()
+  std::vector<std::vector<SpatialVector>> twist_, dS_, ddS_, A_;  // joint_motion()
+  std::vector<std::vector<SpatialVector>> IS_, BS_, G_, H_;       // joint_forces()
   std::vector<std::optional<SpatialVector>> hinge_dS_;                     // a hinge's Ψ', from forward()
 };
 
@@ -318,9 +376,10 @@ InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, 
                                             const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                             std::vector<Intermediate>& out) {
   Gradient g(links, out);
-  if (velocities > loops_beyond_velocities && g.hinges_only()) {
+  if (velocities > loops_beyond_velocities && g.loops_take_it()) {
     InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
-                                 GiNaC::matrix(unsigned(velocities), unsigned(velocities)), g.loop_inputs(gravity)};
+                                 GiNaC::matrix(unsigned(velocities), unsigned(velocities)),
+                                 g.loop_inputs(gravity, g.jointed_root(gravity, ddq))};
     return zero;
   }
   g.forward(gravity, ddq);

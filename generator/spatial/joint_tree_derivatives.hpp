@@ -70,13 +70,29 @@ struct TreeLink {
   std::vector<Body> bodies;
 };
 
+/// A root joint of several velocities (a floating base's free joint, a ball) in world Plücker
+/// coordinates, for the loops below: its motion depends on its own coordinates and velocities
+/// alone, so it is straight-line code, and the loops add what needs the composite quantities.
+/// Per column (a velocity) its S and A = (w + u) × S, and whether it turns with the link; per
+/// direction (a coordinate) its twist T, Ψ' and Ψ''; the link's v and a (gravity included).
+struct JointedRoot {
+  std::vector<int> velocity;
+  std::vector<bool> turns;
+  std::vector<std::array<GiNaC::ex, 6>> S, A;
+  std::vector<int> coordinate;
+  std::vector<std::array<GiNaC::ex, 6>> twist, dS, ddS;
+  std::array<GiNaC::ex, 6> v, a;
+};
+
 /// The derivatives above for a long tree of hinges and slides, as loops over its links in the
 /// header (emit/cpp_tree_gradient_loops.hpp), from each link's data in its parent's joint frame:
 /// its parent, its joint's velocity and coordinate (−1 for a fixed link), its turn E (row-major)
 /// and offset r, its joint's column (axis and origin velocity, in its own coordinates) and that
 /// column's rate, and its bodies' spatial inertia about its origin in its own coordinates
 /// (m, h = Σ m c, J's xx xy xz yy yz zz); the loops form the world poses, twists and inertias,
-/// v, a, Ψ', Ψ'', the composite quantities and the pairs from them.
+/// v, a, Ψ', Ψ'', the composite quantities and the pairs from them. The first link's joint may be
+/// of several velocities (`root`; its table entries are then a fixed link's, with its turn and
+/// offset those of its current pose).
 struct HingeTreeLinks {
   std::vector<int> parent, velocity, coordinate;
   std::vector<std::array<GiNaC::ex, 9>> turn;
@@ -85,6 +101,7 @@ struct HingeTreeLinks {
   std::vector<GiNaC::ex> rate;
   std::vector<std::array<GiNaC::ex, 10>> inertia;
   Vector3 gravity{0, 0, 0};
+  std::optional<JointedRoot> root;
 };
 
 struct InverseDynamicsGradient {
@@ -107,8 +124,8 @@ struct BodiesGradient {
 /// coordinates (links parents first); their quantities are appended to `out` as intermediates.
 /// Straight-line code for them grows with the tree's pairs of joints, loops do not: a tree of
 /// more than 8 velocities (the measured crossover, in joint_tree_derivatives.cpp) whose joints
-/// are hinges and slides, those that follow another's coordinate too, gets the loops' inputs
-/// instead (InverseDynamicsGradient::loops).
+/// are hinges and slides, those that follow another's coordinate too, below a root joint of any
+/// kind (a floating base), gets the loops' inputs instead (InverseDynamicsGradient::loops).
 InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                             const std::vector<GiNaC::ex>& ddq, std::size_t velocities,
                                             std::size_t coordinates, std::vector<Intermediate>& out);

@@ -251,15 +251,25 @@ std::string hinge_chain(int hinges, bool ball) {
 }
 
 // beyond 8 velocities a tree of hinges and slides takes the loops (the measured crossover), with
-// joints that follow another's coordinate among them; a ball joint keeps the straight-line closed
+// joints that follow another's coordinate among them, and below a root joint of several velocities
+// (its motion straight-line code); a ball joint below the root keeps the straight-line closed
 // form, whose formulas have its several columns
 TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   EXPECT_FALSE(derive_text(hinge_chain(8, false)).gradient_loops());
   Equations nine = derive_text(hinge_chain(9, false));
   ASSERT_TRUE(nine.gradient_loops());
   EXPECT_EQ(nine.gradient_loops()->parent, (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 6, 7}));
-  EXPECT_TRUE(derive_text(hinge_chain(9, true)).bodies_gradient);
-  EXPECT_FALSE(derive_text(hinge_chain(9, true)).gradient_loops()) << "a ball joint at the root";
+  EXPECT_FALSE(nine.gradient_loops()->root);
+  Equations ball = derive_text(hinge_chain(9, true));
+  ASSERT_TRUE(ball.gradient_loops()) << "a ball joint at the root";
+  ASSERT_TRUE(ball.gradient_loops()->root);
+  const JointedRoot& root = *ball.gradient_loops()->root;
+  EXPECT_EQ(root.velocity, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(root.turns, (std::vector<bool>{true, true, true}));
+  EXPECT_EQ(root.coordinate, (std::vector<int>{0, 1, 2, 3})) << "the quaternion's four components";
+  EXPECT_EQ(ball.gradient_loops()->velocity[0], -1) << "the root's table entries are a fixed link's";
+  EXPECT_EQ(ball.gradient_loops()->velocity[1], 3);
+  EXPECT_FALSE(derive_text(floating).gradient_loops()) << "11 velocities, a ball joint below the free torso";
   // tests/crosscheck/robot_jacobian_test.cpp checks this one's loops against the complex step
   Derivation hand = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/gantry_hand.toml");
   ASSERT_TRUE(hand.equations) << hand.diagnostics.format();
