@@ -317,8 +317,9 @@ std::string listed(const std::vector<std::string>& names) {
   return text;
 }
 
-// a URDF read with balanceinertia: each body MuJoCo balanced given back its link's inertia, with a
-// warning naming the links whose inertia no rigid body has, and one for those left balanced (fused)
+// a URDF's bodies that are one link alone given their link's inertia as the file states it, with a
+// warning naming the links whose inertia no rigid body has (read with balanceinertia), and one for
+// those left balanced (fused)
 void note_stated_inertias(const std::string& urdf, Robot& r) {
   StatedInertias stated = with_stated_inertias(r.bodies, urdf);
   if (!stated.given_back.empty())
@@ -385,7 +386,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, b
                                   "compiler's mass bounds, then taken back to zero",
                                   massless.size(), listed(massless), mj_version_text()));
   }
-  if (left_out.balanced_inertias) note_stated_inertias(urdf, r);
+  if (!urdf.empty()) note_stated_inertias(urdf, r);
   // the geoms MuJoCo's viewer shows by default (groups 0 to 2), for the animation
   static const char* const geom_types[] = {"plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh"};
   for (int g = 0; g < m->ngeom; ++g) {

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <optional>
-#include <sstream>
+#include <set>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "import/urdf_text.hpp"
 #include "import/xml_text.hpp"
 
 namespace eomgen {
@@ -18,15 +20,6 @@ namespace {
 double number_attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
   std::optional<std::string> value = attribute(text, start, end, name);
   return value ? std::strtod(value->c_str(), nullptr) : 0.0;
-}
-
-Triple triple_attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
-  Triple t{0, 0, 0};
-  if (std::optional<std::string> value = attribute(text, start, end, name)) {
-    std::istringstream in(*value);
-    in >> t[0] >> t[1] >> t[2];
-  }
-  return t;
 }
 
 // URDF's rpy: R = Rz(yaw) Ry(pitch) Rx(roll)
@@ -57,6 +50,8 @@ std::optional<Eigen::Matrix3d> link_frame_tensor(const std::string& urdf, std::s
 // principal moments and axes to the last digit (MuJoCo's mju_eig3 leaves errors near 1e-8); a
 // moment of rounding's size alone (a rank-one dummy inertia's, of either sign) is zero
 void set_principal(const Eigen::Matrix3d& tensor, LinkInertia& l) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) l.tensor[std::size_t(3 * r + c)] = tensor(r, c);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(tensor);
   Eigen::Vector3d moments = eigen.eigenvalues();
   Eigen::Matrix3d axes = eigen.eigenvectors();
@@ -80,16 +75,44 @@ std::optional<LinkInertia> link_inertia(const std::string& urdf, std::size_t lin
   if (!tensor) return std::nullopt;
   LinkInertia l;
   l.link = *name;
-  std::size_t mass = element_start(urdf, "mass", inertial);
+  std::size_t mass = element_start(urdf, "mass", inertial), origin = element_start(urdf, "origin", inertial);
   if (mass != std::string::npos && mass < inertial_end) l.mass = number_attribute(urdf, mass, past_tag(urdf, mass), "value");
+  if (origin != std::string::npos && origin < inertial_end) l.center = triple_attribute(urdf, origin, past_tag(urdf, origin), "xyz");
   set_principal(*tensor, l);
   return l;
 }
 
-// the body that is this link alone: a body of several links (MuJoCo fuses a floating base's fixed
-// links) has more mass than its own
-bool is_link_alone(const RobotBody& b, const LinkInertia& l) {
+// the body that is this link alone, or with the links fixed to it: its mass and centre those
+bool is_body_of(const RobotBody& b, const LinkInertia& l) {
+  double size = 0;
+  for (std::size_t k = 0; k < 3; ++k) size = std::max({size, std::abs(l.center[k]), std::abs(b.center[k])});
+  for (std::size_t k = 0; k < 3; ++k)
+    if (std::abs(l.center[k] - b.center[k]) > 1e-9 * std::max(size, 1e-3)) return false;
   return b.name == l.link && std::abs(l.mass - b.mass) <= 1e-12 * std::abs(l.mass);
+}
+
+// a link's mass, centre and tensor in the frame of a link it is fixed to, d = turn·x + shift
+struct MassPart {
+  std::string link;
+  double mass;
+  Eigen::Vector3d center;
+  Eigen::Matrix3d tensor;
+};
+
+// a link and the links that hang from it by fixed joints, in its frame
+void collect_fixed(const std::string& link, const Eigen::Matrix3d& turn, const Eigen::Vector3d& shift,
+                   const std::map<std::string, const LinkInertia*>& stated, const std::vector<UrdfJoint>& joints,
+                   std::vector<MassPart>& parts, std::size_t depth) {
+  if (depth > joints.size()) return;  // a cycle, which the import refuses before this
+  if (auto l = stated.find(link); l != stated.end() && l->second->mass > 0) {
+    Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> I(l->second->tensor.data());
+    Eigen::Vector3d c(l->second->center[0], l->second->center[1], l->second->center[2]);
+    parts.push_back({link, l->second->mass, turn * c + shift, turn * I * turn.transpose()});
+  }
+  for (const UrdfJoint& j : joints)
+    if (j.parent == link && j.type == "fixed")
+      collect_fixed(j.child, turn * rotation_of(j.rpy), turn * Eigen::Vector3d(j.xyz[0], j.xyz[1], j.xyz[2]) + shift, stated,
+                    joints, parts, depth + 1);
 }
 
 }  // namespace
@@ -109,20 +132,53 @@ std::vector<LinkInertia> urdf_link_inertias(const std::string& urdf) {
   return links;
 }
 
+std::vector<LinkInertia> urdf_fused_inertias(const std::string& urdf, const std::vector<LinkInertia>& links) {
+  std::map<std::string, const LinkInertia*> stated;
+  for (const LinkInertia& l : links) stated[l.link] = &l;
+  std::vector<UrdfJoint> joints = urdf_joints(urdf);
+  std::set<std::string> tops;
+  for (const UrdfJoint& j : joints)
+    if (j.type == "fixed") tops.insert(j.parent);
+  std::vector<LinkInertia> fused;
+  for (const std::string& top : tops) {
+    std::vector<MassPart> parts;
+    collect_fixed(top, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), stated, joints, parts, 0);
+    if (parts.size() < 2) continue;
+    LinkInertia l;
+    l.link = top;
+    Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+    for (const MassPart& p : parts) l.mass += p.mass, moment += p.mass * p.center;
+    Eigen::Vector3d c = moment / l.mass;
+    Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
+    for (const MassPart& p : parts) {
+      Eigen::Vector3d d = p.center - c;
+      I += p.tensor + p.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+      if (p.link != top) l.fused.push_back(p.link);
+    }
+    l.center = {c[0], c[1], c[2]};
+    set_principal(I, l);
+    fused.push_back(l);
+  }
+  return fused;
+}
+
 StatedInertias with_stated_inertias(std::vector<RobotBody>& bodies, const std::string& urdf) {
   StatedInertias out;
-  for (const LinkInertia& l : urdf_link_inertias(urdf)) {
-    auto alone = std::find_if(bodies.begin(), bodies.end(), [&](const RobotBody& b) { return is_link_alone(b, l); });
-    if (alone == bodies.end()) {
-      if (l.unbalanced) out.left_balanced.push_back(l.link);
-      continue;
-    }
-    const Triple& m = alone->principal_inertia;
-    if (m[0] != m[1] || m[1] != m[2]) continue;  // not balanced by MuJoCo
-    alone->principal_inertia = l.principal;
-    alone->inertia_axes = l.axes;
-    if (l.unbalanced) out.given_back.push_back(l.link);
+  std::vector<LinkInertia> links = urdf_link_inertias(urdf), fused = urdf_fused_inertias(urdf, links);
+  std::vector<const LinkInertia*> candidates;
+  for (const LinkInertia& l : links) candidates.push_back(&l);
+  for (const LinkInertia& l : fused) candidates.push_back(&l);
+  std::set<std::string> taken;
+  for (const LinkInertia* l : candidates) {
+    auto body = std::find_if(bodies.begin(), bodies.end(), [&](const RobotBody& b) { return is_body_of(b, *l); });
+    if (body == bodies.end() || !taken.insert(l->link).second) continue;
+    body->center = l->center;
+    body->principal_inertia = l->principal;
+    body->inertia_axes = l->axes;
+    taken.insert(l->fused.begin(), l->fused.end());
   }
+  for (const LinkInertia& l : links)
+    if (l.unbalanced) (taken.count(l.link) ? out.given_back : out.left_balanced).push_back(l.link);
   return out;
 }
 

@@ -4,9 +4,12 @@
 /// them ("inertia must satisfy A + B >= C"); with its `balanceinertia` it replaces each by the mean
 /// of its three moments, which changes the dynamics. So a URDF it refuses is read again with
 /// `balanceinertia`, and each body MuJoCo balanced is given back the inertia its link's <inertial>
-/// states.
+/// states. So is every other body that is one link alone: MuJoCo's principal axes of a full tensor
+/// (mju_eig3, an iteration with a loose stop) turn it, where a URDF reader takes the six numbers as
+/// written (tests/crosscheck/urdf/seven_joint_arm.urdf's accelerations moved by 1.2e-7).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -25,13 +28,21 @@ std::string with_balanced_inertias(const std::string& urdf);
 struct LinkInertia {
   std::string link;
   double mass = 0;
+  Triple center{0, 0, 0};           // in the link's frame
+  std::array<double, 9> tensor{};   // about the centre, in the link's frame, row-major
   Triple principal{0, 0, 0};
   Quaternion axes{1, 0, 0, 0};
   bool unbalanced = false;  // A + B < C for some order of the moments, or a moment below zero
+  std::vector<std::string> fused;  // the links fixed to it whose mass it includes (urdf_fused_inertias)
 };
 
 /// Every link of the URDF text with an <inertial> and an <inertia>, in the file's order.
 std::vector<LinkInertia> urdf_link_inertias(const std::string& urdf);
+
+/// Each link that other links with mass hang from by fixed joints (down the tree), with those links,
+/// as one rigid body in its frame, as MuJoCo fuses them (a floating base's fixed links): the masses
+/// summed, the centre of mass, and the tensor about it, Σ R I Rᵀ + m (|d|² 1 − d dᵀ) (Steiner).
+std::vector<LinkInertia> urdf_fused_inertias(const std::string& urdf, const std::vector<LinkInertia>& links);
 
 /// The links of the URDF text whose inertia no rigid body has: given back as stated, and left with
 /// MuJoCo's balanced moments (fused into another body).
@@ -39,8 +50,9 @@ struct StatedInertias {
   std::vector<std::string> given_back, left_balanced;
 };
 
-/// Each body that is one link of the URDF text alone (its mass is the link's) and whose three
-/// principal moments MuJoCo made equal takes that link's inertia from the text.
+/// Each body that is one link of the URDF text alone (its mass is the link's), or a link with those
+/// fixed to it (its mass and centre theirs), takes the inertia the text states: its centre,
+/// principal moments and axes to the last digit.
 StatedInertias with_stated_inertias(std::vector<RobotBody>& bodies, const std::string& urdf);
 
 }  // namespace eomgen

@@ -73,9 +73,15 @@ std::vector<UrdfJoint> urdf_joints(const std::string& urdf) {
     // a <transmission>'s <joint> names a joint and has neither parent nor child
     if (close == std::string::npos || parent > close || child > close) continue;
     std::size_t end = urdf.find('>', at);
-    joints.push_back({attribute(urdf, at, end, "name").value_or(""), attribute(urdf, at, end, "type").value_or(""),
-                      attribute(urdf, parent, urdf.find('>', parent), "link").value_or(""),
-                      attribute(urdf, child, urdf.find('>', child), "link").value_or(""), line_of(urdf, at)});
+    UrdfJoint j{attribute(urdf, at, end, "name").value_or(""), attribute(urdf, at, end, "type").value_or(""),
+                attribute(urdf, parent, urdf.find('>', parent), "link").value_or(""),
+                attribute(urdf, child, urdf.find('>', child), "link").value_or(""), line_of(urdf, at), {0, 0, 0}, {0, 0, 0}};
+    if (std::size_t origin = element_start(urdf, "origin", at); origin < close) {
+      std::size_t origin_end = past_tag(urdf, origin);
+      j.xyz = triple_attribute(urdf, origin, origin_end, "xyz");
+      j.rpy = triple_attribute(urdf, origin, origin_end, "rpy");
+    }
+    joints.push_back(j);
   }
   return joints;
 }

@@ -5,6 +5,7 @@
 /// goes with it: a tool flange or a camera mount a user would want as a frame and a point.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,7 @@ std::vector<UrdfMimic> urdf_mimics(const std::string& urdf);
 struct UrdfJoint {
   std::string name, type, parent, child;
   int line = 0;
+  std::array<double, 3> xyz{0, 0, 0}, rpy{0, 0, 0};  // its <origin>: the child's frame in the parent's
 };
 std::vector<UrdfJoint> urdf_joints(const std::string& urdf);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <sstream>
 
 namespace eomgen {
 
@@ -54,6 +55,15 @@ std::optional<std::string> attribute(const std::string& text, std::size_t start,
   if (!span) return std::nullopt;
   std::size_t open = text.find_first_of("\"'", span->first + name.size());
   return text.substr(open + 1, span->second - open - 2);
+}
+
+std::array<double, 3> triple_attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
+  std::array<double, 3> t{0, 0, 0};
+  if (std::optional<std::string> value = attribute(text, start, end, name)) {
+    std::istringstream in(*value);
+    in >> t[0] >> t[1] >> t[2];
+  }
+  return t;
 }
 
 std::string with_compiler_attributes(const std::string& text, const std::string& attributes, const std::vector<std::string>& names) {

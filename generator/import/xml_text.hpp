@@ -3,6 +3,7 @@
 /// break kept where it was.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,6 +27,9 @@ std::optional<std::pair<std::size_t, std::size_t>> attribute_span(const std::str
 
 /// The value of attribute `name` in the tag [start, end), or nothing.
 std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name);
+
+/// The three numbers of attribute `name` ("x y z") in the tag [start, end), zeros where missing.
+std::array<double, 3> triple_attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name);
 
 /// `text` with `attributes` (` name="value"`, each with a space in front) in the <compiler> of its
 /// <mujoco>: added to the compiler there, or in a <compiler> put first in <mujoco>, or for a URDF

@@ -20,6 +20,7 @@
 #include <mujoco/mujoco.h>
 
 #include "mujoco_model.hpp"
+#include "support/urdf_inertias.hpp"
 
 #include "branched_tree.hpp"
 #include "geared_gripper.hpp"
@@ -91,6 +92,8 @@ void expect_matches_mujoco(const std::string& file, int nq, int nv, int m, Rhs m
   ASSERT_NE(mj.model, nullptr) << mj.message;
   // joint limits and contacts are what eomgen keeps as information only (a URDF's limits are on)
   mj.model->opt.disableflags |= mjDSBL_LIMIT | mjDSBL_CONTACT;
+  // a URDF's inertias as it states them, not turned by MuJoCo's principal axes
+  if (file.size() > 5 && file.compare(file.size() - 5, 5, ".urdf") == 0) with_stated_urdf_inertias(mj.model, mjcf(file));
   auto p = Parameters().values();
   auto rhs = [&](const double* x, const double* u, double* xdot) { model_rhs(0.0, x, u, p.data(), xdot); };
   double worst = worst_relative_difference(mj, nq, nv, m, rhs, 200);

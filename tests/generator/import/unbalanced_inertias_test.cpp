@@ -1,13 +1,15 @@
 // Inertias that no rigid body has (generator/import/unbalanced_inertias.hpp): MuJoCo's compiler
 // refuses a URDF link whose principal moments break A + B >= C, and with balanceinertia would
-// average them; the import takes them as the file states them. The links' inertias read from the
-// text are checked against MuJoCo's own reading of a valid one, and the imported arm's M against
-// the stated tensor worked out by hand.
+// average them; the import takes them as the file states them, and a valid link's too (MuJoCo's
+// principal axes turn a full tensor). The imported tensors are checked against the
+// stated ones turned by rpy by hand, and the imported arm's M against the stated tensor.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -41,27 +43,60 @@ std::string one_link_urdf(const std::string& inertial) {
          "    <child link=\"arm\"/>\n    <origin xyz=\"0 0 0\"/>\n    <axis xyz=\"0 0 1\"/>\n  </joint>\n</robot>\n";
 }
 
-TEST(UnbalancedInertias, TheTextsInertiaIsTheOneMujocoReadsFromAValidLink) {
+std::array<double, 9> product(const std::array<double, 9>& a, const std::array<double, 9>& b) {
+  std::array<double, 9> c{};
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) c[std::size_t(3 * r + j)] += a[std::size_t(3 * r + k)] * b[std::size_t(3 * k + j)];
+  return c;
+}
+
+// URDF's rpy as a matrix, R = Rz(yaw) Ry(pitch) Rx(roll), each factor written out
+std::array<double, 9> rpy_matrix(double roll, double pitch, double yaw) {
+  double cr = std::cos(roll), sr = std::sin(roll), cp = std::cos(pitch), sp = std::sin(pitch), cy = std::cos(yaw), sy = std::sin(yaw);
+  std::array<double, 9> Rz{cy, -sy, 0, sy, cy, 0, 0, 0, 1}, Ry{cp, 0, sp, 0, 1, 0, -sp, 0, cp}, Rx{1, 0, 0, 0, cr, -sr, 0, sr, cr};
+  return product(product(Rz, Ry), Rx);
+}
+
+// R I Rᵀ for that R
+std::array<double, 9> turned_by_rpy(const std::array<double, 9>& I, double roll, double pitch, double yaw) {
+  std::array<double, 9> R = rpy_matrix(roll, pitch, yaw), Rt{};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) Rt[std::size_t(3 * r + c)] = R[std::size_t(3 * c + r)];
+  return product(product(R, I), Rt);
+}
+
+// A link MuJoCo reads without complaint takes its tensor as stated too: MuJoCo's compiler leaves
+// its principal axes of a turned full tensor off the stated one (here 2e-11 on moments of 0.03),
+// the import's are the stated tensor's to rounding
+TEST(UnbalancedInertias, AValidLinksInertiaIsTheTextsNotMujocosPrincipalAxes) {
   std::string urdf = one_link_urdf(
       "      <origin xyz=\"0.1 -0.02 0.03\" rpy=\"0.3 -0.7 1.1\"/>\n      <mass value=\"1.5\"/>\n"
       "      <inertia ixx=\"0.02\" ixy=\"0.003\" ixz=\"-0.002\" iyy=\"0.025\" iyz=\"0.004\" izz=\"0.03\"/>\n");
+  const std::array<double, 9> stated = turned_by_rpy({0.02, 0.003, -0.002, 0.003, 0.025, 0.004, -0.002, 0.004, 0.03}, 0.3, -0.7, 1.1);
   std::vector<LinkInertia> links = urdf_link_inertias(urdf);
   ASSERT_EQ(links.size(), 1u);
   EXPECT_EQ(links[0].link, "arm");
   EXPECT_EQ(links[0].mass, 1.5);
   EXPECT_FALSE(links[0].unbalanced);
-  auto read = read_with_mujoco(write_file("valid.urdf", urdf));
+  std::string path = write_file("valid.urdf", urdf);
+  auto read = read_with_mujoco(path);
   ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
   const RobotBody* arm = nullptr;
   for (const RobotBody& b : std::get<Robot>(read).bodies)
     if (b.name == "arm") arm = &b;
   ASSERT_NE(arm, nullptr);
-  std::array<double, 9> ours = body_frame_tensor(links[0].principal, links[0].axes),
-                        mujoco = body_frame_tensor(arm->principal_inertia, arm->inertia_axes);
-  // MuJoCo's compiler leaves its principal axes of a turned full tensor about 5e-10 (relative) from
-  // the stated one (measured: 2e-11 on moments of 0.03); a wrong order of roll, pitch and yaw is off
-  // in the second digit
-  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(ours[k], mujoco[k], 1e-9 * 0.03) << k;
+  std::array<double, 9> imported = body_frame_tensor(arm->principal_inertia, arm->inertia_axes);
+  // the eigen-decomposition and R diag Rᵀ again round: 2e-15 of the largest moment, 0.03
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(imported[k], stated[k], 2e-15 * 0.03) << k;
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  std::array<double, 9> mujoco = body_frame_tensor({m->body_inertia[3], m->body_inertia[4], m->body_inertia[5]},
+                                                   {m->body_iquat[4], m->body_iquat[5], m->body_iquat[6], m->body_iquat[7]});
+  double off = 0;
+  for (std::size_t k = 0; k < 9; ++k) off = std::max(off, std::abs(mujoco[k] - stated[k]));
+  std::printf("MuJoCo's compiled tensor: %.2g from the stated one\n", off);
 }
 
 TEST(UnbalancedInertias, AnArmWhoseMomentsBreakTheTriangleKeepsThemAsStated) {
@@ -91,6 +126,77 @@ TEST(UnbalancedInertias, AnArmWhoseMomentsBreakTheTriangleKeepsThemAsStated) {
   Equations e = derive_text(*text);
   ASSERT_EQ(e.num_velocities(), 1u);
   EXPECT_NEAR(value_at(e.mass_matrix(0, 0), point_by_name(e, {{"swing", 0.7}, {"der(swing)", 0.3}, {"g", 9.81}})), 0.02, 1e-15);
+}
+
+// A floating base with a sensor fixed to it (MuJoCo fuses the two into one body): the body's mass,
+// centre and tensor are the two links' as stated, combined by hand here (Steiner's theorem), and
+// MuJoCo's own fused body agrees with them to its principal axes' rounding (a wrong order of the
+// fixed joint's turn and shift, or of roll, pitch and yaw, would be off in the second digit)
+TEST(UnbalancedInertias, LinksFixedToAFloatingBaseAreOneBodyAsStated) {
+  std::string urdf = R"(<robot name="floating_sensor">
+  <link name="base">
+    <inertial><origin xyz="0.01 -0.02 0.03" rpy="0.2 0.1 -0.3"/><mass value="3.0"/>
+      <inertia ixx="0.05" ixy="0.002" ixz="-0.001" iyy="0.06" iyz="0.003" izz="0.07"/></inertial>
+  </link>
+  <link name="sensor">
+    <inertial><origin xyz="0.02 0 0.01" rpy="0.4 -0.2 0.5"/><mass value="0.7"/>
+      <inertia ixx="0.004" ixy="0.0005" ixz="0.0002" iyy="0.005" iyz="-0.0003" izz="0.006"/></inertial>
+  </link>
+  <link name="arm">
+    <inertial><origin xyz="0 0 -0.1"/><mass value="1.0"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.002"/></inertial>
+  </link>
+  <joint name="mount" type="fixed"><parent link="base"/><child link="sensor"/><origin xyz="0.1 0.05 -0.02" rpy="0.3 0.6 -0.9"/></joint>
+  <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/><origin xyz="0 0 -0.1"/><axis xyz="0 1 0"/></joint>
+</robot>
+)";
+  auto read = read_with_mujoco(write_file("floating_sensor.urdf", urdf), true);
+  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
+  const RobotBody* base = nullptr;
+  for (const RobotBody& b : std::get<Robot>(read).bodies)
+    if (b.name == "base") base = &b;
+  ASSERT_NE(base, nullptr);
+  // the sensor in the base's frame: its centre E c + p and tensor E (R I Rᵀ) Eᵀ, E the mount's turn
+  std::array<double, 9> E = rpy_matrix(0.3, 0.6, -0.9);
+  const double c2[3] = {0.02, 0, 0.01}, p[3] = {0.1, 0.05, -0.02};
+  const double m1 = 3.0, m2 = 0.7, m = m1 + m2;
+  std::array<double, 3> centers[2] = {{0.01, -0.02, 0.03}, {}};
+  for (int r = 0; r < 3; ++r) centers[1][std::size_t(r)] = E[std::size_t(3 * r)] * c2[0] + E[std::size_t(3 * r + 1)] * c2[1] + E[std::size_t(3 * r + 2)] * c2[2] + p[r];
+  std::array<double, 9> tensors[2] = {
+      turned_by_rpy({0.05, 0.002, -0.001, 0.002, 0.06, 0.003, -0.001, 0.003, 0.07}, 0.2, 0.1, -0.3),
+      turned_by_rpy({0.004, 0.0005, 0.0002, 0.0005, 0.005, -0.0003, 0.0002, -0.0003, 0.006}, 0.4, -0.2, 0.5)};
+  tensors[1] = turned_by_rpy(tensors[1], 0.3, 0.6, -0.9);
+  std::array<double, 3> center{};
+  for (std::size_t k = 0; k < 3; ++k) center[k] = (m1 * centers[0][k] + m2 * centers[1][k]) / m;
+  std::array<double, 9> combined{};
+  const double masses[2] = {m1, m2};
+  for (int part = 0; part < 2; ++part) {
+    double d[3], dd = 0;
+    for (std::size_t k = 0; k < 3; ++k) d[k] = centers[part][k] - center[k], dd += d[k] * d[k];
+    for (std::size_t r = 0; r < 3; ++r)
+      for (std::size_t c = 0; c < 3; ++c)
+        combined[3 * r + c] += tensors[part][3 * r + c] + masses[part] * ((r == c ? dd : 0.0) - d[r] * d[c]);
+  }
+  EXPECT_NEAR(base->mass, m, 1e-15);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(base->center[k], center[k], 1e-16) << k;
+  std::array<double, 9> imported = body_frame_tensor(base->principal_inertia, base->inertia_axes);
+  double largest = std::max({combined[0], combined[4], combined[8]});
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(imported[k], combined[k], 2e-15 * largest) << k;
+  // MuJoCo's own fused body, from the same file with a free joint
+  std::string floating = urdf;
+  floating.replace(floating.find("<link name=\"base\">"), 18,
+                   "<link name=\"world\"/><joint name=\"root\" type=\"floating\"><parent link=\"world\"/><child link=\"base\"/></joint>"
+                   "<link name=\"base\">");
+  std::string path = write_file("floating_sensor_free.urdf", floating);
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> mj(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(mj) << error;
+  int b = mj_name2id(mj.get(), mjOBJ_BODY, "base");
+  ASSERT_GT(b, 0);
+  EXPECT_NEAR(mj->body_mass[b], m, 1e-15);
+  std::array<double, 9> mujoco = body_frame_tensor({mj->body_inertia[3 * b], mj->body_inertia[3 * b + 1], mj->body_inertia[3 * b + 2]},
+                                                   {mj->body_iquat[4 * b], mj->body_iquat[4 * b + 1], mj->body_iquat[4 * b + 2], mj->body_iquat[4 * b + 3]});
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(mj->body_ipos[3 * b + k], center[k], 1e-12) << k;
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(mujoco[k], combined[k], 1e-6 * largest) << k;
 }
 
 TEST(UnbalancedInertias, ADummyLinksRankOneInertiaHasTwoZeroMoments) {

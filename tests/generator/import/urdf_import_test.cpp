@@ -19,6 +19,7 @@
 
 #include "import/model_writer.hpp"
 #include "import/urdf_text.hpp"
+#include "support/urdf_inertias.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -77,7 +78,7 @@ const char* const flanged_arm = R"(<?xml version="1.0"?>
 </robot>
 )";
 
-TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayMujocos) {
+TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayTheFiles) {
   std::string path = temporary_directory() + "/flanged_arm.urdf";
   std::ofstream(path) << flanged_arm;
   Diagnostics diagnostics;
@@ -99,6 +100,7 @@ TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayMujocos) {
   std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(kept.c_str(), nullptr, error, sizeof error), mj_deleteModel);
   ASSERT_TRUE(m) << error;
   ASSERT_EQ(m->nbody, 6) << "the world, the base and four links";
+  with_stated_urdf_inertias(m.get(), kept);
   std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
   std::mt19937 random(3);
   std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
