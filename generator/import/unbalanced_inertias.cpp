@@ -82,12 +82,14 @@ std::optional<LinkInertia> link_inertia(const std::string& urdf, std::size_t lin
   return l;
 }
 
-// the body that is this link alone, or with the links fixed to it: its mass and centre those
+// the body that is this link alone, or with the links fixed to it: its mass and centre those (to
+// MuJoCo's rounding of the centre it sums, relative to the body's size: its centre's distance or its
+// radius of gyration, which the parts' distances set where they balance about the origin)
 bool is_body_of(const RobotBody& b, const LinkInertia& l) {
-  double size = 0;
+  double size = l.mass > 0 ? std::sqrt(std::max(0.0, (l.tensor[0] + l.tensor[4] + l.tensor[8]) / l.mass)) : 0.0;
   for (std::size_t k = 0; k < 3; ++k) size = std::max({size, std::abs(l.center[k]), std::abs(b.center[k])});
   for (std::size_t k = 0; k < 3; ++k)
-    if (std::abs(l.center[k] - b.center[k]) > 1e-9 * std::max(size, 1e-3)) return false;
+    if (std::abs(l.center[k] - b.center[k]) > 1e-9 * size) return false;
   return b.name == l.link && std::abs(l.mass - b.mass) <= 1e-12 * std::abs(l.mass);
 }
 
