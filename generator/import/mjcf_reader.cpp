@@ -317,9 +317,9 @@ std::string listed(const std::vector<std::string>& names) {
   return text;
 }
 
-// a URDF's bodies that are one link alone given their link's inertia as the file states it, with a
-// warning naming the links whose inertia no rigid body has (read with balanceinertia), and one for
-// those left balanced (fused)
+// a URDF's bodies given their links' inertias as the file states them (a link alone, or a link with
+// those MuJoCo fused into it), with a warning naming the links whose inertia no rigid body has (read
+// with balanceinertia), and one for those left balanced (in a body that could not be matched)
 void note_stated_inertias(const std::string& urdf, Robot& r) {
   StatedInertias stated = with_stated_inertias(r.bodies, urdf);
   if (!stated.given_back.empty())
