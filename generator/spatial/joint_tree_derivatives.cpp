@@ -252,13 +252,13 @@ class Gradient {
   // add into its leader's, as pairs() does
   bool loops_take_it() const {
     for (std::size_t j = 1; j < links_.size(); ++j)
-      if (!links_[j].columns.empty() && (!is_hinge(j) || links_[j].directions.size() != 1)) return false;
+      if (!links_[j].columns.empty() && !is_loop_hinge(j)) return false;
     return true;
   }
 
   // the first link's joint when it is of several velocities: its motion, straight-line
   std::optional<JointedRoot> jointed_root(const Vector3& gravity, const std::vector<ex>& ddq) {
-    if (links_.empty() || links_[0].columns.empty() || (is_hinge(0) && links_[0].directions.size() == 1)) return std::nullopt;
+    if (links_.empty() || links_[0].columns.empty() || is_loop_hinge(0)) return std::nullopt;
     place(0, gravity, ddq);
     joint_motion(0);
     auto six = [](const SpatialVector& x) {
@@ -282,6 +282,9 @@ class Gradient {
   }
 
  private:
+  // a hinge or slide of one coordinate, which the loops' tables hold
+  bool is_loop_hinge(std::size_t j) const { return is_hinge(j) && links_[j].directions.size() == 1; }
+
   // a joint of one column that turns with its link, whose coordinate's twist is that column's S
   // (a hinge or a slide, a follower's too): its own velocity's Ψ' is v_λ × S
   bool is_hinge(std::size_t j) const {
