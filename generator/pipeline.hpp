@@ -29,7 +29,18 @@ Derivation derive_model_file_as(const std::string& path, const std::string& meth
 struct ModelChoice {
   std::string scene, variant;
   std::vector<std::string> freeze;  // coordinates held at their (the scene's) initial values
+  /// frames written as products of turns stay written out in q though they read as joints
+  /// (model/build_model: diff compares equations in q)
+  bool written_out = false;
 };
+
+/// The file's own model, written out in q when `written_out`: for the analyses that differentiate
+/// or solve the equations symbolically (ModelChoice::written_out).
+inline ModelChoice model_written_out(bool written_out = true) {
+  ModelChoice choice;
+  choice.written_out = written_out;
+  return choice;
+}
 
 /// Reads a model file and derives the model `choice` names.
 Derivation derive_model_file_for(const std::string& path, const ModelChoice& choice);

@@ -7,6 +7,7 @@
 #   support  not tests: helpers and the registry of generated headers
 set(EOMGEN_TEST_FILES
   support/test_support.cpp                          support  sanitized
+  support/expanded_oracle.cpp                       support  sanitized
   generated/header_registry.cpp                     support
   generated/scalar_types.cpp                        support
   generated/generated_header_test.cpp               fast
@@ -14,6 +15,7 @@ set(EOMGEN_TEST_FILES
   generator/model/expression_parser_test.cpp        fast     sanitized
   generator/model/frames_test.cpp                   slow     sanitized
   generator/model/joints_test.cpp                   fast     sanitized
+  generator/model/frame_joints_test.cpp             slow     sanitized
   generator/spatial/joint_frames_test.cpp           fast     sanitized
   generator/spatial/joint_tree_dynamics_test.cpp    fast     sanitized
   generator/spatial/joint_tree_derivatives_test.cpp slow

@@ -134,7 +134,7 @@ bool is_model_file(const std::string& path) { return path.size() > 5 && path.sub
 std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnostics& diagnostics) {
   std::string json;
   if (is_model_file(path)) {
-    Derivation d = derive_model_file(path);
+    Derivation d = derive_model_file_for(path, model_written_out());
     if (!d.diagnostics.empty()) {
       for (const Diagnostic& x : d.diagnostics.list()) diagnostics.error(x.where, x.key, x.message, x.hint);
       return std::nullopt;

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "model/frame_joints.hpp"
 #include "model/model_builder.hpp"
 #include "model/recursive_frames.hpp"
 
@@ -45,10 +46,37 @@ void ModelBuilder::read_frames() {
       d_.error(f.where, f.key, fmt::format("frame '{}' moves with time t itself", f.name),
                "recursive kinematics takes frames placed by the coordinates alone: make the prescribed motion a "
                "coordinate, or use kinematics = \"expanded\"");
+    int parent_link = link_of(f.parent);
+    if (tree_ && !joint && !f.joint)
+      if (auto links = frame_as_joints(relative, origin, m_.symbols)) {
+        // a universal joint's first turns are massless links of their own, the frame the last
+        for (std::size_t k = 0; k + 1 < links->size(); ++k) {
+          place_recursive_frame(m_, inner_link_name(f.name, k + 1), parent_link, (*links)[k].relative, (*links)[k].origin);
+          m_.frame_links.back().joint = (*links)[k].joint;
+          parent_link = int(m_.frame_links.size()) - 1;
+        }
+        relative = links->back().relative;
+        origin = links->back().origin;
+        joint = links->back().joint;
+      }
     frame_index_[f.name] = int(m_.frame_links.size());
-    frames_.emplace(f.name, place_recursive_frame(m_, f.name, link_of(f.parent), relative, origin));
+    frames_.emplace(f.name, place_recursive_frame(m_, f.name, parent_link, relative, origin));
     m_.frame_links.back().joint = joint;
   }
+}
+
+// NAME_turnK, or with more underscores where the file names a frame so
+std::string ModelBuilder::inner_link_name(const std::string& frame, std::size_t k) const {
+  std::string name = fmt::format("{}_turn{}", frame, k);
+  auto taken = [&](const std::string& n) {
+    for (const FrameEntry& f : f_.frames)
+      if (f.name == n) return true;
+    for (const FrameLink& l : m_.frame_links)
+      if (l.name == n) return true;
+    return false;
+  };
+  while (taken(name)) name = fmt::format("{}_{}", frame, name.substr(frame.size()));
+  return name;
 }
 
 int ModelBuilder::link_of(const std::string& name) const {

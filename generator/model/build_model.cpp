@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "model/model_builder.hpp"
+#include "spatial/joint_tree_dynamics.hpp"
 
 namespace eomgen {
 
@@ -26,11 +27,11 @@ Model ModelBuilder::build() {
   m_.name = f_.name;
   m_.title = f_.title;
   m_.method = f_.method;
-  // frames with joints are a tree for the spatial recursions unless the file says otherwise
+  // frames with joints, or read as joints (tree_), are a tree for the spatial recursions unless the
+  // file says otherwise
   bool joints = std::any_of(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) { return f.joint.has_value(); });
-  m_.recursive_kinematics =
-      f_.kinematics == "recursive" ||
-      (f_.kinematics_where.line == 0 && joints && (f_.method == "lagrange2" || f_.method == "lagrange1"));
+  m_.recursive_kinematics = f_.kinematics == "recursive" || (f_.kinematics_where.line == 0 && (joints || tree_) &&
+                                                              (f_.method == "lagrange2" || f_.method == "lagrange1"));
   check_spherical_joints();
   m_.forward_dynamics = f_.forward_dynamics;
   m_.source = f_.path;
@@ -226,7 +227,17 @@ void ModelBuilder::check_complete() {
              "add [[particles]], [[rigid_bodies]] or [energy] kinetic = \"...\"");
 }
 
-Model build_model(const ModelFile& file, Diagnostics& diagnostics) {
+// Frames written as products of turns by the coordinates are a tree of joints when every one of
+// them reads as joints (model/frame_joints.hpp) or has one and the bodies sit still in them: the
+// model is then built as that tree, which the spatial algorithms derive, and otherwise as written
+// (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion
+// of kinematics/recursive_kinematics.hpp).
+Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool tree_from_rotations) {
+  if (tree_from_rotations && !file.frames.empty() && file.kinematics_where.line == 0) {
+    Diagnostics trial;
+    Model tree = ModelBuilder(file, trial, true).build();
+    if (trial.empty() && tree.recursive_kinematics && !why_not_a_joint_tree(tree)) return tree;
+  }
   return ModelBuilder(file, diagnostics).build();
 }
 

@@ -24,7 +24,9 @@ bool moves_with(const GiNaC::matrix& R, const Symbols& s);
 
 class ModelBuilder {
  public:
-  ModelBuilder(const ModelFile& file, Diagnostics& d) : f_(file), d_(d) {}
+  /// `tree`: read frames written as products of turns as joints (model/frame_joints.hpp), in the
+  /// recursive kinematics, when the file leaves kinematics out (build_model() tries it first)
+  ModelBuilder(const ModelFile& file, Diagnostics& d, bool tree = false) : f_(file), d_(d), tree_(tree) {}
   Model build();
 
  private:
@@ -51,6 +53,8 @@ class ModelBuilder {
   void read_frames();
   // the frame link of a frame name for recursive kinematics; -1: the inertial frame (or none)
   int link_of(const std::string& name) const;
+  // the name of the k-th massless link of a frame read as several joints, one no frame has
+  std::string inner_link_name(const std::string& frame, std::size_t k) const;
   // where a body is, for recursive kinematics; a body outside the frames must not be placed
   // through them (by a point): only the recursion knows how such a position moves
   FramePlacement placement(const std::string& frame_name, const Vector3& local, const Rotation& relative,
@@ -108,11 +112,12 @@ class ModelBuilder {
 
   const ModelFile& f_;
   Diagnostics& d_;
+  bool tree_ = false;
   Model m_;
   std::map<std::string, SourceLocation> declared_at_;
   std::map<std::string, int> body_names_;
   std::map<std::string, PlacedFrame> frames_;
-  std::map<std::string, int> frame_index_;
+  std::map<std::string, int> frame_index_;  // recursive kinematics: a frame's index in m_.frame_links
   // the [[points]] as read_points placed them, for the drawing
   struct PlacedPoint {
     std::string name;
@@ -121,7 +126,7 @@ class ModelBuilder {
     std::string frame;
   };
   std::vector<PlacedPoint> placed_points_;
-  std::set<std::string> angular_velocity_names_;  // of the ball and free joints so far  // recursive kinematics: a frame's index in m_.frame_links
+  std::set<std::string> angular_velocity_names_;  // of the ball and free joints so far
 };
 
 }  // namespace eomgen

@@ -70,7 +70,7 @@ int linear(const LinearOptions& o) {
     return exit_user_error;
   }
   LoadedProblem loaded;
-  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  if (auto status = load_problem(o.model, o.sets, loaded, {}, model_written_out(o.symbolic))) return *status;
   if (auto status = stability_refusal(loaded, o.model, false, false)) return *status;
   // the linear analyses need A, B constant: a linearization frozen at t = 0 of equations that
   // depend on time (a periodically forced Duffing oscillator) would be answered without a word

@@ -69,8 +69,8 @@ bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& te
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out,
                                 const std::vector<std::string>& reduce, const ModelChoice& choice) {
   Derivation d = !reduce.empty()                                 ? derive_reduced_model_file(model, reduce)
-                 : !choice.scene.empty() || !choice.variant.empty() ? derive_model_file_for(model, choice)
-                                                                    : derive_model_file(model);
+                 : !choice.scene.empty() || !choice.variant.empty() || choice.written_out ? derive_model_file_for(model, choice)
+                                                                                          : derive_model_file(model);
   if (!d.diagnostics.empty()) {
     std::cerr << d.diagnostics.format();
     return exit_user_error;

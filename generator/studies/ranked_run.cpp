@@ -5,12 +5,13 @@
 namespace eomgen::studies {
 
 std::optional<int> load_on_every_rank(const distribute::Ranks& ranks, const std::string& model,
-                                      const std::vector<std::string>& sets, LoadedProblem& out) {
+                                      const std::vector<std::string>& sets, LoadedProblem& out,
+                                      const ModelChoice& choice) {
   std::optional<int> status;
-  if (ranks.is_root()) status = load_problem(model, sets, out);
+  if (ranks.is_root()) status = load_problem(model, sets, out, {}, choice);
   int root_status = ranks.broadcast(status.value_or(0));
   if (root_status != 0) return root_status;
-  if (!ranks.is_root()) status = load_problem(model, sets, out);
+  if (!ranks.is_root()) status = load_problem(model, sets, out, {}, choice);
   // every rank must know, or the others would wait for it in the sweep's first gather
   if (ranks.any(status.has_value())) {
     if (ranks.is_root())

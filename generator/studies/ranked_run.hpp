@@ -17,8 +17,10 @@ namespace eomgen::studies {
 /// Rank 0 derives and compiles first; the others follow once the header is in the cache,
 /// or return rank 0's exit status when it failed (which rank 0 has said). When another
 /// rank fails (a host without the compiler), rank 0 says so and every rank returns.
+/// `choice` as load_problem's.
 std::optional<int> load_on_every_rank(const distribute::Ranks& ranks, const std::string& model,
-                                      const std::vector<std::string>& sets, LoadedProblem& out);
+                                      const std::vector<std::string>& sets, LoadedProblem& out,
+                                      const ModelChoice& choice = {});
 
 /// Rank 0's answer to a question about the file system (an output file's folder), on every
 /// rank: empty when rank 0 found nothing wrong.

@@ -35,7 +35,7 @@ std::vector<std::string> split_names(const std::string& list) {
 int stability(const StabilityOptions& given) {
   StabilityOptions o = given;
   LoadedProblem loaded;
-  if (auto status = load_problem(o.model, o.sets, loaded)) return *status;
+  if (auto status = load_problem(o.model, o.sets, loaded, {}, model_written_out(!o.symbolic.empty()))) return *status;
   RouthRequest routh = routh_request(*loaded.compiled->abi(), o.at);
   if (!routh.eliminated.empty()) {
     o.at = routh.at;

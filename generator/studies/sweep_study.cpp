@@ -74,7 +74,7 @@ int run_sweep(const SweepOptions& o) {
   const distribute::Ranks& ranks = distribute::Ranks::world();
   QuietUnlessRoot quiet(ranks);
   LoadedProblem loaded;
-  if (auto status = load_on_every_rank(ranks, o.model, o.sets, loaded)) return *status;
+  if (auto status = load_on_every_rank(ranks, o.model, o.sets, loaded, model_written_out(o.symbolic))) return *status;
   if (auto status = stability_refusal(loaded, o.model, o.symbolic, true)) return *status;
   if (time_dependence(loaded.equations, loaded.problem.parameters).depends_on_time) {
     std::cerr << "eomgen: error: the equations depend on time: a map of eigenvalues at frozen t would be wrong for them\n"

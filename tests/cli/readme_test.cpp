@@ -27,7 +27,7 @@ TEST(Readme, WhatTheModelsUseIsNotStillToCome) {
       {"frames", "[[frames]]", {"frames"}},
       {"points", "[[points]]", {"points"}},
       {"rolling contact", "rolling", {"rolling"}},
-      {"recursive kinematics", "kinematics = \"recursive\"", {"recursive", "O(n)"}},
+      {"trees of frames turned by products of rotations (read as joints)", "rotation = \"rot_z(a1)*rot_x(b1)\"", {"recursive", "O(n)"}},
       {"joints about any axis", "joint    = { type = \"revolute\"", {"any axis"}},
       {"shapes to animate", "shape    =", {"animation"}},
   };

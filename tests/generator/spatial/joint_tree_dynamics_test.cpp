@@ -19,6 +19,7 @@
 #include "parse/model_file.hpp"
 #include "pipeline.hpp"
 #include "spatial/joint_tree_dynamics.hpp"
+#include "support/expanded_oracle.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -106,90 +107,6 @@ acceleration = ["0", "0", "-g"]
 potential = "20*s^2"
 dissipation = "0.3*der(a)^2/2"
 )toml";
-
-Model built(const std::string& text) {
-  Diagnostics d;
-  ModelFile file = parse_model_text(text, "tree.toml", d);
-  Model m = build_model(file, d);
-  EXPECT_TRUE(d.empty()) << d.format();
-  return m;
-}
-
-// parameters, coordinates, their rates and the four accelerations ddq0…ddq3, by name
-std::map<std::string, double> random_point(const Equations& e, std::mt19937& random) {
-  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3), scale(0.5, 2);
-  std::map<std::string, double> values;
-  for (const std::string& p : e.symbols.parameter_names) values[p] = scale(random);
-  for (const std::string& q : e.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
-  for (int k = 0; k < 4; ++k) values[fmt::format("ddq{}", k)] = rate(random);
-  return values;
-}
-
-// M, f, τ and T of the recursions against the expanded derivation of the same model, at random states
-void expect_expanded_equations(const std::string& recursive_text, const std::string& expanded_text, unsigned n) {
-  Model model = built(recursive_text);
-  ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
-  Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
-  ASSERT_EQ(recursive.inverse_dynamics.size(), n);
-  std::mt19937 random(5);
-  for (int point = 0; point < 10; ++point) {
-    std::map<std::string, double> values = random_point(recursive, random);
-    GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
-    auto near = [](double x, double y, const std::string& what) {
-      EXPECT_NEAR(x, y, 1e-11 * std::max({1.0, std::abs(x), std::abs(y)})) << what;
-    };
-    for (unsigned j = 0; j < n; ++j) {
-      double f = value_at(recursive.forcing[j], at);
-      near(f, value_at(expanded.forcing[j], full), fmt::format("f[{}]", j));
-      double Mddq = 0;
-      for (unsigned k = 0; k < n; ++k) {
-        double M = value_at(recursive.mass_matrix(j, k), at);
-        near(M, value_at(expanded.mass_matrix(j, k), full), fmt::format("M[{}][{}]", j, k));
-        Mddq += M * values.at(fmt::format("ddq{}", k));
-      }
-      near(value_at(recursive.inverse_dynamics[j], at), Mddq - f, fmt::format("tau[{}] = (M q'' - f)[{}]", j, j));
-    }
-    near(value_at(recursive.kinetic_energy, at), value_at(expanded.kinetic_energy, full), "T");
-  }
-}
-
-// the bodies' ∂τ/∂q and ∂τ/∂q' in closed form (spatial/joint_tree_derivatives.hpp), plus the
-// derivatives of the applied part, against those of M q'' − f of the expanded derivation,
-// differentiated symbolically
-void expect_expanded_derivatives(const std::string& recursive_text, const std::string& expanded_text, unsigned n) {
-  Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
-  ASSERT_TRUE(recursive.bodies_gradient);
-  const BodiesGradient& bodies = *recursive.bodies_gradient;
-  ASSERT_EQ(bodies.applied_inverse_dynamics.size(), n);
-  std::vector<ex> tau(n);
-  std::vector<GiNaC::symbol> ddq(n);
-  for (unsigned j = 0; j < n; ++j) {
-    tau[j] = -expanded.forcing[j];
-    for (unsigned k = 0; k < n; ++k) tau[j] += expanded.mass_matrix(j, k) * ddq[k];
-  }
-  // each derivative taken once, then evaluated at the points
-  GiNaC::matrix closed_q(n, n), closed_rate(n, n), expected_q(n, n), expected_rate(n, n);
-  for (unsigned j = 0; j < n; ++j)
-    for (unsigned c = 0; c < n; ++c) {
-      closed_q(j, c) = bodies.closed_form.coordinates(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]);
-      closed_rate(j, c) = bodies.closed_form.velocities(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]);
-      expected_q(j, c) = tau[j].diff(expanded.symbols.coordinates[c]);
-      expected_rate(j, c) = tau[j].diff(expanded.symbols.velocities[c]);
-    }
-  std::mt19937 random(11);
-  for (int point = 0; point < 6; ++point) {
-    std::map<std::string, double> values = random_point(recursive, random);
-    GiNaC::exmap at = point_by_name(recursive, values), full = point_by_name(expanded, values);
-    for (unsigned k = 0; k < n; ++k) full[ddq[k]] = values.at(fmt::format("ddq{}", k));
-    for (unsigned j = 0; j < n; ++j)
-      for (unsigned c = 0; c < n; ++c) {
-        double by_q = value_at(closed_q(j, c), at), by_rate = value_at(closed_rate(j, c), at);
-        double want_q = value_at(expected_q(j, c), full), want_rate = value_at(expected_rate(j, c), full);
-        EXPECT_NEAR(by_q, want_q, 1e-11 * std::max(1.0, std::abs(want_q))) << "dtau" << j << "/dq" << c << " at " << point;
-        EXPECT_NEAR(by_rate, want_rate, 1e-11 * std::max(1.0, std::abs(want_rate))) << "dtau" << j << "/dq'" << c;
-      }
-  }
-}
 
 TEST(JointTree, RecursionsGiveTheExpandedEquations) {
   expect_expanded_equations(with_kinematics(tree, "recursive"), with_kinematics(tree, "expanded"), 4);

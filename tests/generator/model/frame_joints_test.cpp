@@ -1,0 +1,207 @@
+// Frames written as products of turns read as joints (generator/model/frame_joints.hpp): with
+// kinematics left out, a tree of such frames is built as the tree of joints it is, which the
+// spatial algorithms derive, and its M, f, T, τ and closed-form derivatives are those of the
+// same model written out in q. A universal joint (rot_z(a)*rot_x(b)) is two links, a turn by
+// 2c + 0.3 about an oblique axis a joint with a multiplier and an offset, a constant turn after
+// the last coordinate's a fixed link. What does not read as joints (an angle in two coordinates or
+// in t, an origin that moves, a particle placed outside the frames) stays written out, and so does
+// every model for Routh's reduction and diff.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "model/model.hpp"
+#include "pipeline.hpp"
+#include "spatial/joint_tree_dynamics.hpp"
+#include "support/expanded_oracle.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+using GiNaC::ex;
+
+const char* turns = R"toml([model]
+name = "turns"
+KINEMATICS
+
+[parameters]
+m = 1.2
+l = 0.5
+g = 9.81
+
+[coordinates]
+a = 0.3
+b = -0.4
+c = 0.6
+d = 0.2
+
+[[frames]]
+name = "yoke"
+origin = ["0", "0", "l"]
+rotation = "rot_x(0.3)*rot_z(a)*rot_x(b)"
+
+[[frames]]
+name = "arm"
+parent = "yoke"
+origin = ["l", "0.1", "0"]
+rotation = "rot_axis(1, 2, 2, 2*c + 0.3)*rot_y(Pi/2)"
+
+[[frames]]
+name = "hand"
+parent = "arm"
+origin = ["0", "0", "0.2"]
+rotation = "rot_y(-d)"
+
+[[rigid_bodies]]
+name = "yoke_link"
+mass = "m"
+frame = "yoke"
+center = ["0.05", "0.02", "-l/2"]
+inertia = [["0.03", "0.002", "-0.001"], ["0.002", "0.028", "0.003"], ["-0.001", "0.003", "0.012"]]
+
+[[rigid_bodies]]
+name = "arm_link"
+mass = "0.7"
+frame = "arm"
+center = ["l/2", "0", "0.01"]
+rotation = "rot_y(0.4)"
+inertia = ["0.002", "0.011", "0.012"]
+
+[[particles]]
+name = "weight"
+mass = "0.4"
+frame = "hand"
+position = ["0", "0.03", "0.1"]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+
+[energy]
+potential = "20*d^2"
+dissipation = "0.3*der(a)^2/2"
+)toml";
+
+const char* spherical_pendulum = R"toml([model]
+name = "pendulum"
+
+[parameters]
+m = 1.2
+l = 0.5
+g = 9.81
+
+[coordinates]
+a = 0.3
+b = 0.4
+
+[[frames]]
+name = "rod"
+rotation = "rot_z(a)*rot_x(b)"
+
+[[particles]]
+name = "bob"
+mass = "m"
+frame = "rod"
+position = ["0", "0", "-l"]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+)toml";
+
+std::string automatic(const std::string& text) { return with_kinematics(text, ""); }
+std::string expanded(const std::string& text) { return with_kinematics(text, "kinematics = \"expanded\""); }
+
+const FrameLink& link_named(const Model& m, const std::string& name) {
+  for (const FrameLink& l : m.frame_links)
+    if (l.name == name) return l;
+  throw std::invalid_argument("no link " + name);
+}
+
+bool same_matrix(const GiNaC::matrix& a, const GiNaC::matrix& b) {
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 3; ++c) {
+      ex d = (a(r, c) - b(r, c)).evalf();
+      if (!GiNaC::is_a<GiNaC::numeric>(d) || std::abs(GiNaC::ex_to<GiNaC::numeric>(d).to_double()) > 1e-15) return false;
+    }
+  return true;
+}
+
+TEST(FrameJoints, ProductsOfTurnsAreLinksWithJoints) {
+  Model m = built(automatic(turns));
+  ASSERT_TRUE(m.recursive_kinematics);
+  ASSERT_FALSE(why_not_a_joint_tree(m)) << *why_not_a_joint_tree(m);
+  std::vector<std::string> names;
+  for (const FrameLink& l : m.frame_links) names.push_back(l.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"yoke_turn1", "yoke", "arm_turn1", "arm", "hand"}));
+  using Type = FrameLink::Joint::Type;
+  const FrameLink::Joint& first = *link_named(m, "yoke_turn1").joint;
+  EXPECT_EQ(first.type, Type::revolute);
+  EXPECT_EQ(first.coordinate, 0);
+  EXPECT_TRUE(same_matrix(first.placement, elementary_rotation(0, ex(0.3))));
+  EXPECT_TRUE((first.placement_origin[2] - parameter_named(m.symbols, "l")).is_zero());
+  const FrameLink::Joint& second = *link_named(m, "yoke").joint;
+  EXPECT_EQ(second.coordinate, 1);
+  EXPECT_EQ(link_named(m, "yoke").parent, 0);
+  EXPECT_TRUE(second.placement_origin[0].is_zero() && second.placement_origin[2].is_zero()) << "it sits at the first's origin";
+  EXPECT_TRUE((second.axis[0] - 1).is_zero());
+  const FrameLink::Joint& oblique = *link_named(m, "arm_turn1").joint;
+  EXPECT_EQ(oblique.coordinate, 2);
+  EXPECT_TRUE((oblique.multiplier - 2).is_zero()) << oblique.multiplier;
+  EXPECT_TRUE((oblique.offset - ex(3) / 10).is_zero()) << oblique.offset;
+  EXPECT_TRUE((oblique.axis[1] - ex(2) / 3).is_zero()) << oblique.axis[1];
+  const FrameLink::Joint& fixed = *link_named(m, "arm").joint;
+  EXPECT_EQ(fixed.type, Type::fixed);
+  EXPECT_TRUE(same_matrix(fixed.placement, elementary_rotation(1, GiNaC::Pi / 2)));
+  const FrameLink::Joint& hand = *link_named(m, "hand").joint;
+  EXPECT_EQ(hand.coordinate, 3);
+  EXPECT_TRUE((hand.multiplier + 1).is_zero());
+}
+
+TEST(FrameJoints, TheTreeGivesTheExpandedEquations) {
+  expect_expanded_equations(automatic(turns), expanded(turns), 4);
+}
+
+TEST(FrameJoints, TheTreeGivesTheExpandedDerivatives) {
+  expect_expanded_derivatives(automatic(turns), expanded(turns), 4);
+}
+
+// each change makes one frame unreadable as joints, and the model stays written out in q
+TEST(FrameJoints, WhatIsNotAJointStaysWrittenOut) {
+  auto changed = [](const std::string& from, const std::string& to) {
+    std::string text = automatic(turns);
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  for (const std::string& text : {changed("rot_y(-d)", "rot_y(c - d)"), changed("rot_y(-d)", "rot_y(sin(d))"),
+                                  changed("rot_y(-d)", "rot_y(d + t)"), changed("[\"0\", \"0\", \"0.2\"]", "[\"0\", \"0\", \"0.2 + d\"]"),
+                                  changed("frame = \"hand\"\nposition = [\"0\", \"0.03\", \"0.1\"]", "position = [\"0\", \"0.03\", \"l*sin(a)\"]")}) {
+    Model m = built(text);
+    EXPECT_FALSE(m.recursive_kinematics) << text;
+    EXPECT_TRUE(m.frame_links.empty()) << text;
+  }
+}
+
+// Routh's reduction, diff and another method work on equations written out in q: a tree read
+// from turns is derived for them as written
+TEST(FrameJoints, RouthAndDiffTakeTheModelWrittenOut) {
+  std::string path = write_model("turns", automatic(turns));
+  Derivation tree = derive_model_file(path);
+  ASSERT_TRUE(tree.diagnostics.empty()) << tree.diagnostics.format();
+  EXPECT_FALSE(tree.equations->intermediates.empty()) << "derived as a tree";
+  ModelChoice as_written;
+  as_written.written_out = true;
+  Derivation written = derive_model_file_for(path, as_written);
+  ASSERT_TRUE(written.diagnostics.empty()) << written.diagnostics.format();
+  EXPECT_TRUE(written.equations->intermediates.empty());
+  // a spherical pendulum on a universal joint: its turn a about the vertical is cyclic
+  std::string pendulum = write_model("pendulum", spherical_pendulum);
+  Derivation reduced = derive_reduced_model_file(pendulum, {"a"});
+  EXPECT_TRUE(reduced.diagnostics.empty()) << reduced.diagnostics.format();
+  // and another method than the file's
+  Derivation hamilton = derive_model_file_as(pendulum, "hamilton");
+  EXPECT_TRUE(hamilton.diagnostics.empty()) << hamilton.diagnostics.format();
+}
+
+}  // namespace
+}  // namespace eomgen::test
