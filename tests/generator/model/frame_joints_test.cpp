@@ -1,14 +1,17 @@
-// Frames written as products of turns read as joints (generator/model/frame_joints.hpp): with
-// kinematics left out, a tree of such frames is built as the tree of joints it is, which the
-// spatial algorithms derive, and its M, f, T, τ and closed-form derivatives are those of the
-// same model written out in q. A universal joint (rot_z(a)*rot_x(b)) is two links, a turn by
-// 2c + 0.3 about an oblique axis a joint with a multiplier and an offset, a constant turn after
-// the last coordinate's a fixed link. What does not read as joints (an angle in two coordinates or
-// in t, an origin that moves, a particle placed outside the frames) stays written out, and so does
-// every model for Routh's reduction and diff.
+// Frames written as products of turns and sums of offsets read as joints
+// (generator/model/frame_joints.hpp): with kinematics left out, a tree of such frames is built
+// as the tree of joints it is, which the spatial algorithms derive, and its M, f, T, τ and
+// closed-form derivatives are those of the same model written out in q. A universal joint
+// (rot_z(a)*rot_x(b)) is two links, a turn by 2c + 0.3 about an oblique axis a joint with a
+// multiplier and an offset, a constant turn after the last coordinate's a fixed link, an origin
+// x e_x + h a slide. What does not read as joints (an angle in two coordinates or in t, an origin
+// not linear in q, a particle placed outside the frames) stays written out, and so does every
+// model for Routh's reduction, diff and another method.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <random>
 #include <string>
 
 #include "model/model.hpp"
@@ -69,6 +72,16 @@ center = ["l/2", "0", "0.01"]
 rotation = "rot_y(0.4)"
 inertia = ["0.002", "0.011", "0.012"]
 
+[[points]]
+name = "tip"
+frame = "hand"
+position = ["0.1", "0.05", "-0.3"]
+
+[outputs]
+tip_x = "tip.x"
+tip_y = "tip.y"
+tip_z = "tip.z"
+
 [[particles]]
 name = "weight"
 mass = "0.4"
@@ -81,6 +94,79 @@ acceleration = ["0", "0", "-g"]
 [energy]
 potential = "20*d^2"
 dissipation = "0.3*der(a)^2/2"
+)toml";
+
+// a gantry: a carriage slid along x at height h, a trolley slid across it along the numbers'
+// direction (0.6, 0.8, 0) and turned by psi, a boom that hangs by −l z from it and swings by b
+const char* gantry = R"toml([model]
+name = "gantry"
+KINEMATICS
+
+[parameters]
+m = 1.2
+l = 0.5
+h = 2
+g = 9.81
+
+[coordinates]
+x = 0.3
+s = -0.4
+psi = 0.6
+z = 0.2
+b = 0.1
+
+[[frames]]
+name = "carriage"
+origin = ["x", "0.2", "h"]
+
+[[frames]]
+name = "trolley"
+parent = "carriage"
+origin = ["0.6*s", "0.8*s + 0.1", "0"]
+rotation = "rot_z(psi)"
+
+[[frames]]
+name = "boom"
+parent = "trolley"
+origin = ["0", "0", "-l*z"]
+rotation = "rot_y(b)*rot_x(0.2)"
+
+[[rigid_bodies]]
+name = "carriage_body"
+mass = "3"
+frame = "carriage"
+center = ["0", "0.1", "0"]
+inertia = ["0.1", "0.2", "0.25"]
+
+[[rigid_bodies]]
+name = "trolley_body"
+mass = "m"
+frame = "trolley"
+center = ["0.05", "0", "0.02"]
+inertia = [["0.03", "0.002", "-0.001"], ["0.002", "0.028", "0.003"], ["-0.001", "0.003", "0.012"]]
+
+[[points]]
+name = "tip"
+frame = "boom"
+position = ["0.1", "0.05", "-0.3"]
+
+[outputs]
+tip_x = "tip.x"
+tip_y = "tip.y"
+tip_z = "tip.z"
+
+[[particles]]
+name = "hook"
+mass = "0.8"
+frame = "boom"
+position = ["0.1", "0", "-0.3"]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+
+[energy]
+potential = "30*z^2"
+dissipation = "0.2*der(x)^2/2"
 )toml";
 
 const char* spherical_pendulum = R"toml([model]
@@ -158,15 +244,59 @@ TEST(FrameJoints, ProductsOfTurnsAreLinksWithJoints) {
   EXPECT_TRUE((hand.multiplier + 1).is_zero());
 }
 
+// an origin linear in the coordinates: a slide per coordinate, massless but the last, then the turns
+TEST(FrameJoints, MovingOriginsAreSlides) {
+  Model m = built(automatic(gantry));
+  ASSERT_FALSE(why_not_a_joint_tree(m)) << *why_not_a_joint_tree(m);
+  std::vector<std::string> names;
+  for (const FrameLink& l : m.frame_links) names.push_back(l.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"carriage", "trolley_turn1", "trolley", "boom_turn1", "boom_turn2", "boom"}));
+  using Type = FrameLink::Joint::Type;
+  const FrameLink::Joint& carriage = *link_named(m, "carriage").joint;
+  EXPECT_EQ(carriage.type, Type::prismatic);
+  EXPECT_TRUE((carriage.axis[0] - 1).is_zero() && (carriage.multiplier - 1).is_zero());
+  EXPECT_TRUE((carriage.placement_origin[2] - parameter_named(m.symbols, "h")).is_zero()) << carriage.placement_origin[2];
+  const FrameLink::Joint& across = *link_named(m, "trolley_turn1").joint;
+  EXPECT_EQ(across.type, Type::prismatic);
+  EXPECT_TRUE((across.axis[1] - ex(4) / 5).is_zero() && (across.multiplier - 1).is_zero()) << across.axis[1];
+  EXPECT_TRUE((across.placement_origin[1] - ex(1) / 10).is_zero());
+  EXPECT_EQ(link_named(m, "trolley").joint->type, Type::revolute);
+  const FrameLink::Joint& drop = *link_named(m, "boom_turn1").joint;
+  EXPECT_EQ(drop.type, Type::prismatic);
+  EXPECT_TRUE((drop.multiplier + parameter_named(m.symbols, "l")).is_zero()) << drop.multiplier;
+  EXPECT_EQ(link_named(m, "boom_turn2").joint->type, Type::revolute);
+  EXPECT_EQ(link_named(m, "boom").joint->type, Type::fixed);
+}
+
+// where the links place a point (the frames' own placement, which outputs and constraints use)
+void expect_expanded_outputs(const std::string& tree_text, const std::string& expanded_text) {
+  Equations tree = derive_text(tree_text), written = derive_text(expanded_text);
+  ASSERT_EQ(tree.outputs.size(), 3u);
+  std::mt19937 random(3);
+  for (int point = 0; point < 5; ++point) {
+    std::map<std::string, double> values = random_point(tree, random);
+    GiNaC::exmap at = point_by_name(tree, values), full = point_by_name(written, values);
+    for (std::size_t k = 0; k < 3; ++k) {
+      double x = value_at(tree.outputs[k].expression, at), y = value_at(written.outputs[k].expression, full);
+      EXPECT_NEAR(x, y, 1e-13 * std::max(1.0, std::abs(y))) << tree.outputs[k].name;
+    }
+  }
+}
+
 TEST(FrameJoints, TheTreeGivesTheExpandedEquations) {
+  expect_expanded_outputs(automatic(turns), expanded(turns));
+  expect_expanded_outputs(automatic(gantry), expanded(gantry));
   expect_expanded_equations(automatic(turns), expanded(turns), 4);
+  expect_expanded_equations(automatic(gantry), expanded(gantry), 5);
 }
 
 TEST(FrameJoints, TheTreeGivesTheExpandedDerivatives) {
   expect_expanded_derivatives(automatic(turns), expanded(turns), 4);
+  expect_expanded_derivatives(automatic(gantry), expanded(gantry), 5);
 }
 
-// each change makes one frame unreadable as joints, and the model stays written out in q
+// each change makes one frame unreadable as joints, and the model stays written out in q (a slide
+// along a direction of parameters would need its length, √(2 l²) here, and its sign)
 TEST(FrameJoints, WhatIsNotAJointStaysWrittenOut) {
   auto changed = [](const std::string& from, const std::string& to) {
     std::string text = automatic(turns);
@@ -174,7 +304,9 @@ TEST(FrameJoints, WhatIsNotAJointStaysWrittenOut) {
     return text;
   };
   for (const std::string& text : {changed("rot_y(-d)", "rot_y(c - d)"), changed("rot_y(-d)", "rot_y(sin(d))"),
-                                  changed("rot_y(-d)", "rot_y(d + t)"), changed("[\"0\", \"0\", \"0.2\"]", "[\"0\", \"0\", \"0.2 + d\"]"),
+                                  changed("rot_y(-d)", "rot_y(d + t)"), changed("[\"0\", \"0\", \"0.2\"]", "[\"0\", \"0\", \"0.2 + d^2\"]"),
+                                  changed("[\"0\", \"0\", \"0.2\"]", "[\"0\", \"0.2*t\", \"0\"]"),
+                                  changed("[\"0\", \"0\", \"0.2\"]", "[\"0\", \"l*d\", \"l*d\"]"),
                                   changed("frame = \"hand\"\nposition = [\"0\", \"0.03\", \"0.1\"]", "position = [\"0\", \"0.03\", \"l*sin(a)\"]")}) {
     Model m = built(text);
     EXPECT_FALSE(m.recursive_kinematics) << text;
