@@ -65,20 +65,36 @@ void ModelBuilder::read_bodies() {
     check_body_name(p.name, p.where, p.key);
     const PlacedFrame* in = frame(p.frame, p.frame_where, p.key + ".frame");
     Vector3 local = vector(p.position, allow_configuration, "a position");
+    Rotation still = rotation(std::nullopt);
+    std::string in_frame = in ? body_frame(p.name, p.frame, local, still) : p.frame;
+    if (in) in = frame(in_frame, p.frame_where, p.key + ".frame");
     m_.particles.push_back({p.name, mass(p.mass), in ? place_point(*in, local) : local,
-                            placement(p.frame, local, rotation(std::nullopt), p.where, p.key + ".position")});
+                            placement(in_frame, local, still, p.where, p.key + ".position")});
   }
   for (const RigidBodyEntry& b : f_.rigid_bodies) {
     check_body_name(b.name, b.where, b.key);
     const PlacedFrame* in = frame(b.frame, b.frame_where, b.key + ".frame");
     Vector3 local = vector(b.center, allow_configuration, "a position");
-    RigidBody body{b.name, mass(b.mass), in ? place_point(*in, local) : local, {}, {3, 3}};
     Rotation relative = rotation(b.rotation);
+    std::string in_frame = in ? body_frame(b.name, b.frame, local, relative) : b.frame;
+    if (in) in = frame(in_frame, b.frame_where, b.key + ".frame");
+    RigidBody body{b.name, mass(b.mass), in ? place_point(*in, local) : local, {}, {3, 3}};
     body.rotation = in ? compose(in->rotation, relative) : relative;
     body.inertia = inertia(b);
-    body.placement = placement(b.frame, local, relative, b.where, b.key + ".center");
+    body.placement = placement(in_frame, local, relative, b.where, b.key + ".center");
     m_.rigid_bodies.push_back(body);
   }
+}
+
+std::string ModelBuilder::body_frame(const std::string& name, const std::string& frame, Vector3& local, Rotation& relative) {
+  if (!tree_ || !m_.recursive_kinematics) return frame;
+  auto links = frame_as_joints(relative, local, m_.symbols);
+  if (!links) return frame;
+  std::string link = unused_link_name(name);
+  frames_.emplace(link, place_joint_links(link, link_of(frame), *links));
+  local = {0, 0, 0};
+  relative = rotation(std::nullopt);
+  return link;
 }
 
 Rotation ModelBuilder::rotation(const std::optional<RotationEntry>& given) {

@@ -46,28 +46,34 @@ void ModelBuilder::read_frames() {
       d_.error(f.where, f.key, fmt::format("frame '{}' moves with time t itself", f.name),
                "recursive kinematics takes frames placed by the coordinates alone: make the prescribed motion a "
                "coordinate, or use kinematics = \"expanded\"");
-    int parent_link = link_of(f.parent);
     if (tree_ && !joint && !f.joint)
       if (auto links = frame_as_joints(relative, origin, m_.symbols)) {
-        // a universal joint's first turns are massless links of their own, the frame the last
-        for (std::size_t k = 0; k + 1 < links->size(); ++k) {
-          place_recursive_frame(m_, inner_link_name(f.name, k + 1), parent_link, (*links)[k].relative, (*links)[k].origin);
-          m_.frame_links.back().joint = (*links)[k].joint;
-          parent_link = int(m_.frame_links.size()) - 1;
-        }
-        relative = links->back().relative;
-        origin = links->back().origin;
-        joint = links->back().joint;
+        frames_.emplace(f.name, place_joint_links(f.name, link_of(f.parent), *links));
+        continue;
       }
     frame_index_[f.name] = int(m_.frame_links.size());
-    frames_.emplace(f.name, place_recursive_frame(m_, f.name, parent_link, relative, origin));
+    frames_.emplace(f.name, place_recursive_frame(m_, f.name, link_of(f.parent), relative, origin));
     m_.frame_links.back().joint = joint;
   }
 }
 
-// NAME_turnK, or with more underscores where the file names a frame so
-std::string ModelBuilder::inner_link_name(const std::string& frame, std::size_t k) const {
-  std::string name = fmt::format("{}_turn{}", frame, k);
+// a universal joint's first turns, or a gantry's slides, are massless links of their own, the
+// frame (or a body's link, `name`) the last
+PlacedFrame ModelBuilder::place_joint_links(const std::string& name, int parent_link, const std::vector<JointLink>& links) {
+  for (std::size_t k = 0; k + 1 < links.size(); ++k) {
+    place_recursive_frame(m_, unused_link_name(fmt::format("{}_turn{}", name, k + 1)), parent_link, links[k].relative,
+                          links[k].origin);
+    m_.frame_links.back().joint = links[k].joint;
+    parent_link = int(m_.frame_links.size()) - 1;
+  }
+  frame_index_[name] = int(m_.frame_links.size());
+  PlacedFrame placed = place_recursive_frame(m_, name, parent_link, links.back().relative, links.back().origin);
+  m_.frame_links.back().joint = links.back().joint;
+  return placed;
+}
+
+// `name`, or with more underscores before its last part while a frame or link has it
+std::string ModelBuilder::unused_link_name(std::string name) const {
   auto taken = [&](const std::string& n) {
     for (const FrameEntry& f : f_.frames)
       if (f.name == n) return true;
@@ -75,7 +81,8 @@ std::string ModelBuilder::inner_link_name(const std::string& frame, std::size_t 
       if (l.name == n) return true;
     return false;
   };
-  while (taken(name)) name = fmt::format("{}_{}", frame, name.substr(frame.size()));
+  std::size_t last = name.rfind('_');
+  while (taken(name)) name.insert(last == std::string::npos ? name.size() : last, "_");
   return name;
 }
 

@@ -231,9 +231,13 @@ void ModelBuilder::check_complete() {
 // them reads as joints (model/frame_joints.hpp) or has one and the bodies sit still in them: the
 // model is then built as that tree, which the spatial algorithms derive, and otherwise as written
 // (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion
-// of kinematics/recursive_kinematics.hpp).
+// of kinematics/recursive_kinematics.hpp). A wheel that rolls stays as written: its contact
+// conditions are derived from its rotation written out (the Whipple bicycle read as a tree of
+// joints, its wheels links, gave constraints of too low a rank).
 Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool tree_from_rotations) {
-  if (tree_from_rotations && !file.frames.empty() && file.kinematics_where.line == 0) {
+  bool rolls = std::any_of(file.constraints.begin(), file.constraints.end(),
+                           [](const ConstraintEntry& c) { return c.kind == ConstraintEntry::Kind::rolls; });
+  if (tree_from_rotations && !file.frames.empty() && file.kinematics_where.line == 0 && !rolls) {
     Diagnostics trial;
     Model tree = ModelBuilder(file, trial, true).build();
     if (trial.empty() && tree.recursive_kinematics && !why_not_a_joint_tree(tree)) return tree;

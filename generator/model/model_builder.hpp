@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "model/frames.hpp"
+#include "model/frame_joints.hpp"
 #include "model/model.hpp"
 
 namespace eomgen {
@@ -53,8 +54,13 @@ class ModelBuilder {
   void read_frames();
   // the frame link of a frame name for recursive kinematics; -1: the inertial frame (or none)
   int link_of(const std::string& name) const;
-  // the name of the k-th massless link of a frame read as several joints, one no frame has
-  std::string inner_link_name(const std::string& frame, std::size_t k) const;
+  // the links of a frame or a body read as joints (model/frame_joints.hpp), the last named `name`
+  PlacedFrame place_joint_links(const std::string& name, int parent_link, const std::vector<JointLink>& links);
+  // `name`, or a variant of it, that no frame or link has
+  std::string unused_link_name(std::string name) const;
+  // a body placed in its frame by the coordinates as the link it reads as (model/frame_joints.hpp),
+  // in which it then sits still: its frame's name, or its own when it moves
+  std::string body_frame(const std::string& name, const std::string& frame, Vector3& local, Rotation& relative);
   // where a body is, for recursive kinematics; a body outside the frames must not be placed
   // through them (by a point): only the recursion knows how such a position moves
   FramePlacement placement(const std::string& frame_name, const Vector3& local, const Rotation& relative,

@@ -97,7 +97,8 @@ dissipation = "0.3*der(a)^2/2"
 )toml";
 
 // a gantry: a carriage slid along x at height h, a trolley slid across it along the numbers'
-// direction (0.6, 0.8, 0) and turned by psi, a boom that hangs by −l z from it and swings by b
+// direction (0.6, 0.8, 0) and turned by psi, a boom that hangs by −l z from it and swings by b,
+// a rotor that turns by r in the boom and a bead that slides by 0.3 w in the trolley
 const char* gantry = R"toml([model]
 name = "gantry"
 KINEMATICS
@@ -114,6 +115,8 @@ s = -0.4
 psi = 0.6
 z = 0.2
 b = 0.1
+r = 0.5
+w = 0.3
 
 [[frames]]
 name = "carriage"
@@ -160,6 +163,20 @@ name = "hook"
 mass = "0.8"
 frame = "boom"
 position = ["0.1", "0", "-0.3"]
+
+[[rigid_bodies]]
+name = "rotor"
+mass = "0.6"
+frame = "boom"
+center = ["0.1", "0", "-0.2"]
+rotation = "rot_z(0.3)*rot_x(r)"
+inertia = [["0.004", "0.0002", "-0.0001"], ["0.0002", "0.003", "0.0003"], ["-0.0001", "0.0003", "0.002"]]
+
+[[particles]]
+name = "bead"
+mass = "0.3"
+frame = "trolley"
+position = ["0.3*w", "0", "-0.1"]
 
 [gravity]
 acceleration = ["0", "0", "-g"]
@@ -244,13 +261,15 @@ TEST(FrameJoints, ProductsOfTurnsAreLinksWithJoints) {
   EXPECT_TRUE((hand.multiplier + 1).is_zero());
 }
 
-// an origin linear in the coordinates: a slide per coordinate, massless but the last, then the turns
+// an origin linear in the coordinates: a slide per coordinate, massless but the last, then the
+// turns; and bodies moved in their frames
 TEST(FrameJoints, MovingOriginsAreSlides) {
   Model m = built(automatic(gantry));
   ASSERT_FALSE(why_not_a_joint_tree(m)) << *why_not_a_joint_tree(m);
   std::vector<std::string> names;
   for (const FrameLink& l : m.frame_links) names.push_back(l.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"carriage", "trolley_turn1", "trolley", "boom_turn1", "boom_turn2", "boom"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"carriage", "trolley_turn1", "trolley", "boom_turn1", "boom_turn2", "boom",
+                                              "bead", "rotor"}));
   using Type = FrameLink::Joint::Type;
   const FrameLink::Joint& carriage = *link_named(m, "carriage").joint;
   EXPECT_EQ(carriage.type, Type::prismatic);
@@ -266,6 +285,15 @@ TEST(FrameJoints, MovingOriginsAreSlides) {
   EXPECT_TRUE((drop.multiplier + parameter_named(m.symbols, "l")).is_zero()) << drop.multiplier;
   EXPECT_EQ(link_named(m, "boom_turn2").joint->type, Type::revolute);
   EXPECT_EQ(link_named(m, "boom").joint->type, Type::fixed);
+  // a body that the coordinates move in its frame is a link of its own, in which it sits still
+  const FrameLink& rotor = link_named(m, "rotor");
+  EXPECT_EQ(rotor.joint->type, Type::revolute);
+  EXPECT_EQ(m.frame_links[std::size_t(rotor.parent)].name, "boom");
+  EXPECT_TRUE(same_matrix(rotor.joint->placement, elementary_rotation(2, ex(0.3))));
+  const FrameLink& bead = link_named(m, "bead");
+  EXPECT_EQ(bead.joint->type, Type::prismatic);
+  EXPECT_TRUE((bead.joint->multiplier - ex(3) / 10).is_zero()) << bead.joint->multiplier;
+  EXPECT_EQ(m.frame_links[std::size_t(bead.parent)].name, "trolley");
 }
 
 // where the links place a point (the frames' own placement, which outputs and constraints use)
@@ -287,12 +315,12 @@ TEST(FrameJoints, TheTreeGivesTheExpandedEquations) {
   expect_expanded_outputs(automatic(turns), expanded(turns));
   expect_expanded_outputs(automatic(gantry), expanded(gantry));
   expect_expanded_equations(automatic(turns), expanded(turns), 4);
-  expect_expanded_equations(automatic(gantry), expanded(gantry), 5);
+  expect_expanded_equations(automatic(gantry), expanded(gantry), 7);
 }
 
 TEST(FrameJoints, TheTreeGivesTheExpandedDerivatives) {
   expect_expanded_derivatives(automatic(turns), expanded(turns), 4);
-  expect_expanded_derivatives(automatic(gantry), expanded(gantry), 5);
+  expect_expanded_derivatives(automatic(gantry), expanded(gantry), 7);
 }
 
 // each change makes one frame unreadable as joints, and the model stays written out in q (a slide
