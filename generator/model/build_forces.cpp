@@ -96,6 +96,18 @@ void ModelBuilder::read_rolling(const ConstraintEntry& c) {
              suggest(c.body, names, "rigid bodies"));
     return;
   }
+  // the contact conditions differentiate the wheel's rotation and centre in q, which recursive
+  // kinematics keeps as the frames' quantities: the Whipple bicycle's then lost rank
+  if (m_.recursive_kinematics) {
+    d_.error(c.body_where, c.key + ".rolls.body",
+             fmt::format("'{}' rolls, whose contact conditions need its rotation written out in q, but the model takes "
+                         "recursive kinematics{}",
+                         c.body, f_.kinematics_where.line == 0 ? " (its frames carry joints)" : ""),
+             f_.kinematics_where.line == 0 ? "place the wheel's frames by rotations and origins instead of joints "
+                                             "(rot_z(psi), origin [\"x\", \"y\", \"0\"]), or add kinematics = \"expanded\""
+                                           : "use kinematics = \"expanded\", or leave kinematics out");
+    return;
+  }
   auto radius = parse(c.radius, allow_parameters, "a radius");
   Vector3 axis = vector(c.axis, allow_parameters, "an axis");
   if (!radius) return;

@@ -232,8 +232,7 @@ void ModelBuilder::check_complete() {
 // model is then built as that tree, which the spatial algorithms derive, and otherwise as written
 // (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion
 // of kinematics/recursive_kinematics.hpp). A wheel that rolls stays as written: its contact
-// conditions are derived from its rotation written out (the Whipple bicycle read as a tree of
-// joints, its wheels links, gave constraints of too low a rank).
+// conditions are derived from its rotation written out in q (read_rolling refuses it otherwise).
 Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool tree_from_rotations) {
   bool rolls = std::any_of(file.constraints.begin(), file.constraints.end(),
                            [](const ConstraintEntry& c) { return c.kind == ConstraintEntry::Kind::rolls; });
