@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include <fmt/format.h>
 
@@ -237,9 +238,14 @@ Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool tree_fro
   bool rolls = std::any_of(file.constraints.begin(), file.constraints.end(),
                            [](const ConstraintEntry& c) { return c.kind == ConstraintEntry::Kind::rolls; });
   if (tree_from_rotations && !file.frames.empty() && file.kinematics_where.line == 0 && !rolls) {
-    Diagnostics trial;
-    Model tree = ModelBuilder(file, trial, true).build();
-    if (trial.empty() && tree.recursive_kinematics && !why_not_a_joint_tree(tree)) return tree;
+    // a trial: whatever stops it (a mistake, an expression the frame recursion cannot take) leaves
+    // the model as written, whose build reports the mistakes
+    try {
+      Diagnostics trial;
+      Model tree = ModelBuilder(file, trial, true).build();
+      if (trial.empty() && tree.recursive_kinematics && !why_not_a_joint_tree(tree)) return tree;
+    } catch (const std::exception&) {
+    }
   }
   return ModelBuilder(file, diagnostics).build();
 }
