@@ -98,7 +98,7 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
   DerivationDeadline deadline(file.path);
   if (diagnostics.empty() || file.only_stand_in_mistakes) {
     derivation_stage("the model");
-    Model model = build_model(file, diagnostics, reduce.empty() && method.empty() && !choice.written_out);
+    Model model = build_model(file, diagnostics, !reduce.empty() || !method.empty() || choice.written_out);
     if (!method.empty()) model.method = method;
     if (diagnostics.empty()) chosen_model(file, choice, model, diagnostics);
     if (diagnostics.empty() && !reduce.empty() && model.recursive_kinematics)

@@ -29,8 +29,8 @@ Derivation derive_model_file_as(const std::string& path, const std::string& meth
 struct ModelChoice {
   std::string scene, variant;
   std::vector<std::string> freeze;  // coordinates held at their (the scene's) initial values
-  /// frames written as products of turns stay written out in q though they read as joints
-  /// (model/build_model: diff compares equations in q)
+  /// every position and rotation multiplied out in q, though the frames carry or read as joints
+  /// (but for ball and free joints; build_model: diff compares equations in q)
   bool written_out = false;
 };
 

@@ -87,7 +87,7 @@ void ModelBuilder::read_bodies() {
 }
 
 std::string ModelBuilder::body_frame(const std::string& name, const std::string& frame, Vector3& local, Rotation& relative) {
-  if (!tree_ || !m_.recursive_kinematics) return frame;
+  if (reading_ != FrameReading::tree || !m_.recursive_kinematics) return frame;
   auto links = frame_as_joints(relative, local, m_.symbols);
   if (!links) return frame;
   std::string link = unused_link_name(name);

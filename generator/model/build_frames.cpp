@@ -46,7 +46,7 @@ void ModelBuilder::read_frames() {
       d_.error(f.where, f.key, fmt::format("frame '{}' moves with time t itself", f.name),
                "recursive kinematics takes frames placed by the coordinates alone: make the prescribed motion a "
                "coordinate, or use kinematics = \"expanded\"");
-    if (tree_ && !joint && !f.joint)
+    if (reading_ == FrameReading::tree && !joint && !f.joint)
       if (auto links = frame_as_joints(relative, origin, m_.symbols)) {
         frames_.emplace(f.name, place_joint_links(f.name, link_of(f.parent), *links));
         continue;

@@ -28,11 +28,12 @@ Model ModelBuilder::build() {
   m_.name = f_.name;
   m_.title = f_.title;
   m_.method = f_.method;
-  // frames with joints, or read as joints (tree_), are a tree for the spatial recursions unless the
-  // file says otherwise
+  // frames with joints, or read as joints, are a tree for the spatial recursions unless the file
+  // says otherwise or the equations are wanted written out
   bool joints = std::any_of(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) { return f.joint.has_value(); });
-  m_.recursive_kinematics = f_.kinematics == "recursive" || (f_.kinematics_where.line == 0 && (joints || tree_) &&
-                                                              (f_.method == "lagrange2" || f_.method == "lagrange1"));
+  bool automatic = f_.kinematics_where.line == 0 && (f_.method == "lagrange2" || f_.method == "lagrange1");
+  m_.recursive_kinematics = f_.kinematics == "recursive" || (automatic && reading_ != FrameReading::written_out &&
+                                                              (joints || reading_ == FrameReading::tree));
   check_spherical_joints();
   m_.forward_dynamics = f_.forward_dynamics;
   m_.source = f_.path;
@@ -234,15 +235,17 @@ void ModelBuilder::check_complete() {
 // (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion
 // of kinematics/recursive_kinematics.hpp). A wheel that rolls stays as written: its contact
 // conditions are derived from its rotation written out in q (read_rolling refuses it otherwise).
-Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool tree_from_rotations) {
+Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_out) {
+  using Reading = ModelBuilder::FrameReading;
+  if (written_out) return ModelBuilder(file, diagnostics, Reading::written_out).build();
   bool rolls = std::any_of(file.constraints.begin(), file.constraints.end(),
                            [](const ConstraintEntry& c) { return c.kind == ConstraintEntry::Kind::rolls; });
-  if (tree_from_rotations && !file.frames.empty() && file.kinematics_where.line == 0 && !rolls) {
+  if (!file.frames.empty() && file.kinematics_where.line == 0 && !rolls) {
     // a trial: whatever stops it (a mistake, an expression the frame recursion cannot take) leaves
     // the model as written, whose build reports the mistakes
     try {
       Diagnostics trial;
-      Model tree = ModelBuilder(file, trial, true).build();
+      Model tree = ModelBuilder(file, trial, Reading::tree).build();
       if (trial.empty() && tree.recursive_kinematics && !why_not_a_joint_tree(tree)) return tree;
     } catch (const std::exception&) {
     }

@@ -191,10 +191,11 @@ const std::vector<std::string>& known_methods();
 
 /// Checks a parsed model file and builds its symbolic model.
 /// Mistakes go to `diagnostics`; the result is meaningful only when it stays empty.
-/// `tree_from_rotations`: frames written as products of turns that read as joints make the model a
-/// tree of joints (model/frame_joints.hpp) when the file leaves kinematics out; false keeps them
-/// written out in q, as Routh's reduction, another method and diff need.
-Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool tree_from_rotations = true);
+/// When the file leaves kinematics out, frames and bodies that read as joints make the model a tree
+/// of joints (model/frame_joints.hpp), as frames that carry joints do; `written_out` multiplies
+/// every position and rotation out in q instead (but for ball and free joints), as Routh's
+/// reduction, another method, diff and the symbolic analyses need.
+Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_out = false);
 
 /// Checks [model] forward_dynamics: a known form, and for "articulated" a tree of particles
 /// solved by Lagrange II (built `model`, once its other mistakes are reported).

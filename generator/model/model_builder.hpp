@@ -25,9 +25,13 @@ bool moves_with(const GiNaC::matrix& R, const Symbols& s);
 
 class ModelBuilder {
  public:
-  /// `tree`: read frames written as products of turns as joints (model/frame_joints.hpp), in the
-  /// recursive kinematics, when the file leaves kinematics out (build_model() tries it first)
-  ModelBuilder(const ModelFile& file, Diagnostics& d, bool tree = false) : f_(file), d_(d), tree_(tree) {}
+  /// How the frames that the coordinates move are read when the file leaves kinematics out:
+  /// `as_written`, a tree of joints when they carry joints; `tree`, also those that turn and slide
+  /// by the coordinates (model/frame_joints.hpp; build_model() tries it first); `written_out`,
+  /// every position and rotation multiplied out in q, but for ball and free joints
+  enum class FrameReading { as_written, tree, written_out };
+  ModelBuilder(const ModelFile& file, Diagnostics& d, FrameReading reading = FrameReading::as_written)
+      : f_(file), d_(d), reading_(reading) {}
   Model build();
 
  private:
@@ -118,7 +122,7 @@ class ModelBuilder {
 
   const ModelFile& f_;
   Diagnostics& d_;
-  bool tree_ = false;
+  FrameReading reading_ = FrameReading::as_written;
   Model m_;
   std::map<std::string, SourceLocation> declared_at_;
   std::map<std::string, int> body_names_;

@@ -358,8 +358,8 @@ TEST(FrameJoints, WhatIsNotAJointStaysWrittenOut) {
   }
 }
 
-// Routh's reduction, diff and another method work on equations written out in q: a tree read
-// from turns is derived for them as written
+// Routh's reduction, diff and another method work on equations written out in q: a tree, read
+// from turns or written with joints, is derived for them written out
 TEST(FrameJoints, RouthAndDiffTakeTheModelWrittenOut) {
   std::string path = write_model("turns", automatic(turns));
   Derivation tree = derive_model_file(path);
@@ -377,6 +377,36 @@ TEST(FrameJoints, RouthAndDiffTakeTheModelWrittenOut) {
   // and another method than the file's
   Derivation hamilton = derive_model_file_as(pendulum, "hamilton");
   EXPECT_TRUE(hamilton.diagnostics.empty()) << hamilton.diagnostics.format();
+  // the same pendulum written with joints: the same written-out equations for all three
+  std::string jointed = spherical_pendulum;
+  auto replace = [&](const std::string& from, const std::string& to) { jointed.replace(jointed.find(from), from.size(), to); };
+  replace("name = \"rod\"\nrotation = \"rot_z(a)*rot_x(b)\"",
+          "name = \"rod_a\"\njoint = { type = \"revolute\", axis = [\"0\", \"0\", \"1\"], coordinate = \"a\" }\n\n[[frames]]\n"
+          "name = \"swing\"\nparent = \"rod_a\"\njoint = { type = \"revolute\", axis = [\"1\", \"0\", \"0\"], coordinate = \"b\" }");
+  replace("frame = \"rod\"", "frame = \"swing\"");
+  std::string joints = write_model("pendulum", jointed);
+  Derivation joint_tree = derive_model_file(joints);
+  ASSERT_TRUE(joint_tree.diagnostics.empty()) << joint_tree.diagnostics.format();
+  ASSERT_FALSE(joint_tree.equations->intermediates.empty()) << jointed;
+  Derivation joints_written = derive_model_file_for(joints, as_written);
+  ASSERT_TRUE(joints_written.diagnostics.empty()) << joints_written.diagnostics.format();
+  EXPECT_TRUE(joints_written.equations->intermediates.empty());
+  const Equations& by_joints = *joints_written.equations;
+  Derivation rotations_written = derive_model_file_for(pendulum, as_written);
+  ASSERT_TRUE(rotations_written.equations);
+  const Equations& by_rotations = *rotations_written.equations;
+  std::mt19937 random(9);
+  for (int point = 0; point < 3; ++point) {
+    std::map<std::string, double> values = random_point(by_joints, random);
+    GiNaC::exmap at = point_by_name(by_joints, values), same = point_by_name(by_rotations, values);
+    for (unsigned j = 0; j < 2; ++j) {
+      EXPECT_NEAR(value_at(by_joints.forcing[j], at), value_at(by_rotations.forcing[j], same), 1e-12) << "f" << j;
+      for (unsigned k = 0; k < 2; ++k)
+        EXPECT_NEAR(value_at(by_joints.mass_matrix(j, k), at), value_at(by_rotations.mass_matrix(j, k), same), 1e-12);
+    }
+  }
+  EXPECT_TRUE(derive_reduced_model_file(joints, {"a"}).diagnostics.empty());
+  EXPECT_TRUE(derive_model_file_as(joints, "hamilton").diagnostics.empty());
 }
 
 }  // namespace
