@@ -13,9 +13,8 @@ namespace eomgen::cli {
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
                      bool linearize, const std::vector<std::string>& reduce, const std::string& variant) {
   auto started = std::chrono::steady_clock::now();
-  Derivation d = !reduce.empty()    ? derive_reduced_model_file(model_path, reduce)
-                 : !variant.empty() ? derive_model_file_for(model_path, {"", variant, {}})
-                                    : derive_model_file_for(model_path, model_written_out(linearize));
+  Derivation d = !reduce.empty() ? derive_reduced_model_file(model_path, reduce)
+                                 : derive_model_file_for(model_path, {"", variant, {}, linearize});
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   if (linearize && !d.equations->intermediates.empty()) {
     std::cerr << "eomgen: error: --linearize differentiates equations written out in q; those of recursive kinematics "

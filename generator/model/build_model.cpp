@@ -229,12 +229,13 @@ void ModelBuilder::check_complete() {
              "add [[particles]], [[rigid_bodies]] or [energy] kinetic = \"...\"");
 }
 
-// Frames written as products of turns by the coordinates are a tree of joints when every one of
-// them reads as joints (model/frame_joints.hpp) or has one and the bodies sit still in them: the
-// model is then built as that tree, which the spatial algorithms derive, and otherwise as written
-// (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion
-// of kinematics/recursive_kinematics.hpp). A wheel that rolls stays as written: its contact
+// Frames and bodies that the coordinates turn and slide are a tree of joints when each of them has
+// a joint or reads as joints (model/frame_joints.hpp) and the bodies then sit still in the links:
+// the model is built as that tree, which the spatial algorithms derive, and otherwise as written
+// (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion of
+// kinematics/recursive_kinematics.hpp). A wheel that rolls stays as written: its contact
 // conditions are derived from its rotation written out in q (read_rolling refuses it otherwise).
+// `written_out` multiplies out every tree but one of ball or free joints.
 Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_out) {
   using Reading = ModelBuilder::FrameReading;
   if (written_out) return ModelBuilder(file, diagnostics, Reading::written_out).build();

@@ -68,9 +68,7 @@ bool assign_states(const eomgen_model_abi& m, const std::vector<std::string>& te
 
 std::optional<int> load_problem(const std::string& model, const std::vector<std::string>& sets, LoadedProblem& out,
                                 const std::vector<std::string>& reduce, const ModelChoice& choice) {
-  Derivation d = !reduce.empty()                                 ? derive_reduced_model_file(model, reduce)
-                 : !choice.scene.empty() || !choice.variant.empty() || choice.written_out ? derive_model_file_for(model, choice)
-                                                                                          : derive_model_file(model);
+  Derivation d = !reduce.empty() ? derive_reduced_model_file(model, reduce) : derive_model_file_for(model, choice);
   if (!d.diagnostics.empty()) {
     std::cerr << d.diagnostics.format();
     return exit_user_error;
