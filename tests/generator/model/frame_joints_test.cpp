@@ -188,6 +188,48 @@ potential = "30*z^2"
 dissipation = "0.2*der(x)^2/2"
 )toml";
 
+// a screw: a nut that rises by p q as it turns by q about z, with an arm hinged on it by a; the
+// nut's coordinate moves two joints, a slide and a turn
+const char* screw = R"toml([model]
+name = "screw"
+KINEMATICS
+
+[parameters]
+p = 0.05
+g = 9.81
+
+[coordinates]
+q = 0.4
+a = 0.2
+
+[[frames]]
+name = "nut"
+origin = ["0", "0", "p*q"]
+rotation = "rot_z(q)"
+
+[[frames]]
+name = "arm"
+parent = "nut"
+origin = ["0.1", "0", "0"]
+rotation = "rot_y(a)"
+
+[[rigid_bodies]]
+name = "nut_body"
+mass = "2"
+frame = "nut"
+center = ["0.01", "0", "0"]
+inertia = ["0.02", "0.02", "0.03"]
+
+[[particles]]
+name = "tip"
+mass = "0.5"
+frame = "arm"
+position = ["0.3", "0", "0"]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+)toml";
+
 const char* spherical_pendulum = R"toml([model]
 name = "pendulum"
 
@@ -318,11 +360,13 @@ TEST(FrameJoints, TheTreeGivesTheExpandedEquations) {
   expect_expanded_outputs(automatic(gantry), expanded(gantry));
   expect_expanded_equations(automatic(turns), expanded(turns), 4);
   expect_expanded_equations(automatic(gantry), expanded(gantry), 7);
+  expect_expanded_equations(automatic(screw), expanded(screw), 2);
 }
 
 TEST(FrameJoints, TheTreeGivesTheExpandedDerivatives) {
   expect_expanded_derivatives(automatic(turns), expanded(turns), 4);
   expect_expanded_derivatives(automatic(gantry), expanded(gantry), 7);
+  expect_expanded_derivatives(automatic(screw), expanded(screw), 2);
 }
 
 // The 7-joint arm of the tree benchmark written with rotations instead of joints, as a user writes
