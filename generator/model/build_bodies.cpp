@@ -114,7 +114,7 @@ Rotation ModelBuilder::rotation(const std::optional<RotationEntry>& given) {
     auto sequence = parse_rotation_product(*given->product, m_.symbols, {allow_configuration, "a rotation"}, d_);
     if (!sequence) return r;
     r.sequence = *sequence;
-    for (const ElementaryRotation& e : r.sequence) r.matrix = r.matrix.mul(rotation_matrix(e));
+    r.matrix = rotation_product(r.sequence);
     return r;
   }
   for (std::size_t i = 0; i < 3; ++i)

@@ -14,13 +14,17 @@ namespace eomgen {
 
 using GiNaC::ex;
 
+bool moves_with(const ex& x, const Symbols& s) {
+  if (x.has(s.time)) return true;
+  for (const GiNaC::realsymbol& q : s.coordinates)
+    if (x.has(q)) return true;
+  return false;
+}
+
 bool moves_with(const GiNaC::matrix& R, const Symbols& s) {
   for (unsigned i = 0; i < 3; ++i)
-    for (unsigned j = 0; j < 3; ++j) {
-      for (const GiNaC::realsymbol& q : s.coordinates)
-        if (R(i, j).has(q)) return true;
-      if (R(i, j).has(s.time)) return true;
-    }
+    for (unsigned j = 0; j < 3; ++j)
+      if (moves_with(R(i, j), s)) return true;
   return false;
 }
 
@@ -114,11 +118,8 @@ std::optional<FrameLink::Joint> ModelBuilder::move_by_joint(const JointEntry& j,
 
 bool ModelBuilder::is_constant_placement(const Rotation& rotation, const Vector3& origin) const {
   if (moves_with(rotation.matrix, m_.symbols)) return false;
-  for (const ex& x : origin) {
-    if (x.has(m_.symbols.time)) return false;
-    for (const GiNaC::realsymbol& q : m_.symbols.coordinates)
-      if (x.has(q)) return false;
-  }
+  for (const ex& x : origin)
+    if (moves_with(x, m_.symbols)) return false;
   return true;
 }
 

@@ -9,13 +9,8 @@ using GiNaC::ex;
 
 namespace {
 
-bool is_constant(const ex& x, const Symbols& s) {
-  if (x.has(s.time)) return false;
-  for (const auto* list : {&s.coordinates, &s.velocities, &s.inputs})
-    for (const GiNaC::realsymbol& y : *list)
-      if (x.has(y)) return false;
-  return true;
-}
+// a placement is parsed in the parameters, the coordinates and t alone
+bool is_constant(const ex& x, const Symbols& s) { return !moves_with(x, s); }
 
 // m·q + c in one coordinate q, m and c constants, m ≠ 0 at the parameters' defaults: its
 // coordinate's index with m and c, or nothing (a constant angle gives index −1)
@@ -38,19 +33,13 @@ std::optional<LinearAngle> linear_angle(const ex& angle, const Symbols& s) {
   return std::nullopt;
 }
 
-GiNaC::matrix product(const std::vector<ElementaryRotation>& factors) {
-  GiNaC::matrix R = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
-  for (const ElementaryRotation& f : factors) R = R.mul(rotation_matrix(f));
-  return R;
-}
-
 // the link that the factors before a turn by m·q + c and that turn make: R_p R_e(m q + c)
 JointLink turned_link(const std::vector<ElementaryRotation>& placement, const ElementaryRotation& turn,
                       const LinearAngle& angle, const Vector3& origin) {
   JointLink link;
   link.relative.sequence = placement;
   link.relative.sequence.push_back(turn);
-  link.relative.matrix = product(link.relative.sequence);
+  link.relative.matrix = rotation_product(link.relative.sequence);
   link.origin = origin;
   FrameLink::Joint& j = link.joint;
   j.type = FrameLink::Joint::Type::revolute;
@@ -58,7 +47,7 @@ JointLink turned_link(const std::vector<ElementaryRotation>& placement, const El
   j.multiplier = angle.multiplier;
   j.offset = angle.offset;
   j.axis = rotation_axis(turn);
-  j.placement = product(placement);
+  j.placement = rotation_product(placement);
   j.placement_origin = origin;
   return link;
 }
@@ -131,7 +120,7 @@ JointLink slid_link(const SlidingOrigin::Slide& slide, const Vector3& at, const 
 // the rotation's factors: its product, or a constant matrix as one factor; nothing for a matrix that moves
 std::optional<std::vector<ElementaryRotation>> rotation_factors(const Rotation& rotation, const Symbols& s) {
   if (is_product(rotation)) return rotation.sequence;
-  if (!is_constant(ex(rotation.matrix), s)) return std::nullopt;
+  if (moves_with(rotation.matrix, s)) return std::nullopt;
   ElementaryRotation whole{ElementaryRotation::constant_matrix, 0};
   whole.constant = rotation.matrix;
   return std::vector<ElementaryRotation>{whole};
@@ -152,7 +141,7 @@ std::optional<std::vector<JointLink>> frame_as_joints(const Rotation& rotation, 
   std::vector<ElementaryRotation> placement;
   for (const ElementaryRotation& factor : *factors) {
     if (factor.axis == ElementaryRotation::constant_matrix) {
-      if (!is_constant(ex(factor.constant), symbols)) return std::nullopt;
+      if (moves_with(factor.constant, symbols)) return std::nullopt;
       placement.push_back(factor);
       continue;
     }
@@ -170,7 +159,7 @@ std::optional<std::vector<JointLink>> frame_as_joints(const Rotation& rotation, 
   if (!placement.empty()) {
     JointLink fixed;
     fixed.relative.sequence = placement;
-    fixed.relative.matrix = product(placement);
+    fixed.relative.matrix = rotation_product(placement);
     fixed.joint.placement = fixed.relative.matrix;
     links.push_back(fixed);
   }

@@ -25,6 +25,12 @@ GiNaC::matrix rotation_matrix(const ElementaryRotation& r) {
   return R;
 }
 
+GiNaC::matrix rotation_product(const std::vector<ElementaryRotation>& factors) {
+  GiNaC::matrix R = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3));
+  for (const ElementaryRotation& f : factors) R = R.mul(rotation_matrix(f));
+  return R;
+}
+
 Vector3 rotation_axis(const ElementaryRotation& r) {
   if (r.axis == ElementaryRotation::constant_matrix) return {0, 0, 0};
   if (r.axis == ElementaryRotation::about_direction) return r.direction;

@@ -211,6 +211,9 @@ GiNaC::matrix elementary_rotation(int axis, const GiNaC::ex& angle);
 /// R = cos φ·I + sin φ·[e]× + (1 − cos φ)·e eᵀ for a turn about the unit vector e, or the constant.
 GiNaC::matrix rotation_matrix(const ElementaryRotation& r);
 
+/// The matrix of a product of factors, the identity for none.
+GiNaC::matrix rotation_product(const std::vector<ElementaryRotation>& factors);
+
 /// The factor's axis in its own frame (ω_rel = axis·φ'); zero for a constant rotation.
 Vector3 rotation_axis(const ElementaryRotation& r);
 

@@ -20,7 +20,8 @@ namespace eomgen {
 /// The value of a constant expression with parameters at their defaults.
 std::optional<double> constant_value(const GiNaC::ex& e, const Symbols& symbols);
 
-/// Whether a rotation depends on the coordinates or on time (build_joints.cpp).
+/// Whether an expression or a rotation depends on the coordinates or on time (build_joints.cpp).
+bool moves_with(const GiNaC::ex& x, const Symbols& s);
 bool moves_with(const GiNaC::matrix& R, const Symbols& s);
 
 class ModelBuilder {
