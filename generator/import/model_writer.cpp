@@ -12,6 +12,7 @@
 #include "import/transmission_text.hpp"
 #include "import/mjcf_reader.hpp"
 #include "import/mujoco_loading.hpp"
+#include "import/right_angles.hpp"
 #include "import/urdf_text.hpp"
 #include "import/warning_lines.hpp"
 
@@ -35,9 +36,14 @@ namespace {
 
 std::string vector_text(const Triple& v) { return fmt::format("[\"{}\", \"{}\", \"{}\"]", format_number(v[0]), format_number(v[1]), format_number(v[2])); }
 
-bool is_identity(const Quaternion& q) { return q[0] == 1 && q[1] == 0 && q[2] == 0 && q[3] == 0; }
+// a right angle to the last digit (import/right_angles.hpp) is written exactly, no turn at all left out
+bool is_identity(const Quaternion& q) {
+  auto turn = right_angle_turn(q);
+  return (q[0] == 1 && q[1] == 0 && q[2] == 0 && q[3] == 0) || (turn && *turn == std::array<int, 4>{1, 0, 0, 0});
+}
 
 std::string rotation_text(const Quaternion& q) {
+  if (auto turn = right_angle_turn(q)) return fmt::format("quat({}, {}, {}, {})", (*turn)[0], (*turn)[1], (*turn)[2], (*turn)[3]);
   return fmt::format("quat({}, {}, {}, {})", format_number(q[0]), format_number(q[1]), format_number(q[2]), format_number(q[3]));
 }
 
@@ -294,7 +300,8 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
   if (std::all_of(robot.bodies.begin(), robot.bodies.end(), [](const RobotBody& b) { return b.joints.empty(); })) {
     diagnostics.error({path, 1, 1}, "", "no joint of the robot moves: it has no coordinates and no equations of motion",
                       is_urdf_path(path) ? "a URDF's revolute, continuous, prismatic, planar and floating joints move; "
-                                           "fixed ones do not"
+                                           "fixed ones do not; a body that flies (a drone, a satellite) imports with "
+                                           "--free-base"
                                          : "an MJCF body moves by a <joint> or <freejoint> in it");
     return std::nullopt;
   }

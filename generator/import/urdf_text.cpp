@@ -6,6 +6,8 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -64,6 +66,19 @@ UrdfTextMistake cycle(const std::string& urdf) {
   return {};
 }
 
+// a joint whose parent or child is no <link> of the file (MuJoCo says "URDF joint parent or child
+// missing", without the name)
+UrdfTextMistake missing_link(const std::string& urdf) {
+  std::set<std::string> links;
+  for (std::size_t at = element_start(urdf, "link"); at != std::string::npos; at = element_start(urdf, "link", at + 1))
+    if (auto name = attribute(urdf, at, urdf.find('>', at), "name")) links.insert(*name);
+  for (const UrdfJoint& j : urdf_joints(urdf))
+    for (const auto& [role, link] : {std::pair{"parent", j.parent}, std::pair{"child", j.child}})
+      if (!link.empty() && !links.count(link))
+        return {j.line, fmt::format("joint '{}' names the {} link '{}', which the file has no <link> of", j.name, role, link)};
+  return {};
+}
+
 }  // namespace
 
 std::vector<UrdfJoint> urdf_joints(const std::string& urdf) {
@@ -87,7 +102,7 @@ std::vector<UrdfJoint> urdf_joints(const std::string& urdf) {
 }
 
 UrdfTextMistake urdf_text_mistake(const std::string& urdf) {
-  for (auto check : {unknown_joint_type, negative_mass, cycle})
+  for (auto check : {unknown_joint_type, negative_mass, missing_link, cycle})
     if (UrdfTextMistake m = check(urdf); m.line > 0) return m;
   return {};
 }

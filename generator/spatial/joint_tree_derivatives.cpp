@@ -31,6 +31,23 @@ namespace {
 // several times smaller (Talos, 38 velocities: 1.17 MB against 3.3 MB, g++ 18 s against 386 s,
 // jacobian_state 28 µs against 52).
 constexpr std::size_t loops_beyond_velocities = 8;
+// Straight-line code grows with the pairs of a joint and one above it (or itself), the loops do not:
+// a shallow tree of many velocities keeps straight-line code. Example-robot-data's fixed-base
+// quadrupeds (12 velocities in four legs of three, 24 pairs; g++ -O2, one timing program per form)
+// ran jacobian_state in 2.27 µs against the loops' 3.92 (A1), 2.34 against 3.71 (Laikago), 2.88
+// against 3.48 (Solo12). From about 40 pairs on, trees of oblique axes run faster in the loops
+// (the gantry and coupled hands of tests/crosscheck/models/, 39 pairs: 3.70 µs and 3.46 in the
+// loops against 3.74 and 3.85; the Allegro hand, 40: 4.58 against 4.81), so the cut is below them.
+constexpr std::size_t loops_beyond_pairs = 32;
+
+// the pairs of a link and a link at or above it, weighted by their joints' velocities
+std::size_t joint_pairs(const std::vector<TreeLink>& links) {
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k < links.size(); ++k)
+    for (int up = int(k); up >= 0; up = links[std::size_t(up)].parent)
+      pairs += links[k].columns.size() * links[std::size_t(up)].columns.size();
+  return pairs;
+}
 
 class Gradient {
  public:
@@ -379,7 +396,7 @@ InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, 
                                             const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                             std::vector<Intermediate>& out) {
   Gradient g(links, out);
-  if (velocities > loops_beyond_velocities && g.loops_take_it()) {
+  if (velocities > loops_beyond_velocities && joint_pairs(links) > loops_beyond_pairs && g.loops_take_it()) {
     InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
                                  GiNaC::matrix(unsigned(velocities), unsigned(velocities)),
                                  g.loop_inputs(gravity, g.jointed_root(gravity, ddq))};

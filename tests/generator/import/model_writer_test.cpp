@@ -88,7 +88,7 @@ TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   EXPECT_TRUE(has(text, "pitch_motor = 0  # control range [-1, 1]: clamped, as MuJoCo clamps it")) << text;
   EXPECT_TRUE(has(text, "pitch = 0.1  # range [-1, 1] in the file: not enforced")) << text;
   EXPECT_TRUE(has(text, "name = \"arm_pitch\"\nparent = \"base\"\norigin = [\"0.1\", \"0\", \"0.2\"]\n"
-                        "rotation = \"quat(0.5, 0.5, 0.5, 0.5)\"\njoint = { type = \"revolute\"")) << text;
+                        "rotation = \"quat(1, 1, 1, 1)\"\njoint = { type = \"revolute\"")) << text;
   EXPECT_TRUE(has(text, "name = \"arm\"\nparent = \"arm_pitch\"\njoint = { type = \"revolute\"")) << text;
   EXPECT_TRUE(has(text, "name = \"arm_2\"\nparent = \"arm\"\njoint = { type = \"ball\"")) << text;
   EXPECT_TRUE(has(text, "joint = { type = \"free\", position = [\"root_x\", \"root_y\", \"root_z\"], quaternion = "

@@ -261,6 +261,7 @@ TEST(UrdfImport, ARobotThatNothingMovesIsRefused) {
   EXPECT_FALSE(imported_model_text(path, diagnostics, false));
   EXPECT_NE(diagnostics.format().find("no joint of the robot moves"), std::string::npos) << diagnostics.format();
   EXPECT_NE(diagnostics.format().find("fixed ones do not"), std::string::npos) << diagnostics.format();
+  EXPECT_NE(diagnostics.format().find("imports with --free-base"), std::string::npos) << diagnostics.format();
 }
 
 }  // namespace

@@ -250,6 +250,40 @@ std::string hinge_chain(int hinges, bool ball) {
          "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
 }
 
+// `legs` chains of `hinges` hinges each, hung from the ground side by side (a fixed-base walker),
+// with a body on each link
+std::string hinge_legs(int legs, int hinges) {
+  std::string coordinates, frames, bodies;
+  for (int l = 0; l < legs; ++l)
+    for (int k = 0; k < hinges; ++k) {
+      std::string name = fmt::format("leg{}_{}", l, k);
+      coordinates += fmt::format("a{}_{} = 0.{}\n", l, k, (l + k) % 9 + 1);
+      std::string placed = k ? fmt::format("parent = \"leg{}_{}\"\norigin = [\"0\", \"0\", \"-0.2\"]\n", l, k - 1)
+                             : fmt::format("origin = [\"0.{}\", \"0\", \"0\"]\n", l + 1);
+      std::string axis = k % 2 ? "[\"0\", \"1\", \"0\"]" : "[\"1\", \"0\", \"0\"]";
+      frames += fmt::format("[[frames]]\nname = \"{0}\"\n{1}joint = {{ type = \"revolute\", axis = {2}, coordinate = \"a{3}_{4}\" }}\n\n",
+                            name, placed, axis, l, k);
+      bodies += fmt::format("[[rigid_bodies]]\nname = \"body_{0}\"\nmass = \"1.{1}\"\nframe = \"{0}\"\n"
+                            "center = [\"0.01\", \"0\", \"-0.1\"]\ninertia = [\"0.01\", \"0.02\", \"0.015\"]\n\n",
+                            name, k + l);
+    }
+  return "[model]\nname = \"legs\"\n\n[coordinates]\n" + coordinates + "\n" + frames + bodies +
+         "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
+}
+
+// a shallow tree of many velocities keeps straight-line code, whose size grows with the pairs of a
+// joint and one at or above it: four legs of three hinges (12 velocities, 24 pairs) and three of
+// four (30 pairs) do; three legs of five (45 pairs) take the loops
+TEST(JointTreeDerivatives, ShallowTreesOfManyHingesKeepStraightLineCode) {
+  std::string four_by_three = hinge_legs(4, 3);
+  Equations walker = derive_text(four_by_three);
+  ASSERT_EQ(walker.num_velocities(), 12u);
+  EXPECT_FALSE(walker.gradient_loops());
+  EXPECT_FALSE(derive_text(hinge_legs(3, 4)).gradient_loops());
+  EXPECT_TRUE(derive_text(hinge_legs(3, 5)).gradient_loops());
+  expect_closed_form_agrees(four_by_three.c_str(), 12, 12);
+}
+
 // beyond 8 velocities a tree of hinges and slides takes the loops (the measured crossover), with
 // joints that follow another's coordinate among them, and below a root joint of several velocities
 // (its motion straight-line code); a ball joint below the root keeps the straight-line closed

@@ -1,0 +1,143 @@
+// Right angles to the last digit are imported exactly (generator/import/right_angles.hpp): each of
+// the cube's 24 turns, its quaternion a unit in the last place off, as MuJoCo's compiler makes it
+// from rpy = "1.5707963267948966"; a turn stated to fewer digits, or no right angle, stays as read;
+// and an arm imported with both has MuJoCo's dynamics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <set>
+
+#include <Eigen/Geometry>
+#include <mujoco/mujoco.h>
+
+#include "import/model_writer.hpp"
+#include "import/right_angles.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+// the 24 rotations that map the coordinate axes onto themselves, with signs
+std::vector<Eigen::Matrix3d> turns_of_the_cube() {
+  std::vector<Eigen::Matrix3d> turns;
+  int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& o : order)
+    for (int signs = 0; signs < 8; ++signs) {
+      Eigen::Matrix3d P = Eigen::Matrix3d::Zero();
+      for (int r = 0; r < 3; ++r) P(r, o[r]) = (signs >> r & 1) ? -1 : 1;
+      if (P.determinant() > 0) turns.push_back(P);
+    }
+  return turns;
+}
+
+// the rotation of quat(w, x, y, z) as eomgen reads it, R(q)/|q|², exactly for integers
+Eigen::Matrix3d rotation_of(const std::array<int, 4>& q) {
+  Eigen::Quaterniond unit(q[0], q[1], q[2], q[3]);
+  return unit.normalized().toRotationMatrix();
+}
+
+TEST(RightAngles, EveryTurnOfTheCubeIsWrittenExactly) {
+  std::vector<Eigen::Matrix3d> turns = turns_of_the_cube();
+  ASSERT_EQ(turns.size(), 24u);
+  std::set<std::array<int, 4>> written;
+  for (const Eigen::Matrix3d& P : turns) {
+    Eigen::Quaterniond q(P);
+    for (double sign : {1.0, -1.0})
+      for (int off = 0; off < 16; ++off) {
+        // each nonzero component a unit in the last place up or down, as rounding leaves it
+        Quaternion read{sign * q.w(), sign * q.x(), sign * q.y(), sign * q.z()};
+        for (std::size_t k = 0; k < 4; ++k)
+          if (read[k] != 0) read[k] = std::nextafter(read[k], (off >> k & 1) ? 2.0 : -2.0);
+        auto turn = right_angle_turn(read);
+        ASSERT_TRUE(turn) << P;
+        Eigen::Matrix3d R = rotation_of(*turn);
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(R(r, c) - P(r, c)), 1e-15) << P << "\nas\n" << R;
+        int length = (*turn)[0] * (*turn)[0] + (*turn)[1] * (*turn)[1] + (*turn)[2] * (*turn)[2] + (*turn)[3] * (*turn)[3];
+        EXPECT_TRUE(length == 1 || length == 2 || length == 4) << "integers of one size: exact in quat()";
+        if (off == 0 && sign > 0) written.insert(*turn);
+      }
+  }
+  EXPECT_EQ(written.size(), 24u);
+}
+
+TEST(RightAngles, TurnsStatedToFewerDigitsOrNoRightAngleStayAsRead) {
+  auto about_x = [](double angle) { return Quaternion{std::cos(angle / 2), std::sin(angle / 2), 0, 0}; };
+  EXPECT_TRUE(right_angle_turn(about_x(1.5707963267948966)));
+  EXPECT_FALSE(right_angle_turn(about_x(3.14159265359))) << "2e-13 from pi: the file's robot";
+  EXPECT_FALSE(right_angle_turn(about_x(1.5708)));
+  EXPECT_FALSE(right_angle_turn(about_x(0.3)));
+  EXPECT_FALSE(right_angle_turn({0.9238795325112867, 0, 0, -0.3826834323650898})) << "45 degrees";
+  EXPECT_FALSE(right_angle_turn({0, 0, 0, 0}));
+  auto identity = right_angle_turn({1, 0, 0, std::nextafter(0.0, 1.0)});
+  ASSERT_TRUE(identity);
+  EXPECT_EQ(*identity, (std::array<int, 4>{1, 0, 0, 0}));
+}
+
+// two links: the elbow turned by rpy = -pi/2 to the last digit and the wrist by pi to 12 digits
+const char* const arm = R"(<?xml version="1.0"?>
+<robot name="right_angled_arm">
+  <link name="base"/>
+  <link name="upper">
+    <inertial><origin xyz="0.02 0 0.15"/><mass value="2.0"/><inertia ixx="0.02" ixy="0" ixz="0" iyy="0.018" iyz="0" izz="0.004"/></inertial>
+  </link>
+  <link name="fore">
+    <inertial><origin xyz="0 0.01 0.12"/><mass value="1.3"/><inertia ixx="0.011" ixy="0" ixz="0" iyy="0.009" iyz="0" izz="0.002"/></inertial>
+  </link>
+  <link name="hand">
+    <inertial><origin xyz="0.01 0 0.04"/><mass value="0.6"/><inertia ixx="0.002" ixy="0" ixz="0" iyy="0.0015" iyz="0" izz="0.001"/></inertial>
+  </link>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="upper"/><origin xyz="0 0 0.333"/><axis xyz="0 0 1"/>
+    <limit lower="-2.9" upper="2.9" effort="87" velocity="2.1"/>
+  </joint>
+  <joint name="elbow" type="revolute">
+    <parent link="upper"/><child link="fore"/><origin xyz="0 0 0.3" rpy="-1.5707963267948966 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-1.7" upper="1.7" effort="87" velocity="2.1"/>
+  </joint>
+  <joint name="wrist" type="revolute">
+    <parent link="fore"/><child link="hand"/><origin xyz="0.08 0 0.25" rpy="3.14159265359 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-2.9" upper="2.9" effort="12" velocity="2.6"/>
+  </joint>
+</robot>
+)";
+
+TEST(RightAngles, AnArmImportsItsRightAngleExactlyAndKeepsMuJoCosDynamics) {
+  std::string path = write_file("right_angled_arm.urdf", arm);
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("rotation = \"quat(1, -1, 0, 0)\""), std::string::npos) << *text;
+  EXPECT_NE(text->find("1.0341155355510722e-13, 1, 0, 0)\""), std::string::npos)
+      << "pi to 12 digits, as MuJoCo read it\n" << *text;
+  Equations e = derive_text(*text, "right_angled_arm.toml");
+  ASSERT_EQ(e.num_velocities(), 3u);
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  m->opt.disableflags |= mjDSBL_CONSTRAINT;  // the joint limits: not in the model
+  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
+  const char* names[3] = {"shoulder", "elbow", "wrist"};
+  for (int point = 0; point < 5; ++point) {
+    std::map<std::string, double> at;
+    for (int j = 0; j < 3; ++j) {
+      d->qpos[j] = angle(random), d->qvel[j] = rate(random);
+      at[names[j]] = d->qpos[j], at["der(" + std::string(names[j]) + ")"] = d->qvel[j];
+    }
+    mj_forward(m.get(), d.get());
+    double full[9];
+    mj_fullM(m.get(), full, d->qM);
+    GiNaC::exmap x = point_by_name(e, at);
+    for (unsigned i = 0; i < 3; ++i) {
+      EXPECT_NEAR(value_at(e.forcing[i], x), -d->qfrc_bias[i], 1e-13 * std::max(1.0, std::abs(d->qfrc_bias[i]))) << i;
+      for (unsigned j = 0; j < 3; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[3 * i + j], 1e-14) << i << ", " << j;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace eomgen::test
