@@ -230,7 +230,8 @@ void add_body(const Robot& robot, std::size_t b, std::vector<std::string>& frame
     if (last) out.frames += shapes_text(body, out);
     parent = name;
   }
-  if (body.mass <= 0) return;
+  bool turning_inertia = body.principal_inertia != Triple{0, 0, 0};
+  if (body.mass <= 0 && !turning_inertia) return;
   out.bodies += fmt::format("\n[[rigid_bodies]]\nname = \"{}\"\nframe = \"{}\"\nmass = \"{}\"\ncenter = {}\n", frame, frame,
                             format_number(body.mass), vector_text(body.center));
   if (!is_identity(body.inertia_axes)) out.bodies += "rotation = \"" + rotation_text(body.inertia_axes) + "\"\n";
@@ -241,8 +242,10 @@ void add_body(const Robot& robot, std::size_t b, std::vector<std::string>& frame
   for (std::size_t k = 0; k < 3; ++k)
     if (m[(k + 1) % 3] + m[(k + 2) % 3] - m[k] < -1e-12 * largest || m[k] < 0) {
       out.bodies += "unphysical_inertia = true  # breaks A + B >= C or has a moment below zero, as the robot file states it\n";
-      break;
+      return;
     }
+  // a link of mass 0 with a moment of inertia (Bolt's feet): URDF readers keep the moment
+  if (body.mass <= 0) out.bodies += "unphysical_inertia = true  # a moment of inertia without mass, as the robot file states it\n";
 }
 
 // each keyframe as a scene's initial state: positions and rates, a quaternion's rates from ω,

@@ -8,15 +8,19 @@ namespace eomgen {
 
 using GiNaC::ex;
 
-ex ModelBuilder::mass(const ExpressionText& text) {
+// `may_be_zero`: a rigid body with unphysical_inertia, as a URDF's link of mass 0 with a moment of
+// inertia is (Bolt's feet), which URDF readers take as it stands
+ex ModelBuilder::mass(const ExpressionText& text, bool may_be_zero) {
   auto e = parse(text, allow_parameters, "a mass");
   if (!e) return 1;
   auto v = constant_value(*e, m_.symbols);
-  if (!v || *v <= 0)
+  if (!v || *v < 0 || (*v == 0 && !may_be_zero))
     d_.error(text.where, text.key,
              v ? fmt::format("the mass is {} with the default parameters; a mass must be positive", *v)
                : std::string("the mass is not a finite real number"),
-             "check the sign of the mass parameter's default in [parameters]");
+             v && *v == 0 ? "a rigid body of no mass but a moment of inertia, as a robot file may state it: "
+                            "unphysical_inertia = true"
+                          : "check the sign of the mass parameter's default in [parameters]");
   return *e;
 }
 
@@ -78,7 +82,7 @@ void ModelBuilder::read_bodies() {
     Rotation relative = rotation(b.rotation);
     std::string in_frame = in ? body_frame(b.name, b.frame, local, relative) : b.frame;
     if (in) in = frame(in_frame, b.frame_where, b.key + ".frame");
-    RigidBody body{b.name, mass(b.mass), in ? place_point(*in, local) : local, {}, {3, 3}};
+    RigidBody body{b.name, mass(b.mass, b.unphysical_inertia), in ? place_point(*in, local) : local, {}, {3, 3}};
     body.rotation = in ? compose(in->rotation, relative) : relative;
     body.inertia = inertia(b);
     body.placement = placement(in_frame, local, relative, b.where, b.key + ".center");

@@ -19,6 +19,7 @@
 
 #include "import/model_writer.hpp"
 #include "import/urdf_text.hpp"
+#include "pipeline.hpp"
 #include "support/urdf_inertias.hpp"
 #include "support/test_support.hpp"
 
@@ -120,6 +121,80 @@ TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayTheFiles) {
       for (unsigned j = 0; j < 2; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[2 * i + j], 1e-13) << i << ", " << j;
     }
   }
+}
+
+// a link of mass 0 that states a moment of inertia (Bolt's feet, at the end of a leg): URDF readers
+// keep the moment, and so does the import (a rigid body of mass 0, unphysical_inertia); MuJoCo reading
+// the file with its fixed links kept agrees
+const char* const footed_leg = R"(<?xml version="1.0"?>
+<robot name="footed_leg">
+  <link name="hip"/>
+  <link name="thigh">
+    <inertial><origin xyz="0 0.01 -0.1"/><mass value="0.15"/><inertia ixx="4e-4" ixy="0" ixz="0" iyy="4e-4" iyz="-5e-5" izz="3e-5"/></inertial>
+  </link>
+  <link name="shank">
+    <inertial><origin xyz="0 0.008 -0.11"/><mass value="0.03"/><inertia ixx="1.1e-4" ixy="0" ixz="0" iyy="1.2e-4" iyz="-2e-6" izz="1.2e-5"/></inertial>
+  </link>
+  <link name="foot">
+    <inertial><origin xyz="0 0 0.00036"/><mass value="0.0"/><inertia ixx="5.7e-5" ixy="0" ixz="0" iyy="8.4e-5" iyz="0" izz="5.3e-5"/></inertial>
+  </link>
+  <joint name="hip_joint" type="revolute">
+    <parent link="hip"/><child link="thigh"/><axis xyz="1 0 0"/>
+    <limit lower="-3" upper="3" effort="2" velocity="9"/>
+  </joint>
+  <joint name="knee_joint" type="revolute">
+    <parent link="thigh"/><child link="shank"/><origin xyz="0 0.02 -0.16"/><axis xyz="1 0 0"/>
+    <limit lower="-3" upper="3" effort="2" velocity="9"/>
+  </joint>
+  <joint name="ankle" type="fixed">
+    <parent link="shank"/><child link="foot"/><origin xyz="0 0.01 -0.16"/>
+  </joint>
+</robot>
+)";
+
+TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKept) {
+  std::string path = write_file("footed_leg.urdf", footed_leg);
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("name = \"foot\"\nframe = \"foot\"\nmass = \"0\""), std::string::npos) << *text;
+  EXPECT_NE(text->find("unphysical_inertia = true  # a moment of inertia without mass"), std::string::npos) << *text;
+  Equations e = derive_text(*text, "footed_leg.toml");
+  ASSERT_EQ(e.num_velocities(), 2u);
+  std::string kept = temporary_directory() + "/footed_leg_kept.urdf";
+  std::ofstream(kept) << with_static_links_kept(footed_leg);
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(kept.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  m->opt.disableflags |= mjDSBL_CONSTRAINT;
+  with_stated_urdf_inertias(m.get(), kept);
+  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
+  for (int point = 0; point < 5; ++point) {
+    std::map<std::string, double> at;
+    for (int j = 0; j < 2; ++j) {
+      d->qpos[j] = angle(random), d->qvel[j] = rate(random);
+      std::string name = j == 0 ? "hip_joint" : "knee_joint";
+      at[name] = d->qpos[j], at["der(" + name + ")"] = d->qvel[j];
+    }
+    mj_forward(m.get(), d.get());
+    double full[4];
+    mj_fullM(m.get(), full, d->qM);
+    GiNaC::exmap x = point_by_name(e, at);
+    for (unsigned i = 0; i < 2; ++i) {
+      EXPECT_NEAR(value_at(e.forcing[i], x), -d->qfrc_bias[i], 1e-12 * std::max(1.0, std::abs(d->qfrc_bias[i]))) << i;
+      for (unsigned j = 0; j < 2; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[2 * i + j], 1e-15) << i << ", " << j;
+    }
+  }
+  // without the flag, a rigid body of mass 0 is refused as a mistake, with the fix named
+  std::string flagged = "unphysical_inertia = true  # a moment of inertia without mass, as the robot file states it\n";
+  std::string unflagged = *text;
+  unflagged.erase(unflagged.find(flagged), flagged.size());
+  Derivation refused = derive_model_text(unflagged, "unflagged.toml");
+  EXPECT_FALSE(refused.equations);
+  EXPECT_NE(refused.diagnostics.format().find("a rigid body of no mass but a moment of inertia"), std::string::npos)
+      << refused.diagnostics.format();
 }
 
 // a joint's <mimic> (MuJoCo's URDF reader ignores it) follows the coordinate it mimics

@@ -1,0 +1,76 @@
+// One robot of robot_sweep.py: the generated header's qacc against MuJoCo's reading the same robot
+// file at random states (contacts and joint limits off: neither is in the model), and the rhs
+// against mj_forward and jacobian_state against the rhs, timed in this one process (medians of
+// interleaved batches). Compiled per robot with -DMODEL=name -DHEADER="path". Arguments: the file
+// as MuJoCo is to read it, and "urdf" when it is a URDF, whose bodies then take the inertia tensors
+// the file states (tests/support/urdf_inertias.hpp: MuJoCo's principal axes of a full tensor are
+// an iteration's, eomgen's the file's six numbers). Prints one JSON line; exit 3 when the two
+// models' states differ in size (a URDF mimic, which MuJoCo's reader ignores): then no qacc.
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "batch_timing.hpp"
+#include "support/urdf_inertias.hpp"
+#include HEADER
+
+namespace model = eomgen::models::MODEL;
+
+int main(int argc, char** argv) {
+  if (argc < 2) return 2;
+  char error[1000] = "";
+  mjModel* mj = mj_loadXML(argv[1], nullptr, error, sizeof error);
+  if (!mj) {
+    std::fprintf(stderr, "MuJoCo cannot read %s: %s\n", argv[1], error);
+    return 2;
+  }
+  if (argc > 2 && std::strcmp(argv[2], "urdf") == 0) with_stated_urdf_inertias(mj, argv[1]);
+  mj->opt.disableflags |= mjDSBL_CONSTRAINT;
+  mjData* d = mj_makeData(mj);
+  const int nq = int(model::num_coordinates), nv = int(model::num_velocities), N = int(model::num_states);
+  bool same_layout = nq == mj->nq && nv == mj->nv;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  const std::size_t states = model::num_states;
+  std::vector<double> x(states), xdot(states), J(states * states), u(model::num_inputs + 1, 0.0);
+  auto p = model::Parameters<double>().values();
+  // largest |qacc − MuJoCo's| relative to MuJoCo's largest |qacc|, over 20 states
+  double worst = 0;
+  for (int state = 0; state < 20 && same_layout; ++state) {
+    for (int i = 0; i < mj->nq; ++i) d->qpos[i] = uniform(random);
+    for (int i = 0; i < mj->nv; ++i) d->qvel[i] = uniform(random);
+    mj_normalizeQuat(mj, d->qpos);
+    mj_forward(mj, d);
+    for (int i = 0; i < nq; ++i) x[std::size_t(i)] = d->qpos[i];
+    for (int i = 0; i < nv; ++i) x[std::size_t(nq + i)] = d->qvel[i];
+    model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data());
+    double size = 0, difference = 0;
+    for (int i = 0; i < nv; ++i) size = std::max(size, std::abs(d->qacc[i]));
+    for (int i = 0; i < nv; ++i) difference = std::max(difference, std::abs(xdot[std::size_t(nq + i)] - d->qacc[i]));
+    worst = std::max(worst, difference / std::max(size, 1e-300));
+  }
+  if (!same_layout) {
+    for (int i = 0; i < nq; ++i) x[std::size_t(i)] = i < mj->nq ? d->qpos[i] : 0.0;
+    for (int i = 0; i < nv; ++i) x[std::size_t(nq + i)] = 0.1;
+  }
+  volatile double sink = 0;
+  std::vector<double> ours, mujoco, jacobian;
+  int calls = std::max(20, 100000 / (N * N + 10));
+  for (int rep = 0; rep < 15; ++rep) {
+    ours.push_back(time_batch([&] { model::rhs(0.0, x.data(), u.data(), p.data(), xdot.data()); sink = sink + xdot[std::size_t(N - 1)]; }, calls));
+    mujoco.push_back(time_batch([&] { mj_forward(mj, d); sink = sink + d->qacc[0]; }, calls));
+    jacobian.push_back(time_batch([&] { model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data()); sink = sink + J[0]; },
+                                  std::max(5, calls / 4)));
+  }
+  char difference[32] = "null";
+  if (same_layout) std::snprintf(difference, sizeof difference, "%.3g", worst);
+  std::printf("{\"velocities\": %d, \"qacc_difference\": %s, \"rhs_ns\": %.1f, \"mujoco_ns\": %.1f, \"jacobian_ns\": %.1f}\n", nv,
+              difference, median(ours), median(mujoco), median(jacobian));
+  mj_deleteData(d), mj_deleteModel(mj);
+  return sink == 12345.678 ? 4 : same_layout ? 0 : 3;
+}
