@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <memory>
-#include <random>
 #include <set>
 
 #include <Eigen/Geometry>
@@ -14,6 +13,7 @@
 
 #include "import/model_writer.hpp"
 #include "import/right_angles.hpp"
+#include "support/mujoco_dynamics.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -117,26 +117,7 @@ TEST(RightAngles, AnArmImportsItsRightAngleExactlyAndKeepsMuJoCosDynamics) {
   char error[1000] = "";
   std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
   ASSERT_TRUE(m) << error;
-  m->opt.disableflags |= mjDSBL_CONSTRAINT;  // the joint limits: not in the model
-  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
-  const char* names[3] = {"shoulder", "elbow", "wrist"};
-  for (int point = 0; point < 5; ++point) {
-    std::map<std::string, double> at;
-    for (int j = 0; j < 3; ++j) {
-      d->qpos[j] = angle(random), d->qvel[j] = rate(random);
-      at[names[j]] = d->qpos[j], at["der(" + std::string(names[j]) + ")"] = d->qvel[j];
-    }
-    mj_forward(m.get(), d.get());
-    double full[9];
-    mj_fullM(m.get(), full, d->qM);
-    GiNaC::exmap x = point_by_name(e, at);
-    for (unsigned i = 0; i < 3; ++i) {
-      EXPECT_NEAR(value_at(e.forcing[i], x), -d->qfrc_bias[i], 1e-13 * std::max(1.0, std::abs(d->qfrc_bias[i]))) << i;
-      for (unsigned j = 0; j < 3; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[3 * i + j], 1e-14) << i << ", " << j;
-    }
-  }
+  expect_mujoco_dynamics(e, m.get(), {"shoulder", "elbow", "wrist"}, 5, 1e-14, 1e-13);
 }
 
 }  // namespace

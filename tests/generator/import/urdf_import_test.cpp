@@ -20,6 +20,7 @@
 #include "import/model_writer.hpp"
 #include "import/urdf_text.hpp"
 #include "pipeline.hpp"
+#include "support/mujoco_dynamics.hpp"
 #include "support/urdf_inertias.hpp"
 #include "support/test_support.hpp"
 
@@ -102,25 +103,7 @@ TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayTheFiles) {
   ASSERT_TRUE(m) << error;
   ASSERT_EQ(m->nbody, 6) << "the world, the base and four links";
   with_stated_urdf_inertias(m.get(), kept);
-  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
-  for (int point = 0; point < 5; ++point) {
-    std::map<std::string, double> at;
-    for (int j = 0; j < 2; ++j) {
-      d->qpos[j] = angle(random), d->qvel[j] = rate(random);
-      std::string name = j == 0 ? "shoulder" : "elbow";
-      at[name] = d->qpos[j], at["der(" + name + ")"] = d->qvel[j];
-    }
-    mj_forward(m.get(), d.get());
-    double full[4];
-    mj_fullM(m.get(), full, d->qM);
-    GiNaC::exmap x = point_by_name(e, at);
-    for (unsigned i = 0; i < 2; ++i) {
-      EXPECT_NEAR(value_at(e.forcing[i], x), -d->qfrc_bias[i], 1e-12 * std::max(1.0, std::abs(d->qfrc_bias[i]))) << i;
-      for (unsigned j = 0; j < 2; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[2 * i + j], 1e-13) << i << ", " << j;
-    }
-  }
+  expect_mujoco_dynamics(e, m.get(), {"shoulder", "elbow"}, 3, 1e-13, 1e-12);
 }
 
 // a link of mass 0 that states a moment of inertia (Bolt's feet, at the end of a leg): URDF readers
@@ -166,27 +149,8 @@ TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKept) {
   char error[1000] = "";
   std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(kept.c_str(), nullptr, error, sizeof error), mj_deleteModel);
   ASSERT_TRUE(m) << error;
-  m->opt.disableflags |= mjDSBL_CONSTRAINT;
   with_stated_urdf_inertias(m.get(), kept);
-  std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
-  std::mt19937 random(9);
-  std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
-  for (int point = 0; point < 5; ++point) {
-    std::map<std::string, double> at;
-    for (int j = 0; j < 2; ++j) {
-      d->qpos[j] = angle(random), d->qvel[j] = rate(random);
-      std::string name = j == 0 ? "hip_joint" : "knee_joint";
-      at[name] = d->qpos[j], at["der(" + name + ")"] = d->qvel[j];
-    }
-    mj_forward(m.get(), d.get());
-    double full[4];
-    mj_fullM(m.get(), full, d->qM);
-    GiNaC::exmap x = point_by_name(e, at);
-    for (unsigned i = 0; i < 2; ++i) {
-      EXPECT_NEAR(value_at(e.forcing[i], x), -d->qfrc_bias[i], 1e-12 * std::max(1.0, std::abs(d->qfrc_bias[i]))) << i;
-      for (unsigned j = 0; j < 2; ++j) EXPECT_NEAR(value_at(e.mass_matrix(i, j), x), full[2 * i + j], 1e-15) << i << ", " << j;
-    }
-  }
+  expect_mujoco_dynamics(e, m.get(), {"hip_joint", "knee_joint"}, 9, 1e-15, 1e-12);
   // without the flag, a rigid body of mass 0 is refused as a mistake, with the fix named
   std::string flagged = "unphysical_inertia = true  # a moment of inertia without mass, as the robot file states it\n";
   std::string unflagged = *text;
