@@ -15,7 +15,7 @@ closed loop) are soft and broken by a random state: such robots are timed only.
 Usage: robot_sweep.py EOMGEN FILE_OR_FOLDER ... [--free-base] [--flags "FLAGS"] [--check TOL]
 --free-base imports every URDF on a floating base (and gives MuJoCo the same floating joint);
 --flags compiles with FLAGS instead of -O2; --check exits 1 when a robot's qacc differs from
-MuJoCo's by more than TOL (relative to its largest) or a robot fails. Exit 77 without a C++
+MuJoCo's by more than TOL (relative to the larger of 1 and MuJoCo's largest |qacc|) or a robot fails. Exit 77 without a C++
 compiler or MuJoCo. Not run on any robot of another project by the tests: they sweep
 tests/crosscheck/urdf/.
 """
@@ -107,7 +107,8 @@ def sweep_one(eomgen, path, work, flags, free_base):
     readings = mujoco_readings(path, name, work, free_base) if urdf else [path]
     result = None
     for reading in readings:
-        result = run([binary, reading] + (["urdf"] if urdf else []), timeout=600)
+        flags = ["urdf", "bounded" if "_bounded" in os.path.basename(reading) else "exact"] if urdf else []
+        result = run([binary, reading] + flags, timeout=600)
         if result.returncode != 2:
             break
     if result.returncode not in (0, 3):

@@ -35,7 +35,8 @@ inline std::map<std::string, StatedInertia> stated_urdf_inertias(const std::stri
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
-  std::string urdf = text.str();
+  // without its comments: a file may keep an old value there (Talos: <!-- <mass value="1.52896"/> -->)
+  std::string urdf = std::regex_replace(text.str(), std::regex("<!--[\\s\\S]*?-->"), "");
   std::map<std::string, StatedInertia> links;
   std::regex link("<link\\s+name\\s*=\\s*\"([^\"]*)\"\\s*>([\\s\\S]*?)</link>");
   for (std::sregex_iterator it(urdf.begin(), urdf.end(), link), end; it != end; ++it) {
@@ -75,6 +76,11 @@ inline void with_stated_urdf_inertias(mjModel* m, const std::string& path) {
     Eigen::Quaterniond q(axes);
     for (int k = 0; k < 3; ++k) m->body_inertia[3 * b + k] = eigen.eigenvalues()[k];
     m->body_iquat[4 * b] = q.w(), m->body_iquat[4 * b + 1] = q.x(), m->body_iquat[4 * b + 2] = q.y(), m->body_iquat[4 * b + 3] = q.z();
+    // MuJoCo skips body_iquat where it compiled the inertial frame as the body's own (body_sameframe,
+    // and body_simple after it): the new axes need the general path (UR5's links, whose moments
+    // Eigen orders otherwise, moved the accelerations by 3e-4 without this)
+    m->body_sameframe[b] = 0, m->body_simple[b] = 0;
+    for (int k = m->body_dofadr[b]; k >= 0 && k < m->body_dofadr[b] + m->body_dofnum[b]; ++k) m->dof_simplenum[k] = 0;
   }
 }
 
