@@ -1,5 +1,5 @@
 /// @file Turns that are right angles to the last digit. A robot file's rpy = "1.5707963267948966"
-/// (π/2 as a double, as Pinocchio's and Franka's URDFs write it) reaches eomgen through MuJoCo's
+/// (π/2 as a double, as example-robot-data's panda.urdf writes it) reaches eomgen through MuJoCo's
 /// compiler as the quaternion (0.7071067811865476, 0.7071067811865475, 0, 0): its w and x differ
 /// in the last bit, and its rotation matrix holds entries of 1e-16 where the turn has zeros. Written
 /// as read, the generated code multiplies by them, and the tree's constant turns stop being

@@ -9,8 +9,8 @@ namespace eomgen {
 using GiNaC::ex;
 
 // `may_be_zero`: a rigid body with unphysical_inertia, as a URDF's link of mass 0 with a moment of
-// inertia is (Bolt's feet), which URDF readers take as it stands
-ex ModelBuilder::mass(const ExpressionText& text, bool may_be_zero) {
+// inertia is (Bolt's feet), which URDF readers take as it stands; a rigid body without it is told so
+ex ModelBuilder::mass(const ExpressionText& text, bool rigid_body, bool may_be_zero) {
   auto e = parse(text, allow_parameters, "a mass");
   if (!e) return 1;
   auto v = constant_value(*e, m_.symbols);
@@ -18,7 +18,7 @@ ex ModelBuilder::mass(const ExpressionText& text, bool may_be_zero) {
     d_.error(text.where, text.key,
              v ? fmt::format("the mass is {} with the default parameters; a mass must be positive", *v)
                : std::string("the mass is not a finite real number"),
-             v && *v == 0 ? "a rigid body of no mass but a moment of inertia, as a robot file may state it: "
+             rigid_body && v && *v == 0 ? "a rigid body of no mass but a moment of inertia, as a robot file may state it: "
                             "unphysical_inertia = true"
                           : "check the sign of the mass parameter's default in [parameters]");
   return *e;
@@ -82,7 +82,7 @@ void ModelBuilder::read_bodies() {
     Rotation relative = rotation(b.rotation);
     std::string in_frame = in ? body_frame(b.name, b.frame, local, relative) : b.frame;
     if (in) in = frame(in_frame, b.frame_where, b.key + ".frame");
-    RigidBody body{b.name, mass(b.mass, b.unphysical_inertia), in ? place_point(*in, local) : local, {}, {3, 3}};
+    RigidBody body{b.name, mass(b.mass, true, b.unphysical_inertia), in ? place_point(*in, local) : local, {}, {3, 3}};
     body.rotation = in ? compose(in->rotation, relative) : relative;
     body.inertia = inertia(b);
     body.placement = placement(in_frame, local, relative, b.where, b.key + ".center");

@@ -88,7 +88,7 @@ class ModelBuilder {
   void set_quaternion_rates(const JointEntry& joint, const std::array<int, 4>& quaternion);
 
   // Particles and rigid bodies (build_bodies.cpp)
-  GiNaC::ex mass(const ExpressionText& text, bool may_be_zero = false);
+  GiNaC::ex mass(const ExpressionText& text, bool rigid_body = false, bool may_be_zero = false);
   Vector3 vector(const std::vector<ExpressionText>& texts, unsigned allowed, const char* context);
   // NAME when the components were read from one string "NAME" (NAME.x, NAME.y, NAME.z)
   static std::string vector_name(const std::vector<ExpressionText>& texts);
