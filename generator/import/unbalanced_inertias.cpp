@@ -106,7 +106,9 @@ void collect_fixed(const std::string& link, const Eigen::Matrix3d& turn, const E
                    const std::map<std::string, const LinkInertia*>& stated, const std::vector<UrdfJoint>& joints,
                    std::vector<MassPart>& parts, std::size_t depth) {
   if (depth > joints.size()) return;  // a cycle, which the import refuses before this
-  if (auto l = stated.find(link); l != stated.end() && l->second->mass > 0) {
+  // a link of mass 0 with a moment of inertia (Bolt's feet) adds its moment
+  if (auto l = stated.find(link);
+      l != stated.end() && (l->second->mass > 0 || std::any_of(l->second->tensor.begin(), l->second->tensor.end(), [](double v) { return v != 0; }))) {
     Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> I(l->second->tensor.data());
     Eigen::Vector3d c(l->second->center[0], l->second->center[1], l->second->center[2]);
     parts.push_back({link, l->second->mass, turn * c + shift, turn * I * turn.transpose()});
@@ -167,11 +169,18 @@ std::vector<LinkInertia> urdf_fused_inertias(const std::string& urdf, const std:
 StatedInertias with_stated_inertias(std::vector<RobotBody>& bodies, const std::string& urdf) {
   StatedInertias out;
   std::vector<LinkInertia> links = urdf_link_inertias(urdf), fused = urdf_fused_inertias(urdf, links);
+  // a link with links fixed to it first: where they add no mass (a foot of mass 0 with a moment of
+  // inertia) the link alone has the body's mass and centre too, but not its moment
   std::vector<const LinkInertia*> candidates;
-  for (const LinkInertia& l : links) candidates.push_back(&l);
   for (const LinkInertia& l : fused) candidates.push_back(&l);
+  for (const LinkInertia& l : links) candidates.push_back(&l);
   std::set<std::string> taken;
+  auto is_a_body = [&](const std::string& link) {
+    return std::any_of(bodies.begin(), bodies.end(), [&](const RobotBody& b) { return b.name == link; });
+  };
   for (const LinkInertia* l : candidates) {
+    // fused only where MuJoCo fused: a link kept as a body of its own keeps its own inertia
+    if (std::any_of(l->fused.begin(), l->fused.end(), is_a_body)) continue;
     auto body = std::find_if(bodies.begin(), bodies.end(), [&](const RobotBody& b) { return is_body_of(b, *l); });
     if (body == bodies.end() || !taken.insert(l->link).second) continue;
     body->center = l->center;

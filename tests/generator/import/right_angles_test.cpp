@@ -33,7 +33,7 @@ std::vector<Eigen::Matrix3d> turns_of_the_cube() {
 }
 
 // the rotation of quat(w, x, y, z) as eomgen reads it, R(q)/|q|², exactly for integers
-Eigen::Matrix3d rotation_of(const std::array<int, 4>& q) {
+Eigen::Matrix3d integer_quaternion_rotation(const std::array<int, 4>& q) {
   Eigen::Quaterniond unit(q[0], q[1], q[2], q[3]);
   return unit.normalized().toRotationMatrix();
 }
@@ -52,7 +52,7 @@ TEST(RightAngles, EveryTurnOfTheCubeIsWrittenExactly) {
           if (read[k] != 0) read[k] = std::nextafter(read[k], (off >> k & 1) ? 2.0 : -2.0);
         auto turn = right_angle_turn(read);
         ASSERT_TRUE(turn) << P;
-        Eigen::Matrix3d R = rotation_of(*turn);
+        Eigen::Matrix3d R = integer_quaternion_rotation(*turn);
         for (int r = 0; r < 3; ++r)
           for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(R(r, c) - P(r, c)), 1e-15) << P << "\nas\n" << R;
         int length = (*turn)[0] * (*turn)[0] + (*turn)[1] * (*turn)[1] + (*turn)[2] * (*turn)[2] + (*turn)[3] * (*turn)[3];
@@ -77,7 +77,7 @@ TEST(RightAngles, TurnsStatedToFewerDigitsOrNoRightAngleStayAsRead) {
 }
 
 // two links: the elbow turned by rpy = -pi/2 to the last digit and the wrist by pi to 12 digits
-const char* const arm = R"(<?xml version="1.0"?>
+const char* const right_angled_arm = R"(<?xml version="1.0"?>
 <robot name="right_angled_arm">
   <link name="base"/>
   <link name="upper">
@@ -105,7 +105,7 @@ const char* const arm = R"(<?xml version="1.0"?>
 )";
 
 TEST(RightAngles, AnArmImportsItsRightAngleExactlyAndKeepsMuJoCosDynamics) {
-  std::string path = write_file("right_angled_arm.urdf", arm);
+  std::string path = write_file("right_angled_arm.urdf", right_angled_arm);
   Diagnostics diagnostics;
   auto text = imported_model_text(path, diagnostics, false);
   ASSERT_TRUE(text) << diagnostics.format();

@@ -161,6 +161,25 @@ TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKept) {
       << refused.diagnostics.format();
 }
 
+// on a floating base MuJoCo fuses the foot into the shank: the shank's tensor then holds the foot's
+// moment too (the trace, which no turn changes, is the two links' sum: the foot adds no mass, so
+// the centre and the Steiner terms stay the shank's)
+TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKeptWhereItsLinkIsFused) {
+  std::string path = write_file("footed_leg.urdf", footed_leg);
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false, {}, true);
+  ASSERT_TRUE(text) << diagnostics.format();
+  std::size_t shank = text->find("name = \"shank\"\nframe = \"shank\"");
+  ASSERT_NE(shank, std::string::npos) << *text;
+  std::size_t inertia = text->find("inertia = [\"", shank);
+  ASSERT_NE(inertia, std::string::npos);
+  double trace = 0;
+  std::size_t at = inertia + 12;
+  for (int k = 0; k < 3; ++k, at = text->find('"', text->find('"', at) + 1) + 1) trace += std::stod(text->substr(at));
+  double shank_trace = 1.1e-4 + 1.2e-4 + 1.2e-5, foot_trace = 5.7e-5 + 8.4e-5 + 5.3e-5;
+  EXPECT_NEAR(trace, shank_trace + foot_trace, 1e-15) << text->substr(shank, 300);
+}
+
 // a joint's <mimic> (MuJoCo's URDF reader ignores it) follows the coordinate it mimics
 // (joint_follower_import_test.cpp checks the dynamics); one that mimics a follower (a chain) follows
 // the chain's head, the multipliers and offsets composed, on a fixed base and on a floating one
