@@ -1,5 +1,6 @@
 #include "spatial/joint_tree_derivatives.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include <fmt/format.h>
@@ -63,6 +64,7 @@ class Gradient {
 
   // world poses, twists, accelerations and the links' own inertias, forces and D, parents first
   void forward(const Vector3& gravity, const std::vector<ex>& ddq) {
+    find_cyclic_roots(gravity);
     for (std::size_t i = 0; i < links_.size(); ++i) {
       place(i, gravity, ddq);
       own_inertia(i);
@@ -77,11 +79,12 @@ class Gradient {
     SpatialVector rest, fall{{0, 0, 0}, scaled(-1, gravity)};
     const SpatialVector& vp = root ? rest : v_[p];
     const SpatialVector& ap = root ? fall : a_[p];
-    GiNaC::matrix R = root ? l.turn : R_[p].mul(l.turn);
+    bool at_rest = cyclic(i);
+    GiNaC::matrix R = root ? (at_rest ? l.rest_pose->first : l.turn) : R_[p].mul(l.turn);
     for (unsigned a = 0; a < 3; ++a)
       for (unsigned b = 0; b < 3; ++b)
         R_[i](a, b) = name(i, fmt::format("gR{}{}", a, b), R(a, b));
-    origin_[i] = named(i, "go", root ? l.offset : origin_[p] + times(R_[p], l.offset));
+    origin_[i] = named(i, "go", root ? (at_rest ? l.rest_pose->second : l.offset) : origin_[p] + times(R_[p], l.offset));
     // v = v_λ + V_p + V_b and a = a_λ + Σ S s' + v × V_b + v_λ × V_p: the columns that turn with
     // the link change as v × S, those that keep the parent's axes as v_λ × S
     SpatialVector kept, turning, driven, kept_driven;
@@ -203,7 +206,7 @@ class Gradient {
         for (std::size_t r = 0; r < links_[k].columns.size(); ++r) {
           const TreeLink::Column& row = links_[k].columns[r];
           unsigned i = unsigned(row.velocity);
-          for (std::size_t d = 0; d < links_[j].directions.size(); ++d) {
+          for (std::size_t d = 0; d < links_[j].directions.size() && !cyclic(j); ++d) {
             unsigned q = unsigned(links_[j].directions[d].coordinate);
             bool carried = j != k || row.turns_with_link;
             g.coordinates(i, q) += (carried ? power(ddS_[j][d], IS_[k][r]) + power(dS_[j][d], BS_[k][r])
@@ -299,6 +302,22 @@ class Gradient {
   }
 
  private:
+  // A root hinge about gravity's direction (about any axis without gravity) or a root slide moves
+  // its subtree as one rigid body, and uniform gravity does not see that motion: the bodies'
+  // Lagrangian does not depend on its coordinate, which is cyclic for their forces (∂τ/∂q = 0), and
+  // the subtree's quantities may be formed at the coordinate's zero, in world axes turned or slid
+  // back by the joint, where the root's turn is constant and the products down the tree fold it
+  void find_cyclic_roots(const Vector3& gravity) {
+    cyclic_.assign(links_.size(), false);
+    for (std::size_t i = 0; i < links_.size(); ++i) {
+      const TreeLink& l = links_[i];
+      if (l.parent >= 0 || !l.rest_pose || !is_loop_hinge(i)) continue;
+      Vector3 across = cross(times(l.rest_pose->first, l.columns[0].axis), gravity);
+      cyclic_[i] = std::all_of(across.begin(), across.end(), [](const ex& x) { return x.expand().is_zero(); });
+    }
+  }
+  bool cyclic(std::size_t i) const { return i < cyclic_.size() && cyclic_[i]; }
+
   // a hinge or slide of one coordinate, which the loops' tables hold
   bool is_loop_hinge(std::size_t j) const { return is_hinge(j) && links_[j].directions.size() == 1; }
 
@@ -376,6 +395,7 @@ class Gradient {
 
   const std::vector<TreeLink>& links_;
   std::vector<Intermediate>& out_;
+  std::vector<bool> cyclic_;  // find_cyclic_roots()
   std::vector<GiNaC::matrix> R_;
   std::vector<Vector3> origin_;
   std::vector<std::vector<SpatialVector>> S_;  // per column

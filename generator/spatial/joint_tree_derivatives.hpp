@@ -29,6 +29,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -68,6 +69,10 @@ struct TreeLink {
     GiNaC::matrix inertia{3, 3};  // about the centre
   };
   std::vector<Body> bodies;
+  /// A root hinge's or slide's turn and offset at its coordinate's zero (their values at q for any
+  /// other link): the pose its subtree's quantities may be formed in where the coordinate is
+  /// cyclic for the bodies' forces (joint_tree_derivatives.cpp)
+  std::optional<std::pair<GiNaC::matrix, Vector3>> rest_pose;
 };
 
 /// A root joint of several velocities (a floating base's free joint, a ball) in world Plücker

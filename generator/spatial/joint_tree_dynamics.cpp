@@ -240,6 +240,7 @@ class Tree {
         }
       }
       for (const Body& b : bodies_[i]) t.bodies.push_back({b.mass, b.center, b.inertia});
+      t.rest_pose = links_[i].rest_pose;
       out.push_back(t);
     }
     return out;
@@ -259,6 +260,7 @@ class Tree {
     std::vector<Dof> dofs;
     GiNaC::matrix E{3, 3};           // the link's components to its parent's
     Vector3 r{0, 0, 0};              // its origin in its parent's coordinates
+    std::optional<std::pair<GiNaC::matrix, Vector3>> rest_pose;  // a root hinge's or slide's E and r at q = 0
   };
 
   // a body in frame i, moved to the joint frame's coordinates: c' = Cᵀ(c − o), J' = Cᵀ J C
@@ -333,6 +335,15 @@ class Tree {
       for (ex& x : offset) x = rounded_to(without_rounding_residue(without_small_terms(x.expand()), size), size);
     }
     l.r = named(out_, i, "tr", offset);
+    if (p < 0 && !j.spherical() && j.coordinate >= 0) {
+      ex at_zero = s_.coordinates[std::size_t(j.coordinate)] == 0;
+      GiNaC::matrix E0(3, 3);
+      for (unsigned a = 0; a < 3; ++a)
+        for (unsigned b = 0; b < 3; ++b) E0(a, b) = E(a, b).subs(at_zero).expand();
+      Vector3 r0;
+      for (unsigned k = 0; k < 3; ++k) r0[k] = offset[k].subs(at_zero).expand();
+      l.rest_pose = {E0, r0};
+    }
     Vector3 wp = p < 0 ? zero : omega_[std::size_t(p)];
     carried_.push_back(named(out_, i, "twp", times(l.E, wp, true)));
     Vector3 w = carried_.back();

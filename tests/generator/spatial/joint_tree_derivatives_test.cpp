@@ -4,7 +4,8 @@
 // springs and a damper (the applied part, which the closed form leaves out). At random states,
 // with the quaternion off its unit length, each entry against central differences of the bodies'
 // τ = inverse_dynamics − bodies_gradient->applied_inverse_dynamics, evaluated from the recursion's own definitions;
-// and a free body carried by a hinge and a slide. Which trees take the gradient's loops.
+// and a free body carried by a hinge and a slide. A root joint whose coordinate is cyclic for the
+// bodies. Which trees take the gradient's loops.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -282,6 +283,39 @@ TEST(JointTreeDerivatives, ShallowTreesOfManyHingesKeepStraightLineCode) {
   EXPECT_FALSE(derive_text(hinge_legs(3, 4)).gradient_loops());
   EXPECT_TRUE(derive_text(hinge_legs(3, 5)).gradient_loops());
   expect_closed_form_agrees(four_by_three.c_str(), 12, 12);
+}
+
+// hinge_chain(3)'s root joint made `root_joint` and its gravity `gravity`; its ∂τ/∂q column is the
+// cyclic root's structural zero when `cyclic`, and every entry agrees with central differences
+void expect_root_column(const std::string& root_joint, const std::string& gravity, bool cyclic) {
+  std::string text = hinge_chain(3, false);
+  const std::string oblique = R"(type = "revolute", axis = ["1", "1", "2"], anchor = ["0.01", "0", "0"])";
+  text.replace(text.find(oblique), oblique.size(), root_joint);
+  const std::string down = R"(acceleration = ["0", "0", "-9.81"])";
+  text.replace(text.find(down), down.size(), "acceleration = " + gravity);
+  Equations e = derive_text(text);
+  ASSERT_TRUE(e.bodies_gradient) << text;
+  const GiNaC::matrix& dq = e.bodies_gradient->closed_form.coordinates;
+  bool zero = true;
+  for (unsigned i = 0; i < dq.rows(); ++i) zero = zero && dq(i, 0).is_zero();
+  EXPECT_EQ(zero, cyclic) << text;
+  expect_closed_form_agrees(text.c_str(), 3, 3);
+}
+
+// A root hinge about gravity's direction, through an anchor off the origin, moves its subtree as
+// one body that gravity does not tell apart: its coordinate is cyclic for the bodies' τ and the
+// rest is formed at its zero; so with any root hinge without gravity, or any root slide. Tilt
+// gravity and the hinge's column is there again.
+TEST(JointTreeDerivatives, ARootJointThatGravityDoesNotSeeIsCyclic) {
+  const std::string vertical = R"(type = "revolute", axis = ["0", "0", "2"], anchor = ["0.05", "-0.02", "0.3"])";
+  const std::string oblique = R"(type = "revolute", axis = ["1", "1", "2"], anchor = ["0.01", "0", "0"])";
+  const std::string slide = R"(type = "prismatic", axis = ["1", "1", "2"])";
+  expect_root_column(vertical, R"(["0", "0", "-9.81"])", true);
+  expect_root_column(vertical, R"(["0", "0", "4"])", true);
+  expect_root_column(vertical, R"(["0.5", "0", "-9.81"])", false);
+  expect_root_column(oblique, R"(["0", "0", "-9.81"])", false);
+  expect_root_column(oblique, R"(["0", "0", "0"])", true);
+  expect_root_column(slide, R"(["0.5", "0", "-9.81"])", true);
 }
 
 // beyond 8 velocities a tree of hinges and slides takes the loops (the measured crossover), with
