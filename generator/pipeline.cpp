@@ -100,6 +100,9 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
     derivation_stage("the model");
     Model model = build_model(file, diagnostics, !reduce.empty() || !method.empty() || choice.written_out);
     if (!method.empty()) model.method = method;
+    // the form asked for is checked on the file's own model: a variant that is no tree falls back
+    model.forward_dynamics = choice.forward_dynamics;
+    if (diagnostics.empty()) check_forward_dynamics(model, {file.path, 1, 1}, diagnostics);
     if (diagnostics.empty()) chosen_model(file, choice, model, diagnostics);
     if (diagnostics.empty() && !reduce.empty() && model.recursive_kinematics)
       diagnostics.error({file.path, file.kinematics_where.line, file.kinematics_where.column}, "model.kinematics",
@@ -192,10 +195,10 @@ Derivation derive_model_file_as(const std::string& path, const std::string& meth
   return derive(file, std::move(diagnostics), {}, method);
 }
 
-Derivation derive_model_text(const std::string& text, const std::string& path) {
+Derivation derive_model_text(const std::string& text, const std::string& path, const ModelChoice& choice) {
   Diagnostics diagnostics;
   ModelFile file = parse_model_text(text, path, diagnostics);
-  return derive(file, std::move(diagnostics));
+  return derive(file, std::move(diagnostics), {}, "", choice);
 }
 
 }  // namespace eomgen

@@ -32,6 +32,8 @@ struct ModelChoice {
   /// every position and rotation multiplied out in q, though the frames carry or read as joints
   /// (but for ball and free joints; build_model: diff compares equations in q)
   bool written_out = false;
+  /// how the header's rhs solves for q'': eomgen's choice, or one form to compare with the other
+  ForwardDynamics forward_dynamics = ForwardDynamics::chosen;
 };
 
 /// The file's own model, written out in q when `written_out`: for the analyses that differentiate
@@ -53,6 +55,6 @@ Derivation derive_model_file_for(const ModelFile& file, const ModelChoice& choic
 std::optional<Equations> derive_built_model(const Model& model, SourceLocation method_where, Diagnostics& diagnostics);
 
 /// Same, from model text in memory; `path` names it in diagnostics.
-Derivation derive_model_text(const std::string& text, const std::string& path);
+Derivation derive_model_text(const std::string& text, const std::string& path, const ModelChoice& choice = {});
 
 }  // namespace eomgen

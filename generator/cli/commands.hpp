@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/diagnostic.hpp"
+#include "model/model.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/simulation_run.hpp"
 
@@ -57,10 +58,12 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o);
 /// simulate's and animate's --trace and --axes.
 void add_animation_options(CLI::App* cmd, SimulationOptions& o);
 /// Derives `model_path` and writes NAME.hpp into `directory`, or to `header_file` when that is not empty;
-/// with `split_above_kb`, also the split units of its functions of that many KB (emit/split_units.hpp).
+/// with `split_above_kb`, also the split units of its functions of that many KB (emit/split_units.hpp);
+/// its rhs solves for q'' in `forward_dynamics`, eomgen's choice unless one form is asked for.
 int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file,
                     const std::string& variant = "", const std::string& scene = "",
-                    std::optional<std::size_t> split_above_kb = std::nullopt);
+                    std::optional<std::size_t> split_above_kb = std::nullopt,
+                    ForwardDynamics forward_dynamics = ForwardDynamics::chosen);
 
 /// The model `eomgen run` uses when none is named.
 std::string default_model_path();

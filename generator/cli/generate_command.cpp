@@ -62,7 +62,8 @@ int write_split_units(const std::string& text, const std::string& name, const st
 }  // namespace
 
 int generate_header(const std::string& model_path, const std::string& directory, const std::string& header_file,
-                    const std::string& variant, const std::string& scene, std::optional<std::size_t> split_above_kb) {
+                    const std::string& variant, const std::string& scene, std::optional<std::size_t> split_above_kb,
+                    ForwardDynamics forward_dynamics) {
   auto started = std::chrono::steady_clock::now();
   std::string text, name;
   if (!scene.empty()) {
@@ -70,7 +71,9 @@ int generate_header(const std::string& model_path, const std::string& directory,
     if (auto* status = std::get_if<int>(&chosen)) return *status;
     std::tie(name, text) = std::get<std::pair<std::string, std::string>>(chosen);
   } else {
-    Derivation d = variant.empty() ? derive_model_file(model_path) : derive_model_file_for(model_path, {"", variant, {}});
+    ModelChoice choice;
+    choice.variant = variant, choice.forward_dynamics = forward_dynamics;
+    Derivation d = derive_model_file_for(model_path, choice);
     if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
     derivation_stage("the C++ header (common subexpressions, printing)");
     text = emit_cpp_header(*d.equations), name = d.equations->model_name;
@@ -113,10 +116,20 @@ Command add_generate_command(CLI::App& app) {
   cmd->add_option("--split-above", *split_above, "With --split: the functions whose body has at least this many KB (default 16)")
       ->check(positive_number())
       ->needs(split_flag);
-  return [cmd, model, directory, header, variant, scene, split, split_above]() -> int {
+  auto form = std::make_shared<std::string>("chosen");
+  cmd->add_option("--forward-dynamics", *form,
+                  "How the rhs solves for q'': chosen (default: eomgen's choice, the articulated-body recursion for a "
+                  "tree of particles of many coordinates, M = L D L^T otherwise), mass_matrix or articulated, to "
+                  "compare the two forms")
+      ->check(CLI::IsMember({"chosen", "mass_matrix", "articulated"}))
+      ->excludes("--scene");
+  return [cmd, model, directory, header, variant, scene, split, split_above, form]() -> int {
     if (!cmd->parsed()) return -1;
+    ForwardDynamics asked = *form == "mass_matrix"   ? ForwardDynamics::mass_matrix
+                            : *form == "articulated" ? ForwardDynamics::articulated
+                                                     : ForwardDynamics::chosen;
     return generate_header(*model, *directory, *header, *variant, *scene,
-                           *split ? std::optional<std::size_t>(*split_above) : std::nullopt);
+                           *split ? std::optional<std::size_t>(*split_above) : std::nullopt, asked);
   };
 }
 

@@ -10,7 +10,7 @@
 
 namespace eomgen {
 
-/// From this many coordinates on, forward_dynamics = "auto" solves a particle tree by the
+/// From this many coordinates on, eomgen solves a particle tree by the
 /// recursion: tests/benchmarks/rhs_benchmark.cpp times both forms of the planar chain in one
 /// process (tests/benchmarks/README.md, "Against SymPy, MuJoCo and hand-written code"). On 2026-11-25 (an Intel Xeon,
 /// sin and cos from the C library) the unrolled LDLᵀ of M took 157 ns against the recursion's 163

@@ -107,8 +107,8 @@ struct Equations {
   const HingeTreeLinks* gradient_loops() const {
     return bodies_gradient && bodies_gradient->closed_form.loops ? &*bodies_gradient->closed_form.loops : nullptr;
   }
-  /// Forward dynamics by the articulated-body recursion of a tree of particles, when [model]
-  /// forward_dynamics chooses it; without it the rhs solves M q'' = f.
+  /// Forward dynamics by the articulated-body recursion of a tree of particles, where eomgen or
+  /// ModelChoice::forward_dynamics chooses it; without it the rhs solves M q'' = f.
   std::optional<ArticulatedForwardDynamics> articulated;
   /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
   void solve_by_mass_matrix() { articulated.reset(); }

@@ -88,12 +88,12 @@ ex kinetic_energy(const GiNaC::matrix& M, const Mechanics& mech, const Symbols& 
   return tidy(T, mech.motion);
 }
 
-// q'' by the articulated-body recursion where [model] forward_dynamics asks for it, or by default
-// ("auto") for a tree of particles from articulated_crossover coordinates on; a variant that is
-// no longer a tree falls back to M = L D Lᵀ
+// q'' by the articulated-body recursion for a tree of particles from articulated_crossover
+// coordinates on, or where ModelChoice asks for it; a variant that is no longer a tree falls back
+// to M = L D Lᵀ
 void choose_forward_dynamics(const Model& model, const Mechanics& mech, const ParticleTree& tree, Equations& e) {
-  if (model.method != "lagrange2" || model.forward_dynamics == "mass_matrix") return;
-  if (model.forward_dynamics == "auto" && model.symbols.num_coordinates() < articulated_crossover) return;
+  if (model.method != "lagrange2" || model.forward_dynamics == ForwardDynamics::mass_matrix) return;
+  if (model.forward_dynamics == ForwardDynamics::chosen && model.symbols.num_coordinates() < articulated_crossover) return;
   if (!tree.found()) return;
   derivation_stage("the articulated-body recursion");
   ArticulatedAccelerations solution = articulated_accelerations(model, mech, tree);

@@ -35,7 +35,6 @@ Model ModelBuilder::build() {
   m_.recursive_kinematics = f_.kinematics == "recursive" || (automatic && reading_ != FrameReading::written_out &&
                                                               (joints || reading_ == FrameReading::tree));
   check_spherical_joints();
-  m_.forward_dynamics = f_.forward_dynamics;
   m_.source = f_.path;
   check_header();
   declare_symbols();
@@ -49,7 +48,12 @@ Model ModelBuilder::build() {
   read_constraints();
   read_outputs();
   check_complete();
-  check_forward_dynamics(f_, m_, d_);
+  if (f_.forward_dynamics_where.line != 0)
+    d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
+             "the key is retired: eomgen chooses how the header's rhs solves for q'' (the articulated-body "
+             "recursion for a tree of particles of 8 coordinates or more, M = L D L^T otherwise)",
+             "remove the line; `eomgen generate --forward-dynamics mass_matrix` or `articulated` writes a header in "
+             "the other form, to compare the two");
   build_scenes_and_variants(f_, m_, d_);
   return m_;
 }

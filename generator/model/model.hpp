@@ -163,6 +163,11 @@ struct DrawnBody {
   std::vector<Shape> shapes;
 };
 
+/// How the header's rhs solves for q'': eomgen's choice (the articulated-body recursion for a tree
+/// of particles from derive/articulated_bodies.hpp's crossover on, M = L D Lᵀ otherwise), or one
+/// form asked for, to compare the two (tests, benchmarks: `eomgen generate --forward-dynamics`).
+enum class ForwardDynamics { chosen, mass_matrix, articulated };
+
 struct Model {
   std::string name, title, method;
   std::string source;  // the model file's path as given
@@ -180,7 +185,7 @@ struct Model {
   std::vector<Scene> scenes;
   std::vector<Variant> variants;
   bool recursive_kinematics = false;
-  std::string forward_dynamics = "auto";    // "auto", "mass_matrix" or "articulated" (model_file.hpp)
+  ForwardDynamics forward_dynamics = ForwardDynamics::chosen;
   std::vector<FrameLink> frame_links;        // recursive kinematics: the frames, parents first
   std::vector<Intermediate> intermediates;   // the frames' rotations and origins, in order
   std::vector<DrawnBody> drawing;            // frames, particles, rigid bodies and points, in that order
@@ -197,9 +202,10 @@ const std::vector<std::string>& known_methods();
 /// reduction, another method, diff and the symbolic analyses need.
 Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_out = false);
 
-/// Checks [model] forward_dynamics: a known form, and for "articulated" a tree of particles
-/// solved by Lagrange II (built `model`, once its other mistakes are reported).
-void check_forward_dynamics(const ModelFile& file, const Model& model, Diagnostics& diagnostics);
+/// Checks a form of forward dynamics asked for instead of eomgen's choice (ModelChoice, `generate
+/// --forward-dynamics`): the articulated-body recursion needs a tree of particles solved by
+/// Lagrange II. Mistakes are located at `where`, the file's start.
+void check_forward_dynamics(const Model& model, SourceLocation where, Diagnostics& diagnostics);
 
 /// Checks the [scenes] and [variants] of a file against the model's symbols.
 void build_scenes_and_variants(const ModelFile& file, Model& model, Diagnostics& diagnostics);

@@ -217,9 +217,8 @@ struct ModelFile {
   /// "expanded": every position and rotation multiplied out in q; "recursive": the frames'
   /// rotations, origins and motions are quantities of their own, composed link by link
   std::string kinematics = "expanded";
-  /// How the generated rhs solves for q'': "auto", "mass_matrix" (M = L D Lᵀ) or "articulated"
-  /// (the articulated-body recursion of a tree of particles)
-  std::string forward_dynamics = "auto";
+  /// The retired key forward_dynamics, when a file still has it (refused with a hint: eomgen
+  /// chooses how the rhs solves for q'', model.hpp's ForwardDynamics)
   SourceLocation name_where, method_where, kinematics_where, forward_dynamics_where;
   std::vector<ParameterEntry> parameters;
   std::vector<CoordinateEntry> coordinates;

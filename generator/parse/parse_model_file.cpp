@@ -43,10 +43,7 @@ void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
     m.kinematics_where = r.at(*n);
     r.string(*n, "model.kinematics", m.kinematics);
   }
-  if (const toml::node* n = t->get("forward_dynamics")) {
-    m.forward_dynamics_where = r.at(*n);
-    r.string(*n, "model.forward_dynamics", m.forward_dynamics);
-  }
+  if (const toml::node* n = t->get("forward_dynamics")) m.forward_dynamics_where = r.at(*n);
 }
 
 // [parameters] / [inputs]: name = number

@@ -1,13 +1,10 @@
 """Model files the benchmarks write themselves."""
 
 
-def planar_chain(n, length=0.5, name=None, forward_dynamics=None):
+def planar_chain(n, length=0.5, name=None):
     """The planar n-link pendulum: point masses on massless rods, absolute angles
-    phi_i from the downward vertical, gravity; parameters m1, l1, ..., g.
-    forward_dynamics: the [model] key (None: eomgen's default, "auto")."""
+    phi_i from the downward vertical, gravity; parameters m1, l1, ..., g."""
     lines = ['[model]', f'name = "{name or f"chain{n}"}"', f'title = "Planar {n}-link pendulum"']
-    if forward_dynamics:
-        lines.append(f'forward_dynamics = "{forward_dynamics}"')
     lines.append('[parameters]')
     lines += [f"m{i} = 1.0\nl{i} = {length}" for i in range(1, n + 1)] + ["g = 9.81", "[coordinates]"]
     lines += [f"phi{i} = {0.1 * i:.1f}" for i in range(1, n + 1)]

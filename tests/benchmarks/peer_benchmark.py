@@ -9,7 +9,7 @@ Models (written here): the planar n-link pendulum (point masses, absolute
 angles from the downward vertical) for n = 1, 2, 4, 8, 12, 16, 24, 30, 60, 100
 (from 60 on without the other rhs form, the mass-matrix one, whose O(n^3) code
 takes minutes to compile), each also generated with the forward dynamics that
-[model] forward_dynamics = "auto" did not choose, whose rhs is timed in the
+eomgen did not choose (`generate --forward-dynamics`), whose rhs is timed in the
 same process and compared (and both against the rhs in long double); and a
 three-dimensional chain of n rigid rods, each link oriented by its own Cardan
 angles rot_x(a_i)*rot_y(b_i) (two rotational degrees of freedom per link, like a
@@ -239,11 +239,12 @@ def main():
             form = "articulated" if "articulated-body recursion" in header.split("void rhs(")[0] else "mass_matrix"
             other = None
             if kind == "planar" and not long_chain:
-                # the same chain with the form [model] forward_dynamics = "auto" did not choose, timed alongside
+                # the same chain in the form eomgen did not choose, timed alongside
                 other = f"{name}_other"
                 with open(os.path.join(work, other + ".toml"), "w") as f:
-                    f.write(planar_chain(n, name=other, forward_dynamics="mass_matrix" if form == "articulated" else "articulated"))
-                run([eomgen, "generate", os.path.join(work, other + ".toml"), "-o", work])
+                    f.write(planar_chain(n, name=other))
+                run([eomgen, "generate", "--forward-dynamics", "mass_matrix" if form == "articulated" else "articulated",
+                     os.path.join(work, other + ".toml"), "-o", work])
             # the articulated form's jacobian_state is O(n) code, the mass-matrix form's O(n^3)
             jacobian = not long_chain or form == "articulated"
             speed = rhs_speed(work, name, kind == "planar", work, other, jacobian=jacobian)
@@ -296,7 +297,7 @@ def write_report(rows, out, quick):
             f"| {r['model']} | {r['n']} | {r['states']} | {fmt(r['derive_s'])} | {fmt(r['lagrange_s'])} | {ratio(r['lagrange_s'], r['derive_s'])} | "
             f"{fmt(r['kane_s'])} | {ratio(r['kane_s'], r['derive_s'])} | {ops_m_f(r)} | {fmt(r['sympy_cse_ops'], 6)} | {r['ops_rhs']} | "
             f"{r['header_kb']:.0f} | {fmt(r['compile_s'])} |")
-    lines += ["", "Right-hand side and Jacobian (ns per call; the form is what forward_dynamics = \"auto\" chose; "
+    lines += ["", "Right-hand side and Jacobian (ns per call; the form is what eomgen chose; "
               "difference: largest |x'_auto − x'_other| / max(1, |x'|) over 100 random states; error: the same against "
               "the rhs in long double):", "",
               "| model | n | form | eomgen rhs [ns] | other form [ns] | other/eomgen | difference | error (eomgen, other) | MuJoCo mj_forward [ns] | MuJoCo/eomgen | Eigen by hand [ns] | Eigen/eomgen | SymPy lambdify [ns] | jacobian_state [ns] | jacobian/rhs | central differences [ns] | FD/jacobian |",
@@ -379,7 +380,7 @@ set title 'Derivation: model file to equations (and C++ for eomgen)'
 plot '{data}' using 1:2 with linespoints lw 2 title 'eomgen generate (parse, derive, CSE, header)', '' using 1:3 with linespoints lw 2 title 'SymPy LagrangesMethod', '' using 1:4 with linespoints lw 2 title 'SymPy KanesMethod'
 set ylabel 'time per call [ns]'
 set title 'Right-hand side'
-plot '{data}' using 1:5 with linespoints lw 2 title 'eomgen rhs (forward_dynamics = auto)', '' using 1:8 with linespoints lw 2 title 'eomgen rhs, the other form', '' using 1:6 with linespoints lw 2 title 'MuJoCo mj_forward', '' using 1:7 with linespoints lw 2 title 'Eigen by hand (LDLT)'
+plot '{data}' using 1:5 with linespoints lw 2 title 'eomgen rhs (the form eomgen chose)', '' using 1:8 with linespoints lw 2 title 'eomgen rhs, the other form', '' using 1:6 with linespoints lw 2 title 'MuJoCo mj_forward', '' using 1:7 with linespoints lw 2 title 'Eigen by hand (LDLT)'
 unset logscale y
 set yrange [0:*]
 set ylabel 'MuJoCo time / eomgen time'

@@ -3,7 +3,7 @@
 // MuJoCo's mj_forward on the equivalent MJCF, a hand-written Eigen version
 // (planar chains: M_jk = (Σ_{i≥max(j,k)} m_i) l_j l_k cos(φ_j − φ_k), LDLT solve),
 // and jacobian_state against central differences of rhs. With -DOTHER=NAME2 (the same model
-// generated with the other [model] forward_dynamics), that header's rhs too, and the largest
+// generated with the other form, `generate --forward-dynamics`), that header's rhs too, and the largest
 // difference between the two forms' results.
 // -DJACOBIAN=0 leaves the Jacobian out (long chains, whose dense jacobian_state takes minutes to compile).
 // -DTREE_PEERS=1 (tree_benchmark.py) also times Featherstone's articulated-body algorithm written by

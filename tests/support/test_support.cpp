@@ -28,8 +28,10 @@ Equations derive_model(const std::string& name) {
   return *d.equations;
 }
 
-Equations derive_text(const std::string& text, const std::string& path) {
-  Derivation d = derive_model_text(text, path);
+Equations derive_text(const std::string& text, const std::string& path, ForwardDynamics form) {
+  ModelChoice choice;
+  choice.forward_dynamics = form;
+  Derivation d = derive_model_text(text, path, choice);
   EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
   if (!d.equations) throw std::runtime_error(path + " did not derive");
   return *d.equations;

@@ -19,8 +19,10 @@ std::string model_path(const std::string& name);
 
 /// Derives models/NAME.toml; fails the test on any diagnostic.
 Equations derive_model(const std::string& name);
-/// Derives a model file's text (`path` names it in diagnostics); fails the test on any diagnostic.
-Equations derive_text(const std::string& text, const std::string& path = "model.toml");
+/// Derives a model file's text (`path` names it in diagnostics), its rhs solving for q'' in `form`
+/// (eomgen's choice unless one is asked for); fails the test on any diagnostic.
+Equations derive_text(const std::string& text, const std::string& path = "model.toml",
+                      ForwardDynamics form = ForwardDynamics::chosen);
 /// The model's parameter called `name`.
 GiNaC::ex parameter_named(const Symbols& s, const std::string& name);
 

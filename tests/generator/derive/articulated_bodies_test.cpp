@@ -1,6 +1,7 @@
 // The articulated-body recursion for trees of particles (derive/articulated_bodies.hpp): its q''
-// against M⁻¹ f of the same model at random states, when [model] forward_dynamics picks it, and
-// the located refusals when a model is not such a tree.
+// against M⁻¹ f of the same model at random states, where eomgen chooses it or a test asks for it
+// (ModelChoice::forward_dynamics, `generate --forward-dynamics`), and the located refusals when a
+// model is not such a tree or a file has the retired key.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,13 +21,21 @@ using GiNaC::ex;
 using test::value_at;
 
 
-std::string diagnostics_of(const std::string& text) { return derive_model_text(text, "tree.toml").diagnostics.format(); }
+constexpr ForwardDynamics articulated = ForwardDynamics::articulated;
+
+std::string diagnostics_of(const std::string& text, ForwardDynamics form = articulated) {
+  ModelChoice choice;
+  choice.forward_dynamics = form;
+  return derive_model_text(text, "tree.toml", choice).diagnostics.format();
+}
+
+// derived with its rhs by the articulated-body recursion, whatever its size
+Equations derive_articulated(const std::string& text) { return test::derive_text(text, "model.toml", articulated); }
 
 // the planar n-link chain of the peer benchmark (absolute angles), with a torsion spring at the
 // first joint, a damper at the last, and a force input at the tip
-std::string planar_chain(int n, const std::string& forward_dynamics) {
-  std::string out = fmt::format("[model]\nname = \"chain\"\nforward_dynamics = \"{}\"\n[parameters]\ng = 9.81\nk = 3.0\nd = 0.4\n",
-                                forward_dynamics);
+std::string planar_chain(int n) {
+  std::string out = "[model]\nname = \"chain\"\n[parameters]\ng = 9.81\nk = 3.0\nd = 0.4\n";
   for (int i = 1; i <= n; ++i) out += fmt::format("m{0} = {1}\nl{0} = {2}\n", i, 0.5 + 0.1 * i, 0.3 + 0.05 * i);
   out += "[coordinates]\n";
   for (int i = 1; i <= n; ++i) out += fmt::format("phi{} = {}\n", i, 0.1 * i);
@@ -47,7 +56,7 @@ std::string planar_chain(int n, const std::string& forward_dynamics) {
 // to it by a constant offset (a joint without coordinates); `driven`: a spring coupling x and z, a
 // damped pendulum and a force input at the bob
 std::string free_particle_carrying_a_pendulum(const std::string& name, bool driven) {
-  std::string out = "[model]\nname = \"" + name + "\"\nforward_dynamics = \"articulated\"\n"
+  std::string out = "[model]\nname = \"" + name + "\"\n"
                     "[parameters]\nm = 1.5\nk = 4.0\nl = 0.7\ng = 9.81\n";
   if (driven) out += "c = 0.3\n";
   out += "[coordinates]\nx = 0.1\ny = 0.2\nz = 0.3\na = 0.4\n";
@@ -171,7 +180,7 @@ void expect_inverse_dynamics_of_the_equations(const Equations& e, int points, un
 
 TEST(ArticulatedBodies, PlanarChainGivesMInverseF) {
   for (int n : {1, 2, 3, 5, 8}) {
-    Equations e = test::derive_text(planar_chain(n, "articulated"));
+    Equations e = derive_articulated(planar_chain(n));
     expect_recursion_solves_the_equations(e, 6, 40u + unsigned(n));
     expect_inverse_dynamics_of_the_equations(e, 3, 50u + unsigned(n));
   }
@@ -179,12 +188,12 @@ TEST(ArticulatedBodies, PlanarChainGivesMInverseF) {
 
 TEST(ArticulatedBodies, BranchedSpatialTreeGivesMInverseF) {
   // the crane hook: a spherical pendulum (two coordinates in one joint) carrying two planar pendulums
-  Equations crane = test::derive_model("crane_hook_tree");
+  Equations crane = derive_articulated(test::read_file(test::model_path("crane_hook_tree")));
   expect_recursion_solves_the_equations(crane, 8, 7u);
   expect_inverse_dynamics_of_the_equations(crane, 4, 8u);
   // a free particle (three coordinates, on a spring) carrying a pendulum, and a mass fixed to
   // that particle by a constant offset (a joint without coordinates)
-  Equations carrier = test::derive_text(free_particle_carrying_a_pendulum("free", false));
+  Equations carrier = derive_articulated(free_particle_carrying_a_pendulum("free", false));
   expect_recursion_solves_the_equations(carrier, 8, 9u);
   expect_inverse_dynamics_of_the_equations(carrier, 4, 10u);
 }
@@ -197,41 +206,62 @@ TEST(ArticulatedBodies, VariantsOfATreeKeepTheRecursionOrFallBack) {
     std::ofstream(path) << test::read_file(test::model_path("crane_hook_tree"))
                         << "\n[variants.planar_hook]\nfreeze = [\"psi\"]\n\n[variants.tied]\ntie = { b = \"a\" }\n";
   }
-  Derivation planar = derive_model_file_for(path, {"", "planar_hook", {}});
+  ModelChoice planar_hook{"", "planar_hook", {}}, tie{"", "tied", {}};
+  planar_hook.forward_dynamics = tie.forward_dynamics = articulated;
+  Derivation planar = derive_model_file_for(path, planar_hook);
   ASSERT_TRUE(planar.equations) << planar.diagnostics.format();
   EXPECT_EQ(planar.equations->symbols.num_coordinates(), 3u);
   expect_recursion_solves_the_equations(*planar.equations, 6, 3u);
   expect_inverse_dynamics_of_the_equations(*planar.equations, 3, 4u);
-  Derivation tied = derive_model_file_for(path, {"", "tied", {}});
+  Derivation tied = derive_model_file_for(path, tie);
   ASSERT_TRUE(tied.equations) << tied.diagnostics.format();
   EXPECT_FALSE(tied.equations->articulated);
 }
 
 TEST(ArticulatedBodies, AutoChoosesTheRecursionForLongTrees) {
-  EXPECT_FALSE(test::derive_text(planar_chain(static_cast<int>(articulated_crossover) - 1, "auto")).articulated);
-  EXPECT_TRUE(test::derive_text(planar_chain(static_cast<int>(articulated_crossover), "auto")).articulated);
-  EXPECT_FALSE(test::derive_text(planar_chain(12, "mass_matrix")).articulated);
+  EXPECT_FALSE(test::derive_text(planar_chain(static_cast<int>(articulated_crossover) - 1)).articulated);
+  EXPECT_TRUE(test::derive_text(planar_chain(static_cast<int>(articulated_crossover))).articulated);
+  EXPECT_FALSE(test::derive_text(planar_chain(12), "model.toml", ForwardDynamics::mass_matrix).articulated);
   EXPECT_FALSE(test::derive_model("n_link_pendulum_4").articulated);
+  EXPECT_FALSE(test::derive_model("crane_hook_tree").articulated) << "4 coordinates";
 }
 
 TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
-  std::string relative = planar_chain(2, "articulated");
+  std::string relative = planar_chain(2);
   relative.replace(relative.find("l2*sin(phi2)"), 12, "l2*sin(phi1 + phi2)");
   std::string message = diagnostics_of(relative);
-  EXPECT_NE(message.find("tree.toml:3:20: error: model.forward_dynamics: the articulated-body recursion needs a tree of "
+  EXPECT_NE(message.find("tree.toml:1:1: error: --forward-dynamics: the articulated-body recursion needs a tree of "
                          "particles, and this model is not one: coordinate 'phi1' moves both 'b1' and 'b2'"),
             std::string::npos)
       << message;
-  EXPECT_NE(message.find("hint: use forward_dynamics = \"auto\" or \"mass_matrix\""), std::string::npos) << message;
-  EXPECT_NE(diagnostics_of(planar_chain(2, "fast")).find("unknown forward dynamics 'fast'"), std::string::npos);
-  std::string appell = planar_chain(2, "articulated");
-  appell.insert(appell.find("forward_dynamics"), "method = \"lagrange1\"\n");
+  EXPECT_NE(message.find("hint: leave --forward-dynamics out, or use mass_matrix"), std::string::npos) << message;
+  EXPECT_EQ(diagnostics_of(relative, ForwardDynamics::chosen), "") << "eomgen's choice falls back to M";
+  std::string appell = planar_chain(2);
+  appell.insert(appell.find("[parameters]"), "method = \"lagrange1\"\n");
   EXPECT_NE(diagnostics_of(appell).find("solves Lagrange's equations of the second kind, not method 'lagrange1'"),
             std::string::npos)
       << diagnostics_of(appell);
-  std::string unused = planar_chain(2, "articulated");
+  std::string unused = planar_chain(2);
   unused.insert(unused.find("[inputs]"), "free = 0.0\n");
   EXPECT_NE(diagnostics_of(unused).find("coordinate 'free' moves no particle"), std::string::npos) << diagnostics_of(unused);
+}
+
+// The key that chose the form is retired: a file that has it is told where, and what to do instead
+TEST(ArticulatedBodies, TheRetiredKeyIsALocatedErrorWithAHint) {
+  for (const char* form : {"auto", "articulated", "mass_matrix"}) {
+    std::string text = planar_chain(9);
+    text.insert(text.find("[parameters]"), fmt::format("forward_dynamics = \"{}\"\n", form));
+    std::string message = diagnostics_of(text, ForwardDynamics::chosen);
+    EXPECT_NE(message.find("tree.toml:3:20: error: model.forward_dynamics: the key is retired: eomgen chooses how the "
+                           "header's rhs solves for q''"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find(fmt::format("a tree of particles of {} coordinates or more", articulated_crossover)),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("hint: remove the line; `eomgen generate --forward-dynamics mass_matrix`"), std::string::npos)
+        << message;
+  }
 }
 
 
@@ -320,7 +350,8 @@ void expect_header_agrees(const std::string& text, const std::vector<std::string
     std::ofstream(dir + "/chain.toml") << text;
     std::ofstream(dir + "/check.cpp") << header_check;
   }
-  test::CommandOutput generated = test::run_eomgen("generate '" + dir + "/chain.toml' -o '" + dir + "'");
+  test::CommandOutput generated =
+      test::run_eomgen("generate --forward-dynamics articulated '" + dir + "/chain.toml' -o '" + dir + "'");
   ASSERT_EQ(generated.status, 0) << generated.err;
   std::string header = test::read_file(dir + "/chain.hpp");
   for (const std::string& code : expected_code) EXPECT_NE(header.find(code), std::string::npos) << "expected " << code;
@@ -331,7 +362,7 @@ void expect_header_agrees(const std::string& text, const std::vector<std::string
 // the planar chain's Jacobian by one carry per step (emit/cpp_articulated_jacobian.cpp); a spring
 // between the first two links puts entries of ∂τ/∂q off the carriers' rows, which go through M⁻¹
 TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
-  std::string text = planar_chain(13, "articulated");
+  std::string text = planar_chain(13);
   std::size_t at = text.find("potential = \"k*phi1^2/2\"");
   ASSERT_NE(at, std::string::npos);
   text.insert(at + 23, " + k*(phi2 - phi1)^2/2");
@@ -342,7 +373,7 @@ TEST(ArticulatedBodies, LongChainHeaderAgreesWithItsMassMatrixAndDifferences) {
 // a particle free in the plane (two coordinates in one joint) carrying a pendulum: a planar chain whose
 // nodes carry different numbers of columns (none at x, four at y, two at phi)
 TEST(ArticulatedBodies, PlanarChainWithATwoCoordinateJointAgreesWithItsMassMatrixAndDifferences) {
-  std::string text = "[model]\nname = \"chain\"\nforward_dynamics = \"articulated\"\n"
+  std::string text = "[model]\nname = \"chain\"\n"
                      "[parameters]\nm1 = 2.0\nm2 = 0.6\nl = 0.8\ng = 9.81\nk = 5.0\nc = 0.3\n"
                      "[coordinates]\nx = 0.2\ny = -0.1\nphi = 0.7\n[inputs]\nF = 0.0\n"
                      "[[particles]]\nname = \"p1\"\nmass = \"m1\"\nposition = [\"x\", \"y\", \"0\"]\n"
@@ -361,7 +392,7 @@ TEST(ArticulatedBodies, SpatialChainHeaderAgreesWithItsMassMatrixAndDifferences)
                    "\"-L1*cos(a1) - L2*cos(a2)";
   std::string r3 = "L1*sin(a1)*cos(b1) + L2*sin(a2)*cos(b2) + 0.1\", \"L1*sin(a1)*sin(b1) + L2*sin(a2)*sin(b2)\", "
                    "\"-L1*cos(a1) - L2*cos(a2) - 0.2";
-  std::string text = "[model]\nname = \"chain\"\nforward_dynamics = \"articulated\"\n"
+  std::string text = "[model]\nname = \"chain\"\n"
                      "[parameters]\nm1 = 1.2\nm2 = 0.8\nm3 = 0.3\nL1 = 0.9\nL2 = 0.7\ng = 9.81\nc = 0.2\n"
                      "[coordinates]\na1 = 0.5\nb1 = 0.3\na2 = 0.8\nb2 = -0.4\n[inputs]\nF = 0.0\n"
                      "[[particles]]\nname = \"p1\"\nmass = \"m1\"\nposition = [\"" + r1 + "\"]\n"

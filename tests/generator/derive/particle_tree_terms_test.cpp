@@ -18,7 +18,7 @@ using test::value_at;
 
 
 std::string planar_chain(int n) {
-  std::string out = "[model]\nname = \"chain\"\nforward_dynamics = \"mass_matrix\"\n[parameters]\ng = 9.81\n";
+  std::string out = "[model]\nname = \"chain\"\n[parameters]\ng = 9.81\n";
   for (int i = 1; i <= n; ++i) out += fmt::format("m{0} = {1}\nl{0} = {2}\n", i, 0.5 + 0.1 * i, 0.3 + 0.05 * i);
   out += "[coordinates]\n";
   for (int i = 1; i <= n; ++i) out += fmt::format("phi{} = {}\n", i, 0.1 * i);
@@ -34,7 +34,7 @@ std::string planar_chain(int n) {
 
 TEST(ParticleTreeTerms, PlanarChainHasTheClosedFormMAndF) {
   for (int n : {2, 5, 9}) {
-    Equations e = test::derive_text(planar_chain(n));
+    Equations e = test::derive_text(planar_chain(n), "model.toml", ForwardDynamics::mass_matrix);
     const Symbols& s = e.symbols;
     auto mass_beyond = [&](int j) {
       ex m = 0;
@@ -63,12 +63,11 @@ TEST(ParticleTreeTerms, PlanarChainHasTheClosedFormMAndF) {
   }
 }
 
-// a carrier on a slider (x) with two pendulums on it (a, b), one carrying a third (c); "articulated"
-// refuses a model that is no tree. M and f against Σ_k m_k (J_kᵀ J_k, −J_kᵀ a_k) with the particles' Jacobians and accelerations by hand
+// a carrier on a slider (x) with two pendulums on it (a, b), one carrying a third (c), derived with
+// the articulated-body recursion asked for, which refuses a model that is no tree. M and f against Σ_k m_k (J_kᵀ J_k, −J_kᵀ a_k) with the particles' Jacobians and accelerations by hand
 TEST(ParticleTreeTerms, BranchedTreeIsTheSumOverItsParticles) {
   Equations e = test::derive_text(R"toml([model]
 name = "branched"
-forward_dynamics = "articulated"
 [parameters]
 m0 = 2.0
 m1 = 0.7
@@ -99,7 +98,7 @@ mass = "m3"
 position = ["x + l*sin(b) + l*sin(c)", "l*cos(c)", "-l*cos(b)"]
 [gravity]
 acceleration = ["0", "0", "-g"]
-)toml");
+)toml", "model.toml", ForwardDynamics::articulated);
   const Symbols& s = e.symbols;
   const std::vector<std::string> masses{"m0", "m1", "m2", "m3"};
   ex l = test::parameter_named(s, "l"), g = test::parameter_named(s, "g");

@@ -22,7 +22,8 @@ TEST(DynamicsForm, EachModelTakesItsForm) {
   expect_form("n_link_pendulum_4_hamilton", DynamicsForm::momentum, "der(q) solves");
   expect_form("spatial_double_pendulum", DynamicsForm::newton_euler, "detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
   expect_form("tumbling_body", DynamicsForm::newton_euler, "detail::factored_accelerations(t, x, u, p, ddq, L, D);");
-  expect_form("crane_hook_tree", DynamicsForm::particle_tree, "articulated-body recursion");
+  expect_form("lumped_rope", DynamicsForm::particle_tree, "articulated-body recursion");
+  expect_form("crane_hook_tree", DynamicsForm::mass_matrix, "detail::ldlt_factor(M, L, D);");
 }
 
 // Lagrange I's multipliers come on top of the form: a four-bar of joints keeps the tree's M and

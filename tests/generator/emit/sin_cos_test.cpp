@@ -130,7 +130,7 @@ const char* agreement_program = R"(#include <cstdio>
 #include <vector>
 #include "free_rigid_body.hpp"
 #include "rolling_disk.hpp"
-#include "crane_hook_tree.hpp"
+#include "lumped_rope.hpp"
 #include "spatial_double_pendulum.hpp"
 template <class Model>
 void print(std::mt19937& random) {
@@ -162,13 +162,13 @@ void print(std::mt19937& random) {
   };
 MODEL(free_rigid_body)
 MODEL(rolling_disk)
-MODEL(crane_hook_tree)
+MODEL(lumped_rope)
 MODEL(spatial_double_pendulum)
 int main() {
   std::mt19937 random(3);
   print<free_rigid_body>(random);
   print<rolling_disk>(random);
-  print<crane_hook_tree>(random);
+  print<lumped_rope>(random);
   print<spatial_double_pendulum>(random);
 }
 )";
