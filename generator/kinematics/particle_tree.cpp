@@ -30,7 +30,8 @@ bool depends_on_any(const Vector3& r, const std::vector<GiNaC::realsymbol>& symb
 }
 
 std::string model_level_reason(const Model& m) {
-  if (m.recursive_kinematics) return "it uses recursive kinematics (frames composed link by link)";
+  if (m.recursive_kinematics)
+    return "its frames are derived link by link (joints, or frames composed in turn), not through the particles' positions";
   if (!m.rigid_bodies.empty()) return "it has rigid bodies; the recursion takes point masses only";
   if (!m.kinetic.is_zero()) return "its [energy] kinetic is not a sum over particles";
   if (!m.constraints.empty()) return "it has constraints";
