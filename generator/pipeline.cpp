@@ -105,9 +105,10 @@ Derivation derive(const ModelFile& file, Diagnostics diagnostics, const std::vec
     if (diagnostics.empty()) check_forward_dynamics(model, {file.path, 1, 1}, diagnostics);
     if (diagnostics.empty()) chosen_model(file, choice, model, diagnostics);
     if (diagnostics.empty() && !reduce.empty() && model.recursive_kinematics)
-      diagnostics.error({file.path, file.kinematics_where.line, file.kinematics_where.column}, "model.kinematics",
-                        "Routh's reduction works on equations written out in q, not on those of recursive kinematics",
-                        "use kinematics = \"expanded\" to reduce the model");
+      diagnostics.error({file.path, 1, 1}, "routh",
+                        "Routh's reduction works on equations written out in q, which a ball or free joint's quaternion "
+                        "does not give",
+                        "reduce a model whose frames turn by Euler or Cardan angles");
     if (diagnostics.empty() && !reduce.empty()) {
       try {
         result.equations = derive_routh(model, compute_mechanics(model), reduce);

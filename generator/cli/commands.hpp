@@ -69,8 +69,10 @@ int generate_header(const std::string& model_path, const std::string& directory,
 std::string default_model_path();
 
 /// Derives `model_path` and writes it in `format` to `output` (stdout when empty); with
-/// `reduce`, the Routh-reduced equations with those cyclic coordinates eliminated.
+/// `reduce`, the Routh-reduced equations with those cyclic coordinates eliminated; with
+/// `written_out` (and `linearize`), the equations multiplied out in q.
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
-                     bool linearize = false, const std::vector<std::string>& reduce = {}, const std::string& variant = "");
+                     bool linearize = false, const std::vector<std::string>& reduce = {}, const std::string& variant = "",
+                     bool written_out = false);
 
 }  // namespace eomgen::cli

@@ -11,14 +11,15 @@
 namespace eomgen::cli {
 
 int derive_and_write(const std::string& model_path, const std::string& format, const std::string& output,
-                     bool linearize, const std::vector<std::string>& reduce, const std::string& variant) {
+                     bool linearize, const std::vector<std::string>& reduce, const std::string& variant,
+                     bool written_out) {
   auto started = std::chrono::steady_clock::now();
   Derivation d = !reduce.empty() ? derive_reduced_model_file(model_path, reduce)
-                                 : derive_model_file_for(model_path, {"", variant, {}, linearize});
+                                 : derive_model_file_for(model_path, {"", variant, {}, linearize || written_out});
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
   if (linearize && !d.equations->intermediates.empty()) {
-    std::cerr << "eomgen: error: --linearize differentiates equations written out in q; those of recursive kinematics "
-                 "hold the frames' quantities: use kinematics = \"expanded\", or the generated header's linearization()\n";
+    std::cerr << "eomgen: error: --linearize differentiates equations written out in q; those of ball and free joints "
+                 "hold the frames' quantities: use the generated header's linearization()\n";
     return exit_user_error;
   }
   if (linearize) add_linearization(*d.equations);
@@ -55,9 +56,13 @@ Command add_derive_command(CLI::App& app) {
   auto variant = std::make_shared<std::string>();
   cmd->add_option("--variant", *variant, "Derive the model's [variants.NAME] instead (parameters neglected or replaced, "
                   "coordinates frozen, small angles); the model is named MODEL_NAME");
-  return [cmd, model, format, output, linearize, reduce, variant]() -> int {
+  auto written_out = std::make_shared<bool>(false);
+  cmd->add_flag("--written-out", *written_out,
+                "Print the equations written out in q, as diff and the symbolic analyses take them, where a tree of "
+                "joints or a deep chain of frames would hold the recursion's quantities (not for ball or free joints)");
+  return [cmd, model, format, output, linearize, reduce, variant, written_out]() -> int {
     if (!cmd->parsed()) return -1;
-    return derive_and_write(*model, *format, *output, *linearize, *reduce, *variant);
+    return derive_and_write(*model, *format, *output, *linearize, *reduce, *variant, *written_out);
   };
 }
 

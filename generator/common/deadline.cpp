@@ -47,8 +47,8 @@ double resident_gigabytes() {
 void overgrown(const std::string& model, double limit, double resident) {
   std::string message = fmt::format(
       "eomgen: error: {}: the derivation grew past its memory limit of {:.3g} GB ({:.3g} GB resident) while forming {}: "
-      "its expressions grow too large\n  hint: simplify the model (fewer nested functions; frames with kinematics = "
-      "\"recursive\" or absolute angles for long chains), or raise the limit with --max-memory GB (0: none); nothing "
+      "its expressions grow too large\n  hint: simplify the model (fewer nested functions; frames with joints "
+      "or absolute angles for long chains), or raise the limit with --max-memory GB (0: none); nothing "
       "was written\n",
       model, limit, resident, stage.load());
   std::fputs(message.c_str(), stderr);
@@ -59,7 +59,7 @@ void overgrown(const std::string& model, double limit, double resident) {
 void expire(const std::string& model, double seconds) {
   std::string message = fmt::format(
       "eomgen: error: {}: the derivation ran past its limit of {:g} s while forming {}: its expressions grow too "
-      "large\n  hint: simplify the model (fewer nested functions; frames with kinematics = \"recursive\" or absolute "
+      "large\n  hint: simplify the model (fewer nested functions; frames with joints or absolute "
       "angles for long chains), or raise the limit with --max-seconds (0: none); nothing was written\n",
       model, seconds, stage.load());
   std::fputs(message.c_str(), stderr);

@@ -141,8 +141,9 @@ std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnos
     }
     if (!d.equations->intermediates.empty()) {
       diagnostics.error({path, 1, 1}, "model.kinematics",
-                        "the model's equations hold the quantities of recursive kinematics, which diff does not compare",
-                        "diff the model with kinematics = \"expanded\" (its equations are then written out in q)");
+                        "the model's equations hold the quantities of its ball or free joints' tree, which diff does not "
+                        "compare",
+                        "diff models whose frames can be written out in q: Euler or Cardan angles instead of a quaternion");
       return std::nullopt;
     }
     json = emit_json(*d.equations);

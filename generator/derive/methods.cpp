@@ -100,8 +100,8 @@ std::string method_refusal(const Model& model) {
                        "\"lagrange1\" (constraints with multipliers), \"appell\" (pseudo-velocities) or \"hamilton\"",
                        model.method);
   if (model.recursive_kinematics && model.method != "lagrange2" && model.method != "lagrange1" && !has_spherical_joints(model))
-    return fmt::format("recursive kinematics ([model] kinematics = \"recursive\") derives Lagrange's equations of the "
-                       "second kind or of the first kind only: use method = \"lagrange2\" or \"lagrange1\", or kinematics = \"expanded\" for method \"{}\"",
+    return fmt::format("frames derived link by link give Lagrange's equations of the second kind or of the first "
+                       "kind only, not method \"{}\": use method = \"lagrange2\" or \"lagrange1\"",
                        model.method);
   if (model.method == "hamilton" && !model.constraints.empty())
     return "Hamilton's canonical equations here need independent coordinates and no constraints: use method = "

@@ -101,11 +101,10 @@ void ModelBuilder::read_rolling(const ConstraintEntry& c) {
   if (m_.recursive_kinematics) {
     d_.error(c.body_where, c.key + ".rolls.body",
              fmt::format("'{}' rolls, whose contact conditions need its rotation written out in q, but the model takes "
-                         "recursive kinematics{}",
-                         c.body, f_.kinematics_where.line == 0 ? " (its frames carry joints)" : ""),
-             f_.kinematics_where.line == 0 ? "place the wheel's frames by rotations and origins instead of joints "
-                                             "(rot_z(psi), origin [\"x\", \"y\", \"0\"]), or add kinematics = \"expanded\""
-                                           : "use kinematics = \"expanded\", or leave kinematics out");
+                         "recursive kinematics (its frames carry joints)",
+                         c.body),
+             "place the wheel's frames by rotations and origins instead of joints (rot_z(psi), origin "
+             "[\"x\", \"y\", \"0\"])");
     return;
   }
   auto radius = parse(c.radius, allow_parameters, "a radius");

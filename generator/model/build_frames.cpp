@@ -44,8 +44,8 @@ void ModelBuilder::read_frames() {
     }
     if (moves_with_time(relative.matrix, origin, m_.symbols.time))
       d_.error(f.where, f.key, fmt::format("frame '{}' moves with time t itself", f.name),
-               "recursive kinematics takes frames placed by the coordinates alone: make the prescribed motion a "
-               "coordinate, or use kinematics = \"expanded\"");
+               "frames derived link by link (the model's ball or free joints need it) are placed by the coordinates "
+               "alone: make the prescribed motion a coordinate");
     if (reading_ == FrameReading::tree && !joint && !f.joint)
       if (auto links = frame_as_joints(relative, origin, m_.symbols)) {
         frames_.emplace(f.name, place_joint_links(f.name, link_of(f.parent), *links));
@@ -100,7 +100,7 @@ FramePlacement ModelBuilder::placement(const std::string& frame_name, const Vect
              "give the body frame = \"...\" and its centre in that frame's coordinates");
   else if (!frame_name.empty() && moves_with_time(relative.matrix, local, m_.symbols.time))
     d_.error(where, key, "with recursive kinematics a body in a frame moves with the coordinates alone, not with t",
-             "make the prescribed motion a coordinate, or use kinematics = \"expanded\"");
+             "make the prescribed motion a coordinate");
   p.frame = link_of(frame_name);
   p.local = local;
   p.sequence = relative.sequence;

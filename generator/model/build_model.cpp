@@ -28,12 +28,12 @@ Model ModelBuilder::build() {
   m_.name = f_.name;
   m_.title = f_.title;
   m_.method = f_.method;
-  // frames with joints, or read as joints, are a tree for the spatial recursions unless the file
-  // says otherwise or the equations are wanted written out
+  // frames with joints, or read as joints, are a tree for the spatial recursions, and deep frames
+  // that are no such tree are composed link by link, unless the equations are wanted written out
   bool joints = std::any_of(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) { return f.joint.has_value(); });
-  bool automatic = f_.kinematics_where.line == 0 && (f_.method == "lagrange2" || f_.method == "lagrange1");
-  m_.recursive_kinematics = f_.kinematics == "recursive" || (automatic && reading_ != FrameReading::written_out &&
-                                                              (joints || reading_ == FrameReading::tree));
+  bool lagrange = f_.method == "lagrange2" || f_.method == "lagrange1";
+  m_.recursive_kinematics = reading_ == FrameReading::composed ||
+                            (lagrange && reading_ != FrameReading::written_out && (joints || reading_ == FrameReading::tree));
   check_spherical_joints();
   m_.source = f_.path;
   check_header();
@@ -71,9 +71,7 @@ void ModelBuilder::check_spherical_joints() {
   else if (f_.method != "appell")
     d_.error(f_.method_where, "model.method", why + fmt::format(": method \"{}\" cannot take them", f_.method),
              "use method = \"appell\", or leave the method out");
-  if (f_.kinematics_where.line == 0) m_.recursive_kinematics = true;
-  else if (f_.kinematics != "recursive")
-    d_.error(f_.kinematics_where, "model.kinematics", why + ": they are derived over the tree", "leave kinematics out");
+  m_.recursive_kinematics = true;
 }
 
 std::optional<ex> ModelBuilder::parse(const ExpressionText& text, unsigned allowed, const char* context) {
@@ -92,10 +90,12 @@ void ModelBuilder::check_header() {
   if (std::find(methods.begin(), methods.end(), f_.method) == methods.end())
     d_.error(f_.method_where, "model.method", fmt::format("unknown method '{}'", f_.method),
              suggest(f_.method, methods, "methods"));
-  if (f_.kinematics != "expanded" && f_.kinematics != "recursive")
-    d_.error(f_.kinematics_where, "model.kinematics", fmt::format("unknown kinematics '{}'", f_.kinematics),
-             "use \"expanded\" (positions and rotations multiplied out) or \"recursive\" (frames composed link "
-             "by link, for long chains; the default when frames carry joints), or leave kinematics out");
+  if (f_.kinematics_where.line != 0)
+    d_.error(f_.kinematics_where, "model.kinematics",
+             "the key is retired: eomgen derives frames that carry or read as joints over the tree of joints, "
+             "chains of other frames 4 or more deep by composing them link by link, and the rest written out in q",
+             "remove the line; the analyses that need equations written out in q (derive --written-out and "
+             "--linearize, diff, stability --symbolic, derive --reduce) write them out themselves");
 }
 
 void ModelBuilder::declare(const std::string& name, SourceLocation where, const std::string& key,
@@ -233,11 +233,36 @@ void ModelBuilder::check_complete() {
              "add [[particles]], [[rigid_bodies]] or [energy] kinetic = \"...\"");
 }
 
+namespace {
+
+// Multiplied out, the derivation of a chain of frames grows about 20 times per frame from the
+// third on, composed link by link polynomially: tests/benchmarks/README.md, "The 3-D chain through
+// frames" (rods on universal joints, rot_z(a)*rot_x(b) per frame; `eomgen derive` multiplied out
+// 0.016, 0.064, 0.72 and 15.5 s for 1 to 4 frames, composed 0.008 to 0.036 s). A chain of frames
+// that is no tree of joints is composed from the depth where writing it out takes seconds; the
+// shallower ones stay written out, as they were before eomgen chose (their rhs not compared).
+constexpr int composed_from_depth = 4;
+
+// the most frames that the coordinates move on one path from the inertial frame
+int moving_depth(const Model& model) {
+  std::vector<int> depth;
+  int deepest = 0;
+  for (const FrameLink& l : model.frame_links) {
+    bool moves = moves_with(l.relative_rotation, model.symbols) ||
+                 moves_with(l.relative_origin[0] + l.relative_origin[1] + l.relative_origin[2], model.symbols);
+    depth.push_back((l.parent < 0 ? 0 : depth[std::size_t(l.parent)]) + (moves ? 1 : 0));
+    deepest = std::max(deepest, depth.back());
+  }
+  return deepest;
+}
+
+}  // namespace
+
 // Frames and bodies that the coordinates turn and slide are a tree of joints when each of them has
 // a joint or reads as joints (model/frame_joints.hpp) and the bodies then sit still in the links:
-// the model is built as that tree, which the spatial algorithms derive, and otherwise as written
-// (an explicit kinematics keeps the frames as written: "recursive" is then the frame recursion of
-// kinematics/recursive_kinematics.hpp). A wheel that rolls stays as written: its contact
+// the model is built as that tree, which the spatial algorithms derive. Otherwise a chain of
+// frames composed_from_depth deep is composed link by link (kinematics/recursive_kinematics.hpp),
+// and shallower ones are written out in q. A wheel that rolls stays as written: its contact
 // conditions are derived from its rotation written out in q (read_rolling refuses it otherwise).
 // `written_out` multiplies out every tree but one of ball or free joints.
 Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_out) {
@@ -252,6 +277,11 @@ Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_
       Diagnostics trial;
       Model tree = ModelBuilder(file, trial, Reading::tree).build();
       if (trial.empty() && tree.recursive_kinematics && !why_not_a_joint_tree(tree)) return tree;
+      if (file.method == "lagrange2" || file.method == "lagrange1") {
+        Diagnostics composing;
+        Model composed = ModelBuilder(file, composing, Reading::composed).build();
+        if (composing.empty() && moving_depth(composed) >= composed_from_depth) return composed;
+      }
     } catch (const std::exception&) {
     }
   }

@@ -25,7 +25,7 @@ struct Intermediate {
   std::string cpp_name;
 };
 
-/// With recursive kinematics ([model] kinematics = "recursive"), a frame in its parent:
+/// With recursive kinematics (joints, or frames composed link by link), a frame in its parent:
 /// rotation and origin relative to the parent (in q), and the symbols (or constants) of its
 /// rotation to inertial components and its inertial origin.
 struct FrameLink {

@@ -26,11 +26,13 @@ bool moves_with(const GiNaC::matrix& R, const Symbols& s);
 
 class ModelBuilder {
  public:
-  /// How the frames that the coordinates move are read when the file leaves kinematics out:
-  /// `as_written`, a tree of joints when they carry joints; `tree`, also those that turn and slide
-  /// by the coordinates (model/frame_joints.hpp; build_model() tries it first); `written_out`,
-  /// every position and rotation multiplied out in q, but for ball and free joints
-  enum class FrameReading { as_written, tree, written_out };
+  /// How the frames that the coordinates move are read (build_model() chooses): `as_written`, a
+  /// tree of joints when they carry joints, multiplied out in q otherwise; `tree`, also those that
+  /// turn and slide by the coordinates (model/frame_joints.hpp; tried first); `composed`, frames
+  /// that are no tree of joints composed link by link (kinematics/recursive_kinematics.hpp; tried
+  /// next for deep chains); `written_out`, every position and rotation multiplied out in q, but
+  /// for ball and free joints
+  enum class FrameReading { as_written, tree, composed, written_out };
   ModelBuilder(const ModelFile& file, Diagnostics& d, FrameReading reading = FrameReading::as_written)
       : f_(file), d_(d), reading_(reading) {}
   Model build();

@@ -1,4 +1,5 @@
-/// @file Frames for recursive kinematics ([model] kinematics = "recursive"): each frame's
+/// @file Frames for recursive kinematics (a tree of joints, or a deep chain of frames composed link
+/// by link: build_model() chooses): each frame's
 /// rotation to inertial components and its inertial origin are quantities of their own,
 /// R = R_parent·R_rel and o = o_parent + R_parent·o_rel (Hiller §3.9), instead of being
 /// multiplied out in the coordinates. Multiplied out, the entries of a chain of n rotations

@@ -214,11 +214,9 @@ struct ModelFile {
   /// still be built to report the mistakes in names too (but not derived).
   bool only_stand_in_mistakes = false;
   std::string name, title, method = "lagrange2";
-  /// "expanded": every position and rotation multiplied out in q; "recursive": the frames'
-  /// rotations, origins and motions are quantities of their own, composed link by link
-  std::string kinematics = "expanded";
-  /// The retired key forward_dynamics, when a file still has it (refused with a hint: eomgen
-  /// chooses how the rhs solves for q'', model.hpp's ForwardDynamics)
+  /// The retired keys kinematics and forward_dynamics, when a file still has them (refused with a
+  /// hint: eomgen chooses how frames are derived, build_model(), and how the rhs solves for q'',
+  /// model.hpp's ForwardDynamics)
   SourceLocation name_where, method_where, kinematics_where, forward_dynamics_where;
   std::vector<ParameterEntry> parameters;
   std::vector<CoordinateEntry> coordinates;

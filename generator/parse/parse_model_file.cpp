@@ -39,10 +39,7 @@ void read_model_section(Reader& r, const toml::node& node, ModelFile& m) {
     m.method_where = r.at(*n);
     r.string(*n, "model.method", m.method);
   }
-  if (const toml::node* n = t->get("kinematics")) {
-    m.kinematics_where = r.at(*n);
-    r.string(*n, "model.kinematics", m.kinematics);
-  }
+  if (const toml::node* n = t->get("kinematics")) m.kinematics_where = r.at(*n);
   if (const toml::node* n = t->get("forward_dynamics")) m.forward_dynamics_where = r.at(*n);
 }
 

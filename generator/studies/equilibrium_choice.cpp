@@ -46,8 +46,8 @@ std::optional<int> stability_refusal(const LoadedProblem& loaded, const std::str
   }
   if (symbolic && !loaded.equations.intermediates.empty()) {
     std::cerr << fmt::format("eomgen: error: {}: symbolic stability conditions differentiate equations written out in q; "
-                             "those of recursive kinematics hold the frames' quantities\n  hint: use kinematics = "
-                             "\"expanded\", or leave out --symbolic (the numeric analysis works from the generated code)\n",
+                             "those of ball and free joints hold the frames' quantities\n  hint: leave out --symbolic (the numeric analysis "
+                             "works from the generated code)\n",
                              model);
     return exit_user_error;
   }

@@ -1,17 +1,17 @@
 #!/usr/bin/env python3
 """The 3-D chain of rods with relative joint angles placed through frames: how
 eomgen's derivation grows with the chain's length, with the positions and
-rotations multiplied out (kinematics = "expanded") and composed link by link
-(kinematics = "recursive"), against SymPy's KanesMethod of the same chain, in
-one run. Each link turns about its parent's z axis by a_i, then about its own
+rotations multiplied out (`eomgen derive --written-out`) and as eomgen derives
+it (its frames read as joints: the tree of joints), against SymPy's KanesMethod
+of the same chain, in one run. Each link turns about its parent's z axis by a_i, then about its own
 x axis by b_i (a universal joint), carries a rod of mass m and length l hanging
 along its -z axis, and the next joint sits at the rod's end; gravity along -z
 and a horizontal force F at the tip. The chain is that of
-tests/generator/model/frames_test.cpp, which checks the two kinematics agree.
+tests/generator/model/frames_test.cpp, which checks the derivations agree.
 
 Every size runs in a fresh process, stopped after LIMIT seconds. Printed: the
 seconds of `eomgen derive` and `eomgen generate` (derive, CSE and the header)
-and of KanesMethod forming M and f, the ratio Kane / recursive generate, and
+and of KanesMethod forming M and f, the ratio Kane / tree generate, and
 the header's size. Writes DIR/frames.md.
 
 Usage: frames_benchmark.py EOMGEN [--quick] [--out DIR]   (exit 77 without SymPy)
@@ -25,8 +25,8 @@ import time
 LIMIT = 120.0
 
 
-def chain_model(n, kinematics):
-    lines = ['[model]', f'name = "frames{n}"', f'kinematics = "{kinematics}"', '[parameters]',
+def chain_model(n):
+    lines = ['[model]', f'name = "frames{n}"', '[parameters]',
              'm = 1.2', 'l = 0.8', 'g = 9.81', 'F = 0.7', '[gravity]', 'acceleration = ["0", "0", "-g"]',
              '[coordinates]']
     lines += [f"a{i} = {0.1 * i:.1f}\nb{i} = {0.3 - 0.05 * i:.2f}" for i in range(1, n + 1)]
@@ -113,23 +113,21 @@ def main():
     out_dir = args[args.index("--out") + 1] if "--out" in args else None
     quick = "--quick" in args
     sizes = [1, 2] if quick else [1, 2, 3, 4, 6, 8, 12, 16]
-    header = ("| links | coordinates | expanded derive [s] | recursive derive [s] | recursive generate [s] | "
-              "header [KB] | SymPy Kane [s] | Kane / recursive generate |\n|---|---|---|---|---|---|---|---|")
+    header = ("| links | coordinates | written-out derive [s] | tree derive [s] | tree generate [s] | "
+              "header [KB] | SymPy Kane [s] | Kane / tree generate |\n|---|---|---|---|---|---|---|---|")
     rows = [header]
     print(header, flush=True)
     expanded_stopped = kane_stopped = False
     with tempfile.TemporaryDirectory() as work:
         for n in sizes:
-            paths = {}
-            for kinematics in ("expanded", "recursive"):
-                paths[kinematics] = os.path.join(work, f"{kinematics}{n}.toml")
-                with open(paths[kinematics], "w") as f:
-                    f.write(chain_model(n, kinematics))
-            expanded = None if expanded_stopped else timed([eomgen, "derive", paths["expanded"]])
+            path = os.path.join(work, f"frames{n}.toml")
+            with open(path, "w") as f:
+                f.write(chain_model(n))
+            expanded = None if expanded_stopped else timed([eomgen, "derive", "--written-out", path])
             expanded_stopped = expanded is None
-            recursive = timed([eomgen, "derive", paths["recursive"]])
+            recursive = timed([eomgen, "derive", path])
             header_path = os.path.join(work, f"frames{n}.hpp")
-            generate = timed([eomgen, "generate", paths["recursive"], "--header", header_path])
+            generate = timed([eomgen, "generate", path, "--header", header_path])
             size = os.path.getsize(header_path) / 1000 if generate is not None else None
             kane = None if kane_stopped else kane_seconds(n)
             kane_stopped = kane is None

@@ -31,10 +31,10 @@ std::map<std::string, double> random_point(const Equations& e, std::mt19937& ran
   return values;
 }
 
-void expect_expanded_equations(const std::string& tree_text, const std::string& expanded_text, unsigned n) {
+void expect_expanded_equations(const std::string& tree_text, unsigned n) {
   Model model = built(tree_text);
   ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
-  Equations recursive = derive_text(tree_text), expanded = derive_text(expanded_text);
+  Equations recursive = derive_text(tree_text), expanded = derive_text(tree_text, "model.toml", model_written_out());
   ASSERT_EQ(recursive.inverse_dynamics.size(), n);
   std::mt19937 random(5);
   for (int point = 0; point < 10; ++point) {
@@ -58,8 +58,8 @@ void expect_expanded_equations(const std::string& tree_text, const std::string& 
   }
 }
 
-void expect_expanded_derivatives(const std::string& tree_text, const std::string& expanded_text, unsigned n) {
-  Equations recursive = derive_text(tree_text), expanded = derive_text(expanded_text);
+void expect_expanded_derivatives(const std::string& tree_text, unsigned n) {
+  Equations recursive = derive_text(tree_text), expanded = derive_text(tree_text, "model.toml", model_written_out());
   ASSERT_TRUE(recursive.bodies_gradient);
   const BodiesGradient& bodies = *recursive.bodies_gradient;
   ASSERT_EQ(bodies.applied_inverse_dynamics.size(), n);

@@ -28,9 +28,13 @@ Equations derive_model(const std::string& name) {
   return *d.equations;
 }
 
-Equations derive_text(const std::string& text, const std::string& path, ForwardDynamics form) {
+ModelChoice solved_by(ForwardDynamics form) {
   ModelChoice choice;
   choice.forward_dynamics = form;
+  return choice;
+}
+
+Equations derive_text(const std::string& text, const std::string& path, const ModelChoice& choice) {
   Derivation d = derive_model_text(text, path, choice);
   EXPECT_TRUE(d.diagnostics.empty()) << d.diagnostics.format() << "\n" << text;
   if (!d.equations) throw std::runtime_error(path + " did not derive");
@@ -157,12 +161,6 @@ class ScratchDirectories {
 std::string temporary_directory() {
   static ScratchDirectories directories;
   return directories.make();
-}
-
-std::string with_kinematics(std::string model_text, const std::string& kinematics) {
-  std::size_t at = model_text.find("KINEMATICS");
-  if (at == std::string::npos) throw std::invalid_argument("with_kinematics: the model text has no KINEMATICS");
-  return model_text.replace(at, 10, kinematics);
 }
 
 std::string write_file(const std::string& file_name, const std::string& text) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "derive/equations.hpp"
+#include "pipeline.hpp"
 #include "parse/json_reader.hpp"
 
 namespace eomgen::test {
@@ -19,10 +20,11 @@ std::string model_path(const std::string& name);
 
 /// Derives models/NAME.toml; fails the test on any diagnostic.
 Equations derive_model(const std::string& name);
-/// Derives a model file's text (`path` names it in diagnostics), its rhs solving for q'' in `form`
-/// (eomgen's choice unless one is asked for); fails the test on any diagnostic.
-Equations derive_text(const std::string& text, const std::string& path = "model.toml",
-                      ForwardDynamics form = ForwardDynamics::chosen);
+/// Derives a model file's text (`path` names it in diagnostics) as `choice` asks (model_written_out(),
+/// solved_by()); fails the test on any diagnostic.
+Equations derive_text(const std::string& text, const std::string& path = "model.toml", const ModelChoice& choice = {});
+/// The file's own model, its rhs solving for q'' in `form`.
+ModelChoice solved_by(ForwardDynamics form);
 /// The model's parameter called `name`.
 GiNaC::ex parameter_named(const Symbols& s, const std::string& name);
 
@@ -57,9 +59,6 @@ std::string read_file(const std::string& path);
 /// EOMGEN_KEEP_TEST_FILES is set.
 std::string temporary_directory();
 
-/// A model text with its placeholder KINEMATICS replaced: the tests that compare the recursive
-/// kinematics with the expanded derivation write one model for both.
-std::string with_kinematics(std::string model_text, const std::string& kinematics);
 
 /// Writes `text` as the file FILE_NAME (a robot's `arm.urdf`) into a fresh temporary directory; its path.
 std::string write_file(const std::string& file_name, const std::string& text);

@@ -34,7 +34,7 @@ std::string planar_chain(int n) {
 
 TEST(ParticleTreeTerms, PlanarChainHasTheClosedFormMAndF) {
   for (int n : {2, 5, 9}) {
-    Equations e = test::derive_text(planar_chain(n), "model.toml", ForwardDynamics::mass_matrix);
+    Equations e = test::derive_text(planar_chain(n), "model.toml", test::solved_by(ForwardDynamics::mass_matrix));
     const Symbols& s = e.symbols;
     auto mass_beyond = [&](int j) {
       ex m = 0;
@@ -98,7 +98,7 @@ mass = "m3"
 position = ["x + l*sin(b) + l*sin(c)", "l*cos(c)", "-l*cos(b)"]
 [gravity]
 acceleration = ["0", "0", "-g"]
-)toml", "model.toml", ForwardDynamics::articulated);
+)toml", "model.toml", test::solved_by(ForwardDynamics::articulated));
   const Symbols& s = e.symbols;
   const std::vector<std::string> masses{"m0", "m1", "m2", "m3"};
   ex l = test::parameter_named(s, "l"), g = test::parameter_named(s, "g");

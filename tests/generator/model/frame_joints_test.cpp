@@ -29,7 +29,6 @@ using GiNaC::ex;
 
 const char* turns = R"toml([model]
 name = "turns"
-KINEMATICS
 
 [parameters]
 m = 1.2
@@ -103,7 +102,6 @@ dissipation = "0.3*der(a)^2/2"
 // a rotor that turns by r in the boom and a bead that slides by 0.3 w in the trolley
 const char* gantry = R"toml([model]
 name = "gantry"
-KINEMATICS
 
 [parameters]
 m = 1.2
@@ -192,7 +190,6 @@ dissipation = "0.2*der(x)^2/2"
 // nut's coordinate moves two joints, a slide and a turn
 const char* screw = R"toml([model]
 name = "screw"
-KINEMATICS
 
 [parameters]
 p = 0.05
@@ -256,8 +253,6 @@ position = ["0", "0", "-l"]
 acceleration = ["0", "0", "-g"]
 )toml";
 
-std::string automatic(const std::string& text) { return with_kinematics(text, ""); }
-std::string expanded(const std::string& text) { return with_kinematics(text, "kinematics = \"expanded\""); }
 
 const FrameLink& link_named(const Model& m, const std::string& name) {
   for (const FrameLink& l : m.frame_links)
@@ -275,7 +270,7 @@ bool same_matrix(const GiNaC::matrix& a, const GiNaC::matrix& b) {
 }
 
 TEST(FrameJoints, ProductsOfTurnsAreLinksWithJoints) {
-  Model m = built(automatic(turns));
+  Model m = built(turns);
   ASSERT_TRUE(m.recursive_kinematics);
   ASSERT_FALSE(why_not_a_joint_tree(m)) << *why_not_a_joint_tree(m);
   std::vector<std::string> names;
@@ -308,7 +303,7 @@ TEST(FrameJoints, ProductsOfTurnsAreLinksWithJoints) {
 // an origin linear in the coordinates: a slide per coordinate, massless but the last, then the
 // turns; and bodies moved in their frames
 TEST(FrameJoints, MovingOriginsAreSlides) {
-  Model m = built(automatic(gantry));
+  Model m = built(gantry);
   ASSERT_FALSE(why_not_a_joint_tree(m)) << *why_not_a_joint_tree(m);
   std::vector<std::string> names;
   for (const FrameLink& l : m.frame_links) names.push_back(l.name);
@@ -341,8 +336,8 @@ TEST(FrameJoints, MovingOriginsAreSlides) {
 }
 
 // where the links place a point (the frames' own placement, which outputs and constraints use)
-void expect_expanded_outputs(const std::string& tree_text, const std::string& expanded_text) {
-  Equations tree = derive_text(tree_text), written = derive_text(expanded_text);
+void expect_expanded_outputs(const std::string& text) {
+  Equations tree = derive_text(text), written = derive_text(text, "model.toml", model_written_out());
   ASSERT_EQ(tree.outputs.size(), 3u);
   std::mt19937 random(3);
   for (int point = 0; point < 5; ++point) {
@@ -356,17 +351,17 @@ void expect_expanded_outputs(const std::string& tree_text, const std::string& ex
 }
 
 TEST(FrameJoints, TheTreeGivesTheExpandedEquations) {
-  expect_expanded_outputs(automatic(turns), expanded(turns));
-  expect_expanded_outputs(automatic(gantry), expanded(gantry));
-  expect_expanded_equations(automatic(turns), expanded(turns), 4);
-  expect_expanded_equations(automatic(gantry), expanded(gantry), 7);
-  expect_expanded_equations(automatic(screw), expanded(screw), 2);
+  expect_expanded_outputs(turns);
+  expect_expanded_outputs(gantry);
+  expect_expanded_equations(turns, 4);
+  expect_expanded_equations(gantry, 7);
+  expect_expanded_equations(screw, 2);
 }
 
 TEST(FrameJoints, TheTreeGivesTheExpandedDerivatives) {
-  expect_expanded_derivatives(automatic(turns), expanded(turns), 4);
-  expect_expanded_derivatives(automatic(gantry), expanded(gantry), 7);
-  expect_expanded_derivatives(automatic(screw), expanded(screw), 2);
+  expect_expanded_derivatives(turns, 4);
+  expect_expanded_derivatives(gantry, 7);
+  expect_expanded_derivatives(screw, 2);
 }
 
 // The 7-joint arm of the tree benchmark written with rotations instead of joints, as a user writes
@@ -387,7 +382,7 @@ TEST(FrameJoints, AnArmWrittenWithRotationsIsTheArmWrittenWithJoints) {
 // along a direction of parameters would need its length, √(2 l²) here, and its sign)
 TEST(FrameJoints, WhatIsNotAJointStaysWrittenOut) {
   auto changed = [](const std::string& from, const std::string& to) {
-    std::string text = automatic(turns);
+    std::string text = turns;
     text.replace(text.find(from), from.size(), to);
     return text;
   };
@@ -405,7 +400,7 @@ TEST(FrameJoints, WhatIsNotAJointStaysWrittenOut) {
 // Routh's reduction, diff and another method work on equations written out in q: a tree, read
 // from turns or written with joints, is derived for them written out
 TEST(FrameJoints, RouthAndDiffTakeTheModelWrittenOut) {
-  std::string path = write_model("turns", automatic(turns));
+  std::string path = write_model("turns", turns);
   Derivation tree = derive_model_file(path);
   ASSERT_TRUE(tree.diagnostics.empty()) << tree.diagnostics.format();
   EXPECT_FALSE(tree.equations->intermediates.empty()) << "derived as a tree";

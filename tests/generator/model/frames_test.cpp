@@ -12,7 +12,10 @@
 
 #include <fmt/format.h>
 
+#include "model/model_builder.hpp"
 #include "pipeline.hpp"
+#include "spatial/joint_tree_dynamics.hpp"
+#include "support/expanded_oracle.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -246,17 +249,30 @@ tilt = "R.zz"
   EXPECT_NE(diagnostics_of(not_orthogonal).find("not orthogonal"), std::string::npos) << diagnostics_of(not_orthogonal);
 }
 
-std::string recursive(const std::string& text) {
-  std::string marker = "name = \"chain3d\"\n";
-  std::string out = text;
-  out.insert(out.find(marker) + marker.size(), "kinematics = \"recursive\"\n");
-  return out;
+// The chain's frames composed link by link (kinematics/recursive_kinematics.hpp), as build_model()
+// derives a deep chain of frames that is no tree of joints: these frames read as joints, which
+// build_model() would take as a tree, so the builder is told. The diagnostics of building and
+// deriving it, and the equations when there are none.
+std::string composed_diagnostics(const std::string& text, std::optional<Equations>* equations = nullptr) {
+  Diagnostics d;
+  ModelFile file = parse_model_text(text, "bad.toml", d);
+  Model model = ModelBuilder(file, d, ModelBuilder::FrameReading::composed).build();
+  if (!d.empty()) return d.format();
+  std::optional<Equations> e = derive_built_model(model, {"bad.toml", 1, 1}, d);
+  if (equations) *equations = std::move(e);
+  return d.format();
+}
+Equations derive_composed(const std::string& text) {
+  std::optional<Equations> e;
+  std::string diagnostics = composed_diagnostics(text, &e);
+  if (!e) throw std::runtime_error(diagnostics);
+  return *e;
 }
 
 // the point with the intermediates of recursive kinematics added, each from its definition, in order
 TEST(Frames, RecursiveKinematicsGivesTheEquationsOfTheChainWrittenOut) {
   for (int n : {1, 2, 3}) {
-    Equations framed = test::derive_text(recursive(through_frames(n))), full = test::derive_text(written_out(n));
+    Equations framed = derive_composed(through_frames(n)), full = test::derive_text(written_out(n));
     ASSERT_FALSE(framed.intermediates.empty());
     std::mt19937 random(11u + unsigned(n));
     std::uniform_real_distribution<double> angle(-2, 2), rate(-1.5, 1.5), scale(0.5, 2);
@@ -299,8 +315,8 @@ std::size_t derived_size(const Equations& e) {
 // derivation took 0.13 s at n = 2, 2.1 s at 3 and 89 s at 4); recursively, M has n² entries of
 // O(n) products: doubling the chain multiplies the size by about 2³, far from 4⁴ = 256.
 TEST(Frames, RecursiveKinematicsGrowsPolynomiallyWithTheChain) {
-  std::size_t four = derived_size(test::derive_text(recursive(through_frames(4))));
-  std::size_t eight = derived_size(test::derive_text(recursive(through_frames(8))));
+  std::size_t four = derived_size(derive_composed(through_frames(4)));
+  std::size_t eight = derived_size(derive_composed(through_frames(8)));
   double growth = double(eight) / double(four);
   EXPECT_GT(growth, 2.0);
   EXPECT_LT(growth, 10.0) << four << " characters at n = 4, " << eight << " at n = 8";
@@ -348,26 +364,66 @@ inertia = ["0.01", "0.02", "0.03"]
 }
 
 TEST(Frames, RecursiveKinematicsMisusesAreLocated) {
-  std::string chain = recursive(through_frames(2));
+  std::string chain = through_frames(2);
   std::string appell = chain;
-  appell.insert(appell.find("kinematics"), "method = \"appell\"\n");
-  EXPECT_NE(diagnostics_of(appell).find("derives Lagrange's equations of the second kind or of the first kind only"),
+  appell.insert(appell.find("name = \"chain3d\""), "method = \"appell\"\n");
+  EXPECT_NE(composed_diagnostics(appell).find("give Lagrange's equations of the second kind or of the first kind only"),
             std::string::npos)
-      << diagnostics_of(appell);
+      << composed_diagnostics(appell);
   std::string moving = chain;
   moving.replace(moving.find("rot_z(a1)"), 9, "rot_z(a1 + t)");
-  EXPECT_NE(diagnostics_of(moving).find("frame 'link1' moves with time t itself"), std::string::npos) << diagnostics_of(moving);
+  EXPECT_NE(composed_diagnostics(moving).find("frame 'link1' moves with time t itself"), std::string::npos)
+      << composed_diagnostics(moving);
+  EXPECT_EQ(diagnostics_of(moving), "") << "build_model() writes it out in q";
   std::string through_point = chain + "\n[[particles]]\nname = \"bob\"\nmass = \"m\"\nposition = \"tip\"\n";
-  EXPECT_NE(diagnostics_of(through_point).find("a body is placed in a frame, not through a point of one"), std::string::npos)
-      << diagnostics_of(through_point);
+  EXPECT_NE(composed_diagnostics(through_point).find("a body is placed in a frame, not through a point of one"),
+            std::string::npos)
+      << composed_diagnostics(through_point);
   std::string sliding = chain;
   const std::string centre = "[\"0\", \"0\", \"-l/2\"]";
   sliding.replace(sliding.find(centre), centre.size(), "[\"t\", \"0\", \"-l/2\"]");
-  EXPECT_NE(diagnostics_of(sliding).find("a body in a frame moves with the coordinates alone, not with t"), std::string::npos)
-      << diagnostics_of(sliding);
-  std::string unknown = chain;
-  unknown.replace(unknown.find("\"recursive\""), 11, "\"recursiv\"");
-  EXPECT_NE(diagnostics_of(unknown).find("unknown kinematics 'recursiv'"), std::string::npos) << diagnostics_of(unknown);
+  EXPECT_NE(composed_diagnostics(sliding).find("a body in a frame moves with the coordinates alone, not with t"),
+            std::string::npos)
+      << composed_diagnostics(sliding);
+}
+
+// A chain of frames that is no tree of joints (each frame swings about y, and its origin slides
+// out as it swings, which no joint does) is composed link by link from 4 moving frames on, the
+// equations of the same model written out in q; a shorter one is written out
+TEST(Frames, DeepChainsThatAreNoTreeOfJointsAreComposed) {
+  auto telescoping = [](int n) {
+    std::string text = std::string(header) + "\n[coordinates]\n";
+    for (int i = 1; i <= n; ++i) text += fmt::format("a{} = 0.{}\n", i, i);
+    for (int i = 1; i <= n; ++i) {
+      text += fmt::format("\n[[frames]]\nname = \"link{}\"\nrotation = \"rot_y(a{})\"\n", i, i);
+      if (i > 1) text += fmt::format("parent = \"link{}\"\norigin = [\"0\", \"0\", \"-l*(1 + sin(a{})/5)\"]\n", i - 1, i);
+    }
+    for (int i = 1; i <= n; ++i) text += rod(i, fmt::format("frame = \"link{}\"\ncenter = [\"0\", \"0\", \"-l/2\"]", i));
+    return text;
+  };
+  EXPECT_FALSE(test::built(telescoping(3)).recursive_kinematics);
+  EXPECT_TRUE(test::built(through_frames(3)).recursive_kinematics) << "its frames read as joints";
+  Model four = test::built(telescoping(4));
+  ASSERT_TRUE(four.recursive_kinematics);
+  EXPECT_TRUE(why_not_a_joint_tree(four)) << "composed, not a tree of joints";
+  Equations composed = test::derive_text(telescoping(4)), full = test::derive_text(telescoping(4), "model.toml", model_written_out());
+  ASSERT_FALSE(composed.intermediates.empty());
+  ASSERT_TRUE(full.intermediates.empty());
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> angle(-2, 2), rate(-1.5, 1.5);
+  for (int point = 0; point < 4; ++point) {
+    std::map<std::string, double> values{{"t", 0.0}, {"m", 1.2}, {"l", 0.8}, {"g", 9.81}, {"F", 0.7}};
+    for (const std::string& q : composed.symbols.coordinate_names) values[q] = angle(random), values["der(" + q + ")"] = rate(random);
+    GiNaC::exmap at = point_by_name(composed, values), written = point_by_name(full, values);
+    for (unsigned j = 0; j < 4; ++j) {
+      double f = value_at(full.forcing[j], written);
+      EXPECT_NEAR(value_at(composed.forcing[j], at), f, 1e-11 * std::max(1.0, std::abs(f))) << "f[" << j << "]";
+      for (unsigned k = 0; k < 4; ++k) {
+        double M = value_at(full.mass_matrix(j, k), written);
+        EXPECT_NEAR(value_at(composed.mass_matrix(j, k), at), M, 1e-11 * std::max(1.0, std::abs(M))) << "M[" << j << "][" << k << "]";
+      }
+    }
+  }
 }
 
 // a shape's rotation (its axes in its body's, after a capsule's axis) and the ellipsoid reach the

@@ -23,7 +23,6 @@ using GiNaC::ex;
 
 const char* one_joint_model = R"toml([model]
 name = "joint"
-kinematics = "KINEMATICS"
 
 [parameters]
 m = 1.3
@@ -39,10 +38,17 @@ q = 0.4
 acceleration = ["0", "0", "-g"]
 )toml";
 
-std::string rotor(const std::string& kinematics, const std::string& frame) {
-  return with_kinematics(one_joint_model, kinematics) + "\n[[frames]]\nname = \"arm\"\n" + frame +
+std::string rotor(const std::string& frame) {
+  return one_joint_model + std::string("\n[[frames]]\nname = \"arm\"\n") + frame +
          "\n\n[[rigid_bodies]]\nname = \"rotor\"\nmass = \"m\"\nframe = \"arm\"\ncenter = [\"0.3\", \"-0.1\", \"0.2\"]\n"
          "inertia = [\"A\", \"B\", \"C\"]\n";
+}
+
+// the two derivations of a model: "written out" in q, or as eomgen chooses ("tree": the frames
+// read as joints)
+const char* const derivations[] = {"written out", "tree"};
+Equations derive_as(const std::string& derivation, const std::string& text) {
+  return derive_text(text, "model.toml", model_written_out(derivation == "written out"));
 }
 
 // random values by name: parameters, coordinates and their rates
@@ -84,10 +90,10 @@ void expect_closed_forms(const Equations& e, const std::string& mass, const std:
 }
 
 TEST(Joints, RevoluteAboutACoordinateAxisIsTheElementaryRotation) {
-  for (const char* kinematics : {"expanded", "recursive"}) {
-    Equations joint = derive_text(rotor(kinematics, "rotation = \"rot_x(0.5)\"\njoint = { type = \"revolute\", axis = [\"0\", \"-2\", \"0\"], coordinate = \"q\" }"));
-    Equations product = derive_text(rotor(kinematics, "rotation = \"rot_x(0.5)*rot_y(-q)\""));
-    same_equations(joint, product, kinematics);
+  for (const char* derivation : derivations) {
+    Equations joint = derive_as(derivation, rotor("rotation = \"rot_x(0.5)\"\njoint = { type = \"revolute\", axis = [\"0\", \"-2\", \"0\"], coordinate = \"q\" }"));
+    Equations product = derive_as(derivation, rotor("rotation = \"rot_x(0.5)*rot_y(-q)\""));
+    same_equations(joint, product, derivation);
   }
 }
 
@@ -98,41 +104,41 @@ TEST(Joints, RevoluteAboutAnObliqueAxisThroughAnAnchorIsTheOneAxisRotor) {
   // The centre's height: z = a_z + (R_e(q)·d)_z with R_e by Rodrigues' formula:
   // R·d = cos q·d + sin q·e × d + (1 − cos q)(e·d)e, e·d = 0.2/3,
   // so z = −0.1 + 0.3 cos q − 0.7/3 sin q + (1 − cos q)·0.4/9, and f = −m g dz/dq.
-  for (const char* kinematics : {"expanded", "recursive"}) {
-    Equations e = derive_text(rotor(kinematics,
+  for (const char* derivation : derivations) {
+    Equations e = derive_as(derivation, rotor(
         "joint = { type = \"revolute\", axis = [\"1\", \"2\", \"2\"], anchor = [\"0.1\", \"0.2\", \"-0.1\"], coordinate = \"q\" }"));
-    expect_closed_forms(e, "(A + 4*B + 4*C)/9 + m*1.94/9", "m*g*(0.3*sin(q) + 0.7/3*cos(q) - 0.4/9*sin(q))", kinematics);
+    expect_closed_forms(e, "(A + 4*B + 4*C)/9 + m*1.94/9", "m*g*(0.3*sin(q) + 0.7/3*cos(q) - 0.4/9*sin(q))", derivation);
   }
 }
 
 TEST(Joints, PrismaticSlidesAlongItsUnitAxis) {
-  for (const char* kinematics : {"expanded", "recursive"}) {
+  for (const char* derivation : derivations) {
     // along (0, 3, 4)/5 in a frame turned by rot_x(0.5): height = 0.2 + q·(sin 0.5·3 + cos 0.5·4)/5
-    Equations e = derive_text(rotor(kinematics,
+    Equations e = derive_as(derivation, rotor(
         "rotation = \"rot_x(0.5)\"\njoint = { type = \"prismatic\", axis = [\"0\", \"3\", \"4\"], coordinate = \"q\" }"));
-    expect_closed_forms(e, "m", "-m*g*(3*sin(0.5) + 4*cos(0.5))/5", kinematics);
+    expect_closed_forms(e, "m", "-m*g*(3*sin(0.5) + 4*cos(0.5))/5", derivation);
   }
 }
 
 // a joint that follows q by m·q + c (URDF's mimic) is the rotor turned by that angle: with the
 // oblique rotor above, angle θ = −2.5 q + 0.3 gives M = 6.25·M_θ and f = −2.5·f_θ(θ)
 TEST(Joints, AJointThatFollowsACoordinateTurnsByItsMultipleAndOffset) {
-  for (const char* kinematics : {"expanded", "recursive"}) {
-    Equations e = derive_text(rotor(kinematics,
+  for (const char* derivation : derivations) {
+    Equations e = derive_as(derivation, rotor(
         "joint = { type = \"revolute\", axis = [\"1\", \"2\", \"2\"], anchor = [\"0.1\", \"0.2\", \"-0.1\"], "
         "coordinate = \"q\", multiplier = -2.5, offset = \"0.3\" }"));
     expect_closed_forms(e, "6.25*((A + 4*B + 4*C)/9 + m*1.94/9)",
-                        "-2.5*m*g*(0.3*sin(0.3 - 2.5*q) + 0.7/3*cos(0.3 - 2.5*q) - 0.4/9*sin(0.3 - 2.5*q))", kinematics);
-    Equations slide = derive_text(rotor(kinematics,
+                        "-2.5*m*g*(0.3*sin(0.3 - 2.5*q) + 0.7/3*cos(0.3 - 2.5*q) - 0.4/9*sin(0.3 - 2.5*q))", derivation);
+    Equations slide = derive_as(derivation, rotor(
         "rotation = \"rot_x(0.5)\"\njoint = { type = \"prismatic\", axis = [\"0\", \"3\", \"4\"], coordinate = \"q\", "
         "multiplier = \"B\", offset = -1 }"));
-    expect_closed_forms(slide, "m*B^2", "-B*m*g*(3*sin(0.5) + 4*cos(0.5))/5", kinematics);
+    expect_closed_forms(slide, "m*B^2", "-B*m*g*(3*sin(0.5) + 4*cos(0.5))/5", derivation);
   }
 }
 
 TEST(Joints, FixedJointKeepsThePlacement) {
-  Equations fixed = derive_text(rotor("recursive", "rotation = \"rot_z(q)\"\njoint = { type = \"fixed\" }"));
-  Equations plain = derive_text(rotor("recursive", "rotation = \"rot_z(q)\""));
+  Equations fixed = derive_text(rotor("rotation = \"rot_z(q)\"\njoint = { type = \"fixed\" }"));
+  Equations plain = derive_text(rotor("rotation = \"rot_z(q)\""));
   same_equations(fixed, plain, "fixed");
 }
 
@@ -159,17 +165,17 @@ TEST(Joints, RotAxisIsRodriguesRotation) {
   GiNaC::matrix quarter = GiNaC::ex_to<GiNaC::matrix>(ex(R).subs(phi == GiNaC::Pi / 2).evalm());
   GiNaC::matrix v = quarter.mul(GiNaC::matrix(3, 1, GiNaC::lst{2, -1, 0}));
   EXPECT_TRUE((v(0, 0) - ex(2) / 3).is_zero() && (v(1, 0) - ex(4) / 3).is_zero() && (v(2, 0) + ex(5) / 3).is_zero()) << v;
-  Equations by_rot_axis = derive_text(rotor("expanded", "rotation = \"rot_axis(1, 2, 2, q)\""));
-  Equations by_joint = derive_text(rotor("expanded", "joint = { type = \"revolute\", axis = [\"1\", \"2\", \"2\"], coordinate = \"q\" }"));
+  Equations by_rot_axis = derive_as("written out", rotor("rotation = \"rot_axis(1, 2, 2, q)\""));
+  Equations by_joint = derive_as("written out", rotor("joint = { type = \"revolute\", axis = [\"1\", \"2\", \"2\"], coordinate = \"q\" }"));
   same_equations(by_rot_axis, by_joint, "rot_axis");
 }
 
 std::string joint_diagnostics(const std::string& text) { return derive_model_text(text, "bad.toml").diagnostics.format(); }
 
 TEST(Joints, MisusesAreLocated) {
-  auto with_joint = [](const std::string& joint) { return joint_diagnostics(rotor("recursive", "joint = " + joint)); };
+  auto with_joint = [](const std::string& joint) { return joint_diagnostics(rotor("joint = " + joint)); };
   std::string unknown = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"1\"], coordinate = \"p\" }");
-  EXPECT_NE(unknown.find("bad.toml:20:68: error: frames[0].joint.coordinate: 'p' is not a coordinate"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("bad.toml:19:68: error: frames[0].joint.coordinate: 'p' is not a coordinate"), std::string::npos) << unknown;
   std::string zero = with_joint("{ type = \"revolute\", axis = [\"0\", \"0\", \"0\"], coordinate = \"q\" }");
   EXPECT_NE(zero.find("frames[0].joint.axis: the joint's axis is zero"), std::string::npos) << zero;
   std::string kind = with_joint("{ type = \"hinge\", axis = [\"0\", \"0\", \"1\"], coordinate = \"q\" }");

@@ -29,7 +29,6 @@ using GiNaC::ex;
 
 const char* tree = R"toml([model]
 name = "tree"
-kinematics = "KINEMATICS"
 
 [parameters]
 m = 1.3
@@ -109,20 +108,20 @@ dissipation = "0.3*der(a)^2/2"
 )toml";
 
 TEST(JointTree, RecursionsGiveTheExpandedEquations) {
-  expect_expanded_equations(with_kinematics(tree, "recursive"), with_kinematics(tree, "expanded"), 4);
+  expect_expanded_equations(tree, 4);
 }
 
 // the oblique axis, the slide, the fixed frame and the turned inertias included
 TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
-  expect_expanded_derivatives(with_kinematics(tree, "recursive"), with_kinematics(tree, "expanded"), 4);
+  expect_expanded_derivatives(tree, 4);
 }
 
 // The tree with joints that follow another joint's coordinate (URDF's mimic): the arm turned by
 // −0.7 c + 0.2, c the hand's angle in another branch, and a copy of the tree where the hand
 // follows the base's angle a, its ancestor, by 2 a − 0.1 and the slide follows it too. The
 // recursions add each joint's share to the rows and columns of the coordinate it follows.
-std::string with_followers(const std::string& kinematics, bool ancestor) {
-  std::string text = with_kinematics(tree, kinematics);
+std::string with_followers(bool ancestor) {
+  std::string text = tree;
   auto replace = [&](const std::string& from, const std::string& to) {
     std::size_t at = text.find(from);
     ASSERT_NE(at, std::string::npos) << from;
@@ -142,13 +141,13 @@ std::string with_followers(const std::string& kinematics, bool ancestor) {
 }
 
 TEST(JointTree, JointsThatFollowACoordinateGiveTheExpandedEquations) {
-  expect_expanded_equations(with_followers("recursive", false), with_followers("expanded", false), 3);
-  expect_expanded_equations(with_followers("recursive", true), with_followers("expanded", true), 2);
+  expect_expanded_equations(with_followers(false), 3);
+  expect_expanded_equations(with_followers(true), 2);
 }
 
 TEST(JointTree, JointsThatFollowACoordinateHaveTheExpandedDerivatives) {
-  expect_expanded_derivatives(with_followers("recursive", false), with_followers("expanded", false), 3);
-  expect_expanded_derivatives(with_followers("recursive", true), with_followers("expanded", true), 2);
+  expect_expanded_derivatives(with_followers(false), 3);
+  expect_expanded_derivatives(with_followers(true), 2);
 }
 
 // the velocity above each in the factorization of M from the leaves (emit/cpp_ldlt.hpp): the tree's
@@ -156,36 +155,40 @@ TEST(JointTree, JointsThatFollowACoordinateHaveTheExpandedDerivatives) {
 // both branches and sits below s, itself below a; with the tree's a numbered last, eliminating a
 // couples b, s and c, and the fill-in makes one chain
 TEST(JointTree, TheFactorizationOfMFollowsTheTreeAndItsFillIn) {
-  EXPECT_EQ(derive_text(with_kinematics(tree, "recursive")).coordinate_parents, (std::vector<int>{-1, 0, 0, 2}));
-  EXPECT_EQ(derive_text(with_followers("recursive", false)).coordinate_parents, (std::vector<int>{-1, 0, 1}));
-  EXPECT_EQ(derive_text(with_followers("recursive", true)).coordinate_parents, (std::vector<int>{-1, 0}));
-  std::string last = with_kinematics(tree, "recursive");
+  EXPECT_EQ(derive_text(tree).coordinate_parents, (std::vector<int>{-1, 0, 0, 2}));
+  EXPECT_EQ(derive_text(with_followers(false)).coordinate_parents, (std::vector<int>{-1, 0, 1}));
+  EXPECT_EQ(derive_text(with_followers(true)).coordinate_parents, (std::vector<int>{-1, 0}));
+  std::string last = tree;
   last.erase(last.find("a = 0.3\n"), 8);
   last.insert(last.find("c = 0.7\n") + 8, "a = 0.3\n");
   EXPECT_EQ(derive_text(last).coordinate_parents, (std::vector<int>{-1, 0, 1, 2})) << last;
 }
 
 TEST(JointTree, FramesWithJointsAreATreeWithoutAnOption) {
-  std::string text = with_kinematics(tree, "recursive");
-  text.erase(text.find("kinematics = \"recursive\"\n"), 25);
+  std::string text = tree;
   Model model = built(text);
   EXPECT_TRUE(model.recursive_kinematics);
   EXPECT_FALSE(why_not_a_joint_tree(model));
   text.insert(text.find("\n[parameters]"), "method = \"appell\"\n");
   EXPECT_FALSE(built(text).recursive_kinematics) << "Appell's equations take the expanded kinematics";
-  EXPECT_FALSE(built(with_kinematics(tree, "expanded")).recursive_kinematics) << "an explicit choice stands";
+  Diagnostics retired;
+  std::string keyed = tree;
+  keyed.insert(keyed.find("\n[parameters]"), "\nkinematics = \"expanded\"");
+  build_model(parse_model_text(keyed, "tree.toml", retired), retired);
+  EXPECT_NE(retired.format().find("tree.toml:4:14: error: model.kinematics: the key is retired"), std::string::npos)
+      << retired.format();
+  EXPECT_NE(retired.format().find("hint: remove the line"), std::string::npos) << retired.format();
 }
 
 TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
   // b held at its initial value −0.4: the same as the expanded model with b held
   ModelChoice held;
   held.freeze = {"b"};
-  std::string dir = temporary_directory();
-  for (const char* kinematics : {"recursive", "expanded"}) {
-    std::ofstream(dir + "/" + kinematics + ".toml") << with_kinematics(tree, kinematics);
-  }
-  Derivation recursive = derive_model_file_for(dir + "/recursive.toml", held);
-  Derivation expanded = derive_model_file_for(dir + "/expanded.toml", held);
+  std::string path = write_file("tree.toml", tree);
+  ModelChoice held_written_out = held;
+  held_written_out.written_out = true;
+  Derivation recursive = derive_model_file_for(path, held);
+  Derivation expanded = derive_model_file_for(path, held_written_out);
   ASSERT_TRUE(recursive.equations && expanded.equations) << recursive.diagnostics.format() << expanded.diagnostics.format();
   const Equations& r = *recursive.equations;
   const Equations& e = *expanded.equations;
@@ -201,13 +204,13 @@ TEST(JointTree, AVariantThatHoldsACoordinateIsDerivedByTheFrameRecursion) {
 }
 
 TEST(JointTree, OtherTreesKeepTheFrameRecursionAndSayWhy) {
-  std::string moving = with_kinematics(tree, "recursive");
+  std::string moving = tree;
   moving.replace(moving.find("rotation = \"rot_x(0.3)\""), 23, "rotation = \"rot_x(s)\"");
   Model model = built(moving);
   auto why = why_not_a_joint_tree(model);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find("frame 'base' is not placed by constants and moved by one joint"), std::string::npos) << *why;
-  std::string idle = with_kinematics(tree, "recursive");
+  std::string idle = tree;
   idle.replace(idle.find("c = 0.7\n"), 8, "c = 0.7\nmotor = 0\n");
   idle.replace(idle.find("potential = "), 12, "kinetic = \"0.01*der(motor)^2\"\npotential = ");
   why = why_not_a_joint_tree(built(idle));

@@ -24,7 +24,6 @@ namespace {
 const char* loop = R"toml([model]
 name = "loop"
 method = "lagrange1"
-KINEMATICS
 
 [parameters]
 l = 0.4
@@ -114,8 +113,8 @@ acceleration = ["0", "0", "-g"]
 )toml";
 
 // g, b, γ, C, M and f of the two derivations at random states
-void expect_expanded_constraints(const std::string& recursive_text, const std::string& expanded_text) {
-  Equations recursive = derive_text(recursive_text), expanded = derive_text(expanded_text);
+void expect_expanded_constraints(const std::string& text) {
+  Equations recursive = derive_text(text), expanded = derive_text(text, "model.toml", model_written_out());
   ASSERT_FALSE(recursive.intermediates.empty()) << "frames with joints take the recursive kinematics under Lagrange I";
   const unsigned m = unsigned(recursive.constraints.size()), n = unsigned(recursive.forcing.size());
   ASSERT_EQ(m, expanded.constraints.size());
@@ -145,8 +144,8 @@ void expect_expanded_constraints(const std::string& recursive_text, const std::s
 }
 
 TEST(TreeConstraints, ThroughTheFramesTheyAreThoseOfTheExpandedDerivation) {
-  ASSERT_EQ(derive_text(with_kinematics(loop, "")).constraints.size(), 3u);
-  expect_expanded_constraints(with_kinematics(loop, ""), with_kinematics(loop, "kinematics = \"expanded\""));
+  ASSERT_EQ(derive_text(loop).constraints.size(), 3u);
+  expect_expanded_constraints(loop);
 }
 
 // the hand's joint following the base's coordinate (−1.5 a + 0.2, a mimic), the constraint on
@@ -160,12 +159,12 @@ TEST(TreeConstraints, AJointThatFollowsACoordinateGivesTheExpandedConstraints) {
     text.erase(reach, text.find("[[constraints]]", reach + 1) - reach);
     return text;
   };
-  ASSERT_EQ(derive_text(following(with_kinematics(loop, ""))).forcing.size(), 3u);
-  expect_expanded_constraints(following(with_kinematics(loop, "")), following(with_kinematics(loop, "kinematics = \"expanded\"")));
+  ASSERT_EQ(derive_text(following(loop)).forcing.size(), 3u);
+  expect_expanded_constraints(following(loop));
 }
 
 TEST(TreeConstraints, ADependentConstraintIsFoundThroughTheFrames) {
-  std::string text = with_kinematics(loop, "");
+  std::string text = loop;
   std::size_t rolling = text.find("[[constraints]]\nname = \"rolling\"");
   text.replace(rolling, text.find("[gravity]") - rolling,
                "[[constraints]]\nname = \"twice\"\nholonomic = \"2*tip.z - 0.6*tip.x + 0.2*knob.y - 1\"\n\n");
