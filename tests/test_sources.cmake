@@ -94,6 +94,7 @@ set(EOMGEN_TEST_FILES
   cli/hostile_input_test.cpp                        cli
   cli/definitions_test.cpp                          cli
   cli/diff_command_test.cpp                         cli
+  cli/derive_command_test.cpp                       cli
   cli/bench_command_test.cpp                        cli
   cli/failure_scenes_test.cpp                       cli
   cli/determinism_test.cpp                          slow

@@ -17,9 +17,11 @@ int derive_and_write(const std::string& model_path, const std::string& format, c
   Derivation d = !reduce.empty() ? derive_reduced_model_file(model_path, reduce)
                                  : derive_model_file_for(model_path, {"", variant, {}, linearize || written_out});
   if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
-  if (linearize && !d.equations->intermediates.empty()) {
-    std::cerr << "eomgen: error: --linearize differentiates equations written out in q; those of ball and free joints "
-                 "hold the frames' quantities: use the generated header's linearization()\n";
+  if ((linearize || written_out) && !d.equations->intermediates.empty()) {
+    std::cerr << (linearize ? "eomgen: error: --linearize differentiates equations written out in q; those of ball and "
+                              "free joints hold the frames' quantities: use the generated header's linearization()\n"
+                            : "eomgen: error: --written-out: a ball or free joint's quaternion is not written out in q; "
+                              "its equations hold the frames' quantities: leave --written-out out\n");
     return exit_user_error;
   }
   if (linearize) add_linearization(*d.equations);

@@ -9,6 +9,14 @@
 
 namespace eomgen {
 
+// Multiplied out, the derivation of a chain of frames grows about 20 times per frame from the
+// third on, composed link by link polynomially: tests/benchmarks/README.md, "The 3-D chain through
+// frames" (rods on universal joints, rot_z(a)*rot_x(b) per frame; `eomgen derive` multiplied out
+// 0.016, 0.064, 0.72 and 15.5 s for 1 to 4 frames, composed 0.008 to 0.036 s). A chain of frames
+// that is no tree of joints is composed from the depth where writing it out takes seconds; the
+// shallower ones stay written out, as they were before eomgen chose (their rhs not compared).
+constexpr int composed_from_depth = 4;
+
 using GiNaC::ex;
 
 const std::vector<std::string>& known_methods() {
@@ -48,12 +56,6 @@ Model ModelBuilder::build() {
   read_constraints();
   read_outputs();
   check_complete();
-  if (f_.forward_dynamics_where.line != 0)
-    d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
-             "the key is retired: eomgen chooses how the header's rhs solves for q'' (the articulated-body "
-             "recursion for a tree of particles of 8 coordinates or more, M = L D L^T otherwise)",
-             "remove the line; `eomgen generate --forward-dynamics mass_matrix` or `articulated` writes a header in "
-             "the other form, to compare the two");
   build_scenes_and_variants(f_, m_, d_);
   return m_;
 }
@@ -92,10 +94,18 @@ void ModelBuilder::check_header() {
              suggest(f_.method, methods, "methods"));
   if (f_.kinematics_where.line != 0)
     d_.error(f_.kinematics_where, "model.kinematics",
-             "the key is retired: eomgen derives frames that carry or read as joints over the tree of joints, "
-             "chains of other frames 4 or more deep by composing them link by link, and the rest written out in q",
+             fmt::format("the key is retired: eomgen derives frames that carry or read as joints over the tree of "
+                         "joints, chains of other frames {} or more deep by composing them link by link, and the rest "
+                         "written out in q",
+                         composed_from_depth),
              "remove the line; the analyses that need equations written out in q (derive --written-out and "
              "--linearize, diff, stability --symbolic, derive --reduce) write them out themselves");
+  if (f_.forward_dynamics_where.line != 0)
+    d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
+             "the key is retired: eomgen chooses how the header's rhs solves for q'' (the articulated-body "
+             "recursion for a tree of particles of 8 coordinates or more, M = L D L^T otherwise)",
+             "remove the line; `eomgen generate --forward-dynamics mass_matrix` or `articulated` writes a header in "
+             "the other form, to compare the two");
 }
 
 void ModelBuilder::declare(const std::string& name, SourceLocation where, const std::string& key,
@@ -234,14 +244,6 @@ void ModelBuilder::check_complete() {
 }
 
 namespace {
-
-// Multiplied out, the derivation of a chain of frames grows about 20 times per frame from the
-// third on, composed link by link polynomially: tests/benchmarks/README.md, "The 3-D chain through
-// frames" (rods on universal joints, rot_z(a)*rot_x(b) per frame; `eomgen derive` multiplied out
-// 0.016, 0.064, 0.72 and 15.5 s for 1 to 4 frames, composed 0.008 to 0.036 s). A chain of frames
-// that is no tree of joints is composed from the depth where writing it out takes seconds; the
-// shallower ones stay written out, as they were before eomgen chose (their rhs not compared).
-constexpr int composed_from_depth = 4;
 
 // the most frames that the coordinates move on one path from the inertial frame
 int moving_depth(const Model& model) {
