@@ -1,7 +1,8 @@
 // One robot of robot_sweep.py: the generated header's qacc against MuJoCo's reading the same robot
 // file at random states (contacts and joint limits off: neither is in the model), and the rhs
 // against mj_forward and jacobian_state against the rhs, timed in this one process (medians of
-// interleaved batches). Compiled per robot with -DMODEL=name -DHEADER="path". Arguments: the file
+// interleaved batches); and jacobian_state against central differences of the rhs at the last of
+// those states (or, timed only, at MuJoCo's initial pose with every velocity 0.1). Compiled per robot with -DMODEL=name -DHEADER="path". Arguments: the file
 // as MuJoCo is to read it, and "urdf" when it is a URDF, whose bodies then take the inertia tensors
 // the file states (tests/support/urdf_inertias.hpp: MuJoCo's principal axes of a full tensor are
 // an iteration's, eomgen's the file's six numbers), and "bounded" after it when it was read with
@@ -69,6 +70,21 @@ int main(int argc, char** argv) {
     for (int i = 0; i < nq; ++i) x[std::size_t(i)] = i < mj->nq ? d->qpos[i] : 0.0;
     for (int i = 0; i < nv; ++i) x[std::size_t(nq + i)] = 0.1;
   }
+  // each column of jacobian_state against (rhs(x + h e_k) − rhs(x − h e_k)) / 2h, h = 1e-6 max(1, |x_k|):
+  // its largest difference relative to the larger of 1 and J's largest entry
+  model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data());
+  double jacobian_size = 1, jacobian_worst = 0;
+  for (double entry : J) jacobian_size = std::max(jacobian_size, std::abs(entry));
+  std::vector<double> up(states), down(states);
+  for (std::size_t k = 0; k < states; ++k) {
+    std::vector<double> plus = x, minus = x;
+    double h = 1e-6 * std::max(1.0, std::abs(x[k]));
+    plus[k] += h, minus[k] -= h;
+    model::rhs(0.0, plus.data(), u.data(), p.data(), up.data());
+    model::rhs(0.0, minus.data(), u.data(), p.data(), down.data());
+    for (std::size_t i = 0; i < states; ++i)
+      jacobian_worst = std::max(jacobian_worst, std::abs(J[i * states + k] - (up[i] - down[i]) / (2 * h)) / jacobian_size);
+  }
   volatile double sink = 0;
   std::vector<double> ours, mujoco, jacobian;
   int calls = std::max(20, 100000 / (N * N + 10));
@@ -81,8 +97,9 @@ int main(int argc, char** argv) {
   char difference[32] = "null";
   if (same_layout) std::snprintf(difference, sizeof difference, "%.3g", worst);
   const char* why = mj->neq > 0 ? "equality constraints" : "a mimic";
-  std::printf("{\"velocities\": %d, \"why_not_compared\": \"%s\", \"qacc_difference\": %s, \"rhs_ns\": %.1f, \"mujoco_ns\": %.1f, \"jacobian_ns\": %.1f}\n", nv,
-              why, difference, median(ours), median(mujoco), median(jacobian));
+  std::printf("{\"velocities\": %d, \"why_not_compared\": \"%s\", \"qacc_difference\": %s, \"jacobian_difference\": %.3g, "
+              "\"rhs_ns\": %.1f, \"mujoco_ns\": %.1f, \"jacobian_ns\": %.1f}\n",
+              nv, why, difference, jacobian_worst, median(ours), median(mujoco), median(jacobian));
   mj_deleteData(d), mj_deleteModel(mj);
   return sink == 12345.678 ? 4 : same_layout ? 0 : 3;
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Robot files nobody here wrote, against MuJoCo: each URDF or MJCF file given (or found in a
 folder given) is imported (`eomgen import`), generated and compiled with robot_sweep.cpp, which
-compares the header's qacc with MuJoCo's reading the same file at 20 random states and times the
-rhs against mj_forward and jacobian_state against the rhs in one process. Prints a Markdown
+compares the header's qacc with MuJoCo's reading the same file at 20 random states and its
+jacobian_state with central differences of its rhs, and times the rhs against mj_forward and
+jacobian_state against the rhs in one process. Prints a Markdown
 table, one row per robot, and the reason for each robot that did not get that far.
 
 MuJoCo reads a URDF as the import does: its fixed links kept (fusestatic off), each link with
@@ -13,9 +14,12 @@ coordinates in eomgen than in MuJoCo, which ignores it, and MuJoCo's equality co
 closed loop) are soft and broken by a random state: such robots are timed only.
 
 Usage: robot_sweep.py EOMGEN FILE_OR_FOLDER ... [--free-base] [--flags "FLAGS"] [--check TOL]
+       [--check-jacobian TOL]
 --free-base imports every URDF on a floating base (and gives MuJoCo the same floating joint);
 --flags compiles with FLAGS instead of -O2; --check exits 1 when a robot's qacc differs from
-MuJoCo's by more than TOL (relative to the larger of 1 and MuJoCo's largest |qacc|) or a robot fails. Exit 77 without a C++
+MuJoCo's by more than TOL (relative to the larger of 1 and MuJoCo's largest |qacc|) or a robot fails,
+--check-jacobian when jacobian_state differs from the central differences by more than TOL
+(relative to the larger of 1 and its largest entry; the differences' own error is about 1e-9). Exit 77 without a C++
 compiler or MuJoCo. Not run on any robot of another project by the tests: they sweep
 tests/crosscheck/urdf/.
 """
@@ -131,7 +135,7 @@ def robot_files(arguments):
 
 def main():
     args = sys.argv[1:]
-    options = {"--flags": "-O2", "--check": None}
+    options = {"--flags": "-O2", "--check": None, "--check-jacobian": None}
     for key in options:
         if key in args:
             k = args.index(key)
@@ -147,6 +151,7 @@ def main():
         return 77
     eomgen, files = args[0], robot_files(args[1:])
     tolerance = float(options["--check"]) if options["--check"] else None
+    jacobian_tolerance = float(options["--check-jacobian"]) if options["--check-jacobian"] else None
     rows, failures, too_far = [], [], []
     with tempfile.TemporaryDirectory() as work:
         for count, path in enumerate(files, 1):
@@ -158,17 +163,21 @@ def main():
             rows.append((name, row))
             if tolerance is not None and row["qacc_difference"] is not None and row["qacc_difference"] > tolerance:
                 too_far.append(name)
-    print("| robot | velocities | qacc against MuJoCo | rhs | mj_forward | mj_forward / rhs | jacobian_state | header | generate | g++ of this program |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+            if jacobian_tolerance is not None and not row["jacobian_difference"] <= jacobian_tolerance:
+                too_far.append(name + " (jacobian_state)")
+    print("| robot | velocities | qacc against MuJoCo | jacobian_state against differences | rhs | mj_forward | "
+          "mj_forward / rhs | jacobian_state | header | generate | g++ of this program |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for name, r in rows:
         qacc = f"({r['why_not_compared']}: timed only)" if r["qacc_difference"] is None else f"{r['qacc_difference']:.1e}"
-        print(f"| {name} | {r['velocities']} | {qacc} | {r['rhs_ns'] / 1000:.2f} µs | {r['mujoco_ns'] / 1000:.2f} µs | "
+        print(f"| {name} | {r['velocities']} | {qacc} | {r['jacobian_difference']:.1e} | {r['rhs_ns'] / 1000:.2f} µs | "
+              f"{r['mujoco_ns'] / 1000:.2f} µs | "
               f"{r['mujoco_ns'] / r['rhs_ns']:.2f}x | {r['jacobian_ns'] / r['rhs_ns']:.1f} rhs | {r['header_kb']:.0f} KB | "
               f"{r['generate']:.2f} s | {r['build']:.1f} s |")
     for name, why in failures:
         print(f"\n{name}: {why}")
-    if tolerance is not None and (too_far or failures):
-        print(f"\nqacc beyond {tolerance:g} of MuJoCo's: {', '.join(too_far) or 'none'}; failed: {len(failures)}", file=sys.stderr)
+    if (tolerance is not None or jacobian_tolerance is not None) and (too_far or failures):
+        print(f"\nbeyond the tolerance: {', '.join(too_far) or 'none'}; failed: {len(failures)}", file=sys.stderr)
         return 1
     return 0
 
