@@ -102,8 +102,10 @@ void ModelBuilder::check_header() {
              "--linearize, diff, stability --symbolic, derive --reduce) write them out themselves");
   if (f_.forward_dynamics_where.line != 0)
     d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
-             "the key is retired: eomgen chooses how the header's rhs solves for q'' (the articulated-body "
-             "recursion for a tree of particles of 8 coordinates or more, M = L D L^T otherwise)",
+             fmt::format("the key is retired: eomgen chooses how the header's rhs solves for q'' (the "
+                         "articulated-body recursion for a tree of particles of {} coordinates or more, M = L D L^T "
+                         "otherwise)",
+                         articulated_crossover),
              "remove the line; `eomgen generate --forward-dynamics mass_matrix` or `articulated` writes a header in "
              "the other form, to compare the two");
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -164,9 +165,19 @@ struct DrawnBody {
 };
 
 /// How the header's rhs solves for q'': eomgen's choice (the articulated-body recursion for a tree
-/// of particles from derive/articulated_bodies.hpp's crossover on, M = L D Lᵀ otherwise), or one
+/// of particles from articulated_crossover coordinates on, M = L D Lᵀ otherwise), or one
 /// form asked for, to compare the two (tests, benchmarks: `eomgen generate --forward-dynamics`).
 enum class ForwardDynamics { chosen, mass_matrix, articulated };
+
+/// From this many coordinates on, eomgen solves a particle tree by the
+/// recursion: tests/benchmarks/rhs_benchmark.cpp times both forms of the planar chain in one
+/// process (tests/benchmarks/README.md, "Against SymPy, MuJoCo and hand-written code"). On 2026-11-25 (an Intel Xeon,
+/// sin and cos from the C library) the unrolled LDLᵀ of M took 157 ns against the recursion's 163
+/// at n = 8 and 196 against 186 at n = 9; on 2026-11-26 (an AMD EPYC, sin and cos by
+/// detail::sin_cos) 155 against 142 at n = 7, 196 against 160 at n = 8, 257 against 190 at n = 9.
+/// The batched sin and cos took 14 ns off the recursion at n = 8 and nothing measurable off the
+/// LDLᵀ form, so n = 8 is the smallest size at which the recursion is the faster on both machines.
+inline constexpr std::size_t articulated_crossover = 8;
 
 struct Model {
   std::string name, title, method;
