@@ -196,11 +196,13 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
   if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
   if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message, ""};
   std::string kept = with_static_links_kept(urdf);
-  // the text, or when MuJoCo refuses its massless moving bodies or an inertia with A + B < C, the
-  // text with the mass bounds or balanceinertia (each kept for a second reading without meshes)
+  // the text, or when MuJoCo refuses its massless moving bodies, an inertia with A + B < C or, fusing
+  // fixed links, a moment below zero, the text with the mass bounds, balanceinertia or positive
+  // moments (each kept for a second reading without meshes; the stated inertias are given back later)
   auto load = [&](std::string text) {
     if (left_out.mass_bounds) text = with_mass_bounds(text);
     if (left_out.balanced_inertias) text = with_balanced_inertias(text);
+    if (left_out.positive_moments) text = with_positive_moments(text);
     for (;;) {
       mjModel* loaded = loaded_text(path, text, error, size);
       if (loaded) return loaded;
@@ -211,6 +213,9 @@ std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, co
       } else if (!left_out.balanced_inertias && refuses_unbalanced_inertia(error)) {
         next = with_balanced_inertias(text);
         left_out.balanced_inertias = next != text;
+      } else if (!left_out.positive_moments && refuses_to_fuse_singular_inertias(error)) {
+        next = with_positive_moments(text);
+        left_out.positive_moments = next != text;
       }
       if (next == text) return loaded;
       text = next;

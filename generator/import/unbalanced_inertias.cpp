@@ -8,6 +8,7 @@
 #include <set>
 
 #include <Eigen/Eigenvalues>
+#include <fmt/format.h>
 #include <Eigen/Geometry>
 
 #include "import/urdf_text.hpp"
@@ -127,6 +128,29 @@ bool refuses_unbalanced_inertia(const std::string& mujoco_error) {
 
 std::string with_balanced_inertias(const std::string& urdf) {
   return with_compiler_attributes(urdf, " balanceinertia=\"true\"", {"balanceinertia"});
+}
+
+bool refuses_to_fuse_singular_inertias(const std::string& mujoco_error) {
+  return mujoco_error.find("inertia must have positive eigenvalues") != std::string::npos &&
+         mujoco_error.find("in fusing static body inertias") != std::string::npos;
+}
+
+std::string with_positive_moments(const std::string& urdf) {
+  std::string text = urdf;
+  for (std::size_t at = element_start(text, "link"); at != std::string::npos; at = element_start(text, "link", at + 1)) {
+    std::optional<LinkInertia> l = link_inertia(text, at);
+    if (!l || std::min({l->principal[0], l->principal[1], l->principal[2]}) > 0) continue;
+    // at least the moments of its mass spread over a millimetre (URDF's lengths are metres), as a
+    // point mass or moments of rounding's size (1e-35) are not positive to MuJoCo
+    double mean = std::max((std::abs(l->principal[0]) + std::abs(l->principal[1]) + std::abs(l->principal[2])) / 3, l->mass * 1e-6);
+    if (mean == 0) continue;
+    std::size_t inertial = element_start(text, "inertial", at);
+    std::size_t inertia = element_start(text, "inertia", inertial), end = past_tag(text, inertia);
+    std::string lines(std::size_t(std::count(text.begin() + long(inertia), text.begin() + long(end), '\n')), '\n');
+    text.replace(inertia, end - inertia,
+                 fmt::format("<inertia ixx=\"{0:.17g}\" ixy=\"0\" ixz=\"0\" iyy=\"{0:.17g}\" iyz=\"0\" izz=\"{0:.17g}\"/>{1}", mean, lines));
+  }
+  return text;
 }
 
 std::vector<LinkInertia> urdf_link_inertias(const std::string& urdf) {

@@ -36,6 +36,17 @@ struct LinkInertia {
   std::vector<std::string> fused;  // the links fixed to it whose mass it includes (urdf_fused_inertias)
 };
 
+/// Whether MuJoCo's message is its refusal to fuse fixed links whose inertia is not positive
+/// definite (a moment below zero, or point masses in a line): MuJoCo fuses a floating base's fixed
+/// links before balanceinertia could help.
+bool refuses_to_fuse_singular_inertias(const std::string& mujoco_error);
+
+/// The URDF's text with each link whose stated inertia has a principal moment at or below zero
+/// stated instead as the mean magnitude of its moments about every axis (for a point mass, its
+/// mass spread over a millimetre), on the same lines, so that MuJoCo's fusing takes it;
+/// with_stated_inertias() then gives each body the file's inertia back.
+std::string with_positive_moments(const std::string& urdf);
+
 /// Every link of the URDF text with an <inertial> and an <inertia>, in the file's order.
 std::vector<LinkInertia> urdf_link_inertias(const std::string& urdf);
 

@@ -191,6 +191,45 @@ TEST(UnbalancedInertias, LinksFixedToAFloatingBaseAreOneBodyAsStated) {
   for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(mujoco[k], combined[k], 1e-6 * largest) << k;
 }
 
+// A floating base whose fixed links are point masses in a line (iCub's head on its neck) and one
+// with a moment below zero: MuJoCo refuses to fuse them ("inertia must have positive eigenvalues"),
+// so the import reads them restated and gives the fused body the inertia the file states: about
+// the line's centre of mass, Σ m d² across it and zero along it (the rounding-size moment gone)
+TEST(UnbalancedInertias, PointMassesFixedInALineToAFloatingBaseAreFusedAsStated) {
+  std::string urdf = R"(<robot name="neck_and_head">
+  <link name="base"><inertial><mass value="1.0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>
+  <link name="neck"><inertial><origin xyz="0 0 0.1"/><mass value="0.5"/>
+    <inertia ixx="0" ixy="0" ixz="2.4e-35" iyy="0" iyz="0" izz="0"/></inertial></link>
+  <link name="head"><inertial><origin xyz="0 0 0.1"/><mass value="2.0"/>
+    <inertia ixx="-5.4e-20" ixy="0" ixz="0" iyy="-5.4e-20" iyz="0" izz="0"/></inertial></link>
+  <link name="arm"><inertial><origin xyz="0 0 -0.1"/><mass value="1.0"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.002"/></inertial></link>
+  <joint name="neck_mount" type="fixed"><parent link="base"/><child link="neck"/><origin xyz="0 0 0.2"/></joint>
+  <joint name="head_mount" type="fixed"><parent link="neck"/><child link="head"/><origin xyz="0 0 0.1"/></joint>
+  <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/><axis xyz="0 1 0"/></joint>
+</robot>
+)";
+  auto read = read_with_mujoco(write_file("neck_and_head.urdf", urdf), true);
+  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
+  const RobotBody* base = nullptr;
+  for (const RobotBody& b : std::get<Robot>(read).bodies)
+    if (b.name == "base") base = &b;
+  ASSERT_NE(base, nullptr);
+  // the masses 1, 0.5 and 2 at heights 0, 0.3 and 0.4 on the base's z axis
+  const double masses[3] = {1.0, 0.5, 2.0}, heights[3] = {0.0, 0.3, 0.4}, m = 3.5;
+  double center = 0, across = 0;
+  for (int k = 0; k < 3; ++k) center += masses[k] * heights[k] / m;
+  for (int k = 0; k < 3; ++k) across += masses[k] * (heights[k] - center) * (heights[k] - center);
+  EXPECT_NEAR(base->mass, m, 1e-15);
+  EXPECT_NEAR(base->center[0], 0, 1e-16);
+  EXPECT_NEAR(base->center[1], 0, 1e-16);
+  EXPECT_NEAR(base->center[2], center, 1e-15);
+  std::array<double, 9> imported = body_frame_tensor(base->principal_inertia, base->inertia_axes);
+  const std::array<double, 9> stated{across, 0, 0, 0, across, 0, 0, 0, 0};
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(imported[k], stated[k], 1e-15 * across) << k;
+  EXPECT_TRUE(std::any_of(std::get<Robot>(read).warnings.begin(), std::get<Robot>(read).warnings.end(),
+                          [](const auto& w) { return w.text.find("taken as the file states it") != std::string::npos; }));
+}
+
 TEST(UnbalancedInertias, ADummyLinksRankOneInertiaHasTwoZeroMoments) {
   std::vector<LinkInertia> links = urdf_link_inertias(one_link_urdf(
       "      <mass value=\"1e-6\"/>\n      <inertia ixx=\"1e-6\" ixy=\"1e-6\" ixz=\"1e-6\" iyy=\"1e-6\" iyz=\"1e-6\" izz=\"1e-6\"/>\n"));
@@ -206,6 +245,8 @@ TEST(UnbalancedInertias, ADummyLinksRankOneInertiaHasTwoZeroMoments) {
 TEST(UnbalancedInertias, OnlyTheRefusalTurnsBalancingOn) {
   EXPECT_TRUE(refuses_unbalanced_inertia("Error: inertia must satisfy A + B >= C; use 'balanceinertia' to fix\nObject name = arm"));
   EXPECT_FALSE(refuses_unbalanced_inertia("Error: mass and inertia cannot be negative"));
+  EXPECT_TRUE(refuses_to_fuse_singular_inertias("Error: error 'inertia must have positive eigenvalues' in fusing static body inertias"));
+  EXPECT_FALSE(refuses_to_fuse_singular_inertias("Error: inertia must have positive eigenvalues\nObject name = arm"));
   EXPECT_EQ(with_balanced_inertias("<robot name=\"r\"><mujoco><compiler fusestatic=\"false\"/></mujoco></robot>"),
             "<robot name=\"r\"><mujoco><compiler balanceinertia=\"true\" fusestatic=\"false\"/></mujoco></robot>");
   std::string own = "<robot name=\"r\"><mujoco><compiler balanceinertia=\"false\"/></mujoco></robot>";
