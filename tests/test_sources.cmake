@@ -31,6 +31,7 @@ set(EOMGEN_TEST_FILES
   generator/import/unbalanced_inertias_test.cpp     fast     sanitized
   generator/import/free_base_test.cpp               fast     sanitized
   generator/import/right_angles_test.cpp            fast     sanitized
+  generator/import/rounding_noise_test.cpp          fast     sanitized
   generator/symbolic/clamp_test.cpp                 fast     sanitized
   generator/common/independent_rows_test.cpp        fast     sanitized
   generator/symbolic/simplify_test.cpp              fast     sanitized

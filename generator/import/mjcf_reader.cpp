@@ -2,6 +2,7 @@
 
 #include "import/joint_followers.hpp"
 #include "import/massless_bodies.hpp"
+#include "import/rounding_noise.hpp"
 #include "import/unbalanced_inertias.hpp"
 
 #include <algorithm>
@@ -431,6 +432,11 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, b
     r.warnings.push_back({fmt::format("'{}' is MuJoCo 2.3's or 3's, which MuJoCo {} does not read: left out; {}{}", a.name,
                                       mj_version_text(), a.consequence, a.enters_equations ? "" : ", which does not enter the equations"),
                           "", "", 0});
+  if (RoundingNoise noise = without_rounding_noise(r); noise.numbers > 0)
+    r.notes.push_back(fmt::format("{} number(s) at the size of double rounding taken as zero (up to {:.2g} units of rounding of "
+                                  "their scale: a unit axis's or quaternion's length, the robot's size, a body's mass times its "
+                                  "square), such as cos(π/2) printed as 6.12323e-17 in a joint axis",
+                                  noise.numbers, noise.largest));
   note_losses(m, r);
   return r;
 }
