@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -32,6 +34,15 @@ struct Watchdog {
   std::thread thread;
 };
 
+// a derivation's progress on a terminal, from its second second on, once a second: overwritten in
+// place, and wiped when it ends or before a message (a log or a pipe gets none)
+constexpr double progress_after_seconds = 2;
+std::atomic<std::size_t> progress_width{0};  // of the line on the terminal, 0: none
+
+void wipe_progress() {
+  if (std::size_t width = progress_width.exchange(0); width > 0) std::fputs(("\r" + std::string(width, ' ') + "\r").c_str(), stderr);
+}
+
 std::unique_ptr<Watchdog> active;
 
 // the resident set, from /proc/self/statm (its second field, in pages)
@@ -51,6 +62,7 @@ void overgrown(const std::string& model, double limit, double resident) {
       "or absolute angles for long chains), or raise the limit with --max-memory GB (0: none); nothing "
       "was written\n",
       model, limit, resident, stage.load());
+  wipe_progress();
   std::fputs(message.c_str(), stderr);
   std::fflush(stderr);
   std::_Exit(2);
@@ -62,12 +74,19 @@ void expire(const std::string& model, double seconds) {
       "large\n  hint: simplify the model (fewer nested functions; frames with joints or absolute "
       "angles for long chains), or raise the limit with --max-seconds (0: none); nothing was written\n",
       model, seconds, stage.load());
+  wipe_progress();
   std::fputs(message.c_str(), stderr);
   std::fflush(stderr);
   std::_Exit(2);
 }
 
 }  // namespace
+
+std::string derivation_progress_line(const std::string& model, const std::string& stage, double elapsed, double limit) {
+  std::string line = fmt::format("eomgen: {}: forming {}, {:.0f} s", model, stage, std::floor(elapsed));
+  if (limit > 0) line += fmt::format(" (limit {:g} s, --max-seconds)", limit);
+  return line;
+}
 
 void set_derivation_time_limit(double seconds) { limit_seconds = seconds; }
 
@@ -110,15 +129,25 @@ DerivationDeadline::DerivationDeadline(const std::string& model) : outermost_(de
   active = std::make_unique<Watchdog>();
   Watchdog* w = active.get();
   // a look every 50 ms: time and memory
-  w->thread = std::thread([w, model, seconds, gigabytes] {
+  bool terminal = ::isatty(STDERR_FILENO) == 1;
+  w->thread = std::thread([w, model, seconds, gigabytes, terminal] {
     auto started = std::chrono::steady_clock::now();
+    double shown_at = 0;
     std::unique_lock<std::mutex> lock(w->mutex);
     while (!w->finished.wait_for(lock, std::chrono::milliseconds(50), [w] { return w->done; })) {
-      if (seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > seconds)
-        expire(model, seconds);
+      double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      if (seconds > 0 && elapsed > seconds) expire(model, seconds);
       if (gigabytes > 0)
         if (double resident = resident_gigabytes(); resident > gigabytes) overgrown(model, gigabytes, resident);
+      if (terminal && elapsed >= progress_after_seconds && elapsed - shown_at >= 1) {
+        std::string line = derivation_progress_line(std::filesystem::path(model).filename().string(), stage.load(), elapsed, seconds);
+        std::size_t width = std::max(line.size(), progress_width.load());
+        std::fputs(("\r" + line + std::string(width - line.size(), ' ')).c_str(), stderr);
+        std::fflush(stderr);
+        progress_width = width, shown_at = elapsed;
+      }
     }
+    wipe_progress();
   });
 }
 

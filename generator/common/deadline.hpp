@@ -31,6 +31,10 @@ class DerivationDeadline {
   bool outermost_;
 };
 
+/// The progress line a derivation shows on a terminal from its second second on:
+/// "eomgen: MODEL: forming STAGE, 12 s (limit 300 s, --max-seconds)"; no limit when `limit` is 0.
+std::string derivation_progress_line(const std::string& model, const std::string& stage, double elapsed, double limit);
+
 /// What the derivation is doing now ("kinematics", "Lagrange's equations"), for the message.
 void derivation_stage(const char* stage);
 

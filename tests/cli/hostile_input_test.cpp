@@ -12,6 +12,7 @@
 
 #include <sys/resource.h>
 
+#include "common/deadline.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -57,6 +58,26 @@ TEST(HostileInput, ADerivationPastItsTimeLimitStopsWithExitTwoAndWritesNothing) 
   EXPECT_FALSE(fs::exists(out)) << "nothing is written";
   CommandOutput refused = run_eomgen("derive '" + path + "' --max-seconds -1");
   EXPECT_EQ(refused.status, 2) << "a negative limit is a usage error";
+}
+
+// From its second second on, a derivation shows what it is forming and for how long, once a second
+// and in place, on a terminal (script(1) gives it one) and nowhere else: a log or a pipe gets none
+TEST(HostileInput, ALongDerivationShowsItsProgressOnATerminalOnly) {
+  if (run_command("command -v script > /dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give eomgen a terminal";
+  // the swelling potential below, stopped by the time limit (by its memory, were a machine 4x as fast)
+  std::string path = pendulum_with("[energy]\n", "[energy]\npotential = \"(phi + m + l + g + d + 2*phi^2 + m*l + g*d)^30\"\n",
+                                   "slow_swelling");
+  std::string arguments = "derive '" + path + "' --max-seconds 3.5 --max-memory 1.5";
+  std::string terminal = temporary_directory() + "/terminal";
+  run_command("script -qec \"'" + std::string(EOMGEN_EXECUTABLE) + "' " + arguments + "\" /dev/null > '" + terminal + "' 2>&1");
+  std::string shown = read_file(terminal);
+  EXPECT_NE(shown.find("slow_swelling.toml: forming "), std::string::npos) << shown;
+  EXPECT_NE(shown.find(", 2 s (limit 3.5 s, --max-seconds)"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("the derivation ran past its limit of 3.5 s"), std::string::npos) << shown;
+  CommandOutput piped = run_eomgen(arguments);
+  EXPECT_EQ(piped.status, 2);
+  EXPECT_EQ(piped.err.find(" s (limit 3.5 s"), std::string::npos) << piped.err;
+  EXPECT_EQ(derivation_progress_line("arm.toml", "the first integrals", 12.7, 0), "eomgen: arm.toml: forming the first integrals, 12 s");
 }
 
 TEST(HostileInput, ADerivationPastItsMemoryLimitStopsWithExitTwoAndWritesNothing) {
