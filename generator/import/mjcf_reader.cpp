@@ -287,7 +287,7 @@ void read_actuators(const mjModel* m, Robot& r) {
 }
 
 // the text of a URDF file, or nothing for another file
-std::string urdf_text_of(const std::string& path) { return is_urdf_path(path) ? text_of_file(path) : ""; }
+std::string urdf_text_of(const std::string& path) { return is_urdf_file(path) ? text_of_file(path) : ""; }
 
 // a URDF joint's <mimic>, which MuJoCo's reader ignores, as the coupling q = m q_K + o (a joint that
 // follows the other's coordinate, joint_followers.hpp, or a holonomic constraint, as an MJCF equality
@@ -337,6 +337,8 @@ void note_stated_inertias(const std::string& urdf, Robot& r) {
 }
 
 }  // namespace
+
+bool is_urdf_file(const std::string& path) { return is_urdf_path(path) || has_robot_root(text_of_file(path)); }
 
 std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10); }
 

@@ -17,4 +17,8 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, b
 /// The MuJoCo that reads the files, e.g. "2.2.2".
 std::string mj_version_text();
 
+/// Whether the file is URDF: named .urdf, or its first element <robot> (a URDF saved as .xml, a
+/// xacro file).
+bool is_urdf_file(const std::string& path);
+
 }  // namespace eomgen

@@ -194,7 +194,8 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
 std::variant<mjModel*, UnreadableRobot> loaded_model(const std::string& path, const std::string& urdf, char* error, int size,
                                                      LeftOut& left_out) {
   if (urdf.empty()) return loaded_mjcf(path, error, size, left_out);
-  if (UrdfTextMistake mistake = urdf_text_mistake(urdf); mistake.line > 0) return UnreadableRobot{mistake.line, mistake.message, ""};
+  if (UrdfTextMistake mistake = urdf_text_mistake(urdf, path); mistake.line > 0)
+    return UnreadableRobot{mistake.line, mistake.message, mistake.hint};
   std::string kept = with_static_links_kept(urdf);
   // the text, or when MuJoCo refuses its massless moving bodies, an inertia with A + B < C or, fusing
   // fixed links, a moment below zero, the text with the mass bounds, balanceinertia or positive

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <filesystem>
 #include <iterator>
 #include <map>
 #include <optional>
@@ -26,7 +27,7 @@ UrdfTextMistake unknown_joint_type(const std::string& urdf) {
     // a <transmission>'s <joint> names a joint and has no type
     if (auto type = attribute(urdf, at, end, "type"); type && std::find(std::begin(types), std::end(types), *type) == std::end(types))
       return {line_of(urdf, at),
-              fmt::format("joint type '{}' is not URDF's: use revolute, continuous, prismatic, fixed, floating or planar", *type)};
+              fmt::format("joint type '{}' is not URDF's: use revolute, continuous, prismatic, fixed, floating or planar", *type), ""};
   }
   return {};
 }
@@ -38,7 +39,7 @@ UrdfTextMistake negative_mass(const std::string& urdf) {
     if (end == std::string::npos) break;
     auto value = attribute(urdf, at, end, "value");
     if (value && std::strtod(value->c_str(), nullptr) < 0)
-      return {line_of(urdf, at), fmt::format("a link's mass is {}: a mass is positive, or 0 for a link that only marks a place", *value)};
+      return {line_of(urdf, at), fmt::format("a link's mass is {}: a mass is positive, or 0 for a link that only marks a place", *value), ""};
   }
   return {};
 }
@@ -56,7 +57,7 @@ UrdfTextMistake cycle(const std::string& urdf) {
     std::string path = "'" + edge.joint + "'", up = edge.parent;
     for (std::size_t steps = 0; steps <= parent_of.size(); ++steps) {
       if (up == link)
-        return {edge.line, fmt::format("the joints {} lead from link '{}' back to itself: a robot's links form a tree", path, link)};
+        return {edge.line, fmt::format("the joints {} lead from link '{}' back to itself: a robot's links form a tree", path, link), ""};
       auto next = parent_of.find(up);
       if (next == parent_of.end()) break;
       path += ", '" + next->second.joint + "'";
@@ -64,6 +65,27 @@ UrdfTextMistake cycle(const std::string& urdf) {
     }
   }
   return {};
+}
+
+// where `needle` first stands outside the text's comments, or npos
+std::size_t find_outside_comments(const std::string& text, const std::string& needle) {
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) {
+    std::size_t opened = text.rfind("<!--", at);
+    if (opened == std::string::npos || text.find("-->", opened) < at) return at;
+  }
+  return std::string::npos;
+}
+
+// a xacro element or a ${...} expression outside comments: the first of them (xacro's output keeps
+// the namespace declaration and often comments out macros, so neither of those tells)
+UrdfTextMistake xacro_macros(const std::string& urdf, const std::string& file) {
+  std::size_t at = std::min(find_outside_comments(urdf, "<xacro:"), find_outside_comments(urdf, "${"));
+  if (at == std::string::npos) return {};
+  std::string expanded = std::filesystem::path(file).stem().string();
+  if (std::filesystem::path(expanded).extension() == ".urdf") expanded = std::filesystem::path(expanded).stem().string();
+  return {line_of(urdf, at), "the file is xacro, ROS's macro language for URDF (<xacro:property>, ${...}): a URDF reader does not expand it",
+          fmt::format("expand it first with ROS's xacro tool, `xacro {} > {}.urdf`, and import {}.urdf",
+                      std::filesystem::path(file).filename().string(), expanded, expanded)};
 }
 
 // a joint whose parent or child is no <link> of the file (MuJoCo says "URDF joint parent or child
@@ -75,7 +97,7 @@ UrdfTextMistake missing_link(const std::string& urdf) {
   for (const UrdfJoint& j : urdf_joints(urdf))
     for (const auto& [role, link] : {std::pair{"parent", j.parent}, std::pair{"child", j.child}})
       if (!link.empty() && !links.count(link))
-        return {j.line, fmt::format("joint '{}' names the {} link '{}', which the file has no <link> of", j.name, role, link)};
+        return {j.line, fmt::format("joint '{}' names the {} link '{}', which the file has no <link> of", j.name, role, link), ""};
   return {};
 }
 
@@ -101,7 +123,8 @@ std::vector<UrdfJoint> urdf_joints(const std::string& urdf) {
   return joints;
 }
 
-UrdfTextMistake urdf_text_mistake(const std::string& urdf) {
+UrdfTextMistake urdf_text_mistake(const std::string& urdf, const std::string& file) {
+  if (UrdfTextMistake m = xacro_macros(urdf, file); m.line > 0) return m;
   for (auto check : {unknown_joint_type, negative_mass, missing_link, cycle})
     if (UrdfTextMistake m = check(urdf); m.line > 0) return m;
   return {};
@@ -136,6 +159,21 @@ bool is_urdf_path(const std::string& path) {
   std::string tail = path.substr(path.size() - 5);
   std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return tail == ".urdf";
+}
+
+bool has_robot_root(const std::string& text) {
+  // past the declaration, comments and other <?...?> or <!...> parts
+  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 1)) {
+    if (text.compare(at, 4, "<!--") == 0) {
+      at = text.find("-->", at);
+      if (at == std::string::npos) return false;
+      continue;
+    }
+    if (at + 1 < text.size() && (text[at + 1] == '?' || text[at + 1] == '!')) continue;
+    return text.compare(at, 6, "<robot") == 0 && at + 6 < text.size() &&
+           (std::isspace(static_cast<unsigned char>(text[at + 6])) || text[at + 6] == '>');
+  }
+  return false;
 }
 
 std::string without_mesh_geometry(const std::string& urdf, int& left_out) {

@@ -25,14 +25,16 @@ std::string with_static_links_kept(const std::string& urdf);
 std::string without_mesh_geometry(const std::string& urdf, int& left_out);
 
 /// A mistake MuJoCo 2.2.2's URDF reader does not survive, found in the text before it reads it:
-/// a <joint> whose type is none of URDF's (the reader crashes on it), a negative mass and a cycle of
-/// joints (which it reports without a line, or misnamed). Line and message, or
-/// line 0 when there is none.
+/// xacro's macros (`<xacro:property>`, `${l/2}`: ROS's macro language, which a URDF reader does not
+/// expand), a <joint> whose type is none of URDF's (the reader crashes on it), a negative mass and a
+/// cycle of joints (which it reports without a line, or misnamed). Line and message, or line 0 when
+/// there is none; `file` names the file in a hint.
 struct UrdfTextMistake {
   int line = 0;
   std::string message;
+  std::string hint;  // when MuJoCo's own words would not help
 };
-UrdfTextMistake urdf_text_mistake(const std::string& urdf);
+UrdfTextMistake urdf_text_mistake(const std::string& urdf, const std::string& file);
 
 /// A joint that follows another, <mimic joint="K" multiplier="m" offset="o"/>: q = m q_K + o
 /// (MuJoCo 2.2.2's URDF reader ignores it). `line` is the joint's.
@@ -57,5 +59,9 @@ int urdf_joint_count(const std::string& urdf, const std::string& type);
 
 /// Whether the path names a URDF file (.urdf, any case).
 bool is_urdf_path(const std::string& path);
+
+/// Whether the text's first element is <robot>: URDF, whatever the file is called (MuJoCo's
+/// compiler tells the two apart by it too), a xacro file among them.
+bool has_robot_root(const std::string& text);
 
 }  // namespace eomgen

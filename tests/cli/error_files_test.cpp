@@ -73,13 +73,14 @@ TEST_P(ErrorFile, CorrectedTwinIsAccepted) {
 INSTANTIATE_TEST_SUITE_P(EveryFile, ErrorFile, ::testing::ValuesIn(error_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
-// tests/errors/robots/NAME.xml or NAME.urdf: a robot file with one mistake and its expected diagnostic in its
+// tests/errors/robots/NAME.xml, NAME.urdf or NAME.xacro: a robot file with one mistake and its expected diagnostic in its
 // second line (`<!-- expect: LINE:COLUMN: message -->`, or `FILE:LINE:COLUMN: message` for a mistake in a
 // file it includes, FILE as the include names it): `eomgen import` exits 2 with it and writes nothing
 std::vector<std::string> robot_error_files() {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(errors_dir + "/robots"))
-    if (entry.path().extension() == ".xml" || entry.path().extension() == ".urdf") names.push_back(entry.path().filename().string());
+    if (entry.path().extension() == ".xml" || entry.path().extension() == ".urdf" || entry.path().extension() == ".xacro")
+      names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }

@@ -44,6 +44,15 @@ TEST(UrdfStaticLinks, TheFilesOwnMujocoSectionKeepsItsSettings) {
   EXPECT_EQ(with_static_links_kept(chosen), chosen) << "the file's own choice stands";
   EXPECT_TRUE(is_urdf_path("a/b/robot.URDF"));
   EXPECT_FALSE(is_urdf_path("robot.xml"));
+  EXPECT_TRUE(has_robot_root("<?xml version=\"1.0\"?>\n<!-- <mujoco> in a comment -->\n<robot name=\"arm\">\n</robot>"));
+  EXPECT_TRUE(has_robot_root("<robot>"));
+  EXPECT_FALSE(has_robot_root("<mujoco model=\"robot\"><robot/></mujoco>"));
+  EXPECT_FALSE(has_robot_root("<robotic_arm/>"));
+  EXPECT_FALSE(has_robot_root("<!-- unclosed comment <robot>"));
+  // xacro's output keeps its namespace and the macros it commented out: URDF all the same
+  EXPECT_EQ(urdf_text_mistake("<robot xmlns:xacro=\"http://www.ros.org/wiki/xacro\" name=\"a\">\n"
+                              "<!-- <xacro:if value=\"${right}\"> --></robot>", "a.urdf").line, 0);
+  EXPECT_EQ(urdf_text_mistake("<robot name=\"a\">\n<!-- c -->\n  <origin xyz=\"0 0 ${l}\"/></robot>", "a.urdf.xacro").line, 3);
 }
 
 // a three-link arm with a heavy fixed flange between its last two joints and a massless tool link
