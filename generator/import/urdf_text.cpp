@@ -84,7 +84,7 @@ UrdfTextMistake xacro_macros(const std::string& urdf, const std::string& file) {
   std::string expanded = std::filesystem::path(file).stem().string();
   if (std::filesystem::path(expanded).extension() == ".urdf") expanded = std::filesystem::path(expanded).stem().string();
   return {line_of(urdf, at), "the file is xacro, ROS's macro language for URDF (<xacro:property>, ${...}): a URDF reader does not expand it",
-          fmt::format("expand it first with ROS's xacro tool, `xacro {} > {}.urdf`, and import {}.urdf",
+          fmt::format("expand it first with ROS's xacro tool, `xacro {} > {}.urdf`, then give eomgen {}.urdf",
                       std::filesystem::path(file).filename().string(), expanded, expanded)};
 }
 

@@ -403,7 +403,7 @@ ModelFile parse_model_text(const std::string& text, const std::string& path, Dia
 ModelFile parse_model_file(const std::string& path, Diagnostics& diagnostics) {
   std::error_code error;
   std::string extension = std::filesystem::path(path).extension().string();
-  if ((extension == ".xml" || extension == ".urdf") && std::filesystem::is_regular_file(path, error)) {
+  if ((extension == ".xml" || extension == ".urdf" || extension == ".xacro") && std::filesystem::is_regular_file(path, error)) {
     std::optional<std::string> text = imported_model_text(path, diagnostics);
     return text ? parse_model_text(*text, path, diagnostics) : ModelFile{};
   }
