@@ -293,6 +293,7 @@ class Gradient {
       root.A.push_back(six(A_[0][c]));
     }
     for (std::size_t d = 0; d < l.directions.size(); ++d) {
+      if (translates_the_tree(d)) continue;
       root.coordinate.push_back(l.directions[d].coordinate);
       root.twist.push_back(six(twist_[0][d]));
       root.dS.push_back(six(dS_[0][d]));
@@ -302,6 +303,22 @@ class Gradient {
   }
 
  private:
+  // A direction of the first link's joint that slides the whole tree without turning it, T = (0, t)
+  // with Ψ' = Ψ'' = 0 (a free joint's position): every pair term of it vanishes, the rows that turn
+  // with a link taking Ψ''·I S + Ψ'·Bᵀ S = 0 and the root's rows that keep its parent's axes, S =
+  // (0, s), taking S·G = S·(T ×* F) = (0, s)·(t × f, 0) = 0 (uniform gravity does not see where the
+  // tree is), so its column stays zero and the loops leave it out
+  bool translates_the_tree(std::size_t d) const {
+    auto zero = [](const Vector3& x) {
+      return x[0].expand().is_zero() && x[1].expand().is_zero() && x[2].expand().is_zero();
+    };
+    const TreeLink& l = links_[0];
+    for (std::size_t c = 0; c < l.columns.size(); ++c)
+      if (!l.columns[c].turns_with_link && !zero(S_[0][c].top)) return false;
+    return l.parent < 0 && zero(twist_[0][d].top) && zero(dS_[0][d].top) && zero(dS_[0][d].bottom) && zero(ddS_[0][d].top) &&
+           zero(ddS_[0][d].bottom);
+  }
+
   // A root hinge about gravity's direction (about any axis without gravity) or a root slide moves
   // its subtree as one rigid body, and uniform gravity does not see that motion: the bodies'
   // Lagrangian does not depend on its coordinate, which is cyclic for their forces (∂τ/∂q = 0), and
