@@ -75,8 +75,11 @@ int generate_header(const std::string& model_path, const std::string& directory,
     choice.variant = variant, choice.forward_dynamics = forward_dynamics;
     Derivation d = derive_model_file_for(model_path, choice);
     if (report_diagnostics(d.diagnostics, model_path)) return exit_user_error;
-    derivation_stage("the C++ header (common subexpressions, printing)");
-    text = emit_cpp_header(*d.equations), name = d.equations->model_name;
+    {
+      DerivationDeadline writing(model_path, false);  // its progress only: the limits are the derivation's
+      derivation_stage("the C++ header (common subexpressions, printing)");
+      text = emit_cpp_header(*d.equations), name = d.equations->model_name;
+    }
     derivation_stage("the header file");
   }
   std::error_code ec;

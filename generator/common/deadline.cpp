@@ -122,14 +122,15 @@ std::string stage_timings() {
   return out;
 }
 
-DerivationDeadline::DerivationDeadline(const std::string& model) : outermost_(depth++ == 0) {
-  double seconds = limit_seconds, gigabytes = limit_gigabytes < 0 ? default_derivation_gigabytes() : limit_gigabytes.load();
-  if (!outermost_ || (!(seconds > 0) && !(gigabytes > 0))) return;
-  stage = "the model";
+DerivationDeadline::DerivationDeadline(const std::string& model, bool limited) : outermost_(depth++ == 0) {
+  double seconds = limited ? limit_seconds.load() : 0;
+  double gigabytes = !limited ? 0 : limit_gigabytes < 0 ? default_derivation_gigabytes() : limit_gigabytes.load();
+  bool terminal = ::isatty(STDERR_FILENO) == 1;
+  if (!outermost_ || (!(seconds > 0) && !(gigabytes > 0) && !terminal)) return;
+  if (limited) stage = "the model";
   active = std::make_unique<Watchdog>();
   Watchdog* w = active.get();
   // a look every 50 ms: time and memory
-  bool terminal = ::isatty(STDERR_FILENO) == 1;
   w->thread = std::thread([w, model, seconds, gigabytes, terminal] {
     auto started = std::chrono::steady_clock::now();
     double shown_at = 0;

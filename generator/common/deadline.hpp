@@ -3,6 +3,7 @@
 /// thread ends the process instead, before the system's out-of-memory killer would, with a
 /// message naming the model, the limit and the stage that was running, and exit status 2.
 /// Nothing has been written then: every output file is written whole, after the derivation.
+/// The same thread shows the progress of a long derivation on a terminal.
 #pragma once
 
 #include <string>
@@ -19,10 +20,11 @@ inline constexpr double default_derivation_seconds = 300;
 void set_derivation_memory_limit(double gigabytes);
 double default_derivation_gigabytes();
 
-/// While one lives (the outermost, when they nest), the derivation of `model` is timed.
+/// While one lives (the outermost, when they nest), the derivation of `model` is timed; with
+/// `limited` false (the header's writing) it only shows its progress.
 class DerivationDeadline {
  public:
-  explicit DerivationDeadline(const std::string& model);
+  explicit DerivationDeadline(const std::string& model, bool limited = true);
   ~DerivationDeadline();
   DerivationDeadline(const DerivationDeadline&) = delete;
   DerivationDeadline& operator=(const DerivationDeadline&) = delete;

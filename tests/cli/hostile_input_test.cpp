@@ -60,8 +60,9 @@ TEST(HostileInput, ADerivationPastItsTimeLimitStopsWithExitTwoAndWritesNothing) 
   EXPECT_EQ(refused.status, 2) << "a negative limit is a usage error";
 }
 
-// From its second second on, a derivation shows what it is forming and for how long, once a second
-// and in place, on a terminal (script(1) gives it one) and nowhere else: a log or a pipe gets none
+// From its second second on, a derivation, and the header's writing, show what they are forming and
+// for how long, once a second and in place, on a terminal (script(1) gives eomgen one) and nowhere
+// else: a log or a pipe gets none
 TEST(HostileInput, ALongDerivationShowsItsProgressOnATerminalOnly) {
   if (run_command("command -v script > /dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give eomgen a terminal";
   // the swelling potential below, stopped by the time limit (by its memory, were a machine 4x as fast)
@@ -78,6 +79,22 @@ TEST(HostileInput, ALongDerivationShowsItsProgressOnATerminalOnly) {
   EXPECT_EQ(piped.status, 2);
   EXPECT_EQ(piped.err.find(" s (limit 3.5 s"), std::string::npos) << piped.err;
   EXPECT_EQ(derivation_progress_line("arm.toml", "the first integrals", 12.7, 0), "eomgen: arm.toml: forming the first integrals, 12 s");
+  // the header's writing shows its progress too, without a limit: 32 nested sines and as many
+  // cosines derive in about two seconds and take four to nine to write
+  auto nested = [](const std::string& function) {
+    std::string text;
+    for (int i = 0; i < 32; ++i) text += function + "(";
+    return text + "phi*der(phi)" + std::string(32, ')');
+  };
+  std::string sines = pendulum_with("[energy]\n", "[energy]\nkinetic = \"" + nested("sin") + "^2 + " + nested("cos") + "^2\"\n",
+                                    "slow_header");
+  std::string writing = temporary_directory() + "/writing";
+  run_command("script -qec \"'" + std::string(EOMGEN_EXECUTABLE) + "' generate '" + sines + "' -o '" + temporary_directory() +
+              "'\" /dev/null > '" + writing + "' 2>&1");
+  std::string written = read_file(writing);
+  EXPECT_NE(written.find("slow_header.toml: forming the C++ header (common subexpressions, printing), 2 s"), std::string::npos)
+      << written;
+  EXPECT_NE(written.find("eomgen: generated "), std::string::npos) << written;
 }
 
 TEST(HostileInput, ADerivationPastItsMemoryLimitStopsWithExitTwoAndWritesNothing) {
