@@ -436,8 +436,8 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, b
                           "", "", 0});
   if (RoundingNoise noise = without_rounding_noise(r); noise.numbers > 0)
     r.notes.push_back(fmt::format("{} number(s) at the size of double rounding taken as zero (up to {:.2g} units of rounding of "
-                                  "their scale: a unit axis's or quaternion's length, the robot's size, a body's mass times its "
-                                  "square), such as cos(π/2) printed as 6.12323e-17 in a joint axis",
+                                  "their scale: a unit axis's or quaternion's length, the robot's size, a body's mass times the size "
+                                  "squared), such as cos(π/2) printed as 6.12323e-17 in a joint axis",
                                   noise.numbers, noise.largest));
   note_losses(m, r);
   return r;

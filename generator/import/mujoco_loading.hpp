@@ -44,7 +44,7 @@ struct LeftOut {
   std::vector<int> mesh_sized_geoms;     // geoms that a placeholder sized: not drawn
   bool mass_bounds = false;              // read with massless_bodies.hpp's bounds
   bool balanced_inertias = false;        // a URDF read with balanceinertia (unbalanced_inertias.hpp)
-  bool positive_moments = false;         // a URDF read with its negative moments' links restated (the same)
+  bool positive_moments = false;         // a URDF read with its links of moments not above zero restated (the same)
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
 };
 

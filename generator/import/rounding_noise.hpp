@@ -12,8 +12,6 @@
 /// Turns by a right angle are then written exactly by import/right_angles.hpp.
 #pragma once
 
-#include <string>
-
 #include "import/robot.hpp"
 
 namespace eomgen {

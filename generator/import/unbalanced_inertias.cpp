@@ -8,8 +8,8 @@
 #include <set>
 
 #include <Eigen/Eigenvalues>
-#include <fmt/format.h>
 #include <Eigen/Geometry>
+#include <fmt/format.h>
 
 #include "import/urdf_text.hpp"
 #include "import/xml_text.hpp"
