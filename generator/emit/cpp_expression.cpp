@@ -1,9 +1,12 @@
 #include "emit/cpp_expression.hpp"
 
 #include "emit/cpp_constant.hpp"
+#include "symbolic/exact_double.hpp"
 #include "symbolic/decimal_numbers.hpp"
 
 #include <algorithm>
+#include <cfloat>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
@@ -95,6 +98,29 @@ class CppPrinter {
     return {out, k == 1 ? 4 : 2};
   }
 
+  // A product's numeric factor beyond double's range, 1e310 × (1e-300 x + 2e-302 y): 17-digit
+  // constants multiplied many times over (a robot file's turns of π/2 to 12 digits, 1e-13 off
+  // their right angles, composed down a tree) leave terms of 1e-300 whose common factor GiNaC
+  // takes out. Multiplied into a sum it stands with, the terms are numbers double holds.
+  static bool beyond_double(const GiNaC::numeric& c) {
+    static const GiNaC::numeric largest = exact_rational(DBL_MAX), smallest = exact_rational(DBL_MIN);
+    GiNaC::numeric size = GiNaC::abs(c);
+    return size > largest || (!size.is_zero() && size < smallest);
+  }
+  // (printed as two factors: GiNaC, given the product back, would take the factor out again)
+  std::optional<Code> coefficient_into_a_sum(const ex& e, const GiNaC::numeric& coefficient) const {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (!GiNaC::is_a<GiNaC::add>(e.op(i))) continue;
+      ex rest = 1;
+      for (std::size_t j = 0; j < e.nops(); ++j)
+        if (j != i && !GiNaC::is_a<GiNaC::numeric>(e.op(j))) rest *= e.op(j);
+      Code scaled = print((coefficient * e.op(i)).expand());
+      if (rest.is_equal(1)) return scaled;
+      return Code{wrap(print(rest), 2) + "*" + wrap(scaled, 2), 2};
+    }
+    return std::nullopt;
+  }
+
   // a sum inside a product is written with its first term positive (GiNaC's choice of sign
   // there follows an order that changes between processes); the sum's text, with the sign it
   // moved into `coefficient`. Printed here rather than rebuilt as (−s)^k: GiNaC would take
@@ -110,6 +136,8 @@ class CppPrinter {
     GiNaC::numeric coefficient = 1;
     for (std::size_t i = 0; i < e.nops(); ++i)
       if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) coefficient *= GiNaC::ex_to<GiNaC::numeric>(e.op(i));
+    if (beyond_double(coefficient))
+      if (std::optional<Code> within = coefficient_into_a_sum(e, coefficient)) return *within;
     std::vector<std::string> numerator, denominator;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       if (GiNaC::is_a<GiNaC::numeric>(e.op(i))) continue;

@@ -38,6 +38,20 @@ TEST(CppExpression, AProductInADenominatorIsWrapped) {
 }
 
 numeric power_of_two(int k) { return GiNaC::pow(numeric(2), numeric(k)); }
+
+// a product's numeric factor beyond double's range times a sum of terms far below it (Kinova's
+// floating arm, whose turns of pi/2 to 12 digits composed into terms of 1e-300, stopped the header
+// with "the number inf is beyond the range of double") is written multiplied into the sum
+TEST(CppExpression, AFactorBeyondDoublesRangeGoesIntoTheSumItMultiplies) {
+  GiNaC::symbol x("x"), a("a"), b("b");
+  auto name = [](const GiNaC::symbol& s) { return s.get_name(); };
+  GiNaC::ex tiny_terms = power_of_two(-1100) * (3 * a) + power_of_two(-1101) * b;
+  GiNaC::ex huge = power_of_two(1100) * x * tiny_terms, small = power_of_two(-1100) * x * (power_of_two(1100) * a + b);
+  ASSERT_TRUE(GiNaC::is_a<GiNaC::mul>(huge)) << huge;
+  EXPECT_EQ(cpp_expression(huge, name), cpp_expression(x * (3 * a + b / 2), name));
+  EXPECT_EQ(cpp_expression(small, name), cpp_expression(x * (a + power_of_two(-1100) * b), name));
+  EXPECT_THROW(cpp_expression(power_of_two(1100) * x, name), std::domain_error) << "no sum to take it: beyond double indeed";
+}
 numeric decimal(const char* digits, int exponent) { return numeric(digits) * GiNaC::pow(numeric(10), numeric(exponent)); }
 
 TEST(CppConstant, SmallIntegersAndFractionsStayIntegerLiterals) {
