@@ -197,12 +197,12 @@ inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const 
   const T k_top_tN0_z = (T(1)/T(50))*k_top_tB0F0_y - (T(3)/T(100))*k_top_tB0F0_x - k_top_tB0Iw0_x*s_wy + k_top_tB0Iw0_y*s_wx;
   M[0] = k_top_tJxx;
   M[1] = k_top_tJxy;
-  M[3] = M[1];
+  M[3] = k_top_tJxy;
   M[2] = k_top_tJxz;
-  M[6] = M[2];
+  M[6] = k_top_tJxz;
   M[4] = k_top_tJyy;
   M[5] = k_top_tJyz;
-  M[7] = M[5];
+  M[7] = k_top_tJyz;
   M[8] = k_top_tJzz;
   f[0] = -k_top_tN0_x;
   f[1] = -k_top_tN0_y;

@@ -221,12 +221,12 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_Iyy = p[2];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_Iyy;
 }
 
@@ -298,12 +298,12 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_Iyy;
   T ddq[3];
   ddq[0] = -dq_x*dq_x*p_cw + u_F;
@@ -355,12 +355,12 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_Iyy;
   T ddq[3];
   ddq[0] = -dq_x*dq_x*p_cw + u_F;
@@ -425,12 +425,12 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_Iyy;
   T L[9];
   T D[3];

@@ -216,15 +216,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
+  M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
+  const T sym_M2 = p_C*sin_q_beta;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = p_A;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_C;
-  M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
-  M[2] = p_C*sin_q_beta;
-  M[6] = M[2];
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -275,12 +276,13 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[9];
   M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
   M[1] = T(0);
-  M[3] = M[1];
-  M[2] = p_C*sin_q_beta;
-  M[6] = M[2];
+  M[3] = T(0);
+  const T sym_M2 = p_C*sin_q_beta;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = p_A;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_C;
   T ddq[3];
   ddq[0] = -T(2)*c0*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - cos_q_beta*dq_beta*dq_gamma*p_C;
@@ -321,12 +323,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = cos_q_beta*cos_q_beta*p_A + p_C*sin_q_beta*sin_q_beta;
   M[1] = T(0);
-  M[3] = M[1];
-  M[2] = p_C*sin_q_beta;
-  M[6] = M[2];
+  M[3] = T(0);
+  const T sym_M2 = p_C*sin_q_beta;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = p_A;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_C;
   T ddq[3];
   ddq[0] = -T(2)*c0*cos_q_beta*dq_alpha*dq_beta*sin_q_beta - cos_q_beta*dq_beta*dq_gamma*p_C;

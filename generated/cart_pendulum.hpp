@@ -205,8 +205,9 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T cos_q_theta = trig_cos[0];
   M[0] = p_m + p_mc;
-  M[1] = cos_q_theta*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = cos_q_theta*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
 }
 
@@ -254,8 +255,9 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T cos_q_theta = trig_cos[0];
   T M[4];
   M[0] = p_m + p_mc;
-  M[1] = cos_q_theta*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = cos_q_theta*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
   T ddq[2];
   ddq[0] = dq_theta*dq_theta*p_l*p_m*sin_q_theta + u_F;
@@ -292,8 +294,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T cos_q_theta = trig_cos[0];
   T M[4];
   M[0] = p_m + p_mc;
-  M[1] = cos_q_theta*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = cos_q_theta*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
   T ddq[2];
   ddq[0] = dq_theta*dq_theta*p_l*p_m*sin_q_theta + u_F;
@@ -340,8 +343,9 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T cos_q_theta = trig_cos[0];
   T M[4];
   M[0] = p_m + p_mc;
-  M[1] = cos_q_theta*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = cos_q_theta*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
   T L[4];
   T D[2];

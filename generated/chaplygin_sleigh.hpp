@@ -197,7 +197,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_a = p[2];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_J + p_a*p_a*p_m;
 }
 
@@ -236,7 +236,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_J + p_a*p_a*p_m;
   T ddq[2];
   ddq[0] = p_a*p_m*s_w*s_w;
@@ -274,7 +274,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_J + p_a*p_a*p_m;
   T ddq[2];
   ddq[0] = p_a*p_m*s_w*s_w;

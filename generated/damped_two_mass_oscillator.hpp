@@ -131,7 +131,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_m2 = p[2];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
 }
 
@@ -176,7 +176,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T ddq[2];
   ddq[0] = -(p_k1 + p_k2)*q_x1 - c0 - c1 - c2 + u_F;
@@ -212,7 +212,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T ddq[2];
   ddq[0] = -(p_k1 + p_k2)*q_x1 - c0 - c1 - c2 + u_F;
@@ -251,7 +251,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T L[4];
   T D[2];

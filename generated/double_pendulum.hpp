@@ -211,8 +211,9 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
   M[0] = (p_m1 + p_m2)*p_l1*p_l1;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l2*p_l2*p_m2;
 }
 
@@ -275,8 +276,9 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T c5 = cos_q_phi1*sin_q_phi2 - cos_q_phi2*sin_q_phi1;
   T M[4];
   M[0] = c0*p_l1*p_l1;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l2*p_l2*p_m2;
   T ddq[2];
   ddq[0] = -c0*p_g*p_l1*sin_q_phi1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
@@ -320,8 +322,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c5 = cos_q_phi1*sin_q_phi2 - cos_q_phi2*sin_q_phi1;
   T M[4];
   M[0] = c0*p_l1*p_l1;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l2*p_l2*p_m2;
   T ddq[2];
   ddq[0] = -c0*p_g*p_l1*sin_q_phi1 + c5*dq_phi2*dq_phi2*p_l1*p_l2*p_m2 + u_tau;
@@ -378,8 +381,9 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T cos_q_phi2 = trig_cos[1];
   T M[4];
   M[0] = (p_m1 + p_m2)*p_l1*p_l1;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l1*p_l2*p_m2;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l2*p_l2*p_m2;
   T L[4];
   T D[2];

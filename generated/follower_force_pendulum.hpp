@@ -208,8 +208,9 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T sin_q_phi2 = trig_sin[1];
   const T cos_q_phi2 = trig_cos[1];
   M[0] = T(3)*p_l*p_l*p_m;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
 }
 
@@ -269,8 +270,9 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   const T c5 = -p_c*q_phi2;
   T M[4];
   M[0] = T(3)*p_l*p_l*p_m;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
   T ddq[2];
   ddq[0] = -T(2)*p_c*q_phi1 + c4*dq_phi2*dq_phi2*p_l*p_l*p_m - c4*p_P*p_l - c5;
@@ -312,8 +314,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T c5 = -p_c*q_phi2;
   T M[4];
   M[0] = T(3)*p_l*p_l*p_m;
-  M[1] = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l*p_l*p_m;
-  M[2] = M[1];
+  const T sym_M1 = (cos_q_phi1*cos_q_phi2 + sin_q_phi1*sin_q_phi2)*p_l*p_l*p_m;
+  M[1] = sym_M1;
+  M[2] = sym_M1;
   M[3] = p_l*p_l*p_m;
   T ddq[2];
   ddq[0] = -T(2)*p_c*q_phi1 + c4*dq_phi2*dq_phi2*p_l*p_l*p_m - c4*p_P*p_l - c5;

@@ -386,12 +386,13 @@ inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const 
   const T k_forearm_tN0_z = -(T(1)/T(100))*k_forearm_tB0F0_y + (T(1)/T(100))*k_left_tFp0_y - (T(1)/T(20))*k_right_tFp0_y + (T(1)/T(5000))*k_forearm_tal0_x - (T(3)/T(10))*k_left_tFp0_x - (T(3)/T(10))*k_right_tFp0_x - (T(3)/T(20))*k_forearm_tB0F0_x - k_forearm_tB0Iw0_x*k_forearm_twp_y + k_forearm_tB0Iw0_y*k_forearm_twp_x + k_left_tN0_z + k_right_tN0_z;
   M[0] = T(33)/T(2500) + k_upper_tJzz;
   M[1] = k_upper_tL1_z;
-  M[3] = M[1];
+  M[3] = k_upper_tL1_z;
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = k_forearm_tJzz;
-  M[5] = k_forearm_tL2_left_z + k_forearm_tL2_right_z;
-  M[7] = M[5];
+  const T sym_M5 = k_forearm_tL2_left_z + k_forearm_tL2_right_z;
+  M[5] = sym_M5;
+  M[7] = sym_M5;
   M[8] = T(66673)/T(12500000);
   f[0] = (T(1)/T(25))*k_counterweight_tB0F0_z - (T(2)/T(25))*q_shoulder - k_upper_tN0_z;
   f[1] = -(T(3)/T(10))*dq_elbow - k_forearm_tN0_z;

@@ -221,16 +221,17 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  M[1] = T(0);
-  M[3] = M[1];
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = p_C;
-  M[2] = cos_q_theta*p_C;
-  M[6] = M[2];
   const T c1 = p_A + p_m*p_s*p_s;
   M[0] = c1*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*p_C;
+  M[1] = T(0);
+  M[3] = T(0);
+  const T sym_M2 = cos_q_theta*p_C;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = c1;
+  M[5] = T(0);
+  M[7] = T(0);
+  M[8] = p_C;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -289,12 +290,13 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[9];
   M[0] = c2*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*p_C;
   M[1] = T(0);
-  M[3] = M[1];
-  M[2] = cos_q_theta*p_C;
-  M[6] = M[2];
+  M[3] = T(0);
+  const T sym_M2 = cos_q_theta*p_C;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = c2;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_C;
   T ddq[3];
   ddq[0] = -T(2)*c4*cos_q_theta*dq_psi*dq_theta*sin_q_theta + dq_phi*dq_theta*p_C*sin_q_theta;
@@ -340,12 +342,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = c2*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*p_C;
   M[1] = T(0);
-  M[3] = M[1];
-  M[2] = cos_q_theta*p_C;
-  M[6] = M[2];
+  M[3] = T(0);
+  const T sym_M2 = cos_q_theta*p_C;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = c2;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_C;
   T ddq[3];
   ddq[0] = -T(2)*c4*cos_q_theta*dq_psi*dq_theta*sin_q_theta + dq_phi*dq_theta*p_C*sin_q_theta;

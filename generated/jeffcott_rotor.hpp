@@ -129,7 +129,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_m = p[0];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m;
 }
 
@@ -168,7 +168,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m;
   T ddq[2];
   ddq[0] = T(2)*dq_eta*p_Omega*p_m + c0*q_xi - dq_xi*p_d;
@@ -200,7 +200,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m;
   T ddq[2];
   ddq[0] = T(2)*dq_eta*p_Omega*p_m + c0*q_xi - dq_xi*p_d;

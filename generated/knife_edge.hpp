@@ -195,7 +195,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_J = p[1];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_J;
 }
 
@@ -229,7 +229,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_J;
   T ddq[2];
   ddq[0] = T(0);
@@ -265,7 +265,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_J;
   T ddq[2];
   ddq[0] = T(0);

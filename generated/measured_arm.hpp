@@ -378,12 +378,12 @@ inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const 
   const T k_link1_tN0_z = -cos_q_q2*k_link2_tN0_y + n41*k_link1_tB0F0_x + n42*k_link1_tB0F0_y - k_link2_tN0_x*sin_q_q2;
   M[0] = k_link1_tJzz;
   M[1] = k_link1_tL1_z;
-  M[3] = M[1];
+  M[3] = k_link1_tL1_z;
   M[2] = k_link1_tL2_z;
-  M[6] = M[2];
+  M[6] = k_link1_tL2_z;
   M[4] = k_link2_tJzz;
   M[5] = k_link2_tL2_z;
-  M[7] = M[5];
+  M[7] = k_link2_tL2_z;
   M[8] = n31;
   f[0] = -n43*dq_q1 - k_link1_tN0_z + u_tau1;
   f[1] = -n43*dq_q2 - k_link2_tN0_z + u_tau2;

@@ -189,7 +189,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_m = p[0];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m;
 }
 
@@ -327,7 +327,7 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m;
   T ddq[2];
   ddq[0] = T(0);
@@ -383,7 +383,7 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   T M[4];
   M[0] = p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m;
   T ddq[2];
   ddq[0] = T(0);

@@ -207,16 +207,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
   const T p_m = p[0];
   const T p_R = p[1];
-  M[1] = T(0);
-  M[3] = M[1];
-  M[2] = T(0);
-  M[6] = M[2];
-  M[5] = T(0);
-  M[7] = M[5];
-  M[8] = (T(2)/T(5))*p_R*p_R*p_m;
   const T c0 = (T(7)/T(5))*p_R*p_R*p_m;
   M[0] = c0;
+  M[1] = T(0);
+  M[3] = T(0);
+  M[2] = T(0);
+  M[6] = T(0);
   M[4] = c0;
+  M[5] = T(0);
+  M[7] = T(0);
+  M[8] = (T(2)/T(5))*p_R*p_R*p_m;
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -255,12 +255,12 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[9];
   M[0] = c0;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = c0;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = (T(2)/T(5))*p_R*p_R*p_m;
   T ddq[3];
   ddq[0] = T(0);
@@ -307,12 +307,12 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = c0;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = c0;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = (T(2)/T(5))*p_R*p_R*p_m;
   T ddq[3];
   ddq[0] = T(0);

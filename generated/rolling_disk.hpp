@@ -216,15 +216,16 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   T trig_sin[1], trig_cos[1];
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T cos_q_theta = trig_cos[0];
+  M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*cos_q_theta*cos_q_theta*p_R*p_R*p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
+  const T sym_M2 = (T(3)/T(2))*cos_q_theta*p_R*p_R*p_m;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = (T(5)/T(4))*p_R*p_R*p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = (T(3)/T(2))*p_R*p_R*p_m;
-  M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*cos_q_theta*cos_q_theta*p_R*p_R*p_m;
-  M[2] = (T(3)/T(2))*cos_q_theta*p_R*p_R*p_m;
-  M[6] = M[2];
 }
 
 /// Forcing f(q, q', u, t) of M q'' = f: applied, gravity, dissipative and velocity terms.
@@ -278,12 +279,13 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[9];
   M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*cos_q_theta*cos_q_theta*p_R*p_R*p_m;
   M[1] = T(0);
-  M[3] = M[1];
-  M[2] = (T(3)/T(2))*cos_q_theta*p_R*p_R*p_m;
-  M[6] = M[2];
+  M[3] = T(0);
+  const T sym_M2 = (T(3)/T(2))*cos_q_theta*p_R*p_R*p_m;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = (T(5)/T(4))*p_R*p_R*p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = (T(3)/T(2))*p_R*p_R*p_m;
   T ddq[3];
   ddq[0] = (T(1)/T(2))*dq_phi*dq_theta*p_R*p_R*p_m*sin_q_theta + (T(5)/T(2))*cos_q_theta*dq_psi*dq_theta*p_R*p_R*p_m*sin_q_theta;
@@ -329,12 +331,13 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = (T(1)/T(4))*p_R*p_R*p_m + (T(5)/T(4))*cos_q_theta*cos_q_theta*p_R*p_R*p_m;
   M[1] = T(0);
-  M[3] = M[1];
-  M[2] = (T(3)/T(2))*cos_q_theta*p_R*p_R*p_m;
-  M[6] = M[2];
+  M[3] = T(0);
+  const T sym_M2 = (T(3)/T(2))*cos_q_theta*p_R*p_R*p_m;
+  M[2] = sym_M2;
+  M[6] = sym_M2;
   M[4] = (T(5)/T(4))*p_R*p_R*p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = (T(3)/T(2))*p_R*p_R*p_m;
   T ddq[3];
   ddq[0] = (T(1)/T(2))*dq_phi*dq_theta*p_R*p_R*p_m*sin_q_theta + (T(5)/T(2))*cos_q_theta*dq_psi*dq_theta*p_R*p_R*p_m*sin_q_theta;

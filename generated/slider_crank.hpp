@@ -288,13 +288,14 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T sin_q_beta = trig_sin[1];
   const T cos_q_beta = trig_cos[1];
   M[0] = (T(1)/T(3))*(T(3)*p_m2 + p_m1)*p_r*p_r;
-  M[1] = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
-  M[3] = M[1];
+  const T sym_M1 = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
+  M[1] = sym_M1;
+  M[3] = sym_M1;
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = (T(1)/T(3))*p_l*p_l*p_m2;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_m3;
 }
 
@@ -556,13 +557,14 @@ void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, inpu
   const T c6 = cos_q_beta*p_l;
   T M[9];
   M[0] = (T(1)/T(3))*(T(3)*p_m2 + p_m1)*p_r*p_r;
-  M[1] = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
-  M[3] = M[1];
+  const T sym_M1 = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
+  M[1] = sym_M1;
+  M[3] = sym_M1;
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = (T(1)/T(3))*p_l*p_l*p_m2;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_m3;
   T ddq[3];
   ddq[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*cos_q_phi*p_g*p_r + (T(1)/T(2))*c4*dq_beta*dq_beta*p_l*p_m2*p_r;
@@ -642,13 +644,14 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
   const T c6 = cos_q_beta*p_l;
   T M[9];
   M[0] = (T(1)/T(3))*(T(3)*p_m2 + p_m1)*p_r*p_r;
-  M[1] = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
-  M[3] = M[1];
+  const T sym_M1 = (T(1)/T(2))*(cos_q_beta*cos_q_phi + sin_q_beta*sin_q_phi)*p_l*p_m2*p_r;
+  M[1] = sym_M1;
+  M[3] = sym_M1;
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = (T(1)/T(3))*p_l*p_l*p_m2;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_m3;
   T ddq[3];
   ddq[0] = -(T(1)/T(2))*(T(2)*p_m2 + p_m1)*cos_q_phi*p_g*p_r + (T(1)/T(2))*c4*dq_beta*dq_beta*p_l*p_m2*p_r;

@@ -141,12 +141,12 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_m = p[0];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_m;
 }
 
@@ -180,12 +180,12 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_m;
   T ddq[3];
   ddq[0] = T(2)*dq_y*p_m*p_n + T(3)*p_m*p_n*p_n*q_x;
@@ -217,12 +217,12 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[9];
   M[0] = p_m;
   M[1] = T(0);
-  M[3] = M[1];
+  M[3] = T(0);
   M[2] = T(0);
-  M[6] = M[2];
+  M[6] = T(0);
   M[4] = p_m;
   M[5] = T(0);
-  M[7] = M[5];
+  M[7] = T(0);
   M[8] = p_m;
   T ddq[3];
   ddq[0] = T(2)*dq_y*p_m*p_n + T(3)*p_m*p_n*p_n*q_x;

@@ -204,7 +204,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T sin_q_theta = trig_sin[0];
   M[0] = p_l*p_l*p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_l*p_l*p_m*sin_q_theta*sin_q_theta;
 }
 
@@ -253,7 +253,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_l*p_l*p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_l*p_l*p_m*sin_q_theta*sin_q_theta;
   T ddq[2];
   ddq[0] = cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta - p_g*p_l*p_m*sin_q_theta;
@@ -290,7 +290,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_l*p_l*p_m;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_l*p_l*p_m*sin_q_theta*sin_q_theta;
   T ddq[2];
   ddq[0] = cos_q_theta*dq_phi*dq_phi*p_l*p_l*p_m*sin_q_theta - p_g*p_l*p_m*sin_q_theta;

@@ -194,7 +194,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
   M[0] = T(1);
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = T(1);
 }
 
@@ -242,7 +242,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = T(1);
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = T(1);
   T ddq[2];
   ddq[0] = cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta) - p_g*p_l*p_m*sin_q_theta;
@@ -278,7 +278,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = T(1);
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = T(1);
   T ddq[2];
   ddq[0] = cos_q_theta*s_p_phi*s_p_phi/(p_l*p_l*p_m*sin_q_theta*sin_q_theta*sin_q_theta) - p_g*p_l*p_m*sin_q_theta;

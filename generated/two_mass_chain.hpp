@@ -133,7 +133,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_m2 = p[1];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
 }
 
@@ -180,7 +180,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T ddq[2];
   ddq[0] = -(c0 + p_alpha*p_m1 + p_beta*p_k1)*dq_x1 - (p_k1 + p_k2)*q_x1 + dq_x2*p_beta*p_k2 + p_k2*q_x2;
@@ -216,7 +216,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T ddq[2];
   ddq[0] = -(c0 + p_alpha*p_m1 + p_beta*p_k1)*dq_x1 - (p_k1 + p_k2)*q_x1 + dq_x2*p_beta*p_k2 + p_k2*q_x2;
@@ -255,7 +255,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T L[4];
   T D[2];

@@ -132,7 +132,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_m2 = p[1];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
 }
 
@@ -173,7 +173,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T ddq[2];
   ddq[0] = -(p_d1 + p_d2)*dq_x1 - (p_k1 + p_k2)*q_x1 + dq_x2*p_d2 + p_k2*q_x2;
@@ -207,7 +207,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T ddq[2];
   ddq[0] = -(p_d1 + p_d2)*dq_x1 - (p_k1 + p_k2)*q_x1 + dq_x2*p_d2 + p_k2*q_x2;
@@ -246,7 +246,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_m1;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = p_m2;
   T L[4];
   T D[2];

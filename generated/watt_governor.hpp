@@ -211,7 +211,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T sin_q_theta = trig_sin[0];
   M[0] = T(2)*p_l*p_l*p_m*p_n*p_n*sin_q_theta*sin_q_theta + p_J;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = T(2)*p_l*p_l*p_m;
 }
 
@@ -269,7 +269,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = T(2)*p_l*p_l*p_m*p_n*p_n*sin_q_theta*sin_q_theta + p_J;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = T(2)*p_l*p_l*p_m;
   T ddq[2];
   ddq[0] = -T(4)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta + cos_q_theta*p_kappa - p_P;
@@ -311,7 +311,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = T(2)*p_l*p_l*p_m*p_n*p_n*sin_q_theta*sin_q_theta + p_J;
   M[1] = T(0);
-  M[2] = M[1];
+  M[2] = T(0);
   M[3] = T(2)*p_l*p_l*p_m;
   T ddq[2];
   ddq[0] = -T(4)*cos_q_theta*dq_phi*dq_theta*p_l*p_l*p_m*p_n*p_n*sin_q_theta + cos_q_theta*p_kappa - p_P;

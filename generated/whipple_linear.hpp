@@ -140,7 +140,7 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
   const T p_M22 = p[4];
   M[0] = p_M11;
   M[1] = p_M12;
-  M[2] = M[1];
+  M[2] = p_M12;
   M[3] = p_M22;
 }
 
@@ -196,7 +196,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   T M[4];
   M[0] = p_M11;
   M[1] = p_M12;
-  M[2] = M[1];
+  M[2] = p_M12;
   M[3] = p_M22;
   T ddq[2];
   ddq[0] = -(p_K0_12*p_g + p_K2_12*p_v*p_v)*q_delta - dq_delta*p_C1_12*p_v - p_K0_11*p_g*q_phi + u_T_phi;
@@ -238,7 +238,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_M11;
   M[1] = p_M12;
-  M[2] = M[1];
+  M[2] = p_M12;
   M[3] = p_M22;
   T ddq[2];
   ddq[0] = -(p_K0_12*p_g + p_K2_12*p_v*p_v)*q_delta - dq_delta*p_C1_12*p_v - p_K0_11*p_g*q_phi + u_T_phi;
@@ -278,7 +278,7 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   T M[4];
   M[0] = p_M11;
   M[1] = p_M12;
-  M[2] = M[1];
+  M[2] = p_M12;
   M[3] = p_M22;
   T L[4];
   T D[2];

@@ -363,12 +363,26 @@ std::vector<ex> upper_triangle(const GiNaC::matrix& M, std::size_t n) {
 }
 
 // writes M (n×n, row-major) from its upper triangle into `target`
+// Each entry below the diagonal takes its value as the one above does, never by a load from the
+// entry just stored: in one long block of straight-line code, g++ 12's SLP vectorizer (-O2, -O3)
+// read some copies M[961] = M[741] before the store to M[741], as the zero that filled M, and a
+// floating humanoid's accelerations were 50 % off (alex_psyonic_hands with --free-base; -O1,
+// -fno-tree-slp-vectorize and clang++ gave them right). A copy in a loop after the stores made
+// the 7-joint arm's rhs 10-30 % slower: M then went through memory into the factorization.
 void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target) {
+  auto simple = [](const std::string& code) {
+    return code.find_first_of(" +-*/(") == std::string::npos || (code.rfind("T(", 0) == 0 && code.find(')') + 1 == code.size());
+  };
   std::size_t at = 0;
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t k = j; k < n; ++k, ++at) {
-      w.line(fmt::format("{}[{}] = {};", target, j * n + k, upper[at]));
-      if (k != j) w.line(fmt::format("{}[{}] = {}[{}];", target, k * n + j, target, j * n + k));
+      std::string value = upper[at];
+      if (k != j && !simple(value)) {
+        w.line(fmt::format("const T sym_{}{} = {};", target, j * n + k, value));
+        value = fmt::format("sym_{}{}", target, j * n + k);
+      }
+      w.line(fmt::format("{}[{}] = {};", target, j * n + k, value));
+      if (k != j) w.line(fmt::format("{}[{}] = {};", target, k * n + j, value));
     }
 }
 

@@ -50,14 +50,7 @@ std::string mass_matrix_function(const Equations& e) {
     if (m > 0) w.line(fmt::format("const detail::input_t<T> no_inputs[{}] = {{}};", m));
     w.line(fmt::format("detail::mass_matrix_and_forcing(t, x, {}, p, M, f);", m > 0 ? "no_inputs" : "nullptr"));
   } else {
-    std::vector<std::pair<std::size_t, std::size_t>> entry;
-    for (std::size_t j = 0; j < n; ++j)
-      for (std::size_t k = j; k < n; ++k) entry.emplace_back(j, k);
-    w.assign(upper_triangle(e.mass_matrix, n), [&](std::size_t at, const std::string& code) {
-      auto [j, k] = entry[at];
-      std::string s = fmt::format("M[{}] = {};", j * n + k, code);
-      return j == k ? s : s + fmt::format("\n  M[{}] = M[{}];", k * n + j, j * n + k);
-    });
+    write_symmetric(w, w.batch(upper_triangle(e.mass_matrix, n)), n, "M");
   }
   return function(fmt::format("/// Mass matrix M(q,t) of M q'' = f, symmetric positive definite.\n"
                               "/// x: num_states; p: num_parameters; M: {}x{}, row-major.\n", n, n),
