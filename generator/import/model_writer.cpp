@@ -291,18 +291,19 @@ std::string sum_text(const std::vector<std::string>& terms) {
 std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory,
                                                std::string name, bool free_base) {
   auto read = read_with_mujoco(path, free_base);
+  bool urdf = is_urdf_file(path);  // the file read once more, not at each message
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
     diagnostics.error({failure->file.empty() ? path : failure->file, std::max(failure->line, 1), 1}, "", failure->message,
                       !failure->hint.empty() ? failure->hint
                                              : "MuJoCo " + mj_version_text() + "'s compiler reads the file for eomgen; the file must be " +
-                                                   (is_urdf_file(path) ? "URDF" : "MJCF") + " that it accepts");
+                                                   (urdf ? "URDF" : "MJCF") + " that it accepts");
     return std::nullopt;
   }
   const Robot& robot = std::get<Robot>(read);
   // a robot that nothing moves has no equations of motion: said here, not as an empty [coordinates]
   if (std::all_of(robot.bodies.begin(), robot.bodies.end(), [](const RobotBody& b) { return b.joints.empty(); })) {
     diagnostics.error({path, 1, 1}, "", "no joint of the robot moves: it has no coordinates and no equations of motion",
-                      is_urdf_file(path) ? "a URDF's revolute, continuous, prismatic, planar and floating joints move; "
+                      urdf ? "a URDF's revolute, continuous, prismatic, planar and floating joints move; "
                                            "fixed ones do not; a body that flies (a drone, a satellite) imports with "
                                            "--free-base"
                                          : "an MJCF body moves by a <joint> or <freejoint> in it");
@@ -313,7 +314,7 @@ std::optional<std::string> imported_model_text(const std::string& path, Diagnost
     std::cerr << fmt::format("eomgen: importing {} in memory ({}); `eomgen import` writes it as a model file\n", file, robot.reader);
   // a URDF includes nothing; an MJCF's warnings may be about an element of a file it includes
   std::vector<std::pair<std::string, std::string>> sources =
-      is_urdf_file(path) ? std::vector<std::pair<std::string, std::string>>{{path, text_of_file(path)}} : mjcf_sources(path);
+      urdf ? std::vector<std::pair<std::string, std::string>>{{path, text_of_file(path)}} : mjcf_sources(path);
   for (const std::string& note : robot.notes) std::cerr << fmt::format("eomgen: note: {}: {}\n", file, note);
   for (const RobotWarning& w : robot.warnings) {
     WarningPlace place = warning_place(sources, w);
