@@ -54,6 +54,7 @@ class Tree {
       add_body(r.placement.frame, r.mass, r.placement.local, R.mul(r.inertia).mul(R.transpose()));
     }
     for (std::size_t i = 0; i < links; ++i) place(i);
+    fold_fixed_leaves();
   }
 
   // ω of every link, its bias accelerations, the backward forces: τ at q̈ = `ddq` (zeros: the bias)
@@ -262,6 +263,66 @@ class Tree {
     Vector3 r{0, 0, 0};              // its origin in its parent's coordinates
     std::optional<std::pair<GiNaC::matrix, Vector3>> rest_pose;  // a root hinge's or slide's E and r at q = 0
   };
+
+  // A link without a joint, all of whose links below are folded too, moves rigidly with its parent:
+  // its bodies go to the parent, in the parent's coordinates (c' = E c + r, J' = E J Eᵀ), so that
+  // the recursions do the parent's work once for them, and the link's own quantities, unused, are
+  // never written (a URDF's sensor and tool frames: 826 of the 4,572 operations of TIAGo's M and f)
+  void fold_fixed_leaves() {
+    std::vector<bool> carries_a_joint(links_.size(), false);
+    for (std::size_t i = links_.size(); i-- > 0;) {
+      int p = model_.frame_links[i].parent;
+      const Link& l = links_[i];
+      if (p < 0) continue;
+      if (!l.dofs.empty() || carries_a_joint[i]) {
+        carries_a_joint[std::size_t(p)] = true;
+        continue;
+      }
+      for (const Body& b : bodies_[i]) {
+        Body moved{b.mass, l.r + times(l.E, b.center), l.E.mul(b.inertia).mul(l.E.transpose())};
+        for (unsigned a = 0; a < 3; ++a) {
+          moved.center[a] = moved.center[a].expand();
+          for (unsigned c = 0; c < 3; ++c) moved.inertia(a, c) = moved.inertia(a, c).expand();
+        }
+        bodies_[std::size_t(p)].push_back(moved);
+      }
+      bodies_[i].clear();
+    }
+    for (std::vector<Body>& on_link : bodies_) on_link = as_one_body(on_link);
+  }
+
+  // Bodies of known numbers on one link as the one body they make (mass Σ m, centre Σ m c / Σ m,
+  // inertia Σ J + m (|d|² 1 − d dᵀ) about it, d = c − the centre): the recursion's force and moment
+  // per body are about 40 operations each. Bodies with a parameter among their numbers stay apart,
+  // so that no quotient of parameters is formed on every call.
+  static std::vector<Body> as_one_body(const std::vector<Body>& bodies) {
+    if (bodies.size() < 2) return bodies;
+    ex mass = 0;
+    for (const Body& b : bodies) {
+      bool known = GiNaC::is_a<GiNaC::numeric>(b.mass);
+      for (unsigned a = 0; a < 3; ++a) {
+        known = known && GiNaC::is_a<GiNaC::numeric>(b.center[a]);
+        for (unsigned c = 0; c < 3; ++c) known = known && GiNaC::is_a<GiNaC::numeric>(b.inertia(a, c));
+      }
+      if (!known) return bodies;
+      mass += b.mass;
+    }
+    if (mass.is_zero()) return bodies;
+    Vector3 center{0, 0, 0};
+    for (const Body& b : bodies) center = center + scaled(b.mass / mass, b.center);
+    GiNaC::matrix inertia(3, 3);
+    for (const Body& b : bodies) {
+      Vector3 d = b.center - center;
+      ex dd = dot(d, d);
+      for (unsigned a = 0; a < 3; ++a)
+        for (unsigned c = 0; c < 3; ++c) inertia(a, c) += b.inertia(a, c) + b.mass * ((a == c ? dd : ex(0)) - d[a] * d[c]);
+    }
+    for (unsigned a = 0; a < 3; ++a) {
+      center[a] = center[a].expand();
+      for (unsigned c = 0; c < 3; ++c) inertia(a, c) = inertia(a, c).expand();
+    }
+    return {Body{mass, center, inertia}};
+  }
 
   // a body in frame i, moved to the joint frame's coordinates: c' = Cᵀ(c − o), J' = Cᵀ J C
   void add_body(int frame, const ex& mass, const Vector3& center, const GiNaC::matrix& inertia) {

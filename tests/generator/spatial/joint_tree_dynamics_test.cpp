@@ -111,6 +111,90 @@ TEST(JointTree, RecursionsGiveTheExpandedEquations) {
   expect_expanded_equations(tree, 4);
 }
 
+// A head that pans and tilts, carrying a camera on a turned fixed frame and a lens below that
+// (fixed by its constant placement): both fold into the head's link as one body with its own
+// (joint_tree_dynamics.cpp, fold_fixed_leaves), M and f are still the expanded derivation's, and
+// M and f's code forms nothing of the camera or the lens
+const char* sensor_head = R"toml([model]
+name = "sensor_head"
+
+[parameters]
+g = 9.81
+
+[coordinates]
+pan = 0.3
+tilt = -0.2
+
+[[frames]]
+name = "neck"
+origin = ["0", "0", "0.5"]
+joint = { type = "revolute", axis = ["0", "0", "1"], coordinate = "pan" }
+
+[[frames]]
+name = "head"
+parent = "neck"
+origin = ["0", "0", "0.1"]
+joint = { type = "revolute", axis = ["0", "1", "0"], anchor = ["0.02", "0", "0"], coordinate = "tilt" }
+
+[[frames]]
+name = "camera"
+parent = "head"
+origin = ["0.08", "0.01", "0.05"]
+rotation = "rot_z(0.4)*rot_x(-0.3)"
+joint = { type = "fixed" }
+
+[[frames]]
+name = "lens"
+parent = "camera"
+origin = ["0.03", "0", "0"]
+rotation = "rot_y(0.2)"
+
+[[rigid_bodies]]
+name = "neck_link"
+mass = "1.2"
+frame = "neck"
+center = ["0.01", "0", "0.04"]
+inertia = [["0.004", "0.0002", "0"], ["0.0002", "0.005", "0.0001"], ["0", "0.0001", "0.003"]]
+
+[[rigid_bodies]]
+name = "head_link"
+mass = "0.8"
+frame = "head"
+center = ["0.03", "-0.01", "0.02"]
+inertia = [["0.002", "0.0001", "-0.0002"], ["0.0001", "0.0025", "0.0003"], ["-0.0002", "0.0003", "0.0018"]]
+
+[[rigid_bodies]]
+name = "camera_body"
+mass = "0.15"
+frame = "camera"
+center = ["0.01", "0", "0.02"]
+inertia = [["0.0003", "0.00002", "0"], ["0.00002", "0.0002", "-0.00001"], ["0", "-0.00001", "0.0004"]]
+
+[[particles]]
+name = "glass"
+mass = "0.02"
+frame = "lens"
+position = ["0.005", "0", "0"]
+
+[gravity]
+acceleration = ["0", "0", "-g"]
+)toml";
+
+TEST(JointTree, FixedLeavesFoldIntoTheirJointsLink) {
+  expect_expanded_equations(sensor_head, 2);
+  std::string path = write_file("sensor_head.toml", sensor_head), dir = path.substr(0, path.rfind('/'));
+  CommandOutput r = run_eomgen("generate '" + path + "' -o '" + dir + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::string header = read_file(dir + "/sensor_head.hpp");
+  std::size_t from = header.find("void mass_matrix_and_forcing(");
+  ASSERT_NE(from, std::string::npos);
+  std::string body = header.substr(from, header.find("\n}\n", from) - from);
+  EXPECT_EQ(body.find("k_camera_"), std::string::npos) << body;
+  EXPECT_EQ(body.find("k_lens_"), std::string::npos) << body;
+  EXPECT_EQ(body.find("k_head_tB1"), std::string::npos) << "the head's bodies as one: " << body;
+  EXPECT_NE(body.find("k_head_tB0"), std::string::npos) << body;
+}
+
 // the oblique axis, the slide, the fixed frame and the turned inertias included
 TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
   expect_expanded_derivatives(tree, 4);
