@@ -6,14 +6,14 @@ namespace eomgen {
 
 namespace {
 
-GiNaC::matrix fused_entries(const GiNaC::matrix& m) {
+GiNaC::matrix expanded_entries(const GiNaC::matrix& m) {
   GiNaC::matrix out(m.rows(), m.cols());
   for (unsigned r = 0; r < m.rows(); ++r)
     for (unsigned c = 0; c < m.cols(); ++c) out(r, c) = m(r, c).expand();
   return out;
 }
 
-Vector3 fused_entries(const Vector3& x) { return {x[0].expand(), x[1].expand(), x[2].expand()}; }
+Vector3 expanded_entries(const Vector3& x) { return {x[0].expand(), x[1].expand(), x[2].expand()}; }
 
 GiNaC::matrix unturned() {
   GiNaC::matrix one(3, 3);
@@ -35,8 +35,8 @@ std::vector<TreeLink> with_fixed_links_fused(const std::vector<TreeLink>& links)
     bool keep = l.parent < 0 || !l.columns.empty();
     std::size_t p = l.parent < 0 ? 0 : std::size_t(l.parent);
     // the link's constant placement in its parent's host, before its own joint moves it
-    GiNaC::matrix turn = l.parent < 0 ? l.turn : fused_entries(turn_in_host[p].mul(l.turn));
-    Vector3 offset = l.parent < 0 ? l.offset : fused_entries(origin_in_host[p] + times(turn_in_host[p], l.offset));
+    GiNaC::matrix turn = l.parent < 0 ? l.turn : expanded_entries(turn_in_host[p].mul(l.turn));
+    Vector3 offset = l.parent < 0 ? l.offset : expanded_entries(origin_in_host[p] + times(turn_in_host[p], l.offset));
     if (keep) {
       host[i] = int(out.size());
       TreeLink k = l;
@@ -50,8 +50,8 @@ std::vector<TreeLink> with_fixed_links_fused(const std::vector<TreeLink>& links)
     turn_in_host[i] = turn;
     origin_in_host[i] = offset;
     for (const TreeLink::Body& b : l.bodies) {
-      TreeLink::Body moved{b.mass, fused_entries(offset + times(turn, b.center)),
-                           fused_entries(turn.mul(b.inertia).mul(turn.transpose()))};
+      TreeLink::Body moved{b.mass, expanded_entries(offset + times(turn, b.center)),
+                           expanded_entries(turn.mul(b.inertia).mul(turn.transpose()))};
       out[std::size_t(host[i])].bodies.push_back(moved);
     }
   }
