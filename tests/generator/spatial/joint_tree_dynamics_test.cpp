@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/cpp_header.hpp"
 #include "model/model.hpp"
 #include "parse/model_file.hpp"
 #include "pipeline.hpp"
@@ -182,10 +183,7 @@ acceleration = ["0", "0", "-g"]
 
 TEST(JointTree, FixedLeavesFoldIntoTheirJointsLink) {
   expect_expanded_equations(sensor_head, 2);
-  std::string path = write_file("sensor_head.toml", sensor_head), dir = path.substr(0, path.rfind('/'));
-  CommandOutput r = run_eomgen("generate '" + path + "' -o '" + dir + "'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  std::string header = read_file(dir + "/sensor_head.hpp");
+  std::string header = emit_cpp_header(derive_text(sensor_head));
   std::size_t from = header.find("void mass_matrix_and_forcing(");
   ASSERT_NE(from, std::string::npos);
   std::string body = header.substr(from, header.find("\n}\n", from) - from);
