@@ -49,13 +49,39 @@ std::vector<TreeLink> with_fixed_links_fused(const std::vector<TreeLink>& links)
     host[i] = host[p];
     turn_in_host[i] = turn;
     origin_in_host[i] = offset;
-    for (const TreeLink::Body& b : l.bodies) {
-      TreeLink::Body moved{b.mass, expanded_entries(offset + times(turn, b.center)),
-                           expanded_entries(turn.mul(b.inertia).mul(turn.transpose()))};
-      out[std::size_t(host[i])].bodies.push_back(moved);
-    }
+    for (const TreeLink::Body& b : l.bodies) out[std::size_t(host[i])].bodies.push_back(body_in(b, turn, offset));
   }
   return out;
+}
+
+TreeLink::Body body_in(const TreeLink::Body& body, const GiNaC::matrix& turn, const Vector3& offset) {
+  return {body.mass, expanded_entries(offset + times(turn, body.center)),
+          expanded_entries(turn.mul(body.inertia).mul(turn.transpose()))};
+}
+
+std::vector<TreeLink::Body> as_one_body(const std::vector<TreeLink::Body>& bodies) {
+  if (bodies.size() < 2) return bodies;
+  GiNaC::ex mass = 0;
+  for (const TreeLink::Body& b : bodies) {
+    bool known = GiNaC::is_a<GiNaC::numeric>(b.mass);
+    for (unsigned a = 0; a < 3; ++a) {
+      known = known && GiNaC::is_a<GiNaC::numeric>(b.center[a]);
+      for (unsigned c = 0; c < 3; ++c) known = known && GiNaC::is_a<GiNaC::numeric>(b.inertia(a, c));
+    }
+    if (!known) return bodies;
+    mass += b.mass;
+  }
+  if (mass.is_zero()) return bodies;
+  Vector3 center{0, 0, 0};
+  for (const TreeLink::Body& b : bodies) center = center + scaled(b.mass / mass, b.center);
+  GiNaC::matrix inertia(3, 3);
+  for (const TreeLink::Body& b : bodies) {
+    Vector3 d = b.center - center;
+    GiNaC::ex dd = dot(d, d);
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned c = 0; c < 3; ++c) inertia(a, c) += b.inertia(a, c) + b.mass * ((a == c ? dd : GiNaC::ex(0)) - d[a] * d[c]);
+  }
+  return {TreeLink::Body{mass, expanded_entries(center), expanded_entries(inertia)}};
 }
 
 }  // namespace eomgen

@@ -17,4 +17,14 @@ namespace eomgen {
 /// offset o in the host).
 std::vector<TreeLink> with_fixed_links_fused(const std::vector<TreeLink>& links);
 
+/// A body of a link turned by `turn` and placed at `offset` in another link's coordinates, in
+/// those: centre T c + o, inertia T I Tᵀ.
+TreeLink::Body body_in(const TreeLink::Body& body, const GiNaC::matrix& turn, const Vector3& offset);
+
+/// Bodies of known numbers on one link as the one body they make (mass Σ m, centre Σ m c / Σ m,
+/// inertia Σ J + m (|d|² 1 − d dᵀ) about it, d = c − the centre): the recursions' force and moment
+/// per body are about 40 operations each. Bodies with a parameter among their numbers stay apart,
+/// so that no quotient of parameters is formed on every call.
+std::vector<TreeLink::Body> as_one_body(const std::vector<TreeLink::Body>& bodies);
+
 }  // namespace eomgen

@@ -7,6 +7,7 @@
 #include "kinematics/vector3.hpp"
 #include "model/quaternion.hpp"
 #include "model/recursive_frames.hpp"
+#include "spatial/fixed_links.hpp"
 #include "spatial/joint_frames.hpp"
 #include "spatial/joint_velocities.hpp"
 
@@ -35,11 +36,7 @@ bool moves(const GiNaC::matrix& R, const Symbols& s) {
 GiNaC::matrix identity() { return GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(3)); }
 
 // a body in a frame: mass, centre and inertia about the centre, in the frame's coordinates
-struct Body {
-  ex mass;
-  Vector3 center;
-  GiNaC::matrix inertia{3, 3};
-};
+using Body = TreeLink::Body;
 
 class Tree {
  public:
@@ -240,7 +237,7 @@ class Tree {
           t.directions.push_back(q);
         }
       }
-      for (const Body& b : bodies_[i]) t.bodies.push_back({b.mass, b.center, b.inertia});
+      t.bodies = bodies_[i];
       t.rest_pose = links_[i].rest_pose;
       out.push_back(t);
     }
@@ -278,50 +275,10 @@ class Tree {
         carries_a_joint[std::size_t(p)] = true;
         continue;
       }
-      for (const Body& b : bodies_[i]) {
-        Body moved{b.mass, l.r + times(l.E, b.center), l.E.mul(b.inertia).mul(l.E.transpose())};
-        for (unsigned a = 0; a < 3; ++a) {
-          moved.center[a] = moved.center[a].expand();
-          for (unsigned c = 0; c < 3; ++c) moved.inertia(a, c) = moved.inertia(a, c).expand();
-        }
-        bodies_[std::size_t(p)].push_back(moved);
-      }
+      for (const Body& b : bodies_[i]) bodies_[std::size_t(p)].push_back(body_in(b, l.E, l.r));
       bodies_[i].clear();
     }
     for (std::vector<Body>& on_link : bodies_) on_link = as_one_body(on_link);
-  }
-
-  // Bodies of known numbers on one link as the one body they make (mass Σ m, centre Σ m c / Σ m,
-  // inertia Σ J + m (|d|² 1 − d dᵀ) about it, d = c − the centre): the recursion's force and moment
-  // per body are about 40 operations each. Bodies with a parameter among their numbers stay apart,
-  // so that no quotient of parameters is formed on every call.
-  static std::vector<Body> as_one_body(const std::vector<Body>& bodies) {
-    if (bodies.size() < 2) return bodies;
-    ex mass = 0;
-    for (const Body& b : bodies) {
-      bool known = GiNaC::is_a<GiNaC::numeric>(b.mass);
-      for (unsigned a = 0; a < 3; ++a) {
-        known = known && GiNaC::is_a<GiNaC::numeric>(b.center[a]);
-        for (unsigned c = 0; c < 3; ++c) known = known && GiNaC::is_a<GiNaC::numeric>(b.inertia(a, c));
-      }
-      if (!known) return bodies;
-      mass += b.mass;
-    }
-    if (mass.is_zero()) return bodies;
-    Vector3 center{0, 0, 0};
-    for (const Body& b : bodies) center = center + scaled(b.mass / mass, b.center);
-    GiNaC::matrix inertia(3, 3);
-    for (const Body& b : bodies) {
-      Vector3 d = b.center - center;
-      ex dd = dot(d, d);
-      for (unsigned a = 0; a < 3; ++a)
-        for (unsigned c = 0; c < 3; ++c) inertia(a, c) += b.inertia(a, c) + b.mass * ((a == c ? dd : ex(0)) - d[a] * d[c]);
-    }
-    for (unsigned a = 0; a < 3; ++a) {
-      center[a] = center[a].expand();
-      for (unsigned c = 0; c < 3; ++c) inertia(a, c) = inertia(a, c).expand();
-    }
-    return {Body{mass, center, inertia}};
   }
 
   // a body in frame i, moved to the joint frame's coordinates: c' = Cᵀ(c − o), J' = Cᵀ J C
