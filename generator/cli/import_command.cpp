@@ -1,4 +1,5 @@
-// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME] [--free-base]: a robot description as a model file.
+// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME] [--free-base] [--masses-from-shapes]: a robot
+// description as a model file.
 #include <iostream>
 
 #include <fmt/format.h>
@@ -11,9 +12,9 @@ namespace eomgen::cli {
 
 namespace {
 
-int import_robot(const std::string& file, const std::string& output, const std::string& name, bool free_base) {
+int import_robot(const std::string& file, const std::string& output, const std::string& name, UrdfReading reading) {
   Diagnostics diagnostics;
-  std::optional<std::string> text = imported_model_text(file, diagnostics, false, name, free_base);
+  std::optional<std::string> text = imported_model_text(file, diagnostics, false, name, reading);
   if (report_diagnostics(diagnostics, file)) return exit_user_error;
   if (output.empty()) {
     std::cout << *text;
@@ -43,9 +44,13 @@ Command add_import_command(CLI::App& app) {
   cmd->add_flag("--free-base", *free_base,
                 "URDF: hang the root link from the world by a free joint (position, unit quaternion, angular velocity), "
                 "as a humanoid's or a quadruped's base floats; URDF fixes the root link to the world");
-  return [cmd, file, output, name, free_base]() -> int {
+  auto masses_from_shapes = std::make_shared<bool>(false);
+  cmd->add_flag("--masses-from-shapes", *masses_from_shapes,
+                "URDF: weigh each link without an <inertial> by its <collision> shapes at the density of water, as MuJoCo reads a URDF; "
+                "URDF has such a link massless");
+  return [cmd, file, output, name, free_base, masses_from_shapes]() -> int {
     if (!cmd->parsed()) return -1;
-    return import_robot(*file, *output, *name, *free_base);
+    return import_robot(*file, *output, *name, {*free_base, *masses_from_shapes});
   };
 }
 

@@ -343,20 +343,31 @@ bool is_urdf_file(const std::string& path) { return is_urdf_path(path) || has_ro
 std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10); }
 
 
-std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, bool free_base) {
+std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, UrdfReading reading) {
   char error[1000] = "";
   std::string urdf = urdf_text_of(path);
-  if (free_base && urdf.empty())
+  if (reading.free_base && urdf.empty())
     return UnreadableRobot{1, "--free-base sets a URDF robot's root link free; this file is MJCF",
                            "in MJCF, put <freejoint/> in the root body, and import without --free-base"};
-  if (free_base) {
+  if (reading.masses_from_shapes && urdf.empty())
+    return UnreadableRobot{1, "--masses-from-shapes weighs a URDF's links without <inertial>; this file is MJCF, whose "
+                              "bodies without <inertial> MuJoCo weighs by their geoms already",
+                           "import without --masses-from-shapes"};
+  if (reading.free_base) {
     FreeBase freed = with_free_base(urdf);
     if (!freed.problem.empty()) return UnreadableRobot{freed.line, freed.problem, freed.hint};
     urdf = freed.text;
   }
+  if (!urdf.empty() && !reading.masses_from_shapes) urdf = without_masses_from_geometry(urdf);
   LeftOut left_out;
   auto loaded = loaded_model(path, urdf, error, sizeof error, left_out);
-  if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) return *mistake;
+  if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) {
+    // a joint that moves only links without <inertial>: MuJoCo alone would weigh their shapes
+    if (!urdf.empty() && !reading.masses_from_shapes && mistake->message.find("moves no body with mass") != std::string::npos &&
+        !colliding_links_without_inertial(urdf).empty())
+      mistake->hint += ", or import with --masses-from-shapes to weigh the links without one by their shapes, as MuJoCo does";
+    return *mistake;
+  }
   std::unique_ptr<mjModel, void (*)(mjModel*)> model(std::get<mjModel*>(loaded), mj_deleteModel);
   if (!model) return urdf.empty() ? unreadable_mjcf(error, path) : unreadable_robot(error);
   const mjModel* m = model.get();
@@ -390,6 +401,14 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, b
                                   massless.size(), listed(massless), mj_version_text()));
   }
   if (!urdf.empty()) note_stated_inertias(urdf, r);
+  if (std::vector<std::string> shaped = colliding_links_without_inertial(urdf); !shaped.empty())
+    r.notes.push_back(reading.masses_from_shapes
+                          ? fmt::format("{} link(s) without an <inertial> ({}) weighed by their collision shapes at the density "
+                                        "of water, as MuJoCo {} does (--masses-from-shapes); URDF has them massless",
+                                        shaped.size(), listed(shaped), mj_version_text())
+                          : fmt::format("{} link(s) without an <inertial> but with collision shapes ({}): massless, as URDF "
+                                        "has them (MuJoCo {} would give them the mass of their shapes at the density of water)",
+                                        shaped.size(), listed(shaped), mj_version_text()));
   // the geoms MuJoCo's viewer shows by default (groups 0 to 2), for the animation
   static const char* const geom_types[] = {"plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh"};
   for (int g = 0; g < m->ngeom; ++g) {

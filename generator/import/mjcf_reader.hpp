@@ -10,9 +10,8 @@
 
 namespace eomgen {
 
-/// The robot of an MJCF or URDF file, or why MuJoCo cannot read it; `free_base`: a URDF's root
-/// link hung from the world by a free joint (free_base.hpp).
-std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, bool free_base = false);
+/// The robot of an MJCF or URDF file, or why MuJoCo cannot read it.
+std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, UrdfReading reading = {});
 
 /// The MuJoCo that reads the files, e.g. "2.2.2".
 std::string mj_version_text();

@@ -289,8 +289,8 @@ std::string sum_text(const std::vector<std::string>& terms) {
 }  // namespace
 
 std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory,
-                                               std::string name, bool free_base) {
-  auto read = read_with_mujoco(path, free_base);
+                                               std::string name, UrdfReading reading) {
+  auto read = read_with_mujoco(path, reading);
   bool urdf = is_urdf_file(path);  // the file read once more, not at each message
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {
     diagnostics.error({failure->file.empty() ? path : failure->file, std::max(failure->line, 1), 1}, "", failure->message,

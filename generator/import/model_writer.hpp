@@ -17,10 +17,10 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
 
 /// A robot file (.xml) as model-file text named `name` (default: the robot's or the file's name), its
 /// warnings on standard error, or nothing after a located error in `diagnostics`. What every command
-/// does with a robot file (`in_memory`: saying so) and what `eomgen import` writes; `free_base`: a
-/// URDF's root link set free (import/free_base.hpp).
+/// does with a robot file (`in_memory`: saying so) and what `eomgen import` writes; `reading`: how
+/// a URDF is read (import/mjcf_reader.hpp).
 std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory = true,
-                                               std::string name = {}, bool free_base = false);
+                                               std::string name = {}, UrdfReading reading = {});
 
 /// `text` made a C++ identifier: other characters become _, a leading digit gets a _ before it.
 std::string identifier_of(const std::string& text);

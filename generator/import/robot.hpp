@@ -139,4 +139,12 @@ struct Robot {
   std::vector<std::string> notes;      // how the file was read where that is not plain (carried nonetheless)
 };
 
+/// How a URDF is read: its root link hung from the world by a free joint (free_base.hpp), and its
+/// links without an <inertial> weighed by their shapes as MuJoCo weighs them, where URDF has them
+/// massless (urdf_text.hpp's without_masses_from_geometry): read_with_mujoco() takes it.
+struct UrdfReading {
+  bool free_base = false;
+  bool masses_from_shapes = false;
+};
+
 }  // namespace eomgen

@@ -203,4 +203,22 @@ std::string with_static_links_kept(const std::string& urdf) {
   return with_compiler_attributes(urdf, " fusestatic=\"false\"", {"fusestatic"});
 }
 
+std::string without_masses_from_geometry(const std::string& urdf) {
+  if (element_start(urdf, "robot") == std::string::npos) return urdf;
+  return with_compiler_attributes(urdf, " inertiafromgeom=\"false\"", {"inertiafromgeom"});
+}
+
+std::vector<std::string> colliding_links_without_inertial(const std::string& urdf) {
+  std::vector<std::string> links;
+  for (std::size_t at = element_start(urdf, "link"); at != std::string::npos; at = element_start(urdf, "link", at + 1)) {
+    std::size_t open_end = past_tag(urdf, at);
+    if (open_end == std::string::npos || urdf[open_end - 2] == '/') continue;
+    std::size_t close = urdf.find("</link", open_end);
+    std::optional<std::string> name = attribute(urdf, at, open_end, "name");
+    if (!name || close == std::string::npos || element_start(urdf, "inertial", open_end) < close) continue;
+    if (element_start(urdf, "collision", open_end) < close) links.push_back(*name);
+  }
+  return links;
+}
+
 }  // namespace eomgen

@@ -18,6 +18,17 @@ namespace eomgen {
 /// Nothing is inserted on a new line, so MuJoCo's line numbers stay those of the file.
 std::string with_static_links_kept(const std::string& urdf);
 
+/// The URDF text with MuJoCo's compiler told to take no mass from geometry (inertiafromgeom
+/// "false", added as with_static_links_kept() adds its attribute), unless the file sets it itself.
+/// URDF gives a link without <inertial> no mass (urdfdom, KDL, Pinocchio, Drake); MuJoCo's default
+/// gives it the mass of its collision shapes at the density of water (a force-torque sensor's
+/// cylinder of 4 cm by 6 cm weighs 0.30 kg), which were only meant to collide.
+std::string without_masses_from_geometry(const std::string& urdf);
+
+/// The links of the URDF text without an <inertial> but with a <collision> shape: those whose mass
+/// MuJoCo alone would take from their shapes (it discards a URDF's <visual> ones).
+std::vector<std::string> colliding_links_without_inertial(const std::string& urdf);
+
 /// The URDF text without the <visual> and <collision> elements whose geometry is a <mesh>, each
 /// replaced by the line breaks it had (so that line numbers stay the file's), and how many went:
 /// for a URDF whose meshes MuJoCo 2.2.2 cannot read (COLLADA .dae, package:// paths, files not

@@ -6,7 +6,8 @@ jacobian_state with central differences of its rhs, and times the rhs against mj
 jacobian_state against the rhs in one process. Prints a Markdown
 table, one row per robot, and the reason for each robot that did not get that far.
 
-MuJoCo reads a URDF as the import does: its fixed links kept (fusestatic off), each link with
+MuJoCo reads a URDF as the import does: its fixed links kept (fusestatic off), a link without
+an <inertial> massless as URDF has it (inertiafromgeom off, where MuJoCo would weigh its shapes), each link with
 the inertia tensor the file states (tests/support/urdf_inertias.hpp; with balanceinertia on so
 that MuJoCo reads a tensor it would refuse, which the stated one then replaces), and, when
 MuJoCo cannot read the file's meshes, without its mesh geoms. A URDF with a <mimic> has fewer
@@ -45,12 +46,12 @@ def mesh_free(urdf):
 
 
 def as_mujoco_reads_it(urdf, folder, free_base, bounded=False):
-    """The URDF text with fixed links kept and inertias read as stated, its meshes looked for in
+    """The URDF text with fixed links kept, no mass from shapes and inertias read as stated, its meshes looked for in
     `folder` (the file's own), and on a floating base; `bounded` raises every mass and moment to
     2e-15, so that MuJoCo reads a massless link that a joint moves (as the import does,
     generator/import/massless_bodies.hpp)."""
     bounds = ' boundmass="2e-15" boundinertia="2e-15"' if bounded else ""
-    settings = '<mujoco><compiler fusestatic="false" balanceinertia="true" meshdir="%s/"%s/></mujoco>' % (folder, bounds)
+    settings = '<mujoco><compiler fusestatic="false" balanceinertia="true" inertiafromgeom="false" meshdir="%s/"%s/></mujoco>' % (folder, bounds)
     if free_base:
         links = re.findall(r'<link\s+name="([^"]+)"', urdf)
         children = set(re.findall(r'<child\s+link="([^"]+)"', urdf))

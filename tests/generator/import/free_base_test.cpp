@@ -62,7 +62,7 @@ TEST(FreeBase, WhatCannotBeSetFreeIsRefusedWithItsLine) {
 TEST(FreeBase, AnMjcfRobotIsToldWhereItsFreeJointGoes) {
   Diagnostics diagnostics;
   std::string mjcf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml";
-  EXPECT_FALSE(imported_model_text(mjcf, diagnostics, false, "", true));
+  EXPECT_FALSE(imported_model_text(mjcf, diagnostics, false, "", {true}));
   EXPECT_NE(diagnostics.format().find("put <freejoint/> in the root body"), std::string::npos) << diagnostics.format();
 }
 
@@ -82,7 +82,7 @@ std::vector<std::vector<double>> mass_matrix_at_rest(const std::string& model_te
 TEST(FreeBase, TheFloatingArmCarriesItsWholeMassAndItsJointsInertia) {
   std::string urdf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
   Diagnostics free_diagnostics, fixed_diagnostics;
-  std::optional<std::string> floating = imported_model_text(urdf, free_diagnostics, false, "floating_arm", true);
+  std::optional<std::string> floating = imported_model_text(urdf, free_diagnostics, false, "floating_arm", {true});
   std::optional<std::string> fixed = imported_model_text(urdf, fixed_diagnostics, false, "fixed_arm");
   ASSERT_TRUE(floating && fixed) << free_diagnostics.format() << fixed_diagnostics.format();
   EXPECT_NE(floating->find("joint = { type = \"free\", position = [\"root_x\", \"root_y\", \"root_z\"], quaternion = "

@@ -141,7 +141,7 @@ TEST(UnbalancedInertias, LinksFixedToAFloatingBaseAreOneBodyAsStated) {
   <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/><origin xyz="0 0 -0.1"/><axis xyz="0 1 0"/></joint>
 </robot>
 )";
-  auto read = read_with_mujoco(write_file("floating_sensor.urdf", urdf), true);
+  auto read = read_with_mujoco(write_file("floating_sensor.urdf", urdf), {true});
   ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
   const RobotBody* base = nullptr;
   for (const RobotBody& b : std::get<Robot>(read).bodies)
@@ -208,7 +208,7 @@ TEST(UnbalancedInertias, PointMassesFixedInALineToAFloatingBaseAreFusedAsStated)
   <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/><axis xyz="0 1 0"/></joint>
 </robot>
 )";
-  auto read = read_with_mujoco(write_file("neck_and_head.urdf", urdf), true);
+  auto read = read_with_mujoco(write_file("neck_and_head.urdf", urdf), {true});
   ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
   const RobotBody* base = nullptr;
   for (const RobotBody& b : std::get<Robot>(read).bodies)

@@ -115,6 +115,102 @@ TEST(UrdfImport, FixedLinksKeepTheirNamesAndTheDynamicsStayTheFiles) {
   expect_mujoco_dynamics(e, m.get(), {"shoulder", "elbow"}, 3, 1e-13, 1e-12);
 }
 
+TEST(UrdfStaticLinks, NoMassIsTakenFromShapesUnlessTheFileSaysSo) {
+  std::string urdf = "<robot name=\"r\">\n  <link name=\"a\"/>\n</robot>\n";
+  std::string read = without_masses_from_geometry(urdf);
+  EXPECT_EQ(line_breaks(read), line_breaks(urdf));
+  EXPECT_NE(read.find("<robot name=\"r\"><mujoco><compiler inertiafromgeom=\"false\"/></mujoco>\n"), std::string::npos) << read;
+  EXPECT_NE(without_masses_from_geometry(with_static_links_kept(urdf)).find("<compiler inertiafromgeom=\"false\" fusestatic=\"false\"/>"),
+            std::string::npos);
+  std::string chosen = "<robot name=\"r\">\n<mujoco>\n<compiler inertiafromgeom=\"true\"/>\n</mujoco>\n</robot>\n";
+  EXPECT_EQ(without_masses_from_geometry(chosen), chosen) << "the file's own choice stands";
+  std::string links = "<robot name=\"r\">\n  <link name=\"base\"/>\n"
+                      "  <link name=\"camera\"><visual><geometry><box size=\"0.1 0.1 0.1\"/></geometry></visual></link>\n"
+                      "  <link name=\"arm\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" "
+                      "izz=\"1\"/></inertial><collision><geometry><cylinder radius=\"0.1\" length=\"1\"/></geometry></collision></link>\n"
+                      "  <link name=\"frame_only\"><visual><origin xyz=\"0 0 1\"/></visual></link>\n"
+                      "  <link name=\"hull\"><collision><geometry><mesh filename=\"hull.stl\"/></geometry></collision></link>\n</robot>\n";
+  EXPECT_EQ(colliding_links_without_inertial(links), (std::vector<std::string>{"hull"})) << "MuJoCo discards a URDF's visuals";
+}
+
+// the flanged arm with a wrist camera: a link without an <inertial>, drawn and colliding as a
+// cylinder and a box, fixed to the forearm. URDF readers take it as massless; MuJoCo alone would
+// weigh its collision box (0.288 kg), and on a floating base fuse that into the forearm
+std::string camera_arm() {
+  std::string urdf = flanged_arm;
+  urdf.replace(urdf.find("  <link name=\"tool0\"/>"), 0,
+               "  <link name=\"camera\">\n"
+               "    <visual><origin xyz=\"0 0 0.04\"/><geometry><cylinder radius=\"0.03\" length=\"0.08\"/></geometry></visual>\n"
+               "    <collision><origin xyz=\"0 0 0.04\"/><geometry><box size=\"0.06 0.06 0.08\"/></geometry></collision>\n"
+               "  </link>\n");
+  urdf.replace(urdf.find("</robot>"), 0,
+               "  <joint name=\"camera_mount\" type=\"fixed\">\n"
+               "    <parent link=\"fore\"/><child link=\"camera\"/><origin xyz=\"0.03 0 0.1\" rpy=\"0 0.4 0\"/>\n  </joint>\n");
+  return urdf;
+}
+
+TEST(UrdfImport, ALinkWithoutInertialIsMasslessAsUrdfHasIt) {
+  std::string urdf = camera_arm(), path = write_file("camera_arm.urdf", urdf);
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false);
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("1 link(s) without an <inertial> but with collision shapes ('camera'): massless, as URDF has them"), std::string::npos)
+      << *text;
+  EXPECT_EQ(text->find("[[rigid_bodies]]\nname = \"camera\""), std::string::npos) << *text;
+  Equations e = derive_text(*text, "camera_arm.toml");
+  // MuJoCo reading the file as URDF readers do: fixed links kept, no mass from shapes, tensors as stated
+  std::string as_urdf = urdf, kept = temporary_directory() + "/camera_arm_kept.urdf";
+  as_urdf.insert(as_urdf.find('>', as_urdf.find("<robot")) + 1, "<mujoco><compiler fusestatic=\"false\" inertiafromgeom=\"false\"/></mujoco>");
+  std::ofstream(kept) << as_urdf;
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(kept.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  with_stated_urdf_inertias(m.get(), kept);
+  expect_mujoco_dynamics(e, m.get(), {"shoulder", "elbow"}, 4, 1e-13, 1e-12);
+
+  // on a floating base the forearm's body is the forearm alone: its mass and its moments as stated
+  Diagnostics floating_diagnostics;
+  auto floating = imported_model_text(path, floating_diagnostics, false, {}, {true});
+  ASSERT_TRUE(floating) << floating_diagnostics.format();
+  std::size_t fore = floating->find("name = \"fore\"\nframe = \"fore\"");
+  ASSERT_NE(fore, std::string::npos) << *floating;
+  EXPECT_NEAR(std::stod(floating->substr(floating->find("mass = \"", fore) + 8)), 0.8, 1e-14) << floating->substr(fore, 300);
+  std::size_t inertia = floating->find("inertia = [\"", fore);
+  double trace = 0;
+  std::size_t at = inertia + 12;
+  for (int k = 0; k < 3; ++k, at = floating->find('"', floating->find('"', at) + 1) + 1) trace += std::stod(floating->substr(at));
+  EXPECT_NEAR(trace, 0.006 + 0.006 + 0.001, 1e-17) << floating->substr(fore, 300);
+}
+
+// --masses-from-shapes reads the file as MuJoCo does: the camera weighs its collision box (MuJoCo
+// discards a URDF's visual shapes); a finger without an <inertial>,
+// which URDF leaves massless and so the mass matrix singular, is refused with that option as the fix
+TEST(UrdfImport, MassesFromShapesWeighLinksWithoutInertialAsMujocoDoes) {
+  std::string path = write_file("camera_arm.urdf", camera_arm());
+  Diagnostics diagnostics;
+  auto text = imported_model_text(path, diagnostics, false, {}, {false, true});
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("('camera') weighed by their collision shapes at the density of water"), std::string::npos) << *text;
+  std::size_t camera = text->find("[[rigid_bodies]]\nname = \"camera\"");
+  ASSERT_NE(camera, std::string::npos) << *text;
+  double shapes = 1000 * 0.06 * 0.06 * 0.08;
+  EXPECT_NEAR(std::stod(text->substr(text->find("mass = \"", camera) + 8)), shapes, 1e-14 * shapes) << text->substr(camera, 200);
+
+  std::string finger = flanged_arm;
+  finger.replace(finger.find("  <link name=\"tool0\"/>"), 0,
+                 "  <link name=\"finger\"><collision><geometry><box size=\"0.01 0.01 0.05\"/></geometry></collision></link>\n");
+  finger.replace(finger.find("</robot>"), 0,
+                 "  <joint name=\"pinch\" type=\"prismatic\">\n    <parent link=\"fore\"/><child link=\"finger\"/><axis xyz=\"0 1 0\"/>\n"
+                 "    <limit lower=\"0\" upper=\"0.04\" effort=\"20\" velocity=\"0.2\"/>\n  </joint>\n");
+  std::string finger_path = write_file("finger_arm.urdf", finger);
+  Diagnostics refused;
+  EXPECT_FALSE(imported_model_text(finger_path, refused, false));
+  EXPECT_NE(refused.format().find("joint 'pinch' moves no body with mass"), std::string::npos) << refused.format();
+  EXPECT_NE(refused.format().find("or import with --masses-from-shapes"), std::string::npos) << refused.format();
+  Diagnostics weighed;
+  EXPECT_TRUE(imported_model_text(finger_path, weighed, false, {}, {false, true})) << weighed.format();
+}
+
 // a link of mass 0 that states a moment of inertia (Bolt's feet, at the end of a leg): URDF readers
 // keep the moment, and so does the import (a rigid body of mass 0, unphysical_inertia); MuJoCo reading
 // the file with its fixed links kept agrees
@@ -176,7 +272,7 @@ TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKept) {
 TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKeptWhereItsLinkIsFused) {
   std::string path = write_file("footed_leg.urdf", footed_leg);
   Diagnostics diagnostics;
-  auto text = imported_model_text(path, diagnostics, false, {}, true);
+  auto text = imported_model_text(path, diagnostics, false, {}, {true});
   ASSERT_TRUE(text) << diagnostics.format();
   std::size_t shank = text->find("name = \"shank\"\nframe = \"shank\"");
   ASSERT_NE(shank, std::string::npos) << *text;
