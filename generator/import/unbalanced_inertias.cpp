@@ -171,7 +171,8 @@ std::vector<LinkInertia> urdf_fused_inertias(const std::string& urdf, const std:
   for (const std::string& top : tops) {
     std::vector<MassPart> parts;
     collect_fixed(top, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), stated, joints, parts, 0);
-    if (parts.size() < 2) continue;
+    // a massless top (the link a floating base's body is fixed to) takes its one part's inertia
+    if (parts.empty() || (parts.size() == 1 && parts[0].link == top)) continue;
     LinkInertia l;
     l.link = top;
     Eigen::Vector3d moment = Eigen::Vector3d::Zero();

@@ -191,6 +191,42 @@ TEST(UnbalancedInertias, LinksFixedToAFloatingBaseAreOneBodyAsStated) {
   for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(mujoco[k], combined[k], 1e-6 * largest) << k;
 }
 
+// A floating base's root link without mass, its body fixed to it (Romeo's base_link and body): the
+// fused body's inertia is the body's as stated, turned into the root's frame, where MuJoCo's own
+// principal axes of it turned the tensor by 8e-7 of its size (Romeo's accelerations by 1.8e-7)
+TEST(UnbalancedInertias, AMasslessRootTakesItsFixedBodysTensorAsStated) {
+  std::string urdf = R"(<robot name="carried_body">
+  <link name="base_link"/>
+  <link name="body">
+    <inertial><origin xyz="0.01 -0.02 0.03" rpy="0.2 0.1 -0.3"/><mass value="4.2"/>
+      <inertia ixx="0.05" ixy="0.002" ixz="-0.001" iyy="0.06" iyz="0.003" izz="0.07"/></inertial>
+  </link>
+  <link name="arm">
+    <inertial><origin xyz="0 0 -0.1"/><mass value="1.0"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.002"/></inertial>
+  </link>
+  <joint name="carried" type="fixed"><parent link="base_link"/><child link="body"/><origin xyz="0.1 0.05 -0.02" rpy="0.3 0.6 -0.9"/></joint>
+  <joint name="swing" type="continuous"><parent link="body"/><child link="arm"/><origin xyz="0 0 -0.1"/><axis xyz="0 1 0"/></joint>
+</robot>
+)";
+  auto read = read_with_mujoco(write_file("carried_body.urdf", urdf), {true});
+  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
+  const RobotBody* base = nullptr;
+  for (const RobotBody& b : std::get<Robot>(read).bodies)
+    if (b.name == "base_link") base = &b;
+  ASSERT_NE(base, nullptr);
+  // the body in the root's frame: centre E c + p, tensor E (R I Rᵀ) Eᵀ, E the fixed joint's turn
+  std::array<double, 9> E = rpy_matrix(0.3, 0.6, -0.9);
+  const double c[3] = {0.01, -0.02, 0.03}, p[3] = {0.1, 0.05, -0.02};
+  std::array<double, 9> tensor =
+      turned_by_rpy(turned_by_rpy({0.05, 0.002, -0.001, 0.002, 0.06, 0.003, -0.001, 0.003, 0.07}, 0.2, 0.1, -0.3), 0.3, 0.6, -0.9);
+  EXPECT_NEAR(base->mass, 4.2, 1e-15);
+  for (std::size_t r = 0; r < 3; ++r)
+    EXPECT_NEAR(base->center[r], E[3 * r] * c[0] + E[3 * r + 1] * c[1] + E[3 * r + 2] * c[2] + p[r], 1e-16) << r;
+  std::array<double, 9> imported = body_frame_tensor(base->principal_inertia, base->inertia_axes);
+  double largest = std::max({tensor[0], tensor[4], tensor[8]});
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(imported[k], tensor[k], 2e-15 * largest) << k;
+}
+
 // A floating base whose fixed links are point masses in a line (iCub's head on its neck) and one
 // with a moment below zero: MuJoCo refuses to fuse them ("inertia must have positive eigenvalues"),
 // so the import reads them restated and gives the fused body the inertia the file states: about
