@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -63,6 +64,18 @@ std::array<double, 9> turned_by_rpy(const std::array<double, 9>& I, double roll,
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) Rt[std::size_t(3 * r + c)] = R[std::size_t(3 * c + r)];
   return product(product(R, I), Rt);
+}
+
+// the body `name` of the URDF text read on a floating base (written to `file`), or nothing
+std::optional<RobotBody> floating_body(const std::string& file, const std::string& urdf, const std::string& name) {
+  auto read = read_with_mujoco(write_file(file, urdf), {true});
+  if (const auto* failure = std::get_if<UnreadableRobot>(&read)) {
+    ADD_FAILURE() << failure->message;
+    return std::nullopt;
+  }
+  for (const RobotBody& b : std::get<Robot>(read).bodies)
+    if (b.name == name) return b;
+  return std::nullopt;
 }
 
 // A link MuJoCo reads without complaint takes its tensor as stated too: MuJoCo's compiler leaves
@@ -141,12 +154,8 @@ TEST(UnbalancedInertias, LinksFixedToAFloatingBaseAreOneBodyAsStated) {
   <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/><origin xyz="0 0 -0.1"/><axis xyz="0 1 0"/></joint>
 </robot>
 )";
-  auto read = read_with_mujoco(write_file("floating_sensor.urdf", urdf), {true});
-  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
-  const RobotBody* base = nullptr;
-  for (const RobotBody& b : std::get<Robot>(read).bodies)
-    if (b.name == "base") base = &b;
-  ASSERT_NE(base, nullptr);
+  std::optional<RobotBody> base = floating_body("floating_sensor.urdf", urdf, "base");
+  ASSERT_TRUE(base);
   // the sensor in the base's frame: its centre E c + p and tensor E (R I Rᵀ) Eᵀ, E the mount's turn
   std::array<double, 9> E = rpy_matrix(0.3, 0.6, -0.9);
   const double c2[3] = {0.02, 0, 0.01}, p[3] = {0.1, 0.05, -0.02};
@@ -208,12 +217,8 @@ TEST(UnbalancedInertias, AMasslessRootTakesItsFixedBodysTensorAsStated) {
   <joint name="swing" type="continuous"><parent link="body"/><child link="arm"/><origin xyz="0 0 -0.1"/><axis xyz="0 1 0"/></joint>
 </robot>
 )";
-  auto read = read_with_mujoco(write_file("carried_body.urdf", urdf), {true});
-  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
-  const RobotBody* base = nullptr;
-  for (const RobotBody& b : std::get<Robot>(read).bodies)
-    if (b.name == "base_link") base = &b;
-  ASSERT_NE(base, nullptr);
+  std::optional<RobotBody> base = floating_body("carried_body.urdf", urdf, "base_link");
+  ASSERT_TRUE(base);
   // the body in the root's frame: centre E c + p, tensor E (R I Rᵀ) Eᵀ, E the fixed joint's turn
   std::array<double, 9> E = rpy_matrix(0.3, 0.6, -0.9);
   const double c[3] = {0.01, -0.02, 0.03}, p[3] = {0.1, 0.05, -0.02};
