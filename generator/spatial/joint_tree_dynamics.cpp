@@ -51,7 +51,7 @@ class Tree {
       add_body(r.placement.frame, r.mass, r.placement.local, R.mul(r.inertia).mul(R.transpose()));
     }
     for (std::size_t i = 0; i < links; ++i) place(i);
-    fold_fixed_leaves();
+    fold_fixed_links();
   }
 
   // ω of every link, its bias accelerations, the backward forces: τ at q̈ = `ddq` (zeros: the bias)
@@ -61,7 +61,7 @@ class Tree {
     Vector3 zero{0, 0, 0}, minus_g = scaled(-1, model_.gravity);
     for (std::size_t i = 0; i < links; ++i) {
       const Link& l = links_[i];
-      int p = model_.frame_links[i].parent;
+      int p = parent_[i];
       const Vector3& wp = p < 0 ? zero : omega_[std::size_t(p)];
       const Vector3& alpha_p = p < 0 ? zero : alpha[std::size_t(p)];
       const Vector3& acc_p = p < 0 ? minus_g : acc[std::size_t(p)];
@@ -96,7 +96,7 @@ class Tree {
         N = N + times(b.inertia, alpha[i]) + cross(omega_[i], spin) + cross(b.center, Fb);
       }
       for (std::size_t j = i + 1; j < links; ++j) {
-        if (model_.frame_links[j].parent != int(i)) continue;
+        if (parent_[j] != int(i)) continue;
         Vector3 Fj = named(out, j, "tFp" + tag, times(links_[j].E, force[j]));
         F = F + Fj;
         N = N + times(links_[j].E, moment[j]) + cross(links_[j].r, Fj);
@@ -118,7 +118,7 @@ class Tree {
     ex T = 0;
     for (std::size_t i = 0; i < links; ++i) {
       const Link& l = links_[i];
-      int p = model_.frame_links[i].parent;
+      int p = parent_[i];
       Vector3 carried = p < 0 ? zero : times(l.E, velocity[std::size_t(p)] + cross(omega_[std::size_t(p)], l.r), true);
       for (const Dof& d : l.dofs) carried = carried + scaled(d.rate, d.u);
       velocity[i] = named(out_, i, "tv", carried);
@@ -146,7 +146,7 @@ class Tree {
         J = J.add(b.inertia).add(shifted(b.mass, b.center, {0, 0, 0}));
       }
       for (std::size_t j = i + 1; j < links; ++j) {
-        if (model_.frame_links[j].parent != int(i)) continue;
+        if (parent_[j] != int(i)) continue;
         const Link& c = links_[j];
         Vector3 hj = named(out_, j, "tEh", times(c.E, first[j]));
         m += mass[j];
@@ -187,7 +187,7 @@ class Tree {
             unsigned j = unsigned(other.velocity);
             add_symmetric(M, j, k, (dot(other.e, L) + dot(other.u, p)).expand(), false);
           }
-        for (int at = int(i), up = model_.frame_links[i].parent; up >= 0; at = up, up = model_.frame_links[std::size_t(up)].parent) {
+        for (int at = int(i), up = parent_[i]; up >= 0; at = up, up = parent_[std::size_t(up)]) {
           const Link& c = links_[std::size_t(at)];
           p = named(out_, std::size_t(up), "tp" + tag, times(c.E, p));
           L = named(out_, std::size_t(up), "tL" + tag, times(c.E, L) + cross(c.r, p));
@@ -218,7 +218,7 @@ class Tree {
       const FrameLink::Joint& j = *model_.frame_links[i].joint;
       TreeLink t;
       t.name = name(i);
-      t.parent = model_.frame_links[i].parent;
+      t.parent = parent_[i];
       t.turn = links_[i].E;
       t.offset = links_[i].r;
       for (const Dof& d : links_[i].dofs) t.columns.push_back({d.velocity, d.rate, d.e, d.u, d.fixed_in_frame});
@@ -261,25 +261,23 @@ class Tree {
     std::optional<std::pair<GiNaC::matrix, Vector3>> rest_pose;  // a root hinge's or slide's E and r at q = 0
   };
 
-  // A link without a joint, all of whose links below are folded too, moves rigidly with its parent:
-  // its bodies go to the parent, in the parent's coordinates (c' = E c + r, J' = E J Eᵀ), so that
-  // the recursions do the parent's work once for them, and the link's own quantities, unused, are
-  // never written (a URDF's sensor and tool frames: 826 of the 4,572 operations of TIAGo's M and f)
-  void fold_fixed_leaves() {
-    std::vector<bool> carries_a_joint(links_.size(), false);
+  // A link without a joint moves rigidly with its parent: its bodies go to the parent, in the
+  // parent's coordinates (c' = E c + r, J' = E J Eᵀ), and place() has hung the links below it from
+  // the parent by the composed turn and offset, so that the recursions do the parent's work once
+  // for them, and the link's own quantities, unused, are never written (a URDF's sensor and tool
+  // frames: 826 of the 4,572 operations of TIAGo's M and f; ANYmal C's fixed links between its
+  // joints). A link fixed to the world stays: it does not move, and costs nothing.
+  void fold_fixed_links() {
     for (std::size_t i = links_.size(); i-- > 0;) {
-      int p = model_.frame_links[i].parent;
-      const Link& l = links_[i];
-      if (p < 0) continue;
-      if (!l.dofs.empty() || carries_a_joint[i]) {
-        carries_a_joint[std::size_t(p)] = true;
-        continue;
-      }
-      for (const Body& b : bodies_[i]) bodies_[std::size_t(p)].push_back(body_in(b, l.E, l.r));
+      if (!folded(i)) continue;
+      for (const Body& b : bodies_[i]) bodies_[std::size_t(parent_[i])].push_back(body_in(b, links_[i].E, links_[i].r));
       bodies_[i].clear();
     }
     for (std::vector<Body>& on_link : bodies_) on_link = as_one_body(on_link);
   }
+
+  // a link without a joint below a link that moves: place() hangs its links from that one
+  bool folded(std::size_t i) const { return links_[i].dofs.empty() && parent_[i] >= 0; }
 
   // a body in frame i, moved to the joint frame's coordinates: c' = Cᵀ(c − o), J' = Cᵀ J C
   void add_body(int frame, const ex& mass, const Vector3& center, const GiNaC::matrix& inertia) {
@@ -340,11 +338,6 @@ class Tree {
       }
     }
     GiNaC::matrix E = turn(j, R, above, own);
-    for (unsigned a = 0; a < 3; ++a)
-      for (unsigned b = 0; b < 3; ++b)
-        l.E(a, b) = intermediate(out_, fmt::format("{}.tE_{}{}", name(i), axis_names[a], axis_names[b]),
-                                 fmt::format("k_{}_tE{}{}", name(i), axis_names[a], axis_names[b]), E(a, b).expand());
-    if (j.spherical()) add_spherical_dofs(j, above, own, l);
     Vector3 origin = r + times(j.placement.mul(R), own.origin) - above.origin;
     for (ex& x : origin) x = x.expand();
     Vector3 offset = times(above.axes, origin, true);
@@ -352,6 +345,21 @@ class Tree {
       ex size = GiNaC::abs(origin[0]) + GiNaC::abs(origin[1]) + GiNaC::abs(origin[2]);
       for (ex& x : offset) x = rounded_to(without_rounding_residue(without_small_terms(x.expand()), size), size);
     }
+    // below a folded link, hung from its parent: E_p E and r_p + E_p r (a ball or free joint keeps
+    // its link, whose axes its position and its turn are written in)
+    parent_.push_back(p);
+    if (p >= 0 && folded(std::size_t(p)) && !j.spherical()) {
+      const Link& fixed = links_[std::size_t(p)];
+      E = fixed.E.mul(E);
+      offset = fixed.r + times(fixed.E, offset);
+      parent_[i] = parent_[std::size_t(p)];
+    }
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b)
+        l.E(a, b) = intermediate(out_, fmt::format("{}.tE_{}{}", name(i), axis_names[a], axis_names[b]),
+                                 fmt::format("k_{}_tE{}{}", name(i), axis_names[a], axis_names[b]), E(a, b).expand());
+    if (j.spherical()) add_spherical_dofs(j, above, own, l);
+    for (ex& x : offset) x = x.expand();
     l.r = named(out_, i, "tr", offset);
     if (p < 0 && !j.spherical() && j.coordinate >= 0) {
       ex at_zero = s_.coordinates[std::size_t(j.coordinate)] == 0;
@@ -362,7 +370,7 @@ class Tree {
       for (unsigned k = 0; k < 3; ++k) r0[k] = offset[k].subs(at_zero).expand();
       l.rest_pose = {E0, r0};
     }
-    Vector3 wp = p < 0 ? zero : omega_[std::size_t(p)];
+    Vector3 wp = parent_[i] < 0 ? zero : omega_[std::size_t(parent_[i])];
     carried_.push_back(named(out_, i, "twp", times(l.E, wp, true)));
     Vector3 w = carried_.back();
     for (const Dof& d : l.dofs) w = w + scaled(d.rate, d.e);
@@ -464,6 +472,7 @@ class Tree {
   std::vector<Link> links_;
   std::vector<Vector3> omega_;
   std::vector<Vector3> carried_;  // the parent's ω in the link's coordinates
+  std::vector<int> parent_;       // the link each hangs from, past folded ones (fold_fixed_links)
 };
 
 // the velocities that drive each link's joint: a hinge's or slide's coordinate's (that of a

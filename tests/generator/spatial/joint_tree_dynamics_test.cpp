@@ -193,6 +193,33 @@ TEST(JointTree, FixedLeavesFoldIntoTheirJointsLink) {
   EXPECT_NE(body.find("k_head_tB0"), std::string::npos) << body;
 }
 
+// The camera carrying a joint of its own, a shutter that turns about the camera's x through an
+// anchor off its origin: the camera folds all the same (fold_fixed_links), the shutter hanging from
+// the head by the camera's turn and offset composed with its own. M, f and their derivatives are
+// the expanded derivation's, and M and f's code forms nothing of the camera
+std::string sensor_head_with_shutter() {
+  std::string text = sensor_head;
+  text.replace(text.find("tilt = -0.2\n"), 12, "tilt = -0.2\nshutter = 0.5\n");
+  text.replace(text.find("[[rigid_bodies]]"), 0,
+               "[[frames]]\nname = \"blade\"\nparent = \"camera\"\norigin = [\"0.01\", \"0.02\", \"0\"]\nrotation = \"rot_y(0.3)\"\n"
+               "joint = { type = \"revolute\", axis = [\"1\", \"0\", \"0\"], anchor = [\"0\", \"0.01\", \"0\"], coordinate = \"shutter\" }\n\n"
+               "[[rigid_bodies]]\nname = \"blade_body\"\nmass = \"0.05\"\nframe = \"blade\"\ncenter = [\"0\", \"0.02\", \"0.01\"]\n"
+               "inertia = [[\"0.00002\", \"0.000001\", \"0\"], [\"0.000001\", \"0.00001\", \"0\"], [\"0\", \"0\", \"0.00003\"]]\n\n");
+  return text;
+}
+
+TEST(JointTree, AFixedLinkCarryingAJointFoldsIntoItsJointsLink) {
+  std::string text = sensor_head_with_shutter();
+  expect_expanded_equations(text, 3);
+  expect_expanded_derivatives(text, 3);
+  std::string header = emit_cpp_header(derive_text(text));
+  std::size_t from = header.find("void mass_matrix_and_forcing(");
+  ASSERT_NE(from, std::string::npos);
+  std::string body = header.substr(from, header.find("\n}\n", from) - from);
+  EXPECT_EQ(body.find("k_camera_"), std::string::npos) << body;
+  EXPECT_NE(body.find("k_blade_"), std::string::npos) << body;
+}
+
 // the oblique axis, the slide, the fixed frame and the turned inertias included
 TEST(JointTree, ClosedFormDerivativesAreThoseOfTheExpandedEquations) {
   expect_expanded_derivatives(tree, 4);
