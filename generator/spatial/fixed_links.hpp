@@ -1,9 +1,7 @@
-/// @file A joint tree with its fixed links folded into the links they hang from. A link without a
-/// joint moves with its parent, so its bodies belong to the nearest link above it that has a joint
-/// (or to the root), in that link's coordinates, and the links below it hang from that link by
-/// the composed constant turn and offset. The closed-form derivatives then do a moving link's work
-/// once per link that moves: a URDF's sensor, camera and caster frames (TIAGo: 38 links, 12 of them
-/// jointed) cost nothing at run time.
+/// @file Bodies moved between links of a joint tree: a fixed link's into the link it hangs from
+/// (spatial/joint_tree_dynamics.cpp folds a link without a joint into its parent, so that the
+/// recursions and the closed-form derivatives do a moving link's work once: a URDF's sensor,
+/// camera and caster frames cost nothing at run time), and a link's bodies of known numbers as one.
 #pragma once
 
 #include <vector>
@@ -11,11 +9,6 @@
 #include "spatial/joint_tree_derivatives.hpp"
 
 namespace eomgen {
-
-/// The links that have a joint, and the root, in the same order; each fixed link's bodies moved
-/// into its host's coordinates (centre T c + o, inertia T I Tᵀ for the fixed link's turn T and
-/// offset o in the host).
-std::vector<TreeLink> with_fixed_links_fused(const std::vector<TreeLink>& links);
 
 /// A body of a link turned by `turn` and placed at `offset` in another link's coordinates, in
 /// those: centre T c + o, inertia T I Tᵀ.

@@ -7,7 +7,6 @@
 
 #include "kinematics/vector3.hpp"
 #include "model/recursive_frames.hpp"
-#include "spatial/fixed_links.hpp"
 #include "spatial/spatial_algebra.hpp"
 
 namespace eomgen {
@@ -430,10 +429,9 @@ class Gradient {
 
 }  // namespace
 
-InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& tree, const Vector3& gravity,
+InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                             const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                             std::vector<Intermediate>& out) {
-  std::vector<TreeLink> links = with_fixed_links_fused(tree);
   Gradient g(links, out);
   if (velocities > loops_beyond_velocities && joint_pairs(links) > loops_beyond_pairs && g.loops_take_it()) {
     InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),

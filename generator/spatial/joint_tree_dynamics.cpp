@@ -211,14 +211,21 @@ class Tree {
   }
 
   // the links as the closed-form derivatives take them: each joint's velocities, and the twist of
-  // each of its coordinates (a quaternion component's through Y = ∂s/∂q' of the joint's ω)
+  // each of its coordinates (a quaternion component's through Y = ∂s/∂q' of the joint's ω); a
+  // folded link that nothing hangs from any more is left out (fold_fixed_links)
   std::vector<TreeLink> layout() const {
+    std::vector<bool> carries(links_.size(), false);
+    for (int p : parent_)
+      if (p >= 0) carries[std::size_t(p)] = true;
+    std::vector<int> index(links_.size(), -1);
     std::vector<TreeLink> out;
     for (std::size_t i = 0; i < links_.size(); ++i) {
+      if (folded(i) && !carries[i]) continue;
       const FrameLink::Joint& j = *model_.frame_links[i].joint;
+      index[i] = int(out.size());
       TreeLink t;
       t.name = name(i);
-      t.parent = parent_[i];
+      t.parent = parent_[i] < 0 ? -1 : index[std::size_t(parent_[i])];
       t.turn = links_[i].E;
       t.offset = links_[i].r;
       for (const Dof& d : links_[i].dofs) t.columns.push_back({d.velocity, d.rate, d.e, d.u, d.fixed_in_frame});

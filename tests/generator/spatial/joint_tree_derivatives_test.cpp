@@ -1,7 +1,7 @@
 // The bodies' ∂τ/∂q and ∂τ/∂s in closed form (generator/spatial/joint_tree_derivatives.hpp) on a
 // floating base: a free torso (position, quaternion, angular velocity), a ball joint through an
 // offset anchor below it, a hinge about an oblique axis and a slide on that, a turned fixed frame
-// carrying a body and the slide (folded into the hinge's link: spatial/fixed_links.hpp), and
+// carrying a body and the slide (folded into the hinge's link: fold_fixed_links in spatial/joint_tree_dynamics.cpp), and
 // springs and a damper (the applied part, which the closed form leaves out). At random states,
 // with the quaternion off its unit length, each entry against central differences of the bodies'
 // τ = inverse_dynamics − bodies_gradient->applied_inverse_dynamics, evaluated from the recursion's own definitions;
