@@ -39,16 +39,26 @@ constexpr std::size_t simplified_up_to = 2000;
 // intermediate's derivative once, in their order); the intermediates stay in the result
 ex derivative_through(const ex& x, const GiNaC::symbol& v, const std::vector<Intermediate>& intermediates) {
   ex d = x.diff(v);
+  GiNaC::exset in_x;  // x.diff(s) of a symbol s that x does not hold walks all of x to find zero
+  for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it)
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) in_x.insert(*it);
   GiNaC::exmap of;
   for (const Intermediate& i : intermediates) {
-    ex di = i.definition.diff(v);
+    // most of a tree's quantities (poses, axes, inertias) hold neither v nor one that does: their
+    // diff would rebuild each sum only to find zero (TIAGo dual's three momenta took 3 s so)
+    bool direct = false;
     GiNaC::exset inside;
-    for (auto it = i.definition.preorder_begin(); it != i.definition.preorder_end(); ++it)
-      if (GiNaC::is_a<GiNaC::symbol>(*it) && of.count(*it)) inside.insert(*it);
+    for (auto it = i.definition.preorder_begin(); it != i.definition.preorder_end(); ++it) {
+      if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
+      if (it->is_equal(v)) direct = true;
+      else if (of.count(*it)) inside.insert(*it);
+    }
+    if (!direct && inside.empty()) continue;
+    ex di = direct ? i.definition.diff(v) : ex(0);
     for (const ex& k : inside) di += i.definition.diff(GiNaC::ex_to<GiNaC::symbol>(k)) * of[k];
     if (di.is_zero()) continue;
     of[i.symbol] = di;
-    d += x.diff(i.symbol) * di;
+    if (in_x.count(i.symbol)) d += x.diff(i.symbol) * di;
   }
   return d;
 }

@@ -363,7 +363,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, U
   auto loaded = loaded_model(path, urdf, error, sizeof error, left_out);
   if (auto* mistake = std::get_if<UnreadableRobot>(&loaded)) {
     // a joint that moves only links without <inertial>: MuJoCo alone would weigh their shapes
-    if (!urdf.empty() && !reading.masses_from_shapes && mistake->message.find("moves no body with mass") != std::string::npos &&
+    if (!urdf.empty() && !reading.masses_from_shapes && mistake->moves_no_mass &&
         !colliding_links_without_inertial(urdf).empty())
       mistake->hint += ", or import with --masses-from-shapes to weigh the links without one by their shapes, as MuJoCo does";
     return *mistake;

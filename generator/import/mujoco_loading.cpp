@@ -105,6 +105,7 @@ std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, 
                                    "(MuJoCo refuses such moving bodies)", joint),
                     "give the bodies it moves an <inertial> with a mass and inertia");
   u.object = joint;
+  u.moves_no_mass = true;
   return located(u, sources);
 }
 

@@ -26,6 +26,7 @@ struct UnreadableRobot {
   std::string hint;    // what to do; empty: that the file must be one MuJoCo's compiler accepts
   std::string file;    // the file of the line when it is one the file includes; empty: the file itself
   std::string object;  // the name of the object MuJoCo's message is about, if it names one
+  bool moves_no_mass = false;  // a joint moves only massless bodies (without_massless_joints)
 };
 
 /// MuJoCo's error text as a message and a line ("line = 9", "Line number=5").

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -70,15 +71,16 @@ int main(int argc, char** argv) {
     for (int i = 0; i < nq; ++i) x[std::size_t(i)] = i < mj->nq ? d->qpos[i] : 0.0;
     for (int i = 0; i < nv; ++i) x[std::size_t(nq + i)] = 0.1;
   }
-  // each column of jacobian_state against (rhs(x + h e_k) − rhs(x − h e_k)) / 2h, h = 1e-6 max(1, |x_k|):
-  // its largest difference relative to the larger of 1 and J's largest entry
+  // each column of jacobian_state against (rhs(x + h e_k) − rhs(x − h e_k)) / 2h, h = ε^(1/3) max(1, |x_k|)
+  // (about 6e-6), where the differences' truncation (h²) and the rhs's rounding (ε/h) balance: its
+  // largest difference relative to the larger of 1 and J's largest entry
   model::jacobian_state(0.0, x.data(), u.data(), p.data(), J.data());
   double jacobian_size = 1, jacobian_worst = 0;
   for (double entry : J) jacobian_size = std::max(jacobian_size, std::abs(entry));
   std::vector<double> up(states), down(states);
   for (std::size_t k = 0; k < states; ++k) {
     std::vector<double> plus = x, minus = x;
-    double h = 1e-6 * std::max(1.0, std::abs(x[k]));
+    double h = std::cbrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, std::abs(x[k]));
     plus[k] += h, minus[k] -= h;
     model::rhs(0.0, plus.data(), u.data(), p.data(), up.data());
     model::rhs(0.0, minus.data(), u.data(), p.data(), down.data());
