@@ -17,6 +17,7 @@
 #include "emit/cpp_trig.hpp"
 #include "emit/cpp_header.hpp"
 #include "emit/cpp_joint_tree.hpp"
+#include "emit/operation_count.hpp"
 #include "emit/dynamics_form.hpp"
 #include "emit/formats.hpp"
 #include "model/symbols.hpp"
@@ -101,7 +102,7 @@ std::string rhs_function(const Equations& e) {
 }
 
 // dq''/dx_j = M^-1 (df/dx_j - dM/dx_j q''), all columns solved at once with the factored M
-std::string jacobian_state_function(const Equations& e) {
+std::string jacobian_state_function(const Equations& e, bool tree_pass) {
   if (e.has_multipliers) return constrained_jacobian_state_function(e);
   DynamicsForm form = dynamics_form(e);
   if (form == DynamicsForm::momentum) return momentum_jacobian_state_function(e);
@@ -113,7 +114,9 @@ std::string jacobian_state_function(const Equations& e) {
   state.insert(state.end(), s.velocities.begin(), s.velocities.end());
   bool newton_euler = form == DynamicsForm::newton_euler;
   if (!newton_euler) accelerations(w, e);
-  if (newton_euler) call_factored_accelerations(w, n);
+  // a long tree's jacobian_state may form M and f in the pass its derivatives go on from
+  if (newton_euler && !tree_pass) call_factored_accelerations(w, n);
+  if (tree_pass) w.line(fmt::format("T L[{}];", n * n)), w.line(fmt::format("T D[{}];", n));
   // rows[i][j] = ∂f_i/∂x_j − Σ_c ∂M_ic/∂x_j q''_c = −∂τ_i/∂x_j  (M depends on q only)
   // (each entry's terms are gathered and summed once: += would rebuild the growing sum)
   std::vector<std::vector<ex>> rows;
@@ -153,11 +156,13 @@ std::string jacobian_state_function(const Equations& e) {
   else w.line(fmt::format("T rows[{}] = {{}};", n * width));
   // a tree's rows are ∂τ/∂x, written in place by the gradient when they need no padding, and
   // negated in the solve
-  if (newton_euler && width == N) {
+  if (tree_pass && width == N) {
+    w.line("detail::tree_acceleration_gradient(t, x, u, p, L, D, rows);");
+  } else if (newton_euler && width == N) {
     w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
   } else if (newton_euler) {
     w.line(fmt::format("T F[{}];", n * N));
-    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
+    w.line(tree_pass ? "detail::tree_acceleration_gradient(t, x, u, p, L, D, F);" : "detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
     w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) rows[i * {} + j] = F[i * {} + j];", N, width, N));
   } else {
@@ -365,8 +370,11 @@ std::string cyclic_list(const Equations& e) {
 // every function of the header but the detail namespace, in the header's order
 std::string all_functions(const Equations& e) {
   std::string functions = constrained_solver(e);
-  functions += mass_matrix_and_forcing_function(e) + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) + newton_euler_gradient_function(e) +
-               jacobian_state_function(e) + jacobian_input_function(e) + linearization_function(e);
+  std::string mass_matrix_and_forcing = mass_matrix_and_forcing_function(e);
+  bool tree_pass = jacobian_takes_tree_pass(e, count_operations(mass_matrix_and_forcing, "mass_matrix_and_forcing", 0));
+  functions += mass_matrix_and_forcing + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) +
+               newton_euler_gradient_function(e) + (tree_pass ? tree_acceleration_gradient_function(e) : "") +
+               jacobian_state_function(e, tree_pass) + jacobian_input_function(e) + linearization_function(e);
   functions += e.kinetic_energy_from_mass_matrix
                    ? kinetic_energy_from_mass_matrix_function(e)
                    : scalar_function(e, "kinetic_energy", e.kinetic_energy,

@@ -20,34 +20,115 @@ void call_factored_accelerations(BodyWriter& w, std::size_t n) {
 
 namespace {
 
+// the state's variables, the directions of ∂τ/∂(q, q')
+std::vector<ex> state_directions(const Symbols& s) {
+  std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
+  directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
+  return directions;
+}
+
+// ∂τ/∂(q, q') of `swept` (q'' held), n rows, by a tangent sweep that has followed the intermediates
+// they use
+std::vector<ex> swept_entries(BodyWriter& w, TangentSweep& sweep, const std::vector<ex>& swept, std::size_t n) {
+  CseBatch tau = w.reduced_batch(swept);
+  sweep.follow(tau);
+  std::vector<ex> entries;
+  for (std::size_t i = 0; i < n; ++i)
+    for (const ex& d : sweep.derivatives(tau.outputs[i])) entries.push_back(d);
+  return entries;
+}
+
+std::string written_into_F(std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); }
+
 // the body of detail::inverse_dynamics_gradient: a tangent sweep through τ's code, or with
 // `closed_form` the bodies' part in closed form and a sweep through the applied part alone
 std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form) {
   const Symbols& s = e.symbols;
   std::size_t n = e.num_velocities(), W = s.num_coordinates() + n;
   BodyWriter w(e);
-  std::vector<ex> directions(s.coordinates.begin(), s.coordinates.end());
-  directions.insert(directions.end(), s.velocities.begin(), s.velocities.end());
+  std::vector<ex> directions = state_directions(s);
   const std::vector<ex>& swept = closed_form ? e.bodies_gradient->applied_inverse_dynamics : e.inverse_dynamics;
   TangentSweep sweep(w, directions);
   sweep.follow(w.write_intermediates_of(swept));
-  CseBatch tau = w.reduced_batch(swept);
-  sweep.follow(tau);
-  std::vector<ex> entries;
-  for (std::size_t i = 0; i < n; ++i)
-    for (const ex& d : sweep.derivatives(tau.outputs[i])) entries.push_back(d);
+  std::vector<ex> entries = swept_entries(w, sweep, swept, n);
   std::size_t nq = s.num_coordinates();
   const InverseDynamicsGradient* bodies = closed_form ? &e.bodies_gradient->closed_form : nullptr;
   for (std::size_t i = 0; i < n && bodies; ++i) {
     for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += bodies->coordinates(unsigned(i), unsigned(j));
     for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += bodies->velocities(unsigned(i), unsigned(j));
   }
-  w.assign(entries, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });
-  if (bodies && bodies->loops) call_tree_gradient_loops(w, *bodies->loops, nq, W);
+  w.assign(entries, written_into_F);
+  if (bodies && bodies->loops) call_tree_gradient_loops(w, e, nq, W);
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
+// the body of detail::tree_acceleration_gradient: the applied part's M and f (τ_a = M_a q'' − f_a,
+// linear in q'') with the tables, the bodies' M and f from the loops' pass at q'' = 0, its solve,
+// and the pass again at the accelerations for ∂τ/∂(q, q')
+std::string tree_acceleration_gradient_body(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.num_velocities(), nq = s.num_coordinates();
+  const std::vector<ex>& applied = e.bodies_gradient->applied_inverse_dynamics;
+  BodyWriter w(e);
+  TangentSweep sweep(w, state_directions(s));
+  sweep.follow(w.write_intermediates_of(applied));
+  w.line(fmt::format("T ddq[{}] = {{}};", n));  // the pass's first accelerations, M's and f's
+  call_tree_tables(w, e);
+  w.line(fmt::format("T M[{}] = {{}};", n * n));
+  w.line(fmt::format("T f[{}];", n));
+  std::vector<ex> values;
+  std::vector<std::string> targets;
+  GiNaC::exmap at_rest;
+  for (const GiNaC::symbol& a : w.accelerations()) at_rest[a] = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j)
+      if (ex m = applied[i].diff(w.accelerations()[j]).expand(); !m.is_zero())
+        values.push_back(m), targets.push_back(fmt::format("M[{}]", i * n + j));
+    values.push_back(-applied[i].subs(at_rest)), targets.push_back(fmt::format("f[{}]", i));
+  }
+  w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+  w.line("tree.move(ddq);");
+  w.line(fmt::format("tree.add_mass_matrix_and_bias({}, M, f);", n));
+  w.line("ldlt_factor(M, L, D);");
+  w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) ddq[i] = f[i];", n));
+  w.line("ldlt_solve(L, D, ddq);");
+  w.assign(swept_entries(w, sweep, applied, n), written_into_F);  // the applied part's, at q'' = ddq
+  call_root_motion(w, e);
+  w.line("tree.accelerate(ddq);");
+  w.line(fmt::format("tree.add_gradient({}, {}, F);", nq, nq + n));
+  return without_unused_locals(w.finish(all_unused));
+}
+
+// The pass forms M and f in about the same time for any tree of a given size, the straight-line code
+// in time with its operations: jacobian_state, g++ -O2, the pass against factored_accelerations,
+// by the operations of M and f per velocity: tests/crosscheck's 21-joint tree of oblique hinges
+// (481) 7.6 µs against 9.0, its coupled hand (418) 3.28 against 3.53, its gantry hand (339) 3.52
+// against 3.58, the quadruped (260) 8.04 against 7.85
+constexpr long tree_pass_beyond_operations_per_velocity = 300;
+
 }  // namespace
+
+bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_operations) {
+  if (!e.gradient_loops() || mass_matrix_and_forcing_operations <= tree_pass_beyond_operations_per_velocity * long(e.num_velocities()))
+    return false;
+  // τ_a's M_a as ∂τ_a/∂q'': q'' must not enter it through a quantity of the recursion
+  for (const ex& tau : e.bodies_gradient->applied_inverse_dynamics)
+    for (const Intermediate& i : e.acceleration_intermediates)
+      if (tau.has(i.symbol)) return false;
+  return true;
+}
+
+std::string tree_acceleration_gradient_function(const Equations& e) {
+  std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
+  return "namespace detail {\n\n" +
+         function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree's world pass at\n"
+                              "/// q'' = 0, q'' = M^-1 f, and d tau/d(q, q') at those q'' from the same pass (F: {0}x{1},\n"
+                              "/// row-major), where factored_accelerations would form M and f a second time.\n",
+                              n, W),
+                  "void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* L, T* D, T* F)",
+                  tree_acceleration_gradient_body(e)) +
+         "}  // namespace detail\n\n";
+}
 
 std::string newton_euler_gradient_function(const Equations& e) {
   if (dynamics_form(e) != DynamicsForm::newton_euler) return "";

@@ -26,4 +26,12 @@ std::string mass_matrix_and_forcing_function(const Equations& e);
 std::string factored_accelerations_function(const Equations& e);
 std::string newton_euler_gradient_function(const Equations& e);
 
+/// Whether jacobian_state of a long tree of hinges and slides (below a root joint of any kind) forms M and f
+/// from the world pass that its derivatives go on from (detail::tree_acceleration_gradient) rather
+/// than by factored_accelerations' straight-line code, whose operations (counted in
+/// detail::mass_matrix_and_forcing) decide: a third of a 21-joint tree's jacobian_state.
+bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_operations);
+/// detail::tree_acceleration_gradient, for jacobian_takes_tree_pass.
+std::string tree_acceleration_gradient_function(const Equations& e);
+
 }  // namespace eomgen

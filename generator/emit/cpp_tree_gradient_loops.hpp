@@ -13,10 +13,16 @@
 
 namespace eomgen {
 
-/// detail::hinge_tree_gradient and its six-vector helpers; "" unless e has the loops.
+/// detail::hinge_tree, its six-vector helpers and detail::tree_tables; "" unless e has the loops.
 std::string tree_gradient_loops_function(const Equations& e);
 
-/// The links' inputs as local arrays and the call that adds the bodies' part into F (row width W).
-void call_tree_gradient_loops(BodyWriter& w, const HingeTreeLinks& links, std::size_t coordinates, std::size_t width);
+/// Declares `detail::hinge_tree<L, T> tree` and fills its tables by detail::tree_tables, and its
+/// root joint's motion at the accelerations ddq (the caller has t, x, ddq, u and p).
+void call_tree_tables(BodyWriter& w, const Equations& e);
+/// The root joint's motion at the accelerations ddq again, when the tree has one.
+void call_root_motion(BodyWriter& w, const Equations& e);
+
+/// The tree's tables and the call that adds the bodies' part of ∂τ/∂(q, q') into F (row width W).
+void call_tree_gradient_loops(BodyWriter& w, const Equations& e, std::size_t coordinates, std::size_t width);
 
 }  // namespace eomgen
