@@ -87,15 +87,15 @@ std::string tree_acceleration_gradient_body(const Equations& e) {
     values.push_back(-applied[i].subs(at_rest)), targets.push_back(fmt::format("f[{}]", i));
   }
   w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
-  w.line("tree.move(ddq);");
-  w.line(fmt::format("tree.add_mass_matrix_and_bias({}, M, f);", n));
+  // the pass adds the bodies' M and f, then the solve sets q'' = M^-1 f, the applied part's ∂τ and the
+  // root joint's motion at them, and the pass adds the bodies' ∂τ
+  w.line(fmt::format("hinge_tree_pass<true>(tree, ddq, {}, {}, F, {}, M, f, [&] {{", nq, nq + n, n));
   w.line("ldlt_factor(M, L, D);");
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) ddq[i] = f[i];", n));
   w.line("ldlt_solve(L, D, ddq);");
-  w.assign(swept_entries(w, sweep, applied, n), written_into_F);  // the applied part's, at q'' = ddq
+  w.assign(swept_entries(w, sweep, applied, n), written_into_F);
   call_root_motion(w, e);
-  w.line("tree.accelerate(ddq);");
-  w.line(fmt::format("tree.add_gradient({}, {}, F);", nq, nq + n));
+  w.line("});");
   return without_unused_locals(w.finish(all_unused));
 }
 

@@ -146,198 +146,193 @@ void tree_root_pairs(const tree_jointed_root<T>& root, const T* C, const T* forc
   }
 }
 
-/// A tree of hinges and slides in world coordinates. The generated code fills the links' tables:
-/// parent, velocity and coordinate (a fixed link has velocity -1, and so has the first link when
-/// it is `rooted`, root_joint giving its joint), turn, offset, joint column (axis; origin velocity),
-/// rate and bodies' inertia about the link's origin. move(ddq) then forms the motion, accelerations
-/// and forces (accelerate() at other accelerations), and the sums over the pairs of joints M and f,
-/// or d tau/d(q, q').
+/// The tables of a tree of hinges and slides, which the generated code fills: each link's parent,
+/// velocity and coordinate (a fixed link has velocity -1, and so has the first link when it is
+/// `rooted`, root_joint giving its joint), turn, offset, joint column (axis; origin velocity), rate
+/// and bodies' inertia about the link's origin.
 template <std::size_t L, class T>
-struct hinge_tree {
+struct hinge_tree_tables {
   const int* parent;
   const int* velocity;
   const int* coordinate;
   T turn[L][9], offset[L][3], column[L][6], rate[L], inertia[L][10], gravity[3];
-  tree_jointed_root<T> root_joint;  // the first link's joint, its motion at the accelerations, when rooted
   bool rooted;
-  // world poses, twists S, v, a, Psi' = v_p x S and Psi'' = a_p x S + v_p x Psi'; each link's own
-  // inertia and v x* C v; the composite inertias C, momenta P = C v, biases D and forces C a + v x* C v
-  T R[L][9], o[L][3], S[L][6], v[L][6], a[L][6], dS[L][6], ddS[L][6], own[L][10], vP[L][6];
-  T C[L][10], P[L][6], D[L][9], force[L][6];
+  tree_jointed_root<T> root_joint;  // the first link's joint, its motion at the accelerations
+};
 
-  // the motion, accelerations and forces at the accelerations ddq, in one pass down the tree and
-  // one up: poses, S, inertias, v, a, Psi', Psi''; each link's momentum, bias, v x* P and force,
-  // summed into the composites C, P, D and force
-  void move(const T* ddq) {
-    set_fall();
-    for (std::size_t i = 0; i < L; ++i) move_link(i), accelerate_link(i, ddq);
-    sum_up(true);
-  }
-
-  // a, Psi'' and the forces at other accelerations ddq, summed (move() first)
-  void accelerate(const T* ddq) {
-    for (std::size_t i = 0; i < L; ++i) accelerate_link(i, ddq);
-    for (std::size_t i = L; i-- > 0;)
-      if (parent[i] >= 0) tree_add_into(force[parent[i]], force[i]);
-  }
-
-  // the bodies' M (n x n, row-major) and f = -tau at the accelerations of the last move() or
-  // accelerate(), added: M_jk = S_j . C_k S_k for each joint k and each joint j at or above it (a
-  // root joint's columns above every link below it), f_k = -S_k . F_k; joints that follow one
-  // coordinate add their shares, a pair of two of them twice
-  void add_mass_matrix_and_bias(std::size_t n, T* M, T* f) const {
-    auto add = [&](std::size_t j, std::size_t k, const T& x) {
-      M[j*n + k] += x;
-      if (j != k) M[k*n + j] += x;
-    };
-    for (std::size_t k = 0; k < L; ++k) {
-      const int vk = velocity[k];
-      if (vk < 0) continue;
-      T CS[6];
-      tree_inertia_times(C[k], S[k], CS);
-      f[vk] = f[vk] - tree_power(S[k], force[k]);
-      int top = int(k);
-      for (int j = int(k); j >= 0; j = parent[j]) {
-        top = j;
-        const int vj = velocity[j];
-        if (vj < 0) continue;
-        const T x = tree_power(S[j], CS);
-        add(std::size_t(vj), std::size_t(vk), j != int(k) && vj == vk ? T(2)*x : x);
-      }
-      for (std::size_t c = 0; rooted && top == 0 && c < root_joint.columns; ++c)
-        add(std::size_t(root_joint.velocity[c]), std::size_t(vk), tree_power(root_joint.S[c], CS));
+/// The bodies' M (n x n, row-major) and f = -tau from the pass's S, composite C and forces, added:
+/// M_jk = S_j . C_k S_k for each joint k and each joint j at or above it (a root joint's columns
+/// above every link below it), f_k = -S_k . F_k; joints that follow one coordinate add their
+/// shares, a pair of two of them twice.
+template <std::size_t L, class T>
+void tree_mass_matrix_and_bias(const hinge_tree_tables<L, T>& tree, const T (&S)[L][6], const T (&C)[L][10],
+                               const T (&force)[L][6], std::size_t n, T* M, T* f) {
+  auto add = [&](std::size_t j, std::size_t k, const T& x) {
+    M[j*n + k] += x;
+    if (j != k) M[k*n + j] += x;
+  };
+  const tree_jointed_root<T>& root = tree.root_joint;
+  for (std::size_t k = 0; k < L; ++k) {
+    const int vk = tree.velocity[k];
+    if (vk < 0) continue;
+    T CS[6];
+    tree_inertia_times(C[k], S[k], CS);
+    f[vk] = f[vk] - tree_power(S[k], force[k]);
+    int top = int(k);
+    for (int j = int(k); j >= 0; j = tree.parent[j]) {
+      top = j;
+      const int vj = tree.velocity[j];
+      if (vj < 0) continue;
+      const T x = tree_power(S[j], CS);
+      add(std::size_t(vj), std::size_t(vk), j != int(k) && vj == vk ? T(2)*x : x);
     }
-    for (std::size_t c = 0; rooted && c < root_joint.columns; ++c) {
-      const std::size_t vc = std::size_t(root_joint.velocity[c]);
-      T CS[6];
-      tree_inertia_times(C[0], root_joint.S[c], CS);
-      f[vc] = f[vc] - tree_power(root_joint.S[c], force[0]);
-      for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root_joint.velocity[d]), vc, tree_power(root_joint.S[d], CS));
-    }
+    for (std::size_t c = 0; tree.rooted && top == 0 && c < root.columns; ++c)
+      add(std::size_t(root.velocity[c]), std::size_t(vk), tree_power(root.S[c], CS));
   }
-
-  // d tau/d(q, q'), the bodies' part, at the accelerations of the last move() or accelerate(),
-  // added into F (rows of width W, the velocities' columns after the nq coordinates' ones): the
-  // analytic derivatives of the Newton-Euler recursion (Carpentier and Mansard 2018)
-  void add_gradient(std::size_t nq, std::size_t W, T* F) const {
-    const tree_jointed_root<T>* root = rooted ? &root_joint : nullptr;
-    // per joint: C S, B^T S = D S - S x* P, G = S x* F + C Psi'' + D Psi' + Psi' x* P and
-    // H = C A + D S + S x* P with A = 2 Psi'
-    T CS[L][6], BS[L][6], G[L][6], H[L][6];
-    for (std::size_t j = 0; j < L; ++j) {
-      if (velocity[j] < 0) continue;
-      T DS[6], SP[6], SF[6], Cdd[6], Dd[6], dP[6], Cd[6];
-      tree_inertia_times(C[j], S[j], CS[j]);
-      tree_bias_times(D[j], S[j], DS);
-      tree_force_cross(S[j], P[j], SP);
-      tree_force_cross(S[j], force[j], SF);
-      tree_inertia_times(C[j], ddS[j], Cdd);
-      tree_bias_times(D[j], dS[j], Dd);
-      tree_force_cross(dS[j], P[j], dP);
-      tree_inertia_times(C[j], dS[j], Cd);
-      for (int k = 0; k < 6; ++k) {
-        BS[j][k] = DS[k] - SP[k];
-        G[j][k] = SF[k] + Cdd[k] + Dd[k] + dP[k];
-        H[j][k] = T(2)*Cd[k] + DS[k] + SP[k];
-      }
-    }
-    // each joint k and each joint j at or above it: j's coordinate and velocity in k's row, k's in j's
-    for (std::size_t k = 0; k < L; ++k) {
-      if (velocity[k] < 0) continue;
-      T* row = F + std::size_t(velocity[k])*W;
-      const std::size_t qk = std::size_t(coordinate[k]), sk = nq + std::size_t(velocity[k]);
-      int top = int(k);
-      for (int j = int(k); j >= 0; j = parent[j]) {
-        top = j;
-        if (velocity[j] < 0) continue;
-        const std::size_t q = std::size_t(coordinate[j]), s = nq + std::size_t(velocity[j]);
-        row[q] = row[q] + tree_power(ddS[j], CS[k]) + tree_power(dS[j], BS[k]);
-        row[s] = row[s] + T(2)*tree_power(dS[j], CS[k]) + tree_power(S[j], BS[k]);
-        if (j == int(k)) continue;
-        T* above = F + std::size_t(velocity[j])*W;
-        above[qk] = above[qk] + tree_power(S[j], G[k]);
-        above[sk] = above[sk] + tree_power(S[j], H[k]);
-      }
-      if (!root || top != 0) continue;
-      for (std::size_t d = 0; d < root->directions; ++d) {
-        T& x = row[root->coordinate[d]];
-        x = x + tree_power(root->ddS[d], CS[k]) + tree_power(root->dS[d], BS[k]);
-      }
-      for (std::size_t c = 0; c < root->columns; ++c) {
-        T& x = row[nq + std::size_t(root->velocity[c])];
-        x = x + tree_power(root->A[c], CS[k]) + tree_power(root->S[c], BS[k]);
-        T* above = F + std::size_t(root->velocity[c])*W;
-        above[qk] = above[qk] + tree_power(root->S[c], G[k]);
-        above[sk] = above[sk] + tree_power(root->S[c], H[k]);
-      }
-    }
-    if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
+  for (std::size_t c = 0; tree.rooted && c < root.columns; ++c) {
+    const std::size_t vc = std::size_t(root.velocity[c]);
+    T CS[6];
+    tree_inertia_times(C[0], root.S[c], CS);
+    f[vc] = f[vc] - tree_power(root.S[c], force[0]);
+    for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS));
   }
+}
 
- private:
-  T fall[6];  // -gravity as an acceleration, the roots' a
-
-  void set_fall() { fall[0] = fall[1] = fall[2] = T(0), fall[3] = -gravity[0], fall[4] = -gravity[1], fall[5] = -gravity[2]; }
-
-  // the composites: each link's C, P, D and (with_forces) force summed into its parent's
-  void sum_up(bool with_forces) {
-    for (std::size_t i = L; i-- > 0;) {
-      const int p = parent[i];
-      if (p < 0) continue;
-      tree_add_into(C[p], C[i]);
-      tree_add_into(P[p], P[i]);
-      tree_add_into(D[p], D[i]);
-      if (with_forces) tree_add_into(force[p], force[i]);
+/// d tau/d(q, q') of a tree of hinges and slides, its bodies' part, added into F (rows of width W, the
+/// velocities' columns after the nq coordinates' ones): the analytic derivatives of the Newton-Euler
+/// recursion (Carpentier and Mansard 2018) in world coordinates, from each link's joint twist S,
+/// its rate and its bodies' spatial inertia about the origin, at the accelerations ddq. With
+/// `Solves`, ddq are M^-1 f instead: the pass at the given ddq (zeros) adds the bodies' M (n x n)
+/// and f = -tau into M and f, which already hold the rest of them, and solve() then writes ddq
+/// (and, for a root joint, its motion at them) before the accelerations are formed again.
+template <bool Solves, std::size_t L, class T, class Solve>
+void hinge_tree_pass(const hinge_tree_tables<L, T>& tree, const T* ddq, std::size_t nq, std::size_t W, T* F, std::size_t n,
+                     T* M, T* f, Solve&& solve) {
+  const int* parent = tree.parent;
+  const int* velocity = tree.velocity;
+  const int* coordinate = tree.coordinate;
+  const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
+  // world poses, twists S and inertias C; v, a (the root's a is -gravity), Psi' = v_p x S,
+  // Psi'' = a_p x S + v_p x Psi'; each link's force C a + v x* C v, momentum P = C v and bias D,
+  // summed into the composites; with Solves each link's own C and v x* C v, for its force again
+  T R[L][9], o[L][3], S[L][6], v[L][6], a[L][6], dS[L][6], ddS[L][6], C[L][10], force[L][6], P[L][6], D[L][9];
+  [[maybe_unused]] T own[Solves ? L : 1][10], vPs[Solves ? L : 1][6];
+  const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
+  const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
+  const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
+  // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
+  auto accelerate = [&](std::size_t i) {
+    const T* vp = parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]];
+    const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
+    if (velocity[i] < 0) {
+      for (int k = 0; k < 6; ++k) a[i][k] = ap[k], ddS[i][k] = T(0);
+      return;
     }
-  }
-
-  // link i's pose, S, own inertia about the origin, v, Psi', momentum, bias and v x* P
-  void move_link(std::size_t i) {
-    const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
-    const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
-    const int p = parent[i];
-    tree_place(p < 0 ? identity : R[p], p < 0 ? rest : o[p], turn[i], offset[i], column[i], inertia[i], R[i], o[i], S[i], C[i]);
-    const T* vp = p < 0 ? (i == 0 && rooted ? root_joint.v : rest) : v[p];
+    T aS[6], vdS[6];
+    tree_motion_cross(ap, S[i], aS);
+    tree_motion_cross(vp, dS[i], vdS);
+    const T s = tree.rate[i], dds = ddq[velocity[i]];
+    for (int k = 0; k < 6; ++k) a[i][k] = ap[k] + dds*S[i][k] + s*dS[i][k], ddS[i][k] = aS[k] + vdS[k];
+  };
+  for (std::size_t i = 0; i < L; ++i) {
+    tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
+               tree.column[i], tree.inertia[i], R[i], o[i], S[i], C[i]);
+    const T* vp = parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]];
     if (velocity[i] < 0) {
       for (int k = 0; k < 6; ++k) v[i][k] = vp[k], dS[i][k] = T(0);
     } else {
       tree_motion_cross(vp, S[i], dS[i]);
-      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + rate[i]*S[i][k];
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + tree.rate[i]*S[i][k];
     }
-    for (int k = 0; k < 10; ++k) own[i][k] = C[i][k];
+    accelerate(i);
+    T Ca[6], vP[6];
     tree_inertia_times(C[i], v[i], P[i]);
-    tree_force_cross(v[i], P[i], vP[i]);
+    tree_inertia_times(C[i], a[i], Ca);
+    tree_force_cross(v[i], P[i], vP);
+    for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vP[k];
     tree_own_bias(C[i], v[i], D[i]);
-  }
-
-  // link i's a and Psi'' at the accelerations ddq (the root's a is -gravity) and its force
-  // C a + v x* P, formed in locals: stores into a[i] would have the parent's a[p] read again
-  void accelerate_link(std::size_t i, const T* ddq) {
-    const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
-    const int p = parent[i];
-    const T* vp = p < 0 ? (i == 0 && rooted ? root_joint.v : rest) : v[p];
-    const T* ap = p < 0 ? (i == 0 && rooted ? root_joint.a : fall) : a[p];
-    T ai[6], Ca[6];
-    if (velocity[i] < 0) {
-      for (int k = 0; k < 6; ++k) ai[k] = ap[k], ddS[i][k] = T(0);
-    } else {
-      T aS[6], vdS[6];
-      tree_motion_cross(ap, S[i], aS);
-      tree_motion_cross(vp, dS[i], vdS);
-      const T s = rate[i], dds = ddq[velocity[i]];
-      for (int k = 0; k < 6; ++k) ai[k] = ap[k] + dds*S[i][k] + s*dS[i][k], ddS[i][k] = aS[k] + vdS[k];
+    if constexpr (Solves) {
+      for (int k = 0; k < 10; ++k) own[i][k] = C[i][k];
+      for (int k = 0; k < 6; ++k) vPs[i][k] = vP[k];
     }
-    tree_inertia_times(own[i], ai, Ca);
-    for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vP[i][k], a[i][k] = ai[k];
   }
+  for (std::size_t i = L; i-- > 0;) {
+    const int p = parent[i];
+    if (p < 0) continue;
+    tree_add_into(C[p], C[i]);
+    tree_add_into(force[p], force[i]);
+    tree_add_into(P[p], P[i]);
+    tree_add_into(D[p], D[i]);
+  }
+  if constexpr (Solves) {
+    tree_mass_matrix_and_bias(tree, S, C, force, n, M, f);
+    solve();
+    for (std::size_t i = 0; i < L; ++i) {
+      accelerate(i);
+      T Ca[6];
+      tree_inertia_times(own[i], a[i], Ca);
+      for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vPs[i][k];
+    }
+    for (std::size_t i = L; i-- > 0;)
+      if (parent[i] >= 0) tree_add_into(force[parent[i]], force[i]);
+  }
+  // per joint: C S, B^T S = D S - S x* P, G = S x* F + C Psi'' + D Psi' + Psi' x* P and
+  // H = C A + D S + S x* P with A = 2 Psi'
+  T CS[L][6], BS[L][6], G[L][6], H[L][6];
+  for (std::size_t j = 0; j < L; ++j) {
+    if (velocity[j] < 0) continue;
+    T DS[6], SP[6], SF[6], Cdd[6], Dd[6], dP[6], Cd[6];
+    tree_inertia_times(C[j], S[j], CS[j]);
+    tree_bias_times(D[j], S[j], DS);
+    tree_force_cross(S[j], P[j], SP);
+    tree_force_cross(S[j], force[j], SF);
+    tree_inertia_times(C[j], ddS[j], Cdd);
+    tree_bias_times(D[j], dS[j], Dd);
+    tree_force_cross(dS[j], P[j], dP);
+    tree_inertia_times(C[j], dS[j], Cd);
+    for (int k = 0; k < 6; ++k) {
+      BS[j][k] = DS[k] - SP[k];
+      G[j][k] = SF[k] + Cdd[k] + Dd[k] + dP[k];
+      H[j][k] = T(2)*Cd[k] + DS[k] + SP[k];
+    }
+  }
+  // each joint k and each joint j at or above it: j's coordinate and velocity in k's row, k's in j's
+  for (std::size_t k = 0; k < L; ++k) {
+    if (velocity[k] < 0) continue;
+    T* row = F + std::size_t(velocity[k])*W;
+    const std::size_t qk = std::size_t(coordinate[k]), sk = nq + std::size_t(velocity[k]);
+    int top = int(k);
+    for (int j = int(k); j >= 0; j = parent[j]) {
+      top = j;
+      if (velocity[j] < 0) continue;
+      const std::size_t q = std::size_t(coordinate[j]), s = nq + std::size_t(velocity[j]);
+      row[q] = row[q] + tree_power(ddS[j], CS[k]) + tree_power(dS[j], BS[k]);
+      row[s] = row[s] + T(2)*tree_power(dS[j], CS[k]) + tree_power(S[j], BS[k]);
+      if (j == int(k)) continue;
+      T* above = F + std::size_t(velocity[j])*W;
+      above[qk] = above[qk] + tree_power(S[j], G[k]);
+      above[sk] = above[sk] + tree_power(S[j], H[k]);
+    }
+    if (!root || top != 0) continue;
+    for (std::size_t d = 0; d < root->directions; ++d) {
+      T& x = row[root->coordinate[d]];
+      x = x + tree_power(root->ddS[d], CS[k]) + tree_power(root->dS[d], BS[k]);
+    }
+    for (std::size_t c = 0; c < root->columns; ++c) {
+      T& x = row[nq + std::size_t(root->velocity[c])];
+      x = x + tree_power(root->A[c], CS[k]) + tree_power(root->S[c], BS[k]);
+      T* above = F + std::size_t(root->velocity[c])*W;
+      above[qk] = above[qk] + tree_power(root->S[c], G[k]);
+      above[sk] = above[sk] + tree_power(root->S[c], H[k]);
+    }
+  }
+  if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
+}
 
-};
-
-/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (hinge_tree::add_gradient).
+/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (hinge_tree_pass).
 template <std::size_t L, class T>
-void hinge_tree_gradient(hinge_tree<L, T>& tree, const T* ddq, std::size_t nq, std::size_t W, T* F) {
-  tree.move(ddq);
-  tree.add_gradient(nq, W, F);
+void hinge_tree_gradient(const hinge_tree_tables<L, T>& tree, const T* ddq, std::size_t nq, std::size_t W, T* F) {
+  hinge_tree_pass<false>(tree, ddq, nq, W, F, 0, static_cast<T*>(nullptr), static_cast<T*>(nullptr), [] {});
 }
 
 )";
@@ -423,7 +418,7 @@ std::string root_motion_body(const Equations& e) {
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
-// L of detail::hinge_tree<L, T>: the links
+// L of detail::hinge_tree_tables<L, T>: the links
 std::string tree_size(const Equations& e) { return std::to_string(e.gradient_loops()->parent.size()); }
 
 // the statements that fill `tree`'s tables
@@ -459,7 +454,7 @@ std::string tree_tables_body(const Equations& e) {
 
 std::string tree_gradient_loops_function(const Equations& e) {
   if (!e.gradient_loops()) return "";
-  std::string tree = "hinge_tree<" + tree_size(e) + ", T>& tree";
+  std::string tree = "hinge_tree_tables<" + tree_size(e) + ", T>& tree";
   std::string root_motion =
       e.gradient_loops()->root ? function("/// The tree's root joint's motion at the accelerations ddq.\n",
                                           "void tree_root_motion(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, " + tree + ")",
@@ -472,7 +467,7 @@ std::string tree_gradient_loops_function(const Equations& e) {
 }
 
 void call_tree_tables(BodyWriter& w, const Equations& e) {
-  w.line("detail::hinge_tree<" + tree_size(e) + ", T> tree;");
+  w.line("detail::hinge_tree_tables<" + tree_size(e) + ", T> tree;");
   w.line("detail::tree_tables(t, x, u, p, tree);");
   call_root_motion(w, e);
 }

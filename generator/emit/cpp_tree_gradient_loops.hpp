@@ -13,10 +13,10 @@
 
 namespace eomgen {
 
-/// detail::hinge_tree, its six-vector helpers and detail::tree_tables; "" unless e has the loops.
+/// detail::hinge_tree_pass, its six-vector helpers and detail::tree_tables; "" unless e has the loops.
 std::string tree_gradient_loops_function(const Equations& e);
 
-/// Declares `detail::hinge_tree<L, T> tree` and fills its tables by detail::tree_tables, and its
+/// Declares `detail::hinge_tree_tables<L, T> tree` and fills them by detail::tree_tables, and its
 /// root joint's motion at the accelerations ddq (the caller has t, x, ddq, u and p).
 void call_tree_tables(BodyWriter& w, const Equations& e);
 /// The root joint's motion at the accelerations ddq again, when the tree has one.
