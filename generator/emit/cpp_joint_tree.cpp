@@ -100,10 +100,11 @@ std::string tree_acceleration_gradient_body(const Equations& e) {
 }
 
 // The pass forms M and f in about the same time for any tree of a given size, the straight-line code
-// in time with its operations: jacobian_state, g++ -O2, the pass against factored_accelerations,
+// in time with its operations. jacobian_state, g++ -O2, with the pass against factored_accelerations,
 // by the operations of M and f per velocity: tests/crosscheck's 21-joint tree of oblique hinges
-// (481) 7.6 µs against 9.0, its coupled hand (418) 3.28 against 3.53, its gantry hand (339) 3.52
-// against 3.58, the quadruped (260) 8.04 against 7.85
+// (481) 7.5 µs against 9.1, its coupled hand (418) 3.25 against 3.50, its gantry hand (339) 3.46
+// against 3.61; the quadruped (260) 8.0-8.1 against 7.8-7.9, example-robot-data's Romeo small
+// (about 225) 12.1-12.5 against 11.8-12.0
 constexpr long tree_pass_beyond_operations_per_velocity = 300;
 
 }  // namespace
