@@ -122,7 +122,7 @@ bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_o
 std::string tree_acceleration_gradient_function(const Equations& e) {
   std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
   return "namespace detail {\n\n" +
-         function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree's world pass at\n"
+         function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree_pass at\n"
                               "/// q'' = 0, q'' = M^-1 f, and d tau/d(q, q') at those q'' from the same pass (F: {0}x{1},\n"
                               "/// row-major), where factored_accelerations would form M and f a second time.\n",
                               n, W),
