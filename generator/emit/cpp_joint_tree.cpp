@@ -1,5 +1,7 @@
 #include "emit/cpp_joint_tree.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "emit/operation_count.hpp"
@@ -112,11 +114,14 @@ constexpr long tree_pass_beyond_operations_per_velocity = 300;
 bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_operations) {
   if (!e.gradient_loops() || mass_matrix_and_forcing_operations <= tree_pass_beyond_operations_per_velocity * long(e.num_velocities()))
     return false;
-  // τ_a's M_a as ∂τ_a/∂q'': q'' must not enter it through a quantity of the recursion
+  // τ_a's M_a as ∂τ_a/∂q'': q'' must not enter it through a quantity of the recursion (τ_a's symbols
+  // gathered in one walk, not one walk per quantity)
+  GiNaC::exset in_applied;
   for (const ex& tau : e.bodies_gradient->applied_inverse_dynamics)
-    for (const Intermediate& i : e.acceleration_intermediates)
-      if (tau.has(i.symbol)) return false;
-  return true;
+    for (auto it = tau.preorder_begin(); it != tau.preorder_end(); ++it)
+      if (GiNaC::is_a<GiNaC::symbol>(*it)) in_applied.insert(*it);
+  return std::none_of(e.acceleration_intermediates.begin(), e.acceleration_intermediates.end(),
+                      [&](const Intermediate& i) { return in_applied.count(i.symbol) > 0; });
 }
 
 std::string tree_acceleration_gradient_function(const Equations& e) {
