@@ -22,8 +22,31 @@ std::string output_file_refusal(const std::string& path) {
   return {};
 }
 
+bool is_device_or_pipe(const std::string& path) {
+  std::error_code error;
+  auto existing = std::filesystem::status(path, error);
+  return !error && std::filesystem::exists(existing) && !std::filesystem::is_regular_file(existing) &&
+         !std::filesystem::is_directory(existing);
+}
+
+namespace {
+
+// A device or a pipe takes the text as it comes: renaming a file over it would replace it,
+// /dev/null included when run as root.
+std::string write_into_special_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) return "cannot open " + path + ": " + std::strerror(errno);
+  out << text;
+  out.flush();
+  if (!out) return "cannot write " + path + ": " + std::strerror(errno);
+  return {};
+}
+
+}  // namespace
+
 std::string write_file_atomically(const std::string& path, const std::string& text) {
   if (std::string refusal = output_file_refusal(path); !refusal.empty()) return refusal;
+  if (is_device_or_pipe(path)) return write_into_special_file(path, text);
   std::string temporary = path + ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

@@ -46,9 +46,10 @@ double seconds_now() {
 TrajectoryOutput::TrajectoryOutput(const eomgen_model_abi& model, std::string csv) : model_(model), csv_(std::move(csv)) {
   if (csv_.empty()) return;
   if (failure_ = output_file_refusal(csv_); !failure_.empty()) return;
-  temporary_ = csv_ + ".tmp." + std::to_string(::getpid());
-  file_ = std::fopen(temporary_.c_str(), "wb");
-  if (!file_) failure_ = "cannot create " + temporary_ + ": " + std::strerror(errno);
+  if (!is_device_or_pipe(csv_)) temporary_ = csv_ + ".tmp." + std::to_string(::getpid());
+  const std::string& written = temporary_.empty() ? csv_ : temporary_;
+  file_ = std::fopen(written.c_str(), "wb");
+  if (!file_) failure_ = "cannot create " + written + ": " + std::strerror(errno);
   else write(runtime::trajectory_csv_header(model_));
 }
 
@@ -83,6 +84,7 @@ bool TrajectoryOutput::finish() {
   if (!closed && failure_.empty())
     failure_ = "cannot write " + csv_ + " (the disk is full, or a file-size limit is reached): " + std::strerror(errno);
   if (!failure_.empty()) return false;
+  if (temporary_.empty()) return true;
   if (std::rename(temporary_.c_str(), csv_.c_str()) != 0) {
     failure_ = "cannot move the output into place at " + csv_ + ": " + std::strerror(errno);
     return false;
