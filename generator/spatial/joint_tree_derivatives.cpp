@@ -392,8 +392,16 @@ class Gradient {
     }
   }
 
+  // A quantity equal to one already named, or to its negative, is that name: a leaf's D entries
+  // are its momentum's, and B S - S x P then cancels where it is formed, not in the header as
+  // "- c*x + c*x".
   ex name(std::size_t i, const std::string& label, const ex& value) {
-    return named_intermediate(out_, links_[i].name, label, value);
+    ex expanded = value.expand();
+    if (auto same = named_values_.find(expanded); same != named_values_.end()) return same->second;
+    if (auto opposite = named_values_.find((-expanded).expand()); opposite != named_values_.end()) return -opposite->second;
+    ex symbol = named_intermediate(out_, links_[i].name, label, expanded);
+    if (GiNaC::is_a<GiNaC::symbol>(symbol) && !GiNaC::are_ex_trivially_equal(symbol, expanded)) named_values_[expanded] = symbol;
+    return symbol;
   }
   Vector3 named(std::size_t i, const std::string& label, const Vector3& x) {
     return {name(i, label + "_x", x[0]), name(i, label + "_y", x[1]), name(i, label + "_z", x[2])};
@@ -412,6 +420,7 @@ class Gradient {
 
   const std::vector<TreeLink>& links_;
   std::vector<Intermediate>& out_;
+  GiNaC::exmap named_values_;  // name()
   std::vector<bool> cyclic_;  // find_cyclic_roots()
   std::vector<GiNaC::matrix> R_;
   std::vector<Vector3> origin_;
