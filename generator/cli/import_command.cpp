@@ -1,5 +1,5 @@
-// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME] [--free-base] [--masses-from-shapes]: a robot
-// description as a model file.
+// eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME] [--free-base] [--masses-from-shapes]
+// [--right-angles-within RAD]: a robot description as a model file.
 #include <iostream>
 
 #include <fmt/format.h>
@@ -12,7 +12,7 @@ namespace eomgen::cli {
 
 namespace {
 
-int import_robot(const std::string& file, const std::string& output, const std::string& name, UrdfReading reading) {
+int import_robot(const std::string& file, const std::string& output, const std::string& name, RobotReading reading) {
   Diagnostics diagnostics;
   std::optional<std::string> text = imported_model_text(file, diagnostics, false, name, reading);
   if (report_diagnostics(diagnostics, file)) return exit_user_error;
@@ -48,9 +48,16 @@ Command add_import_command(CLI::App& app) {
   cmd->add_flag("--masses-from-shapes", *masses_from_shapes,
                 "URDF: weigh each link without an <inertial> by its <collision> shapes at the density of water, as MuJoCo reads a URDF; "
                 "URDF has such a link massless");
-  return [cmd, file, output, name, free_base, masses_from_shapes]() -> int {
+  auto right_angles_within = std::make_shared<double>(0);
+  cmd->add_option("--right-angles-within", *right_angles_within,
+                  "Write each body's turn that is within RAD radians of a right angle as that right angle (a file's "
+                  "rpy = \"1.5708 0 0\" as exactly pi/2): the generated code then skips those turns' multiplications, and "
+                  "the robot moves by up to RAD; the import notes the turns near a right angle (default 0: as read)")
+      ->type_name("RAD")
+      ->check(CLI::Range(0.0, 0.1));
+  return [cmd, file, output, name, free_base, masses_from_shapes, right_angles_within]() -> int {
     if (!cmd->parsed()) return -1;
-    return import_robot(*file, *output, *name, {*free_base, *masses_from_shapes});
+    return import_robot(*file, *output, *name, {*free_base, *masses_from_shapes, *right_angles_within});
   };
 }
 

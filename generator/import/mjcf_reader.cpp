@@ -23,6 +23,7 @@
 #include "common/independent_rows.hpp"
 #include "import/free_base.hpp"
 #include "import/newer_mjcf.hpp"
+#include "import/right_angles.hpp"
 #include "import/urdf_text.hpp"
 
 namespace eomgen {
@@ -343,7 +344,27 @@ bool is_urdf_file(const std::string& path) { return is_urdf_path(path) || has_ro
 std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10); }
 
 
-std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, UrdfReading reading) {
+namespace {
+
+// what --right-angles-within did, or what it would do: a turn stated to five digits is a full
+// rotation matrix in the generated code (the Panda's rhs takes 1.5x as long as with exact turns)
+void note_right_angles(const RightAngleRounding& turns, Robot& r) {
+  if (turns.rounded > 0)
+    r.notes.push_back(fmt::format("{} turn(s) within {:.2g} rad of a right angle written as exact right angles "
+                                  "(--right-angles-within): the robot moved by up to that angle",
+                                  turns.rounded, turns.largest_rounded));
+  if (turns.near > 0) {
+    double suggested = std::pow(10.0, std::ceil(std::log10(turns.largest_near)));
+    r.notes.push_back(fmt::format("{} turn(s) are within {:.2g} rad of a right angle, not to the last digit (the file states "
+                                  "them to fewer digits): written as read, each is a full rotation matrix in the generated "
+                                  "code; --right-angles-within {:g} writes them as exact right angles, which it skips",
+                                  turns.near, turns.largest_near, suggested));
+  }
+}
+
+}  // namespace
+
+std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, RobotReading reading) {
   char error[1000] = "";
   std::string urdf = urdf_text_of(path);
   if (reading.free_base && urdf.empty())
@@ -458,6 +479,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, U
                                   "their scale: a unit axis's or quaternion's length, the robot's size, a body's mass times the size "
                                   "squared), such as cos(π/2) printed as 6.12323e-17 in a joint axis",
                                   noise.numbers, noise.largest));
+  note_right_angles(rounded_right_angles(r, reading.right_angles_within), r);
   note_losses(m, r);
   return r;
 }

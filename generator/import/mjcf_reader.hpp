@@ -11,7 +11,7 @@
 namespace eomgen {
 
 /// The robot of an MJCF or URDF file, or why MuJoCo cannot read it.
-std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, UrdfReading reading = {});
+std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, RobotReading reading = {});
 
 /// The MuJoCo that reads the files, e.g. "2.2.2".
 std::string mj_version_text();

@@ -289,7 +289,7 @@ std::string sum_text(const std::vector<std::string>& terms) {
 }  // namespace
 
 std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory,
-                                               std::string name, UrdfReading reading) {
+                                               std::string name, RobotReading reading) {
   auto read = read_with_mujoco(path, reading);
   bool urdf = is_urdf_file(path);  // the file read once more, not at each message
   if (auto* failure = std::get_if<UnreadableRobot>(&read)) {

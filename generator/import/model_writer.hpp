@@ -20,7 +20,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
 /// does with a robot file (`in_memory`: saying so) and what `eomgen import` writes; `reading`: how
 /// a URDF is read (import/mjcf_reader.hpp).
 std::optional<std::string> imported_model_text(const std::string& path, Diagnostics& diagnostics, bool in_memory = true,
-                                               std::string name = {}, UrdfReading reading = {});
+                                               std::string name = {}, RobotReading reading = {});
 
 /// `text` made a C++ identifier: other characters become _, a leading digit gets a _ before it.
 std::string identifier_of(const std::string& text);

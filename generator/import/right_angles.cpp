@@ -1,7 +1,9 @@
 #include "import/right_angles.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 namespace eomgen {
 
@@ -49,16 +51,14 @@ std::array<int, 4> permutation_quaternion(const Matrix& P) {
   return q;
 }
 
-}  // namespace
-
-std::optional<std::array<int, 4>> right_angle_turn(const Quaternion& q) {
-  if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return std::nullopt;
-  auto R = rotation_of(q);
+// the signed permutation nearest to R, when rounding R's entries gives a rotation
+std::optional<std::pair<Matrix, std::array<int, 4>>> rounded_rotation(const std::array<std::array<double, 3>, 3>& R,
+                                                                      double within_entry) {
   Matrix P{};
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       double nearest = std::round(R[r][c]);
-      if (std::abs(R[r][c] - nearest) > 8 * DBL_EPSILON || std::abs(nearest) > 1) return std::nullopt;
+      if (std::abs(R[r][c] - nearest) > within_entry || std::abs(nearest) > 1) return std::nullopt;
       P[r][c] = int(nearest);
     }
   std::array<int, 4> turn = permutation_quaternion(P);
@@ -67,7 +67,57 @@ std::optional<std::array<int, 4>> right_angle_turn(const Quaternion& q) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c)
       if (back[r][c] != length * P[r][c]) return std::nullopt;  // not a rotation (a reflection, say)
-  return turn;
+  return std::make_pair(P, turn);
+}
+
+}  // namespace
+
+std::optional<NearRightAngle> nearest_right_angle(const Quaternion& q) {
+  double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(n > 0)) return std::nullopt;
+  auto rounded = rounded_rotation(rotation_of(q), 0.1);
+  if (!rounded) return std::nullopt;
+  const std::array<int, 4>& p = rounded->second;
+  double pn = std::sqrt(double(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]));
+  // unit quaternions u and v (taken on u's side) lie φ = 2 atan2(|u − v|, |u + v|) apart, and their
+  // turns 2φ: accurate where 2 acos(u·v) loses half the digits
+  double dot = 0;
+  for (std::size_t k = 0; k < 4; ++k) dot += q[k] / n * p[k] / pn;
+  double side = dot < 0 ? -1 : 1, apart = 0, together = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    double u = q[k] / n, v = side * p[k] / pn;
+    apart += (u - v) * (u - v), together += (u + v) * (u + v);
+  }
+  double angle = 4 * std::atan2(std::sqrt(apart), std::sqrt(together));
+  if (!(angle < 0.1)) return std::nullopt;
+  return NearRightAngle{p, angle};
+}
+
+RightAngleRounding rounded_right_angles(Robot& robot, double within) {
+  RightAngleRounding done;
+  auto round = [&](Quaternion& q) {
+    if (right_angle_turn(q)) return;  // a unit of rounding off: written exactly anyway
+    auto near = nearest_right_angle(q);
+    if (!near || near->angle > std::max(within, 1e-3)) return;
+    if (near->angle <= within) {
+      // a unit quaternion, as the file's was: right_angle_turn() then writes it with integers
+      const std::array<int, 4>& p = near->turn;
+      double length = std::sqrt(double(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]));
+      q = {p[0] / length, p[1] / length, p[2] / length, p[3] / length};
+      ++done.rounded, done.largest_rounded = std::max(done.largest_rounded, near->angle);
+    } else {
+      ++done.near, done.largest_near = std::max(done.largest_near, near->angle);
+    }
+  };
+  for (RobotBody& b : robot.bodies) round(b.orientation), round(b.inertia_axes);
+  return done;
+}
+
+std::optional<std::array<int, 4>> right_angle_turn(const Quaternion& q) {
+  if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return std::nullopt;
+  auto rounded = rounded_rotation(rotation_of(q), 8 * DBL_EPSILON);
+  if (!rounded) return std::nullopt;
+  return rounded->second;
 }
 
 }  // namespace eomgen

@@ -20,4 +20,28 @@ namespace eomgen {
 /// rotation matrix is a permutation with signs to within 8 units of rounding; otherwise nothing.
 std::optional<std::array<int, 4>> right_angle_turn(const Quaternion& q);
 
+/// The right angle nearest to a turn, as integers w, x, y, z, and the angle between the two in
+/// radians, when that angle is below 0.1 rad; otherwise nothing.
+struct NearRightAngle {
+  std::array<int, 4> turn{};
+  double angle = 0;
+};
+std::optional<NearRightAngle> nearest_right_angle(const Quaternion& q);
+
+/// What rounded_right_angles() did: the turns it rounded and the largest angle it moved one by;
+/// the turns it left that are near a right angle all the same (within 1e-3 rad, not to the last
+/// digit: a file that states π/2 as 1.5708) and the largest of their angles.
+struct RightAngleRounding {
+  int rounded = 0;
+  double largest_rounded = 0;
+  int near = 0;
+  double largest_near = 0;
+};
+
+/// Each body's turn in its parent and its axes of inertia, where within `within` radians of a
+/// right angle, set to that right angle: a file that states π/2 to five or twelve digits
+/// (1.5708, 1.57079632679) then has the constant turns that the generated code skips. The
+/// robot moves by up to `within`; the default, 0, moves nothing.
+RightAngleRounding rounded_right_angles(Robot& robot, double within);
+
 }  // namespace eomgen

@@ -139,12 +139,16 @@ struct Robot {
   std::vector<std::string> notes;      // how the file was read where that is not plain (carried nonetheless)
 };
 
-/// How a URDF is read: its root link hung from the world by a free joint (free_base.hpp), and its
-/// links without an <inertial> weighed by their shapes as MuJoCo weighs them, where URDF has them
-/// massless (urdf_text.hpp's without_masses_from_geometry): read_with_mujoco() takes it.
-struct UrdfReading {
+/// How a robot file is read: a URDF's root link hung from the world by a free joint
+/// (free_base.hpp), its links without an <inertial> weighed by their shapes as MuJoCo weighs them,
+/// where URDF has them massless (urdf_text.hpp's without_masses_from_geometry); and, for either
+/// format, turns within `right_angles_within` radians of a right angle written as exact right
+/// angles (right_angles.hpp's rounded_right_angles; 0: only those a unit of rounding off).
+/// read_with_mujoco() takes it.
+struct RobotReading {
   bool free_base = false;
   bool masses_from_shapes = false;
+  double right_angles_within = 0;
 };
 
 }  // namespace eomgen

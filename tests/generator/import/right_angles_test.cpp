@@ -1,7 +1,8 @@
 // Right angles to the last digit are imported exactly (generator/import/right_angles.hpp): each of
 // the cube's 24 turns, its quaternion a unit in the last place off, as MuJoCo's compiler makes it
 // from rpy = "1.5707963267948966"; a turn stated to fewer digits, or no right angle, stays as read;
-// and an arm imported with both has MuJoCo's dynamics.
+// and an arm imported with both has MuJoCo's dynamics. With --right-angles-within, turns stated
+// to fewer digits are rounded to their right angles, and the arm then has the exact arm's dynamics.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,8 +64,9 @@ TEST(RightAngles, EveryTurnOfTheCubeIsWrittenExactly) {
   EXPECT_EQ(written.size(), 24u);
 }
 
+Quaternion about_x(double angle) { return Quaternion{std::cos(angle / 2), std::sin(angle / 2), 0, 0}; }
+
 TEST(RightAngles, TurnsStatedToFewerDigitsOrNoRightAngleStayAsRead) {
-  auto about_x = [](double angle) { return Quaternion{std::cos(angle / 2), std::sin(angle / 2), 0, 0}; };
   EXPECT_TRUE(right_angle_turn(about_x(1.5707963267948966)));
   EXPECT_FALSE(right_angle_turn(about_x(3.14159265359))) << "2e-13 from pi: the file's robot";
   EXPECT_FALSE(right_angle_turn(about_x(1.5708)));
@@ -118,6 +120,76 @@ TEST(RightAngles, AnArmImportsItsRightAngleExactlyAndKeepsMuJoCosDynamics) {
   std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
   ASSERT_TRUE(m) << error;
   expect_mujoco_dynamics(e, m.get(), {"shoulder", "elbow", "wrist"}, 5, 1e-14, 1e-13);
+}
+
+TEST(RightAngles, TheNearestRightAngleAndHowFarATurnIsFromIt) {
+  const double half_pi = 1.5707963267948966, pi = 3.141592653589793;
+  auto five_digits = nearest_right_angle(about_x(1.5708));
+  ASSERT_TRUE(five_digits);
+  EXPECT_EQ(five_digits->turn, (std::array<int, 4>{1, 1, 0, 0}));
+  EXPECT_NEAR(five_digits->angle, 1.5708 - half_pi, 1e-15);
+  auto twelve_digits = nearest_right_angle(about_x(-3.14159265359));
+  ASSERT_TRUE(twelve_digits);
+  EXPECT_NEAR(twelve_digits->angle, 3.14159265359 - pi, 1e-15) << "accurate where acos would keep 8 digits";
+  // a small turn about an oblique axis is that far from no turn at all
+  Eigen::Quaterniond oblique(Eigen::AngleAxisd(0.05, Eigen::Vector3d(1, 1, 0).normalized()));
+  auto near_identity = nearest_right_angle({oblique.w(), oblique.x(), oblique.y(), oblique.z()});
+  ASSERT_TRUE(near_identity);
+  EXPECT_EQ(near_identity->turn, (std::array<int, 4>{1, 0, 0, 0}));
+  EXPECT_NEAR(near_identity->angle, 0.05, 1e-15);
+  EXPECT_FALSE(nearest_right_angle(about_x(0.3)));
+  EXPECT_FALSE(nearest_right_angle({0.9238795325112867, 0, 0, -0.3826834323650898})) << "45 degrees";
+  EXPECT_FALSE(nearest_right_angle({0, 0, 0, 0}));
+}
+
+TEST(RightAngles, RoundingMovesOnlyTheTurnsWithinItsAngle) {
+  Robot robot;
+  for (double angle : {1.5708, 3.14159, 1.56, 1.5707963267948966, 0.0})
+    robot.bodies.push_back(RobotBody{}), robot.bodies.back().orientation = about_x(angle);
+  robot.bodies.back().inertia_axes = about_x(-1.5708);
+  Robot as_read = robot;
+  RightAngleRounding noted = rounded_right_angles(robot, 0);
+  EXPECT_EQ(noted.rounded, 0);
+  EXPECT_EQ(noted.near, 3) << "1.5708, 3.14159 and the axes of inertia; not 1.56 (0.011 rad off), nor the exact ones";
+  EXPECT_NEAR(noted.largest_near, 1.5708 - 1.5707963267948966, 1e-15);
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b) EXPECT_EQ(robot.bodies[b].orientation, as_read.bodies[b].orientation);
+  RightAngleRounding done = rounded_right_angles(robot, 3e-6);
+  EXPECT_EQ(done.rounded, 1) << "3.14159 is 2.7e-6 from pi";
+  EXPECT_EQ(done.near, 2);
+  EXPECT_TRUE(right_angle_turn(robot.bodies[1].orientation));
+  EXPECT_FALSE(right_angle_turn(robot.bodies[0].orientation));
+  done = rounded_right_angles(robot, 1e-5);
+  EXPECT_EQ(done.rounded, 2);
+  EXPECT_EQ(done.near, 0);
+  EXPECT_NEAR(done.largest_rounded, 1.5708 - 1.5707963267948966, 1e-15);
+  EXPECT_TRUE(right_angle_turn(robot.bodies[0].orientation) && right_angle_turn(robot.bodies[4].inertia_axes));
+  EXPECT_EQ(robot.bodies[2].orientation, as_read.bodies[2].orientation) << "1.56 is no right angle";
+}
+
+TEST(RightAngles, AnArmStatedToFiveDigitsAndRoundedHasTheExactArmsDynamics) {
+  std::string five_digits = right_angled_arm;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"-1.5707963267948966", "-1.5708"}, {"3.14159265359", "3.1416"}})
+    five_digits.replace(five_digits.find(from), from.size(), to);
+  std::string path = write_file("five_digit_arm.urdf", five_digits);
+  Diagnostics as_read_diagnostics, rounded_diagnostics;
+  auto as_read = imported_model_text(path, as_read_diagnostics, false);
+  ASSERT_TRUE(as_read) << as_read_diagnostics.format();
+  EXPECT_NE(as_read->find("# note: 2 turn(s) are within 7.3e-06 rad of a right angle"), std::string::npos) << *as_read;
+  EXPECT_NE(as_read->find("--right-angles-within 1e-05 writes them as exact right angles"), std::string::npos);
+  EXPECT_EQ(as_read->find("quat(1, -1, 0, 0)"), std::string::npos);
+  auto rounded = imported_model_text(path, rounded_diagnostics, false, "", {false, false, 1e-5});
+  ASSERT_TRUE(rounded) << rounded_diagnostics.format();
+  EXPECT_NE(rounded->find("rotation = \"quat(1, -1, 0, 0)\""), std::string::npos) << *rounded;
+  EXPECT_NE(rounded->find("rotation = \"quat(0, 1, 0, 0)\""), std::string::npos) << *rounded;
+  EXPECT_NE(rounded->find("# note: 2 turn(s) within 7.3e-06 rad of a right angle written as exact right angles"), std::string::npos);
+  // the oracle: MuJoCo reading the arm whose turns the file states exactly
+  std::string exact = right_angled_arm;
+  exact.replace(exact.find("3.14159265359"), 13, "3.141592653589793");
+  std::string exact_path = write_file("exact_arm.urdf", exact);
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(exact_path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  expect_mujoco_dynamics(derive_text(*rounded, "five_digit_arm.toml"), m.get(), {"shoulder", "elbow", "wrist"}, 5, 1e-14, 1e-13);
 }
 
 }  // namespace
