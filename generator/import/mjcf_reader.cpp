@@ -357,7 +357,7 @@ void note_right_angles(const RightAngleRounding& turns, Robot& r) {
     double suggested = std::pow(10.0, std::ceil(std::log10(turns.largest_near)));
     r.notes.push_back(fmt::format("{} turn(s) are within {:.2g} rad of a right angle, not to the last digit (the file states "
                                   "them to fewer digits): written as read, each is a full rotation matrix in the generated "
-                                  "code; --right-angles-within {:g} writes them as exact right angles, which it skips",
+                                  "code; `eomgen import --right-angles-within {:g}` writes them as exact right angles, which it skips",
                                   turns.near, turns.largest_near, suggested));
   }
 }

@@ -175,7 +175,7 @@ TEST(RightAngles, AnArmStatedToFiveDigitsAndRoundedHasTheExactArmsDynamics) {
   auto as_read = imported_model_text(path, as_read_diagnostics, false);
   ASSERT_TRUE(as_read) << as_read_diagnostics.format();
   EXPECT_NE(as_read->find("# note: 2 turn(s) are within 7.3e-06 rad of a right angle"), std::string::npos) << *as_read;
-  EXPECT_NE(as_read->find("--right-angles-within 1e-05 writes them as exact right angles"), std::string::npos);
+  EXPECT_NE(as_read->find("`eomgen import --right-angles-within 1e-05` writes them as exact right angles"), std::string::npos);
   EXPECT_EQ(as_read->find("quat(1, -1, 0, 0)"), std::string::npos);
   auto rounded = imported_model_text(path, rounded_diagnostics, false, "", {false, false, 1e-5});
   ASSERT_TRUE(rounded) << rounded_diagnostics.format();
