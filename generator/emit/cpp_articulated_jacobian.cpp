@@ -146,7 +146,7 @@ void write_tree_values(BodyWriter& w, const Equations& e, const JacobianLayout& 
     values.push_back(layout.rest[r].value), targets.push_back(fmt::format("rest_value[{}]", r));
   w.line(fmt::format("T axis[{0}][{1}], carried[{0}], field[{2}][{1}], own_force[{2}];", n, C, L));
   if (!layout.rest.empty()) w.line(fmt::format("T rest_value[{}];", layout.rest.size()));
-  w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+  w.assign(values, targets);
 }
 
 // How the factors' text reads a node's quantities: a chain keeps each node's IA and Ω for the next

@@ -277,6 +277,10 @@ CseBatch BodyWriter::reduced_batch(const std::vector<ex>& expressions) {
 
 // GCC's register allocation took 3.6 s of the 8.3 s that g++ -O2 spent on the 30-link chain's
 // 1,800 entries of df/dx when every temporary came first and lived to the end of the function
+void BodyWriter::assign(const std::vector<ex>& expressions, const std::vector<std::string>& targets) {
+  assign(expressions, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+}
+
 void BodyWriter::assign(const std::vector<ex>& expressions,
                         const std::function<std::string(std::size_t, const std::string&)>& assignment) {
   CseBatch b = unwritten_batch(expressions);

@@ -39,6 +39,8 @@ class BodyWriter {
   /// the last temporary it uses, so that a temporary lives only until its last use.
   void assign(const std::vector<GiNaC::ex>& expressions,
               const std::function<std::string(std::size_t, const std::string&)>& assignment);
+  /// As assign, each output k written as `targets[k] = code;` (an entry of M, of a table).
+  void assign(const std::vector<GiNaC::ex>& expressions, const std::vector<std::string>& targets);
   /// As batch, but the outputs are returned reduced (in model symbols and temporaries), with
   /// the batch's temporaries, for code that goes on from them (a tangent sweep); `print` writes one.
   CseBatch reduced_batch(const std::vector<GiNaC::ex>& expressions);

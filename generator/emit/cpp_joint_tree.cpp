@@ -88,7 +88,7 @@ std::string tree_acceleration_gradient_body(const Equations& e) {
         values.push_back(m), targets.push_back(fmt::format("M[{}]", i * n + j));
     values.push_back(-applied[i].subs(at_rest)), targets.push_back(fmt::format("f[{}]", i));
   }
-  w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+  w.assign(values, targets);
   // the pass adds the bodies' M and f, then the solve sets q'' = M^-1 f, the applied part's ∂τ and the
   // root joint's motion at them, and the pass adds the bodies' ∂τ
   w.line(fmt::format("hinge_tree_pass<true>(tree, ddq, {}, {}, F, {}, M, f, [&] {{", nq, nq + n, n));

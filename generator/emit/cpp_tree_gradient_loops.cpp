@@ -414,7 +414,7 @@ std::string root_motion_body(const Equations& e) {
   };
   add_rows("S", root.S), add_rows("A", root.A), add_rows("twist", root.twist), add_rows("dS", root.dS), add_rows("ddS", root.ddS);
   add("v", root.v), add("a", root.a);
-  w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+  w.assign(values, targets);
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
@@ -446,7 +446,7 @@ std::string tree_tables_body(const Equations& e) {
   for (unsigned k = 0; k < 3; ++k) values.push_back(links.gravity[k]), targets.push_back(fmt::format("tree.gravity[{}]", k));
   w.line(fmt::format("tree.rooted = {};", links.root ? "true" : "false"));
   if (links.root) declare_jointed_root(w, *links.root);
-  w.assign(values, [&](std::size_t k, const std::string& code) { return targets[k] + " = " + code + ";"; });
+  w.assign(values, targets);
   return without_unused_locals(w.finish(all_unused));
 }
 
