@@ -286,10 +286,10 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T p_m = p[0];
   const T p_g = p[1];
   const T k_top_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_tqn_d0 = -T(2)*q_qw/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
-  const T k_top_tqn_d1 = -T(2)*q_qx/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
-  const T k_top_tqn_d2 = -T(2)*q_qy/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
-  const T k_top_tqn_d3 = -T(2)*q_qz/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
+  const T k_top_tqn_d0 = -T(2)*k_top_tqn*k_top_tqn*q_qw;
+  const T k_top_tqn_d1 = -T(2)*k_top_tqn*k_top_tqn*q_qx;
+  const T k_top_tqn_d2 = -T(2)*k_top_tqn*k_top_tqn*q_qy;
+  const T k_top_tqn_d3 = -T(2)*k_top_tqn*k_top_tqn*q_qz;
   const T c0_d0 = -k_top_tqn_d0*q_qx*q_qx;
   const T c0_d1 = -T(2)*k_top_tqn*q_qx - k_top_tqn_d1*q_qx*q_qx;
   const T c0_d2 = -k_top_tqn_d2*q_qx*q_qx;

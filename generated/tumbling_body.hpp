@@ -515,10 +515,10 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_body_tEzx = T(2)*k_body_tqn*q_qx*q_qz - c4;
   const T k_body_tEzy = T(2)*k_body_tqn*q_qw*q_qx + c6;
   const T k_body_tEzz = c1 + c2 + c5 + k_body_tqn*q_qw*q_qw;
-  const T k_body_tqn_d3 = -T(2)*q_qw/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
-  const T k_body_tqn_d4 = -T(2)*q_qx/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
-  const T k_body_tqn_d5 = -T(2)*q_qy/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
-  const T k_body_tqn_d6 = -T(2)*q_qz/((q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz)*(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz));
+  const T k_body_tqn_d3 = -T(2)*k_body_tqn*k_body_tqn*q_qw;
+  const T k_body_tqn_d4 = -T(2)*k_body_tqn*k_body_tqn*q_qx;
+  const T k_body_tqn_d5 = -T(2)*k_body_tqn*k_body_tqn*q_qy;
+  const T k_body_tqn_d6 = -T(2)*k_body_tqn*k_body_tqn*q_qz;
   const T c0_d3 = -T(2)*k_body_tqn*q_qw - k_body_tqn_d3*q_qw*q_qw;
   const T c0_d4 = -k_body_tqn_d4*q_qw*q_qw;
   const T c0_d5 = -k_body_tqn_d5*q_qw*q_qw;

@@ -28,9 +28,19 @@ std::vector<ex> TangentSweep::derivatives(const ex& reduced) const {
   return out;
 }
 
+// X = 1/u (a quaternion's 1/|q|²) has X' = −X² u': products of X, where differentiating the
+// definition gives −u'/u², a division and u formed again
+std::vector<ex> TangentSweep::derivatives_of(const Temporary& t) const {
+  const ex& d = t.definition;
+  if (!GiNaC::is_a<GiNaC::power>(d) || !d.op(1).is_equal(-1)) return derivatives(d);
+  std::vector<ex> out = derivatives(d.op(0));
+  for (ex& x : out) x = -t.name * t.name * x;
+  return out;
+}
+
 void TangentSweep::follow(const CseBatch& batch) {
   for (const Temporary& t : batch.temporaries) {
-    std::vector<ex> d = derivatives(t.definition);
+    std::vector<ex> d = derivatives_of(t);
     std::vector<std::size_t> written;
     std::vector<ex> values;
     auto& mine = tangents_[t.name];

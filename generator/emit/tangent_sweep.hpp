@@ -34,6 +34,8 @@ class TangentSweep {
   const std::vector<Temporary>& tangents_written() const { return written_; }
 
  private:
+  std::vector<GiNaC::ex> derivatives_of(const Temporary& t) const;
+
   BodyWriter& writer_;
   std::size_t num_directions_;
   // a direction symbol or a temporary → its nonzero tangents by direction
