@@ -15,6 +15,9 @@ std::string output_file_refusal(const std::string& path) {
   std::error_code error;
   if (fs::is_directory(path, error))
     return path + " is a folder, not a file: name a file in it";
+  // a device or a pipe takes the output itself: its folder (/dev) need not be writable
+  if (is_device_or_pipe(path))
+    return ::access(path.c_str(), W_OK) == 0 ? std::string() : "cannot write " + path + ": " + std::strerror(errno);
   fs::path folder = fs::path(path).parent_path();
   if (folder.empty()) folder = ".";
   if (!fs::is_directory(folder, error)) return "cannot write " + path + ": the folder " + folder.string() + " does not exist";
