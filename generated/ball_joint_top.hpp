@@ -496,10 +496,11 @@ T potential_energy(T t, const T* x, const T* p) {
   const T q_qz = x[3];
   const T p_m = p[0];
   const T p_g = p[1];
-  const T k_top_Rzx = -T(2)*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rzy = T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(2)*q_qy*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rzz = q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(5))*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(1);
+  const T c0 = q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
+  const T k_top_Rzx = -T(2)*q_qw*q_qy/c0 + T(2)*q_qx*q_qz/c0;
+  const T k_top_Rzy = T(2)*q_qw*q_qx/c0 + T(2)*q_qy*q_qz/c0;
+  const T k_top_Rzz = q_qw*q_qw/c0 - q_qx*q_qx/c0 - q_qy*q_qy/c0 + q_qz*q_qz/c0;
+  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/c0 - (T(1)/T(5))*q_qx*q_qz/c0 + T(1);
   return (T(1)/T(4))*k_top_Rzz*p_g*p_m + (T(3)/T(100))*k_top_Rzy*p_g*p_m + (T(3)/T(25))*k_top_Rzx*p_g*p_m + k_top_oz*p_g*p_m;
 }
 
@@ -527,10 +528,11 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T s_wz = x[6];
   const T p_m = p[0];
   const T p_g = p[1];
-  const T k_top_Rzx = -T(2)*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rzy = T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(2)*q_qy*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rzz = q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(5))*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(1);
+  const T c0 = q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
+  const T k_top_Rzx = -T(2)*q_qw*q_qy/c0 + T(2)*q_qx*q_qz/c0;
+  const T k_top_Rzy = T(2)*q_qw*q_qx/c0 + T(2)*q_qy*q_qz/c0;
+  const T k_top_Rzz = q_qw*q_qw/c0 - q_qx*q_qx/c0 - q_qy*q_qy/c0 + q_qz*q_qz/c0;
+  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/c0 - (T(1)/T(5))*q_qx*q_qz/c0 + T(1);
   out[0] = (T(1)/T(100))*(T(100)*k_top_oz + T(12)*k_top_Rzx + T(25)*k_top_Rzz + T(3)*k_top_Rzy)*p_g*p_m - (T(1)/T(1000))*(T(2) + T(5)*p_m)*s_wx*s_wz + (T(1)/T(10000))*(T(100) + T(317)*p_m)*s_wx*s_wx + (T(1)/T(20000))*(T(13)*p_m + T(400))*s_wz*s_wz + (T(1)/T(20000))*(T(250) + T(629)*p_m)*s_wy*s_wy - (T(1)/T(5000))*(T(3)*p_m - T(5))*s_wx*s_wy + (T(3)/T(2000))*(T(1) - T(5)*p_m)*s_wy*s_wz;
 }
 
@@ -587,25 +589,26 @@ void body_poses(T t, const T* x, const T* p, T* out) {
   const T q_qx = x[1];
   const T q_qy = x[2];
   const T q_qz = x[3];
-  const T c0 = q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c1 = -q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c2 = -q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c3 = T(2)*q_qw*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c4 = T(2)*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c5 = -q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T c6 = T(2)*q_qy*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rxx = c0 + c1 + c2 + q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rxy = T(2)*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - c3;
-  const T k_top_Rxz = T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c4;
-  const T k_top_ox = -(T(1)/T(10))*q_qw*q_qw/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(10))*q_qx*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + (T(1)/T(10))*q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + (T(1)/T(10))*q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(1)/T(10);
-  const T k_top_Ryx = T(2)*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c3;
-  const T k_top_Ryy = -c0 - c1 - c5 - q_qz*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Ryz = -T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c6;
-  const T k_top_oy = -(T(1)/T(5))*q_qw*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(5))*q_qx*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_Rzx = T(2)*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - c4;
-  const T k_top_Rzy = T(2)*q_qw*q_qx/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + c6;
-  const T k_top_Rzz = -c0 - c2 - c5 - q_qy*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) - (T(1)/T(5))*q_qx*q_qz/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz) + T(1);
+  const T c0 = q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
+  const T c1 = q_qx*q_qx/c0;
+  const T c2 = -q_qy*q_qy/c0;
+  const T c3 = -q_qz*q_qz/c0;
+  const T c4 = T(2)*q_qw*q_qz/c0;
+  const T c5 = T(2)*q_qw*q_qy/c0;
+  const T c6 = -q_qw*q_qw/c0;
+  const T c7 = T(2)*q_qy*q_qz/c0;
+  const T k_top_Rxx = c1 + c2 + c3 + q_qw*q_qw/c0;
+  const T k_top_Rxy = T(2)*q_qx*q_qy/c0 - c4;
+  const T k_top_Rxz = T(2)*q_qx*q_qz/c0 + c5;
+  const T k_top_ox = -(T(1)/T(10))*q_qw*q_qw/c0 - (T(1)/T(10))*q_qx*q_qx/c0 + (T(1)/T(10))*q_qy*q_qy/c0 + (T(1)/T(10))*q_qz*q_qz/c0 + T(1)/T(10);
+  const T k_top_Ryx = T(2)*q_qx*q_qy/c0 + c4;
+  const T k_top_Ryy = -c1 - c2 - c6 - q_qz*q_qz/c0;
+  const T k_top_Ryz = -T(2)*q_qw*q_qx/c0 + c7;
+  const T k_top_oy = -(T(1)/T(5))*q_qw*q_qz/c0 - (T(1)/T(5))*q_qx*q_qy/c0;
+  const T k_top_Rzx = T(2)*q_qx*q_qz/c0 - c5;
+  const T k_top_Rzy = T(2)*q_qw*q_qx/c0 + c7;
+  const T k_top_Rzz = -c1 - c3 - c6 - q_qy*q_qy/c0;
+  const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/c0 - (T(1)/T(5))*q_qx*q_qz/c0 + T(1);
   out[3] = k_top_Rxx;
   out[15] = k_top_Rxx;
   out[4] = k_top_Rxy;

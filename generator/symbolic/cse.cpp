@@ -41,6 +41,14 @@ bool is_cheap_power(const ex& e) {
          GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1))) <= 3;
 }
 
+// a small power of a sum is not kept as a temporary of its own (its base is): GiNaC holds
+// (a − b)^3 or −(b − a)^3 by an order that changes between processes, and the temporary's
+// sign would change with it
+bool is_small_power_of_sum(const ex& e) {
+  return GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::add>(e.op(0)) && e.op(1).info(GiNaC::info_flags::integer) &&
+         GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1))) <= 3;
+}
+
 }  // namespace
 
 // The sign conventions below exist because GiNaC may hold c·(a − b) as
@@ -140,6 +148,12 @@ std::vector<ex> CommonSubexpressions::ordered_operands(const ex& e) {
 void CommonSubexpressions::count(const ex& original, std::map<ex, int, GiNaC::ex_is_less>& uses) {
   const ex e = leads_negative(original) ? ex(-original) : original;
   if (is_atom(e) || known_.count(e)) return;
+  // such a power is never a temporary (reduce()): each of its uses is one of its base's
+  if (is_small_power_of_sum(e) && uses[e] > 0) {
+    ++uses[e];
+    count(e.op(0), uses);
+    return;
+  }
   if (uses[e]++ > 0) return;  // children counted on the first visit only
   for (std::size_t i = 0; i < e.nops(); ++i) count(e.op(i), uses);
 }
@@ -166,12 +180,7 @@ ex CommonSubexpressions::reduce(const ex& original, const std::map<ex, int, GiNa
   bool scaled_atom = GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 &&
                      ((GiNaC::is_a<GiNaC::numeric>(e.op(0)) && is_atom(e.op(1))) ||
                       (GiNaC::is_a<GiNaC::numeric>(e.op(1)) && is_atom(e.op(0))));
-  // a small power of a sum is not kept as a temporary of its own (its base is): GiNaC holds
-  // (a − b)^3 or −(b − a)^3 by an order that changes between processes, and the temporary's
-  // sign would change with it
-  bool power_of_sum = GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::add>(e.op(0)) &&
-                      e.op(1).info(GiNaC::info_flags::integer) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1))) <= 3;
-  if (!shared || is_cheap_power(e) || scaled_atom || power_of_sum) return rebuilt;
+  if (!shared || is_cheap_power(e) || scaled_atom || is_small_power_of_sum(e)) return rebuilt;
   GiNaC::symbol name(prefix_ + std::to_string(next_++));
   batch.temporaries.push_back({name, rebuilt});
   known_.emplace(e, name);
