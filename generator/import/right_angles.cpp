@@ -109,7 +109,9 @@ RightAngleRounding rounded_right_angles(Robot& robot, double within) {
       ++done.near, done.largest_near = std::max(done.largest_near, near->angle);
     }
   };
-  for (RobotBody& b : robot.bodies) round(b.orientation), round(b.inertia_axes);
+  // the frames' turns only: a body's axes of inertia a little off its frame's are products of
+  // inertia, not digits left out (a rod's slight asymmetry), and cost no rotation at run time
+  for (RobotBody& b : robot.bodies) round(b.orientation);
   return done;
 }
 

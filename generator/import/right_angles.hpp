@@ -38,10 +38,11 @@ struct RightAngleRounding {
   double largest_near = 0;
 };
 
-/// Each body's turn in its parent and its axes of inertia, where within `within` radians of a
-/// right angle, set to that right angle: a file that states π/2 to five or twelve digits
-/// (1.5708, 1.57079632679) then has the constant turns that the generated code skips. The
-/// robot moves by up to `within`; the default, 0, moves nothing.
+/// Each body's turn in its parent, where within `within` radians of a right angle, set to that
+/// right angle: a file that states π/2 to five or twelve digits (1.5708, 1.57079632679) then has
+/// the constant turns that the generated code skips. The robot moves by up to `within`; the
+/// default, 0, moves nothing. Axes of inertia stay as read (their small turns are products of
+/// inertia, folded into constants at generation).
 RightAngleRounding rounded_right_angles(Robot& robot, double within);
 
 }  // namespace eomgen
