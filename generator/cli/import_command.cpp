@@ -51,7 +51,7 @@ Command add_import_command(CLI::App& app) {
   auto right_angles_within = std::make_shared<double>(0);
   cmd->add_option("--right-angles-within", *right_angles_within,
                   "Write each body's turn that is within RAD radians of a right angle as that right angle (a file's "
-                  "rpy = \"1.5708 0 0\" as exactly pi/2): the generated code then skips those turns' multiplications, and "
+                  "rpy = \"1.5708 0 0\" as exactly pi/2): the generated code then need not multiply by those turns, and "
                   "the robot moves by up to RAD; the import notes the turns near a right angle (default 0: as read)")
       ->type_name("RAD")
       ->check(CLI::Range(0.0, 0.1));

@@ -347,7 +347,8 @@ std::string mj_version_text() { return fmt::format("{}.{}.{}", mj_version() / 10
 namespace {
 
 // what --right-angles-within did, or what it would do: a turn stated to five digits is a full
-// rotation matrix in the generated code (the Panda's rhs takes 1.5x as long as with exact turns)
+// rotation matrix in the generated code (the Panda's rhs takes 1.5x as long as with exact turns;
+// UR5's as long either way)
 void note_right_angles(const RightAngleRounding& turns, Robot& r) {
   if (turns.rounded > 0)
     r.notes.push_back(fmt::format("{} turn(s) within {:.2g} rad of a right angle written as exact right angles "
@@ -356,8 +357,9 @@ void note_right_angles(const RightAngleRounding& turns, Robot& r) {
   if (turns.near > 0) {
     double suggested = std::pow(10.0, std::ceil(std::log10(turns.largest_near)));
     r.notes.push_back(fmt::format("{} turn(s) are within {:.2g} rad of a right angle, not to the last digit (the file states "
-                                  "them to fewer digits): written as read, each is a full rotation matrix in the generated "
-                                  "code; `eomgen import --right-angles-within {:g}` writes them as exact right angles, which it skips",
+                                  "them to fewer digits): written as read, each is a full rotation matrix, which the generated "
+                                  "code may have to multiply by; `eomgen import --right-angles-within {:g}` writes them as exact "
+                                  "right angles",
                                   turns.near, turns.largest_near, suggested));
   }
 }
