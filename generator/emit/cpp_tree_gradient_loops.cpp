@@ -220,9 +220,11 @@ void hinge_tree_pass(const hinge_tree_tables<L, T>& tree, const T* ddq, std::siz
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
+  // the twist link i hangs from: its parent's, the root joint's or rest
+  auto parent_twist = [&](std::size_t i) -> const T* { return parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]]; };
   // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
   auto accelerate = [&](std::size_t i) {
-    const T* vp = parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]];
+    const T* vp = parent_twist(i);
     const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
     if (velocity[i] < 0) {
       for (int k = 0; k < 6; ++k) a[i][k] = ap[k], ddS[i][k] = T(0);
@@ -237,7 +239,7 @@ void hinge_tree_pass(const hinge_tree_tables<L, T>& tree, const T* ddq, std::siz
   for (std::size_t i = 0; i < L; ++i) {
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
                tree.column[i], tree.inertia[i], R[i], o[i], S[i], C[i]);
-    const T* vp = parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]];
+    const T* vp = parent_twist(i);
     if (velocity[i] < 0) {
       for (int k = 0; k < 6; ++k) v[i][k] = vp[k], dS[i][k] = T(0);
     } else {

@@ -95,7 +95,7 @@ std::optional<NearRightAngle> nearest_right_angle(const Quaternion& q) {
 
 RightAngleRounding rounded_right_angles(Robot& robot, double within) {
   RightAngleRounding done;
-  auto round = [&](Quaternion& q) {
+  auto round_turn = [&](Quaternion& q) {
     if (right_angle_turn(q)) return;  // a unit of rounding off: written exactly anyway
     auto near = nearest_right_angle(q);
     if (!near || near->angle > std::max(within, 1e-3)) return;
@@ -111,7 +111,7 @@ RightAngleRounding rounded_right_angles(Robot& robot, double within) {
   };
   // the frames' turns only: a body's axes of inertia a little off its frame's are products of
   // inertia, not digits left out (a rod's slight asymmetry), and cost no rotation at run time
-  for (RobotBody& b : robot.bodies) round(b.orientation);
+  for (RobotBody& b : robot.bodies) round_turn(b.orientation);
   return done;
 }
 
