@@ -122,8 +122,8 @@ Command add_generate_command(CLI::App& app) {
   auto form = std::make_shared<std::string>("chosen");
   cmd->add_option("--forward-dynamics", *form,
                   "How the rhs solves for q'': chosen (default: eomgen's choice, the articulated-body recursion for a "
-                  "tree of particles of many coordinates, M = L D L^T otherwise), mass_matrix or articulated, to "
-                  "compare the two forms")
+                  "tree of particles of many coordinates or a deep tree of hinges and slides, M = L D L^T otherwise), "
+                  "mass_matrix or articulated, to compare the two forms")
       ->check(CLI::IsMember({"chosen", "mass_matrix", "articulated"}))
       ->excludes("--scene");
   return [cmd, model, directory, header, variant, scene, split, split_above, form]() -> int {

@@ -12,6 +12,7 @@
 
 #include "model/model.hpp"
 #include "spatial/joint_tree_derivatives.hpp"
+#include "spatial/joint_tree_forward_dynamics.hpp"
 
 namespace eomgen {
 
@@ -110,8 +111,14 @@ struct Equations {
   /// Forward dynamics by the articulated-body recursion of a tree of particles, where eomgen or
   /// ModelChoice::forward_dynamics chooses it; without it the rhs solves M q'' = f.
   std::optional<ArticulatedForwardDynamics> articulated;
+  /// A joint tree of hinges and slides whose rhs takes q'' from the articulated-body algorithm, where
+  /// eomgen or ModelChoice::forward_dynamics chooses it; everything else uses M and the tree's τ.
+  std::optional<JointTreeAccelerations> joint_tree_accelerations;
   /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
-  void solve_by_mass_matrix() { articulated.reset(); }
+  void solve_by_mass_matrix() {
+    articulated.reset();
+    joint_tree_accelerations.reset();
+  }
   /// A tree of joints (spatial/joint_tree_dynamics.hpp): for each coordinate, the one above it
   /// (−1 at a root): for a tree numbered parents first, the coordinate of the nearest joint above
   /// its own; with joints that follow another's coordinate, or another numbering, the one that the

@@ -82,8 +82,9 @@ BodyWriter::BodyWriter(const Equations& e)
 std::shared_ptr<const BodyWriter::IntermediateGraph> BodyWriter::intermediate_graph(const Equations& e) {
   thread_local std::shared_ptr<const IntermediateGraph> last;
   static const std::vector<Intermediate> none;
-  const std::vector<Intermediate>* parts[] = {&e.intermediates, &e.acceleration_intermediates,
-                                              e.articulated ? &e.articulated->intermediates : &none};
+  const std::vector<Intermediate>* parts[] = {
+      &e.intermediates, &e.acceleration_intermediates, e.articulated ? &e.articulated->intermediates : &none,
+      e.joint_tree_accelerations ? &e.joint_tree_accelerations->intermediates : &none};
   auto unchanged = [&] {
     std::size_t at = 0;
     for (const std::vector<Intermediate>* part : parts)

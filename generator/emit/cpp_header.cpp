@@ -88,6 +88,7 @@ std::string rhs_function(const Equations& e) {
   if (e.has_multipliers) return constrained_rhs_function(e);
   DynamicsForm form = dynamics_form(e);
   if (form == DynamicsForm::particle_tree) return articulated_rhs_function(e);
+  if (e.joint_tree_accelerations) return joint_tree_rhs_function(e);
   std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
   // a tree's M and f are long code, written once, in detail::factored_accelerations
@@ -400,7 +401,14 @@ std::string quaternion_list(const Equations& e) {
 
 }  // namespace
 
-std::string emit_cpp_header(const Equations& e) {
+std::string emit_cpp_header(const Equations& given) {
+  // a joint tree's rhs in the form eomgen chooses (the articulated-body algorithm or M = L D Lᵀ)
+  std::optional<Equations> factored;
+  if (given.joint_tree_accelerations && !rhs_takes_articulated_bodies(given)) {
+    factored = given;
+    factored->joint_tree_accelerations.reset();
+  }
+  const Equations& e = factored ? *factored : given;
   const Symbols& s = e.symbols;
   const DynamicsForm form = dynamics_form(e);
   std::size_t n = s.num_coordinates(), k = e.num_velocities();
@@ -448,7 +456,9 @@ std::string emit_cpp_header(const Equations& e) {
       : form == DynamicsForm::newton_euler
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Recursive kinematics: each "
             "function computes the frames' and bodies' quantities it needs (k_...) first; jacobian_state and\n"
-            "// linearization differentiate the Newton-Euler inverse dynamics tau = M q'' - f (forward mode)."
+            "// linearization differentiate the Newton-Euler inverse dynamics tau = M q'' - f (forward mode)." +
+                std::string(e.joint_tree_accelerations ? "\n// Forward dynamics: rhs solves for q'' by the articulated-body "
+                                                         "algorithm over the joints (O(n), without M)." : "")
       : form == DynamicsForm::particle_tree
           ? "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].\n// Forward dynamics: rhs solves "
             "for q'' by the articulated-body recursion of the particles' tree (O(n));\n// mass_matrix, forcing "

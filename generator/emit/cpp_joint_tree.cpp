@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/cpp_ldlt.hpp"
 #include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
 #include "emit/cpp_tree_gradient_loops.hpp"
@@ -18,6 +19,29 @@ void call_factored_accelerations(BodyWriter& w, std::size_t n) {
   w.line(fmt::format("T L[{}];", n * n));
   w.line(fmt::format("T D[{}];", n));
   w.line("detail::factored_accelerations(t, x, u, p, ddq, L, D);");
+}
+
+std::string joint_tree_rhs_function(const Equations& e) {
+  std::size_t n = e.symbols.num_coordinates();
+  BodyWriter w(e);
+  auto ddq = w.batch(e.joint_tree_accelerations->accelerations);
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, ddq[i]));
+  return function(fmt::format("/// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' = M^-1 f by the\n"
+                              "/// articulated-body algorithm over the joints (O(n), without forming M).\n"
+                              "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
+                              2 * n),
+                  "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
+}
+
+bool rhs_takes_articulated_bodies(const Equations& e) {
+  if (!e.joint_tree_accelerations) return false;
+  if (e.joint_tree_accelerations->asked) return true;
+  long articulated = count_operations(joint_tree_rhs_function(e), "rhs", 0);
+  std::string ldlt = mass_matrix_factorization(e, e.num_velocities());
+  long factored = count_operations(mass_matrix_and_forcing_function(e), "mass_matrix_and_forcing", 0) +
+                  count_operations(ldlt, "ldlt_factor", 0) + count_operations(ldlt, "ldlt_solve", 0);
+  return articulated < factored;
 }
 
 namespace {

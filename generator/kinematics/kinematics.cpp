@@ -204,6 +204,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     m.tree_kinetic_energy = tree.kinetic_energy;
     m.potential_gradient = frames.gradient(model.potential);
     bodies_gradient = tree.gradient;
+    m.tree_links = std::move(tree.links);
   } else {
     tau = frames.inverse_dynamics(ddq, model.gravity, m.acceleration_intermediates);
   }

@@ -74,6 +74,9 @@ struct Mechanics {
   /// A joint tree with ball or free joints: its pseudo-velocities, in which M, the bias forces,
   /// τ and T above are written (spatial/joint_velocities.hpp); the rest stays in q and q'.
   std::optional<JointVelocities> tree_velocities;
+  /// A joint tree's links in their joint frames (spatial/joint_tree_derivatives.hpp), for the
+  /// articulated-body algorithm (spatial/joint_tree_forward_dynamics.hpp); empty otherwise.
+  std::vector<TreeLink> tree_links;
   /// Recursive kinematics: each constraint's terms through the frames, in file order.
   std::vector<ConstraintTerms> constraint_terms;
 };

@@ -1,9 +1,11 @@
 /// @file The check of a form of forward dynamics asked for instead of eomgen's choice: for the
-/// articulated-body recursion a model that it can solve (kinematics/particle_tree).
+/// articulated-body recursion a model that it can solve: a tree of particles (kinematics/particle_tree)
+/// or of hinges and slides (spatial/joint_tree_forward_dynamics).
 #include <fmt/format.h>
 
 #include "kinematics/particle_tree.hpp"
 #include "model/model.hpp"
+#include "spatial/joint_tree_forward_dynamics.hpp"
 
 namespace eomgen {
 
@@ -15,9 +17,11 @@ void check_forward_dynamics(const Model& model, SourceLocation where, Diagnostic
                                   model.method),
                       "leave --forward-dynamics out, or use method = \"lagrange2\"");
   else if (ParticleTree tree = find_particle_tree(model); !tree.found())
-    diagnostics.error(where, "--forward-dynamics",
-                      "the articulated-body recursion needs a tree of particles, and this model is not one: " + tree.why_not,
-                      "leave --forward-dynamics out, or use mass_matrix (M = L D L^T)");
+    if (auto why = why_not_articulated_joint_tree(model))
+      diagnostics.error(where, "--forward-dynamics",
+                        fmt::format("the articulated-body recursion needs a tree of particles or of hinges and slides, and this "
+                                    "model is neither: as particles, {}; as joints, {}", tree.why_not, *why),
+                        "leave --forward-dynamics out, or use mass_matrix (M = L D L^T)");
 }
 
 }  // namespace eomgen

@@ -579,7 +579,8 @@ JointTreeDynamics joint_tree_dynamics(const Model& model, const JointVelocities&
   d.bias_forces = tree.inverse_dynamics(none, "0", intermediates);
   for (ex& f : d.bias_forces) f = -f;
   d.inverse_dynamics = tree.inverse_dynamics(ddq, "", acceleration_intermediates);
-  d.gradient = joint_tree_gradient(tree.layout(), model.gravity, ddq, velocities.symbols.size(),
+  d.links = tree.layout();
+  d.gradient = joint_tree_gradient(d.links, model.gravity, ddq, velocities.symbols.size(),
                                    model.symbols.coordinates.size(), acceleration_intermediates);
   d.mass_matrix = tree.mass_matrix();
   d.kinetic_energy = tree.kinetic_energy();

@@ -41,6 +41,7 @@ struct JointTreeDynamics {
   GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
   /// ∂τ/∂q and ∂τ/∂s of inverse_dynamics in closed form (spatial/joint_tree_derivatives.hpp)
   InverseDynamicsGradient gradient;
+  std::vector<TreeLink> links;  // the links as the gradient and the articulated-body algorithm take them
 };
 
 /// Why the model is not such a tree (for a note in the header), or nothing when it is.

@@ -9,7 +9,10 @@ tree's is 3.7 MB):
   with link masses, centres and full inertia tensors invented here (positive definite, the
   triangle inequality held), armature, damping and a motor on every joint;
 - branched_tree: 21 hinges in a humanoid's branching (a spine of 3, two arms of 3, two legs of
-  6) about oblique axes through offset anchors, with the same kinds of bodies.
+  6) about oblique axes through offset anchors, with the same kinds of bodies;
+- quadruped: a floating torso with four legs of three hinges;
+- hinge_chain: a hanging chain of 20 hinges about x and y in turn through offset anchors, each
+  link below the last (mean depth 10.5: eomgen's rhs takes the articulated-body algorithm).
 
 The numbers are drawn from a fixed seed and written with 10 significant digits (all they have). MJCF takes each
 inertia tensor in its principal axes (quat and diaginertia, from numpy's eigh in double
@@ -237,6 +240,19 @@ def quadruped(rng):
     return links
 
 
+def hinge_chain(rng):
+    """20 links hung one below the other, each on a hinge through an offset anchor, about x and y in turn
+    (a snake robot's pitch and yaw)."""
+    links = []
+    for k in range(20):
+        axis = (1, 0, 0) if k % 2 == 0 else (0, 1, 0)
+        anchor = [round(rng.uniform(-0.02, 0.02), 3) for _ in range(3)]
+        origin = (0, 0, 2.0) if k == 0 else (round(rng.uniform(-0.02, 0.02), 3), 0, round(-rng.uniform(0.1, 0.2), 3))
+        links.append(dict(name=f"link{k + 1}", parent=f"link{k}" if k else "", origin=origin, turn="", axis=axis,
+                          anchor=anchor, body=body(rng, 0.3), armature=0.01, damping=0.05))
+    return links
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
     rng = random.Random(38)
@@ -261,6 +277,13 @@ def main():
            "y, a knee about a tilted axis), bodies with full inertia tensors, armature, damping and a",
            "motor on each hinge. Written by tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/quadruped.xml."],
           quadruped(rng), base=dict(name="torso", height=0.45, body=body(rng, 6.0)))
+    write(root, "hinge_chain", "Hanging chain of 20 hinges about x and y in turn through offset anchors",
+          ["20 links hung one below the other, each on a hinge about x or y in turn (a snake robot's pitch",
+           "and yaw) through an offset anchor, bodies with full inertia tensors, armature, damping and a",
+           "motor on each joint: a long serial chain, whose rhs eomgen solves by the articulated-body",
+           "algorithm, for the MuJoCo oracle test. Written by tests/benchmarks/robot_models.py with",
+           "tests/crosscheck/mjcf/hinge_chain.xml."],
+          hinge_chain(rng))
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@
 
 #include "branched_tree.hpp"
 #include "geared_gripper.hpp"
+#include "hinge_chain.hpp"
 #include "measured_arm.hpp"
 #include "oblique_tree.hpp"
 #include "quadruped.hpp"
@@ -177,6 +178,10 @@ TEST(MujocoOracle, SevenJointArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(seven_joi
 TEST(MujocoOracle, BranchedTreeOf21ObliqueHingesMatchesMujoco) { EXPECT_MATCHES_MUJOCO(branched_tree); }
 
 TEST(MujocoOracle, MeasuredArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(measured_arm); }
+
+// a chain of 12 oblique hinges, whose rhs is the articulated-body algorithm's (no M; JointTreeAccelerations
+// checks that eomgen chooses it), armature included
+TEST(MujocoOracle, LongChainSolvedByTheArticulatedBodyAlgorithmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(hinge_chain); }
 
 // a floating base: a free joint's position, quaternion and angular velocity in MuJoCo's layout,
 // with twelve hinges below it; and the free tumbling body of models/

@@ -231,7 +231,8 @@ TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
   relative.replace(relative.find("l2*sin(phi2)"), 12, "l2*sin(phi1 + phi2)");
   std::string message = diagnostics_of(relative);
   EXPECT_NE(message.find("tree.toml:1:1: error: --forward-dynamics: the articulated-body recursion needs a tree of "
-                         "particles, and this model is not one: coordinate 'phi1' moves both 'b1' and 'b2'"),
+                         "particles or of hinges and slides, and this model is neither: as particles, coordinate "
+                         "'phi1' moves both 'b1' and 'b2'"),
             std::string::npos)
       << message;
   EXPECT_NE(message.find("hint: leave --forward-dynamics out, or use mass_matrix"), std::string::npos) << message;
