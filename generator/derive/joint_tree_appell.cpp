@@ -3,6 +3,7 @@
 /// projecting the bodies' Newton–Euler equations onto the partial velocities of the pseudo-
 /// velocities s is what ∂S/∂s' does, so M_s comes from the composite-body recursion and
 /// f_s = −τ(q, s, s' = 0) + Wᵀ(Q − ∂V/∂q − ∂R/∂q') with q' = W(q)·s.
+#include "derive/joint_tree_accelerations.hpp"
 #include "derive/methods.hpp"
 
 namespace eomgen {
@@ -95,7 +96,10 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
   e.dissipation = tidy(mech.dissipation.subs(rates), motion);
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression.subs(rates), motion)});
   e.conserves_energy_without_inputs = conserves_energy_without_inputs(mech, s);
+  add_joint_tree_accelerations(model, mech, e);
   std::vector<ex> used = e.forcing;
+  if (e.joint_tree_accelerations)
+    for (const Intermediate& i : e.joint_tree_accelerations->intermediates) used.push_back(i.definition);
   for (unsigned c = 0; c < k; ++c)
     for (unsigned d = 0; d < k; ++d) used.push_back(e.mass_matrix(c, d));
   used.insert(used.end(), e.inverse_dynamics.begin(), e.inverse_dynamics.end());

@@ -12,6 +12,7 @@
 
 #include "common/deadline.hpp"
 #include "derive/articulated_inverse_dynamics.hpp"
+#include "derive/joint_tree_accelerations.hpp"
 #include "derive/methods.hpp"
 #include "derive/particle_tree_terms.hpp"
 #include "kinematics/vector3.hpp"
@@ -91,32 +92,9 @@ ex kinetic_energy(const GiNaC::matrix& M, const Mechanics& mech, const Symbols& 
 // q'' by the articulated-body recursion for a tree of particles from articulated_crossover
 // coordinates on, or where ModelChoice asks for it; a variant that is no longer a tree falls back
 // to M = L D Lᵀ
-// q'' of a joint tree of hinges and slides by the articulated-body algorithm, where it may pay or is
-// asked for, with Q the applied part of the generalized forces (τ of the bodies = −applied) but
-// for a joint inertia a_j q''_j in it
-void choose_joint_tree_accelerations(const Model& model, const Mechanics& mech, Equations& e) {
-  if (model.forward_dynamics == ForwardDynamics::chosen && !articulated_body_may_pay(mech.tree_links)) return;
-  if (why_not_articulated_joint_tree(model)) return;
-  // the applied part of τ_j is a_j q''_j + the rest (an [energy] kinetic of no cross terms)
-  const std::vector<ex>& applied = mech.bodies_gradient->applied_inverse_dynamics;
-  std::vector<ex> forces, joint_inertias;
-  for (std::size_t j = 0; j < applied.size(); ++j) {
-    ex tau = applied[j].expand();
-    joint_inertias.push_back(tau.coeff(mech.acceleration_symbols[j]));
-    tau = (tau - joint_inertias.back() * mech.acceleration_symbols[j]).expand();
-    for (const GiNaC::symbol& a : mech.acceleration_symbols)
-      if (tau.has(a) || joint_inertias.back().has(a)) return;
-    forces.push_back(-tau);
-  }
-  derivation_stage("the articulated-body algorithm");
-  e.joint_tree_accelerations = joint_tree_accelerations(mech.tree_links, model.gravity, forces, joint_inertias);
-  e.joint_tree_accelerations->asked = model.forward_dynamics == ForwardDynamics::articulated;
-}
-
 void choose_forward_dynamics(const Model& model, const Mechanics& mech, const ParticleTree& tree, Equations& e) {
   if (model.method != "lagrange2" || model.forward_dynamics == ForwardDynamics::mass_matrix) return;
-  if (!mech.tree_links.empty() && mech.bodies_gradient && !mech.tree_velocities)
-    return choose_joint_tree_accelerations(model, mech, e);
+  if (!mech.tree_links.empty()) return add_joint_tree_accelerations(model, mech, e);
   if (model.forward_dynamics == ForwardDynamics::chosen && model.symbols.num_coordinates() < articulated_crossover) return;
   if (!tree.found()) return;
   derivation_stage("the articulated-body recursion");

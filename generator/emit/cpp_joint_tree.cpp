@@ -22,15 +22,19 @@ void call_factored_accelerations(BodyWriter& w, std::size_t n) {
 }
 
 std::string joint_tree_rhs_function(const Equations& e) {
-  std::size_t n = e.symbols.num_coordinates();
+  std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
-  auto ddq = w.batch(e.joint_tree_accelerations->accelerations);
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
-  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, ddq[i]));
-  return function(fmt::format("/// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' = M^-1 f by the\n"
+  std::vector<ex> outputs = e.joint_tree_accelerations->accelerations;
+  if (e.uses_pseudo_velocities()) outputs.insert(outputs.end(), e.coordinate_rates.begin(), e.coordinate_rates.end());
+  auto values = w.batch(outputs);
+  for (std::size_t i = 0; i < n; ++i)
+    w.line(fmt::format("xdot[{}] = {};", i, e.uses_pseudo_velocities() ? values[k + i] : fmt::format("x[{}]", n + i)));
+  for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, values[i]));
+  bool pseudo = e.uses_pseudo_velocities();
+  return function(fmt::format("/// Explicit first-order form x' = [{}; {}''] with x = [q; {}], M {}'' = f solved by the\n"
                               "/// articulated-body algorithm over the joints (O(n), without forming M).\n"
                               "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",
-                              2 * n),
+                              pseudo ? "W s + w" : "q'", pseudo ? "s" : "q", pseudo ? "s" : "q'", pseudo ? "s" : "q", n + k),
                   "void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot)", w.finish(all_unused));
 }
 

@@ -1,5 +1,7 @@
 #include "spatial/joint_tree_forward_dynamics.hpp"
 
+#include <array>
+
 #include <fmt/format.h>
 
 #include "kinematics/vector3.hpp"
@@ -25,6 +27,13 @@ GiNaC::matrix cross_matrix(const Vector3& h) {
 
 GiNaC::matrix sum(const GiNaC::matrix& a, const GiNaC::matrix& b) { return a.add(b); }
 
+// a force (N, F) or motion (α, a) as six components, angular first
+using Six = std::array<ex, 6>;
+
+ex projected(const Six& a, const Vector3& angular, const Vector3& linear) {
+  return a[0] * angular[0] + a[1] * angular[1] + a[2] * angular[2] + a[3] * linear[0] + a[4] * linear[1] + a[5] * linear[2];
+}
+
 class ArticulatedBodies {
  public:
   ArticulatedBodies(const std::vector<TreeLink>& links, const Vector3& gravity, const std::vector<ex>& forces,
@@ -44,14 +53,16 @@ class ArticulatedBodies {
   }
 
  private:
+  // a joint's columns S = (e, u), U = I S, D = Sᵀ U (+ joint inertias) as L Δ Lᵀ, and w = Q − Sᵀ p
   struct Joint {
-    Vector3 e{0, 0, 0}, u{0, 0, 0};  // S
-    Vector3 U_N, U_F;
-    ex inverse_D, w, rate = 0;
-    int velocity = -1;
+    std::vector<TreeLink::Column> columns;
+    std::vector<Six> U;
+    std::vector<std::vector<ex>> L;
+    std::vector<ex> inverse_pivots, w;
   };
 
-  // ω and the bias acceleration c of every link, root first
+  // ω and the bias acceleration c of every link, root first (as joint_tree_dynamics.cpp's recursion:
+  // a column that keeps the parent's axes, a free joint's position, has no turning × u term)
   void velocities() {
     Vector3 zero{0, 0, 0};
     for (std::size_t i = 0; i < links_.size(); ++i) {
@@ -59,16 +70,18 @@ class ArticulatedBodies {
       int p = l.parent;
       Vector3 wp = p < 0 ? zero : omega_[std::size_t(p)];
       Vector3 carried = named(i, "fdwp", times(l.turn, wp, true));
-      Joint j;
-      if (!l.columns.empty()) {
-        const TreeLink::Column& c = l.columns.front();
-        j = {c.axis, c.origin_velocity, {}, {}, 0, 0, c.rate, c.velocity};
+      Vector3 turning = zero, sliding = zero, kept = zero;
+      for (const TreeLink::Column& c : l.columns) {
+        turning = turning + scaled(c.rate, c.axis);
+        sliding = sliding + scaled(c.rate, c.origin_velocity);
+        if (c.turns_with_link) kept = kept + scaled(c.rate, c.origin_velocity);
       }
-      omega_.push_back(named(i, "fdw", carried + scaled(j.rate, j.e)));
+      omega_.push_back(named(i, "fdw", carried + turning));
       Vector3 swing = p < 0 ? zero : times(l.turn, cross(wp, cross(wp, l.offset)), true);
-      bias_angular_.push_back(named(i, "fdca", scaled(j.rate, cross(carried, j.e))));
-      bias_linear_.push_back(named(i, "fdcl", swing + scaled(2 * j.rate, cross(carried, j.u)) +
-                                                  scaled(j.rate * j.rate, cross(j.e, j.u))));
+      bias_angular_.push_back(named(i, "fdca", cross(carried, turning)));
+      bias_linear_.push_back(named(i, "fdcl", swing + scaled(2, cross(carried, sliding)) + cross(turning, kept)));
+      Joint j;
+      j.columns = l.columns;
       joints_.push_back(j);
     }
   }
@@ -102,31 +115,97 @@ class ArticulatedBodies {
     const Vector3 &ca = bias_angular_[i], &cl = bias_linear_[i];
     Vector3 aN = pN + times(I.A, ca) + times(I.B, cl), aF = pF + times(I.B, ca, true) + times(I.C, cl);
     Joint& j = joints_[i];
-    if (!l.columns.empty()) {
-      j.U_N = named(i, "fdUN", times(I.A, j.e) + times(I.B, j.u));
-      j.U_F = named(i, "fdUF", times(I.B, j.e, true) + times(I.C, j.u));
-      ex D = dot(j.e, j.U_N) + dot(j.u, j.U_F) + joint_inertias_[std::size_t(j.velocity)];
-      j.inverse_D = named_intermediate(out_, l.name, "fdDi", 1 / D.expand());
-      ex Q = forces_[std::size_t(j.velocity)];
-      j.w = named_intermediate(out_, l.name, "fdu", Q - dot(j.e, pN) - dot(j.u, pF));
-      ex k = named_intermediate(out_, l.name, "fdk", (j.w - dot(j.U_N, ca) - dot(j.U_F, cl)) * j.inverse_D);
-      aN = aN + scaled(k, j.U_N);
-      aF = aF + scaled(k, j.U_F);
+    std::size_t k = j.columns.size();
+    if (k > 0) {
+      for (std::size_t c = 0; c < k; ++c) {
+        const TreeLink::Column& s = j.columns[c];
+        Vector3 N = times(I.A, s.axis) + times(I.B, s.origin_velocity), F = times(I.B, s.axis, true) + times(I.C, s.origin_velocity);
+        Six U;
+        for (unsigned a = 0; a < 3; ++a) {
+          U[a] = named_intermediate(out_, l.name, fmt::format("fdU{}N_{}", c, articulated_axes[a]), N[a]);
+          U[3 + a] = named_intermediate(out_, l.name, fmt::format("fdU{}F_{}", c, articulated_axes[a]), F[a]);
+        }
+        j.U.push_back(U);
+        j.w.push_back(named_intermediate(out_, l.name, fmt::format("fdu{}", c),
+                                         forces_[std::size_t(s.velocity)] - dot(s.axis, pN) - dot(s.origin_velocity, pF)));
+      }
+      factor(i, j);
+      std::vector<ex> h(k);
+      for (std::size_t c = 0; c < k; ++c) h[c] = j.w[c] - projected(j.U[c], ca, cl);
+      std::vector<ex> y = solved(i, j, h, "fdk");
+      for (std::size_t c = 0; c < k; ++c) {
+        aN = aN + scaled(y[c], {j.U[c][0], j.U[c][1], j.U[c][2]});
+        aF = aF + scaled(y[c], {j.U[c][3], j.U[c][4], j.U[c][5]});
+      }
+      if (l.parent < 0) return;  // a root's Iᵃ and pᵃ go nowhere
+      // Iᵃ = I − U D⁻¹ Uᵀ, with the rows of G = U D⁻¹ solved for
+      std::vector<std::vector<ex>> G(6);
+      for (unsigned r = 0; r < 6; ++r) {
+        std::vector<ex> row(k);
+        for (std::size_t c = 0; c < k; ++c) row[c] = j.U[c][r];
+        G[r] = solved(i, j, row, fmt::format("fdG{}", r));
+      }
+      auto minus = [&](unsigned r, unsigned s) {
+        ex x = 0;
+        for (std::size_t c = 0; c < k; ++c) x += G[r][c] * j.U[c][s];
+        return x;
+      };
       for (unsigned a = 0; a < 3; ++a)
         for (unsigned b = 0; b < 3; ++b) {
-          I.A(a, b) -= j.U_N[a] * j.U_N[b] * j.inverse_D;
-          I.B(a, b) -= j.U_N[a] * j.U_F[b] * j.inverse_D;
-          I.C(a, b) -= j.U_F[a] * j.U_F[b] * j.inverse_D;
+          I.A(a, b) -= minus(a, b);
+          I.B(a, b) -= minus(a, 3 + b);
+          I.C(a, b) -= minus(3 + a, 3 + b);
         }
-      if (joint_inertias_[std::size_t(j.velocity)].is_zero()) without_joint_direction(j, I);
+      if (k == 1 && joint_inertias_[std::size_t(j.columns[0].velocity)].is_zero()) without_joint_direction(j, I);
       I = named(i, "fdIa", I);
     }
     if (l.parent < 0) return;
     carry(i, I, named(i, "fdaN", aN), named(i, "fdaF", aF));
   }
 
-  // Iᵃ S = 0 (U − U D/D; with a joint inertia a, U a/(D + a)). Along a joint frame's axis (S = (±e_k, 0) or (0, ±e_k)) the entries it makes zero are
-  // set so, where the formula leaves D − D²/D with D a named quantity, which no rule cancels.
+  // D = L Δ Lᵀ with L unit lower triangular, each entry and 1/Δ named (k ≤ 6: a ball's 3, a free joint's 6)
+  void factor(std::size_t i, Joint& j) {
+    std::size_t k = j.columns.size();
+    auto D = [&](std::size_t a, std::size_t b) {
+      ex x = projected(j.U[b], j.columns[a].axis, j.columns[a].origin_velocity);
+      if (a == b) x += joint_inertias_[std::size_t(j.columns[a].velocity)];
+      return x;
+    };
+    j.L.assign(k, std::vector<ex>(k, 0));
+    std::vector<ex> pivot(k);
+    for (std::size_t c = 0; c < k; ++c) {
+      ex d = D(c, c);
+      for (std::size_t m = 0; m < c; ++m) d -= j.L[c][m] * j.L[c][m] * pivot[m];
+      pivot[c] = named_intermediate(out_, links_[i].name, fmt::format("fdD{}", c), d);
+      j.inverse_pivots.push_back(named_intermediate(out_, links_[i].name, fmt::format("fdDi{}", c), 1 / pivot[c]));
+      for (std::size_t r = c + 1; r < k; ++r) {
+        ex x = D(r, c);
+        for (std::size_t m = 0; m < c; ++m) x -= j.L[r][m] * j.L[c][m] * pivot[m];
+        j.L[r][c] = named_intermediate(out_, links_[i].name, fmt::format("fdL{}{}", r, c), x * j.inverse_pivots[c]);
+      }
+    }
+  }
+
+  // D⁻¹ b by the factors, named `label`0, `label`1, …
+  std::vector<ex> solved(std::size_t i, const Joint& j, const std::vector<ex>& b, const std::string& label) {
+    std::size_t k = b.size();
+    std::vector<ex> x(k);
+    for (std::size_t r = 0; r < k; ++r) {
+      ex z = b[r];
+      for (std::size_t m = 0; m < r; ++m) z -= j.L[r][m] * x[m];
+      x[r] = k == 1 ? z : named_intermediate(out_, links_[i].name, fmt::format("{}f{}", label, r), z);
+    }
+    for (std::size_t r = k; r-- > 0;) {
+      ex z = x[r] * j.inverse_pivots[r];
+      for (std::size_t m = r + 1; m < k; ++m) z -= j.L[m][r] * x[m];
+      x[r] = named_intermediate(out_, links_[i].name, fmt::format("{}{}", label, r), z);
+    }
+    return x;
+  }
+
+  // Iᵃ S = 0 (U − U D/D; with a joint inertia a, U a/(D + a)). Along a joint frame's axis (S = (±e_k, 0)
+  // or (0, ±e_k)) the entries it makes zero are set so, where the formula leaves D − D²/D with D a
+  // named quantity, which no rule cancels.
   static void without_joint_direction(const Joint& j, ArticulatedInertia& I) {
     auto axis = [](const Vector3& v) {
       int k = -1;
@@ -137,7 +216,7 @@ class ArticulatedBodies {
       }
       return k;
     };
-    int turning = axis(j.e), sliding = axis(j.u);
+    int turning = axis(j.columns[0].axis), sliding = axis(j.columns[0].origin_velocity);
     if (turning >= 0 && sliding == -1)
       for (unsigned b = 0; b < 3; ++b) {
         I.A(unsigned(turning), b) = I.A(b, unsigned(turning)) = 0;
@@ -183,14 +262,18 @@ class ArticulatedBodies {
       Vector3 al = times(l.turn, alpha_p, true) + bias_angular_[i];
       Vector3 a = times(l.turn, at_origin, true) + bias_linear_[i];
       const Joint& j = joints_[i];
-      if (j.velocity >= 0) {
+      if (!j.columns.empty()) {
         // named before q̈ is: q̈ and (α, a) each take them
         al = named(i, "fdal0", al);
         a = named(i, "fdac0", a);
-        ex qdd = named_intermediate(out_, l.name, "fdqdd", (j.w - dot(j.U_N, al) - dot(j.U_F, a)) * j.inverse_D);
-        ddq[std::size_t(j.velocity)] = qdd;
-        al = al + scaled(qdd, j.e);
-        a = a + scaled(qdd, j.u);
+        std::vector<ex> h(j.columns.size());
+        for (std::size_t c = 0; c < h.size(); ++c) h[c] = j.w[c] - projected(j.U[c], al, a);
+        std::vector<ex> qdd = solved(i, j, h, "fdqdd");
+        for (std::size_t c = 0; c < h.size(); ++c) {
+          ddq[std::size_t(j.columns[c].velocity)] = qdd[c];
+          al = al + scaled(qdd[c], j.columns[c].axis);
+          a = a + scaled(qdd[c], j.columns[c].origin_velocity);
+        }
       }
       alpha[i] = named(i, "fdal", al);
       acc[i] = named(i, "fdac", a);
@@ -233,22 +316,20 @@ class ArticulatedBodies {
 }  // namespace
 
 std::optional<std::string> why_not_articulated_joint_tree(const Model& model) {
-  if (model.method != "lagrange2") return fmt::format("its method is '{}', not lagrange2", model.method);
+  bool spherical = false;
+  for (const FrameLink& l : model.frame_links) spherical = spherical || (l.joint && l.joint->spherical());
+  if (model.method != "lagrange2" && !(spherical && model.method == "appell"))
+    return fmt::format("its method is '{}', not lagrange2", model.method);
   if (auto why = why_not_a_joint_tree(model)) return "it is not a tree of joints: " + *why;
   const Symbols& s = model.symbols;
   for (std::size_t j = 0; j < s.velocities.size(); ++j)
     for (std::size_t k = j + 1; k < s.velocities.size(); ++k)
       if (!model.kinetic.diff(s.velocities[j]).diff(s.velocities[k]).expand().is_zero())
         return fmt::format("its [energy] kinetic couples the rates of '{}' and '{}'", s.coordinate_names[j], s.coordinate_names[k]);
-  std::vector<int> joints(model.symbols.coordinates.size(), 0);
-  for (const FrameLink& l : model.frame_links) {
-    using Type = FrameLink::Joint::Type;
-    if (l.joint->type != Type::revolute && l.joint->type != Type::prismatic && l.joint->type != Type::fixed)
-      return fmt::format("frame '{}' has a ball or free joint (the algorithm here takes joints of one velocity)", l.name);
+  std::vector<int> joints(s.coordinates.size(), 0);
+  for (const FrameLink& l : model.frame_links)
     if (l.joint->coordinate >= 0 && ++joints[std::size_t(l.joint->coordinate)] > 1)
-      return fmt::format("coordinate '{}' moves more than one joint",
-                         model.symbols.coordinate_names[std::size_t(l.joint->coordinate)]);
-  }
+      return fmt::format("coordinate '{}' moves more than one joint", s.coordinate_names[std::size_t(l.joint->coordinate)]);
   return std::nullopt;
 }
 
@@ -258,19 +339,18 @@ std::optional<std::string> why_not_articulated_joint_tree(const Model& model) {
 // articulated inertia a dense product: so the mean depth admits a tree, and the operations decide.
 // tests/benchmarks/forward_dynamics_forms.py on 2026-11-29 (AMD EPYC, g++ -O2, both forms' rhs in one
 // process), M = L D Lᵀ against the algorithm: chains of rods on universal joints of 8 hinges (mean
-// depth 4.5) 430 ns against 399, of 16 1,916 against 1,264, of 30 7,321 against 3,056; the 7-joint
-// arm (4) 436 against 550, the 21-joint branched tree (4.3) 3,176 against 3,836, 12 oblique hinges
-// in a row (6.5) 2,090 against 2,160.
+// depth 4.5) 390 ns against 412, of 16 1,885 against 1,225, of 30 7,557 against 2,984; the 7-joint
+// arm (4) 449 against 556, the 21-joint branched tree (4.3) 3,173 against 3,850, the quadruped
+// (6.5) 1,678 against 1,892, 12 oblique hinges in a row (6.5) 2,080 against 2,153.
 bool articulated_body_may_pay(const std::vector<TreeLink>& links) {
-  std::vector<int> depth(links.size(), 0);
+  // a joint's columns are a dense block of M, each below the one before
+  std::vector<long> depth(links.size(), 0);
   long velocities = 0, depths = 0;
   for (std::size_t i = 0; i < links.size(); ++i) {
-    if (links[i].columns.size() > 1) return false;
-    int above = links[i].parent < 0 ? 0 : depth[std::size_t(links[i].parent)];
-    depth[i] = above + int(links[i].columns.size());
-    if (links[i].columns.empty()) continue;
-    ++velocities;
-    depths += depth[i];
+    long above = links[i].parent < 0 ? 0 : depth[std::size_t(links[i].parent)];
+    for (std::size_t c = 0; c < links[i].columns.size(); ++c) depths += above + long(c) + 1;
+    velocities += long(links[i].columns.size());
+    depth[i] = above + long(links[i].columns.size());
   }
   return velocities > 0 && double(depths) >= articulated_mean_depth * double(velocities);
 }

@@ -37,20 +37,22 @@ struct JointTreeAccelerations {
 };
 
 /// Why the model's tree is not one the algorithm above solves (for `--forward-dynamics
-/// articulated`), or nothing when it is: a joint tree (spatial/joint_tree_dynamics.hpp) of
-/// revolute, prismatic and fixed joints, each coordinate moving one of them, under Lagrange II,
-/// whose [energy] kinetic (if any) couples no two rates.
+/// articulated`), or nothing when it is: a joint tree (spatial/joint_tree_dynamics.hpp) each of
+/// whose coordinates moves one joint, under Lagrange II (Appell's equations with ball and free
+/// joints), whose [energy] kinetic (if any) couples no two rates. A joint of k velocities (a
+/// ball's 3, a free joint's 6) has k columns S, and D = Sᵀ U is k × k, factored as L Δ Lᵀ.
 std::optional<std::string> why_not_articulated_joint_tree(const Model& model);
 
-/// Whether the algorithm above may be faster than M = L D Lᵀ for the tree `links`, each joint of
-/// at most one velocity: when its joints are articulated_mean_depth deep on average or more
+/// Whether the algorithm above may be faster than M = L D Lᵀ for the tree `links`: when its
+/// velocities are articulated_mean_depth deep on average or more (a joint's k columns one below
+/// the other)
 /// (tests/benchmarks/forward_dynamics_forms.py measures both forms in one process;
 /// joint_tree_forward_dynamics.cpp has the figures). The header's writer then counts the
 /// operations of both (emit/cpp_joint_tree.hpp).
 bool articulated_body_may_pay(const std::vector<TreeLink>& links);
 
-/// q'' for the tree `links` (parents first, each of at most one column, whose velocities are
-/// indices into `generalized_forces`, Q above, free of q''), under `gravity`, with `joint_inertias`
+/// q'' for the tree `links` (parents first, their columns' velocities indices into
+/// `generalized_forces`, Q above, free of q''), under `gravity`, with `joint_inertias`
 /// a_j whose a_j q''_j the joints' equations add (a rotor's armature, by [energy] kinetic ½ Σ a_j q'_j²):
 /// D + a_j in place of D.
 JointTreeAccelerations joint_tree_accelerations(const std::vector<TreeLink>& links, const Vector3& gravity,

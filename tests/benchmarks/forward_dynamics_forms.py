@@ -5,7 +5,8 @@ f, against the articulated-body algorithm (`eomgen generate --forward-dynamics m
 `articulated`). Models: chains of rods on universal joints (two hinges a rod, the chain of
 frames_benchmark.py; a first rod of one hinge for an odd count) from 4 to 30 hinges, and the
 robots of tests/crosscheck/models/: seven_joint_arm, branched_tree (21 oblique hinges, branched)
-and hinge_chain (20 hinges about x and y in turn), and a chain of 12 oblique hinges. Prints a
+hinge_chain (20 hinges about x and y in turn), quadruped (a free torso, four legs of three
+hinges) and ball_hung_chain (nine hinges below a ball joint), and a chain of 12 oblique hinges. Prints a
 Markdown table: the mean depth of the joints (from 4.5 on eomgen weighs the algorithm,
 spatial/joint_tree_forward_dynamics.cpp, and takes the form of fewer operations,
 emit/cpp_joint_tree.hpp), both times, their ratio, the form eomgen takes and the largest
@@ -90,7 +91,9 @@ def mean_depth(path):
         above = re.search(r'parent\s*=\s*"([^"]+)"', block)
         parent[name] = above.group(1) if above else None
         rotation = re.search(r'rotation\s*=\s*"([^"]+)"', block)
-        joints[name] = rotation.group(1).count("rot_") if rotation else 1
+        kind = re.search(r'type\s*=\s*"([a-z]+)"', block)
+        velocities = {"free": 6, "ball": 3, "fixed": 0}.get(kind.group(1), 1) if kind else 1
+        joints[name] = rotation.group(1).count("rot_") if rotation else velocities
     def above(name):
         return 0 if name is None else joints[name] + above(parent[name])
     depths = []
@@ -118,7 +121,8 @@ def main():
             with open(path, "w") as f:
                 f.write(rod_chain(hinges))
             cases.append((f"chain{hinges}", path, hinges))
-        robots = ("hinge_chain",) if quick else ("seven_joint_arm", "branched_tree", "hinge_chain")
+        robots = ("hinge_chain",) if quick else ("seven_joint_arm", "branched_tree", "hinge_chain", "quadruped",
+                                                  "ball_hung_chain")
         for robot in robots:
             path = os.path.join(ROOT, "tests", "crosscheck", "models", f"{robot}.toml")
             cases.append((robot, path, None))
@@ -131,7 +135,7 @@ def main():
         for name, path, hinges in cases:
             r = measure(eomgen, name, path, work)
             depth = mean_depth(path)
-            count = hinges if hinges else open(path).read().count('type = "revolute"')
+            count = hinges if hinges else open(path).read().count('type = "revolute"')  # the hinges alone
             worst = max(worst, r["difference"])
             print(f"| {name} | {count} | {depth:.1f} | {r['ldlt_ns']:.0f} | {r['articulated_ns']:.0f} | "
                   f"{r['ldlt_ns'] / r['articulated_ns']:.2f}x | {r['chosen']} | {r['difference']:.1e} |", flush=True)

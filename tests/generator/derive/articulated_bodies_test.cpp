@@ -231,7 +231,7 @@ TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
   relative.replace(relative.find("l2*sin(phi2)"), 12, "l2*sin(phi1 + phi2)");
   std::string message = diagnostics_of(relative);
   EXPECT_NE(message.find("tree.toml:1:1: error: --forward-dynamics: the articulated-body recursion needs a tree of "
-                         "particles or of hinges and slides, and this model is neither: as particles, coordinate "
+                         "particles or of joints, and this model is neither: as particles, coordinate "
                          "'phi1' moves both 'b1' and 'b2'"),
             std::string::npos)
       << message;
@@ -239,7 +239,8 @@ TEST(ArticulatedBodies, ModelsThatAreNoTreeOfParticlesAreLocatedErrors) {
   EXPECT_EQ(diagnostics_of(relative, ForwardDynamics::chosen), "") << "eomgen's choice falls back to M";
   std::string appell = planar_chain(2);
   appell.insert(appell.find("[parameters]"), "method = \"lagrange1\"\n");
-  EXPECT_NE(diagnostics_of(appell).find("solves Lagrange's equations of the second kind, not method 'lagrange1'"),
+  EXPECT_NE(diagnostics_of(appell).find("solves Lagrange's equations of the second kind (Appell's for a tree with ball or "
+                                       "free joints), not method 'lagrange1'"),
             std::string::npos)
       << diagnostics_of(appell);
   std::string unused = planar_chain(2);

@@ -1,7 +1,7 @@
 // The articulated-body algorithm over a joint tree (generator/spatial/joint_tree_forward_dynamics.hpp):
 // its q'' against M⁻¹ f of the same derivation (M from the composite-rigid-body algorithm, f from
 // Newton–Euler) at random states, on chains and trees of oblique hinges through offset anchors, a
-// slide and a fixed frame, with armature, damping, springs and inputs; where eomgen takes it by
+// slide, a fixed frame, ball and free joints, with armature, damping, springs and inputs; where eomgen takes it by
 // itself (a mean depth of 5 joints or more) and where not; and the located refusals when it is asked
 // for a tree it does not solve. MuJoCo checks the generated code of a long chain
 // (tests/crosscheck/mujoco_oracle_test.cpp).
@@ -79,7 +79,7 @@ std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double
 // the algorithm's q'' against M⁻¹ f at random states and inputs
 void expect_accelerations_solve_the_equations(const Equations& e, int points, unsigned seed) {
   ASSERT_TRUE(e.joint_tree_accelerations) << e.model_name;
-  std::size_t n = e.symbols.num_coordinates();
+  std::size_t n = e.num_velocities();
   for (GiNaC::exmap at : random_points(e.symbols, points, seed)) {
     for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
     for (const Intermediate& i : e.joint_tree_accelerations->intermediates) at[i.symbol] = value_at(i.definition, at);
@@ -112,6 +112,15 @@ TEST(JointTreeAccelerations, ArmWithArmatureGivesMInverseF) {
 TEST(JointTreeAccelerations, BranchedTreeWithASlideAndAFixedFrameGivesMInverseF) {
   expect_accelerations_solve_the_equations(articulated(crosscheck_model("branched_tree")), 2, 7u);
   expect_accelerations_solve_the_equations(articulated(read_file(model_path("oblique_tree"))), 6, 9u);
+}
+
+// Appell's equations in the tree's velocities (a quaternion's angular velocity, a free joint's linear
+// velocity in the world's axes): a joint of 3 or 6 columns, its D factored as L Δ Lᵀ
+TEST(JointTreeAccelerations, BallAndFreeJointsGiveMInverseF) {
+  expect_accelerations_solve_the_equations(articulated(crosscheck_model("ball_hung_chain")), 3, 19u);
+  expect_accelerations_solve_the_equations(articulated(crosscheck_model("quadruped")), 2, 21u);
+  expect_accelerations_solve_the_equations(articulated(read_file(model_path("tumbling_body"))), 4, 23u);
+  expect_accelerations_solve_the_equations(articulated(read_file(model_path("ball_joint_top"))), 4, 25u);
 }
 
 TEST(JointTreeAccelerations, ChainOfUniversalJointsWithATipForceGivesMInverseF) {
@@ -170,13 +179,14 @@ TEST(JointTreeAccelerations, TreesItDoesNotSolveAreLocatedErrors) {
   // a coordinate that moves two joints (one follows the other's, as URDF's mimic)
   std::string hand = refusal(crosscheck_model("coupled_hand"));
   EXPECT_NE(hand.find("tree.toml:1:1: error: --forward-dynamics: the articulated-body recursion needs a tree of particles "
-                      "or of hinges and slides"),
+                      "or of joints"),
             std::string::npos)
       << hand;
   EXPECT_NE(hand.find("moves more than one joint"), std::string::npos) << hand;
   EXPECT_NE(hand.find("hint: leave --forward-dynamics out, or use mass_matrix"), std::string::npos) << hand;
-  // ball and free joints are Appell's equations in their angular velocities
-  EXPECT_NE(refusal(crosscheck_model("ball_hung_chain")).find("not method 'appell'"), std::string::npos);
+  std::string lagrange1 = rod_chain(3);
+  lagrange1.insert(lagrange1.find("[parameters]"), "method = \"lagrange1\"\n");
+  EXPECT_NE(refusal(lagrange1).find("not method 'lagrange1'"), std::string::npos) << refusal(lagrange1);
   std::string coupled = rod_chain(3) + "kinetic = \"der(a2)*der(b2)/10\"\n";
   std::string message = refusal(coupled);
   EXPECT_NE(message.find("its [energy] kinetic couples the rates of 'a2' and 'b2'"), std::string::npos) << message;
