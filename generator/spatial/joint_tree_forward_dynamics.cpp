@@ -106,7 +106,8 @@ class ArticulatedBodies {
     }
   }
 
-  // U, D, w of link i's joint, and its articulated inertia and bias force carried to its parent
+  // U, D, w of link i's joint, and its articulated inertia and bias force carried to its parent:
+  // pᵃ = p + I c + U D⁻¹ (w − Uᵀ c)
   void articulate(std::size_t i) {
     const TreeLink& l = links_[i];
     ArticulatedInertia I = named(i, "fdI", inertia_[i]);
@@ -115,52 +116,63 @@ class ArticulatedBodies {
     const Vector3 &ca = bias_angular_[i], &cl = bias_linear_[i];
     Vector3 aN = pN + times(I.A, ca) + times(I.B, cl), aF = pF + times(I.B, ca, true) + times(I.C, cl);
     Joint& j = joints_[i];
-    std::size_t k = j.columns.size();
-    if (k > 0) {
-      for (std::size_t c = 0; c < k; ++c) {
-        const TreeLink::Column& s = j.columns[c];
-        Vector3 N = times(I.A, s.axis) + times(I.B, s.origin_velocity), F = times(I.B, s.axis, true) + times(I.C, s.origin_velocity);
-        Six U;
-        for (unsigned a = 0; a < 3; ++a) {
-          U[a] = named_intermediate(out_, l.name, fmt::format("fdU{}N_{}", c, articulated_axes[a]), N[a]);
-          U[3 + a] = named_intermediate(out_, l.name, fmt::format("fdU{}F_{}", c, articulated_axes[a]), F[a]);
-        }
-        j.U.push_back(U);
-        j.w.push_back(named_intermediate(out_, l.name, fmt::format("fdu{}", c),
-                                         forces_[std::size_t(s.velocity)] - dot(s.axis, pN) - dot(s.origin_velocity, pF)));
-      }
-      factor(i, j);
-      std::vector<ex> h(k);
-      for (std::size_t c = 0; c < k; ++c) h[c] = j.w[c] - projected(j.U[c], ca, cl);
+    if (!j.columns.empty()) {
+      project(i, I, pN, pF);
+      std::vector<ex> h;
+      for (std::size_t c = 0; c < j.columns.size(); ++c) h.push_back(j.w[c] - projected(j.U[c], ca, cl));
       std::vector<ex> y = solved(i, j, h, "fdk");
-      for (std::size_t c = 0; c < k; ++c) {
+      for (std::size_t c = 0; c < j.columns.size(); ++c) {
         aN = aN + scaled(y[c], {j.U[c][0], j.U[c][1], j.U[c][2]});
         aF = aF + scaled(y[c], {j.U[c][3], j.U[c][4], j.U[c][5]});
       }
       if (l.parent < 0) return;  // a root's Iᵃ and pᵃ go nowhere
-      // Iᵃ = I − U D⁻¹ Uᵀ, with the rows of G = U D⁻¹ solved for
-      std::vector<std::vector<ex>> G(6);
-      for (unsigned r = 0; r < 6; ++r) {
-        std::vector<ex> row(k);
-        for (std::size_t c = 0; c < k; ++c) row[c] = j.U[c][r];
-        G[r] = solved(i, j, row, fmt::format("fdG{}", r));
-      }
-      auto minus = [&](unsigned r, unsigned s) {
-        ex x = 0;
-        for (std::size_t c = 0; c < k; ++c) x += G[r][c] * j.U[c][s];
-        return x;
-      };
-      for (unsigned a = 0; a < 3; ++a)
-        for (unsigned b = 0; b < 3; ++b) {
-          I.A(a, b) -= minus(a, b);
-          I.B(a, b) -= minus(a, 3 + b);
-          I.C(a, b) -= minus(3 + a, 3 + b);
-        }
-      if (k == 1 && joint_inertias_[std::size_t(j.columns[0].velocity)].is_zero()) without_joint_direction(j, I);
-      I = named(i, "fdIa", I);
+      I = named(i, "fdIa", without_joint(i, I));
     }
     if (l.parent < 0) return;
     carry(i, I, named(i, "fdaN", aN), named(i, "fdaF", aF));
+  }
+
+  // U = I S and w = Q − Sᵀ p for each column of link i's joint, and D's factors
+  void project(std::size_t i, const ArticulatedInertia& I, const Vector3& pN, const Vector3& pF) {
+    Joint& j = joints_[i];
+    for (std::size_t c = 0; c < j.columns.size(); ++c) {
+      const TreeLink::Column& s = j.columns[c];
+      Vector3 N = times(I.A, s.axis) + times(I.B, s.origin_velocity), F = times(I.B, s.axis, true) + times(I.C, s.origin_velocity);
+      Six U;
+      for (unsigned a = 0; a < 3; ++a) {
+        U[a] = named_intermediate(out_, links_[i].name, fmt::format("fdU{}N_{}", c, articulated_axes[a]), N[a]);
+        U[3 + a] = named_intermediate(out_, links_[i].name, fmt::format("fdU{}F_{}", c, articulated_axes[a]), F[a]);
+      }
+      j.U.push_back(U);
+      j.w.push_back(named_intermediate(out_, links_[i].name, fmt::format("fdu{}", c),
+                                       forces_[std::size_t(s.velocity)] - dot(s.axis, pN) - dot(s.origin_velocity, pF)));
+    }
+    factor(i, j);
+  }
+
+  // Iᵃ = I − U D⁻¹ Uᵀ, with the rows of G = U D⁻¹ solved for
+  ArticulatedInertia without_joint(std::size_t i, ArticulatedInertia I) {
+    const Joint& j = joints_[i];
+    std::size_t k = j.columns.size();
+    std::vector<std::vector<ex>> G(6);
+    for (unsigned r = 0; r < 6; ++r) {
+      std::vector<ex> row(k);
+      for (std::size_t c = 0; c < k; ++c) row[c] = j.U[c][r];
+      G[r] = solved(i, j, row, fmt::format("fdG{}", r));
+    }
+    auto UDU = [&](unsigned r, unsigned s) {
+      ex x = 0;
+      for (std::size_t c = 0; c < k; ++c) x += G[r][c] * j.U[c][s];
+      return x;
+    };
+    for (unsigned a = 0; a < 3; ++a)
+      for (unsigned b = 0; b < 3; ++b) {
+        I.A(a, b) -= UDU(a, b);
+        I.B(a, b) -= UDU(a, 3 + b);
+        I.C(a, b) -= UDU(3 + a, 3 + b);
+      }
+    if (k == 1 && joint_inertias_[std::size_t(j.columns[0].velocity)].is_zero()) without_joint_direction(j, I);
+    return I;
   }
 
   // D = L Δ Lᵀ with L unit lower triangular, each entry and 1/Δ named (k ≤ 6: a ball's 3, a free joint's 6)

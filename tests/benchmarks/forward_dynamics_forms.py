@@ -6,7 +6,8 @@ f, against the articulated-body algorithm (`eomgen generate --forward-dynamics m
 frames_benchmark.py; a first rod of one hinge for an odd count) from 4 to 30 hinges, and the
 robots of tests/crosscheck/models/: seven_joint_arm, branched_tree (21 oblique hinges, branched)
 hinge_chain (20 hinges about x and y in turn), quadruped (a free torso, four legs of three
-hinges) and ball_hung_chain (nine hinges below a ball joint), and a chain of 12 oblique hinges. Prints a
+hinges), ball_hung_chain (nine hinges below a ball joint) and floating_snake (a free head and 16
+hinges), and a chain of 12 oblique hinges. Prints a
 Markdown table: the mean depth of the joints (from 4.5 on eomgen weighs the algorithm,
 spatial/joint_tree_forward_dynamics.cpp, and takes the form of fewer operations,
 emit/cpp_joint_tree.hpp), both times, their ratio, the form eomgen takes and the largest
@@ -122,7 +123,7 @@ def main():
                 f.write(rod_chain(hinges))
             cases.append((f"chain{hinges}", path, hinges))
         robots = ("hinge_chain",) if quick else ("seven_joint_arm", "branched_tree", "hinge_chain", "quadruped",
-                                                  "ball_hung_chain")
+                                                  "ball_hung_chain", "floating_snake")
         for robot in robots:
             path = os.path.join(ROOT, "tests", "crosscheck", "models", f"{robot}.toml")
             cases.append((robot, path, None))

@@ -12,7 +12,9 @@ tree's is 3.7 MB):
   6) about oblique axes through offset anchors, with the same kinds of bodies;
 - quadruped: a floating torso with four legs of three hinges;
 - hinge_chain: a hanging chain of 20 hinges about x and y in turn through offset anchors, each
-  link below the last (mean depth 10.5: eomgen's rhs takes the articulated-body algorithm).
+  link below the last (mean depth 10.5: eomgen's rhs takes the articulated-body algorithm);
+- floating_snake: a head on a free joint and 16 hinges about z and y in turn behind it (the
+  algorithm again, with a free joint's six columns at the root).
 
 The numbers are drawn from a fixed seed and written with 10 significant digits (all they have). MJCF takes each
 inertia tensor in its principal axes (quat and diaginertia, from numpy's eigh in double
@@ -253,6 +255,19 @@ def hinge_chain(rng):
     return links
 
 
+def floating_snake(rng):
+    """a free head and 16 links behind it, each on a hinge through an offset anchor, about z and y in
+    turn (a snake robot's yaw and pitch), falling free (no contacts)"""
+    links = []
+    for k in range(16):
+        axis = (0, 0, 1) if k % 2 == 0 else (0, 1, 0)
+        anchor = [round(rng.uniform(-0.01, 0.01), 3) for _ in range(3)]
+        origin = (round(-rng.uniform(0.08, 0.12), 3), 0, round(rng.uniform(-0.01, 0.01), 3))
+        links.append(dict(name=f"segment{k + 1}", parent=f"segment{k}" if k else "head", origin=origin, turn="",
+                          axis=axis, anchor=anchor, body=body(rng, 0.2), armature=0.005, damping=0.02))
+    return links
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
     rng = random.Random(38)
@@ -284,6 +299,13 @@ def main():
            "algorithm, for the MuJoCo oracle test. Written by tests/benchmarks/robot_models.py with",
            "tests/crosscheck/mjcf/hinge_chain.xml."],
           hinge_chain(rng))
+    write(root, "floating_snake", "Snake robot floating free: a head on a free joint and 16 hinges behind it",
+          ["A snake robot floating free for the MuJoCo oracle test: a head on a free joint (MuJoCo's qpos",
+           "and qvel layout) and 16 segments behind it, each on a hinge about z or y in turn (yaw and",
+           "pitch) through an offset anchor, bodies with full inertia tensors, armature, damping and a",
+           "motor on each hinge: a floating base below which eomgen's rhs takes the articulated-body",
+           "algorithm. Written by tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/floating_snake.xml."],
+          floating_snake(rng), base=dict(name="head", height=1.0, body=body(rng, 0.5)))
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@
 #include "support/urdf_inertias.hpp"
 
 #include "branched_tree.hpp"
+#include "floating_snake.hpp"
 #include "geared_gripper.hpp"
 #include "hinge_chain.hpp"
 #include "measured_arm.hpp"
@@ -182,6 +183,9 @@ TEST(MujocoOracle, MeasuredArmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(measured_ar
 // a chain of 12 oblique hinges, whose rhs is the articulated-body algorithm's (no M; JointTreeAccelerations
 // checks that eomgen chooses it), armature included
 TEST(MujocoOracle, LongChainSolvedByTheArticulatedBodyAlgorithmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(hinge_chain); }
+
+// the same below a free joint (six columns at the root, D = L Δ Lᵀ), in MuJoCo's qpos and qvel layout
+TEST(MujocoOracle, FloatingSnakeSolvedByTheArticulatedBodyAlgorithmMatchesMujoco) { EXPECT_MATCHES_MUJOCO(floating_snake); }
 
 // a floating base: a free joint's position, quaternion and angular velocity in MuJoCo's layout,
 // with twelve hinges below it; and the free tumbling body of models/

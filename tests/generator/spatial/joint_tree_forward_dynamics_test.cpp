@@ -158,6 +158,7 @@ TEST(JointTreeAccelerations, EomgenTakesTheAlgorithmWhereItsCodeIsShorter) {
   EXPECT_FALSE(derive_text(rod_chain(4)).joint_tree_accelerations);
   EXPECT_TRUE(header_takes_articulated_bodies(derive_text(rod_chain(9))));
   EXPECT_TRUE(header_takes_articulated_bodies(derive_text(crosscheck_model("hinge_chain"))));
+  EXPECT_TRUE(header_takes_articulated_bodies(derive_text(crosscheck_model("floating_snake")))) << "a free joint above";
   EXPECT_FALSE(derive_text(crosscheck_model("seven_joint_arm")).joint_tree_accelerations) << "mean depth 4";
   EXPECT_FALSE(derive_text(crosscheck_model("branched_tree")).joint_tree_accelerations) << "mean depth 4.3";
   EXPECT_FALSE(derive_text(rod_chain(12), "model.toml", solved_by(ForwardDynamics::mass_matrix)).joint_tree_accelerations);
