@@ -351,9 +351,10 @@ std::optional<std::string> why_not_articulated_joint_tree(const Model& model) {
 // articulated inertia a dense product: so the mean depth admits a tree, and the operations decide.
 // tests/benchmarks/forward_dynamics_forms.py on 2026-11-29 (AMD EPYC, g++ -O2, both forms' rhs in one
 // process), M = L D Lᵀ against the algorithm: chains of rods on universal joints of 8 hinges (mean
-// depth 4.5) 390 ns against 412, of 16 1,885 against 1,225, of 30 7,557 against 2,984; the 7-joint
-// arm (4) 449 against 556, the 21-joint branched tree (4.3) 3,173 against 3,850, the quadruped
-// (6.5) 1,678 against 1,892, 12 oblique hinges in a row (6.5) 2,080 against 2,153.
+// depth 4.5) 397 ns against 420, of 16 1,883 against 1,228, of 30 7,448 against 3,006; the 7-joint
+// arm (4) 448 against 561, the 21-joint branched tree (4.3) 3,285 against 3,907, the quadruped
+// (6.5) 1,624 against 1,843, a free head with 16 hinges (11.5) 3,618 against 2,654, 12 oblique
+// hinges in a row (6.5) 2,078 against 2,124.
 bool articulated_body_may_pay(const std::vector<TreeLink>& links) {
   // a joint's columns are a dense block of M, each below the one before
   std::vector<long> depth(links.size(), 0);
