@@ -79,6 +79,28 @@ std::vector<GiNaC::exmap> random_points(const Symbols& s, int count, unsigned se
   return points;
 }
 
+std::vector<double> solved_linear_system(std::vector<std::vector<double>> A, std::vector<double> b) {
+  std::size_t n = b.size();
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t pivot = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (std::abs(A[r][c]) > std::abs(A[pivot][c])) pivot = r;
+    std::swap(A[c], A[pivot]), std::swap(b[c], b[pivot]);
+    for (std::size_t r = c + 1; r < n; ++r) {
+      double factor = A[r][c] / A[c][c];
+      for (std::size_t k = c; k < n; ++k) A[r][k] -= factor * A[c][k];
+      b[r] -= factor * b[c];
+    }
+  }
+  std::vector<double> x(n);
+  for (std::size_t r = n; r-- > 0;) {
+    double sum = b[r];
+    for (std::size_t k = r + 1; k < n; ++k) sum -= A[r][k] * x[k];
+    x[r] = sum / A[r][r];
+  }
+  return x;
+}
+
 double value_at(const GiNaC::ex& e, const GiNaC::exmap& point) {
   GiNaC::ex v = e.subs(point).evalf();
   if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {

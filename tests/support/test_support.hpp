@@ -36,6 +36,9 @@ GiNaC::ex closed_form(const Equations& e, const std::string& text);
 /// coordinates in [-3, 3], velocities in [-2, 2], inputs in [-1, 1], t in [0, 2]).
 std::vector<GiNaC::exmap> random_points(const Symbols& s, int count, unsigned seed = 12345);
 
+/// x with A x = b, by Gaussian elimination with partial pivoting (A small and regular).
+std::vector<double> solved_linear_system(std::vector<std::vector<double>> A, std::vector<double> b);
+
 /// The value of e at a point, as a double; fails the test if it is not a real number.
 double value_at(const GiNaC::ex& e, const GiNaC::exmap& point);
 

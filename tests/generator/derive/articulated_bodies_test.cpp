@@ -18,6 +18,7 @@ namespace eomgen {
 namespace {
 
 using GiNaC::ex;
+using test::solved_linear_system;
 using test::value_at;
 
 
@@ -70,29 +71,6 @@ std::string free_particle_carrying_a_pendulum(const std::string& name, bool driv
                "[[forces]]\nat = [\"x + l*sin(a)\", \"y\", \"z - l*cos(a)\"]\nforce = [\"F\", \"F\", \"0\"]\n";
 }
 
-// x solves A x = b (Gaussian elimination with partial pivoting; A is small and regular here)
-std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double> b) {
-  std::size_t n = b.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    for (std::size_t r = c + 1; r < n; ++r)
-      if (std::abs(A[r][c]) > std::abs(A[pivot][c])) pivot = r;
-    std::swap(A[c], A[pivot]), std::swap(b[c], b[pivot]);
-    for (std::size_t r = c + 1; r < n; ++r) {
-      double factor = A[r][c] / A[c][c];
-      for (std::size_t k = c; k < n; ++k) A[r][k] -= factor * A[c][k];
-      b[r] -= factor * b[c];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t r = n; r-- > 0;) {
-    double sum = b[r];
-    for (std::size_t k = r + 1; k < n; ++k) sum -= A[r][k] * x[k];
-    x[r] = sum / A[r][r];
-  }
-  return x;
-}
-
 // a random state with a random held q'', and the recursion's quantities there, in their order
 GiNaC::exmap with_intermediates(const Equations& e, const GiNaC::exmap& random, unsigned seed) {
   GiNaC::exmap at = random;
@@ -116,7 +94,7 @@ void expect_recursion_solves_the_equations(const Equations& e, int points, unsig
       f[j] = value_at(e.forcing[j], random);
       for (unsigned k = 0; k < n; ++k) M[j][k] = value_at(e.mass_matrix(j, k), random);
     }
-    std::vector<double> expected = solve(M, f), b;
+    std::vector<double> expected = solved_linear_system(M, f), b;
     for (std::size_t j = 0; j < n; ++j) {
       double got = value_at(e.articulated->accelerations[j], at);
       EXPECT_NEAR(got, expected[j], 1e-10 * std::max(1.0, std::abs(expected[j])))
@@ -124,7 +102,7 @@ void expect_recursion_solves_the_equations(const Equations& e, int points, unsig
       b.push_back(value_at(e.articulated->inverse_dynamics.forces[j], at));
     }
     // M⁻¹ b for the Jacobian's columns, by the same recursion without gravity and velocities
-    std::vector<double> response = solve(M, b);
+    std::vector<double> response = solved_linear_system(M, b);
     for (std::size_t j = 0; j < n; ++j)
       EXPECT_NEAR(value_at(e.articulated->inverse_dynamics.accelerations_of_forces[j], at), response[j],
                   1e-10 * std::max(1.0, std::abs(response[j])))

@@ -53,29 +53,6 @@ std::string rod_chain(int hinges) {
   return out + "[energy]\npotential = \"k*b1^2/2\"\n";
 }
 
-// x solves A x = b (Gaussian elimination with partial pivoting; A is regular here)
-std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double> b) {
-  std::size_t n = b.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    for (std::size_t r = c + 1; r < n; ++r)
-      if (std::abs(A[r][c]) > std::abs(A[pivot][c])) pivot = r;
-    std::swap(A[c], A[pivot]), std::swap(b[c], b[pivot]);
-    for (std::size_t r = c + 1; r < n; ++r) {
-      double factor = A[r][c] / A[c][c];
-      for (std::size_t k = c; k < n; ++k) A[r][k] -= factor * A[c][k];
-      b[r] -= factor * b[c];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t r = n; r-- > 0;) {
-    double sum = b[r];
-    for (std::size_t k = r + 1; k < n; ++k) sum -= A[r][k] * x[k];
-    x[r] = sum / A[r][r];
-  }
-  return x;
-}
-
 // the algorithm's q'' against M⁻¹ f at random states and inputs
 void expect_accelerations_solve_the_equations(const Equations& e, int points, unsigned seed) {
   ASSERT_TRUE(e.joint_tree_accelerations) << e.model_name;
@@ -89,7 +66,7 @@ void expect_accelerations_solve_the_equations(const Equations& e, int points, un
       f[j] = value_at(e.forcing[j], at);
       for (unsigned k = 0; k < n; ++k) M[j][k] = value_at(e.mass_matrix(j, k), at);
     }
-    std::vector<double> expected = solve(M, f);
+    std::vector<double> expected = solved_linear_system(M, f);
     double scale = 0;
     for (double x : expected) scale = std::max(scale, std::abs(x));
     for (std::size_t j = 0; j < n; ++j)
