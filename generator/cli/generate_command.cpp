@@ -122,7 +122,8 @@ Command add_generate_command(CLI::App& app) {
   auto form = std::make_shared<std::string>("chosen");
   cmd->add_option("--forward-dynamics", *form,
                   "How the rhs solves for q'': chosen (default: eomgen's choice, the articulated-body recursion for a "
-                  "tree of particles of many coordinates or a deep tree of hinges and slides, M = L D L^T otherwise), "
+                  "tree of particles of many coordinates or a deep tree of joints where its code is shorter, M = L D L^T "
+                  "otherwise), "
                   "mass_matrix or articulated, to compare the two forms")
       ->check(CLI::IsMember({"chosen", "mass_matrix", "articulated"}))
       ->excludes("--scene");

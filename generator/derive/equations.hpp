@@ -111,8 +111,9 @@ struct Equations {
   /// Forward dynamics by the articulated-body recursion of a tree of particles, where eomgen or
   /// ModelChoice::forward_dynamics chooses it; without it the rhs solves M q'' = f.
   std::optional<ArticulatedForwardDynamics> articulated;
-  /// A joint tree of hinges and slides whose rhs takes q'' from the articulated-body algorithm, where
-  /// eomgen or ModelChoice::forward_dynamics chooses it; everything else uses M and the tree's τ.
+  /// A joint tree's q'' by the articulated-body algorithm, where ModelChoice::forward_dynamics asks
+  /// for it or the tree is deep enough: the header's rhs takes it where asked or where its code is
+  /// shorter than M's (emit/cpp_joint_tree.hpp); everything else uses M and the tree's τ.
   std::optional<JointTreeAccelerations> joint_tree_accelerations;
   /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
   void solve_by_mass_matrix() {

@@ -23,14 +23,14 @@ void call_factored_accelerations(BodyWriter& w, std::size_t n) {
 
 std::string joint_tree_rhs_function(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
-  BodyWriter w(e);
-  std::vector<ex> outputs = e.joint_tree_accelerations->accelerations;
-  if (e.uses_pseudo_velocities()) outputs.insert(outputs.end(), e.coordinate_rates.begin(), e.coordinate_rates.end());
-  auto values = w.batch(outputs);
-  for (std::size_t i = 0; i < n; ++i)
-    w.line(fmt::format("xdot[{}] = {};", i, e.uses_pseudo_velocities() ? values[k + i] : fmt::format("x[{}]", n + i)));
-  for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, values[i]));
   bool pseudo = e.uses_pseudo_velocities();
+  BodyWriter w(e);
+  // q'' (s') and, for pseudo-velocities, q' = W s + w, in one batch
+  std::vector<ex> outputs = e.joint_tree_accelerations->accelerations;
+  if (pseudo) outputs.insert(outputs.end(), e.coordinate_rates.begin(), e.coordinate_rates.end());
+  auto values = w.batch(outputs);
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", i, pseudo ? values[k + i] : fmt::format("x[{}]", n + i)));
+  for (std::size_t i = 0; i < k; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, values[i]));
   return function(fmt::format("/// Explicit first-order form x' = [{}; {}''] with x = [q; {}], M {}'' = f solved by the\n"
                               "/// articulated-body algorithm over the joints (O(n), without forming M).\n"
                               "/// x, xdot: num_states = {}; u: num_inputs (may be null if none); p: num_parameters.\n",

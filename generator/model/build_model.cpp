@@ -104,8 +104,8 @@ void ModelBuilder::check_header() {
     d_.error(f_.forward_dynamics_where, "model.forward_dynamics",
              fmt::format("the key is retired: eomgen chooses how the header's rhs solves for q'' (the "
                          "articulated-body recursion for a tree of particles of {} coordinates or more and for a "
-                         "tree of hinges and slides {} or more deep on average where it has fewer operations, M = L "
-                         "D L^T otherwise)",
+                         "tree of joints {} or more deep on average where it has fewer operations, M = L D L^T "
+                         "otherwise)",
                          articulated_crossover, articulated_mean_depth),
              "remove the line; `eomgen generate --forward-dynamics mass_matrix` or `articulated` writes a header in "
              "the other form, to compare the two");

@@ -16,12 +16,15 @@ void check_forward_dynamics(const Model& model, SourceLocation where, Diagnostic
   if (model.forward_dynamics != ForwardDynamics::articulated) return;
   std::optional<std::string> as_joints = why_not_articulated_joint_tree(model);
   if (!as_joints) return;
-  if (model.method != "lagrange2")
+  if (!articulated_method(model))
     diagnostics.error(where, "--forward-dynamics",
                       fmt::format("the articulated-body recursion solves Lagrange's equations of the second kind (Appell's "
                                   "for a tree with ball or free joints), not method '{}'",
                                   model.method),
                       "leave --forward-dynamics out, or use method = \"lagrange2\"");
+  else if (model.method != "lagrange2")
+    diagnostics.error(where, "--forward-dynamics", "the articulated-body recursion needs a tree of joints, and this model is not one: " + *as_joints,
+                      "leave --forward-dynamics out");
   else if (ParticleTree tree = find_particle_tree(model); !tree.found())
     diagnostics.error(where, "--forward-dynamics",
                       fmt::format("the articulated-body recursion needs a tree of particles or of joints, and this model "

@@ -165,8 +165,8 @@ struct DrawnBody {
 };
 
 /// How the header's rhs solves for q'': eomgen's choice (the articulated-body recursion for a tree
-/// of particles from articulated_crossover coordinates on, and for a tree of hinges and slides
-/// articulated_mean_depth deep on average, M = L D Lᵀ otherwise), or one
+/// of particles from articulated_crossover coordinates on, and for a tree of joints
+/// articulated_mean_depth deep on average where its code is shorter, M = L D Lᵀ otherwise), or one
 /// form asked for, to compare the two (tests, benchmarks: `eomgen generate --forward-dynamics`).
 enum class ForwardDynamics { chosen, mass_matrix, articulated };
 
@@ -180,7 +180,7 @@ enum class ForwardDynamics { chosen, mass_matrix, articulated };
 /// LDLᵀ form, so n = 8 is the smallest size at which the recursion is the faster on both machines.
 inline constexpr std::size_t articulated_crossover = 8;
 
-/// A tree of hinges and slides whose joints have this many joints above them and themselves on
+/// A tree of joints whose velocities have this many velocities above them and themselves on
 /// average, or more, has its rhs by the articulated-body algorithm where that is code of fewer
 /// operations than M's (measured in spatial/joint_tree_forward_dynamics.cpp).
 inline constexpr double articulated_mean_depth = 4.5;

@@ -327,11 +327,14 @@ class ArticulatedBodies {
 
 }  // namespace
 
-std::optional<std::string> why_not_articulated_joint_tree(const Model& model) {
+bool articulated_method(const Model& model) {
   bool spherical = false;
   for (const FrameLink& l : model.frame_links) spherical = spherical || (l.joint && l.joint->spherical());
-  if (model.method != "lagrange2" && !(spherical && model.method == "appell"))
-    return fmt::format("its method is '{}', not lagrange2", model.method);
+  return model.method == "lagrange2" || (spherical && model.method == "appell");
+}
+
+std::optional<std::string> why_not_articulated_joint_tree(const Model& model) {
+  if (!articulated_method(model)) return fmt::format("its method is '{}', not lagrange2", model.method);
   if (auto why = why_not_a_joint_tree(model)) return "it is not a tree of joints: " + *why;
   const Symbols& s = model.symbols;
   for (std::size_t j = 0; j < s.velocities.size(); ++j)

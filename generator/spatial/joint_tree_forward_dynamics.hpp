@@ -36,6 +36,10 @@ struct JointTreeAccelerations {
   bool asked = false;  // by `--forward-dynamics articulated`; else the header's writer weighs it against M
 };
 
+/// Whether the model's method is one the algorithm above solves: Lagrange II, or Appell's equations
+/// for a tree with ball or free joints.
+bool articulated_method(const Model& model);
+
 /// Why the model's tree is not one the algorithm above solves (for `--forward-dynamics
 /// articulated`), or nothing when it is: a joint tree (spatial/joint_tree_dynamics.hpp) each of
 /// whose coordinates moves one joint, under Lagrange II (Appell's equations with ball and free

@@ -162,6 +162,14 @@ TEST(JointTreeAccelerations, TreesItDoesNotSolveAreLocatedErrors) {
       << hand;
   EXPECT_NE(hand.find("moves more than one joint"), std::string::npos) << hand;
   EXPECT_NE(hand.find("hint: leave --forward-dynamics out, or use mass_matrix"), std::string::npos) << hand;
+  // below a ball joint (Appell's equations), the tree's own reason
+  std::string ball = crosscheck_model("ball_hung_chain");
+  ball.insert(ball.find("dissipation = "), "kinetic = \"der(a1)*der(a2)/10\"\n");
+  std::string under_ball = refusal(ball);
+  EXPECT_NE(under_ball.find("needs a tree of joints, and this model is not one: its [energy] kinetic couples the rates of "
+                            "'a1' and 'a2'"),
+            std::string::npos)
+      << under_ball;
   std::string lagrange1 = rod_chain(3);
   lagrange1.insert(lagrange1.find("[parameters]"), "method = \"lagrange1\"\n");
   EXPECT_NE(refusal(lagrange1).find("not method 'lagrange1'"), std::string::npos) << refusal(lagrange1);
