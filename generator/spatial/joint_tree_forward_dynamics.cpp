@@ -1,12 +1,11 @@
 #include "spatial/joint_tree_forward_dynamics.hpp"
 
-#include <array>
-
 #include <fmt/format.h>
 
 #include "kinematics/vector3.hpp"
 #include "model/recursive_frames.hpp"
 #include "spatial/joint_tree_dynamics.hpp"
+#include "spatial/spatial_algebra.hpp"
 
 namespace eomgen {
 
@@ -25,14 +24,8 @@ GiNaC::matrix cross_matrix(const Vector3& h) {
   return {{0, -h[2], h[1]}, {h[2], 0, -h[0]}, {-h[1], h[0], 0}};
 }
 
-GiNaC::matrix sum(const GiNaC::matrix& a, const GiNaC::matrix& b) { return a.add(b); }
-
-// a force (N, F) or motion (α, a) as six components, angular first
-using Six = std::array<ex, 6>;
-
-ex projected(const Six& a, const Vector3& angular, const Vector3& linear) {
-  return a[0] * angular[0] + a[1] * angular[1] + a[2] * angular[2] + a[3] * linear[0] + a[4] * linear[1] + a[5] * linear[2];
-}
+// a joint's column S = (e, u) as a motion
+SpatialVector motion_of(const TreeLink::Column& c) { return {c.axis, c.origin_velocity}; }
 
 class ArticulatedBodies {
  public:
@@ -53,10 +46,10 @@ class ArticulatedBodies {
   }
 
  private:
-  // a joint's columns S = (e, u), U = I S, D = Sᵀ U (+ joint inertias) as L Δ Lᵀ, and w = Q − Sᵀ p
+  // for a link's joint columns S = (e, u): U = I S (forces (N, F)), D = Sᵀ U (+ joint inertias) as
+  // L Δ Lᵀ, and w = Q − Sᵀ p
   struct Joint {
-    std::vector<TreeLink::Column> columns;
-    std::vector<Six> U;
+    std::vector<SpatialVector> U;
     std::vector<std::vector<ex>> L;
     std::vector<ex> inverse_pivots, w;
   };
@@ -80,9 +73,7 @@ class ArticulatedBodies {
       Vector3 swing = p < 0 ? zero : times(l.turn, cross(wp, cross(wp, l.offset)), true);
       bias_angular_.push_back(named(i, "fdca", cross(carried, turning)));
       bias_linear_.push_back(named(i, "fdcl", swing + scaled(2, cross(carried, sliding)) + cross(turning, kept)));
-      Joint j;
-      j.columns = l.columns;
-      joints_.push_back(j);
+      joints_.emplace_back();
     }
   }
 
@@ -97,8 +88,8 @@ class ArticulatedBodies {
       ex cc = dot(b.center, b.center);
       for (unsigned a = 0; a < 3; ++a)
         for (unsigned c = 0; c < 3; ++c) J(a, c) += b.mass * ((a == c ? cc : ex(0)) - b.center[a] * b.center[c]);
-      I.A = sum(I.A, J);
-      I.B = sum(I.B, cross_matrix(h));
+      I.A = I.A.add(J);
+      I.B = I.B.add(cross_matrix(h));
       for (unsigned a = 0; a < 3; ++a) I.C(a, a) += b.mass;
       Vector3 spin = named(i, "fdJw", times(J, w));
       bias_[i].first = bias_[i].first + cross(w, spin);
@@ -115,15 +106,15 @@ class ArticulatedBodies {
     if (l.parent < 0 && l.columns.empty()) return;  // fixed to the world
     const Vector3 &ca = bias_angular_[i], &cl = bias_linear_[i];
     Vector3 aN = pN + times(I.A, ca) + times(I.B, cl), aF = pF + times(I.B, ca, true) + times(I.C, cl);
-    Joint& j = joints_[i];
-    if (!j.columns.empty()) {
+    const Joint& j = joints_[i];
+    if (!l.columns.empty()) {
       project(i, I, pN, pF);
       std::vector<ex> h;
-      for (std::size_t c = 0; c < j.columns.size(); ++c) h.push_back(j.w[c] - projected(j.U[c], ca, cl));
-      std::vector<ex> y = solved(i, j, h, "fdk");
-      for (std::size_t c = 0; c < j.columns.size(); ++c) {
-        aN = aN + scaled(y[c], {j.U[c][0], j.U[c][1], j.U[c][2]});
-        aF = aF + scaled(y[c], {j.U[c][3], j.U[c][4], j.U[c][5]});
+      for (std::size_t c = 0; c < l.columns.size(); ++c) h.push_back(j.w[c] - power({ca, cl}, j.U[c]));
+      std::vector<ex> y = solved(i, h, "fdk");
+      for (std::size_t c = 0; c < l.columns.size(); ++c) {
+        aN = aN + scaled(y[c], j.U[c].top);
+        aF = aF + scaled(y[c], j.U[c].bottom);
       }
       if (l.parent < 0) return;  // a root's Iᵃ and pᵃ go nowhere
       I = named(i, "fdIa", without_joint(i, I));
@@ -135,30 +126,27 @@ class ArticulatedBodies {
   // U = I S and w = Q − Sᵀ p for each column of link i's joint, and D's factors
   void project(std::size_t i, const ArticulatedInertia& I, const Vector3& pN, const Vector3& pF) {
     Joint& j = joints_[i];
-    for (std::size_t c = 0; c < j.columns.size(); ++c) {
-      const TreeLink::Column& s = j.columns[c];
+    const std::vector<TreeLink::Column>& columns = links_[i].columns;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const TreeLink::Column& s = columns[c];
       Vector3 N = times(I.A, s.axis) + times(I.B, s.origin_velocity), F = times(I.B, s.axis, true) + times(I.C, s.origin_velocity);
-      Six U;
-      for (unsigned a = 0; a < 3; ++a) {
-        U[a] = named_intermediate(out_, links_[i].name, fmt::format("fdU{}N_{}", c, articulated_axes[a]), N[a]);
-        U[3 + a] = named_intermediate(out_, links_[i].name, fmt::format("fdU{}F_{}", c, articulated_axes[a]), F[a]);
-      }
-      j.U.push_back(U);
+      j.U.push_back({named(i, fmt::format("fdU{}N", c), N), named(i, fmt::format("fdU{}F", c), F)});
       j.w.push_back(named_intermediate(out_, links_[i].name, fmt::format("fdu{}", c),
-                                       forces_[std::size_t(s.velocity)] - dot(s.axis, pN) - dot(s.origin_velocity, pF)));
+                                       forces_[std::size_t(s.velocity)] - power(motion_of(s), {pN, pF})));
     }
-    factor(i, j);
+    factor(i);
   }
 
   // Iᵃ = I − U D⁻¹ Uᵀ, with the rows of G = U D⁻¹ solved for
   ArticulatedInertia without_joint(std::size_t i, ArticulatedInertia I) {
     const Joint& j = joints_[i];
-    std::size_t k = j.columns.size();
+    const std::vector<TreeLink::Column>& columns = links_[i].columns;
+    std::size_t k = columns.size();
     std::vector<std::vector<ex>> G(6);
     for (unsigned r = 0; r < 6; ++r) {
       std::vector<ex> row(k);
       for (std::size_t c = 0; c < k; ++c) row[c] = j.U[c][r];
-      G[r] = solved(i, j, row, fmt::format("fdG{}", r));
+      G[r] = solved(i, row, fmt::format("fdG{}", r));
     }
     auto UDU = [&](unsigned r, unsigned s) {
       ex x = 0;
@@ -171,16 +159,18 @@ class ArticulatedBodies {
         I.B(a, b) -= UDU(a, 3 + b);
         I.C(a, b) -= UDU(3 + a, 3 + b);
       }
-    if (k == 1 && joint_inertias_[std::size_t(j.columns[0].velocity)].is_zero()) without_joint_direction(j, I);
+    if (k == 1 && joint_inertias_[std::size_t(columns[0].velocity)].is_zero()) without_joint_direction(columns[0], I);
     return I;
   }
 
   // D = L Δ Lᵀ with L unit lower triangular, each entry and 1/Δ named (k ≤ 6: a ball's 3, a free joint's 6)
-  void factor(std::size_t i, Joint& j) {
-    std::size_t k = j.columns.size();
+  void factor(std::size_t i) {
+    Joint& j = joints_[i];
+    const std::vector<TreeLink::Column>& columns = links_[i].columns;
+    std::size_t k = columns.size();
     auto D = [&](std::size_t a, std::size_t b) {
-      ex x = projected(j.U[b], j.columns[a].axis, j.columns[a].origin_velocity);
-      if (a == b) x += joint_inertias_[std::size_t(j.columns[a].velocity)];
+      ex x = power(motion_of(columns[a]), j.U[b]);
+      if (a == b) x += joint_inertias_[std::size_t(columns[a].velocity)];
       return x;
     };
     j.L.assign(k, std::vector<ex>(k, 0));
@@ -199,7 +189,8 @@ class ArticulatedBodies {
   }
 
   // D⁻¹ b by the factors, named `label`0, `label`1, …
-  std::vector<ex> solved(std::size_t i, const Joint& j, const std::vector<ex>& b, const std::string& label) {
+  std::vector<ex> solved(std::size_t i, const std::vector<ex>& b, const std::string& label) {
+    const Joint& j = joints_[i];
     std::size_t k = b.size();
     std::vector<ex> x(k);
     for (std::size_t r = 0; r < k; ++r) {
@@ -218,7 +209,7 @@ class ArticulatedBodies {
   // Iᵃ S = 0 (U − U D/D; with a joint inertia a, U a/(D + a)). Along a joint frame's axis (S = (±e_k, 0)
   // or (0, ±e_k)) the entries it makes zero are set so, where the formula leaves D − D²/D with D a
   // named quantity, which no rule cancels.
-  static void without_joint_direction(const Joint& j, ArticulatedInertia& I) {
+  static void without_joint_direction(const TreeLink::Column& column, ArticulatedInertia& I) {
     auto axis = [](const Vector3& v) {
       int k = -1;
       for (unsigned a = 0; a < 3; ++a) {
@@ -228,7 +219,7 @@ class ArticulatedBodies {
       }
       return k;
     };
-    int turning = axis(j.columns[0].axis), sliding = axis(j.columns[0].origin_velocity);
+    int turning = axis(column.axis), sliding = axis(column.origin_velocity);
     if (turning >= 0 && sliding == -1)
       for (unsigned b = 0; b < 3; ++b) {
         I.A(unsigned(turning), b) = I.A(b, unsigned(turning)) = 0;
@@ -254,9 +245,9 @@ class ArticulatedBodies {
     GiNaC::matrix R = cross_matrix(l.offset), RC = R.mul(C);
     GiNaC::matrix BR = B.mul(R);
     ArticulatedInertia& P = inertia_[p];
-    P.A = sum(P.A, A.sub(BR).sub(BR.transpose()).sub(RC.mul(R)));
-    P.B = sum(P.B, B.add(RC));
-    P.C = sum(P.C, C);
+    P.A = P.A.add(A.sub(BR).sub(BR.transpose()).sub(RC.mul(R)));
+    P.B = P.B.add(B.add(RC));
+    P.C = P.C.add(C);
     Vector3 EF = named(i, "fdEF", times(E, F));
     bias_[p].first = bias_[p].first + times(E, N) + cross(l.offset, EF);
     bias_[p].second = bias_[p].second + EF;
@@ -274,17 +265,17 @@ class ArticulatedBodies {
       Vector3 al = times(l.turn, alpha_p, true) + bias_angular_[i];
       Vector3 a = times(l.turn, at_origin, true) + bias_linear_[i];
       const Joint& j = joints_[i];
-      if (!j.columns.empty()) {
+      if (!l.columns.empty()) {
         // named before q̈ is: q̈ and (α, a) each take them
         al = named(i, "fdal0", al);
         a = named(i, "fdac0", a);
-        std::vector<ex> h(j.columns.size());
-        for (std::size_t c = 0; c < h.size(); ++c) h[c] = j.w[c] - projected(j.U[c], al, a);
-        std::vector<ex> qdd = solved(i, j, h, "fdqdd");
+        std::vector<ex> h(l.columns.size());
+        for (std::size_t c = 0; c < h.size(); ++c) h[c] = j.w[c] - power({al, a}, j.U[c]);
+        std::vector<ex> qdd = solved(i, h, "fdqdd");
         for (std::size_t c = 0; c < h.size(); ++c) {
-          ddq[std::size_t(j.columns[c].velocity)] = qdd[c];
-          al = al + scaled(qdd[c], j.columns[c].axis);
-          a = a + scaled(qdd[c], j.columns[c].origin_velocity);
+          ddq[std::size_t(l.columns[c].velocity)] = qdd[c];
+          al = al + scaled(qdd[c], l.columns[c].axis);
+          a = a + scaled(qdd[c], l.columns[c].origin_velocity);
         }
       }
       alpha[i] = named(i, "fdal", al);
