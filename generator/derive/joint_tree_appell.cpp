@@ -104,6 +104,10 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
     for (unsigned d = 0; d < k; ++d) used.push_back(e.mass_matrix(c, d));
   used.insert(used.end(), e.inverse_dynamics.begin(), e.inverse_dynamics.end());
   for (const Intermediate& i : e.acceleration_intermediates) used.push_back(i.definition);
+  if (e.bodies_gradient) {
+    std::vector<ex> gradient = written_expressions(*e.bodies_gradient);
+    used.insert(used.end(), gradient.begin(), gradient.end());
+  }
   for (const BodyKinematics& b : mech.bodies) used.insert(used.end(), b.position.begin(), b.position.end());
   for (const NamedSymbolic& o : e.outputs) used.push_back(o.expression);
   for (const DrawnBody& b : model.drawing) {  // the header's body_poses

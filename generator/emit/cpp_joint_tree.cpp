@@ -43,7 +43,7 @@ bool rhs_takes_articulated_bodies(const Equations& e) {
   if (e.joint_tree_accelerations->asked) return true;
   long articulated = count_operations(joint_tree_rhs_function(e), "rhs", 0);
   std::string ldlt = mass_matrix_factorization(e, e.num_velocities());
-  long factored = count_operations(mass_matrix_and_forcing_function(e), "mass_matrix_and_forcing", 0) +
+  long factored = mass_matrix_and_forcing_code(e).operations +
                   count_operations(ldlt, "ldlt_factor", 0) + count_operations(ldlt, "ldlt_solve", 0);
   return articulated < factored;
 }
@@ -92,6 +92,33 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
+// M_a and f_a of the applied part τ_a = M_a q'' − f_a (linear in q''), into M (zeros before) and f
+void assign_applied_mass_matrix_and_forcing(BodyWriter& w, const std::vector<ex>& applied) {
+  std::size_t n = applied.size();
+  std::vector<ex> values;
+  std::vector<std::string> targets;
+  GiNaC::exmap at_rest;
+  for (const GiNaC::symbol& a : w.accelerations()) at_rest[a] = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j)
+      if (ex m = applied[i].diff(w.accelerations()[j]).expand(); !m.is_zero())
+        values.push_back(m), targets.push_back(fmt::format("M[{}]", i * n + j));
+    values.push_back(-applied[i].subs(at_rest)), targets.push_back(fmt::format("f[{}]", i));
+  }
+  w.assign(values, targets);
+}
+
+// whether τ_a's M_a is ∂τ_a/∂q'': q'' must not enter τ_a through a quantity of the recursion (τ_a's
+// symbols gathered in one walk, not one walk per quantity)
+bool applied_part_apart(const Equations& e) {
+  GiNaC::exset in_applied;
+  for (const ex& tau : e.bodies_gradient->applied_inverse_dynamics)
+    for (auto it = tau.preorder_begin(); it != tau.preorder_end(); ++it)
+      if (GiNaC::is_a<GiNaC::symbol>(*it)) in_applied.insert(*it);
+  return std::none_of(e.acceleration_intermediates.begin(), e.acceleration_intermediates.end(),
+                      [&](const Intermediate& i) { return in_applied.count(i.symbol) > 0; });
+}
+
 // the body of detail::tree_acceleration_gradient: the applied part's M and f (τ_a = M_a q'' − f_a,
 // linear in q'') with the tables, the bodies' M and f from the loops' pass at q'' = 0, its solve,
 // and the pass again at the accelerations for ∂τ/∂(q, q')
@@ -106,17 +133,7 @@ std::string tree_acceleration_gradient_body(const Equations& e) {
   call_tree_tables(w, e);
   w.line(fmt::format("T M[{}] = {{}};", n * n));
   w.line(fmt::format("T f[{}];", n));
-  std::vector<ex> values;
-  std::vector<std::string> targets;
-  GiNaC::exmap at_rest;
-  for (const GiNaC::symbol& a : w.accelerations()) at_rest[a] = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < n; ++j)
-      if (ex m = applied[i].diff(w.accelerations()[j]).expand(); !m.is_zero())
-        values.push_back(m), targets.push_back(fmt::format("M[{}]", i * n + j));
-    values.push_back(-applied[i].subs(at_rest)), targets.push_back(fmt::format("f[{}]", i));
-  }
-  w.assign(values, targets);
+  assign_applied_mass_matrix_and_forcing(w, applied);
   // the pass adds the bodies' M and f, then the solve sets q'' = M^-1 f, the applied part's ∂τ and the
   // root joint's motion at them, and the pass adds the bodies' ∂τ
   w.line(fmt::format("hinge_tree_pass<true>(tree, ddq, {}, {}, F, {}, M, f, [&] {{", nq, nq + n, n));
@@ -140,16 +157,8 @@ constexpr long tree_pass_beyond_operations_per_velocity = 300;
 }  // namespace
 
 bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_operations) {
-  if (!e.gradient_loops() || mass_matrix_and_forcing_operations <= tree_pass_beyond_operations_per_velocity * long(e.num_velocities()))
-    return false;
-  // τ_a's M_a as ∂τ_a/∂q'': q'' must not enter it through a quantity of the recursion (τ_a's symbols
-  // gathered in one walk, not one walk per quantity)
-  GiNaC::exset in_applied;
-  for (const ex& tau : e.bodies_gradient->applied_inverse_dynamics)
-    for (auto it = tau.preorder_begin(); it != tau.preorder_end(); ++it)
-      if (GiNaC::is_a<GiNaC::symbol>(*it)) in_applied.insert(*it);
-  return std::none_of(e.acceleration_intermediates.begin(), e.acceleration_intermediates.end(),
-                      [&](const Intermediate& i) { return in_applied.count(i.symbol) > 0; });
+  return e.gradient_loops() && mass_matrix_and_forcing_operations > tree_pass_beyond_operations_per_velocity * long(e.num_velocities()) &&
+         applied_part_apart(e);
 }
 
 std::string tree_acceleration_gradient_function(const Equations& e) {
@@ -184,7 +193,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
     closed_form = operations(closed) < operations(body);
     if (closed_form) body = std::move(closed);
   }
-  return tree_gradient_loops_function(e) + "namespace detail {\n\n" +
+  return "namespace detail {\n\n" +
          function(fmt::format(fmt::runtime(loops
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
                                     "/// part by detail::hinge_tree_gradient's loops; a tangent sweep through the rest).\n"
@@ -200,10 +209,25 @@ std::string newton_euler_gradient_function(const Equations& e) {
          "}  // namespace detail\n\n";
 }
 
-// a tree's M and f are long code, most of a 21-joint tree's header when mass_matrix, forcing and
-// factored_accelerations each wrote them: written once, here, and those three call it
-std::string mass_matrix_and_forcing_function(const Equations& e) {
-  if (dynamics_form(e) != DynamicsForm::newton_euler) return "";
+namespace {
+
+// Straight-line M and f take time in proportion to their operations, the loops' world pass about
+// the same per link whatever the axes. M and f alone, g++ -O2, loops against straight-line code, by
+// the straight-line operations per velocity: chains of 9, 12 and 16 rods on hinges along their
+// axes (199, 239, 288) 5.1, 1.75 and 1.49 times as long; the quadruped (260) 1.55; floating_snake
+// (469) 1.17; the 21-joint tree of oblique hinges (481) 0.87, chains of 9, 10, 12 and 16 oblique
+// hinges (481, 511, 562, 658) 0.92, 0.88, 0.77 and 0.68; hinge_chain (601) 0.96
+constexpr long loops_beyond_operations_per_velocity = 475;
+
+// detail::mass_matrix_and_forcing's declaration, inlined where it is called: a call passed M
+// through memory, and rhs took 12-18 % longer
+constexpr const char* mass_matrix_and_forcing_signature =
+    "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
+    "inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f)";
+
+std::string in_detail(const std::string& functions) { return "namespace detail {\n\n" + functions + "}  // namespace detail\n\n"; }
+
+std::string straight_line_mass_matrix_and_forcing(const Equations& e) {
   std::size_t n = e.num_velocities(), upper = n * (n + 1) / 2;
   BodyWriter w(e);
   std::vector<ex> entries = upper_triangle(e.mass_matrix, n);
@@ -211,14 +235,42 @@ std::string mass_matrix_and_forcing_function(const Equations& e) {
   std::vector<std::string> code = w.batch(entries);
   write_symmetric(w, std::vector<std::string>(code.begin(), code.begin() + long(upper)), n, "M");
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("f[{}] = {};", i, code[upper + i]));
-  return "namespace detail {\n\n" +
-         function(fmt::format("/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.\n"
-                              "/// M: {0}x{0}, row-major; f: {0}.\n", n),
-                  // inlined where it is called: a call passed M through memory, and rhs took 12-18 % longer
-                  "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
-                  "inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f)",
-                  w.finish(all_unused)) +
-         "}  // namespace detail\n\n";
+  return in_detail(function(fmt::format("/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations.\n"
+                                        "/// M: {0}x{0}, row-major; f: {0}.\n", n),
+                            mass_matrix_and_forcing_signature, w.finish(all_unused)));
+}
+
+// the applied part's M and f, then the bodies' from the loops' world pass at q'' = 0
+std::string looped_mass_matrix_and_forcing(const Equations& e) {
+  std::size_t n = e.num_velocities();
+  BodyWriter w(e);
+  w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) M[i] = T(0);", n * n));
+  assign_applied_mass_matrix_and_forcing(w, e.bodies_gradient->applied_inverse_dynamics);
+  call_tree_mass_matrix_and_forcing(w, e);
+  return in_detail(function(fmt::format("/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations: the\n"
+                                        "/// bodies' part by detail::hinge_tree_mass_matrix_and_forcing's loops over the links.\n"
+                                        "/// M: {0}x{0}, row-major; f: {0}.\n", n),
+                            mass_matrix_and_forcing_signature, without_unused_locals(w.finish(all_unused))));
+}
+
+}  // namespace
+
+// a tree's M and f are long code, most of a 21-joint tree's header when mass_matrix, forcing and
+// factored_accelerations each wrote them: written once, here, and those three call it
+MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e) {
+  if (dynamics_form(e) != DynamicsForm::newton_euler) return {};
+  MassMatrixAndForcing code;
+  code.function = straight_line_mass_matrix_and_forcing(e);
+  code.straight_line_operations = count_operations(code.function, "mass_matrix_and_forcing", 0);
+  long beyond = loops_beyond_operations_per_velocity * long(e.num_velocities());
+  if (e.gradient_loops() && code.straight_line_operations > beyond && applied_part_apart(e)) {
+    code.function = looped_mass_matrix_and_forcing(e);
+    code.operations = beyond;
+    code.by_loops = true;
+  } else {
+    code.operations = code.straight_line_operations;
+  }
+  return code;
 }
 
 // q'' and the factors of M for jacobian_state of a tree, whose own code then is the sweep's call and

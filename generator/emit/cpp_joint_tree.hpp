@@ -30,9 +30,20 @@ bool rhs_takes_articulated_bodies(const Equations& e);
 /// is written once, for jacobian_state (q'' from the solve) and linearization (q'' = 0), and M and
 /// f once. (∂τ/∂u = −∂f/∂u is short, and only linearization needs it: jacobian_state's rows are
 /// then the gradient's, written in place.) Each "" for the other forms.
-std::string mass_matrix_and_forcing_function(const Equations& e);
 std::string factored_accelerations_function(const Equations& e);
 std::string newton_euler_gradient_function(const Equations& e);
+
+/// detail::mass_matrix_and_forcing (the other forms: empty), straight-line or, for a long tree of
+/// hinges and slides where the straight-line code has more operations than they take, the world
+/// pass's loops (emit/cpp_tree_gradient_loops.hpp); its operations, for choosing what calls it
+/// (the loops counted as the straight-line code where they begin to be faster), and the
+/// straight-line code's.
+struct MassMatrixAndForcing {
+  std::string function;
+  long operations = 0, straight_line_operations = 0;
+  bool by_loops = false;
+};
+MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e);
 
 /// Whether jacobian_state of a long tree of hinges and slides (below a root joint of any kind) forms M and f
 /// from the world pass that its derivatives go on from (detail::tree_acceleration_gradient) rather

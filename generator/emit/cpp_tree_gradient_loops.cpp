@@ -339,6 +339,49 @@ void hinge_tree_gradient(const hinge_tree_tables<L, T>& tree, const T* ddq, std:
 
 )";
 
+// hinge_tree_pass's recursion at q'' = 0 for M and f alone, where they go by the loops
+constexpr const char* mass_matrix_template = R"(/// The bodies' M (n x n) and f = -tau at q'' = 0, added into M and f, for mass_matrix_and_forcing:
+/// hinge_tree_pass's world recursion at q'' = 0 with only what M and f need (the root joint's motion
+/// in the tables at q'' = 0 too), composite inertias and forces, and tree_mass_matrix_and_bias.
+template <std::size_t L, class T>
+void hinge_tree_mass_matrix_and_forcing(const hinge_tree_tables<L, T>& tree, std::size_t n, T* M, T* f) {
+  const int* parent = tree.parent;
+  const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
+  T R[L][9], o[L][3], S[L][6], v[L][6], a[L][6], C[L][10], force[L][6];
+  const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
+  const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
+  const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
+  for (std::size_t i = 0; i < L; ++i) {
+    const bool on_root = parent[i] < 0 && i == 0 && root;
+    tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
+               tree.column[i], tree.inertia[i], R[i], o[i], S[i], C[i]);
+    const T* vp = parent[i] >= 0 ? v[parent[i]] : on_root ? root->v : rest;
+    const T* ap = parent[i] >= 0 ? a[parent[i]] : on_root ? root->a : fall;
+    // v = v_p + S s, a = a_p + (v_p x S) s at q'' = 0
+    if (tree.velocity[i] < 0) {
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k];
+    } else {
+      T dS[6];
+      tree_motion_cross(vp, S[i], dS);
+      const T s = tree.rate[i];
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + s*S[i][k], a[i][k] = ap[k] + s*dS[k];
+    }
+    T P[6], Ca[6], vP[6];
+    tree_inertia_times(C[i], v[i], P);
+    tree_inertia_times(C[i], a[i], Ca);
+    tree_force_cross(v[i], P, vP);
+    for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vP[k];
+  }
+  for (std::size_t i = L; i-- > 0;) {
+    if (parent[i] < 0) continue;
+    tree_add_into(C[parent[i]], C[i]);
+    tree_add_into(force[parent[i]], force[i]);
+  }
+  tree_mass_matrix_and_bias(tree, S, C, force, n, M, f);
+}
+
+)";
+
 // The link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
 // column (axis a; origin velocity b) in its own coordinates: (R a; o × R a + R b); its inertia about
 // the world origin from its own about its origin (m, h, J):
@@ -454,7 +497,7 @@ std::string tree_tables_body(const Equations& e) {
 
 }  // namespace
 
-std::string tree_gradient_loops_function(const Equations& e) {
+std::string tree_gradient_loops_function(const Equations& e, bool with_mass_matrix_and_forcing) {
   if (!e.gradient_loops()) return "";
   std::string tree = "hinge_tree_tables<" + tree_size(e) + ", T>& tree";
   std::string root_motion =
@@ -463,6 +506,7 @@ std::string tree_gradient_loops_function(const Equations& e) {
                                           root_motion_body(e))
                                : "";
   return "namespace detail {\n\n" + std::string(six_vector_helpers) + tree_place_function() + gradient_template +
+         (with_mass_matrix_and_forcing ? mass_matrix_template : "") +
          function("/// The tree's tables for the configuration x, written once for the functions that go through it.\n",
                   "void tree_tables(T t, const T* x, const input_t<T>* u, const T* p, " + tree + ")", tree_tables_body(e)) +
          root_motion + "}  // namespace detail\n\n";
@@ -476,6 +520,13 @@ void call_tree_tables(BodyWriter& w, const Equations& e) {
 
 void call_root_motion(BodyWriter& w, const Equations& e) {
   if (e.gradient_loops()->root) w.line("detail::tree_root_motion(t, x, ddq, u, p, tree);");
+}
+
+void call_tree_mass_matrix_and_forcing(BodyWriter& w, const Equations& e) {
+  std::size_t n = e.num_velocities();
+  if (e.gradient_loops()->root) w.line(fmt::format("const T ddq[{}] = {{}};", n));  // the root joint's motion at q'' = 0
+  call_tree_tables(w, e);
+  w.line(fmt::format("hinge_tree_mass_matrix_and_forcing(tree, {}, M, f);", n));
 }
 
 void call_tree_gradient_loops(BodyWriter& w, const Equations& e, std::size_t coordinates, std::size_t width) {

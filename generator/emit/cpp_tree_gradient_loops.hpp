@@ -13,14 +13,18 @@
 
 namespace eomgen {
 
-/// detail::hinge_tree_pass, its six-vector helpers and detail::tree_tables; "" unless e has the loops.
-std::string tree_gradient_loops_function(const Equations& e);
+/// detail::hinge_tree_pass, its six-vector helpers and detail::tree_tables, and with
+/// `with_mass_matrix_and_forcing` detail::hinge_tree_mass_matrix_and_forcing; "" unless e has the loops.
+std::string tree_gradient_loops_function(const Equations& e, bool with_mass_matrix_and_forcing);
 
 /// Declares `detail::hinge_tree_tables<L, T> tree` and fills them by detail::tree_tables, and its
 /// root joint's motion at the accelerations ddq (the caller has t, x, ddq, u and p).
 void call_tree_tables(BodyWriter& w, const Equations& e);
 /// The root joint's motion at the accelerations ddq again, when the tree has one.
 void call_root_motion(BodyWriter& w, const Equations& e);
+
+/// The tree's tables and the call that adds the bodies' M and f at q'' = 0 into M and f.
+void call_tree_mass_matrix_and_forcing(BodyWriter& w, const Equations& e);
 
 /// The tree's tables and the call that adds the bodies' part of ∂τ/∂(q, q') into F (row width W).
 void call_tree_gradient_loops(BodyWriter& w, const Equations& e, std::size_t coordinates, std::size_t width);

@@ -438,6 +438,26 @@ class Gradient {
 
 }  // namespace
 
+std::vector<ex> written_expressions(const BodiesGradient& g) {
+  std::vector<ex> out = g.applied_inverse_dynamics;
+  for (const GiNaC::matrix* m : {&g.closed_form.coordinates, &g.closed_form.velocities})
+    for (unsigned i = 0; i < m->nops(); ++i) out.push_back(m->op(i));
+  if (!g.closed_form.loops) return out;
+  const HingeTreeLinks& l = *g.closed_form.loops;
+  auto add = [&](const auto& rows) {
+    for (const auto& row : rows) out.insert(out.end(), row.begin(), row.end());
+  };
+  add(l.turn), add(l.offset), add(l.column), add(l.inertia);
+  out.insert(out.end(), l.rate.begin(), l.rate.end());
+  out.insert(out.end(), l.gravity.begin(), l.gravity.end());
+  if (const std::optional<JointedRoot>& r = l.root) {
+    add(r->S), add(r->A), add(r->twist), add(r->dS), add(r->ddS);
+    out.insert(out.end(), r->v.begin(), r->v.end());
+    out.insert(out.end(), r->a.begin(), r->a.end());
+  }
+  return out;
+}
+
 InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                             const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                             std::vector<Intermediate>& out) {

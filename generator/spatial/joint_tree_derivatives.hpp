@@ -125,6 +125,10 @@ struct BodiesGradient {
   InverseDynamicsGradient closed_form;
 };
 
+/// Every expression of g that the header writes (the applied τ, the closed form's entries, the
+/// loops' tables and root motion): what the intermediates kept for the header must cover.
+std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
+
 /// The derivatives above, of τ at the accelerations `ddq`, for the tree's velocities and
 /// coordinates (links parents first); their quantities are appended to `out` as intermediates.
 /// Straight-line code for them grows with the tree's pairs of joints, loops do not: a tree of

@@ -204,7 +204,8 @@ def seven_joint_arm(rng):
     return links
 
 
-def branched_tree(rng):
+def branched_tree(rng, base="", spine=(0, 0, 1.0)):
+    """base: the link the spine hangs from ("" the ground), spine: where"""
     links, names = [], []
 
     def chain(prefix, parent, count, offset):
@@ -218,7 +219,7 @@ def branched_tree(rng):
             names.append(name)
             parent = name
 
-    chain("spine", "", 3, (0, 0, 1.0))
+    chain("spine", base, 3, spine)
     chain("left_arm", "spine3", 3, (0, 0.2, 0.1))
     chain("right_arm", "spine3", 3, (0, -0.2, 0.1))
     chain("left_leg", "spine1", 6, (0, 0.1, -0.1))
@@ -306,6 +307,18 @@ def main():
            "motor on each hinge: a floating base below which eomgen's rhs takes the articulated-body",
            "algorithm. Written by tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/floating_snake.xml."],
           floating_snake(rng), base=dict(name="head", height=1.0, body=body(rng, 0.5)))
+    write(root, "floating_humanoid", "Humanoid-like tree of 21 oblique hinges on a free torso",
+          ["The branched tree's layout (a spine of 3, two arms of 3, two legs of 6, hinges about oblique",
+           "axes through offset anchors) with new bodies, below a torso on a free joint (MuJoCo's qpos and",
+           "qvel layout): a floating humanoid for the MuJoCo oracle test. Written by",
+           "tests/benchmarks/robot_models.py with tests/crosscheck/mjcf/floating_humanoid.xml."],
+          branched_tree(rng, "torso", (0, 0, 0.1)), base=dict(name="torso", height=1.2, body=body(rng, 8.0)))
+    write(root, "humanoid_beside_a_free_body", "A free body beside a humanoid-like tree of 21 oblique hinges",
+          ["Two trees in one model: a body on a free joint (MuJoCo's qpos and qvel layout) and, beside it",
+           "on the ground, the branched tree's layout of 21 hinges about oblique axes through offset",
+           "anchors with new bodies, for the MuJoCo oracle test. Written by tests/benchmarks/robot_models.py",
+           "with tests/crosscheck/mjcf/humanoid_beside_a_free_body.xml."],
+          branched_tree(rng), base=dict(name="box", height=0.5, body=body(rng, 2.0)))
 
 
 if __name__ == "__main__":
