@@ -211,13 +211,23 @@ std::string newton_euler_gradient_function(const Equations& e) {
 
 namespace {
 
-// Straight-line M and f take time in proportion to their operations, the loops' world pass about
-// the same per link whatever the axes. M and f alone, g++ -O2, loops against straight-line code, by
-// the straight-line operations per velocity: chains of 9, 12 and 16 rods on hinges along their
-// axes (199, 239, 288) 5.1, 1.75 and 1.49 times as long; the quadruped (260) 1.55; floating_snake
-// (469) 1.17; the 21-joint tree of oblique hinges (481) 0.87, chains of 9, 10, 12 and 16 oblique
-// hinges (481, 511, 562, 658) 0.92, 0.88, 0.77 and 0.68; hinge_chain (601) 0.96
-constexpr long loops_beyond_operations_per_velocity = 475;
+// The time of M and f by the loops, in operations of straight-line code (about 0.25 ns each, g++
+// -O2): each link of the tables (a fixed one too) about 95 ns, each pair of a joint and one at or
+// above it 3.4 ns, a root joint 570 ns, fit to the loops' times on chains of 9 and 16 oblique hinges
+// and checked on the others below. M and f alone, loops against straight-line code (links, pairs,
+// straight-line operations): chains of 9, 10, 12 and 16 oblique hinges 0.92, 0.88, 0.77 and 0.68
+// (9, 45, 4,332 to 16, 136, 10,528); the 21-joint tree 0.87 (21, 90, 10,105); hinge_chain 0.96 (20,
+// 210, 12,019); the 21-joint tree below a free torso 0.85 (22, 90, 13,098) and beside a free body
+// 1.10 (22, 90, 10,391); floating_snake 1.17 (17, 136, 10,310); the quadruped 1.55 (13, 24, 4,687);
+// chains of 9, 12 and 16 rods on hinges along their axes 5.1, 1.75 and 1.49 (1,787 to 4,614
+// operations); example-robot-data's Talos (45 links for 32 velocities, 15,221) 1.37 and TIAGo Pro
+// (34 for 23, 14,129) 1.08, where per velocity the counts had looked like the 21-joint tree's
+long looped_mass_matrix_and_forcing_operations(const HingeTreeLinks& links) {
+  long pairs = 0;
+  for (std::size_t k = 0; k < links.parent.size(); ++k)
+    for (int j = links.velocity[k] < 0 ? -1 : int(k); j >= 0; j = links.parent[std::size_t(j)]) pairs += links.velocity[std::size_t(j)] >= 0;
+  return 380 * long(links.parent.size()) + 14 * pairs + (links.root ? 2300 : 0);
+}
 
 // detail::mass_matrix_and_forcing's declaration, inlined where it is called: a call passed M
 // through memory, and rhs took 12-18 % longer
@@ -262,13 +272,13 @@ MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e) {
   MassMatrixAndForcing code;
   code.function = straight_line_mass_matrix_and_forcing(e);
   code.straight_line_operations = count_operations(code.function, "mass_matrix_and_forcing", 0);
-  long beyond = loops_beyond_operations_per_velocity * long(e.num_velocities());
-  if (e.gradient_loops() && code.straight_line_operations > beyond && applied_part_apart(e)) {
+  code.operations = code.straight_line_operations;
+  if (!e.gradient_loops()) return code;
+  long looped = looped_mass_matrix_and_forcing_operations(*e.gradient_loops());
+  if (looped < code.straight_line_operations && applied_part_apart(e)) {
     code.function = looped_mass_matrix_and_forcing(e);
-    code.operations = beyond;
+    code.operations = looped;
     code.by_loops = true;
-  } else {
-    code.operations = code.straight_line_operations;
   }
   return code;
 }

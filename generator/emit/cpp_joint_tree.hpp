@@ -34,10 +34,9 @@ std::string factored_accelerations_function(const Equations& e);
 std::string newton_euler_gradient_function(const Equations& e);
 
 /// detail::mass_matrix_and_forcing (the other forms: empty), straight-line or, for a long tree of
-/// hinges and slides where the straight-line code has more operations than they take, the world
-/// pass's loops (emit/cpp_tree_gradient_loops.hpp); its operations, for choosing what calls it
-/// (the loops counted as the straight-line code where they begin to be faster), and the
-/// straight-line code's.
+/// hinges and slides where the straight-line code would take longer, the world pass's loops
+/// (emit/cpp_tree_gradient_loops.hpp); its operations, for choosing what calls it (the loops'
+/// time counted in operations of straight-line code), and the straight-line code's.
 struct MassMatrixAndForcing {
   std::string function;
   long operations = 0, straight_line_operations = 0;
