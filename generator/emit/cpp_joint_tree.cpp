@@ -273,11 +273,15 @@ MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e) {
   code.function = straight_line_mass_matrix_and_forcing(e);
   code.straight_line_operations = count_operations(code.function, "mass_matrix_and_forcing", 0);
   code.operations = code.straight_line_operations;
-  if (!e.gradient_loops()) return code;
+  if (!e.gradient_loops() || !applied_part_apart(e)) return code;
   long looped = looped_mass_matrix_and_forcing_operations(*e.gradient_loops());
-  if (looped < code.straight_line_operations && applied_part_apart(e)) {
+  code.operations = std::min(looped, code.straight_line_operations);
+  // where rhs takes the articulated-body algorithm and jacobian_state the tree's pass, M and f serve
+  // mass_matrix, forcing, jacobian_input and linearization alone: the loops then, for the header's
+  // size (TIAGo's straight-line M and f were 680 KB of its 2 MB)
+  bool rhs_and_jacobian_without = e.joint_tree_accelerations && jacobian_takes_tree_pass(e, code.straight_line_operations);
+  if (looped < code.straight_line_operations || rhs_and_jacobian_without) {
     code.function = looped_mass_matrix_and_forcing(e);
-    code.operations = looped;
     code.by_loops = true;
   }
   return code;
