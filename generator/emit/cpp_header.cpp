@@ -375,7 +375,8 @@ std::string all_functions(const Equations& e) {
   MassMatrixAndForcing mass_matrix_and_forcing = mass_matrix_and_forcing_code(e);
   bool tree_pass = jacobian_takes_tree_pass(e, mass_matrix_and_forcing.straight_line_operations);
   // the loops' templates and tables come first: mass_matrix_and_forcing may call them
-  functions += (dynamics_form(e) == DynamicsForm::newton_euler ? tree_gradient_loops_function(e, mass_matrix_and_forcing.by_loops) : "") + mass_matrix_and_forcing.function + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) +
+  if (dynamics_form(e) == DynamicsForm::newton_euler) functions += tree_gradient_loops_function(e, mass_matrix_and_forcing.by_loops);
+  functions += mass_matrix_and_forcing.function + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) +
                newton_euler_gradient_function(e) + (tree_pass ? tree_acceleration_gradient_function(e) : "") +
                jacobian_state_function(e, tree_pass) + jacobian_input_function(e) + linearization_function(e);
   functions += e.kinetic_energy_from_mass_matrix

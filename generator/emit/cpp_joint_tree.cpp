@@ -224,8 +224,10 @@ namespace {
 // (34 for 23, 14,129) 1.08, where per velocity the counts had looked like the 21-joint tree's
 long looped_mass_matrix_and_forcing_operations(const HingeTreeLinks& links) {
   long pairs = 0;
-  for (std::size_t k = 0; k < links.parent.size(); ++k)
-    for (int j = links.velocity[k] < 0 ? -1 : int(k); j >= 0; j = links.parent[std::size_t(j)]) pairs += links.velocity[std::size_t(j)] >= 0;
+  for (std::size_t k = 0; k < links.parent.size(); ++k) {
+    if (links.velocity[k] < 0) continue;
+    for (int j = int(k); j >= 0; j = links.parent[std::size_t(j)]) pairs += links.velocity[std::size_t(j)] >= 0;
+  }
   return 380 * long(links.parent.size()) + 14 * pairs + (links.root ? 2300 : 0);
 }
 
