@@ -1,7 +1,8 @@
 // MuJoCo as an independent oracle for rigid-body trees: the generated rhs of a model and
 // MuJoCo's mj_forward on the same robot written as MJCF (tests/crosscheck/mjcf/) give the
-// same accelerations at random states and controls, to 1e-12 of their size, and jacobian_state
-// agrees with central differences of MuJoCo's accelerations.
+// same accelerations at random states and controls, to 1e-12 of their size, mass_matrix and
+// forcing are MuJoCo's M and forces, and jacobian_state agrees with central differences of
+// MuJoCo's accelerations.
 // models/oblique_tree.toml: five joints about oblique axes through offset anchors, a
 // prismatic joint, a fixed frame, a placement given as a matrix, full inertia tensors,
 // armature, damping, a spring and a geared motor. models/measured_arm.toml: three joints with the
