@@ -15,6 +15,10 @@ tree's is 3.7 MB):
   link below the last (mean depth 10.5: eomgen's rhs takes the articulated-body algorithm);
 - floating_snake: a head on a free joint and 16 hinges about z and y in turn behind it (the
   algorithm again, with a free joint's six columns at the root).
+- floating_humanoid: the branched tree's layout, new bodies, below a torso on a free joint (M and f
+  by the loops over the links below a root joint);
+- humanoid_beside_a_free_body: two trees in one model, a body on a free joint and, beside it on the
+  ground, the branched tree's layout with new bodies.
 
 The numbers are drawn from a fixed seed and written with 10 significant digits (all they have). MJCF takes each
 inertia tensor in its principal axes (quat and diaginertia, from numpy's eigh in double
