@@ -467,10 +467,13 @@ std::string emit_cpp_header(const Equations& given) {
             "// recursion's factors, O(1) operations each, without M^-1)."
           : "Equations of motion M(q,t) q'' = f(q, q', u, t); state x = [q; q'].",
       k, std::string(uses_clamp ? "#include <complex>\n" : "") + (uses_constants ? "#include <limits>\n" : ""),
-      e.joint_tree_accelerations
-          ? "\n// Forward dynamics: rhs solves for the accelerations by the articulated-body algorithm over the joints "
-            "(O(n), without M)."
-          : "");
+      std::string(e.joint_tree_accelerations
+                      ? "\n// Forward dynamics: rhs solves for the accelerations by the articulated-body algorithm over the joints "
+                        "(O(n), without M)."
+                      : "") +
+          (functions.find("hinge_tree_mass_matrix_and_forcing(tree") != std::string::npos
+               ? "\n// M and f: loops over the links' tables (detail::hinge_tree_mass_matrix_and_forcing)."
+               : ""));
   out += fmt::format(
       "inline constexpr std::array<const char*, num_parameters> parameter_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_coordinates> coordinate_names{{{{{}}}}};\n"
