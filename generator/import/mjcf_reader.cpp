@@ -202,6 +202,28 @@ void keep_followers(Robot& r) {
   r.couplings = kept;
 }
 
+// one line per value of friction loss, naming its joints: a legged robot's file gives every joint
+// the same, and twelve lines saying so one dof at a time hide the other warnings
+std::vector<std::string> friction_loss_warnings(const mjModel* m) {
+  std::vector<std::pair<double, std::vector<std::string>>> by_value;
+  for (int v = 0; v < m->nv; ++v) {
+    double loss = m->dof_frictionloss[v];
+    if (loss == 0) continue;
+    auto same = [&](const auto& entry) { return entry.first == loss; };
+    auto it = std::find_if(by_value.begin(), by_value.end(), same);
+    if (it == by_value.end()) it = by_value.insert(by_value.end(), {loss, {}});
+    int j = m->dof_jntid[v];
+    std::string joint = name_of(m, m->name_jntadr, j);
+    if (joint.empty()) joint = fmt::format("joint {}", j + 1);
+    if (it->second.empty() || it->second.back() != joint) it->second.push_back(joint);
+  }
+  std::vector<std::string> lines;
+  for (const auto& [loss, joints] : by_value)
+    lines.push_back(fmt::format("{} joint(s) with friction loss {} ({}): dry friction is not carried", joints.size(),
+                                loss, fmt::join(joints, ", ")));
+  return lines;
+}
+
 // what the model cannot carry, each named
 void note_losses(const mjModel* m, Robot& r) {
   // a fixed tendon that only transmits a carried actuator's force is carried; its own spring,
@@ -234,9 +256,7 @@ void note_losses(const mjModel* m, Robot& r) {
   int colliding = 0;
   for (int g = 0; g < m->ngeom && contacts; ++g) colliding += m->geom_contype[g] || m->geom_conaffinity[g];
   if (colliding) r.warnings.push_back({fmt::format("{} geom(s) that make contacts: contacts are not carried", colliding), "", "", 0});
-  for (int v = 0; v < m->nv; ++v)
-    if (m->dof_frictionloss[v] != 0)
-      r.warnings.push_back({fmt::format("dof {} has friction loss {}: not carried (dry friction)", v, m->dof_frictionloss[v]), "", "", 0});
+  for (const std::string& w : friction_loss_warnings(m)) r.warnings.push_back({w, "", "", 0});
 }
 
 

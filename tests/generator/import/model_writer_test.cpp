@@ -241,6 +241,34 @@ TEST(MjcfReader, ReadsWhatMujocoCompiled) {
   EXPECT_NE(text->find("name = \"nameless\""), std::string::npos) << *text;
 }
 
+// friction loss the model cannot carry: one warning per value, naming each joint once (a ball
+// joint's three dofs are one joint), not one per dof
+TEST(MjcfReader, FrictionLossIsOneWarningPerValue) {
+  std::string path = temporary_directory() + "/frictional.xml";
+  std::ofstream(path) << R"xml(<mujoco>
+  <worldbody>
+    <body name="upper">
+      <joint name="shoulder" type="ball" frictionloss="0.2"/>
+      <geom type="sphere" size="0.1" mass="1"/>
+      <body name="lower" pos="0 0 -0.5">
+        <joint name="elbow" type="hinge" axis="0 1 0" frictionloss="0.2"/>
+        <joint name="wrist" type="hinge" axis="1 0 0" frictionloss="0.5"/>
+        <joint name="free_spin" type="hinge" axis="0 0 1"/>
+        <geom type="sphere" size="0.1" mass="1"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>)xml";
+  auto read = read_with_mujoco(path);
+  ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
+  std::vector<std::string> friction;
+  for (const RobotWarning& w : std::get<Robot>(read).warnings)
+    if (w.text.find("friction") != std::string::npos) friction.push_back(w.text);
+  ASSERT_EQ(friction.size(), 2u);
+  EXPECT_EQ(friction[0], "2 joint(s) with friction loss 0.2 (shoulder, elbow): dry friction is not carried");
+  EXPECT_EQ(friction[1], "1 joint(s) with friction loss 0.5 (wrist): dry friction is not carried");
+}
+
 // MuJoCo keeps half sizes and turns a fromto capsule onto its segment: the shapes are full lengths
 // along the segment, at its middle
 TEST(ModelWriter, GeomsBecomeTheBodysShapes) {
