@@ -1,6 +1,7 @@
 #include "import/free_base.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -32,10 +33,49 @@ std::string unused_joint_name(const std::vector<UrdfJoint>& joints) {
   return name;
 }
 
+// A robot whose root link is the world (a UR arm's world -> base_link): the one fixed joint that
+// holds it to the world becomes floating, so that its child floats at that joint's origin, as it
+// would hung from the world by a new joint; a world holding two links, or holding its link by a
+// joint that moves, leaves no base that is plainly the one to set free.
+FreeBase world_joint_set_free(const std::string& urdf, const std::vector<UrdfJoint>& joints, std::size_t robot) {
+  FreeBase out{urdf, "", 0, "", "", ""};
+  std::vector<const UrdfJoint*> held;
+  for (const UrdfJoint& j : joints)
+    if (j.parent == "world") held.push_back(&j);
+  out.line = held.empty() ? line_of(urdf, robot) : held[0]->line;
+  if (held.size() != 1 || held[0]->type != "fixed") {
+    out.problem = held.size() > 1 ? fmt::format("the robot's root link is the world itself, which holds {} links ('{}' and "
+                                                "'{}'{}): which one floats is not clear",
+                                                held.size(), held[0]->child, held[1]->child, held.size() > 2 ? ", …" : "")
+                                  : "the robot's root link is the world itself, to which its joints fix it";
+    out.hint = held.size() == 1 ? fmt::format("make joint '{}' type=\"floating\" to set its link free, and import "
+                                              "without --free-base", held[0]->name)
+                                : "make the joint of the link that floats type=\"floating\", and import without --free-base";
+    return out;
+  }
+  std::size_t start = std::string::npos;
+  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos && start == std::string::npos;
+       at = element_start(urdf, "joint", at + 1))
+    if (attribute(urdf, at, past_tag(urdf, at), "name") == held[0]->name) start = at;
+  std::optional<std::pair<std::size_t, std::size_t>> type =
+      start == std::string::npos ? std::nullopt : attribute_span(urdf, start, past_tag(urdf, start), "type");
+  if (!type) {
+    out.problem = fmt::format("joint '{}' that fixes the robot to the world could not be found in the text", held[0]->name);
+    out.hint = fmt::format("make joint '{}' type=\"floating\", and import without --free-base", held[0]->name);
+    return out;
+  }
+  out.text.replace(type->first, type->second - type->first, "type=\"floating\"");
+  out.joint = held[0]->name;
+  out.line = 0;
+  out.note = fmt::format("--free-base: joint '{}', which fixed link '{}' to the world, is floating instead", held[0]->name,
+                         held[0]->child);
+  return out;
+}
+
 }  // namespace
 
 FreeBase with_free_base(const std::string& urdf) {
-  FreeBase out{urdf, "", 0, "", ""};
+  FreeBase out{urdf, "", 0, "", "", ""};
   std::vector<UrdfJoint> joints = urdf_joints(urdf);
   for (const UrdfJoint& j : joints)
     if (j.type == "floating") {
@@ -54,15 +94,7 @@ FreeBase with_free_base(const std::string& urdf) {
     out.hint = "a URDF robot is one tree of links joined by joints, with one root link";
     return out;
   }
-  if (roots[0] == "world") {
-    auto fixing = std::find_if(joints.begin(), joints.end(), [](const UrdfJoint& j) { return j.parent == "world"; });
-    out.line = fixing == joints.end() ? line_of(urdf, robot) : fixing->line;
-    out.problem = "the robot's root link is the world itself, to which its joints fix it";
-    out.hint = fixing == joints.end() ? "import the robot without --free-base"
-                                      : fmt::format("make joint '{}' type=\"floating\" to set its link free, and import "
-                                                    "without --free-base", fixing->name);
-    return out;
-  }
+  if (roots[0] == "world") return world_joint_set_free(urdf, joints, robot);
   out.joint = unused_joint_name(joints);
   out.text.insert(inside, fmt::format("<link name=\"world\"/><joint name=\"{}\" type=\"floating\"><parent link=\"world\"/>"
                                       "<child link=\"{}\"/></joint>",

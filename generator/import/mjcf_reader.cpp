@@ -396,10 +396,12 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
     return UnreadableRobot{1, "--masses-from-shapes weighs a URDF's links without <inertial>; this file is MJCF, whose "
                               "bodies without <inertial> MuJoCo weighs by their geoms already",
                            "import without --masses-from-shapes"};
+  std::string free_base_note;
   if (reading.free_base) {
     FreeBase freed = with_free_base(urdf);
     if (!freed.problem.empty()) return UnreadableRobot{freed.line, freed.problem, freed.hint};
     urdf = freed.text;
+    free_base_note = freed.note;
   }
   if (!urdf.empty() && !reading.masses_from_shapes) urdf = without_masses_from_geometry(urdf);
   LeftOut left_out;
@@ -423,6 +425,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   std::vector<mjtNum> zero(std::size_t(m->nv), 0.0);
   const mjtNum* qvel = m->nkey ? m->key_qvel : zero.data();
   r.initial_state = m->nkey ? fmt::format("keyframe '{}'", name_of(m, m->name_keyadr, 0)) : "qpos0";
+  if (!free_base_note.empty()) r.notes.push_back(free_base_note);
   for (int b = 1; b < m->nbody; ++b) {
     RobotBody body;
     body.name = name_of(m, m->name_bodyadr, b);

@@ -5,6 +5,7 @@
 // the base's linear velocity in world axes), its joints' block that of the same arm on a fixed base.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 #include <optional>
 #include <vector>
@@ -59,6 +60,29 @@ TEST(FreeBase, WhatCannotBeSetFreeIsRefusedWithItsLine) {
   EXPECT_NE(loose.problem.find("2 root links ('base' and 'loose')"), std::string::npos) << loose.problem;
 }
 
+// a robot fixed to a link named world (a UR arm's world -> base_link): that fixed joint floats, on
+// its own line, so that the base starts where the joint held it
+TEST(FreeBase, ARobotFixedToTheWorldFloatsByThatJoint) {
+  std::string welded = two_links;
+  welded.replace(welded.find("<link name=\"base\"/>"), 19, "<link name=\"world\"/><link name=\"base\"/>");
+  welded.insert(welded.find("</robot>"), "  <joint name=\"mount\" type=\"fixed\"><parent link=\"world\"/><child "
+                                         "link=\"base\"/><origin xyz=\"0 0 1.5\"/></joint>\n");
+  FreeBase freed = with_free_base(welded);
+  ASSERT_TRUE(freed.problem.empty()) << freed.problem;
+  EXPECT_EQ(freed.joint, "mount");
+  EXPECT_EQ(line_breaks(freed.text), line_breaks(welded));
+  EXPECT_NE(freed.text.find("<joint name=\"mount\" type=\"floating\"><parent link=\"world\"/>"), std::string::npos)
+      << freed.text;
+  EXPECT_NE(freed.note.find("joint 'mount', which fixed link 'base' to the world, is floating instead"), std::string::npos)
+      << freed.note;
+  std::string two_held = welded;
+  two_held.insert(two_held.find("</robot>"), "  <link name=\"table\"/><joint name=\"legs\" type=\"fixed\"><parent "
+                                             "link=\"world\"/><child link=\"table\"/></joint>\n");
+  FreeBase ambiguous = with_free_base(two_held);
+  EXPECT_NE(ambiguous.problem.find("which holds 2 links ('base' and 'table')"), std::string::npos) << ambiguous.problem;
+  EXPECT_EQ(ambiguous.text, two_held) << "unchanged";
+}
+
 TEST(FreeBase, AnMjcfRobotIsToldWhereItsFreeJointGoes) {
   Diagnostics diagnostics;
   std::string mjcf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml";
@@ -97,6 +121,30 @@ TEST(FreeBase, TheFloatingArmCarriesItsWholeMassAndItsJointsInertia) {
     for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(M[r][c], r == c ? mass : 0.0, 1e-14) << r << ", " << c;
   for (std::size_t r = 0; r < 2; ++r)
     for (std::size_t c = 0; c < 2; ++c) EXPECT_NEAR(M[6 + r][6 + c], M_fixed[r][c], 1e-14) << r << ", " << c;
+}
+
+// the arm mounted on a link named world by a fixed joint: --free-base floats that joint, and the
+// model is the one a new root joint gives, but starting where the mount held the base
+TEST(FreeBase, AnArmMountedOnTheWorldFloatsAsIfHungFromIt) {
+  std::string urdf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
+  std::string mounted = read_file(urdf);
+  mounted.insert(mounted.find("</robot>"), "  <link name=\"world\"/><joint name=\"root\" type=\"fixed\"><parent "
+                                           "link=\"world\"/><child link=\"base\"/><origin xyz=\"0 0 1.5\"/></joint>\n");
+  std::string path = temporary_directory() + "/mounted_arm.urdf";
+  std::ofstream(path) << mounted;
+  Diagnostics diagnostics, hung_diagnostics;
+  std::optional<std::string> floating = imported_model_text(path, diagnostics, false, "mounted_arm", {true});
+  std::optional<std::string> hung = imported_model_text(urdf, hung_diagnostics, false, "mounted_arm", {true});
+  ASSERT_TRUE(floating && hung) << diagnostics.format() << hung_diagnostics.format();
+  EXPECT_NE(floating->find("# note: --free-base: joint 'root', which fixed link 'base' to the world"), std::string::npos)
+      << *floating;
+  EXPECT_NE(floating->find("root_z = 1.5"), std::string::npos) << *floating;
+  EXPECT_NE(hung->find("root_z = 0"), std::string::npos) << *hung;
+  std::vector<std::vector<double>> M = mass_matrix_at_rest(*floating), M_hung = mass_matrix_at_rest(*hung);
+  ASSERT_EQ(M.size(), 8u);
+  ASSERT_EQ(M_hung.size(), 8u);
+  for (std::size_t r = 0; r < 8; ++r)
+    for (std::size_t c = 0; c < 8; ++c) EXPECT_NEAR(M[r][c], M_hung[r][c], 1e-14) << r << ", " << c;
 }
 
 }  // namespace
