@@ -16,7 +16,8 @@ closed loop) are soft and broken by a random state: such robots are timed only.
 
 Usage: robot_sweep.py EOMGEN FILE_OR_FOLDER ... [--free-base] [--flags "FLAGS"] [--check TOL]
        [--check-jacobian TOL]
---free-base imports every URDF on a floating base (and gives MuJoCo the same floating joint);
+--free-base imports every URDF on a floating base (and gives MuJoCo the same floating joint: a new
+one at the root link, or the fixed joint that mounts the robot on a link named world, floating);
 --flags compiles with FLAGS instead of -O2; --check exits 1 when a robot's qacc differs from
 MuJoCo's by more than TOL (relative to the larger of 1 and MuJoCo's largest |qacc|) or a robot fails,
 --check-jacobian when jacobian_state differs from the central differences by more than TOL
@@ -56,7 +57,15 @@ def as_mujoco_reads_it(urdf, folder, free_base, bounded=False):
         links = re.findall(r'<link\s+name="([^"]+)"', urdf)
         children = set(re.findall(r'<child\s+link="([^"]+)"', urdf))
         roots = [link for link in links if link not in children]
-        if roots:
+        if roots == ["world"]:
+            # mounted on the world by one fixed joint: that joint floats, as `eomgen import --free-base` does
+            def set_free(joint):
+                block = joint.group(0)
+                if not re.search(r'<parent\s+link="world"', block):
+                    return block
+                return re.sub(r'\btype="fixed"', 'type="floating"', block, count=1)
+            urdf = re.sub(r"<joint\b.*?</joint>", set_free, urdf, flags=re.S)
+        elif roots:
             settings += ('<link name="world"/><joint name="root" type="floating"><parent link="world"/>'
                          '<child link="%s"/></joint>' % roots[0])
     return re.sub(r"(<robot\b[^>]*>)", lambda m: m.group(1) + settings, urdf, count=1)
