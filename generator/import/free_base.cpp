@@ -1,7 +1,6 @@
 #include "import/free_base.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <set>
 #include <vector>
 
@@ -34,16 +33,16 @@ std::string unused_joint_name(const std::vector<UrdfJoint>& joints) {
 }
 
 // A robot whose root link is the world (a UR arm's world -> base_link): the one fixed joint that
-// holds it to the world becomes floating, so that its child floats at that joint's origin, as it
-// would hung from the world by a new joint; a world holding two links, or holding its link by a
-// joint that moves, leaves no base that is plainly the one to set free.
-FreeBase world_joint_set_free(const std::string& urdf, const std::vector<UrdfJoint>& joints, std::size_t robot) {
-  FreeBase out{urdf, "", 0, "", "", ""};
+// holds it to the world floats instead, so that its child floats from where the joint held it; a
+// world holding two links, or holding its link by a joint that moves, leaves no base that is
+// plainly the one to set free.
+FreeBase mounted_on_the_world(const std::string& urdf, const std::vector<UrdfJoint>& joints, std::size_t robot) {
+  FreeBase out;
   std::vector<const UrdfJoint*> held;
   for (const UrdfJoint& j : joints)
     if (j.parent == "world") held.push_back(&j);
-  out.line = held.empty() ? line_of(urdf, robot) : held[0]->line;
   if (held.size() != 1 || held[0]->type != "fixed") {
+    out.line = held.empty() ? line_of(urdf, robot) : held[0]->line;
     out.problem = held.size() > 1 ? fmt::format("the robot's root link is the world itself, which holds {} links ('{}' and "
                                                 "'{}'{}): which one floats is not clear",
                                                 held.size(), held[0]->child, held[1]->child, held.size() > 2 ? ", …" : "")
@@ -53,20 +52,8 @@ FreeBase world_joint_set_free(const std::string& urdf, const std::vector<UrdfJoi
                                 : "make the joint of the link that floats type=\"floating\", and import without --free-base";
     return out;
   }
-  std::size_t start = std::string::npos;
-  for (std::size_t at = element_start(urdf, "joint"); at != std::string::npos && start == std::string::npos;
-       at = element_start(urdf, "joint", at + 1))
-    if (attribute(urdf, at, past_tag(urdf, at), "name") == held[0]->name) start = at;
-  std::optional<std::pair<std::size_t, std::size_t>> type =
-      start == std::string::npos ? std::nullopt : attribute_span(urdf, start, past_tag(urdf, start), "type");
-  if (!type) {
-    out.problem = fmt::format("joint '{}' that fixes the robot to the world could not be found in the text", held[0]->name);
-    out.hint = fmt::format("make joint '{}' type=\"floating\", and import without --free-base", held[0]->name);
-    return out;
-  }
-  out.text.replace(type->first, type->second - type->first, "type=\"floating\"");
+  out.link = held[0]->child;
   out.joint = held[0]->name;
-  out.line = 0;
   out.note = fmt::format("--free-base: joint '{}', which fixed link '{}' to the world, is floating instead", held[0]->name,
                          held[0]->child);
   return out;
@@ -74,8 +61,8 @@ FreeBase world_joint_set_free(const std::string& urdf, const std::vector<UrdfJoi
 
 }  // namespace
 
-FreeBase with_free_base(const std::string& urdf) {
-  FreeBase out{urdf, "", 0, "", "", ""};
+FreeBase free_base_of(const std::string& urdf) {
+  FreeBase out;
   std::vector<UrdfJoint> joints = urdf_joints(urdf);
   for (const UrdfJoint& j : joints)
     if (j.type == "floating") {
@@ -85,8 +72,8 @@ FreeBase with_free_base(const std::string& urdf) {
       return out;
     }
   std::vector<std::string> roots = root_links(urdf, joints);
-  std::size_t robot = element_start(urdf, "robot"), inside = robot == std::string::npos ? robot : past_tag(urdf, robot);
-  if (inside == std::string::npos || roots.size() != 1) {
+  std::size_t robot = element_start(urdf, "robot");
+  if (robot == std::string::npos || roots.size() != 1) {
     out.line = robot == std::string::npos ? 1 : line_of(urdf, robot);
     out.problem = roots.empty() ? "the robot has no root link (one link that no joint has as its child) to set free"
                                 : fmt::format("the robot has {} root links ('{}' and '{}'{}): which one floats is not clear",
@@ -94,11 +81,9 @@ FreeBase with_free_base(const std::string& urdf) {
     out.hint = "a URDF robot is one tree of links joined by joints, with one root link";
     return out;
   }
-  if (roots[0] == "world") return world_joint_set_free(urdf, joints, robot);
+  if (roots[0] == "world") return mounted_on_the_world(urdf, joints, robot);
+  out.link = roots[0];
   out.joint = unused_joint_name(joints);
-  out.text.insert(inside, fmt::format("<link name=\"world\"/><joint name=\"{}\" type=\"floating\"><parent link=\"world\"/>"
-                                      "<child link=\"{}\"/></joint>",
-                                      out.joint, roots[0]));
   return out;
 }
 

@@ -384,6 +384,23 @@ void note_right_angles(const RightAngleRounding& turns, Robot& r) {
   }
 }
 
+// The floating link's body (at the top, read on the fixed base) gets a free joint first, starting
+// where the body sits, as MuJoCo's free joints start at their body's place (qpos0)
+bool set_free(Robot& r, const FreeBase& freed) {
+  auto floating = std::find_if(r.bodies.begin(), r.bodies.end(),
+                               [&](const RobotBody& b) { return b.name == freed.link && b.parent < 0; });
+  if (floating == r.bodies.end()) return false;
+  RobotJoint joint;
+  joint.name = freed.joint;
+  joint.type = "free";
+  joint.initial_position = {floating->position[0],    floating->position[1],    floating->position[2],
+                            floating->orientation[0], floating->orientation[1], floating->orientation[2],
+                            floating->orientation[3]};
+  joint.initial_velocity.assign(6, 0.0);
+  floating->joints.insert(floating->joints.begin(), joint);
+  return true;
+}
+
 }  // namespace
 
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, RobotReading reading) {
@@ -396,12 +413,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
     return UnreadableRobot{1, "--masses-from-shapes weighs a URDF's links without <inertial>; this file is MJCF, whose "
                               "bodies without <inertial> MuJoCo weighs by their geoms already",
                            "import without --masses-from-shapes"};
-  std::string free_base_note;
+  std::optional<FreeBase> freed;
   if (reading.free_base) {
-    FreeBase freed = with_free_base(urdf);
-    if (!freed.problem.empty()) return UnreadableRobot{freed.line, freed.problem, freed.hint};
-    urdf = freed.text;
-    free_base_note = freed.note;
+    freed = free_base_of(urdf);
+    if (!freed->problem.empty()) return UnreadableRobot{freed->line, freed->problem, freed->hint};
   }
   if (!urdf.empty() && !reading.masses_from_shapes) urdf = without_masses_from_geometry(urdf);
   LeftOut left_out;
@@ -425,7 +440,6 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   std::vector<mjtNum> zero(std::size_t(m->nv), 0.0);
   const mjtNum* qvel = m->nkey ? m->key_qvel : zero.data();
   r.initial_state = m->nkey ? fmt::format("keyframe '{}'", name_of(m, m->name_keyadr, 0)) : "qpos0";
-  if (!free_base_note.empty()) r.notes.push_back(free_base_note);
   for (int b = 1; b < m->nbody; ++b) {
     RobotBody body;
     body.name = name_of(m, m->name_bodyadr, b);
@@ -440,6 +454,13 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
     body.principal_inertia = triple(m->body_inertia + 3 * b);
     r.bodies.push_back(body);
   }
+  if (freed) {
+    if (!set_free(r, *freed))
+      return UnreadableRobot{1, fmt::format("link '{}' to set free is not a body at the top of what MuJoCo read", freed->link),
+                             "import the robot without --free-base"};
+    if (!freed->note.empty()) r.notes.push_back(freed->note);
+  }
+  bool spherical = has_spherical_joints(m) || freed;
   if (left_out.mass_bounds) {
     std::vector<std::string> massless = without_mass_bounds(r.bodies);
     r.notes.push_back(fmt::format("{} moving body(ies) without mass or inertia ({}), which MuJoCo {} refuses: read with its "
@@ -477,10 +498,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   }
   read_actuators(m, r);
   read_tendon_springs(m, r);
-  if (!has_spherical_joints(m)) read_loops(m, qpos, r);
+  if (!spherical) read_loops(m, qpos, r);
   read_couplings(m, r);
   if (!urdf.empty()) read_mimics(m, urdf, r);
-  if (has_spherical_joints(m)) keep_followers(r);
+  if (spherical) keep_followers(r);
   if (int fixed = urdf_joint_count(urdf, "fixed"); fixed > 0 && urdf_joint_count(urdf, "floating") > 0)
     r.warnings.push_back({fmt::format("{} fixed joint(s): their links are fused into their parents and their names are not "
                                       "kept (MuJoCo puts a floating base's free joint at the top level only)", fixed),

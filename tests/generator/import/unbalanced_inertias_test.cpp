@@ -66,9 +66,20 @@ std::array<double, 9> turned_by_rpy(const std::array<double, 9>& I, double roll,
   return product(product(R, I), Rt);
 }
 
-// the body `name` of the URDF text read on a floating base (written to `file`), or nothing
+// the URDF with its link `root` hung from the world by a floating joint of its own, whose fixed
+// links MuJoCo then fuses (a free joint goes at the top level only); `eomgen import --free-base`
+// keeps them, so the fused bodies' inertias are those of such a file
+std::string with_floating_joint(std::string urdf, const std::string& root) {
+  std::size_t robot = urdf.find('>', urdf.find("<robot")) + 1;
+  urdf.insert(robot, "<link name=\"world\"/><joint name=\"root\" type=\"floating\"><parent link=\"world\"/><child link=\"" +
+                         root + "\"/></joint>");
+  return urdf;
+}
+
+// the body `name`, the root link, of the URDF text read on a floating base of its own (written to
+// `file`), or nothing
 std::optional<RobotBody> floating_body(const std::string& file, const std::string& urdf, const std::string& name) {
-  auto read = read_with_mujoco(write_file(file, urdf), {true});
+  auto read = read_with_mujoco(write_file(file, with_floating_joint(urdf, name)));
   if (const auto* failure = std::get_if<UnreadableRobot>(&read)) {
     ADD_FAILURE() << failure->message;
     return std::nullopt;
@@ -249,7 +260,7 @@ TEST(UnbalancedInertias, PointMassesFixedInALineToAFloatingBaseAreFusedAsStated)
   <joint name="swing" type="continuous"><parent link="base"/><child link="arm"/><axis xyz="0 1 0"/></joint>
 </robot>
 )";
-  auto read = read_with_mujoco(write_file("neck_and_head.urdf", urdf), {true});
+  auto read = read_with_mujoco(write_file("neck_and_head.urdf", with_floating_joint(urdf, "base")));
   ASSERT_TRUE(std::holds_alternative<Robot>(read)) << std::get<UnreadableRobot>(read).message;
   const RobotBody* base = nullptr;
   for (const RobotBody& b : std::get<Robot>(read).bodies)

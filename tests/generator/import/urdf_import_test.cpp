@@ -266,29 +266,33 @@ TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKept) {
       << refused.diagnostics.format();
 }
 
-// on a floating base MuJoCo fuses the foot into the shank: the shank's tensor then holds the foot's
-// moment too (the trace, which no turn changes, is the two links' sum: the foot adds no mass, so
-// the centre and the Steiner terms stay the shank's)
-TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKeptWhereItsLinkIsFused) {
-  std::string path = write_file("footed_leg.urdf", footed_leg);
+// on a floating base (--free-base) the foot stays a link of its own, with its moment of inertia and
+// no mass, as on the fixed base: the import sets the base free itself, where MuJoCo's reader would
+// fuse every fixed link into its parent; the free base adds its 7 coordinates and 6 velocities
+TEST(UrdfImport, AMasslessLinksMomentOfInertiaIsKeptOnAFloatingBase) {
+  // the hip given mass and inertia: massless, it would turn about the hip joint's axis as freely as
+  // the thigh, and M would be singular
+  std::string weighed = footed_leg;
+  weighed.replace(weighed.find("<link name=\"hip\"/>"), 18,
+                  "<link name=\"hip\"><inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" "
+                  "iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial></link>");
+  std::string path = write_file("footed_leg.urdf", weighed);
   Diagnostics diagnostics;
   auto text = imported_model_text(path, diagnostics, false, {}, {true});
   ASSERT_TRUE(text) << diagnostics.format();
-  std::size_t shank = text->find("name = \"shank\"\nframe = \"shank\"");
-  ASSERT_NE(shank, std::string::npos) << *text;
-  std::size_t inertia = text->find("inertia = [\"", shank);
-  ASSERT_NE(inertia, std::string::npos);
-  double trace = 0;
-  std::size_t at = inertia + 12;
-  for (int k = 0; k < 3; ++k, at = text->find('"', text->find('"', at) + 1) + 1) trace += std::stod(text->substr(at));
-  double shank_trace = 1.1e-4 + 1.2e-4 + 1.2e-5, foot_trace = 5.7e-5 + 8.4e-5 + 5.3e-5;
-  EXPECT_NEAR(trace, shank_trace + foot_trace, 1e-15) << text->substr(shank, 300);
+  EXPECT_NE(text->find("name = \"foot\"\nframe = \"foot\"\nmass = \"0\""), std::string::npos) << *text;
+  EXPECT_NE(text->find("unphysical_inertia = true  # a moment of inertia without mass"), std::string::npos) << *text;
+  EXPECT_EQ(text->find("fused"), std::string::npos) << *text;
+  Equations e = derive_text(*text, "footed_leg.toml");
+  EXPECT_EQ(e.num_velocities(), 8u);
+  EXPECT_EQ(e.symbols.coordinate_names.size(), 9u);
 }
 
 // a joint's <mimic> (MuJoCo's URDF reader ignores it) follows the coordinate it mimics
 // (joint_follower_import_test.cpp checks the dynamics); one that mimics a follower (a chain) follows
 // the chain's head, the multipliers and offsets composed, on a fixed base and on a floating one
-// (where the fixed links are named as fused: MuJoCo must fuse them there)
+// (where the fixed links are named as fused when the file has its own floating joint: MuJoCo must
+// fuse them there; not when --free-base sets the base free)
 const char* const gripper = R"(<?xml version="1.0"?>
 <robot name="gripper">
   <link name="palm"/>
@@ -356,6 +360,14 @@ TEST(UrdfImport, AMimicJointFollowsItsCoordinateAndAChainOfThemItsHead) {
   EXPECT_NE(text->find("# not carried: 1 fixed joint(s): their links are fused into their parents"), std::string::npos) << *text;
   Equations floating_equations = derive_text(*text, "floating_gripper.toml");
   EXPECT_EQ(floating_equations.symbols.coordinate_names.size(), 8u) << "7 of the free joint and the left finger";
+  // set free by --free-base instead: the same followers, and nothing fused
+  std::ofstream(path) << gripper;
+  text = imported_model_text(path, diagnostics, false, {}, {true});
+  ASSERT_TRUE(text) << diagnostics.format();
+  EXPECT_NE(text->find("coordinate = \"left_finger\", multiplier = -30, offset = 0.03 }"), std::string::npos) << *text;
+  EXPECT_EQ(text->find("[[constraints]]"), std::string::npos) << *text;
+  EXPECT_EQ(text->find("fused"), std::string::npos) << *text;
+  EXPECT_EQ(derive_text(*text, "freed_gripper.toml").symbols.coordinate_names.size(), 8u);
 }
 
 // mimics in a cycle have no head to follow: they stay constraints (Lagrange I)
