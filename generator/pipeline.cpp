@@ -15,6 +15,7 @@
 #include "kinematics/mechanics.hpp"
 #include "model/variants.hpp"
 #include "parse/model_file.hpp"
+#include "spatial/joint_tree_forward_dynamics.hpp"
 #include "symbolic/trig_orientation.hpp"
 
 namespace eomgen {
@@ -157,6 +158,11 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     diagnostics.error(method_where, "model.method", why.what(),
                       "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
                       "determine every velocity");
+    return std::nullopt;
+  } catch (const SingularJointDirection& why) {
+    diagnostics.error(method_where, "model.method", why.what(),
+                      "give the links this joint moves the mass and inertia they have (a URDF link its <inertial>): "
+                      "without them, a joint below that turns about the same axis leaves this turn free");
     return std::nullopt;
   } catch (const std::domain_error& why) {
     // GiNaC's pole_error and the like: the model's expressions divide by zero or leave a function's

@@ -1,5 +1,7 @@
 #include "spatial/joint_tree_forward_dynamics.hpp"
 
+#include <sstream>
+
 #include <fmt/format.h>
 
 #include "kinematics/vector3.hpp"
@@ -178,6 +180,7 @@ class ArticulatedBodies {
     for (std::size_t c = 0; c < k; ++c) {
       ex d = D(c, c);
       for (std::size_t m = 0; m < c; ++m) d -= j.L[c][m] * j.L[c][m] * pivot[m];
+      if (d.is_zero()) throw SingularJointDirection(singular_direction(i, c));
       pivot[c] = named_intermediate(out_, links_[i].name, fmt::format("fdD{}", c), d);
       j.inverse_pivots.push_back(named_intermediate(out_, links_[i].name, fmt::format("fdDi{}", c), 1 / pivot[c]));
       for (std::size_t r = c + 1; r < k; ++r) {
@@ -186,6 +189,20 @@ class ArticulatedBodies {
         j.L[r][c] = named_intermediate(out_, links_[i].name, fmt::format("fdL{}{}", r, c), x * j.inverse_pivots[c]);
       }
     }
+  }
+
+  // which direction of link i's joint moves no inertia, for the error
+  std::string singular_direction(std::size_t i, std::size_t c) const {
+    const TreeLink::Column& s = links_[i].columns[c];
+    auto text = [](const Vector3& v) {
+      std::ostringstream out;
+      out << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
+      return out.str();
+    };
+    bool turns = !(s.axis[0].is_zero() && s.axis[1].is_zero() && s.axis[2].is_zero());
+    return fmt::format("the joint of frame '{}' moves no inertia {} {} (in the frame's axes): what it carries "
+                       "meets that motion with no mass or moment of inertia, so that M is singular",
+                       links_[i].name, turns ? "turning about" : "sliding along", text(turns ? s.axis : s.origin_velocity));
   }
 
   // D⁻¹ b by the factors, named `label`0, `label`1, …

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@
 #include "spatial/joint_tree_derivatives.hpp"
 
 namespace eomgen {
+
+/// A direction of a joint's motion that moves no inertia: the articulated inertia the joint meets
+/// is zero along it, so that M is singular and q'' undetermined (a free base whose link has no mass
+/// and whose joint below turns about an axis through its origin, say). what(): which, in words.
+struct SingularJointDirection : std::domain_error {
+  using std::domain_error::domain_error;
+};
 
 /// q'' by the algorithm above, in the model's symbols and `intermediates`.
 struct JointTreeAccelerations {

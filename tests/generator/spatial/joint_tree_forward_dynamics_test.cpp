@@ -179,5 +179,55 @@ TEST(JointTreeAccelerations, TreesItDoesNotSolveAreLocatedErrors) {
   EXPECT_EQ(derive_model_text(coupled, "tree.toml", {}).diagnostics.format(), "") << "eomgen's choice keeps M";
 }
 
+// a free base without mass whose hinge below turns about an axis through its origin: its turn about
+// that axis meets no inertia (M singular), which the recursion finds as a pivot of exact zero: an
+// error naming the frame and the axis, where GiNaC's division by zero said neither (the M form
+// leaves it to the header's LDLᵀ, whose simulation reports the singular M at its first step)
+TEST(JointTreeAccelerations, AJointDirectionThatMovesNoInertiaIsNamed) {
+  std::string text = R"([model]
+name = "massless_hip"
+method = "appell"
+
+[gravity]
+acceleration = ["0", "0", "-9.81"]
+
+[coordinates]
+x = 0
+y = 0
+z = 0
+qw = 1
+qx = 0
+qy = 0
+qz = 0
+hip = 0
+
+[[frames]]
+name = "hip"
+joint = { type = "free", position = ["x", "y", "z"], quaternion = ["qw", "qx", "qy", "qz"], angular_velocity = ["wx", "wy", "wz"] }
+
+[[frames]]
+name = "thigh"
+parent = "hip"
+joint = { type = "revolute", axis = ["1", "0", "0"], coordinate = "hip" }
+
+[[rigid_bodies]]
+name = "leg"
+frame = "thigh"
+mass = "2"
+center = ["0", "0", "-0.2"]
+inertia = ["0.03", "0.03", "0.01"]
+)";
+  std::string message = refusal(text);
+  EXPECT_NE(message.find("tree.toml:3:10: error: model.method: the joint of frame 'hip' moves no inertia turning about "
+                         "(1, 0, 0)"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("hint: give the links this joint moves the mass and inertia they have"), std::string::npos)
+      << message;
+  std::string weighed = text + "\n[[rigid_bodies]]\nname = \"pelvis\"\nframe = \"hip\"\nmass = \"1\"\ninertia = [\"0.01\", "
+                               "\"0.01\", \"0.01\"]\n";
+  EXPECT_EQ(refusal(weighed), "");
+}
+
 }  // namespace
 }  // namespace eomgen::test
