@@ -1,5 +1,5 @@
 /// @file `eomgen diff OLD NEW`: the derived equations of two versions of a model (model
-/// files or derived-equations JSON) compared entry by entry; and `--self OLD_EOMGEN`,
+/// files, robot files or derived-equations JSON) compared entry by entry; and `--self OLD_EOMGEN`,
 /// what another eomgen executable derives from the same models against this one.
 /// Exit status like diff and cmp: 0 the same, 1 different, 2 a mistake in an input,
 /// 4 an internal error (1 is taken by "different").
@@ -12,8 +12,9 @@ Command add_diff_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("diff", "Compare the derived equations of two versions of a model; exit 0 the same, "
                                              "1 different, 2 a mistake, 4 an internal error");
   auto o = std::make_shared<ComparisonOptions>();
-  cmd->add_option("INPUTS", o->inputs, "OLD NEW: model files (.toml) or derived-equations JSON (eomgen derive --format "
-                                       "json, generated/*.json); with --self: model files or folders")->required();
+  cmd->add_option("INPUTS", o->inputs, "OLD NEW: model files (.toml), robot files (MJCF .xml, URDF .urdf: imported as "
+                                       "eomgen import reads them) or derived-equations JSON (eomgen derive --format json, "
+                                       "generated/*.json); with --self: model files or folders")->required();
   cmd->add_option("--rename", o->renames, "A symbol renamed from OLD to NEW, one per flag: --rename k=stiffness");
   cmd->add_option("--tolerance", o->options.tolerance, "Numeric level: |old - new| <= T max(1, |old|, |new|) at every "
                   "random point, in 50-digit arithmetic (default 1e-30)");

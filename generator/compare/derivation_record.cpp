@@ -1,5 +1,6 @@
 #include "compare/derivation_record.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -127,7 +128,12 @@ class RecordBuilder {
   Diagnostics& d_;
 };
 
-bool is_model_file(const std::string& path) { return path.size() > 5 && path.substr(path.size() - 5) == ".toml"; }
+// a model file, or a robot file (MJCF, URDF) that the model parser imports in memory as every
+// command does; anything else is taken for derived-equations JSON
+bool is_model_file(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  return extension == ".toml" || extension == ".xml" || extension == ".urdf" || extension == ".xacro";
+}
 
 }  // namespace
 
@@ -151,7 +157,7 @@ std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnos
     std::ifstream in(path, std::ios::binary);
     if (!in) {
       diagnostics.error({path, 0, 0}, "", "the file cannot be read (missing, or not readable)",
-                        "give a model file (.toml) or a derived-equations JSON");
+                        "give a model file (.toml), a robot file (MJCF .xml, URDF .urdf) or a derived-equations JSON");
       return std::nullopt;
     }
     std::ostringstream text;

@@ -162,6 +162,24 @@ TEST(EquationDiff, EveryCommittedBaselineIsIdenticalToItsModel) {
   }
 }
 
+// robot files are compared as `eomgen import` reads them, as every command takes them: the same
+// URDF in another file is identical, and the fore link 0.1 kg heavier changes M, f and V
+TEST(EquationDiff, RobotFilesAreComparedAsTheImportReadsThem) {
+  std::string original = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
+  std::string arm = test::read_file(original), dir = test::temporary_directory();
+  std::ofstream(dir + "/same_arm.urdf") << arm;
+  std::string heavier = arm;
+  heavier.replace(heavier.find("<mass value=\"0.8\"/>"), 19, "<mass value=\"0.9\"/>");
+  std::ofstream(dir + "/heavier_arm.urdf") << heavier;
+  EXPECT_EQ(compare(original, dir + "/same_arm.urdf").verdict, "identical");
+  EquationDiff changed = compare(original, dir + "/heavier_arm.urdf");
+  EXPECT_EQ(changed.verdict, "different");
+  ASSERT_NE(entry(changed, "V"), nullptr);
+  EXPECT_EQ(entry(changed, "V")->status, "different");
+  ASSERT_NE(entry(changed, "M[0][0]"), nullptr);
+  EXPECT_EQ(entry(changed, "M[0][0]")->status, "different");
+}
+
 TEST(EquationDiff, InputsThatAreNotDerivationsAreLocatedMistakes) {
   std::string dir = test::temporary_directory();
   std::ofstream(dir + "/other.json") << "{\n  \"name\": \"not a derivation\"\n}\n";
