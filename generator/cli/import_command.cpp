@@ -1,5 +1,5 @@
 // eomgen import FILE.xml|FILE.urdf [-o MODEL.toml] [--name NAME] [--free-base] [--masses-from-shapes]
-// [--right-angles-within RAD]: a robot description as a model file.
+// [--right-angles-within RAD] [--joint-torques]: a robot description as a model file.
 #include <iostream>
 
 #include <fmt/format.h>
@@ -56,9 +56,13 @@ Command add_import_command(CLI::App& app) {
                   "the robot moves by up to RAD; the import notes the turns near a right angle (default 0: as read)")
       ->type_name("RAD")
       ->check(CLI::Range(0.0, 0.1));
-  return [cmd, file, output, name, free_base, masses_from_shapes, right_angles_within]() -> int {
+  auto joint_torques = std::make_shared<bool>(false);
+  cmd->add_flag("--joint-torques", *joint_torques,
+                "Drive every hinge and slide by an input of its own, tau_JOINT: a torque or force on its coordinate, as "
+                "Pinocchio's tau (a URDF robot has no actuators MuJoCo reads), besides the file's actuators");
+  return [cmd, file, output, name, free_base, masses_from_shapes, right_angles_within, joint_torques]() -> int {
     if (!cmd->parsed()) return -1;
-    return import_robot(*file, *output, *name, {*free_base, *masses_from_shapes, *right_angles_within});
+    return import_robot(*file, *output, *name, {*free_base, *masses_from_shapes, *right_angles_within, *joint_torques});
   };
 }
 

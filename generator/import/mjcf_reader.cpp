@@ -401,6 +401,24 @@ bool set_free(Robot& r, const FreeBase& freed) {
   return true;
 }
 
+// A motor of gain 1 on every hinge and slide, named tau_JOINT, after the file's own actuators; a
+// URDF joint that mimics another has no coordinate of its own to drive and gets none
+void add_joint_torques(const std::string& urdf, Robot& r) {
+  std::vector<std::string> followers;
+  for (const UrdfMimic& mimic : urdf.empty() ? std::vector<UrdfMimic>{} : urdf_mimics(urdf)) followers.push_back(mimic.joint);
+  for (std::size_t b = 0; b < r.bodies.size(); ++b)
+    for (std::size_t k = 0; k < r.bodies[b].joints.size(); ++k) {
+      const RobotJoint& j = r.bodies[b].joints[k];
+      if ((j.type != "hinge" && j.type != "slide") ||
+          std::find(followers.begin(), followers.end(), j.name) != followers.end())
+        continue;
+      RobotActuator a;
+      a.name = "tau_" + (j.name.empty() ? fmt::format("{}_{}", r.bodies[b].name, k + 1) : j.name);
+      a.body = int(b), a.joint = int(k);
+      r.actuators.push_back(a);
+    }
+}
+
 }  // namespace
 
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, RobotReading reading) {
@@ -502,6 +520,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   read_couplings(m, r);
   if (!urdf.empty()) read_mimics(m, urdf, r);
   if (spherical) keep_followers(r);
+  if (reading.joint_torques) add_joint_torques(urdf, r);
   if (int fixed = urdf_joint_count(urdf, "fixed"); fixed > 0 && urdf_joint_count(urdf, "floating") > 0)
     r.warnings.push_back({fmt::format("{} fixed joint(s): their links are fused into their parents and their names are not "
                                       "kept (MuJoCo puts a floating base's free joint at the top level only)", fixed),

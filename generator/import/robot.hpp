@@ -143,12 +143,15 @@ struct Robot {
 /// (free_base.hpp), its links without an <inertial> weighed by their shapes as MuJoCo weighs them,
 /// where URDF has them massless (urdf_text.hpp's without_masses_from_geometry); and, for either
 /// format, turns within `right_angles_within` radians of a right angle written as exact right
-/// angles (right_angles.hpp's rounded_right_angles; 0: only those a unit of rounding off).
+/// angles (right_angles.hpp's rounded_right_angles; 0: only those a unit of rounding off); and
+/// `joint_torques`: every hinge and slide driven by an input of its own, a torque or force on its
+/// coordinate (Pinocchio's τ; a URDF robot has no actuators MuJoCo reads), besides the file's.
 /// read_with_mujoco() takes it.
 struct RobotReading {
   bool free_base = false;
   bool masses_from_shapes = false;
   double right_angles_within = 0;
+  bool joint_torques = false;
 };
 
 }  // namespace eomgen

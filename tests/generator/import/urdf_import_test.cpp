@@ -13,6 +13,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
@@ -368,6 +369,39 @@ TEST(UrdfImport, AMimicJointFollowsItsCoordinateAndAChainOfThemItsHead) {
   EXPECT_EQ(text->find("[[constraints]]"), std::string::npos) << *text;
   EXPECT_EQ(text->find("fused"), std::string::npos) << *text;
   EXPECT_EQ(derive_text(*text, "freed_gripper.toml").symbols.coordinate_names.size(), 8u);
+}
+
+// --joint-torques: an input tau_JOINT per hinge, the generalized force on its own coordinate alone
+// (∂f/∂u the identity), none for the gripper's fingers that mimic another, and the file's own
+// dynamics otherwise (f at u = 0 unchanged)
+TEST(UrdfImport, JointTorquesDriveEachHingeByItsOwnInput) {
+  std::string arm = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
+  Diagnostics diagnostics;
+  RobotReading torques;
+  torques.joint_torques = true;
+  auto driven = imported_model_text(arm, diagnostics, false, "driven", torques);
+  auto plain = imported_model_text(arm, diagnostics, false, "driven");
+  ASSERT_TRUE(driven && plain) << diagnostics.format();
+  Equations e = derive_text(*driven, "driven.toml"), e0 = derive_text(*plain, "plain.toml");
+  ASSERT_EQ(e.symbols.inputs.size(), 2u);
+  EXPECT_EQ(e.symbols.inputs[0].get_name(), "tau_shoulder");
+  EXPECT_EQ(e.symbols.inputs[1].get_name(), "tau_elbow");
+  GiNaC::exmap at_rest;
+  for (const GiNaC::realsymbol& u : e.symbols.inputs) at_rest[u] = 0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t j = 0; j < 2; ++j)
+      EXPECT_EQ(GiNaC::ex(e.forcing[i].diff(e.symbols.inputs[j]) - (i == j ? 1 : 0)).expand(), 0) << i << ", " << j;
+    std::ostringstream with_inputs_at_zero, without;
+    with_inputs_at_zero << e.forcing[i].subs(at_rest);
+    without << e0.forcing[i];
+    EXPECT_EQ(with_inputs_at_zero.str(), without.str()) << i << " (the two derivations' intermediates are other symbols)";
+  }
+  std::string path = temporary_directory() + "/gripper.urdf";
+  std::ofstream(path) << gripper;
+  auto gripped = imported_model_text(path, diagnostics, false, {}, torques);
+  ASSERT_TRUE(gripped) << diagnostics.format();
+  EXPECT_NE(gripped->find("tau_left_finger = 0"), std::string::npos) << *gripped;
+  EXPECT_EQ(gripped->find("tau_right_finger"), std::string::npos) << "a mimic has no input:\n" << *gripped;
 }
 
 // mimics in a cycle have no head to follow: they stay constraints (Lagrange I)
