@@ -70,6 +70,7 @@ struct RobotActuator {
   /// the generalized force coefficient × F on each of the tendon's joints, and its position above
   /// is the tendon's length
   std::vector<TendonJoint> tendon{};
+  std::string remark{};  // written beside the input when it has no range (a URDF joint's effort limit)
 };
 
 struct RobotSite {

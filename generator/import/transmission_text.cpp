@@ -72,7 +72,8 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
     out.inputs += u + " = 0" +
                   (a.limited ? fmt::format("  # control range [{}, {}]: clamped, as MuJoCo clamps it", format_number(a.range[0]),
                                            format_number(a.range[1]))
-                             : "") +
+                  : !a.remark.empty() ? "  # " + a.remark
+                                      : "") +
                   "\n";
     // the joints it moves: its own, or its fixed tendon's, each with its coefficient
     std::vector<TendonJoint> moved = a.tendon.empty() ? std::vector<TendonJoint>{{a.body, a.joint, 1}} : a.tendon;

@@ -112,12 +112,19 @@ std::vector<UrdfJoint> urdf_joints(const std::string& urdf) {
     std::size_t end = urdf.find('>', at);
     UrdfJoint j{attribute(urdf, at, end, "name").value_or(""), attribute(urdf, at, end, "type").value_or(""),
                 attribute(urdf, parent, urdf.find('>', parent), "link").value_or(""),
-                attribute(urdf, child, urdf.find('>', child), "link").value_or(""), line_of(urdf, at), {0, 0, 0}, {0, 0, 0}};
+                attribute(urdf, child, urdf.find('>', child), "link").value_or(""), line_of(urdf, at), {0, 0, 0}, {0, 0, 0},
+                std::nullopt};
     if (std::size_t origin = element_start(urdf, "origin", at); origin < close) {
       std::size_t origin_end = past_tag(urdf, origin);
       j.xyz = triple_attribute(urdf, origin, origin_end, "xyz");
       j.rpy = triple_attribute(urdf, origin, origin_end, "rpy");
     }
+    if (std::size_t limit = element_start(urdf, "limit", at); limit < close)
+      if (auto effort = attribute(urdf, limit, past_tag(urdf, limit), "effort")) {
+        char* rest = nullptr;
+        double value = std::strtod(effort->c_str(), &rest);
+        if (rest != effort->c_str()) j.effort = value;
+      }
     joints.push_back(j);
   }
   return joints;

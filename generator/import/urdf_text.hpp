@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,7 @@ struct UrdfJoint {
   std::string name, type, parent, child;
   int line = 0;
   std::array<double, 3> xyz{0, 0, 0}, rpy{0, 0, 0};  // its <origin>: the child's frame in the parent's
+  std::optional<double> effort;                      // its <limit effort>: the largest torque or force
 };
 std::vector<UrdfJoint> urdf_joints(const std::string& urdf);
 

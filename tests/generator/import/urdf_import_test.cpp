@@ -372,8 +372,8 @@ TEST(UrdfImport, AMimicJointFollowsItsCoordinateAndAChainOfThemItsHead) {
 }
 
 // --joint-torques: an input tau_JOINT per hinge, the generalized force on its own coordinate alone
-// (∂f/∂u the identity), none for the gripper's fingers that mimic another, and the file's own
-// dynamics otherwise (f at u = 0 unchanged)
+// (∂f/∂u the identity), its effort limit beside it, none for the gripper's fingers that mimic
+// another, and the file's own dynamics otherwise (f at u = 0 unchanged)
 TEST(UrdfImport, JointTorquesDriveEachHingeByItsOwnInput) {
   std::string arm = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
   Diagnostics diagnostics;
@@ -384,6 +384,8 @@ TEST(UrdfImport, JointTorquesDriveEachHingeByItsOwnInput) {
   ASSERT_TRUE(driven && plain) << diagnostics.format();
   Equations e = derive_text(*driven, "driven.toml"), e0 = derive_text(*plain, "plain.toml");
   ASSERT_EQ(e.symbols.inputs.size(), 2u);
+  EXPECT_NE(driven->find("tau_shoulder = 0  # effort limit 50 in the file: not enforced\ntau_elbow = 0\n"), std::string::npos)
+      << "the revolute shoulder's <limit effort>, the continuous elbow without one:\n" << *driven;
   EXPECT_EQ(e.symbols.inputs[0].get_name(), "tau_shoulder");
   EXPECT_EQ(e.symbols.inputs[1].get_name(), "tau_elbow");
   GiNaC::exmap at_rest;
