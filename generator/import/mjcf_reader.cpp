@@ -443,6 +443,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   if (reading.free_base) {
     freed = free_base_of(urdf);
     if (!freed->problem.empty()) return UnreadableRobot{freed->line, freed->problem, freed->hint};
+    urdf = with_own_fusestatic_off(urdf);
   }
   if (!urdf.empty() && !reading.masses_from_shapes) urdf = without_masses_from_geometry(urdf);
   LeftOut left_out;

@@ -210,6 +210,16 @@ std::string with_static_links_kept(const std::string& urdf) {
   return with_compiler_attributes(urdf, " fusestatic=\"false\"", {"fusestatic"});
 }
 
+std::string with_own_fusestatic_off(const std::string& urdf) {
+  std::string text = urdf;
+  for (std::size_t at = element_start(text, "compiler"); at != std::string::npos; at = element_start(text, "compiler", at + 1)) {
+    std::size_t end = past_tag(text, at);
+    if (attribute(text, at, end, "fusestatic") != "true") continue;
+    if (auto span = attribute_span(text, at, end, "fusestatic")) text.replace(span->first, span->second - span->first, "fusestatic=\"false\"");
+  }
+  return text;
+}
+
 std::string without_masses_from_geometry(const std::string& urdf) {
   if (element_start(urdf, "robot") == std::string::npos) return urdf;
   return with_compiler_attributes(urdf, " inertiafromgeom=\"false\"", {"inertiafromgeom"});

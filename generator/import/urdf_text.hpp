@@ -19,6 +19,12 @@ namespace eomgen {
 /// Nothing is inserted on a new line, so MuJoCo's line numbers stay those of the file.
 std::string with_static_links_kept(const std::string& urdf);
 
+/// The URDF text with a `fusestatic="true"` of its own <mujoco><compiler> turned to "false", on the
+/// same line: a robot set free at import (free_base.hpp) is read on its fixed base, where MuJoCo
+/// would fuse its root link into the world, and the free joint then has no body to move; eomgen
+/// folds fixed links itself, so the dynamics are the same.
+std::string with_own_fusestatic_off(const std::string& urdf);
+
 /// The URDF text with MuJoCo's compiler told to take no mass from geometry (inertiafromgeom
 /// "false", added as with_static_links_kept() adds its attribute), unless the file sets it itself.
 /// URDF gives a link without <inertial> no mass (urdfdom, KDL, Pinocchio, Drake); MuJoCo's default

@@ -144,5 +144,26 @@ TEST(FreeBase, AnArmMountedOnTheWorldFloatsAsIfHungFromIt) {
     for (std::size_t c = 0; c < 8; ++c) EXPECT_NEAR(M[r][c], M_hung[r][c], 1e-14) << r << ", " << c;
 }
 
+// a file that asks MuJoCo to fuse static bodies (its own <compiler fusestatic="true">) is read with
+// them kept when set free: fused, its root link would join the world and leave the free joint no
+// body; eomgen folds fixed links itself, so M is the file's as read without the setting
+TEST(FreeBase, AFileThatFusesStaticBodiesIsSetFreeAllTheSame) {
+  std::string urdf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
+  std::string fusing = read_file(urdf);
+  fusing.replace(fusing.find("<robot name=\"two_link_arm\">"), 26,
+                 "<robot name=\"two_link_arm\"><mujoco><compiler fusestatic=\"true\"/></mujoco>");
+  std::string path = temporary_directory() + "/fusing_arm.urdf";
+  std::ofstream(path) << fusing;
+  Diagnostics diagnostics, plain_diagnostics;
+  std::optional<std::string> floating = imported_model_text(path, diagnostics, false, "arm", {true});
+  std::optional<std::string> plain = imported_model_text(urdf, plain_diagnostics, false, "arm", {true});
+  ASSERT_TRUE(floating && plain) << diagnostics.format() << plain_diagnostics.format();
+  std::vector<std::vector<double>> M = mass_matrix_at_rest(*floating), M_plain = mass_matrix_at_rest(*plain);
+  ASSERT_EQ(M.size(), 8u);
+  ASSERT_EQ(M_plain.size(), 8u);
+  for (std::size_t r = 0; r < 8; ++r)
+    for (std::size_t c = 0; c < 8; ++c) EXPECT_NEAR(M[r][c], M_plain[r][c], 1e-14) << r << ", " << c;
+}
+
 }  // namespace
 }  // namespace eomgen::test
