@@ -87,4 +87,19 @@ FreeBase free_base_of(const std::string& urdf) {
   return out;
 }
 
+bool set_free(Robot& r, const FreeBase& freed) {
+  auto floating = std::find_if(r.bodies.begin(), r.bodies.end(),
+                               [&](const RobotBody& b) { return b.name == freed.link && b.parent < 0; });
+  if (floating == r.bodies.end()) return false;
+  RobotJoint joint;
+  joint.name = freed.joint;
+  joint.type = "free";
+  joint.initial_position = {floating->position[0],    floating->position[1],    floating->position[2],
+                            floating->orientation[0], floating->orientation[1], floating->orientation[2],
+                            floating->orientation[3]};
+  joint.initial_velocity.assign(6, 0.0);
+  floating->joints.insert(floating->joints.begin(), joint);
+  return true;
+}
+
 }  // namespace eomgen

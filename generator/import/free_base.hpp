@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "import/robot.hpp"
+
 namespace eomgen {
 
 /// The link of a URDF robot that floats, and the name of its free joint: the root link (the one
@@ -27,5 +29,10 @@ struct FreeBase {
   std::string note;   // how the base was set free, when not by a new joint
 };
 FreeBase free_base_of(const std::string& urdf);
+
+/// The floating link's body, at the top of the robot as read on its fixed base, given the free joint
+/// first, starting where the body sits (as MuJoCo's free joints start at their body's place, qpos0);
+/// false when no body at the top has the link's name.
+bool set_free(Robot& r, const FreeBase& freed);
 
 }  // namespace eomgen

@@ -22,6 +22,7 @@
 
 #include "common/independent_rows.hpp"
 #include "import/free_base.hpp"
+#include "import/joint_torques.hpp"
 #include "import/newer_mjcf.hpp"
 #include "import/right_angles.hpp"
 #include "import/urdf_text.hpp"
@@ -382,49 +383,6 @@ void note_right_angles(const RightAngleRounding& turns, Robot& r) {
                                   "right angles",
                                   turns.near, turns.largest_near, suggested));
   }
-}
-
-// The floating link's body (at the top, read on the fixed base) gets a free joint first, starting
-// where the body sits, as MuJoCo's free joints start at their body's place (qpos0)
-bool set_free(Robot& r, const FreeBase& freed) {
-  auto floating = std::find_if(r.bodies.begin(), r.bodies.end(),
-                               [&](const RobotBody& b) { return b.name == freed.link && b.parent < 0; });
-  if (floating == r.bodies.end()) return false;
-  RobotJoint joint;
-  joint.name = freed.joint;
-  joint.type = "free";
-  joint.initial_position = {floating->position[0],    floating->position[1],    floating->position[2],
-                            floating->orientation[0], floating->orientation[1], floating->orientation[2],
-                            floating->orientation[3]};
-  joint.initial_velocity.assign(6, 0.0);
-  floating->joints.insert(floating->joints.begin(), joint);
-  return true;
-}
-
-// A motor of gain 1 on every hinge and slide, named tau_JOINT, after the file's own actuators; a
-// URDF joint that mimics another has no coordinate of its own to drive and gets none, and a URDF
-// joint's effort limit is said beside its input, as its range is beside its coordinate
-void add_joint_torques(const std::string& urdf, Robot& r) {
-  std::vector<std::string> followers;
-  for (const UrdfMimic& mimic : urdf.empty() ? std::vector<UrdfMimic>{} : urdf_mimics(urdf)) followers.push_back(mimic.joint);
-  std::vector<UrdfJoint> stated = urdf.empty() ? std::vector<UrdfJoint>{} : urdf_joints(urdf);
-  auto effort = [&](const std::string& name) {
-    auto found = std::find_if(stated.begin(), stated.end(), [&](const UrdfJoint& j) { return j.name == name; });
-    return found == stated.end() ? std::nullopt : found->effort;
-  };
-  for (std::size_t b = 0; b < r.bodies.size(); ++b)
-    for (std::size_t k = 0; k < r.bodies[b].joints.size(); ++k) {
-      const RobotJoint& j = r.bodies[b].joints[k];
-      if ((j.type != "hinge" && j.type != "slide") ||
-          std::find(followers.begin(), followers.end(), j.name) != followers.end())
-        continue;
-      RobotActuator a;
-      a.name = "tau_" + (j.name.empty() ? fmt::format("{}_{}", r.bodies[b].name, k + 1) : j.name);
-      a.body = int(b), a.joint = int(k);
-      if (std::optional<double> limit = effort(j.name))
-        a.remark = fmt::format("effort limit {} in the file: not enforced", *limit);
-      r.actuators.push_back(a);
-    }
 }
 
 }  // namespace
