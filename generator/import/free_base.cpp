@@ -23,6 +23,13 @@ std::vector<std::string> root_links(const std::string& urdf, const std::vector<U
   return roots;
 }
 
+// the line of the <link> named `name`, 1 when there is none
+int link_line(const std::string& urdf, const std::string& name) {
+  for (std::size_t at = element_start(urdf, "link"); at != std::string::npos; at = element_start(urdf, "link", at + 1))
+    if (attribute(urdf, at, urdf.find('>', at), "name") == name) return line_of(urdf, at);
+  return 1;
+}
+
 std::string unused_joint_name(const std::vector<UrdfJoint>& joints) {
   auto taken = [&](const std::string& name) {
     return std::any_of(joints.begin(), joints.end(), [&](const UrdfJoint& j) { return j.name == name; });
@@ -81,8 +88,13 @@ FreeBase free_base_of(const std::string& urdf) {
     out.hint = "a URDF robot is one tree of links joined by joints, with one root link";
     return out;
   }
-  if (roots[0] == "world") return mounted_on_the_world(urdf, joints, robot);
+  if (roots[0] == "world") {
+    FreeBase mounted = mounted_on_the_world(urdf, joints, robot);
+    mounted.link_line = link_line(urdf, mounted.link);
+    return mounted;
+  }
   out.link = roots[0];
+  out.link_line = link_line(urdf, roots[0]);
   out.joint = unused_joint_name(joints);
   return out;
 }
@@ -100,6 +112,26 @@ bool set_free(Robot& r, const FreeBase& freed) {
   joint.initial_velocity.assign(6, 0.0);
   floating->joints.insert(floating->joints.begin(), joint);
   return true;
+}
+
+std::optional<std::string> massless_free_base(const Robot& r, const FreeBase& freed) {
+  std::vector<bool> rigid(r.bodies.size(), false);  // the floating link and the links fixed to it
+  double mass = 0, moments = 0;
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    const RobotBody& body = r.bodies[b];
+    bool top = body.name == freed.link && body.parent < 0;
+    rigid[b] = top || (body.parent >= 0 && rigid[std::size_t(body.parent)] && body.joints.empty());
+    if (rigid[b]) mass += body.mass, moments += body.principal_inertia[0] + body.principal_inertia[1] + body.principal_inertia[2];
+  }
+  if (mass > 0 || moments > 0) return std::nullopt;
+  std::vector<const RobotBody*> carried;
+  for (const RobotBody& body : r.bodies)
+    if (body.parent >= 0 && rigid[std::size_t(body.parent)] && !body.joints.empty()) carried.push_back(&body);
+  if (carried.size() != 1) return std::nullopt;
+  const RobotJoint& joint = carried[0]->joints[0];
+  return fmt::format("link '{}' set free has no mass and no moment of inertia and carries one link, '{}': the free joint's "
+                     "motion along joint '{}' moves nothing, so that M is singular",
+                     freed.link, carried[0]->name, joint.name);
 }
 
 }  // namespace eomgen

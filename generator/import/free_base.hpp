@@ -4,6 +4,7 @@
 /// has MuJoCo's layout (position, unit quaternion, angular velocity).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "import/robot.hpp"
@@ -23,6 +24,7 @@ namespace eomgen {
 /// mount would lose their names. The import gives the floating link's body the free joint after.
 struct FreeBase {
   std::string link;   // the link that floats
+  int link_line = 0;  // where the file writes it
   std::string joint;  // its free joint's name
   int line = 0;       // where the problem is, when there is one
   std::string problem, hint;
@@ -34,5 +36,11 @@ FreeBase free_base_of(const std::string& urdf);
 /// first, starting where the body sits (as MuJoCo's free joints start at their body's place, qpos0);
 /// false when no body at the top has the link's name.
 bool set_free(Robot& r, const FreeBase& freed);
+
+/// Why the robot set free has a singular M, or nothing: its floating link, with the links fixed to
+/// it, has neither mass nor moment of inertia and carries one link by a joint, which then turns or
+/// slides that link as the free joint does, so that the free joint's motion along it moves nothing
+/// (a massless pelvis link above a single hip). With more links below, their joints' axes differ.
+std::optional<std::string> massless_free_base(const Robot& r, const FreeBase& freed);
 
 }  // namespace eomgen

@@ -452,6 +452,11 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
                                   "compiler's mass bounds, then taken back to zero",
                                   massless.size(), listed(massless), mj_version_text()));
   }
+  // after the bounds: a massless link read with them has its mass back at zero
+  if (freed)
+    if (std::optional<std::string> singular = massless_free_base(r, *freed))
+      return UnreadableRobot{freed->link_line, *singular,
+                             fmt::format("give link '{}' its <inertial>, or set free the link below it", freed->link)};
   if (!urdf.empty()) note_stated_inertias(urdf, r);
   if (std::vector<std::string> shaped = colliding_links_without_inertial(urdf); !shaped.empty())
     r.notes.push_back(reading.masses_from_shapes

@@ -75,6 +75,34 @@ TEST(FreeBase, ARobotFixedToTheWorldFloatsByThatJoint) {
   EXPECT_NE(ambiguous.problem.find("which holds 2 links ('base' and 'table')"), std::string::npos) << ambiguous.problem;
 }
 
+// a floating link without mass or inertia that carries one link: the free joint's turn about the
+// joint's axis moves nothing (M singular), refused at the link's line; a second link below it, or
+// the link given mass, and it is not
+TEST(FreeBase, AMasslessFloatingLinkAboveOneJointIsRefused) {
+  std::string upper_weighed = two_links;
+  upper_weighed.replace(upper_weighed.find("<link name=\"upper\"/>"), 20,
+                        "<link name=\"upper\"><inertial><origin xyz=\"0 0 -0.2\"/><mass value=\"1\"/><inertia ixx=\"0.01\" "
+                        "ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.002\"/></inertial></link>");
+  std::string path = temporary_directory() + "/massless_base.urdf";
+  std::ofstream(path) << upper_weighed;
+  Diagnostics diagnostics;
+  EXPECT_FALSE(imported_model_text(path, diagnostics, false, "", {true}));
+  EXPECT_NE(diagnostics.format().find("massless_base.urdf:3:1: error: link 'base' set free has no mass and no moment of "
+                                      "inertia and carries one link, 'upper': the free joint's motion along joint "
+                                      "'shoulder' moves nothing, so that M is singular"),
+            std::string::npos)
+      << diagnostics.format();
+  EXPECT_NE(diagnostics.format().find("hint: give link 'base' its <inertial>"), std::string::npos) << diagnostics.format();
+  std::string two_arms = upper_weighed;
+  two_arms.insert(two_arms.find("</robot>"),
+                  "  <link name=\"other\"><inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" "
+                  "iyy=\"0.01\" iyz=\"0\" izz=\"0.002\"/></inertial></link>\n  <joint name=\"elbow\" type=\"revolute\">"
+                  "<parent link=\"base\"/><child link=\"other\"/><axis xyz=\"0 1 0\"/></joint>\n");
+  std::ofstream(path) << two_arms;
+  Diagnostics two_diagnostics;
+  EXPECT_TRUE(imported_model_text(path, two_diagnostics, false, "", {true})) << two_diagnostics.format();
+}
+
 TEST(FreeBase, AnMjcfRobotIsToldWhereItsFreeJointGoes) {
   Diagnostics diagnostics;
   std::string mjcf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml";

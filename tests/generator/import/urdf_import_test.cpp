@@ -170,6 +170,12 @@ TEST(UrdfImport, ALinkWithoutInertialIsMasslessAsUrdfHasIt) {
   expect_mujoco_dynamics(e, m.get(), {"shoulder", "elbow"}, 4, 1e-13, 1e-12);
 
   // on a floating base the forearm's body is the forearm alone: its mass and its moments as stated
+  // (the base given mass: without, it would float above the shoulder alone, M singular, refused)
+  std::string weighed = urdf;
+  weighed.replace(weighed.find("<link name=\"base\"/>"), 19,
+                  "<link name=\"base\"><inertial><mass value=\"2\"/><inertia ixx=\"0.02\" ixy=\"0\" ixz=\"0\" iyy=\"0.02\" "
+                  "iyz=\"0\" izz=\"0.02\"/></inertial></link>");
+  path = write_file("weighed_camera_arm.urdf", weighed);
   Diagnostics floating_diagnostics;
   auto floating = imported_model_text(path, floating_diagnostics, false, {}, {true});
   ASSERT_TRUE(floating) << floating_diagnostics.format();
