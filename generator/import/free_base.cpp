@@ -115,7 +115,8 @@ bool set_free(Robot& r, const FreeBase& freed) {
 }
 
 std::optional<std::string> massless_free_base(const Robot& r, const FreeBase& freed) {
-  std::vector<bool> rigid(r.bodies.size(), false);  // the floating link and the links fixed to it
+  // the floating link and the links fixed to it, found in one pass: MuJoCo's bodies come parents first
+  std::vector<bool> rigid(r.bodies.size(), false);
   double mass = 0, moments = 0;
   for (std::size_t b = 0; b < r.bodies.size(); ++b) {
     const RobotBody& body = r.bodies[b];

@@ -123,6 +123,15 @@ std::vector<std::vector<double>> mass_matrix_at_rest(const std::string& model_te
   return M;
 }
 
+// the two floating arms' M at rest (8×8: the free joint's 6 velocities and the two hinges'), entry by entry
+void expect_same_mass_matrix_at_rest(const std::string& model_text, const std::string& expected_text) {
+  std::vector<std::vector<double>> M = mass_matrix_at_rest(model_text), expected = mass_matrix_at_rest(expected_text);
+  ASSERT_EQ(M.size(), 8u);
+  ASSERT_EQ(expected.size(), 8u);
+  for (std::size_t r = 0; r < 8; ++r)
+    for (std::size_t c = 0; c < 8; ++c) EXPECT_NEAR(M[r][c], expected[r][c], 1e-14) << r << ", " << c;
+}
+
 TEST(FreeBase, TheFloatingArmCarriesItsWholeMassAndItsJointsInertia) {
   std::string urdf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
   Diagnostics free_diagnostics, fixed_diagnostics;
@@ -165,11 +174,7 @@ TEST(FreeBase, AnArmMountedOnTheWorldFloatsAsIfHungFromIt) {
   EXPECT_NE(floating->find("name = \"tool\""), std::string::npos) << "the fixed link keeps its name:\n" << *floating;
   EXPECT_EQ(floating->find("fused"), std::string::npos) << *floating;
   EXPECT_NE(hung->find("root_z = 0"), std::string::npos) << *hung;
-  std::vector<std::vector<double>> M = mass_matrix_at_rest(*floating), M_hung = mass_matrix_at_rest(*hung);
-  ASSERT_EQ(M.size(), 8u);
-  ASSERT_EQ(M_hung.size(), 8u);
-  for (std::size_t r = 0; r < 8; ++r)
-    for (std::size_t c = 0; c < 8; ++c) EXPECT_NEAR(M[r][c], M_hung[r][c], 1e-14) << r << ", " << c;
+  expect_same_mass_matrix_at_rest(*floating, *hung);
 }
 
 // a file that asks MuJoCo to fuse static bodies (its own <compiler fusestatic="true">) is read with
@@ -186,11 +191,7 @@ TEST(FreeBase, AFileThatFusesStaticBodiesIsSetFreeAllTheSame) {
   std::optional<std::string> floating = imported_model_text(path, diagnostics, false, "arm", {true});
   std::optional<std::string> plain = imported_model_text(urdf, plain_diagnostics, false, "arm", {true});
   ASSERT_TRUE(floating && plain) << diagnostics.format() << plain_diagnostics.format();
-  std::vector<std::vector<double>> M = mass_matrix_at_rest(*floating), M_plain = mass_matrix_at_rest(*plain);
-  ASSERT_EQ(M.size(), 8u);
-  ASSERT_EQ(M_plain.size(), 8u);
-  for (std::size_t r = 0; r < 8; ++r)
-    for (std::size_t c = 0; c < 8; ++c) EXPECT_NEAR(M[r][c], M_plain[r][c], 1e-14) << r << ", " << c;
+  expect_same_mass_matrix_at_rest(*floating, *plain);
 }
 
 }  // namespace
