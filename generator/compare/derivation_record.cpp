@@ -35,6 +35,7 @@ class RecordBuilder {
     r.velocities = names(*root_.find("velocities"), "velocities");
     r.parameters = numbers(*root_.find("parameters"), "parameters");
     if (const JsonValue* inputs = root_.find("inputs")) r.inputs = numbers(*inputs, "inputs");
+    if (const JsonValue* intermediates = root_.find("intermediates")) read_intermediates(*intermediates, r);
     matrix(*root_.find("mass_matrix"), "M", r);
     list(*root_.find("forcing"), "f", r);
     single("kinetic_energy", "T", r);
@@ -108,6 +109,15 @@ class RecordBuilder {
         r.entries.push_back({fmt::format("{}[{}][{}]", name, i, j), text(row.items[j], "mass_matrix")});
     }
   }
+  void read_intermediates(const JsonValue& v, DerivationRecord& r) {
+    if (v.kind != JsonValue::array) return (void)wrong(v, "not a derivation: \"intermediates\" must be an array");
+    for (const JsonValue& i : v.items) {
+      const JsonValue* name = i.find("name");
+      const JsonValue* definition = i.find("definition");
+      if (!name || !definition) return (void)wrong(i, "not a derivation: an intermediate needs \"name\" and \"definition\"");
+      r.intermediates.push_back({text(*name, "intermediates.name"), text(*definition, "intermediates.definition")});
+    }
+  }
   void read_constraints(const JsonValue& v, DerivationRecord& r) {
     if (v.kind != JsonValue::array) return (void)wrong(v, "not a derivation: \"constraints\" must be an array");
     for (const JsonValue& c : v.items) {
@@ -128,11 +138,15 @@ class RecordBuilder {
   Diagnostics& d_;
 };
 
-// a model file, or a robot file (MJCF, URDF) that the model parser imports in memory as every
-// command does; anything else is taken for derived-equations JSON
-bool is_model_file(const std::string& path) {
+// a robot file (MJCF, URDF) that the model parser imports in memory as every command does
+bool is_robot_file(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
-  return extension == ".toml" || extension == ".xml" || extension == ".urdf" || extension == ".xacro";
+  return extension == ".xml" || extension == ".urdf" || extension == ".xacro";
+}
+
+// a model file or a robot file; anything else is taken for derived-equations JSON
+bool is_model_file(const std::string& path) {
+  return is_robot_file(path) || std::filesystem::path(path).extension().string() == ".toml";
 }
 
 }  // namespace
@@ -140,12 +154,15 @@ bool is_model_file(const std::string& path) {
 std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnostics& diagnostics) {
   std::string json;
   if (is_model_file(path)) {
-    Derivation d = derive_model_file_for(path, model_written_out());
+    // a model file's equations written out in q read as its author wrote it; a robot's in its tree's
+    // quantities, which the numeric level evaluates in order (written out, the expressions of a
+    // 7-joint arm took a minute a side, and ran to thousands of terms an entry)
+    Derivation d = derive_model_file_for(path, model_written_out(!is_robot_file(path)));
     if (!d.diagnostics.empty()) {
       for (const Diagnostic& x : d.diagnostics.list()) diagnostics.error(x.where, x.key, x.message, x.hint);
       return std::nullopt;
     }
-    if (!d.equations->intermediates.empty()) {
+    if (!d.equations->intermediates.empty() && (d.equations->uses_pseudo_velocities() || !is_robot_file(path))) {
       diagnostics.error({path, 1, 1}, "model.kinematics",
                         "the model's equations hold the quantities of its ball or free joints' tree, which diff does not "
                         "compare",

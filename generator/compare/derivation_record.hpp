@@ -23,11 +23,15 @@ struct DerivationRecord {
   std::vector<std::string> coordinates, velocities, outputs, multipliers;
   std::vector<std::pair<std::string, double>> parameters, inputs;  // with defaults, in file order
   std::vector<DerivedEntry> entries;
+  /// a tree's quantities (world poses, twists, composite inertias), in order of computation: the
+  /// entries and the later ones use their names
+  std::vector<DerivedEntry> intermediates;
   bool pseudo_velocities = false;  // Appell: velocities are pseudo-velocities with kinematic equations
 };
 
-/// Reads `path`: a .toml model file is derived, anything else is read as derived-equations
-/// JSON. Mistakes (a missing file, a model-file error, a JSON that is not a derivation)
+/// Reads `path`: a .toml model file is derived written out in q, a robot file (MJCF, URDF) in its
+/// tree's quantities (written out, a 7-joint arm took a minute), anything else is read as
+/// derived-equations JSON. Mistakes (a missing file, a model-file error, a JSON that is not a derivation)
 /// go to `diagnostics` with their location.
 std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnostics& diagnostics);
 

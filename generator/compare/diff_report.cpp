@@ -31,6 +31,35 @@ std::string level(const EntryComparison& c) {
   return c.status == "equivalent" ? "equal at every random point (50 digits)" : "differs at the random points";
 }
 
+// An expression as the text report shows it: a robot's entries written out ran to thousands of
+// terms, which no one reads in a terminal; --format json keeps every expression whole.
+std::string shown(const std::string& expression) {
+  constexpr std::size_t longest = 1000;
+  if (expression.size() <= longest) return expression;
+  return fmt::format("{} … (an expression of {} characters; --format json gives it whole)", expression.substr(0, 200),
+                     expression.size());
+}
+
+// the two sides of an entry, one line where their texts agree: the same expression of a tree's
+// quantities, which differ (an identical entry has no text)
+std::string sides(const EntryComparison& c) {
+  if (c.old_text == c.new_text) return fmt::format("    both: {} (of the tree's quantities, which differ: below)\n", shown(c.old_text));
+  return fmt::format("    old: {}\n    new: {}\n", shown(c.old_text), shown(c.new_text));
+}
+
+std::string changed_quantities(const std::vector<IntermediateChange>& changes) {
+  if (changes.empty()) return "";
+  constexpr std::size_t listed = 12;
+  std::string out = fmt::format("  the tree's quantities that differ ({}{}):\n", changes.size(),
+                                changes.size() > listed ? fmt::format(", the first {}; --format json lists all", listed) : "");
+  for (std::size_t i = 0; i < changes.size() && i < listed; ++i) {
+    const IntermediateChange& c = changes[i];
+    out += fmt::format("    {}\n      old: {}\n      new: {}\n", c.name, c.old_text.empty() ? "(none)" : shown(c.old_text),
+                       c.new_text.empty() ? "(none)" : shown(c.new_text));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string diff_text(const EquationDiff& d) {
@@ -46,12 +75,12 @@ std::string diff_text(const EquationDiff& d) {
   for (const EntryComparison& c : d.entries) ++counts[c.status];
   for (const EntryComparison& c : d.entries)
     if (c.status == "different")
-      out += fmt::format("  different: {} (largest difference {} absolute, {} relative at the random points)\n"
-                         "    old: {}\n    new: {}\n",
-                         c.entry, rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference), c.old_text, c.new_text);
+      out += fmt::format("  different: {} (largest difference {} absolute, {} relative at the random points)\n", c.entry,
+                         rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference)) +
+             sides(c);
   for (const EntryComparison& c : d.entries)
-    if (c.status == "equivalent")
-      out += fmt::format("  equivalent: {} ({})\n    old: {}\n    new: {}\n", c.entry, level(c), c.old_text, c.new_text);
+    if (c.status == "equivalent") out += fmt::format("  equivalent: {} ({})\n", c.entry, level(c)) + sides(c);
+  out += changed_quantities(d.intermediates_changed);
   if (!d.motion.empty()) out += "  motion: " + d.motion + "\n";
   out += fmt::format("  {} entries compared: {} identical, {} equivalent, {} different\n", d.entries.size(), counts["identical"],
                      counts["equivalent"], counts["different"]);
@@ -70,11 +99,16 @@ std::string diff_json(const EquationDiff& d) {
                            "\"max_abs_difference\": {}, \"max_rel_difference\": {}}}",
                            entries.empty() ? "" : ", ", quote(c.entry), c.status, c.decided_by, quote(c.old_text),
                            quote(c.new_text), rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference));
+  std::string intermediates;
+  for (const IntermediateChange& c : d.intermediates_changed)
+    intermediates += fmt::format("{}{{\"name\": {}, \"old\": {}, \"new\": {}}}", intermediates.empty() ? "" : ", ", quote(c.name),
+                                 c.old_text.empty() ? "null" : quote(c.old_text), c.new_text.empty() ? "null" : quote(c.new_text));
   return fmt::format("{{\"verdict\": \"{}\", \"old\": {}, \"new\": {}, \"symbols\": {{\"added\": {}, \"removed\": {}, "
                      "\"renamed\": [{}], \"defaults_changed\": [{}]}}, \"entries\": [{}], \"entries_only_old\": {}, "
-                     "\"entries_only_new\": {}, \"motion\": {}}}\n",
+                     "\"entries_only_new\": {}, \"intermediates_changed\": [{}], \"motion\": {}}}\n",
                      d.verdict, quote(d.old_path), quote(d.new_path), strings(d.added), strings(d.removed), renamed, defaults,
-                     entries, strings(d.entries_only_old), strings(d.entries_only_new), d.motion.empty() ? "null" : quote(d.motion));
+                     entries, strings(d.entries_only_old), strings(d.entries_only_new), intermediates,
+                     d.motion.empty() ? "null" : quote(d.motion));
 }
 
 }  // namespace eomgen

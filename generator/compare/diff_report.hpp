@@ -1,6 +1,6 @@
 /// @file The report of `eomgen diff`: readable text (what differs first, each entry with
-/// both expressions and the size of the difference; identical entries only counted), or
-/// one JSON object.
+/// both expressions and the size of the difference; identical entries only counted; a
+/// robot's tree quantities that differ, by name), or one JSON object.
 #pragma once
 
 #include <string>

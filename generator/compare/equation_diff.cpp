@@ -1,6 +1,7 @@
 #include "compare/equation_diff.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -90,22 +91,150 @@ class SymbolSpace {
 struct ParsedSide {
   std::map<std::string, ex> entries;  // by (renamed) entry name
   std::vector<std::string> order;
+  std::vector<std::pair<ex, ex>> intermediates;  // symbol i__k and its definition, in order
+  std::vector<std::string> intermediate_names;   // as the side names them (link2.R_xx)
 };
 
-ParsedSide parse_side(const DerivationRecord& r, const GiNaC::symtab& table, const Renaming& rename, Diagnostics& d) {
+// a tree's intermediate names (link2.R_xx) as identifiers GiNaC's parser reads: i__0, i__1, …
+std::string with_intermediate_placeholders(const std::string& text, const std::map<std::string, std::size_t>& index) {
+  if (index.empty()) return text;
+  static const std::regex name(R"([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*)");
+  std::string out;
+  std::size_t last = 0;
+  for (std::sregex_iterator i(text.begin(), text.end(), name), end; i != end; ++i) {
+    auto it = index.find(i->str());
+    if (it == index.end()) continue;
+    out += text.substr(last, static_cast<std::size_t>(i->position()) - last) + fmt::format("i__{}", it->second);
+    last = static_cast<std::size_t>(i->position() + i->length());
+  }
+  return out + text.substr(last);
+}
+
+ParsedSide parse_side(const DerivationRecord& r, GiNaC::symtab table, const Renaming& rename, Diagnostics& d) {
   ParsedSide side;
+  std::map<std::string, std::size_t> index;
+  for (std::size_t k = 0; k < r.intermediates.size(); ++k) {
+    index[r.intermediates[k].name] = k;
+    std::string placeholder = fmt::format("i__{}", k);
+    table[placeholder] = GiNaC::realsymbol(placeholder);
+    side.intermediate_names.push_back(r.intermediates[k].name);
+  }
   GiNaC::parser reader(table, true);
+  auto read = [&](const std::string& text, const std::string& key) -> std::optional<ex> {
+    try {
+      return reader(decimals_as_fractions(with_placeholders(with_intermediate_placeholders(text, index))));
+    } catch (const std::exception& why) {
+      d.error({r.path, 0, 0}, key, fmt::format("the expression '{}' does not read back: {}", text, why.what()),
+              "derived-equations files are written by `eomgen derive --format json`; do not edit them by hand");
+      return std::nullopt;
+    }
+  };
+  for (std::size_t k = 0; k < r.intermediates.size(); ++k)
+    if (auto definition = read(r.intermediates[k].text, r.intermediates[k].name))
+      side.intermediates.emplace_back(table.at(fmt::format("i__{}", k)), *definition);
   for (const DerivedEntry& e : r.entries) {
     std::string name = rename.entry(e.name);
-    try {
-      side.entries[name] = reader(decimals_as_fractions(with_placeholders(e.text)));
-      side.order.push_back(name);
-    } catch (const std::exception& why) {
-      d.error({r.path, 0, 0}, e.name, fmt::format("the expression '{}' does not read back: {}", e.text, why.what()),
-              "derived-equations files are written by `eomgen derive --format json`; do not edit them by hand");
-    }
+    if (auto value = read(e.text, e.name)) side.entries[name] = *value, side.order.push_back(name);
   }
   return side;
+}
+
+// Exact rationals of many digits, and floats of 50, as decimals of 17 significant digits, which is
+// what they were: a robot's numbers, stated to 16 digits and turned by quaternions, read
+// 9950041652780258727157920798041011/10000000000000001068611566764672789 exactly
+struct LongNumbersAsDecimals : GiNaC::map_function {
+  ex operator()(const ex& e) override {
+    if (!GiNaC::is_a<GiNaC::numeric>(e)) return e.map(*this);
+    const GiNaC::numeric& x = GiNaC::ex_to<GiNaC::numeric>(e);
+    static const GiNaC::numeric long_digits("1000000000000");
+    if (!x.is_real() || (x.is_rational() && abs(x.numer()) < long_digits && x.denom() < long_digits)) return e;
+    return GiNaC::numeric(x.to_double());
+  }
+};
+
+// an expression for the report: exact, but for long numbers
+std::string shown_text(const ex& e) {
+  LongNumbersAsDecimals decimals;
+  return canonical_text(decimals(e));
+}
+
+// where the decimals hide a difference, the new side says so
+constexpr const char* beyond_the_decimals = " (its numbers differ beyond 17 digits)";
+
+// the placeholders back to der(q) and to the intermediates' names for the report
+std::string readable(const std::string& text, const std::vector<std::string>& intermediate_names) {
+  static const std::regex second(R"(\bdd__([A-Za-z_][A-Za-z0-9_]*))"), first(R"(\bd__([A-Za-z_][A-Za-z0-9_]*))"),
+      intermediate(R"(\bi__([0-9]+)\b)");
+  std::string out = std::regex_replace(std::regex_replace(text, second, "der(der($1))"), first, "der($1)");
+  if (intermediate_names.empty()) return out;
+  std::string named;
+  std::size_t last = 0;
+  for (std::sregex_iterator i(out.begin(), out.end(), intermediate), end; i != end; ++i) {
+    std::size_t k = std::stoul((*i)[1].str());
+    named += out.substr(last, static_cast<std::size_t>(i->position()) - last) + (k < intermediate_names.size() ? intermediate_names[k] : i->str());
+    last = static_cast<std::size_t>(i->position() + i->length());
+  }
+  return named + out.substr(last);
+}
+
+// Where both sides compute the same intermediates (the same definitions, in order), the new side
+// takes the old side's symbols for them, so that an entry's text and its exact simplification decide
+// as they do without intermediates; true then, or when neither side has any.
+bool share_intermediates(const ParsedSide& old_side, ParsedSide& new_side) {
+  if (old_side.intermediates.size() != new_side.intermediates.size()) return false;
+  GiNaC::exmap to_old;
+  for (std::size_t k = 0; k < old_side.intermediates.size(); ++k) {
+    const auto& [old_symbol, old_definition] = old_side.intermediates[k];
+    const auto& [new_symbol, new_definition] = new_side.intermediates[k];
+    if (canonical_text(old_definition) != canonical_text(new_definition)) return false;
+    to_old[new_symbol] = old_symbol;
+  }
+  if (to_old.empty()) return true;
+  for (auto& [symbol, definition] : new_side.intermediates) symbol = symbol.subs(to_old), definition = definition.subs(to_old);
+  for (auto& [name, value] : new_side.entries) value = value.subs(to_old);
+  return true;
+}
+
+// the intermediates whose definitions differ by name, as the report shows them
+std::vector<IntermediateChange> changed_intermediates(const ParsedSide& old_side, const ParsedSide& new_side) {
+  // by name: the exact text (which decides) and the shown one
+  auto definitions = [](const ParsedSide& side) {
+    std::map<std::string, std::array<std::string, 2>> out;
+    for (std::size_t k = 0; k < side.intermediates.size(); ++k) {
+      const ex& definition = side.intermediates[k].second;
+      out[side.intermediate_names[k]] = {readable(canonical_text(definition), side.intermediate_names),
+                                         readable(shown_text(definition), side.intermediate_names)};
+    }
+    return out;
+  };
+  auto old_text = definitions(old_side), new_text = definitions(new_side);
+  std::vector<IntermediateChange> out;
+  for (const std::string& name : new_side.intermediate_names) {
+    auto it = old_text.find(name);
+    if (it == old_text.end()) {
+      out.push_back({name, "", new_text[name][1]});
+    } else if (it->second[0] != new_text[name][0]) {
+      bool hidden = it->second[1] == new_text[name][1];
+      out.push_back({name, it->second[1], new_text[name][1] + (hidden ? beyond_the_decimals : "")});
+    }
+  }
+  for (const std::string& name : old_side.intermediate_names)
+    if (!new_text.count(name)) out.push_back({name, old_text[name][1], ""});
+  return out;
+}
+
+// a side's values at a random point: the point's, and its intermediates' evaluated in order (one
+// with a pole there is left a symbol, and the entries that use it are not evaluated at that point)
+std::vector<GiNaC::exmap> with_intermediates(std::vector<GiNaC::exmap> points, const ParsedSide& side) {
+  for (GiNaC::exmap& p : points)
+    for (const auto& [symbol, definition] : side.intermediates) {
+      try {
+        p[symbol] = definition.subs(p).evalf();
+      } catch (const std::exception&) {
+        continue;
+      }
+    }
+  return points;
 }
 
 // random values of every symbol: parameters about their defaults, velocities of both signs, and
@@ -138,46 +267,55 @@ bool has_branches(const ex& e) {
   return false;
 }
 
-std::optional<double> value_at(const ex& e, const GiNaC::exmap& point) {
+// the value at a point in 50-digit arithmetic, or none: a pole there, or not real
+std::optional<GiNaC::numeric> value_at(const ex& e, const GiNaC::exmap& point) {
   try {
     ex v = e.subs(point).evalf();
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return std::nullopt;
-    return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+    return GiNaC::ex_to<GiNaC::numeric>(v);
   } catch (const std::exception&) {
-    return std::nullopt;  // a pole at this point
+    return std::nullopt;
   }
 }
 
-// the placeholders back to der(q) for the report
-std::string readable(const std::string& text) {
-  static const std::regex second(R"(\bdd__([A-Za-z_][A-Za-z0-9_]*))"), first(R"(\bd__([A-Za-z_][A-Za-z0-9_]*))");
-  return std::regex_replace(std::regex_replace(text, second, "der(der($1))"), first, "der($1)");
-}
+// One entry in levels: text, then exact simplification, then 50-digit evaluation, each side at its
+// own `points` (with its intermediates' values). Where the sides' intermediates differ, equal text
+// says nothing, and only the numeric level decides.
+struct EntrySides {
+  const ParsedSide &old_side, &new_side;
+  const std::vector<GiNaC::exmap> &old_points, &new_points;
+  bool text_decides;
+};
 
-// the entry levels: text, then exact simplification, then 50-digit evaluation
-void decide(EntryComparison& c, const ex& old_e, const ex& new_e, const std::vector<GiNaC::exmap>& points, double tolerance) {
-  c.old_text = readable(canonical_text(old_e)), c.new_text = readable(canonical_text(new_e));
-  if (c.old_text == c.new_text) {
+void decide(EntryComparison& c, const ex& old_e, const ex& new_e, const EntrySides& s, double tolerance) {
+  std::string old_exact = canonical_text(old_e), new_exact = canonical_text(new_e);
+  if (s.text_decides && old_exact == new_exact) {
+    c.old_text = c.new_text = readable(shown_text(old_e), s.old_side.intermediate_names);
     c.status = "identical", c.decided_by = "text";
     return;
   }
-  ex difference = (old_e - new_e).expand();
-  bool zero = difference.is_zero();
-  if (!zero && c.old_text.size() + c.new_text.size() < 4000) zero = difference.normal().is_zero();
-  if (zero) {
-    c.status = "equivalent", c.decided_by = "symbolic";
-    return;
+  // shown with decimals
+  c.old_text = readable(shown_text(old_e), s.old_side.intermediate_names);
+  c.new_text = readable(shown_text(new_e), s.new_side.intermediate_names);
+  if (c.old_text == c.new_text && old_exact != new_exact) c.new_text += beyond_the_decimals;
+  if (s.text_decides) {
+    ex difference = (old_e - new_e).expand();
+    bool zero = difference.is_zero();
+    if (!zero && c.old_text.size() + c.new_text.size() < 4000) zero = difference.normal().is_zero();
+    if (zero) {
+      c.status = "equivalent", c.decided_by = "symbolic";
+      return;
+    }
   }
   c.decided_by = "numeric";
   int evaluated = 0;
   bool equal = true;
-  for (const GiNaC::exmap& p : points) {
-    ex d = (old_e - new_e).subs(p).evalf();
-    auto a = value_at(old_e, p), b = value_at(new_e, p);
-    if (!a || !b || !GiNaC::is_a<GiNaC::numeric>(d)) continue;
+  for (std::size_t k = 0; k < s.old_points.size(); ++k) {
+    auto a = value_at(old_e, s.old_points[k]), b = value_at(new_e, s.new_points[k]);
+    if (!a || !b) continue;
     ++evaluated;
-    double size = std::max({1.0, std::abs(*a), std::abs(*b)});
-    double abs = std::abs(GiNaC::ex_to<GiNaC::numeric>(d).to_double());
+    double size = std::max({1.0, std::abs(a->to_double()), std::abs(b->to_double())});
+    double abs = std::abs((*a - *b).to_double());
     c.max_abs_difference = std::max(c.max_abs_difference, abs);
     c.max_rel_difference = std::max(c.max_rel_difference, abs / size);
     equal = equal && abs <= tolerance * size;
@@ -295,6 +433,10 @@ EquationDiff compare_derivations(const DerivationRecord& a, const DerivationReco
   int digits = GiNaC::Digits;
   GiNaC::Digits = 50;
   std::vector<GiNaC::exmap> points = sample_points(space, defaults, o);
+  bool text_decides = share_intermediates(old_side, new_side);
+  if (!text_decides) out.intermediates_changed = changed_intermediates(old_side, new_side);
+  std::vector<GiNaC::exmap> old_points = with_intermediates(points, old_side), new_points = with_intermediates(points, new_side);
+  EntrySides sides{old_side, new_side, old_points, new_points, text_decides};
   for (const std::string& name : new_side.order) {
     auto it = old_side.entries.find(name);
     if (it == old_side.entries.end()) {
@@ -303,7 +445,7 @@ EquationDiff compare_derivations(const DerivationRecord& a, const DerivationReco
     }
     EntryComparison c;
     c.entry = name;
-    decide(c, it->second, new_side.entries.at(name), points, o.tolerance);
+    decide(c, it->second, new_side.entries.at(name), sides, o.tolerance);
     out.entries.push_back(c);
   }
   for (const std::string& name : old_side.order)
@@ -325,10 +467,12 @@ EquationDiff compare_derivations(const DerivationRecord& a, const DerivationReco
     }
   bool symbols_differ = !out.added.empty() || !out.removed.empty() || !out.defaults_changed.empty();
   bool same = false;
-  if (different && !symbols_differ && only_motion_forms && a.multipliers.empty() && b.multipliers.empty()) {
+  // (a side's intermediates are evaluated at the sampled q', not at q' = r(q, s): none with pseudo-velocities)
+  bool intermediates_at_the_states = (a.intermediates.empty() || !a.pseudo_velocities) && (b.intermediates.empty() || !b.pseudo_velocities);
+  if (different && !symbols_differ && only_motion_forms && a.multipliers.empty() && b.multipliers.empty() &&
+      intermediates_at_the_states) {
     MotionForm old_form = motion_form(a, old_side, space, rename), new_form = motion_form(b, new_side, space, Renaming({}));
-    std::vector<GiNaC::exmap> states = sample_points(space, defaults, o);
-    MotionComparison m = compare_accelerations(old_form, new_form, states, o.tolerance);
+    MotionComparison m = compare_accelerations(old_form, new_form, old_points, new_points, o.tolerance);
     same = m.same;
     out.motion = fmt::format("the accelerations q'' of both sides {} at {} random states (largest relative difference {:.3g})",
                              m.same ? "agree" : "differ", m.states, m.max_rel_difference);

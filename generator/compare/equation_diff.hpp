@@ -32,6 +32,12 @@ struct DefaultChange {
   double old_value, new_value;
 };
 
+/// A tree's intermediate quantity (world poses, composite inertias: derived equations of robots)
+/// whose definition differs, by name; the text of a side that lacks it is empty.
+struct IntermediateChange {
+  std::string name, old_text, new_text;
+};
+
 struct EquationDiff {
   std::string verdict;  // identical | equivalent | equal_on_samples (branches: abs, atan2, roots) | same_motion | different
   std::string old_path, new_path;
@@ -41,6 +47,9 @@ struct EquationDiff {
   std::vector<EntryComparison> entries;  // the entries both sides have, in the new side's order
   std::vector<std::string> entries_only_old, entries_only_new;  // e.g. Appell's S and s[...] against Lagrange II
   std::string motion;                    // how the accelerations compared, when M or f differ
+  /// the intermediates whose definitions differ, in the new side's order of computation and then the
+  /// old side's own: what changed in the tree, where the entries' texts are the same
+  std::vector<IntermediateChange> intermediates_changed;
 };
 
 /// Compares `old_side` with `new_side`. An expression that does not read back (a

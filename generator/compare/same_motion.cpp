@@ -51,17 +51,19 @@ std::optional<std::vector<ex>> accelerations(const MotionForm& m, GiNaC::exmap s
 
 }  // namespace
 
-MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b, const std::vector<GiNaC::exmap>& points,
-                                       double tolerance) {
+MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b, const std::vector<GiNaC::exmap>& a_points,
+                                       const std::vector<GiNaC::exmap>& b_points, double tolerance) {
   MotionComparison out;
   if (a.coordinates.size() != b.coordinates.size()) return out;
   // a state both sides accept: for pseudo-velocities, q' from random s through the kinematic equations
   const MotionForm* appell = !a.kinematics.empty() ? &a : !b.kinematics.empty() ? &b : nullptr;
-  for (const GiNaC::exmap& point : points) {
-    GiNaC::exmap state = point;  // parameters, inputs, t and q as sampled
-    for (std::size_t i = 0; i < a.coordinates.size(); ++i)
-      state[a.coordinate_rates[i]] = appell ? appell->kinematics[i].subs(point).evalf() : point.at(a.coordinate_rates[i]);
-    auto x = accelerations(a, state), y = accelerations(b, state);
+  for (std::size_t k = 0; k < a_points.size() && k < b_points.size(); ++k) {
+    GiNaC::exmap a_state = a_points[k], b_state = b_points[k];  // parameters, inputs, t and q as sampled
+    for (std::size_t i = 0; i < a.coordinates.size(); ++i) {
+      ex rate = appell ? appell->kinematics[i].subs(appell == &a ? a_points[k] : b_points[k]).evalf() : a_points[k].at(a.coordinate_rates[i]);
+      a_state[a.coordinate_rates[i]] = b_state[a.coordinate_rates[i]] = rate;
+    }
+    auto x = accelerations(a, a_state), y = accelerations(b, b_state);
     if (!x || !y) continue;
     ++out.states;
     for (std::size_t i = 0; i < x->size(); ++i) {

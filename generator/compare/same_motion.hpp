@@ -29,8 +29,9 @@ struct MotionComparison {
   int states = 0;  // at which both gave accelerations
 };
 
-/// Compares the accelerations at the states of `points` (values for every symbol).
-MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b, const std::vector<GiNaC::exmap>& points,
-                                       double tolerance);
+/// Compares the accelerations at the states of `a_points` (values for every symbol, and for a's
+/// intermediates) and `b_points` (the same values, and b's intermediates').
+MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b, const std::vector<GiNaC::exmap>& a_points,
+                                       const std::vector<GiNaC::exmap>& b_points, double tolerance);
 
 }  // namespace eomgen

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <regex>
 
+#include "compare/diff_report.hpp"
 #include "compare/equation_diff.hpp"
 #include "support/test_support.hpp"
 
@@ -178,6 +180,66 @@ TEST(EquationDiff, RobotFilesAreComparedAsTheImportReadsThem) {
   EXPECT_EQ(entry(changed, "V")->status, "different");
   ASSERT_NE(entry(changed, "M[0][0]"), nullptr);
   EXPECT_EQ(entry(changed, "M[0][0]")->status, "different");
+}
+
+std::string robot_variant(const std::string& file, const std::string& from, const std::string& to, const std::string& name) {
+  std::string text = test::read_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/" + file);
+  std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  std::string path = test::temporary_directory() + "/" + name + ".urdf";
+  std::ofstream(path) << text;
+  return path;
+}
+
+// A robot is compared in its tree's quantities (written out, the seven-joint arm's took a minute a
+// side and thousands of terms an entry): the entries at random points, each side's quantities
+// evaluated in order, and the quantities whose definitions differ listed by name, the first of
+// them at the link that changed. Its first link's inertia turned by 0.1 rad about x changes M and f.
+TEST(EquationDiff, RobotsAreComparedInTheirTreesQuantities) {
+  std::string arm = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/seven_joint_arm.urdf";
+  std::string turned = robot_variant("seven_joint_arm.urdf", "rpy=\"0 0 0\"", "rpy=\"0.1 0 0\"", "turned_arm");
+  EquationDiff d = compare(arm, turned);
+  EXPECT_EQ(d.verdict, "different");
+  ASSERT_NE(entry(d, "M[0][0]"), nullptr);
+  EXPECT_EQ(entry(d, "M[0][0]")->status, "different");
+  EXPECT_EQ(entry(d, "M[0][0]")->decided_by, "numeric");
+  EXPECT_GT(entry(d, "M[0][0]")->max_rel_difference, 1e-4);
+  ASSERT_FALSE(d.intermediates_changed.empty());
+  EXPECT_EQ(d.intermediates_changed.front().name.rfind("link1.", 0), 0u) << d.intermediates_changed.front().name;
+  EXPECT_NE(d.motion.find("differ"), std::string::npos) << d.motion;
+  // the report stays readable: no line of thousands of characters, no rationals of 60 digits
+  std::string report = diff_text(d);
+  EXPECT_NE(report.find("the tree's quantities that differ"), std::string::npos);
+  std::size_t longest = 0;
+  for (std::size_t start = 0, end; start < report.size(); start = end + 1) {
+    end = report.find('\n', start);
+    if (end == std::string::npos) end = report.size();
+    longest = std::max(longest, end - start);
+  }
+  EXPECT_LT(longest, 1300u);
+  EXPECT_FALSE(std::regex_search(report, std::regex("[0-9]{30}/|/[0-9]{30}")));
+  EXPECT_EQ(compare(arm, arm).verdict, "identical");
+}
+
+// The fore link's inertia, symmetric about its z axis, turned about that axis: the same robot to
+// the file's rounding (1e-18 of M), which the default tolerance (1e-30) tells apart and 1e-12 does
+// not; the quantities that differ are the fore link's and the composite ones above it
+TEST(EquationDiff, ARobotRestatedToItsRoundingIsEquivalentWithinATolerance) {
+  std::string arm = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/two_link_arm.urdf";
+  std::string turned = robot_variant("two_link_arm.urdf", "<origin xyz=\"0.02 0 0.12\" rpy=\"0 0 0\"/>",
+                                     "<origin xyz=\"0.02 0 0.12\" rpy=\"0 0 0.7\"/>", "turned_fore");
+  EquationDiff exact = compare(arm, turned);
+  EXPECT_EQ(exact.verdict, "different");
+  for (const EntryComparison& c : exact.entries) EXPECT_LT(c.max_rel_difference, 1e-15) << c.entry;
+  DiffOptions loose;
+  loose.tolerance = 1e-12;
+  EquationDiff within = compare(arm, turned, loose);
+  EXPECT_EQ(within.verdict, "equivalent");
+  ASSERT_FALSE(within.intermediates_changed.empty());
+  EXPECT_EQ(within.intermediates_changed.front().name.rfind("fore.", 0), 0u) << within.intermediates_changed.front().name;
+  for (const IntermediateChange& c : within.intermediates_changed)
+    EXPECT_TRUE(c.name.rfind("fore.", 0) == 0 || c.name.rfind("upper.tL", 0) == 0) << c.name;
 }
 
 TEST(EquationDiff, InputsThatAreNotDerivationsAreLocatedMistakes) {
