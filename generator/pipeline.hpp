@@ -30,7 +30,8 @@ struct ModelChoice {
   std::string scene, variant;
   std::vector<std::string> freeze;  // coordinates held at their (the scene's) initial values
   /// every position and rotation multiplied out in q, though the frames carry or read as joints
-  /// (but for ball and free joints; build_model: diff compares equations in q)
+  /// (but for ball and free joints; build_model: the symbolic analyses, and diff for small trees,
+  /// take equations in q)
   bool written_out = false;
   /// how the header's rhs solves for q'': eomgen's choice, or one form to compare with the other
   ForwardDynamics forward_dynamics = ForwardDynamics::chosen;

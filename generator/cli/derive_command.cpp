@@ -60,8 +60,9 @@ Command add_derive_command(CLI::App& app) {
                   "coordinates frozen, small angles); the model is named MODEL_NAME");
   auto written_out = std::make_shared<bool>(false);
   cmd->add_flag("--written-out", *written_out,
-                "Print the equations written out in q, as diff and the symbolic analyses take them, where a tree of "
-                "joints or a deep chain of frames would hold the recursion's quantities (not for ball or free joints)");
+                "Print the equations written out in q, as the symbolic analyses take them (and diff, for a tree of up "
+                "to 4 velocities), where a tree of joints or a deep chain of frames would hold the recursion's "
+                "quantities (not for ball or free joints)");
   return [cmd, model, format, output, linearize, reduce, variant, written_out]() -> int {
     if (!cmd->parsed()) return -1;
     return derive_and_write(*model, *format, *output, *linearize, *reduce, *variant, *written_out);

@@ -92,8 +92,9 @@ class RecordBuilder {
     }
     return out;
   }
+  // an entry the derivation may leave out, or give as null (a tree's S, which its pass never forms)
   void single(const char* key, const char* name, DerivationRecord& r) {
-    if (const JsonValue* v = root_.find(key)) r.entries.push_back({name, text(*v, key)});
+    if (const JsonValue* v = root_.find(key); v && v->kind != JsonValue::null) r.entries.push_back({name, text(*v, key)});
   }
   void list(const JsonValue& v, const char* name, DerivationRecord& r) {
     if (v.kind != JsonValue::array) return (void)wrong(v, fmt::format("not a derivation: \"{}\" must be an array", name));
@@ -149,24 +150,26 @@ bool is_model_file(const std::string& path) {
   return is_robot_file(path) || std::filesystem::path(path).extension().string() == ".toml";
 }
 
+// A model file's equations read best written out in q, as its author wrote them. A tree's are
+// compared in its quantities (world poses, composite inertias), which the numeric level evaluates in
+// order, where writing them out takes long: oblique_tree's 5 joints ran past the 300 s limit, the
+// seven-joint arm's URDF took a minute a side; trees of up to 4 velocities took under 0.4 s (models/:
+// measured_arm, geared_gripper, spatial_double_pendulum, four_bar_linkage). Robot files are trees.
+// Ball and free joints keep their quantities either way; a model without any is already written out.
+bool written_out_is_small(const std::string& path, const Equations& e) {
+  constexpr std::size_t written_out_up_to_velocities = 4;
+  return !is_robot_file(path) && !e.intermediates.empty() && e.num_velocities() <= written_out_up_to_velocities;
+}
+
 }  // namespace
 
 std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnostics& diagnostics) {
   std::string json;
   if (is_model_file(path)) {
-    // a model file's equations written out in q read as its author wrote it; a robot's in its tree's
-    // quantities, which the numeric level evaluates in order (written out, the expressions of a
-    // 7-joint arm took a minute a side, and ran to thousands of terms an entry)
-    Derivation d = derive_model_file_for(path, model_written_out(!is_robot_file(path)));
+    Derivation d = derive_model_file_for(path, ModelChoice{});
+    if (d.diagnostics.empty() && written_out_is_small(path, *d.equations)) d = derive_model_file_for(path, model_written_out());
     if (!d.diagnostics.empty()) {
       for (const Diagnostic& x : d.diagnostics.list()) diagnostics.error(x.where, x.key, x.message, x.hint);
-      return std::nullopt;
-    }
-    if (!d.equations->intermediates.empty() && (d.equations->uses_pseudo_velocities() || !is_robot_file(path))) {
-      diagnostics.error({path, 1, 1}, "model.kinematics",
-                        "the model's equations hold the quantities of its ball or free joints' tree, which diff does not "
-                        "compare",
-                        "diff models whose frames can be written out in q: Euler or Cardan angles instead of a quaternion");
       return std::nullopt;
     }
     json = emit_json(*d.equations);

@@ -70,16 +70,23 @@ std::string diff_text(const EquationDiff& d) {
   for (const std::string& e : d.entries_only_new) out += "  only in new: " + e + "\n";
   for (const std::string& e : d.entries_only_old) out += "  only in old: " + e + "\n";
   for (const DefaultChange& c : d.defaults_changed)
-    out += fmt::format("  default changed: {} = {:.17g} -> {:.17g}\n", c.name, c.old_value, c.new_value);
+    out += fmt::format("  default changed: {} = {} -> {}\n", c.name, c.old_value, c.new_value);
   std::map<std::string, int> counts;
   for (const EntryComparison& c : d.entries) ++counts[c.status];
+  // a robot's hundreds of entries are listed up to these counts, the rest counted (--format json
+  // lists every one)
+  constexpr int listed_different = 40, listed_equivalent = 20;
+  int shown = 0;
   for (const EntryComparison& c : d.entries)
-    if (c.status == "different")
+    if (c.status == "different" && shown++ < listed_different)
       out += fmt::format("  different: {} (largest difference {} absolute, {} relative at the random points)\n", c.entry,
                          rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference)) +
              sides(c);
+  if (shown > listed_different) out += fmt::format("  … and {} more different (--format json lists them)\n", shown - listed_different);
+  shown = 0;
   for (const EntryComparison& c : d.entries)
-    if (c.status == "equivalent") out += fmt::format("  equivalent: {} ({})\n", c.entry, level(c)) + sides(c);
+    if (c.status == "equivalent" && shown++ < listed_equivalent) out += fmt::format("  equivalent: {} ({})\n", c.entry, level(c)) + sides(c);
+  if (shown > listed_equivalent) out += fmt::format("  … and {} more equivalent (--format json lists them)\n", shown - listed_equivalent);
   out += changed_quantities(d.intermediates_changed);
   if (!d.motion.empty()) out += "  motion: " + d.motion + "\n";
   out += fmt::format("  {} entries compared: {} identical, {} equivalent, {} different\n", d.entries.size(), counts["identical"],
@@ -92,7 +99,7 @@ std::string diff_json(const EquationDiff& d) {
   for (const auto& [from, to] : d.renamed)
     renamed += fmt::format("{}{{\"old\": {}, \"new\": {}}}", renamed.empty() ? "" : ", ", quote(from), quote(to));
   for (const DefaultChange& c : d.defaults_changed)
-    defaults += fmt::format("{}{{\"name\": {}, \"old\": {:.17g}, \"new\": {:.17g}}}", defaults.empty() ? "" : ", ", quote(c.name),
+    defaults += fmt::format("{}{{\"name\": {}, \"old\": {}, \"new\": {}}}", defaults.empty() ? "" : ", ", quote(c.name),
                             c.old_value, c.new_value);
   for (const EntryComparison& c : d.entries)
     entries += fmt::format("{}{{\"entry\": {}, \"status\": \"{}\", \"decided_by\": \"{}\", \"old\": {}, \"new\": {}, "

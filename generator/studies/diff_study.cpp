@@ -113,7 +113,7 @@ int diff(ComparisonOptions o) {
     o.options.renames.emplace_back(r.substr(0, eq), r.substr(eq + 1));
   }
   if (o.self.empty() && o.inputs.size() != 2) {
-    std::cerr << "eomgen: error: diff compares two inputs: eomgen diff OLD NEW (model files or derived-equations JSON)\n";
+    std::cerr << "eomgen: error: diff compares two inputs: eomgen diff OLD NEW (model files, robot files or derived-equations JSON)\n";
     return exit_user_error;
   }
   if (!(o.options.tolerance > 0) || o.options.samples < 1) {

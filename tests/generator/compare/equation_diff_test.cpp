@@ -164,6 +164,41 @@ TEST(EquationDiff, EveryCommittedBaselineIsIdenticalToItsModel) {
   }
 }
 
+// A tree's baseline holds its quantities (generated/ is the default derivation). A model of more than
+// 4 velocities, or of ball and free joints, is compared in them too, and is identical to its
+// baseline (oblique_tree's 5 joints written out had run past the 300 s limit); a smaller one is
+// written out, equal to its baseline at every random point.
+TEST(EquationDiff, TreesAreComparedWithTheirBaselinesInTheirQuantities) {
+  for (const char* name : {"oblique_tree", "ball_joint_top", "tumbling_body"}) {
+    EquationDiff d = compare(std::string(EOMGEN_SOURCE_DIR) + "/generated/" + name + ".json", test::model_path(name));
+    EXPECT_EQ(d.verdict, "identical") << name;
+    EXPECT_FALSE(d.entries.empty()) << name;
+  }
+  for (const char* name : {"measured_arm", "spatial_double_pendulum", "four_bar_linkage"}) {
+    EquationDiff d = compare(std::string(EOMGEN_SOURCE_DIR) + "/generated/" + name + ".json", test::model_path(name));
+    EXPECT_EQ(d.verdict, "equivalent") << name;
+    for (const EntryComparison& c : d.entries) EXPECT_NE(c.decided_by, "text") << name << " " << c.entry;
+  }
+}
+
+// A robot on a free joint (pseudo-velocities, a quaternion): one thigh 10 g heavier changes the
+// entries that its leg moves, and the first quantity that differs is that thigh's
+TEST(EquationDiff, ARobotOnAFreeJointIsComparedInItsQuantities) {
+  std::string quadruped = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/quadruped.xml";
+  std::string text = test::read_file(quadruped), heavier = test::temporary_directory() + "/heavier_thigh.xml";
+  ASSERT_NE(text.find("mass=\"0.386\""), std::string::npos);
+  text.replace(text.find("mass=\"0.386\""), 13, "mass=\"0.396\"");
+  std::ofstream(heavier) << text;
+  EquationDiff d = compare(quadruped, heavier);
+  EXPECT_EQ(d.verdict, "different");
+  ASSERT_FALSE(d.intermediates_changed.empty());
+  EXPECT_EQ(d.intermediates_changed.front().name.rfind("front_left_thigh.", 0), 0u) << d.intermediates_changed.front().name;
+  int different = 0, equivalent = 0;
+  for (const EntryComparison& c : d.entries) different += c.status == "different", equivalent += c.status == "equivalent";
+  EXPECT_GT(different, 0);
+  EXPECT_GT(equivalent, 0);  // the other legs' own rows
+}
+
 // robot files are compared as `eomgen import` reads them, as every command takes them: the same
 // URDF in another file is identical, and the fore link 0.1 kg heavier changes M, f and V
 TEST(EquationDiff, RobotFilesAreComparedAsTheImportReadsThem) {
