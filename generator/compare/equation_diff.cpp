@@ -190,8 +190,8 @@ bool share_intermediates(const ParsedSide& old_side, ParsedSide& new_side) {
     to_old[new_symbol] = old_symbol;
   }
   if (to_old.empty()) return true;
-  for (auto& [symbol, definition] : new_side.intermediates) symbol = symbol.subs(to_old), definition = definition.subs(to_old);
-  for (auto& [name, value] : new_side.entries) value = value.subs(to_old);
+  for (auto& [symbol, definition] : new_side.intermediates) symbol = symbol.subs(to_old, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product), definition = definition.subs(to_old, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
+  for (auto& [name, value] : new_side.entries) value = value.subs(to_old, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
   return true;
 }
 
@@ -224,12 +224,15 @@ std::vector<IntermediateChange> changed_intermediates(const ParsedSide& old_side
 }
 
 // a side's values at a random point: the point's, and its intermediates' evaluated in order (one
-// with a pole there is left a symbol, and the entries that use it are not evaluated at that point)
+// with a pole there is left a symbol, and the entries that use it are not evaluated at that point).
+// Every map here has symbols for keys: no_pattern looks each up, and pattern_is_not_product
+// spares every sum and product a scan of the map for products (without them, a 21-joint
+// tree's two copies took 53 s, with no_pattern alone 11 s)
 std::vector<GiNaC::exmap> with_intermediates(std::vector<GiNaC::exmap> points, const ParsedSide& side) {
   for (GiNaC::exmap& p : points)
     for (const auto& [symbol, definition] : side.intermediates) {
       try {
-        p[symbol] = definition.subs(p).evalf();
+        p[symbol] = definition.subs(p, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
       } catch (const std::exception&) {
         continue;
       }
@@ -270,7 +273,7 @@ bool has_branches(const ex& e) {
 // the value at a point in 50-digit arithmetic, or none: a pole there, or not real
 std::optional<GiNaC::numeric> value_at(const ex& e, const GiNaC::exmap& point) {
   try {
-    ex v = e.subs(point).evalf();
+    ex v = e.subs(point, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return std::nullopt;
     return GiNaC::ex_to<GiNaC::numeric>(v);
   } catch (const std::exception&) {
@@ -281,9 +284,24 @@ std::optional<GiNaC::numeric> value_at(const ex& e, const GiNaC::exmap& point) {
 // One entry in levels: text, then exact simplification, then 50-digit evaluation, each side at its
 // own `points` (with its intermediates' values). Where the sides' intermediates differ, equal text
 // says nothing, and only the numeric level decides.
+// a side's points, its intermediates evaluated at the first need (two identical robots need none)
+class SidePoints {
+ public:
+  SidePoints(const std::vector<GiNaC::exmap>& points, const ParsedSide& side) : points_(points), side_(side) {}
+  const std::vector<GiNaC::exmap>& values() {
+    if (!values_) values_ = with_intermediates(points_, side_);
+    return *values_;
+  }
+
+ private:
+  const std::vector<GiNaC::exmap>& points_;
+  const ParsedSide& side_;
+  std::optional<std::vector<GiNaC::exmap>> values_;
+};
+
 struct EntrySides {
   const ParsedSide &old_side, &new_side;
-  const std::vector<GiNaC::exmap> &old_points, &new_points;
+  SidePoints &old_points, &new_points;
   bool text_decides;
 };
 
@@ -310,8 +328,9 @@ void decide(EntryComparison& c, const ex& old_e, const ex& new_e, const EntrySid
   c.decided_by = "numeric";
   int evaluated = 0;
   bool equal = true;
-  for (std::size_t k = 0; k < s.old_points.size(); ++k) {
-    auto a = value_at(old_e, s.old_points[k]), b = value_at(new_e, s.new_points[k]);
+  const std::vector<GiNaC::exmap>&old_points = s.old_points.values(), &new_points = s.new_points.values();
+  for (std::size_t k = 0; k < old_points.size(); ++k) {
+    auto a = value_at(old_e, old_points[k]), b = value_at(new_e, new_points[k]);
     if (!a || !b) continue;
     ++evaluated;
     double size = std::max({1.0, std::abs(a->to_double()), std::abs(b->to_double())});
@@ -410,9 +429,9 @@ MotionForm motion_form(const DerivationRecord& r, const ParsedSide& side, Symbol
     if (r.velocities[c].rfind("der(", 0) == 0) {
       m.velocities[c] = space.symbol("s__" + rename(r.velocities[c].substr(4, r.velocities[c].size() - 5)));
       GiNaC::exmap to_state{{space.symbol("d__" + rename(r.velocities[c].substr(4, r.velocities[c].size() - 5))), m.velocities[c]}};
-      for (ex& f : m.forcing) f = f.subs(to_state);
-      m.mass_matrix = GiNaC::ex_to<GiNaC::matrix>(m.mass_matrix.subs(to_state));
-      for (ex& x : m.kinematics) x = x.subs(to_state);
+      for (ex& f : m.forcing) f = f.subs(to_state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
+      m.mass_matrix = GiNaC::ex_to<GiNaC::matrix>(m.mass_matrix.subs(to_state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product));
+      for (ex& x : m.kinematics) x = x.subs(to_state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
     }
   return m;
 }
@@ -435,7 +454,7 @@ EquationDiff compare_derivations(const DerivationRecord& a, const DerivationReco
   std::vector<GiNaC::exmap> points = sample_points(space, defaults, o);
   bool text_decides = share_intermediates(old_side, new_side);
   if (!text_decides) out.intermediates_changed = changed_intermediates(old_side, new_side);
-  std::vector<GiNaC::exmap> old_points = with_intermediates(points, old_side), new_points = with_intermediates(points, new_side);
+  SidePoints old_points(points, old_side), new_points(points, new_side);
   EntrySides sides{old_side, new_side, old_points, new_points, text_decides};
   for (const std::string& name : new_side.order) {
     auto it = old_side.entries.find(name);
@@ -472,7 +491,7 @@ EquationDiff compare_derivations(const DerivationRecord& a, const DerivationReco
   if (different && !symbols_differ && only_motion_forms && a.multipliers.empty() && b.multipliers.empty() &&
       intermediates_at_the_states) {
     MotionForm old_form = motion_form(a, old_side, space, rename), new_form = motion_form(b, new_side, space, Renaming({}));
-    MotionComparison m = compare_accelerations(old_form, new_form, old_points, new_points, o.tolerance);
+    MotionComparison m = compare_accelerations(old_form, new_form, old_points.values(), new_points.values(), o.tolerance);
     same = m.same;
     out.motion = fmt::format("the accelerations q'' of both sides {} at {} random states (largest relative difference {:.3g})",
                              m.same ? "agree" : "differ", m.states, m.max_rel_difference);
