@@ -41,7 +41,7 @@ std::string shown(const std::string& expression) {
 }
 
 // the two sides of an entry, one line where their texts agree: the same expression of a tree's
-// quantities, which differ (an identical entry has no text)
+// quantities, which differ (identical entries are only counted)
 std::string sides(const EntryComparison& c) {
   if (c.old_text == c.new_text) return fmt::format("    both: {} (of the tree's quantities, which differ: below)\n", shown(c.old_text));
   return fmt::format("    old: {}\n    new: {}\n", shown(c.old_text), shown(c.new_text));
@@ -85,8 +85,10 @@ std::string diff_text(const EquationDiff& d) {
   if (shown > listed_different) out += fmt::format("  … and {} more different (--format json lists them)\n", shown - listed_different);
   shown = 0;
   for (const EntryComparison& c : d.entries)
-    if (c.status == "equivalent" && shown++ < listed_equivalent) out += fmt::format("  equivalent: {} ({})\n", c.entry, level(c)) + sides(c);
-  if (shown > listed_equivalent) out += fmt::format("  … and {} more equivalent (--format json lists them)\n", shown - listed_equivalent);
+    if (c.status == "equivalent" && shown++ < listed_equivalent)
+      out += fmt::format("  equivalent: {} ({})\n", c.entry, level(c)) + sides(c);
+  if (shown > listed_equivalent)
+    out += fmt::format("  … and {} more equivalent (--format json lists them)\n", shown - listed_equivalent);
   out += changed_quantities(d.intermediates_changed);
   if (!d.motion.empty()) out += "  motion: " + d.motion + "\n";
   out += fmt::format("  {} entries compared: {} identical, {} equivalent, {} different\n", d.entries.size(), counts["identical"],

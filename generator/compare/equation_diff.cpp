@@ -171,7 +171,8 @@ std::string readable(const std::string& text, const std::vector<std::string>& in
   std::size_t last = 0;
   for (std::sregex_iterator i(out.begin(), out.end(), intermediate), end; i != end; ++i) {
     std::size_t k = std::stoul((*i)[1].str());
-    named += out.substr(last, static_cast<std::size_t>(i->position()) - last) + (k < intermediate_names.size() ? intermediate_names[k] : i->str());
+    named += out.substr(last, static_cast<std::size_t>(i->position()) - last);
+    named += k < intermediate_names.size() ? intermediate_names[k] : i->str();
     last = static_cast<std::size_t>(i->position() + i->length());
   }
   return named + out.substr(last);
@@ -190,8 +191,11 @@ bool share_intermediates(const ParsedSide& old_side, ParsedSide& new_side) {
     to_old[new_symbol] = old_symbol;
   }
   if (to_old.empty()) return true;
-  for (auto& [symbol, definition] : new_side.intermediates) symbol = symbol.subs(to_old, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product), definition = definition.subs(to_old, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
-  for (auto& [name, value] : new_side.entries) value = value.subs(to_old, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
+  for (auto& [symbol, definition] : new_side.intermediates) {
+    symbol = substituted(symbol, to_old);
+    definition = substituted(definition, to_old);
+  }
+  for (auto& [name, value] : new_side.entries) value = substituted(value, to_old);
   return true;
 }
 
@@ -224,15 +228,12 @@ std::vector<IntermediateChange> changed_intermediates(const ParsedSide& old_side
 }
 
 // a side's values at a random point: the point's, and its intermediates' evaluated in order (one
-// with a pole there is left a symbol, and the entries that use it are not evaluated at that point).
-// Every map here has symbols for keys: no_pattern looks each up, and pattern_is_not_product
-// spares every sum and product a scan of the map for products (without them, a 21-joint
-// tree's two copies took 53 s, with no_pattern alone 11 s)
+// with a pole there is left a symbol, and the entries that use it are not evaluated at that point)
 std::vector<GiNaC::exmap> with_intermediates(std::vector<GiNaC::exmap> points, const ParsedSide& side) {
   for (GiNaC::exmap& p : points)
     for (const auto& [symbol, definition] : side.intermediates) {
       try {
-        p[symbol] = definition.subs(p, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
+        p[symbol] = substituted(definition, p).evalf();
       } catch (const std::exception&) {
         continue;
       }
@@ -273,7 +274,7 @@ bool has_branches(const ex& e) {
 // the value at a point in 50-digit arithmetic, or none: a pole there, or not real
 std::optional<GiNaC::numeric> value_at(const ex& e, const GiNaC::exmap& point) {
   try {
-    ex v = e.subs(point, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
+    ex v = substituted(e, point).evalf();
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return std::nullopt;
     return GiNaC::ex_to<GiNaC::numeric>(v);
   } catch (const std::exception&) {
@@ -429,9 +430,9 @@ MotionForm motion_form(const DerivationRecord& r, const ParsedSide& side, Symbol
     if (r.velocities[c].rfind("der(", 0) == 0) {
       m.velocities[c] = space.symbol("s__" + rename(r.velocities[c].substr(4, r.velocities[c].size() - 5)));
       GiNaC::exmap to_state{{space.symbol("d__" + rename(r.velocities[c].substr(4, r.velocities[c].size() - 5))), m.velocities[c]}};
-      for (ex& f : m.forcing) f = f.subs(to_state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
-      m.mass_matrix = GiNaC::ex_to<GiNaC::matrix>(m.mass_matrix.subs(to_state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product));
-      for (ex& x : m.kinematics) x = x.subs(to_state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
+      for (ex& f : m.forcing) f = substituted(f, to_state);
+      m.mass_matrix = GiNaC::ex_to<GiNaC::matrix>(substituted(m.mass_matrix, to_state));
+      for (ex& x : m.kinematics) x = substituted(x, to_state);
     }
   return m;
 }

@@ -14,9 +14,9 @@ std::optional<std::vector<ex>> solve(const GiNaC::matrix& M, const std::vector<e
   unsigned n = M.rows();
   GiNaC::matrix A(n, n), b(n, 1), x(n, 1);
   for (unsigned i = 0; i < n; ++i) {
-    b(i, 0) = f[i].subs(at, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
+    b(i, 0) = substituted(f[i], at).evalf();
     x(i, 0) = GiNaC::symbol();
-    for (unsigned j = 0; j < n; ++j) A(i, j) = M(i, j).subs(at, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
+    for (unsigned j = 0; j < n; ++j) A(i, j) = substituted(M(i, j), at).evalf();
   }
   try {
     GiNaC::matrix s = A.solve(x, b);
@@ -35,7 +35,7 @@ std::optional<std::vector<ex>> solve(const GiNaC::matrix& M, const std::vector<e
 // q'' of one side at (q, q') given in `state` (values of q, of the q' symbols, and t)
 std::optional<std::vector<ex>> accelerations(const MotionForm& m, GiNaC::exmap state) {
   if (m.kinematics.empty()) return solve(m.mass_matrix, m.forcing, state);
-  for (std::size_t c = 0; c < m.velocities.size(); ++c) state[m.velocities[c]] = m.definitions[c].subs(state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf();
+  for (std::size_t c = 0; c < m.velocities.size(); ++c) state[m.velocities[c]] = substituted(m.definitions[c], state).evalf();
   auto s_dot = solve(m.mass_matrix, m.forcing, state);
   if (!s_dot) return std::nullopt;
   std::vector<ex> out;
@@ -44,12 +44,16 @@ std::optional<std::vector<ex>> accelerations(const MotionForm& m, GiNaC::exmap s
     for (std::size_t i = 0; i < m.coordinates.size(); ++i)
       a += r.diff(GiNaC::ex_to<GiNaC::symbol>(m.coordinates[i])) * m.coordinate_rates[i];
     for (std::size_t c = 0; c < m.velocities.size(); ++c) a += r.diff(GiNaC::ex_to<GiNaC::symbol>(m.velocities[c])) * (*s_dot)[c];
-    out.push_back(a.subs(state, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf());
+    out.push_back(substituted(a, state).evalf());
   }
   return out;
 }
 
 }  // namespace
+
+GiNaC::ex substituted(const GiNaC::ex& e, const GiNaC::exmap& values) {
+  return e.subs(values, GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product);
+}
 
 MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b, const std::vector<GiNaC::exmap>& a_points,
                                        const std::vector<GiNaC::exmap>& b_points, double tolerance) {
@@ -60,7 +64,8 @@ MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b,
   for (std::size_t k = 0; k < a_points.size() && k < b_points.size(); ++k) {
     GiNaC::exmap a_state = a_points[k], b_state = b_points[k];  // parameters, inputs, t and q as sampled
     for (std::size_t i = 0; i < a.coordinates.size(); ++i) {
-      ex rate = appell ? appell->kinematics[i].subs(appell == &a ? a_points[k] : b_points[k], GiNaC::subs_options::no_pattern | GiNaC::subs_options::pattern_is_not_product).evalf() : a_points[k].at(a.coordinate_rates[i]);
+      const GiNaC::exmap& own = appell == &a ? a_points[k] : b_points[k];
+      ex rate = appell ? substituted(appell->kinematics[i], own).evalf() : a_points[k].at(a.coordinate_rates[i]);
       a_state[a.coordinate_rates[i]] = b_state[a.coordinate_rates[i]] = rate;
     }
     auto x = accelerations(a, a_state), y = accelerations(b, b_state);
