@@ -150,15 +150,16 @@ bool is_model_file(const std::string& path) {
   return is_robot_file(path) || std::filesystem::path(path).extension().string() == ".toml";
 }
 
-// A model file's equations read best written out in q, as its author wrote them. A tree's are
-// compared in its quantities (world poses, composite inertias), which the numeric level evaluates in
-// order, where writing them out takes long: oblique_tree's 5 joints ran past the 300 s limit, the
+// Equations read best written out in q, as a model's author wrote them. A tree's are compared in
+// its quantities (world poses, composite inertias), which the numeric level evaluates in order,
+// where writing them out takes long: oblique_tree's 5 joints ran past the 300 s limit, the
 // seven-joint arm's URDF took a minute a side; trees of up to 4 velocities took under 0.4 s (models/:
-// measured_arm, geared_gripper, spatial_double_pendulum, four_bar_linkage). Robot files are trees.
-// Ball and free joints keep their quantities either way; a model without any is already written out.
-bool written_out_is_small(const std::string& path, const Equations& e) {
+// measured_arm, geared_gripper, spatial_double_pendulum, four_bar_linkage). The same rule for robot
+// files, so that a robot and the model file `eomgen import` writes of it compare alike. Ball and
+// free joints keep their quantities either way; a model without any is already written out.
+bool written_out_is_small(const Equations& e) {
   constexpr std::size_t written_out_up_to_velocities = 4;
-  return !is_robot_file(path) && !e.intermediates.empty() && e.num_velocities() <= written_out_up_to_velocities;
+  return !e.intermediates.empty() && e.num_velocities() <= written_out_up_to_velocities;
 }
 
 }  // namespace
@@ -167,7 +168,7 @@ std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnos
   std::string json;
   if (is_model_file(path)) {
     Derivation d = derive_model_file_for(path, ModelChoice{});
-    if (d.diagnostics.empty() && written_out_is_small(path, *d.equations)) d = derive_model_file_for(path, model_written_out());
+    if (d.diagnostics.empty() && written_out_is_small(*d.equations)) d = derive_model_file_for(path, model_written_out());
     if (!d.diagnostics.empty()) {
       for (const Diagnostic& x : d.diagnostics.list()) diagnostics.error(x.where, x.key, x.message, x.hint);
       return std::nullopt;
