@@ -14,7 +14,9 @@ Command add_diff_command(CLI::App& app) {
   auto o = std::make_shared<ComparisonOptions>();
   cmd->add_option("INPUTS", o->inputs, "OLD NEW: model files (.toml), robot files (MJCF .xml, URDF .urdf: imported as "
                                        "eomgen import reads them) or derived-equations JSON (eomgen derive --format json, "
-                                       "generated/*.json); with --self: model files or folders")->required();
+                                       "generated/*.json); with --self: model files or folders. Equations are written out "
+                                       "in q up to 4 velocities; a larger tree is compared in its quantities (poses, "
+                                       "inertias), which the report names where they differ")->required();
   cmd->add_option("--rename", o->renames, "A symbol renamed from OLD to NEW, one per flag: --rename k=stiffness");
   cmd->add_option("--tolerance", o->options.tolerance, "Numeric level: |old - new| <= T max(1, |old|, |new|) at every "
                   "random point, in 50-digit arithmetic (default 1e-30)");
