@@ -29,10 +29,10 @@ struct DerivationRecord {
   bool pseudo_velocities = false;  // Appell: velocities are pseudo-velocities with kinematic equations
 };
 
-/// Reads `path`: a .toml model file is derived written out in q, a robot file (MJCF, URDF) in its
-/// tree's quantities (written out, a 7-joint arm took a minute), anything else is read as
-/// derived-equations JSON. Mistakes (a missing file, a model-file error, a JSON that is not a derivation)
-/// go to `diagnostics` with their location.
+/// Reads `path`: a model file (.toml) or a robot file (MJCF, URDF) is derived, written out in q up
+/// to 4 velocities and in its tree's quantities beyond (written out, a 7-joint arm took a minute a
+/// side); anything else is read as derived-equations JSON. Mistakes (a missing file, a model-file
+/// error, a JSON that is not a derivation) go to `diagnostics` with their location.
 std::optional<DerivationRecord> read_derivation(const std::string& path, Diagnostics& diagnostics);
 
 }  // namespace eomgen

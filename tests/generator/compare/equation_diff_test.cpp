@@ -227,10 +227,11 @@ std::string robot_variant(const std::string& file, const std::string& from, cons
   return path;
 }
 
-// A robot is compared in its tree's quantities (written out, the seven-joint arm's took a minute a
-// side and thousands of terms an entry): the entries at random points, each side's quantities
-// evaluated in order, and the quantities whose definitions differ listed by name, the first of
-// them at the link that changed. Its first link's inertia turned by 0.1 rad about x changes M and f.
+// A robot of more than 4 velocities is compared in its tree's quantities (written out, the
+// seven-joint arm's took a minute a side and thousands of terms an entry): the entries at random
+// points, each side's quantities evaluated in order, and the quantities whose definitions differ
+// listed by name, the first of them at the link that changed. Its first link's inertia turned by
+// 0.1 rad about x changes M and f.
 TEST(EquationDiff, RobotsAreComparedInTheirTreesQuantities) {
   std::string arm = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/urdf/seven_joint_arm.urdf";
   std::string turned = robot_variant("seven_joint_arm.urdf", "rpy=\"0 0 0\"", "rpy=\"0.1 0 0\"", "turned_arm");
