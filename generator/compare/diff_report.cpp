@@ -42,7 +42,11 @@ std::string shown(const std::string& expression) {
 
 // the two sides of an entry, one line where their texts agree: the same expression of a tree's
 // quantities, which differ (identical entries are only counted)
+// where the decimals hide a difference, the new side says so
+constexpr const char* beyond_the_decimals = " (its numbers differ beyond 17 digits)";
+
 std::string sides(const EntryComparison& c) {
+  if (c.beyond_the_decimals) return fmt::format("    old: {}\n    new: {}{}\n", shown(c.old_text), shown(c.new_text), beyond_the_decimals);
   if (c.old_text == c.new_text) return fmt::format("    both: {} (of the tree's quantities, which differ: below)\n", shown(c.old_text));
   return fmt::format("    old: {}\n    new: {}\n", shown(c.old_text), shown(c.new_text));
 }
@@ -54,8 +58,8 @@ std::string changed_quantities(const std::vector<IntermediateChange>& changes) {
                                 changes.size() > listed ? fmt::format(", the first {}; --format json lists all", listed) : "");
   for (std::size_t i = 0; i < changes.size() && i < listed; ++i) {
     const IntermediateChange& c = changes[i];
-    out += fmt::format("    {}\n      old: {}\n      new: {}\n", c.name, c.old_text.empty() ? "(none)" : shown(c.old_text),
-                       c.new_text.empty() ? "(none)" : shown(c.new_text));
+    out += fmt::format("    {}\n      old: {}\n      new: {}{}\n", c.name, c.old_text.empty() ? "(none)" : shown(c.old_text),
+                       c.new_text.empty() ? "(none)" : shown(c.new_text), c.beyond_the_decimals ? beyond_the_decimals : "");
   }
   return out;
 }
@@ -105,13 +109,15 @@ std::string diff_json(const EquationDiff& d) {
                             c.old_value, c.new_value);
   for (const EntryComparison& c : d.entries)
     entries += fmt::format("{}{{\"entry\": {}, \"status\": \"{}\", \"decided_by\": \"{}\", \"old\": {}, \"new\": {}, "
-                           "\"max_abs_difference\": {}, \"max_rel_difference\": {}}}",
+                           "\"max_abs_difference\": {}, \"max_rel_difference\": {}, \"beyond_the_decimals\": {}}}",
                            entries.empty() ? "" : ", ", quote(c.entry), c.status, c.decided_by, quote(c.old_text),
-                           quote(c.new_text), rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference));
+                           quote(c.new_text), rounded_number(c.max_abs_difference), rounded_number(c.max_rel_difference),
+                           c.beyond_the_decimals);
   std::string intermediates;
   for (const IntermediateChange& c : d.intermediates_changed)
-    intermediates += fmt::format("{}{{\"name\": {}, \"old\": {}, \"new\": {}}}", intermediates.empty() ? "" : ", ", quote(c.name),
-                                 c.old_text.empty() ? "null" : quote(c.old_text), c.new_text.empty() ? "null" : quote(c.new_text));
+    intermediates += fmt::format("{}{{\"name\": {}, \"old\": {}, \"new\": {}, \"beyond_the_decimals\": {}}}",
+                                 intermediates.empty() ? "" : ", ", quote(c.name), c.old_text.empty() ? "null" : quote(c.old_text),
+                                 c.new_text.empty() ? "null" : quote(c.new_text), c.beyond_the_decimals);
   return fmt::format("{{\"verdict\": \"{}\", \"old\": {}, \"new\": {}, \"symbols\": {{\"added\": {}, \"removed\": {}, "
                      "\"renamed\": [{}], \"defaults_changed\": [{}]}}, \"entries\": [{}], \"entries_only_old\": {}, "
                      "\"entries_only_new\": {}, \"intermediates_changed\": [{}], \"motion\": {}}}\n",

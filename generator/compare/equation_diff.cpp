@@ -158,9 +158,6 @@ std::string shown_text(const ex& e) {
   return canonical_text(decimals(e));
 }
 
-// where the decimals hide a difference, the new side says so
-constexpr const char* beyond_the_decimals = " (its numbers differ beyond 17 digits)";
-
 // the placeholders back to der(q) and to the intermediates' names for the report
 std::string readable(const std::string& text, const std::vector<std::string>& intermediate_names) {
   static const std::regex second(R"(\bdd__([A-Za-z_][A-Za-z0-9_]*))"), first(R"(\bd__([A-Za-z_][A-Za-z0-9_]*))"),
@@ -218,8 +215,7 @@ std::vector<IntermediateChange> changed_intermediates(const ParsedSide& old_side
     if (it == old_text.end()) {
       out.push_back({name, "", new_text[name][1]});
     } else if (it->second[0] != new_text[name][0]) {
-      bool hidden = it->second[1] == new_text[name][1];
-      out.push_back({name, it->second[1], new_text[name][1] + (hidden ? beyond_the_decimals : "")});
+      out.push_back({name, it->second[1], new_text[name][1], it->second[1] == new_text[name][1]});
     }
   }
   for (const std::string& name : old_side.intermediate_names)
@@ -316,7 +312,7 @@ void decide(EntryComparison& c, const ex& old_e, const ex& new_e, const EntrySid
   // shown with decimals
   c.old_text = readable(shown_text(old_e), s.old_side.intermediate_names);
   c.new_text = readable(shown_text(new_e), s.new_side.intermediate_names);
-  if (c.old_text == c.new_text && old_exact != new_exact) c.new_text += beyond_the_decimals;
+  c.beyond_the_decimals = c.old_text == c.new_text && old_exact != new_exact;
   if (s.text_decides) {
     ex difference = (old_e - new_e).expand();
     bool zero = difference.is_zero();

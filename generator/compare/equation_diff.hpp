@@ -23,8 +23,9 @@ struct DiffOptions {
 
 struct EntryComparison {
   std::string entry, status, decided_by;  // identical | equivalent | different; text | symbolic | numeric
-  std::string old_text, new_text;
+  std::string old_text, new_text;  // long numbers as 17-digit decimals
   double max_abs_difference = 0, max_rel_difference = 0;
+  bool beyond_the_decimals = false;  // the texts agree where the exact numbers differ
 };
 
 struct DefaultChange {
@@ -36,6 +37,7 @@ struct DefaultChange {
 /// whose definition differs, by name; the text of a side that lacks it is empty.
 struct IntermediateChange {
   std::string name, old_text, new_text;
+  bool beyond_the_decimals = false;  // as EntryComparison's
 };
 
 struct EquationDiff {
