@@ -42,9 +42,10 @@ Command add_import_command(CLI::App& app) {
   cmd->add_option("--name", *name, "The model's name, a C++ identifier (default: the robot's, or the file's)");
   auto free_base = std::make_shared<bool>(false);
   cmd->add_flag("--free-base", *free_base,
-                "URDF: hang the root link from the world by a free joint (position, unit quaternion, angular velocity), "
-                "as a humanoid's or a quadruped's base floats; URDF fixes the root link to the world (a robot mounted on a "
-                "link named world by a fixed joint floats by that joint)");
+                "Hang the robot's base from the world by a free joint (position, unit quaternion, angular velocity), "
+                "as a humanoid's or a quadruped's base floats. URDF: the root link, which URDF fixes to the world (a robot "
+                "mounted on a link named world by a fixed joint floats by that joint); MJCF: the body in <worldbody> without "
+                "joints that carries the robot");
   auto masses_from_shapes = std::make_shared<bool>(false);
   cmd->add_flag("--masses-from-shapes", *masses_from_shapes,
                 "URDF: weigh each link without an <inertial> by its <collision> shapes at the density of water, as MuJoCo reads a URDF; "

@@ -66,7 +66,90 @@ FreeBase mounted_on_the_world(const std::string& urdf, const std::vector<UrdfJoi
   return out;
 }
 
+// the line of the MJCF <body> named `name`, 1 when the file does not write it (an included file's)
+int body_line(const std::string& mjcf, const std::string& name) {
+  for (std::size_t at = element_start(mjcf, "body"); at != std::string::npos; at = element_start(mjcf, "body", at + 1))
+    if (attribute(mjcf, at, mjcf.find('>', at), "name") == name) return line_of(mjcf, at);
+  return 1;
+}
+
+// whether a body below `top` (MuJoCo's bodies come parents first) has a joint
+bool carries_joints(const Robot& r, std::size_t top) {
+  std::vector<bool> below(r.bodies.size(), false);
+  below[top] = true;
+  for (std::size_t b = top + 1; b < r.bodies.size(); ++b) {
+    int parent = r.bodies[b].parent;
+    below[b] = parent >= 0 && below[std::size_t(parent)];
+    if (below[b] && !r.bodies[b].joints.empty()) return true;
+  }
+  return false;
+}
+
+std::string unused_joint_name(const Robot& r) {
+  auto taken = [&](const std::string& name) {
+    return std::any_of(r.bodies.begin(), r.bodies.end(), [&](const RobotBody& b) {
+      return std::any_of(b.joints.begin(), b.joints.end(), [&](const RobotJoint& j) { return j.name == name; });
+    });
+  };
+  std::string name = "root";
+  for (int k = 2; taken(name); ++k) name = fmt::format("root_{}", k);
+  return name;
+}
+
+std::string listed_pair(const std::vector<std::string>& names) {
+  return fmt::format("'{}' and '{}'{}", names[0], names[1], names.size() > 2 ? ", …" : "");
+}
+
 }  // namespace
+
+FreeBase free_base_of_mjcf(const Robot& r, const std::string& mjcf) {
+  FreeBase out;
+  std::vector<std::size_t> bases, held;
+  std::vector<std::string> base_names;
+  for (std::size_t b = 0; b < r.bodies.size(); ++b) {
+    const RobotBody& body = r.bodies[b];
+    if (body.parent >= 0) continue;
+    for (const RobotJoint& j : body.joints)
+      if (j.type == "free") {
+        out.line = body_line(mjcf, body.name);
+        out.problem = fmt::format("body '{}' floats already, by its free joint '{}'", body.name, j.name);
+        out.hint = "import the robot without --free-base";
+        return out;
+      }
+    if (!body.joints.empty()) held.push_back(b);
+    else if (carries_joints(r, b)) bases.push_back(b), base_names.push_back(body.name);
+  }
+  // a single rigid body: the one body there, without joints
+  if (bases.empty() && held.empty())
+    for (std::size_t b = 0; b < r.bodies.size(); ++b)
+      if (r.bodies[b].parent < 0) bases.push_back(b), base_names.push_back(r.bodies[b].name);
+  if (bases.size() == 1) {
+    out.link = r.bodies[bases[0]].name;
+    out.link_line = body_line(mjcf, out.link);
+    out.joint = unused_joint_name(r);
+    return out;
+  }
+  if (bases.size() > 1) {
+    out.line = body_line(mjcf, base_names[0]);
+    out.problem = fmt::format("{} bodies in <worldbody> carry joints without having one ({}): which one floats is not clear",
+                              bases.size(), listed_pair(base_names));
+    out.hint = "put <freejoint/> in the body that floats, and import without --free-base";
+  } else if (!held.empty()) {
+    const RobotBody& body = r.bodies[held[0]];
+    out.line = body_line(mjcf, body.name);
+    out.problem = fmt::format("body '{}' at the top of the robot is held to the world by its {} '{}', and no body without "
+                              "joints carries the robot to be set free",
+                              body.name, body.joints[0].type, body.joints[0].name);
+    out.hint = fmt::format("put the robot in a <body> without joints (its base) to set that free, or give '{}' a "
+                           "<freejoint/> in place of its joints and import without --free-base",
+                           body.name);
+  } else {
+    out.line = 1;
+    out.problem = "the model has no body in <worldbody> to set free";
+    out.hint = "an MJCF robot's bodies go in <worldbody>";
+  }
+  return out;
+}
 
 FreeBase free_base_of(const std::string& urdf) {
   FreeBase out;

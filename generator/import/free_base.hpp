@@ -1,7 +1,9 @@
-/// @file A URDF robot given a floating base at import (`eomgen import --free-base`): URDF
+/// @file A URDF or MJCF robot given a floating base at import (`eomgen import --free-base`): URDF
 /// describes a robot fixed to the world by its root link, and a floating base (a humanoid, a
-/// quadruped, a drone) is what the reader adds, as Pinocchio's JointModelFreeFlyer does. The free joint
-/// has MuJoCo's layout (position, unit quaternion, angular velocity).
+/// quadruped, a drone) is what the reader adds, as Pinocchio's JointModelFreeFlyer does; an MJCF
+/// file written for a fixed base (its base a body without joints) floats the same way, without
+/// editing it to add <freejoint/>. The free joint has MuJoCo's layout (position, unit quaternion,
+/// angular velocity).
 #pragma once
 
 #include <optional>
@@ -31,6 +33,13 @@ struct FreeBase {
   std::string note;   // how the base was set free, when not by a new joint
 };
 FreeBase free_base_of(const std::string& urdf);
+
+/// The body of an MJCF robot that floats, as MuJoCo read it (`r`, `mjcf` the file's text for the
+/// lines): the one body in <worldbody> without joints that carries bodies with joints (the robot's
+/// base; a lone body without joints when none carries any), its free joint named as free_base_of
+/// names it. Or the located reason it cannot be: a body there that floats already, a base that a
+/// joint holds to the world, several bases.
+FreeBase free_base_of_mjcf(const Robot& r, const std::string& mjcf);
 
 /// The floating link's body, at the top of the robot as read on its fixed base, given the free joint
 /// first, starting where the body sits (as MuJoCo's free joints start at their body's place, qpos0);

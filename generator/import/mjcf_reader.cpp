@@ -390,15 +390,12 @@ void note_right_angles(const RightAngleRounding& turns, Robot& r) {
 std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, RobotReading reading) {
   char error[1000] = "";
   std::string urdf = urdf_text_of(path);
-  if (reading.free_base && urdf.empty())
-    return UnreadableRobot{1, "--free-base sets a URDF robot's root link free; this file is MJCF",
-                           "in MJCF, put <freejoint/> in the root body, and import without --free-base"};
   if (reading.masses_from_shapes && urdf.empty())
     return UnreadableRobot{1, "--masses-from-shapes weighs a URDF's links without <inertial>; this file is MJCF, whose "
                               "bodies without <inertial> MuJoCo weighs by their geoms already",
                            "import without --masses-from-shapes"};
   std::optional<FreeBase> freed;
-  if (reading.free_base) {
+  if (reading.free_base && !urdf.empty()) {
     freed = free_base_of(urdf);
     if (!freed->problem.empty()) return UnreadableRobot{freed->line, freed->problem, freed->hint};
     urdf = with_own_fusestatic_off(urdf);
@@ -438,6 +435,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
     body.inertia_axes = quaternion(m->body_iquat + 4 * b);
     body.principal_inertia = triple(m->body_inertia + 3 * b);
     r.bodies.push_back(body);
+  }
+  if (reading.free_base && urdf.empty()) {
+    freed = free_base_of_mjcf(r, text_of_file(path));
+    if (!freed->problem.empty()) return UnreadableRobot{freed->line, freed->problem, freed->hint};
   }
   if (freed) {
     if (!set_free(r, *freed))

@@ -1,6 +1,6 @@
 // `eomgen import --free-base` (generator/import/free_base.hpp): a URDF's root link (or the link a
-// fixed joint mounts on the world) set free by a free joint; the robots it cannot set free (and an
-// MJCF robot) refused with the line and what to do; the imported floating arm's M: its
+// fixed joint mounts on the world) set free by a free joint, and an MJCF robot's base body; the
+// robots it cannot set free refused with the line and what to do; the imported floating arm's M: its
 // translational block is the robot's whole mass (MuJoCo's layout: the base's linear velocity in
 // world axes), its joints' block that of the same arm on a fixed base; and its fixed links kept.
 #include <gtest/gtest.h>
@@ -103,11 +103,86 @@ TEST(FreeBase, AMasslessFloatingLinkAboveOneJointIsRefused) {
   EXPECT_TRUE(imported_model_text(path, two_diagnostics, false, "", {true})) << two_diagnostics.format();
 }
 
-TEST(FreeBase, AnMjcfRobotIsToldWhereItsFreeJointGoes) {
-  Diagnostics diagnostics;
-  std::string mjcf = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml";
-  EXPECT_FALSE(imported_model_text(mjcf, diagnostics, false, "", {true}));
-  EXPECT_NE(diagnostics.format().find("put <freejoint/> in the root body"), std::string::npos) << diagnostics.format();
+// tests/crosscheck's seven-joint arm (an MJCF arm whose first link hangs from the world by a hinge),
+// its links put in a base body without joints, with the file's text after `base_opens` in that body
+std::string arm_on_a_base(const std::string& base_opens) {
+  std::string arm = read_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml");
+  arm.replace(arm.find("<worldbody>"), 11,
+              "<worldbody>\n    <body name=\"base\" pos=\"0.1 -0.2 0.5\" quat=\"0.8 0 0.6 0\">" + base_opens +
+                  "\n      <inertial pos=\"0.01 0 -0.05\" mass=\"4\" diaginertia=\"0.05 0.06 0.07\"/>");
+  arm.replace(arm.find("</worldbody>"), 12, "</body>\n  </worldbody>");
+  return arm;
+}
+
+std::string written(const std::string& name, const std::string& text) {
+  std::string path = temporary_directory() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// without the comments, which name the file read
+std::string without_comment_lines(const std::string& model_text) {
+  std::string kept;
+  for (std::size_t at = 0; at < model_text.size();) {
+    std::size_t end = model_text.find('\n', at);
+    if (end == std::string::npos) end = model_text.size();
+    if (model_text[at] != '#') kept += model_text.substr(at, end - at) + "\n";
+    at = end + 1;
+  }
+  return kept;
+}
+
+// --free-base on an MJCF arm on a base body without joints: the model file of the same file with
+// <freejoint name="root"/> in that body, but a note; M's translational block the whole mass
+TEST(FreeBase, AnMjcfRobotOnAFixedBaseFloatsAsItsFreeJointWouldFloatIt) {
+  std::string fixed = written("arm_on_a_base.xml", arm_on_a_base(""));
+  std::string floating = written("arm_on_a_free_base.xml", arm_on_a_base("\n      <freejoint name=\"root\"/>"));
+  Diagnostics set_free_diagnostics, floating_diagnostics;
+  std::optional<std::string> set_free = imported_model_text(fixed, set_free_diagnostics, false, "arm", {true});
+  std::optional<std::string> as_written = imported_model_text(floating, floating_diagnostics, false, "arm");
+  ASSERT_TRUE(set_free && as_written) << set_free_diagnostics.format() << floating_diagnostics.format();
+  EXPECT_EQ(without_comment_lines(*set_free), without_comment_lines(*as_written));
+  EXPECT_NE(set_free->find("root_x = 0.1"), std::string::npos) << "starts where the file places the base:\n" << *set_free;
+  Equations e = derive_text(*set_free);
+  ASSERT_EQ(e.mass_matrix.rows(), 13u);
+  const double mass = 4 + 2.7382 + 3.0431 + 2.3774 + 1.9657 + 1.4407 + 0.3967 + 0.566;  // the file's masses
+  std::map<std::string, double> values;
+  for (const std::string& name : e.symbols.coordinate_names) values[name] = name == "root_qw" ? 1.0 : 0.3;
+  for (const GiNaC::realsymbol& v : e.symbols.velocities) values[v.get_name()] = 0;
+  GiNaC::exmap at = point_by_name(e, values);
+  for (unsigned r = 0; r < 3; ++r)
+    for (unsigned c = 0; c < 3; ++c) EXPECT_NEAR(value_at(e.mass_matrix(r, c), at), r == c ? mass : 0.0, 1e-13) << r << ", " << c;
+}
+
+// an MJCF robot that cannot be set free: the line of its body and what to do
+TEST(FreeBase, AnMjcfRobotWithoutABaseToSetFreeIsToldWhatToDo) {
+  auto refusal = [](const std::string& path) {
+    Diagnostics diagnostics;
+    EXPECT_FALSE(imported_model_text(path, diagnostics, false, "", {true}));
+    return diagnostics.format();
+  };
+  std::string hinged = refusal(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/mjcf/seven_joint_arm.xml");
+  EXPECT_NE(hinged.find("seven_joint_arm.xml:7:1: error: body 'link1' at the top of the robot is held to the world by its "
+                        "hinge 'q1'"),
+            std::string::npos)
+      << hinged;
+  EXPECT_NE(hinged.find("hint: put the robot in a <body> without joints (its base) to set that free, or give 'link1' a "
+                        "<freejoint/>"),
+            std::string::npos)
+      << hinged;
+  std::string floating = refusal(written("arm_floating.xml", arm_on_a_base("\n      <freejoint name=\"float\"/>")));
+  EXPECT_NE(floating.find("arm_floating.xml:7:1: error: body 'base' floats already, by its free joint 'float'"), std::string::npos)
+      << floating;
+  std::string two = arm_on_a_base("");
+  two.replace(two.find("</worldbody>"), 12,
+              "<body name=\"cart\"><inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/><body name=\"wheel\">"
+              "<joint name=\"axle\" type=\"hinge\"/><inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/></body>"
+              "</body>\n  </worldbody>");
+  std::string ambiguous = refusal(written("two_bases.xml", two));
+  EXPECT_NE(ambiguous.find("2 bodies in <worldbody> carry joints without having one ('base' and 'cart'): which one floats "
+                           "is not clear"),
+            std::string::npos)
+      << ambiguous;
 }
 
 // M with the shoulder at 0.4, the elbow at −0.7 and the base at the origin, unturned
