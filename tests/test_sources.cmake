@@ -83,6 +83,7 @@ set(EOMGEN_TEST_FILES
   runtime/step_stability_test.cpp                   fast
   runtime/excited_modes_test.cpp                    fast
   runtime/simulation_budget_test.cpp                fast
+  runtime/stiffness_ratio_test.cpp                  fast
   studies/stability_studies_test.cpp                slow
   studies/run_studies_test.cpp                      slow
   cli/stability_command_test.cpp                    cli

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "simulation.hpp"
 
 namespace eomgen::runtime {
@@ -59,6 +61,10 @@ struct WorkPrecision {
 /// The fastest decay rate (largest −Re λ) over the slowest rate (smallest nonzero |λ|) of
 /// ∂x'/∂x at x0: large for stiff systems, about zero for undamped oscillations however fast.
 double stiffness_ratio(const Problem& problem, const std::vector<double>& x0, double t0);
+/// The same of the Jacobian J, NaN when it is not finite. Zero is relative to J's eigenvalue
+/// scale (system_scales.hpp), so that the ratio does not change when J is scaled in time or
+/// its states in units, and a Jordan chain at zero split by rounding is no slow rate.
+double stiffness_ratio_of(const Eigen::MatrixXd& J);
 
 /// `progress` is called with a line after every run (for the user's terminal).
 WorkPrecision work_precision(const Problem& problem, const std::vector<double>& x0, const WorkPrecisionSettings& settings,
