@@ -28,6 +28,8 @@ struct Problem {
   std::function<void(double t, double* u)> input_signal = nullptr;
   /// u(t): `inputs`, or the signal's values written into `scratch`; nullptr without inputs.
   const double* inputs_at(double t, std::vector<double>& scratch) const;
+  /// `inputs` as the generated functions take them: nullptr without inputs.
+  const double* held_inputs() const { return inputs.empty() ? nullptr : inputs.data(); }
 };
 
 struct SimulationSettings {

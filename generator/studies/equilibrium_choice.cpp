@@ -6,6 +6,7 @@
 
 #include "analyse/equilibrium.hpp"
 #include "analyse/state_check.hpp"
+#include "analyse/unbalanced_rate.hpp"
 #include "studies/equilibrium_choice.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"
@@ -29,6 +30,24 @@ std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vect
   if (why.empty()) return std::nullopt;
   std::cerr << fmt::format("eomgen: error: no stability analysis at {}: {}\n", which, why);
   return exit_numerical_failure;
+}
+
+// a velocity whose rate at rest is one number in every configuration: no equilibrium exists (said,
+// true), where Newton would only report that it found none
+bool say_unbalanced_rate(const runtime::Problem& problem, const std::vector<double>& initial) {
+  std::optional<runtime::UnbalancedRate> unbalanced = runtime::unbalanced_rate(problem, initial);
+  if (!unbalanced) return false;
+  const eomgen_model_abi& m = *problem.model;
+  std::cerr << fmt::format("eomgen: error: no equilibrium exists: at rest, {} changes at the rate {:.6g} in every "
+                           "configuration tried ({} about the initial one), so nothing balances what drives it\n  hint: {}\n",
+                           m.state_names[m.num_coordinates + unbalanced->velocity], unbalanced->rate,
+                           unbalanced->configurations,
+                           m.num_quaternions ? "a floating base falls unless something holds it: hold it (a robot imported "
+                                               "without --free-base stands on a fixed base) to analyse its joints, or add "
+                                               "the force that holds it"
+                                             : "an equilibrium needs a force that balances this one (a spring, a support, "
+                                               "an input)");
+  return true;
 }
 
 }  // namespace
@@ -84,6 +103,7 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
   }
   if (auto status = refuse_unfit(problem, initial, "the model's initial state (where the search starts)")) return status;
   out = runtime::find_equilibrium(problem, initial);
+  if (!out.converged && say_unbalanced_rate(problem, initial)) return exit_user_error;
   if (!out.converged) {
     std::cerr << fmt::format("eomgen: no equilibrium found near the model's initial values after {} Newton steps "
                              "(largest residual {:.3g})\n  hint: name one with --at q=VALUE (and --at 'der(q)=VALUE' for a "

@@ -8,12 +8,10 @@ namespace {
 
 using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
 
-const double* inputs_of(const Problem& p) { return p.inputs.empty() ? nullptr : p.inputs.data(); }
-
 RowMajor jacobian_with_gain(const Problem& p, const std::vector<double>& x, double alpha) {
   const eomgen_model_abi& m = *p.model;
   RowMajor J(m.num_states, m.num_states);
-  m.jacobian_state_stabilized(0.0, x.data(), inputs_of(p), p.parameters.data(), alpha, 0.0, J.data());
+  m.jacobian_state_stabilized(0.0, x.data(), p.held_inputs(), p.parameters.data(), alpha, 0.0, J.data());
   return J;
 }
 
@@ -130,7 +128,7 @@ ManifoldLinearization manifold_linearization(const Problem& problem, const std::
   for (std::size_t i = 0; i < r.kept.size(); ++i) r.A.row(static_cast<long>(i)) = J.row(r.kept[i]) * r.basis;
   RowMajor B(states, std::max<std::size_t>(m.num_inputs, 1));
   B.setZero();
-  if (m.num_inputs) m.jacobian_input(0.0, x.data(), inputs_of(problem), problem.parameters.data(), B.data());
+  if (m.num_inputs) m.jacobian_input(0.0, x.data(), problem.held_inputs(), problem.parameters.data(), B.data());
   r.B.resize(static_cast<long>(r.kept.size()), static_cast<long>(m.num_inputs));
   for (std::size_t i = 0; i < r.kept.size(); ++i)
     r.B.row(static_cast<long>(i)) = B.row(r.kept[i]).head(static_cast<long>(m.num_inputs));

@@ -30,15 +30,17 @@ Derivatives evaluate(const Problem& p, const std::vector<double>& x) {
   return d;
 }
 
-// zero, for this model: relative to the size of its generalized stiffness at the state
-double tolerance_for(const Derivatives& d) { return 1e-9 * std::max(1.0, d.Q.cwiseAbs().maxCoeff()); }
+// zero, for this model: relative to the size of its generalized stiffness at the state (f over it
+// is the displacement to the equilibrium), with no floor in absolute units: a floor of 1 took a
+// pendulum of 1e-12 kg at 0.5 rad for an equilibrium
+double tolerance_for(const Derivatives& d) { return 1e-9 * d.Q.cwiseAbs().maxCoeff(); }
 
 // Appell's equations: a steady motion has x' = 0 on the reduced state (the non-cyclic
 // coordinates stand still, the pseudo-velocities are constant)
 Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
   Equilibrium e;
   e.residual = reduced_rate(problem, state).cwiseAbs().maxCoeff();
-  e.tolerance = 1e-9 * std::max(1.0, reduced_jacobian(problem, state).cwiseAbs().maxCoeff());
+  e.tolerance = 1e-9 * reduced_jacobian(problem, state).cwiseAbs().maxCoeff();
   e.converged = e.residual <= e.tolerance;
   e.state = std::move(state);
   return e;

@@ -6,7 +6,6 @@ namespace eomgen::runtime {
 
 namespace {
 using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
-const double* inputs_of(const Problem& p) { return p.inputs.empty() ? nullptr : p.inputs.data(); }
 }  // namespace
 
 bool has_pseudo_velocities(const eomgen_model_abi& m) {
@@ -24,7 +23,7 @@ std::vector<int> reduced_state(const eomgen_model_abi& m) {
 Eigen::VectorXd reduced_rate(const Problem& p, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::vector<double> xdot(m.num_states);
-  m.rhs(0.0, x.data(), inputs_of(p), p.parameters.data(), xdot.data());
+  m.rhs(0.0, x.data(), p.held_inputs(), p.parameters.data(), xdot.data());
   std::vector<int> kept = reduced_state(m);
   Eigen::VectorXd r(kept.size());
   for (std::size_t k = 0; k < kept.size(); ++k) r[static_cast<long>(k)] = xdot[static_cast<std::size_t>(kept[k])];
@@ -34,7 +33,7 @@ Eigen::VectorXd reduced_rate(const Problem& p, const std::vector<double>& x) {
 Eigen::MatrixXd reduced_jacobian(const Problem& p, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   RowMajor J(m.num_states, m.num_states);
-  m.jacobian_state(0.0, x.data(), inputs_of(p), p.parameters.data(), J.data());
+  m.jacobian_state(0.0, x.data(), p.held_inputs(), p.parameters.data(), J.data());
   std::vector<int> kept = reduced_state(m);
   Eigen::MatrixXd A(kept.size(), kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i)
@@ -46,7 +45,7 @@ Eigen::MatrixXd reduced_input_jacobian(const Problem& p, const std::vector<doubl
   const eomgen_model_abi& m = *p.model;
   RowMajor B(m.num_states, std::max<std::size_t>(m.num_inputs, 1));
   B.setZero();
-  if (m.num_inputs) m.jacobian_input(0.0, x.data(), inputs_of(p), p.parameters.data(), B.data());
+  if (m.num_inputs) m.jacobian_input(0.0, x.data(), p.held_inputs(), p.parameters.data(), B.data());
   std::vector<int> kept = reduced_state(m);
   Eigen::MatrixXd out(kept.size(), m.num_inputs);
   for (std::size_t i = 0; i < kept.size(); ++i)

@@ -114,7 +114,7 @@ void accuracy_horizons(const Problem& p, const std::vector<double>& x0, const Wo
 double stiffness_ratio(const Problem& p, const std::vector<double>& x0, double t0) {
   const eomgen_model_abi& m = *p.model;
   Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
-  m.jacobian_state(t0, x0.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), J.data());
+  m.jacobian_state(t0, x0.data(), p.held_inputs(), p.parameters.data(), J.data());
   return stiffness_ratio_of(J);
 }
 

@@ -25,6 +25,17 @@ TEST(StabilityCommand, JsonHasTheDocumentedKeys) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one JSON object on one line";
 }
 
+// a body thrown under gravity has no equilibrium: said with why, not as a search that failed
+TEST(StabilityCommand, AFallingBodyHasNoEquilibriumAndIsToldWhy) {
+  Output r = eomgen("stability '" + model_path("tumbling_body") + "'");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("error: no equilibrium exists: at rest, der(z) changes at the rate -9.81 in every configuration tried"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("hint: a floating base falls unless something holds it"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("no equilibrium found"), std::string::npos) << r.err;
+}
+
 // vanishing Hurwitz conditions mean "at best marginal", never "holds"
 TEST(StabilityCommand, SymbolicConditionsThatVanishDecideNothing) {
   Output undamped = eomgen("stability '" + model_path("two_mass_spring_damper") + "' --set d1=0 --set d2=0 --symbolic k1");

@@ -8,6 +8,7 @@
 
 #include "analyse/equilibrium.hpp"
 #include "analyse/linear_stability.hpp"
+#include "analyse/unbalanced_rate.hpp"
 #include "generated/header_registry.hpp"
 
 namespace eomgen::test {
@@ -76,6 +77,40 @@ TEST(LinearStability, UndampedPendulumIsACentreByLagrangeDirichlet) {
   EXPECT_EQ(r.verdict, "marginally_stable");
   EXPECT_EQ(r.phase_plane, "centre");
   EXPECT_TRUE(has_theorem(r, "Lagrange-Dirichlet"));
+}
+
+// an equilibrium is decided in the model's own scales: the pendulum at 0.5 rad is none and
+// hanging is one for masses from 1e-12 to 1e12 kg and gravities from 1e-6 to 1e6 (a tolerance of
+// at least 1e-9 in absolute units took 0.5 rad for one at 1e-12 kg)
+TEST(LinearStability, AnEquilibriumIsOneAtEveryScale) {
+  for (double mass : {1e-12, 1.0, 1e12})
+    for (double g : {1e-6, 9.81, 1e6}) {
+      SCOPED_TRACE(testing::Message() << "m = " << mass << ", g = " << g);
+      Problem p = problem_of("pendulum", {{"m", mass}, {"g", g}});
+      EXPECT_FALSE(runtime::check_equilibrium(p, {0.5, 0.0}).converged);
+      EXPECT_TRUE(runtime::check_equilibrium(p, {0.0, 0.0}).converged);
+      runtime::Equilibrium found = runtime::find_equilibrium(p, {0.5, 0.0});
+      ASSERT_TRUE(found.converged);
+      EXPECT_NEAR(found.state[0], 0.0, 1e-9);
+    }
+}
+
+// a free body under gravity has no equilibrium, and says why: at rest, der(z) changes at -g in
+// every configuration, at every g; a pendulum's rates change with its angle
+TEST(LinearStability, AFallingBodyHasARateThatNothingBalances) {
+  for (double g : {1e-6, 9.81, 1e6}) {
+    Problem falling = problem_of("tumbling_body", {{"g", g}});
+    std::vector<double> start(falling.model->default_state, falling.model->default_state + falling.model->num_states);
+    EXPECT_FALSE(runtime::find_equilibrium(falling, start).converged);
+    std::optional<runtime::UnbalancedRate> unbalanced = runtime::unbalanced_rate(falling, start);
+    ASSERT_TRUE(unbalanced) << "g = " << g;
+    EXPECT_EQ(std::string(falling.model->state_names[falling.model->num_coordinates + unbalanced->velocity]), "der(z)");
+    EXPECT_NEAR(unbalanced->rate, -g, 1e-12 * g);
+  }
+  Problem pendulum = problem_of("pendulum");
+  EXPECT_FALSE(runtime::unbalanced_rate(pendulum, {0.5, 0.0}));
+  EXPECT_FALSE(runtime::unbalanced_rate(problem_of("tumbling_body", {{"g", 0.0}}), std::vector<double>{0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0}))
+      << "without gravity it rests anywhere";
 }
 
 TEST(LinearStability, DampedPendulumDecaysAtTheClassicalRate) {

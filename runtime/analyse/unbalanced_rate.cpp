@@ -1,0 +1,55 @@
+#include "analyse/unbalanced_rate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace eomgen::runtime {
+
+namespace {
+
+// x' at rest in configuration q (velocities zero)
+std::vector<double> rates_at_rest(const Problem& p, std::vector<double> x) {
+  const eomgen_model_abi& m = *p.model;
+  std::fill(x.begin() + std::ptrdiff_t(m.num_coordinates), x.end(), 0.0);
+  std::vector<double> rates(m.num_states);
+  m.rhs(0.0, x.data(), p.held_inputs(), p.parameters.data(), rates.data());
+  return rates;
+}
+
+// start's configuration moved at random: each coordinate by up to max(1, |q|), quaternions normalized
+std::vector<double> moved(const eomgen_model_abi& m, std::vector<double> x, std::mt19937& random) {
+  std::uniform_real_distribution<double> step(-1, 1);
+  for (std::size_t i = 0; i < m.num_coordinates; ++i) x[i] += step(random) * std::max(1.0, std::abs(x[i]));
+  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
+    const std::size_t* q = m.quaternion_coordinates + 4 * k;
+    double norm = std::sqrt(x[q[0]] * x[q[0]] + x[q[1]] * x[q[1]] + x[q[2]] * x[q[2]] + x[q[3]] * x[q[3]]);
+    for (int c = 0; c < 4; ++c) x[q[c]] /= norm;
+  }
+  return x;
+}
+
+}  // namespace
+
+std::optional<UnbalancedRate> unbalanced_rate(const Problem& problem, const std::vector<double>& start) {
+  const eomgen_model_abi& m = *problem.model;
+  if (m.num_constraints) return std::nullopt;
+  std::size_t n = m.num_coordinates, k = m.num_states - n;
+  constexpr int configurations = 8;
+  std::vector<std::vector<double>> rates{rates_at_rest(problem, start)};
+  std::mt19937 random(7);
+  while (rates.size() < configurations) rates.push_back(rates_at_rest(problem, moved(m, start, random)));
+  double largest = 0;
+  for (const std::vector<double>& r : rates)
+    for (std::size_t v = 0; v < k; ++v) largest = std::max(largest, std::abs(r[n + v]));
+  for (std::size_t v = 0; v < k; ++v) {
+    double first = rates[0][n + v];
+    bool constant = std::isfinite(first) && std::abs(first) > 1e-9 * largest;
+    for (const std::vector<double>& r : rates)
+      constant = constant && std::abs(r[n + v] - first) <= 1e-9 * std::abs(first);
+    if (constant) return UnbalancedRate{v, first, configurations};
+  }
+  return std::nullopt;
+}
+
+}  // namespace eomgen::runtime

@@ -1,0 +1,26 @@
+/// @file Why no equilibrium exists, when the equations say so plainly: at rest, one velocity's
+/// rate is the same number, not zero, in every configuration (a floating base falls with gravity
+/// whatever its joints do, since nothing holds it; a block pushed by a constant force speeds up
+/// wherever it is). Newton's search then only reports that it found nothing.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "simulation.hpp"
+
+namespace eomgen::runtime {
+
+struct UnbalancedRate {
+  std::size_t velocity = 0;  // its index among the velocities
+  double rate = 0;           // its rate, the same in every configuration tried
+  int configurations = 0;    // how many were tried
+};
+
+/// The velocity whose rate at rest is one number, beyond 1e-9 of the largest rate seen, in
+/// `start`'s configuration and in random ones about it (every coordinate moved by up to one of its
+/// units or of its size, quaternions kept unit); nothing when no velocity's is, or when the model
+/// has constraints (a configuration moved at random would break them).
+std::optional<UnbalancedRate> unbalanced_rate(const Problem& problem, const std::vector<double>& start);
+
+}  // namespace eomgen::runtime
