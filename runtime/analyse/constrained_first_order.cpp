@@ -40,7 +40,8 @@ Eigen::MatrixXd constraint_gradient(const Problem& p, const std::vector<double>&
 std::vector<int> last_independent_columns(const Eigen::MatrixXd& block, int first) {
   std::vector<int> chosen;
   Eigen::MatrixXd basis(block.rows(), 0);
-  double scale = std::max(1.0, block.cwiseAbs().maxCoeff());
+  // relative to the block alone: a constraint means the same multiplied by any number
+  double scale = block.cwiseAbs().maxCoeff();
   for (long j = block.cols() - 1; j >= 0 && basis.cols() < block.rows(); --j) {
     Eigen::VectorXd v = block.col(j);
     for (int pass = 0; pass < 2; ++pass)  // Gram–Schmidt twice is enough

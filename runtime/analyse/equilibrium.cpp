@@ -55,11 +55,16 @@ Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
   int iterations = 0;
   for (; iterations < 100 && !unknowns.empty(); ++iterations) {
     Eigen::VectorXd r = reduced_rate(problem, x);
-    if (!r.allFinite() || r.cwiseAbs().maxCoeff() <= 1e-15) break;
-    Eigen::MatrixXd J = reduced_jacobian(problem, x).leftCols(static_cast<long>(unknowns.size()));
+    Eigen::MatrixXd jacobian = reduced_jacobian(problem, x);
+    // done at a thousandth of what counts as zero, in the model's scales (not 1e-15 in its units)
+    if (!r.allFinite() || r.cwiseAbs().maxCoeff() <= 1e-12 * jacobian.cwiseAbs().maxCoeff()) break;
+    Eigen::MatrixXd J = jacobian.leftCols(static_cast<long>(unknowns.size()));
     Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
     double largest = step.cwiseAbs().maxCoeff(), scale = largest > 0.5 ? 0.5 / largest : 1.0;
     for (std::size_t k = 0; k < unknowns.size(); ++k) x[unknowns[k]] += scale * step[static_cast<long>(k)];
+    // Newton moves a quaternion's four coordinates freely: off the unit sphere, a falling body's
+    // shrank to 1e-30 in 13 steps, and its Jacobian, which the tolerance follows, grew to 1e13
+    normalize_quaternions(m, x);
     if (scale == 1.0 && largest <= 1e-14) break;
   }
   Equilibrium e = check_first_order(problem, std::move(x));

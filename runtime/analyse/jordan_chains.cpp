@@ -84,7 +84,7 @@ JordanBasis jordan_basis(const Eigen::MatrixXd& A, const JordanStructure& struct
       J(b.first + i, b.first + i) = b.eigenvalue;
       if (i + 1 < b.size) J(b.first + i, b.first + i + 1) = 1;
     }
-  double scale = std::max(1.0, A.cwiseAbs().maxCoeff());
+  double scale = A.cwiseAbs().maxCoeff() > 0 ? A.cwiseAbs().maxCoeff() : 1.0;  // |A V − V J| / |A|, as documented
   out.residual = (A.cast<std::complex<double>>() * out.V - out.V * J).cwiseAbs().maxCoeff() / scale;
   Eigen::JacobiSVD<ComplexMatrix> svd(out.V);
   const auto& sigma = svd.singularValues();

@@ -3,6 +3,7 @@
 /// so frequencies of a conservative system have no spurious real parts. Rayleigh
 /// damping is detected by fitting D = αM + βK in the least-squares sense.
 #include "analyse/modal_analysis.hpp"
+#include "analyse/system_scales.hpp"
 
 #include <cmath>
 
@@ -66,10 +67,12 @@ void check_bounds(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, ModalAnaly
 
 std::string symmetric_problem_refusal(const StabilityReport& s) {
   if (s.M.size() == 0) return "the model is in first-order form (Appell or Hamilton): its modes are the eigenvalues of A";
-  double scale = std::max(1.0, s.K.cwiseAbs().maxCoeff() + s.D.cwiseAbs().maxCoeff());
-  if (s.G.size() && s.G.cwiseAbs().maxCoeff() > 1e-12 * scale)
+  // G and N against the system's rate in mass-normalized coordinates (1/s and 1/s²), not against
+  // |K| + |D| with a floor of 1, which mixed units and took a small system's G for zero
+  MassNormalized x = mass_normalized(s.M, s.K, s.D, s.G, s.N);
+  if (s.G.size() && x.G.cwiseAbs().maxCoeff() > 1e-12 * x.rate)
     return "gyroscopic forces G couple the coordinates: the modes are the eigenvalues of A";
-  if (s.N.size() && s.N.cwiseAbs().maxCoeff() > 1e-12 * scale)
+  if (s.N.size() && x.N.cwiseAbs().maxCoeff() > 1e-12 * x.rate * x.rate)
     return "circulatory forces N are not conservative: the modes are the eigenvalues of A";
   return "";
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <random>
 
+#include "analyse/first_order_form.hpp"
+
 namespace eomgen::runtime {
 
 namespace {
@@ -21,11 +23,7 @@ std::vector<double> rates_at_rest(const Problem& p, std::vector<double> x) {
 std::vector<double> moved(const eomgen_model_abi& m, std::vector<double> x, std::mt19937& random) {
   std::uniform_real_distribution<double> step(-1, 1);
   for (std::size_t i = 0; i < m.num_coordinates; ++i) x[i] += step(random) * std::max(1.0, std::abs(x[i]));
-  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
-    const std::size_t* q = m.quaternion_coordinates + 4 * k;
-    double norm = std::sqrt(x[q[0]] * x[q[0]] + x[q[1]] * x[q[1]] + x[q[2]] * x[q[2]] + x[q[3]] * x[q[3]]);
-    for (int c = 0; c < 4; ++c) x[q[c]] /= norm;
-  }
+  normalize_quaternions(m, x);
   return x;
 }
 

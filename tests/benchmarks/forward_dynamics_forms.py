@@ -105,8 +105,13 @@ def mean_depth(path):
 
 
 def main():
-    if len(sys.argv) < 2:
+    if len(sys.argv) >= 2 and sys.argv[1] in ("-h", "--help"):
         print(__doc__)
+        return 0
+    if len(sys.argv) < 2 or not os.access(sys.argv[1], os.X_OK):
+        print(__doc__)
+        if len(sys.argv) >= 2:
+            print(f"{sys.argv[1]}: not an eomgen executable (the first argument is the eomgen to measure)")
         return 2
     if not shutil.which("c++"):
         print("no C++ compiler: skipped")

@@ -101,8 +101,13 @@ def cell(x, digits=3):
 
 def main():
     args = sys.argv[1:]
-    if not args:
+    if args and args[0] in ("-h", "--help"):
         print(__doc__)
+        return 0
+    if not args or not os.access(args[0], os.X_OK):
+        print(__doc__)
+        if args:
+            print(f"{args[0]}: not an eomgen executable (the first argument is the eomgen to measure)")
         return 2
     try:
         import sympy  # noqa: F401

@@ -101,7 +101,8 @@ TEST(LinearStability, AFallingBodyHasARateThatNothingBalances) {
   for (double g : {1e-6, 9.81, 1e6}) {
     Problem falling = problem_of("tumbling_body", {{"g", g}});
     std::vector<double> start(falling.model->default_state, falling.model->default_state + falling.model->num_states);
-    EXPECT_FALSE(runtime::find_equilibrium(falling, start).converged);
+    runtime::Equilibrium searched = runtime::find_equilibrium(falling, start);
+    EXPECT_FALSE(searched.converged) << "residual " << searched.residual << ", tolerance " << searched.tolerance;
     std::optional<runtime::UnbalancedRate> unbalanced = runtime::unbalanced_rate(falling, start);
     ASSERT_TRUE(unbalanced) << "g = " << g;
     EXPECT_EQ(std::string(falling.model->state_names[falling.model->num_coordinates + unbalanced->velocity]), "der(z)");

@@ -9,6 +9,7 @@
 
 #include "analyse/jordan_chains.hpp"
 #include "analyse/linear_system.hpp"
+#include "analyse/linear_stability.hpp"
 #include "analyse/modal_analysis.hpp"
 
 namespace eomgen::runtime {
@@ -152,6 +153,31 @@ TEST(ModalAnalysis, NonproportionalDampingIsSaidWithItsCoupling) {
   EXPECT_NEAR(a.coupling, 1.0, 1e-12) << "ΦᵀDΦ = 0.05 [[1, 1], [1, 1]]: off-diagonal as large as diagonal";
   Eigen::MatrixXd unstable = -K;
   EXPECT_FALSE(modal_analysis(M, D, unstable).refusal.empty());
+}
+
+// the modes of K v = ω² M v leave out G and N: a G of 1 % of the system's rate refuses them in
+// every unit of mass and of time (measured against |K| + |D| with a floor of 1 before, a small
+// rotor's G counted as zero), one of 1e-14 does not
+TEST(ModalAnalysis, GyroscopicAndCirculatoryForcesRefuseTheModesAtEveryScale) {
+  for (double mass : {1e-12, 1.0, 1e12})
+    for (double rate : {1e-6, 1.0, 1e6}) {
+      SCOPED_TRACE(testing::Message() << "mass " << mass << ", rate " << rate);
+      StabilityReport s;
+      s.M = mass * Eigen::MatrixXd::Identity(2, 2);
+      s.K = Eigen::MatrixXd(2, 2);
+      s.K << 2, -1, -1, 2;
+      s.K *= mass * rate * rate;
+      s.D = Eigen::MatrixXd::Zero(2, 2);
+      Eigen::MatrixXd skew(2, 2);
+      skew << 0, 1, -1, 0;
+      s.N = Eigen::MatrixXd::Zero(2, 2);
+      s.G = 1e-2 * mass * rate * skew;
+      EXPECT_NE(symmetric_problem_refusal(s).find("gyroscopic forces G"), std::string::npos);
+      s.G *= 1e-12;
+      EXPECT_EQ(symmetric_problem_refusal(s), "");
+      s.N = 1e-2 * mass * rate * rate * skew;
+      EXPECT_NE(symmetric_problem_refusal(s).find("circulatory forces N"), std::string::npos);
+    }
 }
 
 }  // namespace
