@@ -30,17 +30,47 @@ Derivatives evaluate(const Problem& p, const std::vector<double>& x) {
   return d;
 }
 
-// zero, for this model: relative to the size of its generalized stiffness at the state (f over it
-// is the displacement to the equilibrium), with no floor in absolute units: a floor of 1 took a
-// pendulum of 1e-12 kg at 0.5 rad for an equilibrium
-double tolerance_for(const Derivatives& d) { return 1e-9 * d.Q.cwiseAbs().maxCoeff(); }
+// the largest |f| at x
+double forcing_residual(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::vector<double> f(m.num_coordinates);
+  m.forcing(0.0, x.data(), p.held_inputs(), p.parameters.data(), f.data());
+  double largest = 0;
+  for (double v : f) largest = std::isfinite(v) ? std::max(largest, std::abs(v)) : INFINITY;
+  return largest;
+}
+
+// the size of the configuration in the coordinates' units, at least one (a radian)
+double configuration_size(const eomgen_model_abi& m, const std::vector<double>& x) {
+  double size = 1;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+    if (!m.is_cyclic[i]) size = std::max(size, std::abs(x[i]));
+  return size;
+}
+
+// Zero, for this model: f over its generalized stiffness at the state is the displacement to the
+// equilibrium, below 1e-9 of the configuration's size. No floor in the units of f: one of 1 took a
+// pendulum of 1e-12 kg at 0.5 rad for an equilibrium. The configuration's size: a mass that a spring
+// of 1e-6 N/m holds 9.81e6 m down has f = k z − m g to the rounding of m g, 2e-15, with k 1e-6.
+double tolerance_for(const Derivatives& d, double size) { return 1e-9 * d.Q.cwiseAbs().maxCoeff() * size; }
+
+// The part of a Newton step to take: all of it when it all but solves the equations (the largest
+// residual after it below a thousandth of before: a linear problem, or one near its root, in any
+// units), else at most half a unit (half a radian for an angle), so that the search stays near where
+// it started. Limited alone, a spring of 1e-6 N/m, whose mass hangs 9.81e6 m down, was out of reach.
+template <class Residual>
+double step_fraction(double largest, double residual, const Residual& residual_after_whole_step) {
+  if (largest <= 0.5) return 1.0;
+  double after = residual_after_whole_step();
+  return std::isfinite(after) && after <= 1e-3 * residual ? 1.0 : 0.5 / largest;
+}
 
 // Appell's equations: a steady motion has x' = 0 on the reduced state (the non-cyclic
 // coordinates stand still, the pseudo-velocities are constant)
 Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
   Equilibrium e;
   e.residual = reduced_rate(problem, state).cwiseAbs().maxCoeff();
-  e.tolerance = 1e-9 * reduced_jacobian(problem, state).cwiseAbs().maxCoeff();
+  e.tolerance = 1e-9 * reduced_jacobian(problem, state).cwiseAbs().maxCoeff() * configuration_size(*problem.model, state);
   e.converged = e.residual <= e.tolerance;
   e.state = std::move(state);
   return e;
@@ -60,12 +90,21 @@ Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
     if (!r.allFinite() || r.cwiseAbs().maxCoeff() <= 1e-12 * jacobian.cwiseAbs().maxCoeff()) break;
     Eigen::MatrixXd J = jacobian.leftCols(static_cast<long>(unknowns.size()));
     Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
-    double largest = step.cwiseAbs().maxCoeff(), scale = largest > 0.5 ? 0.5 / largest : 1.0;
-    for (std::size_t k = 0; k < unknowns.size(); ++k) x[unknowns[k]] += scale * step[static_cast<long>(k)];
-    // Newton moves a quaternion's four coordinates freely: off the unit sphere, a falling body's
-    // shrank to 1e-30 in 13 steps, and its Jacobian, which the tolerance follows, grew to 1e13
-    normalize_quaternions(m, x);
-    if (scale == 1.0 && largest <= 1e-14) break;
+    auto moved = [&](double fraction) {
+      std::vector<double> y = x;
+      for (std::size_t k = 0; k < unknowns.size(); ++k) y[unknowns[k]] += fraction * step[static_cast<long>(k)];
+      normalize_quaternions(m, y);
+      return y;
+    };
+    double largest = step.cwiseAbs().maxCoeff();
+    double scale = step_fraction(largest, r.cwiseAbs().maxCoeff(),
+                                 [&] { return reduced_rate(problem, moved(1.0)).cwiseAbs().maxCoeff(); });
+    // moved() keeps quaternions unit: Newton moves their four coordinates freely, and off the unit
+    // sphere a falling body's shrank to 1e-30 in 13 steps and its Jacobian, which the tolerance
+    // follows, grew to 1e13
+    x = moved(scale);
+    if (scale == 1.0 && largest <= 1e-14 * Eigen::Map<Eigen::VectorXd>(x.data(), Eigen::Index(x.size())).cwiseAbs().maxCoeff())
+      break;
   }
   Equilibrium e = check_first_order(problem, std::move(x));
   e.iterations = iterations;
@@ -94,7 +133,7 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
   e.moving = moving_coordinates(*problem.model, state);
   e.state = std::move(state);
   e.residual = d.f.cwiseAbs().maxCoeff();
-  e.tolerance = tolerance_for(d);
+  e.tolerance = tolerance_for(d, configuration_size(*problem.model, e.state));
   e.converged = e.residual <= e.tolerance && e.moving.empty();
   return e;
 }
@@ -114,12 +153,17 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
     }
   }
   Equilibrium e;
+  // below the tolerance, up to three more whole steps while they still move the state against its
+  // own size: the tolerance's displacement is 1e-9 of a unit at least, and springs of 1e12 N/m hold
+  // their masses 3e-13 m away, which the first step reached to 7e-6 of it
+  int polished = 0;
   for (e.iterations = 0; e.iterations < 100; ++e.iterations) {
     Derivatives d = evaluate(problem, x);
     e.residual = d.f.cwiseAbs().maxCoeff();
-    e.tolerance = tolerance_for(d);
+    e.tolerance = tolerance_for(d, configuration_size(*problem.model, x));
     if (!std::isfinite(e.residual)) break;
-    if (e.residual <= 1e-3 * e.tolerance) break;
+    bool within = e.residual <= 1e-3 * e.tolerance;
+    if (within && ++polished > 3) break;
     // ∂f/∂q = −Q, ∂f/∂q' = −P; Newton step on the unknowns (least squares when rank deficient)
     Eigen::MatrixXd J(n, unknowns.size());
     for (std::size_t k = 0; k < unknowns.size(); ++k) {
@@ -127,11 +171,17 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
       J.col(k) = i < static_cast<int>(n) ? Eigen::VectorXd(-d.Q.col(i)) : Eigen::VectorXd(-d.P.col(i - n));
     }
     Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-d.f);
-    // damped: never move an angle by more than half a radian at once
-    double largest = step.cwiseAbs().maxCoeff(), scale = largest > 0.5 ? 0.5 / largest : 1.0;
-    for (std::size_t k = 0; k < unknowns.size(); ++k) x[unknowns[k]] += scale * step[k];
-    if (scale == 1.0 && largest <= 1e-14 * (1 + Eigen::Map<Eigen::VectorXd>(x.data(), x.size()).cwiseAbs().maxCoeff()))
-      break;
+    auto moved = [&](double fraction) {
+      std::vector<double> y = x;
+      for (std::size_t k = 0; k < unknowns.size(); ++k) y[unknowns[k]] += fraction * step[static_cast<long>(k)];
+      return y;
+    };
+    double largest = step.cwiseAbs().maxCoeff();
+    double size = Eigen::Map<Eigen::VectorXd>(x.data(), Eigen::Index(x.size())).cwiseAbs().maxCoeff();
+    if (within && largest <= 1e-14 * size) break;
+    double scale = within ? 1.0 : step_fraction(largest, e.residual, [&] { return forcing_residual(problem, moved(1.0)); });
+    x = moved(scale);
+    if (scale == 1.0 && largest <= 1e-14 * size) break;
   }
   Equilibrium checked = check_equilibrium(problem, x);
   checked.iterations = e.iterations;

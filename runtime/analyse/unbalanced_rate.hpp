@@ -18,9 +18,10 @@ struct UnbalancedRate {
 };
 
 /// The velocity whose rate at rest is one number, beyond 1e-9 of the largest rate seen, in
-/// `start`'s configuration and in random ones about it (every coordinate moved by up to one of its
-/// units or of its size, quaternions kept unit); nothing when no velocity's is, or when the model
-/// has constraints (a configuration moved at random would break them).
+/// `start`'s configuration and in random ones about it (every coordinate moved by up to 1, 100, …
+/// 1e12 times one of its units or its size, quaternions kept unit, so that a weak spring far away
+/// shows too); nothing when no velocity's is, or when the model has constraints (a configuration
+/// moved at random would break them).
 std::optional<UnbalancedRate> unbalanced_rate(const Problem& problem, const std::vector<double>& start);
 
 }  // namespace eomgen::runtime

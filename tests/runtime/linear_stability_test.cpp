@@ -114,6 +114,28 @@ TEST(LinearStability, AFallingBodyHasARateThatNothingBalances) {
       << "without gravity it rests anywhere";
 }
 
+// the chain of three springs k with a force F = 1 on the second mass rests at x = F/(3k) (1, 2): found
+// for k from 1e-12 (3e11 m away: a step limited to half a unit did not get there) to 1e12 N/m;
+// without springs, der(x2) changes at F/m2 everywhere
+TEST(LinearStability, AnEquilibriumFarAwayOrCloseByIsFoundInOneStep) {
+  for (double k : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    SCOPED_TRACE(testing::Message() << "k = " << k);
+    Problem p = problem_of("two_mass_chain", {{"k1", k}, {"k2", k}, {"k3", k}});
+    p.inputs = {1.0};
+    runtime::Equilibrium e = runtime::find_equilibrium(p, {0.01, 0.0, 0.0, 0.0});
+    ASSERT_TRUE(e.converged) << "residual " << e.residual << ", tolerance " << e.tolerance;
+    EXPECT_NEAR(e.state[0], 1 / (3 * k), 1e-9 / (3 * k));
+    EXPECT_NEAR(e.state[1], 2 / (3 * k), 1e-9 / (3 * k));
+    EXPECT_FALSE(runtime::unbalanced_rate(p, {0.01, 0.0, 0.0, 0.0}));
+  }
+  Problem loose = problem_of("two_mass_chain", {{"k1", 0.0}, {"k2", 0.0}, {"k3", 0.0}});
+  loose.inputs = {1.0};
+  std::optional<runtime::UnbalancedRate> pushed = runtime::unbalanced_rate(loose, {0.01, 0.0, 0.0, 0.0});
+  ASSERT_TRUE(pushed);
+  EXPECT_EQ(std::string(loose.model->state_names[2 + pushed->velocity]), "der(x2)");
+  EXPECT_NEAR(pushed->rate, 1.0, 1e-15);
+}
+
 TEST(LinearStability, DampedPendulumDecaysAtTheClassicalRate) {
   Problem p = problem_of("pendulum", {{"d", 0.5}});
   auto r = runtime::analyse_stability(p, {0.0, 0.0});
