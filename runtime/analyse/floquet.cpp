@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "analyse/first_order_form.hpp"
+#include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
 
@@ -125,13 +126,19 @@ double periodic_equilibrium_residual(const Problem& p, const std::vector<double>
 
 double periodicity_defect(const Problem& p, const std::vector<double>& x, double period) {
   VariationalEquations a(p, x);
-  double defect = 0;
+  // compared balanced (one diagonal scaling for all times): A's entries have the units of its
+  // states, and against q' = v's ones a slow system's stiffness changing by all of itself, 1e-12,
+  // was periodic to 1e-12 "relative to |A|"
+  Eigen::VectorXd scales = balancing_scales(a.at(0.0123 * period));
+  auto balanced_at = [&](double t) { return Eigen::MatrixXd(scales.cwiseInverse().asDiagonal() * a.at(t) * scales.asDiagonal()); };
+  double difference = 0, size = 0;
   for (int k = 0; k < 16; ++k) {
     double t = period * k / 16.0 + 0.0123 * period;
-    Eigen::MatrixXd now = a.at(t), later = a.at(t + period);
-    defect = std::max(defect, (later - now).lpNorm<Eigen::Infinity>() / std::max(1.0, now.lpNorm<Eigen::Infinity>()));
+    Eigen::MatrixXd now = balanced_at(t);
+    difference = std::max(difference, (balanced_at(t + period) - now).lpNorm<Eigen::Infinity>());
+    size = std::max(size, now.lpNorm<Eigen::Infinity>());
   }
-  return defect;
+  return size > 0 ? difference / size : 0.0;
 }
 
 FloquetReport floquet_analysis(const Problem& p, const std::vector<double>& x, double period) {

@@ -33,8 +33,8 @@ struct FloquetReport {
 /// equilibrium of the periodic system.
 double periodic_equilibrium_residual(const Problem& p, const std::vector<double>& x, double period);
 
-/// Largest |A(t + T) − A(t)| relative to |A| at 16 times in [0, T): zero when the linearized
-/// equations at x are periodic with period T.
+/// Largest |A(t + T) − A(t)| relative to |A| at 16 times in [0, T), A balanced by one diagonal
+/// scaling (system_scales.hpp): zero when the linearized equations at x are periodic with period T.
 double periodicity_defect(const Problem& p, const std::vector<double>& x, double period);
 
 /// The Floquet analysis of the equilibrium x over one period.

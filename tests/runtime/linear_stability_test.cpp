@@ -7,6 +7,7 @@
 #include <random>
 
 #include "analyse/equilibrium.hpp"
+#include "analyse/floquet.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/unbalanced_rate.hpp"
 #include "generated/header_registry.hpp"
@@ -134,6 +135,18 @@ TEST(LinearStability, AnEquilibriumFarAwayOrCloseByIsFoundInOneStep) {
   ASSERT_TRUE(pushed);
   EXPECT_EQ(std::string(loose.model->state_names[2 + pushed->velocity]), "der(x2)");
   EXPECT_NEAR(pushed->rate, 1.0, 1e-15);
+}
+
+// Kapitza's pendulum in time scales from 1e-6 to 1e6 (g and the drive's frequency scaled): its
+// linearized equations repeat with the drive's period, and not with a period 0.1 % longer
+TEST(LinearStability, PeriodicEquationsArePeriodicInEveryTimeScale) {
+  for (double s : {1e-6, 1.0, 1e6}) {
+    SCOPED_TRACE(testing::Message() << "time scale " << s);
+    Problem p = problem_of("kapitza_pendulum", {{"g", 9.81 * s * s}, {"w", 60.0 * s}});
+    double period = 2 * M_PI / (60.0 * s);
+    EXPECT_LT(runtime::periodicity_defect(p, {M_PI, 0.0}, period), 1e-9);
+    EXPECT_GT(runtime::periodicity_defect(p, {M_PI, 0.0}, 1.001 * period), 1e-6);
+  }
 }
 
 TEST(LinearStability, DampedPendulumDecaysAtTheClassicalRate) {
