@@ -32,8 +32,8 @@ std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vect
   return exit_numerical_failure;
 }
 
-// a velocity whose rate at rest is one number in every configuration: no equilibrium exists (said,
-// true), where Newton would only report that it found none
+// says that no equilibrium exists, and returns true, when at rest a velocity's rate is one number in
+// every configuration, where Newton could only report that it found none
 bool say_unbalanced_rate(const runtime::Problem& problem, const std::vector<double>& initial) {
   std::optional<runtime::UnbalancedRate> unbalanced = runtime::unbalanced_rate(problem, initial);
   if (!unbalanced) return false;

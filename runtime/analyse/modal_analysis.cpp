@@ -3,9 +3,10 @@
 /// so frequencies of a conservative system have no spurious real parts. Rayleigh
 /// damping is detected by fitting D = αM + βK in the least-squares sense.
 #include "analyse/modal_analysis.hpp"
-#include "analyse/system_scales.hpp"
 
 #include <cmath>
+
+#include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
 
