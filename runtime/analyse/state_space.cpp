@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace eomgen::runtime {
 
@@ -11,6 +13,40 @@ int name_index(const char* const* names, std::size_t count, const std::string& n
   for (std::size_t i = 0; i < count; ++i)
     if (name == names[i]) return static_cast<int>(i);
   return -1;
+}
+
+// dy/dv at v by central differences over steps from |v| (or 1) down by factors of ten, each step as
+// the doubles take it ((v + h) − v), to the 1e-15th of |v|, or to 1e-40 at v = 0: the slope that
+// agrees best, relatively, with both its neighbours, between truncation (a step too long for the
+// output's own scale) and rounding (one too short). A fixed step of 1e-6 crossed a MEMS gap of 1e-6 m.
+template <class Output>
+double plateau_slope(const Output& y_at, double v) {
+  double base = v != 0 ? std::abs(v) : 1.0;
+  int last = v != 0 ? 15 : 40;
+  std::vector<double> slopes;
+  bool moved = false;
+  for (int k = 1; k <= last; ++k) {
+    double h = (v + base * std::pow(10.0, -k)) - v;
+    if (h <= 0) break;
+    double plus = y_at(v + h), minus = y_at(v - h);
+    // steps whose change in y is lost in y's rounding (0 after it was not) are no slopes
+    bool lost = std::isfinite(plus) && std::isfinite(minus) &&
+                std::abs(plus - minus) <= 64 * std::numeric_limits<double>::epsilon() * std::max(std::abs(plus), std::abs(minus));
+    if (lost && moved) break;
+    moved = moved || !lost;
+    double slope = (plus - minus) / (2 * h);
+    if (std::isfinite(slope)) slopes.push_back(slope);
+  }
+  if (slopes.size() < 3) return slopes.empty() ? NAN : slopes.back();
+  std::size_t best = 1;
+  double best_spread = INFINITY;
+  for (std::size_t k = 1; k + 1 < slopes.size(); ++k) {
+    // relative: far outside the output's scale the slopes are tiny and agree in absolute terms
+    double change = std::max(std::abs(slopes[k] - slopes[k - 1]), std::abs(slopes[k] - slopes[k + 1]));
+    double spread = change == 0 ? 0 : change / std::abs(slopes[k]);
+    if (spread < best_spread) best = k, best_spread = spread;
+  }
+  return slopes[best];
 }
 
 }  // namespace
@@ -31,7 +67,7 @@ void output_matrices(const Problem& p, const std::vector<double>& x, const std::
   std::size_t N = m.num_states, k = m.num_inputs;
   C = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(names.size()), static_cast<Eigen::Index>(N));
   D = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(names.size()), static_cast<Eigen::Index>(k));
-  std::vector<double> y_plus(m.num_outputs + 1), y_minus(m.num_outputs + 1);
+  std::vector<double> y(m.num_outputs + 1);
   auto outputs_at = [&](const std::vector<double>& xs, const std::vector<double>& us, std::vector<double>& y) {
     m.outputs(0.0, xs.data(), us.empty() ? nullptr : us.data(), p.parameters.data(), y.data());
   };
@@ -43,13 +79,13 @@ void output_matrices(const Problem& p, const std::vector<double>& x, const std::
     }
     int o = name_index(m.output_names, m.num_outputs, names[i]);
     for (std::size_t j = 0; j < N + k; ++j) {
-      std::vector<double> xp = x, xm = x, up = p.inputs, um = p.inputs;
-      double& plus = j < N ? xp[j] : up[j - N];
-      double& minus = j < N ? xm[j] : um[j - N];
-      double h = 1e-6 * std::max(1.0, std::abs(plus));
-      plus += h, minus -= h;
-      outputs_at(xp, up, y_plus), outputs_at(xm, um, y_minus);
-      double slope = (y_plus[o] - y_minus[o]) / (2 * h);
+      auto output_at = [&](double value) {
+        std::vector<double> xs = x, us = p.inputs;
+        (j < N ? xs[j] : us[j - N]) = value;
+        outputs_at(xs, us, y);
+        return y[o];
+      };
+      double slope = plateau_slope(output_at, j < N ? x[j] : p.inputs[j - N]);
       (j < N ? C(row, static_cast<Eigen::Index>(j)) : D(row, static_cast<Eigen::Index>(j - N))) = slope;
     }
   }

@@ -3,7 +3,8 @@
 // modal solution; the double pendulum's frequencies and mode-shape ratios from its
 // frequency equation; the space rendezvous' Jordan structure and Φ(t) against the
 // Clohessy–Wiltshire solution. Transfer functions from their minimal realization: the
-// upright cart pendulum, a quarter car at three time scales, an output the input cannot move.
+// upright cart pendulum, a quarter car at three time scales, an output the input cannot move;
+// an output's C on its own scale (a capacitance across gaps from 1e-12 to 1e6 m).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -366,6 +367,38 @@ TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput response = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --response ramp:F");
   EXPECT_EQ(response.status, 2);
   EXPECT_NE(response.err.find("expected initial, impulse:INPUT, step:INPUT or harmonic:INPUT:OMEGA"), std::string::npos);
+}
+
+// C of an output that varies over its own scale: a plate's capacitance eA/(d − x) across gaps d from
+// 1e-12 to 1e6 m, whose slope at x = 0 is eA/d²; a fixed step of 1e-6 crossed the micrometre gap
+TEST(LinearCommand, AnOutputIsDifferentiatedOnItsOwnScale) {
+  std::string model = write_model("mems_plate", R"toml(
+[model]
+name = "mems_plate"
+title = "A plate on a spring across a gap"
+[parameters]
+m = 1e-9
+k = 1.0
+d = 1e-6
+eA = 1e-15
+[coordinates]
+x = 0.0
+[[particles]]
+name = "plate"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*x^2/2"
+[outputs]
+capacitance = "eA/(d - x)"
+)toml");
+  for (double d : {1e-12, 1e-6, 1.0, 1e6}) {
+    JsonValue json = run_json(fmt::format("linear '{}' --set d={}", model, d));
+    const JsonValue* C = json.find("C");
+    ASSERT_TRUE(C) << "d = " << d;
+    EXPECT_NEAR(C->items.at(0).items.at(0).value, 1e-15 / (d * d), 1e-8 * 1e-15 / (d * d)) << "d = " << d;
+    EXPECT_EQ(C->items.at(0).items.at(1).value, 0.0) << "it does not depend on the velocity";
+  }
 }
 
 }  // namespace
