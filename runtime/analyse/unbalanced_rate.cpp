@@ -21,7 +21,7 @@ std::vector<double> rates_at_rest(const Problem& p, std::vector<double> x) {
 
 // start's configuration moved at random: each coordinate by up to `reach` times max(1, |q|),
 // quaternions normalized
-std::vector<double> moved(const eomgen_model_abi& m, std::vector<double> x, double reach, std::mt19937& random) {
+std::vector<double> moved_at_random(const eomgen_model_abi& m, std::vector<double> x, double reach, std::mt19937& random) {
   std::uniform_real_distribution<double> step(-1, 1);
   for (std::size_t i = 0; i < m.num_coordinates; ++i) x[i] += reach * step(random) * std::max(1.0, std::abs(x[i]));
   normalize_quaternions(m, x);
@@ -40,7 +40,7 @@ std::optional<UnbalancedRate> unbalanced_rate(const Problem& problem, const std:
   // moved by up to 1, 100, … 1e12 of their units: a spring of 1e-12 N/m under gravity changes the
   // rate by 1e-12 of it within one unit, and by a tenth within 1e12
   for (double reach = 1; rates.size() < configurations; reach *= 100)
-    rates.push_back(rates_at_rest(problem, moved(m, start, reach, random)));
+    rates.push_back(rates_at_rest(problem, moved_at_random(m, start, reach, random)));
   double largest = 0;
   for (const std::vector<double>& r : rates)
     for (std::size_t v = 0; v < k; ++v) largest = std::max(largest, std::abs(r[n + v]));
