@@ -30,13 +30,23 @@ int link_line(const std::string& urdf, const std::string& name) {
   return 1;
 }
 
-std::string unused_joint_name(const std::vector<UrdfJoint>& joints) {
-  auto taken = [&](const std::string& name) {
-    return std::any_of(joints.begin(), joints.end(), [&](const UrdfJoint& j) { return j.name == name; });
-  };
+// `root`, or `root_2`, `root_3`, … when a joint has that name
+template <class Taken>
+std::string root_joint_name(const Taken& taken) {
   std::string name = "root";
   for (int k = 2; taken(name); ++k) name = fmt::format("root_{}", k);
   return name;
+}
+
+std::string unused_joint_name(const std::vector<UrdfJoint>& joints) {
+  return root_joint_name([&](const std::string& name) {
+    return std::any_of(joints.begin(), joints.end(), [&](const UrdfJoint& j) { return j.name == name; });
+  });
+}
+
+// "'a' and 'b'", with ", …" when there are more
+std::string listed_pair(const std::string& first, const std::string& second, std::size_t count) {
+  return fmt::format("'{}' and '{}'{}", first, second, count > 2 ? ", …" : "");
 }
 
 // A robot whose root link is the world (a UR arm's world -> base_link): the one fixed joint that
@@ -50,9 +60,9 @@ FreeBase mounted_on_the_world(const std::string& urdf, const std::vector<UrdfJoi
     if (j.parent == "world") held.push_back(&j);
   if (held.size() != 1 || held[0]->type != "fixed") {
     out.line = held.empty() ? line_of(urdf, robot) : held[0]->line;
-    out.problem = held.size() > 1 ? fmt::format("the robot's root link is the world itself, which holds {} links ('{}' and "
-                                                "'{}'{}): which one floats is not clear",
-                                                held.size(), held[0]->child, held[1]->child, held.size() > 2 ? ", …" : "")
+    out.problem = held.size() > 1 ? fmt::format("the robot's root link is the world itself, which holds {} links ({}): "
+                                                "which one floats is not clear",
+                                                held.size(), listed_pair(held[0]->child, held[1]->child, held.size()))
                                   : "the robot's root link is the world itself, to which its joints fix it";
     out.hint = held.size() == 1 ? fmt::format("make joint '{}' type=\"floating\" to set its link free, and import "
                                               "without --free-base", held[0]->name)
@@ -86,18 +96,11 @@ bool carries_joints(const Robot& r, std::size_t top) {
 }
 
 std::string unused_joint_name(const Robot& r) {
-  auto taken = [&](const std::string& name) {
+  return root_joint_name([&](const std::string& name) {
     return std::any_of(r.bodies.begin(), r.bodies.end(), [&](const RobotBody& b) {
       return std::any_of(b.joints.begin(), b.joints.end(), [&](const RobotJoint& j) { return j.name == name; });
     });
-  };
-  std::string name = "root";
-  for (int k = 2; taken(name); ++k) name = fmt::format("root_{}", k);
-  return name;
-}
-
-std::string listed_pair(const std::vector<std::string>& names) {
-  return fmt::format("'{}' and '{}'{}", names[0], names[1], names.size() > 2 ? ", …" : "");
+  });
 }
 
 }  // namespace
@@ -132,7 +135,7 @@ FreeBase free_base_of_mjcf(const Robot& r, const std::string& mjcf) {
   if (bases.size() > 1) {
     out.line = body_line(mjcf, base_names[0]);
     out.problem = fmt::format("{} bodies in <worldbody> carry joints without having one ({}): which one floats is not clear",
-                              bases.size(), listed_pair(base_names));
+                              bases.size(), listed_pair(base_names[0], base_names[1], base_names.size()));
     out.hint = "put <freejoint/> in the body that floats, and import without --free-base";
   } else if (!held.empty()) {
     const RobotBody& body = r.bodies[held[0]];
@@ -166,8 +169,8 @@ FreeBase free_base_of(const std::string& urdf) {
   if (robot == std::string::npos || roots.size() != 1) {
     out.line = robot == std::string::npos ? 1 : line_of(urdf, robot);
     out.problem = roots.empty() ? "the robot has no root link (one link that no joint has as its child) to set free"
-                                : fmt::format("the robot has {} root links ('{}' and '{}'{}): which one floats is not clear",
-                                              roots.size(), roots[0], roots[1], roots.size() > 2 ? ", …" : "");
+                                : fmt::format("the robot has {} root links ({}): which one floats is not clear",
+                                              roots.size(), listed_pair(roots[0], roots[1], roots.size()));
     out.hint = "a URDF robot is one tree of links joined by joints, with one root link";
     return out;
   }

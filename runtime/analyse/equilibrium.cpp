@@ -20,7 +20,7 @@ struct Derivatives {
 Derivatives evaluate(const Problem& p, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::size_t n = m.num_coordinates;
-  const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+  const double* u = p.held_inputs();
   std::vector<double> f(n), P(n * n), Q(n * n), B(n * m.num_inputs + 1);
   m.forcing(0.0, x.data(), u, p.parameters.data(), f.data());
   m.linearization(0.0, x.data(), u, p.parameters.data(), P.data(), Q.data(), B.data());

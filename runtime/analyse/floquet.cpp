@@ -21,7 +21,7 @@ class VariationalEquations {
   Eigen::MatrixXd at(double t) const {
     const eomgen_model_abi& m = *p_.model;
     RowMajor J(m.num_states, m.num_states);
-    m.jacobian_state(t, x_.data(), p_.inputs.empty() ? nullptr : p_.inputs.data(), p_.parameters.data(), J.data());
+    m.jacobian_state(t, x_.data(), p_.held_inputs(), p_.parameters.data(), J.data());
     Eigen::MatrixXd A(kept_.size(), kept_.size());
     for (std::size_t i = 0; i < kept_.size(); ++i)
       for (std::size_t j = 0; j < kept_.size(); ++j) A(static_cast<long>(i), static_cast<long>(j)) = J(kept_[i], kept_[j]);
@@ -118,7 +118,7 @@ double periodic_equilibrium_residual(const Problem& p, const std::vector<double>
   std::vector<int> kept = reduced_state(m);
   double worst = 0;
   for (int k = 0; k < 64; ++k) {
-    m.rhs(period * k / 64.0, x.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), xdot.data());
+    m.rhs(period * k / 64.0, x.data(), p.held_inputs(), p.parameters.data(), xdot.data());
     for (int i : kept) worst = std::max(worst, std::isfinite(xdot[static_cast<std::size_t>(i)]) ? std::abs(xdot[static_cast<std::size_t>(i)]) : INFINITY);
   }
   return worst;

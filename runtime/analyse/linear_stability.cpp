@@ -24,7 +24,7 @@ struct SecondOrder {
 SecondOrder linearize(const Problem& p, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::size_t n = m.num_coordinates, k = m.num_inputs;
-  const double* u = p.inputs.empty() ? nullptr : p.inputs.data();
+  const double* u = p.held_inputs();
   std::vector<double> M(n * n), P(n * n), Q(n * n), B(n * k + 1);
   m.mass_matrix(0.0, x.data(), p.parameters.data(), M.data());
   m.linearization(0.0, x.data(), u, p.parameters.data(), P.data(), Q.data(), B.data());

@@ -20,7 +20,7 @@ std::string non_finite_quantities(const Problem& p, double t, const std::vector<
   std::size_t k = m.num_velocities;
   std::vector<double> M(k * k), f(k);
   m.mass_matrix(t, x.data(), p.parameters.data(), M.data());
-  m.forcing(t, x.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), f.data());
+  m.forcing(t, x.data(), p.held_inputs(), p.parameters.data(), f.data());
   std::string out;
   auto add = [&out](const std::string& name) { out += (out.empty() ? "" : ", ") + name; };
   for (std::size_t i = 0; i < k; ++i)

@@ -55,7 +55,7 @@ StateSpace state_space_at(const Problem& problem, const std::vector<double>& x) 
   const eomgen_model_abi& m = *problem.model;
   std::size_t N = m.num_states, k = m.num_inputs;
   Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(N, N), B(N, std::max<std::size_t>(k, 1));
-  const double* u = problem.inputs.empty() ? nullptr : problem.inputs.data();
+  const double* u = problem.held_inputs();
   m.jacobian_state(0.0, x.data(), u, problem.parameters.data(), J.data());
   m.jacobian_input(0.0, x.data(), u, problem.parameters.data(), B.data());
   return {J, Eigen::MatrixXd(B).leftCols(static_cast<Eigen::Index>(k))};

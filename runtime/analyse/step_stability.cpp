@@ -31,7 +31,7 @@ bool inside_stability_region(const std::string& integrator, std::complex<double>
 StepStability check_step(const Problem& p, const std::string& integrator, double h, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
-  m.jacobian_state(t, x.data(), p.inputs.empty() ? nullptr : p.inputs.data(), p.parameters.data(), J.data());
+  m.jacobian_state(t, x.data(), p.held_inputs(), p.parameters.data(), J.data());
   StepStability s;
   s.largest_stable_step = INFINITY;
   if (integrator == "gauss-legendre" || !J.allFinite()) return s;  // A-stable: no limit for Re λ ≤ 0

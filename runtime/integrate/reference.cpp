@@ -77,7 +77,7 @@ class Reference : public Stepper {
  private:
   bool run(const Problem& p, const std::vector<double>& x0, double t0, double step, std::vector<std::vector<double>>& rows) {
     std::vector<double> out(times_.size() * n_);
-    long used = p.reference(p.parameters.data(), p.inputs.empty() ? nullptr : p.inputs.data(), t0, x0.data(),
+    long used = p.reference(p.parameters.data(), p.held_inputs(), t0, x0.data(),
                             times_.data(), times_.size(), step, out.data());
     rows.clear();
     if (used < 0) {
