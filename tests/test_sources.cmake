@@ -84,6 +84,7 @@ set(EOMGEN_TEST_FILES
   runtime/excited_modes_test.cpp                    fast
   runtime/simulation_budget_test.cpp                fast
   runtime/stiffness_ratio_test.cpp                  fast
+  runtime/local_power_law_test.cpp                  fast
   studies/stability_studies_test.cpp                slow
   studies/run_studies_test.cpp                      slow
   cli/stability_command_test.cpp                    cli

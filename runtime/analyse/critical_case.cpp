@@ -8,14 +8,17 @@
 
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
+#include "analyse/local_power_law.hpp"
 
 namespace eomgen::runtime {
 
 namespace {
 
 
-// V(q + δ) − V(q) > 0 beyond V's rounding along every coordinate direction and random ones, at
-// two radii; with no coordinate but cyclic ones there is no minimum to speak of
+// V(q + r d) − V(q) rises by its leading power law along every coordinate direction and random
+// ones: its sign at the smallest radii where it rises above rounding is the sign near the
+// equilibrium, in whatever units q is written (radii fixed in units, 1e-2 and 1e-3, had stepped
+// over the rim of a well 1e-3 wide). With no coordinate but cyclic ones there is no minimum.
 bool strict_minimum_of_potential(const Problem& p, const std::vector<double>& x, std::string& where) {
   const eomgen_model_abi& m = *p.model;
   std::size_t n = m.num_coordinates;
@@ -45,39 +48,57 @@ bool strict_minimum_of_potential(const Problem& p, const std::vector<double>& x,
       directions.push_back(d);
     }
   }
-  for (double radius : {1e-2, 1e-3})
-    for (const auto& d : directions) {
+  for (const auto& d : directions) {
+    std::vector<double> changes;
+    for (double radius : probe_radii()) {
       std::vector<double> y = x;
       for (std::size_t i = 0; i < n; ++i) y[i] += radius * d[i];
-      double v1 = m.potential_energy(0.0, y.data(), p.parameters.data()), dv = v1 - v0;
-      if (!(dv > 1e-14 * std::max(std::abs(v0), std::abs(v1)))) {
-        std::string moved;
-        for (std::size_t i = 0; i < n; ++i)
-          if (d[i] != 0) moved += fmt::format("{}{} {:+.3g}", moved.empty() ? "" : ", ", m.coordinate_names[i], radius * d[i]);
-        where = fmt::format("V does not increase when moving {} (ΔV = {:.3g})", moved, dv);
-        return false;
-      }
+      changes.push_back(m.potential_energy(0.0, y.data(), p.parameters.data()) - v0);
     }
+    PowerLaw law = leading_power_law(changes);
+    if (law.found && law.sign > 0) continue;
+    std::string along;
+    for (std::size_t i = 0; i < n; ++i)
+      if (d[i] != 0) along += fmt::format("{}{} {:+.3g}", along.empty() ? "" : ", ", m.coordinate_names[i], d[i]);
+    where = law.found ? fmt::format("V decreases along ({}): as the {:.2g}th power of the distance, from {:.0e} out to {}",
+                                    along, law.exponent, law.from,
+                                    std::isfinite(law.extent) ? fmt::format("{:.0e}", law.extent) : std::string("1e+40 and beyond"))
+                      : fmt::format("V changes by no steady power of the distance along ({}) from 1e-40 to 1e+40", along);
+    return false;
+  }
   return true;
 }
 
-// The size of a perturbation of the reduced state: the coordinates' deviations against the
-// perturbation's size ε and the velocities' against ε times the system's rate ρ (for an
-// oscillator of frequency ρ, its amplitude whether it sits in the position or the velocity);
-// comparing velocities with displacements directly called an undamped 22 Hz oscillator unstable.
-struct PerturbationNorm {
-  const eomgen_model_abi& m;
-  double epsilon, rate;
-  double operator()(const std::vector<double>& y, const std::vector<double>& x) const {
-    double d = 0;
-    for (int i : reduced_state(m)) {
-      auto k = static_cast<std::size_t>(i);
-      double unit = k < m.num_coordinates ? epsilon : epsilon * rate;
-      d = std::max(d, std::abs(y[k] - x[k]) / unit);
-    }
-    return d;
+// The size of a perturbation of each state: 1/100 of the length over which the rhs keeps, along
+// it, the law it follows at the equilibrium (local_power_law.hpp), in whatever units the state is
+// written; 1e-3 of a unit where it keeps it throughout (linear along it, or one power law at every
+// size, as x'' = −x³). A velocity without a length of its own moves by its coordinate's size times
+// the system's rate ρ (an oscillator of frequency ρ has that amplitude in its velocity); comparing
+// velocities with displacements directly had called an undamped 22 Hz oscillator unstable.
+std::vector<double> perturbation_sizes(const Problem& p, const std::vector<double>& x, double rate) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t nq = m.num_coordinates, nv = m.num_velocities;
+  std::vector<double> lengths = nonlinearity_lengths(p, x), size(m.num_states);
+  for (std::size_t k = 0; k < nq; ++k)
+    size[k] = std::isfinite(lengths[k]) ? 1e-2 * lengths[k] : 1e-3 * std::max(1.0, std::abs(x[k]));
+  double smallest = nq > 0 ? *std::min_element(size.begin(), size.begin() + long(nq)) : 1e-3;
+  for (std::size_t k = nq; k < m.num_states; ++k) {
+    double paired = nq == nv ? size[k - nq] : smallest;
+    size[k] = std::min(rate * paired, 1e-2 * lengths[k]);
   }
-};
+  return size;
+}
+
+// the largest deviation of y from x in units of each state's perturbation size
+double perturbation_norm(const eomgen_model_abi& m, const std::vector<double>& y, const std::vector<double>& x,
+                         const std::vector<double>& size) {
+  double d = 0;
+  for (int i : reduced_state(m)) {
+    auto k = static_cast<std::size_t>(i);
+    d = std::max(d, std::abs(y[k] - x[k]) / size[k]);
+  }
+  return d;
+}
 
 // The run's length: 200 periods of the slowest oscillation, or 200 time constants of the
 // slowest rate when nothing oscillates; only when every eigenvalue is zero is there no scale
@@ -92,6 +113,14 @@ double horizon_of(const StabilityReport& r, double rate) {
   return rate > 0 ? 200 / rate : 100.0;
 }
 
+std::string sizes_text(const eomgen_model_abi& m, const std::vector<double>& size) {
+  std::string text;
+  std::vector<int> shown = reduced_state(m);
+  for (std::size_t k = 0; k < shown.size() && k < 6; ++k)
+    text += fmt::format("{}{} ±{:.2g}", k == 0 ? "" : ", ", m.state_names[shown[k]], size[std::size_t(shown[k])]);
+  return shown.size() > 6 ? text + ", …" : text;
+}
+
 std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const StabilityReport& r, std::string& verdict) {
   const eomgen_model_abi& m = *p.model;
   double rate = 0;
@@ -103,6 +132,8 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   s.dt_out = horizon / 2000;
   s.rtol = 1e-10;
   s.max_steps = 1'000'000;
+  std::vector<double> size = perturbation_sizes(p, x, rate);
+  s.atol = 1e-12 * *std::min_element(size.begin(), size.end());
   double worst = 0, when = 0;
   std::string worst_start;
   // each coordinate that is not cyclic, and each velocity, pushed both ways
@@ -110,14 +141,11 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
     auto i = static_cast<std::size_t>(component);
     for (double sign : {1.0, -1.0}) {
       std::vector<double> y = x;
-      double epsilon = 1e-3 * (i < m.num_coordinates ? std::max(1.0, std::abs(x[i])) : 1.0);
-      PerturbationNorm norm{m, epsilon, rate};
-      y[i] += sign * (i < m.num_coordinates ? epsilon : epsilon * rate);
-      s.atol = 1e-12 * epsilon * std::min(1.0, rate);
+      y[i] += sign * size[i];
       SimulationResult run = simulate(p, y, s);
       double grown = run.failed ? INFINITY : 0;
       for (std::size_t k = 0; k < run.trajectory.times.size(); ++k) {
-        double d = norm(run.trajectory.states[k], x);
+        double d = perturbation_norm(m, run.trajectory.states[k], x, size);
         if (d > grown || !std::isfinite(d)) grown = std::isfinite(d) ? d : INFINITY;
         if (d > 100 && when == 0) when = run.trajectory.times[k];
       }
@@ -133,10 +161,11 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
                        when, horizon);
   }
   verdict = "stable";
-  return fmt::format("perturbations of ±1e-3 in each coordinate and velocity (the velocities' times the system's rate "
-                     "{:.3g} 1/s) stayed within {:.3g} times their size over {:.4g} s (about 200 periods of the slowest "
-                     "mode): stable as far as a simulation can tell",
-                     rate, worst, horizon);
+  return fmt::format("perturbations of each coordinate and velocity by 1/100 of the length over which the rhs keeps "
+                     "the law it follows at the equilibrium (a velocity's, at most its coordinate's times the system's "
+                     "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size over {:.4g} s (about 200 periods of the "
+                     "slowest mode): stable as far as a simulation can tell",
+                     rate, sizes_text(m, size), worst, horizon);
 }
 
 }  // namespace

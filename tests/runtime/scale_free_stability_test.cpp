@@ -5,7 +5,8 @@
 // verdict; its eigenvalues scale by s exactly. A MEMS resonator (m = 1e-9, c = 1e-8,
 // k = 10: −5 ± 1e5 i) and a heavy oscillator (m = 1e6, c = 1e3, k = 1e12) are damped; an
 // undamped oscillator at 22 Hz whose spring is a generalized force stays small in the long
-// simulation; a free mass is not asymptotically stable.
+// simulation; a free mass is not asymptotically stable; a well is stable whatever the width of
+// its rim.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -195,6 +196,53 @@ TEST(ScaleFreeStability, FreeMassIsNotAsymptoticallyStable) {
   JsonValue r = run_json("stability '" + write_model("free", text) + "'");
   EXPECT_EQ(field(r, "verdict").text, "marginally_stable");
   EXPECT_EQ(field(field(r, "critical_case"), "energy").text.find("strict minimum"), std::string::npos);
+}
+
+// A particle in a well whose rim lies at x = L, for L from 1e-12 to 1e12: V = k x²/2 − k x⁴/(4L²),
+// the same with the linear stiffness gone (x⁴/4 − x⁶/(6L²), K = 0: only V's quartic rise shows the
+// minimum), and the first with a dissipation declared (c = 0), so that the long simulation decides.
+// Each is stable. Probing V at radii fixed in units (1e-2, 1e-3) stepped over rims closer than
+// 1e-2, and the simulation's push of 1e-3 threw the particle out of the well: "unstable".
+TEST(ScaleFreeStability, AWellIsStableWhateverTheWidthOfItsRim) {
+  const std::string well = R"toml([model]
+name = "NAME"
+[parameters]
+m = 1.0
+k = 1.0
+c = 0.0
+L = 1.0
+[coordinates]
+x = { initial = 0.0, rate = 0.0 }
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+)toml";
+  auto written = [&](const std::string& name, const std::string& energy) {
+    std::string text = well;
+    text.replace(text.find("NAME"), 4, name);
+    return write_model(name, text + energy);
+  };
+  struct Case {
+    std::string model, decided_by;
+  };
+  std::vector<Case> cases{
+      {written("rimmed_well", "potential = \"k*x^2/2 - k*x^4/(4*L^2)\"\n"), "energy"},
+      {written("quartic_well", "potential = \"k*x^4/4 - k*x^6/(6*L^2)\"\n"), "energy"},
+      {written("damped_rimmed_well", "dissipation = \"c*der(x)^2/2\"\npotential = \"k*x^2/2 - k*x^4/(4*L^2)\"\n"),
+       "simulation"}};
+  for (const Case& c : cases)
+    for (double L : scales()) {
+      JsonValue r = run_json("stability '" + c.model + "' " + fmt::format("--set L={:.17g}", L));
+      const JsonValue& critical = field(r, "critical_case");
+      EXPECT_EQ(field(critical, "nonlinear_verdict").text, "stable")
+          << c.model << ", L = " << L << ": " << field(critical, "energy").text << " / " << field(critical, "simulation").text;
+      if (c.decided_by == "energy")
+        EXPECT_NE(field(critical, "energy").text.find("strict minimum"), std::string::npos) << c.model << ", L = " << L;
+      else
+        EXPECT_NE(field(critical, "simulation").text.find("stable as far as"), std::string::npos) << c.model << ", L = " << L;
+    }
 }
 
 // A body hanging on a ball joint, with damping about every axis and a torsion spring about the

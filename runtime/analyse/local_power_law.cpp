@@ -1,0 +1,71 @@
+#include "analyse/local_power_law.hpp"
+
+#include <algorithm>
+
+namespace eomgen::runtime {
+
+const std::vector<double>& probe_radii() {
+  static const std::vector<double> radii = [] {
+    std::vector<double> r;
+    for (int k = -40; k <= 40; ++k) r.push_back(std::pow(10.0, k));
+    return r;
+  }();
+  return radii;
+}
+
+namespace {
+
+constexpr double exponent_tolerance = 0.1;
+
+double local_exponent(double lower, double upper) { return std::log10(std::abs(upper / lower)); }
+
+bool usable(double change) { return std::isfinite(change) && change != 0; }
+
+}  // namespace
+
+PowerLaw leading_power_law(const std::vector<double>& changes) {
+  PowerLaw law;
+  std::size_t end = 0;
+  while (end < changes.size() && std::isfinite(changes[end])) ++end;
+  for (std::size_t k = 0; k + 2 < end; ++k) {
+    double a = changes[k], b = changes[k + 1], c = changes[k + 2];
+    if (!usable(a) || !usable(b) || !usable(c) || (a > 0) != (b > 0) || (b > 0) != (c > 0)) continue;
+    double first = local_exponent(a, b), second = local_exponent(b, c);
+    if (first < 0.5 || std::abs(first - second) > exponent_tolerance) continue;
+    law.found = true;
+    law.exponent = (first + second) / 2;
+    law.sign = a > 0 ? 1 : -1;
+    law.from = probe_radii()[k];
+    law.change = a;
+    std::size_t last = k + 2;
+    while (last + 1 < end && usable(changes[last + 1]) && (changes[last + 1] > 0) == (a > 0) &&
+           std::abs(local_exponent(changes[last], changes[last + 1]) - law.exponent) <= exponent_tolerance)
+      ++last;
+    law.extent = last + 1 == changes.size() ? INFINITY : probe_radii()[last];
+    return law;
+  }
+  return law;
+}
+
+std::vector<double> nonlinearity_lengths(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  const std::vector<double>& radii = probe_radii();
+  std::vector<double> at_x(m.num_states), moved(m.num_states), lengths(m.num_states, INFINITY);
+  m.rhs(0.0, x.data(), p.held_inputs(), p.parameters.data(), at_x.data());
+  for (std::size_t component = 0; component < m.num_states; ++component) {
+    std::vector<std::vector<double>> changes(m.num_states, std::vector<double>(radii.size(), NAN));
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+      std::vector<double> y = x;
+      y[component] += radii[k];
+      m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), moved.data());
+      for (std::size_t row = 0; row < m.num_states; ++row) changes[row][k] = moved[row] - at_x[row];
+    }
+    for (const auto& row : changes) {
+      PowerLaw law = leading_power_law(row);
+      if (law.found) lengths[component] = std::min(lengths[component], law.extent);
+    }
+  }
+  return lengths;
+}
+
+}  // namespace eomgen::runtime
