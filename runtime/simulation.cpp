@@ -102,17 +102,17 @@ std::string configuration(const eomgen_model_abi& m, const std::vector<double>& 
   return s;
 }
 
-// smallest and largest eigenvalue of the mass matrix at x
+// smallest and largest eigenvalue of the mass matrix at x without its velocities' units
 std::pair<double, double> mass_matrix_range(const Problem& p, double t, const std::vector<double>& x) {
-  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
+  Eigen::MatrixXd M = unit_free_mass_matrix(p, t, x);
   if (M.size() == 0) return {1, 1};
   if (!M.allFinite()) return {NAN, NAN};
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M, Eigen::EigenvaluesOnly);
   return {eigen.eigenvalues().minCoeff(), eigen.eigenvalues().maxCoeff()};
 }
 
-// the mass matrix's conditioning (smallest over largest eigenvalue) and the coordinates that
-// take part in its weakest direction
+// the mass matrix's conditioning (smallest over largest eigenvalue, without the velocities' units)
+// and the coordinates that take part in its weakest direction
 struct Conditioning {
   double ratio = 1;
   std::string coordinates;
@@ -121,7 +121,7 @@ struct Conditioning {
 Conditioning conditioning(const Problem& p, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::size_t n = m.num_velocities;
-  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
+  Eigen::MatrixXd M = unit_free_mass_matrix(p, t, x);
   Conditioning c;
   if (!M.allFinite() || n == 0) return c;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M);

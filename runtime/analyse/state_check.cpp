@@ -41,10 +41,23 @@ Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<dou
   return rows;
 }
 
+Eigen::MatrixXd unit_free_mass_matrix(const Problem& p, double t, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
+  std::vector<double> at_default(m.default_state, m.default_state + m.num_states);
+  Eigen::MatrixXd reference = mass_matrix_at(p, t, at_default);
+  Eigen::VectorXd d(M.rows());
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    double inertia = std::max(M(i, i), std::isfinite(reference(i, i)) ? reference(i, i) : 0.0);
+    d[i] = inertia > 0 ? 1 / std::sqrt(inertia) : 1.0;
+  }
+  return d.asDiagonal() * M * d.asDiagonal();
+}
+
 MassMatrixRank mass_matrix_rank(const Problem& p, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   std::size_t k = m.num_velocities;
-  Eigen::MatrixXd M = mass_matrix_at(p, t, x);
+  Eigen::MatrixXd M = unit_free_mass_matrix(p, t, x);
   MassMatrixRank r;
   r.size = r.rank = k;
   if (k == 0 || !M.allFinite()) return r;
@@ -72,12 +85,14 @@ std::string unfit_state(const Problem& p, double t, const std::vector<double>& x
   MassMatrixRank r = mass_matrix_rank(p, t, x);
   // a kinetic energy that is negative in some direction: a negative mass or moment of inertia
   if (r.size > 0 && r.smallest < -1e-12 * std::max(r.largest, 1e-300))
-    return fmt::format("the mass matrix is not positive definite at {}: its eigenvalues run from {:.3g} to {:.3g}, so the "
+    return fmt::format("the mass matrix is not positive definite at {}: scaled to a unit diagonal, its eigenvalues run from "
+                       "{:.3g} to {:.3g}, so the "
                        "kinetic energy is negative in some direction; a negative mass or moment of inertia (check the "
                        "--set values and the model's inertias)",
                        state_text(m, x), r.smallest, r.largest);
   if (r.singular())
-    return fmt::format("the mass matrix is singular at {}: rank {} of {} (eigenvalues from {:.3g} to {:.3g}); no inertia "
+    return fmt::format("the mass matrix is singular at {}: rank {} of {} (scaled to a unit diagonal, eigenvalues from "
+                       "{:.3g} to {:.3g}); no inertia "
                        "resists {}: a coordinate that appears in no kinetic energy, or a singularity of the coordinates "
                        "at this configuration",
                        state_text(m, x), r.rank, r.size, r.smallest, r.largest, r.null_velocities);

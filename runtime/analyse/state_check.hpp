@@ -24,6 +24,14 @@ std::string non_finite_quantities(const Problem& p, double t, const std::vector<
 /// Appell model fewer rows than coordinates: it is the matrix of the pseudo-velocities).
 Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<double>& x);
 
+/// D M D with D_ii = 1/√m_i, m_i the larger of M_ii at x and at the model's default state (1 where
+/// both are zero): M without the units of its velocities, whose eigenvalues' signs are M's
+/// (Sylvester's law of inertia). A cart of 1e-9 kg carrying a pendulum of 0.5 µm has M_xx = 1.2e-9
+/// and M_θθ = 5e-23, eigenvalues 14 orders apart and "singular" by any threshold on them; scaled,
+/// they are 0.6 and 1.4. The default state keeps a diagonal entry that vanishes at x (a coordinate
+/// singularity, such as r = 0 of polar coordinates) from being scaled back up to 1.
+Eigen::MatrixXd unit_free_mass_matrix(const Problem& p, double t, const std::vector<double>& x);
+
 struct MassMatrixRank {
   std::size_t rank = 0, size = 0;
   double smallest = 0, largest = 0;  // eigenvalues
@@ -31,7 +39,8 @@ struct MassMatrixRank {
   bool singular() const { return rank < size; }
 };
 
-/// The rank of the (finite) mass matrix at (t, x): eigenvalues below 1e-12 of the largest count as zero.
+/// The rank of the (finite) mass matrix at (t, x): eigenvalues of unit_free_mass_matrix below 1e-12
+/// of the largest count as zero; `smallest` and `largest` are its.
 MassMatrixRank mass_matrix_rank(const Problem& p, double t, const std::vector<double>& x);
 
 /// Why (t, x) cannot be analysed: not-finite quantities, or a singular mass matrix; empty when it can.

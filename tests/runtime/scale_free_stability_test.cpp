@@ -6,7 +6,8 @@
 // k = 10: −5 ± 1e5 i) and a heavy oscillator (m = 1e6, c = 1e3, k = 1e12) are damped; an
 // undamped oscillator at 22 Hz whose spring is a generalized force stays small in the long
 // simulation; a free mass is not asymptotically stable; a well is stable whatever the width of
-// its rim.
+// its rim; a MEMS cart's mass matrix is regular, and a free cart's transfer function keeps its
+// double pole at 0.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,8 @@
 
 #include "analyse/critical_case.hpp"
 #include "analyse/linear_stability.hpp"
+#include "analyse/state_check.hpp"
+#include "analyse/transfer_function.hpp"
 #include "analyse/system_scales.hpp"
 #include "generated/header_registry.hpp"
 #include "support/test_support.hpp"
@@ -242,6 +245,61 @@ position = ["x", "0", "0"]
         EXPECT_NE(field(critical, "energy").text.find("strict minimum"), std::string::npos) << c.model << ", L = " << L;
       else
         EXPECT_NE(field(critical, "simulation").text.find("stable as far as"), std::string::npos) << c.model << ", L = " << L;
+    }
+}
+
+// The pendulum on a cart with its masses scaled by μ and its rod by λ (g by λ too, so that the time
+// scale stays): M = [[μ(mc + m), μλ m l cos θ], [·, μλ² m l²]] has eigenvalues as far apart as λ²
+// (1e-9 kg against 5e-23 kg m² for a MEMS cart), which a threshold on them called singular; without
+// the velocities' units it is the same matrix at every scale.
+TEST(ScaleFreeStability, ACartsMassMatrixIsRegularInAnyUnits) {
+  const eomgen_model_abi* m = generated_model("cart_pendulum").abi;
+  std::vector<double> x(m->num_states, 0.0);
+  for (double mu : scales())
+    for (double lambda : scales()) {
+      Problem p{m, std::vector<double>(m->default_parameters, m->default_parameters + m->num_parameters),
+                std::vector<double>(m->num_inputs, 0.0)};
+      for (std::size_t i = 0; i < m->num_parameters; ++i) {
+        std::string name = m->parameter_names[i];
+        p.parameters[i] *= name == "l" || name == "g" ? lambda : mu;
+      }
+      runtime::MassMatrixRank r = runtime::mass_matrix_rank(p, 0.0, x);
+      EXPECT_FALSE(r.singular()) << "mu = " << mu << ", lambda = " << lambda << ": " << r.null_velocities;
+      EXPECT_EQ(runtime::unfit_state(p, 0.0, x), "") << "mu = " << mu << ", lambda = " << lambda;
+    }
+}
+
+// From the force on a free cart to its position, with a pendulum hanging from it: a double pole
+// at 0 (the free cart), poles ±iω, ω² = g (mc + m)/(mc l), and zeros ±i√(g/l), at time scales s
+// from 1e-12 to 1e12 and in masses scaled by μ. In rounding the double pole splits into a pair
+// about √ε of the scale apart, which had been reported as two poles ±4e-11 and a finite G(0).
+TEST(ScaleFreeStability, AFreeCartsDoublePoleIsAtZeroAtEveryScale) {
+  const double mc = 1.0, mp = 0.2, l = 0.5;
+  for (double s : scales())
+    for (double mu : {1e-9, 1.0, 1e9}) {
+      double g = 9.81 * s * s;
+      Eigen::Matrix2d M, K;
+      M << mu * (mc + mp), mu * mp * l, mu * mp * l, mu * mp * l * l;
+      K << 0, 0, 0, mu * mp * g * l;
+      Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, 4), B = Eigen::MatrixXd::Zero(4, 1), C = Eigen::MatrixXd::Zero(1, 4);
+      A.topRightCorner(2, 2).setIdentity();
+      A.bottomLeftCorner(2, 2) = -M.inverse() * K;
+      B.bottomRows(2) = M.inverse() * Eigen::Vector2d(1, 0);
+      C(0, 0) = 1;
+      runtime::TransferFunction G = runtime::transfer_function(A, B, C, Eigen::MatrixXd::Zero(1, 1), 0, 0);
+      std::string at = fmt::format("s = {:g}, mu = {:g}", s, mu);
+      EXPECT_TRUE(std::isinf(G.dc_gain().real())) << at;
+      double omega = std::sqrt(g * (mc + mp) / (mc * l)), omega0 = std::sqrt(g / l);
+      ASSERT_EQ(G.poles.size(), 4u) << at;
+      int at_zero = 0, at_omega = 0;
+      for (auto p : G.poles) {
+        at_zero += p == std::complex<double>(0, 0);
+        at_omega += p.real() == 0 && std::abs(std::abs(p.imag()) - omega) <= 1e-9 * omega;
+      }
+      EXPECT_EQ(at_zero, 2) << at;
+      EXPECT_EQ(at_omega, 2) << at;
+      ASSERT_EQ(G.zeros.size(), 2u) << at;
+      for (auto z : G.zeros) EXPECT_NEAR(std::abs(z.imag()), omega0, 1e-9 * omega0) << at;
     }
 }
 
