@@ -75,6 +75,7 @@ set(EOMGEN_TEST_FILES
   runtime/linear_stability_test.cpp                 fast
   runtime/scale_free_stability_test.cpp             slow
   runtime/scale_free_sweeps_test.cpp                fast
+  runtime/scale_free_linear_test.cpp                fast
   runtime/random_sweeps_test.cpp                    fast
   runtime/random_systems_test.cpp                   fast
   runtime/stability_map_test.cpp                    fast

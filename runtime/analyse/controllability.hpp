@@ -16,10 +16,15 @@ namespace eomgen::runtime {
 struct ModeReach {
   std::complex<double> eigenvalue;
   bool controllable = true, observable = true;
-  Eigen::VectorXcd unreachable;  // w with w*(A − λI) = 0, w*B = 0 (when not controllable)
-  Eigen::VectorXcd unseen;       // v with (A − λI) v = 0, C v = 0 (when not observable)
+  /// w with w*(A − λI) = 0, w*B = 0 (when not controllable), and v with (A − λI) v = 0, C v = 0
+  /// (when not observable), in balanced coordinates: each state's component on the eigenvalues'
+  /// scale, not in its own units, so that their sizes say which states take part
+  Eigen::VectorXcd unreachable, unseen;
 };
 
+/// The Kalman ranks are the dimensions of the reachable and the observable spaces (orthonormal
+/// Krylov bases of the system in balanced coordinates, on a time scale of one, inputs and outputs
+/// of unit size), decided relative to the system's own scales.
 struct Reach {
   int kalman_controllability_rank = 0, kalman_observability_rank = 0;
   bool controllable = true, observable = true;  // by the PBH test

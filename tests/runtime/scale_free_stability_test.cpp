@@ -6,8 +6,7 @@
 // k = 10: −5 ± 1e5 i) and a heavy oscillator (m = 1e6, c = 1e3, k = 1e12) are damped; an
 // undamped oscillator at 22 Hz whose spring is a generalized force stays small in the long
 // simulation; a free mass is not asymptotically stable; a well is stable whatever the width of
-// its rim; a MEMS cart's mass matrix is regular, and a free cart's transfer function keeps its
-// double pole at 0.
+// its rim; a MEMS cart's mass matrix is regular.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,7 +17,6 @@
 #include "analyse/critical_case.hpp"
 #include "analyse/linear_stability.hpp"
 #include "analyse/state_check.hpp"
-#include "analyse/transfer_function.hpp"
 #include "analyse/system_scales.hpp"
 #include "generated/header_registry.hpp"
 #include "support/test_support.hpp"
@@ -266,40 +264,6 @@ TEST(ScaleFreeStability, ACartsMassMatrixIsRegularInAnyUnits) {
       runtime::MassMatrixRank r = runtime::mass_matrix_rank(p, 0.0, x);
       EXPECT_FALSE(r.singular()) << "mu = " << mu << ", lambda = " << lambda << ": " << r.null_velocities;
       EXPECT_EQ(runtime::unfit_state(p, 0.0, x), "") << "mu = " << mu << ", lambda = " << lambda;
-    }
-}
-
-// From the force on a free cart to its position, with a pendulum hanging from it: a double pole
-// at 0 (the free cart), poles ±iω, ω² = g (mc + m)/(mc l), and zeros ±i√(g/l), at time scales s
-// from 1e-12 to 1e12 and in masses scaled by μ. In rounding the double pole splits into a pair
-// about √ε of the scale apart, which had been reported as two poles ±4e-11 and a finite G(0).
-TEST(ScaleFreeStability, AFreeCartsDoublePoleIsAtZeroAtEveryScale) {
-  const double mc = 1.0, mp = 0.2, l = 0.5;
-  for (double s : scales())
-    for (double mu : {1e-9, 1.0, 1e9}) {
-      double g = 9.81 * s * s;
-      Eigen::Matrix2d M, K;
-      M << mu * (mc + mp), mu * mp * l, mu * mp * l, mu * mp * l * l;
-      K << 0, 0, 0, mu * mp * g * l;
-      Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, 4), B = Eigen::MatrixXd::Zero(4, 1), C = Eigen::MatrixXd::Zero(1, 4);
-      A.topRightCorner(2, 2).setIdentity();
-      A.bottomLeftCorner(2, 2) = -M.inverse() * K;
-      B.bottomRows(2) = M.inverse() * Eigen::Vector2d(1, 0);
-      C(0, 0) = 1;
-      runtime::TransferFunction G = runtime::transfer_function(A, B, C, Eigen::MatrixXd::Zero(1, 1), 0, 0);
-      std::string at = fmt::format("s = {:g}, mu = {:g}", s, mu);
-      EXPECT_TRUE(std::isinf(G.dc_gain().real())) << at;
-      double omega = std::sqrt(g * (mc + mp) / (mc * l)), omega0 = std::sqrt(g / l);
-      ASSERT_EQ(G.poles.size(), 4u) << at;
-      int at_zero = 0, at_omega = 0;
-      for (auto p : G.poles) {
-        at_zero += p == std::complex<double>(0, 0);
-        at_omega += p.real() == 0 && std::abs(std::abs(p.imag()) - omega) <= 1e-9 * omega;
-      }
-      EXPECT_EQ(at_zero, 2) << at;
-      EXPECT_EQ(at_omega, 2) << at;
-      ASSERT_EQ(G.zeros.size(), 2u) << at;
-      for (auto z : G.zeros) EXPECT_NEAR(std::abs(z.imag()), omega0, 1e-9 * omega0) << at;
     }
 }
 
