@@ -36,6 +36,9 @@ struct SimulationSettings {
   double t_start = 0, t_end = 10, dt_out = 0.01;
   std::string integrator = "cvode-bdf";
   double rtol = 1e-8, atol = 1e-10;
+  /// num_states absolute tolerances, one per state (analyse/state_tolerances.hpp), or empty: atol
+  /// for every state. Taken by the SUNDIALS integrators where the stepper's state is the model's.
+  std::vector<double> state_atol;
   double step = 0;               // fixed step of rk4, verlet and gauss-legendre; 0: dt_out/10
   long max_steps = 200'000;      // between two output times
   /// > 0: the run stops (failed, `over_budget`) at the first output time after this many

@@ -21,6 +21,7 @@ Command add_animate_command(CLI::App& app) {
   return [cmd, o]() -> int {
     if (!cmd->parsed()) return -1;
     o->t_end_given = cmd->count("--t-end") > 0, o->dt_out_given = cmd->count("--dt-out") > 0;
+    o->atol_given = cmd->count("--atol") > 0;
     o->animate_only = true;
     return simulate_model(*o);
   };

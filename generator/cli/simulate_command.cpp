@@ -21,7 +21,9 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
                   "with its own error estimate)")
       ->check(CLI::IsMember(names));
   cmd->add_option("--rtol", o.settings.rtol, "Relative tolerance (default 1e-8)");
-  cmd->add_option("--atol", o.settings.atol, "Absolute tolerance (default 1e-10)");
+  cmd->add_option("--atol", o.settings.atol, "Absolute tolerance, one for every state (default: 1e-10, or 1e-2 rtol of a state's "
+                  "size where that is smaller: its initial value (or default where that is 0), for a velocity also its coordinate's times the "
+                  "system's rate)");
   cmd->add_option("--step", o.settings.step, "Fixed step of rk4, verlet and gauss-legendre [s] (default dt-out/10)");
   cmd->add_option("--max-rows", o.max_rows, "Most output rows a run may keep (default 1e6): longer runs need a longer --dt-out");
   cmd->add_option("--stabilization", o.stabilization,
@@ -58,6 +60,7 @@ Command add_simulate_command(CLI::App& app) {
     if (!cmd->parsed()) return -1;
     o->json = *format == "json";
     o->t_end_given = cmd->count("--t-end") > 0, o->dt_out_given = cmd->count("--dt-out") > 0;
+    o->atol_given = cmd->count("--atol") > 0;
     return simulate_model(*o);
   };
 }

@@ -11,6 +11,7 @@
 
 #include "analyse/conservation.hpp"
 #include "analyse/integrator_choice.hpp"
+#include "analyse/state_tolerances.hpp"
 #include "analyse/work_precision.hpp"
 #include "common/output_file.hpp"
 #include "common/stop_signal.hpp"
@@ -52,6 +53,22 @@ void apply_scene_times(const Equations& e, SimulationOptions& o) {
       std::cerr << fmt::format("eomgen: scene {}: to t = {:g}, output every {:g} s\n", scene.name, o.settings.t_end,
                                o.settings.dt_out);
     }
+}
+
+// without --atol, each state's absolute tolerance from its own size (analyse/state_tolerances.hpp);
+// said where that is a tenth of the default or less (a state far below a unit in size)
+void scale_absolute_tolerances(const runtime::Problem& problem, const std::vector<double>& x0,
+                               runtime::SimulationSettings& settings) {
+  const eomgen_model_abi& m = *problem.model;
+  settings.state_atol = runtime::state_absolute_tolerances(problem, x0, settings.rtol, settings.atol);
+  std::string tighter;
+  int shown = 0;
+  for (std::size_t i = 0; i < settings.state_atol.size(); ++i)
+    if (settings.state_atol[i] <= 0.1 * settings.atol && shown++ < 6)
+      tighter += fmt::format("{}{} {:.2g}", tighter.empty() ? "" : ", ", m.state_names[i], settings.state_atol[i]);
+  if (!tighter.empty())
+    std::cerr << fmt::format("eomgen: absolute tolerance from each state's size where below {:g}: {}{} (--atol sets one "
+                             "for all)\n", settings.atol, tighter, shown > 6 ? ", …" : "");
 }
 
 }  // namespace
@@ -112,6 +129,7 @@ int simulate_model(const SimulationOptions& options) {
     settings.integrator = choice.integrator;
     std::cerr << fmt::format("eomgen: integrator {}: {} (--integrator chooses another)\n", choice.integrator, choice.reason);
   }
+  if (!o.atol_given) scale_absolute_tolerances(problem, x0, settings);
   std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, settings.integrator, o.settings.t_end);
   settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";

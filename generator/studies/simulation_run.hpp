@@ -23,6 +23,7 @@ struct SimulationOptions {
   bool json = false;
   std::string scene, variant;          // --scene NAME, --variant NAME
   bool t_end_given = false, dt_out_given = false;  // a scene's times give way to --t-end, --dt-out
+  bool atol_given = false;  // without --atol each state's own size sets its absolute tolerance
   double max_rows = 1e6;  // output rows a run may keep in memory (--max-rows)
   std::string animation;           // --animate FILE.html (animate: -o)
   std::vector<std::string> trace;  // --trace NAME: bodies whose paths the animation draws

@@ -27,7 +27,8 @@ class Arkode : public Stepper {
     if (implicit) {
       memory_ = ARKStepCreate(nullptr, sundials_rhs, s.t_start, x_, context_);
       ARKStepSetTableNum(memory_, static_cast<ARKODE_DIRKTableID>(table), ARKODE_ERK_NONE);
-      ARKStepSStolerances(memory_, s.rtol, s.atol);
+      if (N_Vector each = absolute_tolerances(s, x_)) ARKStepSVtolerances(memory_, s.rtol, each), N_VDestroy(each);
+      else ARKStepSStolerances(memory_, s.rtol, s.atol);
       ARKStepSetUserData(memory_, &f);
       ARKStepSetErrHandlerFn(memory_, quiet_sundials_messages, nullptr);
       ARKStepSetMaxNumSteps(memory_, s.max_steps);
@@ -40,7 +41,8 @@ class Arkode : public Stepper {
     } else {
       memory_ = ERKStepCreate(sundials_rhs, s.t_start, x_, context_);
       ERKStepSetTableNum(memory_, static_cast<ARKODE_ERKTableID>(table));
-      ERKStepSStolerances(memory_, s.rtol, s.atol);
+      if (N_Vector each = absolute_tolerances(s, x_)) ERKStepSVtolerances(memory_, s.rtol, each), N_VDestroy(each);
+      else ERKStepSStolerances(memory_, s.rtol, s.atol);
       ERKStepSetUserData(memory_, &f);
       ERKStepSetErrHandlerFn(memory_, quiet_sundials_messages, nullptr);
       ERKStepSetMaxNumSteps(memory_, s.max_steps);

@@ -26,7 +26,8 @@ class Cvode : public Stepper {
     std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(x_));
     memory_ = CVodeCreate(adams ? CV_ADAMS : CV_BDF, context_);
     CVodeInit(memory_, sundials_rhs, s.t_start, x_);
-    CVodeSStolerances(memory_, s.rtol, s.atol);
+    if (N_Vector each = absolute_tolerances(s, x_)) CVodeSVtolerances(memory_, s.rtol, each), N_VDestroy(each);
+    else CVodeSStolerances(memory_, s.rtol, s.atol);
     CVodeSetUserData(memory_, &f);
     CVodeSetErrHandlerFn(memory_, quiet_sundials_messages, nullptr);
     CVodeSetMaxNumSteps(memory_, s.max_steps);

@@ -48,7 +48,8 @@ class Ida : public Stepper {
     // coordinates' own tolerance (√rtol did not)
     N_Vector tolerance = N_VClone(y_);
     double* atol = N_VGetArrayPointer(tolerance);
-    for (std::size_t i = 0; i < 2 * n_; ++i) atol[i] = s.atol;
+    bool each = s.state_atol.size() == 2 * n_;
+    for (std::size_t i = 0; i < 2 * n_; ++i) atol[i] = each ? s.state_atol[i] : s.atol;
     algebraic_tolerances(x0, s, atol + 2 * n_);
     IDASVtolerances(memory_, s.rtol, tolerance);
     N_VDestroy(tolerance);

@@ -1,5 +1,6 @@
 #include "integrate/sundials_callbacks.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -11,6 +12,13 @@ std::string take_flag_name(char* name) {
   std::string text = name ? name : "an unknown flag";
   std::free(name);
   return text;
+}
+
+N_Vector absolute_tolerances(const SimulationSettings& settings, N_Vector x) {
+  if (settings.state_atol.empty() || settings.state_atol.size() != static_cast<std::size_t>(N_VGetLength(x))) return nullptr;
+  N_Vector each = N_VClone(x);
+  std::copy(settings.state_atol.begin(), settings.state_atol.end(), N_VGetArrayPointer(each));
+  return each;
 }
 
 int sundials_rhs(realtype t, N_Vector x, N_Vector xdot, void* data) {

@@ -17,6 +17,11 @@ int sundials_projection_correction(realtype t, N_Vector x, N_Vector correction, 
 /// The text of a SUNDIALS *GetReturnFlagName result, which the caller must free.
 std::string take_flag_name(char* name);
 
+/// A new vector of the run's absolute tolerances, one per state (SimulationSettings::state_atol),
+/// shaped like x; null when the run has one for all or the stepper's state is not the model's.
+/// The caller destroys it once the integrator has copied it.
+N_Vector absolute_tolerances(const struct SimulationSettings& settings, N_Vector x);
+
 int sundials_dense_jacobian(realtype t, N_Vector x, N_Vector fx, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector);
 
 }  // namespace eomgen::runtime

@@ -1,6 +1,7 @@
 // `eomgen simulate` end to end: energy conservation, an analytic solution for
-// every integrator, the CSV layout, the compile cache, and failures that end
-// with exit status 3 and the trajectory up to the failure.
+// every integrator, the CSV layout, the compile cache, failures that end with
+// exit status 3 and the trajectory up to the failure, and absolute tolerances in
+// each state's own size.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,8 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+
+#include <fmt/format.h>
 
 #include "support/test_support.hpp"
 
@@ -262,6 +265,49 @@ TEST(Simulate, IdaOnAModelWithoutMultipliersIsAUsageError) {
   CommandRun run = eomgen("simulate " + model_path("knife_edge") + " --integrator ida", shared_cache());
   EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("lagrange1"), std::string::npos) << run.err;
+}
+
+// An oscillator of 1e5 rad/s whose amplitude is a, for a from 1e-12 to 1: the default absolute
+// tolerance, 1e-10 in every unit, had left a = 1e-9 m at 5e-5 of its amplitude where rtol asks
+// 1e-8. Without --atol each state's tolerance follows its size, and the run is as accurate at
+// every amplitude (1e-7 of it, against the cosine); with --atol it is the one given.
+TEST(Simulate, ASmallOscillatorIsAsAccurateAsALargeOne) {
+  std::string model = write_model("small_oscillator", R"toml([model]
+name = "small_oscillator"
+[parameters]
+m = 1e-9
+k = 10.0
+[coordinates]
+x = { initial = 1.0, rate = 0.0 }
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*x^2/2"
+)toml");
+  const double omega = 1e5;
+  auto worst_error = [&](double a, const std::string& extra, std::string* err) {
+    std::string csv = temporary_directory() + "/o.csv";
+    CommandRun r = eomgen("simulate '" + model + "' --t-end 1e-3 --dt-out 1e-5 --integrator arkode-dp5 --initial x=" +
+                              fmt::format("{:.17g}", a) + " " + extra + " -o '" + csv + "'",
+                          shared_cache());
+    EXPECT_EQ(r.status, 0) << r.err;
+    if (err) *err = r.err;
+    std::string header;
+    double worst = 0;
+    for (const auto& row : read_csv(csv, header)) worst = std::max(worst, std::abs(row[1] - a * std::cos(omega * row[0])) / a);
+    return worst;
+  };
+  for (double a : {1.0, 1e-3, 1e-6, 1e-9, 1e-12}) {
+    std::string err;
+    double error = worst_error(a, "", &err);
+    EXPECT_LT(error, 1e-7) << "a = " << a;
+    if (a <= 1e-6) {
+      EXPECT_NE(err.find("absolute tolerance from each state's size"), std::string::npos) << err;
+    }
+  }
+  EXPECT_GT(worst_error(1e-9, "--atol 1e-10", nullptr), 1e-6);
 }
 
 TEST(RunCommand, MainJobDrawsTheCharts) {

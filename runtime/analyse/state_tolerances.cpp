@@ -1,0 +1,43 @@
+#include "analyse/state_tolerances.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "analyse/system_scales.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+// the spectral scale of the balanced Jacobian at x0, in 1/s; 0 where it is not finite
+double rate_at(const Problem& p, const std::vector<double>& x0) {
+  const eomgen_model_abi& m = *p.model;
+  auto n = static_cast<Eigen::Index>(m.num_states);
+  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(n, n);
+  m.jacobian_state(0.0, x0.data(), p.held_inputs(), p.parameters.data(), J.data());
+  if (!J.allFinite()) return 0;
+  return spectral_scale(J);
+}
+
+}  // namespace
+
+std::vector<double> state_absolute_tolerances(const Problem& p, const std::vector<double>& x0, double rtol, double atol) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t nq = m.num_coordinates, nv = m.num_velocities;
+  std::vector<double> size(m.num_states, 0.0), tolerance(m.num_states, atol);
+  for (std::size_t i = 0; i < m.num_states && i < x0.size(); ++i) {
+    double given = std::isfinite(x0[i]) ? std::abs(x0[i]) : 0.0, usual = std::abs(m.default_state[i]);
+    size[i] = given > 0 ? given : std::isfinite(usual) ? usual : 0.0;
+  }
+  if (nq == nv) {
+    double rate = rate_at(p, x0);
+    for (std::size_t k = 0; k < nv; ++k) size[nq + k] = std::max(size[nq + k], rate * size[k]);
+  }
+  for (std::size_t i = 0; i < m.num_states; ++i)
+    if (size[i] > 0 && std::isfinite(size[i])) tolerance[i] = std::min(atol, 1e-2 * rtol * size[i]);
+  return tolerance;
+}
+
+}  // namespace eomgen::runtime
