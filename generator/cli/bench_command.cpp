@@ -12,7 +12,7 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--t-end", o->t_end, "End time [s] (default 10)");
   cmd->add_option("--dt-out", o->dt_out, "Output interval the errors are taken at [s] (default t-end/200)");
   cmd->add_option("--integrators", o->integrators, "Comma-separated list, or all (default: every one that applies)");
-  cmd->add_option("--tolerances", o->tolerances, "Relative tolerances FROM:TO:FACTOR (default 1e-3:1e-12:10); atol = rtol/100");
+  cmd->add_option("--tolerances", o->tolerances, "Relative tolerances FROM:TO:FACTOR (default 1e-3:1e-12:10); atol = rtol/100, or 1e-2 rtol of a state's size where smaller");
   cmd->add_option("--step-count", o->step_count, "Fixed steps of rk4 and verlet: dt-out/4 halved this many times less one (default 8)");
   cmd->add_option("--energy-horizon", o->energy_horizon, "Long run for the energy chart [s] (default 100 t-end)");
   cmd->add_option("--energy-tolerance", o->energy_tolerance, "rtol of the long run (default 1e-6)");

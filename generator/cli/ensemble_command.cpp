@@ -27,7 +27,7 @@ Command add_ensemble_command(CLI::App& app) {
   cmd->add_option("--dt-out", o->settings.dt_out, "Output interval [s] (default 0.01)");
   cmd->add_option("--integrator", o->settings.integrator, "As for simulate (default auto, chosen once at the base values)");
   cmd->add_option("--rtol", o->settings.rtol, "Relative tolerance (default 1e-8)");
-  cmd->add_option("--atol", o->settings.atol, "Absolute tolerance (default 1e-10)");
+  cmd->add_option("--atol", o->settings.atol, "Absolute tolerance, one for every state (default: as for simulate, from each sample's states' sizes)");
   cmd->add_option("--step", o->settings.step, "Fixed step of rk4, verlet and gauss-legendre [s] (default dt-out/10)");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
   cmd->add_option("--initial", o->initials, "Initial value, one per flag: --initial phi=0.3");
@@ -39,6 +39,7 @@ Command add_ensemble_command(CLI::App& app) {
   return [cmd, o, format]() -> int {
     if (!cmd->parsed()) return -1;
     o->json = *format == "json";
+    o->atol_given = cmd->count("--atol") > 0;
     return run_ensemble(*o);
   };
 }

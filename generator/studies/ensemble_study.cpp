@@ -31,6 +31,7 @@ std::optional<int> build_setup(const EnsembleOptions& o, const LoadedProblem& lo
   setup.base = loaded.problem;
   setup.initial_state = loaded.initial_state;
   setup.settings = o.settings;
+  setup.state_tolerances = !o.atol_given;
   setup.seed = o.seed;
   std::vector<bool> given;
   if (!assign_states(m, o.initials, "--initial", setup.initial_state, &given)) return exit_user_error;

@@ -17,6 +17,7 @@ struct EnsembleOptions {
   std::vector<std::string> vary, outputs, measures, sets, initials;
   std::string quantiles = "0.05,0.5,0.95";
   runtime::SimulationSettings settings;
+  bool atol_given = false;  // without --atol each sample's states' sizes set their absolute tolerances
   unsigned threads = 0;
   std::string csv, plot;
   bool json = false;

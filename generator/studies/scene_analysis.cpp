@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analyse/equilibrium.hpp"
+#include "analyse/state_tolerances.hpp"
 #include "symbolic_analysis/term_pruning.hpp"
 #include "analyse/work_precision.hpp"
 #include "studies/loaded_problem.hpp"
@@ -72,6 +73,7 @@ class SceneAnalyser {
     bool extrapolation = loaded.problem.reference && !(stiffness > 1e3);
     s.integrator = extrapolation ? "reference" : "cvode-bdf";
     s.rtol = 1e-12, s.atol = 1e-14;
+    s.state_atol = runtime::state_absolute_tolerances(loaded.problem, loaded.initial_state, s.rtol, s.atol);
     s.stop = stop_;
     a_.reference_integrator = extrapolation ? "reference"
                               : loaded.problem.reference

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/state_tolerances.hpp"
 #include "report/reports.hpp"
 
 namespace eomgen::runtime {
@@ -62,6 +63,7 @@ SampleRun run_sample(const EnsembleSetup& setup, long k, const std::vector<doubl
   }
   SimulationSettings settings = setup.settings;
   settings.stop = &stop;
+  if (setup.state_tolerances) settings.state_atol = state_absolute_tolerances(p, x0, settings.rtol, settings.atol);
   SimulationResult r = simulate(p, x0, settings);
   run.measures.assign(setup.measures.size(), NAN);
   if (r.failed || r.trajectory.times.size() != times.size()) {

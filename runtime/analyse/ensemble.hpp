@@ -44,6 +44,9 @@ struct EnsembleSetup {
   /// with --initial, or drawn) keep their values.
   std::function<std::optional<std::vector<double>>(const std::vector<double>& parameters)> initial_state_at;
   SimulationSettings settings;
+  /// each sample's absolute tolerances from its own states' sizes (analyse/state_tolerances.hpp),
+  /// settings.atol the largest: where no --atol was given
+  bool state_tolerances = false;
   std::vector<Variation> variations;
   std::vector<std::string> signals;  // recorded over time: coordinates, velocities, outputs, energy
   std::vector<Measure> measures;     // one number per sample each

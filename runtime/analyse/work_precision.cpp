@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analyse/accuracy.hpp"
+#include "analyse/state_tolerances.hpp"
 #include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
@@ -57,6 +58,7 @@ EnergyHistory energy_history(const Problem& p, const std::vector<double>& x0, co
   s.integrator = integrator;
   s.rtol = w.energy_tolerance;
   s.atol = w.energy_tolerance / 100;
+  s.state_atol = state_absolute_tolerances(p, x0, s.rtol, s.atol);
   s.step = w.energy_step;
   s.max_steps = 10'000'000;
   SimulationResult r = simulate(p, x0, s);
@@ -91,8 +93,10 @@ void accuracy_horizons(const Problem& p, const std::vector<double>& x0, const Wo
   s.max_steps = 2'000'000;
   for (double tolerance : w.tolerances) {
     s.rtol = tolerance, s.atol = tolerance / 100;
+    s.state_atol = state_absolute_tolerances(p, x0, s.rtol, s.atol);
     SimulationResult loose = simulate(p, x0, s);
     s.rtol = tolerance / 10, s.atol = tolerance / 1000;
+    s.state_atol = state_absolute_tolerances(p, x0, s.rtol, s.atol);
     SimulationResult tight = simulate(p, x0, s);
     out.horizons.push_back({tolerance, parting_time(loose.trajectory, tight.trajectory)});
     progress(fmt::format("accuracy horizon at rtol {:.0e} ({}): {:.3g} s", tolerance, s.integrator, out.horizons.back().horizon));
@@ -169,7 +173,7 @@ WorkPrecision work_precision(const Problem& problem, const std::vector<double>& 
     s.integrator = integrator;
     for (double value : fixed_step(integrator) ? w.steps : w.tolerances) {
       if (fixed_step(integrator)) s.step = value;
-      else s.rtol = value, s.atol = value / 100;
+      else s.rtol = value, s.atol = value / 100, s.state_atol = state_absolute_tolerances(problem, x0, s.rtol, s.atol);
       WorkPrecisionRun run = measure(problem, x0, s, out.reference);
       if (stopped()) {
         out.interrupted = true;
