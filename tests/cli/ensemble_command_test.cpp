@@ -69,6 +69,25 @@ TEST(EnsembleCommand, InitialValuesFollowTheVariedParameters) {
   EXPECT_NEAR(at(first_of(r, "measures"), "mean"), 0.5 + 9.81 / 100 + 0.05, 1e-9) << "r(0) at k = 100, not at k = 10";
 }
 
+// Without --atol each sample's states' sizes set their absolute tolerances, as simulate's do: an
+// oscillator of 1 nm and 1e5 rad/s ends where cos says to 1e-7 of its amplitude; with 1e-10 in
+// every unit, to 2.6e-5
+TEST(EnsembleCommand, ASmallOscillatorIsIntegratedToItsOwnScale) {
+  std::string path = temporary_directory() + "/small_oscillator.toml";
+  std::ofstream(path) << "[model]\nname = \"small_oscillator\"\n[parameters]\nm = 1e-9\nk = 10.0\n"
+                         "[coordinates]\nx = { initial = 1e-9, rate = 0.0 }\n"
+                         "[[particles]]\nname = \"mass\"\nmass = \"m\"\nposition = [\"x\", \"0\", \"0\"]\n"
+                         "[energy]\npotential = \"k*x^2/2\"\n";
+  const double exact = 1e-9 * std::cos(1e5 * 1e-3);
+  auto final_x = [&](const std::string& extra) {
+    JsonValue r = run_json("ensemble '" + path + "' --samples 2 --vary 'k=normal(10,0)' --measure 'final(x)' "
+                           "--t-end 1e-3 --dt-out 1e-5 --integrator arkode-dp5 " + extra);
+    return at(first_of(r, "measures"), "mean");
+  };
+  EXPECT_NEAR(final_x(""), exact, 1e-7 * 1e-9);
+  EXPECT_GT(std::abs(final_x("--atol 1e-10") - exact), 1e-6 * 1e-9);
+}
+
 // a measure that some samples cannot give says how many it left out, and that the loss follows
 // the drawn damping (the heavily damped pendulums never swing back: no period)
 TEST(EnsembleCommand, LeftOutSamplesAreCountedAndABiasedLossIsFlagged) {
