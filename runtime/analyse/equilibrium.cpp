@@ -40,19 +40,34 @@ double forcing_residual(const Problem& p, const std::vector<double>& x) {
   return largest;
 }
 
-// the size of the configuration in the coordinates' units, at least one (a radian)
+// The size of the configuration: the largest non-cyclic |q| here or in the model's default state.
+// No floor of one unit: a mass of 1e-12 kg on a spring of 1 N/m hangs 9.81e-12 m down, and z = 0,
+// within 1e-9 of a metre of it, had passed for its equilibrium.
 double configuration_size(const eomgen_model_abi& m, const std::vector<double>& x) {
-  double size = 1;
+  double size = 0;
   for (std::size_t i = 0; i < m.num_coordinates; ++i)
-    if (!m.is_cyclic[i]) size = std::max(size, std::abs(x[i]));
-  return size;
+    if (!m.is_cyclic[i]) size = std::max({size, std::abs(x[i]), std::abs(m.default_state[i])});
+  return std::isfinite(size) ? size : 0.0;
 }
 
-// Zero, for this model: f over its generalized stiffness at the state is the displacement to the
-// equilibrium, below 1e-9 of the configuration's size. No floor in the units of f: one of 1 took a
-// pendulum of 1e-12 kg at 0.5 rad for an equilibrium. The configuration's size: a mass that a spring
-// of 1e-6 N/m holds 9.81e6 m down has f = k z − m g to the rounding of m g, 2e-15, with k 1e-6.
-double tolerance_for(const Derivatives& d, double size) { return 1e-9 * d.Q.cwiseAbs().maxCoeff() * size; }
+// the model's default state with its non-cyclic coordinates at rest
+std::vector<double> default_at_rest(const eomgen_model_abi& m) {
+  std::vector<double> x(m.default_state, m.default_state + m.num_states);
+  for (std::size_t i = 0; i < m.num_coordinates && m.num_coordinates + i < m.num_states; ++i)
+    if (!m.is_cyclic[i]) x[m.num_coordinates + i] = 0;
+  return x;
+}
+
+// Zero, for this model: a residual below 1e-9 of the forces it balances, the larger of its
+// generalized stiffness times the configuration's size (f over the stiffness is the displacement
+// to the equilibrium: below 1e-9 of the configuration's size) and |f| in its default configuration
+// at rest (the hanging mass's m g, where the configuration's size is 0). No floor in the units of
+// f: one of 1 took a pendulum of 1e-12 kg at 0.5 rad for an equilibrium. Only where both are zero
+// (a default that balances exactly at q = 0, and q = 0) is the size one unit.
+double balance_tolerance(double stiffness, double size, double default_residual) {
+  double forces = std::max(stiffness * size, std::isfinite(default_residual) ? default_residual : 0.0);
+  return 1e-9 * (forces > 0 ? forces : stiffness);
+}
 
 // The part of a Newton step to take: all of it when it all but solves the equations (the largest
 // residual after it below a thousandth of before: a linear problem, or one near its root, in any
@@ -70,7 +85,9 @@ double step_fraction(double largest, double residual, const Residual& residual_a
 Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
   Equilibrium e;
   e.residual = reduced_rate(problem, state).cwiseAbs().maxCoeff();
-  e.tolerance = 1e-9 * reduced_jacobian(problem, state).cwiseAbs().maxCoeff() * configuration_size(*problem.model, state);
+  const eomgen_model_abi& m = *problem.model;
+  e.tolerance = balance_tolerance(reduced_jacobian(problem, state).cwiseAbs().maxCoeff(), configuration_size(m, state),
+                                  reduced_rate(problem, default_at_rest(m)).cwiseAbs().maxCoeff());
   e.converged = e.residual <= e.tolerance;
   e.state = std::move(state);
   return e;
@@ -133,7 +150,8 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
   e.moving = moving_coordinates(*problem.model, state);
   e.state = std::move(state);
   e.residual = d.f.cwiseAbs().maxCoeff();
-  e.tolerance = tolerance_for(d, configuration_size(*problem.model, e.state));
+  e.tolerance = balance_tolerance(d.Q.cwiseAbs().maxCoeff(), configuration_size(*problem.model, e.state),
+                                  forcing_residual(problem, default_at_rest(*problem.model)));
   e.converged = e.residual <= e.tolerance && e.moving.empty();
   return e;
 }
@@ -153,8 +171,9 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
     }
   }
   Equilibrium e;
+  const double default_residual = forcing_residual(problem, default_at_rest(m));
   // below the tolerance, up to three more whole steps while they still move the state against its
-  // own size: the tolerance's displacement is 1e-9 of a unit at least, and springs of 1e12 N/m hold
+  // own size: the tolerance's displacement may be 1e-9 of the default configuration, and springs of 1e12 N/m hold
   // their masses 3e-13 m away, which the first step reached to 7e-6 of it
   // (the best of them kept: a step from within rounding may land no nearer)
   int polished = 0;
@@ -163,7 +182,7 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
   for (e.iterations = 0; e.iterations < 100; ++e.iterations) {
     Derivatives d = evaluate(problem, x);
     e.residual = d.f.cwiseAbs().maxCoeff();
-    e.tolerance = tolerance_for(d, configuration_size(*problem.model, x));
+    e.tolerance = balance_tolerance(d.Q.cwiseAbs().maxCoeff(), configuration_size(*problem.model, x), default_residual);
     if (!std::isfinite(e.residual)) break;
     bool within = e.residual <= 1e-3 * e.tolerance;
     if (within && e.residual < best_residual) best = x, best_residual = e.residual;

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <regex>
 
+#include <fmt/format.h>
+
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -86,6 +88,40 @@ TEST(StabilityCommand, AStateThatIsNotAnEquilibriumIsRefused) {
   Output upright = eomgen("stability '" + model_path("pendulum") + "' --at phi=3.141592653589793");
   EXPECT_EQ(upright.status, 0) << upright.err;
   EXPECT_NE(upright.out.find("verdict: unstable"), std::string::npos) << upright.out;
+}
+
+// A mass m on a spring of 1 N/m hangs m g / k below z = 0, for m from 1e-12 to 1 kg: z = 0 is
+// refused as its equilibrium and the search finds z = −m g / k. A tolerance with a floor of one
+// metre had taken z = 0 for the equilibrium of 1e-12 kg (9.81e-12 m away); the forces it holds,
+// m g at the model's default z = 0, now set the scale.
+TEST(StabilityCommand, ALightHangingMassIsNotAtRestWhereItHangsFrom) {
+  std::string model = write_model("light_hanging_mass", R"toml([model]
+name = "light_hanging_mass"
+[parameters]
+m = 1.0
+k = 1.0
+g = 9.81
+[coordinates]
+z = { initial = 0.0, rate = 0.0 }
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["0", "0", "z"]
+[gravity]
+acceleration = ["0", "0", "-g"]
+[energy]
+potential = "k*z^2/2"
+)toml");
+  for (double m : {1e-12, 1e-9, 1e-6, 1e-3, 1.0}) {
+    std::string set = fmt::format(" --set m={:.17g}", m);
+    Output at_zero = eomgen("stability '" + model + "' --at z=0" + set);
+    EXPECT_EQ(at_zero.status, 2) << "m = " << m << ": " << at_zero.out;
+    EXPECT_NE(at_zero.err.find("is not an equilibrium"), std::string::npos) << at_zero.err;
+    JsonValue found = run_json("stability '" + model + "'" + set);
+    const JsonValue* equilibrium = found.find("equilibrium");
+    ASSERT_TRUE(equilibrium) << "m = " << m;
+    EXPECT_NEAR(at(*equilibrium, "z"), -m * 9.81, 1e-9 * m * 9.81) << "m = " << m;
+  }
 }
 
 TEST(StabilityCommand, SteadyMotionOfTheGovernorWithSymbolicConditions) {
