@@ -133,7 +133,9 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   s.rtol = 1e-10;
   s.max_steps = 1'000'000;
   std::vector<double> size = perturbation_sizes(p, x, rate);
-  s.atol = 1e-12 * *std::min_element(size.begin(), size.end());
+  // each state's absolute tolerance 1e-12 of its push: the runs resolve their growth in any units
+  s.atol = 1e-12 * *std::max_element(size.begin(), size.end());
+  for (double push : size) s.state_atol.push_back(1e-12 * push);
   double worst = 0, when = 0;
   std::string worst_start;
   // each coordinate that is not cyclic, and each velocity, pushed both ways

@@ -85,13 +85,13 @@ std::string unfit_state(const Problem& p, double t, const std::vector<double>& x
   MassMatrixRank r = mass_matrix_rank(p, t, x);
   // a kinetic energy that is negative in some direction: a negative mass or moment of inertia
   if (r.size > 0 && r.smallest < -1e-12 * std::max(r.largest, 1e-300))
-    return fmt::format("the mass matrix is not positive definite at {}: scaled to a unit diagonal, its eigenvalues run from "
-                       "{:.3g} to {:.3g}, so the "
+    return fmt::format("the mass matrix is not positive definite at {}: without its velocities' units, its eigenvalues run "
+                       "from {:.3g} to {:.3g}, so the "
                        "kinetic energy is negative in some direction; a negative mass or moment of inertia (check the "
                        "--set values and the model's inertias)",
                        state_text(m, x), r.smallest, r.largest);
   if (r.singular())
-    return fmt::format("the mass matrix is singular at {}: rank {} of {} (scaled to a unit diagonal, eigenvalues from "
+    return fmt::format("the mass matrix is singular at {}: rank {} of {} (without its velocities' units, eigenvalues from "
                        "{:.3g} to {:.3g}); no inertia "
                        "resists {}: a coordinate that appears in no kinetic energy, or a singularity of the coordinates "
                        "at this configuration",
