@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "parse/json_reader.hpp"
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -73,11 +74,7 @@ TEST(EnsembleCommand, InitialValuesFollowTheVariedParameters) {
 // oscillator of 1 nm and 1e5 rad/s ends where cos says to 1e-7 of its amplitude; with 1e-10 in
 // every unit, to 2.6e-5
 TEST(EnsembleCommand, ASmallOscillatorIsIntegratedToItsOwnScale) {
-  std::string path = temporary_directory() + "/small_oscillator.toml";
-  std::ofstream(path) << "[model]\nname = \"small_oscillator\"\n[parameters]\nm = 1e-9\nk = 10.0\n"
-                         "[coordinates]\nx = { initial = 1e-9, rate = 0.0 }\n"
-                         "[[particles]]\nname = \"mass\"\nmass = \"m\"\nposition = [\"x\", \"0\", \"0\"]\n"
-                         "[energy]\npotential = \"k*x^2/2\"\n";
+  std::string path = write_model("small_oscillator", spring_mass_model("small_oscillator", 1e-9, 10.0, 1e-9));
   const double exact = 1e-9 * std::cos(1e5 * 1e-3);
   auto final_x = [&](const std::string& extra) {
     JsonValue r = run_json("ensemble '" + path + "' --samples 2 --vary 'k=normal(10,0)' --measure 'final(x)' "

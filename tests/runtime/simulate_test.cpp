@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -58,20 +59,7 @@ TEST(Simulate, DoublePendulumConservesEnergyWithTightTolerances) {
 
 // m x'' = −k x: x(t) = x0 cos(ω t) + v0/ω sin(ω t), ω² = k/m
 TEST(Simulate, EveryIntegratorFollowsTheHarmonicOscillator) {
-  std::string model = write_model("oscillator", R"toml([model]
-name = "oscillator"
-[parameters]
-m = 2.0
-k = 8.0
-[coordinates]
-x = { initial = 0.5, rate = 1.0 }
-[[particles]]
-name = "mass"
-mass = "m"
-position = ["x", "0", "0"]
-[energy]
-potential = "k*x^2/2"
-)toml");
+  std::string model = write_model("oscillator", spring_mass_model("oscillator", 2.0, 8.0, 0.5, 1.0));
   const double omega = 2.0, t_end = 3.0;
   double exact = 0.5 * std::cos(omega * t_end) + 1.0 / omega * std::sin(omega * t_end);
   struct Case {
@@ -272,20 +260,7 @@ TEST(Simulate, IdaOnAModelWithoutMultipliersIsAUsageError) {
 // 1e-8. Without --atol each state's tolerance follows its size, and the run is as accurate at
 // every amplitude (1e-7 of it, against the cosine); with --atol it is the one given.
 TEST(Simulate, ASmallOscillatorIsAsAccurateAsALargeOne) {
-  std::string model = write_model("small_oscillator", R"toml([model]
-name = "small_oscillator"
-[parameters]
-m = 1e-9
-k = 10.0
-[coordinates]
-x = { initial = 1.0, rate = 0.0 }
-[[particles]]
-name = "mass"
-mass = "m"
-position = ["x", "0", "0"]
-[energy]
-potential = "k*x^2/2"
-)toml");
+  std::string model = write_model("small_oscillator", spring_mass_model("small_oscillator", 1e-9, 10.0, 1.0));
   const double omega = 1e5;
   auto worst_error = [&](double a, const std::string& extra, std::string* err) {
     std::string csv = temporary_directory() + "/o.csv";

@@ -2,7 +2,31 @@
 /// known in closed form.
 #pragma once
 
+#include <string>
+
+#include <fmt/format.h>
+
 namespace eomgen::test {
+
+/// m x'' = −k x: a mass on a spring along x, released from x0 at speed v0; x(t) = x0 cos(ω t) +
+/// v0/ω sin(ω t), ω² = k/m.
+inline std::string spring_mass_model(const std::string& name, double m, double k, double x0, double v0 = 0) {
+  return fmt::format(R"toml([model]
+name = "{}"
+[parameters]
+m = {:.17g}
+k = {:.17g}
+[coordinates]
+x = {{ initial = {:.17g}, rate = {:.17g} }}
+[[particles]]
+name = "mass"
+mass = "m"
+position = ["x", "0", "0"]
+[energy]
+potential = "k*x^2/2"
+)toml",
+                     name, m, k, x0, v0);
+}
 
 /// m x'' = F: a free mass pushed by the input force F (m = 2).
 inline const char* const pushed_mass_model = R"toml(
