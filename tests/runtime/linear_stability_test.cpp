@@ -149,6 +149,28 @@ TEST(LinearStability, PeriodicEquationsArePeriodicInEveryTimeScale) {
   }
 }
 
+// Kapitza's pendulum upright, its Floquet multipliers in time scales from 1e-6 to 1e6: the same
+// multipliers from the same number of steps a period, which the balanced A's rate sets. |A| itself
+// mixes the states' units (1 in q' = v against a w² / l = 360 at s = 1): it asked for 2e6 steps a
+// period at s = 1e-6 and 7.5e8 at s = 1e6.
+TEST(LinearStability, FloquetMultipliersAreTheSameInEveryTimeScale) {
+  runtime::FloquetReport reference;
+  for (double s : {1.0, 1e-6, 1e6}) {
+    SCOPED_TRACE(testing::Message() << "time scale " << s);
+    Problem p = problem_of("kapitza_pendulum", {{"g", 9.81 * s * s}, {"w", 60.0 * s}});
+    runtime::FloquetReport r = runtime::floquet_analysis(p, {M_PI, 0.0}, 2 * M_PI / (60.0 * s));
+    if (s == 1.0) {
+      reference = r;
+      continue;
+    }
+    EXPECT_EQ(r.steps_per_period, reference.steps_per_period);
+    EXPECT_EQ(r.verdict, reference.verdict);
+    ASSERT_EQ(r.multipliers.size(), reference.multipliers.size());
+    for (std::size_t k = 0; k < r.multipliers.size(); ++k)
+      EXPECT_LT(std::abs(r.multipliers[k] - reference.multipliers[k]), 1e-9);
+  }
+}
+
 TEST(LinearStability, DampedPendulumDecaysAtTheClassicalRate) {
   Problem p = problem_of("pendulum", {{"d", 0.5}});
   auto r = runtime::analyse_stability(p, {0.0, 0.0});
