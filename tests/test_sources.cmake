@@ -86,6 +86,7 @@ set(EOMGEN_TEST_FILES
   runtime/simulation_budget_test.cpp                fast
   runtime/stiffness_ratio_test.cpp                  fast
   runtime/local_power_law_test.cpp                  fast
+  runtime/output_interval_test.cpp                  fast
   studies/stability_studies_test.cpp                slow
   studies/run_studies_test.cpp                      slow
   cli/stability_command_test.cpp                    cli

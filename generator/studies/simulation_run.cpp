@@ -11,6 +11,7 @@
 
 #include "analyse/conservation.hpp"
 #include "analyse/integrator_choice.hpp"
+#include "analyse/output_interval.hpp"
 #include "analyse/state_tolerances.hpp"
 #include "analyse/work_precision.hpp"
 #include "common/output_file.hpp"
@@ -130,6 +131,9 @@ int simulate_model(const SimulationOptions& options) {
     std::cerr << fmt::format("eomgen: integrator {}: {} (--integrator chooses another)\n", choice.integrator, choice.reason);
   }
   if (!o.atol_given) scale_absolute_tolerances(problem, x0, settings);
+  if (!o.dt_out_given)
+    if (auto aliased = runtime::aliasing_warning(problem, settings.t_start, x0, settings.dt_out))
+      std::cerr << "eomgen: warning: " << *aliased << "\n";
   std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, settings.integrator, o.settings.t_end);
   settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
