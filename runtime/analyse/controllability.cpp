@@ -108,8 +108,7 @@ Reach controllability_and_observability(const Eigen::MatrixXd& A, const Eigen::M
   // N = O⊥ is invariant, and those v are N times the eigenvectors of A on it. So the modes PBH finds
   // are the eigenvalues of A22 and of A on N: the same decision as the ranks, with no tolerance of
   // its own on A − λI, whose smallest singular value depends on how the states are scaled.
-  Eigen::MatrixXd unreachable_space = complement(reachable);
-  ModesOn unreachable(u.A.transpose(), unreachable_space), unseen(u.A, complement(observable));
+  ModesOn unreachable(u.A.transpose(), complement(reachable)), unseen(u.A, complement(observable));
   for (const EigenvalueStructure& e : jordan_structure(A).eigenvalues) {
     ModeReach m;
     m.eigenvalue = e.value;

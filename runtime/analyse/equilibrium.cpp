@@ -177,9 +177,9 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
   Equilibrium e;
   const double default_residual = forcing_residual(problem, default_at_rest(m));
   // below the tolerance, up to three more whole steps while they still move the state against its
-  // own size: the tolerance's displacement may be 1e-9 of the default configuration, and springs of 1e12 N/m hold
-  // their masses 3e-13 m away, which the first step reached to 7e-6 of it
-  // (the best of them kept: a step from within rounding may land no nearer)
+  // own size: the tolerance's displacement may be 1e-9 of the default configuration, and springs
+  // of 1e12 N/m hold their masses 3e-13 m away, which the first step reached to 7e-6 of it (the
+  // best of them kept: a step from within rounding may land no nearer)
   int polished = 0;
   std::vector<double> best;
   double best_residual = INFINITY;

@@ -40,10 +40,17 @@ Eigen::VectorXd reduced_rate(const Problem& p, const std::vector<double>& x) {
   return r;
 }
 
-Eigen::MatrixXd reduced_jacobian(const Problem& p, const std::vector<double>& x) {
+Eigen::MatrixXd state_jacobian(const Problem& p, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   RowMajor J(m.num_states, m.num_states);
-  m.jacobian_state(0.0, x.data(), p.held_inputs(), p.parameters.data(), J.data());
+  std::vector<double> scratch;
+  m.jacobian_state(t, x.data(), p.inputs_at(t, scratch), p.parameters.data(), J.data());
+  return J;
+}
+
+Eigen::MatrixXd reduced_jacobian(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::MatrixXd J = state_jacobian(p, 0.0, x);
   std::vector<int> kept = reduced_state(m);
   Eigen::MatrixXd A(kept.size(), kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i)

@@ -21,6 +21,9 @@ void normalize_quaternions(const eomgen_model_abi& m, std::vector<double>& x);
 /// Indices into x of the reduced state: the non-cyclic coordinates, then all velocities.
 std::vector<int> reduced_state(const eomgen_model_abi& m);
 
+/// ∂x'/∂x at (t, x), the whole state, from the generated jacobian_state (inputs at t).
+Eigen::MatrixXd state_jacobian(const Problem& p, double t, const std::vector<double>& x);
+
 /// x' at x, and ∂x'/∂x, both restricted to the reduced state (rows and columns).
 Eigen::VectorXd reduced_rate(const Problem& p, const std::vector<double>& x);
 Eigen::MatrixXd reduced_jacobian(const Problem& p, const std::vector<double>& x);

@@ -5,16 +5,14 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
+#include "analyse/first_order_form.hpp"
 #include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
 
 double fastest_period(const Problem& p, double t, const std::vector<double>& x) {
-  const eomgen_model_abi& m = *p.model;
-  auto n = static_cast<Eigen::Index>(m.num_states);
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(n, n);
-  std::vector<double> held;
-  m.jacobian_state(t, x.data(), p.inputs_at(t, held), p.parameters.data(), J.data());
+  Eigen::MatrixXd J = state_jacobian(p, t, x);
+  const Eigen::Index n = J.rows();
   if (n == 0 || !J.allFinite()) return INFINITY;
   Eigen::MatrixXd B = balanced(J);
   Eigen::EigenSolver<Eigen::MatrixXd> solver(B, false);

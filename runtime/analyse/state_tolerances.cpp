@@ -5,23 +5,10 @@
 
 #include <Eigen/Dense>
 
+#include "analyse/first_order_form.hpp"
 #include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
-
-namespace {
-
-// the spectral scale of the balanced Jacobian at x0, in 1/s; 0 where it is not finite
-double rate_at(const Problem& p, const std::vector<double>& x0) {
-  const eomgen_model_abi& m = *p.model;
-  auto n = static_cast<Eigen::Index>(m.num_states);
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(n, n);
-  m.jacobian_state(0.0, x0.data(), p.held_inputs(), p.parameters.data(), J.data());
-  if (!J.allFinite()) return 0;
-  return spectral_scale(J);
-}
-
-}  // namespace
 
 std::vector<double> state_absolute_tolerances(const Problem& p, const std::vector<double>& x0, double rtol, double atol) {
   const eomgen_model_abi& m = *p.model;
@@ -32,7 +19,9 @@ std::vector<double> state_absolute_tolerances(const Problem& p, const std::vecto
     size[i] = given > 0 ? given : std::isfinite(usual) ? usual : 0.0;
   }
   if (nq == nv) {
-    double rate = rate_at(p, x0);
+    // the system's rate: the balanced Jacobian's scale at the start (0 where it is not finite)
+    Eigen::MatrixXd J = state_jacobian(p, 0.0, x0);
+    double rate = J.allFinite() ? spectral_scale(J) : 0.0;
     for (std::size_t k = 0; k < nv; ++k) size[nq + k] = std::max(size[nq + k], rate * size[k]);
   }
   for (std::size_t i = 0; i < m.num_states; ++i)

@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "analyse/first_order_form.hpp"
+
 namespace eomgen::runtime {
 
 namespace {
@@ -29,13 +31,11 @@ bool inside_stability_region(const std::string& integrator, std::complex<double>
 }
 
 StepStability check_step(const Problem& p, const std::string& integrator, double h, double t, const std::vector<double>& x) {
-  const eomgen_model_abi& m = *p.model;
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
-  m.jacobian_state(t, x.data(), p.held_inputs(), p.parameters.data(), J.data());
+  Eigen::MatrixXd J = state_jacobian(p, t, x);
   StepStability s;
   s.largest_stable_step = INFINITY;
   if (integrator == "gauss-legendre" || !J.allFinite()) return s;  // A-stable: no limit for Re λ ≤ 0
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(Eigen::MatrixXd(J), false);
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(J, false);
   double worst = 0;
   for (Eigen::Index i = 0; i < J.rows(); ++i) {
     std::complex<double> lambda = solver.eigenvalues()[i];

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analyse/accuracy.hpp"
+#include "analyse/first_order_form.hpp"
 #include "analyse/state_tolerances.hpp"
 #include "analyse/system_scales.hpp"
 
@@ -116,10 +117,7 @@ void accuracy_horizons(const Problem& p, const std::vector<double>& x0, const Wo
 }  // namespace
 
 double stiffness_ratio(const Problem& p, const std::vector<double>& x0, double t0) {
-  const eomgen_model_abi& m = *p.model;
-  Eigen::Matrix<double, -1, -1, Eigen::RowMajor> J(m.num_states, m.num_states);
-  m.jacobian_state(t0, x0.data(), p.held_inputs(), p.parameters.data(), J.data());
-  return stiffness_ratio_of(J);
+  return stiffness_ratio_of(state_jacobian(p, t0, x0));
 }
 
 double stiffness_ratio_of(const Eigen::MatrixXd& J) {

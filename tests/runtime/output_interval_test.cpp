@@ -34,10 +34,8 @@ TEST(OutputInterval, AWarningExactlyWhenTheIntervalSkipsHalfAPeriod) {
     }
   }
   // upright, nothing oscillates: no period, no warning
-  const eomgen_model_abi* pendulum = generated_model("pendulum").abi;
-  runtime::Problem upright{pendulum,
-                           std::vector<double>(pendulum->default_parameters, pendulum->default_parameters + pendulum->num_parameters),
-                           std::vector<double>(pendulum->num_inputs, 0.0)};
+  runtime::Problem upright{m, std::vector<double>(m->default_parameters, m->default_parameters + m->num_parameters),
+                           std::vector<double>(m->num_inputs, 0.0)};
   EXPECT_TRUE(std::isinf(runtime::fastest_period(upright, 0.0, {M_PI, 0.0})));
   EXPECT_FALSE(runtime::aliasing_warning(upright, 0.0, {M_PI, 0.0}, 10.0));
 }

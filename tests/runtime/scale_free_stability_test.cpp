@@ -19,6 +19,7 @@
 #include "analyse/state_check.hpp"
 #include "analyse/system_scales.hpp"
 #include "generated/header_registry.hpp"
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -205,25 +206,8 @@ TEST(ScaleFreeStability, FreeMassIsNotAsymptoticallyStable) {
 // Each is stable. Probing V at radii fixed in units (1e-2, 1e-3) stepped over rims closer than
 // 1e-2, and the simulation's push of 1e-3 threw the particle out of the well: "unstable".
 TEST(ScaleFreeStability, AWellIsStableWhateverTheWidthOfItsRim) {
-  const std::string well = R"toml([model]
-name = "NAME"
-[parameters]
-m = 1.0
-k = 1.0
-c = 0.0
-L = 1.0
-[coordinates]
-x = { initial = 0.0, rate = 0.0 }
-[[particles]]
-name = "mass"
-mass = "m"
-position = ["x", "0", "0"]
-[energy]
-)toml";
-  auto written = [&](const std::string& name, const std::string& energy) {
-    std::string text = well;
-    text.replace(text.find("NAME"), 4, name);
-    return write_model(name, text + energy);
+  auto written = [](const std::string& name, const std::string& energy) {
+    return write_model(name, particle_on_a_line_model(name, "m = 1.0\nk = 1.0\nc = 0.0\nL = 1.0\n", energy));
   };
   struct Case {
     std::string model, decided_by;

@@ -8,24 +8,28 @@
 
 namespace eomgen::test {
 
-/// m x'' = −k x: a mass on a spring along x, released from x0 at speed v0; x(t) = x0 cos(ω t) +
-/// v0/ω sin(ω t), ω² = k/m.
-inline std::string spring_mass_model(const std::string& name, double m, double k, double x0, double v0 = 0) {
+/// A particle of mass m moving along x from x0 at speed v0: `parameters` are the lines of
+/// [parameters] (m among them), `energy` the lines of [energy].
+inline std::string particle_on_a_line_model(const std::string& name, const std::string& parameters,
+                                            const std::string& energy, double x0 = 0, double v0 = 0) {
   return fmt::format(R"toml([model]
 name = "{}"
 [parameters]
-m = {:.17g}
-k = {:.17g}
-[coordinates]
+{}[coordinates]
 x = {{ initial = {:.17g}, rate = {:.17g} }}
 [[particles]]
 name = "mass"
 mass = "m"
 position = ["x", "0", "0"]
 [energy]
-potential = "k*x^2/2"
-)toml",
-                     name, m, k, x0, v0);
+{})toml",
+                     name, parameters, x0, v0, energy);
+}
+
+/// m x'' = −k x: a mass on a spring along x, released from x0 at speed v0; x(t) = x0 cos(ω t) +
+/// v0/ω sin(ω t), ω² = k/m.
+inline std::string spring_mass_model(const std::string& name, double m, double k, double x0, double v0 = 0) {
+  return particle_on_a_line_model(name, fmt::format("m = {:.17g}\nk = {:.17g}\n", m, k), "potential = \"k*x^2/2\"\n", x0, v0);
 }
 
 /// m x'' = F: a free mass pushed by the input force F (m = 2).
