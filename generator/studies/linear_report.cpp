@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analyse/state_space.hpp"
+#include "analyse/system_scales.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"
 #include "studies/linear_closed_form_output.hpp"
@@ -70,9 +71,7 @@ LinearReport linear_report(const runtime::Problem& problem, const std::vector<do
   r.state_names.assign(m.state_names, m.state_names + m.num_states);
   runtime::StateSpace space = runtime::state_space_at(problem, x);
   r.A = space.A, r.B = space.B;
-  Eigen::EigenSolver<Eigen::MatrixXd> spectrum(r.A, false);
-  const auto& roots = spectrum.eigenvalues();
-  r.characteristic_polynomial = runtime::polynomial_from_roots({roots.data(), roots.data() + roots.size()});
+  r.characteristic_polynomial = runtime::polynomial_from_roots(runtime::balanced_eigenvalues(r.A));
   r.system = runtime::analyse_stability(problem, x);
   r.structure = runtime::jordan_structure(r.A);
   if (equations) {
@@ -173,7 +172,7 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
     std::cout << (kind == "modal"          ? "  principal coordinates q = Phi eta, Phi the modes above (Hiller §6.3), decoupled:\n"
                   : kind == "eigenvectors" ? "  principal coordinates x = V eta, V the eigenvectors of A (Hiller §6.3), decoupled:\n"
                                            : fmt::format("  principal coordinates x = V eta, V the Jordan chains of A (generalized "
-                                                         "eigenvectors, Hiller §6.3; |AV - VJ| = {:.1e} |A|), coupled only "
+                                                         "eigenvectors, Hiller §6.3; |AV - VJ| = {:.1e} |A|, A balanced), coupled only "
                                                          "along each chain:\n", r.principal.jordan_residual));
     for (const std::string& line : principal_equations(r)) std::cout << "    " << line << "\n";
   }

@@ -168,8 +168,7 @@ FloquetReport floquet_analysis(const Problem& p, const std::vector<double>& x, d
   }
   r.monodromy = fine + (fine - coarse) / 15;
   r.steps_per_period = steps;
-  Eigen::EigenSolver<Eigen::MatrixXd> eigen(r.monodromy, false);
-  for (Eigen::Index i = 0; i < eigen.eigenvalues().size(); ++i) r.multipliers.push_back(eigen.eigenvalues()[i]);
+  r.multipliers = balanced_eigenvalues(r.monodromy);
   std::sort(r.multipliers.begin(), r.multipliers.end(), [](auto u, auto v) {
     return std::abs(u) != std::abs(v) ? std::abs(u) > std::abs(v) : u.imag() > v.imag();
   });

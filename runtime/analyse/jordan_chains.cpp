@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "analyse/system_scales.hpp"
+
 namespace eomgen::runtime {
 
 namespace {
@@ -67,28 +69,35 @@ void chains_of(const Eigen::MatrixXd& A, const EigenvalueStructure& e, std::vect
 
 }  // namespace
 
-JordanBasis jordan_basis(const Eigen::MatrixXd& A, const JordanStructure& structure) {
+JordanBasis jordan_basis(const Eigen::MatrixXd& unbalanced, const JordanStructure& structure) {
   JordanBasis out;
-  Eigen::Index n = A.rows();
+  Eigen::Index n = unbalanced.rows();
+  // the chains of the balanced B = D⁻¹ A D, whose null spaces and ranks do not depend on the
+  // states' units (those of A did: a free cart in μm and km), and V = D V_B
+  Eigen::VectorXd d = balancing_scales(unbalanced);
+  Eigen::MatrixXd A = d.cwiseInverse().asDiagonal() * unbalanced * d.asDiagonal();
   std::vector<Eigen::VectorXcd> columns;
   for (const EigenvalueStructure& e : structure.eigenvalues) chains_of(A, e, columns, out.blocks);
   if (Eigen::Index(columns.size()) != n) {
     out.refusal = "the Jordan blocks found do not span the state space";
     return out;
   }
-  out.V.resize(n, n);
-  for (Eigen::Index c = 0; c < n; ++c) out.V.col(c) = columns[std::size_t(c)];
+  ComplexMatrix V(n, n);
+  for (Eigen::Index c = 0; c < n; ++c) V.col(c) = columns[std::size_t(c)];
   ComplexMatrix J = ComplexMatrix::Zero(n, n);
   for (const JordanBasis::Block& b : out.blocks)
     for (int i = 0; i < b.size; ++i) {
       J(b.first + i, b.first + i) = b.eigenvalue;
       if (i + 1 < b.size) J(b.first + i, b.first + i + 1) = 1;
     }
-  double scale = A.cwiseAbs().maxCoeff() > 0 ? A.cwiseAbs().maxCoeff() : 1.0;  // |A V − V J| / |A|, as documented
-  out.residual = (A.cast<std::complex<double>>() * out.V - out.V * J).cwiseAbs().maxCoeff() / scale;
-  Eigen::JacobiSVD<ComplexMatrix> svd(out.V);
+  double scale = A.cwiseAbs().maxCoeff() > 0 ? A.cwiseAbs().maxCoeff() : 1.0;
+  out.residual = (A.cast<std::complex<double>>() * V - V * J).cwiseAbs().maxCoeff() / scale;
+  // the directions, each column of length one: along a chain the lengths differ by powers of
+  // the rate (v and (A − λI) v), which says nothing about dependence
+  Eigen::JacobiSVD<ComplexMatrix> svd(V * V.colwise().norm().cwiseInverse().asDiagonal());
   const auto& sigma = svd.singularValues();
   if (sigma(n - 1) < 1e-10 * sigma(0)) out.refusal = "the generalized eigenvectors found are (nearly) dependent";
+  out.V = d.cast<std::complex<double>>().asDiagonal() * V;
   return out;
 }
 

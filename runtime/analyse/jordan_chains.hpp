@@ -22,7 +22,7 @@ struct JordanBasis {
     Eigen::Index first = 0;  // its first column in V
   };
   std::vector<Block> blocks;
-  double residual = 0;  // |A V − V J| / |A|, J the Jordan form of `blocks`
+  double residual = 0;  // |B V_B − V_B J| / |B| on the balanced B = D⁻¹ A D, V = D V_B
 };
 
 /// The chains of the blocks in `structure`: the dimensions of ker (A − λI)^j follow from

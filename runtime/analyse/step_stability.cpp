@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "analyse/first_order_form.hpp"
+#include "analyse/system_scales.hpp"
 
 namespace eomgen::runtime {
 
@@ -35,10 +36,8 @@ StepStability check_step(const Problem& p, const std::string& integrator, double
   StepStability s;
   s.largest_stable_step = INFINITY;
   if (integrator == "gauss-legendre" || !J.allFinite()) return s;  // A-stable: no limit for Re λ ≤ 0
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(J, false);
   double worst = 0;
-  for (Eigen::Index i = 0; i < J.rows(); ++i) {
-    std::complex<double> lambda = solver.eigenvalues()[i];
+  for (std::complex<double> lambda : balanced_eigenvalues(J)) {
     double size = std::abs(lambda);
     if (size == 0 || lambda.real() > 1e-9 * size) continue;  // a mode that grows by itself
     if (lambda.real() > 0) lambda.real(0);  // on the axis within rounding

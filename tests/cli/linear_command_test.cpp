@@ -113,6 +113,23 @@ TEST(LinearCommand, DoublePendulumFrequenciesFromTheFrequencyEquation) {
   for (const JsonValue& e : json.find("eigenvalues")->items) EXPECT_EQ(at(e, "re"), 0) << "conservative: on the axis";
 }
 
+// det(λ² M + λ D + K) / det M of the tuned absorber, m1 m2 λ⁴ + d (m1 + m2) λ³ + (m1 k2 + m2 k1 + m2 k2) λ²
+// + d k1 λ + k1 k2 over m1 m2, with its time scaled by s (k s², d s). The coefficients had come from
+// the eigenvalues of the unbalanced A: at s = 1e6 (entries from 1 to 1e14) they were 0.5 % off.
+TEST(LinearCommand, TheCharacteristicPolynomialIsExactAtEveryTimeScale) {
+  const double m1 = 10, m2 = 1, k1 = 1000, k2 = 82.6446, d = 2;
+  for (double s : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    std::string set = fmt::format(" --set k1={:.17g} --set k2={:.17g} --set d={:.17g}", k1 * s * s, k2 * s * s, d * s);
+    JsonValue json = run_json("linear '" + model_path("damped_two_mass_oscillator") + "' --at x1=0 --at x2=0" + set);
+    const auto& c = json.find("characteristic_polynomial")->items;
+    ASSERT_EQ(c.size(), 5u);
+    double exact[5] = {1, d * (m1 + m2) / (m1 * m2), (m1 * k2 + m2 * k1 + m2 * k2) / (m1 * m2), d * k1 / (m1 * m2),
+                       k1 * k2 / (m1 * m2)};
+    for (int i = 0; i < 5; ++i)
+      EXPECT_NEAR(c[std::size_t(i)].value / std::pow(s, i), exact[i], 1e-9 * exact[i]) << "s = " << s << ", λ^" << 4 - i;
+  }
+}
+
 TEST(LinearCommand, RendezvousJordanStructureAndTheClohessyWiltshireSolution) {
   const double n = 0.0011;
   JsonValue json = run_json("linear '" + model_path("space_rendezvous") + "' --at x=0 --times 600,3000");
