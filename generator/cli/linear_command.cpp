@@ -28,8 +28,10 @@ Command add_linear_command(CLI::App& app) {
   cmd->add_option("--input", o->response.input, "Response to one input as a function of time: --input 'F=step(2)' (a unit "
                   "step at t = 2), 'F=0.5*impulse(0)', 'F=sin(3*t)', 'F=2*cos(3*t)'");
   cmd->add_option("--initial", o->response.initials, "Initial deviation, one per flag: --initial x1=0.01");
-  cmd->add_option("--t-end", o->response.t_end, "End time of the response [s] (default 10)");
-  cmd->add_option("--dt-out", o->response.dt_out, "Output interval of the response [s] (default 0.01)");
+  cmd->add_option("--t-end", o->response.t_end, "End time of the response [s] (default 10; a warning where the slowest "
+                  "mode takes longer)");
+  cmd->add_option("--dt-out", o->response.dt_out, "Output interval of the response [s] (default 0.01; a warning where "
+                  "that skips half a period)");
   cmd->add_option("-o,--output", o->response.csv, "CSV file for the response (default: standard output)");
   cmd->add_option("--plot", o->response.plot, "Charts (PNG): with --response the response's coordinates; otherwise "
                   "FILE_modes.png (the mode shapes) and FILE_bode_U_Y.png for each --bode pair");
@@ -39,6 +41,7 @@ Command add_linear_command(CLI::App& app) {
   return [cmd, o, format]() -> int {
     if (!cmd->parsed()) return -1;
     o->json = *format == "json";
+    o->response.t_end_given = cmd->count("--t-end") > 0, o->response.dt_out_given = cmd->count("--dt-out") > 0;
     return linear(*o);
   };
 }

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analyse/linear_response.hpp"
+#include "analyse/output_interval.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"
 #include "common/output_file.hpp"
@@ -116,6 +117,21 @@ std::string draw(const eomgen_model_abi& m, const runtime::LinearResponse& respo
   return failure;
 }
 
+// the default interval and end, 0.01 s and 10 s, against the system's own times: a 1e7 rad/s
+// absorber's rows were 1e5 periods apart, and a 1e-5 rad/s one's 10 s showed nothing of it
+void warn_where_the_defaults_miss_the_motion(const Eigen::MatrixXd& A, const runtime::ResponseRequest& request,
+                                             const ResponseOptions& o) {
+  if (!o.dt_out_given) {
+    double period = runtime::fastest_period(A);
+    bool forcing = request.omega > 0 && 2 * M_PI / request.omega < period;
+    if (forcing) period = 2 * M_PI / request.omega;
+    if (auto w = runtime::aliasing_warning(period, o.dt_out, forcing ? "the forcing" : "the fastest mode"))
+      std::cerr << "eomgen: warning: " << *w << "\n";
+  }
+  if (!o.t_end_given)
+    if (auto w = runtime::span_warning(runtime::slowest_time(A), o.t_end, o.dt_out)) std::cerr << "eomgen: warning: " << *w << "\n";
+}
+
 }  // namespace
 
 std::optional<int> write_linear_response(const eomgen_model_abi& m, const LinearReport& r, const ResponseOptions& o) {
@@ -134,6 +150,7 @@ std::optional<int> write_linear_response(const eomgen_model_abi& m, const Linear
   if (!assign_states(m, o.initials, "--initial", x0)) return exit_user_error;
   request->x0 = Eigen::Map<Eigen::VectorXd>(x0.data(), static_cast<Eigen::Index>(x0.size()));
   request->t_end = o.t_end, request->dt_out = o.dt_out;
+  warn_where_the_defaults_miss_the_motion(r.A, *request, o);
   runtime::LinearResponse response = runtime::linear_response(r.A, r.B, *request);
   std::string csv = response_csv(r, response);
   if (o.csv.empty()) {

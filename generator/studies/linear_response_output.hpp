@@ -16,6 +16,7 @@ struct ResponseOptions {
   std::string input;                  // or NAME=EXPR: A*step(T0), A*impulse(T0), A*sin(W*t), A*cos(W*t)
   std::vector<std::string> initials;  // NAME=VALUE deviations
   double t_end = 10, dt_out = 0.01;
+  bool t_end_given = false, dt_out_given = false;  // without them, a warning where the defaults miss the motion
   std::string csv, plot;
 };
 

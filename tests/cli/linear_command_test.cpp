@@ -310,6 +310,28 @@ TEST(LinearCommand, StepResponseOfTheChainByModes) {
   }
 }
 
+// The defaults, rows 0.01 s apart up to 10 s, against the tuned absorber on time scales s: at
+// 1e6 its rows skip 1e4 periods, at 1e-6 its 10 s show nothing of a mode of 1e5 s; each says
+// so, with the interval or the end that would show the motion, and nothing is said once given.
+TEST(LinearCommand, AResponseWarnsWhereItsDefaultTimesMissTheMotion) {
+  const double k1 = 1000, k2 = 82.6446, d = 2;
+  auto run = [&](double s, const std::string& times) {
+    std::string set = fmt::format(" --set k1={:.17g} --set k2={:.17g} --set d={:.17g}", k1 * s * s, k2 * s * s, d * s);
+    std::string csv = temporary_directory() + "/response.csv";
+    return run_eomgen("linear '" + model_path("damped_two_mass_oscillator") + "' --at x1=0 --at x2=0 --response step:F -o '" +
+                      csv + "'" + set + times);
+  };
+  CommandOutput fast = run(1e6, ""), slow = run(1e-6, ""), unit = run(1, "");
+  for (const CommandOutput* r : {&fast, &slow, &unit}) ASSERT_EQ(r->status, 0) << r->err;
+  EXPECT_NE(fast.err.find("longer than half the period of the fastest mode"), std::string::npos) << fast.err;
+  EXPECT_EQ(fast.err.find("the response ends"), std::string::npos) << fast.err;
+  EXPECT_NE(slow.err.find("the response ends at t = 10 s"), std::string::npos) << slow.err;
+  EXPECT_EQ(slow.err.find("longer than half"), std::string::npos) << slow.err;
+  EXPECT_EQ(unit.err.find("warning"), std::string::npos) << unit.err;
+  EXPECT_EQ(run(1e6, " --dt-out 1e-8 --t-end 1e-5").err.find("warning"), std::string::npos);
+  EXPECT_EQ(run(1e-6, " --t-end 1e6 --dt-out 1e3").err.find("warning"), std::string::npos);
+}
+
 TEST(LinearCommand, FreeImpulseAndHarmonicResponses) {
   // free: x(t) = Φ(t) x0, the first column of Φ scaled; impulse: Φ(t) B, the fourth column
   JsonValue json = run_json("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0 --times 0.7");
