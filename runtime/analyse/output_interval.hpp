@@ -34,7 +34,9 @@ double slowest_time(const Eigen::MatrixXd& A);
 /// A warning when a response that ends at t_end stops before one time constant of the slowest
 /// motion (10 s of a system whose slowest mode takes 1e5 s shows nothing of it), with the end
 /// that shows ten of them, and an interval for a thousand rows where dt_out would give more
-/// than 1e5; nothing otherwise.
+/// than 1e5; nothing otherwise. For a linear system's response alone: at a state that moves, the
+/// Jacobian's small eigenvalues are no slow modes (a free body tumbling has them), and a
+/// nonlinear run's end would be warned of wrongly.
 std::optional<std::string> span_warning(double slowest, double t_end, double dt_out);
 
 }  // namespace eomgen::runtime
