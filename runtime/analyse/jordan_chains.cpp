@@ -90,8 +90,14 @@ JordanBasis jordan_basis(const Eigen::MatrixXd& unbalanced, const JordanStructur
       J(b.first + i, b.first + i) = b.eigenvalue;
       if (i + 1 < b.size) J(b.first + i, b.first + i + 1) = 1;
     }
-  double scale = A.cwiseAbs().maxCoeff() > 0 ? A.cwiseAbs().maxCoeff() : 1.0;
-  out.residual = (A.cast<std::complex<double>>() * V - V * J).cwiseAbs().maxCoeff() / scale;
+  // column by column against what it is computed from, |A| |v_k| + |v_(k−1)| along a chain: the
+  // chain's columns differ in length by powers of |A|, and one bound for all grew with |A|
+  double scale = A.norm();
+  ComplexMatrix residual = A.cast<std::complex<double>>() * V - V * J;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    double bound = scale * V.col(k).norm() + (k > 0 ? std::abs(J(k - 1, k)) * V.col(k - 1).norm() : 0.0);
+    if (bound > 0) out.residual = std::max(out.residual, residual.col(k).norm() / bound);
+  }
   // the directions, each column of length one: along a chain the lengths differ by powers of
   // the rate (v and (A − λI) v), which says nothing about dependence
   Eigen::JacobiSVD<ComplexMatrix> svd(V * V.colwise().norm().cwiseInverse().asDiagonal());

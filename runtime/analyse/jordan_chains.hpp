@@ -22,7 +22,9 @@ struct JordanBasis {
     Eigen::Index first = 0;  // its first column in V
   };
   std::vector<Block> blocks;
-  double residual = 0;  // |B V_B − V_B J| / |B| on the balanced B = D⁻¹ A D, V = D V_B
+  /// the largest |B v_k − V_B J_k| / (|B| |v_k| + |v_(k−1)| within a chain) over V_B's columns v_k, on the
+  /// balanced B = D⁻¹ A D (V = D V_B), J the Jordan form of `blocks`
+  double residual = 0;
 };
 
 /// The chains of the blocks in `structure`: the dimensions of ker (A − λI)^j follow from
