@@ -10,10 +10,10 @@
 
 namespace eomgen::runtime {
 
-std::vector<double> state_absolute_tolerances(const Problem& p, const std::vector<double>& x0, double rtol, double atol) {
+std::vector<double> state_sizes(const Problem& p, const std::vector<double>& x0) {
   const eomgen_model_abi& m = *p.model;
   std::size_t nq = m.num_coordinates, nv = m.num_velocities;
-  std::vector<double> size(m.num_states, 0.0), tolerance(m.num_states, atol);
+  std::vector<double> size(m.num_states, 0.0);
   for (std::size_t i = 0; i < m.num_states && i < x0.size(); ++i) {
     double given = std::isfinite(x0[i]) ? std::abs(x0[i]) : 0.0, usual = std::abs(m.default_state[i]);
     size[i] = given > 0 ? given : std::isfinite(usual) ? usual : 0.0;
@@ -24,8 +24,15 @@ std::vector<double> state_absolute_tolerances(const Problem& p, const std::vecto
     double rate = J.allFinite() ? spectral_scale(J) : 0.0;
     for (std::size_t k = 0; k < nv; ++k) size[nq + k] = std::max(size[nq + k], rate * size[k]);
   }
-  for (std::size_t i = 0; i < m.num_states; ++i)
-    if (size[i] > 0 && std::isfinite(size[i])) tolerance[i] = std::min(atol, 1e-2 * rtol * size[i]);
+  for (double& s : size)
+    if (!std::isfinite(s)) s = 0;
+  return size;
+}
+
+std::vector<double> state_absolute_tolerances(const Problem& p, const std::vector<double>& x0, double rtol, double atol) {
+  std::vector<double> size = state_sizes(p, x0), tolerance(size.size(), atol);
+  for (std::size_t i = 0; i < size.size(); ++i)
+    if (size[i] > 0) tolerance[i] = std::min(atol, 1e-2 * rtol * size[i]);
   return tolerance;
 }
 

@@ -14,6 +14,10 @@
 
 namespace eomgen::runtime {
 
+/// Each state's size as above (0 where the problem says nothing of it: a state that is zero and
+/// whose default is zero).
+std::vector<double> state_sizes(const Problem& problem, const std::vector<double>& x0);
+
 /// num_states absolute tolerances for a run from x0 at relative tolerance rtol; atol is the largest.
 std::vector<double> state_absolute_tolerances(const Problem& problem, const std::vector<double>& x0, double rtol, double atol);
 

@@ -285,6 +285,24 @@ TEST(Simulate, ASmallOscillatorIsAsAccurateAsALargeOne) {
   EXPECT_GT(worst_error(1e-9, "--atol 1e-10", nullptr), 1e-6);
 }
 
+// A quartic well c x⁴/4 written with a dissipation d der(x)²/2, so that only the values tell
+// whether T + V is conserved, on scales L from 1e-12 to 1e12 (c = 1/L², x0 = L: the same motion
+// in other units). Differentiated with steps of 1e-3 of a unit, the energy had been "not
+// conserved" at every L but 1 with d = 0; with d = 1 it is not, at every L.
+TEST(Simulate, WhetherEnergyIsConservedDoesNotDependOnTheUnits) {
+  std::string model = write_model("quartic_well_with_dissipation",
+                                  particle_on_a_line_model("quartic_well_with_dissipation", "m = 1.0\nc = 1.0\nd = 0.0\n",
+                                                           "potential = \"c*x^4/4\"\ndissipation = \"d*der(x)^2/2\"\n"));
+  for (double L : {1e-12, 1e-6, 1.0, 1e6, 1e12})
+    for (double d : {0.0, 1.0}) {
+      JsonValue r = run_json(fmt::format("simulate '{}' --set c={:.17g} --set d={:g} --initial x={:.17g} --t-end 1 --dt-out 0.5 "
+                                         "-o '{}/q.csv'", model, 1 / (L * L), d, L, temporary_directory()));
+      const JsonValue* conserves = r.find("conserves_energy");
+      ASSERT_NE(conserves, nullptr);
+      EXPECT_EQ(conserves->truth, d == 0) << "L = " << L << ", d = " << d;
+    }
+}
+
 TEST(RunCommand, MainJobDrawsTheCharts) {
   std::string dir = temporary_directory();
   CommandRun r = eomgen("run -o '" + dir + "'", shared_cache());
