@@ -3,10 +3,11 @@
 // lists them: the states x = [q; q'] first (0 … S−1), then their derivatives x' (S … 2S−1),
 // the parameters, the inputs and the outputs. Model Exchange hands x' to the importer's
 // integrator; Co-Simulation steps with CVODE (BDF, the analytic Jacobian, rtol from
-// fmi2SetupExperiment or 1e-8, restarted when a state, a parameter or an input is set from outside,
+// fmi2SetupExperiment or 1e-8, absolute tolerances in each state's size, restarted when a state, a parameter or an input is set from outside,
 // and otherwise continued across communication points). There are no events, integers, booleans or strings.
 // CVODE is compiled in only for Co-Simulation (EOMGEN_FMU_CO_SIMULATION): a Model Exchange FMU
 // needs no SUNDIALS on the importer's machine.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
@@ -71,6 +72,30 @@ struct Instance {
 
 Instance* as_instance(fmi2Component c) { return static_cast<Instance*>(c); }
 
+// Each state's size, as `simulate` takes it for its absolute tolerances: its value, or its
+// default where that is zero; and for a velocity der(q_k) also q_k's size times q_k's own rate
+// at this state, √|∂q''_k/∂q_k| + |∂q''_k/∂q'_k| (an oscillator of amplitude a and frequency ω
+// has speeds of a ω). 0 where nothing says. Without it, a MEMS oscillator of 1e-9 m had an
+// absolute tolerance of 1e-10 m in Co-Simulation, and a nominal of 1 m in Model Exchange.
+std::array<double, S> state_sizes(const Instance& in) {
+  std::array<double, S> size{};
+  for (std::size_t i = 0; i < S; ++i) {
+    double value = std::abs(in.x[i]), usual = std::abs(model::default_state[i]);
+    size[i] = std::isfinite(value) && value > 0 ? value : std::isfinite(usual) ? usual : 0.0;
+  }
+  constexpr std::size_t nq = model::num_coordinates;
+  if constexpr (nq == model::num_velocities && nq > 0) {
+    std::array<double, S * S> J;
+    model::jacobian_state(in.t, in.x.data(), in.inputs(), in.p.data(), J.data());
+    for (std::size_t k = 0; k < nq; ++k) {
+      if (std::string(model::velocity_names[k]) != "der(" + std::string(model::coordinate_names[k]) + ")") continue;
+      double rate = std::sqrt(std::abs(J[(nq + k) * S + k])) + std::abs(J[(nq + k) * S + nq + k]);
+      if (std::isfinite(rate)) size[nq + k] = std::max(size[nq + k], rate * size[k]);
+    }
+  }
+  return size;
+}
+
 #ifdef EOMGEN_FMU_CO_SIMULATION
 extern "C" int cvode_rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
   const Instance& in = *static_cast<const Instance*>(data);
@@ -98,7 +123,13 @@ bool start_cvode(Instance& in) {
   std::memcpy(N_VGetArrayPointer(in.y), in.x.data(), S * sizeof(double));
   in.cvode = CVodeCreate(CV_BDF, in.context);
   if (!in.cvode || CVodeInit(in.cvode, cvode_rhs, in.t, in.y) != 0) return false;
-  CVodeSStolerances(in.cvode, in.tolerance, in.tolerance * 1e-2);
+  // 1e-2 rtol in each state's size, and 1e-2 rtol where it has none or is larger than one
+  std::array<double, S> size = state_sizes(in);
+  N_Vector absolute = N_VNew_Serial(sunindextype(S), in.context);
+  for (std::size_t i = 0; i < S; ++i)
+    N_VGetArrayPointer(absolute)[i] = in.tolerance * 1e-2 * (size[i] > 0 ? std::min(1.0, size[i]) : 1.0);
+  CVodeSVtolerances(in.cvode, in.tolerance, absolute);
+  N_VDestroy(absolute);
   CVodeSetUserData(in.cvode, &in);
   CVodeSetErrHandlerFn(in.cvode, cvode_quiet, nullptr);
   CVodeSetMaxNumSteps(in.cvode, 1000000);
@@ -318,8 +349,10 @@ fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t n) {
   std::memcpy(x, as_instance(c)->x.data(), S * sizeof(double));
   return fmi2OK;
 }
-fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component, fmi2Real nominal[], size_t n) {
-  for (size_t k = 0; k < n; ++k) nominal[k] = 1.0;
+fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real nominal[], size_t n) {
+  if (n != S) return fmi2Error;
+  std::array<double, S> size = state_sizes(*as_instance(c));
+  for (size_t k = 0; k < n; ++k) nominal[k] = size[k] > 0 ? size[k] : 1.0;
   return fmi2OK;
 }
 

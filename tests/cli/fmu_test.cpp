@@ -18,6 +18,7 @@
 #include <regex>
 
 #include "fmu/fmi2.h"
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -42,6 +43,7 @@ struct Fmi2 {
   decltype(&fmi2GetContinuousStates) get_states = nullptr;
   decltype(&fmi2GetDerivatives) get_derivatives = nullptr;
   decltype(&fmi2GetDirectionalDerivative) directional_derivative = nullptr;
+  decltype(&fmi2GetNominalsOfContinuousStates) nominals = nullptr;
   decltype(&fmi2DoStep) do_step = nullptr;
   decltype(&fmi2Terminate) terminate = nullptr;
   ~Fmi2() {
@@ -68,6 +70,7 @@ void load(Fmi2& f, const std::string& path) {
   bind(f.library, f.set_time, "fmi2SetTime"), bind(f.library, f.set_states, "fmi2SetContinuousStates");
   bind(f.library, f.get_states, "fmi2GetContinuousStates"), bind(f.library, f.get_derivatives, "fmi2GetDerivatives");
   bind(f.library, f.directional_derivative, "fmi2GetDirectionalDerivative");
+  bind(f.library, f.nominals, "fmi2GetNominalsOfContinuousStates");
   bind(f.library, f.do_step, "fmi2DoStep"), bind(f.library, f.terminate, "fmi2Terminate");
 }
 
@@ -89,10 +92,10 @@ struct Unpacked {
   std::size_t states = 0;
 };
 
-Unpacked build_and_unpack(const std::string& model, const std::string& name) {
+Unpacked build_and_unpack(const std::string& model_file, const std::string& name) {
   Unpacked u;
   u.directory = temporary_directory();
-  CommandOutput built = run_eomgen("fmu '" + model_path(model) + "' -o '" + u.directory + "'");
+  CommandOutput built = run_eomgen("fmu '" + model_file + "' -o '" + u.directory + "'");
   EXPECT_EQ(built.status, 0) << built.err;
   std::string fmu = u.directory + "/" + name + ".fmu";
   EXPECT_EQ(run_command("python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' '" + fmu + "' '" +
@@ -192,7 +195,7 @@ void expect_valid_description(const Unpacked& u) {
 }
 
 void check_fmu(const std::string& model, const std::map<std::string, double>& values, const std::string& sets) {
-  Unpacked u = build_and_unpack(model, model);
+  Unpacked u = build_and_unpack(model_path(model), model);
   ASSERT_FALSE(u.guid.empty()) << u.description;
   expect_valid_description(u);
   Fmi2 f;
@@ -216,8 +219,42 @@ TEST(Fmu, TheCartPendulumPushedByItsInputMatchesTheReference) {
   check_fmu("cart_pendulum", {{"F", 0.5}, {"m", 0.3}}, "--set F=0.5 --set m=0.3");
 }
 
+// A MEMS oscillator, m = 1e-9 kg on k = 10 N/m (1e5 rad/s), released from a = 1e-9 m, at the
+// importer's tolerance 1e-8: its nominals are its sizes, a and a ω, and Co-Simulation follows
+// a cos(ω t) to 1e-6 of a over three periods. With an absolute tolerance of 1e-2 rtol in every
+// unit (1e-10 m) and nominals of 1, it had been off by 2e-4 of a.
+TEST(Fmu, ASmallOscillatorHasItsOwnNominalsAndTolerances) {
+  const double a = 1e-9, omega = 1e5;
+  Unpacked u = build_and_unpack(write_model("small_oscillator", spring_mass_model("small_oscillator", 1e-9, 10.0, a)),
+                                "small_oscillator");
+  Fmi2 f;
+  load(f, u.directory + "/unzipped/binaries/linux64/small_oscillator.so");
+  for (fmi2Type kind : {fmi2ModelExchange, fmi2CoSimulation}) {
+    fmi2Component c = f.instantiate("test", kind, u.guid.c_str(), "", &callbacks, fmi2False, fmi2False);
+    ASSERT_NE(c, nullptr);
+    f.setup_experiment(c, fmi2True, 1e-8, 0.0, fmi2False, 0.0);
+    f.enter_initialization(c), f.exit_initialization(c);
+    double nominal[2];
+    ASSERT_EQ(f.nominals(c, nominal, 2), fmi2OK);
+    EXPECT_NEAR(nominal[0] / a, 1, 1e-12);
+    EXPECT_NEAR(nominal[1] / (a * omega), 1, 1e-9);
+    if (kind == fmi2CoSimulation) {
+      double worst = 0, h = 2 * M_PI / omega / 50;
+      unsigned x = 0;
+      for (int k = 0; k < 150; ++k) {
+        ASSERT_EQ(f.do_step(c, k * h, h, fmi2True), fmi2OK);
+        double value = 0;
+        f.get_real(c, &x, 1, &value);
+        worst = std::max(worst, std::abs(value - a * std::cos(omega * (k + 1) * h)));
+      }
+      EXPECT_LT(worst, 1e-6 * a);
+    }
+    f.terminate(c), f.free_instance(c);
+  }
+}
+
 TEST(Fmu, DirectionalDerivativesMatchDifferencesOfTheDerivatives) {
-  Unpacked u = build_and_unpack("cart_pendulum", "cart_pendulum");
+  Unpacked u = build_and_unpack(model_path("cart_pendulum"), "cart_pendulum");
   Fmi2 f;
   load(f, u.directory + "/unzipped/binaries/linux64/cart_pendulum.so");
   fmi2Component c = instantiate(f, u, fmi2ModelExchange, {{"F", 0.2}});
@@ -277,7 +314,7 @@ TEST(Fmu, AModelExchangeBinaryNeedsNoSundials) {
   fmi2Component me = f.instantiate("test", fmi2ModelExchange, u.guid.c_str(), "", &callbacks, fmi2False, fmi2False);
   ASSERT_NE(me, nullptr);
   f.free_instance(me);
-  Unpacked both = build_and_unpack("damped_two_mass_oscillator", "damped_two_mass_oscillator");
+  Unpacked both = build_and_unpack(model_path("damped_two_mass_oscillator"), "damped_two_mass_oscillator");
   ASSERT_EQ(run_command("readelf -d '" + both.directory + "/unzipped/binaries/linux64/damped_two_mass_oscillator.so' > '" +
                         directory + "/needed_both.txt'"),
             0);
@@ -285,7 +322,7 @@ TEST(Fmu, AModelExchangeBinaryNeedsNoSundials) {
 }
 
 TEST(Fmu, TheDescriptionNamesWhatTheBinaryComputes) {
-  Unpacked u = build_and_unpack("cart_pendulum", "cart_pendulum");
+  Unpacked u = build_and_unpack(model_path("cart_pendulum"), "cart_pendulum");
   const std::string& d = u.description;
   EXPECT_NE(d.find("<fmiModelDescription fmiVersion=\"2.0\" modelName=\"cart_pendulum\""), std::string::npos) << d;
   EXPECT_NE(d.find("<ModelExchange modelIdentifier=\"cart_pendulum\""), std::string::npos);
