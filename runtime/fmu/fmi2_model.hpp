@@ -3,8 +3,9 @@
 // lists them: the states x = [q; q'] first (0 … S−1), then their derivatives x' (S … 2S−1),
 // the parameters, the inputs and the outputs. Model Exchange hands x' to the importer's
 // integrator; Co-Simulation steps with CVODE (BDF, the analytic Jacobian, rtol from
-// fmi2SetupExperiment or 1e-8, absolute tolerances in each state's size, restarted when a state, a parameter or an input is set from outside,
-// and otherwise continued across communication points). There are no events, integers, booleans or strings.
+// fmi2SetupExperiment or 1e-8, absolute tolerances in each state's size, restarted when a
+// state, a parameter or an input is set from outside, and otherwise continued across
+// communication points). There are no events, integers, booleans or strings.
 // CVODE is compiled in only for Co-Simulation (EOMGEN_FMU_CO_SIMULATION): a Model Exchange FMU
 // needs no SUNDIALS on the importer's machine.
 #include <algorithm>
