@@ -216,8 +216,11 @@ void report_consistency_changes(const eomgen_model_abi& m, const std::vector<dou
                                 const std::vector<bool>& given, std::vector<std::string>& warnings) {
   std::string user, other;
   for (std::size_t i = 0; i < m.num_states; ++i) {
-    double change = after[i] - before[i];
-    if (std::abs(change) <= 1e-12 * std::max(1.0, std::abs(before[i]))) continue;
+    // rounding against the state's own size, as given, or the model's default where it is 0 (1
+    // where both are): with 1e-12 of max(1, |x|), a 1e-13 m pendulum's given position moved by
+    // 11 % unsaid
+    double change = after[i] - before[i], size = before[i] != 0 ? std::abs(before[i]) : std::abs(m.default_state[i]);
+    if (std::abs(change) <= 1e-12 * (size > 0 && std::isfinite(size) ? size : 1.0)) continue;
     bool by_user = i < given.size() && given[i];
     (by_user ? user : other) += fmt::format("{}{} from {:.9g} to {:.9g} (by {:+.3g})", (by_user ? user : other).empty() ? "" : ", ",
                                             m.state_names[i], before[i], after[i], change);

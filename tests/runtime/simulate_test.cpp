@@ -303,6 +303,21 @@ TEST(Simulate, WhetherEnergyIsConservedDoesNotDependOnTheUnits) {
     }
 }
 
+// The Cartesian pendulum with its rod l from 1e-13 to 1e13 m, started at (0.6 l, −0.9 l), off its
+// rod: the constraint moves the given y to −0.8 l, and says so at every l (against 1e-12 of
+// max(1, |y|), the change at 1e-13 m went unsaid); started on the rod, nothing is said.
+TEST(Simulate, AGivenValueTheConstraintsChangeIsSaidAtEveryScale) {
+  for (double l : {1e-13, 1e-6, 1.0, 1e6, 1e13})
+    for (double y : {-0.9, -0.8}) {
+      CommandOutput r = run_eomgen(fmt::format("simulate '{}' --set l={:g} --initial x={:.17g} --initial y={:.17g} --t-end 1e-9 "
+                                               "--dt-out 1e-9 -o '{}/p.csv'", model_path("pendulum_cartesian"), l, 0.6 * l,
+                                               y * l, temporary_directory()));
+      EXPECT_EQ(r.status, 0) << r.err;
+      bool said = r.err.find("the constraints do not allow the initial values you gave: changed y") != std::string::npos;
+      EXPECT_EQ(said, y == -0.9) << "l = " << l << ", y = " << y << ": " << r.err;
+    }
+}
+
 TEST(RunCommand, MainJobDrawsTheCharts) {
   std::string dir = temporary_directory();
   CommandRun r = eomgen("run -o '" + dir + "'", shared_cache());
