@@ -172,8 +172,9 @@ void print_linear_text(const eomgen_model_abi& m, const runtime::Equilibrium& eq
     std::cout << (kind == "modal"          ? "  principal coordinates q = Phi eta, Phi the modes above (Hiller §6.3), decoupled:\n"
                   : kind == "eigenvectors" ? "  principal coordinates x = V eta, V the eigenvectors of A (Hiller §6.3), decoupled:\n"
                                            : fmt::format("  principal coordinates x = V eta, V the Jordan chains of A (generalized "
-                                                         "eigenvectors, Hiller §6.3; |AV - VJ| = {:.1e} of its terms, A balanced), coupled only "
-                                                         "along each chain:\n", r.principal.jordan_residual));
+                                                         "eigenvectors, Hiller §6.3; |AV - VJ| = {:.1e} of its terms, A "
+                                                         "balanced), coupled only along each chain:\n",
+                                                         r.principal.jordan_residual));
     for (const std::string& line : principal_equations(r)) std::cout << "    " << line << "\n";
   }
   for (const auto& [t, Phi] : r.fundamental) std::cout << matrix_text(fmt::format("Phi({:g})", t).c_str(), Phi);

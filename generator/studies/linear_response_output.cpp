@@ -118,7 +118,7 @@ std::string draw(const eomgen_model_abi& m, const runtime::LinearResponse& respo
 }
 
 // the default interval and end, 0.01 s and 10 s, against the system's own times: a 1e7 rad/s
-// absorber's rows were 1e5 periods apart, and a 1e-5 rad/s one's 10 s showed nothing of it
+// absorber's rows were 1e4 periods apart, and a 1e-5 rad/s one's 10 s showed nothing of it
 void warn_where_the_defaults_miss_the_motion(const Eigen::MatrixXd& A, const runtime::ResponseRequest& request,
                                              const ResponseOptions& o) {
   if (!o.dt_out_given) {

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <complex>
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include "analyse/first_order_form.hpp"

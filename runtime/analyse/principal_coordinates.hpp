@@ -26,7 +26,7 @@ struct PrincipalCoordinates {
   Eigen::MatrixXcd eigen_inputs;    // eigenvectors: V⁻¹B
   std::vector<std::complex<double>> eigenvalues;  // eigenvectors, jordan: λ_i in V's column order
   std::vector<bool> chained;        // jordan: η_i' also has + η_(i+1)
-  double jordan_residual = 0;       // jordan: |A V − V J| column by column, relative, A balanced (JordanBasis::residual)
+  double jordan_residual = 0;       // jordan: JordanBasis::residual
 };
 
 /// `second_order_inputs`: B of M q'' + … = B u (n × inputs); `state_inputs`: B of x' = A x + B u.

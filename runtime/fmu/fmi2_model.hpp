@@ -73,10 +73,11 @@ struct Instance {
 
 Instance* as_instance(fmi2Component c) { return static_cast<Instance*>(c); }
 
-// Each state's size, as `simulate` takes it for its absolute tolerances: its value, or its
-// default where that is zero; and for a velocity der(q_k) also q_k's size times q_k's own rate
-// at this state, √|∂q''_k/∂q_k| + |∂q''_k/∂q'_k| (an oscillator of amplitude a and frequency ω
-// has speeds of a ω). 0 where nothing says. Without it, a MEMS oscillator of 1e-9 m had an
+// Each state's size, as `simulate` takes it for its absolute tolerances (its value, or its
+// default where that is zero), but for a velocity der(q_k) with q_k's own rate at this state,
+// √|∂q''_k/∂q_k| + |∂q''_k/∂q'_k|, where `simulate` balances the whole Jacobian: at least q_k's
+// size times that (an oscillator of amplitude a and frequency ω has speeds of a ω). 0 where
+// nothing says. Without it, a MEMS oscillator of 1e-9 m had an
 // absolute tolerance of 1e-10 m in Co-Simulation, and a nominal of 1 m in Model Exchange.
 std::array<double, S> state_sizes(const Instance& in) {
   std::array<double, S> size{};
