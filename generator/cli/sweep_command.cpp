@@ -12,7 +12,7 @@ Command add_sweep_command(CLI::App& app) {
   cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
   cmd->add_option("--param", o->params,
                   "Swept parameter, once (eigenvalues along it: --param v=0:10:1001) or twice (a map: --param b=0.05:2:200 "
-                  "--param J=0.05:3:200)");
+                  "--param J=0.05:3:200); :log after the count spaces the points by a constant ratio (--param d=1e-9:1e3:121:log)");
   cmd->add_option("--at", o->at, "A fixed equilibrium, one value per flag (default: re-found at every point)");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
   cmd->add_flag("--symbolic", o->symbolic, "Draw the boundary of the symbolic Hurwitz conditions over the map");

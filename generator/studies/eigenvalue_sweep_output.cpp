@@ -48,11 +48,13 @@ std::string eigenvalue_sweep_csv(const runtime::EigenvalueSweep& s, const std::s
 void print_eigenvalue_sweep_text(const runtime::EigenvalueSweep& s, const std::string& model, const std::string& parameter,
                                  const distribute::Ranks& ranks) {
   long found = std::count_if(s.verdicts.begin(), s.verdicts.end(), [](const std::string& v) { return !v.empty(); });
-  std::cout << fmt::format("{}: eigenvalues over {} = {:g} … {:g} ({} points, {} with an equilibrium or steady motion) in "
+  std::cout << fmt::format("{}: eigenvalues over {} = {:g} … {:g} ({} points{}, {} with an equilibrium or steady motion) in "
                            "{:.3f} s on {}\n",
-                           model, parameter, s.axis.low, s.axis.high, s.axis.count, found, s.seconds, ranks.description());
+                           model, parameter, s.axis.low, s.axis.high, s.axis.count,
+                           s.axis.logarithmic ? " a constant ratio apart" : "", found, s.seconds, ranks.description());
   if (s.crossings.empty()) std::cout << "  no eigenvalue crosses the imaginary axis in this range\n";
-  else std::cout << fmt::format("  crossings of the imaginary axis (each bisected to within {:.2g}):\n", s.resolution);
+  else std::cout << fmt::format("  crossings of the imaginary axis (each bisected to within {:.2g}{}):\n", s.resolution,
+                                s.axis.logarithmic ? " of its value" : "");
   for (const runtime::AxisCrossing& c : s.crossings) std::cout << "    " << crossing_text(c, parameter) << "\n";
   if (s.stable.empty()) std::cout << "  asymptotically stable nowhere in this range\n";
   for (const runtime::StableInterval& i : s.stable) std::cout << "  asymptotically stable for " << interval_text(i, parameter) << "\n";
@@ -76,11 +78,11 @@ void print_eigenvalue_sweep_json(const runtime::EigenvalueSweep& s, const std::s
                              json_number(i.low), json_number(i.high), i.open_low ? "true" : "false", i.open_high ? "true" : "false");
   for (const runtime::StableInterval& i : s.marginal)
     marginal += fmt::format("{}{{\"low\": {}, \"high\": {}}}", marginal.empty() ? "" : ", ", json_number(i.low), json_number(i.high));
-  std::cout << fmt::format("{{\"model\": {}, \"parameter\": {}, \"from\": {}, \"to\": {}, \"points\": {}, "
+  std::cout << fmt::format("{{\"model\": {}, \"parameter\": {}, \"from\": {}, \"to\": {}, \"points\": {}, \"logarithmic\": {}, "
                            "\"crossings\": [{}], \"crossing_resolution\": {}, \"stable_intervals\": [{}], \"marginal_intervals\": [{}], \"seconds\": {}, "
                            "\"interrupted\": {}, \"ranks\": {}}}\n",
                            json_quoted(model), json_quoted(parameter), json_number(s.axis.low), json_number(s.axis.high), s.axis.count,
-                           crossings, json_number(s.resolution), intervals, marginal, json_number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
+                           s.axis.logarithmic ? "true" : "false", crossings, json_number(s.resolution), intervals, marginal, json_number(s.seconds), s.interrupted ? "true" : "false", ranks.size());
 }
 
 }  // namespace eomgen::studies

@@ -1,4 +1,4 @@
-/// @file The swept parameters of `eomgen sweep` (NAME=LOW:HIGH:COUNT) and the symbolic
+/// @file The swept parameters of `eomgen sweep` (NAME=LOW:HIGH:COUNT[:log]) and the symbolic
 /// stability margin drawn over its map.
 #include <cmath>
 #include <iostream>
@@ -14,11 +14,15 @@
 
 namespace eomgen::studies {
 
-// "name=LO:HI:N"
-std::optional<runtime::SweepAxis> parse_axis(const eomgen_model_abi& m, const std::string& text, std::string& name) {
+// "name=LO:HI:N" or "name=LO:HI:N:log"
+std::optional<runtime::SweepAxis> parse_axis(const eomgen_model_abi& m, const std::string& full, std::string& name) {
+  const std::string log_suffix = ":log";
+  bool logarithmic = full.size() > log_suffix.size() && full.compare(full.size() - log_suffix.size(), log_suffix.size(), log_suffix) == 0;
+  std::string text = logarithmic ? full.substr(0, full.size() - log_suffix.size()) : full;
   std::size_t eq = text.find('='), c1 = text.find(':', eq), c2 = text.find(':', c1 + 1);
   if (eq == std::string::npos || c1 == std::string::npos || c2 == std::string::npos) {
-    std::cerr << fmt::format("eomgen: error: --param '{}': expected NAME=LOW:HIGH:COUNT, e.g. --param b=0.1:2:200\n", text);
+    std::cerr << fmt::format("eomgen: error: --param '{}': expected NAME=LOW:HIGH:COUNT or NAME=LOW:HIGH:COUNT:log, e.g. "
+                             "--param b=0.1:2:200 or --param d=1e-9:1e3:121:log\n", full);
     return std::nullopt;
   }
   name = text.substr(0, eq);
@@ -41,12 +45,12 @@ std::optional<runtime::SweepAxis> parse_axis(const eomgen_model_abi& m, const st
     long count = whole(text.substr(c2 + 1), integer);
     if (count < 2 || count > 100000) throw std::invalid_argument("count");
     runtime::SweepAxis axis{index, whole(text.substr(eq + 1, c1 - eq - 1), real), whole(text.substr(c1 + 1, c2 - c1 - 1), real),
-                            static_cast<int>(count)};
-    if (!(axis.high > axis.low)) throw std::invalid_argument("range");
+                            static_cast<int>(count), logarithmic};
+    if (!(axis.high > axis.low) || (logarithmic && !(axis.low > 0))) throw std::invalid_argument("range");
     return axis;
   } catch (const std::exception&) {
-    std::cerr << fmt::format("eomgen: error: --param '{}': need LOW < HIGH (numbers) and a whole COUNT with 2 <= COUNT <= "
-                             "100000\n", text);
+    std::cerr << fmt::format("eomgen: error: --param '{}': need LOW < HIGH (numbers{}) and a whole COUNT with 2 <= COUNT <= "
+                             "100000\n", full, logarithmic ? ", 0 < LOW for :log" : "");
     return std::nullopt;
   }
 }

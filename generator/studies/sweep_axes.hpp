@@ -1,4 +1,4 @@
-/// @file The swept parameters of `eomgen sweep` (NAME=LOW:HIGH:COUNT) and the symbolic
+/// @file The swept parameters of `eomgen sweep` (NAME=LOW:HIGH:COUNT[:log]) and the symbolic
 /// stability margin drawn over its map.
 #pragma once
 
@@ -12,8 +12,9 @@
 namespace eomgen::studies {
 
 /// "NAME=LOW:HIGH:COUNT" read against the model's parameters: every character of each
-/// field, 2 <= COUNT <= 100000, LOW < HIGH. Prints the mistake and returns nothing when wrong;
-/// `name` gets the parameter's name.
+/// field, 2 <= COUNT <= 100000, LOW < HIGH; with ":log" after COUNT, points a constant ratio
+/// apart (0 < LOW). Prints the mistake and returns nothing when wrong; `name` gets the
+/// parameter's name.
 std::optional<runtime::SweepAxis> parse_axis(const eomgen_model_abi& m, const std::string& text, std::string& name);
 
 /// At each point of the map: the smallest of the symbolic Hurwitz conditions in the two swept

@@ -182,16 +182,19 @@ void locate_axis_crossings(EigenvalueSweep& s, const Problem& base, const StartS
   };
   s.crossings.clear();
   // relative to the sweep's width: an absolute width would be coarser than a sweep over 1e-12
-  // and, beside parameters of 1e12, finer than the doubles there
+  // and, beside parameters of 1e12, finer than the doubles there. On a logarithmic axis, to the
+  // same fraction of each step, so relative to the parameter's value
   s.resolution = resolution * (s.axis.high - s.axis.low);
+  if (s.axis.logarithmic) s.resolution = resolution * (s.axis.count - 1) * (s.axis.value(1) / s.axis.low - 1);
   for (std::size_t k = 0; k + 1 < std::size_t(s.axis.count); ++k) {
+    double step = s.axis.value(int(k) + 1) - s.axis.value(int(k));
     if (s.verdicts[k].empty() || s.verdicts[k + 1].empty()) continue;
     CountedSpectrum a = spectrum_at(k), b = spectrum_at(k + 1);
     // two eigenvalues crossing in opposite directions between grid points cancel in the
     // count: the grid must be fine enough to see them apart
     if (unstable_count(a) == unstable_count(b)) continue;
     if (auto c = bisect(base, start, fixed, s.axis.parameter, s.axis.value(int(k)), a, s.axis.value(int(k) + 1), b,
-                        s.resolution))
+                        s.axis.logarithmic ? resolution * (s.axis.count - 1) * step : s.resolution))
       s.crossings.push_back(*c);
   }
   s.stable = intervals_of(s, "asymptotically_stable");

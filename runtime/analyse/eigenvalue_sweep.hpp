@@ -37,7 +37,9 @@ struct EigenvalueSweep {
   std::vector<std::string> verdicts;  // per point, empty where none was found
   std::vector<double> tolerances;     // per point: within it a real part counts as zero (NaN where none)
   std::vector<AxisCrossing> crossings;
-  double resolution = 0;  // each crossing is bisected to within this, in the parameter
+  /// each crossing is bisected to within this, in the parameter; on a logarithmic axis, relative
+  /// to the parameter's value
+  double resolution = 0;
   std::vector<StableInterval> stable;
   std::vector<StableInterval> marginal;  // runs of points that are only marginally stable (ends at grid points)
   bool interrupted = false;
@@ -50,7 +52,8 @@ using StartState = std::function<std::optional<std::vector<double>>(const std::v
 
 /// Sweeps `axis` on `threads` threads (0: all cores). At each point the equilibrium (or
 /// steady motion) is found from `start`, or only checked when `fixed`. Crossings are
-/// bisected to `resolution` times the axis' width (high − low), or to the doubles there.
+/// bisected to `resolution` times the axis' width (high − low), or to the doubles there (on a
+/// logarithmic axis, to that fraction of the step they lie in, times the number of steps).
 /// With `points` less than the whole axis (a
 /// share of a distributed sweep) only those points are computed, and the crossings are
 /// left to `locate_axis_crossings` once every share is in.

@@ -41,8 +41,9 @@ std::string draw_eigenvalue_sweep(const EigenvalueSweep& s, const std::string& p
   std::string script = fmt::format(
       "set terminal pngcairo size 1000,640 noenhanced\nset output {}\nset title {}\nset xlabel {}\n"
       "set ylabel 'eigenvalues [1/s]'\nset grid\nset key outside top center horizontal\nset xrange [{}:{}]\n"
-      "set yrange [{}:{}]\nset xzeroaxis lt -1 lw 1\n",
-      gnuplot_quoted(png_path), gnuplot_quoted(title), gnuplot_quoted(parameter), s.axis.low, s.axis.high, -extent, extent);
+      "set yrange [{}:{}]\nset xzeroaxis lt -1 lw 1\n{}",
+      gnuplot_quoted(png_path), gnuplot_quoted(title), gnuplot_quoted(parameter), s.axis.low, s.axis.high, -extent, extent,
+      s.axis.logarithmic ? "set logscale x\n" : "");
   for (const StableInterval& i : s.stable)
     script += fmt::format("set object rect from {:.12g}, graph 0 to {:.12g}, graph 1 fc rgb '#d9f0d3' fs solid 0.6 noborder behind\n",
                           i.low, i.high);

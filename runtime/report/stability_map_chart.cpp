@@ -12,12 +12,17 @@ namespace eomgen::runtime {
 
 namespace {
 
+// a logarithmic axis drawn in log10 of its values: the image's cells are then even on the page
+double map_coordinate(const SweepAxis& axis, int k) { return axis.logarithmic ? std::log10(axis.value(k)) : axis.value(k); }
+double map_coordinate(const SweepAxis& axis, double value) { return axis.logarithmic ? std::log10(value) : value; }
+std::string map_axis_label(const SweepAxis& axis, const std::string& name) { return axis.logarithmic ? "log10(" + name + ")" : name; }
+
 void write_grid(const std::string& path, const StabilityMap& map, const std::vector<double>& values) {
   std::ofstream out(path);
   for (int j = 0; j < map.y.count; ++j) {
     for (int i = 0; i < map.x.count; ++i) {
       double v = values[static_cast<std::size_t>(j) * map.x.count + i];
-      out << fmt::format("{:.12g} {:.12g} {}\n", map.x.value(i), map.y.value(j), std::isnan(v) ? "NaN" : fmt::format("{:.9g}", v));
+      out << fmt::format("{:.12g} {:.12g} {}\n", map_coordinate(map.x, i), map_coordinate(map.y, j), std::isnan(v) ? "NaN" : fmt::format("{:.9g}", v));
     }
     out << "\n";
   }
@@ -50,8 +55,9 @@ std::string draw_stability_map(const StabilityMap& map, const std::string& x_nam
       "set cbrange [{}:{}]\nset cblabel 'largest real part of the eigenvalues'\nset key outside top center horizontal\n"
       "set xrange [{}:{}]\nset yrange [{}:{}]\n"
       "plot {} using 1:2:3 with image notitle, {} using 1:2 with lines lw 2 lc rgb 'black' title 'stability boundary (eigenvalues)'",
-      gnuplot_quoted(png_path), contour, gnuplot_quoted(title), gnuplot_quoted(x_name), gnuplot_quoted(y_name), -largest, largest, map.x.low, map.x.high,
-      map.y.low, map.y.high, gnuplot_quoted(data), gnuplot_quoted(boundary));
+      gnuplot_quoted(png_path), contour, gnuplot_quoted(title), gnuplot_quoted(map_axis_label(map.x, x_name)),
+      gnuplot_quoted(map_axis_label(map.y, y_name)), -largest, largest, map_coordinate(map.x, map.x.low), map_coordinate(map.x, map.x.high),
+      map_coordinate(map.y, map.y.low), map_coordinate(map.y, map.y.high), gnuplot_quoted(data), gnuplot_quoted(boundary));
   if (with_symbolic)
     plot += fmt::format(", {} using 1:2 with lines lw 3 dt 2 lc rgb '#1b7837' title 'Hurwitz conditions (symbolic)'",
                         gnuplot_quoted(symbolic_boundary));

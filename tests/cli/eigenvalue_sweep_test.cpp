@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <filesystem>
 #include <fstream>
 
 #include <Eigen/Dense>
+#include <fmt/format.h>
 
 #include "parse/json_reader.hpp"
 #include "support/benchmark_bicycle.hpp"
@@ -75,6 +77,42 @@ TEST(EigenvalueSweep, StableIntervalEndsAtTheCrossingAndMarginalPointsAreSaid) {
   CommandOutput too_many = run_eomgen("sweep '" + path + "' --param a=0:4:2e9");
   EXPECT_EQ(too_many.status, 2);
   EXPECT_NE(too_many.err.find("a whole COUNT with 2 <= COUNT <= 100000"), std::string::npos) << too_many.err;
+}
+
+// x'' = −x + (c − d) x': stable above the crossing d = c, swept on d = c/1000 … 1e3 on a
+// logarithmic axis of 49 points for c = 1e-7 … 1e-3. In even steps the grid's second point is
+// already 21, and the crossing is bisected to 1e-10 of the width, 1e-7: all of c = 1e-7. A
+// constant ratio apart it is found to 1e-4 of c (the real part's rounding, 1e-13 of the rate
+// 1/s, is what is left at c = 1e-7), and the stable interval runs from there to the end.
+TEST(EigenvalueSweep, ALogarithmicAxisFindsACrossingDecadesBelowItsEnd) {
+  std::string path = temporary_directory() + "/small_damping.toml";
+  std::ofstream(path) << "[model]\nname = \"small_damping\"\n[parameters]\nc = 1e-6\nd = 1.0\n"
+                         "[coordinates]\nx = { initial = 0.0, rate = 0.0 }\n[[particles]]\nname = \"mass\"\nmass = \"1\"\n"
+                         "position = [\"x\", \"0\", \"0\"]\n[energy]\npotential = \"x^2/2\"\n"
+                         "[[forces]]\ngeneralized = { x = \"(c - d)*der(x)\" }\n";
+  for (double c : {1e-7, 1e-5, 1e-3}) {
+    JsonValue r = run_json(fmt::format("sweep '{}' --set c={:g} --param d={:g}:1e3:49:log", path, c, c / 1000));
+    EXPECT_TRUE(r.find("logarithmic")->truth);
+    const auto& crossings = r.find("crossings")->items;
+    ASSERT_EQ(crossings.size(), 1u) << "c = " << c;
+    EXPECT_NEAR(crossings[0].find("d")->value / c, 1, 1e-4) << "c = " << c;
+    const auto& stable = r.find("stable_intervals")->items;
+    ASSERT_EQ(stable.size(), 1u) << "c = " << c;
+    EXPECT_NEAR(stable[0].find("low")->value / c, 1, 1e-4) << "c = " << c;
+    EXPECT_EQ(stable[0].find("high")->value, 1e3);
+  }
+  // a map over two logarithmic axes: its points a constant ratio apart, its chart drawn
+  std::string dir = temporary_directory();
+  CommandOutput map = run_eomgen("sweep '" + path + "' --param d=1e-9:1e3:13:log --param c=1e-9:1e3:5:log -o '" + dir +
+                                 "/map.csv' --plot '" + dir + "/map.png'");
+  ASSERT_EQ(map.status, 0) << map.err;
+  std::vector<std::vector<double>> rows = read_numeric_csv(dir + "/map.csv");
+  ASSERT_EQ(rows.size(), 13u * 5u);
+  for (std::size_t i = 0; i < 13; ++i) EXPECT_NEAR(rows[i][0], std::pow(10.0, -9.0 + double(i)), 1e-12 * rows[i][0]) << i;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/map.png"));
+  CommandOutput from_zero = run_eomgen("sweep '" + path + "' --param d=0:1e3:49:log");
+  EXPECT_EQ(from_zero.status, 2);
+  EXPECT_NE(from_zero.err.find("0 < LOW for :log"), std::string::npos) << from_zero.err;
 }
 
 }  // namespace
