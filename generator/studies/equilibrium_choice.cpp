@@ -110,6 +110,7 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
                              "steady motion)\n", out.iterations, out.residual);
     return exit_numerical_failure;
   }
+  if (!out.note.empty()) std::cerr << "eomgen: note: " << out.note << "\n";
   return refuse_unfit(problem, out.state, "the equilibrium found");
 }
 

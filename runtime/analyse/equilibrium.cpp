@@ -7,6 +7,7 @@
 
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
+#include "analyse/state_check.hpp"
 
 namespace eomgen::runtime {
 
@@ -160,20 +161,24 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
   return e;
 }
 
-Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
+namespace {
+
+// The largest of 1, 1/2, 1/4, … (down to 2^-60) of a Newton step after which the residual is
+// smaller than before: steps in the solution's own scale, where half a unit is none (a top's
+// precession at 4e3 rad/s from 2e3)
+template <class Residual>
+double backtracked_fraction(double residual, const Residual& residual_after) {
+  double fraction = 1;
+  for (int halvings = 0; halvings < 60 && !(residual_after(fraction) < residual); ++halvings) fraction /= 2;
+  return fraction;
+}
+
+// Newton on f = 0 from x in the states `unknowns` (indices into x), the others held; steps of at
+// most half a unit (step_fraction) where `near_start`, else backtracked
+Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, const std::vector<int>& unknowns,
+                              bool near_start) {
   const eomgen_model_abi& m = *problem.model;
-  if (has_pseudo_velocities(m)) return find_first_order(problem, start);
-  if (has_multipliers(m)) return check_first_order(problem, start);  // Newton would leave the constraint manifold
   std::size_t n = m.num_coordinates;
-  std::vector<double> x = start;
-  std::vector<int> unknowns;  // index into x
-  for (std::size_t i = 0; i < n; ++i) {
-    if (m.is_cyclic[i]) unknowns.push_back(static_cast<int>(n + i));
-    else {
-      unknowns.push_back(static_cast<int>(i));
-      x[n + i] = 0;
-    }
-  }
   Equilibrium e;
   const double default_residual = forcing_residual(problem, default_at_rest(m));
   // below the tolerance, up to three more whole steps while they still move the state against its
@@ -204,16 +209,58 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
       return y;
     };
     double largest = step.cwiseAbs().maxCoeff();
-    double size = Eigen::Map<Eigen::VectorXd>(x.data(), Eigen::Index(x.size())).cwiseAbs().maxCoeff();
-    if (within && largest <= 1e-14 * size) break;
-    double scale = within ? 1.0 : step_fraction(largest, e.residual, [&] { return forcing_residual(problem, moved(1.0)); });
+    // a step within rounding of each unknown's own value (a largest |x| mixes units: a conical
+    // pendulum's φ' of 4e-12 rad/s beside θ = 0.8 stopped three steps short)
+    bool negligible = true;
+    for (std::size_t k = 0; k < unknowns.size(); ++k)
+      negligible = negligible && std::abs(step[static_cast<long>(k)]) <= 1e-14 * std::abs(x[unknowns[k]]);
+    if (within && negligible) break;
+    double scale = within        ? 1.0
+                   : near_start ? step_fraction(largest, e.residual, [&] { return forcing_residual(problem, moved(1.0)); })
+                                : backtracked_fraction(e.residual, [&](double f) { return forcing_residual(problem, moved(f)); });
     x = moved(scale);
-    if (scale == 1.0 && largest <= 1e-14 * size) break;
+    if (scale == 1.0 && negligible) break;
   }
   if (!best.empty() && !(forcing_residual(problem, x) <= best_residual)) x = best;
   Equilibrium checked = check_equilibrium(problem, x);
   checked.iterations = e.iterations;
   return checked;
+}
+
+}  // namespace
+
+Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
+  const eomgen_model_abi& m = *problem.model;
+  if (has_pseudo_velocities(m)) return find_first_order(problem, start);
+  if (has_multipliers(m)) return check_first_order(problem, start);  // Newton would leave the constraint manifold
+  std::size_t n = m.num_coordinates;
+  std::vector<double> at_rest = start;
+  std::vector<int> unknowns, cyclic_velocities;  // indices into the state
+  for (std::size_t i = 0; i < n; ++i) {
+    if (m.is_cyclic[i]) unknowns.push_back(static_cast<int>(n + i)), cyclic_velocities.push_back(static_cast<int>(n + i));
+    else {
+      unknowns.push_back(static_cast<int>(i));
+      at_rest[n + i] = 0;
+    }
+  }
+  Equilibrium found = balance_by_newton(problem, at_rest, unknowns, true);
+  bool singular = found.converged && !unfit_state(problem, 0.0, found.state).empty();
+  if ((found.converged && !singular) || cyclic_velocities.empty()) return found;
+  // The search found nothing, or slid onto a singularity of the coordinates, where the equations
+  // balance for any cyclic velocity (a spherical pendulum at θ = 0, its azimuth undefined). The
+  // steady motion at the initial configuration instead, the cyclic velocities alone free: a
+  // spherical pendulum's conical motion at its initial θ, a heavy top's steady precession.
+  Equilibrium held = balance_by_newton(problem, at_rest, cyclic_velocities, false);
+  if (!held.converged || !unfit_state(problem, 0.0, held.state).empty()) return found;
+  std::string where;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!m.is_cyclic[i]) where += fmt::format("{}{} = {:.3g}", where.empty() ? "" : ", ", m.state_names[i], found.state[i]);
+  held.note = singular ? fmt::format("the search from the initial state ended at {}, where the mass matrix is singular (so "
+                                     "are the coordinates there); this is the steady motion at the initial configuration "
+                                     "instead, its cyclic velocities solved for", where)
+                       : "the search from the initial state found no equilibrium; this is the steady motion at the initial "
+                         "configuration, its cyclic velocities solved for";
+  return held;
 }
 
 }  // namespace eomgen::runtime

@@ -18,13 +18,17 @@ struct Equilibrium {
   bool converged = false;
   int iterations = 0;
   std::string moving;  // non-cyclic coordinates whose velocity is not zero: the state moves
+  std::string note;    // what the search did besides Newton from the start, for the report
 };
 
 /// Checks a fully given state: named values, other coordinates at `start`, other velocities zero.
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state);
 
 /// Newton's method on f = 0 from `start`; the unknowns are the non-cyclic coordinates
-/// and the velocities of the cyclic ones; the other velocities are zero.
+/// and the velocities of the cyclic ones; the other velocities are zero. Where that finds none or
+/// ends at a singular mass matrix (a singularity of the coordinates), the steady motion at the
+/// start's configuration with the cyclic velocities alone free, when there is one (said in
+/// Equilibrium::note).
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start);
 
 }  // namespace eomgen::runtime

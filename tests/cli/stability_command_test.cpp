@@ -212,5 +212,51 @@ TEST(StabilityCommand, RollingDiskFromTheCommandLine) {
   EXPECT_NE(slow.out.find("verdict: unstable"), std::string::npos) << slow.out;
 }
 
+// A spherical pendulum released at θ = 0.8 turning at φ' = 2 s (time scale s): no conical motion
+// turns that fast or that slowly (φ'² = g/(l cos θ)). Newton from there slid to θ = 0, where the
+// azimuth is undefined and any φ' balances ("the mass matrix is singular", nothing analysed), or
+// found nothing at s = 1e-12 and 1e12. Now, where it does, the search takes the steady motion at
+// θ = 0.8 instead and says so: at every time scale from 1e-12 to 1e12 a conical motion near
+// θ = 0.8 is found and is stable. The heavy top's steady precession (Hiller §3.9) likewise:
+// m g s = Ω (C ω3 − A' Ω cos θ), A' = A + m s² about the pivot, ω3 = φ' + Ω cos θ.
+TEST(StabilityCommand, ASearchThatEndsAtASingularityOfTheCoordinatesTakesTheSteadyMotionThere) {
+  for (double s : {1e-12, 1e-6, 1e-3, 1.0, 1e3, 1e6, 1e12}) {
+    std::string model = write_model("spherical_pendulum", fmt::format(R"toml([model]
+name = "spherical_pendulum"
+[parameters]
+m = 1.0
+l = 1.0
+g = {:.17g}
+[coordinates]
+theta = {{ initial = 0.8, rate = 0.0 }}
+phi = {{ initial = 0.0, rate = {:.17g} }}
+[[particles]]
+name = "bob"
+mass = "m"
+position = ["l*sin(theta)*cos(phi)", "l*sin(theta)*sin(phi)", "-l*cos(theta)"]
+[gravity]
+acceleration = ["0", "0", "-g"]
+)toml", 9.81 * s * s, 2 * s));
+    Output r = eomgen("stability '" + model + "'");
+    ASSERT_EQ(r.status, 0) << "s = " << s << ": " << r.err;
+    EXPECT_NE(r.out.find("nonlinear verdict: stable"), std::string::npos) << r.out;
+    JsonValue json = run_json("stability '" + model + "'");
+    const JsonValue& equilibrium = *json.find("equilibrium");
+    double theta = at(equilibrium, "theta"), conical = s * std::sqrt(9.81 / std::cos(theta));
+    EXPECT_NEAR(theta, 0.8, 1e-3) << "s = " << s;
+    EXPECT_NEAR(at(equilibrium, "der(phi)") / conical, 1, 1e-9) << "s = " << s;
+  }
+  Output shipped = eomgen("stability '" + model_path("spherical_pendulum") + "'");
+  ASSERT_EQ(shipped.status, 0) << shipped.err;
+  EXPECT_NE(shipped.err.find("ended at theta = 0, where the mass matrix is singular"), std::string::npos) << shipped.err;
+  EXPECT_NE(shipped.out.find("equilibrium theta = 0.8, der(phi) = 3.75240328"), std::string::npos) << shipped.out;
+  JsonValue top = run_json("stability '" + model_path("heavy_symmetric_top") + "'");
+  const JsonValue& steady = *top.find("equilibrium");
+  const double m = 0.5, s = 0.05, A = 0.0004 + m * s * s, C = 0.0006, g = 9.81, theta = at(steady, "theta");
+  double precession = at(steady, "der(psi)"), spin = at(steady, "der(phi)") + precession * std::cos(theta);
+  EXPECT_EQ(theta, 0.3);
+  EXPECT_NEAR(precession * (C * spin - A * precession * std::cos(theta)), m * g * s, 1e-9 * m * g * s);
+}
+
 }  // namespace
 }  // namespace eomgen::test
