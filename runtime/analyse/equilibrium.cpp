@@ -252,12 +252,9 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
   // spherical pendulum's conical motion at its initial θ, a heavy top's steady precession.
   Equilibrium held = balance_by_newton(problem, at_rest, cyclic_velocities, false);
   if (!held.converged || !unfit_state(problem, 0.0, held.state).empty()) return found;
-  std::string where;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!m.is_cyclic[i]) where += fmt::format("{}{} = {:.3g}", where.empty() ? "" : ", ", m.state_names[i], found.state[i]);
   held.note = singular ? fmt::format("the search from the initial state ended at {}, where the mass matrix is singular (so "
                                      "are the coordinates there); this is the steady motion at the initial configuration "
-                                     "instead, its cyclic velocities solved for", where)
+                                     "instead, its cyclic velocities solved for", state_text(m, found.state))
                        : "the search from the initial state found no equilibrium; this is the steady motion at the initial "
                          "configuration, its cyclic velocities solved for";
   return held;

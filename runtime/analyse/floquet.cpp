@@ -156,13 +156,15 @@ FloquetReport floquet_analysis(const Problem& p, const std::vector<double>& x, d
   for (int k = 0; k < 64; ++k) fastest = std::max(fastest, spectral_scale(a.at(period * k / 64.0)));
   long steps = std::max(256L, static_cast<long>(std::ceil(period * fastest * 20)));
   Eigen::VectorXd scales = balancing_scales(a.at(0.0123 * period));
-  auto balanced = [&](const Eigen::MatrixXd& phi) { return Eigen::MatrixXd(scales.cwiseInverse().asDiagonal() * phi * scales.asDiagonal()); };
+  auto in_balancing_coordinates = [&](const Eigen::MatrixXd& phi) {
+    return Eigen::MatrixXd(scales.cwiseInverse().asDiagonal() * phi * scales.asDiagonal());
+  };
   Eigen::MatrixXd coarse = monodromy(a, period, steps), fine;
   for (;;) {
     fine = monodromy(a, period, 2 * steps);
     steps *= 2;
-    double size = std::max(1.0, balanced(fine).lpNorm<Eigen::Infinity>());
-    r.error_estimate = balanced(fine - coarse).lpNorm<Eigen::Infinity>() / 15 / size;
+    double size = std::max(1.0, in_balancing_coordinates(fine).lpNorm<Eigen::Infinity>());
+    r.error_estimate = in_balancing_coordinates(fine - coarse).lpNorm<Eigen::Infinity>() / 15 / size;
     if (r.error_estimate <= 1e-11 || steps >= (1L << 18) || !fine.allFinite()) break;
     coarse = fine;
   }

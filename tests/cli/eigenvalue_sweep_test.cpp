@@ -16,6 +16,7 @@
 
 #include "parse/json_reader.hpp"
 #include "support/benchmark_bicycle.hpp"
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -85,11 +86,10 @@ TEST(EigenvalueSweep, StableIntervalEndsAtTheCrossingAndMarginalPointsAreSaid) {
 // constant ratio apart it is found to 1e-4 of c (the real part's rounding, 1e-13 of the rate
 // 1/s, is what is left at c = 1e-7), and the stable interval runs from there to the end.
 TEST(EigenvalueSweep, ALogarithmicAxisFindsACrossingDecadesBelowItsEnd) {
-  std::string path = temporary_directory() + "/small_damping.toml";
-  std::ofstream(path) << "[model]\nname = \"small_damping\"\n[parameters]\nc = 1e-6\nd = 1.0\n"
-                         "[coordinates]\nx = { initial = 0.0, rate = 0.0 }\n[[particles]]\nname = \"mass\"\nmass = \"1\"\n"
-                         "position = [\"x\", \"0\", \"0\"]\n[energy]\npotential = \"x^2/2\"\n"
-                         "[[forces]]\ngeneralized = { x = \"(c - d)*der(x)\" }\n";
+  // the force (c − d) x' as a dissipation (d − c) x'²/2
+  std::string path = write_model("small_damping", particle_on_a_line_model("small_damping", "m = 1.0\nc = 1e-6\nd = 1.0\n",
+                                                                            "potential = \"x^2/2\"\n"
+                                                                            "dissipation = \"(d - c)*der(x)^2/2\"\n"));
   for (double c : {1e-7, 1e-5, 1e-3}) {
     JsonValue r = run_json(fmt::format("sweep '{}' --set c={:g} --param d={:g}:1e3:49:log", path, c, c / 1000));
     EXPECT_TRUE(r.find("logarithmic")->truth);
