@@ -11,7 +11,8 @@ Command add_stability_command(CLI::App& app) {
   auto o = std::make_shared<StabilityOptions>();
   cmd->add_option("MODEL", o->model, "Model file (TOML)")->required();
   cmd->add_option("--at", o->at, "Equilibrium value, one per flag: --at theta=0 --at 'der(phi)=8'; velocities not named "
-                  "are zero. --at p_phi=VALUE holds the momentum of the cyclic coordinate phi and analyses Routh's "
+                  "are zero, other coordinates as in the model, and where that does not balance, those and "
+                  "the cyclic velocities not named are solved for. --at p_phi=VALUE holds the momentum of the cyclic coordinate phi and analyses Routh's "
                   "reduced system");
   cmd->add_option("--set", o->sets, "Parameter or input value, one per flag: --set m=2.5");
   cmd->add_option("--period", o->period, "Period T [s] of time-periodic equations (default: found from sin/cos(w*t) in "

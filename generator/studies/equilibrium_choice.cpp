@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include "analyse/constrained_first_order.hpp"
 #include "analyse/equilibrium.hpp"
+#include "analyse/first_order_form.hpp"
 #include "analyse/state_check.hpp"
 #include "analyse/unbalanced_rate.hpp"
 #include "studies/equilibrium_choice.hpp"
@@ -15,13 +17,52 @@ namespace eomgen::studies {
 
 namespace {
 
-// the state an --at list names: given values, other coordinates as in the model, other velocities zero
+// the state an --at list names: given values, other coordinates as in the model, other velocities
+// zero; `named` marks the given ones
 std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, const std::vector<double>& initial,
-                                                 const std::vector<std::string>& at) {
+                                                 const std::vector<std::string>& at, std::vector<bool>& named) {
   std::vector<double> x = initial;
   for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) x[i] = 0;
-  if (!assign_states(m, at, "--at", x)) return std::nullopt;
+  if (!assign_states(m, at, "--at", x, &named)) return std::nullopt;
   return x;
+}
+
+// The states Newton may change where --at names only some: the non-cyclic coordinates and the
+// cyclic velocities not named (none for an Appell or Lagrange I model, which --at states in full)
+std::vector<std::size_t> free_states(const eomgen_model_abi& m, const std::vector<bool>& named) {
+  std::vector<std::size_t> free;
+  if (runtime::has_pseudo_velocities(m) || runtime::has_multipliers(m)) return free;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i) {
+    std::size_t own = m.is_cyclic[i] ? m.num_coordinates + i : i;
+    if (!named[own]) free.push_back(own);
+  }
+  return free;
+}
+
+// "name = value" of each state in `which`, or the names alone without x
+std::string states_text(const eomgen_model_abi& m, const std::vector<std::size_t>& which, const std::vector<double>* x) {
+  std::string text;
+  for (std::size_t i : which)
+    text += (text.empty() ? "" : ", ") + (x ? fmt::format("{} = {:.6g}", m.state_names[i], (*x)[i]) : std::string(m.state_names[i]));
+  return text;
+}
+
+// Where --at names some states and the rest as given do not balance: the equilibrium or steady
+// motion with the named ones held, the unnamed cyclic velocities started from the model's values
+// (a spherical pendulum held at θ = 0.8 has its φ' = 3.75 for a conical motion; from φ' = 0 no
+// Newton step leads there), said in a note
+std::optional<runtime::Equilibrium> completed_at(const runtime::Problem& problem, std::vector<double> x,
+                                                 const std::vector<double>& initial, const std::vector<bool>& named) {
+  const eomgen_model_abi& m = *problem.model;
+  std::vector<std::size_t> free = free_states(m, named);
+  if (free.empty()) return std::nullopt;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+    if (m.is_cyclic[i] && !named[m.num_coordinates + i]) x[m.num_coordinates + i] = initial[m.num_coordinates + i];
+  runtime::Equilibrium completed = runtime::complete_equilibrium(problem, std::move(x), named);
+  if (!completed.converged || !runtime::unfit_state(problem, 0.0, completed.state).empty()) return std::nullopt;
+  completed.note = fmt::format("the state given by --at does not balance with the other values as given; with the "
+                               "named ones held, {} does", states_text(m, free, &completed.state));
+  return completed;
 }
 
 // a state where M or f is not finite, or M is singular, has no meaningful linearization
@@ -82,10 +123,18 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
                                   const std::vector<double>& initial, runtime::Equilibrium& out) {
   const eomgen_model_abi& m = *problem.model;
   if (!at_texts.empty()) {
-    auto x = state_from_at(m, initial, at_texts);
+    std::vector<bool> named;
+    auto x = state_from_at(m, initial, at_texts, named);
     if (!x) return exit_user_error;
     if (auto status = refuse_unfit(problem, *x, "the state given by --at")) return status;
     out = runtime::check_equilibrium(problem, *x);
+    std::optional<runtime::Equilibrium> completed;
+    if (!out.converged && out.moving.empty()) completed = completed_at(problem, *x, initial, named);
+    if (completed) {
+      out = *completed;
+      std::cerr << "eomgen: note: " << out.note << "\n";
+      return std::nullopt;
+    }
     if (!out.moving.empty()) {
       std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: {} moves a coordinate that "
                                "is not cyclic, so the configuration and with it the forces change\n  hint: only cyclic "
@@ -94,9 +143,11 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
       return exit_user_error;
     }
     if (!out.converged) {
+      std::vector<std::size_t> free = free_states(m, named);
       std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: the largest residual of "
-                               "the equations of motion is {:.3g} (tolerance {:.3g})\n  hint: leave out --at to search "
-                               "for one from the model's initial values\n", out.residual, out.tolerance);
+                               "the equations of motion is {:.3g} (tolerance {:.3g}){}\n  hint: leave out --at to search "
+                               "for one from the model's initial values\n", out.residual, out.tolerance,
+                               free.empty() ? "" : "; with the named values held, Newton on " + states_text(m, free, nullptr) + " found none either");
       return exit_user_error;
     }
     return std::nullopt;

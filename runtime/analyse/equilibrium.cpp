@@ -260,4 +260,18 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
   return held;
 }
 
+Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> state, const std::vector<bool>& held) {
+  const eomgen_model_abi& m = *problem.model;
+  if (has_pseudo_velocities(m) || has_multipliers(m)) return check_equilibrium(problem, std::move(state));
+  std::size_t n = m.num_coordinates;
+  std::vector<int> unknowns;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t own = m.is_cyclic[i] ? n + i : i;
+    if (!held[own]) unknowns.push_back(static_cast<int>(own));
+    if (!m.is_cyclic[i] && !held[n + i]) state[n + i] = 0;
+  }
+  if (unknowns.empty()) return check_equilibrium(problem, std::move(state));
+  return balance_by_newton(problem, std::move(state), unknowns, false);
+}
+
 }  // namespace eomgen::runtime

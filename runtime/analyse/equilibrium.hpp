@@ -31,4 +31,11 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
 /// Equilibrium::note).
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start);
 
+/// The equilibrium or steady motion that keeps the states marked `held` at their values in `state`:
+/// Newton, with backtracked steps, on the other non-cyclic coordinates and the other cyclic
+/// velocities, from their values in `state`; the other velocities zero. A spherical pendulum held
+/// at θ = 0.8 has its conical motion's φ' solved for. Second-order forms only (an Appell or Lagrange
+/// I model is checked as given); not converged where nothing is free or Newton finds none.
+Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> state, const std::vector<bool>& held);
+
 }  // namespace eomgen::runtime

@@ -250,5 +250,40 @@ TEST(StabilityCommand, ASearchThatEndsAtASingularityOfTheCoordinatesTakesTheStea
   EXPECT_NEAR(precession * (C * spin - A * precession * std::cos(theta)), m * g * s, 1e-9 * m * g * s);
 }
 
+// --at that names some states holds them and solves for the rest where the rest as given do not
+// balance: a spherical pendulum held at θ0 turns at φ'² = g/(l cos θ0) (from the model's φ' = 2 s,
+// at time scales s from 1e-12 to 1e12), and a pendulum on a cart held at x = 5 hangs upside down
+// at θ = π, the nearest balance to its initial 3.0. Before, each was "not an equilibrium". A double
+// pendulum held at φ1 = 0.5 has none, and says that the search with φ2 free found none either.
+TEST(StabilityCommand, AnAtThatNamesSomeStatesSolvesForTheRest) {
+  for (double s : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    std::string text = read_file(model_path("spherical_pendulum"));
+    for (auto [line, scaled] : {std::pair<std::string, std::string>{"g = 9.81", fmt::format("g = {:.17g}", 9.81 * s * s)},
+                                {"rate = 2.0", fmt::format("rate = {:.17g}", 2 * s)}}) {
+      ASSERT_NE(text.find(line), std::string::npos) << line;
+      text.replace(text.find(line), line.size(), scaled);
+    }
+    std::string model = write_model("spherical_pendulum", text);
+    for (double theta : {0.3, 0.8, 1.2}) {
+      std::string given = fmt::format(" --at theta={}", theta);
+      Output r = eomgen("stability '" + model + "'" + given);
+      ASSERT_EQ(r.status, 0) << "s = " << s << given << ": " << r.err;
+      EXPECT_NE(r.err.find("with the named ones held, der(phi) = "), std::string::npos) << r.err;
+      JsonValue json = run_json("stability '" + model + "'" + given);
+      const JsonValue& equilibrium = *json.find("equilibrium");
+      EXPECT_EQ(at(equilibrium, "theta"), theta);
+      EXPECT_NEAR(at(equilibrium, "der(phi)") / (s * std::sqrt(9.81 / std::cos(theta))), 1, 1e-12) << "s = " << s << given;
+    }
+  }
+  JsonValue cart_json = run_json("stability '" + model_path("cart_pendulum") + "' --at x=5");
+  const JsonValue& cart = *cart_json.find("equilibrium");
+  EXPECT_EQ(at(cart, "x"), 5.0);
+  EXPECT_NEAR(at(cart, "theta"), M_PI, 1e-14);
+  Output none = eomgen("stability '" + model_path("double_pendulum") + "' --at phi1=0.5");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("is not an equilibrium"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("with the named values held, Newton on phi2 found none either"), std::string::npos) << none.err;
+}
+
 }  // namespace
 }  // namespace eomgen::test
