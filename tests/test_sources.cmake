@@ -79,6 +79,7 @@ set(EOMGEN_TEST_FILES
   runtime/random_sweeps_test.cpp                    fast
   runtime/random_systems_test.cpp                   fast
   runtime/stability_map_test.cpp                    fast
+  runtime/degree_colours_test.cpp                   fast
   runtime/ensemble_test.cpp                         fast
   runtime/animation_test.cpp                        fast
   runtime/step_stability_test.cpp                   fast
