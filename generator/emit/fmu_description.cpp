@@ -1,6 +1,7 @@
 #include "emit/fmu_description.hpp"
 #include "emit/formats.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <set>
 #include <vector>
@@ -47,7 +48,8 @@ std::string fmu_guid(const std::string& header_text) {
                      b & 0xffffffffffffull);
 }
 
-std::string fmi2_model_description(const Equations& e, const std::string& guid, FmuKinds kinds, const std::string& version) {
+std::string fmi2_model_description(const Equations& e, const std::string& guid, FmuKinds kinds, const std::string& version,
+                                   const std::vector<double>& nominals) {
   const Symbols& s = e.symbols;
   std::size_t n = s.num_coordinates(), k = e.num_velocities(), S = n + k, P = s.parameters.size(), U = s.inputs.size(),
               Y = e.outputs.size();
@@ -65,6 +67,8 @@ std::string fmi2_model_description(const Equations& e, const std::string& guid, 
   };
   for (std::size_t i = 0; i < S; ++i) {
     std::string derivative = kinematic && i >= n ? fmt::format(" derivative=\"{}\"", i - n + 1) : "";
+    if (i < nominals.size() && std::isfinite(nominals[i]) && nominals[i] > 0)
+      derivative += fmt::format(" nominal=\"{:.3g}\"", nominals[i]);
     add(i, fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"local\" variability=\"continuous\" "
                        "initial=\"exact\">\n      <Real start=\"{}\"{}/>\n    </ScalarVariable>",
                        xml_escaped(states[i]), i, format_number(start[i]), derivative));

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "derive/equations.hpp"
 
@@ -18,8 +19,10 @@ struct FmuKinds {
 /// A GUID from the header's text (FNV-1a), so the same model gives the same FMU.
 std::string fmu_guid(const std::string& header_text);
 
-/// The XML; `version` names the generation tool.
+/// The XML; `version` names the generation tool; `nominals`, one per state or none, the states'
+/// `nominal` attributes (fmu/fmu_nominals.hpp), written to three digits: a scale, and the same
+/// text wherever the binary's last bits differ.
 std::string fmi2_model_description(const Equations& equations, const std::string& guid, FmuKinds kinds,
-                                   const std::string& version);
+                                   const std::string& version, const std::vector<double>& nominals);
 
 }  // namespace eomgen

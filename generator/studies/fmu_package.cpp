@@ -12,6 +12,7 @@
 #include "common/zip_archive.hpp"
 #include "emit/cpp_header.hpp"
 #include "fmu/fmu_binary.hpp"
+#include "fmu/fmu_nominals.hpp"
 
 namespace eomgen::studies {
 
@@ -21,11 +22,17 @@ std::string write_fmu(const Equations& e, const std::string& directory, FmuKinds
                        "method = \"appell\" or \"lagrange2\" in minimal coordinates instead",
                        e.model_name);
   std::string header = emit_cpp_header(e), guid = fmu_guid(header);
-  std::string description = fmi2_model_description(e, guid, kinds, version_string);
   std::string library = (std::filesystem::temp_directory_path() / fmt::format("eomgen-{}-{}.so", e.model_name, ::getpid())).string();
   if (std::string failure = runtime::build_fmu_binary(header, e.model_name, guid, library, kinds.co_simulation);
       !failure.empty())
     return failure;
+  std::string no_nominals;
+  std::vector<double> nominals = runtime::fmu_state_nominals(library, guid, e.symbols.num_coordinates() + e.num_velocities(), no_nominals);
+  if (!no_nominals.empty()) {
+    std::filesystem::remove(library);
+    return "the FMU's states' nominal values: " + no_nominals;
+  }
+  std::string description = fmi2_model_description(e, guid, kinds, version_string, nominals);
   std::ifstream in(library, std::ios::binary);
   std::ostringstream binary;
   binary << in.rdbuf();

@@ -227,6 +227,13 @@ TEST(Fmu, ASmallOscillatorHasItsOwnNominalsAndTolerances) {
   const double a = 1e-9, omega = 1e5;
   Unpacked u = build_and_unpack(write_model("small_oscillator", spring_mass_model("small_oscillator", 1e-9, 10.0, a)),
                                 "small_oscillator");
+  // the same nominals in modelDescription.xml, for importers that read them there (without, 1 m)
+  std::smatch x, v;
+  ASSERT_TRUE(std::regex_search(u.description, x, std::regex("name=\"x\"[^>]*>\\s*<Real [^>]*nominal=\"([^\"]+)\""))) << u.description;
+  ASSERT_TRUE(std::regex_search(u.description, v, std::regex("name=\"der\\(x\\)\"[^>]*>\\s*<Real [^>]*nominal=\"([^\"]+)\"")))
+      << u.description;
+  EXPECT_NEAR(std::stod(x[1]) / a, 1, 1e-3);
+  EXPECT_NEAR(std::stod(v[1]) / (a * omega), 1, 1e-3);
   Fmi2 f;
   load(f, u.directory + "/unzipped/binaries/linux64/small_oscillator.so");
   for (fmi2Type kind : {fmi2ModelExchange, fmi2CoSimulation}) {
@@ -329,7 +336,7 @@ TEST(Fmu, TheDescriptionNamesWhatTheBinaryComputes) {
   EXPECT_NE(d.find("<CoSimulation modelIdentifier=\"cart_pendulum\""), std::string::npos);
   // the states x, theta, der(x), der(theta): der(x) is both a state and the derivative of x
   EXPECT_NE(d.find("<ScalarVariable name=\"der(x)\" valueReference=\"2\" causality=\"local\" variability=\"continuous\" "
-                   "initial=\"exact\">\n      <Real start=\"0\" derivative=\"1\"/>"),
+                   "initial=\"exact\">\n      <Real start=\"0\" derivative=\"1\" nominal=\"1\"/>"),
             std::string::npos)
       << d;
   EXPECT_NE(d.find("<ScalarVariable name=\"der(der(x))\" valueReference=\"6\""), std::string::npos) << d;
