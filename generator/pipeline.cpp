@@ -33,9 +33,11 @@ void orient(Equations& e) {
   for (NamedSymbolic& o : e.outputs) each(o.expression);
   for (NamedSymbolic& p : e.pseudo_velocity_definitions) each(p.expression);
   for (GiNaC::ex& x : e.coordinate_rates) each(x);
-  for (GiNaC::ex& x : e.momentum_bias) each(x);
-  for (unsigned i = 0; i < e.momentum_mass_matrix.rows(); ++i)
-    for (unsigned j = 0; j < e.momentum_mass_matrix.cols(); ++j) each(e.momentum_mass_matrix(i, j));
+  if (MomentumSolve* momentum = e.momentum()) {
+    for (GiNaC::ex& x : momentum->bias) each(x);
+    for (unsigned i = 0; i < momentum->mass_matrix.rows(); ++i)
+      for (unsigned j = 0; j < momentum->mass_matrix.cols(); ++j) each(momentum->mass_matrix(i, j));
+  }
   for (FirstIntegral& f : e.first_integrals) each(f.expression);
   each(e.routhian);
   for (NamedSymbolic& r : e.eliminated_coordinates) each(r.expression);

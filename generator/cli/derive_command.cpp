@@ -34,7 +34,7 @@ int derive_and_write(const std::string& model_path, const std::string& format, c
     return exit_user_error;
   }
   // the equations are the same either way; the header's rhs solves them by the recursion or through M
-  const char* form = !d.equations->articulated ? "" : "; the header's rhs by the articulated-body recursion";
+  const char* form = !d.equations->articulated() ? "" : "; the header's rhs by the articulated-body recursion";
   std::cerr << fmt::format("eomgen: derived {} ({}, {} degree{} of freedom{}) in {:.3f} s\n", d.equations->model_name,
                            d.equations->method, d.equations->degrees_of_freedom,
                            d.equations->degrees_of_freedom == 1 ? "" : "s", form, seconds);

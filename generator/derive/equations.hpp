@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -58,14 +59,47 @@ struct TreeInverseDynamics {
   std::vector<GiNaC::ex> accelerations_of_forces;
 };
 
-/// Forward dynamics by the articulated-body recursion (derive/articulated_bodies.hpp): q'' in the
-/// recursion's quantities, for the generated rhs, and the same tree's M, f and ∂τ/∂(q, q', u)
-/// (q'' held as Equations::acceleration_symbols) in them, equal to Equations::mass_matrix and
-/// forcing. Not printed.
+/// The form of a tree of particles (DynamicsForm::particle_tree): forward dynamics by the
+/// articulated-body recursion (derive/articulated_bodies.hpp), q'' in the recursion's quantities,
+/// for the generated rhs, and the same tree's M, f and ∂τ/∂(q, q', u) (q'' held as
+/// `acceleration_symbols`) in them, equal to Equations::mass_matrix and forcing. Not printed.
 struct ArticulatedForwardDynamics {
+  std::vector<GiNaC::symbol> acceleration_symbols;
   std::vector<Intermediate> intermediates;
   std::vector<GiNaC::ex> accelerations;
   TreeInverseDynamics inverse_dynamics;
+};
+
+/// The form of recursive kinematics and trees of joints (DynamicsForm::newton_euler): the inverse
+/// dynamics τ(q, q', q'', u, t) = M q'' − f by the Newton–Euler recursion, in the symbols
+/// `acceleration_symbols` for q'', whose quantities come after Equations::intermediates: the
+/// generated Jacobian and linearization differentiate it with q'' held, O(n²) code where ∂M/∂x and
+/// ∂f/∂x entry by entry are O(n³). Not part of the printed equations.
+struct NewtonEulerRecursion {
+  std::vector<GiNaC::symbol> acceleration_symbols;
+  std::vector<Intermediate> acceleration_intermediates;
+  std::vector<GiNaC::ex> inverse_dynamics;
+  /// A joint tree: inverse_dynamics is the bodies' τ plus the applied part, and the bodies' ∂τ/∂q
+  /// (velocities × coordinates) and ∂τ/∂s (velocities × velocities) are in closed form, in
+  /// acceleration_intermediates, or the header's loops over a long tree's links: the header's
+  /// tangent sweep then runs through the applied part alone. Empty otherwise.
+  std::optional<BodiesGradient> bodies_gradient;
+  /// the links of those loops (emit/cpp_tree_gradient_loops.hpp), or null
+  const HingeTreeLinks* gradient_loops() const {
+    return bodies_gradient && bodies_gradient->closed_form.loops ? &*bodies_gradient->closed_form.loops : nullptr;
+  }
+  /// A joint tree's q'' by the articulated-body algorithm, where ModelChoice::forward_dynamics asks
+  /// for it or the tree is deep enough: the header's rhs takes it where asked or where its code is
+  /// shorter than M's (emit/cpp_joint_tree.hpp); everything else uses M and the tree's τ.
+  std::optional<JointTreeAccelerations> joint_tree_accelerations;
+};
+
+/// The form of Hamilton's equations of a larger model, where M⁻¹ would swell
+/// (DynamicsForm::momentum): der(q) solves mass_matrix·der(q) = p − bias in the generated code, and
+/// H, f, T and the outputs are written in q and der(q) (coordinate_rates are then der(q) itself).
+struct MomentumSolve {
+  GiNaC::matrix mass_matrix;
+  std::vector<GiNaC::ex> bias;
 };
 
 /// A quantity that stays constant along every motion at zero inputs (Hiller §3.6, §3.8.3).
@@ -91,35 +125,26 @@ struct Equations {
   /// Recursive kinematics: quantities of the frames and bodies, each defined in the model's
   /// symbols and earlier ones, that the expressions below may contain (empty otherwise).
   std::vector<Intermediate> intermediates;
-  /// Recursive kinematics: the inverse dynamics τ(q, q', q'', u, t) = M q'' − f by the Newton–Euler
-  /// recursion, in the symbols `acceleration_symbols` for q'', whose quantities come after
-  /// `intermediates`: the generated Jacobian and linearization differentiate it with q'' held,
-  /// O(n²) code where ∂M/∂x and ∂f/∂x entry by entry are O(n³). Not part of the printed equations.
-  /// (A tree of particles solved by the articulated-body recursion has acceleration_symbols too.)
-  std::vector<GiNaC::symbol> acceleration_symbols;
-  std::vector<Intermediate> acceleration_intermediates;
-  std::vector<GiNaC::ex> inverse_dynamics;
-  /// A joint tree: inverse_dynamics is the bodies' τ plus the applied part, and the bodies' ∂τ/∂q
-  /// (velocities × coordinates) and ∂τ/∂s (velocities × velocities) are in closed form, in
-  /// acceleration_intermediates, or the header's loops over a long tree's links: the header's
-  /// tangent sweep then runs through the applied part alone. Empty otherwise.
-  std::optional<BodiesGradient> bodies_gradient;
-  /// the links of those loops (emit/cpp_tree_gradient_loops.hpp), or null
-  const HingeTreeLinks* gradient_loops() const {
-    return bodies_gradient && bodies_gradient->closed_form.loops ? &*bodies_gradient->closed_form.loops : nullptr;
+  /// How the header forms q'' and its derivatives, one form per model, chosen where the equations
+  /// are derived (emit/dynamics_form.hpp reads it): M q'' = f as written (std::monostate), or one of
+  /// the forms above with what it needs. Lagrange I's multipliers come on top of any.
+  std::variant<std::monostate, MomentumSolve, NewtonEulerRecursion, ArticulatedForwardDynamics> dynamics;
+  const NewtonEulerRecursion* newton_euler() const { return std::get_if<NewtonEulerRecursion>(&dynamics); }
+  NewtonEulerRecursion* newton_euler() { return std::get_if<NewtonEulerRecursion>(&dynamics); }
+  const ArticulatedForwardDynamics* articulated() const { return std::get_if<ArticulatedForwardDynamics>(&dynamics); }
+  const MomentumSolve* momentum() const { return std::get_if<MomentumSolve>(&dynamics); }
+  MomentumSolve* momentum() { return std::get_if<MomentumSolve>(&dynamics); }
+  /// a joint tree's q'' by the articulated-body algorithm, or null
+  const JointTreeAccelerations* joint_tree_accelerations() const {
+    return newton_euler() && newton_euler()->joint_tree_accelerations ? &*newton_euler()->joint_tree_accelerations : nullptr;
   }
-  /// Forward dynamics by the articulated-body recursion of a tree of particles, where eomgen or
-  /// ModelChoice::forward_dynamics chooses it; without it the rhs solves M q'' = f.
-  std::optional<ArticulatedForwardDynamics> articulated;
-  /// A joint tree's q'' by the articulated-body algorithm, where ModelChoice::forward_dynamics asks
-  /// for it or the tree is deep enough: the header's rhs takes it where asked or where its code is
-  /// shorter than M's (emit/cpp_joint_tree.hpp); everything else uses M and the tree's τ.
-  std::optional<JointTreeAccelerations> joint_tree_accelerations;
-  /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f.
-  void solve_by_mass_matrix() {
-    articulated.reset();
-    joint_tree_accelerations.reset();
-  }
+  /// the links of a long joint tree's gradient loops, or null (NewtonEulerRecursion::gradient_loops)
+  const HingeTreeLinks* gradient_loops() const { return newton_euler() ? newton_euler()->gradient_loops() : nullptr; }
+  /// the symbols of q'' in which the form's inverse dynamics is written (empty for M q'' = f)
+  const std::vector<GiNaC::symbol>& acceleration_symbols() const;
+  /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f (a
+  /// recursion's τ stays for the derivatives, which it still gives)
+  void solve_by_mass_matrix();
   /// A tree of joints (spatial/joint_tree_dynamics.hpp): for each coordinate, the one above it
   /// (−1 at a root): for a tree numbered parents first, the coordinate of the nearest joint above
   /// its own; with joints that follow another's coordinate, or another numbering, the one that the
@@ -144,14 +169,10 @@ struct Equations {
   std::vector<NamedSymbolic> pseudo_velocity_definitions;    // s = Y q' + y, as given or chosen
   GiNaC::ex acceleration_energy;                             // S(q, s, s', t), without terms free of s'
   /// A tree with ball or free joints takes M and f from its recursions and forms no S.
-  bool acceleration_energy_formed() const { return !(acceleration_energy.is_zero() && !inverse_dynamics.empty()); }
+  bool acceleration_energy_formed() const { return !(acceleration_energy.is_zero() && newton_euler()); }
   GiNaC::ex hamiltonian;  // Hamilton: H(q, p, t); the velocities are then the momenta p, M = I and f = p'
-  /// Hamilton's equations of a larger model, where M⁻¹ would swell: der(q) solves
-  /// momentum_mass_matrix·der(q) = p − momentum_bias in the generated code, and H, f, T and the
-  /// outputs are written in q and der(q) (coordinate_rates are then der(q) itself). Empty otherwise.
-  GiNaC::matrix momentum_mass_matrix;
-  std::vector<GiNaC::ex> momentum_bias;
-  bool solves_for_velocities() const { return !momentum_bias.empty(); }
+  /// Hamilton's equations in the momentum form (MomentumSolve)
+  bool solves_for_velocities() const { return momentum() != nullptr; }
   std::vector<GiNaC::realsymbol> pseudo_accelerations;       // s', as they appear in S
   std::size_t num_velocities() const { return symbols.velocities.size(); }
   bool uses_pseudo_velocities() const { return !coordinate_rates.empty(); }

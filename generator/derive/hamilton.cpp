@@ -53,8 +53,7 @@ void write_mass_matrix_form(Equations& e, const Equations& lagrange, const Mecha
   const Symbols& s = lagrange.symbols;
   const ex& T = lagrange.kinetic_energy;
   std::size_t n = bias.size();
-  e.momentum_mass_matrix = lagrange.mass_matrix;
-  e.momentum_bias = bias;
+  e.dynamics = MomentumSolve{lagrange.mass_matrix, bias};
   ex H = mech.potential_energy - T;
   for (unsigned j = 0; j < n; ++j) {
     e.coordinate_rates.push_back(s.velocities[j]);
@@ -109,6 +108,8 @@ Equations derive_hamilton(const Model& model, const Mechanics& mech) {
   e.forcing.assign(n, 0);
   e.acceleration_energy = 0;
   if (closed_form_fits(lagrange.mass_matrix)) {
+    // M = I and f = p' as written: Lagrange's recursion, in its velocities, is no form of these
+    e.dynamics = std::monostate{};
     write_closed_form(e, lagrange, mech, momenta, bias, motion);
   } else {
     write_mass_matrix_form(e, lagrange, mech, bias);

@@ -22,9 +22,11 @@ void add_joint_tree_accelerations(const Model& model, const Mechanics& mech, Equ
       if (tau.has(a) || joint_inertias.back().has(a)) return;
     forces.push_back(-tau);
   }
+  NewtonEulerRecursion* recursion = e.newton_euler();
+  if (!recursion) return;
   derivation_stage("the articulated-body algorithm");
-  e.joint_tree_accelerations = joint_tree_accelerations(mech.tree_links, model.gravity, forces, joint_inertias);
-  e.joint_tree_accelerations->asked = model.forward_dynamics == ForwardDynamics::articulated;
+  recursion->joint_tree_accelerations = joint_tree_accelerations(mech.tree_links, model.gravity, forces, joint_inertias);
+  recursion->joint_tree_accelerations->asked = model.forward_dynamics == ForwardDynamics::articulated;
 }
 
 }  // namespace eomgen

@@ -82,10 +82,7 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
     e.forcing[c] = tidy(e.forcing[c], motion);
     for (unsigned d = c; d < k; ++d) e.mass_matrix(c, d) = e.mass_matrix(d, c) = tidy((*mech.composite_mass_matrix)(c, d), motion);
   }
-  e.acceleration_symbols = mech.acceleration_symbols;
-  e.acceleration_intermediates = mech.acceleration_intermediates;
-  e.inverse_dynamics = mech.inverse_dynamics;
-  e.bodies_gradient = mech.bodies_gradient;
+  take_newton_euler_recursion(mech, e);
   e.coordinate_parents = mech.coordinate_parents;
   for (const FrameLink& l : model.frame_links)
     if (l.joint && l.joint->spherical())
@@ -98,15 +95,17 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
   e.conserves_energy_without_inputs = conserves_energy_without_inputs(mech, s);
   add_joint_tree_accelerations(model, mech, e);
   std::vector<ex> used = e.forcing;
-  if (e.joint_tree_accelerations)
-    for (const Intermediate& i : e.joint_tree_accelerations->intermediates) used.push_back(i.definition);
+  if (e.joint_tree_accelerations())
+    for (const Intermediate& i : e.joint_tree_accelerations()->intermediates) used.push_back(i.definition);
   for (unsigned c = 0; c < k; ++c)
     for (unsigned d = 0; d < k; ++d) used.push_back(e.mass_matrix(c, d));
-  used.insert(used.end(), e.inverse_dynamics.begin(), e.inverse_dynamics.end());
-  for (const Intermediate& i : e.acceleration_intermediates) used.push_back(i.definition);
-  if (e.bodies_gradient) {
-    std::vector<ex> gradient = written_expressions(*e.bodies_gradient);
-    used.insert(used.end(), gradient.begin(), gradient.end());
+  if (const NewtonEulerRecursion* recursion = e.newton_euler()) {
+    used.insert(used.end(), recursion->inverse_dynamics.begin(), recursion->inverse_dynamics.end());
+    for (const Intermediate& i : recursion->acceleration_intermediates) used.push_back(i.definition);
+    if (recursion->bodies_gradient) {
+      std::vector<ex> gradient = written_expressions(*recursion->bodies_gradient);
+      used.insert(used.end(), gradient.begin(), gradient.end());
+    }
   }
   for (const BodyKinematics& b : mech.bodies) used.insert(used.end(), b.position.begin(), b.position.end());
   for (const NamedSymbolic& o : e.outputs) used.push_back(o.expression);

@@ -100,10 +100,10 @@ void choose_forward_dynamics(const Model& model, const Mechanics& mech, const Pa
   derivation_stage("the articulated-body recursion");
   ArticulatedAccelerations solution = articulated_accelerations(model, mech, tree);
   std::size_t n = model.symbols.num_coordinates();
-  for (std::size_t k = 0; k < n; ++k) e.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
-  ArticulatedForwardDynamics& articulated = e.articulated.emplace();
+  ArticulatedForwardDynamics& articulated = e.dynamics.emplace<ArticulatedForwardDynamics>();
+  for (std::size_t k = 0; k < n; ++k) articulated.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   articulated.inverse_dynamics =
-      articulated_inverse_dynamics(model, mech, tree, solution, e.acceleration_symbols, solution.intermediates);
+      articulated_inverse_dynamics(model, mech, tree, solution, articulated.acceleration_symbols, solution.intermediates);
   articulated.inverse_dynamics.forces = solution.forces;
   articulated.inverse_dynamics.accelerations_of_forces = solution.accelerations_of_forces;
   articulated.intermediates = std::move(solution.intermediates);
@@ -159,10 +159,7 @@ Equations derive_lagrange2(const Model& model, const Mechanics& mech) {
   derivation_stage("the kinetic energy from M");
   // recursive kinematics: T from the bodies' velocities, O(n) where ½ q'ᵀ M q' is O(n³)
   e.kinetic_energy = mech.intermediates.empty() ? kinetic_energy(M, mech, s) : kinetic_energy_of(mech);
-  e.acceleration_symbols = mech.acceleration_symbols;
-  e.acceleration_intermediates = mech.acceleration_intermediates;
-  e.inverse_dynamics = mech.inverse_dynamics;
-  e.bodies_gradient = mech.bodies_gradient;
+  take_newton_euler_recursion(mech, e);
   e.coordinate_parents = mech.coordinate_parents;
   e.potential_energy = mech.potential_energy;
   e.dissipation = mech.dissipation;

@@ -8,6 +8,24 @@
 
 namespace eomgen {
 
+const std::vector<GiNaC::symbol>& Equations::acceleration_symbols() const {
+  static const std::vector<GiNaC::symbol> none;
+  if (const NewtonEulerRecursion* recursion = newton_euler()) return recursion->acceleration_symbols;
+  if (const ArticulatedForwardDynamics* tree = articulated()) return tree->acceleration_symbols;
+  return none;
+}
+
+void take_newton_euler_recursion(const Mechanics& mech, Equations& e) {
+  if (mech.inverse_dynamics.empty()) return;
+  e.dynamics = NewtonEulerRecursion{mech.acceleration_symbols, mech.acceleration_intermediates, mech.inverse_dynamics,
+                                    mech.bodies_gradient, std::nullopt};
+}
+
+void Equations::solve_by_mass_matrix() {
+  if (articulated()) dynamics = std::monostate{};
+  if (NewtonEulerRecursion* recursion = newton_euler()) recursion->joint_tree_accelerations.reset();
+}
+
 SymbolDependence::SymbolDependence(const std::vector<Intermediate>& intermediates) {
   for (const Intermediate& i : intermediates) {
     GiNaC::exset mine;
@@ -52,9 +70,9 @@ std::vector<bool> cyclic_coordinates(const Equations& e) {
       for (unsigned j = 0; j < k && free; ++j) free = !e.mass_matrix(i, j).has(x);
     }
     // Hamilton's equations in mass-matrix form: der(q) follows from M der(q) = p − b
-    for (unsigned i = 0; i < e.momentum_bias.size() && free; ++i) {
-      free = !e.momentum_bias[i].has(x);
-      for (unsigned j = 0; j < e.momentum_bias.size() && free; ++j) free = !e.momentum_mass_matrix(i, j).has(x);
+    for (unsigned i = 0; e.momentum() && i < e.momentum()->bias.size() && free; ++i) {
+      free = !e.momentum()->bias[i].has(x);
+      for (unsigned j = 0; j < e.momentum()->bias.size() && free; ++j) free = !e.momentum()->mass_matrix(i, j).has(x);
     }
     for (unsigned i = 0; e.has_multipliers && i < c.size() && free; ++i) {
       free = !c.position[i].has(x) && !c.bias[i].has(x) && !c.acceleration_bias[i].has(x);

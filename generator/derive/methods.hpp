@@ -28,6 +28,10 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mechanic
 /// Hamilton's canonical equations in x = [q; p] (Hiller §3.8); holonomic models.
 Equations derive_hamilton(const Model& model, const Mechanics& mechanics);
 
+/// The Newton–Euler form (NewtonEulerRecursion) where recursive kinematics gave `mechanics` an
+/// inverse dynamics; `e` keeps its form otherwise.
+void take_newton_euler_recursion(const Mechanics& mechanics, Equations& e);
+
 /// The method a model file names, if this version of eomgen has it.
 std::optional<DerivationMethod> find_method(const std::string& name);
 

@@ -21,9 +21,9 @@ bool uses_intermediates(const Equations& e) {
 
 bool kinetic_energy_is_quadratic_form(const Equations& e) {
   // a tree of particles is scleronomic and has no [energy] kinetic, so T = ½ q'ᵀ M q' exactly (Hiller §3.5)
-  if (e.articulated) return true;
+  if (e.articulated()) return true;
   std::size_t n = e.num_velocities();
-  if (e.inverse_dynamics.empty() || e.has_multipliers || e.solves_for_velocities() || e.mass_matrix.rows() != n ||
+  if (!e.newton_euler() || e.has_multipliers || e.solves_for_velocities() || e.mass_matrix.rows() != n ||
       !uses_intermediates(e))
     return false;
   // two states, since one could make a linear term vanish by chance

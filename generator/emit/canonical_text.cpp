@@ -39,13 +39,13 @@ std::string constrained_text(const Equations& e) {
   if (e.method == "hamilton") {
     out += "\n# generalized momenta p = dT/d der(q), the Hamiltonian H(q,p,t) and the canonical equations\n";
     for (const NamedSymbolic& p : e.pseudo_velocity_definitions) out += fmt::format("{} = {}\n", p.name, canonical_text(p.expression));
-    if (e.solves_for_velocities()) {
+    if (const MomentumSolve* momentum = e.momentum()) {
       // M^-1 would swell: the generated code solves for der(q), and H and der(p) are written in der(q)
       out += "# H in mass-matrix form: der(q) solves Mp(q,t)*der(q) = p - bp(q,t); H and der(p) in q and der(q)\n";
-      std::size_t n = e.momentum_bias.size();
+      std::size_t n = momentum->bias.size();
       for (unsigned j = 0; j < n; ++j)
-        for (unsigned k = 0; k < n; ++k) out += fmt::format("Mp[{}][{}] = {}\n", j, k, canonical_text(e.momentum_mass_matrix(j, k)));
-      for (unsigned j = 0; j < n; ++j) out += fmt::format("bp[{}] = {}\n", j, canonical_text(e.momentum_bias[j]));
+        for (unsigned k = 0; k < n; ++k) out += fmt::format("Mp[{}][{}] = {}\n", j, k, canonical_text(momentum->mass_matrix(j, k)));
+      for (unsigned j = 0; j < n; ++j) out += fmt::format("bp[{}] = {}\n", j, canonical_text(momentum->bias[j]));
     }
     out += fmt::format("H = {}\n", canonical_text(e.hamiltonian));
     for (std::size_t j = 0; j < e.coordinate_rates.size() && !e.solves_for_velocities(); ++j)

@@ -101,7 +101,7 @@ std::string coupled_pairs_loop(std::size_t n, const std::string& zero, const std
 // ∂τ/∂(q, q', u), τ = M(q) q'' − f(q, q', u) with q'' held: the coupled terms m̄ S_j · ∂d''/∂x in a
 // loop, then the rest (derive/articulated_inverse_dynamics.hpp) where it is not zero
 std::string articulated_inverse_dynamics_gradient_function(const Equations& e) {
-  const TreeInverseDynamics& tree = e.articulated->inverse_dynamics;
+  const TreeInverseDynamics& tree = e.articulated()->inverse_dynamics;
   std::size_t n = e.symbols.num_coordinates(), W = forcing_variables(e.symbols).size();
   BodyWriter w(e);
   TreeArrays arrays(w, tree, true);
@@ -127,7 +127,7 @@ std::string articulated_inverse_dynamics_gradient_function(const Equations& e) {
 std::string articulated_rhs_function(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates();
   BodyWriter w(e);
-  auto ddq = w.batch(e.articulated->accelerations);
+  auto ddq = w.batch(e.articulated()->accelerations);
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = x[{}];", i, n + i));
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", n + i, ddq[i]));
   return function(fmt::format("/// Explicit first-order form x' = [q'; q''] with x = [q; q'], q'' = M^-1 f by the\n"
@@ -141,7 +141,7 @@ std::string articulated_rhs_function(const Equations& e) {
 std::string articulated_mass_matrix_function(const Equations& e) {
   std::size_t n = e.symbols.num_coordinates();
   BodyWriter w(e);
-  TreeArrays arrays(w, e.articulated->inverse_dynamics, false);
+  TreeArrays arrays(w, e.articulated()->inverse_dynamics, false);
   // the upper triangle, mirrored: M is symmetric, and the coupling with it
   w.line(coupled_pairs_loop(n, fmt::format("M[j * {} + l] = T(0);", n),
                             fmt::format("M[j * {} + l] = mass[k] * {};", n, arrays.dot("axis", "j", "axis", "l")),
@@ -162,10 +162,10 @@ struct SolveOfForces {
 };
 
 SolveOfForces solve_of_forces(const Equations& e) {
-  const TreeInverseDynamics& tree = e.articulated->inverse_dynamics;
+  const TreeInverseDynamics& tree = e.articulated()->inverse_dynamics;
   GiNaC::exset dependent(tree.forces.begin(), tree.forces.end());
   std::vector<const Intermediate*> all;
-  for (const Intermediate& i : e.articulated->intermediates) {
+  for (const Intermediate& i : e.articulated()->intermediates) {
     GiNaC::exset in;
     collect_symbols(i.definition, in);
     if (std::none_of(in.begin(), in.end(), [&](const ex& x) { return dependent.count(x) > 0; })) continue;
@@ -244,7 +244,7 @@ void write_block_steps(BodyWriter& w, const std::vector<const Intermediate*>& st
 // over the blocks of columns; the recursion's own statements, free of common subexpressions already
 void write_solved_columns(BodyWriter& w, const Equations& e, std::size_t W, std::size_t first, std::size_t count,
                           const std::string& target, const std::function<std::size_t(std::size_t)>& row) {
-  const TreeInverseDynamics& tree = e.articulated->inverse_dynamics;
+  const TreeInverseDynamics& tree = e.articulated()->inverse_dynamics;
   SolveOfForces solve = solve_of_forces(e);
   w.batch(solve.factors);
   const std::vector<const Intermediate*>& steps = solve.with_forces;
@@ -282,10 +282,10 @@ std::string articulated_jacobian_input_function(const Equations& e) {
   BodyWriter w(e);
   if (m > 0) {
     GiNaC::lst at_rest;  // ∂τ/∂u = −∂f/∂u does not depend on q''
-    for (const GiNaC::symbol& a : e.acceleration_symbols) at_rest.append(a == 0);
+    for (const GiNaC::symbol& a : e.acceleration_symbols()) at_rest.append(a == 0);
     std::vector<ex> by_input;
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t c = 0; c < m; ++c) by_input.push_back(e.articulated->inverse_dynamics.gradient_rest[i * W + 2 * n + c].subs(at_rest));
+      for (std::size_t c = 0; c < m; ++c) by_input.push_back(e.articulated()->inverse_dynamics.gradient_rest[i * W + 2 * n + c].subs(at_rest));
     w.batch(solve_of_forces(e).factors);  // first, so that F shares their sines and cosines
     w.line(fmt::format("T F[{}];", n * m));
     w.assign(by_input, [](std::size_t k, const std::string& code) { return fmt::format("F[{}] = {};", k, code); });

@@ -110,7 +110,7 @@ void loads_and_rest(const TreeInverseDynamics& tree, const std::vector<std::size
 }
 
 JacobianLayout jacobian_layout(const Equations& e) {
-  const TreeInverseDynamics& tree = e.articulated->inverse_dynamics;
+  const TreeInverseDynamics& tree = e.articulated()->inverse_dynamics;
   JacobianLayout out;
   std::vector<std::size_t> node_of;
   coordinate_tree(tree, out, node_of);
@@ -128,7 +128,7 @@ std::string list(const Container& values) {
 
 // the symbolic values: each node's axis and mass, each load's field and own force, the rest's entries
 void write_tree_values(BodyWriter& w, const Equations& e, const JacobianLayout& layout) {
-  const TreeInverseDynamics& tree = e.articulated->inverse_dynamics;
+  const TreeInverseDynamics& tree = e.articulated()->inverse_dynamics;
   std::size_t n = layout.coordinate.size(), C = layout.components.size(), L = layout.loads.size();
   std::vector<ex> values;
   std::vector<std::string> targets;

@@ -65,8 +65,8 @@ BodyWriter::BodyWriter(const Equations& e)
     inputs_.push_back({s.parameters[i], "p_" + s.parameter_names[i], fmt::format("p[{}]", i)});
   for (std::size_t i = 0; i < s.inputs.size(); ++i)
     inputs_.push_back({s.inputs[i], "u_" + s.input_names[i], fmt::format("u[{}]", i)});
-  for (std::size_t i = 0; i < k; ++i)
-    accelerations_.push_back(i < e.acceleration_symbols.size() ? e.acceleration_symbols[i] : GiNaC::symbol(fmt::format("ddq{}", i)));
+  const std::vector<GiNaC::symbol>& ddq = e.acceleration_symbols();
+  for (std::size_t i = 0; i < k; ++i) accelerations_.push_back(i < ddq.size() ? ddq[i] : GiNaC::symbol(fmt::format("ddq{}", i)));
   // every symbol's C++ name, looked up once per printed symbol
   names_[s.time] = "t";
   angle_inputs_.insert(s.time);
@@ -82,9 +82,11 @@ BodyWriter::BodyWriter(const Equations& e)
 std::shared_ptr<const BodyWriter::IntermediateGraph> BodyWriter::intermediate_graph(const Equations& e) {
   thread_local std::shared_ptr<const IntermediateGraph> last;
   static const std::vector<Intermediate> none;
+  const NewtonEulerRecursion* recursion = e.newton_euler();
   const std::vector<Intermediate>* parts[] = {
-      &e.intermediates, &e.acceleration_intermediates, e.articulated ? &e.articulated->intermediates : &none,
-      e.joint_tree_accelerations ? &e.joint_tree_accelerations->intermediates : &none};
+      &e.intermediates, recursion ? &recursion->acceleration_intermediates : &none,
+      e.articulated() ? &e.articulated()->intermediates : &none,
+      recursion && recursion->joint_tree_accelerations ? &recursion->joint_tree_accelerations->intermediates : &none};
   auto unchanged = [&] {
     std::size_t at = 0;
     for (const std::vector<Intermediate>* part : parts)
@@ -168,7 +170,8 @@ void BodyWriter::define_intermediates(const std::vector<ex>& expressions, CseBat
 CseBatch BodyWriter::write_intermediates_of(const std::vector<ex>& expressions) {
   GiNaC::exset used;
   for (const ex& x : expressions) collect_symbols(x, used);
-  for (const Intermediate& i : equations_.acceleration_intermediates) collect_symbols(i.definition, used);
+  if (const NewtonEulerRecursion* recursion = equations_.newton_euler())
+    for (const Intermediate& i : recursion->acceleration_intermediates) collect_symbols(i.definition, used);
   std::vector<ex> regular;
   for (const Intermediate& i : equations_.intermediates)
     if (used.count(i.symbol)) regular.push_back(i.symbol);
@@ -221,9 +224,10 @@ void BodyWriter::solve_velocities() {
   const Equations& e = equations_;
   if (velocities_solved_ || !e.solves_for_velocities()) return;
   velocities_solved_ = true;
-  std::size_t n = e.momentum_bias.size();
-  std::vector<ex> exprs = upper_triangle(e.momentum_mass_matrix, n);
-  for (std::size_t i = 0; i < n; ++i) exprs.push_back(e.symbols.velocities[i] - e.momentum_bias[i]);
+  const MomentumSolve& momentum = *e.momentum();
+  std::size_t n = momentum.bias.size();
+  std::vector<ex> exprs = upper_triangle(momentum.mass_matrix, n);
+  for (std::size_t i = 0; i < n; ++i) exprs.push_back(e.symbols.velocities[i] - momentum.bias[i]);
   auto code = batch(exprs);
   line(fmt::format("// der(q) from the momenta: M(q,t) der(q) = p - b(q,t)"));
   line(fmt::format("T Mv[{}];", n * n));

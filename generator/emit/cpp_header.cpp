@@ -63,7 +63,7 @@ std::string mass_matrix_function(const Equations& e) {
 std::string forcing_function(const Equations& e) {
   BodyWriter w(e);
   DynamicsForm form = dynamics_form(e);
-  const std::vector<ex>& f = form == DynamicsForm::particle_tree ? e.articulated->inverse_dynamics.forcing : e.forcing;
+  const std::vector<ex>& f = form == DynamicsForm::particle_tree ? e.articulated()->inverse_dynamics.forcing : e.forcing;
   if (form == DynamicsForm::newton_euler) {
     w.line(fmt::format("T M[{}];", f.size() * f.size()));
     w.line("detail::mass_matrix_and_forcing(t, x, u, p, M, f);");
@@ -90,7 +90,7 @@ std::string rhs_function(const Equations& e) {
   if (e.has_multipliers) return constrained_rhs_function(e);
   DynamicsForm form = dynamics_form(e);
   if (form == DynamicsForm::particle_tree) return articulated_rhs_function(e);
-  if (e.joint_tree_accelerations) return joint_tree_rhs_function(e);
+  if (e.joint_tree_accelerations()) return joint_tree_rhs_function(e);
   std::size_t n = e.symbols.num_coordinates(), k = e.num_velocities();
   BodyWriter w(e);
   // a tree's M and f are long code, written once, in detail::factored_accelerations
@@ -408,9 +408,9 @@ std::string quaternion_list(const Equations& e) {
 std::string emit_cpp_header(const Equations& given) {
   // a joint tree's rhs in the form eomgen chooses (the articulated-body algorithm or M = L D Lᵀ)
   std::optional<Equations> factored;
-  if (given.joint_tree_accelerations && !rhs_takes_articulated_bodies(given)) {
+  if (given.joint_tree_accelerations() && !rhs_takes_articulated_bodies(given)) {
     factored = given;
-    factored->joint_tree_accelerations.reset();
+    factored->newton_euler()->joint_tree_accelerations.reset();
   }
   const Equations& e = factored ? *factored : given;
   const Symbols& s = e.symbols;

@@ -30,7 +30,7 @@ std::string equations_and_state(const Equations& e) {
 
 std::string header_summary(const Equations& e, const std::string& functions) {
   std::string out = equations_and_state(e);
-  if (e.joint_tree_accelerations)
+  if (e.joint_tree_accelerations())
     out += "\n// Forward dynamics: rhs solves for the accelerations by the articulated-body algorithm over the joints "
            "(O(n), without M).";
   if (functions.find("hinge_tree_mass_matrix_and_forcing(tree") != std::string::npos)

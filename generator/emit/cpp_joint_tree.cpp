@@ -26,7 +26,7 @@ std::string joint_tree_rhs_function(const Equations& e) {
   bool pseudo = e.uses_pseudo_velocities();
   BodyWriter w(e);
   // q'' (s') and, for pseudo-velocities, q' = W s + w, in one batch
-  std::vector<ex> outputs = e.joint_tree_accelerations->accelerations;
+  std::vector<ex> outputs = e.joint_tree_accelerations()->accelerations;
   if (pseudo) outputs.insert(outputs.end(), e.coordinate_rates.begin(), e.coordinate_rates.end());
   auto values = w.batch(outputs);
   for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("xdot[{}] = {};", i, pseudo ? values[k + i] : fmt::format("x[{}]", n + i)));
@@ -39,8 +39,8 @@ std::string joint_tree_rhs_function(const Equations& e) {
 }
 
 bool rhs_takes_articulated_bodies(const Equations& e) {
-  if (!e.joint_tree_accelerations) return false;
-  if (e.joint_tree_accelerations->asked) return true;
+  if (!e.joint_tree_accelerations()) return false;
+  if (e.joint_tree_accelerations()->asked) return true;
   long articulated = count_operations(joint_tree_rhs_function(e), "rhs", 0);
   std::string ldlt = mass_matrix_factorization(e, e.num_velocities());
   long factored = mass_matrix_and_forcing_code(e).operations +
@@ -77,12 +77,13 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   std::size_t n = e.num_velocities(), W = s.num_coordinates() + n;
   BodyWriter w(e);
   std::vector<ex> directions = state_directions(s);
-  const std::vector<ex>& swept = closed_form ? e.bodies_gradient->applied_inverse_dynamics : e.inverse_dynamics;
+  const NewtonEulerRecursion& recursion = *e.newton_euler();
+  const std::vector<ex>& swept = closed_form ? recursion.bodies_gradient->applied_inverse_dynamics : recursion.inverse_dynamics;
   TangentSweep sweep(w, directions);
   sweep.follow(w.write_intermediates_of(swept));
   std::vector<ex> entries = swept_entries(w, sweep, swept, n);
   std::size_t nq = s.num_coordinates();
-  const InverseDynamicsGradient* bodies = closed_form ? &e.bodies_gradient->closed_form : nullptr;
+  const InverseDynamicsGradient* bodies = closed_form ? &recursion.bodies_gradient->closed_form : nullptr;
   for (std::size_t i = 0; i < n && bodies; ++i) {
     for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += bodies->coordinates(unsigned(i), unsigned(j));
     for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += bodies->velocities(unsigned(i), unsigned(j));
@@ -111,11 +112,12 @@ void assign_applied_mass_matrix_and_forcing(BodyWriter& w, const std::vector<ex>
 // whether τ_a's M_a is ∂τ_a/∂q'': q'' must not enter τ_a through a quantity of the recursion (τ_a's
 // symbols gathered in one walk, not one walk per quantity)
 bool applied_part_apart(const Equations& e) {
+  const NewtonEulerRecursion& recursion = *e.newton_euler();
   GiNaC::exset in_applied;
-  for (const ex& tau : e.bodies_gradient->applied_inverse_dynamics)
+  for (const ex& tau : recursion.bodies_gradient->applied_inverse_dynamics)
     for (auto it = tau.preorder_begin(); it != tau.preorder_end(); ++it)
       if (GiNaC::is_a<GiNaC::symbol>(*it)) in_applied.insert(*it);
-  return std::none_of(e.acceleration_intermediates.begin(), e.acceleration_intermediates.end(),
+  return std::none_of(recursion.acceleration_intermediates.begin(), recursion.acceleration_intermediates.end(),
                       [&](const Intermediate& i) { return in_applied.count(i.symbol) > 0; });
 }
 
@@ -125,7 +127,7 @@ bool applied_part_apart(const Equations& e) {
 std::string tree_acceleration_gradient_body(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = e.num_velocities(), nq = s.num_coordinates();
-  const std::vector<ex>& applied = e.bodies_gradient->applied_inverse_dynamics;
+  const std::vector<ex>& applied = e.newton_euler()->bodies_gradient->applied_inverse_dynamics;
   BodyWriter w(e);
   TangentSweep sweep(w, state_directions(s));
   sweep.follow(w.write_intermediates_of(applied));
@@ -185,9 +187,10 @@ std::string newton_euler_gradient_function(const Equations& e) {
   // second of generating
   constexpr std::size_t compared_up_to = 12;
   bool loops = e.gradient_loops();
-  bool closed_form = e.bodies_gradient && (n > compared_up_to || loops);
+  bool bodies_apart = e.newton_euler()->bodies_gradient.has_value();
+  bool closed_form = bodies_apart && (n > compared_up_to || loops);
   std::string body = inverse_dynamics_gradient_body(e, closed_form);
-  if (e.bodies_gradient && !closed_form) {
+  if (bodies_apart && !closed_form) {
     std::string closed = inverse_dynamics_gradient_body(e, true);
     auto operations = [&](const std::string& b) { return count_operations(function("", signature, b), "inverse_dynamics_gradient", n); };
     closed_form = operations(closed) < operations(body);
@@ -257,7 +260,7 @@ std::string looped_mass_matrix_and_forcing(const Equations& e) {
   std::size_t n = e.num_velocities();
   BodyWriter w(e);
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) M[i] = T(0);", n * n));
-  assign_applied_mass_matrix_and_forcing(w, e.bodies_gradient->applied_inverse_dynamics);
+  assign_applied_mass_matrix_and_forcing(w, e.newton_euler()->bodies_gradient->applied_inverse_dynamics);
   call_tree_mass_matrix_and_forcing(w, e);
   return in_detail(function(fmt::format("/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations: the\n"
                                         "/// bodies' part by detail::hinge_tree_mass_matrix_and_forcing's loops over the links.\n"
@@ -281,7 +284,7 @@ MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e) {
   // where rhs takes the articulated-body algorithm and jacobian_state the tree's pass, M and f serve
   // mass_matrix, forcing, jacobian_input and linearization alone: the loops then, for the header's
   // size (TIAGo's straight-line M and f were 680 KB of its 2 MB)
-  bool rhs_and_jacobian_without = e.joint_tree_accelerations && jacobian_takes_tree_pass(e, code.straight_line_operations);
+  bool rhs_and_jacobian_without = e.joint_tree_accelerations() && jacobian_takes_tree_pass(e, code.straight_line_operations);
   if (looped < code.straight_line_operations || rhs_and_jacobian_without) {
     code.function = looped_mass_matrix_and_forcing(e);
     code.by_loops = true;

@@ -17,10 +17,10 @@ namespace eomgen {
 /// q'' and the factors of M into local arrays ddq, L, D by detail::factored_accelerations.
 void call_factored_accelerations(BodyWriter& w, std::size_t n);
 
-/// rhs of a joint tree solved by the articulated-body algorithm (Equations::joint_tree_accelerations).
+/// rhs of a joint tree solved by the articulated-body algorithm (NewtonEulerRecursion::joint_tree_accelerations).
 std::string joint_tree_rhs_function(const Equations& e);
 
-/// Whether the header's rhs takes Equations::joint_tree_accelerations: where asked for, or where
+/// Whether the header's rhs takes NewtonEulerRecursion::joint_tree_accelerations: where asked for, or where
 /// its code has fewer operations than forming M and f, factoring M and solving (emit/operation_count.hpp):
 /// oblique joints make turning an articulated inertia dear, so the tree's depth alone does not decide.
 bool rhs_takes_articulated_bodies(const Equations& e);

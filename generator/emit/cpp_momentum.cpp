@@ -19,10 +19,11 @@ std::string momentum_jacobian_state_function(const Equations& e) {
   std::vector<ex> coordinates(s.coordinates.begin(), s.coordinates.end());
   std::vector<ex> velocities(e.coordinate_velocities.begin(), e.coordinate_velocities.end());
   std::vector<ex> entries;
+  const MomentumSolve& momentum = *e.momentum();
   for (unsigned i = 0; i < n; ++i) {
-    std::vector<ex> row = gradient(e.momentum_bias[i], coordinates);
+    std::vector<ex> row = gradient(momentum.bias[i], coordinates);
     for (unsigned c = 0; c < n; ++c) {
-      std::vector<ex> dM = gradient(e.momentum_mass_matrix(i, c), coordinates);
+      std::vector<ex> dM = gradient(momentum.mass_matrix(i, c), coordinates);
       for (unsigned j = 0; j < n; ++j) row[j] += dM[j] * velocities[c];
     }
     entries.insert(entries.end(), row.begin(), row.end());

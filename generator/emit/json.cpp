@@ -42,16 +42,16 @@ std::string hamilton_json(const Equations& e) {
               expression(e.forcing[j]);
   }
   std::string form = ",\n  \"hamiltonian_form\": \"closed\"";
-  if (e.solves_for_velocities()) {
+  if (const MomentumSolve* momentum = e.momentum()) {
     // der(q) solves momentum_mass_matrix*der(q) = p - momentum_bias; H and der(p) are in q and der(q)
     std::string rows;
-    for (unsigned j = 0; j < e.momentum_bias.size(); ++j) {
+    for (unsigned j = 0; j < momentum->bias.size(); ++j) {
       std::vector<GiNaC::ex> row;
-      for (unsigned k = 0; k < e.momentum_bias.size(); ++k) row.push_back(e.momentum_mass_matrix(j, k));
+      for (unsigned k = 0; k < momentum->bias.size(); ++k) row.push_back(momentum->mass_matrix(j, k));
       rows += (j ? ", " : "") + expression_array(row);
     }
     form = ",\n  \"hamiltonian_form\": \"mass_matrix\",\n  \"momentum_mass_matrix\": [" + rows +
-           "],\n  \"momentum_bias\": " + expression_array(e.momentum_bias);
+           "],\n  \"momentum_bias\": " + expression_array(momentum->bias);
   }
   return form + ",\n  \"momenta\": {" + momenta + "}" + ",\n  \"hamiltonian\": " + expression(e.hamiltonian) +
          ",\n  \"canonical_equations\": {" + rates + ", " + forces + "}" + ",\n  \"pseudo_velocities\": {" + momenta + "}" +

@@ -79,9 +79,11 @@ TimeDependence time_dependence(const Equations& e, const std::vector<double>& pa
   for (unsigned i = 0; i < e.mass_matrix.rows(); ++i)
     for (unsigned j = 0; j < e.mass_matrix.cols(); ++j) all.push_back(e.mass_matrix(i, j));
   all.insert(all.end(), e.coordinate_rates.begin(), e.coordinate_rates.end());
-  all.insert(all.end(), e.momentum_bias.begin(), e.momentum_bias.end());
-  for (unsigned i = 0; i < e.momentum_mass_matrix.rows(); ++i)
-    for (unsigned j = 0; j < e.momentum_mass_matrix.cols(); ++j) all.push_back(e.momentum_mass_matrix(i, j));
+  if (const MomentumSolve* momentum = e.momentum()) {
+    all.insert(all.end(), momentum->bias.begin(), momentum->bias.end());
+    for (unsigned i = 0; i < momentum->mass_matrix.rows(); ++i)
+      for (unsigned j = 0; j < momentum->mass_matrix.cols(); ++j) all.push_back(momentum->mass_matrix(i, j));
+  }
   TimeDependence out;
   for (const ex& x : all) {
     out.depends_on_time = out.depends_on_time || x.has(e.symbols.time);

@@ -212,6 +212,17 @@ TEST(StabilityCommand, RollingDiskFromTheCommandLine) {
   EXPECT_NE(slow.out.find("verdict: unstable"), std::string::npos) << slow.out;
 }
 
+// models/spherical_pendulum.toml on time scale s: g by s², the initial turning rate by s
+std::string spherical_pendulum_on_time_scale(double s) {
+  std::string text = read_file(model_path("spherical_pendulum"));
+  for (auto [line, scaled] : {std::pair<std::string, std::string>{"g = 9.81", fmt::format("g = {:.17g}", 9.81 * s * s)},
+                              {"rate = 2.0", fmt::format("rate = {:.17g}", 2 * s)}}) {
+    EXPECT_NE(text.find(line), std::string::npos) << line;
+    if (text.find(line) != std::string::npos) text.replace(text.find(line), line.size(), scaled);
+  }
+  return write_model("spherical_pendulum", text);
+}
+
 // A spherical pendulum released at θ = 0.8 turning at φ' = 2 s (time scale s): no conical motion
 // turns that fast or that slowly (φ'² = g/(l cos θ)). Newton from there slid to θ = 0, where the
 // azimuth is undefined and any φ' balances ("the mass matrix is singular", nothing analysed), or
@@ -221,14 +232,7 @@ TEST(StabilityCommand, RollingDiskFromTheCommandLine) {
 // m g s = Ω (C ω3 − A' Ω cos θ), A' = A + m s² about the pivot, ω3 = φ' + Ω cos θ.
 TEST(StabilityCommand, ASearchThatEndsAtASingularityOfTheCoordinatesTakesTheSteadyMotionThere) {
   for (double s : {1e-12, 1e-6, 1e-3, 1.0, 1e3, 1e6, 1e12}) {
-    // the shipped model on time scale s: g by s², the initial turning rate by s
-    std::string text = read_file(model_path("spherical_pendulum"));
-    for (auto [line, scaled] : {std::pair<std::string, std::string>{"g = 9.81", fmt::format("g = {:.17g}", 9.81 * s * s)},
-                                {"rate = 2.0", fmt::format("rate = {:.17g}", 2 * s)}}) {
-      ASSERT_NE(text.find(line), std::string::npos) << line;
-      text.replace(text.find(line), line.size(), scaled);
-    }
-    std::string model = write_model("spherical_pendulum", text);
+    std::string model = spherical_pendulum_on_time_scale(s);
     Output r = eomgen("stability '" + model + "'");
     ASSERT_EQ(r.status, 0) << "s = " << s << ": " << r.err;
     EXPECT_NE(r.out.find("nonlinear verdict: stable"), std::string::npos) << r.out;
@@ -257,13 +261,7 @@ TEST(StabilityCommand, ASearchThatEndsAtASingularityOfTheCoordinatesTakesTheStea
 // pendulum held at φ1 = 0.5 has none, and says that the search with φ2 free found none either.
 TEST(StabilityCommand, AnAtThatNamesSomeStatesSolvesForTheRest) {
   for (double s : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
-    std::string text = read_file(model_path("spherical_pendulum"));
-    for (auto [line, scaled] : {std::pair<std::string, std::string>{"g = 9.81", fmt::format("g = {:.17g}", 9.81 * s * s)},
-                                {"rate = 2.0", fmt::format("rate = {:.17g}", 2 * s)}}) {
-      ASSERT_NE(text.find(line), std::string::npos) << line;
-      text.replace(text.find(line), line.size(), scaled);
-    }
-    std::string model = write_model("spherical_pendulum", text);
+    std::string model = spherical_pendulum_on_time_scale(s);
     for (double theta : {0.3, 0.8, 1.2}) {
       std::string given = fmt::format(" --at theta={}", theta);
       Output r = eomgen("stability '" + model + "'" + given);

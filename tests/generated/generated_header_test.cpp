@@ -83,11 +83,12 @@ GiNaC::matrix exact_accelerations(const Equations& e, const GiNaC::exmap& point,
 
 // Hamilton's equations in mass-matrix form: der(q) solves M der(q) = p − b at the point
 void add_velocities_from_momenta(const Equations& e, GiNaC::exmap& point) {
-  std::size_t n = e.momentum_bias.size();
+  const MomentumSolve& momentum = *e.momentum();
+  std::size_t n = momentum.bias.size();
   GiNaC::matrix M(n, n), right(n, 1), unknown(n, 1);
   for (unsigned i = 0; i < n; ++i) {
-    right(i, 0) = (e.symbols.velocities[i] - e.momentum_bias[i]).subs(point).evalf();
-    for (unsigned j = 0; j < n; ++j) M(i, j) = e.momentum_mass_matrix(i, j).subs(point).evalf();
+    right(i, 0) = (e.symbols.velocities[i] - momentum.bias[i]).subs(point).evalf();
+    for (unsigned j = 0; j < n; ++j) M(i, j) = momentum.mass_matrix(i, j).subs(point).evalf();
     unknown(i, 0) = GiNaC::symbol("v" + std::to_string(i));
   }
   GiNaC::matrix v = M.solve(unknown, right);

@@ -35,7 +35,8 @@ void expect_expanded_equations(const std::string& tree_text, unsigned n) {
   Model model = built(tree_text);
   ASSERT_FALSE(why_not_a_joint_tree(model)) << *why_not_a_joint_tree(model);
   Equations recursive = derive_text(tree_text), expanded = derive_text(tree_text, "model.toml", model_written_out());
-  ASSERT_EQ(recursive.inverse_dynamics.size(), n);
+  ASSERT_TRUE(recursive.newton_euler());
+  ASSERT_EQ(recursive.newton_euler()->inverse_dynamics.size(), n);
   std::mt19937 random(5);
   for (int point = 0; point < 10; ++point) {
     std::map<std::string, double> values = random_point(recursive, random);
@@ -52,7 +53,7 @@ void expect_expanded_equations(const std::string& tree_text, unsigned n) {
         near(M, value_at(expanded.mass_matrix(j, k), full), fmt::format("M[{}][{}]", j, k));
         Mddq += M * values.at(fmt::format("ddq{}", k));
       }
-      near(value_at(recursive.inverse_dynamics[j], at), Mddq - f, fmt::format("tau[{}] = (M q'' - f)[{}]", j, j));
+      near(value_at(recursive.newton_euler()->inverse_dynamics[j], at), Mddq - f, fmt::format("tau[{}] = (M q'' - f)[{}]", j, j));
     }
     near(value_at(recursive.kinetic_energy, at), value_at(expanded.kinetic_energy, full), "T");
   }
@@ -60,8 +61,8 @@ void expect_expanded_equations(const std::string& tree_text, unsigned n) {
 
 void expect_expanded_derivatives(const std::string& tree_text, unsigned n) {
   Equations recursive = derive_text(tree_text), expanded = derive_text(tree_text, "model.toml", model_written_out());
-  ASSERT_TRUE(recursive.bodies_gradient);
-  const BodiesGradient& bodies = *recursive.bodies_gradient;
+  ASSERT_TRUE(recursive.newton_euler() && recursive.newton_euler()->bodies_gradient);
+  const BodiesGradient& bodies = *recursive.newton_euler()->bodies_gradient;
   ASSERT_EQ(bodies.applied_inverse_dynamics.size(), n);
   std::vector<ex> tau(n);
   std::vector<GiNaC::symbol> ddq(n);

@@ -119,11 +119,12 @@ GiNaC::exmap point_by_name(const Equations& e, const std::map<std::string, doubl
   for (std::size_t i = 0; i < s.coordinates.size(); ++i) at[s.coordinates[i]] = values.at(s.coordinate_names[i]);
   // the velocities of the state by their names: der(q), or the pseudo-velocities' own
   for (const GiNaC::realsymbol& v : s.velocities) at[v] = values.at(v.get_name());
-  for (std::size_t i = 0; i < e.acceleration_symbols.size(); ++i)
-    if (auto a = values.find("ddq" + std::to_string(i)); a != values.end()) at[e.acceleration_symbols[i]] = a->second;
+  const std::vector<GiNaC::symbol>& ddq = e.acceleration_symbols();
+  for (std::size_t i = 0; i < ddq.size(); ++i)
+    if (auto a = values.find("ddq" + std::to_string(i)); a != values.end()) at[ddq[i]] = a->second;
   for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
-  if (e.acceleration_symbols.empty() || !at.count(e.acceleration_symbols[0])) return at;
-  for (const Intermediate& i : e.acceleration_intermediates) at[i.symbol] = value_at(i.definition, at);
+  if (ddq.empty() || !at.count(ddq[0]) || !e.newton_euler()) return at;
+  for (const Intermediate& i : e.newton_euler()->acceleration_intermediates) at[i.symbol] = value_at(i.definition, at);
   return at;
 }
 

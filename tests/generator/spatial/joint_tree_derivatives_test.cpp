@@ -188,12 +188,12 @@ inertia = [["0.008", "0.0004", "-0.0002"], ["0.0004", "0.011", "0.0003"], ["-0.0
 // with the quaternions off unit length.
 void expect_closed_form_agrees(const char* text, std::size_t coordinates, std::size_t velocities) {
   Equations e = derive_text(text);
-  ASSERT_TRUE(e.bodies_gradient);
+  ASSERT_TRUE(e.newton_euler() && e.newton_euler()->bodies_gradient);
   const Symbols& sym = e.symbols;
   std::size_t nq = sym.num_coordinates(), n = e.num_velocities();
   ASSERT_EQ(nq, coordinates);
   ASSERT_EQ(n, velocities);
-  ASSERT_EQ(e.bodies_gradient->closed_form.coordinates.cols(), nq);
+  ASSERT_EQ(e.newton_euler()->bodies_gradient->closed_form.coordinates.cols(), nq);
   std::mt19937 random(17);
   std::uniform_real_distribution<double> value(-1, 1), scale(0.6, 1.8);
   for (int point = 0; point < 2; ++point) {
@@ -208,7 +208,7 @@ void expect_closed_form_agrees(const char* text, std::size_t coordinates, std::s
     auto bodies_tau = [&](const std::map<std::string, double>& values_at) {
       GiNaC::exmap p = point_by_name(e, values_at);
       std::vector<double> tau(n);
-      for (std::size_t i = 0; i < n; ++i) tau[i] = value_at(e.inverse_dynamics[i], p) - value_at(e.bodies_gradient->applied_inverse_dynamics[i], p);
+      for (std::size_t i = 0; i < n; ++i) tau[i] = value_at(e.newton_euler()->inverse_dynamics[i], p) - value_at(e.newton_euler()->bodies_gradient->applied_inverse_dynamics[i], p);
       return tau;
     };
     GiNaC::exmap at = point_by_name(e, values);
@@ -224,9 +224,9 @@ void expect_closed_form_agrees(const char* text, std::size_t coordinates, std::s
       }
     };
     for (unsigned c = 0; c < nq; ++c)
-      check(sym.coordinate_names[c], [&](unsigned i) { return e.bodies_gradient->closed_form.coordinates(i, c); });
+      check(sym.coordinate_names[c], [&](unsigned i) { return e.newton_euler()->bodies_gradient->closed_form.coordinates(i, c); });
     for (unsigned c = 0; c < n; ++c)
-      check(sym.velocities[c].get_name(), [&](unsigned i) { return e.bodies_gradient->closed_form.velocities(i, c); });
+      check(sym.velocities[c].get_name(), [&](unsigned i) { return e.newton_euler()->bodies_gradient->closed_form.velocities(i, c); });
   }
 }
 
@@ -303,8 +303,8 @@ void expect_root_column(const std::string& root_joint, const std::string& gravit
   const std::string down = R"(acceleration = ["0", "0", "-9.81"])";
   text.replace(text.find(down), down.size(), "acceleration = " + gravity);
   Equations e = derive_text(text);
-  ASSERT_TRUE(e.bodies_gradient) << text;
-  const GiNaC::matrix& dq = e.bodies_gradient->closed_form.coordinates;
+  ASSERT_TRUE(e.newton_euler() && e.newton_euler()->bodies_gradient) << text;
+  const GiNaC::matrix& dq = e.newton_euler()->bodies_gradient->closed_form.coordinates;
   bool zero = true;
   for (unsigned i = 0; i < dq.rows(); ++i) zero = zero && dq(i, 0).is_zero();
   EXPECT_EQ(zero, cyclic) << text;

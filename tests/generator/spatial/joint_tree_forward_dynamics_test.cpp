@@ -55,11 +55,11 @@ std::string rod_chain(int hinges) {
 
 // the algorithm's q'' against M⁻¹ f at random states and inputs
 void expect_accelerations_solve_the_equations(const Equations& e, int points, unsigned seed) {
-  ASSERT_TRUE(e.joint_tree_accelerations) << e.model_name;
+  ASSERT_TRUE(e.joint_tree_accelerations()) << e.model_name;
   std::size_t n = e.num_velocities();
   for (GiNaC::exmap at : random_points(e.symbols, points, seed)) {
     for (const Intermediate& i : e.intermediates) at[i.symbol] = value_at(i.definition, at);
-    for (const Intermediate& i : e.joint_tree_accelerations->intermediates) at[i.symbol] = value_at(i.definition, at);
+    for (const Intermediate& i : e.joint_tree_accelerations()->intermediates) at[i.symbol] = value_at(i.definition, at);
     std::vector<std::vector<double>> M(n, std::vector<double>(n));
     std::vector<double> f(n);
     for (unsigned j = 0; j < n; ++j) {
@@ -70,7 +70,7 @@ void expect_accelerations_solve_the_equations(const Equations& e, int points, un
     double scale = 0;
     for (double x : expected) scale = std::max(scale, std::abs(x));
     for (std::size_t j = 0; j < n; ++j)
-      EXPECT_NEAR(value_at(e.joint_tree_accelerations->accelerations[j], at), expected[j], 1e-11 * std::max(1.0, scale))
+      EXPECT_NEAR(value_at(e.joint_tree_accelerations()->accelerations[j], at), expected[j], 1e-11 * std::max(1.0, scale))
           << e.model_name << ": q''[" << j << "] of " << n;
   }
 }
@@ -132,16 +132,16 @@ bool header_takes_articulated_bodies(const Equations& e) {
 // the mean depth admits a tree (spatial/joint_tree_forward_dynamics.cpp), the operations decide
 // (emit/cpp_joint_tree.hpp): 4 hinges in a row have 2.5, 9 have 5
 TEST(JointTreeAccelerations, EomgenTakesTheAlgorithmWhereItsCodeIsShorter) {
-  EXPECT_FALSE(derive_text(rod_chain(4)).joint_tree_accelerations);
+  EXPECT_FALSE(derive_text(rod_chain(4)).joint_tree_accelerations());
   EXPECT_TRUE(header_takes_articulated_bodies(derive_text(rod_chain(9))));
   EXPECT_TRUE(header_takes_articulated_bodies(derive_text(crosscheck_model("hinge_chain"))));
   EXPECT_TRUE(header_takes_articulated_bodies(derive_text(crosscheck_model("floating_snake")))) << "a free joint above";
-  EXPECT_FALSE(derive_text(crosscheck_model("seven_joint_arm")).joint_tree_accelerations) << "mean depth 4";
-  EXPECT_FALSE(derive_text(crosscheck_model("branched_tree")).joint_tree_accelerations) << "mean depth 4.3";
-  EXPECT_FALSE(derive_text(rod_chain(12), "model.toml", solved_by(ForwardDynamics::mass_matrix)).joint_tree_accelerations);
+  EXPECT_FALSE(derive_text(crosscheck_model("seven_joint_arm")).joint_tree_accelerations()) << "mean depth 4";
+  EXPECT_FALSE(derive_text(crosscheck_model("branched_tree")).joint_tree_accelerations()) << "mean depth 4.3";
+  EXPECT_FALSE(derive_text(rod_chain(12), "model.toml", solved_by(ForwardDynamics::mass_matrix)).joint_tree_accelerations());
   // oblique axes: deep enough to weigh, but M = L D Lᵀ is the shorter code; asked for, the algorithm
   Equations oblique = derive_text(oblique_chain(12));
-  ASSERT_TRUE(oblique.joint_tree_accelerations);
+  ASSERT_TRUE(oblique.joint_tree_accelerations());
   EXPECT_FALSE(header_takes_articulated_bodies(oblique));
   Equations asked = articulated(oblique_chain(12));
   EXPECT_TRUE(header_takes_articulated_bodies(asked));
