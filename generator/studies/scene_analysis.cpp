@@ -42,6 +42,7 @@ class SceneAnalyser {
     if (linear) {
       ReducedCandidate modal = modal_candidate(loaded, *linear, equilibrium_, a_.scene, {reference_states_, a_.reference_outputs, a_.scene.accuracy});
       add_candidate("reduced:modal", modal.description, modal.equations);
+      a_.reference_state_sizes.insert(modal.state_sizes.begin(), modal.state_sizes.end());
     }
     add_pruned(loaded);
     ReducedCandidate reduced = reduced_candidate(path_, a_.scene, coordinate_ranges(loaded));
@@ -95,6 +96,12 @@ class SceneAnalyser {
     auto y = scene_outputs(*loaded.compiled->abi(), r.trajectory, a_.scene.outputs, missing);
     a_.reference_outputs = *y;
     reference_states_ = r.trajectory.states;
+    const eomgen_model_abi& m = *loaded.compiled->abi();
+    for (std::size_t i = 0; i < m.num_states; ++i) {
+      double largest = 0;
+      for (const std::vector<double>& x : reference_states_) largest = std::max(largest, std::abs(x[i]));
+      a_.reference_state_sizes[m.state_names[i]] = largest;
+    }
     return true;
   }
 

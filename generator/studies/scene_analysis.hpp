@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,8 @@ struct SceneAnalysis {
   double reference_error_estimate = NAN;
   std::vector<double> times;
   std::vector<std::vector<double>> reference_outputs;  // per output, per time
+  /// each state's largest |x| along the reference, by name: the candidates' absolute tolerances
+  std::map<std::string, double> reference_state_sizes;
   std::vector<SceneCandidate> candidates;
   std::vector<SceneRun> runs;
   std::optional<std::size_t> chosen, closest;  // indices into runs

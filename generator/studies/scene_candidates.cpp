@@ -99,9 +99,21 @@ ReducedCandidate modal_candidate(const LoadedProblem& full, const Equations& lin
     kept.push_back(modes.modes[k].rigid_body ? fmt::format("{} (rigid-body motion)", k + 1)
                                              : fmt::format("{} (ω = {:.4g} rad/s)", k + 1, modes.modes[k].omega));
   }
-  return {modal_model(linear, mt),
-          fmt::format("the linear model in {} of its {} modes: {}; the shares of the modes in the outputs: {}", kept.size(), n,
-                      joined(kept), shares)};
+  Equations modal = modal_model(linear, mt);
+  // η_k = φ_kᵀ M (q − q0) and η'_k = φ_kᵀ M q' along the reference, for each kept mode
+  std::map<std::string, double> sizes;
+  for (std::size_t j = 0; j < excited.kept.size(); ++j) {
+    Eigen::VectorXd row = report.M * modes.modes[excited.kept[j]].shape;
+    double& eta = sizes[modal.symbols.coordinate_names[j]];
+    double& rate = sizes[modal.symbols.velocities[j].get_name()];
+    for (const std::vector<double>& x : motion.states) {
+      Eigen::Map<const Eigen::VectorXd> qt(x.data(), long(n)), vt(x.data() + n, long(n));
+      eta = std::max(eta, std::abs(row.dot(qt - at))), rate = std::max(rate, std::abs(row.dot(vt)));
+    }
+  }
+  return {modal, fmt::format("the linear model in {} of its {} modes: {}; the shares of the modes in the outputs: {}", kept.size(), n,
+                             joined(kept), shares),
+          sizes};
 }
 
 }  // namespace eomgen::studies

@@ -4,6 +4,7 @@
 /// modes the scene excites.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ namespace eomgen::studies {
 struct ReducedCandidate {
   std::optional<Equations> equations;  // empty: nothing to reduce, `description` says why
   std::string description;
+  /// the largest |x| along the reference of each state the full model lacks (a modal model's η and
+  /// der(η)), by name, for the runs' absolute tolerances
+  std::map<std::string, double> state_sizes = {};
 };
 
 /// `model_path`, `scene`: as for derive_model_file_for. The coordinates that do not feed back

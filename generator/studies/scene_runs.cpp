@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "analyse/state_tolerances.hpp"
+
 namespace eomgen::studies {
 
 // each scene output over the run, or the name the model lacks
@@ -49,6 +51,23 @@ void measure(const SceneAnalysis& a, const std::vector<double>& times, const std
   }
 }
 
+// Each state's absolute tolerance at `rtol`: rtol/100 of its largest |x| along the reference (by
+// name; for a state the full model does not have, a modal coordinate, its size in the candidate's
+// own start), rtol/100 where nothing gives it a size. The same swing at any amplitude then gets
+// the same choice. One rtol/100 in every unit had made a swing of 5e-10 rad need rtol 1e-9 where
+// one of 0.05 rad took 1e-5 with the same model, and twice the work; a cap of one unit (as
+// `simulate` keeps for its default) changed the choice between amplitudes of 1e-6 and 1.
+std::vector<double> scene_state_tolerances(const SceneAnalysis& a, const runtime::Problem& problem, const eomgen_model_abi& m,
+                                           const std::vector<double>& x0, double rtol) {
+  std::vector<double> own = runtime::state_sizes(problem, x0), atol;
+  for (std::size_t i = 0; i < m.num_states; ++i) {
+    auto in_reference = a.reference_state_sizes.find(m.state_names[i]);
+    double size = in_reference != a.reference_state_sizes.end() ? in_reference->second : own[i];
+    atol.push_back(rtol / 100 * (size > 0 ? size : 1.0));
+  }
+  return atol;
+}
+
 std::vector<std::pair<std::string, double>> run_settings(const std::string& integrator, double dt_out) {
   std::vector<std::pair<std::string, double>> out;
   if (runtime::is_fixed_step_integrator(integrator)) {
@@ -77,7 +96,7 @@ void SceneRuns::run_candidate(std::size_t index) {
       runtime::SimulationSettings s;
       s.t_end = a_.scene.t_end, s.dt_out = a_.scene.dt_out, s.integrator = integrator, s.stop = stop_;
       if (kind == "step") s.step = value;
-      else s.rtol = value, s.atol = value / 100;
+      else s.rtol = value, s.atol = value / 100, s.state_atol = scene_state_tolerances(a_, loaded.problem, m, loaded.initial_state, value);
       // a run past the work of the cheapest accepted one cannot be chosen; it runs on to ten
       // times that work so the report can still show each candidate's best, then stops
       if (cheapest_ && c.rhs_operations > 0)

@@ -8,7 +8,9 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <optional>
 
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -82,6 +84,35 @@ TEST(SceneCommand, SmallSwingPicksTheLinearModelAndMeetsTheAccuracy) {
     EXPECT_GT(read_file(dir + file).size(), 100u) << file;
   Choice again = run_scene(model_path("pendulum"), "small_swing", dir + "2");
   EXPECT_EQ(again.model + again.integrator + again.setting, c.model + c.integrator + c.setting) << "the choice is stable";
+}
+
+// A lightly damped mass on a spring (linear: every amplitude is the same motion, scaled), its swing
+// from x0 = A for A from 1e-12 to 1e12 m: the same model, integrator and setting are chosen, and
+// within the scene's accuracy against x0 e^(-ζωt) (cos ω_d t + ζω/ω_d sin ω_d t). With
+// absolute tolerances of rtol/100 m in every unit, the small swings had needed tighter settings
+// (a 5e-10 rad swing of the pendulum rtol 1e-9 where 0.05 rad took 1e-5), and at 1e-12 m none
+// met the accuracy.
+TEST(SceneCommand, ALinearSwingsChoiceDoesNotDependOnItsAmplitude) {
+  const double m = 1, k = 4, d = 0.2, omega = 2, zeta = d / (2 * std::sqrt(k * m)), damped = omega * std::sqrt(1 - zeta * zeta);
+  std::optional<Choice> first;
+  for (double A : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    std::string text = particle_on_a_line_model("swing", "m = 1.0\nk = 4.0\nd = 0.2\n",
+                                                "potential = \"k*x^2/2\"\ndissipation = \"d*der(x)^2/2\"\n", A) +
+                       fmt::format("[scenes.swing]\nt_end = 10.0\ndt_out = 0.05\ninitial = {{ x = {:.17g} }}\noutputs = [\"x\"]\n"
+                                   "accuracy = 1e-3\n", A);
+    std::string dir = temporary_directory() + "/swing";
+    Choice c = run_scene(write_model("swing", text), "swing", dir);
+    ASSERT_FALSE(c.model.empty()) << "A = " << A;
+    if (!first) first = c;
+    EXPECT_EQ(c.model + " " + c.integrator + " " + c.setting, first->model + " " + first->integrator + " " + first->setting)
+        << "A = " << A;
+    double worst = 0;
+    for (const auto& row : read_numeric_csv(dir + "/chosen.csv")) {
+      double t = row[0], x = A * std::exp(-zeta * omega * t) * (std::cos(damped * t) + zeta * omega / damped * std::sin(damped * t));
+      worst = std::max(worst, std::abs(row[1] - x));
+    }
+    EXPECT_LE(worst, 1e-3 * 2 * A) << "A = " << A << ": the scene's accuracy of its range (under 2 A)";
+  }
 }
 
 TEST(SceneCommand, LargeSwingDoesNotPickTheLinearModel) {
