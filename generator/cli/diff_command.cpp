@@ -18,8 +18,8 @@ Command add_diff_command(CLI::App& app) {
                                        "in q up to 4 velocities; a larger tree is compared in its quantities (poses, "
                                        "inertias), which the report names where they differ")->required();
   cmd->add_option("--rename", o->renames, "A symbol renamed from OLD to NEW, one per flag: --rename k=stiffness");
-  cmd->add_option("--tolerance", o->options.tolerance, "Numeric level: |old - new| <= T max(1, |old|, |new|) at every "
-                  "random point, in 50-digit arithmetic (default 1e-30)");
+  cmd->add_option("--tolerance", o->options.tolerance, "Numeric level: |old - new| <= T max(|old|, |new|, the size of their "
+                  "terms) at every random point, in 50-digit arithmetic (default 1e-30)");
   cmd->add_option("--samples", o->options.samples, "Random points of the numeric level (default 16; the seed is fixed)");
   cmd->add_option("--self", o->self, "Another eomgen executable: compare what it derives from each model with what this "
                   "one derives, one line per model");

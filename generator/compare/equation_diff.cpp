@@ -278,6 +278,31 @@ std::optional<GiNaC::numeric> value_at(const ex& e, const GiNaC::exmap& point) {
   }
 }
 
+// The size of e's terms at a point: sums and products of the absolute values of what they combine
+// (powers to whole exponents likewise), anything else its absolute value. Two forms of one
+// expression differ at 50 digits by rounding of that size, where the value itself may be far smaller
+// (a sum that cancels); none where a part does not evaluate.
+std::optional<double> term_size(const ex& e, const GiNaC::exmap& point) {
+  bool sum = GiNaC::is_a<GiNaC::add>(e), product = GiNaC::is_a<GiNaC::mul>(e);
+  if (sum || product) {
+    double size = sum ? 0 : 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      std::optional<double> part = term_size(e.op(i), point);
+      if (!part) return std::nullopt;
+      size = sum ? size + *part : size * *part;
+    }
+    return size;
+  }
+  if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
+    std::optional<double> base = term_size(e.op(0), point);
+    if (!base) return std::nullopt;
+    return std::pow(*base, GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double());
+  }
+  std::optional<GiNaC::numeric> value = value_at(e, point);
+  if (!value) return std::nullopt;
+  return std::abs(value->to_double());
+}
+
 // One entry in levels: text, then exact simplification, then 50-digit evaluation, each side at its
 // own `points` (with its intermediates' values). Where the sides' intermediates differ, equal text
 // says nothing, and only the numeric level decides.
@@ -330,8 +355,14 @@ void decide(EntryComparison& c, const ex& old_e, const ex& new_e, const EntrySid
     auto a = value_at(old_e, old_points[k]), b = value_at(new_e, new_points[k]);
     if (!a || !b) continue;
     ++evaluated;
-    double size = std::max({1.0, std::abs(a->to_double()), std::abs(b->to_double())});
+    // against the values, and where they differ by more, against their terms' size (no floor of one
+    // unit: entries of 1e-36, a 1e-12 kg mass on 1e-12 m, had passed for equal at twice the mass)
+    double size = std::max(std::abs(a->to_double()), std::abs(b->to_double()));
     double abs = std::abs((*a - *b).to_double());
+    if (abs > tolerance * size) {
+      std::optional<double> old_terms = term_size(old_e, old_points[k]), new_terms = term_size(new_e, new_points[k]);
+      size = std::max({size, old_terms.value_or(0.0), new_terms.value_or(0.0)});
+    }
     c.max_abs_difference = std::max(c.max_abs_difference, abs);
     c.max_rel_difference = std::max(c.max_rel_difference, abs / size);
     equal = equal && abs <= tolerance * size;

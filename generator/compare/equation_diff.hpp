@@ -16,7 +16,9 @@ namespace eomgen {
 
 struct DiffOptions {
   std::vector<std::pair<std::string, std::string>> renames;  // old name → new name
-  double tolerance = 1e-30;  // numeric level: |old − new| ≤ tolerance · max(1, |old|, |new|)
+  /// numeric level: |old − new| ≤ tolerance · max(|old|, |new|, the size of their terms), the terms'
+  /// size the sum of their absolute values (of a sum that cancels to rounding, the size it rounds at)
+  double tolerance = 1e-30;
   int samples = 16;
   unsigned seed = 20261123;  // fixed: the same inputs give the same verdict
 };

@@ -61,6 +61,8 @@ MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b,
   if (a.coordinates.size() != b.coordinates.size()) return out;
   // a state both sides accept: for pseudo-velocities, q' from random s through the kinematic equations
   const MotionForm* appell = !a.kinematics.empty() ? &a : !b.kinematics.empty() ? &b : nullptr;
+  std::vector<std::pair<double, double>> compared;  // |x − y| and max(|x|, |y|) of each component at each state
+  double largest = 0;
   for (std::size_t k = 0; k < a_points.size() && k < b_points.size(); ++k) {
     GiNaC::exmap a_state = a_points[k], b_state = b_points[k];  // parameters, inputs, t and q as sampled
     for (std::size_t i = 0; i < a.coordinates.size(); ++i) {
@@ -74,9 +76,15 @@ MotionComparison compare_accelerations(const MotionForm& a, const MotionForm& b,
     for (std::size_t i = 0; i < x->size(); ++i) {
       double u = GiNaC::ex_to<GiNaC::numeric>((*x)[i]).to_double(), v = GiNaC::ex_to<GiNaC::numeric>((*y)[i]).to_double();
       double d = std::abs(GiNaC::ex_to<GiNaC::numeric>(((*x)[i] - (*y)[i]).evalf()).to_double());
-      out.max_rel_difference = std::max(out.max_rel_difference, d / std::max({1.0, std::abs(u), std::abs(v)}));
+      compared.push_back({d, std::max(std::abs(u), std::abs(v))});
+      largest = std::max(largest, compared.back().second);
     }
   }
+  // against the accelerations themselves, above a floor of 1e-20 of the largest for a component
+  // that is zero but for the solves' rounding; no floor of one unit (a system on a time scale of
+  // 1e12 s has accelerations of 1e-24, all "the same" against one)
+  for (const auto& [d, size] : compared)
+    if (d > 0) out.max_rel_difference = std::max(out.max_rel_difference, d / std::max(size, 1e-20 * largest));
   out.same = out.states > 0 && out.max_rel_difference <= tolerance;
   return out;
 }

@@ -2,7 +2,10 @@
 // report's keys, located mistakes, and --self against an eomgen executable.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+
+#include <fmt/format.h>
 
 #include "support/test_support.hpp"
 
@@ -81,6 +84,49 @@ TEST(DiffCommand, TheRollingDiskWithFramesAndRollsIsTheDiskWrittenByHand) {
 
 // |l| for l: equal where the parameters are sampled (positive), not shown equal for l < 0: exit 1,
 // and 0 with --region, which says the sampled region is all that is asked about
+// A bob of mass m on a rod of length l turned by a torsion spring k (no gravity): M = m l², f = −k φ.
+std::string torsion_pendulum(double size, const std::string& mass, const std::string& position) {
+  std::string path = temporary_directory() + "/torsion_pendulum.toml";
+  std::ofstream(path) << fmt::format(R"toml([model]
+name = "torsion_pendulum"
+[parameters]
+m = {0:.17g}
+l = {0:.17g}
+k = 1.0
+[coordinates]
+phi = {{ initial = 0.5, rate = 0.0 }}
+[[particles]]
+name = "bob"
+mass = "{1}"
+position = [{2}]
+[energy]
+potential = "k*phi^2/2"
+)toml",
+                                     size, mass, position);
+  return path;
+}
+
+// A 1e-12 kg bob on a 1e-12 m rod has M = 1e-36: twice the mass had been "equivalent" (|ΔM| under
+// 1e-30 of one unit) and the verdict "equivalent", though it swings √2 times slower. Now it is
+// "different" for m and l from 1e-12 to 1e12, while the same bob written in half angles
+// (2 sin(φ/2) cos(φ/2) for sin φ) stays "equivalent" at every size: its terms' rounding, not one
+// unit, is the floor.
+TEST(DiffCommand, ASmallBobOfTwiceTheMassIsDifferentAtEverySize) {
+  const std::string by_sines = "\"l*sin(phi)\", \"-l*cos(phi)\", \"0\"", by_halves = "\"2*l*sin(phi/2)*cos(phi/2)\", \"l*(2*sin(phi/2)^2 - 1)\", \"0\"";
+  for (double size : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    std::string old_side = torsion_pendulum(size, "m", by_sines);
+    std::string heavier = temporary_directory() + "/heavier.toml", halved = temporary_directory() + "/halved.toml";
+    std::filesystem::copy_file(torsion_pendulum(size, "2*m", by_sines), heavier);
+    std::filesystem::copy_file(torsion_pendulum(size, "m", by_halves), halved);
+    CommandOutput twice = run_eomgen("diff '" + old_side + "' '" + heavier + "' --format json");
+    EXPECT_EQ(twice.status, 1) << "m = l = " << size << ": " << twice.err;
+    EXPECT_NE(twice.out.find("\"verdict\": \"different\""), std::string::npos) << "m = l = " << size << ": " << twice.out;
+    CommandOutput same = run_eomgen("diff '" + old_side + "' '" + halved + "' --format json");
+    EXPECT_EQ(same.status, 0) << "m = l = " << size << ": " << same.err;
+    EXPECT_NE(same.out.find("\"verdict\": \"equivalent\""), std::string::npos) << "m = l = " << size << ": " << same.out;
+  }
+}
+
 TEST(DiffCommand, EqualOnTheSampledRegionExitsOneUnlessTheRegionIsEnough) {
   std::string baseline = std::string(EOMGEN_SOURCE_DIR) + "/generated/pendulum.json";
   std::string branched = changed_pendulum("\"-l*cos(phi)\"", "\"-abs(l)*cos(phi)\"");
