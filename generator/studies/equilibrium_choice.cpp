@@ -4,9 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "analyse/constrained_first_order.hpp"
 #include "analyse/equilibrium.hpp"
-#include "analyse/first_order_form.hpp"
 #include "analyse/state_check.hpp"
 #include "analyse/unbalanced_rate.hpp"
 #include "studies/equilibrium_choice.hpp"
@@ -27,18 +25,6 @@ std::optional<std::vector<double>> state_from_at(const eomgen_model_abi& m, cons
   return x;
 }
 
-// The states Newton may change where --at names only some: the non-cyclic coordinates and the
-// cyclic velocities not named (none for an Appell or Lagrange I model, which --at states in full)
-std::vector<std::size_t> free_states(const eomgen_model_abi& m, const std::vector<bool>& named) {
-  std::vector<std::size_t> free;
-  if (runtime::has_pseudo_velocities(m) || runtime::has_multipliers(m)) return free;
-  for (std::size_t i = 0; i < m.num_coordinates; ++i) {
-    std::size_t own = m.is_cyclic[i] ? m.num_coordinates + i : i;
-    if (!named[own]) free.push_back(own);
-  }
-  return free;
-}
-
 // "name = value" of each state in `which`, or the names alone without x
 std::string states_text(const eomgen_model_abi& m, const std::vector<std::size_t>& which, const std::vector<double>* x) {
   std::string text;
@@ -54,7 +40,7 @@ std::string states_text(const eomgen_model_abi& m, const std::vector<std::size_t
 std::optional<runtime::Equilibrium> completed_at(const runtime::Problem& problem, std::vector<double> x,
                                                  const std::vector<double>& initial, const std::vector<bool>& named) {
   const eomgen_model_abi& m = *problem.model;
-  std::vector<std::size_t> free = free_states(m, named);
+  std::vector<std::size_t> free = runtime::unheld_unknowns(m, named);
   if (free.empty()) return std::nullopt;
   for (std::size_t i = 0; i < m.num_coordinates; ++i)
     if (m.is_cyclic[i] && !named[m.num_coordinates + i]) x[m.num_coordinates + i] = initial[m.num_coordinates + i];
@@ -143,7 +129,7 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
       return exit_user_error;
     }
     if (!out.converged) {
-      std::vector<std::size_t> free = free_states(m, named);
+      std::vector<std::size_t> free = runtime::unheld_unknowns(m, named);
       std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: the largest residual of "
                                "the equations of motion is {:.3g} (tolerance {:.3g}){}\n  hint: leave out --at to search "
                                "for one from the model's initial values\n", out.residual, out.tolerance,

@@ -260,18 +260,24 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
   return held;
 }
 
+std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::vector<bool>& held) {
+  std::vector<std::size_t> unknowns;
+  if (has_pseudo_velocities(m) || has_multipliers(m)) return unknowns;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i) {
+    std::size_t own = m.is_cyclic[i] ? m.num_coordinates + i : i;
+    if (!held[own]) unknowns.push_back(own);
+  }
+  return unknowns;
+}
+
 Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> state, const std::vector<bool>& held) {
   const eomgen_model_abi& m = *problem.model;
-  if (has_pseudo_velocities(m) || has_multipliers(m)) return check_equilibrium(problem, std::move(state));
   std::size_t n = m.num_coordinates;
-  std::vector<int> unknowns;
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t own = m.is_cyclic[i] ? n + i : i;
-    if (!held[own]) unknowns.push_back(static_cast<int>(own));
+  for (std::size_t i = 0; i < n; ++i)
     if (!m.is_cyclic[i] && !held[n + i]) state[n + i] = 0;
-  }
-  if (unknowns.empty()) return check_equilibrium(problem, std::move(state));
-  return balance_by_newton(problem, std::move(state), unknowns, false);
+  std::vector<std::size_t> free = unheld_unknowns(m, held);
+  if (free.empty()) return check_equilibrium(problem, std::move(state));
+  return balance_by_newton(problem, std::move(state), std::vector<int>(free.begin(), free.end()), false);
 }
 
 }  // namespace eomgen::runtime

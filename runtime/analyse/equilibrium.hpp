@@ -38,4 +38,8 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
 /// I model is checked as given); not converged where nothing is free or Newton finds none.
 Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> state, const std::vector<bool>& held);
 
+/// The states complete_equilibrium solves for: the non-cyclic coordinates and the cyclic velocities
+/// not `held` (indices into the state; none for an Appell or Lagrange I model).
+std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::vector<bool>& held);
+
 }  // namespace eomgen::runtime

@@ -27,7 +27,8 @@ constexpr double cart = 1.0, bob = 0.2, rod = 0.5;
 struct CartSystem {
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, 4), B = Eigen::MatrixXd::Zero(4, 1);
   double omega = 0, omega0 = 0;  // the pendulum's frequency on the cart, and with the cart held
-  CartSystem(double s, double mu, const Eigen::Vector4d& units) {
+  double mu;                     // the masses' scale
+  CartSystem(double s, double masses, const Eigen::Vector4d& units) : mu(masses) {
     double g = 9.81 * s * s;
     Eigen::Matrix2d M, K;
     M << mu * (cart + bob), mu * bob * rod, mu * bob * rod, mu * bob * rod * rod;
@@ -57,57 +58,60 @@ Eigen::Vector4d random_units(std::mt19937& random) {
   return units;
 }
 
-TEST(ScaleFreeLinear, AFreeCartsDoublePoleIsAtZeroAtEveryScale) {
-  std::mt19937 random(11);
+// `check(c, at)` on the cart at every time scale, masses 1e-9, 1 and 1e9, in its own units and in
+// random ones (drawn from `seed`), `at` naming the case
+template <class Check>
+void for_each_cart(unsigned seed, const Check& check) {
+  std::mt19937 random(seed);
   for (double s : time_scales())
     for (double mu : {1e-9, 1.0, 1e9})
       for (bool in_other_units : {false, true}) {
         CartSystem c(s, mu, in_other_units ? random_units(random) : Eigen::Vector4d::Ones());
-        runtime::TransferFunction G = runtime::transfer_function(c.A, c.B, c.reading(0), Eigen::MatrixXd::Zero(1, 1), 0, 0);
-        std::string at = fmt::format("s = {:g}, mu = {:g}, units {}", s, mu, in_other_units);
-        EXPECT_TRUE(std::isinf(G.dc_gain().real())) << at;
-        ASSERT_EQ(G.poles.size(), 4u) << at;
-        int at_zero = 0, at_omega = 0;
-        for (auto p : G.poles) {
-          at_zero += p == std::complex<double>(0, 0);
-          at_omega += p.real() == 0 && std::abs(std::abs(p.imag()) - c.omega) <= 1e-9 * c.omega;
-        }
-        EXPECT_EQ(at_zero, 2) << at;
-        EXPECT_EQ(at_omega, 2) << at;
-        ASSERT_EQ(G.zeros.size(), 2u) << at;
-        for (auto z : G.zeros) EXPECT_NEAR(std::abs(z.imag()), c.omega0, 1e-9 * c.omega0) << at;
-        EXPECT_NEAR(G.gain / (1 / (mu * cart)), 1, 1e-9) << at;
+        check(c, fmt::format("s = {:g}, mu = {:g}, units {}", s, mu, in_other_units));
       }
+}
+
+TEST(ScaleFreeLinear, AFreeCartsDoublePoleIsAtZeroAtEveryScale) {
+  for_each_cart(11, [](const CartSystem& c, const std::string& at) {
+    runtime::TransferFunction G = runtime::transfer_function(c.A, c.B, c.reading(0), Eigen::MatrixXd::Zero(1, 1), 0, 0);
+    EXPECT_TRUE(std::isinf(G.dc_gain().real())) << at;
+    ASSERT_EQ(G.poles.size(), 4u) << at;
+    int at_zero = 0, at_omega = 0;
+    for (auto p : G.poles) {
+      at_zero += p == std::complex<double>(0, 0);
+      at_omega += p.real() == 0 && std::abs(std::abs(p.imag()) - c.omega) <= 1e-9 * c.omega;
+    }
+    EXPECT_EQ(at_zero, 2) << at;
+    EXPECT_EQ(at_omega, 2) << at;
+    ASSERT_EQ(G.zeros.size(), 2u) << at;
+    for (auto z : G.zeros) EXPECT_NEAR(std::abs(z.imag()), c.omega0, 1e-9 * c.omega0) << at;
+    EXPECT_NEAR(G.gain / (1 / (c.mu * cart)), 1, 1e-9) << at;
+  });
 }
 
 // The tolerance had been 1e-9 max(1, |A|, |B|) on Kalman's matrix: a cart of 1e-9 kg (|B| = 1e9)
 // was "NOT controllable (rank 2 of 4)", one of 1e9 kg "rank 0 of 4".
 TEST(ScaleFreeLinear, AFreeCartIsControllableAndObservableFromItsPositionAtEveryScale) {
-  std::mt19937 random(12);
-  for (double s : time_scales())
-    for (double mu : {1e-9, 1.0, 1e9})
-      for (bool in_other_units : {false, true}) {
-        CartSystem c(s, mu, in_other_units ? random_units(random) : Eigen::Vector4d::Ones());
-        std::string at = fmt::format("s = {:g}, mu = {:g}, units {}", s, mu, in_other_units);
-        runtime::Reach from_position = runtime::controllability_and_observability(c.A, c.B, c.reading(0));
-        EXPECT_EQ(from_position.kalman_controllability_rank, 4) << at;
-        EXPECT_EQ(from_position.kalman_observability_rank, 4) << at;
-        EXPECT_TRUE(from_position.controllable) << at;
-        EXPECT_TRUE(from_position.observable) << at;
-        // the angle's equation holds no x: the cart's position and speed are unseen, its double
-        // eigenvalue 0 a mode that PBH names, moving x alone
-        runtime::Reach from_angle = runtime::controllability_and_observability(c.A, c.B, c.reading(1));
-        EXPECT_EQ(from_angle.kalman_observability_rank, 2) << at;
-        EXPECT_FALSE(from_angle.observable) << at;
-        for (const runtime::ModeReach& m : from_angle.modes) {
-          bool at_zero = std::abs(m.eigenvalue) <= 1e-6 * c.omega;
-          EXPECT_EQ(m.observable, !at_zero) << at << ", eigenvalue " << m.eigenvalue;
-          if (at_zero && !m.observable) {
-            ASSERT_EQ(m.unseen.size(), 4) << at;
-            EXPECT_GT(std::abs(m.unseen[0]), 0.99 * m.unseen.norm()) << at;
-          }
-        }
+  for_each_cart(12, [](const CartSystem& c, const std::string& at) {
+    runtime::Reach from_position = runtime::controllability_and_observability(c.A, c.B, c.reading(0));
+    EXPECT_EQ(from_position.kalman_controllability_rank, 4) << at;
+    EXPECT_EQ(from_position.kalman_observability_rank, 4) << at;
+    EXPECT_TRUE(from_position.controllable) << at;
+    EXPECT_TRUE(from_position.observable) << at;
+    // the angle's equation holds no x: the cart's position and speed are unseen, its double
+    // eigenvalue 0 a mode that PBH names, moving x alone
+    runtime::Reach from_angle = runtime::controllability_and_observability(c.A, c.B, c.reading(1));
+    EXPECT_EQ(from_angle.kalman_observability_rank, 2) << at;
+    EXPECT_FALSE(from_angle.observable) << at;
+    for (const runtime::ModeReach& m : from_angle.modes) {
+      bool at_zero = std::abs(m.eigenvalue) <= 1e-6 * c.omega;
+      EXPECT_EQ(m.observable, !at_zero) << at << ", eigenvalue " << m.eigenvalue;
+      if (at_zero && !m.observable) {
+        ASSERT_EQ(m.unseen.size(), 4) << at;
+        EXPECT_GT(std::abs(m.unseen[0]), 0.99 * m.unseen.norm()) << at;
       }
+    }
+  });
 }
 
 // |A V − V J| column by column in the states' own units (D the units times (1, 1, rate, rate),
@@ -126,31 +130,26 @@ void expect_similar(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& V, const E
 // The chains had been the null spaces of (A − λI)^k in the states' units: with the cart's
 // position in μm and its speed in km/s, they are (nearly) dependent, or miss the block.
 TEST(ScaleFreeLinear, AFreeCartsJordanChainIsFoundAtEveryScale) {
-  std::mt19937 random(13);
-  for (double s : time_scales())
-    for (double mu : {1e-9, 1.0, 1e9})
-      for (bool in_other_units : {false, true}) {
-        CartSystem c(s, mu, in_other_units ? random_units(random) : Eigen::Vector4d::Ones());
-        std::string at = fmt::format("s = {:g}, mu = {:g}, units {}", s, mu, in_other_units);
-        runtime::JordanBasis basis = runtime::jordan_basis(c.A, runtime::jordan_structure(c.A));
-        ASSERT_TRUE(basis.refusal.empty()) << at << ": " << basis.refusal;
-        Eigen::MatrixXcd J = Eigen::MatrixXcd::Zero(4, 4);
-        int double_zero = 0;
-        for (const runtime::JordanBasis::Block& b : basis.blocks) {
-          bool at_zero = std::abs(b.eigenvalue) <= 1e-9 * c.omega;
-          double_zero += at_zero && b.size == 2;
-          if (!at_zero) {
-            EXPECT_NEAR(std::abs(b.eigenvalue.imag()), c.omega, 1e-9 * c.omega) << at;
-          }
-          for (int i = 0; i < b.size; ++i) {
-            J(b.first + i, b.first + i) = b.eigenvalue;
-            if (i + 1 < b.size) J(b.first + i, b.first + i + 1) = 1;
-          }
-        }
-        EXPECT_EQ(double_zero, 1) << at;
-        expect_similar(c.A, basis.V, J, c.units, c.omega, at);
-        EXPECT_LT(basis.residual, 1e-12) << at;  // as reported, relative to each column's terms
+  for_each_cart(13, [](const CartSystem& c, const std::string& at) {
+    runtime::JordanBasis basis = runtime::jordan_basis(c.A, runtime::jordan_structure(c.A));
+    ASSERT_TRUE(basis.refusal.empty()) << at << ": " << basis.refusal;
+    Eigen::MatrixXcd J = Eigen::MatrixXcd::Zero(4, 4);
+    int double_zero = 0;
+    for (const runtime::JordanBasis::Block& b : basis.blocks) {
+      bool at_zero = std::abs(b.eigenvalue) <= 1e-9 * c.omega;
+      double_zero += at_zero && b.size == 2;
+      if (!at_zero) {
+        EXPECT_NEAR(std::abs(b.eigenvalue.imag()), c.omega, 1e-9 * c.omega) << at;
       }
+      for (int i = 0; i < b.size; ++i) {
+        J(b.first + i, b.first + i) = b.eigenvalue;
+        if (i + 1 < b.size) J(b.first + i, b.first + i + 1) = 1;
+      }
+    }
+    EXPECT_EQ(double_zero, 1) << at;
+    expect_similar(c.A, basis.V, J, c.units, c.omega, at);
+    EXPECT_LT(basis.residual, 1e-12) << at;  // as reported, relative to each column's terms
+  });
 }
 
 // A cart held by a spring and a damper (damping not proportional): the principal coordinates are
