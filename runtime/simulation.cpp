@@ -13,6 +13,7 @@
 #include "analyse/step_stability.hpp"
 #include "analyse/work_precision.hpp"
 #include "integrate/projection.hpp"
+#include "integrate/quaternion_norms.hpp"
 #include "integrate/stepper.hpp"
 
 namespace eomgen::runtime {
@@ -271,6 +272,31 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
   return why + fmt::format(" at {}", configuration(*p.model, x));
 }
 
+
+// The quaternions of ball and free joints at the start: one of length 0 names no orientation (an
+// error, returned); with the projection on, they start unit, and a user's quaternion that was not
+// unit to nine digits is named in a warning (its rotation, that of q/|q|, stays as it was)
+std::string start_quaternions(const eomgen_model_abi& m, const SimulationSettings& settings, std::vector<double>& x,
+                              std::vector<std::string>& warnings) {
+  auto named = [&](std::size_t k) {
+    const std::size_t* q = m.quaternion_coordinates + 4 * k;
+    return fmt::format("({}, {}, {}, {})", m.coordinate_names[q[0]], m.coordinate_names[q[1]], m.coordinate_names[q[2]],
+                       m.coordinate_names[q[3]]);
+  };
+  if (int k = zero_quaternion(m, x.data()); k >= 0)
+    return fmt::format("the quaternion {} is 0 at the start and names no orientation: give it a unit value (w = 1 "
+                       "and the rest 0 is the joint's rest orientation)", named(std::size_t(k)));
+  if (!settings.projection) return "";
+  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
+    double length = quaternion_length(m, x.data(), k);
+    if (std::abs(length - 1) > 1e-9)
+      warnings.push_back(fmt::format("the quaternion {} has length {:.9g} at the start; it is divided by its length, "
+                                     "which keeps its orientation", named(k), length));
+  }
+  normalize_quaternions(m, x.data());
+  return "";
+}
+
 }  // namespace
 
 SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_given, const SimulationSettings& settings) {
@@ -301,10 +327,17 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   // Appell's pseudo-velocities meet velocity constraints by construction; holonomic ones may drift
   bool holonomic = false;
   for (std::size_t i = 0; i < m.num_constraints; ++i) holonomic = holonomic || m.constraint_is_holonomic[i];
-  if ((lagrange1 || holonomic) && settings.projection && !is_dae_integrator(settings.integrator)) f.projection = &projection;
+  if (std::string why = start_quaternions(m, settings, x, result.warnings); !why.empty()) {
+    result.failed = true;
+    result.failure = why;
+    return result;
+  }
+  bool projected = (lagrange1 || holonomic || m.num_quaternions) && settings.projection;
+  if (projected && !is_dae_integrator(settings.integrator)) f.projection = &projection;
   double scale = mass_matrix_range(problem, settings.t_start, x).second, start_size = 0;
   for (double v : x) start_size = std::max(start_size, std::abs(v));
   record(problem, settings.t_start, x, result.trajectory);
+  result.largest_quaternion_norm_error = quaternion_norm_error(m, x.data());
   keep_row(settings, result);
   Conditioning start = conditioning(problem, settings.t_start, x);
   bool warned_singular = false;
@@ -329,7 +362,11 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
       }
       break;
     }
+    // an output between steps is interpolated, and the interpolant does not keep |q|
+    if (f.projection)
+      result.largest_quaternion_correction = std::max(result.largest_quaternion_correction, normalize_quaternions(m, x.data()));
     record(problem, t, x, result.trajectory);
+    result.largest_quaternion_norm_error = std::max(result.largest_quaternion_norm_error, quaternion_norm_error(m, x.data()));
     if (!keep_row(settings, result)) break;
     if (settings.stop && *settings.stop && !last) {
       result.failed = result.interrupted = true;
@@ -366,6 +403,8 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   result.max_position_residual = result.summary.largest_position_residual;
   result.max_velocity_residual = result.summary.largest_velocity_residual;
   result.projections = projection.projections();
+  result.largest_quaternion_correction = std::max(result.largest_quaternion_correction, projection.largest_quaternion_correction());
+  if (m.num_quaternions && f.projection) result.quaternions_normalized = stepper->projects();
   if (!result.failed) refuse_exploded(problem, start_size, limit.beyond(), result);
   keep_row(settings, result, true);
   return result;

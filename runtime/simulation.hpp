@@ -48,7 +48,8 @@ struct SimulationSettings {
   /// (failed, `interrupted`), keeping the trajectory so far
   const std::atomic<bool>* stop = nullptr;
   // constrained models: Baumgarte's stabilization (Lagrange I) and projection onto the
-  // constraint manifold after every step; gains < 0 take the model's defaults
+  // constraint manifold after every step; gains < 0 take the model's defaults. The projection
+  // also keeps the quaternions of ball and free joints unit (and starts from unit ones).
   bool baumgarte = true, projection = true;
   /// num_states, or empty: the entries of x0 the user gave; constrained models keep them
   /// where the constraints allow it while making the initial state consistent
@@ -118,6 +119,10 @@ struct SimulationResult {
   bool over_budget = false;  // stopped by SimulationSettings::max_rhs_evaluations
   bool interrupted = false;  // stopped by SimulationSettings::stop
   long projections = 0;
+  /// Ball and free joints: the largest | |q| − 1 | over the output times (as recorded), and the
+  /// largest that the projection after a step or at an output time corrected (0 when not projected)
+  double largest_quaternion_norm_error = 0, largest_quaternion_correction = 0;
+  std::string quaternions_normalized;  // "after every step", "at the output times", or "" (not normalized)
   std::vector<std::string> warnings;  // things the user should know although the run went on
   double error_estimate = NAN;  // the reference integrator's estimate of its own error
   double reference_step = 0;    // and its final macro step

@@ -52,6 +52,7 @@ set(EOMGEN_TEST_FILES
   generator/derive/routh_test.cpp                   fast     sanitized
   generator/derive/reduced_models_test.cpp          fast     sanitized
   runtime/constrained_simulation_test.cpp           fast
+  runtime/quaternion_simulation_test.cpp            fast
   runtime/reference_test.cpp                        slow
   generator/symbolic_analysis/stability_conditions_test.cpp   fast     sanitized
   generator/symbolic_analysis/hamilton_jacobi_test.cpp        fast

@@ -27,7 +27,8 @@ void add_simulation_options(CLI::App* cmd, SimulationOptions& o) {
   cmd->add_option("--step", o.settings.step, "Fixed step of rk4, verlet and gauss-legendre [s] (default dt-out/10)");
   cmd->add_option("--max-rows", o.max_rows, "Most output rows a run may keep (default 1e6): longer runs need a longer --dt-out");
   cmd->add_option("--stabilization", o.stabilization,
-                  "Constrained models: both (default), baumgarte (Lagrange I), projection (after every step) or none")
+                  "Constrained models: both (default), baumgarte (Lagrange I), projection (after every step) or none; "
+                  "with projection (and both) the quaternions of ball and free joints are normalized after every step")
       ->check(CLI::IsMember({"both", "baumgarte", "projection", "none"}));
   cmd->add_option("--baumgarte-alpha", o.settings.baumgarte_alpha, "Baumgarte's damping gain [1/s] (default: the model's, 10)");
   cmd->add_option("--baumgarte-beta", o.settings.baumgarte_beta, "Baumgarte's stiffness gain [1/s] (default: the model's, 10)");

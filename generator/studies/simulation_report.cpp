@@ -37,6 +37,24 @@ static std::string constraint_summary(const eomgen_model_abi& m, const runtime::
   return out;
 }
 
+// ball and free joints: whether the quaternions were kept unit, and how far |q| strayed from 1
+static std::string quaternion_summary(const runtime::SimulationSettings& settings, const eomgen_model_abi& m,
+                                      const runtime::SimulationResult& r, bool json) {
+  const std::string& when = r.quaternions_normalized;
+  if (json)
+    return fmt::format(", \"quaternions\": {{\"count\": {}, \"normalized\": {}, \"max_correction\": {}, "
+                       "\"max_norm_error\": {}}}",
+                       m.num_quaternions, when.empty() ? "null" : json_quoted(when), json_number(r.largest_quaternion_correction),
+                       json_number(r.largest_quaternion_norm_error));
+  if (!when.empty())
+    return fmt::format("  quaternions: normalized {} (largest correction of |q| {:.3e})\n", when,
+                       r.largest_quaternion_correction);
+  return fmt::format("  quaternions: not normalized ({}); largest ||q| - 1| over the output times {:.3e} (the rotation "
+                     "is that of q/|q|, so the motion does not depend on it)\n",
+                     settings.projection ? "the reference integrator does not project" : "no projection asked for",
+                     r.largest_quaternion_norm_error);
+}
+
 // the change of every first integral over the run; with inputs acting they need not be constant
 static std::string first_integral_summary(const eomgen_model_abi& m, const runtime::RunSummary& run, bool unforced, bool json) {
   std::vector<runtime::FirstIntegralDrift> drift = runtime::first_integral_drift(m, run);
@@ -69,11 +87,11 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
         "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
-        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}{}, \"failure\": {}}}\n",
+        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}{}{}, \"failure\": {}}}\n",
         m.name, settings.integrator, settings.t_start, r.summary.last_time, r.summary.rows, s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
         conservative ? "true" : "false", drift, first_integral_summary(m, r.summary, unforced, true),
-        m.num_constraints ? constraint_summary(m, r, true) : "",
+        m.num_constraints ? constraint_summary(m, r, true) : "", m.num_quaternions ? quaternion_summary(settings, m, r, true) : "",
         std::isnan(r.error_estimate) ? std::string()
                                      : fmt::format(", \"reference_error_estimate\": {:.6g}, \"reference_step\": {:.6g}",
                                                    r.error_estimate, r.reference_step),
@@ -91,6 +109,7 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
                                         : " (the model does not conserve T + V)");
   std::cout << first_integral_summary(m, r.summary, unforced, false);
   if (m.num_constraints) std::cout << constraint_summary(m, r, false);
+  if (m.num_quaternions) std::cout << quaternion_summary(settings, m, r, false);
   if (!std::isnan(r.error_estimate))
     std::cout << fmt::format("  reference: Gragg–Bulirsch–Stoer extrapolation of order 16 in {}, macro step {:.3g} s; "
                              "estimated error {:.2e} (largest difference from the run at twice the step, relative to "

@@ -8,6 +8,7 @@
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
 #include "analyse/state_check.hpp"
+#include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
 
@@ -115,7 +116,7 @@ Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
     auto moved = [&](double fraction) {
       std::vector<double> y = x;
       for (std::size_t k = 0; k < unknowns.size(); ++k) y[unknowns[k]] += fraction * step[static_cast<long>(k)];
-      normalize_quaternions(m, y);
+      normalize_quaternions(m, y.data());
       return y;
     };
     double largest = step.cwiseAbs().maxCoeff();

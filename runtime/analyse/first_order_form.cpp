@@ -13,15 +13,6 @@ bool has_pseudo_velocities(const eomgen_model_abi& m) {
   return std::strcmp(m.method, "appell") == 0 || std::strcmp(m.method, "hamilton") == 0;
 }
 
-void normalize_quaternions(const eomgen_model_abi& m, std::vector<double>& x) {
-  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
-    const std::size_t* q = m.quaternion_coordinates + 4 * k;
-    double norm = std::sqrt(x[q[0]] * x[q[0]] + x[q[1]] * x[q[1]] + x[q[2]] * x[q[2]] + x[q[3]] * x[q[3]]);
-    if (norm > 0)
-      for (int c = 0; c < 4; ++c) x[q[c]] /= norm;
-  }
-}
-
 std::vector<int> reduced_state(const eomgen_model_abi& m) {
   std::vector<int> kept;
   for (std::size_t i = 0; i < m.num_coordinates; ++i)

@@ -15,9 +15,6 @@ namespace eomgen::runtime {
 /// Appell and Hamilton models: the state holds pseudo-velocities or momenta, not q'.
 bool has_pseudo_velocities(const eomgen_model_abi& m);
 
-/// The quaternions of x's ball and free joints divided by their norms (left as they are at zero).
-void normalize_quaternions(const eomgen_model_abi& m, std::vector<double>& x);
-
 /// Indices into x of the reduced state: the non-cyclic coordinates, then all velocities.
 std::vector<int> reduced_state(const eomgen_model_abi& m);
 

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "analyse/first_order_form.hpp"
+#include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
 
@@ -24,7 +25,7 @@ std::vector<double> rates_at_rest(const Problem& p, std::vector<double> x) {
 std::vector<double> moved_at_random(const eomgen_model_abi& m, std::vector<double> x, double reach, std::mt19937& random) {
   std::uniform_real_distribution<double> step(-1, 1);
   for (std::size_t i = 0; i < m.num_coordinates; ++i) x[i] += reach * step(random) * std::max(1.0, std::abs(x[i]));
-  normalize_quaternions(m, x);
+  normalize_quaternions(m, x.data());
   return x;
 }
 

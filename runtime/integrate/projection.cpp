@@ -1,9 +1,12 @@
 #include "integrate/projection.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 #include <Eigen/Dense>
+
+#include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
 
@@ -156,8 +159,11 @@ bool ConstraintProjection::project_velocities(double t, double* x) {
 
 bool ConstraintProjection::project(double t, double* x) {
   const eomgen_model_abi& m = *p_.model;
-  if (m.num_constraints == 0) return true;
+  if (m.num_constraints == 0 && m.num_quaternions == 0) return true;
   ++projections_;
+  // g is the same at q and at q/|q| (the rotation is that of q/|q|), so the order does not matter
+  largest_quaternion_correction_ = std::max(largest_quaternion_correction_, normalize_quaternions(m, x));
+  if (m.num_constraints == 0) return true;
   if (!project_positions(t, x)) return false;
   // Appell's pseudo-velocities meet the velocity constraints by construction
   if (m.num_multipliers == 0) return true;

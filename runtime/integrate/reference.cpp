@@ -72,6 +72,7 @@ class Reference : public Stepper {
   }
 
   double error_estimate() const override { return estimate_; }
+  const char* projects() const override { return ""; }
   double reference_step() const override { return step_; }
 
  private:

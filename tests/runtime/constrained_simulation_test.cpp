@@ -82,6 +82,17 @@ TEST(LagrangeOne, ResidualsStaySmallWithStabilizationAndDriftWithout) {
   EXPECT_GT(plain.max_position_residual, 100 * stabilized.max_position_residual);
 }
 
+// Adams is projected at the output times and restarted there; CVodeReInit sets CVODE's counters to
+// zero, and the report had said "steps 0, rhs evaluations 0" of a run of thousands
+TEST(LagrangeOne, AdamsCountsItsStepsAcrossItsRestarts) {
+  runtime::SimulationSettings s = accurate(10, "cvode-adams");
+  runtime::SimulationResult r = run("pendulum_cartesian", s);
+  ASSERT_FALSE(r.failed) << r.failure;
+  EXPECT_EQ(r.projections, long(r.trajectory.times.size()) - 1) << "projected at every output time";
+  EXPECT_GE(r.statistics.steps, r.projections) << "at least one step between two output times";
+  EXPECT_GE(r.statistics.rhs_evaluations, r.statistics.steps);
+}
+
 TEST(LagrangeOne, ConsistentStartKeepsTheGivenCrankAngleAndRate) {
   runtime::SimulationResult r = run("slider_crank", accurate(0.1));
   ASSERT_FALSE(r.failed);

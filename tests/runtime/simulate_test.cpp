@@ -272,6 +272,26 @@ TEST(Simulate, ReportsTheDriftOfEveryFirstIntegral) {
   EXPECT_NE(driven.out.find("the inputs act, so they need not stay constant"), std::string::npos) << driven.out;
 }
 
+TEST(Simulate, ReportsWhetherTheQuaternionsWereKeptUnit) {
+  std::string model = model_path("tumbling_body");
+  CommandRun kept = eomgen("simulate " + model + " --t-end 20", shared_cache());
+  ASSERT_EQ(kept.status, 0) << kept.err;
+  EXPECT_NE(kept.out.find("  quaternions: normalized after every step (largest correction of |q| "), std::string::npos)
+      << kept.out;
+  CommandRun json = eomgen("simulate " + model + " --t-end 20 --format json", shared_cache());
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_NE(json.out.find("\"quaternions\": {\"count\": 1, \"normalized\": \"after every step\""), std::string::npos) << json.out;
+  EXPECT_LE(json_number(json.out, "max_norm_error"), 4e-16) << json.out;
+  EXPECT_GT(json_number(json.out, "max_correction"), 0) << json.out;
+  CommandRun free = eomgen("simulate " + model + " --t-end 20 --stabilization none --format json", shared_cache());
+  ASSERT_EQ(free.status, 0) << free.err;
+  EXPECT_NE(free.out.find("\"normalized\": null"), std::string::npos) << free.out;
+  EXPECT_GT(json_number(free.out, "max_norm_error"), 1e-12) << "arkode-dp5 at rtol 1e-8 drifts |q|\n" << free.out;
+  CommandRun zero = eomgen("simulate " + model + " --initial qw=0", shared_cache());
+  EXPECT_EQ(zero.status, 3);
+  EXPECT_NE(zero.err.find("the quaternion (qw, qx, qy, qz) is 0 at the start"), std::string::npos) << zero.err;
+}
+
 TEST(Simulate, RollingDiskRunsAHundredSecondsOnItsConstraints) {
   CommandRun run = eomgen("simulate " + model_path("rolling_disk") + " --t-end 100 --format json", shared_cache());
   ASSERT_EQ(run.status, 0) << run.err;
