@@ -168,8 +168,8 @@ template <std::size_t L, class T>
 void tree_mass_matrix_and_bias(const hinge_tree_tables<L, T>& tree, const T (&S)[L][6], const T (&C)[L][10],
                                const T (&force)[L][6], std::size_t n, T* M, T* f) {
   auto add = [&](std::size_t j, std::size_t k, const T& x) {
-    M[j*n + k] += x;
-    if (j != k) M[k*n + j] += x;
+    M[j*n + k] = M[j*n + k] + x;
+    if (j != k) M[k*n + j] = M[k*n + j] + x;
   };
   const tree_jointed_root<T>& root = tree.root_joint;
   for (std::size_t k = 0; k < L; ++k) {

@@ -292,6 +292,25 @@ TEST(Simulate, ReportsWhetherTheQuaternionsWereKeptUnit) {
   EXPECT_NE(zero.err.find("the quaternion (qw, qx, qy, qz) is 0 at the start"), std::string::npos) << zero.err;
 }
 
+// A tree of 21 hinges, whose header forms M in the loops of its derivatives' pass: the compiled
+// model holds the rhs in double and in the reference integrator's wide scalar, and a `+=` on M
+// had kept it from compiling. The default integrator against the reference's rows.
+TEST(Simulate, ALongTreeRunsWithTheDefaultAndTheReferenceIntegrator) {
+  std::string model = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/branched_tree.toml", scratch = temporary_directory();
+  CommandRun fast = eomgen("simulate '" + model + "' --t-end 0.02 --rtol 1e-11 -o '" + scratch + "/fast.csv'", shared_cache());
+  ASSERT_EQ(fast.status, 0) << fast.err;
+  CommandRun wide = eomgen("simulate '" + model + "' --t-end 0.02 --integrator reference -o '" + scratch + "/wide.csv'",
+                           shared_cache());
+  ASSERT_EQ(wide.status, 0) << wide.err;
+  std::string header;
+  auto a = read_csv(scratch + "/fast.csv", header), b = read_csv(scratch + "/wide.csv", header);
+  ASSERT_EQ(a.size(), b.size());
+  double largest = 0, worst = 0;
+  for (double v : b.back()) largest = std::max(largest, std::abs(v));
+  for (std::size_t i = 0; i < b.back().size(); ++i) worst = std::max(worst, std::abs(a.back()[i] - b.back()[i]));
+  EXPECT_LT(worst, 1e-8 * largest);
+}
+
 TEST(Simulate, RollingDiskRunsAHundredSecondsOnItsConstraints) {
   CommandRun run = eomgen("simulate " + model_path("rolling_disk") + " --t-end 100 --format json", shared_cache());
   ASSERT_EQ(run.status, 0) << run.err;
