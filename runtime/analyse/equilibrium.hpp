@@ -25,7 +25,10 @@ struct Equilibrium {
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state);
 
 /// Newton's method on f = 0 from `start`; the unknowns are the non-cyclic coordinates
-/// and the velocities of the cyclic ones; the other velocities are zero. Where that finds none or
+/// and the velocities of the cyclic ones; the other velocities are zero. Where that finds none, the
+/// state where the model released at `start` with damping added comes to rest, polished by Newton's
+/// method (said in Equilibrium::note): a servo saturated at the start, whose torque has no slope
+/// there, or a tree of 21 hinges whose Newton steps go round. Where that finds none either or
 /// ends at a singular mass matrix (a singularity of the coordinates), the steady motion at the
 /// start's configuration with the cyclic velocities alone free, when there is one (said in
 /// Equilibrium::note).
