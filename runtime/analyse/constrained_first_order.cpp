@@ -1,6 +1,7 @@
 #include "analyse/constrained_first_order.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace eomgen::runtime {
 
@@ -77,13 +78,29 @@ void remove_index(Eigen::MatrixXd& a, long k, bool row, bool column) {
 
 // A component on which no rate depends (its column of A zero to rounding) adds a zero eigenvalue
 // and nothing else: det(λI − A) = λ·det(λI − A without it). It is a family of steady motions
-// (the heading of a vehicle, its speed), left out like a cyclic coordinate, repeatedly.
-void leave_out_neutral_components(ManifoldLinearization& r) {
-  double scale = r.A.size() ? r.A.cwiseAbs().maxCoeff() : 0.0;
+// (the heading of a vehicle, its speed), left out like a cyclic coordinate, repeatedly. Zero
+// against the largest entry of A with its velocities measured in the system's rate ρ (ρ² the
+// largest ∂q''/∂q), so that every entry scales as 1/T with time: against A's own largest entry, a
+// Cartesian pendulum at a time scale of 1e-12 s (the 1 of q' = v beside g/l = 9.81e24) had lost
+// its velocities, then its positions, and the eigenvalue solver met an empty A.
+void leave_out_neutral_components(ManifoldLinearization& r, std::size_t coordinates) {
+  auto is_velocity = [&](long k) { return r.kept[static_cast<std::size_t>(k)] >= static_cast<int>(coordinates); };
+  double rate_squared = 0;
+  for (long i = 0; i < r.A.rows(); ++i)
+    for (long k = 0; k < r.A.cols(); ++k)
+      if (is_velocity(i) && !is_velocity(k)) rate_squared = std::max(rate_squared, std::abs(r.A(i, k)));
+  double rate = rate_squared > 0 ? std::sqrt(rate_squared) : 1.0;
+  // D⁻¹ A D with D = diag(1 for coordinates, ρ for velocities)
+  auto timed = [&](long i, long k) { return r.A(i, k) * (is_velocity(k) ? rate : 1.0) / (is_velocity(i) ? rate : 1.0); };
+  double scale = 0;
+  for (long i = 0; i < r.A.rows(); ++i)
+    for (long k = 0; k < r.A.cols(); ++k) scale = std::max(scale, std::abs(timed(i, k)));
   for (bool found = true; found;) {
     found = false;
     for (long k = 0; k < r.A.cols(); ++k) {
-      if (r.A.col(k).cwiseAbs().maxCoeff() > 1e-13 * scale) continue;
+      bool zero = true;
+      for (long i = 0; i < r.A.rows() && zero; ++i) zero = std::abs(timed(i, k)) <= 1e-13 * scale;
+      if (!zero) continue;
       r.neutral.push_back(r.kept[static_cast<std::size_t>(k)]);
       r.kept.erase(r.kept.begin() + k);
       remove_index(r.A, k, true, true);
@@ -133,7 +150,7 @@ ManifoldLinearization manifold_linearization(const Problem& problem, const std::
   r.B.resize(static_cast<long>(r.kept.size()), static_cast<long>(m.num_inputs));
   for (std::size_t i = 0; i < r.kept.size(); ++i)
     r.B.row(static_cast<long>(i)) = B.row(r.kept[i]).head(static_cast<long>(m.num_inputs));
-  leave_out_neutral_components(r);
+  leave_out_neutral_components(r, m.num_coordinates);
   return r;
 }
 

@@ -316,6 +316,26 @@ TEST(StabilityCommand, ASaturatedServoIsFoundWhereItComesToRestAtEveryTimeScale)
   }
 }
 
+// A Lagrange I model at rest where it hangs, at time scales of 1e-12 and 1e12 s (g in 1/T²): the
+// Cartesian pendulum's linearization on its rod is an oscillator of sqrt(g/l). Its velocities' columns
+// (entries of 1) beside the positions' (9.81e24) had been taken for columns no rate depends on, then
+// the positions' too, and the eigenvalue solver crashed (exit 139) on an empty A.
+TEST(StabilityCommand, ALagrangeOneModelIsLinearizedOnItsConstraintsAtEveryTimeScale) {
+  for (double T : {1e-12, 1.0, 1e12}) {
+    Output r = eomgen(fmt::format("stability '{}' --set g={:.17g} --at x=0 --at y=-1 --format json",
+                                  model_path("pendulum_cartesian"), 9.81 / (T * T)));
+    ASSERT_EQ(r.status, 0) << "T = " << T << "\n" << r.err;
+    Diagnostics diagnostics;
+    std::optional<JsonValue> json = parse_json(r.out, "stability", diagnostics);
+    ASSERT_TRUE(json) << r.out;
+    EXPECT_EQ(json->find("verdict")->text, "marginally_stable") << "T = " << T;
+    const JsonValue& eigenvalues = *json->find("eigenvalues");
+    ASSERT_EQ(eigenvalues.items.size(), 2u) << "T = " << T << "\n" << r.out;
+    for (const JsonValue& e : eigenvalues.items)
+      EXPECT_NEAR(std::abs(e.items.at(1).value) * T / std::sqrt(9.81), 1, 1e-9) << "T = " << T << "\n" << r.out;
+  }
+}
+
 TEST(StabilityCommand, AnAtThatNamesSomeStatesSolvesForTheRest) {
   for (double s : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
     std::string model = spherical_pendulum_on_time_scale(s);
