@@ -12,12 +12,12 @@
 #include "branched_tree.hpp"
 #include "floating_humanoid.hpp"
 #include "support/awkward_scalar.hpp"
+#include "support/scalar_agreement.hpp"
 
 namespace {
 
-double to_double(double v) { return v; }
-double to_double(long double v) { return static_cast<double>(v); }
-double to_double(awkward::Scalar v) { return v.value(); }
+using eomgen::test::largest_difference;
+using eomgen::test::to_double;
 
 // rhs, jacobian_state, mass_matrix and forcing at the default state moved by 0.1, in that order
 template <class T, class Robot>
@@ -31,14 +31,6 @@ std::vector<double> everything(const Robot&) {
   std::vector<double> values;
   for (const T& e : out) values.push_back(to_double(e));
   return values;
-}
-
-// largest difference relative to the largest number the functions give
-double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double worst = 0, scale = 1;
-  for (double e : b) scale = std::max(scale, std::abs(e));
-  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]) / scale);
-  return worst;
 }
 
 #define EOMGEN_ROBOT(NAME)                                                                                   \

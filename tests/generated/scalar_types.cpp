@@ -8,14 +8,10 @@
 #include "all_generated_headers.hpp"
 #include "generated/header_registry.hpp"
 #include "support/awkward_scalar.hpp"
+#include "support/scalar_agreement.hpp"
 
 namespace eomgen::test {
 namespace {
-
-inline double to_double(float v) { return v; }
-inline double to_double(double v) { return v; }
-inline double to_double(long double v) { return static_cast<double>(v); }
-inline double to_double(awkward::Scalar v) { return v.value(); }
 
 template <class T, class Array>
 std::vector<T> shifted(const Array& values, double by) {
@@ -23,16 +19,6 @@ std::vector<T> shifted(const Array& values, double by) {
   for (double v : values) out.push_back(T(v + by));
   out.push_back(T(0));  // never empty, so data() is valid for a model without inputs
   return out;
-}
-
-// normwise: relative to the largest number the header gives, because an entry that is the
-// small difference of large terms (a stiff spring next to a soft one) carries the rounding
-// error of those terms in double itself, so no scalar type can agree with it elementwise
-double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double worst = 0, scale = 1;
-  for (double v : b) scale = std::max(scale, std::abs(v));
-  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]) / scale);
-  return worst;
 }
 
 // every number a header's functions give at (near) the default state, in a fixed order
