@@ -272,7 +272,6 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
   return why + fmt::format(" at {}", configuration(*p.model, x));
 }
 
-
 // The quaternions of ball and free joints at the start: one of length 0 names no orientation (an
 // error, returned); with the projection on, they start unit, and a user's quaternion that was not
 // unit to nine digits is named in a warning (its rotation, that of q/|q|, stays as it was)

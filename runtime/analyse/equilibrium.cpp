@@ -174,8 +174,8 @@ double backtracked_fraction(double residual, const Residual& residual_after) {
   return fraction;
 }
 
-// The Newton step on the states `unknowns` (indices into x) that takes r, f's part at x minus a
-// constant, to zero: ∂f/∂q = −Q, ∂f/∂q' = −P (least squares when rank deficient)
+// The Newton step on the states `unknowns` (indices into x) that takes f, or r = f − const, to
+// zero: ∂f/∂q = −Q, ∂f/∂q' = −P (least squares when rank deficient)
 Eigen::VectorXd newton_step(const Derivatives& d, const std::vector<int>& unknowns, std::size_t n, const Eigen::VectorXd& r) {
   Eigen::MatrixXd J(n, unknowns.size());
   for (std::size_t k = 0; k < unknowns.size(); ++k) {
