@@ -331,8 +331,8 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
     result.failure = why;
     return result;
   }
-  bool projected = (lagrange1 || holonomic || m.num_quaternions) && settings.projection;
-  if (projected && !is_dae_integrator(settings.integrator)) f.projection = &projection;
+  if ((lagrange1 || holonomic || m.num_quaternions) && settings.projection && !is_dae_integrator(settings.integrator))
+    f.projection = &projection;
   double scale = mass_matrix_range(problem, settings.t_start, x).second, start_size = 0;
   for (double v : x) start_size = std::max(start_size, std::abs(v));
   record(problem, settings.t_start, x, result.trajectory);
@@ -403,7 +403,8 @@ SimulationResult simulate(const Problem& problem, const std::vector<double>& x0_
   result.max_velocity_residual = result.summary.largest_velocity_residual;
   result.projections = projection.projections();
   result.largest_quaternion_correction = std::max(result.largest_quaternion_correction, projection.largest_quaternion_correction());
-  if (m.num_quaternions && f.projection) result.quaternions_normalized = stepper->projects();
+  if (m.num_quaternions && f.projection)
+    result.quaternions_normalized = stepper->projects_after_every_step() ? "after every step" : "at the output times";
   if (!result.failed) refuse_exploded(problem, start_size, limit.beyond(), result);
   keep_row(settings, result, true);
   return result;

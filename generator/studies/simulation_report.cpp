@@ -38,8 +38,7 @@ static std::string constraint_summary(const eomgen_model_abi& m, const runtime::
 }
 
 // ball and free joints: whether the quaternions were kept unit, and how far |q| strayed from 1
-static std::string quaternion_summary(const runtime::SimulationSettings& settings, const eomgen_model_abi& m,
-                                      const runtime::SimulationResult& r, bool json) {
+static std::string quaternion_summary(const eomgen_model_abi& m, const runtime::SimulationResult& r, bool json) {
   const std::string& when = r.quaternions_normalized;
   if (json)
     return fmt::format(", \"quaternions\": {{\"count\": {}, \"normalized\": {}, \"max_correction\": {}, "
@@ -49,9 +48,8 @@ static std::string quaternion_summary(const runtime::SimulationSettings& setting
   if (!when.empty())
     return fmt::format("  quaternions: normalized {} (largest correction of |q| {:.3e})\n", when,
                        r.largest_quaternion_correction);
-  return fmt::format("  quaternions: not normalized ({}); largest ||q| - 1| over the output times {:.3e} (the rotation "
-                     "is that of q/|q|, so the motion does not depend on it)\n",
-                     settings.projection ? "the reference integrator does not project" : "no projection asked for",
+  return fmt::format("  quaternions: not normalized (the projection is off); largest ||q| - 1| over the output times "
+                     "{:.3e} (the rotation is that of q/|q|, so the motion does not depend on it)\n",
                      r.largest_quaternion_norm_error);
 }
 
@@ -91,7 +89,7 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
         m.name, settings.integrator, settings.t_start, r.summary.last_time, r.summary.rows, s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
         conservative ? "true" : "false", drift, first_integral_summary(m, r.summary, unforced, true),
-        m.num_constraints ? constraint_summary(m, r, true) : "", m.num_quaternions ? quaternion_summary(settings, m, r, true) : "",
+        m.num_constraints ? constraint_summary(m, r, true) : "", m.num_quaternions ? quaternion_summary(m, r, true) : "",
         std::isnan(r.error_estimate) ? std::string()
                                      : fmt::format(", \"reference_error_estimate\": {:.6g}, \"reference_step\": {:.6g}",
                                                    r.error_estimate, r.reference_step),
@@ -109,7 +107,7 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
                                         : " (the model does not conserve T + V)");
   std::cout << first_integral_summary(m, r.summary, unforced, false);
   if (m.num_constraints) std::cout << constraint_summary(m, r, false);
-  if (m.num_quaternions) std::cout << quaternion_summary(settings, m, r, false);
+  if (m.num_quaternions) std::cout << quaternion_summary(m, r, false);
   if (!std::isnan(r.error_estimate))
     std::cout << fmt::format("  reference: Gragg–Bulirsch–Stoer extrapolation of order 16 in {}, macro step {:.3g} s; "
                              "estimated error {:.2e} (largest difference from the run at twice the step, relative to "

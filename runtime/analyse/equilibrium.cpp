@@ -1,6 +1,7 @@
 #include "analyse/equilibrium.hpp"
 
 #include <cmath>
+#include <complex>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
 #include "analyse/state_check.hpp"
+#include "analyse/system_scales.hpp"
 #include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
@@ -241,10 +243,12 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
 Equilibrium come_to_rest(const Problem& problem, std::vector<double> x, const std::vector<int>& unknowns) {
   const eomgen_model_abi& m = *problem.model;
   std::size_t n = m.num_coordinates;
-  Eigen::VectorXcd rates = state_jacobian(problem, 0.0, x).eigenvalues();
-  double fastest = rates.cwiseAbs().maxCoeff(), slowest = fastest;
-  for (long k = 0; k < rates.size(); ++k)
-    if (std::abs(rates[k]) > 1e-6 * fastest) slowest = std::min(slowest, std::abs(rates[k]));
+  std::vector<std::complex<double>> rates = balanced_eigenvalues(state_jacobian(problem, 0.0, x));
+  double fastest = 0;
+  for (const std::complex<double>& r : rates) fastest = std::max(fastest, std::abs(r));
+  double slowest = fastest;
+  for (const std::complex<double>& r : rates)
+    if (std::abs(r) > 1e-6 * fastest) slowest = std::min(slowest, std::abs(r));
   Equilibrium rest;
   if (!(fastest > 0) || !std::isfinite(fastest)) return rest;
   const double h = 0.2 / fastest, c = 2 * slowest, start = forcing_residual(problem, x);

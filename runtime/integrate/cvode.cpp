@@ -78,7 +78,7 @@ class Cvode : public Stepper {
     return false;
   }
 
-  const char* projects() const override { return adams_ ? "at the output times" : "after every step"; }
+  bool projects_after_every_step() const override { return !adams_; }
 
   SolverStatistics statistics() const override {
     SolverStatistics s = counters();

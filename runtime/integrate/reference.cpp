@@ -72,7 +72,7 @@ class Reference : public Stepper {
   }
 
   double error_estimate() const override { return estimate_; }
-  const char* projects() const override { return ""; }
+  bool projects_after_every_step() const override { return false; }
   double reference_step() const override { return step_; }
 
  private:

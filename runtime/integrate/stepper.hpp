@@ -52,9 +52,10 @@ class Stepper {
   /// The integrator's own estimate of its global error (the reference integrator only).
   virtual double error_estimate() const { return NAN; }
   virtual double reference_step() const { return 0; }
-  /// When RightHandSide::projection, if set, is applied: "after every step", "at the output
-  /// times" (CVODE's Adams, which has no projection of its own), or "" (never).
-  virtual const char* projects() const { return "after every step"; }
+  /// Whether RightHandSide::projection, when set, is applied after every step (not by CVODE's
+  /// Adams, which has no projection of its own, nor by the reference integrator); the simulation
+  /// normalizes the quaternions of the rows it records in any case.
+  virtual bool projects_after_every_step() const { return true; }
 
   double failure_time = 0;
   int flag = 0;

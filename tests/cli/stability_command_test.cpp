@@ -303,8 +303,8 @@ TEST(StabilityCommand, ASaturatedServoIsFoundWhereItComesToRestAtEveryTimeScale)
   double phi = 0.4;  // kp (u − φ) = m g s sin φ, by Newton's method
   for (int k = 0; k < 50; ++k) phi -= (kp * (u - phi) - m * g * s * std::sin(phi)) / (-kp - m * g * s * std::cos(phi));
   for (double T : {1e-12, 1.0, 1e12}) {
-    std::string set = fmt::format(" --set u={} --set g={:.17g} --set kp={:.17g} --set kd={:.17g} --set tau_max={:.17g}", u,
-                                  g * T * T, kp * T * T, 2.0 * T, 6.0 * T * T);
+    std::string set = fmt::format(" --set u={} --set m={} --set s={} --set g={:.17g} --set kp={:.17g} --set kd={:.17g} "
+                                  "--set tau_max={:.17g}", u, m, s, g / (T * T), kp / (T * T), 2.0 / T, 6.0 / (T * T));
     Output r = eomgen("stability '" + model_path("servo_pendulum") + "'" + set + " --format json");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("comes to rest"), std::string::npos) << r.err;

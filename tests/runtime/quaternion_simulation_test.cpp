@@ -59,6 +59,7 @@ double largest_difference(const runtime::Trajectory& a, const runtime::Trajector
 
 TEST(Quaternions, TheProjectionKeepsThemUnitWithoutChangingTheMotion) {
   // Gauss–Legendre keeps qᵀq, a quadratic invariant of q' = ½ q ⊗ ω, by itself; the others drift
+  // (the reference integrator, which the compiled-in models lack, in Simulate.ReportsWhether...)
   for (const char* integrator : {"arkode-dp5", "cvode-bdf", "cvode-adams", "rk4", "gauss-legendre"}) {
     SCOPED_TRACE(integrator);
     runtime::SimulationResult kept = tumble(integrator, true, 1e-12), free = tumble(integrator, false, 1e-12);

@@ -287,6 +287,11 @@ TEST(Simulate, ReportsWhetherTheQuaternionsWereKeptUnit) {
   ASSERT_EQ(free.status, 0) << free.err;
   EXPECT_NE(free.out.find("\"normalized\": null"), std::string::npos) << free.out;
   EXPECT_GT(json_number(free.out, "max_norm_error"), 1e-12) << "arkode-dp5 at rtol 1e-8 drifts |q|\n" << free.out;
+  // the reference integrator has no projection of its own: the rows it gives are normalized
+  CommandRun wide = eomgen("simulate " + model + " --t-end 2 --integrator reference --format json", shared_cache());
+  ASSERT_EQ(wide.status, 0) << wide.err;
+  EXPECT_NE(wide.out.find("\"normalized\": \"at the output times\""), std::string::npos) << wide.out;
+  EXPECT_LE(json_number(wide.out, "max_norm_error"), 4e-16) << wide.out;
   CommandRun zero = eomgen("simulate " + model + " --initial qw=0", shared_cache());
   EXPECT_EQ(zero.status, 3);
   EXPECT_NE(zero.err.find("the quaternion (qw, qx, qy, qz) is 0 at the start"), std::string::npos) << zero.err;
