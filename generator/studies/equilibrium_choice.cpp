@@ -121,6 +121,12 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
       std::cerr << "eomgen: note: " << out.note << "\n";
       return std::nullopt;
     }
+    if (!out.unmet.empty()) {
+      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: its configuration does not "
+                               "meet the constraints: {}\n  hint: name coordinates that meet them (the other coordinates "
+                               "are as in the model), or leave out --at to search for an equilibrium on them\n", out.unmet);
+      return exit_user_error;
+    }
     if (!out.moving.empty()) {
       std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: {} moves a coordinate that "
                                "is not cyclic, so the configuration and with it the forces change\n  hint: only cyclic "

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "analyse/baumgarte_scale.hpp"
 #include "analyse/conservation.hpp"
 #include "analyse/integrator_choice.hpp"
 #include "analyse/output_interval.hpp"
@@ -43,6 +44,26 @@ void stiffness_warning(const runtime::Problem& p, const std::vector<double>& x0,
                            "is that many times quicker than its slowest motion); {} is limited by stability there, not by "
                            "accuracy, and took {} steps: cvode-bdf or arkode-dirk take far fewer\n",
                            ratio, s.integrator, r.statistics.steps);
+}
+
+// Baumgarte's gains far from the system's rate (analyse/baumgarte_scale.hpp): much faster, they
+// make the equations stiff; much slower, they correct nothing between projections
+void baumgarte_warning(const runtime::Problem& p, const std::vector<double>& x0, const runtime::SimulationSettings& s) {
+  const eomgen_model_abi& m = *p.model;
+  if (!s.baumgarte || m.num_multipliers == 0 || runtime::is_dae_integrator(s.integrator)) return;
+  double alpha = s.baumgarte_alpha >= 0 ? s.baumgarte_alpha : m.baumgarte_alpha;
+  double beta = s.baumgarte_beta >= 0 ? s.baumgarte_beta : m.baumgarte_beta;
+  double ratio = runtime::baumgarte_gain_ratio(p, x0, alpha, beta);
+  if (ratio <= 1e3 && ratio >= 1e-3) return;
+  std::cerr << fmt::format("eomgen: warning: Baumgarte's gains (alpha {:g}, beta {:g} 1/s{}) are {:.2g} times the system's "
+                           "rate: {}; --baumgarte-alpha and --baumgarte-beta near the system's rate ({:.3g} 1/s), or "
+                           "--stabilization projection, keep the constraints without that\n",
+                           alpha, beta, s.baumgarte_alpha < 0 && s.baumgarte_beta < 0 ? ", the model's" : "", ratio,
+                           ratio > 1 ? "a constraint error decays that much faster than the motion, which makes the "
+                                       "equations stiff and a run at tight tolerances unreliable"
+                                     : "a constraint error is corrected that much more slowly than the motion, which is "
+                                       "no correction at all",
+                           std::max(alpha, beta) / ratio);
 }
 
 // the scene's time span and output interval, unless given on the command line
@@ -137,6 +158,7 @@ int simulate_model(const SimulationOptions& options) {
   std::cerr << fmt::format("eomgen: simulating {} with {} to t = {:g}\n", m.name, settings.integrator, o.settings.t_end);
   settings.baumgarte = o.stabilization == "both" || o.stabilization == "baumgarte";
   settings.projection = o.stabilization == "both" || o.stabilization == "projection";
+  baumgarte_warning(problem, x0, settings);
   runtime::SimulationResult result;
   TrajectoryOutput output(m, o.csv);
   std::optional<runtime::AnimationRecorder> animation;

@@ -6,8 +6,10 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "analyse/constrained_equilibrium.hpp"
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
+#include "analyse/rate_balance.hpp"
 #include "analyse/state_check.hpp"
 #include "analyse/system_scales.hpp"
 #include "integrate/quaternion_norms.hpp"
@@ -87,16 +89,29 @@ double step_fraction(double largest, double residual, const Residual& residual_a
 }
 
 // Appell's equations: a steady motion has x' = 0 on the reduced state (the non-cyclic
-// coordinates stand still, the pseudo-velocities are constant)
-Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
-  Equilibrium e;
-  e.residual = reduced_rate(problem, state).cwiseAbs().maxCoeff();
+// coordinates stand still, the pseudo-velocities are constant), each rate against the terms it sums
+// (rate_balance.hpp), times `margin`
+RateBalance first_order_balance(const Problem& problem, const std::vector<double>& state, double margin) {
+  const eomgen_model_abi& m = *problem.model;
+  std::vector<int> kept = reduced_state(m);
+  Eigen::VectorXd values(long(kept.size()));
+  std::vector<bool> is_coordinate;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    values[long(i)] = state[std::size_t(kept[i])];
+    is_coordinate.push_back(kept[i] < int(m.num_coordinates));
+  }
   // at least one unit of configuration here: a steady motion's default state is that motion, its
   // rate zero to rounding alone (the Whipple bicycle's upright run, 1e-14 at q = 0), which sets no
   // scale
-  e.tolerance = 1e-9 * reduced_jacobian(problem, state).cwiseAbs().maxCoeff() *
-                std::max(1.0, configuration_size(*problem.model, state));
-  e.converged = e.residual <= e.tolerance;
+  auto rates = [](const Problem& at, const std::vector<double>& y) { return reduced_rate(at, y); };
+  return rate_balance(reduced_rate(problem, state), reduced_jacobian(problem, state), values, is_coordinate,
+                      std::max(1.0, configuration_size(m, state)), rounding_noise(rates, problem, state), margin);
+}
+
+Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
+  RateBalance b = first_order_balance(problem, state, 1.0);
+  Equilibrium e;
+  e.residual = b.residual, e.tolerance = b.tolerance, e.converged = b.balanced;
   e.state = std::move(state);
   return e;
 }
@@ -112,7 +127,7 @@ Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
     Eigen::VectorXd r = reduced_rate(problem, x);
     Eigen::MatrixXd jacobian = reduced_jacobian(problem, x);
     // done at a thousandth of what counts as zero, in the model's scales (not 1e-15 in its units)
-    if (!r.allFinite() || r.cwiseAbs().maxCoeff() <= 1e-12 * jacobian.cwiseAbs().maxCoeff()) break;
+    if (!r.allFinite() || first_order_balance(problem, x, 1e-3).balanced) break;
     Eigen::MatrixXd J = jacobian.leftCols(static_cast<long>(unknowns.size()));
     Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
     auto moved = [&](double fraction) {
@@ -138,9 +153,7 @@ Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
 
 }  // namespace
 
-// a non-cyclic coordinate with q' != 0 changes, and with it the equations: no equilibrium
-// however small f is there (Hiller §7.1); cyclic ones may move at constant speed
-static std::string moving_coordinates(const eomgen_model_abi& m, const std::vector<double>& x) {
+std::string moving_coordinates(const eomgen_model_abi& m, const std::vector<double>& x) {
   std::string moving;
   for (std::size_t i = 0; i < m.num_coordinates; ++i)
     if (!m.is_cyclic[i] && x[m.num_coordinates + i] != 0)
@@ -150,9 +163,8 @@ static std::string moving_coordinates(const eomgen_model_abi& m, const std::vect
 }
 
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state) {
-  // Lagrange I: q'' = 0 and the non-cyclic coordinates at rest, as for a first-order form
-  if (has_pseudo_velocities(*problem.model) || has_multipliers(*problem.model))
-    return check_first_order(problem, std::move(state));
+  if (has_multipliers(*problem.model)) return check_constrained_equilibrium(problem, std::move(state));
+  if (has_pseudo_velocities(*problem.model)) return check_first_order(problem, std::move(state));
   Derivatives d = evaluate(problem, state);
   Equilibrium e;
   e.moving = moving_coordinates(*problem.model, state);
@@ -277,7 +289,7 @@ Equilibrium come_to_rest(const Problem& problem, std::vector<double> x, const st
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
   const eomgen_model_abi& m = *problem.model;
   if (has_pseudo_velocities(m)) return find_first_order(problem, start);
-  if (has_multipliers(m)) return check_first_order(problem, start);  // Newton would leave the constraint manifold
+  if (has_multipliers(m)) return find_constrained_equilibrium(problem, start);
   std::size_t n = m.num_coordinates;
   std::vector<double> at_rest = start;
   std::vector<int> unknowns, cyclic_velocities;  // indices into the state

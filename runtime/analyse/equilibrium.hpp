@@ -18,8 +18,14 @@ struct Equilibrium {
   bool converged = false;
   int iterations = 0;
   std::string moving;  // non-cyclic coordinates whose velocity is not zero: the state moves
+  std::string unmet;   // Lagrange I: the constraints the configuration does not meet, and by how much
   std::string note;    // what the search did besides Newton from the start, for the report
 };
+
+/// The non-cyclic coordinates whose velocity in x is not zero, "name = value" each: a state where
+/// any moves changes its configuration, and with it the equations, so it is no equilibrium however
+/// small the forces are there (Hiller §7.1); cyclic ones may move at constant speed.
+std::string moving_coordinates(const eomgen_model_abi& m, const std::vector<double>& x);
 
 /// Checks a fully given state: named values, other coordinates at `start`, other velocities zero.
 Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state);

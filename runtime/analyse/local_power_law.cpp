@@ -51,13 +51,20 @@ std::vector<double> nonlinearity_lengths(const Problem& p, const std::vector<dou
   const eomgen_model_abi& m = *p.model;
   const std::vector<double>& radii = probe_radii();
   std::vector<double> at_x(m.num_states), moved(m.num_states), lengths(m.num_states, INFINITY);
-  m.rhs(0.0, x.data(), p.held_inputs(), p.parameters.data(), at_x.data());
+  // a Lagrange I model's rates without Baumgarte's terms, whose gains are the model's rates in 1/s
+  // and not the system's: at a time scale of 1e12 s they broke a Cartesian pendulum's law at 1e-9
+  // of its rod's length instead of 0.1
+  auto rate = [&](const std::vector<double>& y, std::vector<double>& out) {
+    if (m.num_multipliers) m.rhs_stabilized(0.0, y.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, out.data());
+    else m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), out.data());
+  };
+  rate(x, at_x);
   for (std::size_t component = 0; component < m.num_states; ++component) {
     std::vector<std::vector<double>> changes(m.num_states, std::vector<double>(radii.size(), NAN));
     for (std::size_t k = 0; k < radii.size(); ++k) {
       std::vector<double> y = x;
       y[component] += radii[k];
-      m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), moved.data());
+      rate(y, moved);
       for (std::size_t row = 0; row < m.num_states; ++row) changes[row][k] = moved[row] - at_x[row];
     }
     for (const auto& row : changes) {

@@ -131,8 +131,10 @@ bool ConstraintProjection::project_positions(double t, double* x) {
       return false;
     Eigen::VectorXd step = Ch.transpose() * normal.solve(g);
     for (std::size_t j = 0; j < n; ++j) x[j] -= step[j];
-    if (step.lpNorm<Eigen::Infinity>() < 1e-15 * (1 + Eigen::Map<Eigen::VectorXd>(x, n).lpNorm<Eigen::Infinity>()))
-      return true;
+    // a step within rounding of the configuration's size (one unit only where it is all zero): with
+    // a floor of one unit, a rod of 1e-12 m stopped after its first step, 7e-10 of its length off
+    double size = Eigen::Map<Eigen::VectorXd>(x, n).lpNorm<Eigen::Infinity>();
+    if (step.lpNorm<Eigen::Infinity>() < 1e-15 * (size > 0 ? size : 1.0)) return true;
   }
   return false;
 }

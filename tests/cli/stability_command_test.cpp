@@ -8,6 +8,7 @@
 #include <regex>
 #include <tuple>
 
+#include <Eigen/Dense>
 #include <fmt/format.h>
 
 #include "parse/json_reader.hpp"
@@ -334,6 +335,87 @@ TEST(StabilityCommand, ALagrangeOneModelIsLinearizedOnItsConstraintsAtEveryTimeS
     for (const JsonValue& e : eigenvalues.items)
       EXPECT_NEAR(std::abs(e.items.at(1).value) * T / std::sqrt(9.81), 1, 1e-9) << "T = " << T << "\n" << r.out;
   }
+}
+
+// the Cartesian pendulum with a rod of length L released at 0.5 rad (its file's initial values
+// scaled), written to a file of its own
+std::string cartesian_pendulum_of_length(double L) {
+  std::string text = read_file(model_path("pendulum_cartesian"));
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"l = 1.0", fmt::format("l = {:.17g}", L)},
+                                 {"initial = 0.479425538604203", fmt::format("initial = {:.17g}", L * std::sin(0.5))},
+                                 {"initial = -0.877582561890373", fmt::format("initial = {:.17g}", -L * std::cos(0.5))}}) {
+    std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  return write_file(fmt::format("pendulum_cartesian_{:g}.toml", L), text);
+}
+
+// Lagrange I: a configuration off equilibrium is refused by each rate against its own terms, not
+// against the 1 of q' = v (at 1e12 s, q'' of 4e-24 had passed), one off the rod is refused as such,
+// and the search from 0.5 rad finds the hanging pendulum, whose long runs keep the rod by projection
+// alone (with Baumgarte's gains of 10/s against a period of 2e12 s, BDF gave up: "unstable")
+TEST(StabilityCommand, ALagrangeOneEquilibriumIsSearchedAndCheckedOnItsConstraintsAtEveryScale) {
+  for (auto [T, L] : {std::pair{1e-12, 1.0}, {1.0, 1.0}, {1e12, 1.0}, {1.0, 1e-12}, {1.0, 1e12}, {1e12, 1e12}}) {
+    std::string where = fmt::format("T = {:g} s, L = {:g} m", T, L);
+    std::string model = fmt::format("stability '{}' --set g={:.17g}", cartesian_pendulum_of_length(L), 9.81 * L / (T * T));
+    Output released = eomgen(model + fmt::format(" --at x={:.17g} --at y={:.17g}", L * std::sin(0.5), -L * std::cos(0.5)));
+    EXPECT_EQ(released.status, 2) << where;
+    EXPECT_NE(released.err.find("is not an equilibrium: the largest residual of the equations of motion"), std::string::npos)
+        << where << "\n" << released.err;
+    Output off_the_rod = eomgen(model + fmt::format(" --at x=0 --at y={:.17g}", -1.1 * L));
+    EXPECT_EQ(off_the_rod.status, 2) << where;
+    EXPECT_NE(off_the_rod.err.find("does not meet the constraints: rod = "), std::string::npos) << where << "\n" << off_the_rod.err;
+    EXPECT_EQ(eomgen(model + fmt::format(" --at x=0 --at y={:.17g}", -L)).status, 0) << where;
+    Output searched = eomgen(model + " --format json");
+    ASSERT_EQ(searched.status, 0) << where << "\n" << searched.err;
+    Diagnostics diagnostics;
+    std::optional<JsonValue> json = parse_json(searched.out, "stability", diagnostics);
+    ASSERT_TRUE(json) << searched.out;
+    const JsonValue& equilibrium = *json->find("equilibrium");
+    EXPECT_NEAR(at(equilibrium, "x") / L, 0, 1e-12) << where;
+    EXPECT_NEAR(at(equilibrium, "y") / L, -1, 1e-12) << where;
+    EXPECT_EQ(json->find("verdict")->text, "marginally_stable") << where;
+    for (const JsonValue& e : json->find("eigenvalues")->items)
+      EXPECT_NEAR(std::abs(e.items.at(1).value) * T / std::sqrt(9.81), 1, 1e-9) << where;
+    EXPECT_EQ(json->find("critical_case")->find("nonlinear_verdict")->text, "stable") << where << "\n" << searched.out;
+  }
+}
+
+// Appell: the rolling disk tilted at rest falls, and is refused at every time scale T (at 1e12 s
+// its rate of 1e-23 had passed against the 1 of q' = W s); upright and spinning, it rolls steadily
+TEST(StabilityCommand, AnAppellSteadyMotionIsCheckedRateByRateAtEveryTimeScale) {
+  for (double T : {1e-12, 1.0, 1e12}) {
+    std::string model = fmt::format("stability '{}' --set g={:.17g}", model_path("rolling_disk"), 9.81 / (T * T));
+    Output tilted = eomgen(model + " --at theta=1.4");
+    EXPECT_EQ(tilted.status, 2) << "T = " << T << "\n" << tilted.out;
+    EXPECT_NE(tilted.err.find("is not an equilibrium"), std::string::npos) << "T = " << T << "\n" << tilted.err;
+    Output rolling = eomgen(model + fmt::format(" --at theta={:.17g} --at 'der(phi)={:.17g}'", M_PI / 2, 15 / T));
+    EXPECT_EQ(rolling.status, 0) << "T = " << T << "\n" << rolling.err;
+    EXPECT_NE(rolling.out.find("verdict: marginally_stable"), std::string::npos) << "T = " << T << "\n" << rolling.out;
+  }
+}
+
+// The four-bar's equilibrium found on its loop, checked against its potential written out here:
+// V's gradient is normal to the loop there (no component along the loop's one tangent)
+TEST(StabilityCommand, AFourBarsEquilibriumIsWhereItsPotentialIsStationaryOnItsLoop) {
+  JsonValue json = run_json("stability '" + model_path("four_bar_linkage") + "'");
+  const JsonValue& equilibrium = *json.find("equilibrium");
+  const double a = 0.2, b = 0.5, c = 0.4, d = 0.45, g = 9.81;
+  double c1 = at(equilibrium, "crank"), c2 = at(equilibrium, "coupler"), c3 = at(equilibrium, "rocker"), c12 = c1 + c2;
+  // the pin: a (cos c1, sin c1) + b (cos c12, sin c12) = (d, 0) + c (cos c3, sin c3)
+  EXPECT_NEAR(a * std::cos(c1) + b * std::cos(c12) - d - c * std::cos(c3), 0, 1e-12);
+  EXPECT_NEAR(a * std::sin(c1) + b * std::sin(c12) - c * std::sin(c3), 0, 1e-12);
+  // the pin's two gradients in (crank, coupler, rocker); the loop's tangent is normal to both
+  Eigen::Vector3d pin_x(-a * std::sin(c1) - b * std::sin(c12), -b * std::sin(c12), c * std::sin(c3));
+  Eigen::Vector3d pin_y(a * std::cos(c1) + b * std::cos(c12), b * std::cos(c12), -c * std::cos(c3));
+  Eigen::Vector3d tangent = pin_x.cross(pin_y).normalized();
+  // V = g (0.3 a/2 sin c1 + 0.6 (a sin c1 + b/2 sin c12 + 0.01 cos c12) + 0.5 c/2 sin c3)
+  double coupler = 0.6 * g * (b / 2 * std::cos(c12) - 0.01 * std::sin(c12));
+  Eigen::Vector3d gradient(0.3 * g * a / 2 * std::cos(c1) + 0.6 * g * a * std::cos(c1) + coupler, coupler,
+                           0.5 * g * c / 2 * std::cos(c3));
+  EXPECT_NEAR(gradient.dot(tangent) / gradient.norm(), 0, 1e-9) << "crank " << c1 << ", coupler " << c2 << ", rocker " << c3;
+  EXPECT_EQ(json.find("verdict")->text, "unstable");
 }
 
 TEST(StabilityCommand, AnAtThatNamesSomeStatesSolvesForTheRest) {

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <regex>
 
+#include <fmt/format.h>
+
 #include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
@@ -319,6 +321,31 @@ TEST(ConstrainedInitialState, TheUsersVelocitiesWinWhereTheConstraintsAllow) {
   ASSERT_TRUE(std::regex_search(both.err, m, std::regex(R"(changed der\(y\) from -2 to ([-0-9.e]+) \(by ([-+0-9.e]+)\))")))
       << both.err;
   EXPECT_NEAR(std::stod(m[1]), -x * 1.0 / y, 1e-8);
+}
+
+// Baumgarte's gains are rates in 1/s: simulate says where they are far from the system's rate (the
+// rod pendulum at time scales T of 1e12 and 1e-12 s), and not where they are near it or not used
+TEST(BaumgarteGains, AreSaidToBeFarFromTheSystemsRateWhereTheyAre) {
+  auto run = [](double T, const std::string& options) {
+    return run_eomgen(fmt::format("simulate '{}' --set g={:.17g} --t-end {:g} --dt-out {:g} {}", model_path("pendulum_cartesian"),
+                                  9.81 / (T * T), 10 * T, T / 10, options));
+  };
+  const std::string faster = "times the system's rate: a constraint error decays that much faster than the motion";
+  const std::string slower = "times the system's rate: a constraint error is corrected that much more slowly";
+  for (double T : {1e12, 1e-12}) {
+    CommandOutput far = run(T, "");
+    ASSERT_EQ(far.status, 0) << far.err;
+    EXPECT_NE(far.err.find(T > 1 ? faster : slower), std::string::npos) << "T = " << T << "\n" << far.err;
+    EXPECT_NE(far.err.find("(alpha 10, beta 10 1/s, the model's)"), std::string::npos) << far.err;
+    for (const std::string& kept : {std::string("--stabilization projection"),
+                                    fmt::format("--baumgarte-alpha {:g} --baumgarte-beta {:g}", 3 / T, 3 / T)}) {
+      CommandOutput near = run(T, kept);
+      ASSERT_EQ(near.status, 0) << near.err;
+      EXPECT_EQ(near.err.find("Baumgarte's gains"), std::string::npos) << "T = " << T << ", " << kept << "\n" << near.err;
+    }
+  }
+  CommandOutput usual = run(1.0, "");
+  EXPECT_EQ(usual.err.find("Baumgarte's gains"), std::string::npos) << usual.err;
 }
 
 std::string verdict_of(const CommandOutput& r) {

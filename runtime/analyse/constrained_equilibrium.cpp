@@ -1,0 +1,167 @@
+#include "analyse/constrained_equilibrium.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include "analyse/first_order_form.hpp"
+#include "analyse/rate_balance.hpp"
+#include "integrate/projection.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
+
+// x' and ∂x'/∂x with Baumgarte's gains at zero
+struct PlainRates {
+  Eigen::VectorXd rate;
+  RowMajor jacobian;
+};
+
+PlainRates plain_rates(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  PlainRates r{Eigen::VectorXd(m.num_states), RowMajor(m.num_states, m.num_states)};
+  m.rhs_stabilized(0.0, x.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, r.rate.data());
+  m.jacobian_state_stabilized(0.0, x.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, r.jacobian.data());
+  return r;
+}
+
+// the size of the configuration as given: the largest non-cyclic |q|, one unit where all are zero
+// (not the model's default state, which a changed parameter leaves behind: a rod of 1e-12 m)
+double given_size(const eomgen_model_abi& m, const std::vector<double>& x) {
+  double size = 0;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+    if (!m.is_cyclic[i]) size = std::max(size, std::abs(x[i]));
+  return size > 0 && std::isfinite(size) ? size : 1.0;
+}
+
+// ∂g/∂q: the holonomic rows of the constraint Jacobian, and g
+struct Holonomic {
+  RowMajor G;
+  Eigen::VectorXd g;
+  std::vector<std::size_t> rows;
+};
+
+Holonomic holonomic_constraints(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t c = m.num_constraints, n = m.num_coordinates;
+  RowMajor C(c, n);
+  std::vector<double> position(c), velocity(c);
+  m.constraint_jacobian(0.0, x.data(), p.parameters.data(), C.data());
+  m.constraint_residuals(0.0, x.data(), p.parameters.data(), position.data(), velocity.data());
+  Holonomic h;
+  for (std::size_t i = 0; i < c; ++i)
+    if (m.constraint_is_holonomic[i]) h.rows.push_back(i);
+  h.G.resize(long(h.rows.size()), long(n));
+  h.g.resize(long(h.rows.size()));
+  for (std::size_t k = 0; k < h.rows.size(); ++k) {
+    h.G.row(long(k)) = C.row(long(h.rows[k]));
+    h.g[long(k)] = position[h.rows[k]];
+  }
+  return h;
+}
+
+// the holonomic constraints x leaves, beyond 1e-9 of |∂g_r/∂q|·|q|
+std::string unmet_constraints(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  Holonomic h = holonomic_constraints(p, x);
+  double size = given_size(m, x);
+  std::string unmet;
+  for (std::size_t k = 0; k < h.rows.size(); ++k) {
+    double tolerance = 1e-9 * h.G.row(long(k)).lpNorm<Eigen::Infinity>() * size, g = h.g[long(k)];
+    if (!(std::abs(g) <= tolerance))
+      unmet += fmt::format("{}{} = {:.3g} (tolerance {:.3g})", unmet.empty() ? "" : ", ", m.constraint_names[h.rows[k]], g,
+                           tolerance);
+  }
+  return unmet;
+}
+
+// an orthonormal basis of the directions that keep g(q) = 0 to first order
+Eigen::MatrixXd tangent_basis(const RowMajor& G, long n) {
+  if (G.rows() == 0) return Eigen::MatrixXd::Identity(n, n);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(G, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  long rank = 0;
+  while (rank < s.size() && s[rank] > 1e-10 * s[0]) ++rank;
+  return svd.matrixV().rightCols(n - rank);
+}
+
+// q'' at x, the accelerations of the velocities' rows
+Eigen::VectorXd accelerations(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  return plain_rates(p, x).rate.tail(long(m.num_states - m.num_coordinates));
+}
+
+RateBalance balance_at(const Problem& p, const std::vector<double>& x, double margin) {
+  const eomgen_model_abi& m = *p.model;
+  PlainRates r = plain_rates(p, x);
+  std::vector<int> kept = reduced_state(m);
+  Eigen::VectorXd rates(long(kept.size())), values(long(kept.size()));
+  Eigen::MatrixXd J(long(kept.size()), long(kept.size()));
+  std::vector<bool> is_coordinate;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    rates[long(i)] = r.rate[kept[i]];
+    values[long(i)] = x[std::size_t(kept[i])];
+    is_coordinate.push_back(kept[i] < int(m.num_coordinates));
+    for (std::size_t j = 0; j < kept.size(); ++j) J(long(i), long(j)) = r.jacobian(kept[i], kept[j]);
+  }
+  auto kept_rates = [&](const Problem& at, const std::vector<double>& y) {
+    Eigen::VectorXd all = plain_rates(at, y).rate, out(long(kept.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) out[long(i)] = all[kept[i]];
+    return out;
+  };
+  return rate_balance(rates, J, values, is_coordinate, given_size(m, x), rounding_noise(kept_rates, p, x), margin);
+}
+
+}  // namespace
+
+Equilibrium check_constrained_equilibrium(const Problem& problem, std::vector<double> state) {
+  Equilibrium e;
+  e.moving = moving_coordinates(*problem.model, state);
+  e.unmet = unmet_constraints(problem, state);
+  RateBalance b = balance_at(problem, state, 1.0);
+  e.residual = b.residual, e.tolerance = b.tolerance;
+  e.converged = b.balanced && e.moving.empty() && e.unmet.empty();
+  e.state = std::move(state);
+  return e;
+}
+
+Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vector<double>& start) {
+  const eomgen_model_abi& m = *problem.model;
+  std::size_t n = m.num_coordinates;
+  std::vector<double> x = start;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!m.is_cyclic[i]) x[n + i] = 0;
+  ConstraintProjection projection(problem);
+  int iterations = 0;
+  if (projection.make_consistent(0.0, x.data())) {
+    for (; iterations < 100 && !balance_at(problem, x, 1e-3).balanced; ++iterations) {
+      PlainRates r = plain_rates(problem, x);
+      Eigen::VectorXd ddq = r.rate.tail(long(n));
+      Eigen::MatrixXd N = tangent_basis(holonomic_constraints(problem, x).G, long(n));
+      Eigen::MatrixXd stiffness = N.transpose() * r.jacobian.bottomLeftCorner(long(n), long(n)) * N;
+      Eigen::VectorXd step = N * stiffness.completeOrthogonalDecomposition().solve(-N.transpose() * ddq);
+      for (std::size_t i = 0; i < n; ++i)
+        if (m.is_cyclic[i]) step[long(i)] = 0;
+      double before = ddq.norm(), fraction = 1;
+      std::vector<double> y;
+      for (int halvings = 0; halvings < 60; ++halvings, fraction /= 2) {
+        y = x;
+        for (std::size_t i = 0; i < n; ++i) y[i] += fraction * step[long(i)];
+        if (projection.project(0.0, y.data()) && accelerations(problem, y).norm() < before) break;
+        y.clear();
+      }
+      if (y.empty()) break;  // no part of the step lowers q'': a minimum of |q''| that is not zero
+      x = std::move(y);
+    }
+  }
+  Equilibrium e = check_constrained_equilibrium(problem, std::move(x));
+  e.iterations = iterations;
+  return e;
+}
+
+}  // namespace eomgen::runtime
