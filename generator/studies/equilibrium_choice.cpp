@@ -59,16 +59,18 @@ std::optional<int> refuse_unfit(const runtime::Problem& problem, const std::vect
   return exit_numerical_failure;
 }
 
-// says that no equilibrium exists, and returns true, when at rest a velocity's rate is one number in
-// every configuration, where Newton could only report that it found none
+// says that no equilibrium exists, and returns true, when at rest a velocity's rate, or its row's
+// generalized force, is one number in every configuration, where Newton could only report that it
+// found none
 bool say_unbalanced_rate(const runtime::Problem& problem, const std::vector<double>& initial) {
   std::optional<runtime::UnbalancedRate> unbalanced = runtime::unbalanced_rate(problem, initial);
   if (!unbalanced) return false;
   const eomgen_model_abi& m = *problem.model;
-  std::cerr << fmt::format("eomgen: error: no equilibrium exists: at rest, {} changes at the rate {:.6g} in every "
-                           "configuration tried ({} about the initial one), so nothing balances what drives it\n  hint: {}\n",
-                           m.state_names[m.num_coordinates + unbalanced->velocity], unbalanced->rate,
-                           unbalanced->configurations,
+  std::cerr << fmt::format("eomgen: error: no equilibrium exists: at rest, {}{} {} {:.6g} in every configuration tried "
+                           "({} about the initial one), so nothing balances what drives it\n  hint: {}\n",
+                           unbalanced->force ? "the generalized force of the row of " : "",
+                           m.state_names[m.num_coordinates + unbalanced->velocity],
+                           unbalanced->force ? "is" : "changes at the rate", unbalanced->rate, unbalanced->configurations,
                            m.num_quaternions ? "a floating base falls unless something holds it: hold it (a robot imported "
                                                "without --free-base stands on a fixed base) to analyse its joints, or add "
                                                "the force that holds it"

@@ -13,11 +13,16 @@ namespace eomgen::runtime {
 
 struct UnbalancedRate {
   std::size_t velocity = 0;  // its index among the velocities
-  double rate = 0;           // its rate, the same in every configuration tried
+  double rate = 0;           // its rate, the same in every configuration tried (or its force: below)
   int configurations = 0;    // how many were tried
+  /// the generalized force of its row of M q'' = f is that number, not its rate: a floating
+  /// humanoid's joints swing as it falls, so its base's rate changes with the configuration, but
+  /// the row of its base's vertical velocity is the momentum balance, f = −m g in every one
+  bool force = false;
 };
 
-/// The velocity whose rate at rest is one number, beyond 1e-9 of the largest rate seen, in
+/// The velocity whose rate at rest, or else whose generalized force, is one number, beyond 1e-9 of
+/// the largest seen, in
 /// `start`'s configuration and in random ones about it (every coordinate moved by up to 1, 100, …
 /// 1e12 times one of its units or its size, quaternions kept unit, so that a weak spring far away
 /// shows too); nothing when no velocity's is, or when the model has constraints (a configuration

@@ -41,6 +41,27 @@ TEST(StabilityCommand, AFallingBodyHasNoEquilibriumAndIsToldWhy) {
   EXPECT_EQ(r.err.find("no equilibrium found"), std::string::npos) << r.err;
 }
 
+// A floating humanoid falls too, but its joints swing as it does, so no velocity's rate is one
+// number; its base's vertical row of M q'' = f, the momentum balance, is: f = −(Σ m) g at rest in
+// every configuration, the masses summed from its file here
+TEST(StabilityCommand, AFallingHumanoidHasNoEquilibriumByItsMomentumBalance) {
+  std::string model = std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/floating_humanoid.toml";
+  std::string text = read_file(model);
+  double mass = 0;
+  std::regex body_mass(R"re(\nmass\s*=\s*"?([0-9.eE+-]+))re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), body_mass); it != std::sregex_iterator(); ++it)
+    mass += std::stod((*it)[1]);
+  ASSERT_GT(mass, 0);
+  for (double g : {9.81, 9.81e6}) {
+    Output r = eomgen(fmt::format("stability '{}' --set g={:g}", model, g));
+    EXPECT_EQ(r.status, 2) << r.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(no equilibrium exists: at rest, the generalized force of the row of der\(z\) is ([-0-9.e+]+) in every configuration tried)")))
+        << r.err;
+    EXPECT_NEAR(std::stod(m[1]) / (-mass * g), 1, 1e-6) << "six digits printed";
+  }
+}
+
 // vanishing Hurwitz conditions mean "at best marginal", never "holds"
 TEST(StabilityCommand, SymbolicConditionsThatVanishDecideNothing) {
   Output undamped = eomgen("stability '" + model_path("two_mass_spring_damper") + "' --set d1=0 --set d2=0 --symbolic k1");
