@@ -8,6 +8,7 @@
 
 #include "analyse/critical_case.hpp"
 #include "analyse/linear_stability.hpp"
+#include "common/count_progress.hpp"
 #include "studies/equilibrium_choice.hpp"
 #include "studies/exit_status.hpp"
 #include "studies/loaded_problem.hpp"
@@ -66,7 +67,8 @@ int stability(const StabilityOptions& given) {
     }
   }
   runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
-  runtime::CriticalCase critical = runtime::check_critical_case(loaded.problem, eq.state, report);
+  runtime::CriticalCase critical =
+      runtime::check_critical_case(loaded.problem, eq.state, report, count_progress("stability", "perturbed runs of the critical case"));
   bool reduced = !routh.eliminated.empty();
   if (o.json) {
     print_stability_json(m, eq, report, conditions, critical, reduced ? routh_json(loaded.equations, routh) : "");

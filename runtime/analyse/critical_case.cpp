@@ -121,7 +121,8 @@ std::string sizes_text(const eomgen_model_abi& m, const std::vector<double>& siz
   return shown.size() > 6 ? text + ", …" : text;
 }
 
-std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const StabilityReport& r, std::string& verdict) {
+std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const StabilityReport& r, std::string& verdict,
+                           const std::function<void(long, long)>& progress) {
   const eomgen_model_abi& m = *p.model;
   double rate = 0;
   for (auto l : r.eigenvalues) rate = std::max(rate, std::abs(l));
@@ -143,7 +144,9 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   double worst = 0, when = 0;
   std::string worst_start;
   // each coordinate that is not cyclic, and each velocity, pushed both ways
-  for (int component : reduced_state(m)) {
+  std::vector<int> pushed = reduced_state(m);
+  long done = 0, total = 2 * long(pushed.size());
+  for (int component : pushed) {
     auto i = static_cast<std::size_t>(component);
     for (double sign : {1.0, -1.0}) {
       std::vector<double> y = x;
@@ -158,6 +161,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
       if (run.failed && when == 0) when = run.failure_time;
       if (grown > worst)
         worst = grown, worst_start = fmt::format("{} {:+.1e}", m.state_names[i], y[i] - x[i]);
+      if (progress) progress(++done, total);
     }
   }
   if (worst > 100) {
@@ -176,7 +180,8 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
 
 }  // namespace
 
-CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x, const StabilityReport& r) {
+CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x, const StabilityReport& r,
+                                 const std::function<void(long, long)>& progress) {
   CriticalCase c;
   // the eigenvalues that count for the verdict: a cyclic momentum's or a quaternion length's zero does not
   c.critical = !r.eigenvalues.empty() && std::abs(r.stability_degree) <= r.axis_tolerance;
@@ -200,7 +205,7 @@ CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x,
   } else {
     c.energy = "decides nothing: " + where;
   }
-  c.simulation = perturbed_runs(p, x, r, c.nonlinear_verdict);
+  c.simulation = perturbed_runs(p, x, r, c.nonlinear_verdict, progress);
   return c;
 }
 

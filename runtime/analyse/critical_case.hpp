@@ -6,6 +6,7 @@
 /// from small perturbations.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,9 @@ struct CriticalCase {
   std::string nonlinear_verdict;  // stable | unstable | undecided
 };
 
-/// The checks above, for the equilibrium x with its linear report.
-CriticalCase check_critical_case(const Problem& problem, const std::vector<double>& x, const StabilityReport& linear);
+/// The checks above, for the equilibrium x with its linear report; `progress` (may be empty) is
+/// told (done, total) after each perturbed run, which on a model of many states may take minutes.
+CriticalCase check_critical_case(const Problem& problem, const std::vector<double>& x, const StabilityReport& linear,
+                                 const std::function<void(long, long)>& progress = nullptr);
 
 }  // namespace eomgen::runtime
