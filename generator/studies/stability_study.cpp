@@ -67,8 +67,8 @@ int stability(const StabilityOptions& given) {
     }
   }
   runtime::StabilityReport report = runtime::analyse_stability(loaded.problem, eq.state);
-  runtime::CriticalCase critical =
-      runtime::check_critical_case(loaded.problem, eq.state, report, count_progress("stability", "perturbed runs of the critical case"));
+  runtime::CriticalCase critical = runtime::check_critical_case(
+      loaded.problem, eq.state, report, count_progress("stability", "perturbed runs of the critical case"));
   bool reduced = !routh.eliminated.empty();
   if (o.json) {
     print_stability_json(m, eq, report, conditions, critical, reduced ? routh_json(loaded.equations, routh) : "");

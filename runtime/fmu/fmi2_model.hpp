@@ -106,11 +106,10 @@ std::array<double, S> state_sizes(const Instance& in) {
 bool normalize_quaternions(double* x) {
   if constexpr (model::num_quaternions > 0) {
     for (std::size_t k = 0; k < model::num_quaternions; ++k) {
-      double sum = 0;
-      for (std::size_t j = 0; j < 4; ++j) sum += x[model::quaternion_coordinates[4 * k + j]] * x[model::quaternion_coordinates[4 * k + j]];
-      double length = std::sqrt(sum);
+      const std::size_t* q = model::quaternion_coordinates.data() + 4 * k;
+      double length = std::sqrt(x[q[0]] * x[q[0]] + x[q[1]] * x[q[1]] + x[q[2]] * x[q[2]] + x[q[3]] * x[q[3]]);
       if (!(length > 0) || !std::isfinite(length)) return false;
-      for (std::size_t j = 0; j < 4; ++j) x[model::quaternion_coordinates[4 * k + j]] /= length;
+      for (std::size_t j = 0; j < 4; ++j) x[q[j]] /= length;
     }
   }
   (void)x;
