@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
-#include "analyse/first_order_form.hpp"
+#include "analyse/constrained_first_order.hpp"
 #include "analyse/rate_balance.hpp"
 #include "integrate/projection.hpp"
 
@@ -15,20 +15,6 @@ namespace eomgen::runtime {
 namespace {
 
 using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
-
-// x' and ∂x'/∂x with Baumgarte's gains at zero
-struct PlainRates {
-  Eigen::VectorXd rate;
-  RowMajor jacobian;
-};
-
-PlainRates plain_rates(const Problem& p, const std::vector<double>& x) {
-  const eomgen_model_abi& m = *p.model;
-  PlainRates r{Eigen::VectorXd(m.num_states), RowMajor(m.num_states, m.num_states)};
-  m.rhs_stabilized(0.0, x.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, r.rate.data());
-  m.jacobian_state_stabilized(0.0, x.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, r.jacobian.data());
-  return r;
-}
 
 // the size of the configuration as given: the largest non-cyclic |q|, one unit where all are zero
 // (not the model's default state, which a changed parameter leaves behind: a rod of 1e-12 m)
@@ -90,31 +76,8 @@ Eigen::MatrixXd tangent_basis(const RowMajor& G, long n) {
   return svd.matrixV().rightCols(n - rank);
 }
 
-// q'' at x, the accelerations of the velocities' rows
-Eigen::VectorXd accelerations(const Problem& p, const std::vector<double>& x) {
-  const eomgen_model_abi& m = *p.model;
-  return plain_rates(p, x).rate.tail(long(m.num_states - m.num_coordinates));
-}
-
 RateBalance balance_at(const Problem& p, const std::vector<double>& x, double margin) {
-  const eomgen_model_abi& m = *p.model;
-  PlainRates r = plain_rates(p, x);
-  std::vector<int> kept = reduced_state(m);
-  Eigen::VectorXd rates(long(kept.size())), values(long(kept.size()));
-  Eigen::MatrixXd J(long(kept.size()), long(kept.size()));
-  std::vector<bool> is_coordinate;
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    rates[long(i)] = r.rate[kept[i]];
-    values[long(i)] = x[std::size_t(kept[i])];
-    is_coordinate.push_back(kept[i] < int(m.num_coordinates));
-    for (std::size_t j = 0; j < kept.size(); ++j) J(long(i), long(j)) = r.jacobian(kept[i], kept[j]);
-  }
-  auto kept_rates = [&](const Problem& at, const std::vector<double>& y) {
-    Eigen::VectorXd all = plain_rates(at, y).rate, out(long(kept.size()));
-    for (std::size_t i = 0; i < kept.size(); ++i) out[long(i)] = all[kept[i]];
-    return out;
-  };
-  return rate_balance(rates, J, values, is_coordinate, given_size(m, x), rounding_noise(kept_rates, p, x), margin);
+  return reduced_rate_balance(p, x, unstabilized_rate, unstabilized_jacobian(p, x), given_size(*p.model, x), margin);
 }
 
 }  // namespace
@@ -140,10 +103,9 @@ Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vect
   int iterations = 0;
   if (projection.make_consistent(0.0, x.data())) {
     for (; iterations < 100 && !balance_at(problem, x, 1e-3).balanced; ++iterations) {
-      PlainRates r = plain_rates(problem, x);
-      Eigen::VectorXd ddq = r.rate.tail(long(n));
+      Eigen::VectorXd ddq = unstabilized_rate(problem, x).tail(long(n));
       Eigen::MatrixXd N = tangent_basis(holonomic_constraints(problem, x).G, long(n));
-      Eigen::MatrixXd stiffness = N.transpose() * r.jacobian.bottomLeftCorner(long(n), long(n)) * N;
+      Eigen::MatrixXd stiffness = N.transpose() * unstabilized_jacobian(problem, x).bottomLeftCorner(long(n), long(n)) * N;
       Eigen::VectorXd step = N * stiffness.completeOrthogonalDecomposition().solve(-N.transpose() * ddq);
       for (std::size_t i = 0; i < n; ++i)
         if (m.is_cyclic[i]) step[long(i)] = 0;
@@ -152,7 +114,7 @@ Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vect
       for (int halvings = 0; halvings < 60; ++halvings, fraction /= 2) {
         y = x;
         for (std::size_t i = 0; i < n; ++i) y[i] += fraction * step[long(i)];
-        if (projection.project(0.0, y.data()) && accelerations(problem, y).norm() < before) break;
+        if (projection.project(0.0, y.data()) && unstabilized_rate(problem, y).tail(long(n)).norm() < before) break;
         y.clear();
       }
       if (y.empty()) break;  // no part of the step lowers q'': a minimum of |q''| that is not zero

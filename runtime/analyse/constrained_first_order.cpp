@@ -116,6 +116,15 @@ void leave_out_neutral_components(ManifoldLinearization& r, std::size_t coordina
 
 bool has_multipliers(const eomgen_model_abi& m) { return m.num_multipliers > 0; }
 
+Eigen::VectorXd unstabilized_rate(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::VectorXd rate(m.num_states);
+  m.rhs_stabilized(0.0, x.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, rate.data());
+  return rate;
+}
+
+Eigen::MatrixXd unstabilized_jacobian(const Problem& p, const std::vector<double>& x) { return jacobian_with_gain(p, x, 0.0); }
+
 ManifoldLinearization manifold_linearization(const Problem& problem, const std::vector<double>& x) {
   const eomgen_model_abi& m = *problem.model;
   long states = static_cast<long>(m.num_states);
@@ -141,7 +150,7 @@ ManifoldLinearization manifold_linearization(const Problem& problem, const std::
     for (std::size_t d = 0; d < r.dependent.size(); ++d) r.basis(r.dependent[d], static_cast<long>(c)) = solved(static_cast<long>(d), k);
   }
   for (int& k : r.kept) k = free[static_cast<std::size_t>(k)];
-  RowMajor J = jacobian_with_gain(problem, x, 0.0);
+  Eigen::MatrixXd J = unstabilized_jacobian(problem, x);
   r.A.resize(static_cast<long>(r.kept.size()), static_cast<long>(r.kept.size()));
   for (std::size_t i = 0; i < r.kept.size(); ++i) r.A.row(static_cast<long>(i)) = J.row(r.kept[i]) * r.basis;
   RowMajor B(states, std::max<std::size_t>(m.num_inputs, 1));

@@ -17,6 +17,12 @@ namespace eomgen::runtime {
 /// Lagrange I: the model's coordinates are tied by multipliers.
 bool has_multipliers(const eomgen_model_abi& m);
 
+/// x' and ∂x'/∂x of a Lagrange I model with Baumgarte's gains at zero: the mechanics alone, on the
+/// system's own scale (the gains are rates in 1/s of the model's, 10 unless set, which a model
+/// scaled in time keeps).
+Eigen::VectorXd unstabilized_rate(const Problem& problem, const std::vector<double>& x);
+Eigen::MatrixXd unstabilized_jacobian(const Problem& problem, const std::vector<double>& x);
+
 struct ManifoldLinearization {
   std::vector<int> kept;       // the state components that parametrize the tangent space, cyclic positions left out
   Eigen::MatrixXd A, B;        // x_kept' = A x_kept + B u on the tangent space

@@ -92,20 +92,17 @@ double step_fraction(double largest, double residual, const Residual& residual_a
 // coordinates stand still, the pseudo-velocities are constant), each rate against the terms it sums
 // (rate_balance.hpp), times `margin`
 RateBalance first_order_balance(const Problem& problem, const std::vector<double>& state, double margin) {
-  const eomgen_model_abi& m = *problem.model;
-  std::vector<int> kept = reduced_state(m);
-  Eigen::VectorXd values(long(kept.size()));
-  std::vector<bool> is_coordinate;
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    values[long(i)] = state[std::size_t(kept[i])];
-    is_coordinate.push_back(kept[i] < int(m.num_coordinates));
-  }
+  auto rates = [](const Problem& at, const std::vector<double>& y) {
+    const eomgen_model_abi& m = *at.model;
+    Eigen::VectorXd rate(m.num_states);
+    m.rhs(0.0, y.data(), at.held_inputs(), at.parameters.data(), rate.data());
+    return rate;
+  };
   // at least one unit of configuration here: a steady motion's default state is that motion, its
   // rate zero to rounding alone (the Whipple bicycle's upright run, 1e-14 at q = 0), which sets no
   // scale
-  auto rates = [](const Problem& at, const std::vector<double>& y) { return reduced_rate(at, y); };
-  return rate_balance(reduced_rate(problem, state), reduced_jacobian(problem, state), values, is_coordinate,
-                      std::max(1.0, configuration_size(m, state)), rounding_noise(rates, problem, state), margin);
+  return reduced_rate_balance(problem, state, rates, state_jacobian(problem, 0.0, state),
+                              std::max(1.0, configuration_size(*problem.model, state)), margin);
 }
 
 Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#include <Eigen/Dense>
+
+#include "analyse/constrained_first_order.hpp"
+
 namespace eomgen::runtime {
 
 const std::vector<double>& probe_radii() {
@@ -55,7 +59,7 @@ std::vector<double> nonlinearity_lengths(const Problem& p, const std::vector<dou
   // and not the system's: at a time scale of 1e12 s they broke a Cartesian pendulum's law at 1e-9
   // of its rod's length instead of 0.1
   auto rate = [&](const std::vector<double>& y, std::vector<double>& out) {
-    if (m.num_multipliers) m.rhs_stabilized(0.0, y.data(), p.held_inputs(), p.parameters.data(), 0.0, 0.0, out.data());
+    if (m.num_multipliers) Eigen::VectorXd::Map(out.data(), long(out.size())) = unstabilized_rate(p, y);
     else m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), out.data());
   };
   rate(x, at_x);

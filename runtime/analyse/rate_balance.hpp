@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include "analyse/first_order_form.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::runtime {
@@ -56,6 +57,30 @@ Eigen::VectorXd rounding_noise(const Rates& rates, const Problem& problem, const
     for (long i = 0; i < noise.size(); ++i) noise[i] = std::max(noise[i], std::abs(there[i] - at_x[i]));
   }
   return noise;
+}
+
+/// rate_balance on the reduced state (first_order_form.hpp: the non-cyclic coordinates and the
+/// velocities) at x: `rates(problem, y)` gives x' of the whole state at y, J is ∂x'/∂x of the whole
+/// state at x, and `size` the configuration's.
+template <class Rates>
+RateBalance reduced_rate_balance(const Problem& problem, const std::vector<double>& x, const Rates& rates,
+                                 const Eigen::MatrixXd& J, double size, double margin) {
+  const eomgen_model_abi& m = *problem.model;
+  std::vector<int> kept = reduced_state(m);
+  auto reduced = [&](const Problem& at, const std::vector<double>& y) {
+    Eigen::VectorXd all = rates(at, y), out(long(kept.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) out[long(i)] = all[kept[i]];
+    return out;
+  };
+  Eigen::VectorXd values(long(kept.size()));
+  Eigen::MatrixXd reduced_J(long(kept.size()), long(kept.size()));
+  std::vector<bool> is_coordinate;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    values[long(i)] = x[std::size_t(kept[i])];
+    is_coordinate.push_back(kept[i] < int(m.num_coordinates));
+    for (std::size_t j = 0; j < kept.size(); ++j) reduced_J(long(i), long(j)) = J(kept[i], kept[j]);
+  }
+  return rate_balance(reduced(problem, x), reduced_J, values, is_coordinate, size, rounding_noise(reduced, problem, x), margin);
 }
 
 }  // namespace eomgen::runtime

@@ -420,11 +420,14 @@ TEST(StabilityCommand, AnAppellSteadyMotionIsCheckedRateByRateAtEveryTimeScale) 
 }
 
 // The four-bar's equilibrium found on its loop, checked against its potential written out here:
-// V's gradient is normal to the loop there (no component along the loop's one tangent)
+// V's gradient is normal to the loop there (no component along the loop's one tangent). Its links'
+// lengths and g are set here; the masses (0.3, 0.6, 0.5) and the coupler's centre 0.01 off its
+// axis are numbers in the file.
 TEST(StabilityCommand, AFourBarsEquilibriumIsWhereItsPotentialIsStationaryOnItsLoop) {
-  JsonValue json = run_json("stability '" + model_path("four_bar_linkage") + "'");
+  const double a = 0.25, b = 0.55, c = 0.45, d = 0.5, g = 3.7;
+  JsonValue json = run_json(fmt::format("stability '{}' --set a={} --set b={} --set c={} --set d={} --set g={}",
+                                        model_path("four_bar_linkage"), a, b, c, d, g));
   const JsonValue& equilibrium = *json.find("equilibrium");
-  const double a = 0.2, b = 0.5, c = 0.4, d = 0.45, g = 9.81;
   double c1 = at(equilibrium, "crank"), c2 = at(equilibrium, "coupler"), c3 = at(equilibrium, "rocker"), c12 = c1 + c2;
   // the pin: a (cos c1, sin c1) + b (cos c12, sin c12) = (d, 0) + c (cos c3, sin c3)
   EXPECT_NEAR(a * std::cos(c1) + b * std::cos(c12) - d - c * std::cos(c3), 0, 1e-12);
