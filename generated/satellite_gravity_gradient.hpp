@@ -32,6 +32,9 @@ inline constexpr std::array<double, num_inputs> default_inputs{{}};
 
 /// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).
 inline constexpr std::array<bool, num_coordinates> is_cyclic{{false, false, false}};
+/// An angle: a coordinate the equations take through sin, cos or tan of a whole multiple of it.
+/// Its size is one radian in any units of length and time (what the analyses' tolerances use).
+inline constexpr std::array<bool, num_coordinates> is_angle{{true, true, true}};
 
 /// Ball and free joints: the coordinates w, x, y, z of each quaternion (R is that of q/|q|, and
 /// the motion keeps |q|: a zero eigenvalue of every linearization, left out of verdicts).

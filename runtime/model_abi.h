@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define EOMGEN_MODEL_ABI_VERSION 6
+#define EOMGEN_MODEL_ABI_VERSION 7
 
 #ifdef __cplusplus
 extern "C" {
@@ -39,6 +39,7 @@ struct eomgen_model_abi {
   const double* default_inputs;
   int conserves_energy_without_inputs;
   const bool* is_cyclic;
+  const bool* is_angle; /* sized one radian in any units (the analyses' tolerances) */
   eomgen_state_function rhs, jacobian_state, jacobian_input, forcing, outputs;
   eomgen_configuration_function mass_matrix;
   eomgen_energy_function kinetic_energy, potential_energy;
@@ -87,10 +88,11 @@ struct eomgen_model_abi {
       m::velocity_definitions.data(),                                                                  \
       m::input_names.data(), m::output_names.data(), m::default_parameters.data(),                     \
       m::default_state.data(), m::default_inputs.data(), m::conserves_energy_without_inputs ? 1 : 0,   \
-      m::is_cyclic.data(), m::rhs<double>, m::jacobian_state<double>, m::jacobian_input<double>,       \
-      m::forcing<double>, m::outputs<double>, m::mass_matrix<double>, m::kinetic_energy<double>,       \
-      m::potential_energy<double>, m::linearization<double>, m::method, m::num_constraints,             \
-      m::num_multipliers, m::constraint_names.data(), m::constraint_is_holonomic.data(),               \
+      m::is_cyclic.data(), m::is_angle.data(), m::rhs<double>, m::jacobian_state<double>,              \
+      m::jacobian_input<double>, m::forcing<double>, m::outputs<double>, m::mass_matrix<double>,       \
+      m::kinetic_energy<double>, m::potential_energy<double>, m::linearization<double>, m::method,     \
+      m::num_constraints, m::num_multipliers, m::constraint_names.data(),                              \
+      m::constraint_is_holonomic.data(),                                                               \
       m::multiplier_names.data(), m::baumgarte_alpha, m::baumgarte_beta, m::constraint_jacobian<double>, \
       m::constraint_residuals<double>, m::multipliers<double>, m::rhs_stabilized<double>,              \
       m::jacobian_state_stabilized<double>, m::num_first_integrals, m::first_integral_names.data(),      \

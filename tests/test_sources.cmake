@@ -51,6 +51,7 @@ set(EOMGEN_TEST_FILES
   generator/derive/quadratic_kinetic_energy_test.cpp fast
   generator/derive/routh_test.cpp                   fast     sanitized
   generator/derive/reduced_models_test.cpp          fast     sanitized
+  generator/derive/angle_coordinates_test.cpp       fast     sanitized
   runtime/constrained_simulation_test.cpp           fast
   runtime/quaternion_simulation_test.cpp            fast
   runtime/reference_test.cpp                        slow
@@ -92,6 +93,7 @@ set(EOMGEN_TEST_FILES
   studies/stability_studies_test.cpp                slow
   studies/run_studies_test.cpp                      slow
   cli/stability_command_test.cpp                    cli
+  cli/angles_beside_lengths_test.cpp                cli
   cli/trustworthy_analysis_test.cpp                 cli
   cli/routh_stability_test.cpp                      cli
   cli/linear_command_test.cpp                       cli

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "common/version.hpp"
+#include "derive/angle_coordinates.hpp"
 #include "emit/cpp_articulated.hpp"
 #include "emit/cpp_articulated_jacobian.hpp"
 #include "emit/cpp_body_writer.hpp"
@@ -364,9 +365,9 @@ std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, 
 }
 
 
-std::string cyclic_list(const Equations& e) {
+std::string bool_list(const std::vector<bool>& flags) {
   std::string out;
-  for (bool c : cyclic_coordinates(e)) out += std::string(out.empty() ? "" : ", ") + (c ? "true" : "false");
+  for (bool c : flags) out += std::string(out.empty() ? "" : ", ") + (c ? "true" : "false");
   return out;
 }
 
@@ -466,7 +467,10 @@ std::string emit_cpp_header(const Equations& given) {
       "inline constexpr std::array<double, num_states> default_state{{{{{}}}}};\n"
       "inline constexpr std::array<double, num_inputs> default_inputs{{{{{}}}}};\n\n"
       "/// A coordinate is cyclic when neither M nor f depends on it (Hiller §3.8).\n"
-      "inline constexpr std::array<bool, num_coordinates> is_cyclic{{{{{}}}}};\n\n"
+      "inline constexpr std::array<bool, num_coordinates> is_cyclic{{{{{}}}}};\n"
+      "/// An angle: a coordinate the equations take through sin, cos or tan of a whole multiple of it.\n"
+      "/// Its size is one radian in any units of length and time (what the analyses' tolerances use).\n"
+      "inline constexpr std::array<bool, num_coordinates> is_angle{{{{{}}}}};\n\n"
       "/// Ball and free joints: the coordinates w, x, y, z of each quaternion (R is that of q/|q|, and\n"
       "/// the motion keeps |q|: a zero eigenvalue of every linearization, left out of verdicts).\n"
       "inline constexpr std::size_t num_quaternions = {};\n"
@@ -479,7 +483,7 @@ std::string emit_cpp_header(const Equations& given) {
       quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(definitions),
       quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
-      number_list(s.input_defaults), cyclic_list(e), e.quaternions.size(), quaternion_list(e),
+      number_list(s.input_defaults), bool_list(cyclic_coordinates(e)), bool_list(angle_coordinates(e)), e.quaternions.size(), quaternion_list(e),
       e.conserves_energy_without_inputs ? "true" : "false",
       separable_hamiltonian(e) ? "true" : "false");
   out += fmt::format(

@@ -8,6 +8,7 @@
 
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/rate_balance.hpp"
+#include "integrate/coordinate_sizes.hpp"
 #include "integrate/projection.hpp"
 
 namespace eomgen::runtime {
@@ -16,13 +17,10 @@ namespace {
 
 using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
 
-// the size of the configuration as given: the largest non-cyclic |q|, one unit where all are zero
-// (not the model's default state, which a changed parameter leaves behind: a rod of 1e-12 m)
-double given_size(const eomgen_model_abi& m, const std::vector<double>& x) {
-  double size = 0;
-  for (std::size_t i = 0; i < m.num_coordinates; ++i)
-    if (!m.is_cyclic[i]) size = std::max(size, std::abs(x[i]));
-  return size > 0 && std::isfinite(size) ? size : 1.0;
+// each coordinate's size in the configuration as given, one unit where all are zero (not the
+// model's default state, which a changed parameter leaves behind: a rod of 1e-12 m)
+std::vector<double> given_sizes(const eomgen_model_abi& m, const std::vector<double>& x) {
+  return coordinate_sizes(m, x.data(), false, 1.0);
 }
 
 // ∂g/∂q: the holonomic rows of the constraint Jacobian, and g
@@ -51,14 +49,15 @@ Holonomic holonomic_constraints(const Problem& p, const std::vector<double>& x) 
   return h;
 }
 
-// the holonomic constraints x leaves, beyond 1e-9 of |∂g_r/∂q|·|q|
+// the holonomic constraints x leaves, beyond 1e-9 of Σ_j |∂g_r/∂q_j| s_j (s_j: q_j's size)
 std::string unmet_constraints(const Problem& p, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   Holonomic h = holonomic_constraints(p, x);
-  double size = given_size(m, x);
+  std::vector<double> size = given_sizes(m, x);
+  Eigen::Map<const Eigen::VectorXd> sizes(size.data(), long(size.size()));
   std::string unmet;
   for (std::size_t k = 0; k < h.rows.size(); ++k) {
-    double tolerance = 1e-9 * h.G.row(long(k)).lpNorm<Eigen::Infinity>() * size, g = h.g[long(k)];
+    double tolerance = 1e-9 * h.G.row(long(k)).cwiseAbs().dot(sizes), g = h.g[long(k)];
     if (!(std::abs(g) <= tolerance))
       unmet += fmt::format("{}{} = {:.3g} (tolerance {:.3g})", unmet.empty() ? "" : ", ", m.constraint_names[h.rows[k]], g,
                            tolerance);
@@ -77,7 +76,7 @@ Eigen::MatrixXd tangent_basis(const RowMajor& G, long n) {
 }
 
 RateBalance balance_at(const Problem& p, const std::vector<double>& x, double margin) {
-  return reduced_rate_balance(p, x, unstabilized_rate, unstabilized_jacobian(p, x), given_size(*p.model, x), margin);
+  return reduced_rate_balance(p, x, unstabilized_rate, unstabilized_jacobian(p, x), given_sizes(*p.model, x), margin);
 }
 
 }  // namespace
@@ -104,7 +103,10 @@ Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vect
   if (projection.make_consistent(0.0, x.data())) {
     for (; iterations < 100 && !balance_at(problem, x, 1e-3).balanced; ++iterations) {
       Eigen::VectorXd ddq = unstabilized_rate(problem, x).tail(long(n));
-      Eigen::MatrixXd N = tangent_basis(holonomic_constraints(problem, x).G, long(n));
+      // the tangent directions in each coordinate's size: against G's largest entry in its own units,
+      // a slider-crank of 1e-13 m had its crank's and rod's columns (r of 1e-13 m) taken for zero
+      Eigen::VectorXd size = Eigen::Map<const Eigen::VectorXd>(given_sizes(m, x).data(), long(n));
+      Eigen::MatrixXd N = size.asDiagonal() * tangent_basis(holonomic_constraints(problem, x).G * size.asDiagonal(), long(n));
       Eigen::MatrixXd stiffness = N.transpose() * unstabilized_jacobian(problem, x).bottomLeftCorner(long(n), long(n)) * N;
       Eigen::VectorXd step = N * stiffness.completeOrthogonalDecomposition().solve(-N.transpose() * ddq);
       for (std::size_t i = 0; i < n; ++i)

@@ -12,6 +12,7 @@
 #include "analyse/rate_balance.hpp"
 #include "analyse/state_check.hpp"
 #include "analyse/system_scales.hpp"
+#include "integrate/coordinate_sizes.hpp"
 #include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
@@ -36,24 +37,26 @@ Derivatives evaluate(const Problem& p, const std::vector<double>& x) {
   return d;
 }
 
+// f at x
+Eigen::VectorXd forcing_at(const Problem& p, const std::vector<double>& x) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::VectorXd f(long(m.num_coordinates));
+  m.forcing(0.0, x.data(), p.held_inputs(), p.parameters.data(), f.data());
+  return f;
+}
+
 // the largest |f| at x
 double forcing_residual(const Problem& p, const std::vector<double>& x) {
-  const eomgen_model_abi& m = *p.model;
-  std::vector<double> f(m.num_coordinates);
-  m.forcing(0.0, x.data(), p.held_inputs(), p.parameters.data(), f.data());
   double largest = 0;
-  for (double v : f) largest = std::isfinite(v) ? std::max(largest, std::abs(v)) : INFINITY;
+  for (double v : forcing_at(p, x)) largest = std::isfinite(v) ? std::max(largest, std::abs(v)) : INFINITY;
   return largest;
 }
 
-// The size of the configuration: the largest non-cyclic |q| here or in the model's default state.
-// No floor of one unit: a mass of 1e-12 kg on a spring of 1 N/m hangs 9.81e-12 m down, and z = 0,
-// within 1e-9 of a metre of it, had passed for its equilibrium.
-double configuration_size(const eomgen_model_abi& m, const std::vector<double>& x) {
-  double size = 0;
-  for (std::size_t i = 0; i < m.num_coordinates; ++i)
-    if (!m.is_cyclic[i]) size = std::max({size, std::abs(x[i]), std::abs(m.default_state[i])});
-  return std::isfinite(size) ? size : 0.0;
+// Each coordinate's size (coordinate_sizes.hpp), here or in the model's default state. No floor of
+// one unit: a mass of 1e-12 kg on a spring of 1 N/m hangs 9.81e-12 m down, and z = 0, within 1e-9
+// of a metre of it, had passed for its equilibrium.
+std::vector<double> configuration_sizes(const eomgen_model_abi& m, const std::vector<double>& x) {
+  return coordinate_sizes(m, x.data(), true, 0.0);
 }
 
 // the model's default state with its non-cyclic coordinates at rest
@@ -64,23 +67,40 @@ std::vector<double> default_at_rest(const eomgen_model_abi& m) {
   return x;
 }
 
-// Zero, for this model: a residual below 1e-9 of the forces it balances, the larger of its
-// generalized stiffness times the configuration's size (f over the stiffness is the displacement
-// to the equilibrium: below 1e-9 of the configuration's size) and |f| in its default configuration
-// at rest (the hanging mass's m g, where the configuration's size is 0). No floor in the units of
-// f: one of 1 took a pendulum of 1e-12 kg at 0.5 rad for an equilibrium. Only where both are zero
-// (a default that balances exactly at q = 0, and q = 0) is the size one unit. A default balanced
-// to rounding at q = 0 (|f| of 1e-17, not a force) would make the tolerance that small: none of
-// models/ or the tests' models is, but a model could be.
-double balance_tolerance(double stiffness, double size, double default_residual) {
-  double forces = std::max(stiffness * size, std::isfinite(default_residual) ? default_residual : 0.0);
-  return 1e-9 * (forces > 0 ? forces : stiffness);
+// Zero for row i of f: 1e-9 of the forces it balances. They are the generalized stiffness times
+// each coordinate's size (f over the stiffness is the displacement to the equilibrium: below 1e-9
+// of the coordinate's size), Σ_j |Q_ij| s_j, with the velocity terms Σ_j |P_ij| |q'_j| of a steady
+// motion, or |f_i| in the default configuration at rest (the hanging mass's m g, where the
+// configuration's size is 0), whichever is larger; 1e6 of the row's rounding noise where terms
+// cancel exactly (rate_balance.hpp). No floor in the units of f: one of 1 took a pendulum of
+// 1e-12 kg at 0.5 rad for an equilibrium. Only where these are all zero (a default that balances
+// exactly at q = 0, and q = 0) is the size one unit. Row by row, since the rows differ in units
+// (a force, a moment): against the largest |Q| times the largest |q|, a spring pendulum of 1e12 m
+// had passed at 0.5 rad.
+Eigen::VectorXd force_tolerances(const Problem& p, const Derivatives& d, const std::vector<double>& x,
+                                 const Eigen::VectorXd& default_forces) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_coordinates;
+  std::vector<double> size = configuration_sizes(m, x);
+  Eigen::VectorXd noise = rounding_noise(forcing_at, p, x);
+  Eigen::VectorXd tolerances(static_cast<Eigen::Index>(n));
+  for (long i = 0; i < long(n); ++i) {
+    double forces = 0, stiffness = 0;
+    for (long j = 0; j < long(n); ++j) {
+      forces += std::abs(d.Q(i, j)) * size[std::size_t(j)] + std::abs(d.P(i, j) * x[n + std::size_t(j)]);
+      stiffness += std::abs(d.Q(i, j));
+    }
+    if (std::isfinite(default_forces[i])) forces = std::max(forces, std::abs(default_forces[i]));
+    double noisy = std::isfinite(noise[i]) ? 1e6 * noise[i] : 0.0;
+    tolerances[i] = std::max(1e-9 * (forces > 0 ? forces : stiffness), noisy);
+  }
+  return tolerances;
 }
 
 // The part of a Newton step to take: all of it when it all but solves the equations (the largest
 // residual after it below a thousandth of before: a linear problem, or one near its root, in any
-// units), else at most half a unit (half a radian for an angle), so that the search stays near where
-// it started. Limited alone, a spring of 1e-6 N/m, whose mass hangs 9.81e6 m down, was out of reach.
+// units), else at most half a unit (half a radian for an angle, half the configuration's size for a
+// length: `largest` is in the coordinates' sizes), so that the search stays near where it started. Limited alone, a spring of 1e-6 N/m, whose mass hangs 9.81e6 m down, was out of reach.
 template <class Residual>
 double step_fraction(double largest, double residual, const Residual& residual_after_whole_step) {
   if (largest <= 0.5) return 1.0;
@@ -98,11 +118,10 @@ RateBalance first_order_balance(const Problem& problem, const std::vector<double
     m.rhs(0.0, y.data(), at.held_inputs(), at.parameters.data(), rate.data());
     return rate;
   };
-  // at least one unit of configuration here: a steady motion's default state is that motion, its
-  // rate zero to rounding alone (the Whipple bicycle's upright run, 1e-14 at q = 0), which sets no
-  // scale
+  // one unit where all sizes are zero: a steady motion's default state is that motion, its rate
+  // zero to rounding alone (the Whipple bicycle's upright run, 1e-14 at q = 0), which sets no scale
   return reduced_rate_balance(problem, state, rates, state_jacobian(problem, 0.0, state),
-                              std::max(1.0, configuration_size(*problem.model, state)), margin);
+                              coordinate_sizes(*problem.model, state.data(), true, 1.0), margin);
 }
 
 Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
@@ -166,10 +185,9 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
   Equilibrium e;
   e.moving = moving_coordinates(*problem.model, state);
   e.state = std::move(state);
-  e.residual = d.f.cwiseAbs().maxCoeff();
-  e.tolerance = balance_tolerance(d.Q.cwiseAbs().maxCoeff(), configuration_size(*problem.model, e.state),
-                                  forcing_residual(problem, default_at_rest(*problem.model)));
-  e.converged = e.residual <= e.tolerance && e.moving.empty();
+  RateBalance b = worst_row(d.f, force_tolerances(problem, d, e.state, forcing_at(problem, default_at_rest(*problem.model))));
+  e.residual = b.residual, e.tolerance = b.tolerance;
+  e.converged = b.balanced && e.moving.empty();
   return e;
 }
 
@@ -186,14 +204,19 @@ double backtracked_fraction(double residual, const Residual& residual_after) {
 }
 
 // The Newton step on the states `unknowns` (indices into x) that takes f, or r = f − const, to
-// zero: ∂f/∂q = −Q, ∂f/∂q' = −P (least squares when rank deficient)
-Eigen::VectorXd newton_step(const Derivatives& d, const std::vector<int>& unknowns, std::size_t n, const Eigen::VectorXd& r) {
+// zero: ∂f/∂q = −Q, ∂f/∂q' = −P (least squares when rank deficient), solved with each row divided by
+// its `weight` and each unknown in its `unit`: the rank is decided against the largest entry, and
+// a spring pendulum of 1e12 m has a stiffness of 1e2 N/m beside a pendulum's 1e25 N m, which left r
+// out of every step
+Eigen::VectorXd newton_step(const Derivatives& d, const std::vector<int>& unknowns, std::size_t n, const Eigen::VectorXd& r,
+                            const Eigen::VectorXd& weight, const Eigen::VectorXd& unit) {
   Eigen::MatrixXd J(n, unknowns.size());
   for (std::size_t k = 0; k < unknowns.size(); ++k) {
     int i = unknowns[k];
     J.col(static_cast<long>(k)) = i < static_cast<int>(n) ? Eigen::VectorXd(-d.Q.col(i)) : Eigen::VectorXd(-d.P.col(i - n));
   }
-  return J.completeOrthogonalDecomposition().solve(-r);
+  Eigen::MatrixXd scaled = weight.cwiseInverse().asDiagonal() * J * unit.asDiagonal();
+  return unit.asDiagonal() * scaled.completeOrthogonalDecomposition().solve(-r.cwiseQuotient(weight));
 }
 
 // Newton on f = 0 from x in the states `unknowns` (indices into x), the others held; steps of at
@@ -202,45 +225,65 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
                               bool near_start) {
   const eomgen_model_abi& m = *problem.model;
   std::size_t n = m.num_coordinates;
-  Equilibrium e;
-  const double default_residual = forcing_residual(problem, default_at_rest(m));
+  int iterations = 0;
+  const Eigen::VectorXd default_forces = forcing_at(problem, default_at_rest(m));
   // below the tolerance, up to three more whole steps while they still move the state against its
   // own size: the tolerance's displacement may be 1e-9 of the default configuration, and springs
   // of 1e12 N/m hold their masses 3e-13 m away, which the first step reached to 7e-6 of it (the
   // best of them kept: a step from within rounding may land no nearer)
   int polished = 0;
   std::vector<double> best;
-  double best_residual = INFINITY;
-  for (e.iterations = 0; e.iterations < 100; ++e.iterations) {
+  double best_merit = INFINITY;
+  for (; iterations < 100; ++iterations) {
     Derivatives d = evaluate(problem, x);
-    e.residual = d.f.cwiseAbs().maxCoeff();
-    e.tolerance = balance_tolerance(d.Q.cwiseAbs().maxCoeff(), configuration_size(*problem.model, x), default_residual);
-    if (!std::isfinite(e.residual)) break;
-    bool within = e.residual <= 1e-3 * e.tolerance;
-    if (within && e.residual < best_residual) best = x, best_residual = e.residual;
+    if (!d.f.allFinite()) break;
+    // each row in its tolerance, each unknown in its coordinate's size (a velocity in its units)
+    Eigen::VectorXd weight = force_tolerances(problem, d, x, default_forces);
+    bool within = worst_row(d.f, 1e-3 * weight).balanced;
+    for (double& w : weight) w = w > 0 && std::isfinite(w) ? w : 1.0;
+    // the largest |f_i| over its row's weight: the rows differ in units (a force, a moment)
+    auto merit = [&weight](const Eigen::VectorXd& f) {
+      return f.allFinite() ? f.cwiseQuotient(weight).cwiseAbs().maxCoeff() : INFINITY;
+    };
+    double residual = merit(d.f);
+    if (within && residual < best_merit) best = x, best_merit = residual;
     if (within && ++polished > 3) break;
-    Eigen::VectorXd step = newton_step(d, unknowns, n, d.f);
+    std::vector<double> size = configuration_sizes(m, x);
+    Eigen::VectorXd unit(static_cast<Eigen::Index>(unknowns.size()));
+    for (std::size_t k = 0; k < unknowns.size(); ++k) {
+      std::size_t i = std::size_t(unknowns[k]);
+      unit[static_cast<long>(k)] = i < n && size[i] > 0 ? size[i] : 1.0;
+    }
+    Eigen::VectorXd step = newton_step(d, unknowns, n, d.f, weight, unit);
     auto moved = [&](double fraction) {
       std::vector<double> y = x;
       for (std::size_t k = 0; k < unknowns.size(); ++k) y[unknowns[k]] += fraction * step[static_cast<long>(k)];
       return y;
     };
-    double largest = step.cwiseAbs().maxCoeff();
+    auto merit_after = [&](double fraction) { return merit(forcing_at(problem, moved(fraction))); };
+    // the step's largest part in those units: half a radian and half of a length beside it are both
+    // large
+    double largest = step.cwiseQuotient(unit).cwiseAbs().maxCoeff();
     // a step within rounding of each unknown's own value (a largest |x| mixes units: a conical
     // pendulum's φ' of 4e-12 rad/s beside θ = 0.8 stopped three steps short)
     bool negligible = true;
     for (std::size_t k = 0; k < unknowns.size(); ++k)
       negligible = negligible && std::abs(step[static_cast<long>(k)]) <= 1e-14 * std::abs(x[unknowns[k]]);
     if (within && negligible) break;
-    double scale = within        ? 1.0
-                   : near_start ? step_fraction(largest, e.residual, [&] { return forcing_residual(problem, moved(1.0)); })
-                                : backtracked_fraction(e.residual, [&](double f) { return forcing_residual(problem, moved(f)); });
+    double scale = within       ? 1.0
+                   : near_start ? step_fraction(largest, residual, [&] { return merit_after(1.0); })
+                                : backtracked_fraction(residual, merit_after);
     x = moved(scale);
     if (scale == 1.0 && negligible) break;
   }
-  if (!best.empty() && !(forcing_residual(problem, x) <= best_residual)) x = best;
   Equilibrium checked = check_equilibrium(problem, x);
-  checked.iterations = e.iterations;
+  if (!best.empty() && best != x) {
+    // the best of the polishing steps, in how far each row is within its own tolerance
+    Equilibrium at_best = check_equilibrium(problem, best);
+    auto past = [](const Equilibrium& q) { return q.tolerance > 0 ? q.residual / q.tolerance : q.residual > 0 ? INFINITY : 0.0; };
+    if (!(past(checked) <= past(at_best))) checked = at_best;
+  }
+  checked.iterations = iterations;
   return checked;
 }
 

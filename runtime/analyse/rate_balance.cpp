@@ -6,18 +6,11 @@
 
 namespace eomgen::runtime {
 
-RateBalance rate_balance(const Eigen::VectorXd& rates, const Eigen::MatrixXd& J, const Eigen::VectorXd& x,
-                         const std::vector<bool>& is_coordinate, double size, const Eigen::VectorXd& noise,
-                         double margin) {
+RateBalance worst_row(const Eigen::VectorXd& rates, const Eigen::VectorXd& tolerances) {
   RateBalance b;
-  double worst = -1, rate = J.allFinite() ? spectral_scale(J) : 0.0;
+  double worst = -1;
   for (long i = 0; i < rates.size(); ++i) {
-    double terms = rate * std::abs(x[i]);
-    for (long j = 0; j < J.cols(); ++j) terms += std::abs(J(i, j)) * (is_coordinate[std::size_t(j)] ? size : std::abs(x[j]));
-    double noisy = i < noise.size() && std::isfinite(noise[i]) ? 1e6 * noise[i] : 0.0;
-    double tolerance = margin * std::max(1e-9 * terms, noisy), residual = std::abs(rates[i]);
-    // how far past its tolerance the row is: a rate that is not finite, or not zero where it
-    // must be, is past any
+    double residual = std::abs(rates[i]), tolerance = tolerances[i];
     double past = !std::isfinite(residual) || !std::isfinite(tolerance) ? INFINITY
                   : tolerance > 0                                       ? residual / tolerance
                   : residual > 0                                        ? INFINITY
@@ -26,6 +19,19 @@ RateBalance rate_balance(const Eigen::VectorXd& rates, const Eigen::MatrixXd& J,
   }
   b.balanced = worst <= 1;
   return b;
+}
+
+RateBalance rate_balance(const Eigen::VectorXd& rates, const Eigen::MatrixXd& J, const Eigen::VectorXd& x,
+                         const Eigen::VectorXd& sizes, const Eigen::VectorXd& noise, double margin) {
+  double rate = J.allFinite() ? spectral_scale(J) : 0.0;
+  Eigen::VectorXd tolerances(rates.size());
+  for (long i = 0; i < rates.size(); ++i) {
+    double terms = rate * std::abs(x[i]);
+    for (long j = 0; j < J.cols(); ++j) terms += std::abs(J(i, j)) * sizes[j];
+    double noisy = i < noise.size() && std::isfinite(noise[i]) ? 1e6 * noise[i] : 0.0;
+    tolerances[i] = margin * std::max(1e-9 * terms, noisy);
+  }
+  return worst_row(rates, tolerances);
 }
 
 }  // namespace eomgen::runtime

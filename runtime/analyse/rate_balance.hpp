@@ -26,8 +26,8 @@ struct RateBalance {
 };
 
 /// Zero for row i: 1e-9 of the size of the terms x'_i sums. In the linear approximation they are
-/// Σ_j |J_ij| s_j, with s_j the configuration's `size` for a coordinate (`is_coordinate`) and |x_j|
-/// for a velocity; a component of size |x_i| changes at about ρ |x_i| in a system whose rate is ρ
+/// Σ_j |J_ij| s_j, with s_j the `sizes` of the components: a coordinate's own (coordinate_sizes.hpp),
+/// a velocity's |x_j|; a component of size |x_i| changes at about ρ |x_i| in a system whose rate is ρ
 /// (J's spectral scale, system_scales.hpp). Where terms cancel exactly in J, the row's rounding
 /// `noise` (below) tells their size: 1e6 of it, as 1e-9 is about 1e7 rounding errors. The Whipple
 /// bicycle's lateral acceleration in its straight run at 4.6 m/s is rounding alone (4e-17) in a
@@ -35,8 +35,11 @@ struct RateBalance {
 /// those of the components the rates are checked on (J square); `margin` scales every tolerance
 /// (1e-3 for a search that should land well within it).
 RateBalance rate_balance(const Eigen::VectorXd& rates, const Eigen::MatrixXd& J, const Eigen::VectorXd& x,
-                         const std::vector<bool>& is_coordinate, double size, const Eigen::VectorXd& noise,
-                         double margin = 1.0);
+                         const Eigen::VectorXd& sizes, const Eigen::VectorXd& noise, double margin = 1.0);
+
+/// The rates' balance against per-row tolerances: the row farthest past its own (a rate that is
+/// not finite, or not zero where its tolerance is, past any).
+RateBalance worst_row(const Eigen::VectorXd& rates, const Eigen::VectorXd& tolerances);
 
 /// Each rate's rounding noise at the state x: its largest change when every parameter, input and
 /// component of x is moved by a few units in its last place, three times (the linear change is
@@ -61,10 +64,10 @@ Eigen::VectorXd rounding_noise(const Rates& rates, const Problem& problem, const
 
 /// rate_balance on the reduced state (first_order_form.hpp: the non-cyclic coordinates and the
 /// velocities) at x: `rates(problem, y)` gives x' of the whole state at y, J is ∂x'/∂x of the whole
-/// state at x, and `size` the configuration's.
+/// state at x, and `coordinate_size` each coordinate's (coordinate_sizes.hpp).
 template <class Rates>
 RateBalance reduced_rate_balance(const Problem& problem, const std::vector<double>& x, const Rates& rates,
-                                 const Eigen::MatrixXd& J, double size, double margin) {
+                                 const Eigen::MatrixXd& J, const std::vector<double>& coordinate_size, double margin) {
   const eomgen_model_abi& m = *problem.model;
   std::vector<int> kept = reduced_state(m);
   auto reduced = [&](const Problem& at, const std::vector<double>& y) {
@@ -72,15 +75,15 @@ RateBalance reduced_rate_balance(const Problem& problem, const std::vector<doubl
     for (std::size_t i = 0; i < kept.size(); ++i) out[long(i)] = all[kept[i]];
     return out;
   };
-  Eigen::VectorXd values(long(kept.size()));
+  Eigen::VectorXd values(long(kept.size())), sizes(long(kept.size()));
   Eigen::MatrixXd reduced_J(long(kept.size()), long(kept.size()));
-  std::vector<bool> is_coordinate;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     values[long(i)] = x[std::size_t(kept[i])];
-    is_coordinate.push_back(kept[i] < int(m.num_coordinates));
+    bool coordinate = kept[i] < int(m.num_coordinates);
+    sizes[long(i)] = coordinate ? coordinate_size[std::size_t(kept[i])] : std::abs(values[long(i)]);
     for (std::size_t j = 0; j < kept.size(); ++j) reduced_J(long(i), long(j)) = J(kept[i], kept[j]);
   }
-  return rate_balance(reduced(problem, x), reduced_J, values, is_coordinate, size, rounding_noise(reduced, problem, x), margin);
+  return rate_balance(reduced(problem, x), reduced_J, values, sizes, rounding_noise(reduced, problem, x), margin);
 }
 
 }  // namespace eomgen::runtime

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include "integrate/coordinate_sizes.hpp"
 #include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
@@ -21,9 +22,11 @@ Matrix constraint_jacobian(const Problem& p, double t, const double* x) {
   return C;
 }
 
-// columns of C, from the end, that have full rank together: the dependent coordinates; the
-// columns the user gave values for (`given`, may be empty) are taken only when the others do not do
-std::vector<long> dependent_columns(const Matrix& C, const std::vector<bool>& given = {}) {
+// columns of C, from the end, that have full rank together, each weighed in its coordinate's `size`
+// (a slider-crank of 1e-13 m has its angles' columns of 1e-13 beside its slider's 1): the dependent
+// coordinates; the columns the user gave values for (`given`, may be empty) are taken only when the
+// others do not do
+std::vector<long> dependent_columns(const Matrix& C, const std::vector<double>& size, const std::vector<bool>& given = {}) {
   std::vector<long> order;
   for (int pass = 0; pass < 2; ++pass)
     for (long j = C.cols() - 1; j >= 0; --j)
@@ -32,8 +35,8 @@ std::vector<long> dependent_columns(const Matrix& C, const std::vector<bool>& gi
   for (long j : order) {
     if (static_cast<long>(chosen.size()) >= C.rows()) break;
     Eigen::MatrixXd block(C.rows(), static_cast<long>(chosen.size()) + 1);
-    for (std::size_t k = 0; k < chosen.size(); ++k) block.col(static_cast<long>(k)) = C.col(chosen[k]);
-    block.col(static_cast<long>(chosen.size())) = C.col(j);
+    for (std::size_t k = 0; k < chosen.size(); ++k) block.col(static_cast<long>(k)) = C.col(chosen[k]) * size[std::size_t(chosen[k])];
+    block.col(static_cast<long>(chosen.size())) = C.col(j) * size[std::size_t(j)];
     Eigen::FullPivLU<Eigen::MatrixXd> lu(block);
     lu.setThreshold(1e-10);
     if (lu.rank() == block.cols()) chosen.push_back(j);
@@ -41,16 +44,14 @@ std::vector<long> dependent_columns(const Matrix& C, const std::vector<bool>& gi
   return chosen;
 }
 
-// g counts as met below 1e-14 of its own scale, |C_r|·|q| (largest entries): a loop in micrometres
-// is closed to 1e-14 of its size, not to 1e-14 m (an absolute 1e-14 left a pendulum of 1 µm off
-// its rod by 0.15 %); with every coordinate 0 the scale is |C_r| alone
-bool constraints_met(const Eigen::VectorXd& g, const Matrix& Ch, const double* q, std::size_t n) {
-  double size = 0;
-  for (std::size_t j = 0; j < n; ++j) size = std::max(size, std::abs(q[j]));
-  for (long r = 0; r < g.size(); ++r) {
-    double scale = Ch.row(r).lpNorm<Eigen::Infinity>() * (size > 0 ? size : 1.0);
-    if (!(std::abs(g[r]) <= 1e-14 * scale)) return false;
-  }
+// g counts as met below 1e-14 of its own scale, Σ_j |C_rj| s_j with s_j each coordinate's size
+// (integrate/coordinate_sizes.hpp): a loop in micrometres is closed to 1e-14 of its size, not to
+// 1e-14 m (an absolute 1e-14 left a pendulum of 1 µm off its rod by 0.15 %), and a crank's angle
+// counts in radians beside a slider's metres
+bool constraints_met(const Eigen::VectorXd& g, const Matrix& Ch, const std::vector<double>& size) {
+  Eigen::Map<const Eigen::VectorXd> s(size.data(), static_cast<long>(size.size()));
+  for (long r = 0; r < g.size(); ++r)
+    if (!(std::abs(g[r]) <= 1e-14 * Ch.row(r).cwiseAbs().dot(s.transpose()))) return false;
   return true;
 }
 
@@ -76,8 +77,9 @@ bool ConstraintProjection::make_consistent(double t, double* x, const std::vecto
     if (!g.allFinite() || iteration == 50) return false;
     Matrix C = constraint_jacobian(p_, t, x), Ch(holonomic.size(), n);
     for (std::size_t r = 0; r < holonomic.size(); ++r) Ch.row(static_cast<long>(r)) = C.row(holonomic[r]);
-    if (constraints_met(g, Ch, x, n)) break;
-    std::vector<long> dependent = dependent_columns(Ch, given_positions);
+    std::vector<double> size = coordinate_sizes(m, x, false, 1.0);
+    if (constraints_met(g, Ch, size)) break;
+    std::vector<long> dependent = dependent_columns(Ch, size, given_positions);
     if (dependent.size() != holonomic.size()) return project_positions(t, x);  // dependent constraints here
     Eigen::MatrixXd block(Ch.rows(), Ch.rows());
     for (std::size_t k = 0; k < dependent.size(); ++k) block.col(static_cast<long>(k)) = Ch.col(dependent[k]);
@@ -88,7 +90,7 @@ bool ConstraintProjection::make_consistent(double t, double* x, const std::vecto
   // the dependent velocities from C v + b = 0 with the others as given
   m.constraint_residuals(t, x, p_.parameters.data(), position.data(), velocity.data());
   Matrix C = constraint_jacobian(p_, t, x);
-  std::vector<long> dependent = dependent_columns(C, given_velocities);
+  std::vector<long> dependent = dependent_columns(C, coordinate_sizes(m, x, false, 1.0), given_velocities);
   if (dependent.size() != mc) return project_velocities(t, x);
   Eigen::MatrixXd block(mc, mc);
   for (std::size_t k = 0; k < mc; ++k) block.col(static_cast<long>(k)) = C.col(dependent[k]);
@@ -109,7 +111,8 @@ std::pair<double, double> ConstraintProjection::residuals(double t, const double
   return {g, v};
 }
 
-// Gauss–Newton with the smallest correction: Δq = −Cₕᵀ (Cₕ Cₕᵀ)⁻¹ g
+// Gauss–Newton with the smallest correction in each coordinate's size D (a radian beside the
+// configuration's length): Δq = −D (Cₕ D)ᵀ (Cₕ D² Cₕᵀ)⁻¹ g
 bool ConstraintProjection::project_positions(double t, double* x) {
   const eomgen_model_abi& m = *p_.model;
   std::size_t mc = m.num_constraints, n = m.num_coordinates;
@@ -125,16 +128,18 @@ bool ConstraintProjection::project_positions(double t, double* x) {
     if (!g.allFinite()) return false;
     Matrix C = constraint_jacobian(p_, t, x), Ch(rows.size(), n);
     for (std::size_t r = 0; r < rows.size(); ++r) Ch.row(r) = C.row(rows[r]);
-    if (constraints_met(g, Ch, x, n)) return true;
-    Eigen::LDLT<Eigen::MatrixXd> normal(Ch * Ch.transpose());
+    std::vector<double> size = coordinate_sizes(m, x, false, 1.0);
+    if (constraints_met(g, Ch, size)) return true;
+    Eigen::Map<const Eigen::VectorXd> D(size.data(), static_cast<long>(n));
+    Matrix scaled = Ch * D.asDiagonal();
+    Eigen::LDLT<Eigen::MatrixXd> normal(scaled * scaled.transpose());
     if (normal.info() != Eigen::Success || normal.vectorD().cwiseAbs().minCoeff() < 1e-14 * normal.vectorD().cwiseAbs().maxCoeff())
       return false;
-    Eigen::VectorXd step = Ch.transpose() * normal.solve(g);
+    Eigen::VectorXd step = D.asDiagonal() * (scaled.transpose() * normal.solve(g));
     for (std::size_t j = 0; j < n; ++j) x[j] -= step[j];
-    // a step within rounding of the configuration's size (one unit only where it is all zero): with
-    // a floor of one unit, a rod of 1e-12 m stopped after its first step, 7e-10 of its length off
-    double size = Eigen::Map<Eigen::VectorXd>(x, n).lpNorm<Eigen::Infinity>();
-    if (step.lpNorm<Eigen::Infinity>() < 1e-15 * (size > 0 ? size : 1.0)) return true;
+    // a step within rounding of each coordinate's size (one unit only where all are zero): with a
+    // floor of one unit, a rod of 1e-12 m stopped after its first step, 7e-10 of its length off
+    if (step.cwiseQuotient(D).lpNorm<Eigen::Infinity>() < 1e-15) return true;
   }
   return false;
 }

@@ -82,10 +82,10 @@ struct SyntheticModel {
   std::deque<std::string> texts;
   std::vector<const char*> coordinates, states, velocity_definitions, parameters{"p"};
   std::vector<double> default_parameters{0.0}, default_state;
-  std::unique_ptr<bool[]> cyclic;
+  std::unique_ptr<bool[]> cyclic, angle;
   eomgen_model_abi abi{};
 
-  explicit SyntheticModel(std::size_t n) : default_state(2 * n, 0.0), cyclic(new bool[n]()) {
+  explicit SyntheticModel(std::size_t n) : default_state(2 * n, 0.0), cyclic(new bool[n]()), angle(new bool[n]()) {
     for (std::size_t i = 0; i < n; ++i) coordinates.push_back(texts.emplace_back(fmt::format("q{}", i + 1)).c_str());
     states = coordinates;
     for (std::size_t i = 0; i < n; ++i) {
@@ -105,6 +105,7 @@ struct SyntheticModel {
     abi.default_parameters = default_parameters.data();
     abi.default_state = default_state.data();
     abi.is_cyclic = cyclic.get();
+    abi.is_angle = angle.get();
     abi.rhs = rhs, abi.jacobian_state = jacobian_state, abi.jacobian_input = nothing, abi.forcing = forcing;
     abi.outputs = nothing;
     abi.mass_matrix = mass_matrix;
