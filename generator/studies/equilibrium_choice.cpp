@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analyse/equilibrium.hpp"
+#include "analyse/first_order_form.hpp"
 #include "analyse/state_check.hpp"
 #include "analyse/unbalanced_rate.hpp"
 #include "studies/equilibrium_choice.hpp"
@@ -42,7 +43,8 @@ std::optional<runtime::Equilibrium> completed_at(const runtime::Problem& problem
   const eomgen_model_abi& m = *problem.model;
   std::vector<std::size_t> free = runtime::unheld_unknowns(m, named);
   if (free.empty()) return std::nullopt;
-  for (std::size_t i = 0; i < m.num_coordinates; ++i)
+  // (an Appell model's pseudo-velocities are not der(q): those not named stay zero)
+  for (std::size_t i = 0; i < m.num_coordinates && !runtime::has_pseudo_velocities(m); ++i)
     if (m.is_cyclic[i] && !named[m.num_coordinates + i]) x[m.num_coordinates + i] = initial[m.num_coordinates + i];
   runtime::Equilibrium completed = runtime::complete_equilibrium(problem, std::move(x), named);
   if (!completed.converged || !runtime::unfit_state(problem, 0.0, completed.state).empty()) return std::nullopt;

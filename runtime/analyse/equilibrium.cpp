@@ -1,5 +1,6 @@
 #include "analyse/equilibrium.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -132,35 +133,42 @@ Equilibrium check_first_order(const Problem& problem, std::vector<double> state)
   return e;
 }
 
-// Newton on the non-cyclic coordinates, the pseudo-velocities as given
-Equilibrium find_first_order(const Problem& problem, std::vector<double> x) {
+// Newton on the coordinates `unknowns` (non-cyclic ones), the pseudo-velocities as given; each
+// unknown in its coordinate's size (coordinate_sizes.hpp), so that the rank is decided, and a step
+// limited, alike for angles and lengths
+Equilibrium find_first_order(const Problem& problem, std::vector<double> x, const std::vector<int>& unknowns) {
   const eomgen_model_abi& m = *problem.model;
-  std::vector<int> kept = reduced_state(m), unknowns;
-  for (std::size_t i = 0; i < m.num_coordinates; ++i)
-    if (!m.is_cyclic[i]) unknowns.push_back(static_cast<int>(i));
+  std::vector<int> kept = reduced_state(m);
+  std::vector<long> column;  // each unknown's place in the reduced state
+  for (int i : unknowns) column.push_back(long(std::find(kept.begin(), kept.end(), i) - kept.begin()));
   int iterations = 0;
   for (; iterations < 100 && !unknowns.empty(); ++iterations) {
     Eigen::VectorXd r = reduced_rate(problem, x);
     Eigen::MatrixXd jacobian = reduced_jacobian(problem, x);
     // done at a thousandth of what counts as zero, in the model's scales (not 1e-15 in its units)
     if (!r.allFinite() || first_order_balance(problem, x, 1e-3).balanced) break;
-    Eigen::MatrixXd J = jacobian.leftCols(static_cast<long>(unknowns.size()));
-    Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
+    std::vector<double> size = coordinate_sizes(m, x.data(), true, 1.0);
+    Eigen::MatrixXd J(jacobian.rows(), long(unknowns.size()));
+    Eigen::VectorXd unit(long(unknowns.size()));
+    for (std::size_t k = 0; k < unknowns.size(); ++k) {
+      unit[long(k)] = size[std::size_t(unknowns[k])];
+      J.col(long(k)) = jacobian.col(column[k]) * unit[long(k)];
+    }
+    Eigen::VectorXd step = unit.asDiagonal() * J.completeOrthogonalDecomposition().solve(-r);
     auto moved = [&](double fraction) {
       std::vector<double> y = x;
       for (std::size_t k = 0; k < unknowns.size(); ++k) y[unknowns[k]] += fraction * step[static_cast<long>(k)];
       normalize_quaternions(m, y.data());
       return y;
     };
-    double largest = step.cwiseAbs().maxCoeff();
+    double largest = step.cwiseQuotient(unit).cwiseAbs().maxCoeff();
     double scale = step_fraction(largest, r.cwiseAbs().maxCoeff(),
                                  [&] { return reduced_rate(problem, moved(1.0)).cwiseAbs().maxCoeff(); });
     // moved() keeps quaternions unit: Newton moves their four coordinates freely, and off the unit
     // sphere a falling body's shrank to 1e-30 in 13 steps and its Jacobian, which the tolerance
     // follows, grew to 1e13
     x = moved(scale);
-    if (scale == 1.0 && largest <= 1e-14 * Eigen::Map<Eigen::VectorXd>(x.data(), Eigen::Index(x.size())).cwiseAbs().maxCoeff())
-      break;
+    if (scale == 1.0 && largest <= 1e-14) break;
   }
   Equilibrium e = check_first_order(problem, std::move(x));
   e.iterations = iterations;
@@ -328,7 +336,10 @@ Equilibrium come_to_rest(const Problem& problem, std::vector<double> x, const st
 
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
   const eomgen_model_abi& m = *problem.model;
-  if (has_pseudo_velocities(m)) return find_first_order(problem, start);
+  if (has_pseudo_velocities(m)) {
+    std::vector<std::size_t> coordinates = unheld_unknowns(m, std::vector<bool>(m.num_states));
+    return find_first_order(problem, start, std::vector<int>(coordinates.begin(), coordinates.end()));
+  }
   if (has_multipliers(m)) return find_constrained_equilibrium(problem, start);
   std::size_t n = m.num_coordinates;
   std::vector<double> at_rest = start;
@@ -367,7 +378,20 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
 
 std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::vector<bool>& held) {
   std::vector<std::size_t> unknowns;
-  if (has_pseudo_velocities(m) || has_multipliers(m)) return unknowns;
+  if (has_multipliers(m)) return unknowns;
+  if (has_pseudo_velocities(m)) {
+    // the non-cyclic coordinates, a quaternion's four held together (kept unit, none of them may
+    // move alone)
+    std::vector<bool> kept(held.begin(), held.begin() + long(m.num_coordinates));
+    for (std::size_t q = 0; q < m.num_quaternions; ++q) {
+      const std::size_t* c = m.quaternion_coordinates + 4 * q;
+      bool any = held[c[0]] || held[c[1]] || held[c[2]] || held[c[3]];
+      for (int k = 0; k < 4; ++k) kept[c[k]] = kept[c[k]] || any;
+    }
+    for (std::size_t i = 0; i < m.num_coordinates; ++i)
+      if (!m.is_cyclic[i] && !kept[i]) unknowns.push_back(i);
+    return unknowns;
+  }
   for (std::size_t i = 0; i < m.num_coordinates; ++i) {
     std::size_t own = m.is_cyclic[i] ? m.num_coordinates + i : i;
     if (!held[own]) unknowns.push_back(own);
@@ -377,11 +401,13 @@ std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::v
 
 Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> state, const std::vector<bool>& held) {
   const eomgen_model_abi& m = *problem.model;
+  std::vector<std::size_t> free = unheld_unknowns(m, held);
+  if (free.empty()) return check_equilibrium(problem, std::move(state));
+  // Appell's pseudo-velocities as given (those not named are zero): the coordinates alone free
+  if (has_pseudo_velocities(m)) return find_first_order(problem, std::move(state), std::vector<int>(free.begin(), free.end()));
   std::size_t n = m.num_coordinates;
   for (std::size_t i = 0; i < n; ++i)
     if (!m.is_cyclic[i] && !held[n + i]) state[n + i] = 0;
-  std::vector<std::size_t> free = unheld_unknowns(m, held);
-  if (free.empty()) return check_equilibrium(problem, std::move(state));
   return balance_by_newton(problem, std::move(state), std::vector<int>(free.begin(), free.end()), false);
 }
 
