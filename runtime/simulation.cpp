@@ -269,6 +269,17 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
                              "its domain) at t = {:.9g}, {}",
                              f.non_finite_time(), configuration(*p.model, f.non_finite_state()));
   (void)largest;
+  if (stepper.reason.find("TOO_MUCH_ACC") != std::string::npos)
+    return why + fmt::format(" at {}: the tolerances ask for more accuracy than double precision gives; loosen --rtol "
+                             "(or --atol), or take --integrator reference, which carries more digits",
+                             configuration(*p.model, x));
+  // a step that t cannot tell from zero: the error test or Newton's iteration asks for more than
+  // double precision gives there (a slider-crank through its dead centre at rtol 3e-13)
+  if (double h = std::abs(stepper.failure_step); h != 0 && h <= 1e-13 * std::abs(stepper.failure_time))
+    return why + fmt::format(" at {}: the step fell {}, within the rounding of t: at these tolerances the integrator "
+                             "cannot follow the motion there in double precision; try a looser --rtol, another "
+                             "--integrator, or --integrator reference, which carries more digits",
+                             configuration(*p.model, x), h < 1e-300 ? std::string("to zero") : fmt::format("to {:.3g}", h));
   return why + fmt::format(" at {}", configuration(*p.model, x));
 }
 

@@ -70,6 +70,8 @@ class Arkode : public Stepper {
     if (status >= 0) return true;
     failure_time = reached;
     flag = status;
+    if (implicit_) ARKStepGetCurrentStep(memory_, &failure_step);
+    else ERKStepGetCurrentStep(memory_, &failure_step);
     reason = fmt::format("ARKODE ({}) stopped with {} ({})", implicit_ ? "DIRK" : "explicit RK",
                          take_flag_name(implicit_ ? ARKStepGetReturnFlagName(status) : ERKStepGetReturnFlagName(status)),
                          status);

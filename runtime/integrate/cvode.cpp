@@ -72,6 +72,7 @@ class Cvode : public Stepper {
     if (status >= 0 && !projection_failed) return true;
     failure_time = reached;
     flag = status;
+    CVodeGetCurrentStep(memory_, &failure_step);
     reason = projection_failed ? std::string("the projection onto the constraints failed (Newton's method did not converge)")
                                : fmt::format("CVODE {} stopped with {} ({})", adams_ ? "Adams" : "BDF",
                                              take_flag_name(CVodeGetReturnFlagName(status)), status);

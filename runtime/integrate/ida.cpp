@@ -84,6 +84,7 @@ class Ida : public Stepper {
     if (status >= 0) return true;
     failure_time = reached;
     flag = status;
+    IDAGetCurrentStep(memory_, &failure_step);
     reason = fmt::format("IDA stopped with {} ({})", take_flag_name(IDAGetReturnFlagName(status)), status);
     return false;
   }

@@ -60,6 +60,8 @@ class Stepper {
   double failure_time = 0;
   int flag = 0;
   std::string reason;
+  /// the step the integrator was about to try when it failed (0 where it does not say)
+  double failure_step = 0;
 };
 
 std::unique_ptr<Stepper> make_cvode(RightHandSide& f, const std::vector<double>& x0, const SimulationSettings& s, bool adams);
