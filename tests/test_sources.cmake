@@ -94,7 +94,7 @@ set(EOMGEN_TEST_FILES
   studies/run_studies_test.cpp                      slow
   cli/stability_command_test.cpp                    cli
   cli/angles_beside_lengths_test.cpp                cli
-  cli/appell_completion_test.cpp                    cli
+  cli/at_completion_test.cpp                        cli
   cli/trustworthy_analysis_test.cpp                 cli
   cli/routh_stability_test.cpp                      cli
   cli/linear_command_test.cpp                       cli

@@ -37,7 +37,9 @@ std::string states_text(const eomgen_model_abi& m, const std::vector<std::size_t
 // Where --at names some states and the rest as given do not balance: the equilibrium or steady
 // motion with the named ones held, the unnamed cyclic velocities started from the model's values
 // (a spherical pendulum held at θ = 0.8 has its φ' = 3.75 for a conical motion; from φ' = 0 no
-// Newton step leads there), said in a note
+// Newton step leads there), said in a note; not converged where Newton found none (a Lagrange I
+// model's state then on its constraints, closed around the named coordinates); none where nothing
+// is free
 std::optional<runtime::Equilibrium> completed_at(const runtime::Problem& problem, std::vector<double> x,
                                                  const std::vector<double>& initial, const std::vector<bool>& named) {
   const eomgen_model_abi& m = *problem.model;
@@ -47,7 +49,7 @@ std::optional<runtime::Equilibrium> completed_at(const runtime::Problem& problem
   for (std::size_t i = 0; i < m.num_coordinates && !runtime::has_pseudo_velocities(m); ++i)
     if (m.is_cyclic[i] && !named[m.num_coordinates + i]) x[m.num_coordinates + i] = initial[m.num_coordinates + i];
   runtime::Equilibrium completed = runtime::complete_equilibrium(problem, std::move(x), named);
-  if (!completed.converged || !runtime::unfit_state(problem, 0.0, completed.state).empty()) return std::nullopt;
+  if (completed.converged && !runtime::unfit_state(problem, 0.0, completed.state).empty()) completed.converged = false;
   completed.note = fmt::format("the state given by --at does not balance with the other values as given; with the "
                                "named ones held, {} does", states_text(m, free, &completed.state));
   return completed;
@@ -120,10 +122,18 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
     out = runtime::check_equilibrium(problem, *x);
     std::optional<runtime::Equilibrium> completed;
     if (!out.converged && out.moving.empty()) completed = completed_at(problem, *x, initial, named);
-    if (completed) {
+    if (completed && completed->converged) {
       out = *completed;
       std::cerr << "eomgen: note: " << out.note << "\n";
       return std::nullopt;
+    }
+    if (!out.unmet.empty() && completed && completed->unmet.empty()) {
+      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: with the named values held, "
+                               "the constraints close at {}, where the largest residual of the equations of motion is "
+                               "{:.3g} (tolerance {:.3g})\n  hint: leave out --at to search for an equilibrium on the "
+                               "constraints\n", states_text(m, runtime::unheld_unknowns(m, named), &completed->state),
+                               completed->residual, completed->tolerance);
+      return exit_user_error;
     }
     if (!out.unmet.empty()) {
       std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: its configuration does not "

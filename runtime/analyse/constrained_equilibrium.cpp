@@ -92,21 +92,35 @@ Equilibrium check_constrained_equilibrium(const Problem& problem, std::vector<do
   return e;
 }
 
-Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vector<double>& start) {
+Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vector<double>& start,
+                                         const std::vector<bool>& held) {
   const eomgen_model_abi& m = *problem.model;
   std::size_t n = m.num_coordinates;
   std::vector<double> x = start;
   for (std::size_t i = 0; i < n; ++i)
     if (!m.is_cyclic[i]) x[n + i] = 0;
+  std::vector<long> kept;  // the held coordinates
+  for (std::size_t i = 0; i < n && i < held.size(); ++i)
+    if (held[i]) kept.push_back(long(i));
   ConstraintProjection projection(problem);
+  // back onto g = 0: the held coordinates kept where there are any (the dependent ones chosen among
+  // the others), else the smallest correction
+  auto onto_constraints = [&](std::vector<double>& y) {
+    return kept.empty() ? projection.project(0.0, y.data()) : projection.make_consistent(0.0, y.data(), held);
+  };
   int iterations = 0;
-  if (projection.make_consistent(0.0, x.data())) {
+  if (projection.make_consistent(0.0, x.data(), held)) {
     for (; iterations < 100 && !balance_at(problem, x, 1e-3).balanced; ++iterations) {
       Eigen::VectorXd ddq = unstabilized_rate(problem, x).tail(long(n));
       // the tangent directions in each coordinate's size: against G's largest entry in its own units,
-      // a slider-crank of 1e-13 m had its crank's and rod's columns (r of 1e-13 m) taken for zero
+      // a slider-crank of 1e-13 m had its crank's and rod's columns (r of 1e-13 m) taken for zero;
+      // a held coordinate's row keeps it
       Eigen::VectorXd size = Eigen::Map<const Eigen::VectorXd>(given_sizes(m, x).data(), long(n));
-      Eigen::MatrixXd N = size.asDiagonal() * tangent_basis(holonomic_constraints(problem, x).G * size.asDiagonal(), long(n));
+      RowMajor G = holonomic_constraints(problem, x).G, fixed(G.rows() + long(kept.size()), long(n));
+      fixed << G, RowMajor::Zero(long(kept.size()), long(n));
+      for (std::size_t k = 0; k < kept.size(); ++k) fixed(G.rows() + long(k), kept[k]) = 1;
+      Eigen::MatrixXd N = size.asDiagonal() * tangent_basis(fixed * size.asDiagonal(), long(n));
+      if (N.cols() == 0) break;  // the held coordinates fix the configuration
       Eigen::MatrixXd stiffness = N.transpose() * unstabilized_jacobian(problem, x).bottomLeftCorner(long(n), long(n)) * N;
       Eigen::VectorXd step = N * stiffness.completeOrthogonalDecomposition().solve(-N.transpose() * ddq);
       for (std::size_t i = 0; i < n; ++i)
@@ -116,7 +130,7 @@ Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vect
       for (int halvings = 0; halvings < 60; ++halvings, fraction /= 2) {
         y = x;
         for (std::size_t i = 0; i < n; ++i) y[i] += fraction * step[long(i)];
-        if (projection.project(0.0, y.data()) && unstabilized_rate(problem, y).tail(long(n)).norm() < before) break;
+        if (onto_constraints(y) && unstabilized_rate(problem, y).tail(long(n)).norm() < before) break;
         y.clear();
       }
       if (y.empty()) break;  // no part of the step lowers q'': a minimum of |q''| that is not zero

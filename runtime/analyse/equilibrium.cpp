@@ -378,10 +378,9 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
 
 std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::vector<bool>& held) {
   std::vector<std::size_t> unknowns;
-  if (has_multipliers(m)) return unknowns;
-  if (has_pseudo_velocities(m)) {
-    // the non-cyclic coordinates, a quaternion's four held together (kept unit, none of them may
-    // move alone)
+  if (has_pseudo_velocities(m) || has_multipliers(m)) {
+    // the non-cyclic coordinates (Appell, Lagrange I), a quaternion's four held together (kept
+    // unit, none of them may move alone)
     std::vector<bool> kept(held.begin(), held.begin() + long(m.num_coordinates));
     for (std::size_t q = 0; q < m.num_quaternions; ++q) {
       const std::size_t* c = m.quaternion_coordinates + 4 * q;
@@ -405,6 +404,8 @@ Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> sta
   if (free.empty()) return check_equilibrium(problem, std::move(state));
   // Appell's pseudo-velocities as given (those not named are zero): the coordinates alone free
   if (has_pseudo_velocities(m)) return find_first_order(problem, std::move(state), std::vector<int>(free.begin(), free.end()));
+  // Lagrange I: the other coordinates close the constraints around the held ones, at rest
+  if (has_multipliers(m)) return find_constrained_equilibrium(problem, state, held);
   std::size_t n = m.num_coordinates;
   for (std::size_t i = 0; i < n; ++i)
     if (!m.is_cyclic[i] && !held[n + i]) state[n + i] = 0;

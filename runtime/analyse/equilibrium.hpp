@@ -45,12 +45,13 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
 /// velocities, from their values in `state`; the other velocities zero. A spherical pendulum held
 /// at θ = 0.8 has its conical motion's φ' solved for. An Appell model has its other non-cyclic
 /// coordinates solved for, its pseudo-velocities as in `state` (a quaternion is held whole where
-/// one of its components is). A Lagrange I model is checked as given. Not converged where nothing
-/// is free or Newton finds none.
+/// one of its components is). A Lagrange I model has its other coordinates close the constraints
+/// around the held ones and then solved for on them (find_constrained_equilibrium). Not converged
+/// where nothing is free or Newton finds none.
 Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> state, const std::vector<bool>& held);
 
 /// The states complete_equilibrium solves for: the non-cyclic coordinates and the cyclic velocities
-/// not `held` (indices into the state; an Appell model's coordinates alone, none for Lagrange I).
+/// not `held` (indices into the state; an Appell or Lagrange I model's coordinates alone).
 std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::vector<bool>& held);
 
 }  // namespace eomgen::runtime

@@ -1,6 +1,6 @@
-// `stability --at` on an Appell model names some states and solves for the rest, as it does for
-// Lagrange II: the asymmetric top on its ball joint, its angular velocity named zero, has its
-// quaternion solved for. Checked against the top written out here: its centre above the pivot, and
+// `stability --at` names some states and solves for the rest on Appell and Lagrange I models, as it
+// does for Lagrange II. The asymmetric top on its ball joint, its angular velocity named zero, has
+// its quaternion solved for. Checked against the top written out here: its centre above the pivot, and
 // its linearization about the pivot, I_W δθ'' = m g h diag(1, 1, 0) δθ (the gravity moment of a
 // small turn δθ of the inverted body, h the centre's height over the pivot, I_W its inertia about
 // the pivot in world axes), which has the eigenvalues ±√μ of I_W⁻¹ m g h diag(1, 1, 0).
@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -28,7 +29,7 @@ Eigen::Matrix3d inertia_about_pivot() {
   return I + 1.5 * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
 }
 
-TEST(AppellCompletion, ATopAtRestHasItsQuaternionSolvedForAndStandsAboveItsPivot) {
+TEST(AtCompletion, ATopAtRestHasItsQuaternionSolvedForAndStandsAboveItsPivot) {
   CommandOutput r = run_eomgen(fmt::format("stability '{}' --at wz=0 --format json", model_path("ball_joint_top")));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("with the named ones held, qw = "), std::string::npos) << r.err;
@@ -62,11 +63,43 @@ TEST(AppellCompletion, ATopAtRestHasItsQuaternionSolvedForAndStandsAboveItsPivot
 
 // A named quaternion component holds the whole quaternion (it is kept unit): nothing is then free,
 // and the state is checked as given
-TEST(AppellCompletion, ANamedQuaternionComponentHoldsTheQuaternion) {
+TEST(AtCompletion, ANamedQuaternionComponentHoldsTheQuaternion) {
   CommandOutput r = run_eomgen(fmt::format("stability '{}' --at qw=0.9", model_path("ball_joint_top")));
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_NE(r.err.find("is not an equilibrium"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("Newton on"), std::string::npos) << r.err;
+}
+
+// Lagrange I: the coordinates not named close the constraints around the named ones. The Cartesian
+// pendulum held at x = 0 hangs at y = −l; the four-bar held at its equilibrium's crank angle (found
+// by the search) closes its loop at that equilibrium's coupler and rocker; held at 1.2 rad, where it
+// is none, the refusal names where the loop closes, and the loop closes there (to the six digits
+// printed) with a residual far past the tolerance
+TEST(AtCompletion, ALagrangeOneModelClosesItsConstraintsAroundTheNamedCoordinates) {
+  JsonValue hanging = run_json(fmt::format("stability '{}' --at x=0", model_path("pendulum_cartesian")));
+  EXPECT_NEAR(at(*hanging.find("equilibrium"), "y"), -1, 1e-12);
+  std::string four_bar = model_path("four_bar_linkage");
+  const JsonValue searched = *run_json(fmt::format("stability '{}'", four_bar)).find("equilibrium");
+  CommandOutput held = run_eomgen(fmt::format("stability '{}' --at crank={:.17g} --format json", four_bar, at(searched, "crank")));
+  ASSERT_EQ(held.status, 0) << held.err;
+  EXPECT_NE(held.err.find("with the named ones held, coupler = "), std::string::npos) << held.err;
+  Diagnostics diagnostics;
+  std::optional<JsonValue> json = parse_json(held.out, "stability", diagnostics);
+  ASSERT_TRUE(json) << held.out;
+  for (const char* name : {"coupler", "rocker"})
+    EXPECT_NEAR(at(*json->find("equilibrium"), name), at(searched, name), 1e-9) << name;
+  CommandOutput off = run_eomgen(fmt::format("stability '{}' --at crank=1.2", four_bar));
+  EXPECT_EQ(off.status, 2) << off.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(off.err, m, std::regex("the constraints close at coupler = ([-0-9.e]+), rocker = ([-0-9.e]+), "
+                                                      "where the largest residual of the equations of motion is ([0-9.e+-]+) "
+                                                      "\\(tolerance ([0-9.e+-]+)\\)")))
+      << off.err;
+  // models/four_bar_linkage.toml's lengths: the pin a (cos c1, sin c1) + b (cos c12, sin c12) = (d, 0) + c (cos c3, sin c3)
+  const double a = 0.2, b = 0.5, c = 0.4, d = 0.45, c1 = 1.2, c12 = c1 + std::stod(m[1]), c3 = std::stod(m[2]);
+  EXPECT_NEAR(a * std::cos(c1) + b * std::cos(c12) - d - c * std::cos(c3), 0, 1e-5);
+  EXPECT_NEAR(a * std::sin(c1) + b * std::sin(c12) - c * std::sin(c3), 0, 1e-5);
+  EXPECT_GT(std::stod(m[3]), 1e3 * std::stod(m[4]));
 }
 
 }  // namespace
