@@ -279,7 +279,8 @@ std::string diagnose(const Problem& p, const RightHandSide& f, const Stepper& st
     return why + fmt::format(" at {}: the step fell {}, within the rounding of t: at these tolerances the integrator "
                              "cannot follow the motion there in double precision; try a looser --rtol, another "
                              "--integrator, or --integrator reference, which carries more digits",
-                             configuration(*p.model, x), h < 1e-300 ? std::string("to zero") : fmt::format("to {:.3g}", h));
+                             configuration(*p.model, x),
+                             h < 1e-300 ? std::string("to zero") : fmt::format("to {:.3g}", h));
   return why + fmt::format(" at {}", configuration(*p.model, x));
 }
 

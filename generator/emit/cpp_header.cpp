@@ -483,7 +483,8 @@ std::string emit_cpp_header(const Equations& given) {
       quoted_list(s.parameter_names), quoted_list(s.coordinate_names), quoted_list(velocities), quoted_list(definitions),
       quoted_list(states),
       quoted_list(s.input_names), quoted_list(outputs), number_list(s.parameter_defaults), number_list(state),
-      number_list(s.input_defaults), bool_list(cyclic_coordinates(e)), bool_list(angle_coordinates(e)), e.quaternions.size(), quaternion_list(e),
+      number_list(s.input_defaults), bool_list(cyclic_coordinates(e)), bool_list(angle_coordinates(e)),
+      e.quaternions.size(), quaternion_list(e),
       e.conserves_energy_without_inputs ? "true" : "false",
       separable_hamiltonian(e) ? "true" : "false");
   out += fmt::format(

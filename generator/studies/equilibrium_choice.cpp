@@ -128,8 +128,8 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
       return std::nullopt;
     }
     if (!out.unmet.empty() && completed && completed->unmet.empty()) {
-      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: with the named values held, "
-                               "the constraints close at {}, where the largest residual of the equations of motion is "
+      std::cerr << fmt::format("eomgen: error: the state given by --at is not an equilibrium: with the named values "
+                               "held, the constraints close at {}, where the largest residual of the equations of motion is "
                                "{:.3g} (tolerance {:.3g})\n  hint: leave out --at to search for an equilibrium on the "
                                "constraints\n", states_text(m, runtime::unheld_unknowns(m, named), &completed->state),
                                completed->residual, completed->tolerance);

@@ -12,7 +12,8 @@
 namespace eomgen::runtime {
 
 /// The state as given: not an equilibrium where it leaves the holonomic constraints (beyond 1e-9
-/// of each one's scale, Σ_j |∂g/∂q_j| s_j with s_j q_j's size; Equilibrium::unmet), moves a coordinate that is not cyclic
+/// of each one's scale, Σ_j |∂g/∂q_j| s_j with s_j q_j's size; Equilibrium::unmet), moves a
+/// coordinate that is not cyclic
 /// (Equilibrium::moving) or has a rate past what counts as zero for it (rate_balance.hpp).
 Equilibrium check_constrained_equilibrium(const Problem& problem, std::vector<double> state);
 

@@ -101,7 +101,8 @@ Eigen::VectorXd force_tolerances(const Problem& p, const Derivatives& d, const s
 // The part of a Newton step to take: all of it when it all but solves the equations (the largest
 // residual after it below a thousandth of before: a linear problem, or one near its root, in any
 // units), else at most half a unit (half a radian for an angle, half the configuration's size for a
-// length: `largest` is in the coordinates' sizes), so that the search stays near where it started. Limited alone, a spring of 1e-6 N/m, whose mass hangs 9.81e6 m down, was out of reach.
+// length: `largest` is in the coordinates' sizes), so that the search stays near where it started.
+// Limited alone, a spring of 1e-6 N/m, whose mass hangs 9.81e6 m down, was out of reach.
 template <class Residual>
 double step_fraction(double largest, double residual, const Residual& residual_after_whole_step) {
   if (largest <= 0.5) return 1.0;
@@ -193,7 +194,8 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
   Equilibrium e;
   e.moving = moving_coordinates(*problem.model, state);
   e.state = std::move(state);
-  RateBalance b = worst_row(d.f, force_tolerances(problem, d, e.state, forcing_at(problem, default_at_rest(*problem.model))));
+  Eigen::VectorXd default_forces = forcing_at(problem, default_at_rest(*problem.model));
+  RateBalance b = worst_row(d.f, force_tolerances(problem, d, e.state, default_forces));
   e.residual = b.residual, e.tolerance = b.tolerance;
   e.converged = b.balanced && e.moving.empty();
   return e;
@@ -216,8 +218,8 @@ double backtracked_fraction(double residual, const Residual& residual_after) {
 // its `weight` and each unknown in its `unit`: the rank is decided against the largest entry, and
 // a spring pendulum of 1e12 m has a stiffness of 1e2 N/m beside a pendulum's 1e25 N m, which left r
 // out of every step
-Eigen::VectorXd newton_step(const Derivatives& d, const std::vector<int>& unknowns, std::size_t n, const Eigen::VectorXd& r,
-                            const Eigen::VectorXd& weight, const Eigen::VectorXd& unit) {
+Eigen::VectorXd newton_step(const Derivatives& d, const std::vector<int>& unknowns, std::size_t n,
+                            const Eigen::VectorXd& r, const Eigen::VectorXd& weight, const Eigen::VectorXd& unit) {
   Eigen::MatrixXd J(n, unknowns.size());
   for (std::size_t k = 0; k < unknowns.size(); ++k) {
     int i = unknowns[k];
@@ -288,7 +290,9 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
   if (!best.empty() && best != x) {
     // the best of the polishing steps, in how far each row is within its own tolerance
     Equilibrium at_best = check_equilibrium(problem, best);
-    auto past = [](const Equilibrium& q) { return q.tolerance > 0 ? q.residual / q.tolerance : q.residual > 0 ? INFINITY : 0.0; };
+    auto past = [](const Equilibrium& q) {
+      return q.tolerance > 0 ? q.residual / q.tolerance : q.residual > 0 ? INFINITY : 0.0;
+    };
     if (!(past(checked) <= past(at_best))) checked = at_best;
   }
   checked.iterations = iterations;
@@ -402,14 +406,15 @@ Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> sta
   const eomgen_model_abi& m = *problem.model;
   std::vector<std::size_t> free = unheld_unknowns(m, held);
   if (free.empty()) return check_equilibrium(problem, std::move(state));
+  std::vector<int> unknowns(free.begin(), free.end());
   // Appell's pseudo-velocities as given (those not named are zero): the coordinates alone free
-  if (has_pseudo_velocities(m)) return find_first_order(problem, std::move(state), std::vector<int>(free.begin(), free.end()));
+  if (has_pseudo_velocities(m)) return find_first_order(problem, std::move(state), unknowns);
   // Lagrange I: the other coordinates close the constraints around the held ones, at rest
   if (has_multipliers(m)) return find_constrained_equilibrium(problem, state, held);
   std::size_t n = m.num_coordinates;
   for (std::size_t i = 0; i < n; ++i)
     if (!m.is_cyclic[i] && !held[n + i]) state[n + i] = 0;
-  return balance_by_newton(problem, std::move(state), std::vector<int>(free.begin(), free.end()), false);
+  return balance_by_newton(problem, std::move(state), unknowns, false);
 }
 
 }  // namespace eomgen::runtime

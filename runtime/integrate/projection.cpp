@@ -26,7 +26,8 @@ Matrix constraint_jacobian(const Problem& p, double t, const double* x) {
 // (a slider-crank of 1e-13 m has its angles' columns of 1e-13 beside its slider's 1): the dependent
 // coordinates; the columns the user gave values for (`given`, may be empty) are taken only when the
 // others do not do
-std::vector<long> dependent_columns(const Matrix& C, const std::vector<double>& size, const std::vector<bool>& given = {}) {
+std::vector<long> dependent_columns(const Matrix& C, const std::vector<double>& size,
+                                    const std::vector<bool>& given = {}) {
   std::vector<long> order;
   for (int pass = 0; pass < 2; ++pass)
     for (long j = C.cols() - 1; j >= 0; --j)
@@ -35,7 +36,8 @@ std::vector<long> dependent_columns(const Matrix& C, const std::vector<double>& 
   for (long j : order) {
     if (static_cast<long>(chosen.size()) >= C.rows()) break;
     Eigen::MatrixXd block(C.rows(), static_cast<long>(chosen.size()) + 1);
-    for (std::size_t k = 0; k < chosen.size(); ++k) block.col(static_cast<long>(k)) = C.col(chosen[k]) * size[std::size_t(chosen[k])];
+    for (std::size_t k = 0; k < chosen.size(); ++k)
+      block.col(static_cast<long>(k)) = C.col(chosen[k]) * size[std::size_t(chosen[k])];
     block.col(static_cast<long>(chosen.size())) = C.col(j) * size[std::size_t(j)];
     Eigen::FullPivLU<Eigen::MatrixXd> lu(block);
     lu.setThreshold(1e-10);
