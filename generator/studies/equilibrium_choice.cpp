@@ -46,8 +46,9 @@ std::optional<runtime::Equilibrium> completed_at(const runtime::Problem& problem
   std::vector<std::size_t> free = runtime::unheld_unknowns(m, named);
   if (free.empty()) return std::nullopt;
   // (an Appell model's pseudo-velocities are not der(q): those not named stay zero)
-  for (std::size_t i = 0; i < m.num_coordinates && !runtime::has_pseudo_velocities(m); ++i)
-    if (m.is_cyclic[i] && !named[m.num_coordinates + i]) x[m.num_coordinates + i] = initial[m.num_coordinates + i];
+  if (!runtime::has_pseudo_velocities(m))
+    for (std::size_t i = 0; i < m.num_coordinates; ++i)
+      if (m.is_cyclic[i] && !named[m.num_coordinates + i]) x[m.num_coordinates + i] = initial[m.num_coordinates + i];
   runtime::Equilibrium completed = runtime::complete_equilibrium(problem, std::move(x), named);
   if (completed.converged && !runtime::unfit_state(problem, 0.0, completed.state).empty()) completed.converged = false;
   completed.note = fmt::format("the state given by --at does not balance with the other values as given; with the "

@@ -99,14 +99,15 @@ Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vect
   std::vector<double> x = start;
   for (std::size_t i = 0; i < n; ++i)
     if (!m.is_cyclic[i]) x[n + i] = 0;
-  std::vector<long> kept;  // the held coordinates
+  std::vector<long> held_coordinates;
   for (std::size_t i = 0; i < n && i < held.size(); ++i)
-    if (held[i]) kept.push_back(long(i));
+    if (held[i]) held_coordinates.push_back(long(i));
   ConstraintProjection projection(problem);
   // back onto g = 0: the held coordinates kept where there are any (the dependent ones chosen among
   // the others), else the smallest correction
   auto onto_constraints = [&](std::vector<double>& y) {
-    return kept.empty() ? projection.project(0.0, y.data()) : projection.make_consistent(0.0, y.data(), held);
+    if (held_coordinates.empty()) return projection.project(0.0, y.data());
+    return projection.make_consistent(0.0, y.data(), held);
   };
   int iterations = 0;
   if (projection.make_consistent(0.0, x.data(), held)) {
@@ -116,9 +117,9 @@ Equilibrium find_constrained_equilibrium(const Problem& problem, const std::vect
       // a slider-crank of 1e-13 m had its crank's and rod's columns (r of 1e-13 m) taken for zero;
       // a held coordinate's row keeps it
       Eigen::VectorXd size = Eigen::Map<const Eigen::VectorXd>(given_sizes(m, x).data(), long(n));
-      RowMajor G = holonomic_constraints(problem, x).G, fixed(G.rows() + long(kept.size()), long(n));
-      fixed << G, RowMajor::Zero(long(kept.size()), long(n));
-      for (std::size_t k = 0; k < kept.size(); ++k) fixed(G.rows() + long(k), kept[k]) = 1;
+      RowMajor G = holonomic_constraints(problem, x).G, fixed(G.rows() + long(held_coordinates.size()), long(n));
+      fixed << G, RowMajor::Zero(long(held_coordinates.size()), long(n));
+      for (std::size_t k = 0; k < held_coordinates.size(); ++k) fixed(G.rows() + long(k), held_coordinates[k]) = 1;
       Eigen::MatrixXd N = size.asDiagonal() * tangent_basis(fixed * size.asDiagonal(), long(n));
       if (N.cols() == 0) break;  // the held coordinates fix the configuration
       Eigen::MatrixXd stiffness = N.transpose() * unstabilized_jacobian(problem, x).bottomLeftCorner(long(n), long(n)) * N;

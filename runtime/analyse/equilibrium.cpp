@@ -290,10 +290,8 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
   if (!best.empty() && best != x) {
     // the best of the polishing steps, in how far each row is within its own tolerance
     Equilibrium at_best = check_equilibrium(problem, best);
-    auto past = [](const Equilibrium& q) {
-      return q.tolerance > 0 ? q.residual / q.tolerance : q.residual > 0 ? INFINITY : 0.0;
-    };
-    if (!(past(checked) <= past(at_best))) checked = at_best;
+    if (!(how_far_past(checked.residual, checked.tolerance) <= how_far_past(at_best.residual, at_best.tolerance)))
+      checked = at_best;
   }
   checked.iterations = iterations;
   return checked;
@@ -385,14 +383,14 @@ std::vector<std::size_t> unheld_unknowns(const eomgen_model_abi& m, const std::v
   if (has_pseudo_velocities(m) || has_multipliers(m)) {
     // the non-cyclic coordinates (Appell, Lagrange I), a quaternion's four held together (kept
     // unit, none of them may move alone)
-    std::vector<bool> kept(held.begin(), held.begin() + long(m.num_coordinates));
+    std::vector<bool> fixed(held.begin(), held.begin() + long(m.num_coordinates));
     for (std::size_t q = 0; q < m.num_quaternions; ++q) {
       const std::size_t* c = m.quaternion_coordinates + 4 * q;
       bool any = held[c[0]] || held[c[1]] || held[c[2]] || held[c[3]];
-      for (int k = 0; k < 4; ++k) kept[c[k]] = kept[c[k]] || any;
+      for (int k = 0; k < 4; ++k) fixed[c[k]] = fixed[c[k]] || any;
     }
     for (std::size_t i = 0; i < m.num_coordinates; ++i)
-      if (!m.is_cyclic[i] && !kept[i]) unknowns.push_back(i);
+      if (!m.is_cyclic[i] && !fixed[i]) unknowns.push_back(i);
     return unknowns;
   }
   for (std::size_t i = 0; i < m.num_coordinates; ++i) {

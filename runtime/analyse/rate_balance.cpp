@@ -6,15 +6,18 @@
 
 namespace eomgen::runtime {
 
+double how_far_past(double residual, double tolerance) {
+  return !std::isfinite(residual) || !std::isfinite(tolerance) ? INFINITY
+         : tolerance > 0                                       ? residual / tolerance
+         : residual > 0                                        ? INFINITY
+                                                               : 0.0;
+}
+
 RateBalance worst_row(const Eigen::VectorXd& rates, const Eigen::VectorXd& tolerances) {
   RateBalance b;
   double worst = -1;
   for (long i = 0; i < rates.size(); ++i) {
-    double residual = std::abs(rates[i]), tolerance = tolerances[i];
-    double past = !std::isfinite(residual) || !std::isfinite(tolerance) ? INFINITY
-                  : tolerance > 0                                       ? residual / tolerance
-                  : residual > 0                                        ? INFINITY
-                                                                        : 0.0;
+    double residual = std::abs(rates[i]), tolerance = tolerances[i], past = how_far_past(residual, tolerance);
     if (past > worst) worst = past, b.row = i, b.residual = residual, b.tolerance = tolerance;
   }
   b.balanced = worst <= 1;

@@ -37,6 +37,10 @@ struct RateBalance {
 RateBalance rate_balance(const Eigen::VectorXd& rates, const Eigen::MatrixXd& J, const Eigen::VectorXd& x,
                          const Eigen::VectorXd& sizes, const Eigen::VectorXd& noise, double margin = 1.0);
 
+/// How far past its tolerance a residual is (residual / tolerance): a residual that is not finite,
+/// or not zero where its tolerance is, is past any.
+double how_far_past(double residual, double tolerance);
+
 /// The rates' balance against per-row tolerances: the row farthest past its own (a rate that is
 /// not finite, or not zero where its tolerance is, past any).
 RateBalance worst_row(const Eigen::VectorXd& rates, const Eigen::VectorXd& tolerances);

@@ -196,6 +196,15 @@ long line_breaks(const std::string& text) { return std::count(text.begin(), text
 
 std::string write_model(const std::string& name, const std::string& text) { return write_file(name + ".toml", text); }
 
+std::string edited(std::string text, const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "the text has no \"" << from << "\"";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
 CommandOutput run_eomgen(const std::string& arguments) {
   std::string scratch = temporary_directory();
   int status = run_command("EOMGEN_CACHE_DIR='" + std::string(EOMGEN_BINARY_DIR) + "/test-cache' '" +

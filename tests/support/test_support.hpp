@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -68,6 +69,10 @@ std::string write_file(const std::string& file_name, const std::string& text);
 
 /// How many line breaks the text has (an edit that keeps every line where it was keeps this).
 long line_breaks(const std::string& text);
+
+/// `text` with each `from` replaced by its `to` (the first occurrence); a `from` it lacks fails the
+/// test that asks, naming it (a model file's numbers rescaled for a test).
+std::string edited(std::string text, const std::vector<std::pair<std::string, std::string>>& edits);
 
 /// Writes `text` as the model file NAME.toml into a fresh temporary directory; its path.
 std::string write_model(const std::string& name, const std::string& text);
