@@ -54,6 +54,7 @@ set(EOMGEN_TEST_FILES
   generator/derive/angle_coordinates_test.cpp       fast     sanitized
   runtime/constrained_simulation_test.cpp           fast
   runtime/quaternion_simulation_test.cpp            fast
+  runtime/turning_symmetries_test.cpp               fast
   runtime/reference_test.cpp                        slow
   generator/symbolic_analysis/stability_conditions_test.cpp   fast     sanitized
   generator/symbolic_analysis/hamilton_jacobi_test.cpp        fast
@@ -95,6 +96,7 @@ set(EOMGEN_TEST_FILES
   cli/stability_command_test.cpp                    cli
   cli/angles_beside_lengths_test.cpp                cli
   cli/at_completion_test.cpp                        cli
+  cli/turning_symmetry_test.cpp                     cli
   cli/trustworthy_analysis_test.cpp                 cli
   cli/routh_stability_test.cpp                      cli
   cli/linear_command_test.cpp                       cli

@@ -61,6 +61,13 @@ void print_stability_text(const eomgen_model_abi& m, const runtime::Equilibrium&
   if (r.quaternion_zero_eigenvalues)
     std::cout << fmt::format("  {} zero eigenvalue(s) of the quaternions' lengths (constant along every motion) left out "
                              "of the verdict\n", r.quaternion_zero_eigenvalues);
+  if (r.symmetry_zero_eigenvalues) {
+    std::string turns;
+    for (const std::string& name : r.symmetry_names) turns += (turns.empty() ? "" : "; ") + name;
+    std::cout << fmt::format("  {} zero eigenvalue(s) of turns the equations do not see ({}: each turned equilibrium is "
+                             "one too, and the turn's momentum is conserved) left out of the verdict, which is with "
+                             "respect to the rest\n", r.symmetry_zero_eigenvalues, turns);
+  }
   std::cout << fmt::format("  verdict: {} (stability degree {:.6g})\n", r.verdict, r.stability_degree);
   if (!r.disagreement.empty()) std::cout << "  undecided: " << r.disagreement << "\n";
   std::cout << "  characteristic polynomial: " << polynomial_text(r.characteristic_polynomial) << "\n";
@@ -112,12 +119,14 @@ void print_stability_json(const eomgen_model_abi& m, const runtime::Equilibrium&
   std::cout << fmt::format(
       "{{\"model\": \"{}\", \"equilibrium\": {{{}}}, \"residual\": {}, \"state\": {}, \"A\": {}, \"B\": {}, \"M\": {}, "
       "\"D\": {}, \"G\": {}, \"K\": {}, \"N\": {}, \"eigenvalues\": [{}], \"verdict\": \"{}\", \"stability_degree\": {}, "
-      "\"cyclic_zero_eigenvalues\": {}, \"quaternion_zero_eigenvalues\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
+      "\"cyclic_zero_eigenvalues\": {}, \"quaternion_zero_eigenvalues\": {}, \"symmetry_zero_eigenvalues\": {}, "
+      "\"symmetries\": {}, \"modes\": [{}], \"characteristic_polynomial\": {}, \"hurwitz\": {}, \"hurwitz_scale\": {}, \"hurwitz_ill_conditioned\": {}, "
       "\"theorems\": {}, \"phase_plane\": {}, \"conditions\": {}, \"vanishing_conditions\": {}, \"equilibrium_conditions\": {}, "
       "\"disagreement\": {}, \"critical_case\": {}{}}}\n",
       m.name, equilibrium, json_number(eq.residual), json_strings(r.state_names), json_matrix(r.A), json_matrix(r.B_state),
       json_matrix(r.M), json_matrix(r.D), json_matrix(r.G), json_matrix(r.K), json_matrix(r.N), eigenvalues, r.verdict,
-      json_number(r.stability_degree), r.cyclic_zero_eigenvalues, r.quaternion_zero_eigenvalues, modes, json_numbers(r.characteristic_polynomial),
+      json_number(r.stability_degree), r.cyclic_zero_eigenvalues, r.quaternion_zero_eigenvalues,
+      r.symmetry_zero_eigenvalues, json_strings(r.symmetry_names), modes, json_numbers(r.characteristic_polynomial),
       json_numbers(r.hurwitz), json_number(r.hurwitz_scale), r.hurwitz_ill_conditioned ? "true" : "false", json_strings(r.theorems), r.phase_plane.empty() ? "null" : "\"" + r.phase_plane + "\"",
       json_strings(condition_texts), json_strings(conditions ? conditions->vanishing : std::vector<std::string>{}),
       json_strings(equations), r.disagreement.empty() ? "null" : json_quoted(r.disagreement),

@@ -9,50 +9,102 @@
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
 #include "analyse/local_power_law.hpp"
+#include "analyse/turning_symmetries.hpp"
 
 namespace eomgen::runtime {
 
 namespace {
 
 
-// V(q + r d) − V(q) rises by its leading power law along every coordinate direction and random
-// ones: its sign at the smallest radii where it rises above rounding is the sign near the
-// equilibrium, in whatever units q is written (radii fixed in units, 1e-2 and 1e-3, had stepped
-// over the rim of a well 1e-3 wide). With no coordinate but cyclic ones there is no minimum.
-bool strict_minimum_of_potential(const Problem& p, const std::vector<double>& x, std::string& where) {
-  const eomgen_model_abi& m = *p.model;
+// Whether coordinate i is a quaternion's component
+bool in_quaternion(const eomgen_model_abi& m, std::size_t i) {
+  return std::find(m.quaternion_coordinates, m.quaternion_coordinates + 4 * m.num_quaternions, i) !=
+         m.quaternion_coordinates + 4 * m.num_quaternions;
+}
+
+// The directions V is probed along: each coordinate that is neither cyclic nor a quaternion's
+// component, and each quaternion's turns about the world axes that are not symmetries (the
+// quaternion's tangent space modulo its symmetric turns), both ways; then random combinations
+std::vector<std::vector<double>> probe_directions(const eomgen_model_abi& m, const std::vector<double>& x,
+                                                  const std::vector<TurningSymmetry>& symmetries) {
   std::size_t n = m.num_coordinates;
-  if (std::count(m.is_cyclic, m.is_cyclic + n, false) == 0) {
-    where = "every coordinate is cyclic: V depends on none of them";
-    return false;
-  }
-  double v0 = m.potential_energy(0.0, x.data(), p.parameters.data());
-  std::mt19937 random(7);
-  std::normal_distribution<double> normal;
-  std::vector<std::vector<double>> directions;
+  std::vector<std::vector<double>> basis;
   for (std::size_t i = 0; i < n; ++i) {
-    if (m.is_cyclic[i]) continue;
+    if (m.is_cyclic[i] || in_quaternion(m, i)) continue;
     std::vector<double> d(n, 0.0);
     d[i] = 1;
-    directions.push_back(d);
-    d[i] = -1;
-    directions.push_back(d);
+    basis.push_back(d);
   }
-  for (int k = 0; k < 20; ++k) {
+  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
+    if (quaternion_is_cyclic(m, k)) continue;
+    std::vector<Eigen::Vector3d> symmetric;
+    for (const TurningSymmetry& s : symmetries)
+      if (s.quaternion == k) symmetric = s.axes;
+    for (const Eigen::Vector3d& a : other_axes(symmetric)) {
+      Eigen::VectorXd turn = turning_direction(m, x, k, a);
+      basis.push_back(std::vector<double>(turn.data(), turn.data() + n));
+    }
+  }
+  std::vector<std::vector<double>> directions;
+  for (const auto& d : basis) {
+    directions.push_back(d);
+    std::vector<double> opposite = d;
+    for (double& v : opposite) v = -v;
+    directions.push_back(opposite);
+  }
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  for (int k = 0; k < 20 && !basis.empty(); ++k) {
     std::vector<double> d(n, 0.0);
     double size = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (!m.is_cyclic[i]) d[i] = normal(random), size += d[i] * d[i];
+    for (const auto& b : basis) {
+      double weight = normal(random);
+      for (std::size_t i = 0; i < n; ++i) d[i] += weight * b[i];
+    }
+    for (double v : d) size += v * v;
     if (size > 0) {
       for (double& v : d) v /= std::sqrt(size);
       directions.push_back(d);
     }
   }
+  return directions;
+}
+
+// x + r d with each quaternion brought back to unit length: a point of the configuration manifold
+std::vector<double> probed(const eomgen_model_abi& m, const std::vector<double>& x, const std::vector<double>& d,
+                           double radius) {
+  std::vector<double> y = x;
+  for (std::size_t i = 0; i < d.size(); ++i) y[i] += radius * d[i];
+  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
+    const std::size_t* c = m.quaternion_coordinates + 4 * k;
+    double length = std::sqrt(y[c[0]] * y[c[0]] + y[c[1]] * y[c[1]] + y[c[2]] * y[c[2]] + y[c[3]] * y[c[3]]);
+    for (int j = 0; j < 4; ++j) y[c[j]] /= length;
+  }
+  return y;
+}
+
+// V(q + r d) − V(q) rises by its leading power law along every coordinate direction and random
+// ones: its sign at the smallest radii where it rises above rounding is the sign near the
+// equilibrium, in whatever units q is written (radii fixed in units, 1e-2 and 1e-3, had stepped
+// over the rim of a well 1e-3 wide). With no coordinate but cyclic ones there is no minimum. A
+// quaternion is probed along its turns on the unit sphere, those that are symmetries left out:
+// there V is constant, and the minimum is strict modulo them (Lagrange–Dirichlet on the quotient,
+// where T + V, conserved and unchanged by the turns, has a strict minimum).
+bool strict_minimum_of_potential(const Problem& p, const std::vector<double>& x, const std::vector<TurningSymmetry>& symmetries,
+                                 std::string& where) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_coordinates;
+  std::vector<std::vector<double>> directions = probe_directions(m, x, symmetries);
+  if (directions.empty()) {
+    where = m.num_quaternions ? "every coordinate is cyclic or turns as a symmetry: V depends on none of them"
+                              : "every coordinate is cyclic: V depends on none of them";
+    return false;
+  }
+  double v0 = m.potential_energy(0.0, x.data(), p.parameters.data());
   for (const auto& d : directions) {
     std::vector<double> changes;
     for (double radius : probe_radii()) {
-      std::vector<double> y = x;
-      for (std::size_t i = 0; i < n; ++i) y[i] += radius * d[i];
+      std::vector<double> y = probed(m, x, d, radius);
       changes.push_back(m.potential_energy(0.0, y.data(), p.parameters.data()) - v0);
     }
     PowerLaw law = leading_power_law(changes);
@@ -89,13 +141,22 @@ std::vector<double> perturbation_sizes(const Problem& p, const std::vector<doubl
   return size;
 }
 
-// the largest deviation of y from x in units of each state's perturbation size
+// the largest deviation of y from x in units of each state's perturbation size; a quaternion with
+// symmetric turns by its distance from x's once turned back along them (its smallest size)
 double perturbation_norm(const eomgen_model_abi& m, const std::vector<double>& y, const std::vector<double>& x,
-                         const std::vector<double>& size) {
+                         const std::vector<double>& size, const std::vector<TurningSymmetry>& symmetries) {
+  std::vector<bool> turned(m.num_states, false);
   double d = 0;
+  for (const TurningSymmetry& s : symmetries) {
+    const std::size_t* c = m.quaternion_coordinates + 4 * s.quaternion;
+    Eigen::Vector4d q(y[c[0]], y[c[1]], y[c[2]], y[c[3]]), p(x[c[0]], x[c[1]], x[c[2]], x[c[3]]);
+    double smallest = std::min(std::min(size[c[0]], size[c[1]]), std::min(size[c[2]], size[c[3]]));
+    d = std::max(d, distance_modulo_turns(q, p, s.axes) / smallest);
+    for (int j = 0; j < 4; ++j) turned[c[j]] = true;
+  }
   for (int i : reduced_state(m)) {
     auto k = static_cast<std::size_t>(i);
-    d = std::max(d, std::abs(y[k] - x[k]) / size[k]);
+    if (!turned[k]) d = std::max(d, std::abs(y[k] - x[k]) / size[k]);
   }
   return d;
 }
@@ -154,7 +215,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
       SimulationResult run = simulate(p, y, s);
       double grown = run.failed ? INFINITY : 0;
       for (std::size_t k = 0; k < run.trajectory.times.size(); ++k) {
-        double d = perturbation_norm(m, run.trajectory.states[k], x, size);
+        double d = perturbation_norm(m, run.trajectory.states[k], x, size, r.symmetries);
         if (d > grown || !std::isfinite(d)) grown = std::isfinite(d) ? d : INFINITY;
         if (d > 100 && when == 0) when = run.trajectory.times[k];
       }
@@ -174,8 +235,9 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   return fmt::format("perturbations of each coordinate and velocity by 1/100 of the length over which the rhs keeps "
                      "the law it follows at the equilibrium (a velocity's, at most its coordinate's times the system's "
                      "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size over {:.4g} s (about 200 periods of the "
-                     "slowest mode): stable as far as a simulation can tell",
-                     rate, sizes_text(m, size), worst, horizon);
+                     "slowest mode{}): stable as far as a simulation can tell",
+                     rate, sizes_text(m, size), worst, horizon,
+                     r.symmetries.empty() ? "" : "; orientations measured modulo the turns the equations do not see");
 }
 
 }  // namespace
@@ -195,11 +257,15 @@ CriticalCase check_critical_case(const Problem& p, const std::vector<double>& x,
   if (has_multipliers(m)) {
     // V's minimum would be searched off the constraint manifold, where it means nothing
     c.energy = "not applicable: the coordinates of a Lagrange I model are not independent";
-  } else if (!m.conserves_energy_without_inputs || !unforced || !at_rest || has_pseudo_velocities(m)) {
+  } else if (!m.conserves_energy_without_inputs || !unforced || !at_rest) {
     c.energy = "not applicable: Lagrange–Dirichlet needs a conservative system at rest";
-  } else if (strict_minimum_of_potential(p, x, where)) {
-    c.energy = "T + V is a Lyapunov function: V has a strict minimum at the equilibrium and T is positive definite, "
-               "so the equilibrium is stable (Lagrange–Dirichlet)";
+  } else if (strict_minimum_of_potential(p, x, r.symmetries, where)) {
+    c.energy = r.symmetries.empty()
+                   ? "T + V is a Lyapunov function: V has a strict minimum at the equilibrium and T is positive definite, "
+                     "so the equilibrium is stable (Lagrange–Dirichlet)"
+                   : "T + V is a Lyapunov function modulo the turns the equations do not see: V has a strict minimum at "
+                     "the equilibrium but along them, where it is constant, and T is positive definite, so the "
+                     "equilibrium is stable with respect to all but those turns (Lagrange–Dirichlet)";
     c.nonlinear_verdict = "stable";
     return c;
   } else {

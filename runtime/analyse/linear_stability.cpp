@@ -10,6 +10,7 @@
 
 #include "analyse/first_order_form.hpp"
 #include "analyse/system_scales.hpp"
+#include "analyse/turning_symmetries.hpp"
 
 namespace eomgen::runtime {
 
@@ -289,13 +290,49 @@ static bool has_opposite_pair(const std::vector<std::complex<double>>& roots, do
   return false;
 }
 
-// eigenvalues, verdict, modes, characteristic polynomial and Hurwitz determinants of r.A
-void describe_spectrum(StabilityReport& r, int cyclic) {
+// A modulo the turns that are symmetries (turning_symmetries.hpp): A maps each turn's direction at
+// the equilibrium to zero (every turned equilibrium is one), so that on an orthonormal complement W
+// of those directions Wᵀ A W is the map A induces on the state modulo them. Its spectrum is A's
+// without one zero per turn, and the turn's momentum, whose zero headed a Jordan block with the
+// turn's, is left with a zero of its own, like a cyclic coordinate's momentum.
+struct ModuloTurns {
+  Eigen::MatrixXd A;
+  std::vector<TurningSymmetry> symmetries;
+  int turns = 0;
+};
+
+ModuloTurns modulo_turning_symmetries(const Problem& problem, const std::vector<double>& x, const Eigen::MatrixXd& A) {
+  const eomgen_model_abi& m = *problem.model;
+  double rate = 0;
+  for (auto l : spectrum(A).eigenvalues) rate = std::max(rate, std::abs(l));
+  ModuloTurns out{A, turning_symmetries(problem, x, rate), 0};
+  std::vector<int> kept = reduced_state(m);
+  std::vector<Eigen::VectorXd> directions;
+  for (const TurningSymmetry& s : out.symmetries)
+    for (const Eigen::Vector3d& a : s.axes) {
+      Eigen::VectorXd full = turning_direction(m, x, s.quaternion, a), reduced(long(kept.size()));
+      for (std::size_t i = 0; i < kept.size(); ++i) reduced[long(i)] = full[kept[i]];
+      directions.push_back(reduced);
+    }
+  if (directions.empty()) return out;
+  Eigen::MatrixXd V(A.rows(), long(directions.size()));
+  for (std::size_t j = 0; j < directions.size(); ++j) V.col(long(j)) = directions[j];
+  Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(V).householderQ();
+  Eigen::MatrixXd W = Q.rightCols(A.rows() - V.cols());
+  out.A = W.transpose() * A * W;
+  out.turns = int(directions.size());
+  return out;
+}
+
+// eigenvalues, verdict, modes, characteristic polynomial and Hurwitz determinants of r.A; the
+// verdict from `judged` (r.A modulo the symmetries' turns) where given
+void describe_spectrum(StabilityReport& r, int cyclic, const Eigen::MatrixXd* judged = nullptr) {
   Spectrum sp = spectrum(r.A);
   r.eigenvalues = sp.eigenvalues;
-  Verdict v = judge(sp, cyclic);
+  Spectrum reduced = judged ? spectrum(*judged) : sp;
+  Verdict v = judge(reduced, cyclic);
   r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
-  r.axis_tolerance = sp.tolerance;
+  r.axis_tolerance = reduced.tolerance;
   for (std::size_t i = 0; i < r.eigenvalues.size(); ++i)
     if (std::complex<double> l = r.eigenvalues[i]; l.imag() >= 0) {
       double size = std::abs(l);
@@ -326,9 +363,17 @@ StabilityReport analyse_first_order(const Problem& problem, const std::vector<do
   r.B_state = reduced_input_jacobian(problem, x);
   for (int i : reduced_state(m)) r.state_names.push_back(m.state_names[i]);
   // a quaternion's length is constant by construction: its zero eigenvalue (eigenvector (q, 0), semisimple
-  // since q' = ½ q ⊗ (0, ω) is orthogonal to q) says nothing about the system
-  describe_spectrum(r, int(m.num_quaternions));
-  r.quaternion_zero_eigenvalues = r.cyclic_zero_eigenvalues, r.cyclic_zero_eigenvalues = 0;
+  // since q' = ½ q ⊗ (0, ω) is orthogonal to q) says nothing about the system; nor do a symmetric
+  // turn's two (its orbit's, taken out by the quotient, and its momentum's)
+  ModuloTurns quotient = modulo_turning_symmetries(problem, x, r.A);
+  int quaternions = 0;
+  for (std::size_t k = 0; k < m.num_quaternions; ++k) quaternions += !quaternion_is_cyclic(m, k);
+  describe_spectrum(r, quaternions + quotient.turns, quotient.turns ? &quotient.A : nullptr);
+  r.quaternion_zero_eigenvalues = std::min(r.cyclic_zero_eigenvalues, quaternions);
+  r.symmetry_zero_eigenvalues = r.cyclic_zero_eigenvalues - r.quaternion_zero_eigenvalues + quotient.turns;
+  r.cyclic_zero_eigenvalues = 0;
+  r.symmetries = quotient.symmetries;
+  for (const TurningSymmetry& s : quotient.symmetries) r.symmetry_names.push_back(describe(m, s));
   r.theorems.push_back("the force classification (D, G, K, N) needs M q'' + P q' + Q q = 0; Appell's equations are of "
                        "first order in the pseudo-velocities, so A is analysed directly");
   if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
@@ -400,8 +445,10 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
   Eigen::MatrixXd A, B;
   int cyclic = 0;
   if (has_pseudo_velocities(m)) {
-    A = reduced_jacobian(problem, x);
-    cyclic = int(m.num_quaternions);
+    ModuloTurns quotient = modulo_turning_symmetries(problem, x, reduced_jacobian(problem, x));
+    A = quotient.A;
+    for (std::size_t k = 0; k < m.num_quaternions; ++k) cyclic += !quaternion_is_cyclic(m, k);
+    cyclic += quotient.turns;
   } else if (has_multipliers(m)) {
     A = manifold_linearization(problem, x).A;
   } else {

@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include "analyse/turning_symmetries.hpp"
 #include "simulation.hpp"
 
 namespace eomgen::runtime {
@@ -35,6 +36,11 @@ struct StabilityReport {
   double stability_degree = 0;                    // largest real part that counts for the verdict
   int cyclic_zero_eigenvalues = 0;                // zero eigenvalues of conserved cyclic momenta, left out
   int quaternion_zero_eigenvalues = 0;            // zero eigenvalues of the quaternions' lengths, left out
+  /// zero eigenvalues of turns that are symmetries (turning_symmetries.hpp), two per turning axis
+  /// (the orbit's and its momentum's), left out: the verdict is with respect to the rest
+  int symmetry_zero_eigenvalues = 0;
+  std::vector<TurningSymmetry> symmetries;
+  std::vector<std::string> symmetry_names;        // each in words (describe)
   double axis_tolerance = 0;                      // a real part within it is on the imaginary axis (system_scales.hpp)
   std::vector<Mode> modes;                        // by undamped frequency, then damped frequency
   std::vector<double> characteristic_polynomial;  // det(λI − A), highest power first (leading 1)

@@ -15,20 +15,11 @@
 #include <fmt/format.h>
 
 #include "parse/json_reader.hpp"
+#include "support/ball_joint_top.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
 namespace {
-
-// models/ball_joint_top.toml's numbers: the centre c and the anchor a in the body's axes, its
-// inertia about the centre, its mass and g
-const Eigen::Vector3d centre_from_anchor(0.12 - 0.1, 0.03, 0.25);
-Eigen::Matrix3d inertia_about_pivot() {
-  Eigen::Matrix3d I;
-  I << 0.02, 0.001, -0.002, 0.001, 0.025, 0.0015, -0.002, 0.0015, 0.04;
-  const Eigen::Vector3d& r = centre_from_anchor;
-  return I + 1.5 * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
-}
 
 // at time scales T of 1e-12, 1 and 1e12 s (g = 9.81/T²): the same quaternion, and rates × T
 TEST(AtCompletion, ATopAtRestHasItsQuaternionSolvedForAndStandsAboveItsPivot) {
@@ -44,15 +35,15 @@ TEST(AtCompletion, ATopAtRestHasItsQuaternionSolvedForAndStandsAboveItsPivot) {
     Eigen::Quaterniond q(at(equilibrium, "qw"), at(equilibrium, "qx"), at(equilibrium, "qy"), at(equilibrium, "qz"));
     EXPECT_NEAR(q.norm(), 1, 1e-14);
     Eigen::Matrix3d R = q.normalized().toRotationMatrix();
-    Eigen::Vector3d up = R * centre_from_anchor;
-    double h = centre_from_anchor.norm();
+    Eigen::Vector3d up = R * top_centre_from_anchor();
+    double h = top_centre_from_anchor().norm();
     EXPECT_NEAR(up.x() / h, 0, 1e-9) << "T = " << T << ": " << up.transpose();
     EXPECT_NEAR(up.y() / h, 0, 1e-9) << "T = " << T << ": " << up.transpose();
     EXPECT_NEAR(up.z() / h, 1, 1e-9) << "above the pivot, not below";
     EXPECT_EQ(json->find("verdict")->text, "unstable");
     // the two rates at which the inverted top falls (at g = 9.81, times T), against eomgen's
     // positive real eigenvalues
-    Eigen::Matrix3d world_inertia = R * inertia_about_pivot() * R.transpose();
+    Eigen::Matrix3d world_inertia = R * top_inertia_about_pivot() * R.transpose();
     Eigen::Matrix3d moment = 1.5 * 9.81 * up.z() * Eigen::Vector3d(1, 1, 0).asDiagonal();
     Eigen::Vector3cd mu = (world_inertia.inverse() * moment).eigenvalues();
     std::vector<double> expected, found;

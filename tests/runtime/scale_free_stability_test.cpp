@@ -288,6 +288,7 @@ inertia = ["0.1", "0.1", "0.05"]
     EXPECT_EQ(field(r, "verdict").text, "asymptotically_stable") << "s = " << s;
     EXPECT_EQ(field(r, "quaternion_zero_eigenvalues").value, 1) << "s = " << s;
     EXPECT_EQ(field(r, "cyclic_zero_eigenvalues").value, 0) << "s = " << s;
+    EXPECT_EQ(field(r, "symmetry_zero_eigenvalues").value, 0) << "its spring sees the turn about the vertical: s = " << s;
     EXPECT_EQ(field(field(r, "critical_case"), "first_approximation").text, "") << "not a critical case: s = " << s;
   }
   CommandOutput linear = run_eomgen("linear '" + model + "'");
