@@ -161,6 +161,42 @@ double perturbation_norm(const eomgen_model_abi& m, const std::vector<double>& y
   return d;
 }
 
+// The energy of a deviation δ in the linearization, ½ δq'ᵀ M δq' + ½ δqᵀ K δq over the non-cyclic
+// coordinates (Lagrange II, where K is positive definite there): a norm in which no mode of a stable
+// linearization grows, whatever its rate. Sizes per state had weighed a stiff chain's displacements
+// against its velocities at its fastest rate, 7e4 times its slowest: a push's energy passed into the
+// slow modes showed as a 3e4-fold growth, and the damped chain was called unstable.
+struct LinearEnergy {
+  Eigen::MatrixXd M, K;
+  std::vector<std::size_t> coordinates;  // the non-cyclic ones, K's rows
+  bool usable = false;
+};
+
+LinearEnergy linear_energy(const eomgen_model_abi& m, const StabilityReport& r) {
+  LinearEnergy e;
+  std::size_t n = m.num_coordinates;
+  if (has_pseudo_velocities(m) || has_multipliers(m) || r.M.rows() != long(n) || r.K.rows() != long(n)) return e;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!m.is_cyclic[i]) e.coordinates.push_back(i);
+  e.M = r.M;
+  e.K.resize(long(e.coordinates.size()), long(e.coordinates.size()));
+  for (std::size_t a = 0; a < e.coordinates.size(); ++a)
+    for (std::size_t b = 0; b < e.coordinates.size(); ++b) e.K(long(a), long(b)) = r.K(long(e.coordinates[a]), long(e.coordinates[b]));
+  if (e.K.rows() == 0) return e;
+  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(e.K).eigenvalues();
+  // positive definite beyond rounding, relative to its own largest stiffness
+  e.usable = k.maxCoeff() > 0 && k.minCoeff() > 1e-12 * k.maxCoeff();
+  return e;
+}
+
+double energy_of(const eomgen_model_abi& m, const LinearEnergy& e, const std::vector<double>& y, const std::vector<double>& x) {
+  std::size_t n = m.num_coordinates;
+  Eigen::VectorXd dv(static_cast<Eigen::Index>(n)), dq(static_cast<Eigen::Index>(e.coordinates.size()));
+  for (std::size_t i = 0; i < n; ++i) dv[long(i)] = y[n + i] - x[n + i];
+  for (std::size_t a = 0; a < e.coordinates.size(); ++a) dq[long(a)] = y[e.coordinates[a]] - x[e.coordinates[a]];
+  return 0.5 * dv.dot(e.M * dv) + 0.5 * dq.dot(e.K * dq);
+}
+
 // The run's length: 200 periods of the slowest oscillation, or 200 time constants of the
 // slowest rate when nothing oscillates; only when every eigenvalue is zero is there no scale
 double horizon_of(const StabilityReport& r, double rate) {
@@ -206,6 +242,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   std::string worst_start;
   // each coordinate that is not cyclic, and each velocity, pushed both ways
   std::vector<int> pushed = reduced_state(m);
+  LinearEnergy energy = linear_energy(m, r);
   long done = 0, total = 2 * long(pushed.size());
   for (int component : pushed) {
     auto i = static_cast<std::size_t>(component);
@@ -213,9 +250,11 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
       std::vector<double> y = x;
       y[i] += sign * size[i];
       SimulationResult run = simulate(p, y, s);
-      double grown = run.failed ? INFINITY : 0;
+      double grown = run.failed ? INFINITY : 0, pushed_energy = energy.usable ? energy_of(m, energy, y, x) : 0;
       for (std::size_t k = 0; k < run.trajectory.times.size(); ++k) {
-        double d = perturbation_norm(m, run.trajectory.states[k], x, size, r.symmetries);
+        const std::vector<double>& state = run.trajectory.states[k];
+        double d = energy.usable ? std::sqrt(energy_of(m, energy, state, x) / pushed_energy)
+                                 : perturbation_norm(m, state, x, size, r.symmetries);
         if (d > grown || !std::isfinite(d)) grown = std::isfinite(d) ? d : INFINITY;
         if (d > 100 && when == 0) when = run.trajectory.times[k];
       }
@@ -228,15 +267,20 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   if (worst > 100) {
     verdict = "unstable";
     return fmt::format("a perturbation of {} grew more than a hundredfold{} (by t = {:.4g} s of a {:.4g} s run): unstable",
-                       worst_start, std::isfinite(worst) ? fmt::format(", to {:.3g} times its size", worst) : " (the run broke off)",
+                       worst_start,
+                       !std::isfinite(worst) ? " (the run broke off)"
+                       : energy.usable       ? fmt::format(", to {:.3g} times its size in the linearization's energy", worst)
+                                             : fmt::format(", to {:.3g} times its size", worst),
                        when, horizon);
   }
   verdict = "stable";
   return fmt::format("perturbations of each coordinate and velocity by 1/100 of the length over which the rhs keeps "
                      "the law it follows at the equilibrium (a velocity's, at most its coordinate's times the system's "
-                     "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size over {:.4g} s (about 200 periods of the "
-                     "slowest mode{}): stable as far as a simulation can tell",
-                     rate, sizes_text(m, size), worst, horizon,
+                     "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size{} over {:.4g} s (about 200 periods of "
+                     "the slowest mode{}): stable as far as a simulation can tell",
+                     rate, sizes_text(m, size), worst,
+                     energy.usable ? " in the linearization's energy, ½ δq'ᵀ M δq' + ½ δqᵀ K δq (K positive definite)" : "",
+                     horizon,
                      r.symmetries.empty() ? "" : "; orientations measured modulo the turns the equations do not see");
 }
 

@@ -366,8 +366,7 @@ StabilityReport analyse_first_order(const Problem& problem, const std::vector<do
   // since q' = ½ q ⊗ (0, ω) is orthogonal to q) says nothing about the system; nor do a symmetric
   // turn's two (its orbit's, taken out by the quotient, and its momentum's)
   ModuloTurns quotient = modulo_turning_symmetries(problem, x, r.A);
-  int quaternions = 0;
-  for (std::size_t k = 0; k < m.num_quaternions; ++k) quaternions += !quaternion_is_cyclic(m, k);
+  int quaternions = non_cyclic_quaternions(m);
   describe_spectrum(r, quaternions + quotient.turns, quotient.turns ? &quotient.A : nullptr);
   r.quaternion_zero_eigenvalues = std::min(r.cyclic_zero_eigenvalues, quaternions);
   r.symmetry_zero_eigenvalues = r.cyclic_zero_eigenvalues - r.quaternion_zero_eigenvalues + quotient.turns;
@@ -447,8 +446,7 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
   if (has_pseudo_velocities(m)) {
     ModuloTurns quotient = modulo_turning_symmetries(problem, x, reduced_jacobian(problem, x));
     A = quotient.A;
-    for (std::size_t k = 0; k < m.num_quaternions; ++k) cyclic += !quaternion_is_cyclic(m, k);
-    cyclic += quotient.turns;
+    cyclic = non_cyclic_quaternions(m) + quotient.turns;
   } else if (has_multipliers(m)) {
     A = manifold_linearization(problem, x).A;
   } else {

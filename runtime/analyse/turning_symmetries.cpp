@@ -95,6 +95,12 @@ bool quaternion_is_cyclic(const eomgen_model_abi& m, std::size_t k) {
   return m.is_cyclic[c[0]] || m.is_cyclic[c[1]] || m.is_cyclic[c[2]] || m.is_cyclic[c[3]];
 }
 
+int non_cyclic_quaternions(const eomgen_model_abi& m) {
+  int kept = 0;
+  for (std::size_t k = 0; k < m.num_quaternions; ++k) kept += !quaternion_is_cyclic(m, k);
+  return kept;
+}
+
 Eigen::VectorXd turning_direction(const eomgen_model_abi& m, const std::vector<double>& x, std::size_t k,
                                   const Eigen::Vector3d& a) {
   Eigen::VectorXd d = Eigen::VectorXd::Zero(long(m.num_states));

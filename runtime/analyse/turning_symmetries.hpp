@@ -34,6 +34,9 @@ struct TurningSymmetry {
 /// the reduced state leaves them out and every turn of it with them.
 bool quaternion_is_cyclic(const eomgen_model_abi& m, std::size_t k);
 
+/// How many quaternions the reduced state keeps (each with the zero eigenvalue of its length).
+int non_cyclic_quaternions(const eomgen_model_abi& m);
+
 /// Each quaternion's symmetric turns, tested at states spread over the state space: random
 /// orientations, the other coordinates around x by a tenth of their sizes, velocities of the
 /// system's `rate` (1/s; the model's default velocities' size where it is zero).
