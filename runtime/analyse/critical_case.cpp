@@ -250,17 +250,18 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
       std::vector<double> y = x;
       y[i] += sign * size[i];
       SimulationResult run = simulate(p, y, s);
-      double grown = run.failed ? INFINITY : 0, pushed_energy = energy.usable ? energy_of(m, energy, y, x) : 0;
+      double grown = run.failed ? INFINITY : 0, passed = 0, pushed_energy = energy.usable ? energy_of(m, energy, y, x) : 0;
       for (std::size_t k = 0; k < run.trajectory.times.size(); ++k) {
         const std::vector<double>& state = run.trajectory.states[k];
         double d = energy.usable ? std::sqrt(energy_of(m, energy, state, x) / pushed_energy)
                                  : perturbation_norm(m, state, x, size, r.symmetries);
         if (d > grown || !std::isfinite(d)) grown = std::isfinite(d) ? d : INFINITY;
-        if (d > 100 && when == 0) when = run.trajectory.times[k];
+        if (d > 100 && passed == 0) passed = run.trajectory.times[k];
       }
-      if (run.failed && when == 0) when = run.failure_time;
+      if (run.failed && passed == 0) passed = run.failure_time;
+      // the time said is that of the run whose growth is said
       if (grown > worst)
-        worst = grown, worst_start = fmt::format("{} {:+.1e}", m.state_names[i], y[i] - x[i]);
+        worst = grown, when = passed, worst_start = fmt::format("{} {:+.1e}", m.state_names[i], y[i] - x[i]);
       if (progress) progress(++done, total);
     }
   }
