@@ -201,7 +201,7 @@ double energy_of(const eomgen_model_abi& m, const LinearEnergy& e, const std::ve
 // slowest rate when nothing oscillates; only when every eigenvalue is zero is there no scale
 double horizon_of(const StabilityReport& r, double rate) {
   double slowest = INFINITY, smallest = INFINITY;
-  for (auto l : r.eigenvalues) {
+  for (auto l : r.counted_eigenvalues) {
     if (std::abs(l.imag()) > r.axis_tolerance) slowest = std::min(slowest, std::abs(l.imag()));
     if (std::abs(l) > r.axis_tolerance) smallest = std::min(smallest, std::abs(l));
   }
@@ -222,7 +222,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
                            const std::function<void(long, long)>& progress) {
   const eomgen_model_abi& m = *p.model;
   double rate = 0;
-  for (auto l : r.eigenvalues) rate = std::max(rate, std::abs(l));
+  for (auto l : r.counted_eigenvalues) rate = std::max(rate, std::abs(l));
   double horizon = horizon_of(r, rate);
   if (rate == 0) rate = 1 / horizon;
   SimulationSettings s;

@@ -332,6 +332,7 @@ void describe_spectrum(StabilityReport& r, int cyclic, const Eigen::MatrixXd* ju
   Spectrum reduced = judged ? spectrum(*judged) : sp;
   Verdict v = judge(reduced, cyclic);
   r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;
+  r.counted_eigenvalues = v.counted;
   r.axis_tolerance = reduced.tolerance;
   for (std::size_t i = 0; i < r.eigenvalues.size(); ++i)
     if (std::complex<double> l = r.eigenvalues[i]; l.imag() >= 0) {

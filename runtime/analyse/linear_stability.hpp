@@ -29,6 +29,10 @@ struct StabilityReport {
   Eigen::MatrixXd M, P, Q, D, G, K, N, B;  // second-order form, all coordinates
   Eigen::MatrixXd A, B_state;              // reduced first-order form
   std::vector<std::complex<double>> eigenvalues;  // sorted by decreasing real part
+  /// those that count for the verdict: without the zeros left out, and of A modulo the turns that are
+  /// symmetries where there are any (a Jordan block's pair, split by rounding into ±1e-8 of the
+  /// system's rate, had set the perturbed runs' length to 200 of its "periods": 8e22 s)
+  std::vector<std::complex<double>> counted_eigenvalues;
   std::string verdict;                            // asymptotically_stable | marginally_stable | unstable | undecided
   /// Why the verdict is `undecided`: the eigenvalues and a theorem whose hypotheses hold disagree
   /// (see reconcile_with_theorems); empty otherwise.

@@ -1,10 +1,12 @@
 #include "analyse/local_power_law.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <Eigen/Dense>
 
 #include "analyse/constrained_first_order.hpp"
+#include "analyse/first_order_form.hpp"
 
 namespace eomgen::runtime {
 
@@ -24,6 +26,24 @@ constexpr double exponent_tolerance = 0.1;
 double local_exponent(double lower, double upper) { return std::log10(std::abs(upper / lower)); }
 
 bool usable(double change) { return std::isfinite(change) && change != 0; }
+
+// Each rate's rounding at x: a rate is a sum of terms that cancel at an equilibrium away from the
+// origin (a hanging top's gravity moments, each about m g ℓ), and a change below ε times their size
+// shows the order of the sum, not the rate's law. Their size, Σ_j |∂f_r/∂x_j| |x_j| + |f_r|, from
+// jacobian_state, times 64 for the sum's many terms. A law read below it had given the hanging top's
+// spin a perturbation of 1e-10: its row grew as 0.014 wz² up to wz = 1e-8, and as the 0.085 wz² of
+// its equations beyond, once the terms added before the cancellation came out of the rounding.
+std::vector<double> rounding_floors(const Problem& p, const std::vector<double>& x, const std::vector<double>& at_x) {
+  const eomgen_model_abi& m = *p.model;
+  Eigen::MatrixXd J = state_jacobian(p, 0.0, x);
+  std::vector<double> floors(m.num_states);
+  for (std::size_t r = 0; r < m.num_states; ++r) {
+    double size = std::abs(at_x[r]);
+    for (std::size_t j = 0; j < m.num_states; ++j) size += std::abs(J(long(r), long(j)) * x[j]);
+    floors[r] = 64 * std::numeric_limits<double>::epsilon() * size;
+  }
+  return floors;
+}
 
 }  // namespace
 
@@ -63,13 +83,17 @@ std::vector<double> nonlinearity_lengths(const Problem& p, const std::vector<dou
     else m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), out.data());
   };
   rate(x, at_x);
+  std::vector<double> floors = rounding_floors(p, x, at_x);
   for (std::size_t component = 0; component < m.num_states; ++component) {
     std::vector<std::vector<double>> changes(m.num_states, std::vector<double>(radii.size(), NAN));
     for (std::size_t k = 0; k < radii.size(); ++k) {
       std::vector<double> y = x;
       y[component] += radii[k];
       rate(y, moved);
-      for (std::size_t row = 0; row < m.num_states; ++row) changes[row][k] = moved[row] - at_x[row];
+      for (std::size_t row = 0; row < m.num_states; ++row) {
+        double change = moved[row] - at_x[row];
+        changes[row][k] = std::abs(change) <= floors[row] ? 0.0 : change;
+      }
     }
     for (const auto& row : changes) {
       PowerLaw law = leading_power_law(row);
