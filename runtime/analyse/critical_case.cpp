@@ -10,6 +10,7 @@
 #include "analyse/first_order_form.hpp"
 #include "analyse/local_power_law.hpp"
 #include "analyse/turning_symmetries.hpp"
+#include "integrate/quaternion_norms.hpp"
 
 namespace eomgen::runtime {
 
@@ -75,11 +76,7 @@ std::vector<double> probed(const eomgen_model_abi& m, const std::vector<double>&
                            double radius) {
   std::vector<double> y = x;
   for (std::size_t i = 0; i < d.size(); ++i) y[i] += radius * d[i];
-  for (std::size_t k = 0; k < m.num_quaternions; ++k) {
-    const std::size_t* c = m.quaternion_coordinates + 4 * k;
-    double length = std::sqrt(y[c[0]] * y[c[0]] + y[c[1]] * y[c[1]] + y[c[2]] * y[c[2]] + y[c[3]] * y[c[3]]);
-    for (int j = 0; j < 4; ++j) y[c[j]] /= length;
-  }
+  normalize_quaternions(m, y.data());
   return y;
 }
 
@@ -149,7 +146,7 @@ double perturbation_norm(const eomgen_model_abi& m, const std::vector<double>& y
   double d = 0;
   for (const TurningSymmetry& s : symmetries) {
     const std::size_t* c = m.quaternion_coordinates + 4 * s.quaternion;
-    Eigen::Vector4d q(y[c[0]], y[c[1]], y[c[2]], y[c[3]]), p(x[c[0]], x[c[1]], x[c[2]], x[c[3]]);
+    Eigen::Vector4d q = quaternion_at(m, y.data(), s.quaternion), p = quaternion_at(m, x.data(), s.quaternion);
     double smallest = std::min(std::min(size[c[0]], size[c[1]]), std::min(size[c[2]], size[c[3]]));
     d = std::max(d, distance_modulo_turns(q, p, s.axes) / smallest);
     for (int j = 0; j < 4; ++j) turned[c[j]] = true;

@@ -303,9 +303,8 @@ struct ModuloTurns {
 
 ModuloTurns modulo_turning_symmetries(const Problem& problem, const std::vector<double>& x, const Eigen::MatrixXd& A) {
   const eomgen_model_abi& m = *problem.model;
-  double rate = 0;
-  for (auto l : spectrum(A).eigenvalues) rate = std::max(rate, std::abs(l));
-  ModuloTurns out{A, turning_symmetries(problem, x, rate), 0};
+  // the sampled states' speed: the balanced A's largest entry, the system's rate (system_scales.hpp)
+  ModuloTurns out{A, turning_symmetries(problem, x, spectral_scale(A)), 0};
   std::vector<int> kept = reduced_state(m);
   std::vector<Eigen::VectorXd> directions;
   for (const TurningSymmetry& s : out.symmetries)

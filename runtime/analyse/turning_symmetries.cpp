@@ -13,8 +13,6 @@ namespace eomgen::runtime {
 
 namespace {
 
-using RowMajor = Eigen::Matrix<double, -1, -1, Eigen::RowMajor>;
-
 // (0, a) ⊗ q = (−a·v, w a + a × v) for q = (w, v)
 Eigen::Vector4d axis_times(const Eigen::Vector3d& a, const Eigen::Vector4d& q) {
   Eigen::Vector3d v = q.tail<3>();
@@ -22,12 +20,6 @@ Eigen::Vector4d axis_times(const Eigen::Vector3d& a, const Eigen::Vector4d& q) {
   out[0] = -a.dot(v);
   out.tail<3>() = q[0] * a + a.cross(v);
   return out;
-}
-
-Eigen::Vector4d quaternion_of(const eomgen_model_abi& m, const double* x, std::size_t k) {
-  Eigen::Vector4d q;
-  for (int c = 0; c < 4; ++c) q[c] = x[m.quaternion_coordinates[4 * k + std::size_t(c)]];
-  return q;
 }
 
 // States spread over the state space for the bracket: every quaternion a random orientation, the
@@ -64,12 +56,10 @@ Eigen::MatrixXd scaled_brackets(const Problem& p, const std::vector<std::vector<
     std::vector<double> f(n);
     m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), f.data());
     Eigen::MatrixXd J = state_jacobian(p, 0.0, y);
-    Eigen::Vector4d rate = quaternion_of(m, f.data(), k);
     for (int axis = 0; axis < 3; ++axis) {
       Eigen::Vector3d a = Eigen::Vector3d::Unit(axis);
-      Eigen::VectorXd along = J * turning_direction(m, y, k, a), carried = Eigen::VectorXd::Zero(long(n));
-      Eigen::Vector4d turned_rate = 0.5 * axis_times(a, rate);
-      for (int c = 0; c < 4; ++c) carried[long(m.quaternion_coordinates[4 * k + std::size_t(c)])] = turned_rate[c];
+      // Dξ_a f: the turn's direction taken of the quaternion's rate, ξ_a being linear in q
+      Eigen::VectorXd along = J * turning_direction(m, y, k, a), carried = turning_direction(m, f, k, a);
       brackets.block(long(s * n), axis, long(n), 1) = along - carried;
       terms.block(long(s * n), axis, long(n), 1) = along.cwiseAbs() + carried.cwiseAbs();
     }
@@ -101,10 +91,16 @@ int non_cyclic_quaternions(const eomgen_model_abi& m) {
   return kept;
 }
 
+Eigen::Vector4d quaternion_at(const eomgen_model_abi& m, const double* x, std::size_t k) {
+  Eigen::Vector4d q;
+  for (int c = 0; c < 4; ++c) q[c] = x[m.quaternion_coordinates[4 * k + std::size_t(c)]];
+  return q;
+}
+
 Eigen::VectorXd turning_direction(const eomgen_model_abi& m, const std::vector<double>& x, std::size_t k,
                                   const Eigen::Vector3d& a) {
   Eigen::VectorXd d = Eigen::VectorXd::Zero(long(m.num_states));
-  Eigen::Vector4d turned = 0.5 * axis_times(a, quaternion_of(m, x.data(), k));
+  Eigen::Vector4d turned = 0.5 * axis_times(a, quaternion_at(m, x.data(), k));
   for (int c = 0; c < 4; ++c) d[long(m.quaternion_coordinates[4 * k + std::size_t(c)])] = turned[c];
   return d;
 }

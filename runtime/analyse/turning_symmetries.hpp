@@ -42,6 +42,9 @@ int non_cyclic_quaternions(const eomgen_model_abi& m);
 /// system's `rate` (1/s; the model's default velocities' size where it is zero).
 std::vector<TurningSymmetry> turning_symmetries(const Problem& problem, const std::vector<double>& x, double rate);
 
+/// Quaternion k's components (w, x, y, z) in the state x.
+Eigen::Vector4d quaternion_at(const eomgen_model_abi& m, const double* x, std::size_t k);
+
 /// The direction in which the state x moves when quaternion k's body turns about the world axis a:
 /// ½ (0, a) ⊗ q_k in q_k's components, zero elsewhere (num_states long).
 Eigen::VectorXd turning_direction(const eomgen_model_abi& m, const std::vector<double>& x, std::size_t k,

@@ -10,14 +10,14 @@
 
 #include "analyse/turning_symmetries.hpp"
 #include "generated/header_registry.hpp"
+#include "support/ball_joint_top.hpp"
 
 namespace eomgen::test {
 namespace {
 
-// the top hanging at rest: its centre, (0.02, 0.03, 0.25) from the anchor in its own axes, straight
-// below the pivot (parameters m, g)
+// the top hanging at rest: its centre straight below the pivot (parameters m, g)
 std::vector<double> hanging_top() {
-  Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(0.02, 0.03, 0.25), -Eigen::Vector3d::UnitZ());
+  Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(top_centre_from_anchor(), -Eigen::Vector3d::UnitZ());
   return {q.w(), q.x(), q.y(), q.z(), 0, 0, 0};
 }
 
@@ -31,7 +31,7 @@ TEST(TurningSymmetries, AHangingTopTurnsAboutTheVerticalAloneAtEveryTimeScale) {
   ASSERT_STREQ(top_with_gravity(1).model->parameter_names[1], "g");
   for (double T : {1e-12, 1.0, 1e12}) {
     double g = 9.81 / (T * T);
-    std::vector<runtime::TurningSymmetry> found = runtime::turning_symmetries(top_with_gravity(g), hanging_top(), std::sqrt(g / 0.25));
+    std::vector<runtime::TurningSymmetry> found = runtime::turning_symmetries(top_with_gravity(g), hanging_top(), std::sqrt(g / top_centre_from_anchor().norm()));
     ASSERT_EQ(found.size(), 1u) << "T = " << T;
     ASSERT_EQ(found[0].axes.size(), 1u) << "T = " << T;
     EXPECT_NEAR(std::abs(found[0].axes[0].z()), 1, 1e-9) << "T = " << T << ": " << found[0].axes[0].transpose();
