@@ -42,7 +42,7 @@ inline constexpr std::size_t num_quaternions = 0;
 inline constexpr std::array<std::size_t, 4 * num_quaternions> quaternion_coordinates{{}};
 
 /// T + V is conserved when the inputs are zero (no dissipation, no applied forces,
-/// scleronomic): what an energy-drift check may rely on.
+/// scleronomic, T a quadratic form in the velocities): what an energy-drift check may rely on.
 inline constexpr bool conserves_energy_without_inputs = false;
 
 /// Hamilton's equations with H = T(p) + V(q): Störmer–Verlet in canonical variables is explicit.

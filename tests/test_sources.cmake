@@ -55,6 +55,7 @@ set(EOMGEN_TEST_FILES
   runtime/constrained_simulation_test.cpp           fast
   runtime/quaternion_simulation_test.cpp            fast
   runtime/turning_symmetries_test.cpp               fast
+  runtime/deviation_norms_test.cpp                  fast
   runtime/reference_test.cpp                        slow
   generator/symbolic_analysis/stability_conditions_test.cpp   fast     sanitized
   generator/symbolic_analysis/hamilton_jacobi_test.cpp        fast

@@ -476,7 +476,7 @@ std::string emit_cpp_header(const Equations& given) {
       "inline constexpr std::size_t num_quaternions = {};\n"
       "inline constexpr std::array<std::size_t, 4 * num_quaternions> quaternion_coordinates{{{{{}}}}};\n\n"
       "/// T + V is conserved when the inputs are zero (no dissipation, no applied forces,\n"
-      "/// scleronomic): what an energy-drift check may rely on.\n"
+      "/// scleronomic, T a quadratic form in the velocities): what an energy-drift check may rely on.\n"
       "inline constexpr bool conserves_energy_without_inputs = {};\n\n"
       "/// Hamilton's equations with H = T(p) + V(q): Störmer–Verlet in canonical variables is explicit.\n"
       "inline constexpr bool separable_hamiltonian = {};\n\n",

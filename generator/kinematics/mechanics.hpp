@@ -50,7 +50,9 @@ struct Mechanics {
   GiNaC::ex potential_energy;        // V: gravity plus [energy] potential
   GiNaC::ex dissipation;             // R, Rayleigh's function
   std::vector<GiNaC::ex> generalized_force;  // Q of the applied forces and torques (without gravity and R)
-  bool scleronomic = true;                   // no body position, rotation, energy or gravity depends on t
+  // no body position, rotation, energy or gravity depends on t, and nothing moves at rest (the
+  // [energy] kinetic is a quadratic form in the velocities)
+  bool scleronomic = true;
   std::vector<GiNaC::ex> potential_gradient;  // ∂V/∂q_j (through the frames, with recursive kinematics)
   /// Recursive kinematics: the frames' and bodies' quantities, in order (the model's first);
   /// every other expression here may contain their symbols, which `motion` then counts as moving.

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analyse/constrained_first_order.hpp"
+#include "analyse/deviation_norms.hpp"
 #include "analyse/first_order_form.hpp"
 #include "analyse/local_power_law.hpp"
 #include "analyse/turning_symmetries.hpp"
@@ -138,62 +139,6 @@ std::vector<double> perturbation_sizes(const Problem& p, const std::vector<doubl
   return size;
 }
 
-// the largest deviation of y from x in units of each state's perturbation size; a quaternion with
-// symmetric turns by its distance from x's once turned back along them (its smallest size)
-double perturbation_norm(const eomgen_model_abi& m, const std::vector<double>& y, const std::vector<double>& x,
-                         const std::vector<double>& size, const std::vector<TurningSymmetry>& symmetries) {
-  std::vector<bool> turned(m.num_states, false);
-  double d = 0;
-  for (const TurningSymmetry& s : symmetries) {
-    const std::size_t* c = m.quaternion_coordinates + 4 * s.quaternion;
-    Eigen::Vector4d q = quaternion_at(m, y.data(), s.quaternion), p = quaternion_at(m, x.data(), s.quaternion);
-    double smallest = std::min(std::min(size[c[0]], size[c[1]]), std::min(size[c[2]], size[c[3]]));
-    d = std::max(d, distance_modulo_turns(q, p, s.axes) / smallest);
-    for (int j = 0; j < 4; ++j) turned[c[j]] = true;
-  }
-  for (int i : reduced_state(m)) {
-    auto k = static_cast<std::size_t>(i);
-    if (!turned[k]) d = std::max(d, std::abs(y[k] - x[k]) / size[k]);
-  }
-  return d;
-}
-
-// The energy of a deviation δ in the linearization, ½ δq'ᵀ M δq' + ½ δqᵀ K δq over the non-cyclic
-// coordinates (Lagrange II, where K is positive definite there): a norm in which no mode of a stable
-// linearization grows, whatever its rate. Sizes per state had weighed a stiff chain's displacements
-// against its velocities at its fastest rate, 7e4 times its slowest: a push's energy passed into the
-// slow modes showed as a 3e4-fold growth, and the damped chain was called unstable.
-struct LinearEnergy {
-  Eigen::MatrixXd M, K;
-  std::vector<std::size_t> coordinates;  // the non-cyclic ones, K's rows
-  bool usable = false;
-};
-
-LinearEnergy linear_energy(const eomgen_model_abi& m, const StabilityReport& r) {
-  LinearEnergy e;
-  std::size_t n = m.num_coordinates;
-  if (has_pseudo_velocities(m) || has_multipliers(m) || r.M.rows() != long(n) || r.K.rows() != long(n)) return e;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!m.is_cyclic[i]) e.coordinates.push_back(i);
-  e.M = r.M;
-  e.K.resize(long(e.coordinates.size()), long(e.coordinates.size()));
-  for (std::size_t a = 0; a < e.coordinates.size(); ++a)
-    for (std::size_t b = 0; b < e.coordinates.size(); ++b) e.K(long(a), long(b)) = r.K(long(e.coordinates[a]), long(e.coordinates[b]));
-  if (e.K.rows() == 0) return e;
-  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(e.K).eigenvalues();
-  // positive definite beyond rounding, relative to its own largest stiffness
-  e.usable = k.maxCoeff() > 0 && k.minCoeff() > 1e-12 * k.maxCoeff();
-  return e;
-}
-
-double energy_of(const eomgen_model_abi& m, const LinearEnergy& e, const std::vector<double>& y, const std::vector<double>& x) {
-  std::size_t n = m.num_coordinates;
-  Eigen::VectorXd dv(static_cast<Eigen::Index>(n)), dq(static_cast<Eigen::Index>(e.coordinates.size()));
-  for (std::size_t i = 0; i < n; ++i) dv[long(i)] = y[n + i] - x[n + i];
-  for (std::size_t a = 0; a < e.coordinates.size(); ++a) dq[long(a)] = y[e.coordinates[a]] - x[e.coordinates[a]];
-  return 0.5 * dv.dot(e.M * dv) + 0.5 * dq.dot(e.K * dq);
-}
-
 // The run's length: 200 periods of the slowest oscillation, or 200 time constants of the
 // slowest rate when nothing oscillates; only when every eigenvalue is zero is there no scale
 double horizon_of(const StabilityReport& r, double rate) {
@@ -239,7 +184,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   std::string worst_start;
   // each coordinate that is not cyclic, and each velocity, pushed both ways
   std::vector<int> pushed = reduced_state(m);
-  LinearEnergy energy = linear_energy(m, r);
+  DeviationNorm deviation(m, r, x, size);
   long done = 0, total = 2 * long(pushed.size());
   for (int component : pushed) {
     auto i = static_cast<std::size_t>(component);
@@ -247,11 +192,9 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
       std::vector<double> y = x;
       y[i] += sign * size[i];
       SimulationResult run = simulate(p, y, s);
-      double grown = run.failed ? INFINITY : 0, passed = 0, pushed_energy = energy.usable ? energy_of(m, energy, y, x) : 0;
+      double grown = run.failed ? INFINITY : 0, passed = 0, push = deviation(y);
       for (std::size_t k = 0; k < run.trajectory.times.size(); ++k) {
-        const std::vector<double>& state = run.trajectory.states[k];
-        double d = energy.usable ? std::sqrt(energy_of(m, energy, state, x) / pushed_energy)
-                                 : perturbation_norm(m, state, x, size, r.symmetries);
+        double d = deviation(run.trajectory.states[k]) / push;
         if (d > grown || !std::isfinite(d)) grown = std::isfinite(d) ? d : INFINITY;
         if (d > 100 && passed == 0) passed = run.trajectory.times[k];
       }
@@ -267,8 +210,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
     return fmt::format("a perturbation of {} grew more than a hundredfold{} (by t = {:.4g} s of a {:.4g} s run): unstable",
                        worst_start,
                        !std::isfinite(worst) ? " (the run broke off)"
-                       : energy.usable       ? fmt::format(", to {:.3g} times its size in the linearization's energy", worst)
-                                             : fmt::format(", to {:.3g} times its size", worst),
+                                             : fmt::format(", to {:.3g} times its size{}", worst, deviation.measure()),
                        when, horizon);
   }
   verdict = "stable";
@@ -276,8 +218,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
                      "the law it follows at the equilibrium (a velocity's, at most its coordinate's times the system's "
                      "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size{} over {:.4g} s (about 200 periods of "
                      "the slowest mode{}): stable as far as a simulation can tell",
-                     rate, sizes_text(m, size), worst,
-                     energy.usable ? " in the linearization's energy, ½ δq'ᵀ M δq' + ½ δqᵀ K δq (K positive definite)" : "",
+                     rate, sizes_text(m, size), worst, deviation.measure(),
                      horizon,
                      r.symmetries.empty() ? "" : "; orientations measured modulo the turns the equations do not see");
 }

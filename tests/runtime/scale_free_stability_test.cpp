@@ -6,7 +6,7 @@
 // k = 10: −5 ± 1e5 i) and a heavy oscillator (m = 1e6, c = 1e3, k = 1e12) are damped; an
 // undamped oscillator at 22 Hz whose spring is a generalized force stays small in the long
 // simulation; a free mass is not asymptotically stable; a well is stable whatever the width of
-// its rim; a MEMS cart's mass matrix is regular.
+// its rim; a MEMS cart's mass matrix is regular; a rendezvous near a circular orbit stays near.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -207,6 +207,28 @@ TEST(ScaleFreeStability, AStiffDampedChainStaysSmallInItsLinearizationsEnergyAtE
     EXPECT_EQ(field(critical, "nonlinear_verdict").text, "stable") << "T = " << T << ": " << field(critical, "simulation").text;
     EXPECT_NE(field(critical, "simulation").text.find("in the linearization's energy"), std::string::npos)
         << field(critical, "simulation").text;
+  }
+}
+
+// models/space_rendezvous.toml (Clohessy–Wiltshire, n = 1.1e-3/T for T of 1e-12, 1 and 1e12 s): its
+// equations are linear and their reduced state's motion bounded (x oscillates about 2 p_y/(m n)
+// wherever the conserved p_y = m (y' + 2 n x) puts it), so the critical case's runs must find it
+// stable. A radial push δ sets the along-track velocity y' swinging between 0 and −12 n δ:
+// measured in the size the cyclic y's default gave y' (1.1e-6 against x's 1e-2), that read as a
+// 120-fold growth, and T + V, which the header had claimed conserved, "changed" 1e8-fold: the run
+// was refused as "not a solution". In the linearization's modal amplitudes nothing grows.
+TEST(ScaleFreeStability, ARendezvousNearACircularOrbitStaysNearItsEquilibriumAtEveryTimeScale) {
+  for (double T : {1.0, 1e-12, 1e12}) {
+    JsonValue r = run_json(fmt::format("stability '{}' --at x=0 --set n={:.17g}", model_path("space_rendezvous"), 1.1e-3 / T));
+    EXPECT_EQ(field(r, "verdict").text, "marginally_stable") << "T = " << T;
+    const JsonValue& critical = field(r, "critical_case");
+    const std::string& runs = field(critical, "simulation").text;
+    EXPECT_EQ(field(critical, "nonlinear_verdict").text, "stable") << "T = " << T << ": " << runs;
+    EXPECT_NE(runs.find("in the linearization's modal amplitudes"), std::string::npos) << runs;
+    CommandOutput run = run_eomgen(fmt::format("simulate '{}' --initial x=0.01 --set n={:.17g} --t-end {:.17g} --dt-out {:.17g}",
+                                               model_path("space_rendezvous"), 1.1e-3 / T, 2e5 * T, 1e3 * T));
+    EXPECT_EQ(run.status, 0) << "T = " << T << ": " << run.err;
+    EXPECT_NE(run.out.find("the model does not conserve T + V"), std::string::npos) << run.out;
   }
 }
 

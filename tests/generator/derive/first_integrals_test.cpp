@@ -64,6 +64,18 @@ TEST(FirstIntegrals, BeadOnARotatingHoopKeepsTheJacobiIntegralNotTPlusV) {
                                random_points(e.symbols, 5)));
 }
 
+// T written in the orbit's turning frame (Clohessy–Wiltshire) has terms linear in and free of the
+// velocities, with no t anywhere: h = T2 − T0 + V is conserved, T + V is not, and the header must not
+// say it is (a simulation's energy check had refused the bounded drift as "not a solution")
+TEST(FirstIntegrals, AKineticEnergyInATurningFrameKeepsTheJacobiIntegralNotTPlusV) {
+  Equations e = derive_model("space_rendezvous");
+  EXPECT_EQ(names(e), (std::vector<std::string>{"jacobi_integral"}));
+  expect_integral(e, "jacobi_integral",
+                  "m/2*(d_x^2 + d_y^2 + d_z^2) - m/2*n^2*(x^2 + y^2) - m*n^2*(2*x^2 - y^2 - z^2)/2");
+  EXPECT_FALSE(e.conserves_energy_without_inputs);
+  EXPECT_TRUE(derive_model("spherical_pendulum").conserves_energy_without_inputs);
+}
+
 TEST(FirstIntegrals, HeavySymmetricTopKeepsTwoMomentaAndEnergy) {
   Equations e = derive_model("heavy_symmetric_top");
   EXPECT_EQ(names(e), (std::vector<std::string>{"energy", "p_psi", "p_phi"}));

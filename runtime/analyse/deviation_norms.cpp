@@ -1,0 +1,116 @@
+#include "analyse/deviation_norms.hpp"
+
+#include <cmath>
+#include <complex>
+#include <utility>
+
+#include "analyse/constrained_first_order.hpp"
+#include "analyse/first_order_form.hpp"
+#include "analyse/turning_symmetries.hpp"
+
+namespace eomgen::runtime {
+
+namespace {
+
+// Eigenvectors (unit columns) within this condition number count as a basis. A Jordan block split
+// by rounding has eigenvectors parallel to within about √ε (κ near 1e8): its modal amplitudes, large
+// and cancelling, would stay constant while the block's secular growth went on. 1e4 keeps clear of it.
+constexpr double largest_condition = 1e4;
+
+}  // namespace
+
+DeviationNorm::DeviationNorm(const eomgen_model_abi& m, const StabilityReport& report, const std::vector<double>& x,
+                             std::vector<double> size)
+    : m_(m), x_(x), size_(std::move(size)), symmetries_(report.symmetries) {
+  if (use_energy(report)) kind_ = Kind::linear_energy;
+  else if (use_modes(report)) kind_ = Kind::modal_amplitudes;
+  else states_ = reduced_state(m_);
+}
+
+// Lagrange II with K positive definite over the non-cyclic coordinates. Sizes per state had weighed
+// a stiff chain's displacements against its velocities at its fastest rate, 7e4 times its slowest:
+// a push's energy passed into the slow modes showed as a 3e4-fold growth.
+bool DeviationNorm::use_energy(const StabilityReport& r) {
+  std::size_t n = m_.num_coordinates;
+  if (has_pseudo_velocities(m_) || has_multipliers(m_) || r.M.rows() != long(n) || r.K.rows() != long(n)) return false;
+  states_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!m_.is_cyclic[i]) states_.push_back(int(i));
+  long c = long(states_.size());
+  if (c == 0) return false;
+  M_ = r.M;
+  K_.resize(c, c);
+  for (long a = 0; a < c; ++a)
+    for (long b = 0; b < c; ++b) K_(a, b) = r.K(states_[std::size_t(a)], states_[std::size_t(b)]);
+  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K_).eigenvalues();
+  // positive definite beyond rounding, relative to its own largest stiffness
+  return k.maxCoeff() > 0 && k.minCoeff() > 1e-12 * k.maxCoeff();
+}
+
+// A = V Λ V⁻¹ on the reduced state in units of the perturbations' sizes: the modal amplitudes
+// c = V⁻¹ S⁻¹ δ of a linear motion each keep their size or shrink when no eigenvalue is to the right,
+// so |c| grows only by the nonlinear terms. Per-state sizes had measured the Clohessy–Wiltshire
+// drift's along-track velocity, which a radial push sets going, in the size of the cyclic coordinate's
+// default 1e-3: a bounded motion "grew" 120-fold. Quaternions keep their norm modulo turns instead.
+bool DeviationNorm::use_modes(const StabilityReport& r) {
+  if (m_.num_quaternions > 0 || has_multipliers(m_)) return false;
+  states_ = reduced_state(m_);
+  long n = long(states_.size());
+  if (n == 0 || r.A.rows() != n || r.A.cols() != n || !r.A.allFinite()) return false;
+  Eigen::VectorXd s(n);
+  for (long i = 0; i < n; ++i) s[i] = size_[std::size_t(states_[std::size_t(i)])];
+  if (!(s.minCoeff() > 0) || !s.allFinite()) return false;
+  Eigen::MatrixXd scaled = s.cwiseInverse().asDiagonal() * r.A * s.asDiagonal();
+  Eigen::EigenSolver<Eigen::MatrixXd> eigen(scaled);
+  if (eigen.info() != Eigen::Success) return false;
+  Eigen::MatrixXcd V = eigen.eigenvectors();
+  Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXcd>(V).singularValues();
+  if (!(sigma[n - 1] * largest_condition > sigma[0])) return false;
+  to_modes_ = V.partialPivLu().inverse() * s.cwiseInverse().cast<std::complex<double>>().asDiagonal();
+  return true;
+}
+
+double DeviationNorm::operator()(const std::vector<double>& y) const {
+  switch (kind_) {
+    case Kind::linear_energy: {
+      std::size_t n = m_.num_coordinates;
+      Eigen::VectorXd dv(static_cast<long>(n)), dq(static_cast<long>(states_.size()));
+      for (std::size_t i = 0; i < n; ++i) dv[long(i)] = y[n + i] - x_[n + i];
+      for (std::size_t a = 0; a < states_.size(); ++a) dq[long(a)] = y[std::size_t(states_[a])] - x_[std::size_t(states_[a])];
+      return std::sqrt(0.5 * dv.dot(M_ * dv) + 0.5 * dq.dot(K_ * dq));
+    }
+    case Kind::modal_amplitudes: {
+      Eigen::VectorXcd d(static_cast<long>(states_.size()));
+      for (std::size_t a = 0; a < states_.size(); ++a) d[long(a)] = y[std::size_t(states_[a])] - x_[std::size_t(states_[a])];
+      return (to_modes_ * d).norm();
+    }
+    case Kind::per_state: break;
+  }
+  // each state in its own size; a quaternion with symmetric turns by its distance from x's once
+  // turned back along them (its smallest size)
+  std::vector<bool> turned(m_.num_states, false);
+  double d = 0;
+  for (const TurningSymmetry& s : symmetries_) {
+    const std::size_t* c = m_.quaternion_coordinates + 4 * s.quaternion;
+    Eigen::Vector4d q = quaternion_at(m_, y.data(), s.quaternion), p = quaternion_at(m_, x_.data(), s.quaternion);
+    double smallest = std::min(std::min(size_[c[0]], size_[c[1]]), std::min(size_[c[2]], size_[c[3]]));
+    d = std::max(d, distance_modulo_turns(q, p, s.axes) / smallest);
+    for (int j = 0; j < 4; ++j) turned[c[j]] = true;
+  }
+  for (int i : states_) {
+    auto k = static_cast<std::size_t>(i);
+    if (!turned[k]) d = std::max(d, std::abs(y[k] - x_[k]) / size_[k]);
+  }
+  return d;
+}
+
+std::string DeviationNorm::measure() const {
+  switch (kind_) {
+    case Kind::linear_energy: return " in the linearization's energy, ½ δq'ᵀ M δq' + ½ δqᵀ K δq (K positive definite)";
+    case Kind::modal_amplitudes: return " in the linearization's modal amplitudes, |V⁻¹ δ| for A = V Λ V⁻¹";
+    case Kind::per_state: break;
+  }
+  return "";
+}
+
+}  // namespace eomgen::runtime
