@@ -125,10 +125,10 @@ bool strict_minimum_of_potential(const Problem& p, const std::vector<double>& x,
 // size, as x'' = −x³). A velocity without a length of its own moves by its coordinate's size times
 // the system's rate ρ (an oscillator of frequency ρ has that amplitude in its velocity); comparing
 // velocities with displacements directly had called an undamped 22 Hz oscillator unstable.
-std::vector<double> perturbation_sizes(const Problem& p, const std::vector<double>& x, double rate) {
-  const eomgen_model_abi& m = *p.model;
+std::vector<double> perturbation_sizes(const eomgen_model_abi& m, const std::vector<double>& x,
+                                       const std::vector<double>& lengths, double rate) {
   std::size_t nq = m.num_coordinates, nv = m.num_velocities;
-  std::vector<double> lengths = nonlinearity_lengths(p, x), size(m.num_states);
+  std::vector<double> size(m.num_states);
   for (std::size_t k = 0; k < nq; ++k)
     size[k] = std::isfinite(lengths[k]) ? 1e-2 * lengths[k] : 1e-3 * std::max(1.0, std::abs(x[k]));
   double smallest = nq > 0 ? *std::min_element(size.begin(), size.begin() + long(nq)) : 1e-3;
@@ -139,17 +139,64 @@ std::vector<double> perturbation_sizes(const Problem& p, const std::vector<doubl
   return size;
 }
 
-// The run's length: 200 periods of the slowest oscillation, or 200 time constants of the
-// slowest rate when nothing oscillates; only when every eigenvalue is zero is there no scale
-double horizon_of(const StabilityReport& r, double rate) {
+// The runs' rate (it sizes the velocities' pushes) and length, from the eigenvalues that count: the
+// fastest is the rate; the length is 200 periods of the slowest oscillation, or 200 time constants of
+// the slowest rate when nothing oscillates.
+struct RunScale {
+  double rate = 0, horizon = 0;
+  std::string span;  // what the length is, for the report
+};
+
+// Where every eigenvalue that counts is within rounding of zero (a free body at rest, x'' = −x³), none
+// sets a time scale: the rate is that of the forces a displacement meets, √(max_j |Δq''_j| / s_j) over
+// the coordinates' pushes s (√k s for x'' = −k x³), against 200/rate; where no force meets one (a
+// free body), 1 against 1000, so that a velocity's push drifts its coordinate by 1000 times its size.
+// A run of 100 s at 0.01 1/s had drifted it by once its size and called a free body at rest stable;
+// one of 200 "periods" of a rate of 9e-9 rad/s left in it by rounding had lasted 1.4e11 s.
+double restoring_rate(const Problem& p, const std::vector<double>& x, const std::vector<double>& size) {
+  const eomgen_model_abi& m = *p.model;
+  std::size_t n = m.num_coordinates;
+  if (has_pseudo_velocities(m) || has_multipliers(m) || m.num_velocities != n) return 0;
+  std::vector<double> at_x(m.num_states), moved(m.num_states);
+  m.rhs(0.0, x.data(), p.held_inputs(), p.parameters.data(), at_x.data());
+  double largest = 0;
+  for (int i : reduced_state(m)) {
+    if (std::size_t(i) >= n) continue;
+    std::vector<double> y = x;
+    y[std::size_t(i)] += size[std::size_t(i)];
+    m.rhs(0.0, y.data(), p.held_inputs(), p.parameters.data(), moved.data());
+    for (std::size_t j = 0; j < n; ++j)
+      if (size[j] > 0) largest = std::max(largest, std::abs(moved[n + j] - at_x[n + j]) / size[j]);
+  }
+  return std::isfinite(largest) ? std::sqrt(largest) : 0;
+}
+
+RunScale run_scale(const Problem& p, const std::vector<double>& x, const StabilityReport& r,
+                   const std::vector<double>& lengths) {
+  RunScale scale;
   double slowest = INFINITY, smallest = INFINITY;
   for (auto l : r.counted_eigenvalues) {
+    if (std::abs(l) > r.axis_tolerance) scale.rate = std::max(scale.rate, std::abs(l));
     if (std::abs(l.imag()) > r.axis_tolerance) slowest = std::min(slowest, std::abs(l.imag()));
     if (std::abs(l) > r.axis_tolerance) smallest = std::min(smallest, std::abs(l));
   }
-  if (std::isfinite(slowest)) return 200 * 2 * M_PI / slowest;
-  if (std::isfinite(smallest)) return 200 / smallest;
-  return rate > 0 ? 200 / rate : 100.0;
+  if (std::isfinite(slowest)) {
+    scale.horizon = 200 * 2 * M_PI / slowest;
+    scale.span = "about 200 periods of the slowest mode";
+  } else if (std::isfinite(smallest)) {
+    scale.horizon = 200 / smallest;
+    scale.span = "200 time constants of the slowest mode";
+  } else if (double rate = restoring_rate(p, x, perturbation_sizes(*p.model, x, lengths, 0)); rate > 0) {
+    scale.rate = rate;
+    scale.horizon = 200 / rate;
+    scale.span = "no eigenvalue sets a time scale: 200 over the rate of the forces the pushes meet";
+  } else {
+    scale.rate = 1;
+    scale.horizon = 1000;
+    scale.span = "no eigenvalue or force sets a time scale: 1000 times a push's own, its coordinate's size over its "
+                 "velocity's";
+  }
+  return scale;
 }
 
 std::string sizes_text(const eomgen_model_abi& m, const std::vector<double>& size) {
@@ -163,10 +210,9 @@ std::string sizes_text(const eomgen_model_abi& m, const std::vector<double>& siz
 std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const StabilityReport& r, std::string& verdict,
                            const std::function<void(long, long)>& progress) {
   const eomgen_model_abi& m = *p.model;
-  double rate = 0;
-  for (auto l : r.counted_eigenvalues) rate = std::max(rate, std::abs(l));
-  double horizon = horizon_of(r, rate);
-  if (rate == 0) rate = 1 / horizon;
+  std::vector<double> lengths = nonlinearity_lengths(p, x);
+  RunScale scale = run_scale(p, x, r, lengths);
+  double rate = scale.rate, horizon = scale.horizon;
   SimulationSettings s;
   s.t_end = horizon;
   s.dt_out = horizon / 2000;
@@ -176,7 +222,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   // set), and against a Cartesian pendulum's period of 2e12 s they made the runs so stiff that
   // BDF gave up, and the hanging pendulum was called unstable
   s.baumgarte = false;
-  std::vector<double> size = perturbation_sizes(p, x, rate);
+  std::vector<double> size = perturbation_sizes(m, x, lengths, rate);
   // each state's absolute tolerance 1e-12 of its push: the runs resolve their growth in any units
   s.atol = 1e-12 * *std::max_element(size.begin(), size.end());
   for (double push : size) s.state_atol.push_back(1e-12 * push);
@@ -216,10 +262,9 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   verdict = "stable";
   return fmt::format("perturbations of each coordinate and velocity by 1/100 of the length over which the rhs keeps "
                      "the law it follows at the equilibrium (a velocity's, at most its coordinate's times the system's "
-                     "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size{} over {:.4g} s (about 200 periods of "
-                     "the slowest mode{}): stable as far as a simulation can tell",
-                     rate, sizes_text(m, size), worst, deviation.measure(),
-                     horizon,
+                     "rate {:.3g} 1/s; {}) stayed within {:.3g} times their size{} over {:.4g} s ({}{}): stable as far "
+                     "as a simulation can tell",
+                     rate, sizes_text(m, size), worst, deviation.measure(), horizon, scale.span,
                      r.symmetries.empty() ? "" : "; orientations measured modulo the turns the equations do not see");
 }
 

@@ -270,6 +270,47 @@ TEST(ScaleFreeStability, AWellIsStableWhateverTheWidthOfItsRim) {
     }
 }
 
+// No eigenvalue sets a time scale where every one is zero. A damped x'' = −k x³ (the damping
+// declared, c = 0, so that the runs decide), k = 1/T² for T from 1e-12 to 1e12 s: its runs take the
+// rate √k s of the force a push s meets and last 200 over it, about 30 of the oscillation's periods
+// at that size, and stay within a few times the push.
+// A free rigid body at rest (models/free_rigid_body.toml, inertias times 1e-12 to 1e12) meets no
+// force at all: a push of a rate turns it on, its angles drift without bound, and it is unstable,
+// where 100 s at 0.01 1/s had drifted them by once their push and called it stable.
+TEST(ScaleFreeStability, WithoutATimeScaleAQuarticWellIsStableAndAFreeBodyAtRestIsNot) {
+  std::string well = write_model("damped_quartic_well", particle_on_a_line_model("damped_quartic_well", "m = 1.0\nk = 1.0\nc = 0.0\n",
+                                                                                 "dissipation = \"c*der(x)^2/2\"\npotential = \"k*x^4/4\"\n"));
+  for (double T : scales()) {
+    JsonValue r = run_json(fmt::format("stability '{}' --set k={:.17g}", well, 1 / (T * T)));
+    const JsonValue& critical = field(r, "critical_case");
+    EXPECT_EQ(field(critical, "nonlinear_verdict").text, "stable") << "T = " << T << ": " << field(critical, "simulation").text;
+    EXPECT_NE(field(critical, "simulation").text.find("the rate of the forces the pushes meet"), std::string::npos)
+        << field(critical, "simulation").text;
+  }
+  for (double u : scales()) {
+    JsonValue r = run_json(fmt::format("stability '{}' --at 'der(alpha)=0' --at 'der(gamma)=0' --set A={:.17g} --set B={:.17g} "
+                                       "--set C={:.17g}", model_path("free_rigid_body"), u, 2 * u, 3 * u));
+    EXPECT_EQ(field(r, "verdict").text, "unstable") << "u = " << u;
+    const JsonValue& critical = field(r, "critical_case");
+    EXPECT_EQ(field(critical, "nonlinear_verdict").text, "unstable") << "u = " << u << ": " << field(critical, "simulation").text;
+  }
+}
+
+// Newton toward a cyclic rate at a double root of f (a free body's f ~ ω²) stops short of rest:
+// models/gimbal_cardan.toml from its initial rates 0.2, −0.1, 1 rad/s ended at der(alpha) = 2.6e-8,
+// whose split Jordan blocks read as "marginally stable". It is rest, with its inertias (and mass)
+// times 1e-12 to 1e12. (Not in time: the search steps a velocity in units of 1 rad/s, so that from
+// rates times 1e12 it finds a steady spin instead.)
+TEST(ScaleFreeStability, AFreeBodysSearchEndsAtRestNotAtARateLeftByNewton) {
+  for (double u : scales()) {
+    JsonValue r = run_json(fmt::format("stability '{}' --set A={:.17g} --set B={:.17g} --set C={:.17g} --set m={:.17g}",
+                                       model_path("gimbal_cardan"), u, 2 * u, 3 * u, 10 * u));
+    EXPECT_EQ(at(field(r, "equilibrium"), "der(alpha)"), 0.0) << "u = " << u;
+    EXPECT_EQ(field(r, "verdict").text, "unstable") << "u = " << u;
+    EXPECT_EQ(field(field(r, "critical_case"), "nonlinear_verdict").text, "unstable") << "u = " << u;
+  }
+}
+
 // The pendulum on a cart with its masses scaled by μ and its rod by λ (g by λ too, so that the time
 // scale stays): M = [[μ(mc + m), μλ m l cos θ], [·, μλ² m l²]] has eigenvalues as far apart as λ²
 // (1e-9 kg against 5e-23 kg m² for a MEMS cart), which a threshold on them called singular; without
