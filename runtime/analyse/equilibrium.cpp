@@ -244,6 +244,15 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
   int polished = 0;
   std::vector<double> best;
   double best_merit = INFINITY;
+  // the velocities' unit: the largest of them at the start (a steady motion's rates in their own
+  // scale, alike for all so that a least-squares step keeps their proportions), else 1. In units of
+  // 1 rad/s, gimbal_cardan's search from 0.2 rad/s halved der(alpha) toward the double root of a free
+  // body's f ~ ω² and stopped at 2.6e-8, whose split Jordan blocks read as "marginally stable", while
+  // from rates times 1e12 it found the steady spin about the minor axis
+  double rate_unit = 0;
+  for (int i : unknowns)
+    if (std::size_t(i) >= n) rate_unit = std::max(rate_unit, std::abs(x[std::size_t(i)]));
+  if (!(rate_unit > 0) || !std::isfinite(rate_unit)) rate_unit = 1.0;
   for (; iterations < 100; ++iterations) {
     Derivatives d = evaluate(problem, x);
     if (!d.f.allFinite()) break;
@@ -262,7 +271,7 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
     Eigen::VectorXd unit(static_cast<Eigen::Index>(unknowns.size()));
     for (std::size_t k = 0; k < unknowns.size(); ++k) {
       std::size_t i = std::size_t(unknowns[k]);
-      unit[static_cast<long>(k)] = i < n && size[i] > 0 ? size[i] : 1.0;
+      unit[static_cast<long>(k)] = i < n ? (size[i] > 0 ? size[i] : 1.0) : rate_unit;
     }
     Eigen::VectorXd step = newton_step(d, unknowns, n, d.f, weight, unit);
     auto moved = [&](double fraction) {
@@ -334,28 +343,6 @@ Equilibrium come_to_rest(const Problem& problem, std::vector<double> x, const st
   return rest;
 }
 
-// Newton toward a double root of f in a cyclic velocity (a free body's f grows as ω²) halves the
-// rate at every step and stops, within tolerance, short of rest: gimbal_cardan's der(alpha) ended at
-// 2.6e-8 rad/s from 0.2, a rate that split its linearization's Jordan blocks into a "marginally
-// stable" spectrum and made its perturbed runs last 1.4e11 s. A cyclic rate below a millionth of
-// its start, where rest balances too, is rest.
-Equilibrium rest_where_it_balances(const Problem& problem, Equilibrium found, const std::vector<double>& start,
-                                   const std::vector<int>& cyclic_velocities) {
-  if (!found.converged) return found;
-  std::vector<double> rest = found.state;
-  bool crept = false;
-  for (int i : cyclic_velocities) {
-    auto k = static_cast<std::size_t>(i);
-    if (rest[k] != 0 && std::abs(rest[k]) < 1e-6 * std::abs(start[k])) rest[k] = 0, crept = true;
-  }
-  if (!crept) return found;
-  Equilibrium at_rest = check_equilibrium(problem, rest);
-  if (!at_rest.converged) return found;
-  at_rest.iterations = found.iterations;
-  at_rest.note = found.note;
-  return at_rest;
-}
-
 }  // namespace
 
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
@@ -384,7 +371,6 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
       found = rest;
     }
   }
-  found = rest_where_it_balances(problem, found, start, cyclic_velocities);
   bool singular = found.converged && !unfit_state(problem, 0.0, found.state).empty();
   if ((found.converged && !singular) || cyclic_velocities.empty()) return found;
   // The search found nothing, or slid onto a singularity of the coordinates, where the equations

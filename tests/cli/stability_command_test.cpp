@@ -253,8 +253,10 @@ std::string spherical_pendulum_on_time_scale(double s) {
 // azimuth is undefined and any φ' balances ("the mass matrix is singular", nothing analysed), or
 // found nothing at s = 1e-12 and 1e12. Now, where it does, the search takes the steady motion at
 // θ = 0.8 instead and says so: at every time scale from 1e-12 to 1e12 a conical motion near
-// θ = 0.8 is found and is stable. The heavy top's steady precession (Hiller §3.9) likewise:
-// m g s = Ω (C ω3 − A' Ω cos θ), A' = A + m s² about the pivot, ω3 = φ' + Ω cos θ.
+// θ = 0.8 is found and is stable. The heavy top's steady precession (Hiller §3.9):
+// m g s = Ω (C ω3 − A' Ω cos θ), A' = A + m s² about the pivot, ω3 = φ' + Ω cos θ, found near its
+// initial θ = 0.3 at the same θ at time scales T of 1e-6, 1 and 1e6 (g over T², its spin over T: the
+// search steps the rates in their own scale), and at θ = 0.3 where --at holds it there.
 TEST(StabilityCommand, ASearchThatEndsAtASingularityOfTheCoordinatesTakesTheSteadyMotionThere) {
   for (double s : {1e-12, 1e-6, 1e-3, 1.0, 1e3, 1e6, 1e12}) {
     std::string model = spherical_pendulum_on_time_scale(s);
@@ -271,12 +273,26 @@ TEST(StabilityCommand, ASearchThatEndsAtASingularityOfTheCoordinatesTakesTheStea
                 std::string::npos) << r.err;
     }
   }
-  JsonValue top = run_json("stability '" + model_path("heavy_symmetric_top") + "'");
-  const JsonValue& steady = *top.find("equilibrium");
-  const double m = 0.5, s = 0.05, A = 0.0004 + m * s * s, C = 0.0006, g = 9.81, theta = at(steady, "theta");
-  double precession = at(steady, "der(psi)"), spin = at(steady, "der(phi)") + precession * std::cos(theta);
-  EXPECT_EQ(theta, 0.3);
-  EXPECT_NEAR(precession * (C * spin - A * precession * std::cos(theta)), m * g * s, 1e-9 * m * g * s);
+  double unscaled_theta = NAN;
+  for (double T : {1.0, 1e-6, 1e6}) {
+    std::string top = write_model("heavy_symmetric_top", edited(read_file(model_path("heavy_symmetric_top")),
+                                                                {{"rate = 100.0", fmt::format("rate = {:.17g}", 100 / T)}}));
+    const double m = 0.5, s = 0.05, A = 0.0004 + m * s * s, C = 0.0006, g = 9.81 / (T * T);
+    for (std::string held : {"", "--at theta=0.3"}) {
+      JsonValue json = run_json(fmt::format("stability '{}' --set g={:.17g} {}", top, g, held));
+      const JsonValue& steady = *json.find("equilibrium");
+      double theta = at(steady, "theta"), precession = at(steady, "der(psi)");
+      double spin = at(steady, "der(phi)") + precession * std::cos(theta);
+      EXPECT_NEAR(precession * (C * spin - A * precession * std::cos(theta)), m * g * s, 1e-9 * m * g * s) << "T = " << T;
+      if (!held.empty()) {
+        EXPECT_EQ(theta, 0.3) << "T = " << T;
+        continue;
+      }
+      EXPECT_NEAR(theta, 0.3, 1e-2) << "T = " << T;
+      if (T == 1.0) unscaled_theta = theta;
+      EXPECT_NEAR(theta, unscaled_theta, 1e-9) << "T = " << T;
+    }
+  }
 }
 
 // --at that names some states holds them and solves for the rest where the rest as given do not
