@@ -45,13 +45,29 @@ std::vector<double> rounding_floors(const Problem& p, const std::vector<double>&
   return floors;
 }
 
+// Where a row's terms cancel for every r (a free body's ω² terms in a row that stays at rest), its
+// change is their rounding: a unit in the last place of terms that grow as a power of r, which steps
+// by powers of two and, three radii in a row, may pass for a law (one ending at 1e-37 rad/s had sized
+// a push at that). It hits exactly 0 again and again between nonzero changes, where a smooth change
+// crosses zero once at most in a decade. From three such zeros on, the changes up to the last of them
+// are taken for rounding.
+std::size_t rounded_up_to(const std::vector<double>& changes, std::size_t end) {
+  std::size_t first_nonzero = end, last_nonzero = 0;
+  for (std::size_t k = 0; k < end; ++k)
+    if (changes[k] != 0) first_nonzero = std::min(first_nonzero, k), last_nonzero = k;
+  std::size_t zeros = 0, last_zero = 0;
+  for (std::size_t k = first_nonzero; k < last_nonzero; ++k)
+    if (changes[k] == 0) ++zeros, last_zero = k;
+  return zeros >= 3 ? last_zero + 1 : 0;
+}
+
 }  // namespace
 
 PowerLaw leading_power_law(const std::vector<double>& changes) {
   PowerLaw law;
   std::size_t end = 0;
   while (end < changes.size() && std::isfinite(changes[end])) ++end;
-  for (std::size_t k = 0; k + 2 < end; ++k) {
+  for (std::size_t k = rounded_up_to(changes, end); k + 2 < end; ++k) {
     double a = changes[k], b = changes[k + 1], c = changes[k + 2];
     if (!usable(a) || !usable(b) || !usable(c) || (a > 0) != (b > 0) || (b > 0) != (c > 0)) continue;
     double first = local_exponent(a, b), second = local_exponent(b, c);
