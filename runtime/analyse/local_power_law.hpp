@@ -30,7 +30,8 @@ struct PowerLaw {
 /// The leading power law of `changes` (one per probe radius; a NaN or infinity ends them): the
 /// first three radii in a row whose changes are nonzero, of one sign, and rise by the same
 /// exponent ≥ 1/2 to within 0.1 across both decades. Rounding noise rises by no steady law, so
-/// it is passed over. The law then holds out to the last radius before the local exponent moves
+/// it is passed over; so are the changes up to the last of three or more exact zeros between
+/// nonzero ones (the rounding of terms that cancel for every r, which may rise steadily). The law then holds out to the last radius before the local exponent moves
 /// by more than 0.1 from it or the change's sign turns.
 PowerLaw leading_power_law(const std::vector<double>& changes);
 
