@@ -317,6 +317,19 @@ TEST(ScaleFreeStability, AFreeBodysSearchFindsItsSteadySpinAtEveryTimeScale) {
   }
 }
 
+// models/car_braking.toml from 20 m/s (and from 2e-11 and 2e13): air drag's force ~ v² has a double
+// root at rest, toward which Newton halves the speed at every step and stopped at 2.4e-6 m/s, within
+// tolerance. A cyclic rate below a millionth of its start where rest balances too is rest.
+TEST(ScaleFreeStability, ABrakingCarsSearchEndsAtRestNotAtASpeedLeftByNewton) {
+  for (double speed : {20.0, 2e-11, 2e13}) {
+    std::string model = write_model("car_braking", edited(read_file(model_path("car_braking")),
+                                                          {{"rate = 20.0 }", fmt::format("rate = {:.17g} }}", speed)}}));
+    JsonValue r = run_json(fmt::format("stability '{}'", model));
+    EXPECT_EQ(at(field(r, "equilibrium"), "der(x)"), 0.0) << "from " << speed << " m/s";
+    EXPECT_EQ(field(r, "verdict").text, "asymptotically_stable") << "from " << speed << " m/s";
+  }
+}
+
 // The pendulum on a cart with its masses scaled by μ and its rod by λ (g by λ too, so that the time
 // scale stays): M = [[μ(mc + m), μλ m l cos θ], [·, μλ² m l²]] has eigenvalues as far apart as λ²
 // (1e-9 kg against 5e-23 kg m² for a MEMS cart), which a threshold on them called singular; without
