@@ -151,8 +151,7 @@ struct RunScale {
 // sets a time scale: the rate is that of the forces a displacement meets, √(max_j |Δq''_j| / s_j) over
 // the coordinates' pushes s (√k s for x'' = −k x³), against 200/rate; where no force meets one (a
 // free body), 1 against 1000, so that a velocity's push drifts its coordinate by 1000 times its size.
-// A run of 100 s at 0.01 1/s had drifted it by once its size and called a free body at rest stable;
-// one of 200 "periods" of a rate of 9e-9 rad/s left in it by rounding had lasted 1.4e11 s.
+// A run of 100 s at 0.01 1/s had drifted it by once its size and called a free body at rest stable.
 double restoring_rate(const Problem& p, const std::vector<double>& x, const std::vector<double>& size) {
   const eomgen_model_abi& m = *p.model;
   std::size_t n = m.num_coordinates;
