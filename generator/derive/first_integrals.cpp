@@ -94,10 +94,7 @@ bool quadratic_in_velocities(const Mechanics& mech, const Lagrangian& L) {
   for (const ex& b : mech.kinetic_linear)
     if (!vanishes(b, mech.motion)) return false;
   if (!vanishes(mech.kinetic_at_rest, mech.motion)) return false;
-  const ex& extra = mech.extra_kinetic_energy;
-  ex euler = -2 * extra;
-  for (const auto& v : L.qdot) euler += v * extra.diff(v);
-  return vanishes(euler, mech.motion);
+  return quadratic_form_in(mech.extra_kinetic_energy, L.qdot, mech.motion);
 }
 
 std::optional<FirstIntegral> generalized_energy(const Equations& e, const Mechanics& mech, const Lagrangian& L) {

@@ -40,6 +40,12 @@ ex kinetic_energy_of(const Mechanics& mech) {
   return tidy(T, mech.motion);
 }
 
+bool quadratic_form_in(const ex& T, const std::vector<GiNaC::realsymbol>& velocities, const MotionSymbols& motion) {
+  ex euler = -2 * T;
+  for (const auto& v : velocities) euler += v * T.diff(v);
+  return tidy(euler, motion).is_zero();
+}
+
 ex time_derivative(const ex& x, const Symbols& s) {
   std::vector<ex> variables(s.coordinates.begin(), s.coordinates.end());
   variables.push_back(s.time);
@@ -50,16 +56,6 @@ ex time_derivative(const ex& x, const Symbols& s) {
 }
 
 namespace {
-
-// An [energy] kinetic written in a moving frame (a rotating orbit's Clohessy–Wiltshire T) has terms
-// linear in and free of the velocities, T1 and T0: the frame's drive does work, and T + V is not
-// conserved although nothing depends on t (only h = T2 − T0 + V is, Hiller §3.6). By Euler's theorem
-// T is a quadratic form exactly when Σ q'_j ∂T/∂q'_j = 2 T.
-bool quadratic_form_in_velocities(const ex& T, const Symbols& s) {
-  ex euler = -2 * T;
-  for (const auto& v : s.velocities) euler += v * T.diff(v);
-  return euler.expand().is_zero();
-}
 
 // J = ∂r/∂q (3 × n); v = J q̇ + ∂r/∂t; a − J q̈ = Σ ∂v/∂q_k q̇_k + ∂v/∂t
 void translate(BodyKinematics& b, const Vector3& r, const Symbols& s) {
@@ -331,8 +327,11 @@ Mechanics compute_mechanics(const Model& model) {
   // scleronomic: at rest (q' = 0) nothing moves, and T, V have no explicit t
   GiNaC::exmap at_rest;
   for (const auto& v : s.velocities) at_rest[v] = 0;
+  // An [energy] kinetic written in a moving frame (a rotating orbit's Clohessy–Wiltshire T) has terms
+  // linear in and free of the velocities: the frame's drive does work, and T + V is not conserved
+  // although nothing depends on t (only h = T2 − T0 + V is, Hiller §3.6)
   m.scleronomic = !m.extra_kinetic_energy.has(s.time) && !m.potential_energy.has(s.time) &&
-                  quadratic_form_in_velocities(m.extra_kinetic_energy, s);
+                  quadratic_form_in(m.extra_kinetic_energy, s.velocities, m.motion);
   // (frames placed by the coordinates alone do not move at rest: their ω is a symbol here)
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
     for (unsigned a = 0; a < 3 && !in_frame[i]; ++a) {

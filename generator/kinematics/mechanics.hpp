@@ -91,8 +91,12 @@ Mechanics compute_mechanics(const Model& model);
 GiNaC::ex kinetic_energy_of(const Mechanics& mechanics);
 
 /// T + V is a first integral at zero inputs (Hiller §3.6): no applied forces then, no
-/// dissipation, and nothing depends on time explicitly.
+/// dissipation, nothing depends on time explicitly, and T is a quadratic form in the velocities.
 bool conserves_energy_without_inputs(const Mechanics& mechanics, const Symbols& symbols);
+
+/// Whether T is a quadratic form in `velocities` (T1 = T0 = 0): by Euler's theorem on homogeneous
+/// functions, exactly when Σ v ∂T/∂v = 2 T, decided by tidying the difference along `motion`.
+bool quadratic_form_in(const GiNaC::ex& T, const std::vector<GiNaC::realsymbol>& velocities, const MotionSymbols& motion);
 
 /// The symbols that change along a motion: q, q', t and u.
 MotionSymbols motion_symbols(const Symbols& symbols);

@@ -21,10 +21,9 @@ constexpr double largest_condition = 1e4;
 
 DeviationNorm::DeviationNorm(const eomgen_model_abi& m, const StabilityReport& report, const std::vector<double>& x,
                              std::vector<double> size)
-    : m_(m), x_(x), size_(std::move(size)), symmetries_(report.symmetries) {
+    : m_(m), x_(x), size_(std::move(size)), symmetries_(report.symmetries), states_(reduced_state(m)) {
   if (use_energy(report)) kind_ = Kind::linear_energy;
   else if (use_modes(report)) kind_ = Kind::modal_amplitudes;
-  else states_ = reduced_state(m_);
 }
 
 // Lagrange II with K positive definite over the non-cyclic coordinates. Sizes per state had weighed
@@ -33,18 +32,21 @@ DeviationNorm::DeviationNorm(const eomgen_model_abi& m, const StabilityReport& r
 bool DeviationNorm::use_energy(const StabilityReport& r) {
   std::size_t n = m_.num_coordinates;
   if (has_pseudo_velocities(m_) || has_multipliers(m_) || r.M.rows() != long(n) || r.K.rows() != long(n)) return false;
-  states_.clear();
+  std::vector<int> coordinates;
   for (std::size_t i = 0; i < n; ++i)
-    if (!m_.is_cyclic[i]) states_.push_back(int(i));
-  long c = long(states_.size());
+    if (!m_.is_cyclic[i]) coordinates.push_back(int(i));
+  long c = long(coordinates.size());
   if (c == 0) return false;
-  M_ = r.M;
-  K_.resize(c, c);
+  Eigen::MatrixXd K(c, c);
   for (long a = 0; a < c; ++a)
-    for (long b = 0; b < c; ++b) K_(a, b) = r.K(states_[std::size_t(a)], states_[std::size_t(b)]);
-  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K_).eigenvalues();
+    for (long b = 0; b < c; ++b) K(a, b) = r.K(coordinates[std::size_t(a)], coordinates[std::size_t(b)]);
+  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
   // positive definite beyond rounding, relative to its own largest stiffness
-  return k.maxCoeff() > 0 && k.minCoeff() > 1e-12 * k.maxCoeff();
+  if (!(k.maxCoeff() > 0 && k.minCoeff() > 1e-12 * k.maxCoeff())) return false;
+  M_ = r.M;
+  K_ = K;
+  states_ = coordinates;
+  return true;
 }
 
 // A = V Λ V⁻¹ on the reduced state in units of the perturbations' sizes: the modal amplitudes
@@ -54,7 +56,6 @@ bool DeviationNorm::use_energy(const StabilityReport& r) {
 // default 1e-3: a bounded motion "grew" 120-fold. Quaternions keep their norm modulo turns instead.
 bool DeviationNorm::use_modes(const StabilityReport& r) {
   if (m_.num_quaternions > 0 || has_multipliers(m_)) return false;
-  states_ = reduced_state(m_);
   long n = long(states_.size());
   if (n == 0 || r.A.rows() != n || r.A.cols() != n || !r.A.allFinite()) return false;
   Eigen::VectorXd s(n);

@@ -37,7 +37,7 @@ class DeviationNorm {
   std::vector<double> x_, size_;
   std::vector<TurningSymmetry> symmetries_;
   Kind kind_ = Kind::per_state;
-  std::vector<int> states_;    // the rows of the reduced state (energy: the non-cyclic coordinates)
+  std::vector<int> states_;    // the reduced state's (linear_energy: the non-cyclic coordinates)
   Eigen::MatrixXd M_, K_;      // linear_energy
   Eigen::MatrixXcd to_modes_;  // modal_amplitudes: V⁻¹ S⁻¹ on the reduced state
   bool use_energy(const StabilityReport& r);
