@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -293,6 +294,26 @@ TEST(ScaleFreeStability, WithoutATimeScaleAQuarticWellIsStableAndAFreeBodyAtRest
     EXPECT_EQ(field(r, "verdict").text, "unstable") << "u = " << u;
     const JsonValue& critical = field(r, "critical_case");
     EXPECT_EQ(field(critical, "nonlinear_verdict").text, "unstable") << "u = " << u << ": " << field(critical, "simulation").text;
+  }
+}
+
+// A steady motion with no eigenvalue or force to set a time scale sets its own: models/rolling_ball.toml
+// spun at 2/T rad/s and models/knife_edge.toml turning at 0.5/T rad/s (its speed 1/T m/s), T from
+// 1e-12 to 1e12 s, keep every velocity constant (rolling ball) or turn them with the blade (knife
+// edge): stable, the pushes a thousandth of the motion's rate at every T. Runs of 1000 s at a rate of
+// 1 1/s had broken off at CVODE's step limit from 2e6 rad/s on and called both unstable.
+TEST(ScaleFreeStability, ASteadyMotionWithoutForcesSetsItsOwnTimeScale) {
+  for (double T : scales()) {
+    for (const auto& [model, at, rate] : {std::tuple{"rolling_ball", fmt::format("--at omega_x={:.17g}", 2 / T), 2 / T},
+                                          std::tuple{"knife_edge", fmt::format("--at v={:.17g} --at w={:.17g}", 1 / T, 0.5 / T),
+                                                     0.5 / T}}) {
+      JsonValue r = run_json(fmt::format("stability '{}' {}", model_path(model), at));
+      EXPECT_EQ(field(r, "verdict").text, "marginally_stable") << model << ", T = " << T;
+      const std::string simulation = field(field(r, "critical_case"), "simulation").text;
+      EXPECT_EQ(field(field(r, "critical_case"), "nonlinear_verdict").text, "stable") << model << ", T = " << T << ": " << simulation;
+      EXPECT_NE(simulation.find(fmt::format("the system's rate {:.3g} 1/s", rate)), std::string::npos) << simulation;
+      EXPECT_NE(simulation.find("200 over the steady motion's rate"), std::string::npos) << simulation;
+    }
   }
 }
 
