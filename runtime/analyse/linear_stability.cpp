@@ -69,6 +69,7 @@ struct Spectrum {
   std::vector<std::complex<double>> eigenvalues;
   std::vector<double> errors;
   double tolerance, cluster;
+  double rounding;  // n ε of the spectral scale: below it, no eigenvalue is told from zero
   Eigen::MatrixXd balanced;
   bool on_axis(std::size_t i) const { return std::abs(eigenvalues[i].real()) <= std::max(tolerance, errors[i]); }
   bool same(std::size_t i, std::size_t j) const {
@@ -79,7 +80,7 @@ struct Spectrum {
 Spectrum spectrum(const Eigen::MatrixXd& A) {
   Eigen::MatrixXd B = balanced(A);
   Eigen::EigenSolver<Eigen::MatrixXd> solver(B, true);
-  Spectrum s{{}, {}, 0, 0, B};
+  Spectrum s{{}, {}, 0, 0, 0, B};
   const Eigen::Index n = A.rows();
   Eigen::MatrixXcd X = solver.eigenvectors(), Y = X.fullPivLu().inverse();
   double size = n ? B.norm() : 0.0;
@@ -94,6 +95,7 @@ Spectrum spectrum(const Eigen::MatrixXd& A) {
   for (const auto& [value, error] : pairs) s.eigenvalues.push_back(value), s.errors.push_back(error);
   double scale = eigenvalue_scale(B, s.eigenvalues);
   s.tolerance = relative_axis_tolerance * scale, s.cluster = relative_cluster_tolerance * scale;
+  s.rounding = double(n) * std::numeric_limits<double>::epsilon() * scale;
   return s;
 }
 
@@ -328,6 +330,11 @@ ModuloTurns modulo_turning_symmetries(const Problem& problem, const std::vector<
 void describe_spectrum(StabilityReport& r, int cyclic, const Eigen::MatrixXd* judged = nullptr) {
   Spectrum sp = spectrum(r.A);
   r.eigenvalues = sp.eigenvalues;
+  // an eigenvalue within rounding of zero (its own error ε |B| κ, or n ε of the spectral scale) is
+  // reported as 0: a car's row of A that is exactly zero had shown a mode of −1.8e-16 rad/s, and the
+  // rounding in A of a pendulum's Euler angles at their singularity modes of ±3.5e-32 rad/s
+  for (std::size_t i = 0; i < sp.eigenvalues.size(); ++i)
+    if (std::abs(sp.eigenvalues[i]) <= std::max(sp.errors[i], sp.rounding)) r.eigenvalues[i] = 0;
   Spectrum reduced = judged ? spectrum(*judged) : sp;
   Verdict v = judge(reduced, cyclic);
   r.verdict = v.verdict, r.stability_degree = v.degree, r.cyclic_zero_eigenvalues = v.cyclic_zeros;

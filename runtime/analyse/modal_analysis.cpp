@@ -5,6 +5,7 @@
 #include "analyse/modal_analysis.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "analyse/system_scales.hpp"
 
@@ -18,10 +19,20 @@ double largest(const Eigen::MatrixXd& A) { return A.size() ? A.cwiseAbs().maxCoe
 void fit_rayleigh(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K, ModalAnalysis& out) {
   Eigen::Index n2 = M.size();
   Eigen::MatrixXd basis(n2, 2);
-  basis.col(0) = Eigen::Map<const Eigen::VectorXd>(M.data(), n2);
-  basis.col(1) = Eigen::Map<const Eigen::VectorXd>(K.data(), n2);
+  // each column in units of its largest entry: at a time scale of 1e12 s, K (1e-20) beside M (1e3)
+  // had fallen below the decomposition's rank threshold and a car's D = 0.1 T K been called
+  // nonproportional
+  double units[2] = {largest(M) > 0 ? largest(M) : 1.0, largest(K) > 0 ? largest(K) : 1.0};
+  basis.col(0) = Eigen::Map<const Eigen::VectorXd>(M.data(), n2) / units[0];
+  basis.col(1) = Eigen::Map<const Eigen::VectorXd>(K.data(), n2) / units[1];
   Eigen::VectorXd target = Eigen::Map<const Eigen::VectorXd>(D.data(), n2);
   Eigen::VectorXd ab = basis.completeOrthogonalDecomposition().solve(target);
+  ab(0) /= units[0], ab(1) /= units[1];
+  // a coefficient whose term is below the rounding of D is zero: a braking car's D = 0.1 K had been
+  // fitted as 1.46e-15 M + 0.1 K
+  double rounding = double(M.rows()) * std::numeric_limits<double>::epsilon() * largest(D);
+  if (std::abs(ab(0)) * largest(M) <= rounding) ab(0) = 0;
+  if (std::abs(ab(1)) * largest(K) <= rounding) ab(1) = 0;
   double residual = largest(D - ab(0) * M - ab(1) * K);
   if (residual <= 1e-10 * largest(D)) {
     out.damping = "proportional";

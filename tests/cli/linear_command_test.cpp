@@ -392,6 +392,22 @@ TEST(LinearCommand, InputsAsFunctionsOfTime) {
   EXPECT_NE(wrong.err.find("expected A*step(T0), A*impulse(T0), A*sin(W*t) or A*cos(W*t)"), std::string::npos) << wrong.err;
 }
 
+// models/car_braking.toml at rest on time scales T from 1e-12 to 1e12 s (stiffnesses and g over T²,
+// dampings over T): its D is 0.1 T K exactly, and the fit says so, α = 0 rather than the 1.5e-15
+// that least squares leaves in rounding.
+TEST(LinearCommand, RayleighDampingHasNoCoefficientFromRounding) {
+  for (double T : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    JsonValue r = run_json(fmt::format("linear '{}' --set kf={:.17g} --set kr={:.17g} --set cf={:.17g} --set cr={:.17g} "
+                                       "--set g={:.17g}", model_path("car_braking"), 40000 / (T * T), 44000 / (T * T),
+                                       4000 / T, 4400 / T, 9.81 / (T * T)));
+    ASSERT_NE(r.find("damping"), nullptr) << "T = " << T;
+    const JsonValue& damping = *r.find("damping");
+    EXPECT_EQ(damping.find("kind")->text, "proportional") << "T = " << T;
+    EXPECT_EQ(at(damping, "rayleigh_alpha"), 0) << "T = " << T;
+    EXPECT_NEAR(at(damping, "rayleigh_beta") / T, 0.1, 1e-12) << "T = " << T;
+  }
+}
+
 TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
   ASSERT_EQ(r.status, 0) << r.err;

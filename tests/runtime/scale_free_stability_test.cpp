@@ -317,6 +317,27 @@ TEST(ScaleFreeStability, ASteadyMotionWithoutForcesSetsItsOwnTimeScale) {
   }
 }
 
+// models/car_braking.toml at rest on time scales T from 1e-12 to 1e12 s (stiffnesses and g over T²,
+// dampings over T): der(x)'s row of A is exactly zero, and its eigenvalue is reported as 0, not as
+// the −1.8e-16/T rad/s that rounding in the eigensolver leaves; the other four are the car's
+// damped heave and pitch.
+TEST(ScaleFreeStability, AnEigenvalueWithinRoundingOfZeroIsReportedAsZero) {
+  for (double T : scales()) {
+    JsonValue r = run_json(fmt::format("stability '{}' --set kf={:.17g} --set kr={:.17g} --set cf={:.17g} --set cr={:.17g} "
+                                       "--set g={:.17g}", model_path("car_braking"), 40000 / (T * T), 44000 / (T * T),
+                                       4000 / T, 4400 / T, 9.81 / (T * T)));
+    EXPECT_EQ(field(r, "verdict").text, "asymptotically_stable") << "T = " << T;
+    int zeros = 0, damped = 0;
+    for (const JsonValue& e : r.find("eigenvalues")->items) {
+      double re = e.items.at(0).value, im = e.items.at(1).value;
+      if (re == 0 && im == 0) ++zeros;
+      if (re * T < -2.5 && std::abs(im) * T > 6.6) ++damped;
+    }
+    EXPECT_EQ(zeros, 1) << "T = " << T;
+    EXPECT_EQ(damped, 4) << "T = " << T;
+  }
+}
+
 // models/gimbal_cardan.toml from its initial rates 0.2, −0.1, 1 rad/s times 1/T, T from 1e-12 to
 // 1e12 s: a free body's steady motion is a spin about a principal axis, here the minor one (A),
 // stable. Stepping the cyclic rate in units of 1 rad/s, the search had halved it toward the double
