@@ -34,15 +34,20 @@ void balance_rows_and_columns(Eigen::MatrixXd& B, Eigen::VectorXd& scales) {
 // position), or whose rate depends on no other state (a zero row), has no balance of its
 // own: Parlett and Reinsch leave its scale where it was, and its neighbours' with it (the
 // free cart's speed at 2^14 in a system whose entries are 5e9). It takes the scale at which
-// its entries are as large as the largest off the diagonal; true when a scale moved by more
-// than a factor of two.
+// its entries are as large as the largest off the diagonal among the other states' (its own
+// had set the scale for itself: a braking car's free position and speed kept x' = 1 · v beside
+// rates of 1e-12 1/s, which then clustered every eigenvalue into one); true when a scale moved
+// by more than a factor of two.
 bool scale_one_sided_states(Eigen::MatrixXd& B, Eigen::VectorXd& scales) {
   bool moved = false;
   for (Eigen::Index i = 0; i < B.rows(); ++i) {
     Eigen::MatrixXd off_diagonal = B - Eigen::MatrixXd(B.diagonal().asDiagonal());
-    double largest = off_diagonal.cwiseAbs().maxCoeff();
     double column = off_diagonal.col(i).cwiseAbs().maxCoeff(), row = off_diagonal.row(i).cwiseAbs().maxCoeff();
-    if ((column == 0) == (row == 0)) continue;
+    off_diagonal.row(i).setZero();
+    off_diagonal.col(i).setZero();
+    double largest = off_diagonal.cwiseAbs().maxCoeff();
+    // one-sided, and another state to take the scale from (a triangular 2×2 has none)
+    if ((column == 0) == (row == 0) || largest == 0) continue;
     double f = std::exp2(std::round(std::log2(column == 0 ? row / largest : largest / column)));
     if (!std::isfinite(f) || (f <= 2 && f >= 0.5)) continue;
     B.col(i) *= f;

@@ -408,6 +408,33 @@ TEST(LinearCommand, RayleighDampingHasNoCoefficientFromRounding) {
   }
 }
 
+// The same car with its free position and speed in the state (x' = v, v' = 0 at rest: a double zero
+// in one Jordan block) and its pitch's response to the braking force F: at T = 1e12 s the
+// balancing had kept x' = 1 · v beside rates of 1e-12 1/s, so that every eigenvalue fell in one
+// cluster ("algebraic 6, Jordan blocks [2, 1, 1, 1, 1]") and G(s) was called identically zero.
+TEST(LinearCommand, AFreePositionBesideSlowModesKeepsTheirStructureAndTransferFunction) {
+  for (double T : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    JsonValue r = run_json(fmt::format("linear '{}' --transfer F:theta --set kf={:.17g} --set kr={:.17g} --set cf={:.17g} "
+                                       "--set cr={:.17g} --set g={:.17g}", model_path("car_braking"), 40000 / (T * T),
+                                       44000 / (T * T), 4000 / T, 4400 / T, 9.81 / (T * T)));
+    std::vector<std::vector<double>> blocks;
+    for (const JsonValue& e : r.find("eigenvalues")->items) {
+      blocks.emplace_back();
+      for (const JsonValue& b : e.find("jordan_blocks")->items) blocks.back().push_back(b.value);
+    }
+    EXPECT_EQ(blocks, (std::vector<std::vector<double>>{{2}, {1}, {1}, {1}, {1}})) << "T = " << T;
+    const JsonValue& G = r.find("transfer_functions")->items.at(0);
+    EXPECT_EQ(G.find("constant")->kind, JsonValue::boolean) << "T = " << T;
+    EXPECT_FALSE(G.find("constant")->truth) << "T = " << T;
+    ASSERT_EQ(G.find("zeros")->items.size(), 2u) << "T = " << T;
+    for (const JsonValue& z : G.find("zeros")->items) {
+      EXPECT_NEAR(z.items.at(0).value * T, -2.8, 1e-9) << "T = " << T;
+      EXPECT_NEAR(std::abs(z.items.at(1).value) * T, 6.939740629158989, 1e-9) << "T = " << T;
+    }
+    EXPECT_NEAR(at(G, "gain") / -0.0002291666666666667, 1, 1e-9) << "T = " << T;
+  }
+}
+
 TEST(LinearCommand, TextNamesTheModesAndMistakesAreRefused) {
   CommandOutput r = run_eomgen("linear '" + model_path("two_mass_chain") + "' --at x1=0 --at x2=0");
   ASSERT_EQ(r.status, 0) << r.err;
