@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "parse/json_reader.hpp"
+#include "support/small_models.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -392,19 +393,19 @@ TEST(LinearCommand, InputsAsFunctionsOfTime) {
   EXPECT_NE(wrong.err.find("expected A*step(T0), A*impulse(T0), A*sin(W*t) or A*cos(W*t)"), std::string::npos) << wrong.err;
 }
 
-// models/car_braking.toml at rest on time scales T from 1e-12 to 1e12 s (stiffnesses and g over T²,
-// dampings over T): its D is 0.1 T K exactly, and the fit says so, α = 0 rather than the 1.5e-15
-// that least squares leaves in rounding.
+// models/car_braking.toml at rest on time scales T from 1e-12 to 1e12 s (small_models.hpp): its
+// D is cf/kf T K = cr/kr T K exactly, and the fit says so, α = 0 rather than the 1.5e-15 that
+// least squares leaves in rounding.
 TEST(LinearCommand, RayleighDampingHasNoCoefficientFromRounding) {
+  const BrakingCar car;
+  ASSERT_EQ(car.cf / car.kf, car.cr / car.kr);
   for (double T : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
-    JsonValue r = run_json(fmt::format("linear '{}' --set kf={:.17g} --set kr={:.17g} --set cf={:.17g} --set cr={:.17g} "
-                                       "--set g={:.17g}", model_path("car_braking"), 40000 / (T * T), 44000 / (T * T),
-                                       4000 / T, 4400 / T, 9.81 / (T * T)));
+    JsonValue r = run_json(fmt::format("linear '{}' {}", model_path("car_braking"), car.on_time_scale(T)));
     ASSERT_NE(r.find("damping"), nullptr) << "T = " << T;
     const JsonValue& damping = *r.find("damping");
     EXPECT_EQ(damping.find("kind")->text, "proportional") << "T = " << T;
     EXPECT_EQ(at(damping, "rayleigh_alpha"), 0) << "T = " << T;
-    EXPECT_NEAR(at(damping, "rayleigh_beta") / T, 0.1, 1e-12) << "T = " << T;
+    EXPECT_NEAR(at(damping, "rayleigh_beta") / (car.cf / car.kf * T), 1, 1e-12) << "T = " << T;
   }
 }
 
@@ -412,11 +413,15 @@ TEST(LinearCommand, RayleighDampingHasNoCoefficientFromRounding) {
 // in one Jordan block) and its pitch's response to the braking force F: at T = 1e12 s the
 // balancing had kept x' = 1 · v beside rates of 1e-12 1/s, so that every eigenvalue fell in one
 // cluster ("algebraic 6, Jordan blocks [2, 1, 1, 1, 1]") and G(s) was called identically zero.
+// F enters θ's equation as −h F, and heave and pitch are coupled, so by Cramer's rule
+// G(s) = −h (m s² + (cf + cr) s + kf + kr) / det: its zeros are the heave's own roots and its gain
+// (the s² over s⁴ coefficients) −h m / (m Iyy).
 TEST(LinearCommand, AFreePositionBesideSlowModesKeepsTheirStructureAndTransferFunction) {
+  const BrakingCar car;
+  double damping = (car.cf + car.cr) / car.m, stiffness = (car.kf + car.kr) / car.m;
+  double zero_re = -damping / 2, zero_im = std::sqrt(stiffness - damping * damping / 4);
   for (double T : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
-    JsonValue r = run_json(fmt::format("linear '{}' --transfer F:theta --set kf={:.17g} --set kr={:.17g} --set cf={:.17g} "
-                                       "--set cr={:.17g} --set g={:.17g}", model_path("car_braking"), 40000 / (T * T),
-                                       44000 / (T * T), 4000 / T, 4400 / T, 9.81 / (T * T)));
+    JsonValue r = run_json(fmt::format("linear '{}' --transfer F:theta {}", model_path("car_braking"), car.on_time_scale(T)));
     std::vector<std::vector<double>> blocks;
     for (const JsonValue& e : r.find("eigenvalues")->items) {
       blocks.emplace_back();
@@ -428,10 +433,10 @@ TEST(LinearCommand, AFreePositionBesideSlowModesKeepsTheirStructureAndTransferFu
     EXPECT_FALSE(G.find("constant")->truth) << "T = " << T;
     ASSERT_EQ(G.find("zeros")->items.size(), 2u) << "T = " << T;
     for (const JsonValue& z : G.find("zeros")->items) {
-      EXPECT_NEAR(z.items.at(0).value * T, -2.8, 1e-9) << "T = " << T;
-      EXPECT_NEAR(std::abs(z.items.at(1).value) * T, 6.939740629158989, 1e-9) << "T = " << T;
+      EXPECT_NEAR(z.items.at(0).value * T / zero_re, 1, 1e-9) << "T = " << T;
+      EXPECT_NEAR(std::abs(z.items.at(1).value) * T / zero_im, 1, 1e-9) << "T = " << T;
     }
-    EXPECT_NEAR(at(G, "gain") / -0.0002291666666666667, 1, 1e-9) << "T = " << T;
+    EXPECT_NEAR(at(G, "gain") / (-car.h / car.Iyy), 1, 1e-9) << "T = " << T;
   }
 }
 

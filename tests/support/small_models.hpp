@@ -32,6 +32,16 @@ inline std::string spring_mass_model(const std::string& name, double m, double k
   return particle_on_a_line_model(name, fmt::format("m = {:.17g}\nk = {:.17g}\n", m, k), "potential = \"k*x^2/2\"\n", x0, v0);
 }
 
+/// models/car_braking.toml's parameters on the time scale T (s), as `--set` flags: its axles'
+/// stiffnesses and g over T², their dampings over T, so that every rate is its own over T.
+struct BrakingCar {
+  double m = 1500, Iyy = 2400, h = 0.55, kf = 40000, kr = 44000, cf = 4000, cr = 4400, g = 9.81;
+  std::string on_time_scale(double T) const {
+    return fmt::format("--set kf={:.17g} --set kr={:.17g} --set cf={:.17g} --set cr={:.17g} --set g={:.17g}", kf / (T * T),
+                       kr / (T * T), cf / T, cr / T, g / (T * T));
+  }
+};
+
 /// m x'' = F: a free mass pushed by the input force F (m = 2).
 inline const char* const pushed_mass_model = R"toml(
 [model]
