@@ -15,8 +15,10 @@
 
 namespace eomgen::studies {
 
+// none where E(0) = 0 (at rest, its forces without a potential): the change over 1e-300 had printed
+// as a drift of 4.8e305
 static double relative_energy_drift(const runtime::RunSummary& run) {
-  return run.largest_energy_change / std::max(std::abs(run.first_energy), 1e-300);
+  return run.first_energy != 0 ? run.largest_energy_change / std::abs(run.first_energy) : NAN;
 }
 
 static std::string constraint_summary(const eomgen_model_abi& m, const runtime::SimulationResult& r, bool json) {
@@ -85,10 +87,10 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
         "{{\"model\": \"{}\", \"integrator\": \"{}\", \"t_start\": {:.17g}, \"t_end\": {:.17g}, \"rows\": {}, "
         "\"statistics\": {{\"steps\": {}, \"rhs_evaluations\": {}, \"jacobian_evaluations\": {}, "
         "\"error_test_failures\": {}, \"convergence_failures\": {}, \"wall_seconds\": {:.6g}}}, "
-        "\"conserves_energy\": {}, \"relative_energy_drift\": {:.6g}{}{}{}{}, \"failure\": {}}}\n",
+        "\"conserves_energy\": {}, \"relative_energy_drift\": {}{}{}{}{}, \"failure\": {}}}\n",
         m.name, settings.integrator, settings.t_start, r.summary.last_time, r.summary.rows, s.steps,
         s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures, s.convergence_failures, s.wall_seconds,
-        conservative ? "true" : "false", drift, first_integral_summary(m, r.summary, unforced, true),
+        conservative ? "true" : "false", json_number(drift), first_integral_summary(m, r.summary, unforced, true),
         m.num_constraints ? constraint_summary(m, r, true) : "", m.num_quaternions ? quaternion_summary(m, r, true) : "",
         std::isnan(r.error_estimate) ? std::string()
                                      : fmt::format(", \"reference_error_estimate\": {:.6g}, \"reference_step\": {:.6g}",
@@ -102,7 +104,10 @@ void print_summary(const runtime::SimulationSettings& settings, const eomgen_mod
                            "convergence failures {}, wall time {:.4f} s\n",
                            s.steps, s.rhs_evaluations, s.jacobian_evaluations, s.error_test_failures,
                            s.convergence_failures, s.wall_seconds);
-  std::cout << fmt::format("  max |E(t) - E(0)| / |E(0)| = {:.3e}{}\n", drift,
+  std::string energy = r.summary.first_energy == 0
+                           ? fmt::format("max |E(t) - E(0)| = {:.3e} (E(0) = 0: no relative drift)", r.summary.largest_energy_change)
+                           : fmt::format("max |E(t) - E(0)| / |E(0)| = {:.3e}", drift);
+  std::cout << fmt::format("  {}{}\n", energy,
                            conservative ? " (energy is conserved by this model: this is the integration error)"
                                         : " (the model does not conserve T + V)");
   std::cout << first_integral_summary(m, r.summary, unforced, false);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <utility>
 
 #include "analyse/constrained_first_order.hpp"
@@ -41,8 +42,11 @@ bool DeviationNorm::use_energy(const StabilityReport& r) {
   for (long a = 0; a < c; ++a)
     for (long b = 0; b < c; ++b) K(a, b) = r.K(coordinates[std::size_t(a)], coordinates[std::size_t(b)]);
   Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
-  // positive definite beyond rounding, relative to its own largest stiffness
-  if (!(k.maxCoeff() > 0 && k.minCoeff() > 1e-12 * k.maxCoeff())) return false;
+  // positive definite beyond the rounding of its eigenvalues, n ε times its largest stiffness (a
+  // margin of 64 for K's own rounding); a bound of 1e-12 had refused two oscillators at 1 and 1e6
+  // rad/s (K's range exactly 1e12), measured them per state, and called them unstable
+  double rounding = 64 * double(c) * std::numeric_limits<double>::epsilon() * k.maxCoeff();
+  if (!(k.maxCoeff() > 0 && k.minCoeff() > rounding)) return false;
   M_ = r.M;
   K_ = K;
   states_ = coordinates;

@@ -363,13 +363,36 @@ Equilibrium rest_where_it_balances(const Problem& problem, Equilibrium found, co
   return at_rest;
 }
 
+// Appell's equations (and a ball or free joint's angular velocities) hold the velocities as given:
+// from a moving start that is no steady motion (a Chaplygin sleigh turning, a spinning top) the
+// coordinates alone balance nothing. Rest, where every velocity is zero, is then searched from the
+// same configuration, as Lagrange's equations are searched.
+Equilibrium find_first_order_from(const Problem& problem, const std::vector<double>& start, const std::vector<int>& unknowns) {
+  const eomgen_model_abi& m = *problem.model;
+  Equilibrium moving = find_first_order(problem, start, unknowns);
+  std::vector<double> at_rest = start;
+  std::fill(at_rest.begin() + long(m.num_coordinates), at_rest.end(), 0.0);
+  if (moving.converged || at_rest == start) return moving;
+  Equilibrium rest = find_first_order(problem, at_rest, unknowns);
+  if (!rest.converged) return moving;
+  std::string velocities;
+  for (std::size_t i = m.num_coordinates; i < m.num_states; ++i)
+    velocities += fmt::format("{}{} = {:.6g}", velocities.empty() ? "" : ", ", m.state_names[i], start[i]);
+  rest.note = fmt::format("the initial velocities ({}) make no steady motion and Newton's method on the coordinates, its "
+                          "velocities held, found none in {} steps (largest residual {:.3g}); this is the equilibrium at "
+                          "rest from the initial configuration",
+                          velocities, moving.iterations, moving.residual);
+  rest.iterations += moving.iterations;
+  return rest;
+}
+
 }  // namespace
 
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
   const eomgen_model_abi& m = *problem.model;
   if (has_pseudo_velocities(m)) {
     std::vector<std::size_t> coordinates = unheld_unknowns(m, std::vector<bool>(m.num_states));
-    return find_first_order(problem, start, std::vector<int>(coordinates.begin(), coordinates.end()));
+    return find_first_order_from(problem, start, std::vector<int>(coordinates.begin(), coordinates.end()));
   }
   if (has_multipliers(m)) return find_constrained_equilibrium(problem, start);
   std::size_t n = m.num_coordinates;

@@ -392,6 +392,24 @@ TEST(Simulate, WhetherEnergyIsConservedDoesNotDependOnTheUnits) {
     }
 }
 
+// A free mass at rest (E(0) = 0) pushed by F = 1 N for 1 s gains ½ m v² = F² t² / (2 m) = 0.25 J
+// (m = 2): the report gives that change, and no relative drift, where dividing by 1e-300 had printed
+// 2.5e299; the JSON's relative_energy_drift is null.
+TEST(Simulate, AnEnergyThatStartsAtZeroHasNoRelativeDrift) {
+  std::string model = write_model("pushed_mass", pushed_mass_model);
+  CommandRun text = eomgen(fmt::format("simulate '{}' --set F=1 --t-end 1 --rtol 1e-10 -o '{}/m.csv'", model, temporary_directory()),
+                           shared_cache());
+  ASSERT_EQ(text.status, 0) << text.err;
+  std::smatch change;
+  ASSERT_TRUE(std::regex_search(text.out, change, std::regex(R"(max \|E\(t\) - E\(0\)\| = ([0-9.e+-]+) \(E\(0\) = 0: no relative drift\))")))
+      << text.out;
+  EXPECT_NEAR(std::stod(change[1]), 0.25, 1e-6) << text.out;
+  CommandRun json = eomgen(fmt::format("simulate '{}' --set F=1 --t-end 1 --format json -o '{}/m.csv'", model, temporary_directory()),
+                           shared_cache());
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_NE(json.out.find("\"relative_energy_drift\": null"), std::string::npos) << json.out;
+}
+
 // The Cartesian pendulum with its rod l from 1e-13 to 1e13 m, started at (0.6 l, −0.9 l), off its
 // rod: the constraint moves the given y to −0.8 l, and says so at every l (against 1e-12 of
 // max(1, |y|), the change at 1e-13 m went unsaid); started on the rod, nothing is said.
