@@ -171,16 +171,18 @@ bool equal_energy_pushes(const Problem& p, const std::vector<double>& x, std::ve
 // own push: beside a stiff spring of 1e4 N/m a pendulum's der(theta) was pushed by 1 rad/s, a swing of
 // a radian. Where the runs are measured in the linearization's energy (K positive definite), a
 // coordinate's own rate is √(K_ii/M_ii), and its velocity's push is at most its push at that rate,
-// the two of one energy.
-void own_rate_pushes(const eomgen_model_abi& m, const StabilityReport& r, std::vector<double>& size) {
+// the two of one energy. Says whether it cut any.
+bool own_rate_pushes(const eomgen_model_abi& m, const StabilityReport& r, std::vector<double>& size) {
   std::size_t n = m.num_coordinates;
-  if (m.num_velocities != n || has_multipliers(m) || r.M.rows() != long(n) || r.K.rows() != long(n)) return;
+  bool cut = false;
+  if (m.num_velocities != n || has_multipliers(m) || r.M.rows() != long(n) || r.K.rows() != long(n)) return cut;
   for (std::size_t i = 0; i < n; ++i) {
     double stiffness = r.K(long(i), long(i)), mass = r.M(long(i), long(i));
     if (m.is_cyclic[i] || !(stiffness > 0) || !(mass > 0)) continue;
     double own = size[i] * std::sqrt(stiffness / mass);
-    if (std::isfinite(own) && own > 0) size[n + i] = std::min(size[n + i], own);
+    if (std::isfinite(own) && own > 0 && own < size[n + i]) size[n + i] = own, cut = true;
   }
+  return cut;
 }
 
 // The runs' rate (it sizes the velocities' pushes) and length, from the eigenvalues that count: the
@@ -306,7 +308,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   DeviationNorm deviation(m, r, x, size);
   // in the linearization's energy, which no push's size enters (measured per state, a velocity's
   // push cut at a rate of rounding, a singular Euler angle's, made any motion of it a "growth")
-  if (deviation.kind() == DeviationNorm::Kind::linear_energy) own_rate_pushes(m, r, size);
+  bool own_rates = deviation.kind() == DeviationNorm::Kind::linear_energy && own_rate_pushes(m, r, size);
   // each state's absolute tolerance 1e-12 of its push: the runs resolve their growth in any units
   s.atol = 1e-12 * *std::max_element(size.begin(), size.end());
   for (double push : size) s.state_atol.push_back(1e-12 * push);
@@ -356,7 +358,9 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
                      "the law it follows at the equilibrium (a velocity's, at most its coordinate's times the system's "
                      "rate {:.3g} 1/s{}; {}) stayed within {:.3g} times their size{} over {:.4g} s ({}{}): stable as "
                      "far as a simulation can tell",
-                     rate, equal_energies ? ", and at most the kinetic energy of the least of them" : "",
+                     rate,
+                     std::string(own_rates ? ", or its own rate √(K_ii/M_ii) where that is slower" : "") +
+                         (equal_energies ? ", and at most the kinetic energy of the least of them" : ""),
                      sizes_text(m, size), worst, deviation.measure(), horizon, scale.span,
                      r.symmetries.empty() ? "" : "; orientations measured modulo the turns the equations do not see");
 }
