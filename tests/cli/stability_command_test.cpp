@@ -480,24 +480,28 @@ TEST(StabilityCommand, AnAtThatNamesSomeStatesSolvesForTheRest) {
   EXPECT_NE(none.err.find("with the named values held, Newton on phi2 found none either"), std::string::npos) << none.err;
 }
 
-// models/chaplygin_sleigh.toml starts turning (v = 0.2 m/s, w = 2 rad/s) and models/ball_joint_top.toml
-// spinning (its ω (0.5, −1, 20)/T rad/s at g = 9.81/T², T from 1e-12 to 1e12 s): Appell's equations
+// models/chaplygin_sleigh.toml starts turning (v = 0.2/T m/s, w = 2/T rad/s) and models/ball_joint_top.toml
+// spinning (its ω (0.5, −1, 20)/T rad/s at g = 9.81/T²), T from 1e-12 to 1e12 s: Appell's equations
 // hold the velocities as given, and with them the coordinates balance nothing. Without --at the
 // analysis is at rest from the initial configuration, the equilibrium `--at w=0` (sleigh) and
 // `--at wz=0` (top) name, and says so; it had ended in "no equilibrium found".
 TEST(StabilityCommand, AModelMovingAtItsStartWithNoSteadyMotionThereIsAnalysedAtRest) {
-  std::string top = read_file(model_path("ball_joint_top"));
+  std::string top = read_file(model_path("ball_joint_top")), sleigh = read_file(model_path("chaplygin_sleigh"));
   for (double T : {1e-12, 1.0, 1e12}) {
+    std::string turning = write_model("turning_sleigh", edited(sleigh, {{"rate = 0.2 }", fmt::format("rate = {:.17g} }}", 0.2 / T)},
+                                                                        {"rate = 2.0 }", fmt::format("rate = {:.17g} }}", 2 / T)}}));
     std::string spinning = write_model("spinning_top", edited(top, {{"initial_angular_velocity = [0.5, -1, 20]",
                                                                      fmt::format("initial_angular_velocity = [{:.17g}, {:.17g}, "
                                                                                  "{:.17g}]", 0.5 / T, -1 / T, 20 / T)}}));
     std::string g = fmt::format(" --set g={:.17g}", 9.81 / (T * T));
-    for (const auto& [model, at_rest] : {std::pair{model_path("chaplygin_sleigh"), std::string(" --at w=0")},
-                                    std::pair{spinning, " --at wz=0" + g}}) {
+    for (const auto& [model, at_rest] : {std::pair{turning, std::string(" --at w=0")}, std::pair{spinning, " --at wz=0" + g}}) {
       std::string given = model == spinning ? g : "";
       Output found = eomgen(fmt::format("stability '{}'{} --format json", model, given));
       ASSERT_EQ(found.status, 0) << model << ", T = " << T << ": " << found.err;
-      EXPECT_NE(found.err.find("make no steady motion"), std::string::npos) << found.err;
+      EXPECT_NE(found.err.find(model == turning ? fmt::format("(v = {:.6g}, w = {:.6g}) make no steady motion", 0.2 / T, 2 / T)
+                                                : std::string("make no steady motion")),
+                std::string::npos)
+          << found.err;
       EXPECT_NE(found.err.find("this is the equilibrium at rest from the initial configuration"), std::string::npos);
       Output named = eomgen(fmt::format("stability '{}'{} --format json", model, at_rest));
       ASSERT_EQ(named.status, 0) << named.err;
