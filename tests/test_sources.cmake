@@ -78,6 +78,7 @@ set(EOMGEN_TEST_FILES
   runtime/symplectic_integrators_test.cpp           fast
   runtime/linear_stability_test.cpp                 fast
   runtime/scale_free_stability_test.cpp             slow
+  runtime/critical_case_runs_test.cpp               slow
   runtime/scale_free_sweeps_test.cpp                fast
   runtime/scale_free_linear_test.cpp                fast
   runtime/random_sweeps_test.cpp                    fast

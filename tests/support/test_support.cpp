@@ -241,6 +241,12 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& path, std::
   return rows;
 }
 
+const JsonValue& field(const JsonValue& v, const std::string& key) {
+  static const JsonValue missing;
+  const JsonValue* found = v.find(key);
+  return found ? *found : missing;
+}
+
 JsonValue run_json(const std::string& arguments) {
   CommandOutput r = run_eomgen(arguments + " --format json");
   EXPECT_EQ(r.status, 0) << r.err;

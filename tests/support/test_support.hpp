@@ -98,6 +98,9 @@ JsonValue run_json(const std::string& arguments);
 /// The number under `key` in a JSON object, NaN when missing.
 double at(const JsonValue& v, const std::string& key);
 
+/// The member `key` of a JSON object, or a null value when missing.
+const JsonValue& field(const JsonValue& v, const std::string& key);
+
 /// The numbers of a CSV file, row by row after its header line (returned in `header`).
 std::vector<std::vector<double>> read_numeric_csv(const std::string& path, std::string* header = nullptr);
 
