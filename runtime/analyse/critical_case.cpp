@@ -167,19 +167,34 @@ bool equal_energy_pushes(const Problem& p, const std::vector<double>& x, std::ve
   return cut;
 }
 
+// The push of coordinate i's own velocity at its own rate, in the units of that velocity: √(K_ii/M_ii)
+// times its push on Lagrange II; on a first-order form q' = C s, s' = A_sq q + … (Appell, Hamilton,
+// every coordinate in the reduced state), the velocity s_i of an oscillation of q_i alone, at
+// ω² = −C_ii (A_sq)_ii: its push times √(−(A_sq)_ii / C_ii) (Hamilton's p_i: M ω times it). NaN where
+// the coordinate has no restoring rate of its own.
+double own_rate_push(const eomgen_model_abi& m, const StabilityReport& r, std::size_t i, double push) {
+  long n = long(m.num_coordinates), k = long(i);
+  if (r.M.rows() == n && r.K.rows() == n) {
+    double stiffness = r.K(k, k), mass = r.M(k, k);
+    return stiffness > 0 && mass > 0 ? push * std::sqrt(stiffness / mass) : NAN;
+  }
+  if (r.A.rows() != 2 * n) return NAN;
+  double carries = r.A(k, n + k), restores = r.A(n + k, k);
+  return carries * restores < 0 ? push * std::sqrt(-restores / carries) : NAN;
+}
+
 // A velocity's push at the system's (fastest) rate is, for a slow coordinate, a swing far beyond its
 // own push: beside a stiff spring of 1e4 N/m a pendulum's der(theta) was pushed by 1 rad/s, a swing of
 // a radian. Where the runs are measured in the linearization's energy (K positive definite), a
-// coordinate's own rate is √(K_ii/M_ii), and its velocity's push is at most its push at that rate,
-// the two of one energy. Says whether it cut any.
+// velocity's push is at most its coordinate's at that coordinate's own rate, the two of one energy.
+// Says whether it cut any.
 bool own_rate_pushes(const eomgen_model_abi& m, const StabilityReport& r, std::vector<double>& size) {
   std::size_t n = m.num_coordinates;
   bool cut = false;
-  if (m.num_velocities != n || has_multipliers(m) || r.M.rows() != long(n) || r.K.rows() != long(n)) return cut;
+  if (m.num_velocities != n || has_multipliers(m)) return cut;
   for (std::size_t i = 0; i < n; ++i) {
-    double stiffness = r.K(long(i), long(i)), mass = r.M(long(i), long(i));
-    if (m.is_cyclic[i] || !(stiffness > 0) || !(mass > 0)) continue;
-    double own = size[i] * std::sqrt(stiffness / mass);
+    if (m.is_cyclic[i]) continue;
+    double own = own_rate_push(m, r, i, size[i]);
     if (std::isfinite(own) && own > 0 && own < size[n + i]) size[n + i] = own, cut = true;
   }
   return cut;
@@ -305,7 +320,7 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
   s.baumgarte = false;
   std::vector<double> size = perturbation_sizes(m, x, lengths, rate);
   bool equal_energies = equal_energy_pushes(p, x, size);
-  DeviationNorm deviation(m, r, x, size);
+  DeviationNorm deviation(m, r, x, size, p.parameters.data());
   // in the linearization's energy, which no push's size enters (measured per state, a velocity's
   // push cut at a rate of rounding, a singular Euler angle's, made any motion of it a "growth")
   bool own_rates = deviation.kind() == DeviationNorm::Kind::linear_energy && own_rate_pushes(m, r, size);
@@ -359,7 +374,8 @@ std::string perturbed_runs(const Problem& p, const std::vector<double>& x, const
                      "rate {:.3g} 1/s{}; {}) stayed within {:.3g} times their size{} over {:.4g} s ({}{}): stable as "
                      "far as a simulation can tell",
                      rate,
-                     std::string(own_rates ? ", or its own rate √(K_ii/M_ii) where that is slower" : "") +
+                     std::string(!own_rates ? "" : r.K.rows() > 0 ? ", or its own rate √(K_ii/M_ii) where that is slower"
+                                                                : ", or its coordinate's own rate √(−(∂q_i'/∂s_i)(∂s_i'/∂q_i)) where that is slower") +
                          (equal_energies ? ", and at most the kinetic energy of the least of them" : ""),
                      sizes_text(m, size), worst, deviation.measure(), horizon, scale.span,
                      r.symmetries.empty() ? "" : "; orientations measured modulo the turns the equations do not see");

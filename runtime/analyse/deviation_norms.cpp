@@ -21,11 +21,24 @@ constexpr double largest_condition = 1e4;
 }  // namespace
 
 DeviationNorm::DeviationNorm(const eomgen_model_abi& m, const StabilityReport& report, const std::vector<double>& x,
-                             std::vector<double> size)
+                             std::vector<double> size, const double* parameters)
     : m_(m), x_(x), size_(std::move(size)), symmetries_(report.symmetries), states_(reduced_state(m)) {
-  if (use_energy(report)) kind_ = Kind::linear_energy;
+  if (use_energy(report) || use_first_order_energy(report, parameters)) kind_ = Kind::linear_energy;
   else if (use_modes(report)) kind_ = Kind::modal_amplitudes;
 }
+
+namespace {
+
+// positive definite beyond the rounding of its eigenvalues, n ε times the largest (a margin of 64
+// for the matrix's own rounding); a bound of 1e-12 had refused two oscillators at 1 and 1e6 rad/s
+// (K's range exactly 1e12), measured them per state, and called them unstable
+bool positive_beyond_rounding(const Eigen::MatrixXd& S) {
+  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S).eigenvalues();
+  double rounding = 64 * double(S.rows()) * std::numeric_limits<double>::epsilon() * k.maxCoeff();
+  return k.maxCoeff() > 0 && k.minCoeff() > rounding;
+}
+
+}  // namespace
 
 // Lagrange II with K positive definite over the non-cyclic coordinates. Sizes per state had weighed
 // a stiff chain's displacements against its velocities at its fastest rate, 7e4 times its slowest:
@@ -41,16 +54,63 @@ bool DeviationNorm::use_energy(const StabilityReport& r) {
   Eigen::MatrixXd K(c, c);
   for (long a = 0; a < c; ++a)
     for (long b = 0; b < c; ++b) K(a, b) = r.K(coordinates[std::size_t(a)], coordinates[std::size_t(b)]);
-  Eigen::VectorXd k = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
-  // positive definite beyond the rounding of its eigenvalues, n ε times its largest stiffness (a
-  // margin of 64 for K's own rounding); a bound of 1e-12 had refused two oscillators at 1 and 1e6
-  // rad/s (K's range exactly 1e12), measured them per state, and called them unstable
-  double rounding = 64 * double(c) * std::numeric_limits<double>::epsilon() * k.maxCoeff();
-  if (!(k.maxCoeff() > 0 && k.minCoeff() > rounding)) return false;
+  if (!positive_beyond_rounding(K)) return false;
   M_ = r.M;
   K_ = K;
   states_ = coordinates;
   return true;
+}
+
+// Appell's and Hamilton's equations at rest, q' = C s and s' = A_sq q + A_ss s on the reduced state,
+// every coordinate kept (C square, invertible): with the kinetic energy ½ sᵀ M_s s, the stiffness
+// K = −C⁻ᵀ M_s A_sq (symmetric part) is the one for which ½ sᵀ M_s s + ½ qᵀ K q stays constant along
+// the undamped linear motion (Lagrange II: C = 1, M_s = M, K = −M A_sq; Hamilton: C = M_s = M⁻¹,
+// K = −∂p'/∂q). Measured per state instead, a pendulum beside a stiff damped spring written in
+// either form had its velocity pushed at the spring's rate (critical_case.cpp, own_rate_pushes,
+// needs this measure) and been called unstable, where written for Lagrange II it was stable.
+bool DeviationNorm::use_first_order_energy(const StabilityReport& r, const double* parameters) {
+  std::size_t n = m_.num_coordinates;
+  long c = long(n);
+  if (!parameters || !has_pseudo_velocities(m_) || has_multipliers(m_) || m_.num_velocities != n ||
+      !m_.kinetic_energy || states_.size() != 2 * n || r.A.rows() != 2 * c || !r.A.allFinite())
+    return false;
+  for (std::size_t k = n; k < 2 * n; ++k)
+    if (x_[k] != 0) return false;
+  Eigen::MatrixXd C = r.A.topRightCorner(c, c), A_sq = r.A.bottomLeftCorner(c, c);
+  // at rest and scleronomic, q' does not depend on q: a term there is a steady motion's or a moving
+  // frame's, whose energy this is not
+  double scale = std::sqrt(C.norm() * A_sq.norm());
+  if (!(r.A.topLeftCorner(c, c).norm() <= 64 * double(c) * std::numeric_limits<double>::epsilon() * scale)) return false;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(C.transpose());
+  if (!lu.isInvertible()) return false;
+  Eigen::MatrixXd M_s = kinetic_metric(parameters);
+  if (!M_s.allFinite() || !positive_beyond_rounding(M_s)) return false;
+  Eigen::MatrixXd K = lu.solve(-M_s * A_sq);
+  K = 0.5 * (K + K.transpose()).eval();
+  if (!K.allFinite() || !positive_beyond_rounding(K)) return false;
+  M_ = M_s;
+  K_ = K;
+  states_.resize(n);
+  first_order_ = true;
+  return true;
+}
+
+// The kinetic energy's Hessian in the velocities at x, by polarization with steps of the pushes'
+// sizes: exact, to rounding, for a form quadratic in them
+Eigen::MatrixXd DeviationNorm::kinetic_metric(const double* parameters) const {
+  std::size_t n = m_.num_coordinates;
+  auto energy = [&](std::size_t a, std::size_t b) {
+    std::vector<double> y = x_;
+    if (a < n) y[n + a] += size_[n + a];
+    if (b < n) y[n + b] += size_[n + b];
+    return m_.kinetic_energy(0.0, y.data(), parameters);
+  };
+  Eigen::MatrixXd M(static_cast<long>(n), static_cast<long>(n));
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b <= a; ++b)
+      M(long(a), long(b)) = M(long(b), long(a)) =
+          (energy(a, b) - energy(a, n) - energy(b, n) + energy(n, n)) / (size_[n + a] * size_[n + b]);
+  return M;
 }
 
 // A = V Λ V⁻¹ on the reduced state in units of the perturbations' sizes: the modal amplitudes
@@ -111,7 +171,10 @@ double DeviationNorm::operator()(const std::vector<double>& y) const {
 
 std::string DeviationNorm::measure() const {
   switch (kind_) {
-    case Kind::linear_energy: return " in the linearization's energy, ½ δq'ᵀ M δq' + ½ δqᵀ K δq (K positive definite)";
+    case Kind::linear_energy:
+      return first_order_ ? " in the linearization's energy, ½ δsᵀ M_s δs + ½ δqᵀ K δq (M_s the kinetic energy's in the "
+                            "velocities s, K positive definite)"
+                          : " in the linearization's energy, ½ δq'ᵀ M δq' + ½ δqᵀ K δq (K positive definite)";
     case Kind::modal_amplitudes: return " in the linearization's modal amplitudes, |V⁻¹ δ| for A = V Λ V⁻¹";
     case Kind::per_state: break;
   }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <regex>
 #include <string>
 
@@ -61,12 +62,15 @@ generalized = { x = "-k*x", y = "-K*y" }
 // given as a generalized force so that Lagrange–Dirichlet does not apply, at time scales T from
 // 1e-12 to 1e12 s: hanging, it is stable. Its velocity pushed at the spring's rate of 1e3/T, 10/T
 // rad/s, had sent it over the top, and the runs had called it unstable; at its own rate √(K_ii/M_ii)
-// = 1/T the push is theta's over T.
-TEST(CriticalCaseRuns, ASlowCoordinatesVelocityIsPushedAtItsOwnRate) {
-  std::string model = write_model("pendulum_beside_a_stiff_spring", R"toml(
+// = 1/T the push is theta's over T. The same system for Appell and Hamilton (p_theta = m l² der(theta),
+// m = l = 1: the same push), their first-order forms measured in their linearization's energy too,
+// where per state both had been called unstable after the same push of 10/T.
+std::string pendulum_beside_a_stiff_spring(const std::string& method) {
+  return write_model("pendulum_beside_a_stiff_spring_" + method, R"toml(
 [model]
-name = "pendulum_beside_a_stiff_spring"
+name = "pendulum_beside_a_stiff_spring_)toml" + method + R"toml("
 title = "a pendulum beside a stiff damped spring, the spring a generalized force"
+method = ")toml" + method + R"toml("
 [parameters]
 m = 1.0
 l = 1.0
@@ -89,19 +93,33 @@ acceleration = ["0", "-g", "0"]
 [[forces]]
 generalized = { y = "-K*y - c*der(y)" }
 )toml");
-  for (double T : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+}
+
+void expect_pushed_at_its_own_rate(const std::string& method, std::initializer_list<double> time_scales) {
+  std::string model = pendulum_beside_a_stiff_spring(method);
+  std::string velocity = method == "hamilton" ? "p_theta" : R"(der\(theta\))";
+  for (double T : time_scales) {
+    SCOPED_TRACE(method + ", T = " + fmt::format("{}", T));
     JsonValue r = run_json(fmt::format("stability '{}' --set g={:.17g} --set K={:.17g} --set c={:.17g}", model, 1 / (T * T),
                                        1e6 / (T * T), 2e3 / T));
-    EXPECT_EQ(field(r, "verdict").text, "marginally_stable") << "T = " << T;
+    EXPECT_EQ(field(r, "verdict").text, "marginally_stable");
     const JsonValue& critical = field(r, "critical_case");
     const std::string simulation = field(critical, "simulation").text;
-    EXPECT_EQ(field(critical, "nonlinear_verdict").text, "stable") << "T = " << T << ": " << simulation;
-    // der(theta)'s push is theta's at the pendulum's own rate √(g/l) = 1/T (printed to two digits)
+    EXPECT_EQ(field(critical, "nonlinear_verdict").text, "stable") << simulation;
+    EXPECT_NE(simulation.find("in the linearization's energy"), std::string::npos) << simulation;
+    // the velocity's push is theta's at the pendulum's own rate √(g/l) = 1/T (printed to two digits)
     std::smatch push;
-    ASSERT_TRUE(std::regex_search(simulation, push, std::regex(R"(theta ±([0-9.e+-]+), y ±[0-9.e+-]+, der\(theta\) ±([0-9.e+-]+))")))
+    ASSERT_TRUE(std::regex_search(simulation, push, std::regex(R"(theta ±([0-9.e+-]+), y ±[0-9.e+-]+, )" + velocity +
+                                                               R"( ±([0-9.e+-]+))")))
         << simulation;
-    EXPECT_NEAR(std::stod(push[2]) * T / std::stod(push[1]), 1, 0.05) << "T = " << T << ": " << simulation;
+    EXPECT_NEAR(std::stod(push[2]) * T / std::stod(push[1]), 1, 0.05) << simulation;
   }
+}
+
+TEST(CriticalCaseRuns, ASlowCoordinatesVelocityIsPushedAtItsOwnRate) {
+  expect_pushed_at_its_own_rate("lagrange2", {1e-12, 1e-6, 1.0, 1e6, 1e12});
+  expect_pushed_at_its_own_rate("appell", {1e-12, 1.0, 1e12});
+  expect_pushed_at_its_own_rate("hamilton", {1e-12, 1.0, 1e12});
 }
 
 // models/chaplygin_sleigh.toml at rest, its lengths in units of u from 1e-12 to 1e12 (a = 0.2 u,

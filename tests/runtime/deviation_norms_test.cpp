@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "analyse/deviation_norms.hpp"
 #include "generated/header_registry.hpp"
@@ -83,6 +85,28 @@ TEST(DeviationNorms, ALagrangeModelWithAStiffnessTakesItsEnergy) {
   ASSERT_EQ(norm.kind(), DeviationNorm::Kind::linear_energy);
   // ½ 2 v² + ½ 8 δx², at δx = 0.5, v = 1: 1 + 1
   EXPECT_NEAR(norm({0.6, 1.0}), std::sqrt(2.0), 1e-15);
+}
+
+// Hamilton's pendulum at rest, q' = p/(m l²), p' = −m g l q, at masses 1e-12 … 1e12 kg and rates
+// 1e6 … 1e-6 1/s: its kinetic energy's Hessian in p is 1/(m l²) and the stiffness that keeps the sum
+// constant m g l, so the measure is √(½ δp²/(m l²) + ½ m g l δq²), K read off A and T alone. Moving
+// (p ≠ 0), or without the parameters for T, it is not measured in energy.
+TEST(DeviationNorms, AFirstOrderFormAtRestTakesTheEnergyOfItsLinearization) {
+  const eomgen_model_abi& hamilton = *generated_model("pendulum_hamilton").abi;
+  for (auto [m, w] : {std::pair{1e-12, 1e6}, std::pair{1.0, 1.0}, std::pair{1e12, 1e-6}}) {
+    double l = 2, g = w * w * l, inertia = m * l * l;
+    std::vector<double> parameters{m, l, g, 0};  // m, l, g, d
+    runtime::StabilityReport r = linearization(Eigen::Matrix2d{{0, 1 / inertia}, {-m * g * l, 0}});
+    std::vector<double> size{1e-2, 1e-2 * inertia * w};
+    DeviationNorm norm(hamilton, r, {0, 0}, size, parameters.data());
+    ASSERT_EQ(norm.kind(), DeviationNorm::Kind::linear_energy) << "m = " << m;
+    EXPECT_NE(norm.measure().find("M_s"), std::string::npos) << norm.measure();
+    double dq = 3e-3, dp = -2e-3 * inertia * w;
+    EXPECT_NEAR(norm({dq, dp}) / std::sqrt(0.5 * dp * dp / inertia + 0.5 * m * g * l * dq * dq), 1, 1e-12) << "m = " << m;
+    EXPECT_NE(DeviationNorm(hamilton, r, {0, 0.1 * inertia * w}, size, parameters.data()).kind(),
+              DeviationNorm::Kind::linear_energy) << "m = " << m;
+    EXPECT_NE(DeviationNorm(hamilton, r, {0, 0}, size).kind(), DeviationNorm::Kind::linear_energy) << "m = " << m;
+  }
 }
 
 }  // namespace
