@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <complex>
 
 namespace eomgen::models::car_braking {
 
@@ -91,6 +92,36 @@ struct input_type {
 };
 template <class T>
 using input_t = typename input_type<T>::type;
+
+/// What clamp, below and sign compare: the number, or a complex number's real part (complex-step
+/// derivatives then carry through an unclamped value and vanish on a clamped one).
+template <class T>
+inline const T& ordered(const T& x) {
+  return x;
+}
+template <class T>
+inline T ordered(const std::complex<T>& x) {
+  return x.real();
+}
+
+/// The model's abs(x): std's for a real scalar; for a complex one (complex-step derivatives), x
+/// turned by the sign of its real part, whose derivative is sign(x) x' (std::abs would drop it).
+template <class T>
+inline T magnitude(const T& x) {
+  using std::abs;
+  return abs(x);
+}
+template <class T>
+inline std::complex<T> magnitude(const std::complex<T>& x) {
+  return x.real() < T(0) ? -x : x;
+}
+
+/// -1, 0 or 1 as x is negative, zero or positive: the model's sign(x), and abs(x)'s slope.
+/// A scalar type for a model with abs or sign needs `<`.
+template <class T>
+inline T sign(const T& x) {
+  return ordered(x) < ordered(T(0)) ? T(-1) : (ordered(T(0)) < ordered(x) ? T(1) : T(0));
+}
 
 /// sin and cos of every angle at once, for the coordinates a function takes the sine or cosine of.
 template <std::size_t N, class T>
@@ -260,7 +291,7 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   detail::sin_cos(trig_angle, trig_sin, trig_cos);
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
-  f[0] = -dq_x*dq_x*p_cw + u_F;
+  f[0] = -detail::magnitude(dq_x)*dq_x*p_cw + u_F;
   const T c1 = -p_a*p_kf + p_b*p_kr;
   const T c2 = p_a*p_cf - p_b*p_cr;
   f[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c1*sin_q_theta + c2*cos_q_theta*dq_theta;
@@ -309,7 +340,7 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   M[7] = T(0);
   M[8] = p_Iyy;
   T ddq[3];
-  ddq[0] = -dq_x*dq_x*p_cw + u_F;
+  ddq[0] = -detail::magnitude(dq_x)*dq_x*p_cw + u_F;
   ddq[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c1*sin_q_theta + c2*cos_q_theta*dq_theta;
   ddq[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*cos_q_theta*cos_q_theta*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*cos_q_theta*sin_q_theta - c1*cos_q_theta*q_z + c2*cos_q_theta*dq_z - p_h*u_F;
   T L[9];
@@ -366,7 +397,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   M[7] = T(0);
   M[8] = p_Iyy;
   T ddq[3];
-  ddq[0] = -dq_x*dq_x*p_cw + u_F;
+  ddq[0] = -detail::magnitude(dq_x)*dq_x*p_cw + u_F;
   ddq[1] = -(p_cf + p_cr)*dq_z - (p_kf + p_kr)*q_z - c1*sin_q_theta + c2*cos_q_theta*dq_theta;
   ddq[2] = -(p_a*p_a*p_cf + p_b*p_b*p_cr)*cos_q_theta*cos_q_theta*dq_theta - (p_a*p_a*p_kf + p_b*p_b*p_kr)*cos_q_theta*sin_q_theta - c1*cos_q_theta*q_z + c2*cos_q_theta*dq_z - p_h*u_F;
   T L[9];
@@ -399,7 +430,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   rows[0] = T(0);
   rows[1] = T(0);
   rows[2] = T(0);
-  rows[3] = -T(2)*dq_x*p_cw;
+  rows[3] = -detail::magnitude(dq_x)*p_cw - detail::sign(dq_x)*dq_x*p_cw;
   rows[4] = T(0);
   rows[5] = T(0);
   rows[6] = T(0);
@@ -481,7 +512,7 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
   const T c6 = p_a*p_a*p_cf + p_b*p_b*p_cr;
   const T c7 = cos_q_theta*cos_q_theta;
   const T c8 = p_a*p_a*p_kf + p_b*p_b*p_kr;
-  P[0] = T(2)*dq_x*p_cw;
+  P[0] = detail::magnitude(dq_x)*p_cw + detail::sign(dq_x)*dq_x*p_cw;
   P[1] = T(0);
   P[2] = T(0);
   Q[0] = T(0);

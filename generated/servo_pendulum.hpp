@@ -86,7 +86,7 @@ struct input_type {
 template <class T>
 using input_t = typename input_type<T>::type;
 
-/// What clamp and below compare: the number, or a complex number's real part (complex-step
+/// What clamp, below and sign compare: the number, or a complex number's real part (complex-step
 /// derivatives then carry through an unclamped value and vanish on a clamped one).
 template <class T>
 inline const T& ordered(const T& x) {
@@ -98,7 +98,7 @@ inline T ordered(const std::complex<T>& x) {
 }
 
 /// The model's clamp(x, lo, hi): x held to [lo, hi] (a control to its range, as MuJoCo does).
-/// The one comparison of a header: a scalar type for a model with clamp needs `<`.
+/// A scalar type for a model with clamp needs `<`.
 template <class T, class L, class H>
 inline T clamp(const T& x, const L& lo, const H& hi) {
   return ordered(x) < ordered(T(lo)) ? T(lo) : (ordered(T(hi)) < ordered(x) ? T(hi) : x);

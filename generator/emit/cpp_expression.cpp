@@ -187,8 +187,11 @@ class CppPrinter {
     std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     static const std::vector<std::string> known = {"sin", "cos",  "tan",  "asin", "acos", "atan", "atan2",
                                                    "sinh", "cosh", "tanh", "exp", "log", "abs"};
-    // clamp and below are the header's own (detail_functions), not std's
-    bool own = name == "clamp" || name == "below";
+    // clamp, below, sign and abs are the header's own (detail_functions), not std's: abs (the
+    // model's, symbolic/magnitude.hpp, or GiNaC's) as detail::magnitude, whose complex-step
+    // derivative is sign(x) x' (std::abs of a complex number is its modulus, which drops it)
+    if (name == "abs") name = "magnitude";
+    bool own = name == "clamp" || name == "below" || name == "sign" || name == "magnitude";
     if (!own && std::find(known.begin(), known.end(), name) == known.end())
       throw std::runtime_error("no C++ for the function " + name);
     std::string args;

@@ -333,24 +333,38 @@ std::string first_integrals_function(const Equations& e) {
 // the detail namespace: the input type that keeps u out of deducing T, the batched sin and cos when a
 // function uses them, and the LDLᵀ of M (which a model solved by the articulated-body recursion does
 // not use: its functions take M⁻¹ from the tree)
-// clamp(x, lo, hi) of the model (symbolic/clamp.hpp) and the indicator its slopes are written with;
-// a complex scalar (complex-step derivatives) is ordered by its real part
-const char* clamp_functions() {
-  return "/// What clamp and below compare: the number, or a complex number's real part (complex-step\n"
-         "/// derivatives then carry through an unclamped value and vanish on a clamped one).\n"
-         "template <class T>\ninline const T& ordered(const T& x) {\n  return x;\n}\n"
-         "template <class T>\ninline T ordered(const std::complex<T>& x) {\n  return x.real();\n}\n\n"
-         "/// The model's clamp(x, lo, hi): x held to [lo, hi] (a control to its range, as MuJoCo does).\n"
-         "/// The one comparison of a header: a scalar type for a model with clamp needs `<`.\n"
-         "template <class T, class L, class H>\ninline T clamp(const T& x, const L& lo, const H& hi) {\n"
-         "  return ordered(x) < ordered(T(lo)) ? T(lo) : (ordered(T(hi)) < ordered(x) ? T(hi) : x);\n}\n\n"
-         "/// 1 where a < b, else 0: clamp's slopes are 1 - below(x, lo) - below(hi, x) in x.\n"
-         "template <class A, class B>\ninline A below(const A& a, const B& b) {\n"
-         "  return ordered(a) < ordered(A(b)) ? A(1) : A(0);\n}\n\n";
+// clamp(x, lo, hi) of the model (symbolic/clamp.hpp) and the indicator its slopes are written with,
+// and abs(x) with its slope sign(x) (symbolic/magnitude.hpp), each where a function uses it; a
+// complex scalar (complex-step derivatives) is ordered by its real part
+std::string piecewise_functions(bool with_clamp, bool with_magnitude) {
+  std::string out =
+      "/// What clamp, below and sign compare: the number, or a complex number's real part (complex-step\n"
+      "/// derivatives then carry through an unclamped value and vanish on a clamped one).\n"
+      "template <class T>\ninline const T& ordered(const T& x) {\n  return x;\n}\n"
+      "template <class T>\ninline T ordered(const std::complex<T>& x) {\n  return x.real();\n}\n\n";
+  if (with_clamp)
+    out += "/// The model's clamp(x, lo, hi): x held to [lo, hi] (a control to its range, as MuJoCo does).\n"
+           "/// A scalar type for a model with clamp needs `<`.\n"
+           "template <class T, class L, class H>\ninline T clamp(const T& x, const L& lo, const H& hi) {\n"
+           "  return ordered(x) < ordered(T(lo)) ? T(lo) : (ordered(T(hi)) < ordered(x) ? T(hi) : x);\n}\n\n"
+           "/// 1 where a < b, else 0: clamp's slopes are 1 - below(x, lo) - below(hi, x) in x.\n"
+           "template <class A, class B>\ninline A below(const A& a, const B& b) {\n"
+           "  return ordered(a) < ordered(A(b)) ? A(1) : A(0);\n}\n\n";
+  if (with_magnitude)
+    out += "/// The model's abs(x): std's for a real scalar; for a complex one (complex-step derivatives), x\n"
+           "/// turned by the sign of its real part, whose derivative is sign(x) x' (std::abs would drop it).\n"
+           "template <class T>\ninline T magnitude(const T& x) {\n  using std::abs;\n  return abs(x);\n}\n"
+           "template <class T>\ninline std::complex<T> magnitude(const std::complex<T>& x) {\n"
+           "  return x.real() < T(0) ? -x : x;\n}\n\n"
+           "/// -1, 0 or 1 as x is negative, zero or positive: the model's sign(x), and abs(x)'s slope.\n"
+           "/// A scalar type for a model with abs or sign needs `<`.\n"
+           "template <class T>\ninline T sign(const T& x) {\n"
+           "  return ordered(x) < ordered(T(0)) ? T(-1) : (ordered(T(0)) < ordered(x) ? T(1) : T(0));\n}\n\n";
+  return out;
 }
 
 std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, bool with_sin_cos, bool with_constants,
-                             bool with_clamp) {
+                             bool with_clamp, bool with_magnitude) {
   std::string out =
       "namespace detail {\n\n"
       "/// The input pointer does not take part in deducing T, so a model without\n"
@@ -358,7 +372,7 @@ std::string detail_functions(const Equations& e, std::size_t n, bool with_ldlt, 
       "template <class T>\nstruct input_type {\n  using type = T;\n};\n"
       "template <class T>\nusing input_t = typename input_type<T>::type;\n\n";
   if (with_constants) out += cpp_constant_function();
-  if (with_clamp) out += clamp_functions();
+  if (with_clamp || with_magnitude) out += piecewise_functions(with_clamp, with_magnitude);
   if (with_sin_cos) out += sin_cos_function();
   if (with_ldlt) out += mass_matrix_factorization(e, n);
   return out + "}  // namespace detail\n\n";
@@ -437,6 +451,8 @@ std::string emit_cpp_header(const Equations& given) {
   std::string functions = all_functions(e);
   bool uses_constants = functions.find("detail::constant<T>(") != std::string::npos;
   bool uses_clamp = functions.find("detail::clamp(") != std::string::npos || functions.find("detail::below(") != std::string::npos;
+  bool uses_magnitude =
+      functions.find("detail::magnitude(") != std::string::npos || functions.find("detail::sign(") != std::string::npos;
   std::string out = fmt::format(
       "// Generated by eomgen {0} from {1}. Do not edit: change the model file and regenerate.\n"
       "// {2}: {3} (method {4}, {5} degree{6} of freedom).\n"
@@ -453,7 +469,7 @@ std::string emit_cpp_header(const Equations& given) {
       version_string, source_name(e.source), e.model_name, e.title, e.method, e.degrees_of_freedom,
       e.degrees_of_freedom == 1 ? "" : "s", n, n + k, s.parameters.size(), s.inputs.size(), e.outputs.size(),
       header_summary(e, functions),
-      k, std::string(uses_clamp ? "#include <complex>\n" : "") + (uses_constants ? "#include <limits>\n" : ""));
+      k, std::string(uses_clamp || uses_magnitude ? "#include <complex>\n" : "") + (uses_constants ? "#include <limits>\n" : ""));
   out += fmt::format(
       "inline constexpr std::array<const char*, num_parameters> parameter_names{{{{{}}}}};\n"
       "inline constexpr std::array<const char*, num_coordinates> coordinate_names{{{{{}}}}};\n"
@@ -496,7 +512,7 @@ std::string emit_cpp_header(const Equations& given) {
   out += constraint_declarations(e);
   out += detail_functions(e, k, form != DynamicsForm::particle_tree, functions.find("detail::sin_cos(") != std::string::npos,
                           uses_constants,
-                          uses_clamp);
+                          uses_clamp, uses_magnitude);
   out += functions;
   out += fmt::format("}}  // namespace eomgen::models::{}\n", e.model_name);
   return out;

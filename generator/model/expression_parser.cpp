@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "symbolic/clamp.hpp"
+#include "symbolic/magnitude.hpp"
 #include "symbolic/exact_double.hpp"
 
 namespace eomgen {
@@ -36,7 +37,7 @@ class Level {
 
 const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
                                                   "atan", "atan2", "sinh", "cosh", "tanh",
-                                                  "exp",  "log",  "sqrt", "abs",  "clamp", "der"};
+                                                  "exp",  "log",  "sqrt", "abs",  "sign", "clamp", "der"};
 const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "rot_axis", "quat", "euler313", "cardan123"};
 
 ex apply_function(const std::string& name, const std::vector<ex>& a) {
@@ -54,7 +55,8 @@ ex apply_function(const std::string& name, const std::vector<ex>& a) {
   if (name == "log") return GiNaC::log(a[0]);
   if (name == "sqrt") return GiNaC::sqrt(a[0]);
   if (name == "clamp") return clamp(a[0], a[1], a[2]);
-  return GiNaC::abs(a[0]);
+  if (name == "sign") return sign(a[0]);
+  return magnitude(a[0]);
 }
 
 std::size_t arity(const std::string& name) { return name == "atan2" ? 2 : name == "clamp" ? 3 : 1; }

@@ -196,6 +196,7 @@ class Printer {
 
   Printed function(const ex& e) const {
     std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (name == "magnitude") name = "abs";  // the model's abs (symbolic/magnitude.hpp), as it wrote it
     std::string args;
     for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + print(e.op(i)).text;
     if (!latex_) return {name + "(" + args + ")", 4};

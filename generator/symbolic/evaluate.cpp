@@ -45,7 +45,8 @@ double evaluate(const GiNaC::ex& e, const std::function<double(const GiNaC::symb
     if (name == "tanh") return std::tanh(a);
     if (name == "exp") return std::exp(a);
     if (name == "log") return std::log(a);
-    if (name == "abs") return std::abs(a);
+    if (name == "abs" || name == "magnitude") return std::abs(a);
+    if (name == "sign") return a < 0 ? -1.0 : (a > 0 ? 1.0 : 0.0);
     if (name == "clamp") return std::min(std::max(a, evaluate(e.op(1), value_of)), evaluate(e.op(2), value_of));
     if (name == "below") return a < evaluate(e.op(1), value_of) ? 1.0 : 0.0;
   }

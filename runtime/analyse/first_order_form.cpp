@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 namespace eomgen::runtime {
 
@@ -19,6 +20,17 @@ std::vector<int> reduced_state(const eomgen_model_abi& m) {
     if (!m.is_cyclic[i]) kept.push_back(static_cast<int>(i));
   for (std::size_t i = m.num_coordinates; i < m.num_states; ++i) kept.push_back(static_cast<int>(i));
   return kept;
+}
+
+int conserved_cyclic_momenta(const eomgen_model_abi& m) {
+  int conserved = 0;
+  for (std::size_t i = 0; i < m.num_coordinates; ++i) {
+    if (!m.is_cyclic[i]) continue;
+    std::string momentum = std::string("p_") + m.coordinate_names[i];
+    for (std::size_t k = 0; k < m.num_first_integrals; ++k)
+      if (momentum == m.first_integral_names[k]) ++conserved;
+  }
+  return conserved;
 }
 
 Eigen::VectorXd reduced_rate(const Problem& p, const std::vector<double>& x) {

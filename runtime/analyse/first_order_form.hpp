@@ -18,6 +18,11 @@ bool has_pseudo_velocities(const eomgen_model_abi& m);
 /// Indices into x of the reduced state: the non-cyclic coordinates, then all velocities.
 std::vector<int> reduced_state(const eomgen_model_abi& m);
 
+/// The cyclic coordinates whose momentum p_q is one of the model's first integrals (no applied
+/// force, dissipation or constraint on them at zero inputs): each leaves a zero eigenvalue that the
+/// verdicts leave out. A cyclic coordinate under drag is not one (a car's x under c x'|x'|).
+int conserved_cyclic_momenta(const eomgen_model_abi& m);
+
 /// ∂x'/∂x at (t, x), the whole state, from the generated jacobian_state (inputs at t).
 Eigen::MatrixXd state_jacobian(const Problem& p, double t, const std::vector<double>& x);
 

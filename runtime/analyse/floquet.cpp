@@ -174,8 +174,7 @@ FloquetReport floquet_analysis(const Problem& p, const std::vector<double>& x, d
   std::sort(r.multipliers.begin(), r.multipliers.end(), [](auto u, auto v) {
     return std::abs(u) != std::abs(v) ? std::abs(u) > std::abs(v) : u.imag() > v.imag();
   });
-  int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
-  judge(r, cyclic);
+  judge(r, conserved_cyclic_momenta(m));
   return r;
 }
 

@@ -438,9 +438,8 @@ StabilityReport analyse_stability(const Problem& problem, const std::vector<doub
   r.D = (s.P + s.P.transpose()) / 2, r.G = (s.P - s.P.transpose()) / 2;
   r.K = (s.Q + s.Q.transpose()) / 2, r.N = (s.Q - s.Q.transpose()) / 2;
   first_order(m, s, r.A, r.B_state, &r.state_names);
-  int cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
-  describe_spectrum(r, cyclic);
-  r.theorems = theorems(r, cyclic > 0);
+  describe_spectrum(r, conserved_cyclic_momenta(m));
+  r.theorems = theorems(r, std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true) > 0);
   reconcile_with_theorems(r);
   if (r.A.rows() == 2) r.phase_plane = phase_plane_type(r.A);
   return r;
@@ -458,7 +457,7 @@ CountedSpectrum counted_spectrum(const Problem& problem, const std::vector<doubl
     A = manifold_linearization(problem, x).A;
   } else {
     first_order(m, linearize(problem, x), A, B, nullptr);
-    cyclic = static_cast<int>(std::count(m.is_cyclic, m.is_cyclic + m.num_coordinates, true));
+    cyclic = conserved_cyclic_momenta(m);
   }
   return counted_spectrum(A, cyclic);
 }
