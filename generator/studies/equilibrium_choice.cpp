@@ -164,8 +164,8 @@ std::optional<int> equilibrium_of(const runtime::Problem& problem, const std::ve
   if (!out.converged && say_unbalanced_rate(problem, initial)) return exit_user_error;
   if (!out.converged) {
     std::cerr << fmt::format("eomgen: no equilibrium found near the model's initial values after {} Newton steps "
-                             "(largest residual {:.3g})\n  hint: name one with --at q=VALUE (and --at 'der(q)=VALUE' for a "
-                             "steady motion)\n", out.iterations, out.residual);
+                             "({})\n  hint: name one with --at q=VALUE (and --at 'der(q)=VALUE' for a "
+                             "steady motion)\n", out.iterations, runtime::search_end_text(problem, out));
     return exit_numerical_failure;
   }
   if (!out.note.empty()) std::cerr << "eomgen: note: " << out.note << "\n";

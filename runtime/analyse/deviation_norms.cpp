@@ -7,6 +7,7 @@
 
 #include "analyse/constrained_first_order.hpp"
 #include "analyse/first_order_form.hpp"
+#include "analyse/state_check.hpp"
 #include "analyse/turning_symmetries.hpp"
 
 namespace eomgen::runtime {
@@ -83,7 +84,7 @@ bool DeviationNorm::use_first_order_energy(const StabilityReport& r, const doubl
   if (!(r.A.topLeftCorner(c, c).norm() <= 64 * double(c) * std::numeric_limits<double>::epsilon() * scale)) return false;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(C.transpose());
   if (!lu.isInvertible()) return false;
-  Eigen::MatrixXd M_s = kinetic_metric(parameters);
+  Eigen::MatrixXd M_s = kinetic_metric(m_, 0.0, x_, parameters, std::vector<double>(size_.begin() + long(n), size_.end()));
   if (!M_s.allFinite() || !positive_beyond_rounding(M_s)) return false;
   Eigen::MatrixXd K = lu.solve(-M_s * A_sq);
   K = 0.5 * (K + K.transpose()).eval();
@@ -93,24 +94,6 @@ bool DeviationNorm::use_first_order_energy(const StabilityReport& r, const doubl
   states_.resize(n);
   first_order_ = true;
   return true;
-}
-
-// The kinetic energy's Hessian in the velocities at x, by polarization with steps of the pushes'
-// sizes: exact, to rounding, for a form quadratic in them
-Eigen::MatrixXd DeviationNorm::kinetic_metric(const double* parameters) const {
-  std::size_t n = m_.num_coordinates;
-  auto energy = [&](std::size_t a, std::size_t b) {
-    std::vector<double> y = x_;
-    if (a < n) y[n + a] += size_[n + a];
-    if (b < n) y[n + b] += size_[n + b];
-    return m_.kinetic_energy(0.0, y.data(), parameters);
-  };
-  Eigen::MatrixXd M(static_cast<long>(n), static_cast<long>(n));
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b <= a; ++b)
-      M(long(a), long(b)) = M(long(b), long(a)) =
-          (energy(a, b) - energy(a, n) - energy(b, n) + energy(n, n)) / (size_[n + a] * size_[n + b]);
-  return M;
 }
 
 // A = V Λ V⁻¹ on the reduced state in units of the perturbations' sizes: the modal amplitudes

@@ -46,7 +46,6 @@ class DeviationNorm {
   Eigen::MatrixXcd to_modes_;  // modal_amplitudes: V⁻¹ S⁻¹ on the reduced state
   bool use_energy(const StabilityReport& r);
   bool use_first_order_energy(const StabilityReport& r, const double* parameters);
-  Eigen::MatrixXd kinetic_metric(const double* parameters) const;
   bool use_modes(const StabilityReport& r);
 };
 

@@ -379,14 +379,21 @@ Equilibrium find_first_order_from(const Problem& problem, const std::vector<doub
   for (std::size_t i = m.num_coordinates; i < m.num_states; ++i)
     velocities += fmt::format("{}{} = {:.6g}", velocities.empty() ? "" : ", ", m.state_names[i], start[i]);
   rest.note = fmt::format("the initial velocities ({}) make no steady motion and Newton's method on the coordinates, its "
-                          "velocities held, found none in {} steps (largest residual {:.3g}); this is the equilibrium at "
-                          "rest from the initial configuration",
-                          velocities, moving.iterations, moving.residual);
+                          "velocities held, found none in {} steps ({}); this is the equilibrium at rest from the "
+                          "initial configuration",
+                          velocities, moving.iterations, search_end_text(problem, moving));
   rest.iterations += moving.iterations;
   return rest;
 }
 
 }  // namespace
+
+std::string search_end_text(const Problem& p, const Equilibrium& e) {
+  if (std::isfinite(e.residual)) return fmt::format("largest residual {:.3g}", e.residual);
+  std::string why = e.state.size() == p.model->num_states ? unfit_state(p, 0.0, e.state) : std::string();
+  return "its last step reached a state where the equations of motion are not finite" +
+         (why.empty() ? std::string() : ": " + why);
+}
 
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start) {
   const eomgen_model_abi& m = *problem.model;

@@ -22,6 +22,11 @@ struct Equilibrium {
   std::string note;    // what the search did besides Newton from the start, for the report
 };
 
+/// How a search that found nothing ended, for a message: "largest residual 0.767", or, where its
+/// last step reached a state whose equations are not finite (a singularity of the coordinates),
+/// that state and why.
+std::string search_end_text(const Problem& p, const Equilibrium& e);
+
 /// The non-cyclic coordinates whose velocity in x is not zero, "name = value" each: a state where
 /// any moves changes its configuration, and with it the equations, so it is no equilibrium however
 /// small the forces are there (Hiller §7.1); cyclic ones may move at constant speed.

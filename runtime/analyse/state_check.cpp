@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -33,9 +34,33 @@ std::string non_finite_quantities(const Problem& p, double t, const std::vector<
   return out;
 }
 
+Eigen::MatrixXd kinetic_metric(const eomgen_model_abi& m, double t, const std::vector<double>& x,
+                               const double* parameters, const std::vector<double>& steps) {
+  std::size_t n = m.num_coordinates, k = m.num_velocities;
+  auto energy = [&](std::size_t a, std::size_t b) {
+    std::vector<double> y = x;
+    if (a < k) y[n + a] += steps[a];
+    if (b < k) y[n + b] += steps[b];
+    return m.kinetic_energy(t, y.data(), parameters);
+  };
+  Eigen::MatrixXd H(static_cast<long>(k), static_cast<long>(k));
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = 0; b <= a; ++b)
+      H(long(a), long(b)) = H(long(b), long(a)) =
+          (energy(a, b) - energy(a, k) - energy(b, k) + energy(k, k)) / (steps[a] * steps[b]);
+  return H;
+}
+
 Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<double>& x) {
   const eomgen_model_abi& m = *p.model;
   auto k = static_cast<Eigen::Index>(m.num_velocities);
+  if (std::strcmp(m.method, "hamilton") == 0 && m.kinetic_energy) {
+    std::vector<double> steps(m.num_velocities);
+    for (std::size_t a = 0; a < steps.size(); ++a) steps[a] = std::max(1.0, std::abs(x[m.num_coordinates + a]));
+    Eigen::MatrixXd inverse = kinetic_metric(m, t, x, p.parameters.data(), steps);
+    if (!inverse.allFinite()) return inverse;
+    return inverse.ldlt().solve(Eigen::MatrixXd::Identity(k, k));
+  }
   Eigen::Matrix<double, -1, -1, Eigen::RowMajor> rows(k, k);
   m.mass_matrix(t, x.data(), p.parameters.data(), rows.data());
   return rows;

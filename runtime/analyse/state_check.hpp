@@ -20,8 +20,16 @@ std::string state_text(const eomgen_model_abi& m, const std::vector<double>& x);
 /// empty when all are finite.
 std::string non_finite_quantities(const Problem& p, double t, const std::vector<double>& x);
 
+/// The Hessian of the kinetic energy in the state's velocities at (t, x), by polarization with the
+/// given steps (one per velocity): exact, to rounding, for T quadratic in them.
+Eigen::MatrixXd kinetic_metric(const eomgen_model_abi& m, double t, const std::vector<double>& x,
+                               const double* parameters, const std::vector<double>& steps);
+
 /// The mass matrix at (t, x), num_velocities × num_velocities as the header writes it (for an
-/// Appell model fewer rows than coordinates: it is the matrix of the pseudo-velocities).
+/// Appell model fewer rows than coordinates: it is the matrix of the pseudo-velocities). For a
+/// Hamilton model, whose header writes p' = f with the identity, the coordinates' M, the inverse of
+/// T's Hessian in the momenta (q' = M⁻¹ p): at a singularity of the coordinates (a spherical
+/// pendulum's θ = 0) that Hessian grows without bound and M is singular, as it is for Lagrange II.
 Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<double>& x);
 
 /// D M D with D_ii = 1/√m_i, m_i the larger of M_ii at x and at the model's default state (1 where

@@ -301,5 +301,42 @@ TEST(EquilibriumSearch, AModelMovingAtItsStartWithNoSteadyMotionThereIsAnalysedA
   }
 }
 
+// A singularity of the coordinates written for Hamilton: the header's p' = f has the identity for
+// M, but q' = M⁻¹ p, and at θ = 1e-20 of a spherical pendulum T's Hessian in p is 1e40 times its
+// size: the coordinates' M is singular there, and Hamilton's form is refused as Lagrange II's is.
+// Searched at rest, the crane hook's θ = 0 (its load hanging, ψ undefined) had been called unstable
+// in Hamilton's form (a push "grew" 1.4e13-fold through the singularity) and refused in Lagrange II.
+TEST(EquilibriumSearch, AHamiltonModelAtASingularityOfItsCoordinatesIsRefusedAsItsLagrangeTwin) {
+  for (const char* name : {"spherical_pendulum", "spherical_pendulum_hamilton"}) {
+    bool hamilton = std::string(name).find("hamilton") != std::string::npos;
+    CommandOutput r = run_eomgen(fmt::format("stability '{}' --at theta=1e-20 --at {}=0 --at {}=0", model_path(name),
+                                             hamilton ? "p_theta" : "'der(theta)'", hamilton ? "p_phi" : "'der(phi)'"));
+    EXPECT_EQ(r.status, 3) << name << ": " << r.out;
+    EXPECT_NE(r.err.find("the mass matrix is singular at theta = 1e-20"), std::string::npos) << name << ": " << r.err;
+  }
+  std::string crane = read_file(model_path("crane_hook_tree"));
+  for (const char* method : {"lagrange2", "hamilton"}) {
+    std::string model = write_model(std::string("crane_hook_tree_") + method,
+                                    edited(crane, {{"[model]\n", std::string("[model]\nmethod = \"") + method + "\"\n"}}));
+    CommandOutput r = run_eomgen(fmt::format("stability '{}'", model));
+    EXPECT_EQ(r.status, 3) << method << ": " << r.out;
+    EXPECT_NE(r.err.find("no stability analysis at the equilibrium found: the mass matrix is singular at theta = "),
+              std::string::npos) << method << ": " << r.err;
+  }
+}
+
+// The heavy top written for Appell, its spin of 100 rad/s held: Newton's method from θ = 0.3 steps
+// onto θ = 0, where its Euler angles are singular. The message had read "largest residual nan"; it
+// now names the state and why its equations are not finite there.
+TEST(EquilibriumSearch, ASearchThatStepsWhereItsEquationsAreNotFiniteSaysWhere) {
+  std::string model = write_model("heavy_symmetric_top_appell", edited(read_file(model_path("heavy_symmetric_top")),
+                                                                       {{"[model]\n", "[model]\nmethod = \"appell\"\n"}}));
+  CommandOutput r = run_eomgen(fmt::format("stability '{}'", model));
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.err.find("its last step reached a state where the equations of motion are not finite: the mass matrix is "
+                       "singular at"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("nan"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace eomgen::test
