@@ -1,5 +1,6 @@
 #include "symbolic/trig_rational.hpp"
 
+#include <stdexcept>
 #include <vector>
 
 #include "symbolic/canonical_print.hpp"
@@ -73,13 +74,20 @@ ex simplify_trig_rational(const ex& e, const MotionSymbols& motion) {
   if (rational.has(GiNaC::sin(GiNaC::wild())) || rational.has(GiNaC::cos(GiNaC::wild())) ||
       rational.has(GiNaC::tan(GiNaC::wild())))
     return e;
-  rational = rational.normal();
   ex best = e;
   std::size_t best_size = printed_size(e);
-  for (bool eliminate_sine : {true, false}) {
-    ex candidate = tidy(reduced_quotient(rational, t, eliminate_sine).subs(t.back, GiNaC::subs_options::no_pattern), motion);
-    std::size_t size = printed_size(candidate);
-    if (size < best_size) best = candidate, best_size = size;
+  // GiNaC's rem and gcd take polynomials over the rationals only: a coefficient such as √26/5 (an
+  // oblique axis's unit vector) or abs(x) makes them throw, and the expression stays as it is (it
+  // had stopped the derivation of an arm with such an axis, for Appell, with a hint about constraints)
+  try {
+    rational = rational.normal();
+    for (bool eliminate_sine : {true, false}) {
+      ex candidate = tidy(reduced_quotient(rational, t, eliminate_sine).subs(t.back, GiNaC::subs_options::no_pattern), motion);
+      std::size_t size = printed_size(candidate);
+      if (size < best_size) best = candidate, best_size = size;
+    }
+  } catch (const std::invalid_argument&) {
+    return e;
   }
   return best;
 }

@@ -35,5 +35,18 @@ TEST(TrigRational, WhatIsAlreadySimpleStays) {
     EXPECT_EQ(canonical_text(simplify_trig_rational(e, motion)), canonical_text(e));
 }
 
+// A coefficient that is no rational number, √26/5 from the unit vector of an axis (0, 1, 0.2): GiNaC's
+// rem and gcd refuse such polynomials, and the expression stays as it is. The throw had stopped the
+// derivation of models/geared_gripper.toml written for Appell, with a hint about constraints.
+TEST(TrigRational, CoefficientsThatAreNotRationalLeaveTheExpressionAsItIs) {
+  GiNaC::realsymbol a("a"), b("b");
+  MotionSymbols motion{{a, b}};
+  GiNaC::ex e = GiNaC::sqrt(GiNaC::ex(26)) / 5 * (cos(b) * sin(a) * sin(b) - sin(a) * sin(b) / cos(b)) + pow(sin(a), 2);
+  GiNaC::ex simple;
+  ASSERT_NO_THROW(simple = simplify_trig_rational(e, motion));
+  GiNaC::exmap at{{a, GiNaC::numeric(3, 10)}, {b, GiNaC::numeric(-7, 10)}};
+  EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>((simple - e).subs(at).evalf()).to_double(), 0, 1e-15);
+}
+
 }  // namespace
 }  // namespace eomgen
