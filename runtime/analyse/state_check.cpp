@@ -57,9 +57,9 @@ Eigen::MatrixXd mass_matrix_at(const Problem& p, double t, const std::vector<dou
   if (std::strcmp(m.method, "hamilton") == 0 && m.kinetic_energy) {
     std::vector<double> steps(m.num_velocities);
     for (std::size_t a = 0; a < steps.size(); ++a) steps[a] = std::max(1.0, std::abs(x[m.num_coordinates + a]));
-    Eigen::MatrixXd inverse = kinetic_metric(m, t, x, p.parameters.data(), steps);
-    if (!inverse.allFinite()) return inverse;
-    return inverse.ldlt().solve(Eigen::MatrixXd::Identity(k, k));
+    Eigen::MatrixXd inverse_mass = kinetic_metric(m, t, x, p.parameters.data(), steps);
+    if (!inverse_mass.allFinite()) return inverse_mass;
+    return inverse_mass.ldlt().solve(Eigen::MatrixXd::Identity(k, k));
   }
   Eigen::Matrix<double, -1, -1, Eigen::RowMajor> rows(k, k);
   m.mass_matrix(t, x.data(), p.parameters.data(), rows.data());
