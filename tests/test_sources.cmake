@@ -57,6 +57,7 @@ set(EOMGEN_TEST_FILES
   runtime/quaternion_simulation_test.cpp            fast
   runtime/turning_symmetries_test.cpp               fast
   runtime/deviation_norms_test.cpp                  fast
+  runtime/state_check_test.cpp                      fast
   runtime/reference_test.cpp                        slow
   generator/symbolic_analysis/stability_conditions_test.cpp   fast     sanitized
   generator/symbolic_analysis/hamilton_jacobi_test.cpp        fast

@@ -9,7 +9,9 @@
 
 #include "analyse/constrained_equilibrium.hpp"
 #include "analyse/constrained_first_order.hpp"
+#include "analyse/first_order_equilibrium.hpp"
 #include "analyse/first_order_form.hpp"
+#include "analyse/newton_steps.hpp"
 #include "analyse/rate_balance.hpp"
 #include "analyse/state_check.hpp"
 #include "analyse/system_scales.hpp"
@@ -98,84 +100,6 @@ Eigen::VectorXd force_tolerances(const Problem& p, const Derivatives& d, const s
   return tolerances;
 }
 
-// The part of a Newton step to take: all of it when it all but solves the equations (the largest
-// residual after it below a thousandth of before: a linear problem, or one near its root, in any
-// units), else at most half a unit (half a radian for an angle, half the configuration's size for a
-// length: `largest` is in the coordinates' sizes), so that the search stays near where it started.
-// Limited alone, a spring of 1e-6 N/m, whose mass hangs 9.81e6 m down, was out of reach.
-template <class Residual>
-double step_fraction(double largest, double residual, const Residual& residual_after_whole_step) {
-  if (largest <= 0.5) return 1.0;
-  double after = residual_after_whole_step();
-  return std::isfinite(after) && after <= 1e-3 * residual ? 1.0 : 0.5 / largest;
-}
-
-// Appell's equations: a steady motion has x' = 0 on the reduced state (the non-cyclic
-// coordinates stand still, the pseudo-velocities are constant), each rate against the terms it sums
-// (rate_balance.hpp), times `margin`
-RateBalance first_order_balance(const Problem& problem, const std::vector<double>& state, double margin) {
-  auto rates = [](const Problem& at, const std::vector<double>& y) {
-    const eomgen_model_abi& m = *at.model;
-    Eigen::VectorXd rate(m.num_states);
-    m.rhs(0.0, y.data(), at.held_inputs(), at.parameters.data(), rate.data());
-    return rate;
-  };
-  // one unit where all sizes are zero: a steady motion's default state is that motion, its rate
-  // zero to rounding alone (the Whipple bicycle's upright run, 1e-14 at q = 0), which sets no scale
-  return reduced_rate_balance(problem, state, rates, state_jacobian(problem, 0.0, state),
-                              coordinate_sizes(*problem.model, state.data(), true, 1.0), margin);
-}
-
-Equilibrium check_first_order(const Problem& problem, std::vector<double> state) {
-  RateBalance b = first_order_balance(problem, state, 1.0);
-  Equilibrium e;
-  e.residual = b.residual, e.tolerance = b.tolerance, e.converged = b.balanced;
-  e.state = std::move(state);
-  return e;
-}
-
-// Newton on the coordinates `unknowns` (non-cyclic ones), the pseudo-velocities as given; each
-// unknown in its coordinate's size (coordinate_sizes.hpp), so that the rank is decided, and a step
-// limited, alike for angles and lengths
-Equilibrium find_first_order(const Problem& problem, std::vector<double> x, const std::vector<int>& unknowns) {
-  const eomgen_model_abi& m = *problem.model;
-  std::vector<int> kept = reduced_state(m);
-  std::vector<long> column;  // each unknown's place in the reduced state
-  for (int i : unknowns) column.push_back(long(std::find(kept.begin(), kept.end(), i) - kept.begin()));
-  int iterations = 0;
-  for (; iterations < 100 && !unknowns.empty(); ++iterations) {
-    Eigen::VectorXd r = reduced_rate(problem, x);
-    Eigen::MatrixXd jacobian = reduced_jacobian(problem, x);
-    // done at a thousandth of what counts as zero, in the model's scales (not 1e-15 in its units)
-    if (!r.allFinite() || first_order_balance(problem, x, 1e-3).balanced) break;
-    std::vector<double> size = coordinate_sizes(m, x.data(), true, 1.0);
-    Eigen::MatrixXd J(jacobian.rows(), long(unknowns.size()));
-    Eigen::VectorXd unit(long(unknowns.size()));
-    for (std::size_t k = 0; k < unknowns.size(); ++k) {
-      unit[long(k)] = size[std::size_t(unknowns[k])];
-      J.col(long(k)) = jacobian.col(column[k]) * unit[long(k)];
-    }
-    Eigen::VectorXd step = unit.asDiagonal() * J.completeOrthogonalDecomposition().solve(-r);
-    auto moved = [&](double fraction) {
-      std::vector<double> y = x;
-      for (std::size_t k = 0; k < unknowns.size(); ++k) y[unknowns[k]] += fraction * step[static_cast<long>(k)];
-      normalize_quaternions(m, y.data());
-      return y;
-    };
-    double largest = step.cwiseQuotient(unit).cwiseAbs().maxCoeff();
-    double scale = step_fraction(largest, r.cwiseAbs().maxCoeff(),
-                                 [&] { return reduced_rate(problem, moved(1.0)).cwiseAbs().maxCoeff(); });
-    // moved() keeps quaternions unit: Newton moves their four coordinates freely, and off the unit
-    // sphere a falling body's shrank to 1e-30 in 13 steps and its Jacobian, which the tolerance
-    // follows, grew to 1e13
-    x = moved(scale);
-    if (scale == 1.0 && largest <= 1e-14) break;
-  }
-  Equilibrium e = check_first_order(problem, std::move(x));
-  e.iterations = iterations;
-  return e;
-}
-
 }  // namespace
 
 std::string moving_coordinates(const eomgen_model_abi& m, const std::vector<double>& x) {
@@ -202,16 +126,6 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
 }
 
 namespace {
-
-// The largest of 1, 1/2, 1/4, … (down to 2^-60) of a Newton step after which the residual is
-// smaller than before: steps in the solution's own scale, where half a unit is none (a top's
-// precession at 4e3 rad/s from 2e3)
-template <class Residual>
-double backtracked_fraction(double residual, const Residual& residual_after) {
-  double fraction = 1;
-  for (int halvings = 0; halvings < 60 && !(residual_after(fraction) < residual); ++halvings) fraction /= 2;
-  return fraction;
-}
 
 // The Newton step on the states `unknowns` (indices into x) that takes f, or r = f − const, to
 // zero: ∂f/∂q = −Q, ∂f/∂q' = −P (least squares when rank deficient), solved with each row divided by
@@ -363,29 +277,6 @@ Equilibrium rest_where_it_balances(const Problem& problem, Equilibrium found, co
   return at_rest;
 }
 
-// Appell's equations (and a ball or free joint's angular velocities) hold the velocities as given:
-// from a moving start that is no steady motion (a Chaplygin sleigh turning, a spinning top) the
-// coordinates alone balance nothing. Rest, where every velocity is zero, is then searched from the
-// same configuration, as Lagrange's equations are searched.
-Equilibrium find_first_order_from(const Problem& problem, const std::vector<double>& start, const std::vector<int>& unknowns) {
-  const eomgen_model_abi& m = *problem.model;
-  Equilibrium moving = find_first_order(problem, start, unknowns);
-  std::vector<double> at_rest = start;
-  std::fill(at_rest.begin() + long(m.num_coordinates), at_rest.end(), 0.0);
-  if (moving.converged || at_rest == start) return moving;
-  Equilibrium rest = find_first_order(problem, at_rest, unknowns);
-  if (!rest.converged) return moving;
-  std::string velocities;
-  for (std::size_t i = m.num_coordinates; i < m.num_states; ++i)
-    velocities += fmt::format("{}{} = {:.6g}", velocities.empty() ? "" : ", ", m.state_names[i], start[i]);
-  rest.note = fmt::format("the initial velocities ({}) make no steady motion and Newton's method on the coordinates, its "
-                          "velocities held, found none in {} steps ({}); this is the equilibrium at rest from the "
-                          "initial configuration",
-                          velocities, moving.iterations, search_end_text(problem, moving));
-  rest.iterations += moving.iterations;
-  return rest;
-}
-
 }  // namespace
 
 std::string search_end_text(const Problem& p, const Equilibrium& e) {
@@ -399,7 +290,7 @@ Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& 
   const eomgen_model_abi& m = *problem.model;
   if (has_pseudo_velocities(m)) {
     std::vector<std::size_t> coordinates = unheld_unknowns(m, std::vector<bool>(m.num_states));
-    return find_first_order_from(problem, start, std::vector<int>(coordinates.begin(), coordinates.end()));
+    return find_first_order_equilibrium(problem, start, std::vector<int>(coordinates.begin(), coordinates.end()));
   }
   if (has_multipliers(m)) return find_constrained_equilibrium(problem, start);
   std::size_t n = m.num_coordinates;
@@ -466,7 +357,7 @@ Equilibrium complete_equilibrium(const Problem& problem, std::vector<double> sta
   if (free.empty()) return check_equilibrium(problem, std::move(state));
   std::vector<int> unknowns(free.begin(), free.end());
   // Appell's pseudo-velocities as given (those not named are zero): the coordinates alone free
-  if (has_pseudo_velocities(m)) return find_first_order(problem, std::move(state), unknowns);
+  if (has_pseudo_velocities(m)) return solve_first_order(problem, std::move(state), unknowns);
   // Lagrange I: the other coordinates close the constraints around the held ones, at rest
   if (has_multipliers(m)) return find_constrained_equilibrium(problem, state, held);
   std::size_t n = m.num_coordinates;

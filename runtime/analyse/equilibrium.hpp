@@ -42,7 +42,8 @@ Equilibrium check_equilibrium(const Problem& problem, std::vector<double> state)
 /// there, or a tree of 21 hinges whose Newton steps go round. Where that finds none either or
 /// ends at a singular mass matrix (a singularity of the coordinates), the steady motion at the
 /// start's configuration with the cyclic velocities alone free, when there is one (said in
-/// Equilibrium::note).
+/// Equilibrium::note). A first-order form (Appell, Hamilton) is searched alike, on its own state
+/// (first_order_equilibrium.hpp).
 Equilibrium find_equilibrium(const Problem& problem, const std::vector<double>& start);
 
 /// The equilibrium or steady motion that keeps the states marked `held` at their values in `state`:

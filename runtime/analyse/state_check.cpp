@@ -34,20 +34,36 @@ std::string non_finite_quantities(const Problem& p, double t, const std::vector<
   return out;
 }
 
+// At zero velocities, where the terms of T are those of the steps alone: at a momentum of 2e12
+// (a governor on a time scale of 1e-12 s) the steps of 1 of another momentum changed T, of 1e24,
+// below its rounding, and the Hessian's eigenvalues came out ±2e7. The cross terms are taken
+// with each step rescaled to change T by the same amount (δ_a² H_aa, the largest the given steps
+// make), so that neither is lost
+// beside the other's square (momenta of a length and of an angle differ by orders of magnitude).
 Eigen::MatrixXd kinetic_metric(const eomgen_model_abi& m, double t, const std::vector<double>& x,
-                               const double* parameters, const std::vector<double>& steps) {
+                               const double* parameters, std::vector<double> steps) {
   std::size_t n = m.num_coordinates, k = m.num_velocities;
+  std::vector<double> at_rest = x;
+  std::fill(at_rest.begin() + long(n), at_rest.begin() + long(n + k), 0.0);
   auto energy = [&](std::size_t a, std::size_t b) {
-    std::vector<double> y = x;
+    std::vector<double> y = at_rest;
     if (a < k) y[n + a] += steps[a];
     if (b < k) y[n + b] += steps[b];
     return m.kinetic_energy(t, y.data(), parameters);
   };
+  auto second_difference = [&](std::size_t a, std::size_t b) {
+    return (energy(a, b) - energy(a, k) - energy(b, k) + energy(k, k)) / (steps[a] * steps[b]);
+  };
   Eigen::MatrixXd H(static_cast<long>(k), static_cast<long>(k));
+  for (std::size_t a = 0; a < k; ++a) H(long(a), long(a)) = second_difference(a, a);
+  double energy_of_step = 0;  // the largest change of T the given steps make
   for (std::size_t a = 0; a < k; ++a)
-    for (std::size_t b = 0; b <= a; ++b)
-      H(long(a), long(b)) = H(long(b), long(a)) =
-          (energy(a, b) - energy(a, k) - energy(b, k) + energy(k, k)) / (steps[a] * steps[b]);
+    if (std::isfinite(H(long(a), long(a)))) energy_of_step = std::max(energy_of_step, steps[a] * steps[a] * H(long(a), long(a)));
+  for (std::size_t a = 0; a < k; ++a)
+    if (H(long(a), long(a)) > 0 && std::isfinite(H(long(a), long(a))))
+      steps[a] = std::sqrt(energy_of_step / H(long(a), long(a)));
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = 0; b < a; ++b) H(long(a), long(b)) = H(long(b), long(a)) = second_difference(a, b);
   return H;
 }
 

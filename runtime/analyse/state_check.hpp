@@ -20,10 +20,11 @@ std::string state_text(const eomgen_model_abi& m, const std::vector<double>& x);
 /// empty when all are finite.
 std::string non_finite_quantities(const Problem& p, double t, const std::vector<double>& x);
 
-/// The Hessian of the kinetic energy in the state's velocities at (t, x), by polarization with the
-/// given steps (one per velocity): exact, to rounding, for T quadratic in them.
+/// The Hessian of the kinetic energy in the state's velocities at (t, x), by polarization at zero
+/// velocities, the diagonal with the given steps (one per velocity): exact, to rounding, for T
+/// quadratic in them (Hamilton's T in the momenta, Appell's in the pseudo-velocities).
 Eigen::MatrixXd kinetic_metric(const eomgen_model_abi& m, double t, const std::vector<double>& x,
-                               const double* parameters, const std::vector<double>& steps);
+                               const double* parameters, std::vector<double> steps);
 
 /// The mass matrix at (t, x), num_velocities × num_velocities as the header writes it (for an
 /// Appell model fewer rows than coordinates: it is the matrix of the pseudo-velocities). For a

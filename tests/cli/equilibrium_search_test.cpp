@@ -148,22 +148,27 @@ TEST(EquilibriumSearch, ATreeWhoseNewtonSearchWandersIsFoundWhereItComesToRest) 
 // The servo pendulum started at 2 rad, where its servo saturates: its torque is constant there, and
 // Newton's method from the start has no slope to follow. Released with damping added, it comes to
 // rest where the servo's pull kp (u − φ) holds gravity's m g s sin φ, at every time scale T (g, kp
-// and tau_max in 1/T², kd in 1/T).
+// and tau_max in 1/T², kd in 1/T). Written for Appell or Hamilton, its pseudo-velocity or momentum
+// is damped instead, and it comes to rest at the same φ; those forms had found no equilibrium.
 TEST(EquilibriumSearch, ASaturatedServoIsFoundWhereItComesToRestAtEveryTimeScale) {
   const double kp = 20, m = 1.5, g = 9.81, s = 0.25, u = 0.5;
   double phi = 0.4;  // kp (u − φ) = m g s sin φ, by Newton's method
   for (int k = 0; k < 50; ++k) phi -= (kp * (u - phi) - m * g * s * std::sin(phi)) / (-kp - m * g * s * std::cos(phi));
-  for (double T : {1e-12, 1.0, 1e12}) {
-    std::string set = fmt::format(" --set u={} --set m={} --set s={} --set g={:.17g} --set kp={:.17g} --set kd={:.17g} "
-                                  "--set tau_max={:.17g}", u, m, s, g / (T * T), kp / (T * T), 2.0 / T, 6.0 / (T * T));
-    CommandOutput r = run_eomgen("stability '" + model_path("servo_pendulum") + "'" + set + " --format json");
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("comes to rest"), std::string::npos) << r.err;
-    Diagnostics diagnostics;
-    std::optional<JsonValue> json = parse_json(r.out, "stability", diagnostics);
-    ASSERT_TRUE(json) << r.out;
-    EXPECT_NEAR(at(*json->find("equilibrium"), "phi"), phi, 1e-12) << "T = " << T;
-    EXPECT_EQ(json->find("verdict")->text, "asymptotically_stable") << "T = " << T;
+  for (const std::string method : {"lagrange2", "appell", "hamilton"}) {
+    std::string model = write_model("servo_pendulum_" + method, edited(read_file(model_path("servo_pendulum")),
+                                                                        {{"[model]\n", "[model]\nmethod = \"" + method + "\"\n"}}));
+    for (double T : {1e-12, 1.0, 1e12}) {
+      std::string set = fmt::format(" --set u={} --set m={} --set s={} --set g={:.17g} --set kp={:.17g} --set kd={:.17g} "
+                                    "--set tau_max={:.17g}", u, m, s, g / (T * T), kp / (T * T), 2.0 / T, 6.0 / (T * T));
+      CommandOutput r = run_eomgen("stability '" + model + "'" + set + " --format json");
+      ASSERT_EQ(r.status, 0) << method << ": " << r.err;
+      EXPECT_NE(r.err.find("comes to rest"), std::string::npos) << r.err;
+      Diagnostics diagnostics;
+      std::optional<JsonValue> json = parse_json(r.out, "stability", diagnostics);
+      ASSERT_TRUE(json) << r.out;
+      EXPECT_NEAR(at(*json->find("equilibrium"), "phi"), phi, 1e-12) << method << ", T = " << T;
+      EXPECT_EQ(json->find("verdict")->text, "asymptotically_stable") << method << ", T = " << T;
+    }
   }
 }
 
@@ -281,11 +286,15 @@ TEST(EquilibriumSearch, AModelMovingAtItsStartWithNoSteadyMotionThereIsAnalysedA
       std::string given = model == spinning ? g : "";
       CommandOutput found = run_eomgen(fmt::format("stability '{}'{} --format json", model, given));
       ASSERT_EQ(found.status, 0) << model << ", T = " << T << ": " << found.err;
-      EXPECT_NE(found.err.find(model == turning ? fmt::format("(v = {:.6g}, w = {:.6g}) make no steady motion", 0.2 / T, 2 / T)
-                                                : std::string("make no steady motion")),
+      EXPECT_NE(found.err.find(model == turning ? fmt::format("the initial velocities (v = {:.6g}, w = {:.6g}) make no steady motion",
+                                                              0.2 / T, 2 / T)
+                                                : std::string(") held, found none")),
                 std::string::npos)
           << found.err;
-      EXPECT_NE(found.err.find("this is the equilibrium at rest from the initial configuration"), std::string::npos);
+      EXPECT_NE(found.err.find("with the velocities solved for too found no steady motion; this is the equilibrium at rest "
+                               "from the initial configuration"),
+                std::string::npos)
+          << found.err;
       CommandOutput named = run_eomgen(fmt::format("stability '{}'{} --format json", model, at_rest));
       ASSERT_EQ(named.status, 0) << named.err;
       Diagnostics diagnostics;
@@ -327,15 +336,90 @@ TEST(EquilibriumSearch, AHamiltonModelAtASingularityOfItsCoordinatesIsRefusedAsI
 
 // The heavy top written for Appell, its spin of 100 rad/s held: Newton's method from θ = 0.3 steps
 // onto θ = 0, where its Euler angles are singular. The message had read "largest residual nan"; it
-// now names the state and why its equations are not finite there.
+// now names the state and why its equations are not finite there. The search then solves for the
+// velocities too and finds the steady precession that Lagrange II's search finds (it had stopped
+// with "no equilibrium found").
 TEST(EquilibriumSearch, ASearchThatStepsWhereItsEquationsAreNotFiniteSaysWhere) {
-  std::string model = write_model("heavy_symmetric_top_appell", edited(read_file(model_path("heavy_symmetric_top")),
-                                                                       {{"[model]\n", "[model]\nmethod = \"appell\"\n"}}));
+  std::string lagrange = read_file(model_path("heavy_symmetric_top"));
+  std::string model = write_model("heavy_symmetric_top_appell", edited(lagrange, {{"[model]\n", "[model]\nmethod = \"appell\"\n"}}));
   CommandOutput r = run_eomgen(fmt::format("stability '{}'", model));
-  EXPECT_EQ(r.status, 3) << r.out;
+  ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("its last step reached a state where the equations of motion are not finite: the mass matrix is "
                        "singular at"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("this is the steady motion nearest the initial state, its velocities solved for"), std::string::npos)
+      << r.err;
   EXPECT_EQ(r.err.find("nan"), std::string::npos) << r.err;
+  JsonValue appell = run_json(fmt::format("stability '{}'", model));
+  JsonValue lagrange_two = run_json(fmt::format("stability '{}'", model_path("heavy_symmetric_top")));
+  const JsonValue &found = *appell.find("equilibrium"), &expected = *lagrange_two.find("equilibrium");
+  for (const char* state : {"theta", "der(psi)", "der(phi)"})
+    EXPECT_NEAR(at(found, state) / at(expected, state), 1, 1e-9) << state;
+  EXPECT_EQ(appell.find("verdict")->text, lagrange_two.find("verdict")->text);
+}
+
+// models/watt_governor.toml written for `method` on time scale T (g, the torques κ and P over T², the
+// arms' friction b and the engine's initial speed over T)
+std::string governor(const std::string& method, double T) {
+  std::string text = edited(read_file(model_path("watt_governor")),
+                            {{"[model]\n", "[model]\nmethod = \"" + method + "\"\n"},
+                             {"b     = 0.8", fmt::format("b = {:.17g}", 0.8 / T)},
+                             {"kappa = 10.0", fmt::format("kappa = {:.17g}", 10 / (T * T))},
+                             {"P     = 8.660254037844386", fmt::format("P = {:.17g}", 8.660254037844386 / (T * T))},
+                             {"g     = 9.81", fmt::format("g = {:.17g}", 9.81 / (T * T))},
+                             {"rate = 3.3658", fmt::format("rate = {:.17g}", 3.3658 / T)}});
+  return write_model(fmt::format("watt_governor_{}_{:g}", method, T), text);
+}
+
+// Appell's and Hamilton's forms hold the initial velocities while Newton moves the coordinates, and
+// then searched rest only. The Watt governor's engine speed is given to five digits (3.3658 rad/s,
+// the steady speed is 3.36565…), so its arms balance at no angle, and both forms stopped with "no
+// equilibrium found" where Lagrange II's search, which solves for the cyclic speed, finds the
+// steady run. Now the velocities are solved for too, and at time scales from 1e-12 to 1e12 s both
+// find it (Hiller §7.6): κ cos θ = P, n² φ'² l cos θ = g, in Hamilton's form p_φ = (J + 2 m n² l²
+// sin² θ) φ', and call it asymptotically stable as Lagrange II does.
+TEST(EquilibriumSearch, AppellsAndHamiltonsFormsFindAGovernorsSteadyRunAtEveryTimeScale) {
+  const double m = 1, l = 0.25, n = 2, J = 0.5, kappa = 10, P = 8.660254037844386, g = 9.81;
+  const double theta = std::acos(P / kappa), speed = std::sqrt(g / (n * n * l * std::cos(theta)));
+  for (const std::string method : {"appell", "hamilton"}) {
+    for (double T : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+      CommandOutput r = run_eomgen(fmt::format("stability '{}' --format json", governor(method, T)));
+      ASSERT_EQ(r.status, 0) << method << ", T = " << T << ": " << r.err;
+      EXPECT_NE(r.err.find("this is the steady motion nearest the initial state"), std::string::npos) << r.err;
+      Diagnostics diagnostics;
+      std::optional<JsonValue> json = parse_json(r.out, "stability", diagnostics);
+      ASSERT_TRUE(json) << r.out;
+      const JsonValue& steady = *json->find("equilibrium");
+      EXPECT_NEAR(at(steady, "theta"), theta, 1e-12) << method << ", T = " << T;
+      if (method == "appell") {
+        EXPECT_NEAR(at(steady, "der(phi)") * T / speed, 1, 1e-12) << "T = " << T;
+      } else {
+        double momentum = (J + 2 * m * n * n * l * l * std::sin(theta) * std::sin(theta)) * speed / T;
+        EXPECT_NEAR(at(steady, "p_phi") / momentum, 1, 1e-12) << "T = " << T;
+      }
+      EXPECT_EQ(json->find("verdict")->text, "asymptotically_stable") << method << ", T = " << T;
+    }
+  }
+}
+
+// The spherical pendulum written for Appell, released at θ = 0.8 turning at φ' = 2 s (time scale s):
+// Newton with φ' held slides to θ = 0 (singular), and so does the search with the velocities free.
+// As in Lagrange II's search, the steady motion at θ = 0.8 is then taken, the velocities alone solved
+// for: the conical motion φ'² = g/(l cos θ), stable. It had been refused at θ = 0 (singular).
+TEST(EquilibriumSearch, AnAppellSearchThatEndsAtASingularityTakesTheSteadyMotionAtItsStart) {
+  for (double s : {1e-12, 1.0, 1e12}) {
+    std::string model = write_model("spherical_pendulum_appell", edited(read_file(spherical_pendulum_on_time_scale(s)),
+                                                                        {{"[model]\n", "[model]\nmethod = \"appell\"\n"}}));
+    CommandOutput r = run_eomgen("stability '" + model + "'");
+    ASSERT_EQ(r.status, 0) << "s = " << s << ": " << r.err;
+    EXPECT_NE(r.err.find("this is the steady motion at the initial configuration, its velocities alone solved for"),
+              std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("nonlinear verdict: stable"), std::string::npos) << r.out;
+    JsonValue json = run_json("stability '" + model + "'");
+    const JsonValue& equilibrium = *json.find("equilibrium");
+    EXPECT_EQ(at(equilibrium, "theta"), 0.8) << "s = " << s;
+    EXPECT_NEAR(at(equilibrium, "der(phi)") / (s * std::sqrt(9.81 / std::cos(0.8))), 1, 1e-12) << "s = " << s;
+    EXPECT_EQ(at(equilibrium, "der(theta)"), 0) << "s = " << s;
+  }
 }
 
 }  // namespace
