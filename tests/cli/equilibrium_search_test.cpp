@@ -401,6 +401,33 @@ TEST(EquilibriumSearch, AppellsAndHamiltonsFormsFindAGovernorsSteadyRunAtEveryTi
   }
 }
 
+// models/free_rigid_body.toml (Cardan angles 0, rates α' = 1, γ' = 2 over T) written for each form:
+// Lagrange II's search holds the non-cyclic rates at zero and finds the spin about the first axis,
+// α' = 1/T, stable. Appell's and Hamilton's had held the velocities and then taken rest, unstable
+// (a body at rest drifts); Newton on all three velocities from the start went to rest too. They now
+// start from the velocities that make the non-cyclic coordinates stand still, the cyclic one
+// moving as at the start (Hamilton: p_α = A α'), and find the same spin at every time scale.
+TEST(EquilibriumSearch, AFreeBodyInEveryFormSpinsAsLagrangesSearchFindsIt) {
+  const double A = 1;
+  for (const std::string method : {"lagrange2", "appell", "hamilton"}) {
+    for (double T : {1e-12, 1.0, 1e12}) {
+      std::string model = write_model(fmt::format("free_rigid_body_{}_{:g}", method, T),
+                                      edited(read_file(model_path("free_rigid_body")),
+                                             {{"[model]\n", "[model]\nmethod = \"" + method + "\"\n"},
+                                              {"rate = 1.0", fmt::format("rate = {:.17g}", 1 / T)},
+                                              {"rate = 2.0", fmt::format("rate = {:.17g}", 2 / T)}}));
+      JsonValue r = run_json(fmt::format("stability '{}'", model));
+      const JsonValue& found = field(r, "equilibrium");
+      EXPECT_EQ(at(found, "beta"), 0) << method << ", T = " << T;
+      EXPECT_EQ(at(found, "gamma"), 0) << method << ", T = " << T;
+      if (method == "hamilton") EXPECT_NEAR(at(found, "p_alpha") * T / A, 1, 1e-12) << "T = " << T;
+      else EXPECT_NEAR(at(found, "der(alpha)") * T, 1, 1e-12) << method << ", T = " << T;
+      EXPECT_EQ(field(r, "verdict").text, "marginally_stable") << method << ", T = " << T;
+      EXPECT_EQ(field(field(r, "critical_case"), "nonlinear_verdict").text, "stable") << method << ", T = " << T;
+    }
+  }
+}
+
 // The spherical pendulum written for Appell, released at θ = 0.8 turning at φ' = 2 s (time scale s):
 // Newton with φ' held slides to θ = 0 (singular), and so does the search with the velocities free.
 // As in Lagrange II's search, the steady motion at θ = 0.8 is then taken, the velocities alone solved
