@@ -46,7 +46,7 @@ inline constexpr std::array<std::size_t, 4 * num_quaternions> quaternion_coordin
 inline constexpr bool conserves_energy_without_inputs = true;
 
 /// Hamilton's equations with H = T(p) + V(q): Störmer–Verlet in canonical variables is explicit.
-inline constexpr bool separable_hamiltonian = true;
+inline constexpr bool separable_hamiltonian = false;
 
 /// The parameters by name, with the model's defaults; values() gives them in
 /// parameter_names order, as the functions below take them.

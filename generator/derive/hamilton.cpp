@@ -10,6 +10,8 @@
 /// M; beyond that M⁻¹ swells, and the generated code solves M q̇ = p − b instead.
 #include "derive/methods.hpp"
 
+#include <algorithm>
+
 #include "symbolic/trig_rational.hpp"
 
 namespace eomgen {
@@ -126,6 +128,27 @@ Equations derive_hamilton(const Model& model, const Mechanics& mech) {
 
 bool separable_hamiltonian(const Equations& e) {
   if (e.method != "hamilton") return false;
+  // In the mass-matrix form the rates are the velocities v of M(q) v = p − b: separable only where
+  // M and b are made of parameters and inputs alone and the forces ṗ(q, v) of those and q (any
+  // other symbol, such as a tree's quantity, is taken to vary)
+  if (const auto* solve = std::get_if<MomentumSolve>(&e.dynamics)) {
+    const Symbols& s = e.symbols;
+    auto made_of = [&](const ex& x, bool with_coordinates) {
+      for (auto it = x.preorder_begin(); it != x.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
+        auto among = [&](const std::vector<GiNaC::realsymbol>& set) {
+          return std::any_of(set.begin(), set.end(), [&](const GiNaC::realsymbol& y) { return it->is_equal(y); });
+        };
+        if (!among(s.parameters) && !among(s.inputs) && !(with_coordinates && among(s.coordinates))) return false;
+      }
+      return true;
+    };
+    for (unsigned i = 0; i < solve->mass_matrix.rows(); ++i)
+      for (unsigned j = 0; j < solve->mass_matrix.cols(); ++j)
+        if (!made_of(solve->mass_matrix(i, j), false)) return false;
+    return std::all_of(solve->bias.begin(), solve->bias.end(), [&](const ex& b) { return made_of(b, false); }) &&
+           std::all_of(e.forcing.begin(), e.forcing.end(), [&](const ex& f) { return made_of(f, true); });
+  }
   for (const ex& rate : e.coordinate_rates)
     for (const auto& q : e.symbols.coordinates)
       if (rate.has(q) || rate.has(e.symbols.time)) return false;

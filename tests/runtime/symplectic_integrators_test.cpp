@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "generated/header_registry.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -89,11 +92,41 @@ TEST(SymplecticIntegrators, VerletInCanonicalVariablesKeepsTheJacobiIntegral) {
   EXPECT_LT(ratio, 4.4);
 }
 
+// The spherical pendulum, and the four-link pendulum whose header solves M(q) v = p: its H couples
+// q and p through M(q), and it had been declared separable (its rates, the velocities v, name no
+// coordinate), so that Störmer–Verlet ran on it
 TEST(SymplecticIntegrators, VerletRefusesACoupledHamiltonian) {
-  CommandOutput r = run_eomgen("simulate '" + model_path("spherical_pendulum_hamilton") + "' --integrator verlet");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("needs a separable H = T(p) + V(q)"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("use gauss-legendre"), std::string::npos) << r.err;
+  for (const char* name : {"spherical_pendulum_hamilton", "n_link_pendulum_4_hamilton"}) {
+    CommandOutput r = run_eomgen("simulate '" + model_path(name) + "' --integrator verlet");
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_NE(r.err.find("needs a separable H = T(p) + V(q)"), std::string::npos) << name << ": " << r.err;
+    EXPECT_NE(r.err.find("use gauss-legendre"), std::string::npos) << r.err;
+  }
+}
+
+// Separable, H = T(p) + V(q) with forces of q alone, is ∂q'/∂q = 0 and ∂p'/∂p = 0: every Hamilton
+// model of models/ declares it exactly when its generated jacobian_state has those blocks zero at
+// three states and parameters about its default ones
+TEST(SymplecticIntegrators, EveryHamiltonianIsDeclaredSeparableExactlyWhenItIs) {
+  int hamiltonians = 0;
+  for (const GeneratedModel& model : generated_models()) {
+    if (std::string(model.abi->method) != "hamilton") continue;
+    ++hamiltonians;
+    std::size_t n = model.num_coordinates, N = model.num_states;
+    bool coupled = false;
+    for (int k = 1; k <= 3; ++k) {
+      std::vector<double> x = model.default_state, parameters = model.default_parameters, J(N * N);
+      for (std::size_t i = 0; i < N; ++i) x[i] += 0.1 * k * (1 + double(i) / double(N));
+      // a damping whose default is 0 couples p' to p all the same
+      for (std::size_t i = 0; i < parameters.size(); ++i) parameters[i] += 0.1 * k * (1 + double(i) / double(parameters.size()));
+      model.jacobian_state(0.0, x.data(), model.default_inputs.data(), parameters.data(), J.data());
+      for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t j = 0; j < N; ++j)
+          if ((i < n) == (j < n) && J[i * N + j] != 0) coupled = true;
+    }
+    EXPECT_EQ(model.abi->separable_hamiltonian, !coupled) << model.name;
+  }
+  EXPECT_GE(hamiltonians, 6);
 }
 
 }  // namespace
