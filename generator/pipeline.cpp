@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "common/deadline.hpp"
+#include "derive/constraints.hpp"
 #include "derive/first_integrals.hpp"
 #include "derive/methods.hpp"
 #include "derive/quadratic_kinetic_energy.hpp"
@@ -156,10 +157,17 @@ std::optional<Equations> derive_built_model(const Model& model, SourceLocation m
     e.kinetic_energy_from_mass_matrix = kinetic_energy_is_quadratic_form(e);
     derivation_stage("the finished equations");
     return e;
-  } catch (const std::invalid_argument& why) {
+  } catch (const UndeterminedVelocities& why) {
     diagnostics.error(method_where, "model.method", why.what(),
                       "remove a dependent constraint, or choose pseudo-velocities that, with the constraints, "
                       "determine every velocity");
+    return std::nullopt;
+  } catch (const std::invalid_argument& why) {
+    // GiNaC's refusals (a polynomial operation on coefficients that are not rational had read as a
+    // dependent constraint): a limit of the derivation, not a fault of the model
+    diagnostics.error(method_where, "model.method", fmt::format("the symbolic derivation stopped: {}", why.what()),
+                      "derive the model for another method meanwhile, and report this model file: the derivation "
+                      "should not stop on it");
     return std::nullopt;
   } catch (const SingularJointDirection& why) {
     diagnostics.error(method_where, "model.method", why.what(),

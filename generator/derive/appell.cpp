@@ -113,7 +113,7 @@ Equations derive_appell(const Model& model, const Mechanics& mech) {
   ConstraintSet constraints = constraint_set(model, mech);
   require_independent(constraints, s, mech.intermediates);
   auto chosen = pseudo_velocities(model, constraints, mech.motion);
-  if (auto* why = std::get_if<std::string>(&chosen)) throw std::invalid_argument(*why);
+  if (auto* why = std::get_if<std::string>(&chosen)) throw UndeterminedVelocities(*why);
   const PseudoVelocities& p = std::get<PseudoVelocities>(chosen);
   std::size_t k = p.symbols.size();
   AppellKinematics a = appell_kinematics(s, p);

@@ -86,7 +86,7 @@ void require_independent(const ConstraintSet& c, const Symbols& s, const std::ve
   if (dependent.empty()) return;
   std::string names;
   for (const std::string& d : dependent) names += (names.empty() ? "'" : ", '") + d + "'";
-  throw std::invalid_argument(fmt::format(
+  throw UndeterminedVelocities(fmt::format(
       "the constraint Jacobian does not have full rank at the initial state: {} depend{} on the constraints before "
       "{} in the file, so the model has more degrees of freedom than {} coordinates minus {} constraints",
       names, dependent.size() == 1 ? "s" : "", dependent.size() == 1 ? "it" : "them", s.coordinates.size(), c.size()));

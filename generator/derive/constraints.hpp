@@ -1,6 +1,8 @@
 /// @file The constraint set of a model, shared by Lagrange I and Appell.
 #pragma once
 
+#include <stdexcept>
+
 #include "derive/equations.hpp"
 #include "kinematics/mechanics.hpp"
 
@@ -22,7 +24,15 @@ double initial_value(const GiNaC::ex& e, const Symbols& symbols, const std::vect
 std::vector<std::string> dependent_constraints(const ConstraintSet& constraints, const Symbols& symbols,
                                                const std::vector<Intermediate>& intermediates = {});
 
-/// Throws std::invalid_argument naming the dependent constraints, if there are any.
+/// Constraints and pseudo-velocities that leave some velocity undetermined: dependent constraints,
+/// or pseudo-velocities that with the constraints do not determine every velocity. Its own type, so
+/// that the pipeline's hint (remove a constraint, choose other pseudo-velocities) goes with it and
+/// not with GiNaC's invalid arguments.
+struct UndeterminedVelocities : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Throws UndeterminedVelocities naming the dependent constraints, if there are any.
 void require_independent(const ConstraintSet& constraints, const Symbols& symbols,
                          const std::vector<Intermediate>& intermediates = {});
 
