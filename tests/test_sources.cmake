@@ -98,6 +98,7 @@ set(EOMGEN_TEST_FILES
   studies/stability_studies_test.cpp                slow
   studies/run_studies_test.cpp                      slow
   cli/equilibrium_search_test.cpp                   cli
+  cli/first_order_search_test.cpp                   cli
   cli/stability_command_test.cpp                    cli
   cli/angles_beside_lengths_test.cpp                cli
   cli/at_completion_test.cpp                        cli

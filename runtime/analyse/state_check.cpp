@@ -36,10 +36,10 @@ std::string non_finite_quantities(const Problem& p, double t, const std::vector<
 
 // At zero velocities, where the terms of T are those of the steps alone: at a momentum of 2e12
 // (a governor on a time scale of 1e-12 s) the steps of 1 of another momentum changed T, of 1e24,
-// below its rounding, and the Hessian's eigenvalues came out ±2e7. The cross terms are taken
-// with each step rescaled to change T by the same amount (δ_a² H_aa, the largest the given steps
-// make), so that neither is lost
-// beside the other's square (momenta of a length and of an angle differ by orders of magnitude).
+// below its rounding, and the Hessian's eigenvalues came out ±2e7. The cross terms are taken with
+// each step rescaled to change T by the same amount (δ_a² H_aa, the largest the given steps make),
+// so that neither is lost beside the other's square (momenta of a length and of an angle differ by
+// orders of magnitude).
 Eigen::MatrixXd kinetic_metric(const eomgen_model_abi& m, double t, const std::vector<double>& x,
                                const double* parameters, std::vector<double> steps) {
   std::size_t n = m.num_coordinates, k = m.num_velocities;
