@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -228,12 +227,8 @@ Equilibrium balance_by_newton(const Problem& problem, std::vector<double> x, con
 Equilibrium come_to_rest(const Problem& problem, std::vector<double> x, const std::vector<int>& unknowns) {
   const eomgen_model_abi& m = *problem.model;
   std::size_t n = m.num_coordinates;
-  std::vector<std::complex<double>> rates = balanced_eigenvalues(state_jacobian(problem, 0.0, x));
-  double fastest = 0;
-  for (const std::complex<double>& r : rates) fastest = std::max(fastest, std::abs(r));
-  double slowest = fastest;
-  for (const std::complex<double>& r : rates)
-    if (std::abs(r) > 1e-6 * fastest) slowest = std::min(slowest, std::abs(r));
+  const RateRange range = rate_range(state_jacobian(problem, 0.0, x));
+  const double fastest = range.fastest, slowest = range.slowest;
   Equilibrium rest;
   if (!(fastest > 0) || !std::isfinite(fastest)) return rest;
   const double h = 0.2 / fastest, c = 2 * slowest, start = forcing_residual(problem, x);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <optional>
 #include <string>
 
@@ -109,12 +108,8 @@ std::string first_search_text(const Problem& problem, const std::vector<double>&
 Equilibrium first_order_come_to_rest(const Problem& problem, std::vector<double> x, const std::vector<int>& coordinates) {
   const eomgen_model_abi& m = *problem.model;
   std::size_t n = m.num_coordinates;
-  double fastest = 0;
-  std::vector<std::complex<double>> rates = balanced_eigenvalues(state_jacobian(problem, 0.0, x));
-  for (const std::complex<double>& r : rates) fastest = std::max(fastest, std::abs(r));
-  double slowest = fastest;
-  for (const std::complex<double>& r : rates)
-    if (std::abs(r) > 1e-6 * fastest) slowest = std::min(slowest, std::abs(r));
+  const RateRange range = rate_range(state_jacobian(problem, 0.0, x));
+  const double fastest = range.fastest, slowest = range.slowest;
   Equilibrium rest;
   if (!(fastest > 0) || !std::isfinite(fastest)) return rest;
   auto at_rest = [&](std::vector<double> y) {

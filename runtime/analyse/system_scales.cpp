@@ -85,6 +85,16 @@ std::vector<std::complex<double>> balanced_eigenvalues(const Eigen::MatrixXd& A)
   return {values.data(), values.data() + values.size()};
 }
 
+RateRange rate_range(const Eigen::MatrixXd& A) {
+  std::vector<std::complex<double>> rates = balanced_eigenvalues(A);
+  RateRange range;
+  for (const std::complex<double>& r : rates) range.fastest = std::max(range.fastest, std::abs(r));
+  range.slowest = range.fastest;
+  for (const std::complex<double>& r : rates)
+    if (std::abs(r) > 1e-6 * range.fastest) range.slowest = std::min(range.slowest, std::abs(r));
+  return range;
+}
+
 double spectral_scale(const Eigen::MatrixXd& A) { return A.size() == 0 ? 0.0 : balanced(A).cwiseAbs().maxCoeff(); }
 
 double eigenvalue_scale(const Eigen::MatrixXd& balanced_A, const std::vector<std::complex<double>>& eigenvalues) {

@@ -38,6 +38,14 @@ double spectral_scale(const Eigen::MatrixXd& A);
 /// eigenvalue −1e10 beside an entry 1.4e17), and clustering against them merged 0 and −1e10.
 double eigenvalue_scale(const Eigen::MatrixXd& balanced_A, const std::vector<std::complex<double>>& eigenvalues);
 
+/// The fastest and the slowest rate of A: the largest |λ|, and the smallest |λ| above 1e-6 of it
+/// (rigid-body modes and cyclic coordinates, λ = 0, set no time scale); both 0 where A has none,
+/// NaN where it is not finite. The step and the damping of a come-to-rest search take them.
+struct RateRange {
+  double fastest = 0, slowest = 0;
+};
+RateRange rate_range(const Eigen::MatrixXd& A);
+
 /// M q'' + D q' + G q' + K q + N q = 0 in mass-normalized coordinates M^½ q: the matrices
 /// L X L with L = M^−½, rates D', G' in 1/s and stiffnesses K', N' in 1/s², and the
 /// system's rate, max(√|K'|, |D'|, |G'|, √|N'|) with |·| the largest entry.
