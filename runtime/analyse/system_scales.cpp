@@ -86,12 +86,14 @@ std::vector<std::complex<double>> balanced_eigenvalues(const Eigen::MatrixXd& A)
 }
 
 RateRange rate_range(const Eigen::MatrixXd& A) {
+  // std::max(0, NaN) is 0: a non-finite A would otherwise give the finite rates of its other entries
+  if (!A.allFinite()) return {std::nan(""), std::nan("")};
   std::vector<std::complex<double>> rates = balanced_eigenvalues(A);
   RateRange range;
   for (const std::complex<double>& r : rates) range.fastest = std::max(range.fastest, std::abs(r));
   range.slowest = range.fastest;
   for (const std::complex<double>& r : rates)
-    if (std::abs(r) > 1e-6 * range.fastest) range.slowest = std::min(range.slowest, std::abs(r));
+    if (std::abs(r) > relative_cluster_tolerance * range.fastest) range.slowest = std::min(range.slowest, std::abs(r));
   return range;
 }
 

@@ -38,9 +38,10 @@ double spectral_scale(const Eigen::MatrixXd& A);
 /// eigenvalue −1e10 beside an entry 1.4e17), and clustering against them merged 0 and −1e10.
 double eigenvalue_scale(const Eigen::MatrixXd& balanced_A, const std::vector<std::complex<double>>& eigenvalues);
 
-/// The fastest and the slowest rate of A: the largest |λ|, and the smallest |λ| above 1e-6 of it
-/// (rigid-body modes and cyclic coordinates, λ = 0, set no time scale); both 0 where A has none,
-/// NaN where it is not finite. The step and the damping of a come-to-rest search take them.
+/// The fastest and the slowest rate of A: the largest |λ|, and the smallest |λ| above
+/// relative_cluster_tolerance of it (rigid-body modes and cyclic coordinates, λ = 0, set no time
+/// scale); both 0 where every λ is 0, NaN where A is not finite. The step and the damping of a
+/// come-to-rest search take them.
 struct RateRange {
   double fastest = 0, slowest = 0;
 };

@@ -89,6 +89,21 @@ TEST(ScaleFreeLinear, AFreeCartsDoublePoleIsAtZeroAtEveryScale) {
   });
 }
 
+// The come-to-rest searches step by the fastest rate and damp by the slowest: the free cart's
+// double pole at 0 (split by rounding to about √ε of ω) sets no rate, so both are the pendulum's
+// ω, in any units; a NaN in A gives NaN rates, not the finite ones of its other entries.
+TEST(ScaleFreeLinear, AFreeCartsRatesAreItsPendulumsAtEveryScale) {
+  for_each_cart(17, [](const CartSystem& c, const std::string& at) {
+    runtime::RateRange range = runtime::rate_range(c.A);
+    EXPECT_NEAR(range.fastest / c.omega, 1, 1e-9) << at;
+    EXPECT_NEAR(range.slowest / c.omega, 1, 1e-9) << at;
+    Eigen::MatrixXd broken = c.A;
+    broken(0, 1) = std::nan("");
+    runtime::RateRange none = runtime::rate_range(broken);
+    EXPECT_TRUE(std::isnan(none.fastest) && std::isnan(none.slowest)) << at;
+  });
+}
+
 // The tolerance had been 1e-9 max(1, |A|, |B|) on Kalman's matrix: a cart of 1e-9 kg (|B| = 1e9)
 // was "NOT controllable (rank 2 of 4)", one of 1e9 kg "rank 0 of 4".
 TEST(ScaleFreeLinear, AFreeCartIsControllableAndObservableFromItsPositionAtEveryScale) {
