@@ -407,19 +407,21 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_coupler_link_go_x = cos_q_crank*p_a;
   const T k_coupler_link_go_y = p_a*sin_q_crank;
   const T k_coupler_link_gvw_z = dq_coupler + dq_crank;
-  const T k_coupler_link_gaw_z = ddq[0] + ddq[1];
+  const T k_coupler_link_galw_z = ddq[0] + ddq[1];
   const T k_rocker_link_gvv_y = -dq_rocker*p_d;
   const T k_rocker_link_gB0c_y = (T(1)/T(2))*p_c*sin_q_rocker;
   const T k_crank_link_gIh_y = (T(3)/T(10))*k_crank_link_gB0c_y;
   const T k_coupler_link_gvv_x = dq_coupler*k_coupler_link_go_y;
   const T k_coupler_link_gvv_y = -dq_coupler*k_coupler_link_go_x;
+  const T k_coupler_link_galv_x = ddq[1]*k_coupler_link_go_y;
+  const T k_coupler_link_galv_y = -ddq[1]*k_coupler_link_go_x;
   const T k_coupler_link_gdSv_x = dq_crank*k_coupler_link_go_x;
   const T k_coupler_link_gdSv_y = dq_crank*k_coupler_link_go_y;
   const T k_coupler_link_gB0c_x = (T(1)/T(100))*k_coupler_link_gR01 + (T(1)/T(2))*k_coupler_link_gR00*p_b + k_coupler_link_go_x;
   const T k_coupler_link_gB0c_y = (T(1)/T(100))*k_coupler_link_gR00 - (T(1)/T(2))*k_coupler_link_gR01*p_b + k_coupler_link_go_y;
   const T k_rocker_link_gIh_y = (T(1)/T(2))*k_rocker_link_gB0c_y;
-  const T k_coupler_link_gav_x = ddq[1]*k_coupler_link_go_y + dq_coupler*k_coupler_link_gdSv_x;
-  const T k_coupler_link_gav_y = -ddq[1]*k_coupler_link_go_x + dq_coupler*k_coupler_link_gdSv_y + p_g;
+  const T k_coupler_link_ga0v_x = dq_coupler*k_coupler_link_gdSv_x;
+  const T k_coupler_link_ga0v_y = dq_coupler*k_coupler_link_gdSv_y + p_g;
   const T k_coupler_link_gIh_x = (T(3)/T(5))*k_coupler_link_gB0c_x;
   const T k_coupler_link_gIh_y = (T(3)/T(5))*k_coupler_link_gB0c_y;
   const T k_rocker_link_gIvv_x = -dq_rocker*k_rocker_link_gIh_y;
@@ -430,6 +432,8 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_coupler_link_gAv_y = T(2)*k_coupler_link_gdSv_y;
   const T k_coupler_link_gIvv_x = (T(3)/T(5))*k_coupler_link_gvv_x - k_coupler_link_gIh_y*k_coupler_link_gvw_z;
   const T k_coupler_link_gIvv_y = (T(3)/T(5))*k_coupler_link_gvv_y + k_coupler_link_gIh_x*k_coupler_link_gvw_z;
+  const T k_coupler_link_gYv_x = (T(3)/T(5))*k_coupler_link_galv_x - k_coupler_link_gIh_y*k_coupler_link_galw_z;
+  const T k_coupler_link_gYv_y = (T(3)/T(5))*k_coupler_link_galv_y + k_coupler_link_gIh_x*k_coupler_link_galw_z;
   const T k_coupler_link_gD22 = T(2)*k_coupler_link_gIh_x*k_coupler_link_gvv_x + T(2)*k_coupler_link_gIh_y*k_coupler_link_gvv_y;
   const T k_crank_link_gCh_y = k_coupler_link_gIh_y + k_crank_link_gIh_y;
   const T k_coupler_link_gISv_x = (T(3)/T(5))*k_coupler_link_go_y - k_coupler_link_gIh_y;
@@ -438,14 +442,16 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T k_rocker_link_gSPw_z = k_rocker_link_gIvv_x*p_d;
   const T c4 = k_coupler_link_gIvv_y*k_coupler_link_go_y;
   const T c5 = k_coupler_link_gIvv_x*k_coupler_link_go_x;
-  const T k_coupler_link_gFv_x = (T(3)/T(5))*k_coupler_link_gav_x - k_coupler_link_gIh_y*k_coupler_link_gaw_z - k_coupler_link_gIvv_y*k_coupler_link_gvw_z;
-  const T k_coupler_link_gFv_y = (T(3)/T(5))*k_coupler_link_gav_y + k_coupler_link_gIh_x*k_coupler_link_gaw_z + k_coupler_link_gIvv_x*k_coupler_link_gvw_z;
+  const T k_coupler_link_gF0v_x = (T(3)/T(5))*k_coupler_link_ga0v_x - k_coupler_link_gIvv_y*k_coupler_link_gvw_z;
+  const T k_coupler_link_gF0v_y = (T(3)/T(5))*k_coupler_link_ga0v_y + k_coupler_link_gIvv_x*k_coupler_link_gvw_z;
   const T k_coupler_link_gDSw_z = -c4 - c5 + k_coupler_link_gD22;
   const T k_coupler_link_gSPw_z = c4 + c5;
   const T k_rocker_link_gBSw_z = k_rocker_link_gDSw_z - k_rocker_link_gSPw_z;
-  const T k_coupler_link_gGw_z = k_coupler_link_gFv_x*k_coupler_link_go_x + k_coupler_link_gFv_y*k_coupler_link_go_y + k_coupler_link_gIh_x*k_coupler_link_gddSv_y - k_coupler_link_gIh_y*k_coupler_link_gddSv_x;
+  const T k_coupler_link_gFv_x = k_coupler_link_gF0v_x + k_coupler_link_gYv_x;
+  const T k_coupler_link_gFv_y = k_coupler_link_gF0v_y + k_coupler_link_gYv_y;
   const T k_coupler_link_gBSw_z = k_coupler_link_gDSw_z - k_coupler_link_gSPw_z;
   const T k_coupler_link_gHw_z = -k_coupler_link_gAv_x*k_coupler_link_gIh_y + k_coupler_link_gAv_y*k_coupler_link_gIh_x + k_coupler_link_gDSw_z + k_coupler_link_gSPw_z;
+  const T k_coupler_link_gGw_z = k_coupler_link_gFv_x*k_coupler_link_go_x + k_coupler_link_gFv_y*k_coupler_link_go_y + k_coupler_link_gIh_x*k_coupler_link_gddSv_y - k_coupler_link_gIh_y*k_coupler_link_gddSv_x;
   F[2] = T(0);
   F[5] = T(0);
   F[8] = T(0);
@@ -460,10 +466,10 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   F[6] = k_coupler_link_gISv_x*p_g;
   F[7] = k_coupler_link_gISv_x*k_coupler_link_gddSv_x + k_coupler_link_gISv_y*k_coupler_link_gddSv_y;
   F[17] = k_rocker_link_gBSw_z;
-  F[1] = k_coupler_link_gGw_z;
   F[9] = k_coupler_link_gBSw_z;
   F[10] = k_coupler_link_gAv_x*k_coupler_link_gISv_x + k_coupler_link_gAv_y*k_coupler_link_gISv_y + k_coupler_link_gBSw_z;
   F[4] = k_coupler_link_gHw_z;
+  F[1] = k_coupler_link_gGw_z;
 }
 
 }  // namespace detail

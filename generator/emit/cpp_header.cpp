@@ -161,13 +161,16 @@ std::string jacobian_state_function(const Equations& e, bool tree_pass) {
   else w.line(fmt::format("T rows[{}] = {{}};", n * width));
   // a tree's rows are ∂τ/∂x, written in place by the gradient when they need no padding, and
   // negated in the solve
+  // the loops' pass, or the closed form's straight-line code with q'' to be solved for (no given_ddq)
+  std::string pass_call = fmt::format("detail::tree_acceleration_gradient(t, x, u, p, {}L, D, {});",
+                                      e.gradient_loops() ? "" : "static_cast<const T*>(nullptr), ", width == N ? "rows" : "F");
   if (tree_pass && width == N) {
-    w.line("detail::tree_acceleration_gradient(t, x, u, p, L, D, rows);");
+    w.line(pass_call);
   } else if (newton_euler && width == N) {
     w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
   } else if (newton_euler) {
     w.line(fmt::format("T F[{}];", n * N));
-    w.line(tree_pass ? "detail::tree_acceleration_gradient(t, x, u, p, L, D, F);" : "detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
+    w.line(tree_pass ? pass_call : "detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
     w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
     w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) rows[i * {} + j] = F[i * {} + j];", N, width, N));
   } else {
@@ -362,9 +365,14 @@ std::string all_functions(const Equations& e) {
   bool tree_pass = jacobian_takes_tree_pass(e, mass_matrix_and_forcing.straight_line_operations);
   // the loops' templates and tables come first: mass_matrix_and_forcing may call them
   if (dynamics_form(e) == DynamicsForm::newton_euler) functions += tree_gradient_loops_function(e, mass_matrix_and_forcing.by_loops);
+  std::string gradient = newton_euler_gradient_function(e);
+  std::string acceleration_gradient = tree_pass ? tree_acceleration_gradient_function(e) : "";
+  if (!tree_pass && dynamics_form(e) == DynamicsForm::newton_euler) {
+    std::string fused = closed_form_acceleration_gradient_functions(e, mass_matrix_and_forcing.operations, gradient);
+    if (!fused.empty()) gradient = std::move(fused), tree_pass = true;
+  }
   functions += mass_matrix_and_forcing.function + mass_matrix_function(e) + forcing_function(e) + factored_accelerations_function(e) + rhs_function(e) +
-               newton_euler_gradient_function(e) + (tree_pass ? tree_acceleration_gradient_function(e) : "") +
-               jacobian_state_function(e, tree_pass) + jacobian_input_function(e) + linearization_function(e);
+               gradient + acceleration_gradient + jacobian_state_function(e, tree_pass) + jacobian_input_function(e) + linearization_function(e);
   functions += e.kinetic_energy_from_mass_matrix
                    ? kinetic_energy_from_mass_matrix_function(e)
                    : scalar_function(e, "kinetic_energy", e.kinetic_energy,

@@ -142,9 +142,60 @@ std::string tree_acceleration_gradient_body(const Equations& e) {
   w.line("ldlt_factor(M, L, D);");
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) ddq[i] = f[i];", n));
   w.line("ldlt_solve(L, D, ddq);");
+  w.fresh_subexpressions("cq");  // as in straight_tree_acceleration_gradient_body
   w.assign(swept_entries(w, sweep, applied, n), written_into_F);
   call_root_motion(w, e);
   w.line("});");
+  return without_unused_locals(w.finish(all_unused));
+}
+
+// the body of detail::tree_acceleration_gradient in straight-line code, for a tree whose gradient is
+// in closed form: M and f from the composite inertias and the forces at q'' = 0 that the gradient
+// forms anyway (the applied part's added), their solve, and ∂τ/∂(q, q') at the solved q''. The
+// intermediates that hold q'' are written after the solve, since M and f do not use them.
+std::string straight_tree_acceleration_gradient_body(const Equations& e) {
+  const Symbols& s = e.symbols;
+  std::size_t n = e.num_velocities(), nq = s.num_coordinates(), W = nq + n;
+  const BodiesGradient& bodies = *e.newton_euler()->bodies_gradient;
+  const InverseDynamicsGradient& closed = bodies.closed_form;
+  BodyWriter w(e);
+  TangentSweep sweep(w, state_directions(s));
+  sweep.follow(w.write_intermediates_of(bodies.applied_inverse_dynamics));
+  GiNaC::exmap at_rest;
+  for (const GiNaC::symbol& a : w.accelerations()) at_rest[a] = 0;
+  std::vector<ex> mass_and_forcing;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j)
+      mass_and_forcing.push_back(bodies.applied_inverse_dynamics[i].diff(w.accelerations()[j]).expand() +
+                                 closed.mass_matrix(unsigned(i), unsigned(j)));
+  for (std::size_t i = 0; i < n; ++i)
+    mass_and_forcing.push_back(-bodies.applied_inverse_dynamics[i].subs(at_rest) - closed.bias[i]);
+  std::vector<std::string> code = w.batch(mass_and_forcing);
+  w.line(fmt::format("T M[{}];", n * n));
+  write_symmetric(w, std::vector<std::string>(code.begin(), code.end() - long(n)), n, "M");
+  // the factors in local arrays, which g++ keeps in registers (through L and D, which might alias
+  // each other, every step went through memory: the 7-joint arm's jacobian_state took 1.3 times as long)
+  w.line(fmt::format("T ddq[{}];", n));
+  w.line("if (given_ddq) {");
+  w.line(fmt::format("  for (std::size_t i = 0; i < {}; ++i) ddq[i] = given_ddq[i];", n));
+  w.line("} else {");
+  for (std::size_t i = 0; i < n; ++i) w.line(fmt::format("  ddq[{}] = {};", i, code[code.size() - n + i]));
+  w.line(fmt::format("  T factor[{}] = {{}};", n * n));
+  w.line(fmt::format("  T pivots[{}];", n));
+  w.line("  ldlt_factor(M, factor, pivots);");
+  w.line("  ldlt_solve(factor, pivots, ddq);");
+  w.line(fmt::format("  for (std::size_t i = 0; i < {}; ++i) L[i] = factor[i];", n * n));
+  w.line(fmt::format("  for (std::size_t i = 0; i < {}; ++i) D[i] = pivots[i];", n));
+  w.line("}");
+  // τ_a's code must not reuse M's and f's temporaries, which the sweep has not followed: their
+  // tangents would count as zero (a gyroscopic torque's ∂τ/∂s lost its c's)
+  w.fresh_subexpressions("cq");
+  std::vector<ex> entries = swept_entries(w, sweep, bodies.applied_inverse_dynamics, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += closed.coordinates(unsigned(i), unsigned(j));
+    for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += closed.velocities(unsigned(i), unsigned(j));
+  }
+  w.assign(entries, written_into_F);
   return without_unused_locals(w.finish(all_unused));
 }
 
@@ -163,16 +214,51 @@ bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_o
          applied_part_apart(e);
 }
 
+namespace {
+
+constexpr const char* tree_acceleration_gradient_signature =
+    "void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* L, T* D, T* F)";
+constexpr const char* given_accelerations_signature =
+    "void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F)";
+
+std::string in_detail_namespace(const std::string& f) { return "namespace detail {\n\n" + f + "}  // namespace detail\n\n"; }
+
+}  // namespace
+
 std::string tree_acceleration_gradient_function(const Equations& e) {
   std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
-  return "namespace detail {\n\n" +
-         function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree_pass at\n"
-                              "/// q'' = 0, q'' = M^-1 f, and d tau/d(q, q') at those q'' from the same pass (F: {0}x{1},\n"
-                              "/// row-major), where factored_accelerations would form M and f a second time.\n",
-                              n, W),
-                  "void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, T* L, T* D, T* F)",
-                  tree_acceleration_gradient_body(e)) +
-         "}  // namespace detail\n\n";
+  return in_detail_namespace(
+      function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree_pass at\n"
+                           "/// q'' = 0, q'' = M^-1 f, and d tau/d(q, q') at those q'' from the same pass (F: {0}x{1},\n"
+                           "/// row-major), where factored_accelerations would form M and f a second time.\n",
+                           n, W),
+               tree_acceleration_gradient_signature, tree_acceleration_gradient_body(e)));
+}
+
+std::string closed_form_acceleration_gradient_functions(const Equations& e, long factored_operations, const std::string& gradient_function) {
+  const NewtonEulerRecursion* recursion = e.newton_euler();
+  // (a model with multipliers solves its own system in jacobian_state: M and f here would serve nothing)
+  if (dynamics_form(e) != DynamicsForm::newton_euler || e.has_multipliers || !recursion->bodies_gradient || e.gradient_loops() ||
+      recursion->bodies_gradient->closed_form.bias.empty() || !applied_part_apart(e))
+    return "";
+  std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
+  std::string fused = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f at the given q''\n"
+                                           "/// (linearization), or, for jacobian_state with given_ddq null, at q'' = M^-1 f, with M =\n"
+                                           "/// L^T D L into L and D: M and f from the composite inertias and forces at q'' = 0 of the\n"
+                                           "/// bodies' part in closed form (in world coordinates), a tangent sweep through the rest.\n"
+                                           "/// given_ddq: {0} or null; F: {0}x{1}, row-major.\n",
+                                           n, W),
+                               given_accelerations_signature, straight_tree_acceleration_gradient_body(e));
+  long ldlt = long(n * n * n / 6 + 3 * n * n);
+  long apart = factored_operations + ldlt + count_operations(gradient_function, "inverse_dynamics_gradient", n);
+  if (count_operations(fused, "tree_acceleration_gradient", n) >= apart) return "";
+  // inverse_dynamics_gradient (linearization's, at given q'') by the same code, not written twice
+  std::string at_given = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held, by\n"
+                                              "/// tree_acceleration_gradient at the given q''. ddq: {0}; F: {0}x{1}, row-major.\n",
+                                              n, W),
+                                  "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
+                                  fmt::format("  T L[{}];\n  T D[{}];\n  tree_acceleration_gradient(t, x, u, p, ddq, L, D, F);\n", n * n, n));
+  return in_detail_namespace(fused + at_given);
 }
 
 std::string newton_euler_gradient_function(const Equations& e) {

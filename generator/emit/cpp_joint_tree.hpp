@@ -51,5 +51,13 @@ MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e);
 bool jacobian_takes_tree_pass(const Equations& e, long mass_matrix_and_forcing_operations);
 /// detail::tree_acceleration_gradient, for jacobian_takes_tree_pass.
 std::string tree_acceleration_gradient_function(const Equations& e);
+/// detail::tree_acceleration_gradient in straight-line code for a tree whose bodies' gradient is in
+/// closed form (not the loops): M and f from the gradient's own composite inertias and forces at
+/// q'' = 0, the solve, and the gradient at the solved q'' (or at given q''), with
+/// detail::inverse_dynamics_gradient calling it; to replace `gradient_function` (that function by
+/// itself), or "" where it would not have fewer operations than `factored_operations` (M and f,
+/// counted in detail::mass_matrix_and_forcing), the factorization and `gradient_function` together.
+std::string closed_form_acceleration_gradient_functions(const Equations& e, long factored_operations,
+                                                        const std::string& gradient_function);
 
 }  // namespace eomgen

@@ -57,7 +57,8 @@ class Gradient {
     R_.resize(n, GiNaC::matrix(3, 3));
     origin_.resize(n);
     S_.resize(n), v_.resize(n), a_.resize(n), still_v_.resize(n), still_a_.resize(n), turning_v_.resize(n);
-    inertia_.resize(n), force_.resize(n), momentum_.resize(n);
+    a0_.resize(n), driven_a_.resize(n);
+    inertia_.resize(n), force_.resize(n), momentum_.resize(n), force0_.resize(n), driven_force_.resize(n);
     D_.resize(n, GiNaC::matrix(6, 6));
     hinge_dS_.resize(n);
   }
@@ -79,6 +80,8 @@ class Gradient {
     SpatialVector rest, fall{{0, 0, 0}, scaled(-1, gravity)};
     const SpatialVector& vp = root ? rest : v_[p];
     const SpatialVector& ap = root ? fall : a_[p];
+    const SpatialVector& a0p = root ? fall : a0_[p];
+    const SpatialVector& driven_p = root ? rest : driven_a_[p];
     bool at_rest = cyclic(i);
     GiNaC::matrix R = root ? (at_rest ? l.rest_pose->first : l.turn) : R_[p].mul(l.turn);
     for (unsigned a = 0; a < 3; ++a)
@@ -100,16 +103,20 @@ class Gradient {
     }
     turning_v_[i] = turning;
     if (l.columns.empty()) {
-      v_[i] = vp, a_[i] = ap;
+      v_[i] = vp, a_[i] = ap, a0_[i] = a0p, driven_a_[i] = driven_p;
     } else {
       v_[i] = named(i, "gv", vp + kept + turning);
+      // a = a⁰ + α: α = Σ S q'' over the joints up to the root, a⁰ the rest (gravity included), so
+      // that M and τ at q'' = 0 come from the same quantities (tree_acceleration_gradient)
+      driven_a_[i] = named(i, "gal", driven_p + driven);
       if (is_hinge(i)) {
         // v × S s' = s' (v_λ + S s') × S = s' Ψ': Ψ' = v_λ × S named here, once, for Ψ'' and the pairs
         hinge_dS_[i] = named(i, "gdS", motion_cross(vp, S_[i][0]));
-        a_[i] = named(i, "ga", ap + driven + scaled(l.columns[0].rate, *hinge_dS_[i]));
+        a0_[i] = named(i, "ga0", a0p + scaled(l.columns[0].rate, *hinge_dS_[i]));
       } else {
-        a_[i] = named(i, "ga", ap + driven + motion_cross(v_[i], turning) + motion_cross(vp, kept));
+        a0_[i] = named(i, "ga0", a0p + motion_cross(v_[i], turning) + motion_cross(vp, kept));
       }
+      a_[i] = named(i, "ga", a0_[i] + driven_a_[i]);
       still_v_[i] = named(i, "gw", vp + kept);
       still_a_[i] = named(i, "gW", ap + kept_driven + motion_cross(vp, kept));
     }
@@ -123,12 +130,15 @@ class Gradient {
         inertia_[i].mass += inertia_[c].mass;
         inertia_[i].first = inertia_[i].first + inertia_[c].first;
         inertia_[i].J = inertia_[i].J.add(inertia_[c].J);
-        force_[i] = force_[i] + force_[c];
+        force0_[i] = force0_[i] + force0_[c];
+        driven_force_[i] = driven_force_[i] + driven_force_[c];
         momentum_[i] = momentum_[i] + momentum_[c];
         D_[i] = D_[i].add(D_[c]);
       }
       inertia_[i] = named(i, "gC", inertia_[i]);
-      force_[i] = named(i, "gF", force_[i]);
+      force0_[i] = named(i, "gF0", force0_[i]);
+      driven_force_[i] = named(i, "gY", driven_force_[i]);
+      force_[i] = named(i, "gF", force0_[i] + driven_force_[i]);
       momentum_[i] = named(i, "gP", momentum_[i]);
       for (unsigned r = 0; r < 6; ++r)
         for (unsigned c = r; c < 6; ++c) D_[i](r, c) = D_[i](c, r) = name(i, fmt::format("gD{}{}", r, c), D_[i](r, c));
@@ -198,10 +208,22 @@ class Gradient {
   // chain rule each pair of links adds its part)
   InverseDynamicsGradient pairs(std::size_t velocities, std::size_t coordinates) const {
     InverseDynamicsGradient g{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
-                              GiNaC::matrix(unsigned(velocities), unsigned(velocities)), std::nullopt};
+                              GiNaC::matrix(unsigned(velocities), unsigned(velocities)), std::nullopt,
+                              GiNaC::matrix(unsigned(velocities), unsigned(velocities)), std::vector<ex>(velocities, 0)};
     for (std::size_t k = 0; k < links_.size(); ++k)
       for (int up = int(k); up >= 0; up = links_[std::size_t(up)].parent) {
         std::size_t j = std::size_t(up);
+        // M_kj = S_j·I^C_k S_k, once per ordered pair of columns, and τ⁰_k = S_k·F⁰_k
+        for (std::size_t r = 0; r < links_[k].columns.size(); ++r) {
+          unsigned i = unsigned(links_[k].columns[r].velocity);
+          if (j == k) g.bias[i] += power(S_[k][r], force0_[k]).expand();
+          for (std::size_t c = 0; c < links_[j].columns.size(); ++c) {
+            unsigned m = unsigned(links_[j].columns[c].velocity);
+            ex entry = power(S_[j][c], IS_[k][r]).expand();
+            g.mass_matrix(i, m) += entry;
+            if (j != k) g.mass_matrix(m, i) += entry;
+          }
+        }
         // the directions of j in the rows of k, which j's joint carries (or k = j)
         for (std::size_t r = 0; r < links_[k].columns.size(); ++r) {
           const TreeLink::Column& row = links_[k].columns[r];
@@ -381,7 +403,8 @@ class Gradient {
     if (l.bodies.empty()) return;
     inertia_[i] = named(i, "gI", I);
     SpatialVector Iv = named(i, "gIv", apply(inertia_[i], v_[i]));
-    force_[i] = apply(inertia_[i], a_[i]) + force_cross(v_[i], Iv);
+    force0_[i] = apply(inertia_[i], a0_[i]) + force_cross(v_[i], Iv);
+    driven_force_[i] = apply(inertia_[i], driven_a_[i]);
     momentum_[i] = Iv;
     GiNaC::symbol x[6];
     SpatialVector X{{x[0], x[1], x[2]}, {x[3], x[4], x[5]}};
@@ -426,10 +449,12 @@ class Gradient {
   std::vector<Vector3> origin_;
   std::vector<std::vector<SpatialVector>> S_;  // per column
   std::vector<SpatialVector> v_, a_;
+  std::vector<SpatialVector> a0_, driven_a_;  // a = a⁰ + α, α the part of the joints' q''
   std::vector<SpatialVector> still_v_, still_a_;  // w and W: the joint's motion that its coordinates do not turn
   std::vector<SpatialVector> turning_v_;          // V_b: the turning columns' part of the joint's velocity
   std::vector<SpatialInertia> inertia_;
   std::vector<SpatialVector> force_, momentum_;
+  std::vector<SpatialVector> force0_, driven_force_;  // F = F⁰ + Y: of a⁰ and of α
   std::vector<GiNaC::matrix> D_;  // symmetric
   std::vector<std::vector<SpatialVector>> twist_, dS_, ddS_, A_;  // joint_motion()
   std::vector<std::vector<SpatialVector>> IS_, BS_, G_, H_;       // joint_forces()
@@ -440,8 +465,9 @@ class Gradient {
 
 std::vector<ex> written_expressions(const BodiesGradient& g) {
   std::vector<ex> out = g.applied_inverse_dynamics;
-  for (const GiNaC::matrix* m : {&g.closed_form.coordinates, &g.closed_form.velocities})
+  for (const GiNaC::matrix* m : {&g.closed_form.coordinates, &g.closed_form.velocities, &g.closed_form.mass_matrix})
     for (unsigned i = 0; i < m->nops(); ++i) out.push_back(m->op(i));
+  out.insert(out.end(), g.closed_form.bias.begin(), g.closed_form.bias.end());
   if (!g.closed_form.loops) return out;
   const HingeTreeLinks& l = *g.closed_form.loops;
   auto add = [&](const auto& rows) {
@@ -465,7 +491,7 @@ InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, 
   if (velocities > loops_beyond_velocities && joint_pairs(links) > loops_beyond_pairs && g.loops_take_it()) {
     InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
                                  GiNaC::matrix(unsigned(velocities), unsigned(velocities)),
-                                 g.loop_inputs(gravity, g.jointed_root(gravity, ddq))};
+                                 g.loop_inputs(gravity, g.jointed_root(gravity, ddq)), GiNaC::matrix(1, 1), {}};
     return zero;
   }
   g.forward(gravity, ddq);

@@ -115,6 +115,11 @@ struct InverseDynamicsGradient {
   /// set for a long tree of hinges and slides, whose derivatives are then those loops' (the two
   /// matrices above zero)
   std::optional<HingeTreeLinks> loops;
+  /// the bodies' M = ∂τ/∂q'' (M_kj = S_k·I^C_k S_j) and τ at q'' = 0 (S_k·F⁰_k), from the same
+  /// quantities, so that jacobian_state may solve for q'' without forming M and f a second time
+  /// (empty beside the loops)
+  GiNaC::matrix mass_matrix;
+  std::vector<GiNaC::ex> bias;
 };
 
 /// A joint tree's τ in two parts for its derivatives: the bodies', whose ∂τ/∂(q, s) are the

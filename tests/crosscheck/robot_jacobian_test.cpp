@@ -14,12 +14,14 @@
 #include <cmath>
 #include <complex>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "ball_hung_chain.hpp"
 #include "branched_tree.hpp"
 #include "coupled_hand.hpp"
 #include "gantry_hand.hpp"
+#include "gyroscopic_arm.hpp"
 #include "quadruped.hpp"
 #include "seven_joint_arm.hpp"
 
@@ -138,6 +140,25 @@ TEST(RobotJacobians, TheLoopsBelowABallJointAreTheComplexStepDerivative) {
   EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(ball_hung_chain);
 }
 
-TEST(RobotJacobians, TheArmsStraightLineCodeIsTheComplexStepDerivative) { EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(seven_joint_arm); }
+TEST(RobotJacobians, TheArmsStraightLineCodeIsTheComplexStepDerivative) {
+  EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(seven_joint_arm);
+  EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(seven_joint_arm);
+}
+
+// whether the header's jacobian_state solves for q'' inside its closed-form gradient
+template <class F>
+constexpr bool solves_inside_the_gradient(F*) {
+  return std::is_invocable_v<F, double, const double*, const double*, const double*, const double*, double*, double*, double*>;
+}
+
+// M and f from the closed form's own quantities, q'' solved inside it, and forces of the
+// velocities and coordinates swept through their own code (a sweep that ran through M's and f's
+// temporaries had lost the gyroscopic terms' derivatives)
+TEST(RobotJacobians, AGradientThatSolvesForTheAccelerationsIsTheComplexStepDerivative) {
+  namespace m = eomgen::models::gyroscopic_arm;
+  ASSERT_TRUE(solves_inside_the_gradient(&m::detail::tree_acceleration_gradient<double>));
+  EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(gyroscopic_arm);
+  EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(gyroscopic_arm);
+}
 
 }  // namespace

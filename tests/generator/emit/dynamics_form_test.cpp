@@ -21,7 +21,8 @@ void expect_form(const std::string& model, DynamicsForm form, const char* mark) 
 TEST(DynamicsForm, EachModelTakesItsForm) {
   expect_form("double_pendulum", DynamicsForm::mass_matrix, "detail::ldlt_factor(M, L, D);");
   expect_form("n_link_pendulum_4_hamilton", DynamicsForm::momentum, "der(q) solves");
-  expect_form("spatial_double_pendulum", DynamicsForm::newton_euler, "detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
+  expect_form("spatial_double_pendulum", DynamicsForm::newton_euler,
+              "detail::tree_acceleration_gradient(t, x, u, p, static_cast<const T*>(nullptr), L, D, rows);");
   expect_form("tumbling_body", DynamicsForm::newton_euler, "detail::factored_accelerations(t, x, u, p, ddq, L, D);");
   expect_form("lumped_rope", DynamicsForm::particle_tree, "articulated-body recursion");
   expect_form("crane_hook_tree", DynamicsForm::mass_matrix, "detail::ldlt_factor(M, L, D);");
