@@ -15,6 +15,10 @@
 /// Per link a fixed cost; per pair of a joint and one it carries, two dot products of six-vectors
 /// (with I^C_k S_k and B^C_kᵀ S_k formed once per link), where the tangent sweep through the
 /// recursion in joint frames transports tangents of forces and moments for each pair.
+/// The same quantities give M and τ at q'' = 0, so that jacobian_state solves for q'' inside the
+/// gradient: M_kj = S_k·I^C_k S_j (I^C_k S_k is formed anyway), and with a = a⁰ + α, α = Σ S q''
+/// over the joints up to the root, F = F⁰ + Y (F⁰ of a⁰ and the bodies' v ×* I v, Y = Σ I α over
+/// the subtree), τ⁰_k = S_k·F⁰_k; the quantities that hold q'' (α, a, Y, F, Ψ'', G) come after.
 ///
 /// A joint of several velocities (ball, free) has one S per velocity. Those that keep the parent's
 /// axes (a free joint's position) do not turn when the joint's coordinates change: with w = v_λ + V_p
