@@ -93,18 +93,35 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
-// M_a and f_a of the applied part τ_a = M_a q'' − f_a (linear in q''), into M (zeros before) and f
+std::string in_detail(const std::string& functions) { return "namespace detail {\n\n" + functions + "}  // namespace detail\n\n"; }
+
+// M_a and f_a of the applied part τ_a = M_a q'' − f_a (linear in q'')
+struct AppliedMassMatrixAndForcing {
+  GiNaC::matrix mass_matrix;
+  std::vector<ex> forcing;
+};
+AppliedMassMatrixAndForcing applied_mass_matrix_and_forcing(BodyWriter& w, const std::vector<ex>& applied) {
+  std::size_t n = applied.size();
+  AppliedMassMatrixAndForcing a{GiNaC::matrix(unsigned(n), unsigned(n)), {}};
+  GiNaC::exmap at_rest;
+  for (const GiNaC::symbol& q : w.accelerations()) at_rest[q] = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) a.mass_matrix(unsigned(i), unsigned(j)) = applied[i].diff(w.accelerations()[j]).expand();
+    a.forcing.push_back(-applied[i].subs(at_rest));
+  }
+  return a;
+}
+
+// M_a and f_a into M (zeros before) and f
 void assign_applied_mass_matrix_and_forcing(BodyWriter& w, const std::vector<ex>& applied) {
   std::size_t n = applied.size();
+  AppliedMassMatrixAndForcing a = applied_mass_matrix_and_forcing(w, applied);
   std::vector<ex> values;
   std::vector<std::string> targets;
-  GiNaC::exmap at_rest;
-  for (const GiNaC::symbol& a : w.accelerations()) at_rest[a] = 0;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j)
-      if (ex m = applied[i].diff(w.accelerations()[j]).expand(); !m.is_zero())
-        values.push_back(m), targets.push_back(fmt::format("M[{}]", i * n + j));
-    values.push_back(-applied[i].subs(at_rest)), targets.push_back(fmt::format("f[{}]", i));
+      if (ex m = a.mass_matrix(unsigned(i), unsigned(j)); !m.is_zero()) values.push_back(m), targets.push_back(fmt::format("M[{}]", i * n + j));
+    values.push_back(a.forcing[i]), targets.push_back(fmt::format("f[{}]", i));
   }
   w.assign(values, targets);
 }
@@ -161,15 +178,12 @@ std::string straight_tree_acceleration_gradient_body(const Equations& e) {
   BodyWriter w(e);
   TangentSweep sweep(w, state_directions(s));
   sweep.follow(w.write_intermediates_of(bodies.applied_inverse_dynamics));
-  GiNaC::exmap at_rest;
-  for (const GiNaC::symbol& a : w.accelerations()) at_rest[a] = 0;
+  AppliedMassMatrixAndForcing applied = applied_mass_matrix_and_forcing(w, bodies.applied_inverse_dynamics);
   std::vector<ex> mass_and_forcing;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i; j < n; ++j)
-      mass_and_forcing.push_back(bodies.applied_inverse_dynamics[i].diff(w.accelerations()[j]).expand() +
-                                 closed.mass_matrix(unsigned(i), unsigned(j)));
-  for (std::size_t i = 0; i < n; ++i)
-    mass_and_forcing.push_back(-bodies.applied_inverse_dynamics[i].subs(at_rest) - closed.bias[i]);
+      mass_and_forcing.push_back(applied.mass_matrix(unsigned(i), unsigned(j)) + closed.mass_matrix(unsigned(i), unsigned(j)));
+  for (std::size_t i = 0; i < n; ++i) mass_and_forcing.push_back(applied.forcing[i] - closed.bias[i]);
   std::vector<std::string> code = w.batch(mass_and_forcing);
   w.line(fmt::format("T M[{}];", n * n));
   write_symmetric(w, std::vector<std::string>(code.begin(), code.end() - long(n)), n, "M");
@@ -222,13 +236,11 @@ constexpr const char* tree_acceleration_gradient_signature =
 constexpr const char* given_accelerations_signature =
     "void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F)";
 
-std::string in_detail_namespace(const std::string& f) { return "namespace detail {\n\n" + f + "}  // namespace detail\n\n"; }
-
 }  // namespace
 
 std::string tree_acceleration_gradient_function(const Equations& e) {
   std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
-  return in_detail_namespace(
+  return in_detail(
       function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree_pass at\n"
                            "/// q'' = 0, q'' = M^-1 f, and d tau/d(q, q') at those q'' from the same pass (F: {0}x{1},\n"
                            "/// row-major), where factored_accelerations would form M and f a second time.\n",
@@ -244,7 +256,7 @@ std::string closed_form_acceleration_gradient_functions(const Equations& e, long
   const NewtonEulerRecursion* recursion = e.newton_euler();
   // (a model with multipliers solves its own system in jacobian_state: M and f here would serve nothing)
   if (dynamics_form(e) != DynamicsForm::newton_euler || e.has_multipliers || !recursion->bodies_gradient || e.gradient_loops() ||
-      recursion->bodies_gradient->closed_form.bias.empty() || !applied_part_apart(e))
+      !applied_part_apart(e))
     return "";
   std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
   std::string fused = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f at the given q''\n"
@@ -263,7 +275,7 @@ std::string closed_form_acceleration_gradient_functions(const Equations& e, long
                                               n, W),
                                   "void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F)",
                                   fmt::format("  T L[{}];\n  T D[{}];\n  tree_acceleration_gradient(t, x, u, p, ddq, L, D, F);\n", n * n, n));
-  return in_detail_namespace(fused + at_given);
+  return in_detail(fused + at_given);
 }
 
 std::string newton_euler_gradient_function(const Equations& e) {
@@ -330,8 +342,6 @@ long looped_mass_matrix_and_forcing_operations(const HingeTreeLinks& links) {
 constexpr const char* mass_matrix_and_forcing_signature =
     "#if defined(__GNUC__)\n__attribute__((always_inline))\n#endif\n"
     "inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f)";
-
-std::string in_detail(const std::string& functions) { return "namespace detail {\n\n" + functions + "}  // namespace detail\n\n"; }
 
 std::string straight_line_mass_matrix_and_forcing(const Equations& e) {
   std::size_t n = e.num_velocities(), upper = n * (n + 1) / 2;
