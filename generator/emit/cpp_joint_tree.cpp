@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/cpp_avx_dispatch.hpp"
 #include "emit/cpp_ldlt.hpp"
 #include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
@@ -268,7 +269,9 @@ std::string closed_form_acceleration_gradient_functions(const Equations& e, long
                                given_accelerations_signature, straight_tree_acceleration_gradient_body(e));
   long ldlt = long(n * n * n / 6 + 3 * n * n);
   long apart = factored_operations + ldlt + count_operations(gradient_function, "inverse_dynamics_gradient", n);
-  if (count_operations(fused, "tree_acceleration_gradient", n) >= apart) return "";
+  long operations = count_operations(fused, "tree_acceleration_gradient", n);
+  if (operations >= apart) return "";
+  if (operations >= avx_dispatch_from_operations) fused = with_avx_dispatch(fused);
   // inverse_dynamics_gradient (linearization's, at given q'') by the same code, not written twice
   std::string at_given = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held, by\n"
                                               "/// tree_acceleration_gradient at the given q''. ddq: {0}; F: {0}x{1}, row-major.\n",
@@ -299,7 +302,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
     closed_form = operations(closed) < operations(body);
     if (closed_form) body = std::move(closed);
   }
-  return "namespace detail {\n\n" +
+  std::string gradient =
          function(fmt::format(fmt::runtime(loops
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
                                     "/// part by detail::hinge_tree_gradient's loops; a tangent sweep through the rest).\n"
@@ -311,8 +314,10 @@ std::string newton_euler_gradient_function(const Equations& e) {
                                   : "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
                                     "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n"),
                               n, W),
-                  signature, body) +
-         "}  // namespace detail\n\n";
+                  signature, body);
+  if (!loops && count_operations(gradient, "inverse_dynamics_gradient", n) >= avx_dispatch_from_operations)
+    gradient = with_avx_dispatch(gradient);
+  return in_detail(gradient);
 }
 
 namespace {

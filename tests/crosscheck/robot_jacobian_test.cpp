@@ -13,10 +13,12 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <random>
 #include <type_traits>
 #include <vector>
 
+#include "ball_chain_imported.hpp"
 #include "ball_hung_chain.hpp"
 #include "branched_tree.hpp"
 #include "coupled_hand.hpp"
@@ -160,5 +162,51 @@ TEST(RobotJacobians, AGradientThatSolvesForTheAccelerationsIsTheComplexStepDeriv
   EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(gyroscopic_arm);
   EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(gyroscopic_arm);
 }
+
+// A gradient of some thousands of operations is also compiled as AVX code, and the processor
+// chooses (emit/cpp_avx_dispatch.hpp): the copy must do the very same arithmetic, so that a
+// program's results do not depend on the machine it runs on. Checked to the last bit against the
+// template's double instance, compiled for the target alone, at random states and accelerations,
+// both for jacobian_state (given_ddq null: q'' solved inside, M's factors) and for
+// linearization (given q'').
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX__) && !defined(EOMGEN_NO_AVX_DISPATCH)
+template <class Portable, class Wide>
+void expect_the_same_bits(std::size_t states, std::size_t velocities, std::vector<double> x, const std::vector<double>& p,
+                          Portable portable, Wide wide) {
+  std::mt19937 random(43);
+  std::uniform_real_distribution<double> spread(-1, 1);
+  for (int trial = 0; trial < 6; ++trial) {
+    for (double& v : x) v += spread(random);
+    std::vector<double> u(velocities + 1), ddq(velocities);
+    for (double& v : u) v = spread(random);
+    for (double& v : ddq) v = 5 * spread(random);
+    for (const double* given : {static_cast<const double*>(nullptr), static_cast<const double*>(ddq.data())}) {
+      std::vector<double> L(velocities * velocities), D(velocities), F(velocities * states);
+      std::vector<double> L_avx = L, D_avx = D, F_avx = F;
+      portable(0.0, x.data(), u.data(), p.data(), given, L.data(), D.data(), F.data());
+      wide(0.0, x.data(), u.data(), p.data(), given, L_avx.data(), D_avx.data(), F_avx.data());
+      EXPECT_EQ(0, std::memcmp(F.data(), F_avx.data(), F.size() * sizeof(double))) << "trial " << trial;
+      EXPECT_EQ(0, std::memcmp(L.data(), L_avx.data(), L.size() * sizeof(double))) << "trial " << trial;
+      EXPECT_EQ(0, std::memcmp(D.data(), D_avx.data(), D.size() * sizeof(double))) << "trial " << trial;
+      EXPECT_TRUE(std::all_of(F.begin(), F.end(), [](double v) { return std::isfinite(v); }));
+    }
+  }
+}
+
+#define EXPECT_THE_AVX_COPY_GIVES_THE_SAME_BITS(M)                                                          \
+  {                                                                                                        \
+    namespace m = eomgen::models::M;                                                                       \
+    expect_the_same_bits(m::num_states, m::num_states - m::num_coordinates,                                \
+                         std::vector<double>(m::default_state.begin(), m::default_state.end()),           \
+                         std::vector<double>(m::default_parameters.begin(), m::default_parameters.end()), \
+                         m::detail::tree_acceleration_gradient<double>, m::detail::tree_acceleration_gradient_avx); \
+  }
+
+TEST(RobotJacobians, TheAvxCopyOfAGradientGivesTheSameBits) {
+  if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
+  EXPECT_THE_AVX_COPY_GIVES_THE_SAME_BITS(seven_joint_arm);
+  EXPECT_THE_AVX_COPY_GIVES_THE_SAME_BITS(ball_chain_imported);  // ball joints, quaternions
+}
+#endif
 
 }  // namespace
