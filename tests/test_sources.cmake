@@ -70,6 +70,7 @@ set(EOMGEN_TEST_FILES
   generator/emit/tangent_sweep_test.cpp             fast
   generator/emit/statement_order_test.cpp           fast
   generator/emit/ldlt_test.cpp                      fast
+  generator/emit/avx_dispatch_test.cpp              fast
   generator/emit/dynamics_form_test.cpp             fast
   generator/emit/zero_entries_test.cpp              fast
   generator/emit/robot_header_size_test.cpp         fast

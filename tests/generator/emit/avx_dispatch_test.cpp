@@ -1,0 +1,123 @@
+// emit/cpp_avx_dispatch: a function template as the emitter writes it, with the two signatures
+// that get an AVX copy (the fused gradient's, which solves for q'' inside, and
+// inverse_dynamics_gradient's, at a given q''), followed by the copy and the double overload.
+// Compiled with g++ and clang++ (C++17 and C++20, warnings as errors) and run: the overload and
+// the copy give the template's double results to the last bit; with -mavx (where __AVX__ says the
+// whole program has AVX) and with EOMGEN_NO_AVX_DISPATCH there is no copy, and the program still
+// compiles and calls the template.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "emit/cpp_avx_dispatch.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+// divisions, square roots and long sums: rounding in every entry, so that a copy that did other
+// operations, or the same ones in another order or fused, would differ in some bit
+const char* fused_gradient_source = R"cpp(template <class T>
+void fused_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F) {
+  T ddq[3];
+  for (int i = 0; i < 3; ++i) ddq[i] = given_ddq ? given_ddq[i] : (x[i] * p[0] + u[i]) / (T(3) + x[3 + i] * x[3 + i]);
+  for (int i = 0; i < 3; ++i) {
+    D[i] = sqrt(T(1) + x[i] * x[i] + t);
+    for (int j = 0; j < 3; ++j) L[3 * i + j] = (x[i] - x[j]) / D[i] + p[1] * ddq[j];
+    for (int j = 0; j < 6; ++j) {
+      T sum = T(0);
+      for (int k = 0; k < 6; ++k) sum = sum + x[k] * x[(j + k) % 6] / (T(1) + k) - ddq[i] * p[2];
+      F[6 * i + j] = sum * T(0.1) + u[i] * x[j];
+    }
+  }
+}
+)cpp";
+
+const char* inverse_dynamics_gradient_source = R"cpp(template <class T>
+void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 6; ++j) F[6 * i + j] = sqrt(T(2) + x[j] * x[j]) / (p[0] + ddq[i]) - u[i] * t / T(7);
+}
+)cpp";
+
+const char* avx_check_source = R"cpp(
+#include <cstdio>
+#include <cstring>
+#include <initializer_list>
+int main() {
+  const double x[6] = {0.3, -1.7, 2.9, 0.11, -0.45, 1.3}, u[3] = {0.2, -0.9, 1.1}, p[3] = {9.81, 0.37, -2.2};
+  const double ddq[3] = {1.5, -0.25, 3.75};
+  int failures = 0;
+  for (const double* given : {static_cast<const double*>(nullptr), ddq}) {
+    double L[2][9], D[2][3], F[2][18];
+    fused_gradient<double>(0.25, x, u, p, given, L[0], D[0], F[0]);
+    fused_gradient(0.25, x, u, p, given, L[1], D[1], F[1]);
+    failures += std::memcmp(L[0], L[1], sizeof L[0]) != 0 || std::memcmp(D[0], D[1], sizeof D[0]) != 0 ||
+                std::memcmp(F[0], F[1], sizeof F[0]) != 0;
+#ifdef EXPECT_COPY
+    fused_gradient_avx(0.25, x, u, p, given, L[1], D[1], F[1]);
+    failures += std::memcmp(L[0], L[1], sizeof L[0]) != 0 || std::memcmp(D[0], D[1], sizeof D[0]) != 0 ||
+                std::memcmp(F[0], F[1], sizeof F[0]) != 0;
+#endif
+  }
+  double G[2][18];
+  inverse_dynamics_gradient<double>(0.5, x, ddq, u, p, G[0]);
+  inverse_dynamics_gradient(0.5, x, ddq, u, p, G[1]);
+  failures += std::memcmp(G[0], G[1], sizeof G[0]) != 0;
+#ifdef EXPECT_COPY
+  inverse_dynamics_gradient_avx(0.5, x, ddq, u, p, G[1]);
+  failures += std::memcmp(G[0], G[1], sizeof G[0]) != 0;
+#endif
+  std::printf("%d results differ from the template's\n", failures);
+  return failures;
+}
+)cpp";
+
+std::string avx_dispatch_program() {
+  return std::string("#include <cmath>\nusing std::sqrt;\ntemplate <class T>\nusing input_t = T;\n") +
+         with_avx_dispatch(fused_gradient_source) + with_avx_dispatch(inverse_dynamics_gradient_source) + avx_check_source;
+}
+
+int compile_and_run_avx_check(const std::string& compiler, const std::string& flags, bool quiet = false) {
+  std::string dir = temporary_directory();
+  std::ofstream(dir + "/check.cpp") << avx_dispatch_program();
+  return run_command("cd '" + dir + "' && " + compiler + " " + flags + " -Wall -Wextra -Wpedantic -Werror check.cpp -o check" +
+                     (quiet ? " 2> /dev/null" : "") + " && ./check");
+}
+
+TEST(AvxDispatch, TheCopyAndTheOverloadGiveTheTemplatesBitsWithGccAndClang) {
+#if !defined(__x86_64__)
+  GTEST_SKIP() << "the AVX copy is for x86-64";
+#else
+  if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
+  for (const char* standard : {"-std=c++17", "-std=c++20"}) {
+    EXPECT_EQ(compile_and_run_avx_check("g++", std::string(standard) + " -O2 -DEXPECT_COPY"), 0) << standard;
+    if (run_command("command -v clang++ > /dev/null") == 0) {
+      EXPECT_EQ(compile_and_run_avx_check("clang++", std::string(standard) + " -O2 -DEXPECT_COPY"), 0) << standard;
+    }
+  }
+#endif
+}
+
+TEST(AvxDispatch, NoCopyWhereTheProgramHasAvxOrTheMacroSaysNot) {
+#if !defined(__x86_64__)
+  GTEST_SKIP() << "the AVX copy is for x86-64";
+#else
+  if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
+  // fused_gradient_avx would not be declared: EXPECT_COPY left out, and the overload's call
+  // resolves to the template
+  EXPECT_EQ(compile_and_run_avx_check("g++", "-std=c++17 -O2 -mavx"), 0);
+  EXPECT_EQ(compile_and_run_avx_check("g++", "-std=c++17 -O2 -DEOMGEN_NO_AVX_DISPATCH"), 0);
+  EXPECT_NE(compile_and_run_avx_check("g++", "-std=c++17 -O2 -DEOMGEN_NO_AVX_DISPATCH -DEXPECT_COPY", true), 0)
+      << "with the macro the copy must be left out";
+#endif
+}
+
+TEST(AvxDispatch, OnlyAFunctionTemplateIsCopied) {
+  EXPECT_THROW(with_avx_dispatch("inline void f(double x) {}\n"), std::logic_error);
+}
+
+}  // namespace
+}  // namespace eomgen::test
