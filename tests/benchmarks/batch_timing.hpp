@@ -1,5 +1,6 @@
 // Timing for the benchmark programs in this folder: ns per call over a batch of calls, and the
-// median of repetitions (interleaved by the caller, so that the peers see the same machine).
+// median of repetitions (interleaved by the caller, so that the peers see the same machine), or
+// their fastest, which other programs on a shared machine slow the least.
 #pragma once
 
 #include <algorithm>
@@ -17,3 +18,5 @@ inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
 }
+
+inline double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }

@@ -168,10 +168,11 @@ int main(int argc, char** argv) {
   std::printf("{\"eomgen_ns\": %.1f, \"mujoco_ns\": %s, \"eigen_ns\": %s, \"jacobian_ns\": %s, "
               "\"finite_difference_ns\": %s, \"hand_written_difference\": %.2g, \"other_form_ns\": %s, "
               "\"forms_differ\": %.2g, \"error\": %.2g, \"other_form_error\": %.2g, \"featherstone_ns\": %s, "
-              "\"featherstone_differs\": %.2g, \"transition_fd_ns\": %s}\n",
+              "\"featherstone_differs\": %.2g, \"transition_fd_ns\": %s, \"eomgen_fastest_ns\": %.1f, \"jacobian_fastest_ns\": %s}\n",
               median(ours), or_null(mujoco).c_str(), or_null(theirs).c_str(), or_null(jacobian).c_str(),
               or_null(differences).c_str(), agreement, or_null(other_form).c_str(),
-              forms_differ, own_error, other_error, or_null(articulated).c_str(), aba_differs, or_null(transition).c_str());
+              forms_differ, own_error, other_error, or_null(articulated).c_str(), aba_differs, or_null(transition).c_str(),
+              fastest(ours), jacobian.empty() ? "null" : std::to_string(fastest(jacobian)).c_str());
   if (mj) mj_deleteData(data), mj_deleteModel(mj);
   return sink == 12345.678 ? 3 : 0;
 }
