@@ -234,33 +234,57 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
     const T l0 = L[14];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c];
   }
   {
     const T l0 = L[13], l1 = L[9];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[3*m + c] - l1*B[2*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[3*m + c] - l1*B[2*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[3*m + c] - l1*B[2*m + c];
   }
   {
     const T l0 = L[12], l1 = L[8], l2 = L[4];
-    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[0*m + c] = B[0*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c];
   }
   for (std::size_t i = 0; i < 4; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
-    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[i*m + c] = B[i*m + c]*r;
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
     const T l0 = L[4];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
   }
   {
     const T l0 = L[9], l1 = L[8];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
   }
   {
     const T l0 = L[14], l1 = L[13], l2 = L[12];
-    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
   }
 }
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX__) && !defined(EOMGEN_NO_AVX_DISPATCH)
+/// ldlt_solve_rows for double also as AVX code (four columns at a time; the same results to the
+/// last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.
+template <std::size_t m, bool negated = false>
+__attribute__((target("avx"), flatten)) inline void ldlt_solve_rows_avx(const double* L, const double* D, double* B) {
+  ldlt_solve_rows<m, negated, double>(L, D, B);
+}
+template <std::size_t m, bool negated = false>
+inline void ldlt_solve_rows(const double* L, const double* D, double* B) {
+  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
+  if (m >= 8 && avx)
+    ldlt_solve_rows_avx<m, negated>(L, D, B);
+  else
+    ldlt_solve_rows<m, negated, double>(L, D, B);
+}
+#endif
 
 }  // namespace detail
 

@@ -259,49 +259,77 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
     const T l0 = L[34];
-    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c];
   }
   {
     const T l0 = L[33], l1 = L[27];
-    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c];
   }
   {
     const T l0 = L[32], l1 = L[26], l2 = L[20];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c];
   }
   {
     const T l0 = L[31], l1 = L[25], l2 = L[19], l3 = L[13];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c];
   }
   {
     const T l0 = L[30], l1 = L[24], l2 = L[18], l3 = L[12], l4 = L[6];
-    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
   }
   for (std::size_t i = 0; i < 6; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
-    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[i*m + c] = B[i*m + c]*r;
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
     const T l0 = L[6];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
   }
   {
     const T l0 = L[13], l1 = L[12];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
   }
   {
     const T l0 = L[20], l1 = L[19], l2 = L[18];
-    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
   }
   {
     const T l0 = L[27], l1 = L[26], l2 = L[25], l3 = L[24];
-    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c];
   }
   {
     const T l0 = L[34], l1 = L[33], l2 = L[32], l3 = L[31], l4 = L[30];
-    for (std::size_t c = 0; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c];
   }
 }
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX__) && !defined(EOMGEN_NO_AVX_DISPATCH)
+/// ldlt_solve_rows for double also as AVX code (four columns at a time; the same results to the
+/// last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.
+template <std::size_t m, bool negated = false>
+__attribute__((target("avx"), flatten)) inline void ldlt_solve_rows_avx(const double* L, const double* D, double* B) {
+  ldlt_solve_rows<m, negated, double>(L, D, B);
+}
+template <std::size_t m, bool negated = false>
+inline void ldlt_solve_rows(const double* L, const double* D, double* B) {
+  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
+  if (m >= 8 && avx)
+    ldlt_solve_rows_avx<m, negated>(L, D, B);
+  else
+    ldlt_solve_rows<m, negated, double>(L, D, B);
+}
+#endif
 
 }  // namespace detail
 

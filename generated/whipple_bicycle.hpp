@@ -251,65 +251,97 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
     const T l0 = L[8];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
   }
   {
     const T l0 = L[16], l1 = L[17];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
   }
   {
     const T l0 = L[24], l1 = L[25], l2 = L[26];
-    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
   }
   {
     const T l0 = L[32], l1 = L[33], l2 = L[34], l3 = L[35];
-    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c];
   }
   {
     const T l0 = L[40], l1 = L[41], l2 = L[42], l3 = L[43], l4 = L[44];
-    for (std::size_t c = 0; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[5*m + c] = B[5*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c];
   }
   {
     const T l0 = L[48], l1 = L[49], l2 = L[50], l3 = L[51], l4 = L[52], l5 = L[53];
-    for (std::size_t c = 0; c < m; ++c) B[6*m + c] = B[6*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[6*m + c] = B[6*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[6*m + c] = B[6*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c];
   }
   {
     const T l0 = L[56], l1 = L[57], l2 = L[58], l3 = L[59], l4 = L[60], l5 = L[61], l6 = L[62];
-    for (std::size_t c = 0; c < m; ++c) B[7*m + c] = B[7*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c] - l6*B[6*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[7*m + c] = B[7*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c] - l6*B[6*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[7*m + c] = B[7*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c] - l6*B[6*m + c];
   }
   for (std::size_t i = 0; i < 8; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
-    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[i*m + c] = B[i*m + c]*r;
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
   }
   {
     const T l0 = L[62];
-    for (std::size_t c = 0; c < m; ++c) B[6*m + c] = B[6*m + c] - l0*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[6*m + c] = B[6*m + c] - l0*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[6*m + c] = B[6*m + c] - l0*B[7*m + c];
   }
   {
     const T l0 = L[53], l1 = L[61];
-    for (std::size_t c = 0; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[6*m + c] - l1*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[5*m + c] = B[5*m + c] - l0*B[6*m + c] - l1*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[6*m + c] - l1*B[7*m + c];
   }
   {
     const T l0 = L[44], l1 = L[52], l2 = L[60];
-    for (std::size_t c = 0; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c] - l1*B[6*m + c] - l2*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c] - l1*B[6*m + c] - l2*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c] - l1*B[6*m + c] - l2*B[7*m + c];
   }
   {
     const T l0 = L[35], l1 = L[43], l2 = L[51], l3 = L[59];
-    for (std::size_t c = 0; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[4*m + c] - l1*B[5*m + c] - l2*B[6*m + c] - l3*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[4*m + c] - l1*B[5*m + c] - l2*B[6*m + c] - l3*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[4*m + c] - l1*B[5*m + c] - l2*B[6*m + c] - l3*B[7*m + c];
   }
   {
     const T l0 = L[26], l1 = L[34], l2 = L[42], l3 = L[50], l4 = L[58];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c] - l1*B[4*m + c] - l2*B[5*m + c] - l3*B[6*m + c] - l4*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c] - l1*B[4*m + c] - l2*B[5*m + c] - l3*B[6*m + c] - l4*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c] - l1*B[4*m + c] - l2*B[5*m + c] - l3*B[6*m + c] - l4*B[7*m + c];
   }
   {
     const T l0 = L[17], l1 = L[25], l2 = L[33], l3 = L[41], l4 = L[49], l5 = L[57];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c] - l2*B[4*m + c] - l3*B[5*m + c] - l4*B[6*m + c] - l5*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c] - l2*B[4*m + c] - l3*B[5*m + c] - l4*B[6*m + c] - l5*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c] - l2*B[4*m + c] - l3*B[5*m + c] - l4*B[6*m + c] - l5*B[7*m + c];
   }
   {
     const T l0 = L[8], l1 = L[16], l2 = L[24], l3 = L[32], l4 = L[40], l5 = L[48], l6 = L[56];
-    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c] - l3*B[4*m + c] - l4*B[5*m + c] - l5*B[6*m + c] - l6*B[7*m + c];
+    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c] - l3*B[4*m + c] - l4*B[5*m + c] - l5*B[6*m + c] - l6*B[7*m + c];
+    for (std::size_t c = m / 4 * 4; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c] - l3*B[4*m + c] - l4*B[5*m + c] - l5*B[6*m + c] - l6*B[7*m + c];
   }
 }
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX__) && !defined(EOMGEN_NO_AVX_DISPATCH)
+/// ldlt_solve_rows for double also as AVX code (four columns at a time; the same results to the
+/// last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.
+template <std::size_t m, bool negated = false>
+__attribute__((target("avx"), flatten)) inline void ldlt_solve_rows_avx(const double* L, const double* D, double* B) {
+  ldlt_solve_rows<m, negated, double>(L, D, B);
+}
+template <std::size_t m, bool negated = false>
+inline void ldlt_solve_rows(const double* L, const double* D, double* B) {
+  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
+  if (m >= 8 && avx)
+    ldlt_solve_rows_avx<m, negated>(L, D, B);
+  else
+    ldlt_solve_rows<m, negated, double>(L, D, B);
+}
+#endif
 
 }  // namespace detail
 

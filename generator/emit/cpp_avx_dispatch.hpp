@@ -1,5 +1,6 @@
-/// @file A large straight-line function of the header compiled a second time for AVX, for double
-/// on x86-64, and chosen at run time where the processor has AVX.
+/// @file A large straight-line function of the header, and the solve with M's factors for many
+/// columns, compiled a second time for AVX, for double on x86-64, and chosen at run time where the
+/// processor has AVX.
 ///
 /// Why: a user's program compiled with the compiler's defaults (-O2, no -march) gets SSE2 code,
 /// whose arithmetic overwrites one of its operands, so that about every seventh instruction is a
@@ -12,6 +13,7 @@
 /// results to the last bit (tested). The price is compiling the function twice.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace eomgen {
@@ -26,5 +28,15 @@ constexpr long avx_dispatch_from_operations = 2500;
 /// of its double instance (NAME_avx) and the overload for double that calls it where the
 /// processor has AVX, the double instance of the template where not.
 std::string with_avx_dispatch(const std::string& function);
+
+/// From this many coordinates on, M's solve for many columns gets an AVX copy (below it, the call
+/// would cost more than the copy saves); in the copy, from 8 columns on.
+constexpr std::size_t solve_rows_avx_from_coordinates = 4;
+
+/// For ldlt_solve_rows<m, negated, T> (emit/cpp_ldlt), under the same condition: its AVX copy for
+/// double and the overload for double, which partial ordering prefers to the template and which
+/// takes the copy where the processor has AVX. The solve's column loops then run four lanes wide
+/// (jacobian_state's 2n columns), with each column's operations unchanged.
+std::string solve_rows_avx_dispatch();
 
 }  // namespace eomgen

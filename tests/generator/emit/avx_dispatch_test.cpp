@@ -10,8 +10,10 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "emit/cpp_avx_dispatch.hpp"
+#include "emit/cpp_ldlt.hpp"
 #include "support/test_support.hpp"
 
 namespace eomgen::test {
@@ -112,6 +114,84 @@ TEST(AvxDispatch, NoCopyWhereTheProgramHasAvxOrTheMacroSaysNot) {
   EXPECT_EQ(compile_and_run_avx_check("g++", "-std=c++17 -O2 -DEOMGEN_NO_AVX_DISPATCH"), 0);
   EXPECT_NE(compile_and_run_avx_check("g++", "-std=c++17 -O2 -DEOMGEN_NO_AVX_DISPATCH -DEXPECT_COPY", true), 0)
       << "with the macro the copy must be left out";
+#endif
+}
+
+// M's solve for many columns (emit/cpp_ldlt), dense unrolled, dense in loops and a tree's, each
+// with its AVX copy: at random L and D, the overload (the copy from 8 columns on) and the copy give
+// the template's bits for 42, 14, 9 and 6 columns (remainders of 2, 2, 1 and 2 after the
+// four-wide loop), with g++ and clang++; with -mavx (no copy) the overload is left out.
+std::string solve_rows_functions(const std::string& name, const LdltCode& code) {
+  return "namespace " + name + " {\ntemplate <std::size_t m, bool negated = false, class T>\n" +
+         "inline void ldlt_solve_rows(const T* L, const T* D, T* B) {\n  (void)L;\n" + code.solve_rows + "}\n" +
+         solve_rows_avx_dispatch() + "}\n";
+}
+
+const char* solve_rows_check = R"cpp(
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
+template <std::size_t m, class Template, class Overload, class Copy>
+int same_bits(int n, Template by_template, Overload overload, Copy copy) {
+  std::mt19937 g(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> L(n * n), D(n), B(n * m);
+  for (double& l : L) l = u(g);
+  for (double& d : D) d = 1.5 + u(g) / 2;
+  for (double& b : B) b = u(g);
+  std::vector<double> X = B, Y = B, Z = B;
+  by_template(L.data(), D.data(), X.data());
+  overload(L.data(), D.data(), Y.data());
+#ifdef EXPECT_COPY
+  copy(L.data(), D.data(), Z.data());
+#else
+  (void)copy;
+  Z = X;
+#endif
+  int differ = std::memcmp(X.data(), Y.data(), X.size() * sizeof(double)) != 0;
+  differ += std::memcmp(X.data(), Z.data(), X.size() * sizeof(double)) != 0;
+  if (differ) std::printf("n = %d, m = %zu: results differ from the template's\n", n, m);
+  return differ;
+}
+#ifdef EXPECT_COPY
+#define COPY(ns, m) ns::ldlt_solve_rows_avx<m, true>
+#else
+#define COPY(ns, m) 0
+#endif
+#define SAME_BITS(ns, n, m) \
+  same_bits<m>(n, ns::ldlt_solve_rows<m, true, double>, \
+               [](const double* L, const double* D, double* B) { ns::ldlt_solve_rows<m, true>(L, D, B); }, COPY(ns, m))
+int main() {
+  int failures = 0;
+  failures += SAME_BITS(unrolled, 7, 14) + SAME_BITS(unrolled, 7, 9) + SAME_BITS(unrolled, 7, 6);
+  failures += SAME_BITS(loops, 30, 42) + SAME_BITS(loops, 30, 9);
+  failures += SAME_BITS(tree, 14, 42) + SAME_BITS(tree, 14, 14) + SAME_BITS(tree, 14, 6);
+  return failures;
+}
+)cpp";
+
+TEST(AvxDispatch, TheSolveForManyColumnsGivesTheTemplatesBits) {
+#if !defined(__x86_64__)
+  GTEST_SKIP() << "the AVX copy is for x86-64";
+#else
+  if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
+  std::string program = "#include <cstddef>\n" + solve_rows_functions("unrolled", ldlt_code(7)) +
+                        solve_rows_functions("loops", ldlt_code(30)) +
+                        solve_rows_functions("tree", tree_ldlt_code({-1, 0, 1, 2, 3, 4, 5, 6, 7, 5, 9, 10, 5, 12})) +
+                        solve_rows_check;
+  ASSERT_FALSE(ldlt_code(30).unrolled) << "the loops are checked";
+  for (const std::string compiler : {"g++", "clang++"}) {
+    if (run_command("command -v " + compiler + " > /dev/null") != 0) continue;
+    for (const char* flags : {"-std=c++17 -O2 -DEXPECT_COPY", "-std=c++20 -O2 -mavx"}) {
+      std::string dir = temporary_directory();
+      std::ofstream(dir + "/solve.cpp") << program;
+      EXPECT_EQ(run_command("cd '" + dir + "' && " + compiler + " " + flags +
+                            " -Wall -Wextra -Wpedantic -Werror solve.cpp -o solve && ./solve"),
+                0)
+          << compiler << " " << flags;
+    }
+  }
 #endif
 }
 
