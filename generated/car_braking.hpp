@@ -216,31 +216,38 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[3]*b[1] - L[6]*b[2];
 }
 
+/// column(c) for the m columns c, in two loops: over m / 4 * 4 of them, then the rest.
+template <std::size_t m, class Column>
+inline void each_column(Column column) {
+  for (std::size_t c = 0; c < m / 4 * 4; ++c) column(c);
+  for (std::size_t c = m / 4 * 4; c < m; ++c) column(c);
+}
+
 /// As ldlt_solve, for the m columns of B (3xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// a pass over its columns, which the compiler vectorizes, and D's reciprocals taken once;
 /// `negated` solves for -x (exactly: the reciprocals' sign carries through).
 template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
     const T l0 = L[3];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[1*m + c] = B[1*m + c] - l0*B[0*m + c]; });
   }
   {
     const T l0 = L[6], l1 = L[7];
-    for (std::size_t c = 0; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+    each_column<m>([&](std::size_t c) { B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c]; });
   }
   for (std::size_t i = 0; i < 3; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
-    for (std::size_t c = 0; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+    each_column<m>([&](std::size_t c) { B[i*m + c] = B[i*m + c]*r; });
   }
   {
     const T l0 = L[7];
-    for (std::size_t c = 0; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c];
+    each_column<m>([&](std::size_t c) { B[1*m + c] = B[1*m + c] - l0*B[2*m + c]; });
   }
   {
     const T l0 = L[3], l1 = L[6];
-    for (std::size_t c = 0; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c];
+    each_column<m>([&](std::size_t c) { B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c]; });
   }
 }
 

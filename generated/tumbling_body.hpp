@@ -251,66 +251,62 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[5] = b[5] - L[30]*b[0];
 }
 
+/// column(c) for the m columns c, in two loops: over m / 4 * 4 of them, then the rest.
+template <std::size_t m, class Column>
+inline void each_column(Column column) {
+  for (std::size_t c = 0; c < m / 4 * 4; ++c) column(c);
+  for (std::size_t c = m / 4 * 4; c < m; ++c) column(c);
+}
+
 /// As ldlt_solve, for the m columns of B (6xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// a pass over its columns, which the compiler vectorizes, and D's reciprocals taken once;
 /// `negated` solves for -x (exactly: the reciprocals' sign carries through).
 template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
     const T l0 = L[34];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c];
+    each_column<m>([&](std::size_t c) { B[4*m + c] = B[4*m + c] - l0*B[5*m + c]; });
   }
   {
     const T l0 = L[33], l1 = L[27];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c];
+    each_column<m>([&](std::size_t c) { B[3*m + c] = B[3*m + c] - l0*B[5*m + c] - l1*B[4*m + c]; });
   }
   {
     const T l0 = L[32], l1 = L[26], l2 = L[20];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c];
+    each_column<m>([&](std::size_t c) { B[2*m + c] = B[2*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c]; });
   }
   {
     const T l0 = L[31], l1 = L[25], l2 = L[19], l3 = L[13];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c];
+    each_column<m>([&](std::size_t c) { B[1*m + c] = B[1*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c]; });
   }
   {
     const T l0 = L[30], l1 = L[24], l2 = L[18], l3 = L[12], l4 = L[6];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c];
+    each_column<m>([&](std::size_t c) { B[0*m + c] = B[0*m + c] - l0*B[5*m + c] - l1*B[4*m + c] - l2*B[3*m + c] - l3*B[2*m + c] - l4*B[1*m + c]; });
   }
   for (std::size_t i = 0; i < 6; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[i*m + c] = B[i*m + c]*r;
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+    each_column<m>([&](std::size_t c) { B[i*m + c] = B[i*m + c]*r; });
   }
   {
     const T l0 = L[6];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[1*m + c] = B[1*m + c] - l0*B[0*m + c]; });
   }
   {
     const T l0 = L[13], l1 = L[12];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[2*m + c] = B[2*m + c] - l0*B[1*m + c] - l1*B[0*m + c]; });
   }
   {
     const T l0 = L[20], l1 = L[19], l2 = L[18];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[3*m + c] = B[3*m + c] - l0*B[2*m + c] - l1*B[1*m + c] - l2*B[0*m + c]; });
   }
   {
     const T l0 = L[27], l1 = L[26], l2 = L[25], l3 = L[24];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[4*m + c] = B[4*m + c] - l0*B[3*m + c] - l1*B[2*m + c] - l2*B[1*m + c] - l3*B[0*m + c]; });
   }
   {
     const T l0 = L[34], l1 = L[33], l2 = L[32], l3 = L[31], l4 = L[30];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[5*m + c] = B[5*m + c] - l0*B[4*m + c] - l1*B[3*m + c] - l2*B[2*m + c] - l3*B[1*m + c] - l4*B[0*m + c]; });
   }
 }
 

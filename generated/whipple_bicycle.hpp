@@ -243,86 +243,78 @@ inline void ldlt_solve(const T* L, const T* D, T* b) {
   b[0] = b[0] - L[8]*b[1] - L[16]*b[2] - L[24]*b[3] - L[32]*b[4] - L[40]*b[5] - L[48]*b[6] - L[56]*b[7];
 }
 
+/// column(c) for the m columns c, in two loops: over m / 4 * 4 of them, then the rest.
+template <std::size_t m, class Column>
+inline void each_column(Column column) {
+  for (std::size_t c = 0; c < m / 4 * 4; ++c) column(c);
+  for (std::size_t c = m / 4 * 4; c < m; ++c) column(c);
+}
+
 /// As ldlt_solve, for the m columns of B (8xm, row-major) at once: each row's operations in
-/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;
+/// a pass over its columns, which the compiler vectorizes, and D's reciprocals taken once;
 /// `negated` solves for -x (exactly: the reciprocals' sign carries through).
 template <std::size_t m, bool negated = false, class T>
 inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
   (void)L;
   {
     const T l0 = L[8];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[0*m + c];
+    each_column<m>([&](std::size_t c) { B[1*m + c] = B[1*m + c] - l0*B[0*m + c]; });
   }
   {
     const T l0 = L[16], l1 = L[17];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c];
+    each_column<m>([&](std::size_t c) { B[2*m + c] = B[2*m + c] - l0*B[0*m + c] - l1*B[1*m + c]; });
   }
   {
     const T l0 = L[24], l1 = L[25], l2 = L[26];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c];
+    each_column<m>([&](std::size_t c) { B[3*m + c] = B[3*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c]; });
   }
   {
     const T l0 = L[32], l1 = L[33], l2 = L[34], l3 = L[35];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c];
+    each_column<m>([&](std::size_t c) { B[4*m + c] = B[4*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c]; });
   }
   {
     const T l0 = L[40], l1 = L[41], l2 = L[42], l3 = L[43], l4 = L[44];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[5*m + c] = B[5*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c];
+    each_column<m>([&](std::size_t c) { B[5*m + c] = B[5*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c]; });
   }
   {
     const T l0 = L[48], l1 = L[49], l2 = L[50], l3 = L[51], l4 = L[52], l5 = L[53];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[6*m + c] = B[6*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[6*m + c] = B[6*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c];
+    each_column<m>([&](std::size_t c) { B[6*m + c] = B[6*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c]; });
   }
   {
     const T l0 = L[56], l1 = L[57], l2 = L[58], l3 = L[59], l4 = L[60], l5 = L[61], l6 = L[62];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[7*m + c] = B[7*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c] - l6*B[6*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[7*m + c] = B[7*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c] - l6*B[6*m + c];
+    each_column<m>([&](std::size_t c) { B[7*m + c] = B[7*m + c] - l0*B[0*m + c] - l1*B[1*m + c] - l2*B[2*m + c] - l3*B[3*m + c] - l4*B[4*m + c] - l5*B[5*m + c] - l6*B[6*m + c]; });
   }
   for (std::size_t i = 0; i < 8; ++i) {
     const T r = T(negated ? -1 : 1)/D[i];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[i*m + c] = B[i*m + c]*r;
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[i*m + c] = B[i*m + c]*r;
+    each_column<m>([&](std::size_t c) { B[i*m + c] = B[i*m + c]*r; });
   }
   {
     const T l0 = L[62];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[6*m + c] = B[6*m + c] - l0*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[6*m + c] = B[6*m + c] - l0*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[6*m + c] = B[6*m + c] - l0*B[7*m + c]; });
   }
   {
     const T l0 = L[53], l1 = L[61];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[5*m + c] = B[5*m + c] - l0*B[6*m + c] - l1*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[5*m + c] = B[5*m + c] - l0*B[6*m + c] - l1*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[5*m + c] = B[5*m + c] - l0*B[6*m + c] - l1*B[7*m + c]; });
   }
   {
     const T l0 = L[44], l1 = L[52], l2 = L[60];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c] - l1*B[6*m + c] - l2*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[4*m + c] = B[4*m + c] - l0*B[5*m + c] - l1*B[6*m + c] - l2*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[4*m + c] = B[4*m + c] - l0*B[5*m + c] - l1*B[6*m + c] - l2*B[7*m + c]; });
   }
   {
     const T l0 = L[35], l1 = L[43], l2 = L[51], l3 = L[59];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[3*m + c] = B[3*m + c] - l0*B[4*m + c] - l1*B[5*m + c] - l2*B[6*m + c] - l3*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[3*m + c] = B[3*m + c] - l0*B[4*m + c] - l1*B[5*m + c] - l2*B[6*m + c] - l3*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[3*m + c] = B[3*m + c] - l0*B[4*m + c] - l1*B[5*m + c] - l2*B[6*m + c] - l3*B[7*m + c]; });
   }
   {
     const T l0 = L[26], l1 = L[34], l2 = L[42], l3 = L[50], l4 = L[58];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c] - l1*B[4*m + c] - l2*B[5*m + c] - l3*B[6*m + c] - l4*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[2*m + c] = B[2*m + c] - l0*B[3*m + c] - l1*B[4*m + c] - l2*B[5*m + c] - l3*B[6*m + c] - l4*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[2*m + c] = B[2*m + c] - l0*B[3*m + c] - l1*B[4*m + c] - l2*B[5*m + c] - l3*B[6*m + c] - l4*B[7*m + c]; });
   }
   {
     const T l0 = L[17], l1 = L[25], l2 = L[33], l3 = L[41], l4 = L[49], l5 = L[57];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c] - l2*B[4*m + c] - l3*B[5*m + c] - l4*B[6*m + c] - l5*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c] - l2*B[4*m + c] - l3*B[5*m + c] - l4*B[6*m + c] - l5*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[1*m + c] = B[1*m + c] - l0*B[2*m + c] - l1*B[3*m + c] - l2*B[4*m + c] - l3*B[5*m + c] - l4*B[6*m + c] - l5*B[7*m + c]; });
   }
   {
     const T l0 = L[8], l1 = L[16], l2 = L[24], l3 = L[32], l4 = L[40], l5 = L[48], l6 = L[56];
-    for (std::size_t c = 0; c < m / 4 * 4; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c] - l3*B[4*m + c] - l4*B[5*m + c] - l5*B[6*m + c] - l6*B[7*m + c];
-    for (std::size_t c = m / 4 * 4; c < m; ++c) B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c] - l3*B[4*m + c] - l4*B[5*m + c] - l5*B[6*m + c] - l6*B[7*m + c];
+    each_column<m>([&](std::size_t c) { B[0*m + c] = B[0*m + c] - l0*B[1*m + c] - l1*B[2*m + c] - l2*B[3*m + c] - l3*B[4*m + c] - l4*B[5*m + c] - l5*B[6*m + c] - l6*B[7*m + c]; });
   }
 }
 

@@ -14,21 +14,14 @@ namespace {
 // fast on a 21-joint tree, 1.12 on the 7-joint arm and the quadruped (g++ -O2, each header timed in
 // both places of one process), with results within 4e-16 of the largest entry.
 //
-// `statement` for the columns c of ldlt_solve_rows's B, in two loops: the first over a multiple of
-// four columns, the rest after it. g++ -O2 vectorizes only a loop that needs no scalar remainder:
-// 42 columns in one loop went two lanes wide even in AVX code, and as 40 and 2 the AVX copy
-// (emit/cpp_avx_dispatch) runs the first four wide: the 21-joint tree's solve 1.5 times as fast.
-// Each column's operations are the same either way.
-// Where M has fewer rows than solve_rows_avx_from_coordinates, one loop: no AVX copy is written.
-std::string over_columns(std::size_t n, const std::string& indent, const std::string& statement) {
-  if (n < solve_rows_avx_from_coordinates) return fmt::format("{}for (std::size_t c = 0; c < m; ++c) {}\n", indent, statement);
-  return fmt::format("{0}for (std::size_t c = 0; c < m / 4 * 4; ++c) {1}\n{0}for (std::size_t c = m / 4 * 4; c < m; ++c) {1}\n",
-                     indent, statement);
+// `statement` for each column c of ldlt_solve_rows's B, by each_column (solve_rows_functions).
+std::string over_columns(const std::string& indent, const std::string& statement) {
+  return fmt::format("{}each_column<m>([&](std::size_t c) {{ {} }});\n", indent, statement);
 }
 
-// For ldlt_solve_rows: row `to` of B minus Σ L_k row k over `terms` (L's entry, k), in one loop over
-// the columns. L's entries are read first: B might alias L, and would make the loop read them again.
-std::string subtract_rows(std::size_t n, std::size_t to, const std::vector<std::pair<std::string, std::size_t>>& terms) {
+// For ldlt_solve_rows: row `to` of B minus Σ L_k row k over `terms` (L's entry, k), in one pass
+// over the columns. L's entries are read first: B might alias L, and would make the loop read them again.
+std::string subtract_rows(std::size_t to, const std::vector<std::pair<std::string, std::size_t>>& terms) {
   if (terms.empty()) return "";
   std::string factors, sum;
   for (std::size_t t = 0; t < terms.size(); ++t) {
@@ -36,12 +29,12 @@ std::string subtract_rows(std::size_t n, std::size_t to, const std::vector<std::
     sum += fmt::format(" - l{}*B[{}*m + c]", t, terms[t].second);
   }
   return fmt::format("  {{\n    const T {0};\n{1}  }}\n", factors,
-                     over_columns(n, "    ", fmt::format("B[{0}*m + c] = B[{0}*m + c]{1};", to, sum)));
+                     over_columns("    ", fmt::format("B[{0}*m + c] = B[{0}*m + c]{1};", to, sum)));
 }
 
 std::string scale_rows(std::size_t n) {
   return fmt::format("  for (std::size_t i = 0; i < {}; ++i) {{\n    const T r = T(negated ? -1 : 1)/D[i];\n{}  }}\n", n,
-                     over_columns(n, "    ", "B[i*m + c] = B[i*m + c]*r;"));
+                     over_columns("    ", "B[i*m + c] = B[i*m + c]*r;"));
 }
 
 using Terms = std::vector<std::pair<std::string, std::size_t>>;
@@ -69,7 +62,7 @@ LdltCode unrolled(std::size_t n) {
     c.solve += fmt::format("  b[{}] = {};\n", i, y);
     Terms terms;
     for (std::size_t k = 0; k < i; ++k) terms.emplace_back(fmt::format("L[{}]", i * n + k), k);
-    c.solve_rows += subtract_rows(n, i, terms);
+    c.solve_rows += subtract_rows(i, terms);
   }
   c.solve_rows += scale_rows(n);
   for (std::size_t i = 0; i < n; ++i) c.solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
@@ -79,7 +72,7 @@ LdltCode unrolled(std::size_t n) {
     c.solve += fmt::format("  b[{}] = {};\n", i, x);
     Terms terms;
     for (std::size_t k = i + 1; k < n; ++k) terms.emplace_back(fmt::format("L[{}]", k * n + i), k);
-    c.solve_rows += subtract_rows(n, i, terms);
+    c.solve_rows += subtract_rows(i, terms);
   }
   return c;
 }
@@ -104,7 +97,7 @@ LdltCode loops(std::size_t n) {
       "  for (std::size_t i = 0; i < {0}; ++i) b[i] = b[i] / D[i];\n"
       "  for (std::size_t i = {0} - 1; i-- > 0;)\n"
       "    for (std::size_t k = i + 1; k < {0}; ++k) b[i] = b[i] - L[k * {0} + i] * b[k];\n", n);
-  const std::string subtract = over_columns(n, "      ", "B[i*m + c] = B[i*m + c] - l*B[k*m + c];");
+  const std::string subtract = over_columns("      ", "B[i*m + c] = B[i*m + c] - l*B[k*m + c];");
   c.solve_rows = fmt::format(
       "  for (std::size_t i = 1; i < {0}; ++i)\n"
       "    for (std::size_t k = 0; k < i; ++k) {{\n"
@@ -147,7 +140,7 @@ LdltCode tree_ldlt_code(const std::vector<int>& parent) {
       c.solve += fmt::format("  b[{0}] = b[{0}] - L[{1}]*b[{2}];\n", i, k * n + i, k);
       from_below[i].emplace_back(fmt::format("L[{}]", k * n + i), k);
     }
-  for (std::size_t i = n; i-- > 0;) c.solve_rows += subtract_rows(n, i, from_below[i]);
+  for (std::size_t i = n; i-- > 0;) c.solve_rows += subtract_rows(i, from_below[i]);
   for (std::size_t i = 0; i < n; ++i) c.solve += fmt::format("  b[{0}] = b[{0}]/D[{0}];\n", i);
   c.solve_rows += scale_rows(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -156,7 +149,7 @@ LdltCode tree_ldlt_code(const std::vector<int>& parent) {
       c.solve += fmt::format("  b[{0}] = b[{0}] - L[{1}]*b[{2}];\n", i, i * n + j, j);
       terms.emplace_back(fmt::format("L[{}]", i * n + j), j);
     }
-    c.solve_rows += subtract_rows(n, i, terms);
+    c.solve_rows += subtract_rows(i, terms);
   }
   return c;
 }
@@ -180,15 +173,33 @@ std::vector<int> tree_of_mass_matrix(const Equations& e, std::size_t n) {
 
 }  // namespace
 
+// g++ -O2 vectorizes only a loop that needs no scalar remainder: 42 columns in one loop went two
+// lanes wide even in AVX code, and as 40 and 2 the AVX copy (emit/cpp_avx_dispatch) runs the 40
+// four wide: the 21-joint tree's solve 1.5 times as fast. Each column's operations are the same
+// either way. each_column writes the two loops once: as two loops at every row the arm's header
+// was 1.5 KB larger; as two passes of the whole solve (40 columns, then 2) the arm's solve took
+// 100 ns instead of 80 (L's entries and D's reciprocals twice).
+std::string solve_rows_functions(const LdltCode& code, std::size_t n) {
+  return "/// column(c) for the m columns c, in two loops: over m / 4 * 4 of them, then the rest.\n"
+         "template <std::size_t m, class Column>\n"
+         "inline void each_column(Column column) {\n"
+         "  for (std::size_t c = 0; c < m / 4 * 4; ++c) column(c);\n"
+         "  for (std::size_t c = m / 4 * 4; c < m; ++c) column(c);\n"
+         "}\n\n"
+         "/// As ldlt_solve, for the m columns of B (" + std::to_string(n) + "xm, row-major) at once: each row's operations in\n"
+         "/// a pass over its columns, which the compiler vectorizes, and D's reciprocals taken once;\n"
+         "/// `negated` solves for -x (exactly: the reciprocals' sign carries through).\n"
+         "template <std::size_t m, bool negated = false, class T>\n"
+         "inline void ldlt_solve_rows(const T* L, const T* D, T* B) {\n  (void)L;\n" +
+         code.solve_rows + "}\n\n" + (n < solve_rows_avx_from_coordinates ? std::string() : solve_rows_avx_dispatch());
+}
+
 std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
   const char* functions =
       "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n\n"
       "/// Solves {2} x = b in place. b: {0}.\n"
       "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{3}}}\n\n"
-      "/// As ldlt_solve, for the m columns of B ({0}xm, row-major) at once: each row's operations in\n"
-      "/// one loop over its columns, which the compiler vectorizes, and D's reciprocals taken once;\n"
-      "/// `negated` solves for -x (exactly: the reciprocals' sign carries through).\n"
-      "template <std::size_t m, bool negated = false, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{4}}}\n\n{5}";
+      "{4}";
   if (std::vector<int> tree = tree_of_mass_matrix(e, n); !tree.empty()) {
     LdltCode ldlt = tree_ldlt_code(tree);
     return fmt::format(
@@ -197,13 +208,13 @@ std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
                "/// tree (or in the chain that joints following another's coordinate make), so nothing fills\n"
                "/// in beyond it. M, L: {0}x{0}, row-major (L unit lower triangular, only those entries\n"
                "/// written); D: {0}.\n", n) +
-           fmt::format(fmt::runtime(functions), n, ldlt.factor, "L^T D L", ldlt.solve, ldlt.solve_rows, n < solve_rows_avx_from_coordinates ? "" : solve_rows_avx_dispatch());
+           fmt::format(fmt::runtime(functions), n, ldlt.factor, "L^T D L", ldlt.solve, solve_rows_functions(ldlt, n));
   }
   LdltCode ldlt = ldlt_code(n);
   return fmt::format("/// M = L D L^T for the symmetric positive definite {0}x{0} mass matrix{1}.\n"
                      "/// M, L: {0}x{0}, row-major (L unit lower triangular, only below the diagonal written); D: {0}.\n",
                      n, ldlt.unrolled ? ", unrolled" : "") +
-         fmt::format(fmt::runtime(functions), n, ldlt.factor, "L D L^T", ldlt.solve, ldlt.solve_rows, n < solve_rows_avx_from_coordinates ? "" : solve_rows_avx_dispatch());
+         fmt::format(fmt::runtime(functions), n, ldlt.factor, "L D L^T", ldlt.solve, solve_rows_functions(ldlt, n));
 }
 
 }  // namespace eomgen

@@ -14,8 +14,8 @@ namespace eomgen {
 struct LdltCode {
   std::string factor;  // body of ldlt_factor(const T* M, T* L, T* D)
   std::string solve;   // body of ldlt_solve(const T* L, const T* D, T* b)
-  // body of ldlt_solve_rows<m>(const T* L, const T* D, T* B): the same row operations on the m
-  // columns of B at once
+  // body of ldlt_solve_rows<m, negated>(const T* L, const T* D, T* B): the same row operations on
+  // the m columns of B at once, each by each_column
   std::string solve_rows;
   bool unrolled = true;
 };
@@ -31,6 +31,11 @@ LdltCode ldlt_code(std::size_t n);
 /// stays on the chains (zeros of M there are allowed). The same functions: ldlt_factor writes L
 /// and D, ldlt_solve solves Lᵀ D L x = b (from the leaves up, scaled, then down).
 LdltCode tree_ldlt_code(const std::vector<int>& parent);
+
+/// each_column (a row's pass over B's m columns, as two loops: m / 4 * 4 of them and the rest) and
+/// ldlt_solve_rows with `code`'s solve_rows, documented, for an n×n M; from
+/// solve_rows_avx_from_coordinates on also its AVX copy (emit/cpp_avx_dispatch).
+std::string solve_rows_functions(const LdltCode& code, std::size_t n);
 
 /// The two functions, documented, for the n×n M of `e`: the tree's factorization when
 /// e.coordinate_parents gives one and M's zeros are still those of the tree (no transformation has

@@ -121,10 +121,8 @@ TEST(AvxDispatch, NoCopyWhereTheProgramHasAvxOrTheMacroSaysNot) {
 // with its AVX copy: at random L and D, the overload (the copy from 8 columns on) and the copy give
 // the template's bits for 42, 14, 9 and 6 columns (remainders of 2, 2, 1 and 2 after the
 // four-wide loop), with g++ and clang++; with -mavx (no copy) the overload is left out.
-std::string solve_rows_functions(const std::string& name, const LdltCode& code) {
-  return "namespace " + name + " {\ntemplate <std::size_t m, bool negated = false, class T>\n" +
-         "inline void ldlt_solve_rows(const T* L, const T* D, T* B) {\n  (void)L;\n" + code.solve_rows + "}\n" +
-         solve_rows_avx_dispatch() + "}\n";
+std::string solves_in(const std::string& name, const LdltCode& code, std::size_t n) {
+  return "namespace " + name + " {\n" + solve_rows_functions(code, n) + "}\n";
 }
 
 const char* solve_rows_check = R"cpp(
@@ -176,9 +174,8 @@ TEST(AvxDispatch, TheSolveForManyColumnsGivesTheTemplatesBits) {
   GTEST_SKIP() << "the AVX copy is for x86-64";
 #else
   if (!__builtin_cpu_supports("avx")) GTEST_SKIP() << "this processor has no AVX";
-  std::string program = "#include <cstddef>\n" + solve_rows_functions("unrolled", ldlt_code(7)) +
-                        solve_rows_functions("loops", ldlt_code(30)) +
-                        solve_rows_functions("tree", tree_ldlt_code({-1, 0, 1, 2, 3, 4, 5, 6, 7, 5, 9, 10, 5, 12})) +
+  std::string program = "#include <cstddef>\n" + solves_in("unrolled", ldlt_code(7), 7) + solves_in("loops", ldlt_code(30), 30) +
+                        solves_in("tree", tree_ldlt_code({-1, 0, 1, 2, 3, 4, 5, 6, 7, 5, 9, 10, 5, 12}), 14) +
                         solve_rows_check;
   ASSERT_FALSE(ldlt_code(30).unrolled) << "the loops are checked";
   for (const std::string compiler : {"g++", "clang++"}) {

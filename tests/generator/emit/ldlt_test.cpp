@@ -17,14 +17,14 @@
 namespace eomgen::test {
 namespace {
 
-std::string functions(const std::string& name, const LdltCode& code) {
+std::string functions(const std::string& name, const LdltCode& code, std::size_t n) {
   return fmt::format(
       "namespace {0} {{\n"
       "template <class T>\ninline void ldlt_factor(const T* M, T* L, T* D) {{\n  (void)L;\n{1}}}\n"
       "template <class T>\ninline void ldlt_solve(const T* L, const T* D, T* b) {{\n  (void)L;\n{2}}}\n"
-      "template <std::size_t m, bool negated = false, class T>\ninline void ldlt_solve_rows(const T* L, const T* D, T* B) {{\n  (void)L;\n{3}}}\n"
+      "{3}"
       "}}\n",
-      name, code.factor, code.solve, code.solve_rows);
+      name, code.factor, code.solve, solve_rows_functions(code, n));
 }
 
 // M random, symmetric and diagonally dominant (so positive definite), zero where `related` says (a
@@ -104,8 +104,8 @@ TEST(MassMatrixFactorization, BothSolvesSolveDenseAndTreeMatrices) {
   {
     std::ofstream out(dir + "/check.cpp");
     out << "#include <cstddef>\n#define PARENTS " << parents << "\n#define TREE_SIZE " << parent.size() << "\n"
-        << functions("unrolled", ldlt_code(5)) << functions("loops", ldlt_code(30))
-        << functions("tree", tree_ldlt_code(parent)) << check;
+        << functions("unrolled", ldlt_code(5), 5) << functions("loops", ldlt_code(30), 30)
+        << functions("tree", tree_ldlt_code(parent), parent.size()) << check;
   }
   EXPECT_EQ(run_command("cd '" + dir + "' && c++ -std=c++17 -O1 -Wall -Wextra -Werror check.cpp -o check && ./check"), 0);
   EXPECT_FALSE(ldlt_code(30).unrolled) << "the loops are checked";
