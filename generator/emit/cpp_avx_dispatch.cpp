@@ -39,6 +39,35 @@ std::vector<Parameter> double_parameters(const std::string& list) {
   return out;
 }
 
+// The AVX copy of a function's double instance and the overload for double that takes it, under
+// `guard`; the one text for gradients and the solve.
+struct Dispatch {
+  std::string comment;             // the two lines saying what the copy is
+  std::string head;                // the template line the copy and the overload need, or ""
+  std::string name;                // NAME: the copy is NAME_avx, the overload NAME
+  std::string parameters;          // for double
+  std::string arguments;
+  std::string instance;            // the template's double instance the copy inlines
+  std::string template_arguments;  // in the overload's call of the copy
+  std::string when;                // a condition the overload asks first, "" or "... && "
+};
+
+std::string copy_and_overload(const Dispatch& d) {
+  return fmt::format("{0}{1}{2}__attribute__((target(\"avx\"), flatten)) inline void {3}_avx({4}) {{\n"
+                     "  {6}({5});\n"
+                     "}}\n"
+                     "{2}inline void {3}({4}) {{\n"
+                     "{7}"
+                     "  if ({8}avx)\n"
+                     "    {3}_avx{9}({5});\n"
+                     "  else\n"
+                     "    {6}({5});\n"
+                     "}}\n"
+                     "#endif\n\n",
+                     guard, d.comment, d.head, d.name, d.parameters, d.arguments, d.instance, processor_has_avx, d.when,
+                     d.template_arguments);
+}
+
 }  // namespace
 
 std::string with_avx_dispatch(const std::string& function) {
@@ -52,40 +81,18 @@ std::string with_avx_dispatch(const std::string& function) {
     declarations += (declarations.empty() ? "" : ", ") + p.declaration;
     arguments += (arguments.empty() ? "" : ", ") + p.name;
   }
-  return function + guard +
-         fmt::format("/// {0} for double also as AVX code (a fifth smaller: more of it stays in the instruction cache;\n"
-                     "/// the same results to the last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.\n"
-                     "__attribute__((target(\"avx\"), flatten)) inline void {0}_avx({1}) {{\n"
-                     "  {0}<double>({2});\n"
-                     "}}\n"
-                     "inline void {0}({1}) {{\n"
-                     "{3}"
-                     "  if (avx)\n"
-                     "    {0}_avx({2});\n"
-                     "  else\n"
-                     "    {0}<double>({2});\n"
-                     "}}\n"
-                     "#endif\n\n",
-                     name, declarations, arguments, processor_has_avx);
+  return function + copy_and_overload({fmt::format("/// {} for double also as AVX code (a fifth smaller: more of it stays in the instruction cache;\n"
+                                                   "/// the same results to the last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.\n",
+                                                   name),
+                                       "", name, declarations, arguments, name + "<double>", "", ""});
 }
 
 std::string solve_rows_avx_dispatch() {
-  return std::string(guard) +
-         "/// ldlt_solve_rows for double also as AVX code (four columns at a time; the same results to the\n"
-         "/// last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.\n"
-         "template <std::size_t m, bool negated = false>\n"
-         "__attribute__((target(\"avx\"), flatten)) inline void ldlt_solve_rows_avx(const double* L, const double* D, double* B) {\n"
-         "  ldlt_solve_rows<m, negated, double>(L, D, B);\n"
-         "}\n"
-         "template <std::size_t m, bool negated = false>\n"
-         "inline void ldlt_solve_rows(const double* L, const double* D, double* B) {\n" +
-         processor_has_avx +
-         "  if (m >= 8 && avx)\n"
-         "    ldlt_solve_rows_avx<m, negated>(L, D, B);\n"
-         "  else\n"
-         "    ldlt_solve_rows<m, negated, double>(L, D, B);\n"
-         "}\n"
-         "#endif\n\n";
+  return copy_and_overload({"/// ldlt_solve_rows for double also as AVX code (four columns at a time; the same results to the\n"
+                            "/// last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.\n",
+                            "template <std::size_t m, bool negated = false>\n", "ldlt_solve_rows",
+                            "const double* L, const double* D, double* B", "L, D, B", "ldlt_solve_rows<m, negated, double>",
+                            "<m, negated>", "m >= 8 && "});
 }
 
 }  // namespace eomgen

@@ -7,7 +7,7 @@
 /// register copy and each takes about 7 bytes. The 7-joint arm's jacobian_state function is then
 /// 71 KB of code, more than a first-level instruction cache of 32 or 64 KB, and it runs at the speed
 /// its code arrives from the second level. AVX's VEX encoding of the same scalar operations takes
-/// three operands: the same function is 57 KB, and ran 1.2-1.3 times as fast with a 32 KB cache
+/// three operands: the same function is 57 KB, and ran 1.2-1.5 times as fast with a 32 KB cache
 /// and 2.2 times with a 64 KB one (tests/benchmarks/rigid_body_trees.md). AVX has no fused
 /// multiply-add, so both copies do the same operations in the same order and give the same
 /// results to the last bit (tested). The price is compiling the function twice.
