@@ -86,7 +86,7 @@ struct NewtonEulerRecursion {
   std::optional<BodiesGradient> bodies_gradient;
   /// the links of those loops (emit/cpp_tree_gradient_loops.hpp), or null
   const HingeTreeLinks* gradient_loops() const {
-    return bodies_gradient && bodies_gradient->closed_form.loops ? &*bodies_gradient->closed_form.loops : nullptr;
+    return bodies_gradient ? bodies_gradient->loops() : nullptr;
   }
   /// A joint tree's q'' by the articulated-body algorithm, where ModelChoice::forward_dynamics asks
   /// for it or the tree is deep enough: the header's rhs takes it where asked or where its code is

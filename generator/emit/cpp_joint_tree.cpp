@@ -84,13 +84,13 @@ std::string inverse_dynamics_gradient_body(const Equations& e, bool closed_form)
   sweep.follow(w.write_intermediates_of(swept));
   std::vector<ex> entries = swept_entries(w, sweep, swept, n);
   std::size_t nq = s.num_coordinates();
-  const InverseDynamicsGradient* bodies = closed_form ? &recursion.bodies_gradient->closed_form : nullptr;
+  const InverseDynamicsGradient* bodies = closed_form ? recursion.bodies_gradient->expressions() : nullptr;
   for (std::size_t i = 0; i < n && bodies; ++i) {
     for (std::size_t j = 0; j < nq; ++j) entries[i * W + j] += bodies->coordinates(unsigned(i), unsigned(j));
     for (std::size_t j = 0; j < n; ++j) entries[i * W + nq + j] += bodies->velocities(unsigned(i), unsigned(j));
   }
   w.assign(entries, written_into_F);
-  if (bodies && bodies->loops) call_tree_gradient_loops(w, e, nq, W);
+  if (closed_form && recursion.bodies_gradient->loops()) call_tree_gradient_loops(w, e, nq, W);
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
@@ -175,7 +175,7 @@ std::string straight_tree_acceleration_gradient_body(const Equations& e) {
   const Symbols& s = e.symbols;
   std::size_t n = e.num_velocities(), nq = s.num_coordinates(), W = nq + n;
   const BodiesGradient& bodies = *e.newton_euler()->bodies_gradient;
-  const InverseDynamicsGradient& closed = bodies.closed_form;
+  const InverseDynamicsGradient& closed = *bodies.expressions();
   BodyWriter w(e);
   TangentSweep sweep(w, state_directions(s));
   sweep.follow(w.write_intermediates_of(bodies.applied_inverse_dynamics));

@@ -179,7 +179,7 @@ ConstraintTerms constraint_terms(const Constraint& c, const Symbols& s, const Re
 // τ = the bodies' τ + the applied part; a joint tree keeps the two apart, for its bodies' closed-form
 // derivatives (Mechanics::bodies_gradient)
 void add_applied(Mechanics& m, std::vector<ex> tau, const std::vector<ex>& applied,
-                 const std::optional<InverseDynamicsGradient>& bodies_gradient) {
+                 const std::optional<JointTreeGradient>& bodies_gradient) {
   for (std::size_t j = 0; j < tau.size(); ++j) tau[j] += applied[j];
   m.inverse_dynamics = tau;
   if (!bodies_gradient) return;
@@ -197,7 +197,7 @@ void add_inverse_dynamics(Mechanics& m, const Model& model, RecursiveKinematics&
     m.acceleration_symbols.emplace_back(fmt::format("ddq{}", k));
   const std::vector<GiNaC::symbol>& ddq = m.acceleration_symbols;
   std::vector<ex> tau;
-  std::optional<InverseDynamicsGradient> bodies_gradient;
+  std::optional<JointTreeGradient> bodies_gradient;
   if (joint_tree) {
     // a tree of joints: M, the bias forces and τ by the recursions in the frames' own coordinates
     JointTreeDynamics tree = joint_tree_dynamics(model, velocities, ddq, m.intermediates, m.acceleration_intermediates);

@@ -208,7 +208,7 @@ class Gradient {
   // chain rule each pair of links adds its part)
   InverseDynamicsGradient pairs(std::size_t velocities, std::size_t coordinates) const {
     InverseDynamicsGradient g{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
-                              GiNaC::matrix(unsigned(velocities), unsigned(velocities)), std::nullopt,
+                              GiNaC::matrix(unsigned(velocities), unsigned(velocities)),
                               GiNaC::matrix(unsigned(velocities), unsigned(velocities)), std::vector<ex>(velocities, 0)};
     for (std::size_t k = 0; k < links_.size(); ++k)
       for (int up = int(k); up >= 0; up = links_[std::size_t(up)].parent) {
@@ -465,11 +465,13 @@ class Gradient {
 
 std::vector<ex> written_expressions(const BodiesGradient& g) {
   std::vector<ex> out = g.applied_inverse_dynamics;
-  for (const GiNaC::matrix* m : {&g.closed_form.coordinates, &g.closed_form.velocities, &g.closed_form.mass_matrix})
-    for (unsigned i = 0; i < m->nops(); ++i) out.push_back(m->op(i));
-  out.insert(out.end(), g.closed_form.bias.begin(), g.closed_form.bias.end());
-  if (!g.closed_form.loops) return out;
-  const HingeTreeLinks& l = *g.closed_form.loops;
+  if (const InverseDynamicsGradient* closed = g.expressions()) {
+    for (const GiNaC::matrix* m : {&closed->coordinates, &closed->velocities, &closed->mass_matrix})
+      for (unsigned i = 0; i < m->nops(); ++i) out.push_back(m->op(i));
+    out.insert(out.end(), closed->bias.begin(), closed->bias.end());
+    return out;
+  }
+  const HingeTreeLinks& l = *g.loops();
   auto add = [&](const auto& rows) {
     for (const auto& row : rows) out.insert(out.end(), row.begin(), row.end());
   };
@@ -484,16 +486,11 @@ std::vector<ex> written_expressions(const BodiesGradient& g) {
   return out;
 }
 
-InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
-                                            const std::vector<ex>& ddq, std::size_t velocities, std::size_t coordinates,
-                                            std::vector<Intermediate>& out) {
+JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity, const std::vector<ex>& ddq,
+                                      std::size_t velocities, std::size_t coordinates, std::vector<Intermediate>& out) {
   Gradient g(links, out);
-  if (velocities > loops_beyond_velocities && joint_pairs(links) > loops_beyond_pairs && g.loops_take_it()) {
-    InverseDynamicsGradient zero{GiNaC::matrix(unsigned(velocities), unsigned(coordinates)),
-                                 GiNaC::matrix(unsigned(velocities), unsigned(velocities)),
-                                 g.loop_inputs(gravity, g.jointed_root(gravity, ddq)), GiNaC::matrix(1, 1), {}};
-    return zero;
-  }
+  if (velocities > loops_beyond_velocities && joint_pairs(links) > loops_beyond_pairs && g.loops_take_it())
+    return g.loop_inputs(gravity, g.jointed_root(gravity, ddq));
   g.forward(gravity, ddq);
   g.backward();
   g.joint_quantities();

@@ -34,6 +34,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -113,25 +114,30 @@ struct HingeTreeLinks {
   std::optional<JointedRoot> root;
 };
 
+/// The closed form as expressions, for straight-line code: ∂τ/∂q and ∂τ/∂s, and from the same
+/// quantities the bodies' M = ∂τ/∂q'' (M_kj = S_k·I^C_k S_j) and τ at q'' = 0 (S_k·F⁰_k), so that
+/// jacobian_state may solve for q'' without forming M and f a second time.
 struct InverseDynamicsGradient {
   GiNaC::matrix coordinates;  // ∂τ_i/∂q_j, velocities × coordinates
   GiNaC::matrix velocities;   // ∂τ_i/∂s_j, velocities × velocities
-  /// set for a long tree of hinges and slides, whose derivatives are then those loops' (the two
-  /// matrices above zero)
-  std::optional<HingeTreeLinks> loops;
-  /// the bodies' M = ∂τ/∂q'' (M_kj = S_k·I^C_k S_j) and τ at q'' = 0 (S_k·F⁰_k), from the same
-  /// quantities, so that jacobian_state may solve for q'' without forming M and f a second time
-  /// (empty beside the loops)
-  GiNaC::matrix mass_matrix;
+  GiNaC::matrix mass_matrix;  // velocities × velocities
   std::vector<GiNaC::ex> bias;
 };
+
+/// A joint tree's closed form: as expressions, or, for a long tree of hinges and slides, as the
+/// inputs of the header's loops over its links, which form the same quantities at run time.
+using JointTreeGradient = std::variant<InverseDynamicsGradient, HingeTreeLinks>;
 
 /// A joint tree's τ in two parts for its derivatives: the bodies', whose ∂τ/∂(q, s) are the
 /// closed form above, and the rest (applied forces, [energy], dissipation), whose derivatives the
 /// header's tangent sweep takes.
 struct BodiesGradient {
   std::vector<GiNaC::ex> applied_inverse_dynamics;
-  InverseDynamicsGradient closed_form;
+  JointTreeGradient closed_form;
+  /// the closed form's expressions, or null where the loops take it
+  const InverseDynamicsGradient* expressions() const { return std::get_if<InverseDynamicsGradient>(&closed_form); }
+  /// the loops' inputs, or null where the closed form is expressions
+  const HingeTreeLinks* loops() const { return std::get_if<HingeTreeLinks>(&closed_form); }
 };
 
 /// Every expression of g that the header writes (the applied τ, the closed form's entries, the
@@ -144,8 +150,8 @@ std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
 /// more than 8 velocities and more than 32 pairs of a joint and one at or above it, counted by
 /// velocities (the measured crossovers, in joint_tree_derivatives.cpp), whose joints
 /// are hinges and slides, those that follow another's coordinate too, below a root joint of any
-/// kind (a floating base), gets the loops' inputs instead (InverseDynamicsGradient::loops).
-InverseDynamicsGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
+/// kind (a floating base), gets the loops' inputs instead.
+JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                             const std::vector<GiNaC::ex>& ddq, std::size_t velocities,
                                             std::size_t coordinates, std::vector<Intermediate>& out);
 

@@ -40,7 +40,7 @@ struct JointTreeDynamics {
   std::vector<int> velocity_parents;        // Equations::coordinate_parents, or empty
   GiNaC::ex kinetic_energy;                 // the bodies' T, from the frames' velocities
   /// ∂τ/∂q and ∂τ/∂s of inverse_dynamics in closed form (spatial/joint_tree_derivatives.hpp)
-  InverseDynamicsGradient gradient;
+  JointTreeGradient gradient;
   std::vector<TreeLink> links;  // the links as the gradient and the articulated-body algorithm take them
 };
 

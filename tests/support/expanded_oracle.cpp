@@ -64,6 +64,8 @@ void expect_expanded_derivatives(const std::string& tree_text, unsigned n) {
   ASSERT_TRUE(recursive.newton_euler() && recursive.newton_euler()->bodies_gradient);
   const BodiesGradient& bodies = *recursive.newton_euler()->bodies_gradient;
   ASSERT_EQ(bodies.applied_inverse_dynamics.size(), n);
+  const InverseDynamicsGradient* closed_form = bodies.expressions();
+  ASSERT_TRUE(closed_form);
   std::vector<ex> tau(n);
   std::vector<GiNaC::symbol> ddq(n);
   for (unsigned j = 0; j < n; ++j) {
@@ -74,8 +76,8 @@ void expect_expanded_derivatives(const std::string& tree_text, unsigned n) {
   GiNaC::matrix closed_q(n, n), closed_rate(n, n), expected_q(n, n), expected_rate(n, n);
   for (unsigned j = 0; j < n; ++j)
     for (unsigned c = 0; c < n; ++c) {
-      closed_q(j, c) = bodies.closed_form.coordinates(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]);
-      closed_rate(j, c) = bodies.closed_form.velocities(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]);
+      closed_q(j, c) = closed_form->coordinates(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.coordinates[c]);
+      closed_rate(j, c) = closed_form->velocities(j, c) + bodies.applied_inverse_dynamics[j].diff(recursive.symbols.velocities[c]);
       expected_q(j, c) = tau[j].diff(expanded.symbols.coordinates[c]);
       expected_rate(j, c) = tau[j].diff(expanded.symbols.velocities[c]);
     }
