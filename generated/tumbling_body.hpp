@@ -716,14 +716,9 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[88] = -(T(1)/T(2))*q_qy;
   J[89] = (T(1)/T(2))*q_qx;
   J[90] = (T(1)/T(2))*q_qw;
-  T rows[84] = {};
-  T F[78];
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);
-  for (std::size_t i = 0; i < 6; ++i)
-    for (std::size_t j = 0; j < 13; ++j) rows[i * 14 + j] = F[i * 13 + j];
-  detail::ldlt_solve_rows<14, true>(L, D, rows);
-  for (std::size_t i = 0; i < 6; ++i)
-    for (std::size_t j = 0; j < 13; ++j) J[(7 + i) * 13 + j] = rows[i * 14 + j];
+  T* rows = J + 91;
+  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::ldlt_solve_rows<13, true>(L, D, rows);
 }
 
 /// Input Jacobian dx'/du: zero upper block, M^-1 df/du below.

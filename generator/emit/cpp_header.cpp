@@ -152,36 +152,26 @@ std::string jacobian_state_function(const Equations& e, bool tree_pass) {
     for (std::size_t i = 0; i < nq; ++i)
       for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("J[{}] = T({});", i * N + j, j == nq + i ? 1 : 0));
   }
-  // the lower block's rows, −∂τ/∂x, then M^-1 applied to all its columns at once. With nq ≠ n the
-  // rows may have an odd length, which g++ -O2 does not vectorize (it would need a remainder loop):
-  // they are solved one column longer in a local array (the quadruped's jacobian_state ran 1.09
-  // times as fast so). Below six velocities the copies would cost more than the loops save.
-  std::size_t width = N % 2 && n >= 6 ? N + 1 : N;
-  if (width == N) w.line(fmt::format("T* rows = J + {};", nq * N));
-  else w.line(fmt::format("T rows[{}] = {{}};", n * width));
-  // a tree's rows are ∂τ/∂x, written in place by the gradient when they need no padding, and
-  // negated in the solve
+  // the lower block's rows, −∂τ/∂x, then M^-1 applied to all its columns at once, in place: the
+  // solve's rows of odd length are vectorized too (each_column: m / 4 * 4 columns, then the rest),
+  // so that solving them in a padded local array, as before, only added its copies (jacobian_state,
+  // g++ -O2, one core, the fastest of 101 batches: tests/crosscheck's quadruped 5.45-5.53 µs
+  // padded against 4.51-4.62 in place, example-robot-data's simple humanoid on a free joint
+  // 13.2-13.4 against 12.75-12.9)
+  w.line(fmt::format("T* rows = J + {};", nq * N));
+  // a tree's rows are ∂τ/∂x, written in place by the gradient, and negated in the solve
   // the loops' pass, or the closed form's straight-line code with q'' to be solved for (no given_ddq)
-  std::string pass_call = fmt::format("detail::tree_acceleration_gradient(t, x, u, p, {}L, D, {});",
-                                      e.gradient_loops() ? "" : "static_cast<const T*>(nullptr), ", width == N ? "rows" : "F");
-  if (tree_pass && width == N) {
+  std::string pass_call = fmt::format("detail::tree_acceleration_gradient(t, x, u, p, {}L, D, rows);",
+                                      e.gradient_loops() ? "" : "static_cast<const T*>(nullptr), ");
+  if (tree_pass) {
     w.line(pass_call);
-  } else if (newton_euler && width == N) {
-    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
   } else if (newton_euler) {
-    w.line(fmt::format("T F[{}];", n * N));
-    w.line(tree_pass ? pass_call : "detail::inverse_dynamics_gradient(t, x, ddq, u, p, F);");
-    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
-    w.line(fmt::format("  for (std::size_t j = 0; j < {}; ++j) rows[i * {} + j] = F[i * {} + j];", N, width, N));
+    w.line("detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);");
   } else {
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("rows[{}] = {};", i * width + j, code[j * n + i]));
+      for (std::size_t j = 0; j < N; ++j) w.line(fmt::format("rows[{}] = {};", i * N + j, code[j * n + i]));
   }
-  w.line(fmt::format("detail::ldlt_solve_rows<{}{}>(L, D, rows);", width, newton_euler ? ", true" : ""));
-  if (width != N) {
-    w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i)", n));
-    w.line(fmt::format("  for (std::size_t j = 0; j < {0}; ++j) J[({1} + i) * {0} + j] = rows[i * {2} + j];", N, nq, width));
-  }
+  w.line(fmt::format("detail::ldlt_solve_rows<{}{}>(L, D, rows);", N, newton_euler ? ", true" : ""));
   return function(fmt::format("/// Jacobian of the right-hand side, dx'/dx, analytic: the lower block is\n"
                               "/// M^-1 (df/dx - (dM/dx) {}'). J: {}x{}, row-major.\n",
                               e.uses_pseudo_velocities() ? "s" : "q'", N, N),
