@@ -152,7 +152,7 @@ std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
 /// are hinges and slides, those that follow another's coordinate too, below a root joint of any
 /// kind (a floating base), gets the loops' inputs instead.
 JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
-                                            const std::vector<GiNaC::ex>& ddq, std::size_t velocities,
-                                            std::size_t coordinates, std::vector<Intermediate>& out);
+                                      const std::vector<GiNaC::ex>& ddq, std::size_t velocities, std::size_t coordinates,
+                                      std::vector<Intermediate>& out);
 
 }  // namespace eomgen
