@@ -203,9 +203,6 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T p_mc = p[0];
   const T p_m = p[1];
@@ -226,9 +223,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_theta = x[3];
   const T p_m = p[1];
@@ -248,9 +242,6 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
 template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_theta = x[3];
   const T p_mc = p[0];
@@ -287,9 +278,6 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_theta = x[3];
   const T p_mc = p[0];
@@ -340,9 +328,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T p_mc = p[0];
   const T p_m = p[1];
@@ -373,9 +358,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_theta = x[3];
   const T p_m = p[1];
@@ -402,9 +384,6 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_x = x[2];
   const T dq_theta = x[3];
@@ -422,9 +401,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T p_m = p[1];
   const T p_l = p[2];
@@ -440,9 +416,6 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T p_l = p[2];
   const T trig_angle[1] = {q_theta};
@@ -461,9 +434,6 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[1];
   const T dq_x = x[2];
   const T dq_theta = x[3];
@@ -527,9 +497,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0, 0}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_x = x[0];
   const T q_theta = x[1];
   const T p_l = p[2];

@@ -280,9 +280,6 @@ __attribute__((always_inline))
 #endif
 inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -386,9 +383,6 @@ namespace detail {
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -513,9 +507,6 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_coupler = x[1];
   const T dq_crank = x[3];
   const T dq_coupler = x[4];
@@ -538,9 +529,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -584,9 +572,6 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   (void)t; (void)x; (void)p; (void)C;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -621,9 +606,6 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
 template <class T>
 void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity) {
   (void)t; (void)x; (void)p; (void)position; (void)velocity;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -668,9 +650,6 @@ namespace detail {
 template <class T>
 void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* accelerations, T* lambda) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -787,9 +766,6 @@ namespace detail {
 template <class T>
 void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -1028,9 +1004,6 @@ template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
   for (std::size_t i = 0; i < 96; ++i) out[i] = T(0);
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_crank = x[0];
   const T q_coupler = x[1];
   const T q_rocker = x[2];
@@ -1118,9 +1091,7 @@ void body_poses(T t, const T* x, const T* p, T* out) {
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   out[0] = (T(1)/T(50))*sqrt(T(99));
   out[1] = T(1)/T(50);
   out[2] = T(1)/T(50);

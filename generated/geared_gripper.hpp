@@ -259,9 +259,7 @@ __attribute__((always_inline))
 #endif
 inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos;
   const T q_shoulder = x[0];
   const T q_elbow = x[1];
   const T q_grip = x[2];
@@ -469,9 +467,7 @@ namespace detail {
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos;
   const T q_shoulder = x[0];
   const T q_elbow = x[1];
   const T q_grip = x[2];
@@ -939,9 +935,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos; using std::sqrt;
   const T q_shoulder = x[0];
   const T q_elbow = x[1];
   const T q_grip = x[2];
@@ -980,9 +974,7 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos;
   const T q_shoulder = x[0];
   const T q_elbow = x[1];
   const T q_grip = x[2];
@@ -1065,9 +1057,7 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1, 1, 1, 1
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos; using std::sqrt;
   const T q_shoulder = x[0];
   const T q_elbow = x[1];
   const T q_grip = x[2];
@@ -1263,9 +1253,7 @@ template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
   for (std::size_t i = 0; i < 90; ++i) out[i] = T(0);
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   out[2] = (T(3)/T(500))*sqrt(T(500));
   out[8] = T(1);
   out[9] = T(1);

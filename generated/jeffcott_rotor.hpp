@@ -356,9 +356,7 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos;
   const T q_xi = x[0];
   const T q_eta = x[1];
   const T p_Omega = p[3];

@@ -223,9 +223,6 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
 template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[2];
   const T s_v = x[3];
   const T s_w = x[4];
@@ -260,9 +257,6 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[2];
   const T s_v = x[3];
   const T p_m = p[0];
@@ -381,9 +375,6 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   (void)t; (void)x; (void)p; (void)C;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[2];
   const T trig_angle[1] = {q_phi};
   T trig_sin[1], trig_cos[1];
@@ -400,9 +391,6 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
 template <class T>
 void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity) {
   (void)t; (void)x; (void)p; (void)position; (void)velocity;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[2];
   const T s_v = x[3];
   const T s_w = x[4];
@@ -455,9 +443,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_x = x[0];
   const T q_y = x[1];
   const T q_phi = x[2];
@@ -487,9 +472,7 @@ void body_poses(T t, const T* x, const T* p, T* out) {
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T p_m = p[0];
   const T p_J = p[1];
   out[2] = T(0);

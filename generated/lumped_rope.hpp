@@ -160,9 +160,6 @@ inline void sin_cos(const double (&angle)[N], double (&s)[N], double (&c)[N]) {
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -263,9 +260,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -375,9 +369,6 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
 template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -622,9 +613,6 @@ namespace detail {
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -927,9 +915,6 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -1392,9 +1377,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -1652,9 +1634,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -1684,9 +1663,6 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];
@@ -1770,9 +1746,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0, 0, 0, 0
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_a1 = x[0];
   const T q_b1 = x[1];
   const T q_a2 = x[2];

@@ -259,9 +259,6 @@ __attribute__((always_inline))
 #endif
 inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_q2 = x[1];
   const T q_q3 = x[2];
   const T dq_q1 = x[3];
@@ -463,9 +460,6 @@ namespace detail {
 template <class T>
 void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_q2 = x[1];
   const T q_q3 = x[2];
   const T dq_q1 = x[3];
@@ -853,9 +847,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_q2 = x[1];
   const T q_q3 = x[2];
   const T p_g = p[0];
@@ -884,9 +875,6 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_q1 = x[0];
   const T q_q2 = x[1];
   const T q_q3 = x[2];
@@ -977,9 +965,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1, 1, 1}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_q1 = x[0];
   const T q_q2 = x[1];
   const T q_q3 = x[2];
@@ -1113,9 +1098,7 @@ void body_poses(T t, const T* x, const T* p, T* out) {
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T n0 = detail::constant<T>(0.014915828279506266, -5.442724024269314e-19, 4.6390196248516285e-35);
   const T n1 = detail::constant<T>(0.007094020181891124, 3.659992118253921e-19, 2.1823665819772953e-35);
   const T n2 = detail::constant<T>(1.6909500692725974, -1.0849474821788372e-16, 4.648971758774251e-33);

@@ -317,9 +317,6 @@ __attribute__((always_inline))
 #endif
 inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const T* p, T* M, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_q1 = x[0];
   const T q_q2 = x[1];
   const T q_q3 = x[2];
@@ -734,9 +731,7 @@ namespace detail {
 template <class T>
 void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos;
   const T q_q1 = x[0];
   const T q_q2 = x[1];
   const T q_q3 = x[2];
@@ -1762,9 +1757,7 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos; using std::sqrt;
   const T q_q1 = x[0];
   const T q_q2 = x[1];
   const T q_q3 = x[2];
@@ -1841,9 +1834,7 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos; using std::sqrt;
   const T q_q1 = x[0];
   const T q_q4 = x[3];
   const T q_q5 = x[4];
@@ -1946,9 +1937,7 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1, 1, 1, 1
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos; using std::sqrt;
   const T q_q1 = x[0];
   const T q_q2 = x[1];
   const T q_q3 = x[2];
@@ -2221,9 +2210,7 @@ template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
   for (std::size_t i = 0; i < 108; ++i) out[i] = T(0);
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   out[0] = sqrt(T(27)/T(1250));
   out[1] = (T(3)/T(250))*sqrt(T(250));
   out[2] = sqrt(T(141)/T(1250));

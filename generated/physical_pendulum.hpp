@@ -203,9 +203,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_m = p[0];
   const T p_s = p[1];
@@ -223,9 +220,6 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
 template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_m = p[0];
   const T p_s = p[1];
@@ -253,9 +247,6 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_m = p[0];
   const T p_s = p[1];
@@ -307,9 +298,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_m = p[0];
   const T p_s = p[1];
@@ -338,9 +326,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_m = p[0];
   const T p_s = p[1];
@@ -419,9 +404,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_s = p[1];
   const T trig_angle[1] = {q_phi};
@@ -450,9 +432,7 @@ void body_poses(T t, const T* x, const T* p, T* out) {
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T p_m = p[0];
   const T p_Ixx = p[2];
   const T p_Iyy = p[3];

@@ -216,9 +216,6 @@ inline void ldlt_solve_rows(const T* L, const T* D, T* B) {
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T p_m = p[0];
   const T p_R = p[1];
@@ -243,9 +240,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T dq_psi = x[5];
   const T dq_theta = x[6];
@@ -268,9 +262,6 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
 template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_psi = x[2];
   const T q_theta = x[3];
   const T dq_psi = x[5];
@@ -320,9 +311,6 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_psi = x[2];
   const T q_theta = x[3];
   const T dq_psi = x[5];
@@ -441,9 +429,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T dq_psi = x[5];
   const T dq_theta = x[6];
@@ -489,9 +474,6 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T dq_psi = x[5];
   const T dq_theta = x[6];
@@ -510,9 +492,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T p_m = p[0];
   const T p_R = p[1];
@@ -528,9 +507,6 @@ T potential_energy(T t, const T* x, const T* p) {
 template <class T>
 void outputs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* y) {
   (void)t; (void)x; (void)u; (void)p; (void)y;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T p_R = p[1];
   const T trig_angle[1] = {q_theta};
@@ -549,9 +525,6 @@ inline constexpr std::array<const char*, num_first_integrals> first_integral_nam
 template <class T>
 void first_integrals(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_theta = x[3];
   const T dq_psi = x[5];
   const T dq_theta = x[6];
@@ -571,9 +544,6 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   (void)t; (void)x; (void)p; (void)C;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_psi = x[2];
   const T p_R = p[1];
   const T trig_angle[1] = {q_psi};
@@ -598,9 +568,6 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
 template <class T>
 void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity) {
   (void)t; (void)x; (void)p; (void)position; (void)velocity;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_psi = x[2];
   const T dq_psi = x[5];
   const T dq_theta = x[6];
@@ -659,9 +626,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_x = x[0];
   const T q_y = x[1];
   const T q_psi = x[2];
@@ -724,9 +688,7 @@ void body_poses(T t, const T* x, const T* p, T* out) {
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T p_R = p[1];
   out[2] = T(0);
   out[3] = T(0);

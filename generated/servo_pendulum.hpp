@@ -229,9 +229,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T dq_phi = x[1];
   const T p_m = p[0];
@@ -253,9 +250,6 @@ void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
 template <class T>
 void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T dq_phi = x[1];
   const T p_m = p[0];
@@ -287,9 +281,6 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 template <class T>
 void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T* J) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T dq_phi = x[1];
   const T p_m = p[0];
@@ -328,9 +319,6 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T dq_phi = x[1];
   const T p_m = p[0];
@@ -357,9 +345,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T dq_phi = x[1];
   const T p_m = p[0];
@@ -395,9 +380,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_m = p[0];
   const T p_s = p[1];
@@ -475,9 +457,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{1}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T p_s = p[1];
   const T trig_angle[1] = {q_phi};
@@ -506,9 +485,7 @@ void body_poses(T t, const T* x, const T* p, T* out) {
 template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T p_m = p[0];
   const T p_I = p[2];
   out[3] = T(0);

@@ -280,9 +280,6 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T p_r = p[0];
@@ -314,9 +311,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T dq_phi = x[3];
@@ -366,9 +360,6 @@ void jacobian_input(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
 template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T dq_phi = x[3];
@@ -412,9 +403,6 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T dq_phi = x[3];
@@ -439,9 +427,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T p_r = p[0];
@@ -479,9 +464,6 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   (void)t; (void)x; (void)p; (void)C;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T p_r = p[0];
@@ -506,9 +488,6 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
 template <class T>
 void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity) {
   (void)t; (void)x; (void)p; (void)position; (void)velocity;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T q_x = x[2];
@@ -540,9 +519,6 @@ namespace detail {
 template <class T>
 void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* accelerations, T* lambda) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T q_x = x[2];
@@ -626,9 +602,6 @@ namespace detail {
 template <class T>
 void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T q_x = x[2];
@@ -771,9 +744,6 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{0, 1, 1}};
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_beta = x[1];
   const T q_x = x[2];
@@ -832,9 +802,7 @@ template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
   for (std::size_t i = 0; i < 54; ++i) out[i] = T(0);
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T p_r = p[0];
   const T p_l = p[1];
   out[8] = T(1);

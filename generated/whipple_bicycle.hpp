@@ -403,9 +403,6 @@ void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p,
 template <class T>
 void mass_matrix(T t, const T* x, const T* p, T* M) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -816,9 +813,6 @@ void mass_matrix(T t, const T* x, const T* p, T* M) {
 template <class T>
 void forcing(T t, const T* x, const detail::input_t<T>* u, const T* p, T* f) {
   (void)t; (void)x; (void)u; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -1372,9 +1366,6 @@ template <class T>
 void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* P, T* Q, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)B;
   for (std::size_t i = 0; i < 64; ++i) Q[i] = T(0);
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -2190,9 +2181,6 @@ void linearization(T t, const T* x, const detail::input_t<T>* u, const T* p, T* 
 template <class T>
 T kinetic_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -2524,9 +2512,6 @@ T kinetic_energy(T t, const T* x, const T* p) {
 template <class T>
 T potential_energy(T t, const T* x, const T* p) {
   (void)t; (void)x; (void)p;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_theta = x[7];
@@ -2593,9 +2578,7 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
 template <class T>
 void constraint_jacobian(T t, const T* x, const T* p, T* C) {
   (void)t; (void)x; (void)p; (void)C;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -2683,9 +2666,7 @@ void constraint_jacobian(T t, const T* x, const T* p, T* C) {
 template <class T>
 void constraint_residuals(T t, const T* x, const T* p, T* position, T* velocity) {
   (void)t; (void)x; (void)p; (void)position; (void)velocity;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -2755,9 +2736,7 @@ namespace detail {
 template <class T>
 void constrained_solution(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* accelerations, T* lambda) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt; using std::pow;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -3542,9 +3521,7 @@ namespace detail {
 template <class T>
 void constrained_sensitivities(T t, const T* x, const input_t<T>* u, const T* p, input_t<T> alpha, input_t<T> beta, T* J, T* B) {
   (void)t; (void)x; (void)u; (void)p; (void)alpha; (void)beta; (void)B;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt; using std::pow;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_psi = x[5];
@@ -5037,9 +5014,7 @@ inline constexpr std::array<int, num_drawn_shapes> drawn_shape_types{{3, 1, 1, 3
 template <class T>
 void body_poses(T t, const T* x, const T* p, T* out) {
   (void)t; (void)x; (void)p; (void)out;
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sin; using std::cos;
   const T q_phi = x[0];
   const T q_delta = x[1];
   const T q_thetaR = x[2];
@@ -5222,9 +5197,7 @@ template <class T>
 void drawn_shapes(const T* p, T* out) {
   (void)p; (void)out;
   for (std::size_t i = 0; i < 72; ++i) out[i] = T(0);
-  using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;
-  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;
-  using std::sqrt; using std::pow; using std::abs;
+  using std::sqrt;
   const T p_rR = p[5];
   const T p_mB = p[11];
   const T p_IBxx = p[12];

@@ -37,14 +37,6 @@ std::string quoted_list(const std::vector<std::string>& names, const std::string
 
 namespace {
 
-bool calls_functions(const ex& e) {
-  if (GiNaC::is_a<GiNaC::function>(e) || (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)))
-    return true;
-  for (std::size_t i = 0; i < e.nops(); ++i)
-    if (calls_functions(e.op(i))) return true;
-  return false;
-}
-
 // der(q) → dq_q; a pseudo-velocity s → s_s
 std::string velocity_name(const std::string& name) {
   if (name.rfind("der(", 0) == 0) return "dq_" + name.substr(4, name.size() - 5);
@@ -341,16 +333,16 @@ std::string with_named_constants(const std::string& statements) {
 }  // namespace
 
 std::string BodyWriter::finish(const std::string& unused) {
+  std::string body = with_named_constants(batched_trig_statements() + in_order_of_use(statements_));
   std::string head = "  " + unused + "\n";
-  if (uses_functions_) head += std::string("  ") + cpp_math_usings() + "\n";
+  if (std::string usings = cpp_math_usings(body); !usings.empty()) head += "  " + usings + "\n";
   for (const auto& in : inputs_)
     if (used_.count(in.symbol)) head += fmt::format("  const T {} = {};\n", in.name, in.source);
-  return head + with_named_constants(batched_trig_statements() + in_order_of_use(statements_));
+  return head + body;
 }
 
 void BodyWriter::note(const ex& e) {
   collect_symbols(e, used_);
-  uses_functions_ = uses_functions_ || calls_functions(e);
 }
 
 std::string BodyWriter::code(const ex& e) {

@@ -90,7 +90,6 @@ class BodyWriter {
   std::vector<GiNaC::symbol> accelerations_;
   std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_, own_names_;
   GiNaC::exset used_;
-  bool uses_functions_ = false;
   CommonSubexpressions cse_;
   std::string statements_;
   // recursive kinematics: the intermediates (the equations', those in q'', the recursion's), each

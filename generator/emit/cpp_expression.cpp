@@ -5,6 +5,7 @@
 #include "symbolic/decimal_numbers.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cfloat>
 #include <optional>
 #include <vector>
@@ -15,10 +16,29 @@ namespace eomgen {
 
 using GiNaC::ex;
 
-const char* cpp_math_usings() {
-  return "using std::sin; using std::cos; using std::tan; using std::asin; using std::acos; using std::atan;\n"
-         "  using std::atan2; using std::sinh; using std::cosh; using std::tanh; using std::exp; using std::log;\n"
-         "  using std::sqrt; using std::pow; using std::abs;";
+std::string cpp_math_usings(std::string_view code) {
+  static const char* const names[] = {"sin",  "cos",  "tan",  "asin", "acos", "atan", "atan2", "sinh",
+                                      "cosh", "tanh", "exp",  "log",  "sqrt", "pow",  "abs"};
+  auto identifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  auto called = [&](std::string_view name) {
+    for (std::size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {
+      bool starts = at == 0 || (!identifier(code[at - 1]) && code[at - 1] != ':');
+      if (starts && at + name.size() < code.size() && code[at + name.size()] == '(') return true;
+    }
+    return false;
+  };
+  std::string out;
+  int on_line = 0;
+  for (const char* name : names) {
+    if (!called(name)) continue;
+    if (on_line == 6) {
+      out += "\n  ";
+      on_line = 0;
+    }
+    out += fmt::format("{}using std::{};", on_line ? " " : "", name);
+    ++on_line;
+  }
+  return out;
 }
 
 namespace {
