@@ -69,6 +69,7 @@ set(EOMGEN_TEST_FILES
   generator/emit/cpp_constant_test.cpp              slow
   generator/emit/tangent_sweep_test.cpp             fast
   generator/emit/statement_order_test.cpp           fast
+  generator/emit/math_usings_test.cpp               fast
   generator/emit/ldlt_test.cpp                      fast
   generator/emit/avx_dispatch_test.cpp              fast
   generator/emit/dynamics_form_test.cpp             fast
