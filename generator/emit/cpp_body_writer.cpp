@@ -333,7 +333,8 @@ std::string with_named_constants(const std::string& statements) {
 }  // namespace
 
 std::string BodyWriter::finish(const std::string& unused) {
-  std::string body = with_named_constants(batched_trig_statements() + in_order_of_use(statements_));
+  std::string ordered = order_every_run_ ? in_order_of_use(statements_, 0) : in_order_of_use(statements_);
+  std::string body = with_named_constants(batched_trig_statements() + ordered);
   std::string head = "  " + unused + "\n";
   if (std::string usings = cpp_math_usings(body); !usings.empty()) head += "  " + usings + "\n";
   for (const auto& in : inputs_)

@@ -66,6 +66,8 @@ class BodyWriter {
   void line(const std::string& text) { statements_ += "  " + text + "\n"; }
   /// Declarations of the model symbols used, then the statements.
   std::string finish(const std::string& unused);
+  /// finish() puts every run of statements in order of use, however short (statement_order.hpp)
+  void order_every_run() { order_every_run_ = true; }
 
  private:
   struct Input {
@@ -89,6 +91,7 @@ class BodyWriter {
   std::string batched_trig_statements() const;
   std::vector<GiNaC::symbol> accelerations_;
   std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_, own_names_;
+  bool order_every_run_ = false;
   GiNaC::exset used_;
   CommonSubexpressions cse_;
   std::string statements_;

@@ -13,6 +13,9 @@ namespace eomgen {
 /// in which their operands become available, each preceded by what it needs and is not yet
 /// written. Other lines (calls, loops, declarations) stay where they are and bound the runs. The
 /// values and the operations are unchanged, only their order; the result depends on the text alone.
+/// A run shorter than `shortest_reordered` statements keeps the order it was written in; 0 orders
+/// every run, and without it the cut is the one measured in statement_order.cpp.
+std::string in_order_of_use(const std::string& statements, std::size_t shortest_reordered);
 std::string in_order_of_use(const std::string& statements);
 
 inline bool is_identifier_char(char c) {

@@ -85,6 +85,15 @@ TEST(StatementOrder, ShortRunsKeepTheirOrder) {
   EXPECT_EQ(in_order_of_use(short_run), short_run);
 }
 
+// the fused gradient's M and f (BodyWriter::order_every_run) take the order however short their run
+TEST(StatementOrder, AShortRunIsOrderedWhenEveryRunIsAsked) {
+  std::string short_run = level_by_level(10, 7);
+  std::vector<std::string> out = lines_of(in_order_of_use(short_run, 0));
+  EXPECT_EQ(most_alive(lines_of(short_run)), 10u);
+  EXPECT_LE(most_alive(out), 1u);
+  EXPECT_EQ(out[7], "  F[0] = a0_6;");
+}
+
 TEST(StatementOrder, ArrayEntriesKeepTheOrderOfTheirWritesAndReads) {
   std::string run = level_by_level(100, 7);
   run += "  M[1] = a3_6;\n  M[21] = M[1];\n  const T b = M[21]*T(2);\n  M[1] = a0_6*b;\n  M[21] = a1_6;\n";
