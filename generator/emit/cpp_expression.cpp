@@ -1,11 +1,12 @@
 #include "emit/cpp_expression.hpp"
 
 #include "emit/cpp_constant.hpp"
+#include "emit/statement_order.hpp"
 #include "symbolic/exact_double.hpp"
 #include "symbolic/decimal_numbers.hpp"
 
 #include <algorithm>
-#include <cctype>
+#include <array>
 #include <cfloat>
 #include <optional>
 #include <vector>
@@ -16,26 +17,32 @@ namespace eomgen {
 
 using GiNaC::ex;
 
+namespace {
+
+// std's functions that the C++ below calls unqualified: found by argument-dependent lookup for a
+// user's scalar type, by cpp_math_usings' declarations for double (abs is written as the header's
+// own detail::magnitude)
+constexpr std::array<std::string_view, 14> std_functions{"sin",  "cos",  "tan", "asin", "acos", "atan", "atan2",
+                                                         "sinh", "cosh", "tanh", "exp", "log", "sqrt", "pow"};
+
+}  // namespace
+
 std::string cpp_math_usings(std::string_view code) {
-  static const char* const names[] = {"sin",  "cos",  "tan",  "asin", "acos", "atan", "atan2", "sinh",
-                                      "cosh", "tanh", "exp",  "log",  "sqrt", "pow",  "abs"};
-  auto identifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  auto called = [&](std::string_view name) {
-    for (std::size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {
-      bool starts = at == 0 || (!identifier(code[at - 1]) && code[at - 1] != ':');
-      if (starts && at + name.size() < code.size() && code[at + name.size()] == '(') return true;
-    }
-    return false;
-  };
+  std::array<bool, std_functions.size()> called{};
+  for_each_identifier(code, 0, code.size(), [&](std::string_view id) {
+    std::size_t at = std::size_t(id.data() - code.data()), end = at + id.size();
+    if (end == code.size() || code[end] != '(' || (at > 0 && code[at - 1] == ':')) return;
+    for (std::size_t k = 0; k < std_functions.size(); ++k) called[k] = called[k] || id == std_functions[k];
+  });
   std::string out;
   int on_line = 0;
-  for (const char* name : names) {
-    if (!called(name)) continue;
+  for (std::size_t k = 0; k < std_functions.size(); ++k) {
+    if (!called[k]) continue;
     if (on_line == 6) {
       out += "\n  ";
       on_line = 0;
     }
-    out += fmt::format("{}using std::{};", on_line ? " " : "", name);
+    out += fmt::format("{}using std::{};", on_line ? " " : "", std_functions[k]);
     ++on_line;
   }
   return out;
@@ -205,14 +212,12 @@ class CppPrinter {
     if (name_of_call_)
       if (std::string computed = name_of_call_(e); !computed.empty()) return {computed, 4};
     std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-    static const std::vector<std::string> known = {"sin", "cos",  "tan",  "asin", "acos", "atan", "atan2",
-                                                   "sinh", "cosh", "tanh", "exp", "log", "abs"};
     // clamp, below, sign and abs are the header's own (detail_functions), not std's: abs (the
     // model's, symbolic/magnitude.hpp, or GiNaC's) as detail::magnitude, whose complex-step
     // derivative is sign(x) x' (std::abs of a complex number is its modulus, which drops it)
     if (name == "abs") name = "magnitude";
     bool own = name == "clamp" || name == "below" || name == "sign" || name == "magnitude";
-    if (!own && std::find(known.begin(), known.end(), name) == known.end())
+    if (!own && std::find(std_functions.begin(), std_functions.end(), name) == std_functions.end())
       throw std::runtime_error("no C++ for the function " + name);
     std::string args;
     for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + print(e.op(i)).text;
