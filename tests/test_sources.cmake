@@ -26,6 +26,7 @@ set(EOMGEN_TEST_FILES
   generator/import/loop_import_test.cpp             fast     sanitized
   generator/import/urdf_import_test.cpp             fast     sanitized
   generator/import/newer_mjcf_test.cpp              fast     sanitized
+  generator/import/option_forces_test.cpp           fast     sanitized
   generator/import/joint_follower_import_test.cpp   fast     sanitized
   generator/import/missing_meshes_test.cpp          fast     sanitized
   generator/import/massless_bodies_test.cpp         fast     sanitized

@@ -24,6 +24,7 @@
 #include "import/free_base.hpp"
 #include "import/joint_torques.hpp"
 #include "import/newer_mjcf.hpp"
+#include "import/option_forces.hpp"
 #include "import/right_angles.hpp"
 #include "import/urdf_text.hpp"
 
@@ -489,6 +490,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   }
   read_actuators(m, r);
   read_tendon_springs(m, r);
+  apply_option_forces(m, r);
   if (!spherical) read_loops(m, qpos, r);
   read_couplings(m, r);
   if (!urdf.empty()) read_mimics(m, urdf, r);

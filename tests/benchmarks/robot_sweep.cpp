@@ -42,7 +42,10 @@ int main(int argc, char** argv) {
       for (int a = 0; a < 3; ++a)
         if (mj->body_inertia[3 * k + a] <= 2e-15) mj->body_inertia[3 * k + a] = 0;
     }
+  // contacts, limits and dry friction (the constraints) and a medium's drag are what the import
+  // warns it does not carry
   mj->opt.disableflags |= mjDSBL_CONSTRAINT;
+  mj->opt.density = mj->opt.viscosity = 0;
   mjData* d = mj_makeData(mj);
   const int nq = int(model::num_coordinates), nv = int(model::num_velocities), N = int(model::num_states);
   bool same_layout = nq == mj->nq && nv == mj->nv && mj->neq == 0;

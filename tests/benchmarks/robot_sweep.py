@@ -12,7 +12,9 @@ the inertia tensor the file states (tests/support/urdf_inertias.hpp; with balanc
 that MuJoCo reads a tensor it would refuse, which the stated one then replaces), and, when
 MuJoCo cannot read the file's meshes, without its mesh geoms. A URDF with a <mimic> has fewer
 coordinates in eomgen than in MuJoCo, which ignores it, and MuJoCo's equality constraints (a
-closed loop) are soft and broken by a random state: such robots are timed only.
+closed loop) are soft and broken by a random state: such robots are timed only. MuJoCo's side
+has no constraints (contacts, limits, dry friction) and no medium (`density`, `viscosity`), which
+the import warns it does not carry.
 
 Usage: robot_sweep.py EOMGEN FILE_OR_FOLDER ... [--free-base] [--flags "FLAGS"] [--check TOL]
        [--check-jacobian TOL]

@@ -41,6 +41,7 @@
 #include "oblique_tree_imported.hpp"
 #include "quadruped_imported.hpp"
 #include "servo_arm_imported.hpp"
+#include "switched_off_forces_imported.hpp"
 #include "tendon_gripper_imported.hpp"
 #include "seven_joint_arm_imported.hpp"
 #include "tumbling_body_imported.hpp"
@@ -379,6 +380,10 @@ TEST(MujocoImport, ServosImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(se
 // actuators on fixed tendons: a servo on the two fingers' ½ q1 + ½ q2 (as mujoco_menagerie's Panda
 // hand), a force-limited motor on 2 q1 − 0.3 q3, and a motor on a joint
 TEST(MujocoImport, ActuatorsOnFixedTendonsImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(tendon_gripper); }
+
+// gravity, the passive forces (springs, dampers and a medium) and the clamping of controls switched
+// off by the file's <option> flags: the model without them moves as MuJoCo's
+TEST(MujocoImport, ForcesSwitchedOffByTheFileAreLeftOut) { EXPECT_IMPORT_MATCHES_MUJOCO(switched_off_forces); }
 
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,
 // an oblique axis; and the seven-joint arm as URDF (without armature and motors, which URDF lacks)

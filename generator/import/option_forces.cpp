@@ -1,0 +1,62 @@
+#include "import/option_forces.hpp"
+
+#include <fmt/format.h>
+
+namespace eomgen {
+
+namespace {
+
+bool switched_off(const mjModel* m, int flag) { return (m->opt.disableflags & flag) != 0; }
+
+// the joints' and fixed tendons' springs and dampers, which MuJoCo's passive force holds with the
+// medium's forces
+void take_off_passive_forces(const mjModel* m, Robot& r) {
+  int joints = 0;
+  for (RobotBody& body : r.bodies)
+    for (RobotJoint& joint : body.joints) {
+      joints += joint.damping != 0 || joint.stiffness != 0;
+      joint.damping = joint.stiffness = 0;
+    }
+  bool medium = m->opt.density > 0 || m->opt.viscosity > 0;
+  if (joints > 0 || !r.tendon_springs.empty() || medium)
+    r.notes.push_back(fmt::format("passive forces are switched off in the file (<flag passive=\"disable\"/>): the springs and "
+                                  "dampers of {} joint(s) and {} tendon(s){} are not carried",
+                                  joints, r.tendon_springs.size(), medium ? ", and the medium's forces," : ""));
+  r.tendon_springs.clear();
+}
+
+}  // namespace
+
+void apply_option_forces(const mjModel* m, Robot& r) {
+  if (switched_off(m, mjDSBL_GRAVITY) && r.gravity != Triple{0, 0, 0}) {
+    r.gravity = {0, 0, 0};
+    r.notes.push_back("gravity is switched off in the file (<flag gravity=\"disable\"/>): the model has none");
+  }
+  if (switched_off(m, mjDSBL_PASSIVE)) take_off_passive_forces(m, r);
+  else if (m->opt.density > 0 || m->opt.viscosity > 0)
+    // MuJoCo 2.2's medium acts on each body through the box of its inertia (quadratic drag at the
+    // density, Stokes's resistance at the viscosity, relative to the wind)
+    r.warnings.push_back({fmt::format("the medium of <option density=\"{:g}\" viscosity=\"{:g}\">: its drag and viscous "
+                                      "resistance on every body are not carried",
+                                      m->opt.density, m->opt.viscosity),
+                          "", "", 0});
+  if (switched_off(m, mjDSBL_ACTUATION) && !r.actuators.empty()) {
+    r.notes.push_back(fmt::format("actuation is switched off in the file (<flag actuation=\"disable\"/>): its {} actuator(s) "
+                                  "are not imported",
+                                  r.actuators.size()));
+    r.actuators.clear();
+  }
+  if (switched_off(m, mjDSBL_CLAMPCTRL)) {
+    int clamped = 0;
+    for (RobotActuator& a : r.actuators) {
+      clamped += a.limited;
+      a.limited = false;
+    }
+    if (clamped > 0)
+      r.notes.push_back(fmt::format("control clamping is switched off in the file (<flag clampctrl=\"disable\"/>): the controls "
+                                    "of {} actuator(s) with a range are not clamped to it",
+                                    clamped));
+  }
+}
+
+}  // namespace eomgen
