@@ -148,7 +148,8 @@ std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
 /// coordinates (links parents first); their quantities are appended to `out` as intermediates.
 /// Straight-line code for them grows with the tree's pairs of joints, loops do not: a tree of
 /// more than 8 velocities and more than 32 pairs of a joint and one at or above it, counted by
-/// velocities (the measured crossovers, in joint_tree_derivatives.cpp), whose joints
+/// velocities (200 pairs for a tree that moves in one plane, spatial/planar_tree.hpp; the measured
+/// crossovers, in joint_tree_derivatives.cpp), whose joints
 /// are hinges and slides, those that follow another's coordinate too, below a root joint of any
 /// kind (a floating base), gets the loops' inputs instead.
 JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,

@@ -296,6 +296,28 @@ TEST(JointTreeDerivatives, ShallowTreesOfManyHingesKeepStraightLineCode) {
   expect_closed_form_agrees(four_by_three.c_str(), 12, 12);
 }
 
+// the legs of hinge_legs all about the world's y axis: a tree that moves in one plane
+// (spatial/planar_tree.hpp), whose straight-line code folds half of every six-vector
+std::string planar_legs(int legs, int hinges) {
+  std::string text = hinge_legs(legs, hinges);
+  for (std::size_t at = text.find("axis = [\"1\", \"0\", \"0\"]"); at != std::string::npos;
+       at = text.find("axis = [\"1\", \"0\", \"0\"]", at))
+    text.replace(at, 22, "axis = [\"0\", \"1\", \"0\"]");
+  return text;
+}
+
+// a tree in one plane keeps straight-line code up to 200 pairs (three legs of five: 45 pairs,
+// which the same legs about two axes give to the loops) and takes the loops beyond (four of ten:
+// 220); its closed form agrees with central differences
+TEST(JointTreeDerivatives, TreesInOnePlaneKeepStraightLineCodeLonger) {
+  std::string three_by_five = planar_legs(3, 5);
+  ASSERT_EQ(three_by_five.find("\"1\", \"0\", \"0\""), std::string::npos);
+  EXPECT_FALSE(derive_text(three_by_five).gradient_loops());
+  EXPECT_TRUE(derive_text(hinge_legs(3, 5)).gradient_loops());
+  EXPECT_TRUE(derive_text(planar_legs(4, 10)).gradient_loops());
+  expect_closed_form_agrees(three_by_five.c_str(), 15, 15);
+}
+
 // hinge_chain(3)'s root joint made `root_joint` and its gravity `gravity`; its ∂τ/∂q column is the
 // cyclic root's structural zero when `cyclic`, and every entry agrees with central differences
 void expect_root_column(const std::string& root_joint, const std::string& gravity, bool cyclic) {
