@@ -35,41 +35,41 @@ std::string imported_with(const std::string& option) {
   return text.value_or("");
 }
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(OptionForces, WithNoFlagEveryForceIsCarried) {
   std::string text = imported_with("<option/>");
-  EXPECT_TRUE(has(text, "acceleration = [\"0\", \"0\", \"-9.81\"]")) << text;
-  EXPECT_TRUE(has(text, "der(swing)^2")) << text;
-  EXPECT_TRUE(has(text, "potential = \"(2*swing^2)/2\"")) << text;
-  EXPECT_TRUE(has(text, "3*clamp(drive, -1, 1)")) << text;
-  EXPECT_FALSE(has(text, "switched off")) << text;
+  EXPECT_TRUE(mentions(text, "acceleration = [\"0\", \"0\", \"-9.81\"]")) << text;
+  EXPECT_TRUE(mentions(text, "der(swing)^2")) << text;
+  EXPECT_TRUE(mentions(text, "potential = \"(2*swing^2)/2\"")) << text;
+  EXPECT_TRUE(mentions(text, "3*clamp(drive, -1, 1)")) << text;
+  EXPECT_FALSE(mentions(text, "switched off")) << text;
 }
 
 TEST(OptionForces, GravityAndClampingSwitchedOffAreLeftOut) {
   std::string text = imported_with("<option><flag gravity=\"disable\" clampctrl=\"disable\"/></option>");
-  EXPECT_TRUE(has(text, "acceleration = [\"0\", \"0\", \"0\"]")) << text;
-  EXPECT_TRUE(has(text, "# note: gravity is switched off")) << text;
-  EXPECT_FALSE(has(text, "clamp(")) << text;
-  EXPECT_TRUE(has(text, "3*drive")) << text;
-  EXPECT_TRUE(has(text, "# note: control clamping is switched off")) << text;
-  EXPECT_TRUE(has(text, "der(swing)^2")) << "the damper stays: " << text;
+  EXPECT_TRUE(mentions(text, "acceleration = [\"0\", \"0\", \"0\"]")) << text;
+  EXPECT_TRUE(mentions(text, "# note: gravity is switched off")) << text;
+  EXPECT_FALSE(mentions(text, "clamp(")) << text;
+  EXPECT_TRUE(mentions(text, "3*drive")) << text;
+  EXPECT_TRUE(mentions(text, "# note: control clamping is switched off")) << text;
+  EXPECT_TRUE(mentions(text, "der(swing)^2")) << "the damper stays: " << text;
 }
 
 TEST(OptionForces, PassiveForcesAndActuationSwitchedOffAreLeftOut) {
   std::string text = imported_with("<option density=\"1.2\"><flag passive=\"disable\" actuation=\"disable\"/></option>");
-  EXPECT_FALSE(has(text, "der(swing)^2")) << text;
-  EXPECT_FALSE(has(text, "swing^2)/2")) << text;
-  EXPECT_FALSE(has(text, "[inputs]")) << text;
-  EXPECT_FALSE(has(text, "drive")) << text;
-  EXPECT_TRUE(has(text, "springs and dampers of 1 joint(s) and 0 tendon(s), and the medium's forces, are not carried")) << text;
-  EXPECT_TRUE(has(text, "its 1 actuator(s) are not imported")) << text;
-  EXPECT_FALSE(has(text, "# not carried: the medium")) << "passive forces off: no medium acts" << text;
+  EXPECT_FALSE(mentions(text, "der(swing)^2")) << text;
+  EXPECT_FALSE(mentions(text, "swing^2)/2")) << text;
+  EXPECT_FALSE(mentions(text, "[inputs]")) << text;
+  EXPECT_FALSE(mentions(text, "drive")) << text;
+  EXPECT_TRUE(mentions(text, "springs and dampers of 1 joint(s) and 0 tendon(s), and the medium's forces, are not carried")) << text;
+  EXPECT_TRUE(mentions(text, "its 1 actuator(s) are not imported")) << text;
+  EXPECT_FALSE(mentions(text, "# not carried: the medium")) << "passive forces off: no medium acts" << text;
 }
 
 TEST(OptionForces, AMediumIsWarnedOf) {
   std::string text = imported_with("<option density=\"1000\" viscosity=\"0.001\"/>");
-  EXPECT_TRUE(has(text, "# not carried: the medium of <option density=\"1000\" viscosity=\"0.001\">")) << text;
+  EXPECT_TRUE(mentions(text, "# not carried: the medium of <option density=\"1000\" viscosity=\"0.001\">")) << text;
 }
 
 }  // namespace
