@@ -10,14 +10,13 @@ bool switched_off(const mjModel* m, int flag) { return (m->opt.disableflags & fl
 
 // the joints' and fixed tendons' springs and dampers, which MuJoCo's passive force holds with the
 // medium's forces
-void take_off_passive_forces(const mjModel* m, Robot& r) {
+void take_off_passive_forces(bool medium, Robot& r) {
   int joints = 0;
   for (RobotBody& body : r.bodies)
     for (RobotJoint& joint : body.joints) {
       joints += joint.damping != 0 || joint.stiffness != 0;
       joint.damping = joint.stiffness = 0;
     }
-  bool medium = m->opt.density > 0 || m->opt.viscosity > 0;
   if (joints > 0 || !r.tendon_springs.empty() || medium)
     r.notes.push_back(fmt::format("passive forces are switched off in the file (<flag passive=\"disable\"/>): the springs and "
                                   "dampers of {} joint(s) and {} tendon(s){} are not carried",
@@ -32,8 +31,9 @@ void apply_option_forces(const mjModel* m, Robot& r) {
     r.gravity = {0, 0, 0};
     r.notes.push_back("gravity is switched off in the file (<flag gravity=\"disable\"/>): the model has none");
   }
-  if (switched_off(m, mjDSBL_PASSIVE)) take_off_passive_forces(m, r);
-  else if (m->opt.density > 0 || m->opt.viscosity > 0)
+  bool medium = m->opt.density > 0 || m->opt.viscosity > 0;
+  if (switched_off(m, mjDSBL_PASSIVE)) take_off_passive_forces(medium, r);
+  else if (medium)
     // MuJoCo 2.2's medium acts on each body through the box of its inertia (quadratic drag at the
     // density, Stokes's resistance at the viscosity, relative to the wind)
     r.warnings.push_back({fmt::format("the medium of <option density=\"{:g}\" viscosity=\"{:g}\">: its drag and viscous "
