@@ -723,6 +723,10 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("ira-algorithm=priority")
+#endif
 /// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f at the given q''
 /// (linearization), or, for jacobian_state with given_ddq null, at q'' = M^-1 f, with M =
 /// L^T D L into L and D: M and f from the composite inertias and forces at q'' = 0 of the
@@ -1669,6 +1673,9 @@ inline void tree_acceleration_gradient(double t, const double* x, const double* 
 }
 #endif
 
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 /// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held, by
 /// tree_acceleration_gradient at the given q''. ddq: 5; F: 5x10, row-major.
 template <class T>

@@ -73,6 +73,7 @@ set(EOMGEN_TEST_FILES
   generator/emit/math_usings_test.cpp               fast
   generator/emit/ldlt_test.cpp                      fast
   generator/emit/avx_dispatch_test.cpp              fast
+  generator/emit/register_allocation_test.cpp       fast
   generator/emit/dynamics_form_test.cpp             fast
   generator/emit/zero_entries_test.cpp              fast
   generator/emit/robot_header_size_test.cpp         fast

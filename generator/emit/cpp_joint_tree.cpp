@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "emit/cpp_avx_dispatch.hpp"
+#include "emit/cpp_register_allocation.hpp"
 #include "emit/cpp_ldlt.hpp"
 #include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
@@ -278,7 +279,7 @@ std::string closed_form_acceleration_gradient_functions(const Equations& e, long
   long apart = factored_operations + ldlt + count_operations(gradient_function, "inverse_dynamics_gradient", n);
   long operations = count_operations(fused, "tree_acceleration_gradient", n);
   if (operations >= apart) return "";
-  if (operations >= avx_dispatch_from_operations) fused = with_avx_dispatch(fused);
+  if (operations >= avx_dispatch_from_operations) fused = with_priority_register_allocation(with_avx_dispatch(fused));
   // inverse_dynamics_gradient (linearization's, at given q'') by the same code, not written twice
   std::string at_given = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held, by\n"
                                               "/// tree_acceleration_gradient at the given q''. ddq: {0}; F: {0}x{1}, row-major.\n",
@@ -323,7 +324,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
                               n, W),
                   signature, body);
   if (!loops && count_operations(gradient, "inverse_dynamics_gradient", n) >= avx_dispatch_from_operations)
-    gradient = with_avx_dispatch(gradient);
+    gradient = with_priority_register_allocation(with_avx_dispatch(gradient));
   return in_detail(gradient);
 }
 
