@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "emit/cpp_avx_dispatch.hpp"
-#include "emit/cpp_register_allocation.hpp"
 #include "emit/cpp_ldlt.hpp"
+#include "emit/cpp_register_allocation.hpp"
 #include "emit/operation_count.hpp"
 #include "emit/tangent_sweep.hpp"
 #include "emit/cpp_tree_gradient_loops.hpp"
@@ -245,6 +245,13 @@ constexpr const char* tree_acceleration_gradient_signature =
 constexpr const char* given_accelerations_signature =
     "void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F)";
 
+// A straight-line gradient of `operations` as the header writes it: from avx_dispatch_from_operations
+// on with its AVX copy, and the two compiled by g++ with priority colouring (cpp_register_allocation)
+std::string sized_for_its_operations(const std::string& gradient, long operations) {
+  if (operations < avx_dispatch_from_operations) return gradient;
+  return with_priority_register_allocation(with_avx_dispatch(gradient));
+}
+
 }  // namespace
 
 std::string tree_acceleration_gradient_function(const Equations& e) {
@@ -279,7 +286,7 @@ std::string closed_form_acceleration_gradient_functions(const Equations& e, long
   long apart = factored_operations + ldlt + count_operations(gradient_function, "inverse_dynamics_gradient", n);
   long operations = count_operations(fused, "tree_acceleration_gradient", n);
   if (operations >= apart) return "";
-  if (operations >= avx_dispatch_from_operations) fused = with_priority_register_allocation(with_avx_dispatch(fused));
+  fused = sized_for_its_operations(fused, operations);
   // inverse_dynamics_gradient (linearization's, at given q'') by the same code, not written twice
   std::string at_given = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held, by\n"
                                               "/// tree_acceleration_gradient at the given q''. ddq: {0}; F: {0}x{1}, row-major.\n",
@@ -323,8 +330,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
                                     "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n"),
                               n, W),
                   signature, body);
-  if (!loops && count_operations(gradient, "inverse_dynamics_gradient", n) >= avx_dispatch_from_operations)
-    gradient = with_priority_register_allocation(with_avx_dispatch(gradient));
+  if (!loops) gradient = sized_for_its_operations(gradient, count_operations(gradient, "inverse_dynamics_gradient", n));
   return in_detail(gradient);
 }
 

@@ -43,7 +43,7 @@ int main() {
 }
 )cpp";
 
-TEST(RegisterAllocation, OnlyGccSeesThePragmaAndTheCommandLineOptionsStay) {
+TEST(RegisterAllocation, OnlyGccSeesThePragmaWhichSetsNoOptimizationLevel) {
   std::string text = with_priority_register_allocation("void f();\n");
   std::size_t guard = text.find("#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC push_options\n");
   std::size_t option = text.find("#pragma GCC optimize(\"ira-algorithm=priority\")\n#endif\nvoid f();\n");
