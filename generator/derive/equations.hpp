@@ -85,7 +85,7 @@ struct NewtonEulerRecursion {
   /// tangent sweep then runs through the applied part alone. Empty otherwise.
   std::optional<BodiesGradient> bodies_gradient;
   /// the links of those loops (emit/cpp_tree_gradient_loops.hpp), or null
-  const HingeTreeLinks* gradient_loops() const {
+  const TreeLinkTables* gradient_loops() const {
     return bodies_gradient ? bodies_gradient->loops() : nullptr;
   }
   /// A joint tree's q'' by the articulated-body algorithm, where ModelChoice::forward_dynamics asks
@@ -139,7 +139,7 @@ struct Equations {
     return newton_euler() && newton_euler()->joint_tree_accelerations ? &*newton_euler()->joint_tree_accelerations : nullptr;
   }
   /// the links of a long joint tree's gradient loops, or null (NewtonEulerRecursion::gradient_loops)
-  const HingeTreeLinks* gradient_loops() const { return newton_euler() ? newton_euler()->gradient_loops() : nullptr; }
+  const TreeLinkTables* gradient_loops() const { return newton_euler() ? newton_euler()->gradient_loops() : nullptr; }
   /// the symbols of q'' in which the form's inverse dynamics is written (empty for M q'' = f)
   const std::vector<GiNaC::symbol>& acceleration_symbols() const;
   /// For equations whose M or f a transformation has changed: the rhs then solves M q'' = f (a

@@ -33,8 +33,8 @@ std::string header_summary(const Equations& e, const std::string& functions) {
   if (e.joint_tree_accelerations())
     out += "\n// Forward dynamics: rhs solves for the accelerations by the articulated-body algorithm over the joints "
            "(O(n), without M).";
-  if (functions.find("hinge_tree_mass_matrix_and_forcing(tree") != std::string::npos)
-    out += "\n// M and f: loops over the links' tables (detail::hinge_tree_mass_matrix_and_forcing).";
+  if (functions.find("tree_loops_mass_matrix_and_forcing(tree") != std::string::npos)
+    out += "\n// M and f: loops over the links' tables (detail::tree_loops_mass_matrix_and_forcing).";
   return out;
 }
 

@@ -157,7 +157,7 @@ std::string tree_acceleration_gradient_body(const Equations& e) {
   assign_applied_mass_matrix_and_forcing(w, applied);
   // the pass adds the bodies' M and f, then the solve sets q'' = M^-1 f, the applied part's ∂τ and the
   // root joint's motion at them, and the pass adds the bodies' ∂τ
-  w.line(fmt::format("hinge_tree_pass<true>(tree, ddq, {}, {}, F, {}, M, f, [&] {{", nq, nq + n, n));
+  w.line(fmt::format("tree_gradient_pass<true>(tree, ddq, {}, {}, F, {}, M, f, [&] {{", nq, nq + n, n));
   w.line("ldlt_factor(M, L, D);");
   w.line(fmt::format("for (std::size_t i = 0; i < {}; ++i) ddq[i] = f[i];", n));
   w.line("ldlt_solve(L, D, ddq);");
@@ -257,7 +257,7 @@ std::string sized_for_its_operations(const std::string& gradient, long operation
 std::string tree_acceleration_gradient_function(const Equations& e) {
   std::size_t n = e.num_velocities(), W = e.symbols.num_coordinates() + n;
   return in_detail(
-      function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::hinge_tree_pass at\n"
+      function(fmt::format("/// For jacobian_state: M = L^T D L (into L and D) and f from detail::tree_gradient_pass at\n"
                            "/// q'' = 0, q'' = M^-1 f, and d tau/d(q, q') at those q'' from the same pass (F: {0}x{1},\n"
                            "/// row-major), where factored_accelerations would form M and f a second time.\n",
                            n, W),
@@ -320,7 +320,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
   std::string gradient =
          function(fmt::format(fmt::runtime(loops
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
-                                    "/// part by detail::hinge_tree_gradient's loops; a tangent sweep through the rest).\n"
+                                    "/// part by detail::tree_bodies_gradient's loops; a tangent sweep through the rest).\n"
                                     "/// ddq: {0}; F: {0}x{1}, row-major.\n"
                                   : closed_form
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
@@ -336,24 +336,29 @@ std::string newton_euler_gradient_function(const Equations& e) {
 
 namespace {
 
-// The time of M and f by the loops, in operations of straight-line code (about 0.25 ns each, g++
-// -O2): each link of the tables (a fixed one too) about 95 ns, each pair of a joint and one at or
-// above it 3.4 ns, a root joint 570 ns, fit to the loops' times on chains of 9 and 16 oblique hinges
+// The time of M and f by the loops, in operations of straight-line code (about 0.25 ns each, g++ -O2): each
+// link of the tables (a fixed one too) about 95 ns, each pair of a joint and one at or above it 3.4 ns (per
+// pair of their columns), a root joint 570 ns, fit to the loops' times on chains of 9 and 16 oblique hinges
 // and checked on the others below. M and f alone, loops against straight-line code (links, pairs,
-// straight-line operations): chains of 9, 10, 12 and 16 oblique hinges 0.92, 0.88, 0.77 and 0.68
-// (9, 45, 4,332 to 16, 136, 10,528); the 21-joint tree 0.87 (21, 90, 10,105); hinge_chain 0.96 (20,
-// 210, 12,019); the 21-joint tree below a free torso 0.85 (22, 90, 13,098) and beside a free body
-// 1.10 (22, 90, 10,391); floating_snake 1.17 (17, 136, 10,310); the quadruped 1.55 (13, 24, 4,687);
-// chains of 9, 12 and 16 rods on hinges along their axes 5.1, 1.75 and 1.49 (1,787 to 4,614
-// operations); example-robot-data's Talos (45 links for 32 velocities, 15,221) 1.37 and TIAGo Pro
-// (34 for 23, 14,129) 1.08, where per velocity the counts had looked like the 21-joint tree's
-long looped_mass_matrix_and_forcing_operations(const HingeTreeLinks& links) {
-  long pairs = 0;
+// straight-line operations): chains of 9, 10, 12 and 16 oblique hinges 0.92, 0.88, 0.77 and 0.68 (9, 45,
+// 4,332 to 16, 136, 10,528); the 21-joint tree 0.87 (21, 90, 10,105); hinge_chain 0.96 (20, 210, 12,019); the
+// 21-joint tree below a free torso 0.85 (22, 90, 13,098) and beside a free body 1.10 (22, 90, 10,391);
+// floating_snake 1.17 (17, 136, 10,310); the quadruped 1.55 (13, 24, 4,687); chains of 9, 12 and 16 rods on
+// hinges along their axes 5.1, 1.75 and 1.49 (1,787 to 4,614 operations); example-robot-data's Talos (45
+// links for 32 velocities, 15,221) 1.37 and TIAGo Pro (34 for 23, 14,129) 1.08, where per velocity the counts
+// had looked like the 21-joint tree's. A link of several columns (a ball joint) about 56 ns more per column
+// beyond its first: a ragdoll of seven ball joints and four hinges below a free root
+// (tests/crosscheck/mjcf/ball_ragdoll.xml without its wrists and right ankle, 31 velocities) took 3.40 µs for
+// rhs by the loops against 2.58 by straight-line code of 8,000 operations, where links and pairs alone had
+// counted 8,600.
+long looped_mass_matrix_and_forcing_operations(const TreeLinkTables& links) {
+  long pairs = 0, more_columns = 0;
   for (std::size_t k = 0; k < links.parent.size(); ++k) {
-    if (links.velocity[k] < 0) continue;
-    for (int j = int(k); j >= 0; j = links.parent[std::size_t(j)]) pairs += links.velocity[std::size_t(j)] >= 0;
+    more_columns += long(std::max<std::size_t>(links.velocity[k].size(), 1) - 1);
+    for (int j = int(k); j >= 0; j = links.parent[std::size_t(j)])
+      pairs += long(links.velocity[k].size() * links.velocity[std::size_t(j)].size());
   }
-  return 380 * long(links.parent.size()) + 14 * pairs + (links.root ? 2300 : 0);
+  return 380 * long(links.parent.size()) + 225 * more_columns + 14 * pairs + (links.root ? 2300 : 0);
 }
 
 // detail::mass_matrix_and_forcing's declaration, inlined where it is called: a call passed M
@@ -383,7 +388,7 @@ std::string looped_mass_matrix_and_forcing(const Equations& e) {
   assign_applied_mass_matrix_and_forcing(w, e.newton_euler()->bodies_gradient->applied_inverse_dynamics);
   call_tree_mass_matrix_and_forcing(w, e);
   return in_detail(function(fmt::format("/// M and f of M q'' = f together, for mass_matrix, forcing and factored_accelerations: the\n"
-                                        "/// bodies' part by detail::hinge_tree_mass_matrix_and_forcing's loops over the links.\n"
+                                        "/// bodies' part by detail::tree_loops_mass_matrix_and_forcing's loops over the links.\n"
                                         "/// M: {0}x{0}, row-major; f: {0}.\n", n),
                             mass_matrix_and_forcing_signature, without_unused_locals(w.finish(all_unused))));
 }

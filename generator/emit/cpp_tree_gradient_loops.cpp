@@ -70,6 +70,24 @@ inline void tree_add_into(T (&sum)[n], const T (&part)[n]) {
   for (std::size_t k = 0; k < n; ++k) sum[k] = sum[k] + copy[k];
 }
 
+// a joint column's world twist from its axis a and origin velocity b in the link's coordinates:
+// (R a; o x R a + R b)
+template <class T>
+inline void tree_column_twist(const T* R, const T* o, const T* column, T* S) {
+  const T s0 = R[0]*column[0] + R[1]*column[1] + R[2]*column[2];
+  const T s1 = R[3]*column[0] + R[4]*column[1] + R[5]*column[2];
+  const T s2 = R[6]*column[0] + R[7]*column[1] + R[8]*column[2];
+  const T b0 = R[0]*column[3] + R[1]*column[4] + R[2]*column[5];
+  const T b1 = R[3]*column[3] + R[4]*column[4] + R[5]*column[5];
+  const T b2 = R[6]*column[3] + R[7]*column[4] + R[8]*column[5];
+  S[0] = s0;
+  S[1] = s1;
+  S[2] = s2;
+  S[3] = o[1]*s2 - o[2]*s1 + b0;
+  S[4] = o[2]*s0 - o[0]*s2 + b1;
+  S[5] = o[0]*s1 - o[1]*s0 + b2;
+}
+
 template <class T>
 inline void tree_own_bias(const T* I, const T* v, T* D) {
   const T J[3][3] = {{I[4], I[5], I[6]}, {I[5], I[7], I[8]}, {I[6], I[8], I[9]}};
@@ -95,9 +113,10 @@ inline void tree_own_bias(const T* I, const T* v, T* D) {
 
 )";
 
-// The recursion and the pairs of spatial/joint_tree_derivatives.hpp for a hinge or a slide (T = S,
-// w = v_λ, W = a_λ, A = 2 Ψ'), over the links' tables; and for a first link's joint of several
-// velocities (a floating base), the general formulas with its motion given.
+// The recursion and the pairs of spatial/joint_tree_derivatives.hpp for joints whose columns turn with
+// their links (w = v_λ, W = a_λ; a hinge's or slide's T = S and A = 2 Ψ'), over the links' tables;
+// and for a first link's joint of several velocities (a floating base), the general formulas with
+// its motion given.
 constexpr const char* gradient_template = R"(/// A root joint of several velocities (a floating base) in world coordinates: per velocity its S,
 /// A = (w + u) x S and whether it turns with the link; per coordinate its twist, Psi' and Psi'';
 /// the link's v and a.
@@ -146,105 +165,154 @@ void tree_root_pairs(const tree_jointed_root<T>& root, const T* C, const T* forc
   }
 }
 
-/// The tables of a tree of hinges and slides, which the generated code fills: each link's parent,
-/// velocity and coordinate (a fixed link has velocity -1, and so has the first link when it is
-/// `rooted`, root_joint giving its joint), turn, offset, joint column (axis; origin velocity), rate
-/// and bodies' inertia about the link's origin.
-template <std::size_t L, class T>
-struct hinge_tree_tables {
+/// The tables of a tree whose joints' velocities all turn with their links (hinges, slides, ball
+/// joints), which the generated code fills: each link's parent, its joint's columns (velocities) and
+/// directions (coordinates), both 0 for a fixed link and for the first link when it is `rooted`
+/// (root_joint giving its joint); per column its velocity, its twist in the link's coordinates
+/// (axis; origin velocity) and rate; per direction its coordinate and, where a link may have several
+/// columns (Columns > 1), its twist's weights over them; the link's turn, offset and its bodies'
+/// inertia about its origin. With Columns = 1 every joint is a hinge or a slide, its direction's
+/// twist its column's.
+template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
+struct tree_link_tables {
   const int* parent;
-  const int* velocity;
-  const int* coordinate;
-  T turn[L][9], offset[L][3], column[L][6], rate[L], inertia[L][10], gravity[3];
+  const int* columns;
+  const int* directions;
+  const int (*velocity)[Columns];
+  const int (*coordinate)[Directions];
+  T turn[L][9], offset[L][3], column[L][Columns][6], rate[L][Columns], inertia[L][10], gravity[3];
+  T weight[Columns > 1 ? L : 1][Directions][Columns];
   bool rooted;
   tree_jointed_root<T> root_joint;  // the first link's joint, its motion at the accelerations
+  // link i's columns and directions within the tables' extents, which a tree of hinges unrolls
+  int columns_of(std::size_t i) const { return columns[i] < int(Columns) ? columns[i] : int(Columns); }
+  int directions_of(std::size_t i) const { return directions[i] < int(Directions) ? directions[i] : int(Directions); }
 };
 
 /// The bodies' M (n x n, row-major) and f = -tau from the pass's S, composite C and forces, added:
-/// M_jk = S_j . C_k S_k for each joint k and each joint j at or above it (a root joint's columns
-/// above every link below it), f_k = -S_k . F_k; joints that follow one coordinate add their
-/// shares, a pair of two of them twice.
-template <std::size_t L, class T>
-void tree_mass_matrix_and_bias(const hinge_tree_tables<L, T>& tree, const T (&S)[L][6], const T (&C)[L][10],
-                               const T (&force)[L][6], std::size_t n, T* M, T* f) {
-  auto add = [&](std::size_t j, std::size_t k, const T& x) {
+/// M_jk = S_j . C_k S_k for each column k and each column j of its link or a link above it (a root
+/// joint's columns above every link below it), f_k = -S_k . F_k. A pair of columns of two links adds
+/// to both triangles, of one link (each order comes) to one entry; two links' columns that follow
+/// one coordinate add twice to the same entry.
+template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
+void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, T>& tree, const T (&S)[L][Columns][6],
+                               const T (&C)[L][10], const T (&force)[L][6], std::size_t n, T* M, T* f) {
+  auto add = [&](std::size_t j, std::size_t k, const T& x, bool one_link) {
+    if (j == k && !one_link) {
+      M[j*n + j] = M[j*n + j] + T(2)*x;
+      return;
+    }
     M[j*n + k] = M[j*n + k] + x;
-    if (j != k) M[k*n + j] = M[k*n + j] + x;
+    if (!one_link) M[k*n + j] = M[k*n + j] + x;
   };
   const tree_jointed_root<T>& root = tree.root_joint;
-  for (std::size_t k = 0; k < L; ++k) {
-    const int vk = tree.velocity[k];
-    if (vk < 0) continue;
-    T CS[6];
-    tree_inertia_times(C[k], S[k], CS);
-    f[vk] = f[vk] - tree_power(S[k], force[k]);
-    int top = int(k);
-    for (int j = int(k); j >= 0; j = tree.parent[j]) {
-      top = j;
-      const int vj = tree.velocity[j];
-      if (vj < 0) continue;
-      const T x = tree_power(S[j], CS);
-      add(std::size_t(vj), std::size_t(vk), j != int(k) && vj == vk ? T(2)*x : x);
+  for (std::size_t k = 0; k < L; ++k)
+    for (int r = 0; r < tree.columns_of(k); ++r) {
+      const std::size_t vk = std::size_t(tree.velocity[k][r]);
+      T CS[6];
+      tree_inertia_times(C[k], S[k][r], CS);
+      f[vk] = f[vk] - tree_power(S[k][r], force[k]);
+      int top = int(k);
+      for (int j = int(k); j >= 0; j = tree.parent[j]) {
+        top = j;
+        for (int c = 0; c < tree.columns_of(j); ++c)
+          add(std::size_t(tree.velocity[j][c]), vk, tree_power(S[j][c], CS), j == int(k));
+      }
+      for (std::size_t c = 0; tree.rooted && top == 0 && c < root.columns; ++c)
+        add(std::size_t(root.velocity[c]), vk, tree_power(root.S[c], CS), false);
     }
-    for (std::size_t c = 0; tree.rooted && top == 0 && c < root.columns; ++c)
-      add(std::size_t(root.velocity[c]), std::size_t(vk), tree_power(root.S[c], CS));
-  }
   for (std::size_t c = 0; tree.rooted && c < root.columns; ++c) {
     const std::size_t vc = std::size_t(root.velocity[c]);
     T CS[6];
     tree_inertia_times(C[0], root.S[c], CS);
     f[vc] = f[vc] - tree_power(root.S[c], force[0]);
-    for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS));
+    for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS), d == c);
   }
 }
 
-/// d tau/d(q, q') of a tree of hinges and slides, its bodies' part, added into F (rows of width W, the
-/// velocities' columns after the nq coordinates' ones): the analytic derivatives of the Newton-Euler
-/// recursion (Carpentier and Mansard 2018) in world coordinates, from each link's joint twist S,
-/// its rate and its bodies' spatial inertia about the origin, at the accelerations ddq. With
-/// `Solves`, ddq are M^-1 f instead: the pass at the given ddq (zeros) adds the bodies' M (n x n)
-/// and f = -tau into M and f, which already hold the rest of them, and solve() then writes ddq
-/// (and, for a root joint, its motion at them) before the accelerations are formed again.
-template <bool Solves, std::size_t L, class T, class Solve>
-void hinge_tree_pass(const hinge_tree_tables<L, T>& tree, const T* ddq, std::size_t nq, std::size_t W, T* F, std::size_t n,
-                     T* M, T* f, Solve&& solve) {
+/// d tau/d(q, q') of the tree's bodies, added into F (rows of width W, the velocities' columns after
+/// the nq coordinates' ones): the analytic derivatives of the Newton-Euler recursion (Carpentier and
+/// Mansard 2018) in world coordinates, from each link's joint twists S, their rates and its bodies'
+/// spatial inertia about the origin, at the accelerations ddq. With `Solves`, ddq are M^-1 f
+/// instead: the pass at the given ddq (zeros) adds the bodies' M (n x n) and f = -tau into M and f,
+/// which already hold the rest of them, and solve() then writes ddq (and, for a root joint, its
+/// motion at them) before the accelerations are formed again.
+template <bool Solves, std::size_t L, std::size_t Columns, std::size_t Directions, class T, class Solve>
+void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
+                        T* F, std::size_t n, T* M, T* f, Solve&& solve) {
   const int* parent = tree.parent;
-  const int* velocity = tree.velocity;
-  const int* coordinate = tree.coordinate;
   const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
-  // world poses, twists S and inertias C; v, a (the root's a is -gravity), Psi' = v_p x S,
-  // Psi'' = a_p x S + v_p x Psi'; each link's force C a + v x* C v, momentum P = C v and bias D,
-  // summed into the composites; with Solves each link's own C and v x* C v, for its force again
-  T R[L][9], o[L][3], S[L][6], v[L][6], a[L][6], dS[L][6], ddS[L][6], C[L][10], force[L][6], P[L][6], D[L][9];
+  // world poses, the columns' twists S and inertias C; v, a (the root's a is -gravity), per direction
+  // of twist T Psi' = v_p x T, Psi'' = a_p x T + v_p x Psi'; each link's force C a + v x* C v,
+  // momentum P = C v and bias D, summed into the composites; with Solves each link's own C and
+  // v x* C v, for its force again. A link of several columns keeps its directions' twists T and the
+  // twist V_b of its joint's velocity, which turns with it: a = a_p + S s'' + v_p x V_b.
+  T R[L][9], o[L][3], S[L][Columns][6], v[L][6], a[L][6], dS[L][Directions][6], ddS[L][Directions][6], C[L][10],
+      force[L][6], P[L][6], D[L][9];
+  [[maybe_unused]] T twist[Columns > 1 ? L : 1][Directions][6], turning[Columns > 1 ? L : 1][6];
   [[maybe_unused]] T own[Solves ? L : 1][10], vPs[Solves ? L : 1][6];
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
   // the twist link i hangs from: its parent's, the root joint's or rest
   auto parent_twist = [&](std::size_t i) -> const T* { return parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]]; };
+  // direction d's twist: a hinge's or slide's S, or the weighted sum of its link's columns
+  auto twist_of = [&](std::size_t i, int d) -> const T* {
+    if constexpr (Columns == 1) return S[i][0];
+    else return twist[i][d];
+  };
   // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
   auto accelerate = [&](std::size_t i) {
     const T* vp = parent_twist(i);
     const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
-    if (velocity[i] < 0) {
-      for (int k = 0; k < 6; ++k) a[i][k] = ap[k], ddS[i][k] = T(0);
+    if (tree.columns[i] == 0) {
+      for (int k = 0; k < 6; ++k) a[i][k] = ap[k];
       return;
     }
-    T aS[6], vdS[6];
-    tree_motion_cross(ap, S[i], aS);
-    tree_motion_cross(vp, dS[i], vdS);
-    const T s = tree.rate[i], dds = ddq[velocity[i]];
-    for (int k = 0; k < 6; ++k) a[i][k] = ap[k] + dds*S[i][k] + s*dS[i][k], ddS[i][k] = aS[k] + vdS[k];
+    if constexpr (Columns == 1) {
+      T aS[6], vdS[6];
+      tree_motion_cross(ap, S[i][0], aS);
+      tree_motion_cross(vp, dS[i][0], vdS);
+      const T s = tree.rate[i][0], dds = ddq[tree.velocity[i][0]];
+      for (int k = 0; k < 6; ++k) a[i][k] = ap[k] + dds*S[i][0][k] + s*dS[i][0][k], ddS[i][0][k] = aS[k] + vdS[k];
+    } else {
+      T vV[6];
+      tree_motion_cross(vp, turning[i], vV);
+      for (int k = 0; k < 6; ++k) a[i][k] = ap[k] + vV[k];
+      for (int c = 0; c < tree.columns_of(i); ++c) {
+        const T dds = ddq[tree.velocity[i][c]];
+        for (int k = 0; k < 6; ++k) a[i][k] = a[i][k] + dds*S[i][c][k];
+      }
+      for (int d = 0; d < tree.directions_of(i); ++d) {
+        T aT[6], vdS[6];
+        tree_motion_cross(ap, twist[i][d], aT);
+        tree_motion_cross(vp, dS[i][d], vdS);
+        for (int k = 0; k < 6; ++k) ddS[i][d][k] = aT[k] + vdS[k];
+      }
+    }
   };
   for (std::size_t i = 0; i < L; ++i) {
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
-               tree.column[i], tree.inertia[i], R[i], o[i], S[i], C[i]);
+               tree.inertia[i], R[i], o[i], C[i]);
+    for (int c = 0; c < tree.columns_of(i); ++c) tree_column_twist(R[i], o[i], tree.column[i][c], S[i][c]);
     const T* vp = parent_twist(i);
-    if (velocity[i] < 0) {
-      for (int k = 0; k < 6; ++k) v[i][k] = vp[k], dS[i][k] = T(0);
+    for (int k = 0; k < 6; ++k) v[i][k] = vp[k];
+    if constexpr (Columns == 1) {
+      if (tree.columns[i] != 0) {
+        tree_motion_cross(vp, S[i][0], dS[i][0]);
+        for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + tree.rate[i][0]*S[i][0][k];
+      }
     } else {
-      tree_motion_cross(vp, S[i], dS[i]);
-      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + tree.rate[i]*S[i][k];
+      for (int k = 0; k < 6; ++k) turning[i][k] = T(0);
+      for (int c = 0; c < tree.columns_of(i); ++c)
+        for (int k = 0; k < 6; ++k) turning[i][k] = turning[i][k] + tree.rate[i][c]*S[i][c][k];
+      for (int k = 0; k < 6; ++k) v[i][k] = v[i][k] + turning[i][k];
+      for (int d = 0; d < tree.directions_of(i); ++d) {
+        for (int k = 0; k < 6; ++k) twist[i][d][k] = T(0);
+        for (int c = 0; c < tree.columns_of(i); ++c)
+          for (int k = 0; k < 6; ++k) twist[i][d][k] = twist[i][d][k] + tree.weight[i][d][c]*S[i][c][k];
+        tree_motion_cross(vp, twist[i][d], dS[i][d]);
+      }
     }
     accelerate(i);
     T Ca[6], vP[6];
@@ -278,94 +346,123 @@ void hinge_tree_pass(const hinge_tree_tables<L, T>& tree, const T* ddq, std::siz
     for (std::size_t i = L; i-- > 0;)
       if (parent[i] >= 0) tree_add_into(force[parent[i]], force[i]);
   }
-  // per joint: C S, B^T S = D S - S x* P, G = S x* F + C Psi'' + D Psi' + Psi' x* P and
-  // H = C A + D S + S x* P with A = 2 Psi'
-  T CS[L][6], BS[L][6], G[L][6], H[L][6];
+  // per column: C S, B^T S = D S - S x* P and H = C A + D S + S x* P with A = (2 v_p + V_b) x S (a
+  // hinge's or slide's 2 Psi'); per direction G = T x* F + C Psi'' + D Psi' + Psi' x* P
+  T CS[L][Columns][6], BS[L][Columns][6], H[L][Columns][6], G[L][Directions][6];
+  [[maybe_unused]] T A[Columns > 1 ? L : 1][Columns][6];
   for (std::size_t j = 0; j < L; ++j) {
-    if (velocity[j] < 0) continue;
-    T DS[6], SP[6], SF[6], Cdd[6], Dd[6], dP[6], Cd[6];
-    tree_inertia_times(C[j], S[j], CS[j]);
-    tree_bias_times(D[j], S[j], DS);
-    tree_force_cross(S[j], P[j], SP);
-    tree_force_cross(S[j], force[j], SF);
-    tree_inertia_times(C[j], ddS[j], Cdd);
-    tree_bias_times(D[j], dS[j], Dd);
-    tree_force_cross(dS[j], P[j], dP);
-    tree_inertia_times(C[j], dS[j], Cd);
-    for (int k = 0; k < 6; ++k) {
-      BS[j][k] = DS[k] - SP[k];
-      G[j][k] = SF[k] + Cdd[k] + Dd[k] + dP[k];
-      H[j][k] = T(2)*Cd[k] + DS[k] + SP[k];
+    for (int c = 0; c < tree.columns_of(j); ++c) {
+      T DS[6], SP[6], CA[6];
+      tree_inertia_times(C[j], S[j][c], CS[j][c]);
+      tree_bias_times(D[j], S[j][c], DS);
+      tree_force_cross(S[j][c], P[j], SP);
+      if constexpr (Columns == 1) {
+        tree_inertia_times(C[j], dS[j][0], CA);
+        for (int k = 0; k < 6; ++k) CA[k] = T(2)*CA[k];
+      } else {
+        const T* vp = parent_twist(j);
+        T u[6];
+        for (int k = 0; k < 6; ++k) u[k] = T(2)*vp[k] + turning[j][k];
+        tree_motion_cross(u, S[j][c], A[j][c]);
+        tree_inertia_times(C[j], A[j][c], CA);
+      }
+      for (int k = 0; k < 6; ++k) BS[j][c][k] = DS[k] - SP[k], H[j][c][k] = CA[k] + DS[k] + SP[k];
+    }
+    for (int d = 0; d < tree.directions_of(j); ++d) {
+      T TF[6], Cdd[6], Dd[6], dP[6];
+      tree_force_cross(twist_of(j, d), force[j], TF);
+      tree_inertia_times(C[j], ddS[j][d], Cdd);
+      tree_bias_times(D[j], dS[j][d], Dd);
+      tree_force_cross(dS[j][d], P[j], dP);
+      for (int k = 0; k < 6; ++k) G[j][d][k] = TF[k] + Cdd[k] + Dd[k] + dP[k];
     }
   }
-  // each joint k and each joint j at or above it: j's coordinate and velocity in k's row, k's in j's
+  // k's coordinates and velocities in the row of a column s of k's link or one above it, through F_k
+  auto into_the_row_above = [&](const T* s, int velocity_of_s, std::size_t k) {
+    T* above = F + std::size_t(velocity_of_s)*W;
+    for (int d = 0; d < tree.directions_of(k); ++d) {
+      T& x = above[tree.coordinate[k][d]];
+      x = x + tree_power(s, G[k][d]);
+    }
+    for (int c = 0; c < tree.columns_of(k); ++c) {
+      T& x = above[nq + std::size_t(tree.velocity[k][c])];
+      x = x + tree_power(s, H[k][c]);
+    }
+  };
+  // each link k and each link j at or above it: j's coordinates and velocities in k's rows, k's in j's
   for (std::size_t k = 0; k < L; ++k) {
-    if (velocity[k] < 0) continue;
-    T* row = F + std::size_t(velocity[k])*W;
-    const std::size_t qk = std::size_t(coordinate[k]), sk = nq + std::size_t(velocity[k]);
+    if (tree.columns[k] == 0) continue;
     int top = int(k);
     for (int j = int(k); j >= 0; j = parent[j]) {
       top = j;
-      if (velocity[j] < 0) continue;
-      const std::size_t q = std::size_t(coordinate[j]), s = nq + std::size_t(velocity[j]);
-      row[q] = row[q] + tree_power(ddS[j], CS[k]) + tree_power(dS[j], BS[k]);
-      row[s] = row[s] + T(2)*tree_power(dS[j], CS[k]) + tree_power(S[j], BS[k]);
+      for (int r = 0; r < tree.columns_of(k); ++r) {
+        T* row = F + std::size_t(tree.velocity[k][r])*W;
+        for (int d = 0; d < tree.directions_of(j); ++d) {
+          T& x = row[tree.coordinate[j][d]];
+          x = x + tree_power(ddS[j][d], CS[k][r]) + tree_power(dS[j][d], BS[k][r]);
+        }
+        for (int c = 0; c < tree.columns_of(j); ++c) {
+          T& x = row[nq + std::size_t(tree.velocity[j][c])];
+          if constexpr (Columns == 1) x = x + T(2)*tree_power(dS[j][0], CS[k][r]) + tree_power(S[j][c], BS[k][r]);
+          else x = x + tree_power(A[j][c], CS[k][r]) + tree_power(S[j][c], BS[k][r]);
+        }
+      }
       if (j == int(k)) continue;
-      T* above = F + std::size_t(velocity[j])*W;
-      above[qk] = above[qk] + tree_power(S[j], G[k]);
-      above[sk] = above[sk] + tree_power(S[j], H[k]);
+      for (int c = 0; c < tree.columns_of(j); ++c) into_the_row_above(S[j][c], tree.velocity[j][c], k);
     }
     if (!root || top != 0) continue;
-    for (std::size_t d = 0; d < root->directions; ++d) {
-      T& x = row[root->coordinate[d]];
-      x = x + tree_power(root->ddS[d], CS[k]) + tree_power(root->dS[d], BS[k]);
+    for (int r = 0; r < tree.columns_of(k); ++r) {
+      T* row = F + std::size_t(tree.velocity[k][r])*W;
+      for (std::size_t d = 0; d < root->directions; ++d) {
+        T& x = row[root->coordinate[d]];
+        x = x + tree_power(root->ddS[d], CS[k][r]) + tree_power(root->dS[d], BS[k][r]);
+      }
+      for (std::size_t c = 0; c < root->columns; ++c) {
+        T& x = row[nq + std::size_t(root->velocity[c])];
+        x = x + tree_power(root->A[c], CS[k][r]) + tree_power(root->S[c], BS[k][r]);
+      }
     }
-    for (std::size_t c = 0; c < root->columns; ++c) {
-      T& x = row[nq + std::size_t(root->velocity[c])];
-      x = x + tree_power(root->A[c], CS[k]) + tree_power(root->S[c], BS[k]);
-      T* above = F + std::size_t(root->velocity[c])*W;
-      above[qk] = above[qk] + tree_power(root->S[c], G[k]);
-      above[sk] = above[sk] + tree_power(root->S[c], H[k]);
-    }
+    for (std::size_t c = 0; c < root->columns; ++c) into_the_row_above(root->S[c], root->velocity[c], k);
   }
   if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
 }
 
-/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (hinge_tree_pass).
-template <std::size_t L, class T>
-void hinge_tree_gradient(const hinge_tree_tables<L, T>& tree, const T* ddq, std::size_t nq, std::size_t W, T* F) {
-  hinge_tree_pass<false>(tree, ddq, nq, W, F, 0, static_cast<T*>(nullptr), static_cast<T*>(nullptr), [] {});
+/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (tree_gradient_pass).
+template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
+void tree_bodies_gradient(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
+                          T* F) {
+  tree_gradient_pass<false>(tree, ddq, nq, W, F, 0, static_cast<T*>(nullptr), static_cast<T*>(nullptr), [] {});
 }
 
 )";
 
-// hinge_tree_pass's recursion at q'' = 0 for M and f alone, where they go by the loops
+// tree_gradient_pass's recursion at q'' = 0 for M and f alone, where they go by the loops
 constexpr const char* mass_matrix_template = R"(/// The bodies' M (n x n) and f = -tau at q'' = 0, added into M and f, for mass_matrix_and_forcing:
-/// hinge_tree_pass's world recursion at q'' = 0 with only what M and f need (the root joint's motion
-/// in the tables at q'' = 0 too), composite inertias and forces, and tree_mass_matrix_and_bias.
-template <std::size_t L, class T>
-void hinge_tree_mass_matrix_and_forcing(const hinge_tree_tables<L, T>& tree, std::size_t n, T* M, T* f) {
+/// tree_gradient_pass's world recursion at q'' = 0 with only what M and f need (the root joint's
+/// motion in the tables at q'' = 0 too), composite inertias and forces, and tree_mass_matrix_and_bias.
+template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
+void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Directions, T>& tree, std::size_t n, T* M, T* f) {
   const int* parent = tree.parent;
   const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
-  T R[L][9], o[L][3], S[L][6], v[L][6], a[L][6], C[L][10], force[L][6];
+  T R[L][9], o[L][3], S[L][Columns][6], v[L][6], a[L][6], C[L][10], force[L][6];
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
   for (std::size_t i = 0; i < L; ++i) {
     const bool on_root = parent[i] < 0 && i == 0 && root;
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
-               tree.column[i], tree.inertia[i], R[i], o[i], S[i], C[i]);
+               tree.inertia[i], R[i], o[i], C[i]);
     const T* vp = parent[i] >= 0 ? v[parent[i]] : on_root ? root->v : rest;
     const T* ap = parent[i] >= 0 ? a[parent[i]] : on_root ? root->a : fall;
-    // v = v_p + S s, a = a_p + (v_p x S) s at q'' = 0
-    if (tree.velocity[i] < 0) {
-      for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k];
-    } else {
-      T dS[6];
-      tree_motion_cross(vp, S[i], dS);
-      const T s = tree.rate[i];
-      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + s*S[i][k], a[i][k] = ap[k] + s*dS[k];
+    // v = v_p + S s, a = a_p + v_p x S s at q'' = 0
+    T turning[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
+    for (int c = 0; c < tree.columns_of(i); ++c) {
+      tree_column_twist(R[i], o[i], tree.column[i][c], S[i][c]);
+      for (int k = 0; k < 6; ++k) turning[k] = turning[k] + tree.rate[i][c]*S[i][c][k];
     }
+    T vV[6];
+    tree_motion_cross(vp, turning, vV);
+    for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + turning[k], a[i][k] = ap[k] + vV[k];
     T P[6], Ca[6], vP[6];
     tree_inertia_times(C[i], v[i], P);
     tree_inertia_times(C[i], a[i], Ca);
@@ -382,19 +479,16 @@ void hinge_tree_mass_matrix_and_forcing(const hinge_tree_tables<L, T>& tree, std
 
 )";
 
-// The link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
-// column (axis a; origin velocity b) in its own coordinates: (R a; o × R a + R b); its inertia about
-// the world origin from its own about its origin (m, h, J):
+// The link's pose R, o from its parent's and its turn E and offset r; its inertia about the world origin from its own about its origin (m, h, J):
 // (m, m o + R h, R J Rᵀ + m (|o|² 1 − o oᵀ) + 2 (o·R h) 1 − (R h oᵀ + o (R h)ᵀ)). Written out entry
 // by entry, with the results in locals until the end: as loops over pointers that may alias, g++
 // -O2 neither unrolled nor kept them in registers (723 instructions per link of the 21-joint tree,
 // 494 written out).
 std::string tree_place_function() {
-  std::string f = "// the link's pose, its joint's twist and its inertia about the world origin (R J R^T shifted to the\n"
-                  "// origin), from its parent's pose and its own constants\n"
+  std::string f = "// the link's pose and its inertia about the world origin (R J R^T shifted to the origin), from its\n"
+                  "// parent's pose and its own constants\n"
                   "template <class T>\n"
-                  "inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* column, const T* own, "
-                  "T* R, T* o,\n                       T* S, T* C) {\n";
+                  "inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* own, T* R, T* o, T* C) {\n";
   auto line = [&](const std::string& text) { f += "  " + text + "\n"; };
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -405,16 +499,10 @@ std::string tree_place_function() {
   line("const T m = own[0], J00 = own[4], J01 = own[5], J02 = own[6], J11 = own[7], J12 = own[8], J22 = own[9];");
   const char* J[3][3] = {{"J00", "J01", "J02"}, {"J01", "J11", "J12"}, {"J02", "J12", "J22"}};
   for (int i = 0; i < 3; ++i) {
-    line(fmt::format("const T s{0} = R{0}0*column[0] + R{0}1*column[1] + R{0}2*column[2];", i));
-    line(fmt::format("const T b{0} = R{0}0*column[3] + R{0}1*column[4] + R{0}2*column[5];", i));
     line(fmt::format("const T h{0} = R{0}0*own[1] + R{0}1*own[2] + R{0}2*own[3];", i));
     for (int j = 0; j < 3; ++j)
       line(fmt::format("const T RJ{0}{1} = R{0}0*{2} + R{0}1*{3} + R{0}2*{4};", i, j, J[0][j], J[1][j], J[2][j]));
   }
-  line("S[0] = s0; S[1] = s1; S[2] = s2;");
-  line("S[3] = o1*s2 - o2*s1 + b0;");
-  line("S[4] = o2*s0 - o0*s2 + b1;");
-  line("S[5] = o0*s1 - o1*s0 + b2;");
   line("const T oo = o0*o0 + o1*o1 + o2*o2, oh2 = T(2)*(o0*h0 + o1*h1 + o2*h2);");
   line("const T c0 = m*o0 + h0, c1 = m*o1 + h1, c2 = m*o2 + h2;");
   line("C[0] = m; C[1] = c0; C[2] = c1; C[3] = c2;");
@@ -463,32 +551,62 @@ std::string root_motion_body(const Equations& e) {
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
-// L of detail::hinge_tree_tables<L, T>: the links
-std::string tree_size(const Equations& e) { return std::to_string(e.gradient_loops()->parent.size()); }
+// L, Columns, Directions of detail::tree_link_tables: the links, the most columns and directions of one
+std::string tree_size(const Equations& e) {
+  const TreeLinkTables& links = *e.gradient_loops();
+  return fmt::format("{}, {}, {}", links.parent.size(), links.most_columns(), links.most_directions());
+}
+
+// per link its `entries` (columns' velocities or directions' coordinates), padded with −1 to `most`
+std::string padded_rows(const std::vector<std::vector<int>>& entries, std::size_t most) {
+  std::string text;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    std::vector<int> row = entries[i];
+    row.resize(most, -1);
+    text += (i ? ", {" : "{") + table(row) + "}";
+  }
+  return text;
+}
+
+// per link how many `entries` it has
+std::string counts(const std::vector<std::vector<int>>& entries) {
+  std::vector<int> sizes;
+  for (const std::vector<int>& row : entries) sizes.push_back(int(row.size()));
+  return table(sizes);
+}
 
 // the statements that fill `tree`'s tables
 std::string tree_tables_body(const Equations& e) {
-  const HingeTreeLinks& links = *e.gradient_loops();
+  const TreeLinkTables& links = *e.gradient_loops();
   BodyWriter w(e);
-  std::size_t L = links.parent.size();
+  std::size_t L = links.parent.size(), columns = links.most_columns(), directions = links.most_directions();
   w.line(fmt::format("static constexpr int tree_parent[{}] = {{{}}};", L, table(links.parent)));
-  w.line(fmt::format("static constexpr int tree_velocity[{}] = {{{}}};", L, table(links.velocity)));
-  w.line(fmt::format("static constexpr int tree_coordinate[{}] = {{{}}};", L, table(links.coordinate)));
-  w.line("tree.parent = tree_parent; tree.velocity = tree_velocity; tree.coordinate = tree_coordinate;");
+  w.line(fmt::format("static constexpr int tree_columns[{}] = {{{}}};", L, counts(links.velocity)));
+  w.line(fmt::format("static constexpr int tree_directions[{}] = {{{}}};", L, counts(links.coordinate)));
+  w.line(fmt::format("static constexpr int tree_velocity[{}][{}] = {{{}}};", L, columns, padded_rows(links.velocity, columns)));
+  w.line(fmt::format("static constexpr int tree_coordinate[{}][{}] = {{{}}};", L, directions,
+                     padded_rows(links.coordinate, directions)));
+  w.line("tree.parent = tree_parent; tree.columns = tree_columns; tree.directions = tree_directions;");
+  w.line("tree.velocity = tree_velocity; tree.coordinate = tree_coordinate;");
   std::vector<ex> values;
   std::vector<std::string> targets;
-  auto add = [&](const std::string& array, std::size_t i, std::size_t k, const ex& value) {
+  auto add = [&](const std::string& entry, const ex& value) {
     values.push_back(value);
-    targets.push_back(fmt::format("tree.{}[{}][{}]", array, i, k));
+    targets.push_back("tree." + entry);
   };
   for (std::size_t i = 0; i < L; ++i) {
-    for (std::size_t k = 0; k < 9; ++k) add("turn", i, k, links.turn[i][k]);
-    for (std::size_t k = 0; k < 3; ++k) add("offset", i, k, links.offset[i][k]);
-    for (std::size_t k = 0; k < 6; ++k) add("column", i, k, links.column[i][k]);
-    values.push_back(links.rate[i]), targets.push_back(fmt::format("tree.rate[{}]", i));
-    for (std::size_t k = 0; k < 10; ++k) add("inertia", i, k, links.inertia[i][k]);
+    for (std::size_t k = 0; k < 9; ++k) add(fmt::format("turn[{}][{}]", i, k), links.turn[i][k]);
+    for (std::size_t k = 0; k < 3; ++k) add(fmt::format("offset[{}][{}]", i, k), links.offset[i][k]);
+    for (std::size_t c = 0; c < links.velocity[i].size(); ++c) {
+      for (std::size_t k = 0; k < 6; ++k) add(fmt::format("column[{}][{}][{}]", i, c, k), links.column[i][c][k]);
+      add(fmt::format("rate[{}][{}]", i, c), links.rate[i][c]);
+    }
+    // a tree of hinges and slides takes each direction's twist as its column's
+    for (std::size_t d = 0; d < links.coordinate[i].size() && columns > 1; ++d)
+      for (std::size_t c = 0; c < links.weight[i][d].size(); ++c) add(fmt::format("weight[{}][{}][{}]", i, d, c), links.weight[i][d][c]);
+    for (std::size_t k = 0; k < 10; ++k) add(fmt::format("inertia[{}][{}]", i, k), links.inertia[i][k]);
   }
-  for (unsigned k = 0; k < 3; ++k) values.push_back(links.gravity[k]), targets.push_back(fmt::format("tree.gravity[{}]", k));
+  for (unsigned k = 0; k < 3; ++k) add(fmt::format("gravity[{}]", k), links.gravity[k]);
   w.line(fmt::format("tree.rooted = {};", links.root ? "true" : "false"));
   if (links.root) declare_jointed_root(w, *links.root);
   w.assign(values, targets);
@@ -499,7 +617,7 @@ std::string tree_tables_body(const Equations& e) {
 
 std::string tree_gradient_loops_function(const Equations& e, bool with_mass_matrix_and_forcing) {
   if (!e.gradient_loops()) return "";
-  std::string tree = "hinge_tree_tables<" + tree_size(e) + ", T>& tree";
+  std::string tree = "tree_link_tables<" + tree_size(e) + ", T>& tree";
   std::string root_motion =
       e.gradient_loops()->root ? function("/// The tree's root joint's motion at the accelerations ddq.\n",
                                           "void tree_root_motion(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, " + tree + ")",
@@ -513,7 +631,7 @@ std::string tree_gradient_loops_function(const Equations& e, bool with_mass_matr
 }
 
 void call_tree_tables(BodyWriter& w, const Equations& e) {
-  w.line("detail::hinge_tree_tables<" + tree_size(e) + ", T> tree;");
+  w.line("detail::tree_link_tables<" + tree_size(e) + ", T> tree;");
   w.line("detail::tree_tables(t, x, u, p, tree);");
   call_root_motion(w, e);
 }
@@ -526,12 +644,12 @@ void call_tree_mass_matrix_and_forcing(BodyWriter& w, const Equations& e) {
   std::size_t n = e.num_velocities();
   if (e.gradient_loops()->root) w.line(fmt::format("const T ddq[{}] = {{}};", n));  // the root joint's motion at q'' = 0
   call_tree_tables(w, e);
-  w.line(fmt::format("hinge_tree_mass_matrix_and_forcing(tree, {}, M, f);", n));
+  w.line(fmt::format("tree_loops_mass_matrix_and_forcing(tree, {}, M, f);", n));
 }
 
 void call_tree_gradient_loops(BodyWriter& w, const Equations& e, std::size_t coordinates, std::size_t width) {
   call_tree_tables(w, e);
-  w.line(fmt::format("hinge_tree_gradient(tree, ddq, {}, {}, F);", coordinates, width));
+  w.line(fmt::format("tree_bodies_gradient(tree, ddq, {}, {}, F);", coordinates, width));
 }
 
 }  // namespace eomgen

@@ -49,6 +49,17 @@ constexpr std::size_t loops_beyond_pairs = 32;
 // 11.0 and 6.2 against 11.6, its header 204 KB against 158 and 378 against 269, g++ 9.5 s against
 // 6.8 and 16 against 9.
 constexpr std::size_t loops_beyond_pairs_in_a_plane = 200;
+// Below the root, a ball joint's link has three columns and four directions (its quaternion's), which
+// straight-line code folds with its constant axes and the loops do not: chains of ball joints with
+// full inertias (jacobian_state, g++ -O2, one core, the fastest of 201 batches, the two forms' headers
+// in one program) of 4, 6 and 8 (90, 189 and 324 pairs) ran 15 %, 10 % and 12 % slower in the
+// loops (3.41 µs against 2.96, 6.70 against 6.20, 15.5 against 14.1), of 10 and 12 (495 and 702)
+// 5 % and 8 % faster (19.0 against 20.1, 28.9 against 31.4); tests/crosscheck/mjcf/ball_ragdoll.xml
+// without its wrists and right ankle (seven balls and four hinges below a free root, 310 pairs)
+// 16 % slower (12.6 against 10.9).
+// Straight-line code costs its build time all the same: the ragdoll's header 1.57 MB against 646 KB
+// and g++ -O2 about 130 s against 15; the 12 balls' 2.35 MB against 853 KB, 353 s against 25.
+constexpr std::size_t loops_beyond_pairs_with_ball_joints = 400;
 
 // the pairs of a link and a link at or above it, weighted by their joints' velocities
 std::size_t joint_pairs(const std::vector<TreeLink>& links) {
@@ -260,25 +271,33 @@ class Gradient {
     return g;
   }
 
-  // the loops' inputs (HingeTreeLinks): the links' own data, their bodies summed about their origins;
+  // the loops' inputs (TreeLinkTables): the links' own data, their bodies summed about their origins;
   // a jointed root's table entries a fixed link's
-  HingeTreeLinks loop_inputs(const Vector3& gravity, std::optional<JointedRoot> root) const {
-    HingeTreeLinks in;
+  TreeLinkTables loop_inputs(const Vector3& gravity, std::optional<JointedRoot> root) const {
+    TreeLinkTables in;
     in.gravity = gravity;
     in.root = std::move(root);
     for (std::size_t i = 0; i < links_.size(); ++i) {
       const TreeLink& l = links_[i];
       in.parent.push_back(l.parent);
-      bool jointed = !l.columns.empty() && !(i == 0 && in.root);
-      in.velocity.push_back(jointed ? l.columns[0].velocity : -1);
-      in.coordinate.push_back(jointed ? l.directions[std::size_t(own_direction(i))].coordinate : -1);
-      in.rate.push_back(jointed ? l.columns[0].rate : ex(0));
       in.turn.push_back({l.turn(0, 0), l.turn(0, 1), l.turn(0, 2), l.turn(1, 0), l.turn(1, 1), l.turn(1, 2), l.turn(2, 0),
                          l.turn(2, 1), l.turn(2, 2)});
       in.offset.push_back(l.offset);
-      std::array<ex, 6> column{0, 0, 0, 0, 0, 0};
-      for (unsigned k = 0; k < 3 && jointed; ++k) column[k] = l.columns[0].axis[k], column[k + 3] = l.columns[0].origin_velocity[k];
-      in.column.push_back(column);
+      in.velocity.emplace_back(), in.column.emplace_back(), in.rate.emplace_back();
+      in.coordinate.emplace_back(), in.weight.emplace_back();
+      if (!(i == 0 && in.root)) {
+        for (const TreeLink::Column& c : l.columns) {
+          in.velocity.back().push_back(c.velocity);
+          in.rate.back().push_back(c.rate);
+          in.column.back().push_back({c.axis[0], c.axis[1], c.axis[2], c.origin_velocity[0], c.origin_velocity[1], c.origin_velocity[2]});
+        }
+        for (const TreeLink::Direction& d : l.directions) {
+          in.coordinate.back().push_back(d.coordinate);
+          std::vector<ex> over_columns(l.columns.size(), 0);
+          for (const auto& [c, weight] : d.weights) over_columns[c] += weight;
+          in.weight.back().push_back(over_columns);
+        }
+      }
       // about the origin: h = Σ m c and J = Σ J_c + m (|c|² 1 − c cᵀ)
       std::array<ex, 10> I{0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
       for (const TreeLink::Body& b : l.bodies) {
@@ -297,13 +316,17 @@ class Gradient {
     return in;
   }
 
-  // every joint a hinge or a slide (the loops' formulas), or none (a fixed link), but the first
-  // link's, which may be of any kind (a floating base); a joint that follows another's coordinate
-  // (URDF's mimic) is a hinge whose S carries its multiplier and whose rows and columns the loops
-  // add into its leader's, as pairs() does
+  // every joint but the first link's (which may be of any kind, a floating base) a hinge or a slide
+  // (the loops' one-column formulas: a joint that follows another's coordinate, URDF's mimic, is a
+  // hinge whose S carries its multiplier and whose rows and columns the loops add into its
+  // leader's, as pairs() does), a joint of several columns that all turn with its link (a ball
+  // joint: the loops' general formulas, A = (2 v_λ + V_b) × S), or none (a fixed link)
   bool loops_take_it() const {
-    for (std::size_t j = 1; j < links_.size(); ++j)
-      if (!links_[j].columns.empty() && !is_loop_hinge(j)) return false;
+    for (std::size_t j = 1; j < links_.size(); ++j) {
+      const TreeLink& l = links_[j];
+      bool turning = std::all_of(l.columns.begin(), l.columns.end(), [](const TreeLink::Column& c) { return c.turns_with_link; });
+      if (!l.columns.empty() && !is_loop_hinge(j) && !(l.columns.size() > 1 && turning)) return false;
+    }
     return true;
   }
 
@@ -472,6 +495,18 @@ class Gradient {
 
 }  // namespace
 
+std::size_t TreeLinkTables::most_columns() const {
+  std::size_t most = 1;
+  for (const std::vector<int>& v : velocity) most = std::max(most, v.size());
+  return most;
+}
+
+std::size_t TreeLinkTables::most_directions() const {
+  std::size_t most = 1;
+  for (const std::vector<int>& q : coordinate) most = std::max(most, q.size());
+  return most;
+}
+
 std::vector<ex> written_expressions(const BodiesGradient& g) {
   std::vector<ex> out = g.applied_inverse_dynamics;
   if (const InverseDynamicsGradient* closed = g.expressions()) {
@@ -480,12 +515,12 @@ std::vector<ex> written_expressions(const BodiesGradient& g) {
     out.insert(out.end(), closed->bias.begin(), closed->bias.end());
     return out;
   }
-  const HingeTreeLinks& l = *g.loops();
+  const TreeLinkTables& l = *g.loops();
   auto add = [&](const auto& rows) {
     for (const auto& row : rows) out.insert(out.end(), row.begin(), row.end());
   };
-  add(l.turn), add(l.offset), add(l.column), add(l.inertia);
-  out.insert(out.end(), l.rate.begin(), l.rate.end());
+  add(l.turn), add(l.offset), add(l.inertia), add(l.rate);
+  for (std::size_t i = 0; i < l.parent.size(); ++i) add(l.column[i]), add(l.weight[i]);
   out.insert(out.end(), l.gravity.begin(), l.gravity.end());
   if (const std::optional<JointedRoot>& r = l.root) {
     add(r->S), add(r->A), add(r->twist), add(r->dS), add(r->ddS);
@@ -500,6 +535,9 @@ JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const 
   Gradient g(links, out);
   std::size_t pairs = joint_pairs(links);
   bool long_tree = pairs > loops_beyond_pairs && (pairs > loops_beyond_pairs_in_a_plane || !moves_in_a_plane(links));
+  bool ball_below_root = std::any_of(links.begin() + (links.empty() ? 0 : 1), links.end(),
+                                     [](const TreeLink& l) { return l.columns.size() > 1; });
+  if (ball_below_root) long_tree = pairs > loops_beyond_pairs_with_ball_joints;
   if (velocities > loops_beyond_velocities && long_tree && g.loops_take_it())
     return g.loop_inputs(gravity, g.jointed_root(gravity, ddq));
   g.forward(gravity, ddq);

@@ -94,24 +94,34 @@ struct JointedRoot {
   std::array<GiNaC::ex, 6> v, a;
 };
 
-/// The derivatives above for a long tree of hinges and slides, as loops over its links in the
-/// header (emit/cpp_tree_gradient_loops.hpp), from each link's data in its parent's joint frame:
-/// its parent, its joint's velocity and coordinate (−1 for a fixed link), its turn E (row-major)
-/// and offset r, its joint's column (axis and origin velocity, in its own coordinates) and that
-/// column's rate, and its bodies' spatial inertia about its origin in its own coordinates
-/// (m, h = Σ m c, J's xx xy xz yy yz zz); the loops form the world poses, twists and inertias,
-/// v, a, Ψ', Ψ'', the composite quantities and the pairs from them. The first link's joint may be
-/// of several velocities (`root`; its table entries are then a fixed link's, with its turn and
-/// offset those of its current pose).
-struct HingeTreeLinks {
-  std::vector<int> parent, velocity, coordinate;
+/// The derivatives above for a long tree of joints whose velocities all turn with their links
+/// (hinges, slides, ball joints), as loops over its links in the header
+/// (emit/cpp_tree_gradient_loops.hpp), from each link's data in its parent's joint frame: its
+/// parent; per column of its joint (none for a fixed link) its velocity, its twist in the link's
+/// own coordinates (axis; origin velocity) and its rate; per direction its coordinate and its
+/// twist's weights over the link's columns (a hinge's or slide's 1 on its one column, a quaternion
+/// component's Y = ∂s/∂q'); its turn E (row-major) and offset r; and its bodies' spatial inertia
+/// about its origin in its own coordinates (m, h = Σ m c, J's xx xy xz yy yz zz). The loops form the
+/// world poses, twists and inertias, v, a, Ψ', Ψ'', the composite quantities and the pairs from
+/// them. The first link's joint may be of any kind (`root`: a floating base, whose columns keep the
+/// parent's axes; its table entries are then a fixed link's, with its turn and offset those of its
+/// current pose).
+struct TreeLinkTables {
+  std::vector<int> parent;
+  std::vector<std::vector<int>> velocity;    // per link, per column
+  std::vector<std::vector<int>> coordinate;  // per link, per direction
   std::vector<std::array<GiNaC::ex, 9>> turn;
   std::vector<Vector3> offset;
-  std::vector<std::array<GiNaC::ex, 6>> column;
-  std::vector<GiNaC::ex> rate;
+  std::vector<std::vector<std::array<GiNaC::ex, 6>>> column;  // per link, per column
+  std::vector<std::vector<GiNaC::ex>> rate;                   // per link, per column
+  std::vector<std::vector<std::vector<GiNaC::ex>>> weight;    // per link, per direction, over its columns
   std::vector<std::array<GiNaC::ex, 10>> inertia;
   Vector3 gravity{0, 0, 0};
   std::optional<JointedRoot> root;
+  /// the most columns and directions of one link: 1 and 1 for a tree of hinges and slides, whose
+  /// loops take each direction's twist as its column's
+  std::size_t most_columns() const;
+  std::size_t most_directions() const;
 };
 
 /// The closed form as expressions, for straight-line code: ∂τ/∂q and ∂τ/∂s, and from the same
@@ -124,9 +134,9 @@ struct InverseDynamicsGradient {
   std::vector<GiNaC::ex> bias;
 };
 
-/// A joint tree's closed form: as expressions, or, for a long tree of hinges and slides, as the
+/// A joint tree's closed form: as expressions, or, for a long tree whose joints turn with their links, as the
 /// inputs of the header's loops over its links, which form the same quantities at run time.
-using JointTreeGradient = std::variant<InverseDynamicsGradient, HingeTreeLinks>;
+using JointTreeGradient = std::variant<InverseDynamicsGradient, TreeLinkTables>;
 
 /// A joint tree's τ in two parts for its derivatives: the bodies', whose ∂τ/∂(q, s) are the
 /// closed form above, and the rest (applied forces, [energy], dissipation), whose derivatives the
@@ -137,7 +147,7 @@ struct BodiesGradient {
   /// the closed form's expressions, or null where the loops take it
   const InverseDynamicsGradient* expressions() const { return std::get_if<InverseDynamicsGradient>(&closed_form); }
   /// the loops' inputs, or null where the closed form is expressions
-  const HingeTreeLinks* loops() const { return std::get_if<HingeTreeLinks>(&closed_form); }
+  const TreeLinkTables* loops() const { return std::get_if<TreeLinkTables>(&closed_form); }
 };
 
 /// Every expression of g that the header writes (the applied τ, the closed form's entries, the

@@ -36,6 +36,7 @@
 #include "tumbling_body.hpp"
 
 #include "ball_chain_imported.hpp"
+#include "ball_ragdoll_imported.hpp"
 #include "measured_arm_imported.hpp"
 #include "mjcf_features_imported.hpp"
 #include "oblique_tree_imported.hpp"
@@ -373,6 +374,10 @@ TEST(MujocoImport, MjcfFeaturesImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJ
 
 // a ball below a ball, in a body that also slides, and a hinge below
 TEST(MujocoImport, BallBelowABallImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(ball_chain); }
+
+// a floating ragdoll of seven ball joints and four oblique hinges, whose M and f, like its gradient,
+// come from the loops over its links (links of three columns)
+TEST(MujocoImport, ABallJointedRagdollImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(ball_ragdoll); }
 
 // position, velocity and affine servos beside a motor: each a generalized force affine in u, q and q'
 TEST(MujocoImport, ServosImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(servo_arm); }

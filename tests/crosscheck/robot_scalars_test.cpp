@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "ball_ragdoll_imported.hpp"
 #include "branched_tree.hpp"
 #include "floating_humanoid.hpp"
 #include "support/awkward_scalar.hpp"
@@ -51,6 +52,7 @@ std::vector<double> everything(const Robot&) {
   };
 EOMGEN_ROBOT(branched_tree)
 EOMGEN_ROBOT(floating_humanoid)
+EOMGEN_ROBOT(ball_ragdoll_imported)
 #undef EOMGEN_ROBOT
 
 template <class Robot>
@@ -66,6 +68,7 @@ void expect_scalars_agree(const char* name) {
 TEST(RobotScalars, ALongTreesLoopsTakeAnyScalarType) {
   expect_scalars_agree<branched_tree_robot>("branched_tree");
   expect_scalars_agree<floating_humanoid_robot>("floating_humanoid");
+  expect_scalars_agree<ball_ragdoll_imported_robot>("ball_ragdoll_imported");  // links of three columns
 }
 
 }  // namespace

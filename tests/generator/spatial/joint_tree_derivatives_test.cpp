@@ -262,6 +262,25 @@ std::string hinge_chain(int hinges, bool ball) {
          "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
 }
 
+// a chain of `balls` ball joints through offset anchors, a hinge at its end, a body on each link
+std::string ball_chain(int balls) {
+  std::string coordinates = "h = 0.3\n", frames, bodies;
+  for (int k = 0; k <= balls; ++k) {
+    std::string parent = k ? fmt::format("parent = \"link{}\"\norigin = [\"0.0{}\", \"0\", \"-0.3\"]\n", k - 1, k % 9) : "";
+    std::string joint = k < balls ? fmt::format("{{ type = \"ball\", anchor = [\"0\", \"0.01\", \"0.05\"], quaternion = [\"w{0}\", "
+                                                "\"x{0}\", \"y{0}\", \"z{0}\"], angular_velocity = [\"o{0}\", \"p{0}\", \"r{0}\"] }}",
+                                                k)
+                                  : "{ type = \"revolute\", axis = [\"1\", \"2\", \"2\"], coordinate = \"h\" }";
+    if (k < balls) coordinates += fmt::format("w{0} = 1\nx{0} = 0\ny{0} = 0\nz{0} = 0\n", k);
+    frames += fmt::format("[[frames]]\nname = \"link{}\"\n{}joint = {}\n\n", k, parent, joint);
+    bodies += fmt::format("[[rigid_bodies]]\nname = \"body{0}\"\nmass = \"1.{0}\"\nframe = \"link{0}\"\n"
+                          "center = [\"0.01\", \"0.02\", \"-0.15\"]\ninertia = [\"0.03\", \"0.025\", \"0.02\"]\n\n",
+                          k);
+  }
+  return "[model]\nname = \"balls\"\n\n[coordinates]\n" + coordinates + "\n" + frames + bodies +
+         "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
+}
+
 // `legs` chains of `hinges` hinges each, hung from the ground side by side (a fixed-base walker),
 // with a body on each link
 std::string hinge_legs(int legs, int hinges) {
@@ -355,8 +374,7 @@ TEST(JointTreeDerivatives, ARootJointThatGravityDoesNotSeeIsCyclic) {
 
 // beyond 8 velocities a tree of hinges and slides takes the loops (the measured crossover), with
 // joints that follow another's coordinate among them, and below a root joint of several velocities
-// (its motion straight-line code); a ball joint below the root keeps the straight-line closed
-// form, whose formulas have its several columns
+// (its motion straight-line code); so does a long tree with ball joints below its root
 TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   EXPECT_FALSE(derive_text(hinge_chain(8, false)).gradient_loops());
   Equations nine = derive_text(hinge_chain(9, false));
@@ -370,9 +388,26 @@ TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   EXPECT_EQ(root.velocity, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(root.turns, (std::vector<bool>{true, true, true}));
   EXPECT_EQ(root.coordinate, (std::vector<int>{0, 1, 2, 3})) << "the quaternion's four components";
-  EXPECT_EQ(ball.gradient_loops()->velocity[0], -1) << "the root's table entries are a fixed link's";
-  EXPECT_EQ(ball.gradient_loops()->velocity[1], 3);
+  EXPECT_TRUE(ball.gradient_loops()->velocity[0].empty()) << "the root's table entries are a fixed link's";
+  EXPECT_EQ(ball.gradient_loops()->velocity[1], (std::vector<int>{3}));
+  EXPECT_EQ(ball.gradient_loops()->most_columns(), 1u);
   EXPECT_FALSE(derive_text(floating).gradient_loops()) << "11 velocities, a ball joint below the free torso";
+  // a ball joint below the root: straight-line code up to 400 pairs of columns (the measured crossover),
+  // then the loops, its link of three columns and four directions in their tables
+  EXPECT_FALSE(derive_text(ball_chain(7)).gradient_loops()) << "7 balls and a hinge: 22 velocities, 274 pairs";
+  Equations balls = derive_text(ball_chain(9));
+  ASSERT_TRUE(balls.gradient_loops()) << "9 balls and a hinge: 28 velocities, 433 pairs";
+  const TreeLinkTables& links = *balls.gradient_loops();
+  ASSERT_EQ(links.velocity.size(), 10u);
+  EXPECT_TRUE(links.velocity[0].empty()) << "the root's ball is the jointed root's";
+  EXPECT_EQ(links.velocity[1], (std::vector<int>{4, 5, 6}));
+  EXPECT_EQ(links.velocity[9], (std::vector<int>{0})) << "the hinge's rate, its angle declared first";
+  EXPECT_EQ(links.coordinate[1], (std::vector<int>{5, 6, 7, 8})) << "the second ball's quaternion";
+  EXPECT_EQ(links.coordinate[9], (std::vector<int>{0})) << "the hinge's angle, declared first";
+  EXPECT_EQ(links.most_columns(), 3u);
+  EXPECT_EQ(links.most_directions(), 4u);
+  ASSERT_EQ(links.weight[1].size(), 4u);
+  EXPECT_EQ(links.weight[1][0].size(), 3u) << "a quaternion component's weights over the ball's three columns";
   // tests/crosscheck/robot_jacobian_test.cpp checks this one's loops against the complex step
   Derivation hand = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/gantry_hand.toml");
   ASSERT_TRUE(hand.equations) << hand.diagnostics.format();
@@ -386,7 +421,8 @@ TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   Derivation coupled = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/coupled_hand.toml");
   ASSERT_TRUE(coupled.equations) << coupled.diagnostics.format();
   ASSERT_TRUE(coupled.equations->gradient_loops());
-  EXPECT_EQ(coupled.equations->gradient_loops()->velocity, (std::vector<int>{0, 1, 2, 3, 3, 4, 5, 5, 6, 7, 8}))
+  EXPECT_EQ(coupled.equations->gradient_loops()->velocity,
+            (std::vector<std::vector<int>>{{0}, {1}, {2}, {3}, {3}, {4}, {5}, {5}, {6}, {7}, {8}}))
       << "the fixed link folded into its parent's";
 }
 
