@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "emit/cpp_tree_gradient_passes.hpp"
+
 namespace eomgen {
 
 using GiNaC::ex;
@@ -111,6 +113,48 @@ inline void tree_own_bias(const T* I, const T* v, T* D) {
   D[8] = v[0]*h[1] - v[1]*h[0] + I[0]*u[2];
 }
 
+// a link's force C a + v x* C v, momentum P = C v and bias D; with Solves its own C and v x* C v too,
+// for its force again at the solved accelerations (tree_link_force_again)
+template <bool Solves, class T>
+inline void tree_link_forces(const T* C, const T* v, const T* a, T* force, T* P, T* D, T* own, T* vP_kept) {
+  T Ca[6], vP[6];
+  tree_inertia_times(C, v, P);
+  tree_inertia_times(C, a, Ca);
+  tree_force_cross(v, P, vP);
+  for (int k = 0; k < 6; ++k) force[k] = Ca[k] + vP[k];
+  tree_own_bias(C, v, D);
+  if constexpr (Solves) {
+    for (int k = 0; k < 10; ++k) own[k] = C[k];
+    for (int k = 0; k < 6; ++k) vP_kept[k] = vP[k];
+  }
+}
+
+template <class T>
+inline void tree_link_force_again(const T* own, const T* a, const T* vP, T* force) {
+  T Ca[6];
+  tree_inertia_times(own, a, Ca);
+  for (int k = 0; k < 6; ++k) force[k] = Ca[k] + vP[k];
+}
+
+// each link's composite quantities summed into its parent's, leaves first
+template <std::size_t L, class T>
+inline void tree_composites(const int* parent, T (&C)[L][10], T (&force)[L][6], T (&P)[L][6], T (&D)[L][9]) {
+  for (std::size_t i = L; i-- > 0;) {
+    const int p = parent[i];
+    if (p < 0) continue;
+    tree_add_into(C[p], C[i]);
+    tree_add_into(force[p], force[i]);
+    tree_add_into(P[p], P[i]);
+    tree_add_into(D[p], D[i]);
+  }
+}
+
+template <std::size_t L, class T>
+inline void tree_composite_forces(const int* parent, T (&force)[L][6]) {
+  for (std::size_t i = L; i-- > 0;)
+    if (parent[i] >= 0) tree_add_into(force[parent[i]], force[i]);
+}
+
 )";
 
 // The recursion and the pairs of spatial/joint_tree_derivatives.hpp for joints whose columns turn with
@@ -184,30 +228,26 @@ struct tree_link_tables {
   T weight[Columns > 1 ? L : 1][Directions][Columns];
   bool rooted;
   tree_jointed_root<T> root_joint;  // the first link's joint, its motion at the accelerations
-  // link i's columns and directions within the tables' extents, which a tree of hinges unrolls
-  int columns_of(std::size_t i) const { return columns[i] < int(Columns) ? columns[i] : int(Columns); }
-  int directions_of(std::size_t i) const { return directions[i] < int(Directions) ? directions[i] : int(Directions); }
+  // whether link i has a column c, a direction d: bounded by the tables' extents, so that the loops
+  // of a tree of hinges (one column) compile as its one column's code
+  bool has_column(std::size_t i, int c) const { return c < int(Columns) && c < columns[i]; }
+  bool has_direction(std::size_t i, int d) const { return d < int(Directions) && d < directions[i]; }
 };
 
 /// The bodies' M (n x n, row-major) and f = -tau from the pass's S, composite C and forces, added:
 /// M_jk = S_j . C_k S_k for each column k and each column j of its link or a link above it (a root
-/// joint's columns above every link below it), f_k = -S_k . F_k. A pair of columns of two links adds
-/// to both triangles, of one link (each order comes) to one entry; two links' columns that follow
-/// one coordinate add twice to the same entry.
+/// joint's columns above every link below it), f_k = -S_k . F_k; joints that follow one coordinate add
+/// their shares, a pair of two of them twice.
 template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
 void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, T>& tree, const T (&S)[L][Columns][6],
                                const T (&C)[L][10], const T (&force)[L][6], std::size_t n, T* M, T* f) {
-  auto add = [&](std::size_t j, std::size_t k, const T& x, bool one_link) {
-    if (j == k && !one_link) {
-      M[j*n + j] = M[j*n + j] + T(2)*x;
-      return;
-    }
+  auto add = [&](std::size_t j, std::size_t k, const T& x) {
     M[j*n + k] = M[j*n + k] + x;
-    if (!one_link) M[k*n + j] = M[k*n + j] + x;
+    if (j != k) M[k*n + j] = M[k*n + j] + x;
   };
   const tree_jointed_root<T>& root = tree.root_joint;
   for (std::size_t k = 0; k < L; ++k)
-    for (int r = 0; r < tree.columns_of(k); ++r) {
+    for (int r = 0; tree.has_column(k, r); ++r) {
       const std::size_t vk = std::size_t(tree.velocity[k][r]);
       T CS[6];
       tree_inertia_times(C[k], S[k][r], CS);
@@ -215,219 +255,29 @@ void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, T>
       int top = int(k);
       for (int j = int(k); j >= 0; j = tree.parent[j]) {
         top = j;
-        for (int c = 0; c < tree.columns_of(j); ++c)
-          add(std::size_t(tree.velocity[j][c]), vk, tree_power(S[j][c], CS), j == int(k));
+        // of k's own link the columns up to r, each entry once
+        for (int c = 0; tree.has_column(std::size_t(j), c) && (j != int(k) || c <= r); ++c) {
+          const std::size_t vj = std::size_t(tree.velocity[j][c]);
+          const T x = tree_power(S[j][c], CS);
+          add(vj, vk, j != int(k) && vj == vk ? T(2)*x : x);
+        }
       }
       for (std::size_t c = 0; tree.rooted && top == 0 && c < root.columns; ++c)
-        add(std::size_t(root.velocity[c]), vk, tree_power(root.S[c], CS), false);
+        add(std::size_t(root.velocity[c]), vk, tree_power(root.S[c], CS));
     }
   for (std::size_t c = 0; tree.rooted && c < root.columns; ++c) {
     const std::size_t vc = std::size_t(root.velocity[c]);
     T CS[6];
     tree_inertia_times(C[0], root.S[c], CS);
     f[vc] = f[vc] - tree_power(root.S[c], force[0]);
-    for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS), d == c);
+    for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS));
   }
 }
 
-/// d tau/d(q, q') of the tree's bodies, added into F (rows of width W, the velocities' columns after
-/// the nq coordinates' ones): the analytic derivatives of the Newton-Euler recursion (Carpentier and
-/// Mansard 2018) in world coordinates, from each link's joint twists S, their rates and its bodies'
-/// spatial inertia about the origin, at the accelerations ddq. With `Solves`, ddq are M^-1 f
-/// instead: the pass at the given ddq (zeros) adds the bodies' M (n x n) and f = -tau into M and f,
-/// which already hold the rest of them, and solve() then writes ddq (and, for a root joint, its
-/// motion at them) before the accelerations are formed again.
-template <bool Solves, std::size_t L, std::size_t Columns, std::size_t Directions, class T, class Solve>
-void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
-                        T* F, std::size_t n, T* M, T* f, Solve&& solve) {
-  const int* parent = tree.parent;
-  const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
-  // world poses, the columns' twists S and inertias C; v, a (the root's a is -gravity), per direction
-  // of twist T Psi' = v_p x T, Psi'' = a_p x T + v_p x Psi'; each link's force C a + v x* C v,
-  // momentum P = C v and bias D, summed into the composites; with Solves each link's own C and
-  // v x* C v, for its force again. A link of several columns keeps its directions' twists T and the
-  // twist V_b of its joint's velocity, which turns with it: a = a_p + S s'' + v_p x V_b.
-  T R[L][9], o[L][3], S[L][Columns][6], v[L][6], a[L][6], dS[L][Directions][6], ddS[L][Directions][6], C[L][10],
-      force[L][6], P[L][6], D[L][9];
-  [[maybe_unused]] T twist[Columns > 1 ? L : 1][Directions][6], turning[Columns > 1 ? L : 1][6];
-  [[maybe_unused]] T own[Solves ? L : 1][10], vPs[Solves ? L : 1][6];
-  const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
-  const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
-  const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
-  // the twist link i hangs from: its parent's, the root joint's or rest
-  auto parent_twist = [&](std::size_t i) -> const T* { return parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]]; };
-  // direction d's twist: a hinge's or slide's S, or the weighted sum of its link's columns
-  auto twist_of = [&](std::size_t i, int d) -> const T* {
-    if constexpr (Columns == 1) return S[i][0];
-    else return twist[i][d];
-  };
-  // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
-  auto accelerate = [&](std::size_t i) {
-    const T* vp = parent_twist(i);
-    const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
-    if (tree.columns[i] == 0) {
-      for (int k = 0; k < 6; ++k) a[i][k] = ap[k];
-      return;
-    }
-    if constexpr (Columns == 1) {
-      T aS[6], vdS[6];
-      tree_motion_cross(ap, S[i][0], aS);
-      tree_motion_cross(vp, dS[i][0], vdS);
-      const T s = tree.rate[i][0], dds = ddq[tree.velocity[i][0]];
-      for (int k = 0; k < 6; ++k) a[i][k] = ap[k] + dds*S[i][0][k] + s*dS[i][0][k], ddS[i][0][k] = aS[k] + vdS[k];
-    } else {
-      T vV[6];
-      tree_motion_cross(vp, turning[i], vV);
-      for (int k = 0; k < 6; ++k) a[i][k] = ap[k] + vV[k];
-      for (int c = 0; c < tree.columns_of(i); ++c) {
-        const T dds = ddq[tree.velocity[i][c]];
-        for (int k = 0; k < 6; ++k) a[i][k] = a[i][k] + dds*S[i][c][k];
-      }
-      for (int d = 0; d < tree.directions_of(i); ++d) {
-        T aT[6], vdS[6];
-        tree_motion_cross(ap, twist[i][d], aT);
-        tree_motion_cross(vp, dS[i][d], vdS);
-        for (int k = 0; k < 6; ++k) ddS[i][d][k] = aT[k] + vdS[k];
-      }
-    }
-  };
-  for (std::size_t i = 0; i < L; ++i) {
-    tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
-               tree.inertia[i], R[i], o[i], C[i]);
-    for (int c = 0; c < tree.columns_of(i); ++c) tree_column_twist(R[i], o[i], tree.column[i][c], S[i][c]);
-    const T* vp = parent_twist(i);
-    for (int k = 0; k < 6; ++k) v[i][k] = vp[k];
-    if constexpr (Columns == 1) {
-      if (tree.columns[i] != 0) {
-        tree_motion_cross(vp, S[i][0], dS[i][0]);
-        for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + tree.rate[i][0]*S[i][0][k];
-      }
-    } else {
-      for (int k = 0; k < 6; ++k) turning[i][k] = T(0);
-      for (int c = 0; c < tree.columns_of(i); ++c)
-        for (int k = 0; k < 6; ++k) turning[i][k] = turning[i][k] + tree.rate[i][c]*S[i][c][k];
-      for (int k = 0; k < 6; ++k) v[i][k] = v[i][k] + turning[i][k];
-      for (int d = 0; d < tree.directions_of(i); ++d) {
-        for (int k = 0; k < 6; ++k) twist[i][d][k] = T(0);
-        for (int c = 0; c < tree.columns_of(i); ++c)
-          for (int k = 0; k < 6; ++k) twist[i][d][k] = twist[i][d][k] + tree.weight[i][d][c]*S[i][c][k];
-        tree_motion_cross(vp, twist[i][d], dS[i][d]);
-      }
-    }
-    accelerate(i);
-    T Ca[6], vP[6];
-    tree_inertia_times(C[i], v[i], P[i]);
-    tree_inertia_times(C[i], a[i], Ca);
-    tree_force_cross(v[i], P[i], vP);
-    for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vP[k];
-    tree_own_bias(C[i], v[i], D[i]);
-    if constexpr (Solves) {
-      for (int k = 0; k < 10; ++k) own[i][k] = C[i][k];
-      for (int k = 0; k < 6; ++k) vPs[i][k] = vP[k];
-    }
-  }
-  for (std::size_t i = L; i-- > 0;) {
-    const int p = parent[i];
-    if (p < 0) continue;
-    tree_add_into(C[p], C[i]);
-    tree_add_into(force[p], force[i]);
-    tree_add_into(P[p], P[i]);
-    tree_add_into(D[p], D[i]);
-  }
-  if constexpr (Solves) {
-    tree_mass_matrix_and_bias(tree, S, C, force, n, M, f);
-    solve();
-    for (std::size_t i = 0; i < L; ++i) {
-      accelerate(i);
-      T Ca[6];
-      tree_inertia_times(own[i], a[i], Ca);
-      for (int k = 0; k < 6; ++k) force[i][k] = Ca[k] + vPs[i][k];
-    }
-    for (std::size_t i = L; i-- > 0;)
-      if (parent[i] >= 0) tree_add_into(force[parent[i]], force[i]);
-  }
-  // per column: C S, B^T S = D S - S x* P and H = C A + D S + S x* P with A = (2 v_p + V_b) x S (a
-  // hinge's or slide's 2 Psi'); per direction G = T x* F + C Psi'' + D Psi' + Psi' x* P
-  T CS[L][Columns][6], BS[L][Columns][6], H[L][Columns][6], G[L][Directions][6];
-  [[maybe_unused]] T A[Columns > 1 ? L : 1][Columns][6];
-  for (std::size_t j = 0; j < L; ++j) {
-    for (int c = 0; c < tree.columns_of(j); ++c) {
-      T DS[6], SP[6], CA[6];
-      tree_inertia_times(C[j], S[j][c], CS[j][c]);
-      tree_bias_times(D[j], S[j][c], DS);
-      tree_force_cross(S[j][c], P[j], SP);
-      if constexpr (Columns == 1) {
-        tree_inertia_times(C[j], dS[j][0], CA);
-        for (int k = 0; k < 6; ++k) CA[k] = T(2)*CA[k];
-      } else {
-        const T* vp = parent_twist(j);
-        T u[6];
-        for (int k = 0; k < 6; ++k) u[k] = T(2)*vp[k] + turning[j][k];
-        tree_motion_cross(u, S[j][c], A[j][c]);
-        tree_inertia_times(C[j], A[j][c], CA);
-      }
-      for (int k = 0; k < 6; ++k) BS[j][c][k] = DS[k] - SP[k], H[j][c][k] = CA[k] + DS[k] + SP[k];
-    }
-    for (int d = 0; d < tree.directions_of(j); ++d) {
-      T TF[6], Cdd[6], Dd[6], dP[6];
-      tree_force_cross(twist_of(j, d), force[j], TF);
-      tree_inertia_times(C[j], ddS[j][d], Cdd);
-      tree_bias_times(D[j], dS[j][d], Dd);
-      tree_force_cross(dS[j][d], P[j], dP);
-      for (int k = 0; k < 6; ++k) G[j][d][k] = TF[k] + Cdd[k] + Dd[k] + dP[k];
-    }
-  }
-  // k's coordinates and velocities in the row of a column s of k's link or one above it, through F_k
-  auto into_the_row_above = [&](const T* s, int velocity_of_s, std::size_t k) {
-    T* above = F + std::size_t(velocity_of_s)*W;
-    for (int d = 0; d < tree.directions_of(k); ++d) {
-      T& x = above[tree.coordinate[k][d]];
-      x = x + tree_power(s, G[k][d]);
-    }
-    for (int c = 0; c < tree.columns_of(k); ++c) {
-      T& x = above[nq + std::size_t(tree.velocity[k][c])];
-      x = x + tree_power(s, H[k][c]);
-    }
-  };
-  // each link k and each link j at or above it: j's coordinates and velocities in k's rows, k's in j's
-  for (std::size_t k = 0; k < L; ++k) {
-    if (tree.columns[k] == 0) continue;
-    int top = int(k);
-    for (int j = int(k); j >= 0; j = parent[j]) {
-      top = j;
-      for (int r = 0; r < tree.columns_of(k); ++r) {
-        T* row = F + std::size_t(tree.velocity[k][r])*W;
-        for (int d = 0; d < tree.directions_of(j); ++d) {
-          T& x = row[tree.coordinate[j][d]];
-          x = x + tree_power(ddS[j][d], CS[k][r]) + tree_power(dS[j][d], BS[k][r]);
-        }
-        for (int c = 0; c < tree.columns_of(j); ++c) {
-          T& x = row[nq + std::size_t(tree.velocity[j][c])];
-          if constexpr (Columns == 1) x = x + T(2)*tree_power(dS[j][0], CS[k][r]) + tree_power(S[j][c], BS[k][r]);
-          else x = x + tree_power(A[j][c], CS[k][r]) + tree_power(S[j][c], BS[k][r]);
-        }
-      }
-      if (j == int(k)) continue;
-      for (int c = 0; c < tree.columns_of(j); ++c) into_the_row_above(S[j][c], tree.velocity[j][c], k);
-    }
-    if (!root || top != 0) continue;
-    for (int r = 0; r < tree.columns_of(k); ++r) {
-      T* row = F + std::size_t(tree.velocity[k][r])*W;
-      for (std::size_t d = 0; d < root->directions; ++d) {
-        T& x = row[root->coordinate[d]];
-        x = x + tree_power(root->ddS[d], CS[k][r]) + tree_power(root->dS[d], BS[k][r]);
-      }
-      for (std::size_t c = 0; c < root->columns; ++c) {
-        T& x = row[nq + std::size_t(root->velocity[c])];
-        x = x + tree_power(root->A[c], CS[k][r]) + tree_power(root->S[c], BS[k][r]);
-      }
-    }
-    for (std::size_t c = 0; c < root->columns; ++c) into_the_row_above(root->S[c], root->velocity[c], k);
-  }
-  if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
-}
+)";
 
-/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (tree_gradient_pass).
+// the pass's callers, after it
+constexpr const char* bodies_gradient_template = R"(/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (tree_gradient_pass).
 template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
 void tree_bodies_gradient(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
                           T* F) {
@@ -451,18 +301,27 @@ void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Direc
   for (std::size_t i = 0; i < L; ++i) {
     const bool on_root = parent[i] < 0 && i == 0 && root;
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
-               tree.inertia[i], R[i], o[i], C[i]);
+               tree.column[i][0], tree.inertia[i], R[i], o[i], S[i][0], C[i]);
     const T* vp = parent[i] >= 0 ? v[parent[i]] : on_root ? root->v : rest;
     const T* ap = parent[i] >= 0 ? a[parent[i]] : on_root ? root->a : fall;
-    // v = v_p + S s, a = a_p + v_p x S s at q'' = 0
-    T turning[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
-    for (int c = 0; c < tree.columns_of(i); ++c) {
-      tree_column_twist(R[i], o[i], tree.column[i][c], S[i][c]);
-      for (int k = 0; k < 6; ++k) turning[k] = turning[k] + tree.rate[i][c]*S[i][c][k];
+    // v = v_p + V, a = a_p + v_p x V at q'' = 0, the joint's velocity V = S s
+    if (tree.columns[i] == 0) {
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k];
+    } else if constexpr (Columns == 1) {
+      T dS[6];
+      tree_motion_cross(vp, S[i][0], dS);
+      const T s = tree.rate[i][0];
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + s*S[i][0][k], a[i][k] = ap[k] + s*dS[k];
+    } else {
+      T V[6], vV[6];
+      for (int k = 0; k < 6; ++k) V[k] = tree.rate[i][0]*S[i][0][k];
+      for (int c = 1; tree.has_column(i, c); ++c) {
+        tree_column_twist(R[i], o[i], tree.column[i][c], S[i][c]);
+        for (int k = 0; k < 6; ++k) V[k] = V[k] + tree.rate[i][c]*S[i][c][k];
+      }
+      tree_motion_cross(vp, V, vV);
+      for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + V[k], a[i][k] = ap[k] + vV[k];
     }
-    T vV[6];
-    tree_motion_cross(vp, turning, vV);
-    for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + turning[k], a[i][k] = ap[k] + vV[k];
     T P[6], Ca[6], vP[6];
     tree_inertia_times(C[i], v[i], P);
     tree_inertia_times(C[i], a[i], Ca);
@@ -479,16 +338,19 @@ void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Direc
 
 )";
 
-// The link's pose R, o from its parent's and its turn E and offset r; its inertia about the world origin from its own about its origin (m, h, J):
-// (m, m o + R h, R J Rᵀ + m (|o|² 1 − o oᵀ) + 2 (o·R h) 1 − (R h oᵀ + o (R h)ᵀ)). Written out entry
+// The link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
+// column (axis a; origin velocity b) in its own coordinates: (R a; o × R a + R b), the first column's
+// here (tree_column_twist the others'); its inertia about the world origin from its own about its
+// origin (m, h, J): (m, m o + R h, R J Rᵀ + m (|o|² 1 − o oᵀ) + 2 (o·R h) 1 − (R h oᵀ + o (R h)ᵀ)). Written out entry
 // by entry, with the results in locals until the end: as loops over pointers that may alias, g++
 // -O2 neither unrolled nor kept them in registers (723 instructions per link of the 21-joint tree,
 // 494 written out).
 std::string tree_place_function() {
-  std::string f = "// the link's pose and its inertia about the world origin (R J R^T shifted to the origin), from its\n"
-                  "// parent's pose and its own constants\n"
+  std::string f = "// the link's pose, its joint's (first) twist and its inertia about the world origin (R J R^T shifted\n"
+                  "// to the origin), from its parent's pose and its own constants\n"
                   "template <class T>\n"
-                  "inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* own, T* R, T* o, T* C) {\n";
+                  "inline void tree_place(const T* Rp, const T* op, const T* E, const T* r, const T* column, const T* own, "
+                  "T* R, T* o,\n                       T* S, T* C) {\n";
   auto line = [&](const std::string& text) { f += "  " + text + "\n"; };
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -499,10 +361,16 @@ std::string tree_place_function() {
   line("const T m = own[0], J00 = own[4], J01 = own[5], J02 = own[6], J11 = own[7], J12 = own[8], J22 = own[9];");
   const char* J[3][3] = {{"J00", "J01", "J02"}, {"J01", "J11", "J12"}, {"J02", "J12", "J22"}};
   for (int i = 0; i < 3; ++i) {
+    line(fmt::format("const T s{0} = R{0}0*column[0] + R{0}1*column[1] + R{0}2*column[2];", i));
+    line(fmt::format("const T b{0} = R{0}0*column[3] + R{0}1*column[4] + R{0}2*column[5];", i));
     line(fmt::format("const T h{0} = R{0}0*own[1] + R{0}1*own[2] + R{0}2*own[3];", i));
     for (int j = 0; j < 3; ++j)
       line(fmt::format("const T RJ{0}{1} = R{0}0*{2} + R{0}1*{3} + R{0}2*{4};", i, j, J[0][j], J[1][j], J[2][j]));
   }
+  line("S[0] = s0; S[1] = s1; S[2] = s2;");
+  line("S[3] = o1*s2 - o2*s1 + b0;");
+  line("S[4] = o2*s0 - o0*s2 + b1;");
+  line("S[5] = o0*s1 - o1*s0 + b2;");
   line("const T oo = o0*o0 + o1*o1 + o2*o2, oh2 = T(2)*(o0*h0 + o1*h1 + o2*h2);");
   line("const T c0 = m*o0 + h0, c1 = m*o1 + h1, c2 = m*o2 + h2;");
   line("C[0] = m; C[1] = c0; C[2] = c1; C[3] = c2;");
@@ -597,6 +465,9 @@ std::string tree_tables_body(const Equations& e) {
   for (std::size_t i = 0; i < L; ++i) {
     for (std::size_t k = 0; k < 9; ++k) add(fmt::format("turn[{}][{}]", i, k), links.turn[i][k]);
     for (std::size_t k = 0; k < 3; ++k) add(fmt::format("offset[{}][{}]", i, k), links.offset[i][k]);
+    // a fixed link's first column zero: tree_place reads it
+    if (links.velocity[i].empty())
+      for (std::size_t k = 0; k < 6; ++k) add(fmt::format("column[{}][0][{}]", i, k), 0);
     for (std::size_t c = 0; c < links.velocity[i].size(); ++c) {
       for (std::size_t k = 0; k < 6; ++k) add(fmt::format("column[{}][{}][{}]", i, c, k), links.column[i][c][k]);
       add(fmt::format("rate[{}][{}]", i, c), links.rate[i][c]);
@@ -623,7 +494,9 @@ std::string tree_gradient_loops_function(const Equations& e, bool with_mass_matr
                                           "void tree_root_motion(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, " + tree + ")",
                                           root_motion_body(e))
                                : "";
-  return "namespace detail {\n\n" + std::string(six_vector_helpers) + tree_place_function() + gradient_template +
+  const char* pass = e.gradient_loops()->most_columns() > 1 ? several_columns_gradient_pass() : one_column_gradient_pass();
+  return "namespace detail {\n\n" + std::string(six_vector_helpers) + tree_place_function() + gradient_template + pass +
+         bodies_gradient_template +
          (with_mass_matrix_and_forcing ? mass_matrix_template : "") +
          function("/// The tree's tables for the configuration x, written once for the functions that go through it.\n",
                   "void tree_tables(T t, const T* x, const input_t<T>* u, const T* p, " + tree + ")", tree_tables_body(e)) +
