@@ -336,21 +336,23 @@ std::string newton_euler_gradient_function(const Equations& e) {
 
 namespace {
 
-// The time of M and f by the loops, in operations of straight-line code (about 0.25 ns each, g++ -O2): each
-// link of the tables (a fixed one too) about 95 ns, each pair of a joint and one at or above it 3.4 ns (per
-// pair of their columns), a root joint 570 ns, fit to the loops' times on chains of 9 and 16 oblique hinges
-// and checked on the others below. M and f alone, loops against straight-line code (links, pairs,
-// straight-line operations): chains of 9, 10, 12 and 16 oblique hinges 0.92, 0.88, 0.77 and 0.68 (9, 45,
-// 4,332 to 16, 136, 10,528); the 21-joint tree 0.87 (21, 90, 10,105); hinge_chain 0.96 (20, 210, 12,019); the
-// 21-joint tree below a free torso 0.85 (22, 90, 13,098) and beside a free body 1.10 (22, 90, 10,391);
-// floating_snake 1.17 (17, 136, 10,310); the quadruped 1.55 (13, 24, 4,687); chains of 9, 12 and 16 rods on
-// hinges along their axes 5.1, 1.75 and 1.49 (1,787 to 4,614 operations); example-robot-data's Talos (45
-// links for 32 velocities, 15,221) 1.37 and TIAGo Pro (34 for 23, 14,129) 1.08, where per velocity the counts
-// had looked like the 21-joint tree's. A link of several columns (a ball joint) about 56 ns more per column
-// beyond its first: a ragdoll of seven ball joints and four hinges below a free root
-// (tests/crosscheck/mjcf/ball_ragdoll.xml without its wrists and right ankle, 31 velocities) took 3.40 µs for
-// rhs by the loops against 2.58 by straight-line code of 8,000 operations, where links and pairs alone had
-// counted 8,600.
+// The time of M and f by the loops, in operations of straight-line code (about 0.25 ns each, g++
+// -O2): each link of the tables (a fixed one too) about 95 ns, each pair of a joint and one at or
+// above it 3.4 ns (per pair of their columns), a root joint 570 ns, fit to the loops' times on
+// chains of 9 and 16 oblique hinges and checked on the others below. M and f alone, loops against
+// straight-line code (links, pairs, straight-line operations): chains of 9, 10, 12 and 16 oblique
+// hinges 0.92, 0.88, 0.77 and 0.68 (9, 45, 4,332 to 16, 136, 10,528); the 21-joint tree 0.87 (21,
+// 90, 10,105); hinge_chain 0.96 (20, 210, 12,019); the 21-joint tree below a free torso 0.85 (22,
+// 90, 13,098) and beside a free body 1.10 (22, 90, 10,391); floating_snake 1.17 (17, 136, 10,310);
+// the quadruped 1.55 (13, 24, 4,687); chains of 9, 12 and 16 rods on hinges along their axes 5.1,
+// 1.75 and 1.49 (1,787 to 4,614 operations); example-robot-data's Talos (45 links for 32
+// velocities, 15,221) 1.37 and TIAGo Pro (34 for 23, 14,129) 1.08, where per velocity the counts
+// had looked like the 21-joint tree's. A link of several columns (a ball joint) about 190
+// operations more per column beyond its first: a ragdoll of seven ball joints and four hinges below
+// a free root (tests/crosscheck/mjcf/ball_ragdoll.xml without its wrists and right ankle, 31
+// velocities) took 3.40 µs for rhs by the loops against 2.58 by straight-line code of 8,000
+// operations, the loops' M and f thus about 8,000 + 0.82 µs / 0.25 ns = 11,280 where links and
+// pairs alone count 8,596: 2,684 more for its 14 columns beyond its links' first.
 long looped_mass_matrix_and_forcing_operations(const TreeLinkTables& links) {
   long pairs = 0, more_columns = 0;
   for (std::size_t k = 0; k < links.parent.size(); ++k) {
@@ -358,7 +360,7 @@ long looped_mass_matrix_and_forcing_operations(const TreeLinkTables& links) {
     for (int j = int(k); j >= 0; j = links.parent[std::size_t(j)])
       pairs += long(links.velocity[k].size() * links.velocity[std::size_t(j)].size());
   }
-  return 380 * long(links.parent.size()) + 225 * more_columns + 14 * pairs + (links.root ? 2300 : 0);
+  return 380 * long(links.parent.size()) + 190 * more_columns + 14 * pairs + (links.root ? 2300 : 0);
 }
 
 // detail::mass_matrix_and_forcing's declaration, inlined where it is called: a call passed M

@@ -341,10 +341,10 @@ void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Direc
 // The link's pose R, o from its parent's and its turn E and offset r; its joint's twist S from the
 // column (axis a; origin velocity b) in its own coordinates: (R a; o × R a + R b), the first column's
 // here (tree_column_twist the others'); its inertia about the world origin from its own about its
-// origin (m, h, J): (m, m o + R h, R J Rᵀ + m (|o|² 1 − o oᵀ) + 2 (o·R h) 1 − (R h oᵀ + o (R h)ᵀ)). Written out entry
-// by entry, with the results in locals until the end: as loops over pointers that may alias, g++
-// -O2 neither unrolled nor kept them in registers (723 instructions per link of the 21-joint tree,
-// 494 written out).
+// origin (m, h, J): (m, m o + R h, R J Rᵀ + m (|o|² 1 − o oᵀ) + 2 (o·R h) 1 − (R h oᵀ + o (R h)ᵀ)).
+// Written out entry by entry, with the results in locals until the end: as loops over pointers that
+// may alias, g++ -O2 neither unrolled nor kept them in registers (723 instructions per link of the
+// 21-joint tree, 494 written out).
 std::string tree_place_function() {
   std::string f = "// the link's pose, its joint's (first) twist and its inertia about the world origin (R J R^T shifted\n"
                   "// to the origin), from its parent's pose and its own constants\n"

@@ -180,11 +180,10 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
                tree.column[i][0], tree.inertia[i], R[i], o[i], S[i][0], C[i]);
     for (int c = 1; tree.has_column(i, c); ++c) tree_column_twist(R[i], o[i], tree.column[i][c], S[i][c]);
     const T* vp = parent_twist(i);
-    for (int k = 0; k < 6; ++k) v[i][k] = vp[k];
     for (int k = 0; k < 6; ++k) turning[i][k] = T(0);
     for (int c = 0; tree.has_column(i, c); ++c)
       for (int k = 0; k < 6; ++k) turning[i][k] = turning[i][k] + tree.rate[i][c]*S[i][c][k];
-    for (int k = 0; k < 6; ++k) v[i][k] = v[i][k] + turning[i][k];
+    for (int k = 0; k < 6; ++k) v[i][k] = vp[k] + turning[i][k];
     for (int d = 0; tree.has_direction(i, d); ++d) {
       for (int k = 0; k < 6; ++k) twist[i][d][k] = T(0);
       for (int c = 0; tree.has_column(i, c); ++c)

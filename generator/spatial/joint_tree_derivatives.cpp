@@ -495,17 +495,19 @@ class Gradient {
 
 }  // namespace
 
-std::size_t TreeLinkTables::most_columns() const {
+namespace {
+
+// the longest row, at least 1 (the tables' extent)
+std::size_t longest(const std::vector<std::vector<int>>& rows) {
   std::size_t most = 1;
-  for (const std::vector<int>& v : velocity) most = std::max(most, v.size());
+  for (const std::vector<int>& row : rows) most = std::max(most, row.size());
   return most;
 }
 
-std::size_t TreeLinkTables::most_directions() const {
-  std::size_t most = 1;
-  for (const std::vector<int>& q : coordinate) most = std::max(most, q.size());
-  return most;
-}
+}  // namespace
+
+std::size_t TreeLinkTables::most_columns() const { return longest(velocity); }
+std::size_t TreeLinkTables::most_directions() const { return longest(coordinate); }
 
 std::vector<ex> written_expressions(const BodiesGradient& g) {
   std::vector<ex> out = g.applied_inverse_dynamics;
@@ -534,10 +536,10 @@ JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const 
                                       std::size_t velocities, std::size_t coordinates, std::vector<Intermediate>& out) {
   Gradient g(links, out);
   std::size_t pairs = joint_pairs(links);
-  bool long_tree = pairs > loops_beyond_pairs && (pairs > loops_beyond_pairs_in_a_plane || !moves_in_a_plane(links));
   bool ball_below_root = std::any_of(links.begin() + (links.empty() ? 0 : 1), links.end(),
                                      [](const TreeLink& l) { return l.columns.size() > 1; });
-  if (ball_below_root) long_tree = pairs > loops_beyond_pairs_with_ball_joints;
+  bool long_tree = ball_below_root ? pairs > loops_beyond_pairs_with_ball_joints
+                                   : pairs > loops_beyond_pairs && (pairs > loops_beyond_pairs_in_a_plane || !moves_in_a_plane(links));
   if (velocities > loops_beyond_velocities && long_tree && g.loops_take_it())
     return g.loop_inputs(gravity, g.jointed_root(gravity, ddq));
   g.forward(gravity, ddq);

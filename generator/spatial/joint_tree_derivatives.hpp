@@ -134,8 +134,9 @@ struct InverseDynamicsGradient {
   std::vector<GiNaC::ex> bias;
 };
 
-/// A joint tree's closed form: as expressions, or, for a long tree whose joints turn with their links, as the
-/// inputs of the header's loops over its links, which form the same quantities at run time.
+/// A joint tree's closed form: as expressions, or, for a long tree whose joints turn with their
+/// links, as the inputs of the header's loops over its links, which form the same quantities at run
+/// time.
 using JointTreeGradient = std::variant<InverseDynamicsGradient, TreeLinkTables>;
 
 /// A joint tree's τ in two parts for its derivatives: the bodies', whose ∂τ/∂(q, s) are the
