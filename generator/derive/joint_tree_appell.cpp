@@ -88,7 +88,9 @@ Equations derive_joint_tree_appell(const Model& model, const Mechanics& mech) {
     if (l.joint && l.joint->spherical())
       e.quaternions.push_back({std::size_t(l.joint->quaternion[0]), std::size_t(l.joint->quaternion[1]),
                                std::size_t(l.joint->quaternion[2]), std::size_t(l.joint->quaternion[3])});
-  e.kinetic_energy = kinetic_energy_of(mech);
+  // an [energy] kinetic in a quaternion's rates is written in the angular velocity
+  ex kinetic = kinetic_energy_of(mech), in_velocities = kinetic.subs(rates);
+  e.kinetic_energy = in_velocities.is_equal(kinetic) ? kinetic : tidy(in_velocities, motion);
   e.potential_energy = mech.potential_energy;
   e.dissipation = tidy(mech.dissipation.subs(rates), motion);
   for (const NamedSymbolic& o : model.outputs) e.outputs.push_back({o.name, tidy(o.expression.subs(rates), motion)});

@@ -112,14 +112,17 @@ void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string&
                                                                        format_number(j.spring_reference[0])));
     return;
   }
+  // MuJoCo's damping d and armature a of each of the joint's velocities: ½ d|v|² and ½ a|v|², where
+  // the angular velocity's |ω|² = 4|q'|² for a unit quaternion
   std::size_t q = j.type == "free" ? 3 : 0;
-  if (j.damping != 0) {
-    if (q) out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2)", format_number(j.damping), c[0], c[1], c[2]));
-    out.dissipation.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2 + der({})^2)", format_number(4 * j.damping), c[q],
-                                          c[q + 1], c[q + 2], c[q + 3]));
-  }
-  if (j.armature != 0)
-    out.warnings.push_back(fmt::format("{}: the armature of a {} joint is not carried", where, j.type));
+  auto squares = [&](double coefficient, std::vector<std::string>& terms) {
+    if (coefficient == 0) return;
+    if (q) terms.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2)", format_number(coefficient), c[0], c[1], c[2]));
+    terms.push_back(fmt::format("{}*(der({})^2 + der({})^2 + der({})^2 + der({})^2)", format_number(4 * coefficient), c[q],
+                                c[q + 1], c[q + 2], c[q + 3]));
+  };
+  squares(j.damping, out.dissipation);
+  squares(j.armature, out.kinetic);
   if (j.stiffness != 0)
     out.warnings.push_back(fmt::format("{}: the stiffness of a {} joint is not carried", where, j.type));
 }

@@ -128,25 +128,34 @@ void add_torque(std::vector<ex>& Q, const BodyTorque& m, const BodyKinematics& b
     for (unsigned a = 0; a < 3; ++a) Q[j] += torque[a] * body.angular_velocity_jacobian(a, j);
 }
 
-// An [energy] kinetic T(q, q', t) beside ball or free joints, in the rates of the coordinates whose
-// velocity is their rate (an armature's ½ a q'²): its Lagrange terms M_T q'' + g_T (Hiller §3.3)
-// projected on the pseudo-velocities, Wᵀ(M_T q'' + g_T) with q' = W s; M_T joins the tree's M and
-// −Wᵀ g_T its bias forces (the equations are then those of derive_joint_tree_appell)
+// An [energy] kinetic T(q, q', t) beside ball or free joints: its Lagrange terms M_T q'' + g_T
+// (Hiller §3.3) projected on the pseudo-velocities, Wᵀ(M_T q'' + g_T), with q' = W s and
+// q'' = W s' + Ẇ s (a quaternion's rates ½ q ⊗ (0, ω), of Ẇ s = ½ q' ⊗ (0, ω)): the principle of
+// virtual power, δq' = W δs, whose Wᵀ also annihilates the normal q of a quaternion's sphere, so that
+// T may be written in the four rates (an armature's 2a|q'|² = ½ a|q|²|ω|²). Wᵀ M_T W joins the
+// tree's M and −Wᵀ(g_T + M_T Ẇ s) its bias forces (the equations are then those of
+// derive_joint_tree_appell)
 void add_rate_kinetic_energy(Mechanics& m, const Model& model, const JointVelocities& v, const GiNaC::exmap& rates,
                              std::vector<ex>& tau) {
   const ex& T = model.kinetic;
   if (T.is_zero()) return;
   const Symbols& s = model.symbols;
   std::size_t n = s.num_coordinates();
+  std::vector<ex> rate_of_rate(n, 0);  // Ẇ s, zero for a coordinate whose rate is a velocity
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < n; ++k) rate_of_rate[i] += v.coordinate_rates[i].diff(s.coordinates[k]) * v.coordinate_rates[k];
   for (std::size_t j = 0; j < n; ++j) {
     ex p = T.diff(s.velocities[j]), g = p.diff(s.time) - T.diff(s.coordinates[j]), inertia = 0;
     for (std::size_t i = 0; i < n; ++i) {
       g += p.diff(s.coordinates[i]) * s.velocities[i];
       ex M_ji = p.diff(s.velocities[i]);
       if (M_ji.is_zero()) continue;
-      int a = v.of_coordinate[j], b = v.of_coordinate[i];  // the rates of both are velocities (why_not_a_joint_tree)
-      inertia += M_ji * m.acceleration_symbols[std::size_t(b)];
-      (*m.composite_mass_matrix)(unsigned(a), unsigned(b)) += M_ji.subs(rates);
+      g += M_ji * rate_of_rate[i];
+      for (const auto& [b, w_ib] : v.rate_matrix[i]) {
+        inertia += M_ji * w_ib * m.acceleration_symbols[b];
+        for (const auto& [a, w_ja] : v.rate_matrix[j])
+          (*m.composite_mass_matrix)(unsigned(a), unsigned(b)) += (w_ja * M_ji * w_ib).subs(rates);
+      }
     }
     g = g.subs(rates);
     ex lagrange = inertia.subs(rates) + g;

@@ -77,7 +77,9 @@ void ModelBuilder::check_spherical_joints() {
 }
 
 std::optional<ex> ModelBuilder::parse(const ExpressionText& text, unsigned allowed, const char* context) {
-  return parse_expression(text, m_.symbols, {allowed, context}, d_);
+  ExpressionRules rules{allowed, context};
+  rules.angular_velocities = &angular_velocity_names_;
+  return parse_expression(text, m_.symbols, rules, d_);
 }
 
 void ModelBuilder::check_header() {
@@ -261,6 +263,22 @@ int moving_depth(const Model& model) {
   return deepest;
 }
 
+// A ball or free joint's velocities are its angular velocity, which the recursions over a tree of
+// joints derive; written out in q, the quaternion's four rates would be the velocities, one too many
+void refuse_spherical_joints_off_a_tree(const ModelFile& file, const Model& model, Diagnostics& diagnostics) {
+  auto spherical = std::find_if(file.frames.begin(), file.frames.end(), [](const FrameEntry& f) {
+    return f.joint && (f.joint->type == "ball" || f.joint->type == "free");
+  });
+  if (spherical == file.frames.end()) return;
+  std::optional<std::string> why = why_not_a_joint_tree(model);
+  if (!why) return;
+  diagnostics.error(spherical->joint->where, spherical->joint->key,
+                    fmt::format("frame '{}' has a {} joint, which eomgen derives over a tree of joints only, and the model is none: {}",
+                                spherical->name, spherical->joint->type, *why),
+                    "make it one: every body still in a frame moved by one joint, gravity constant and each "
+                    "coordinate moving a joint; or turn the frame by hinges or by angles in its rotation instead");
+}
+
 }  // namespace
 
 // Frames and bodies that the coordinates turn and slide are a tree of joints when each of them has
@@ -290,7 +308,9 @@ Model build_model(const ModelFile& file, Diagnostics& diagnostics, bool written_
     } catch (const std::exception&) {
     }
   }
-  return ModelBuilder(file, diagnostics).build();
+  Model model = ModelBuilder(file, diagnostics).build();
+  if (diagnostics.empty()) refuse_spherical_joints_off_a_tree(file, model, diagnostics);
+  return model;
 }
 
 }  // namespace eomgen

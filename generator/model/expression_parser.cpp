@@ -282,6 +282,10 @@ class Parser {
           std::find(rules_.defined_later->begin(), rules_.defined_later->end(), name) != rules_.defined_later->end())
         fail(start, fmt::format("'{}' is not defined yet: [definitions] are read from the top", name),
              "a definition may use only those above it (so that none depends on itself): move it up");
+      if (rules_.angular_velocities && rules_.angular_velocities->count(name))
+        fail(start, fmt::format("'{}' is a ball or free joint's angular velocity, which {} cannot name", name, rules_.context),
+             "write it in the rates of the joint's quaternion (w, x, y, z), as at unit length ω_x = 2(w der(x) − x der(w) − "
+             "y der(z) + z der(y)), and |ω|² = 4(der(w)^2 + der(x)^2 + der(y)^2 + der(z)^2)");
       fail(start, fmt::format("unknown symbol '{}'", name), suggest(name, symbols_.all_names(), "symbols"));
     }
     const SymbolInfo& info = found->second;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,8 @@ struct ExpressionRules {
   const char* context = "an expression";  // e.g. "a position", for messages
   /// definitions further down [definitions], not yet usable: named as such when used
   const std::vector<std::string>* defined_later = nullptr;
+  /// the names of ball and free joints' angular velocities, which no expression takes: named as such
+  const std::set<std::string>* angular_velocities = nullptr;
 };
 
 /// One factor of a product of rotations: rot_x, rot_y or rot_z of an angle, a turn by an angle

@@ -561,11 +561,6 @@ std::optional<std::string> why_not_a_joint_tree(const Model& model) {
         moves(r.placement.relative, s))
       return fmt::format("rigid body '{}' does not sit still in a frame", r.name);
   if (moves(model.gravity[0] + model.gravity[1] + model.gravity[2], s)) return "gravity changes with q or t";
-  for (const FrameLink& l : model.frame_links)
-    for (int k : l.joint->quaternion)
-      if (k >= 0 && model.kinetic.has(s.velocities[std::size_t(k)]))
-        return fmt::format("its [energy] kinetic has the rate of the quaternion's '{}', whose velocities are an angular "
-                           "velocity", s.coordinate_names[std::size_t(k)]);
   return std::nullopt;
 }
 

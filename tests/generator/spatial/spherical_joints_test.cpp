@@ -5,10 +5,13 @@
 // - generated/tumbling_body.hpp (a free body): M = diag(m, m, m, A, B, C), the centre falls with g,
 //   ω' follows Euler's equations, q' = ½ q ⊗ (0, ω), and a quaternion of any length is the same
 //   orientation;
-// - misuses of the joint are located, with a fix.
+// - a kinetic energy written in the quaternion's rates (an armature) is an inertia about the pivot;
+// - misuses of the joint are located, with a fix, and so is a ball joint in a model that is no tree.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <cmath>
 #include <random>
 
@@ -137,6 +140,99 @@ TEST(SphericalJoints, MisusesAreLocated) {
   EXPECT_NE(expanded.find("bad.toml:3:14: error: model.kinematics: the key is retired"), std::string::npos) << expanded;
   std::string slerp = diagnostics_of("{ type = \"hinge\", " + q + " }");
   EXPECT_NE(slerp.find("'hinge' is not a joint type"), std::string::npos) << slerp;
+  std::string omega = diagnostics_of("{ type = \"ball\", " + q + ", " + w + " }", "\n[energy]\nkinetic = \"0.01*wx^2\"");
+  EXPECT_NE(omega.find("bad.toml:5:17: error: energy.kinetic: 'wx' is a ball or free joint's angular velocity, which the "
+                       "kinetic energy cannot name"), std::string::npos) << omega;
+  EXPECT_NE(omega.find("ω_x = 2(w der(x) − x der(w) − y der(z) + z der(y))"), std::string::npos) << omega;
+  // written out in q, the quaternion's four rates would be the velocities: refused off a tree
+  std::string shaken = diagnostics_of("{ type = \"ball\", " + q + ", " + w + " }",
+                                      "\n[gravity]\nacceleration = [\"0\", \"0\", \"-9.81*(1 + sin(t))\"]");
+  EXPECT_NE(shaken.find("bad.toml:14:"), std::string::npos) << shaken;
+  EXPECT_NE(shaken.find("frame 'body' has a ball joint, which eomgen derives over a tree of joints only, and the model is "
+                        "none: gravity changes with q or t"), std::string::npos) << shaken;
+}
+
+// A kinetic energy written in the quaternion's rates, Wᵀ(d/dt ∂T/∂q' − ∂T/∂q) with q'' = W s' + Ẇ s:
+// - MuJoCo's armature a on a ball joint as eomgen import writes it, T = 2a|q'|² = ½ a|q|²|ω|², is at
+//   unit q an inertia a·E about the pivot (its M_T Ẇ s = −a|ω|² q is normal to the quaternions'
+//   sphere, which Wᵀ annihilates);
+// - T = ½ c ω_x², ω_x = 2(w x' − x w' − y z' + z y'), is an inertia c about the body's x axis alone:
+//   ∂T/∂q and Ẇ s both count.
+// Either way M, f and the energy are those of the top whose inertia tensor has them added.
+TEST(SphericalJoints, AKineticEnergyInTheQuaternionsRatesIsAnInertiaAboutThePivot) {
+  const std::string top = read_file(model_path("ball_joint_top")), c = "0.013";
+  const std::string tensor = "[[\"0.02\", \"0.001\", \"-0.002\"], [\"0.001\", \"0.025\", \"0.0015\"], [\"-0.002\", \"0.0015\", \"0.04\"]]";
+  struct Case {
+    std::string kinetic, tensor;
+  };
+  const Case cases[] = {
+      {"2*c*(der(qw)^2 + der(qx)^2 + der(qy)^2 + der(qz)^2)",
+       "[[\"0.033\", \"0.001\", \"-0.002\"], [\"0.001\", \"0.038\", \"0.0015\"], [\"-0.002\", \"0.0015\", \"0.053\"]]"},
+      {"c/2*(2*(qw*der(qx) - qx*der(qw) - qy*der(qz) + qz*der(qy)))^2",
+       "[[\"0.033\", \"0.001\", \"-0.002\"], [\"0.001\", \"0.025\", \"0.0015\"], [\"-0.002\", \"0.0015\", \"0.04\"]]"}};
+  for (const Case& k : cases) {
+    Equations rated = derive_text(edited(top, {{"[gravity]", "[energy]\nkinetic = \"" + k.kinetic + "\"\n\n[gravity]"},
+                                               {"g = 9.81", "g = 9.81\nc = " + c}}));
+    Equations inertia = derive_text(edited(top, {{tensor, k.tensor}}));
+    ASSERT_EQ(rated.symbols.velocities.size(), 3u) << k.kinetic;
+    EXPECT_EQ(rated.symbols.velocities[0].get_name(), "wx") << k.kinetic;
+    std::mt19937 random(40);
+    std::uniform_real_distribution<double> rate(-20, 20);
+    for (int n = 0; n < 20; ++n) {
+      auto q = random_quaternion(random);
+      std::map<std::string, double> state{{"m", 1.5}, {"g", 9.81}, {"c", std::stod(c)}, {"qw", q[0]}, {"qx", q[1]}, {"qy", q[2]},
+                                          {"qz", q[3]}, {"wx", rate(random)}, {"wy", rate(random)}, {"wz", rate(random)}};
+      GiNaC::exmap at_rated = point_by_name(rated, state), at_inertia = point_by_name(inertia, state);
+      for (unsigned i = 0; i < 3; ++i) {
+        double f = value_at(inertia.forcing[i], at_inertia);
+        EXPECT_NEAR(value_at(rated.forcing[i], at_rated), f, 1e-12 * std::max(1.0, std::abs(f))) << k.kinetic << ", state " << n << ", f" << i;
+        for (unsigned j = 0; j < 3; ++j)
+          EXPECT_NEAR(value_at(rated.mass_matrix(i, j), at_rated), value_at(inertia.mass_matrix(i, j), at_inertia), 1e-14)
+              << k.kinetic << ", state " << n << ", M" << i << j;
+      }
+      double T = value_at(inertia.kinetic_energy, at_inertia);
+      EXPECT_NEAR(value_at(rated.kinetic_energy, at_rated), T, 1e-12 * T) << k.kinetic << ", state " << n;
+    }
+  }
+}
+
+// T = ½ c q'_w² + the top's: a kinetic energy of (q, ω) whose M_T Ẇ s is not normal to the sphere,
+// so that the projection's Ẇ s term counts; the energy E(q, ω) stays constant along the motion,
+// dE/dt = ∂E/∂q·q' + ∂E/∂ω·ω' = 0, by central differences along (q', ω') at random states
+TEST(SphericalJoints, AKineticEnergyInOneQuaternionRateKeepsTheEnergy) {
+  Equations e = derive_text(edited(read_file(model_path("ball_joint_top")),
+                                   {{"[gravity]", "[energy]\nkinetic = \"c/2*der(qw)^2\"\n\n[gravity]"}, {"g = 9.81", "g = 9.81\nc = 0.3"}}));
+  const Symbols& s = e.symbols;
+  ASSERT_EQ(s.velocities.size(), 3u);
+  std::mt19937 random(41);
+  std::uniform_real_distribution<double> rate(-5, 5);
+  for (int n = 0; n < 10; ++n) {
+    auto q = random_quaternion(random);
+    std::map<std::string, double> state{{"m", 1.5}, {"g", 9.81}, {"c", 0.3}, {"qw", q[0]}, {"qx", q[1]}, {"qy", q[2]},
+                                        {"qz", q[3]}, {"wx", rate(random)}, {"wy", rate(random)}, {"wz", rate(random)}};
+    GiNaC::exmap at = point_by_name(e, state);
+    std::vector<std::vector<double>> M(3, std::vector<double>(3));
+    std::vector<double> f(3);
+    for (unsigned i = 0; i < 3; ++i) {
+      f[i] = value_at(e.forcing[i], at);
+      for (unsigned j = 0; j < 3; ++j) M[i][j] = value_at(e.mass_matrix(i, j), at);
+    }
+    std::vector<double> dw = solved_linear_system(M, f);
+    std::map<std::string, double> dstate;
+    for (std::size_t k = 0; k < 4; ++k) dstate[s.coordinate_names[k]] = value_at(e.coordinate_rates[k], at);
+    for (std::size_t k = 0; k < 3; ++k) dstate[s.velocities[k].get_name()] = dw[k];
+    auto energy_at = [&](double h) {
+      std::map<std::string, double> x = state;
+      for (const auto& [name, d] : dstate) x[name] += h * d;
+      GiNaC::exmap p = point_by_name(e, x);
+      return value_at(e.kinetic_energy + e.potential_energy, p);
+    };
+    const double h = 1e-5;
+    double power = (energy_at(h) - energy_at(-h)) / (2 * h), kinetic = value_at(e.kinetic_energy, at);
+    double scale = kinetic * std::sqrt(dw[0] * dw[0] + dw[1] * dw[1] + dw[2] * dw[2]) /
+                   std::sqrt(value_at(s.velocities[0] * s.velocities[0] + s.velocities[1] * s.velocities[1] + s.velocities[2] * s.velocities[2], at));
+    EXPECT_LT(std::abs(power), 1e-7 * scale) << "state " << n << ": dE/dt " << power << " of a scale " << scale;
+  }
 }
 
 TEST(SphericalJoints, QuaternionRatesFollowFromTheInitialAngularVelocity) {
