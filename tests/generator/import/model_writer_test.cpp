@@ -34,6 +34,7 @@ Robot two_armed_robot() {
   root.type = "free";
   root.initial_position = {0, 0, 1, 1, 0, 0, 0};
   root.initial_velocity = {0, 0, 0, 0, 0, 0.5};
+  root.armature = 0.02;
   base.joints.push_back(root);
   RobotBody arm;
   arm.name = "arm";
@@ -67,6 +68,7 @@ Robot two_armed_robot() {
   wrist.name = "wrist";
   wrist.type = "ball";
   wrist.damping = 0.4;
+  wrist.armature = 0.03;
   wrist.initial_position = {1, 0, 0, 0};
   wrist.initial_velocity = {0, 0, 0};
   hand.joints.push_back(wrist);
@@ -94,7 +96,12 @@ TEST(ModelWriter, WritesWhatTheRobotIsInItsOwnNames) {
   EXPECT_TRUE(has(text, "joint = { type = \"free\", position = [\"root_x\", \"root_y\", \"root_z\"], quaternion = "
                         "[\"root_qw\", \"root_qx\", \"root_qy\", \"root_qz\"], angular_velocity = [\"root_wx\", \"root_wy\", "
                         "\"root_wz\"], initial_angular_velocity = [0, 0, 0.5] }")) << text;
-  EXPECT_TRUE(has(text, "kinetic = \"(0.05*der(pitch)^2 + 0.05*der(yaw)^2)/2\"")) << text;
+  // MuJoCo's armature a of each velocity: a free joint's ½ a|v|² + ½ a|ω|², a ball's ½ a|ω|², with
+  // |ω|² = 4|q'|² at unit length
+  EXPECT_TRUE(has(text, "kinetic = \"(0.02*(der(root_x)^2 + der(root_y)^2 + der(root_z)^2) + 0.08*(der(root_qw)^2 + "
+                        "der(root_qx)^2 + der(root_qy)^2 + der(root_qz)^2) + 0.05*der(pitch)^2 + 0.05*der(yaw)^2 + "
+                        "0.12*(der(wrist_qw)^2 + der(wrist_qx)^2 + der(wrist_qy)^2 + der(wrist_qz)^2))/2\"")) << text;
+  EXPECT_FALSE(has(text, "armature")) << "carried, not warned of: " << text;
   EXPECT_TRUE(has(text, "1.6*(der(wrist_qw)^2 + der(wrist_qx)^2 + der(wrist_qy)^2 + der(wrist_qz)^2)")) << text;
   EXPECT_TRUE(has(text, "potential = \"(2*(pitch - 0.25)^2 + 2*(yaw - 0.25)^2)/2\"")) << text;
   EXPECT_TRUE(has(text, "generalized = { pitch = \"25*clamp(pitch_motor, -1, 1)\", yaw = \"10*yaw_motor\" }")) << text;
@@ -194,7 +201,8 @@ TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
   GiNaC::exmap at = point_by_name(e, {{"root_x", 0.3}, {"root_y", -0.2}, {"root_z", 1}, {"root_qw", 0.5}, {"root_qx", 0.5},
                                       {"root_qy", -0.5}, {"root_qz", 0.5}, {"der(root_x)", 0.1},
                                       {"der(root_y)", 0.2}, {"der(root_z)", 0.3}, {"root_wx", 1}, {"root_wy", 2}, {"root_wz", 3}});
-  const double diagonal[6] = {3.5, 3.5, 3.5, 0.1, 0.2, 0.25};
+  // m and the principal inertias, each with the root's armature 0.02, as MuJoCo's M has it (the quaternion of unit length)
+  const double diagonal[6] = {3.52, 3.52, 3.52, 0.12, 0.22, 0.27};
   for (unsigned i = 0; i < 6; ++i)
     for (unsigned j = 0; j < 6; ++j)
       EXPECT_NEAR(value_at(e.mass_matrix(i, j), at), i == j ? diagonal[i] : 0.0, 1e-14) << i << ", " << j;
