@@ -151,10 +151,11 @@ void add_rate_kinetic_energy(Mechanics& m, const Model& model, const JointVeloci
       ex M_ji = p.diff(s.velocities[i]);
       if (M_ji.is_zero()) continue;
       g += M_ji * rate_of_rate[i];
+      ex M_ji_in_velocities = M_ji.subs(rates);  // W's entries hold no rates
       for (const auto& [b, w_ib] : v.rate_matrix[i]) {
         inertia += M_ji * w_ib * m.acceleration_symbols[b];
         for (const auto& [a, w_ja] : v.rate_matrix[j])
-          (*m.composite_mass_matrix)(unsigned(a), unsigned(b)) += (w_ja * M_ji * w_ib).subs(rates);
+          (*m.composite_mass_matrix)(unsigned(a), unsigned(b)) += w_ja * M_ji_in_velocities * w_ib;
       }
     }
     g = g.subs(rates);

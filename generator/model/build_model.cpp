@@ -19,6 +19,18 @@ constexpr int composed_from_depth = 4;
 
 using GiNaC::ex;
 
+namespace {
+
+// the first frame moved by a ball or free joint, or null
+const FrameEntry* first_spherical_joint(const ModelFile& file) {
+  auto found = std::find_if(file.frames.begin(), file.frames.end(), [](const FrameEntry& f) {
+    return f.joint && (f.joint->type == "ball" || f.joint->type == "free");
+  });
+  return found == file.frames.end() ? nullptr : &*found;
+}
+
+}  // namespace
+
 const std::vector<std::string>& known_methods() {
   static const std::vector<std::string> methods = {"lagrange2", "lagrange1", "appell", "hamilton"};
   return methods;
@@ -63,10 +75,8 @@ Model ModelBuilder::build() {
 // Ball and free joints have angular velocities as their velocities: Appell's equations over
 // the tree (the method's default for such a model), in recursive kinematics
 void ModelBuilder::check_spherical_joints() {
-  auto spherical = std::find_if(f_.frames.begin(), f_.frames.end(), [](const FrameEntry& f) {
-    return f.joint && (f.joint->type == "ball" || f.joint->type == "free");
-  });
-  if (spherical == f_.frames.end()) return;
+  const FrameEntry* spherical = first_spherical_joint(f_);
+  if (!spherical) return;
   std::string why = fmt::format("frame '{}' has a {} joint, whose velocities are its angular velocity (pseudo-velocities)",
                                 spherical->name, spherical->joint->type);
   if (f_.method_where.line == 0) m_.method = "appell";
@@ -266,10 +276,8 @@ int moving_depth(const Model& model) {
 // A ball or free joint's velocities are its angular velocity, which the recursions over a tree of
 // joints derive; written out in q, the quaternion's four rates would be the velocities, one too many
 void refuse_spherical_joints_off_a_tree(const ModelFile& file, const Model& model, Diagnostics& diagnostics) {
-  auto spherical = std::find_if(file.frames.begin(), file.frames.end(), [](const FrameEntry& f) {
-    return f.joint && (f.joint->type == "ball" || f.joint->type == "free");
-  });
-  if (spherical == file.frames.end()) return;
+  const FrameEntry* spherical = first_spherical_joint(file);
+  if (!spherical) return;
   std::optional<std::string> why = why_not_a_joint_tree(model);
   if (!why) return;
   diagnostics.error(spherical->joint->where, spherical->joint->key,

@@ -493,10 +493,6 @@ class Gradient {
   std::vector<std::optional<SpatialVector>> hinge_dS_;                     // a hinge's Ψ', from forward()
 };
 
-}  // namespace
-
-namespace {
-
 // the longest row, at least 1 (the tables' extent)
 std::size_t longest(const std::vector<std::vector<int>>& rows) {
   std::size_t most = 1;
