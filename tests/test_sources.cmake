@@ -36,6 +36,7 @@ set(EOMGEN_TEST_FILES
   generator/import/rounding_noise_test.cpp          fast     sanitized
   generator/symbolic/clamp_test.cpp                 fast     sanitized
   generator/symbolic/magnitude_test.cpp             fast     sanitized
+  generator/symbolic/rotation_angle_test.cpp        fast     sanitized
   generator/common/independent_rows_test.cpp        fast     sanitized
   generator/common/output_file_test.cpp             fast
   generator/symbolic/simplify_test.cpp              fast     sanitized

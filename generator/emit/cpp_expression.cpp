@@ -216,11 +216,15 @@ class CppPrinter {
     // model's, symbolic/magnitude.hpp, or GiNaC's) as detail::magnitude, whose complex-step
     // derivative is sign(x) x' (std::abs of a complex number is its modulus, which drops it)
     if (name == "abs") name = "magnitude";
-    bool own = name == "clamp" || name == "below" || name == "sign" || name == "magnitude";
+    bool own = name == "clamp" || name == "below" || name == "sign" || name == "magnitude" || name == "atan_ratio";
     if (!own && std::find(std_functions.begin(), std_functions.end(), name) == std_functions.end())
       throw std::runtime_error("no C++ for the function " + name);
     std::string args;
-    for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + print(e.op(i)).text;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      // atan_ratio's order (symbolic/rotation_angle.hpp) is an int, not a number of type T
+      bool order = name == "atan_ratio" && i == 0 && GiNaC::is_a<GiNaC::numeric>(e.op(0));
+      args += (i ? ", " : "") + (order ? std::to_string(GiNaC::ex_to<GiNaC::numeric>(e.op(0)).to_int()) : print(e.op(i)).text);
+    }
     return {(own ? "detail::" : "") + name + "(" + args + ")", 4};
   }
 

@@ -3,7 +3,8 @@
 // a body's joints one after the other) and a rigid body in the last; a hinge is a revolute joint,
 // a slide a prismatic one, ball and free joints keep their names. Armature, damping and stiffness
 // go into [energy] as ½ a q'², ½ d q'² and ½ k (q − q_spring)² (a ball's damping as ½ d |ω|² =
-// 2 d |q'|² in its quaternion's rates); a motor is an input whose generalized force is gain × u.
+// 2 d |q'|² in its quaternion's rates, its stiffness as ½ k θ² of its turn from the spring's rest);
+// a motor is an input whose generalized force is gain × u.
 #include "import/model_writer.hpp"
 
 #include "emit/formats.hpp"
@@ -100,8 +101,29 @@ void add_coordinates(const RobotJoint& j, const JointSymbols& s, Sections& out) 
   }
 }
 
+// Σ c_k name_k as text, the terms of a zero coefficient left out ("0" if every one is)
+std::string linear_text(const std::array<double, 4>& c, const std::array<std::string, 4>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (c[k] == 0) continue;
+    std::string size = std::abs(c[k]) == 1 ? names[k] : format_number(std::abs(c[k])) + "*" + names[k];
+    out += out.empty() ? (c[k] < 0 ? "-" : "") + size : (c[k] < 0 ? " - " : " + ") + size;
+  }
+  return out.empty() ? "0" : out;
+}
+
+// MuJoCo's spring on a ball joint or a free joint's turn: ½ k θ² of the turn conj(q_s) ⊗ q from the
+// spring's rest q_s to q, in the body's axes (mju_subQuat); θ² is smooth where the turn vanishes
+// (symbolic/rotation_angle.hpp), and its force in ω is MuJoCo's −k θ·axis. `q`: w, x, y, z's names.
+std::string turn_spring_text(double stiffness, const Quaternion& rest, const std::array<std::string, 4>& q) {
+  double w = rest[0], x = -rest[1], y = -rest[2], z = -rest[3];  // conj(q_s), then the Hamilton product's rows
+  std::array<std::array<double, 4>, 4> rows{{{w, -x, -y, -z}, {x, w, -z, y}, {y, z, w, -x}, {z, -y, x, w}}};
+  return fmt::format("{}*rotation_angle({}, {}, {}, {})^2", format_number(stiffness), linear_text(rows[0], q),
+                     linear_text(rows[1], q), linear_text(rows[2], q), linear_text(rows[3], q));
+}
+
 // armature, damping and stiffness of one joint into [energy]
-void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string& where, Sections& out) {
+void add_energies(const RobotJoint& j, const JointSymbols& s, Sections& out) {
   const std::vector<std::string>& c = s.coordinates;
   if (j.type == "hinge" || j.type == "slide") {
     if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*{}^2", format_number(j.armature), s.rate()));
@@ -123,8 +145,19 @@ void add_energies(const RobotJoint& j, const JointSymbols& s, const std::string&
   };
   squares(j.damping, out.dissipation);
   squares(j.armature, out.kinetic);
-  if (j.stiffness != 0)
-    out.warnings.push_back(fmt::format("{}: the stiffness of a {} joint is not carried", where, j.type));
+  if (j.stiffness == 0) return;
+  // a free joint's position: ½ k |p − p_s|², as MuJoCo's spring pulls it in the world's axes
+  const std::vector<double>& rest = j.spring_reference;
+  if (q) {
+    std::string squares_text;
+    for (std::size_t k = 0; k < 3; ++k)
+      squares_text += (k ? " + " : "") + (rest[k] == 0 ? c[k] + "^2"
+                                                       : fmt::format("({} {} {})^2", c[k], rest[k] < 0 ? "+" : "-",
+                                                                     format_number(std::abs(rest[k]))));
+    out.potential.push_back(fmt::format("{}*({})", format_number(j.stiffness), squares_text));
+  }
+  out.potential.push_back(turn_spring_text(j.stiffness, {rest[q], rest[q + 1], rest[q + 2], rest[q + 3]},
+                                           {c[q], c[q + 1], c[q + 2], c[q + 3]}));
 }
 
 // v turned by the unit quaternion q (w, x, y, z): v + 2w (u × v) + 2 u × (u × v), u = (x, y, z)
@@ -228,7 +261,7 @@ void add_body(const Robot& robot, std::size_t b, std::vector<std::string>& frame
       if (s.follows()) out.frames += fmt::format("# joint '{}' follows the coordinate '{}' (a mimic or linear coupling)\n", base, s.leader);
       out.frames += "joint = " + joint_text(j, s) + "\n";
       add_coordinates(j, s, out);
-      add_energies(j, s, fmt::format("body '{}', joint '{}'", body.name, base), out);
+      add_energies(j, s, out);
     }
     if (last) out.frames += shapes_text(body, out);
     parent = name;

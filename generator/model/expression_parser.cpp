@@ -9,6 +9,7 @@
 
 #include "symbolic/clamp.hpp"
 #include "symbolic/magnitude.hpp"
+#include "symbolic/rotation_angle.hpp"
 #include "symbolic/exact_double.hpp"
 
 namespace eomgen {
@@ -37,7 +38,7 @@ class Level {
 
 const std::vector<std::string> function_names = {"sin",  "cos",  "tan",  "asin", "acos",
                                                   "atan", "atan2", "sinh", "cosh", "tanh",
-                                                  "exp",  "log",  "sqrt", "abs",  "sign", "clamp", "der"};
+                                                  "exp",  "log",  "sqrt", "abs",  "sign", "clamp", "rotation_angle", "der"};
 const std::vector<std::string> rotation_names = {"rot_x", "rot_y", "rot_z", "rot_axis", "quat", "euler313", "cardan123"};
 
 ex apply_function(const std::string& name, const std::vector<ex>& a) {
@@ -56,10 +57,13 @@ ex apply_function(const std::string& name, const std::vector<ex>& a) {
   if (name == "sqrt") return GiNaC::sqrt(a[0]);
   if (name == "clamp") return clamp(a[0], a[1], a[2]);
   if (name == "sign") return sign(a[0]);
+  if (name == "rotation_angle") return rotation_angle(a[0], a[1], a[2], a[3]);
   return magnitude(a[0]);
 }
 
-std::size_t arity(const std::string& name) { return name == "atan2" ? 2 : name == "clamp" ? 3 : 1; }
+std::size_t arity(const std::string& name) {
+  return name == "atan2" ? 2 : name == "clamp" ? 3 : name == "rotation_angle" ? 4 : 1;
+}
 
 class Parser {
  public:

@@ -30,7 +30,7 @@ void Symbols::remove_coordinate(std::size_t i) {
 bool is_reserved_name(const std::string& name) {
   static const std::vector<std::string> reserved = {
       "t", "der", "Pi", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh",
-      "tanh", "exp", "log", "sqrt", "abs", "sign", "clamp", "below", "rot_x", "rot_y", "rot_z", "euler313", "cardan123"};
+      "tanh", "exp", "log", "sqrt", "abs", "sign", "clamp", "below", "rotation_angle", "atan_ratio", "rot_x", "rot_y", "rot_z", "euler313", "cardan123"};
   return std::find(reserved.begin(), reserved.end(), name) != reserved.end();
 }
 

@@ -1,5 +1,7 @@
 #include "symbolic/evaluate.hpp"
 
+#include "symbolic/rotation_angle.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,6 +51,7 @@ double evaluate(const GiNaC::ex& e, const std::function<double(const GiNaC::symb
     if (name == "sign") return a < 0 ? -1.0 : (a > 0 ? 1.0 : 0.0);
     if (name == "clamp") return std::min(std::max(a, evaluate(e.op(1), value_of)), evaluate(e.op(2), value_of));
     if (name == "below") return a < evaluate(e.op(1), value_of) ? 1.0 : 0.0;
+    if (name == "atan_ratio") return atan_ratio_value(int(a), evaluate(e.op(1), value_of), evaluate(e.op(2), value_of));
   }
   throw std::runtime_error("cannot evaluate this expression numerically");
 }

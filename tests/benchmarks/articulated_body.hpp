@@ -9,13 +9,13 @@
 // Joints: hinge and slide about their axis through their anchor, ball
 // (angular velocity in the body's axes) and free (MuJoCo's layout: the origin's velocity in the
 // world, the angular velocity in the body's axes); a body of several joints is a chain of massless
-// links, one per joint. Armature, damping and joint springs of hinges
-// and slides enter as MuJoCo has them; contacts, limits and tendons are not modelled.
+// links, one per joint. Armature, damping and joint springs (a ball's and a free joint's turn
+// pulled back by its rotation vector, as MuJoCo's mj_passive has it) enter as MuJoCo has them;
+// contacts, limits and tendons are not modelled.
 #pragma once
 
 #include <algorithm>
-#include <stdexcept>
-#include <string>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -138,7 +138,7 @@ class ArticulatedBody : Spatial<Scalar> {
           D(k, k) += Scalar(m_->dof_armature[b.dof + k]);
           u_[i](k) -= Scalar(m_->dof_damping[b.dof + k]) * Scalar(qvel[b.dof + k]);
         }
-        if (b.stiffness != 0) u_[i](0) -= b.stiffness * (Scalar(qpos[b.qpos]) - Scalar(m_->qpos_spring[b.qpos]));
+        if (b.stiffness != 0) spring(b, qpos, u_[i]);
         D_[i] = D.inverse();
         Ia -= U_[i] * D_[i] * U_[i].transpose();
         pa += Ia * c_[i] + U_[i] * (D_[i] * u_[i]);
@@ -176,14 +176,41 @@ class ArticulatedBody : Spatial<Scalar> {
     l.anchor = vector(m_->jnt_pos + 3 * j);
     l.reference = Scalar(m_->qpos0[l.qpos]);
     l.stiffness = Scalar(m_->jnt_stiffness[j]);
-    if (l.stiffness != 0 && (l.type == mjJNT_BALL || l.type == mjJNT_FREE))
-      throw std::invalid_argument("joint " + std::to_string(j) + ": springs of ball and free joints are not modelled");
     l.velocities = l.type == mjJNT_FREE ? 6 : l.type == mjJNT_BALL ? 3 : 1;
     l.S = Subspace::Zero(6, l.velocities);
     if (l.type == mjJNT_HINGE) l.S.col(0) << l.axis, l.anchor.cross(l.axis);
     if (l.type == mjJNT_SLIDE) l.S.col(0) << Vector3::Zero(), l.axis;
     if (l.type == mjJNT_BALL) l.S << Matrix3::Identity(), skew(l.anchor);
     if (l.type == mjJNT_FREE) l.S.template topRightCorner<3, 3>() = Matrix3::Identity();
+  }
+
+  // the joint spring's generalized force, subtracted from u: −k (q − q_s) on a hinge or slide and on a
+  // free joint's position; on a turn, −k times the rotation vector of conj(q_s) ⊗ q/|q| (the angle
+  // 2 atan2(|v|, w), taken the other way round beyond π)
+  void spring(const Link& b, const double* qpos, JointVector& u) const {
+    const double* s = m_->qpos_spring + b.qpos;
+    int turn = 0;
+    if (b.type == mjJNT_HINGE || b.type == mjJNT_SLIDE) {
+      u(0) -= b.stiffness * (Scalar(qpos[b.qpos]) - Scalar(s[0]));
+      return;
+    }
+    if (b.type == mjJNT_FREE) {
+      for (int k = 0; k < 3; ++k) u(k) -= b.stiffness * (Scalar(qpos[b.qpos + k]) - Scalar(s[k]));
+      turn = 3;
+    }
+    const double* q = qpos + b.qpos + turn;
+    const double* r = s + turn;
+    double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    double w = q[0] / length, x = q[1] / length, y = q[2] / length, z = q[3] / length;
+    // conj(r) ⊗ (w, x, y, z)
+    double dw = r[0] * w + r[1] * x + r[2] * y + r[3] * z;
+    Vector3 dv(Scalar(r[0] * x - r[1] * w - r[2] * z + r[3] * y), Scalar(r[0] * y + r[1] * z - r[2] * w - r[3] * x),
+               Scalar(r[0] * z - r[1] * y + r[2] * x - r[3] * w));
+    Scalar sine = dv.norm();
+    if (sine == Scalar(0)) return;
+    Scalar angle = 2 * std::atan2(sine, Scalar(dw));
+    if (angle > Scalar(M_PI)) angle -= Scalar(2 * M_PI);
+    u.template segment<3>(turn) -= b.stiffness * angle / sine * dv;
   }
 
   // body i's spatial inertia about its origin: [J_c + m c̃ c̃ᵀ, m c̃; m c̃ᵀ, m 1]

@@ -6,7 +6,11 @@
 //   ω' follows Euler's equations, q' = ½ q ⊗ (0, ω), and a quaternion of any length is the same
 //   orientation;
 // - a kinetic energy written in the quaternion's rates (an armature) is an inertia about the pivot;
-// - misuses of the joint are located, with a fix, and so is a ball joint in a model that is no tree.
+// - misuses of the joint are located, with a fix, and so is a ball joint in a model that is no tree;
+// - generated/ball_spring_top.hpp (the top held by ½k θ², rotation_angle): the spring's generalized
+//   force is −k θ·axis of the turn, at the rest pose, at turns of 1e-9 and on both sides of
+//   atan_ratio's cut, at a half turn and for a quaternion of any length and sign, and its Jacobian
+//   there is the central differences' of its rhs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +25,7 @@
 #include "support/test_support.hpp"
 
 #include "../generated/ball_joint_top.hpp"
+#include "../generated/ball_spring_top.hpp"
 #include "../generated/tumbling_body.hpp"
 
 namespace eomgen::test {
@@ -288,6 +293,70 @@ center = ["0", "0", "0"]
 inertia = ["1", "2", "3"]
 )toml", "bad.toml").diagnostics.format();
   EXPECT_NE(zero.find("the initial quaternion is zero"), std::string::npos) << zero;
+}
+
+// the turn's rotation vector θ·axis of a quaternion (w, v) of any length, the shorter way (θ ≤ π)
+Vector turn_vector(const std::array<double, 4>& q) {
+  Vector v(q[1], q[2], q[3]);
+  double s = v.norm(), w = q[0] < 0 ? -q[0] : q[0];
+  if (s == 0) return Vector::Zero();
+  return (q[0] < 0 ? -1.0 : 1.0) * 2 * std::atan2(s, w) / s * v;
+}
+
+// the quaternion of a turn by angle about a unit axis, scaled by `length`
+std::array<double, 4> turned_by(double angle, const Vector& axis, double length = 1) {
+  Vector u = axis.normalized() * std::sin(angle / 2) * length;
+  return {std::cos(angle / 2) * length, u[0], u[1], u[2]};
+}
+
+TEST(SphericalJoints, ATorsionSpringPullsByItsTurnsRotationVector) {
+  namespace spring = eomgen::models::ball_spring_top;
+  namespace top = eomgen::models::ball_joint_top;
+  auto p = spring::Parameters<double>().values();
+  auto p_top = top::Parameters<double>().values();
+  double k = p[2];
+  ASSERT_EQ(std::string(spring::parameter_names[2]), "k");
+  Vector axis(0.3, -0.5, 0.8);
+  // the turn at which atan_ratio changes from its series to its recurrence: |v|² = 0.3 w²
+  double cut = 2 * std::atan(std::sqrt(0.3));
+  std::vector<std::array<double, 4>> turns = {
+      {1, 0, 0, 0},          turned_by(1e-9, axis),         turned_by(1e-4, axis, 3.0), turned_by(cut - 1e-9, axis),
+      turned_by(cut + 1e-9, axis), turned_by(2.5, axis, 0.2), turned_by(M_PI - 1e-6, axis), {1e-12, 0.6, 0, 0.8},
+      {-1e-12, 0.6, 0, 0.8},       turned_by(-2.0, axis, -1.5)};
+  std::mt19937 random(5);
+  for (int r = 0; r < 20; ++r) turns.push_back(random_quaternion(random));
+  for (const auto& q : turns) {
+    double x[7] = {q[0], q[1], q[2], q[3], 0.4, -1.1, 2.0}, f[3], f_top[3];
+    spring::forcing<double>(0.0, x, nullptr, p.data(), f);
+    top::forcing<double>(0.0, x, nullptr, p_top.data(), f_top);
+    Vector pull = -k * turn_vector(q), got(f[0] - f_top[0], f[1] - f_top[1], f[2] - f_top[2]);
+    double size = std::abs(f_top[0]) + std::abs(f_top[1]) + std::abs(f_top[2]) + k * pull.norm();
+    EXPECT_LT((got - pull).norm(), 1e-14 * size) << q[0] << " " << q[1] << " " << q[2] << " " << q[3];
+  }
+  // at a half turn exactly (w = 0) the pull flips from −kπ·axis to kπ·axis: the spring takes the mean, 0,
+  // where MuJoCo takes the side of w = +0
+  double half[7] = {0, 0.6, 0, 0.8, 0.4, -1.1, 2.0}, f[3], f_top[3];
+  spring::forcing<double>(0.0, half, nullptr, p.data(), f);
+  top::forcing<double>(0.0, half, nullptr, p_top.data(), f_top);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(f[i], f_top[i], 1e-13) << i;
+  // the Jacobian where the turn vanishes, next to it and at the cut: finite, and central differences'
+  for (const auto& q : {std::array<double, 4>{1, 0, 0, 0}, turned_by(1e-3, axis), turned_by(cut, axis)}) {
+    double x[7] = {q[0], q[1], q[2], q[3], 0.4, -1.1, 2.0}, J[49];
+    spring::jacobian_state<double>(0.0, x, nullptr, p.data(), J);
+    double largest = 0;
+    for (double entry : J) largest = std::max(largest, std::abs(entry));
+    for (int j = 0; j < 7; ++j) {
+      double h = 1e-6, plus[7], minus[7], xp[7], xm[7];
+      std::copy(x, x + 7, xp), std::copy(x, x + 7, xm);
+      xp[j] += h, xm[j] -= h;
+      spring::rhs<double>(0.0, xp, nullptr, p.data(), plus);
+      spring::rhs<double>(0.0, xm, nullptr, p.data(), minus);
+      for (int i = 0; i < 7; ++i) {
+        ASSERT_TRUE(std::isfinite(J[i * 7 + j])) << "J[" << i << "][" << j << "] at q = " << q[0] << ", " << q[1];
+        EXPECT_NEAR(J[i * 7 + j], (plus[i] - minus[i]) / (2 * h), 1e-7 * largest) << "J[" << i << "][" << j << "]";
+      }
+    }
+  }
 }
 
 }  // namespace
