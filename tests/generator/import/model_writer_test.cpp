@@ -7,6 +7,8 @@
 // text derives, and its M is the robot's: for a free body, diag(m, m, m, I).
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -206,6 +208,40 @@ TEST(ModelWriter, TheWrittenModelDerivesWithTheRobotsMassMatrix) {
   for (unsigned i = 0; i < 6; ++i)
     for (unsigned j = 0; j < 6; ++j)
       EXPECT_NEAR(value_at(e.mass_matrix(i, j), at), i == j ? diagonal[i] : 0.0, 1e-14) << i << ", " << j;
+}
+
+// MuJoCo's spring on a free joint: ½ k |p − p_s|² and ½ k θ² of the turn conj(q_s) ⊗ q from its rest
+// q_s (here a turn by 0.6 about y), whose force in ω is −k θ·axis; on a ball joint, ½ k θ² of the turn
+// from its rest, written as the product's components in the joint's coordinates
+TEST(ModelWriter, AFreeAndABallJointsSpringsPullTowardsTheirRest) {
+  Robot r = two_armed_robot();
+  r.bodies[0].joints[0].stiffness = 5;
+  r.bodies[0].joints[0].spring_reference = {0.1, 0, 1, std::cos(0.3), 0, std::sin(0.3), 0};
+  r.bodies[2].joints[0].stiffness = 3;
+  r.bodies[2].joints[0].spring_reference = {0, 0, 0, 1};  // a half turn about z: conj(q_s) ⊗ q = (qz, qy, −qx, −qw)
+  std::string text = model_file_text(r, "two_armed", "robot.xml");
+  EXPECT_TRUE(has(text, "3*rotation_angle(wrist_qz, wrist_qy, -wrist_qx, -wrist_qw)^2")) << text;
+  EXPECT_TRUE(has(text, "5*((root_x - 0.1)^2 + root_y^2 + (root_z - 1)^2)")) << text;
+  EXPECT_FALSE(has(text, "stiffness")) << "carried, not warned of: " << text;
+  r.bodies.resize(1);  // the free base alone
+  r.actuators.clear();
+  r.sites.clear();
+  Equations e = derive_text(model_file_text(r, "base_alone", "robot.xml"));
+  Eigen::Quaterniond rest(std::cos(0.3), 0, std::sin(0.3), 0), q(0.5, 0.1, -0.7, 0.5);
+  q.normalize();
+  Eigen::AngleAxisd turn(rest.conjugate() * q);
+  Eigen::Vector3d pull = -5 * turn.angle() * turn.axis();
+  auto force_at = [&](double x) {
+    GiNaC::exmap at = point_by_name(e, {{"root_x", x}, {"root_y", -0.2}, {"root_z", 1}, {"root_qw", q.w()}, {"root_qx", q.x()},
+                                        {"root_qy", q.y()}, {"root_qz", q.z()}, {"der(root_x)", 0}, {"der(root_y)", 0},
+                                        {"der(root_z)", 0}, {"root_wx", 0}, {"root_wy", 0}, {"root_wz", 0}});
+    std::vector<double> f;
+    for (const GiNaC::ex& entry : e.forcing) f.push_back(value_at(entry, at));
+    return f;
+  };
+  std::vector<double> f = force_at(0.4), at_rest = force_at(0.1);
+  EXPECT_NEAR(f[0] - at_rest[0], -5 * 0.3, 1e-14) << "the position's spring";
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(f[3 + std::size_t(i)], pull[i], 1e-14) << "the turn's spring, ω_" << i;
 }
 
 // the reader in-process: a nameless model (MuJoCo calls it "MuJoCo Model") takes the file's name, a

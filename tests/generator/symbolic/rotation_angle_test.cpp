@@ -7,6 +7,7 @@
 // square's derivatives are finite at the rest pose.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "symbolic/canonical_print.hpp"
@@ -76,12 +77,10 @@ double turn_angle(double w, double x, double y, double z) {
 TEST(RotationAngle, IsTheTurnsAngleForAQuaternionOfAnyLengthAndSign) {
   GiNaC::symbol w("w"), x("x"), y("y"), z("z");
   ex theta = rotation_angle(w, x, y, z);
-  for (auto [qw, qx, qy, qz] : {std::array<double, 4>{0.9, 0.3, -0.2, 0.1}, {-0.9, 0.3, -0.2, 0.1}, {0.1, 0.7, 0.7, 0.1},
-                                {2.0, 0.0, 0.0, 1e-7}, {0.0, 1.0, 0.0, 0.0}, {-3.0, 1.0, 2.0, 2.0}}) {
-    double value = evaluate(theta, [&](const GiNaC::symbol& s) {
-      return s == w ? qw : s == x ? qx : s == y ? qy : qz;
-    });
-    EXPECT_NEAR(value, turn_angle(qw, qx, qy, qz), 1e-14) << qw << " " << qx << " " << qy << " " << qz;
+  for (const std::array<double, 4>& q : {std::array<double, 4>{0.9, 0.3, -0.2, 0.1}, {-0.9, 0.3, -0.2, 0.1}, {0.1, 0.7, 0.7, 0.1},
+                                         {2.0, 0.0, 0.0, 1e-7}, {0.0, 1.0, 0.0, 0.0}, {-3.0, 1.0, 2.0, 2.0}}) {
+    double value = evaluate(theta, [&](const GiNaC::symbol& s) { return s == w ? q[0] : s == x ? q[1] : s == y ? q[2] : q[3]; });
+    EXPECT_NEAR(value, turn_angle(q[0], q[1], q[2], q[3]), 1e-14) << q[0] << " " << q[1] << " " << q[2] << " " << q[3];
   }
   EXPECT_EQ(canonical_text(rotation_angle(w, x, 0, 0)), "2*atan_ratio(0, x^2, abs(w))*sqrt(x^2)");
 }
