@@ -201,6 +201,9 @@ class Printer {
     for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + print(e.op(i)).text;
     if (!latex_) return {name + "(" + args + ")", 4};
     if (name == "abs") return {"\\left|" + args + "\\right|", 4};
+    // atan_ratio(n, u, a), the n-th derivative in u of A(u, a) (symbolic/rotation_angle.hpp), as A^{(n)}(u, a)
+    if (name == "atan_ratio")
+      return {"A^{(" + print(e.op(0)).text + ")}\\left(" + print(e.op(1)).text + ", " + print(e.op(2)).text + "\\right)", 4};
     static const std::vector<std::pair<std::string, std::string>> tex = {
         {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},   {"asin", "\\arcsin"},
         {"acos", "\\arccos"}, {"atan", "\\arctan"}, {"sinh", "\\sinh"}, {"cosh", "\\cosh"},

@@ -83,6 +83,7 @@ TEST(RotationAngle, IsTheTurnsAngleForAQuaternionOfAnyLengthAndSign) {
     EXPECT_NEAR(value, turn_angle(q[0], q[1], q[2], q[3]), 1e-14) << q[0] << " " << q[1] << " " << q[2] << " " << q[3];
   }
   EXPECT_EQ(canonical_text(rotation_angle(w, x, 0, 0)), "2*atan_ratio(0, x^2, abs(w))*sqrt(x^2)");
+  EXPECT_EQ(latex_text(atan_ratio(1, x, w), [](const GiNaC::symbol& s) { return s.get_name(); }), "A^{(1)}\\left(x, w\\right)");
 }
 
 TEST(RotationAngle, ItsSquaresDerivativesAreFiniteWhereTheTurnVanishes) {
