@@ -146,8 +146,10 @@ void add_energies(const RobotJoint& j, const JointSymbols& s, Sections& out) {
   squares(j.damping, out.dissipation);
   squares(j.armature, out.kinetic);
   if (j.stiffness == 0) return;
-  // a free joint's position: ½ k |p − p_s|², as MuJoCo's spring pulls it in the world's axes
-  const std::vector<double>& rest = j.spring_reference;
+  // a free joint's position: ½ k |p − p_s|², as MuJoCo's spring pulls it in the world's axes; a
+  // robot that states no rest has its spring slack at the origin and the unturned pose
+  std::vector<double> rest = j.spring_reference;
+  if (rest.size() < q + 4) rest.assign(q + 4, 0), rest[q] = 1;
   if (q) {
     std::string squares_text;
     for (std::size_t k = 0; k < 3; ++k)

@@ -223,6 +223,9 @@ TEST(ModelWriter, AFreeAndABallJointsSpringsPullTowardsTheirRest) {
   EXPECT_TRUE(has(text, "3*rotation_angle(wrist_qz, wrist_qy, -wrist_qx, -wrist_qw)^2")) << text;
   EXPECT_TRUE(has(text, "5*((root_x - 0.1)^2 + root_y^2 + (root_z - 1)^2)")) << text;
   EXPECT_FALSE(has(text, "stiffness")) << "carried, not warned of: " << text;
+  Robot unstated = r;  // a rest the robot does not state: the unturned pose
+  unstated.bodies[2].joints[0].spring_reference.clear();
+  EXPECT_TRUE(has(model_file_text(unstated, "two_armed", "robot.xml"), "3*rotation_angle(wrist_qw, wrist_qx, wrist_qy, wrist_qz)^2"));
   r.bodies.resize(1);  // the free base alone
   r.actuators.clear();
   r.sites.clear();
