@@ -271,13 +271,13 @@ inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const 
   const T k_top_tN0_x = -(T(1)/T(4))*k_top_tB0F0_y + (T(3)/T(100))*k_top_tB0F0_z - k_top_tB0Iw0_y*s_wz + k_top_tB0Iw0_z*s_wy;
   const T k_top_tN0_y = (T(1)/T(4))*k_top_tB0F0_x - (T(1)/T(50))*k_top_tB0F0_z + k_top_tB0Iw0_x*s_wz - k_top_tB0Iw0_z*s_wx;
   const T k_top_tN0_z = (T(1)/T(50))*k_top_tB0F0_y - (T(3)/T(100))*k_top_tB0F0_x - k_top_tB0Iw0_x*s_wy + k_top_tB0Iw0_y*s_wx;
-  const T c0 = detail::magnitude(q_qw);
-  const T c1 = c0*c0 + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
-  const T c2 = q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
-  const T c3 = detail::atan_ratio(0, c2, c0);
+  const T c0 = q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
+  const T c1 = detail::magnitude(q_qw);
+  const T c2 = detail::atan_ratio(0, c0, c1);
+  const T c3 = q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
   const T c4 = detail::sign(q_qw);
-  const T c5 = detail::atan_ratio(1, c2, c0);
-  const T c6 = c3*c3;
+  const T c5 = detail::atan_ratio(1, c0, c1);
+  const T c6 = c2*c2;
   M[0] = k_top_tJxx;
   M[1] = k_top_tJxy;
   M[3] = k_top_tJxy;
@@ -287,9 +287,9 @@ inline void mass_matrix_and_forcing(T t, const T* x, const input_t<T>* u, const 
   M[5] = k_top_tJyz;
   M[7] = k_top_tJyz;
   M[8] = k_top_tJzz;
-  f[0] = -T(2)*c3*c4*p_k*q_qx*q_qx*q_qx/c1 - T(2)*c3*c4*p_k*q_qx*q_qy*q_qy/c1 - T(2)*c3*c4*p_k*q_qx*q_qz*q_qz/c1 - T(2)*c6*p_k*q_qw*q_qx - T(4)*c3*c5*p_k*q_qw*q_qx*q_qx*q_qx - T(4)*c3*c5*p_k*q_qw*q_qx*q_qy*q_qy - T(4)*c3*c5*p_k*q_qw*q_qx*q_qz*q_qz - k_top_tN0_x;
-  f[1] = -T(2)*c3*c4*p_k*q_qx*q_qx*q_qy/c1 - T(2)*c3*c4*p_k*q_qy*q_qy*q_qy/c1 - T(2)*c3*c4*p_k*q_qy*q_qz*q_qz/c1 - T(2)*c6*p_k*q_qw*q_qy - T(4)*c3*c5*p_k*q_qw*q_qx*q_qx*q_qy - T(4)*c3*c5*p_k*q_qw*q_qy*q_qy*q_qy - T(4)*c3*c5*p_k*q_qw*q_qy*q_qz*q_qz - k_top_tN0_y;
-  f[2] = -T(2)*c3*c4*p_k*q_qx*q_qx*q_qz/c1 - T(2)*c3*c4*p_k*q_qy*q_qy*q_qz/c1 - T(2)*c3*c4*p_k*q_qz*q_qz*q_qz/c1 - T(2)*c6*p_k*q_qw*q_qz - T(4)*c3*c5*p_k*q_qw*q_qx*q_qx*q_qz - T(4)*c3*c5*p_k*q_qw*q_qy*q_qy*q_qz - T(4)*c3*c5*p_k*q_qw*q_qz*q_qz*q_qz - k_top_tN0_z;
+  f[0] = -T(2)*c2*c4*p_k*q_qx*q_qx*q_qx/c3 - T(2)*c2*c4*p_k*q_qx*q_qy*q_qy/c3 - T(2)*c2*c4*p_k*q_qx*q_qz*q_qz/c3 - T(2)*c6*p_k*q_qw*q_qx - T(4)*c2*c5*p_k*q_qw*q_qx*q_qx*q_qx - T(4)*c2*c5*p_k*q_qw*q_qx*q_qy*q_qy - T(4)*c2*c5*p_k*q_qw*q_qx*q_qz*q_qz - k_top_tN0_x;
+  f[1] = -T(2)*c2*c4*p_k*q_qx*q_qx*q_qy/c3 - T(2)*c2*c4*p_k*q_qy*q_qy*q_qy/c3 - T(2)*c2*c4*p_k*q_qy*q_qz*q_qz/c3 - T(2)*c6*p_k*q_qw*q_qy - T(4)*c2*c5*p_k*q_qw*q_qx*q_qx*q_qy - T(4)*c2*c5*p_k*q_qw*q_qy*q_qy*q_qy - T(4)*c2*c5*p_k*q_qw*q_qy*q_qz*q_qz - k_top_tN0_y;
+  f[2] = -T(2)*c2*c4*p_k*q_qx*q_qx*q_qz/c3 - T(2)*c2*c4*p_k*q_qy*q_qy*q_qz/c3 - T(2)*c2*c4*p_k*q_qz*q_qz*q_qz/c3 - T(2)*c6*p_k*q_qw*q_qz - T(4)*c2*c5*p_k*q_qw*q_qx*q_qx*q_qz - T(4)*c2*c5*p_k*q_qw*q_qy*q_qy*q_qz - T(4)*c2*c5*p_k*q_qw*q_qz*q_qz*q_qz - k_top_tN0_z;
 }
 
 }  // namespace detail
@@ -416,9 +416,9 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c11 = detail::atan_ratio(1, c7, c8);
   const T c12 = T(2)*c11*c7*c9*p_k*q_qz + c10*p_k*q_qz;
   const T c13 = T(2)*c11*c7*c9*p_k*q_qy + c10*p_k*q_qy;
-  const T c14 = T(2)*c11*c7*c9*p_k*q_qx + c10*p_k*q_qx;
-  const T c15 = c8*c8 + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
-  const T c16 = detail::sign(q_qw);
+  const T c14 = q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
+  const T c15 = detail::sign(q_qw);
+  const T c16 = T(2)*c11*c7*c9*p_k*q_qx + c10*p_k*q_qx;
   const T k_top_ta_x_d0 = k_top_tEzx_d0*p_g;
   const T k_top_ta_x_d1 = k_top_tEzx_d1*p_g;
   const T k_top_ta_x_d2 = k_top_tEzx_d2*p_g;
@@ -476,7 +476,7 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c7_d1 = T(2)*q_qx;
   const T c7_d2 = T(2)*q_qy;
   const T c7_d3 = T(2)*q_qz;
-  const T c8_d0 = c16;
+  const T c8_d0 = c15;
   const T c17 = detail::atan_ratio(1, c7, c8);
   const T c9_d0 = -c8_d0/(c7 + c8*c8);
   const T c9_d1 = c17*c7_d1;
@@ -499,36 +499,36 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T c13_d1 = T(2)*c11*c7*c9_d1*p_k*q_qy + T(2)*c11*c7_d1*c9*p_k*q_qy + T(2)*c11_d1*c7*c9*p_k*q_qy + c10_d1*p_k*q_qy;
   const T c13_d2 = T(2)*c11*c7*c9*p_k + T(2)*c11*c7*c9_d2*p_k*q_qy + T(2)*c11*c7_d2*c9*p_k*q_qy + T(2)*c11_d2*c7*c9*p_k*q_qy + c10*p_k + c10_d2*p_k*q_qy;
   const T c13_d3 = T(2)*c11*c7*c9_d3*p_k*q_qy + T(2)*c11*c7_d3*c9*p_k*q_qy + T(2)*c11_d3*c7*c9*p_k*q_qy + c10_d3*p_k*q_qy;
-  const T c14_d0 = T(2)*c11*c7*c9_d0*p_k*q_qx + T(2)*c11_d0*c7*c9*p_k*q_qx + c10_d0*p_k*q_qx;
-  const T c14_d1 = T(2)*c11*c7*c9*p_k + T(2)*c11*c7*c9_d1*p_k*q_qx + T(2)*c11*c7_d1*c9*p_k*q_qx + T(2)*c11_d1*c7*c9*p_k*q_qx + c10*p_k + c10_d1*p_k*q_qx;
-  const T c14_d2 = T(2)*c11*c7*c9_d2*p_k*q_qx + T(2)*c11*c7_d2*c9*p_k*q_qx + T(2)*c11_d2*c7*c9*p_k*q_qx + c10_d2*p_k*q_qx;
-  const T c14_d3 = T(2)*c11*c7*c9_d3*p_k*q_qx + T(2)*c11*c7_d3*c9*p_k*q_qx + T(2)*c11_d3*c7*c9*p_k*q_qx + c10_d3*p_k*q_qx;
-  const T c15_d0 = T(2)*c8*c8_d0;
-  const T c15_d1 = T(2)*q_qx;
-  const T c15_d2 = T(2)*q_qy;
-  const T c15_d3 = T(2)*q_qz;
-  F[0] = -T(2)*c12_d0*q_qy + T(2)*c13_d0*q_qz + T(2)*c14 + T(2)*c14_d0*q_qw - T(2)*c15_d0*c16*c7*c9*p_k*q_qx/(c15*c15) + T(2)*c16*c7*c9_d0*p_k*q_qx/c15 + k_top_tN_x_d0;
-  F[2] = -T(2)*c12 - T(2)*c12_d2*q_qy + T(2)*c13_d2*q_qz + T(2)*c14_d2*q_qw - T(2)*c15_d2*c16*c7*c9*p_k*q_qx/(c15*c15) + T(2)*c16*c7*c9_d2*p_k*q_qx/c15 + T(2)*c16*c7_d2*c9*p_k*q_qx/c15 + k_top_tN_x_d2;
-  F[3] = -T(2)*c12_d3*q_qy + T(2)*c13 + T(2)*c13_d3*q_qz + T(2)*c14_d3*q_qw - T(2)*c15_d3*c16*c7*c9*p_k*q_qx/(c15*c15) + T(2)*c16*c7*c9_d3*p_k*q_qx/c15 + T(2)*c16*c7_d3*c9*p_k*q_qx/c15 + k_top_tN_x_d3;
+  const T c14_d0 = T(2)*q_qw;
+  const T c14_d1 = T(2)*q_qx;
+  const T c14_d2 = T(2)*q_qy;
+  const T c14_d3 = T(2)*q_qz;
+  const T c16_d0 = T(2)*c11*c7*c9_d0*p_k*q_qx + T(2)*c11_d0*c7*c9*p_k*q_qx + c10_d0*p_k*q_qx;
+  const T c16_d1 = T(2)*c11*c7*c9*p_k + T(2)*c11*c7*c9_d1*p_k*q_qx + T(2)*c11*c7_d1*c9*p_k*q_qx + T(2)*c11_d1*c7*c9*p_k*q_qx + c10*p_k + c10_d1*p_k*q_qx;
+  const T c16_d2 = T(2)*c11*c7*c9_d2*p_k*q_qx + T(2)*c11*c7_d2*c9*p_k*q_qx + T(2)*c11_d2*c7*c9*p_k*q_qx + c10_d2*p_k*q_qx;
+  const T c16_d3 = T(2)*c11*c7*c9_d3*p_k*q_qx + T(2)*c11*c7_d3*c9*p_k*q_qx + T(2)*c11_d3*c7*c9*p_k*q_qx + c10_d3*p_k*q_qx;
+  F[0] = -T(2)*c12_d0*q_qy + T(2)*c13_d0*q_qz - T(2)*c14_d0*c15*c7*c9*p_k*q_qx/(c14*c14) + T(2)*c15*c7*c9_d0*p_k*q_qx/c14 + T(2)*c16 + T(2)*c16_d0*q_qw + k_top_tN_x_d0;
+  F[2] = -T(2)*c12 - T(2)*c12_d2*q_qy + T(2)*c13_d2*q_qz - T(2)*c14_d2*c15*c7*c9*p_k*q_qx/(c14*c14) + T(2)*c15*c7*c9_d2*p_k*q_qx/c14 + T(2)*c15*c7_d2*c9*p_k*q_qx/c14 + T(2)*c16_d2*q_qw + k_top_tN_x_d2;
+  F[3] = -T(2)*c12_d3*q_qy + T(2)*c13 + T(2)*c13_d3*q_qz - T(2)*c14_d3*c15*c7*c9*p_k*q_qx/(c14*c14) + T(2)*c15*c7*c9_d3*p_k*q_qx/c14 + T(2)*c15*c7_d3*c9*p_k*q_qx/c14 + T(2)*c16_d3*q_qw + k_top_tN_x_d3;
   F[4] = k_top_tN_x_d4;
   F[5] = k_top_tN_x_d5;
   F[6] = k_top_tN_x_d6;
-  F[7] = T(2)*c12_d0*q_qx + T(2)*c13 + T(2)*c13_d0*q_qw - T(2)*c14_d0*q_qz - T(2)*c15_d0*c16*c7*c9*p_k*q_qy/(c15*c15) + T(2)*c16*c7*c9_d0*p_k*q_qy/c15 + k_top_tN_y_d0;
-  F[8] = T(2)*c12 + T(2)*c12_d1*q_qx + T(2)*c13_d1*q_qw - T(2)*c14_d1*q_qz - T(2)*c15_d1*c16*c7*c9*p_k*q_qy/(c15*c15) + T(2)*c16*c7*c9_d1*p_k*q_qy/c15 + T(2)*c16*c7_d1*c9*p_k*q_qy/c15 + k_top_tN_y_d1;
-  F[10] = T(2)*c12_d3*q_qx + T(2)*c13_d3*q_qw - T(2)*c14 - T(2)*c14_d3*q_qz - T(2)*c15_d3*c16*c7*c9*p_k*q_qy/(c15*c15) + T(2)*c16*c7*c9_d3*p_k*q_qy/c15 + T(2)*c16*c7_d3*c9*p_k*q_qy/c15 + k_top_tN_y_d3;
+  F[7] = T(2)*c12_d0*q_qx + T(2)*c13 + T(2)*c13_d0*q_qw - T(2)*c14_d0*c15*c7*c9*p_k*q_qy/(c14*c14) + T(2)*c15*c7*c9_d0*p_k*q_qy/c14 - T(2)*c16_d0*q_qz + k_top_tN_y_d0;
+  F[8] = T(2)*c12 + T(2)*c12_d1*q_qx + T(2)*c13_d1*q_qw - T(2)*c14_d1*c15*c7*c9*p_k*q_qy/(c14*c14) + T(2)*c15*c7*c9_d1*p_k*q_qy/c14 + T(2)*c15*c7_d1*c9*p_k*q_qy/c14 - T(2)*c16_d1*q_qz + k_top_tN_y_d1;
+  F[10] = T(2)*c12_d3*q_qx + T(2)*c13_d3*q_qw - T(2)*c14_d3*c15*c7*c9*p_k*q_qy/(c14*c14) + T(2)*c15*c7*c9_d3*p_k*q_qy/c14 + T(2)*c15*c7_d3*c9*p_k*q_qy/c14 - T(2)*c16 - T(2)*c16_d3*q_qz + k_top_tN_y_d3;
   F[11] = k_top_tN_y_d4;
   F[12] = k_top_tN_y_d5;
   F[13] = k_top_tN_y_d6;
-  F[14] = T(2)*c12 + T(2)*c12_d0*q_qw - T(2)*c13_d0*q_qx + T(2)*c14_d0*q_qy - T(2)*c15_d0*c16*c7*c9*p_k*q_qz/(c15*c15) + T(2)*c16*c7*c9_d0*p_k*q_qz/c15 + k_top_tN_z_d0;
-  F[15] = T(2)*c12_d1*q_qw - T(2)*c13 - T(2)*c13_d1*q_qx + T(2)*c14_d1*q_qy - T(2)*c15_d1*c16*c7*c9*p_k*q_qz/(c15*c15) + T(2)*c16*c7*c9_d1*p_k*q_qz/c15 + T(2)*c16*c7_d1*c9*p_k*q_qz/c15 + k_top_tN_z_d1;
-  F[16] = T(2)*c12_d2*q_qw - T(2)*c13_d2*q_qx + T(2)*c14 + T(2)*c14_d2*q_qy - T(2)*c15_d2*c16*c7*c9*p_k*q_qz/(c15*c15) + T(2)*c16*c7*c9_d2*p_k*q_qz/c15 + T(2)*c16*c7_d2*c9*p_k*q_qz/c15 + k_top_tN_z_d2;
+  F[14] = T(2)*c12 + T(2)*c12_d0*q_qw - T(2)*c13_d0*q_qx - T(2)*c14_d0*c15*c7*c9*p_k*q_qz/(c14*c14) + T(2)*c15*c7*c9_d0*p_k*q_qz/c14 + T(2)*c16_d0*q_qy + k_top_tN_z_d0;
+  F[15] = T(2)*c12_d1*q_qw - T(2)*c13 - T(2)*c13_d1*q_qx - T(2)*c14_d1*c15*c7*c9*p_k*q_qz/(c14*c14) + T(2)*c15*c7*c9_d1*p_k*q_qz/c14 + T(2)*c15*c7_d1*c9*p_k*q_qz/c14 + T(2)*c16_d1*q_qy + k_top_tN_z_d1;
+  F[16] = T(2)*c12_d2*q_qw - T(2)*c13_d2*q_qx - T(2)*c14_d2*c15*c7*c9*p_k*q_qz/(c14*c14) + T(2)*c15*c7*c9_d2*p_k*q_qz/c14 + T(2)*c15*c7_d2*c9*p_k*q_qz/c14 + T(2)*c16 + T(2)*c16_d2*q_qy + k_top_tN_z_d2;
+  F[17] = T(2)*c12_d3*q_qw - T(2)*c13_d3*q_qx - T(2)*c14_d3*c15*c7*c9*p_k*q_qz/(c14*c14) + T(2)*c15*c7*c9*p_k/c14 + T(2)*c15*c7*c9_d3*p_k*q_qz/c14 + T(2)*c15*c7_d3*c9*p_k*q_qz/c14 + T(2)*c16_d3*q_qy + k_top_tN_z_d3;
   F[18] = k_top_tN_z_d4;
   F[19] = k_top_tN_z_d5;
   F[20] = k_top_tN_z_d6;
-  const T c19 = T(2)*c16*c7*c9*p_k/c15;
-  F[1] = -T(2)*c12_d1*q_qy + T(2)*c13_d1*q_qz + T(2)*c14_d1*q_qw - T(2)*c15_d1*c16*c7*c9*p_k*q_qx/(c15*c15) + T(2)*c16*c7*c9_d1*p_k*q_qx/c15 + T(2)*c16*c7_d1*c9*p_k*q_qx/c15 + c19 + k_top_tN_x_d1;
-  F[9] = T(2)*c12_d2*q_qx + T(2)*c13_d2*q_qw - T(2)*c14_d2*q_qz - T(2)*c15_d2*c16*c7*c9*p_k*q_qy/(c15*c15) + T(2)*c16*c7*c9_d2*p_k*q_qy/c15 + T(2)*c16*c7_d2*c9*p_k*q_qy/c15 + c19 + k_top_tN_y_d2;
-  F[17] = T(2)*c12_d3*q_qw - T(2)*c13_d3*q_qx + T(2)*c14_d3*q_qy - T(2)*c15_d3*c16*c7*c9*p_k*q_qz/(c15*c15) + T(2)*c16*c7*c9_d3*p_k*q_qz/c15 + T(2)*c16*c7_d3*c9*p_k*q_qz/c15 + c19 + k_top_tN_z_d3;
+  const T c19 = T(2)*c15*c7*c9*p_k/c14;
+  F[1] = -T(2)*c12_d1*q_qy + T(2)*c13_d1*q_qz - T(2)*c14_d1*c15*c7*c9*p_k*q_qx/(c14*c14) + T(2)*c15*c7*c9_d1*p_k*q_qx/c14 + T(2)*c15*c7_d1*c9*p_k*q_qx/c14 + T(2)*c16_d1*q_qw + c19 + k_top_tN_x_d1;
+  F[9] = T(2)*c12_d2*q_qx + T(2)*c13_d2*q_qw - T(2)*c14_d2*c15*c7*c9*p_k*q_qy/(c14*c14) + T(2)*c15*c7*c9_d2*p_k*q_qy/c14 + T(2)*c15*c7_d2*c9*p_k*q_qy/c14 - T(2)*c16_d2*q_qz + c19 + k_top_tN_y_d2;
 }
 
 }  // namespace detail

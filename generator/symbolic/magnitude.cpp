@@ -18,6 +18,12 @@ ex magnitude_evalf(const ex& x) { return magnitude_eval(x.evalf()); }
 
 ex magnitude_derivative(const ex& x, unsigned) { return sign(x); }
 
+// |x|^(2k) = x^(2k) for a real x: a rotation angle's derivative holds 1/(u + |w|²), which is u + w²
+ex magnitude_power(const ex& x, const ex& exponent) {
+  if (GiNaC::is_a<numeric>(exponent) && GiNaC::ex_to<numeric>(exponent).is_even()) return GiNaC::pow(x, exponent);
+  return GiNaC::power(magnitude(x), exponent).hold();
+}
+
 ex sign_eval(const ex& x) {
   if (real_value(x)) return GiNaC::ex_to<numeric>(x).csgn();
   return sign(x).hold();
@@ -29,7 +35,10 @@ ex sign_derivative(const ex&, unsigned) { return 0; }
 
 }  // namespace
 
-REGISTER_FUNCTION(magnitude, eval_func(magnitude_eval).evalf_func(magnitude_evalf).derivative_func(magnitude_derivative))
+REGISTER_FUNCTION(magnitude, eval_func(magnitude_eval)
+                                 .evalf_func(magnitude_evalf)
+                                 .derivative_func(magnitude_derivative)
+                                 .power_func(magnitude_power))
 REGISTER_FUNCTION(sign, eval_func(sign_eval).evalf_func(sign_evalf).derivative_func(sign_derivative))
 
 }  // namespace eomgen

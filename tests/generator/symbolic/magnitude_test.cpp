@@ -54,6 +54,10 @@ TEST(Magnitude, NumbersAreTakenAtOnce) {
   EXPECT_EQ(sign(GiNaC::numeric(0)), 0);
   EXPECT_EQ(sign(GiNaC::numeric(1, 7)), 1);
   EXPECT_EQ(magnitude(x).diff(x), sign(x));
+  // an even power of |x| is that power of x; an odd one keeps |x|
+  EXPECT_TRUE((GiNaC::pow(magnitude(x), 2) - x * x).is_zero());
+  EXPECT_TRUE((GiNaC::pow(magnitude(x), -4) - GiNaC::pow(x, -4)).is_zero());
+  EXPECT_FALSE((GiNaC::pow(magnitude(x), 3) - GiNaC::pow(x, 3)).is_zero());
   auto at = [](double value) { return [value](const GiNaC::symbol&) { return value; }; };
   EXPECT_DOUBLE_EQ(evaluate(magnitude(x), at(-2.5)), 2.5);
   EXPECT_DOUBLE_EQ(evaluate(sign(x), at(-2.5)), -1.0);
