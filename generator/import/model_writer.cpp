@@ -112,14 +112,29 @@ std::string linear_text(const std::array<double, 4>& c, const std::array<std::st
   return out.empty() ? "0" : out;
 }
 
+Quaternion product(const Quaternion& a, const Quaternion& b);
+
 // MuJoCo's spring on a ball joint or a free joint's turn: ½ k θ² of the turn conj(q_s) ⊗ q from the
 // spring's rest q_s to q, in the body's axes (mju_subQuat); θ² is smooth where the turn vanishes
 // (symbolic/rotation_angle.hpp), and its force in ω is MuJoCo's −k θ·axis. `q`: w, x, y, z's names.
 std::string turn_spring_text(double stiffness, const Quaternion& rest, const std::array<std::string, 4>& q) {
-  double w = rest[0], x = -rest[1], y = -rest[2], z = -rest[3];  // conj(q_s), then the Hamilton product's rows
-  std::array<std::array<double, 4>, 4> rows{{{w, -x, -y, -z}, {x, w, -z, y}, {y, z, w, -x}, {z, -y, x, w}}};
+  Quaternion conjugate{rest[0], -rest[1], -rest[2], -rest[3]};
+  // the product is linear in q: component r's coefficient of q_k is that of conj(q_s) ⊗ e_k
+  std::array<std::array<double, 4>, 4> rows{};
+  for (std::size_t k = 0; k < 4; ++k) {
+    Quaternion unit{0, 0, 0, 0};
+    unit[k] = 1;
+    Quaternion column = product(conjugate, unit);
+    for (std::size_t r = 0; r < 4; ++r) rows[r][k] = column[r];
+  }
   return fmt::format("{}*rotation_angle({}, {}, {}, {})^2", format_number(stiffness), linear_text(rows[0], q),
                      linear_text(rows[1], q), linear_text(rows[2], q), linear_text(rows[3], q));
+}
+
+// (name − rest)² as text, name² where the rest is 0
+std::string square_from_rest(const std::string& name, double rest) {
+  if (rest == 0) return name + "^2";
+  return fmt::format("({} {} {})^2", name, rest < 0 ? "+" : "-", format_number(std::abs(rest)));
 }
 
 // armature, damping and stiffness of one joint into [energy]
@@ -129,9 +144,7 @@ void add_energies(const RobotJoint& j, const JointSymbols& s, Sections& out) {
     if (j.armature != 0) out.kinetic.push_back(fmt::format("{}*{}^2", format_number(j.armature), s.rate()));
     if (j.damping != 0) out.dissipation.push_back(fmt::format("{}*{}^2", format_number(j.damping), s.rate()));
     if (j.stiffness != 0)
-      out.potential.push_back(j.spring_reference[0] == 0 ? fmt::format("{}*{}^2", format_number(j.stiffness), s.angle())
-                                                         : fmt::format("{}*({} - {})^2", format_number(j.stiffness), s.angle(),
-                                                                       format_number(j.spring_reference[0])));
+      out.potential.push_back(format_number(j.stiffness) + "*" + square_from_rest(s.angle(), j.spring_reference[0]));
     return;
   }
   // MuJoCo's damping d and armature a of each of the joint's velocities: ½ d|v|² and ½ a|v|², where
@@ -152,10 +165,7 @@ void add_energies(const RobotJoint& j, const JointSymbols& s, Sections& out) {
   if (rest.size() < q + 4) rest.assign(q + 4, 0), rest[q] = 1;
   if (q) {
     std::string squares_text;
-    for (std::size_t k = 0; k < 3; ++k)
-      squares_text += (k ? " + " : "") + (rest[k] == 0 ? c[k] + "^2"
-                                                       : fmt::format("({} {} {})^2", c[k], rest[k] < 0 ? "+" : "-",
-                                                                     format_number(std::abs(rest[k]))));
+    for (std::size_t k = 0; k < 3; ++k) squares_text += (k ? " + " : "") + square_from_rest(c[k], rest[k]);
     out.potential.push_back(fmt::format("{}*({})", format_number(j.stiffness), squares_text));
   }
   out.potential.push_back(turn_spring_text(j.stiffness, {rest[q], rest[q + 1], rest[q + 2], rest[q + 3]},
