@@ -1,7 +1,8 @@
 // Loading a robot file with MuJoCo 2.2.2's compiler, from memory where the file needs changes
-// first: MuJoCo 3's attributes left out (newer_mjcf.hpp), placeholders for mesh files it cannot read
-// (missing_meshes.hpp), mass bounds for moving bodies without mass (massless_bodies.hpp), a URDF's
-// fixed links kept and its unreadable meshes left out (urdf_text.hpp).
+// first: MuJoCo 3's attributes left out (newer_mjcf.hpp) and its spring and damper flags translated
+// (passive_flags.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
+// for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
+// meshes left out (urdf_text.hpp).
 #include "import/mujoco_loading.hpp"
 
 #include <algorithm>
@@ -109,9 +110,10 @@ std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, 
   return located(u, sources);
 }
 
-// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses,
-// in the file and in those it includes, and with a placeholder for each mesh file it cannot read,
-// kept only when no body takes its inertia from a mesh (missing_meshes.hpp)
+// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses
+// (the spring and damper flags written as 2.2.2 reads them), in the file and in those it includes,
+// and with a placeholder for each mesh file it cannot read, kept only when no body takes its
+// inertia from a mesh (missing_meshes.hpp)
 std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
   mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
   Sources sources;
@@ -142,6 +144,20 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
       auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
       if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
       meshes.push_back(*mesh);
+      model = load(0.01);
+      continue;
+    }
+    if (refuses_passive_flag(error)) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      bool edited = false;
+      for (auto& source : sources) {
+        std::string before = source.second;
+        PassiveSwitches found = translate_passive_flags(source.second);
+        edited = edited || source.second != before;
+        left_out.passive_flags.springs_off = left_out.passive_flags.springs_off || found.springs_off;
+        left_out.passive_flags.dampers_off = left_out.passive_flags.dampers_off || found.dampers_off;
+      }
+      if (!edited) break;
       model = load(0.01);
       continue;
     }

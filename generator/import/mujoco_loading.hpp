@@ -1,6 +1,6 @@
 /// @file Loading a robot file with MuJoCo 2.2.2's compiler (mj_loadXML), read again from memory
 /// with the changes a file needs first, each recorded for a warning: MuJoCo 3's attributes left out
-/// (newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
+/// (newer_mjcf.hpp) and its spring and damper flags translated (passive_flags.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
 /// for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
 /// meshes left out (urdf_text.hpp).
 #pragma once
@@ -13,6 +13,7 @@
 #include <mujoco/mujoco.h>
 
 #include "import/newer_mjcf.hpp"
+#include "import/passive_flags.hpp"
 
 namespace eomgen {
 
@@ -47,6 +48,7 @@ struct LeftOut {
   bool balanced_inertias = false;        // a URDF read with balanceinertia (unbalanced_inertias.hpp)
   bool positive_moments = false;         // a URDF read with its links of moments not above zero restated (the same)
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
+  PassiveSwitches passive_flags;         // MuJoCo 3.3.6's spring and damper flags (passive_flags.hpp)
 };
 
 /// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in
