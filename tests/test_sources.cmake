@@ -25,6 +25,7 @@ set(EOMGEN_TEST_FILES
   generator/import/model_writer_test.cpp            fast     sanitized
   generator/import/loop_import_test.cpp             fast     sanitized
   generator/import/urdf_import_test.cpp             fast     sanitized
+  generator/import/gravity_compensation_test.cpp    fast     sanitized
   generator/import/newer_mjcf_test.cpp              fast     sanitized
   generator/import/option_forces_test.cpp           fast     sanitized
   generator/import/joint_follower_import_test.cpp   fast     sanitized

@@ -491,6 +491,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   read_actuators(m, r);
   read_tendon_springs(m, r);
   apply_option_forces(m, left_out.passive_flags, r);
+  apply_gravity_compensation(m, left_out.gravity_compensation, r);
   if (!spherical) read_loops(m, qpos, r);
   read_couplings(m, r);
   if (!urdf.empty()) read_mimics(m, urdf, r);

@@ -394,6 +394,21 @@ void add_link_points(const Robot& robot, const std::vector<std::string>& frame_o
   }
 }
 
+// MJCF gravcomp c: a force −c m g at the centre of mass of the body, at a point of its own there
+void add_gravity_compensation(const Robot& robot, const std::vector<std::string>& frame_of, Names& names, Sections& out) {
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b) {
+    const RobotBody& body = robot.bodies[b];
+    if (body.gravity_compensation == 0 || body.mass == 0) continue;
+    std::string point = names.take(body.name + "_center_of_mass");
+    Triple force;
+    for (std::size_t k = 0; k < 3; ++k) force[k] = robot.gravity[k] * -(body.mass * body.gravity_compensation);
+    out.points += fmt::format("\n[[points]]\nname = \"{}\"\nframe = \"{}\"\nposition = {}\n", point, frame_of[b],
+                              vector_text(body.center));
+    out.forces += fmt::format("\n[[forces]]  # gravcomp = {}\nat = \"{}\"\nforce = {}\n", format_number(body.gravity_compensation),
+                              point, vector_text(force));
+  }
+}
+
 // each loop as two points, one in each body, and a holonomic constraint per independent world
 // component of their distance (MuJoCo's connect is soft, by its solref and solimp; here it is exact)
 std::string loop_constraints(const Robot& robot, const std::vector<std::string>& frame_of, Names& names, Sections& out) {
@@ -473,6 +488,7 @@ std::string model_file_text(const Robot& robot, const std::string& name, const s
     out.points += fmt::format("\n[[points]]\nname = \"{}\"\n{}position = {}\n", names.take(s.name),
                               s.body < 0 ? "" : "frame = \"" + frame_of[std::size_t(s.body)] + "\"\n", vector_text(s.position));
   add_link_points(robot, frame_of, names, out);
+  add_gravity_compensation(robot, frame_of, names, out);
   std::string constraints = loop_constraints(robot, frame_of, names, out) + coupling_constraints(robot, joint_symbols, followers, names);
   std::string text = fmt::format("# Imported from {} by eomgen import ({}); initial state: {}.\n", source, robot.reader,
                                  robot.initial_state);

@@ -12,6 +12,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "import/gravity_compensation.hpp"
 #include "import/newer_mjcf.hpp"
 #include "import/passive_flags.hpp"
 
@@ -49,6 +50,7 @@ struct LeftOut {
   bool positive_moments = false;         // a URDF read with its links of moments not above zero restated (the same)
   std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
   PassiveSwitches passive_flags;         // MuJoCo 3.3.6's spring and damper flags (passive_flags.hpp)
+  GravityCompensations gravity_compensation;  // the bodies' gravcomp, read before it is left out
 };
 
 /// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in

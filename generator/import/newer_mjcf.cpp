@@ -16,8 +16,10 @@ struct Known {
 const Known known[] = {
     {"actuatorfrcrange", true, "the clamp of a joint's total actuator force is not carried"},
     {"actuatorfrclimited", true, "the clamp of a joint's total actuator force is not carried"},
-    {"actuatorgravcomp", true, "gravity compensation through the actuators is not carried"},
-    {"gravcomp", true, "a body's gravity compensation is not carried"},
+    {"actuatorgravcomp", true,
+     "the joint's gravity compensation is carried as a passive force, not through its actuators: the same unless the "
+     "joint's actuatorfrcrange (not carried) would clamp it"},
+    {"gravcomp", true, "a body's gravity compensation (carried: gravity_compensation.hpp reads it first)"},
     {"inheritrange", true, "an actuator's control range taken from its joint's range is not carried"},
     {"dampratio", true, "a position actuator's damping given as a ratio is not carried"},
     {"kv", true, "a position actuator's velocity gain is not carried"},

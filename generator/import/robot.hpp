@@ -45,6 +45,7 @@ struct RobotBody {
   Quaternion inertia_axes{1, 0, 0, 0};  // principal axes of inertia in the body's frame
   Triple principal_inertia{0, 0, 0};
   std::vector<RobotGeom> geoms;  // what `eomgen animate` draws of it
+  double gravity_compensation = 0;  // MJCF gravcomp c: a force −c m g at the centre of mass
 };
 
 /// One joint of a fixed tendon (MJCF's <fixed>): its length is Σ coefficient × the joint's qpos.

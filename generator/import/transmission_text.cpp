@@ -97,7 +97,7 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
   }
   std::string generalized;
   for (const std::string& q : order) generalized += (generalized.empty() ? "" : ", ") + fmt::format("{} = \"{}\"", q, forces[q]);
-  if (!generalized.empty()) out.forces = "\n[[forces]]\ngeneralized = { " + generalized + " }\n";
+  if (!generalized.empty()) out.forces += "\n[[forces]]\ngeneralized = { " + generalized + " }\n";
 }
 
 }  // namespace eomgen

@@ -13,8 +13,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <random>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,6 +41,7 @@
 
 #include "ball_chain_imported.hpp"
 #include "ball_ragdoll_imported.hpp"
+#include "gravity_compensated_arm_imported.hpp"
 #include "measured_arm_imported.hpp"
 #include "mjcf_features_imported.hpp"
 #include "oblique_tree_imported.hpp"
@@ -389,6 +394,36 @@ TEST(MujocoImport, ActuatorsOnFixedTendonsImportAndMatchMujoco) { EXPECT_IMPORT_
 // gravity, the passive forces (springs, dampers and a medium) and the clamping of controls switched
 // off by the file's <option> flags: the model without them moves as MuJoCo's
 TEST(MujocoImport, ForcesSwitchedOffByTheFileAreLeftOut) { EXPECT_IMPORT_MATCHES_MUJOCO(switched_off_forces); }
+
+// MuJoCo 2.3's gravcomp, which MuJoCo 2.2.2 cannot read: the imported model against MuJoCo reading the
+// file without it, the force −gravcomp m g at each body's centre of mass put in xfrc_applied (which
+// MuJoCo applies there); the three bodies and their parts as the file states them
+TEST(MujocoImport, GravityCompensationIsAForceAtEachCentreOfMass) {
+  namespace robot = eomgen::models::gravity_compensated_arm_imported;
+  std::stringstream file;
+  file << std::ifstream(mjcf("gravity_compensated_arm.xml")).rdbuf();
+  std::string without = std::regex_replace(file.str(), std::regex(R"( gravcomp="[^"]*")"), "");
+  ASSERT_NE(without, file.str());
+  std::string path = (std::filesystem::temp_directory_path() / "gravity_compensated_arm_without_gravcomp.xml").string();
+  std::ofstream(path) << without;
+  MujocoModel mj(path);
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  // the unnamed one is the third body below the world
+  const std::pair<int, double> parts[] = {{mj_name2id(mj.model, mjOBJ_BODY, "base"), 1.0},
+                                          {mj_name2id(mj.model, mjOBJ_BODY, "upper"), 0.5}, {3, 0.25}};
+  auto p = robot::Parameters<double>().values();
+  auto rhs = [&](const double* x, const double* u, double* xdot) { robot::rhs(0.0, x, u, p.data(), xdot); };
+  int nq = int(robot::num_coordinates), nv = int(robot::num_velocities), nu = int(robot::num_inputs);
+  double uncompensated = worst_relative_difference(mj, nq, nv, nu, rhs, 20);
+  for (const auto& [body, part] : parts)
+    for (int k = 0; k < 3; ++k) mj.data->xfrc_applied[6 * body + k] = -mj.model->opt.gravity[k] * mj.model->body_mass[body] * part;
+  double worst = worst_relative_difference(mj, nq, nv, nu, rhs, 200);
+  std::printf("gravity_compensated_arm.xml: largest difference from MuJoCo's qacc: %.2g of its size (%.2g without "
+              "the compensation)\n", worst, uncompensated);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(worst, 0.0);
+  EXPECT_GT(uncompensated, 1e-2) << "the compensation moves the robot";
+}
 
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,
 // an oblique axis; and the seven-joint arm as URDF (without armature and motors, which URDF lacks)

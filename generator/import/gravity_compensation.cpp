@@ -1,0 +1,63 @@
+#include "import/gravity_compensation.hpp"
+
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "import/xml_text.hpp"
+
+namespace eomgen {
+
+void read_gravity_compensations(const std::string& mjcf, std::size_t source, GravityCompensations& out) {
+  int ordinal = 0;
+  for (std::size_t at = element_start(mjcf, "body"); at != std::string::npos; at = element_start(mjcf, "body", at + 1), ++ordinal) {
+    std::size_t end = past_tag(mjcf, at);
+    if (end == std::string::npos) break;
+    std::optional<std::string> value = attribute(mjcf, at, end, "gravcomp");
+    double part = value ? std::strtod(value->c_str(), nullptr) : 0;
+    if (part != 0) out.bodies.push_back({attribute(mjcf, at, end, "name").value_or(""), ordinal, source, part});
+  }
+  if (source == 0) out.body_elements = ordinal;
+  else out.includes = true;
+}
+
+namespace {
+
+// the body's index in `m`, or −1: by name, or an unnamed one by its place in the only file
+int body_of(const mjModel* m, const GravityCompensations& found, const GravityCompensation& c) {
+  if (!c.body.empty()) return mj_name2id(m, mjOBJ_BODY, c.body.c_str());
+  bool placed = !found.includes && c.source == 0 && found.body_elements == m->nbody - 1;
+  return placed ? c.ordinal + 1 : -1;
+}
+
+}  // namespace
+
+void apply_gravity_compensation(const mjModel* m, const GravityCompensations& found, Robot& r) {
+  if (found.bodies.empty()) return;
+  if (r.gravity == Triple{0, 0, 0} || (m->opt.disableflags & mjDSBL_PASSIVE) != 0) {
+    r.notes.push_back(fmt::format("the gravity compensation (gravcomp) of {} body(ies) does nothing here: {}", found.bodies.size(),
+                                  r.gravity == Triple{0, 0, 0} ? "there is no gravity" : "the passive forces are switched off"));
+    return;
+  }
+  int carried = 0, lost = 0;
+  for (const GravityCompensation& c : found.bodies) {
+    int b = body_of(m, found, c);
+    if (b < 1 || std::size_t(b) > r.bodies.size()) {
+      ++lost;
+      continue;
+    }
+    r.bodies[std::size_t(b - 1)].gravity_compensation = c.part;
+    ++carried;
+  }
+  if (carried > 0)
+    r.notes.push_back(fmt::format("gravity compensation (MuJoCo 2.3's gravcomp, read from the file's text): {} body(ies) carry a "
+                                  "force -gravcomp*m*g at their centre of mass",
+                                  carried));
+  if (lost > 0)
+    r.warnings.push_back({fmt::format("the gravity compensation (gravcomp) of {} unnamed body(ies) in an included file, or "
+                                      "whose place among the bodies is not plain: not carried (name the bodies)",
+                                      lost),
+                          "", "", 0});
+}
+
+}  // namespace eomgen
