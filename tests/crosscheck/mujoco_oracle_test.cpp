@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +42,7 @@
 
 #include "ball_chain_imported.hpp"
 #include "ball_ragdoll_imported.hpp"
+#include "evenly_compensated_arm_imported.hpp"
 #include "gravity_compensated_arm_imported.hpp"
 #include "measured_arm_imported.hpp"
 #include "mjcf_features_imported.hpp"
@@ -397,32 +399,49 @@ TEST(MujocoImport, ForcesSwitchedOffByTheFileAreLeftOut) { EXPECT_IMPORT_MATCHES
 
 // MuJoCo 2.3's gravcomp, which MuJoCo 2.2.2 cannot read: the imported model against MuJoCo reading the
 // file without it, the force −gravcomp m g at each body's centre of mass put in xfrc_applied (which
-// MuJoCo applies there); the three bodies and their parts as the file states them
-TEST(MujocoImport, GravityCompensationIsAForceAtEachCentreOfMass) {
-  namespace robot = eomgen::models::gravity_compensated_arm_imported;
-  std::stringstream file;
-  file << std::ifstream(mjcf("gravity_compensated_arm.xml")).rdbuf();
-  std::string without = std::regex_replace(file.str(), std::regex(R"( gravcomp="[^"]*")"), "");
-  ASSERT_NE(without, file.str());
-  std::string path = (std::filesystem::temp_directory_path() / "gravity_compensated_arm_without_gravcomp.xml").string();
+// MuJoCo applies there); the bodies and their parts as the file states them
+template <class Parameters, class Rhs>
+void expect_compensation_matches_mujoco(const std::string& file, const std::vector<std::pair<std::string, double>>& parts, int nq,
+                                        int nv, int nu, Rhs model_rhs) {
+  std::stringstream text;
+  text << std::ifstream(mjcf(file)).rdbuf();
+  std::string without = std::regex_replace(text.str(), std::regex(R"( gravcomp="[^"]*")"), "");
+  ASSERT_NE(without, text.str());
+  std::string path = (std::filesystem::temp_directory_path() / ("without_gravcomp_" + file)).string();
   std::ofstream(path) << without;
   MujocoModel mj(path);
   ASSERT_NE(mj.model, nullptr) << mj.message;
-  // the unnamed one is the third body below the world
-  const std::pair<int, double> parts[] = {{mj_name2id(mj.model, mjOBJ_BODY, "base"), 1.0},
-                                          {mj_name2id(mj.model, mjOBJ_BODY, "upper"), 0.5}, {3, 0.25}};
-  auto p = robot::Parameters<double>().values();
-  auto rhs = [&](const double* x, const double* u, double* xdot) { robot::rhs(0.0, x, u, p.data(), xdot); };
-  int nq = int(robot::num_coordinates), nv = int(robot::num_velocities), nu = int(robot::num_inputs);
+  auto p = Parameters().values();
+  auto rhs = [&](const double* x, const double* u, double* xdot) { model_rhs(0.0, x, u, p.data(), xdot); };
   double uncompensated = worst_relative_difference(mj, nq, nv, nu, rhs, 20);
-  for (const auto& [body, part] : parts)
+  for (const auto& [name, part] : parts) {
+    // an unnamed body by its number
+    int body = std::isdigit(static_cast<unsigned char>(name[0])) ? std::stoi(name) : mj_name2id(mj.model, mjOBJ_BODY, name.c_str());
+    ASSERT_GT(body, 0) << name;
     for (int k = 0; k < 3; ++k) mj.data->xfrc_applied[6 * body + k] = -mj.model->opt.gravity[k] * mj.model->body_mass[body] * part;
+  }
   double worst = worst_relative_difference(mj, nq, nv, nu, rhs, 200);
-  std::printf("gravity_compensated_arm.xml: largest difference from MuJoCo's qacc: %.2g of its size (%.2g without "
-              "the compensation)\n", worst, uncompensated);
+  std::printf("%s: largest difference from MuJoCo's qacc: %.2g of its size (%.2g without the compensation)\n", file.c_str(),
+              worst, uncompensated);
   EXPECT_LT(worst, 1e-12);
   EXPECT_GT(worst, 0.0);
   EXPECT_GT(uncompensated, 1e-2) << "the compensation moves the robot";
+}
+
+#define EXPECT_COMPENSATION_MATCHES_MUJOCO(M, ...)                                                            \
+  expect_compensation_matches_mujoco<eomgen::models::M##_imported::Parameters<double>>(                     \
+      #M ".xml", __VA_ARGS__, int(eomgen::models::M##_imported::num_coordinates),                            \
+      int(eomgen::models::M##_imported::num_velocities), int(eomgen::models::M##_imported::num_inputs),      \
+      eomgen::models::M##_imported::rhs<double>)
+
+// parts of 1, ½ and ¼ (the third body unnamed): a force at each centre of mass
+TEST(MujocoImport, GravityCompensationIsAForceAtEachCentreOfMass) {
+  EXPECT_COMPENSATION_MATCHES_MUJOCO(gravity_compensated_arm, {{"base", 1.0}, {"upper", 0.5}, {"3", 0.25}});
+}
+
+// ¾ of every moving body's weight: gravity of a quarter
+TEST(MujocoImport, OneGravityCompensationForEveryMovingBodyIsLessGravity) {
+  EXPECT_COMPENSATION_MATCHES_MUJOCO(evenly_compensated_arm, {{"shoulder", 0.75}, {"upper", 0.75}, {"fore", 0.75}});
 }
 
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,

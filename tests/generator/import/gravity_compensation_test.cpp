@@ -36,18 +36,22 @@ TEST(GravityCompensation, TheBodiesPartsAreReadByNameAndPlace) {
   EXPECT_EQ(found.body_elements, 4) << "the count is the file's own";
 }
 
-// a hinged rod whose body is compensated by `part`, under `option`
-std::string compensated_rod(const std::string& option, const std::string& name = "name=\"rod\" ") {
+// a hinged rod whose body is half compensated, under `option`; `tip` a body below it
+std::string compensated_rod(const std::string& option, const std::string& name = "name=\"rod\" ", const std::string& tip = "") {
   return "<mujoco model=\"rod\">\n  " + option + R"(
   <worldbody>
     <body )" + name + R"(pos="0 0 1" gravcomp="0.5">
       <joint name="swing" axis="0 1 0"/>
-      <inertial pos="0.3 0 0" mass="2" diaginertia="0.01 0.01 0.001"/>
+      <inertial pos="0.3 0 0" mass="2" diaginertia="0.01 0.01 0.001"/>)" + tip + R"(
     </body>
   </worldbody>
 </mujoco>
 )";
 }
+
+// a tip below the rod that takes off none of its weight
+const char* const tip = R"(
+      <body name="tip" pos="0.6 0 0"><joint name="bend" axis="0 1 0"/><inertial pos="0.1 0 0" mass="0.5" diaginertia="0.001 0.001 0.001"/></body>)";
 
 std::string imported_rod(const std::string& folder_name, const std::string& file, Diagnostics& diagnostics) {
   std::string folder = temporary_directory() + "/" + folder_name;
@@ -58,15 +62,30 @@ std::string imported_rod(const std::string& folder_name, const std::string& file
 
 bool states(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-TEST(GravityCompensation, HalfTheWeightIsTakenOffAtTheCentreOfMass) {
+TEST(GravityCompensation, OnePartForEveryMovingBodyScalesGravity) {
   Diagnostics diagnostics;
-  std::string text = imported_rod("half", compensated_rod("<option gravity=\"0 0 -10\"/>"), diagnostics);
+  std::string text = imported_rod("scaled", compensated_rod("<option gravity=\"0 0 -10\"/>"), diagnostics);
   ASSERT_FALSE(text.empty()) << diagnostics.format();
+  EXPECT_TRUE(states(text, "acceleration = [\"0\", \"0\", \"-5\"]")) << text;
+  EXPECT_FALSE(states(text, "[[forces]]")) << text;
+  EXPECT_TRUE(states(text, "every moving body takes off 0.5 of its weight, so that gravity is 0.5 of the file's")) << text;
+  // a body welded to the world gives its weight to the world, whatever its part
+  std::string welded = compensated_rod("<option gravity=\"0 0 -10\"/>");
+  welded.replace(welded.find("  <worldbody>\n") + 14, 0, "    <body name=\"stand\"><inertial pos=\"0 0 0\" mass=\"9\" diaginertia=\"1 1 1\"/></body>\n");
+  EXPECT_TRUE(states(imported_rod("welded", welded, diagnostics), "acceleration = [\"0\", \"0\", \"-5\"]"));
+}
+
+TEST(GravityCompensation, UnequalPartsAreForcesAtTheCentresOfMass) {
+  Diagnostics diagnostics;
+  std::string text = imported_rod("half", compensated_rod("<option gravity=\"0 0 -10\"/>", "name=\"rod\" ", tip), diagnostics);
+  ASSERT_FALSE(text.empty()) << diagnostics.format();
+  EXPECT_TRUE(states(text, "acceleration = [\"0\", \"0\", \"-10\"]")) << text;
   EXPECT_TRUE(states(text, "[[points]]\nname = \"rod_center_of_mass\"\nframe = \"rod\"\nposition = [\"0.3\", \"0\", \"0\"]\n")) << text;
   EXPECT_TRUE(states(text, "[[forces]]  # gravcomp = 0.5\nat = \"rod_center_of_mass\"\nforce = [\"0\", \"0\", \"10\"]\n")) << text;
+  EXPECT_FALSE(states(text, "tip_center_of_mass")) << text;
   EXPECT_TRUE(states(text, "# note: gravity compensation (MuJoCo 2.3's gravcomp, read from the file's text): 1 body(ies)")) << text;
   EXPECT_FALSE(states(text, "# not carried: 'gravcomp'")) << text;
-  std::string unnamed = imported_rod("unnamed", compensated_rod("<option gravity=\"0 0 -10\"/>", ""), diagnostics);
+  std::string unnamed = imported_rod("unnamed", compensated_rod("<option gravity=\"0 0 -10\"/>", "", tip), diagnostics);
   EXPECT_TRUE(states(unnamed, "force = [\"0\", \"0\", \"10\"]")) << "an unnamed body by its place: " << unnamed;
 }
 
@@ -79,13 +98,13 @@ TEST(GravityCompensation, WithoutGravityOrPassiveForcesItDoesNothing) {
   EXPECT_FALSE(states(passive, "[[forces]]")) << passive;
   EXPECT_TRUE(states(passive, "does nothing here: the passive forces are switched off")) << passive;
   std::string springs = imported_rod("springs", compensated_rod("<option><flag spring=\"disable\"/></option>"), diagnostics);
-  EXPECT_TRUE(states(springs, "at = \"rod_center_of_mass\"")) << "one flag leaves the passive forces on: " << springs;
+  EXPECT_TRUE(states(springs, "gravity is 0.5 of the file's")) << "one flag leaves the passive forces on: " << springs;
 }
 
 TEST(GravityCompensation, AnUnnamedBodyOfAnIncludedFileIsWarnedOf) {
   std::string folder = temporary_directory() + "/included";
   std::filesystem::create_directories(folder);
-  std::string rod = compensated_rod("", "");
+  std::string rod = compensated_rod("", "", tip);
   std::size_t body = rod.find("  <worldbody>"), end = rod.find("</mujoco>");
   std::ofstream(folder + "/body.xml") << "<mujoco>\n" + rod.substr(body, end - body) + "</mujoco>\n";
   std::ofstream(folder + "/scene.xml") << "<mujoco model=\"scene\">\n  <include file=\"body.xml\"/>\n</mujoco>\n";
