@@ -27,6 +27,7 @@ set(EOMGEN_TEST_FILES
   generator/import/urdf_import_test.cpp             fast     sanitized
   generator/import/gravity_compensation_test.cpp    fast     sanitized
   generator/import/newer_mjcf_test.cpp              fast     sanitized
+  generator/import/servo_damping_test.cpp           fast     sanitized
   generator/import/option_forces_test.cpp           fast     sanitized
   generator/import/joint_follower_import_test.cpp   fast     sanitized
   generator/import/missing_meshes_test.cpp          fast     sanitized

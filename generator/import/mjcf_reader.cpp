@@ -273,7 +273,14 @@ void read_tendon_springs(const mjModel* m, Robot& r) {
   }
 }
 
-void read_actuators(const mjModel* m, Robot& r) {
+// MuJoCo 3's position servo with kv, read as its user value (servo_damping.hpp): bias [0, −kp, 0] as
+// MuJoCo 2.2.2 sets it, and the velocity's −kv
+bool position_servo(const mjModel* m, int a) {
+  const double* bias = m->actuator_biasprm + mjNBIAS * a;
+  return m->actuator_biastype[a] == mjBIAS_AFFINE && bias[0] == 0 && bias[1] == -m->actuator_gainprm[mjNGAIN * a] && bias[2] == 0;
+}
+
+void read_actuators(const mjModel* m, bool kv_as_user, Robot& r) {
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
     if (name.empty()) name = fmt::format("actuator{}", a);
@@ -303,6 +310,7 @@ void read_actuators(const mjModel* m, Robot& r) {
     act.gear = m->actuator_gear[6 * a];
     if (m->actuator_biastype[a] == mjBIAS_AFFINE)
       act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
+    if (kv_as_user && m->nuser_actuator > 0 && position_servo(m, a)) act.bias[2] = -m->actuator_user[m->nuser_actuator * a];
     act.force_limited = m->actuator_forcelimited[a];
     act.force_range = {m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]};
     r.actuators.push_back(act);
@@ -488,7 +496,11 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
                            std::vector<double>(m->key_qpos + k * m->nq, m->key_qpos + (k + 1) * m->nq),
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
-  read_actuators(m, r);
+  read_actuators(m, left_out.kv_as_user, r);
+  if (left_out.kv_as_user)
+    r.notes.push_back(fmt::format("the position servos' kv (MuJoCo 3's velocity gain) read through MuJoCo {}'s actuator user "
+                                  "values, which resolve defaults and classes alike",
+                                  mj_version_text()));
   read_tendon_springs(m, r);
   apply_option_forces(m, left_out.passive_flags, r);
   apply_gravity_compensation(m, left_out.gravity_compensation, r);

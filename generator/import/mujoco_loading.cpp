@@ -18,6 +18,7 @@
 
 #include "import/massless_bodies.hpp"
 #include "import/missing_meshes.hpp"
+#include "import/servo_damping.hpp"
 #include "import/unbalanced_inertias.hpp"
 #include "import/urdf_text.hpp"
 
@@ -160,6 +161,15 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
       if (!edited) break;
       model = load(0.01);
       continue;
+    }
+    if (refuses_position_kv(error) && !left_out.kv_as_user) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      if (std::none_of(sources.begin(), sources.end(), [](const auto& s) { return has_user_values(s.second); })) {
+        for (auto& source : sources) source.second = with_kv_as_user(source.second);
+        left_out.kv_as_user = true;
+        model = load(0.01);
+        continue;
+      }
     }
     std::optional<NewerAttribute> newer = newer_attribute_refused(error);
     if (!newer) break;

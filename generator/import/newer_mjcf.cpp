@@ -22,7 +22,9 @@ const Known known[] = {
     {"gravcomp", true, "a body's gravity compensation (carried: gravity_compensation.hpp reads it first)"},
     {"inheritrange", true, "an actuator's control range taken from its joint's range is not carried"},
     {"dampratio", true, "a position actuator's damping given as a ratio is not carried"},
-    {"kv", true, "a position actuator's velocity gain is not carried"},
+    {"kv", true,
+     "a position actuator's velocity gain is not carried (the file's own user values leave no place to read it through: "
+     "servo_damping.hpp)"},
     {"ls_iterations", false, "a setting of MuJoCo's constraint solver"},
     {"ls_tolerance", false, "a setting of MuJoCo's constraint solver"},
     {"noslip_tolerance", false, "a setting of MuJoCo's constraint solver"},
