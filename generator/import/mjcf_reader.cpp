@@ -22,6 +22,7 @@
 
 #include "common/independent_rows.hpp"
 #include "import/free_base.hpp"
+#include "import/joint_force_limits.hpp"
 #include "import/joint_torques.hpp"
 #include "import/newer_mjcf.hpp"
 #include "import/option_forces.hpp"
@@ -497,6 +498,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
   read_actuators(m, left_out.kv_as_user, r);
+  if (left_out.force_range_as_user) read_joint_force_ranges(m, r);
   if (left_out.kv_as_user)
     r.notes.push_back(fmt::format("the position servos' kv (MuJoCo 3's velocity gain) read through MuJoCo {}'s actuator user "
                                   "values, which resolve defaults and classes alike",

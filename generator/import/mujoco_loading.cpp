@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "import/massless_bodies.hpp"
+#include "import/joint_force_limits.hpp"
 #include "import/missing_meshes.hpp"
 #include "import/servo_damping.hpp"
 #include "import/unbalanced_inertias.hpp"
@@ -164,9 +165,20 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     }
     if (refuses_position_kv(error) && !left_out.kv_as_user) {
       if (sources.empty()) sources = mjcf_sources(path);
-      if (std::none_of(sources.begin(), sources.end(), [](const auto& s) { return has_user_values(s.second); })) {
+      if (std::none_of(sources.begin(), sources.end(), [](const auto& s) { return has_actuator_user_values(s.second); })) {
         for (auto& source : sources) source.second = with_kv_as_user(source.second);
         left_out.kv_as_user = true;
+        model = load(0.01);
+        continue;
+      }
+    }
+    if (refuses_joint_force_range(error) && !left_out.force_range_as_user) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      std::vector<std::optional<std::string>> texts;
+      for (const auto& source : sources) texts.push_back(with_force_range_as_user(source.second));
+      if (std::all_of(texts.begin(), texts.end(), [](const auto& t) { return t.has_value(); })) {
+        for (std::size_t k = 0; k < sources.size(); ++k) sources[k].second = *texts[k];
+        left_out.force_range_as_user = true;
         model = load(0.01);
         continue;
       }

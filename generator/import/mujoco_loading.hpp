@@ -1,7 +1,7 @@
 /// @file Loading a robot file with MuJoCo 2.2.2's compiler (mj_loadXML), read again from memory
 /// with the changes a file needs first, each recorded for a warning: MuJoCo 3's attributes left out
 /// (newer_mjcf.hpp), its spring and damper flags translated (passive_flags.hpp) and its position servos'
-/// kv read as user values (servo_damping.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
+/// kv and joints' actuator force ranges read as user values (servo_damping.hpp, joint_force_limits.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
 /// for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
 /// meshes left out (urdf_text.hpp).
 #pragma once
@@ -53,6 +53,7 @@ struct LeftOut {
   PassiveSwitches passive_flags;         // MuJoCo 3.3.6's spring and damper flags (passive_flags.hpp)
   GravityCompensations gravity_compensation;  // the bodies' gravcomp, read before it is left out
   bool kv_as_user = false;               // <position kv> read as the actuators' user values (servo_damping.hpp)
+  bool force_range_as_user = false;      // joints' actuatorfrcrange read as their user values (joint_force_limits.hpp)
 };
 
 /// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in

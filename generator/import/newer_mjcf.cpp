@@ -14,11 +14,13 @@ struct Known {
 
 // attributes of MuJoCo 2.3 to 3.x seen in published robots, and what eomgen loses without them
 const Known known[] = {
-    {"actuatorfrcrange", true, "the clamp of a joint's total actuator force is not carried"},
-    {"actuatorfrclimited", true, "the clamp of a joint's total actuator force is not carried"},
+    {"actuatorfrcrange", true,
+     "the clamp of a joint's total actuator force is not carried (where the file has joint user values of its own, "
+     "actuatorfrclimited=\"false\" or autolimits off: joint_force_limits.hpp)"},
+    {"actuatorfrclimited", true, "the clamp of a joint's total actuator force is not carried (as for actuatorfrcrange)"},
     {"actuatorgravcomp", true,
      "the joint's gravity compensation is carried as a passive force, not through its actuators: the same unless the "
-     "joint's actuatorfrcrange (not carried) would clamp it"},
+     "joint's actuatorfrcrange would clamp their sum"},
     {"gravcomp", true, "a body's gravity compensation (carried: gravity_compensation.hpp reads it first)"},
     {"inheritrange", true, "an actuator's control range taken from its joint's range is not carried"},
     {"dampratio", true, "a position actuator's damping given as a ratio is not carried"},

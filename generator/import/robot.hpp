@@ -24,6 +24,9 @@ struct RobotJoint {
   std::vector<double> initial_velocity;    // its part of qvel
   bool limited = false;
   std::array<double, 2> range{0, 0};
+  /// MuJoCo 3's actuatorfrcrange: the actuators' total generalized force on the joint is clamped to it
+  bool actuator_force_limited = false;
+  std::array<double, 2> actuator_force_range{0, 0};
 };
 
 /// A geom that draws the body (MJCF geom: type, half sizes as MuJoCo keeps them, placement in the body).

@@ -13,8 +13,8 @@ namespace eomgen {
 /// Whether MuJoCo's error is its schema refusing kv on a <position> actuator (or its default).
 bool refuses_position_kv(const std::string& mujoco_error);
 
-/// Whether the text sets a `user` attribute anywhere (outside comments): then kv cannot borrow it.
-bool has_user_values(const std::string& mjcf);
+/// Whether an actuator of the text (or an actuator default) sets `user`: then kv cannot borrow it.
+bool has_actuator_user_values(const std::string& mjcf);
 
 /// The text with kv="..." of every <position> tag (outside comments) written as user="...".
 std::string with_kv_as_user(const std::string& mjcf);

@@ -95,6 +95,22 @@ void add_actuators(const Robot& robot, const std::vector<std::vector<JointSymbol
       forces[q] += (forces[q].empty() ? "" : " + ") + (weight == 1 ? force : fmt::format("{}*({})", format_number(weight), force));
     }
   }
+  // MuJoCo 3's actuatorfrcrange: the joint's total clamped (a joint without actuators keeps none)
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b)
+    for (std::size_t j = 0; j < robot.bodies[b].joints.size(); ++j) {
+      const RobotJoint& joint = robot.bodies[b].joints[j];
+      const JointSymbols& s = joint_symbols[b][j];
+      if (!joint.actuator_force_limited || !forces.count(s.follows() ? s.leader : s.coordinates[0])) continue;
+      if (s.follows()) {
+        out.warnings.push_back(fmt::format("joint '{}' follows another's coordinate: the clamp of its total actuator force "
+                                           "(actuatorfrcrange) is not carried",
+                                           joint.name));
+        continue;
+      }
+      std::string& total = forces[s.coordinates[0]];
+      total = fmt::format("clamp({}, {}, {})", total, format_number(joint.actuator_force_range[0]),
+                          format_number(joint.actuator_force_range[1]));
+    }
   std::string generalized;
   for (const std::string& q : order) generalized += (generalized.empty() ? "" : ", ") + fmt::format("{} = \"{}\"", q, forces[q]);
   if (!generalized.empty()) out.forces += "\n[[forces]]\ngeneralized = { " + generalized + " }\n";

@@ -57,6 +57,26 @@ std::optional<std::string> attribute(const std::string& text, std::size_t start,
   return text.substr(open + 1, span->second - open - 2);
 }
 
+bool any_tag_sets(const std::string& text, const std::vector<std::string>& elements, const std::string& name) {
+  for (const std::string& element : elements)
+    for (std::size_t at = element_start(text, element); at != std::string::npos; at = element_start(text, element, at + 1)) {
+      std::size_t end = past_tag(text, at);
+      if (end == std::string::npos) break;
+      if (attribute_span(text, at, end, name)) return true;
+    }
+  return false;
+}
+
+std::string with_attribute_renamed(const std::string& text, const std::string& element, const std::string& from, const std::string& to) {
+  std::string out = text;
+  for (std::size_t at = element_start(out, element); at != std::string::npos; at = element_start(out, element, at + 1)) {
+    std::size_t end = past_tag(out, at);
+    if (end == std::string::npos) break;
+    if (auto span = attribute_span(out, at, end, from)) out.replace(span->first, from.size(), to);
+  }
+  return out;
+}
+
 std::array<double, 3> triple_attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name) {
   std::array<double, 3> t{0, 0, 0};
   if (std::optional<std::string> value = attribute(text, start, end, name)) {

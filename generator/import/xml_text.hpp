@@ -28,6 +28,12 @@ std::optional<std::pair<std::size_t, std::size_t>> attribute_span(const std::str
 /// The value of attribute `name` in the tag [start, end), or nothing.
 std::optional<std::string> attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name);
 
+/// Whether a tag of one of `elements` (outside comments) sets `name`.
+bool any_tag_sets(const std::string& text, const std::vector<std::string>& elements, const std::string& name);
+
+/// `text` with attribute `from` of every `element` tag (outside comments) renamed `to`, its value kept.
+std::string with_attribute_renamed(const std::string& text, const std::string& element, const std::string& from, const std::string& to);
+
 /// The three numbers of attribute `name` ("x y z") in the tag [start, end), zeros where missing.
 std::array<double, 3> triple_attribute(const std::string& text, std::size_t start, std::size_t end, const std::string& name);
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cctype>
 #include <cstdio>
@@ -44,6 +45,7 @@
 #include "ball_ragdoll_imported.hpp"
 #include "evenly_compensated_arm_imported.hpp"
 #include "gravity_compensated_arm_imported.hpp"
+#include "joint_force_ranges_imported.hpp"
 #include "measured_arm_imported.hpp"
 #include "mjcf_features_imported.hpp"
 #include "oblique_tree_imported.hpp"
@@ -442,6 +444,54 @@ TEST(MujocoImport, GravityCompensationIsAForceAtEachCentreOfMass) {
 // ¾ of every moving body's weight: gravity of a quarter
 TEST(MujocoImport, OneGravityCompensationForEveryMovingBodyIsLessGravity) {
   EXPECT_COMPENSATION_MATCHES_MUJOCO(evenly_compensated_arm, {{"shoulder", 0.75}, {"upper", 0.75}, {"fore", 0.75}});
+}
+
+// MuJoCo 3's actuatorfrcrange, which MuJoCo 2.2.2 cannot read: the imported model against MuJoCo reading
+// the file without it, its qfrc_actuator clamped here per joint (the ranges as the file states them)
+// and the accelerations formed again from it (mj_fwdAcceleration); the controls of ±2 drive the
+// motors past the ranges
+TEST(MujocoImport, AJointsTotalActuatorForceIsClampedToItsRange) {
+  namespace robot = eomgen::models::joint_force_ranges_imported;
+  std::stringstream text;
+  text << std::ifstream(mjcf("joint_force_ranges.xml")).rdbuf();
+  std::string without = std::regex_replace(text.str(), std::regex(R"( actuatorfrc(range|limited)="[^"]*")"), "");
+  std::string path = (std::filesystem::temp_directory_path() / "without_actuatorfrcrange.xml").string();
+  std::ofstream(path) << without;
+  MujocoModel mj(path);
+  ASSERT_NE(mj.model, nullptr) << mj.message;
+  const std::pair<const char*, std::array<double, 2>> ranges[] = {{"hip", {-5, 5}}, {"knee", {-2, 3}}};
+  ASSERT_EQ(mj.model->nq, int(robot::num_coordinates));
+  auto p = robot::Parameters<double>().values();
+  std::mt19937 random(2026);
+  std::uniform_real_distribution<double> control(-2.0, 2.0);
+  std::vector<double> x(std::size_t(mj.model->nq + mj.model->nv)), xdot(x.size()), u(std::size_t(mj.model->nu));
+  double worst = 0;
+  int clamped = 0;
+  for (int k = 0; k < 200; ++k) {
+    random_state(mj.model, random, mj.data->qpos, mj.data->qvel);
+    std::copy(mj.data->qpos, mj.data->qpos + mj.model->nq, x.begin());
+    std::copy(mj.data->qvel, mj.data->qvel + mj.model->nv, x.begin() + mj.model->nq);
+    for (int i = 0; i < mj.model->nu; ++i) mj.data->ctrl[i] = u[std::size_t(i)] = control(random);
+    mj_forward(mj.model, mj.data);
+    for (const auto& [joint, range] : ranges) {
+      double& force = mj.data->qfrc_actuator[mj.model->jnt_dofadr[mj_name2id(mj.model, mjOBJ_JOINT, joint)]];
+      clamped += force < range[0] || force > range[1];
+      force = std::clamp(force, range[0], range[1]);
+    }
+    mj_fwdAcceleration(mj.model, mj.data);
+    robot::rhs(0.0, x.data(), u.data(), p.data(), xdot.data());
+    double size = 0, difference = 0;
+    for (int i = 0; i < mj.model->nv; ++i) {
+      size = std::max(size, std::abs(mj.data->qacc_smooth[i]));
+      difference = std::max(difference, std::abs(xdot[std::size_t(mj.model->nq + i)] - mj.data->qacc_smooth[i]));
+    }
+    worst = std::max(worst, difference / size);
+  }
+  std::printf("joint_force_ranges.xml: largest difference from MuJoCo's clamped qacc: %.2g of its size (%d clamps)\n", worst,
+              clamped);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(worst, 0.0);
+  EXPECT_GT(clamped, 100) << "the ranges bind";
 }
 
 // URDF, read by the same compiler: inertial origins with rpy and full tensors, joint origins with rpy,

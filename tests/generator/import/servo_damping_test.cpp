@@ -23,8 +23,9 @@ TEST(ServoDamping, OnlyAPositionServosKvIsReadAsItsUserValue) {
                             "<velocity kv=\"2\"/><position\n  joint=\"a\" kv=\"3\"/>"),
             "<default><position kp=\"4\" user='0.5'/></default>\n<!-- <position kv=\"1\"/> -->\n"
             "<velocity kv=\"2\"/><position\n  joint=\"a\" user=\"3\"/>");
-  EXPECT_TRUE(has_user_values("<mujoco>\n<general joint=\"a\" user=\"1 2\"/>"));
-  EXPECT_FALSE(has_user_values("<size nuser_actuator=\"2\"/><!-- <motor user=\"1\"/> --><motor joint=\"a\"/>"));
+  EXPECT_TRUE(has_actuator_user_values("<mujoco>\n<general joint=\"a\" user=\"1 2\"/>"));
+  EXPECT_FALSE(has_actuator_user_values("<size nuser_actuator=\"2\"/><!-- <motor user=\"1\"/> --><motor joint=\"a\"/>"));
+  EXPECT_FALSE(has_actuator_user_values("<joint name=\"a\" user=\"1\"/>")) << "a joint's user values are another array";
 }
 
 // two hinges and a slide driven by `actuators`, with `defaults`
