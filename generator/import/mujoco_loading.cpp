@@ -1,6 +1,6 @@
 // Loading a robot file with MuJoCo 2.2.2's compiler, from memory where the file needs changes
-// first: MuJoCo 3's attributes left out (newer_mjcf.hpp) and its spring and damper flags translated
-// (passive_flags.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
+// first: MuJoCo 3's attributes left out (newer_mjcf.hpp) or written as 2.2.2 reads them
+// (carried_newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
 // for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
 // meshes left out (urdf_text.hpp).
 #include "import/mujoco_loading.hpp"
@@ -16,10 +16,9 @@
 
 #include <fmt/format.h>
 
+#include "import/carried_newer_mjcf.hpp"
 #include "import/massless_bodies.hpp"
-#include "import/joint_force_limits.hpp"
 #include "import/missing_meshes.hpp"
-#include "import/servo_damping.hpp"
 #include "import/unbalanced_inertias.hpp"
 #include "import/urdf_text.hpp"
 
@@ -113,7 +112,7 @@ std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, 
 }
 
 // an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses
-// (the spring and damper flags written as 2.2.2 reads them), in the file and in those it includes,
+// (or with it written as 2.2.2 reads it: carried_newer_mjcf.hpp), in the file and in those it includes,
 // and with a placeholder for each mesh file it cannot read, kept only when no body takes its
 // inertia from a mesh (missing_meshes.hpp)
 std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, char* error, int size, LeftOut& left_out) {
@@ -149,36 +148,9 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
       model = load(0.01);
       continue;
     }
-    if (refuses_passive_flag(error)) {
+    if (refuses_carried_attribute(error)) {
       if (sources.empty()) sources = mjcf_sources(path);
-      bool edited = false;
-      for (auto& source : sources) {
-        std::string before = source.second;
-        PassiveSwitches found = translate_passive_flags(source.second);
-        edited = edited || source.second != before;
-        left_out.passive_flags.springs_off = left_out.passive_flags.springs_off || found.springs_off;
-        left_out.passive_flags.dampers_off = left_out.passive_flags.dampers_off || found.dampers_off;
-      }
-      if (!edited) break;
-      model = load(0.01);
-      continue;
-    }
-    if (refuses_position_kv(error) && !left_out.kv_as_user) {
-      if (sources.empty()) sources = mjcf_sources(path);
-      if (std::none_of(sources.begin(), sources.end(), [](const auto& s) { return has_actuator_user_values(s.second); })) {
-        for (auto& source : sources) source.second = with_kv_as_user(source.second);
-        left_out.kv_as_user = true;
-        model = load(0.01);
-        continue;
-      }
-    }
-    if (refuses_joint_force_range(error) && !left_out.force_range_as_user) {
-      if (sources.empty()) sources = mjcf_sources(path);
-      std::vector<std::optional<std::string>> texts;
-      for (const auto& source : sources) texts.push_back(with_force_range_as_user(source.second));
-      if (std::all_of(texts.begin(), texts.end(), [](const auto& t) { return t.has_value(); })) {
-        for (std::size_t k = 0; k < sources.size(); ++k) sources[k].second = *texts[k];
-        left_out.force_range_as_user = true;
+      if (translate_carried_attribute(error, sources, left_out)) {
         model = load(0.01);
         continue;
       }

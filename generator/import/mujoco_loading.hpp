@@ -1,9 +1,9 @@
 /// @file Loading a robot file with MuJoCo 2.2.2's compiler (mj_loadXML), read again from memory
-/// with the changes a file needs first, each recorded for a warning: MuJoCo 3's attributes left out
-/// (newer_mjcf.hpp), its spring and damper flags translated (passive_flags.hpp) and its position servos'
-/// kv and joints' actuator force ranges read as user values (servo_damping.hpp, joint_force_limits.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
-/// for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
-/// meshes left out (urdf_text.hpp).
+/// with the changes a file needs first, each recorded for a warning or a note: MuJoCo 3's attributes
+/// left out (newer_mjcf.hpp) or written as 2.2.2 reads them (carried_newer_mjcf.hpp: the spring and
+/// damper flags, position servos' kv, joints' actuator force ranges), placeholders for mesh files it
+/// cannot read (missing_meshes.hpp), mass bounds for moving bodies without mass (massless_bodies.hpp),
+/// a URDF's fixed links kept and its unreadable meshes left out (urdf_text.hpp).
 #pragma once
 
 #include <string>

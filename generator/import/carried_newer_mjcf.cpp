@@ -1,0 +1,57 @@
+#include "import/carried_newer_mjcf.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "import/joint_force_limits.hpp"
+#include "import/passive_flags.hpp"
+#include "import/servo_damping.hpp"
+
+namespace eomgen {
+
+namespace {
+
+// every text rewritten by `rewrite`, or none where it cannot rewrite one
+template <class Rewrite>
+bool rewrite_every_source(std::vector<std::pair<std::string, std::string>>& sources, Rewrite rewrite) {
+  std::vector<std::optional<std::string>> texts;
+  for (const auto& source : sources) texts.push_back(rewrite(source.second));
+  if (!std::all_of(texts.begin(), texts.end(), [](const auto& t) { return t.has_value(); })) return false;
+  for (std::size_t k = 0; k < sources.size(); ++k) sources[k].second = *texts[k];
+  return true;
+}
+
+bool translate_flags_of_every_source(std::vector<std::pair<std::string, std::string>>& sources, PassiveSwitches& switches) {
+  bool edited = false;
+  for (auto& source : sources) {
+    std::string before = source.second;
+    PassiveSwitches found = translate_passive_flags(source.second);
+    edited = edited || source.second != before;
+    switches.springs_off = switches.springs_off || found.springs_off;
+    switches.dampers_off = switches.dampers_off || found.dampers_off;
+  }
+  return edited;
+}
+
+}  // namespace
+
+bool refuses_carried_attribute(const std::string& mujoco_error) {
+  return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error);
+}
+
+bool translate_carried_attribute(const std::string& mujoco_error, std::vector<std::pair<std::string, std::string>>& sources,
+                                 LeftOut& left_out) {
+  if (refuses_passive_flag(mujoco_error)) return translate_flags_of_every_source(sources, left_out.passive_flags);
+  if (refuses_position_kv(mujoco_error) && !left_out.kv_as_user) {
+    auto kv = [](const std::string& text) -> std::optional<std::string> {
+      if (has_actuator_user_values(text)) return std::nullopt;
+      return with_kv_as_user(text);
+    };
+    return left_out.kv_as_user = rewrite_every_source(sources, kv);
+  }
+  if (refuses_joint_force_range(mujoco_error) && !left_out.force_range_as_user)
+    return left_out.force_range_as_user = rewrite_every_source(sources, with_force_range_as_user);
+  return false;
+}
+
+}  // namespace eomgen
