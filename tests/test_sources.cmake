@@ -26,6 +26,7 @@ set(EOMGEN_TEST_FILES
   generator/import/loop_import_test.cpp             fast     sanitized
   generator/import/urdf_import_test.cpp             fast     sanitized
   generator/import/gravity_compensation_test.cpp    fast     sanitized
+  generator/import/inherited_ranges_test.cpp        fast     sanitized
   generator/import/joint_force_limits_test.cpp      fast     sanitized
   generator/import/newer_mjcf_test.cpp              fast     sanitized
   generator/import/servo_damping_test.cpp           fast     sanitized

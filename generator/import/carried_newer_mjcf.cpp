@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
 #include "import/passive_flags.hpp"
 #include "import/servo_damping.hpp"
@@ -36,7 +37,8 @@ bool translate_flags_of_every_source(std::vector<std::pair<std::string, std::str
 }  // namespace
 
 bool refuses_carried_attribute(const std::string& mujoco_error) {
-  return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error);
+  return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error) ||
+         refuses_inheritrange(mujoco_error);
 }
 
 bool translate_carried_attribute(const std::string& mujoco_error, std::vector<std::pair<std::string, std::string>>& sources,
@@ -51,6 +53,8 @@ bool translate_carried_attribute(const std::string& mujoco_error, std::vector<st
   }
   if (refuses_joint_force_range(mujoco_error) && !left_out.force_range_as_user)
     return left_out.force_range_as_user = rewrite_every_source(sources, with_force_range_as_user);
+  if (refuses_inheritrange(mujoco_error) && !left_out.inheritrange_as_group)
+    return left_out.inheritrange_as_group = rewrite_every_source(sources, with_inheritrange_as_group);
   return false;
 }
 

@@ -1,7 +1,7 @@
 /// @file MuJoCo 3's attributes that eomgen carries by writing them as MuJoCo 2.2.2 reads them, where
-/// 2.2.2's schema refuses them: the spring and damper flags (passive_flags.hpp), and a position servo's
-/// kv and a joint's actuatorfrcrange read through user values (servo_damping.hpp,
-/// joint_force_limits.hpp). Every other newer attribute is left out (newer_mjcf.hpp); a body's gravcomp is
+/// 2.2.2's schema refuses them: the spring and damper flags (passive_flags.hpp), a position servo's kv
+/// and a joint's actuatorfrcrange read through user values (servo_damping.hpp, joint_force_limits.hpp)
+/// and a position servo's inheritrange through its group (inherited_ranges.hpp). Every other newer attribute is left out (newer_mjcf.hpp); a body's gravcomp is
 /// read before it is (gravity_compensation.hpp).
 #pragma once
 

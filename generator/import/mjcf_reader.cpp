@@ -22,6 +22,7 @@
 
 #include "common/independent_rows.hpp"
 #include "import/free_base.hpp"
+#include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
 #include "import/joint_torques.hpp"
 #include "import/newer_mjcf.hpp"
@@ -281,7 +282,17 @@ bool position_servo(const mjModel* m, int a) {
   return m->actuator_biastype[a] == mjBIAS_AFFINE && bias[0] == 0 && bias[1] == -m->actuator_gainprm[mjNGAIN * a] && bias[2] == 0;
 }
 
-void read_actuators(const mjModel* m, bool kv_as_user, Robot& r) {
+// MuJoCo 3's inheritrange, read as the group (inherited_ranges.hpp): the control range from the
+// joint's or tendon's
+void inherit_control_range(const mjModel* m, int a, RobotActuator& act, Robot& r) {
+  std::string why_not;
+  if (auto inherited = inherited_control_range(m, a, why_not)) act.limited = true, act.range = *inherited;
+  else if (!why_not.empty())
+    r.warnings.push_back({fmt::format("actuator '{}': inheritrange: {}", act.name, why_not), "actuator",
+                          name_of(m, m->name_actuatoradr, a), a + 1});
+}
+
+void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
     if (name.empty()) name = fmt::format("actuator{}", a);
@@ -311,7 +322,8 @@ void read_actuators(const mjModel* m, bool kv_as_user, Robot& r) {
     act.gear = m->actuator_gear[6 * a];
     if (m->actuator_biastype[a] == mjBIAS_AFFINE)
       act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
-    if (kv_as_user && m->nuser_actuator > 0 && position_servo(m, a)) act.bias[2] = -m->actuator_user[m->nuser_actuator * a];
+    if (left_out.kv_as_user && m->nuser_actuator > 0 && position_servo(m, a)) act.bias[2] = -m->actuator_user[m->nuser_actuator * a];
+    if (left_out.inheritrange_as_group && position_servo(m, a)) inherit_control_range(m, a, act, r);
     act.force_limited = m->actuator_forcelimited[a];
     act.force_range = {m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]};
     r.actuators.push_back(act);
@@ -497,7 +509,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
                            std::vector<double>(m->key_qpos + k * m->nq, m->key_qpos + (k + 1) * m->nq),
                            std::vector<double>(m->key_qvel + k * m->nv, m->key_qvel + (k + 1) * m->nv)});
   }
-  read_actuators(m, left_out.kv_as_user, r);
+  read_actuators(m, left_out, r);
   if (left_out.force_range_as_user) read_joint_force_ranges(m, r);
   if (left_out.kv_as_user)
     r.notes.push_back(fmt::format("the position servos' kv (MuJoCo 3's velocity gain) read through MuJoCo {}'s actuator user "

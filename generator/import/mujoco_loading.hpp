@@ -1,7 +1,7 @@
 /// @file Loading a robot file with MuJoCo 2.2.2's compiler (mj_loadXML), read again from memory
 /// with the changes a file needs first, each recorded for a warning or a note: MuJoCo 3's attributes
 /// left out (newer_mjcf.hpp) or written as 2.2.2 reads them (carried_newer_mjcf.hpp: the spring and
-/// damper flags, position servos' kv, joints' actuator force ranges), placeholders for mesh files it
+/// damper flags, position servos' kv and inheritrange, joints' actuator force ranges), placeholders for mesh files it
 /// cannot read (missing_meshes.hpp), mass bounds for moving bodies without mass (massless_bodies.hpp),
 /// a URDF's fixed links kept and its unreadable meshes left out (urdf_text.hpp).
 #pragma once
@@ -54,6 +54,7 @@ struct LeftOut {
   GravityCompensations gravity_compensation;  // the bodies' gravcomp, read before it is left out
   bool kv_as_user = false;               // <position kv> read as the actuators' user values (servo_damping.hpp)
   bool force_range_as_user = false;      // joints' actuatorfrcrange read as their user values (joint_force_limits.hpp)
+  bool inheritrange_as_group = false;    // <position inheritrange> read as the actuators' group (inherited_ranges.hpp)
 };
 
 /// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in
