@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <optional>
 
+#include "import/gravity_compensation.hpp"
 #include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
 #include "import/passive_flags.hpp"
 #include "import/servo_damping.hpp"
+#include "import/xml_text.hpp"
 
 namespace eomgen {
 
@@ -34,11 +36,24 @@ bool translate_flags_of_every_source(std::vector<std::pair<std::string, std::str
   return edited;
 }
 
+// the bodies' parts read, then the attribute left out of every <body>
+bool read_and_leave_out_gravcomp(std::vector<std::pair<std::string, std::string>>& sources, GravityCompensations& found) {
+  bool edited = false;
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    std::string& text = sources[k].second;
+    read_gravity_compensations(text, k, found);
+    std::string without = with_attribute_removed(text, "body", "gravcomp");
+    edited = edited || without != text;
+    text = without;
+  }
+  return edited;
+}
+
 }  // namespace
 
 bool refuses_carried_attribute(const std::string& mujoco_error) {
   return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error) ||
-         refuses_inheritrange(mujoco_error);
+         refuses_inheritrange(mujoco_error) || refuses_gravcomp(mujoco_error);
 }
 
 bool translate_carried_attribute(const std::string& mujoco_error, std::vector<std::pair<std::string, std::string>>& sources,
@@ -53,6 +68,7 @@ bool translate_carried_attribute(const std::string& mujoco_error, std::vector<st
   }
   if (refuses_joint_force_range(mujoco_error) && !left_out.force_range_as_user)
     return left_out.force_range_as_user = rewrite_every_source(sources, with_force_range_as_user);
+  if (refuses_gravcomp(mujoco_error)) return read_and_leave_out_gravcomp(sources, left_out.gravity_compensation);
   if (refuses_inheritrange(mujoco_error) && !left_out.inheritrange_as_group)
     return left_out.inheritrange_as_group = rewrite_every_source(sources, with_inheritrange_as_group);
   return false;

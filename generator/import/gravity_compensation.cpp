@@ -9,6 +9,10 @@
 
 namespace eomgen {
 
+bool refuses_gravcomp(const std::string& mujoco_error) {
+  return mujoco_error.find("unrecognized attribute: 'gravcomp'") != std::string::npos;
+}
+
 void read_gravity_compensations(const std::string& mjcf, std::size_t source, GravityCompensations& out) {
   int ordinal = 0;
   for (std::size_t at = element_start(mjcf, "body"); at != std::string::npos; at = element_start(mjcf, "body", at + 1), ++ordinal) {

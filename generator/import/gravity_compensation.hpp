@@ -1,8 +1,8 @@
 /// @file MuJoCo 2.3's gravcomp on a <body>, which MuJoCo 2.2.2's schema refuses: the part c of the
 /// body's weight that MuJoCo takes off by a force −c·m·g at its centre of mass, among the passive
 /// forces (off with them, and without gravity). The file is read without the attribute
-/// (newer_mjcf.hpp), so the parts are read from its text first, and the import carries them as
-/// that force (model_writer.hpp).
+/// (carried_newer_mjcf.hpp), so the parts are read from its text first, and the import carries them
+/// as that force (model_writer.hpp).
 #pragma once
 
 #include <string>
@@ -32,6 +32,9 @@ struct GravityCompensations {
 /// `out` with the gravcomp of every <body> of the file text `mjcf` (`source` as above); a value that
 /// is not a number is taken as 0 (MuJoCo's schema refuses it before this is read).
 void read_gravity_compensations(const std::string& mjcf, std::size_t source, GravityCompensations& out);
+
+/// Whether MuJoCo's error is its schema refusing gravcomp.
+bool refuses_gravcomp(const std::string& mujoco_error);
 
 /// `r`'s bodies with their parts of `found`, each body found by its name in `m`, an unnamed one by its
 /// place where the file includes none and its <body> elements are all of `m`'s bodies; a note says

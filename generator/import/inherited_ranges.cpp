@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <vector>
 
 #include "import/xml_text.hpp"
 
@@ -14,9 +13,7 @@ bool refuses_inheritrange(const std::string& mujoco_error) {
 }
 
 std::optional<std::string> with_inheritrange_as_group(const std::string& mjcf) {
-  static const std::vector<std::string> actuators{"general", "motor", "position", "velocity", "intvelocity",
-                                                  "damper", "cylinder", "muscle", "adhesion"};
-  if (any_tag_sets(mjcf, actuators, "group")) return std::nullopt;
+  if (any_tag_sets(mjcf, mjcf_actuator_elements(), "group")) return std::nullopt;
   std::string text = mjcf;
   for (std::size_t at = element_start(text, "position"); at != std::string::npos; at = element_start(text, "position", at + 1)) {
     std::size_t end = past_tag(text, at);

@@ -159,16 +159,13 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     if (!newer) break;
     if (sources.empty()) sources = mjcf_sources(path);
     bool edited = false;
-    for (std::size_t k = 0; k < sources.size(); ++k) {
-      std::string& text = sources[k].second;
-      // a body's gravcomp is carried (gravity_compensation.hpp): its values before it goes
-      if (newer->name == "gravcomp") read_gravity_compensations(text, k, left_out.gravity_compensation);
+    for (auto& [name, text] : sources) {
       std::string without = without_newer_attribute(text, *newer);
       edited = edited || without != text;
       text = without;
     }
     if (!edited) break;
-    if (newer->name != "gravcomp") left_out.newer.push_back(*newer);
+    left_out.newer.push_back(*newer);
     model = load(0.01);
   }
   if (!model) return model;

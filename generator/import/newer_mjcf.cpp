@@ -21,7 +21,6 @@ const Known known[] = {
     {"actuatorgravcomp", true,
      "the joint's gravity compensation is carried as a passive force, not through its actuators: the same unless the "
      "joint's actuatorfrcrange would clamp their sum"},
-    {"gravcomp", true, "a body's gravity compensation (carried: gravity_compensation.hpp reads it first)"},
     {"inheritrange", true,
      "an actuator's control range taken from its joint's range is not carried (where the value is not a whole number or "
      "the file groups its actuators itself: inherited_ranges.hpp)"},

@@ -1,7 +1,5 @@
 #include "import/servo_damping.hpp"
 
-#include <vector>
-
 #include "import/xml_text.hpp"
 
 namespace eomgen {
@@ -12,9 +10,7 @@ bool refuses_position_kv(const std::string& mujoco_error) {
 }
 
 bool has_actuator_user_values(const std::string& mjcf) {
-  static const std::vector<std::string> actuators{"general", "motor", "position", "velocity", "intvelocity",
-                                                  "damper", "cylinder", "muscle", "adhesion"};
-  return any_tag_sets(mjcf, actuators, "user");
+  return any_tag_sets(mjcf, mjcf_actuator_elements(), "user");
 }
 
 std::string with_kv_as_user(const std::string& mjcf) { return with_attribute_renamed(mjcf, "position", "kv", "user"); }

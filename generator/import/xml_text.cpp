@@ -67,6 +67,22 @@ bool any_tag_sets(const std::string& text, const std::vector<std::string>& eleme
   return false;
 }
 
+std::string with_attribute_removed(const std::string& text, const std::string& element, const std::string& name) {
+  std::string out = text;
+  for (std::size_t at = element_start(out, element); at != std::string::npos; at = element_start(out, element, at + 1)) {
+    std::size_t end = past_tag(out, at);
+    if (end == std::string::npos) break;
+    if (auto span = attribute_span(out, at, end, name)) out.erase(span->first, span->second - span->first);
+  }
+  return out;
+}
+
+const std::vector<std::string>& mjcf_actuator_elements() {
+  static const std::vector<std::string> elements{"general", "motor",  "position", "velocity", "intvelocity",
+                                                 "damper",  "cylinder", "muscle",  "adhesion"};
+  return elements;
+}
+
 std::string with_attribute_renamed(const std::string& text, const std::string& element, const std::string& from, const std::string& to) {
   std::string out = text;
   for (std::size_t at = element_start(out, element); at != std::string::npos; at = element_start(out, element, at + 1)) {

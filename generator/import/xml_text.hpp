@@ -31,6 +31,12 @@ std::optional<std::string> attribute(const std::string& text, std::size_t start,
 /// Whether a tag of one of `elements` (outside comments) sets `name`.
 bool any_tag_sets(const std::string& text, const std::vector<std::string>& elements, const std::string& name);
 
+/// `text` without attribute `name` in every `element` tag (outside comments); nothing else moves.
+std::string with_attribute_removed(const std::string& text, const std::string& element, const std::string& name);
+
+/// MJCF's actuator elements (their tags, and their defaults'), whose attributes MuJoCo keeps per actuator.
+const std::vector<std::string>& mjcf_actuator_elements();
+
 /// `text` with attribute `from` of every `element` tag (outside comments) renamed `to`, its value kept.
 std::string with_attribute_renamed(const std::string& text, const std::string& element, const std::string& from, const std::string& to);
 
