@@ -9,6 +9,7 @@
 #include "model/recursive_frames.hpp"
 #include "spatial/planar_tree.hpp"
 #include "spatial/spatial_algebra.hpp"
+#include "symbolic/expression_cost.hpp"
 
 namespace eomgen {
 
@@ -60,6 +61,19 @@ constexpr std::size_t loops_beyond_pairs_in_a_plane = 200;
 // Straight-line code costs its build time all the same: the ragdoll's header 1.57 MB against 646 KB
 // and g++ -O2 about 130 s against 15; the 12 balls' 2.35 MB against 853 KB, 353 s against 25.
 constexpr std::size_t loops_beyond_pairs_with_ball_joints = 400;
+// The pairs misjudge a tree whose straight-line code folds: Gymnasium's pusher.xml (a PR2 arm of
+// seven hinges about its links' own x, y and z axes, and two bodies on two slides each: 11
+// velocities, 34 pairs) ran jacobian_state in 1.08 µs in straight-line code against the loops'
+// 2.07–2.14 (g++ -O2, one core, the fastest of 201 batches, both headers in turn), its header 289 KB
+// against 135 and g++ -O2 of rhs and jacobian_state 4.0 s against 1.8. So beyond the cut a tree
+// of up to 64 pairs keeps straight-line code where its gradient, counted before it is written
+// (symbolic/expression_cost.hpp), is no longer than the seven-joint arm's, which issue 38's limits
+// on header and build time were set for (8,425 operations so counted; the pusher's 8,136). The
+// gantry and coupled hands (39 pairs, 10,173 and 10,231) and three legs of five hinges (45,
+// 17,851) keep the loops: straight-line code would run their jacobian_state faster too (the hands
+// 1.7 µs against 2.6–3.7 the same day) but their headers would be 449 KB and build in 9 s, not 2.
+constexpr std::size_t written_out_when_short_up_to_pairs = 64;
+constexpr long written_out_when_short_up_to_operations = 9000;
 
 // the pairs of a link and a link at or above it, weighted by their joints' velocities
 std::size_t joint_pairs(const std::vector<TreeLink>& links) {
@@ -528,6 +542,25 @@ std::vector<ex> written_expressions(const BodiesGradient& g) {
   return out;
 }
 
+// the closed form as expressions: its quantities appended to `out`
+InverseDynamicsGradient written_out_gradient(const std::vector<TreeLink>& links, const Vector3& gravity, const std::vector<ex>& ddq,
+                                             std::size_t velocities, std::size_t coordinates, std::vector<Intermediate>& out) {
+  Gradient g(links, out);
+  g.forward(gravity, ddq);
+  g.backward();
+  g.joint_quantities();
+  return g.pairs(velocities, coordinates);
+}
+
+// the operations of the quantities from `first` on and of the gradient's entries
+long written_out_operations(const std::vector<Intermediate>& out, std::size_t first, const InverseDynamicsGradient& g) {
+  std::vector<ex> all(g.bias);
+  for (std::size_t i = first; i < out.size(); ++i) all.push_back(out[i].definition);
+  for (const GiNaC::matrix* m : {&g.coordinates, &g.velocities, &g.mass_matrix})
+    for (unsigned i = 0; i < m->nops(); ++i) all.push_back(m->op(i));
+  return arithmetic_operations(all);
+}
+
 JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity, const std::vector<ex>& ddq,
                                       std::size_t velocities, std::size_t coordinates, std::vector<Intermediate>& out) {
   Gradient g(links, out);
@@ -536,12 +569,17 @@ JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const 
                                      [](const TreeLink& l) { return l.columns.size() > 1; });
   bool long_tree = ball_below_root ? pairs > loops_beyond_pairs_with_ball_joints
                                    : pairs > loops_beyond_pairs && (pairs > loops_beyond_pairs_in_a_plane || !moves_in_a_plane(links));
-  if (velocities > loops_beyond_velocities && long_tree && g.loops_take_it())
-    return g.loop_inputs(gravity, g.jointed_root(gravity, ddq));
-  g.forward(gravity, ddq);
-  g.backward();
-  g.joint_quantities();
-  return g.pairs(velocities, coordinates);
+  if (velocities <= loops_beyond_velocities || !long_tree || !g.loops_take_it())
+    return written_out_gradient(links, gravity, ddq, velocities, coordinates, out);
+  // pairs that straight-line code folds (axes along the links' own, slides) keep it where it stays short
+  if (pairs <= written_out_when_short_up_to_pairs) {
+    std::size_t first = out.size();
+    InverseDynamicsGradient written = written_out_gradient(links, gravity, ddq, velocities, coordinates, out);
+    long operations = written_out_operations(out, first, written);
+    if (operations <= written_out_when_short_up_to_operations) return written;
+    out.resize(first);
+  }
+  return g.loop_inputs(gravity, g.jointed_root(gravity, ddq));
 }
 
 }  // namespace eomgen

@@ -337,6 +337,45 @@ TEST(JointTreeDerivatives, TreesInOnePlaneKeepStraightLineCodeLonger) {
   expect_closed_form_agrees(three_by_five.c_str(), 15, 15);
 }
 
+// Gymnasium's pusher in shape: seven hinges about their links' own z, y, x, y, x, y, x axes, and
+// two bodies on two slides each (11 velocities, 34 pairs), a body on every moving frame
+std::string arm_beside_two_sliders() {
+  std::string coordinates, frames, bodies;
+  const char* axes[] = {R"(["0", "0", "1"])", R"(["0", "1", "0"])", R"(["1", "0", "0"])"};
+  auto add = [&](const std::string& name, const std::string& parent, const std::string& origin, const std::string& type,
+                 const char* axis, int k) {
+    coordinates += fmt::format("{} = 0.{}\n", name, k % 9 + 1);
+    frames += fmt::format("[[frames]]\nname = \"{0}\"\n{1}origin = {2}\njoint = {{ type = \"{3}\", axis = {4}, coordinate = \"{0}\" }}\n\n",
+                          name, parent.empty() ? "" : "parent = \"" + parent + "\"\n", origin, type, axis);
+    bodies += fmt::format("[[rigid_bodies]]\nname = \"{0}_body\"\nmass = \"1.{1}\"\nframe = \"{0}\"\n"
+                          "center = [\"0.05\", \"0.01\", \"0\"]\ninertia = [\"0.01\", \"0.02\", \"0.015\"]\n\n",
+                          name, k);
+  };
+  for (int k = 0; k < 7; ++k)
+    add(fmt::format("arm{}", k), k ? fmt::format("arm{}", k - 1) : "", k ? R"(["0.3", "0", "0"])" : R"(["0", "-0.6", "0"])",
+        "revolute", axes[k == 0 ? 0 : k % 2 ? 1 : 2], k);
+  for (const char* thing : {"object", "goal"}) {
+    add(fmt::format("{}_y", thing), "", R"(["0.45", "-0.05", "-0.3"])", "prismatic", axes[1], 7);
+    add(fmt::format("{}_x", thing), fmt::format("{}_y", thing), R"(["0", "0", "0"])", "prismatic", axes[2], 8);
+  }
+  return "[model]\nname = \"pusher\"\n\n[coordinates]\n" + coordinates + "\n" + frames + bodies +
+         "[gravity]\nacceleration = [\"0\", \"0\", \"-9.81\"]\n";
+}
+
+// Beyond 8 velocities and 32 pairs, a tree whose straight-line gradient folds to no more operations
+// than the seven-joint arm's keeps it (the pusher: twice as fast as the loops), and it agrees with
+// central differences; the gantry hand's oblique fingers (39 pairs) keep the loops
+TEST(JointTreeDerivatives, ATreeWhoseStraightLineCodeFoldsKeepsItBeyondThePairs) {
+  std::string pusher = arm_beside_two_sliders();
+  Equations e = derive_text(pusher);
+  ASSERT_EQ(e.num_velocities(), 11u);
+  EXPECT_FALSE(e.gradient_loops());
+  expect_closed_form_agrees(pusher.c_str(), 11, 11);
+  Derivation hand = derive_model_file(std::string(EOMGEN_SOURCE_DIR) + "/tests/crosscheck/models/gantry_hand.toml");
+  ASSERT_TRUE(hand.equations) << hand.diagnostics.format();
+  EXPECT_TRUE(hand.equations->gradient_loops());
+}
+
 // hinge_chain(3)'s root joint made `root_joint` and its gravity `gravity`; its ∂τ/∂q column is the
 // cyclic root's structural zero when `cyclic`, and every entry agrees with central differences
 void expect_root_column(const std::string& root_joint, const std::string& gravity, bool cyclic) {
