@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "import/automatic_limits.hpp"
 #include "import/gravity_compensation.hpp"
 #include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
@@ -53,7 +54,7 @@ bool read_and_leave_out_gravcomp(std::vector<std::pair<std::string, std::string>
 
 bool refuses_carried_attribute(const std::string& mujoco_error) {
   return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error) ||
-         refuses_inheritrange(mujoco_error) || refuses_gravcomp(mujoco_error);
+         refuses_inheritrange(mujoco_error) || refuses_gravcomp(mujoco_error) || refuses_range_without_limited(mujoco_error);
 }
 
 bool translate_carried_attribute(const std::string& mujoco_error, std::vector<std::pair<std::string, std::string>>& sources,
@@ -66,11 +67,17 @@ bool translate_carried_attribute(const std::string& mujoco_error, std::vector<st
     };
     return left_out.kv_as_user = rewrite_every_source(sources, kv);
   }
-  if (refuses_joint_force_range(mujoco_error) && !left_out.force_range_as_user)
-    return left_out.force_range_as_user = rewrite_every_source(sources, with_force_range_as_user);
+  // once the ranges cannot be read, neither attribute is (actuatorfrclimited="false" in a class, say)
+  if (refuses_joint_force_range(mujoco_error) && !left_out.force_range_as_user && !left_out.force_range_left_out) {
+    left_out.force_range_as_user = rewrite_every_source(sources, with_force_range_as_user);
+    left_out.force_range_left_out = !left_out.force_range_as_user;
+    return left_out.force_range_as_user;
+  }
   if (refuses_gravcomp(mujoco_error)) return read_and_leave_out_gravcomp(sources, left_out.gravity_compensation);
   if (refuses_inheritrange(mujoco_error) && !left_out.inheritrange_as_group)
     return left_out.inheritrange_as_group = rewrite_every_source(sources, with_inheritrange_as_group);
+  if (refuses_range_without_limited(mujoco_error) && !left_out.automatic_limits)
+    return left_out.automatic_limits = with_automatic_limits(sources);
   return false;
 }
 

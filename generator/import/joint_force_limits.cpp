@@ -7,6 +7,21 @@
 
 namespace eomgen {
 
+namespace {
+
+// whether the tag at `at` lies inside a <default> element (nested ones counted)
+bool inside_default(const std::string& text, std::size_t at) {
+  int open = 0;
+  for (std::size_t d = element_start(text, "default"); d != std::string::npos && d < at; d = element_start(text, "default", d + 1)) {
+    std::size_t end = past_tag(text, d);
+    if (end != std::string::npos && text[end - 2] != '/') ++open;
+  }
+  for (std::size_t c = text.find("</default"); c != std::string::npos && c < at; c = text.find("</default", c + 1)) --open;
+  return open > 0;
+}
+
+}  // namespace
+
 bool refuses_joint_force_range(const std::string& mujoco_error) {
   bool joint = mujoco_error.find("Element 'joint'") != std::string::npos;
   return joint && (mujoco_error.find("unrecognized attribute: 'actuatorfrcrange'") != std::string::npos ||
@@ -21,8 +36,18 @@ std::optional<std::string> with_force_range_as_user(const std::string& mjcf) {
   for (std::size_t at = element_start(text, "joint"); at != std::string::npos; at = element_start(text, "joint", at + 1)) {
     std::size_t end = past_tag(text, at);
     if (end == std::string::npos) break;
-    if (attribute(text, at, end, "actuatorfrclimited").value_or("auto") == "false") return std::nullopt;
-    if (auto span = attribute_span(text, at, end, "actuatorfrclimited")) text.erase(span->first, span->second - span->first);
+    bool unclamped = attribute(text, at, end, "actuatorfrclimited").value_or("auto") == "false";
+    // a class that switches the clamp off for its joints, whose ranges may come from other classes
+    if (unclamped && inside_default(text, at)) return std::nullopt;
+    auto erase = [&](const char* name) {
+      if (auto span = attribute_span(text, at, end, name)) {
+        text.erase(span->first, span->second - span->first);
+        end -= span->second - span->first;
+      }
+    };
+    erase("actuatorfrclimited");
+    // no clamp on this joint (a free joint's, often): zeros, whatever range its class gives
+    if (unclamped) erase("user"), text.insert(at + 6, " user=\"0 0\"");
   }
   return text;
 }

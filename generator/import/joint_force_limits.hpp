@@ -3,8 +3,10 @@
 /// read with each range written as the joint's `user` values, which MuJoCo 2.2.2 resolves through
 /// defaults, classes and childclass as MuJoCo 3 resolves the range, and the import clamps the sum
 /// of the actuators' generalized forces on each hinge and slide so limited (transmission_text.cpp).
-/// Not where the file has joint user values of its own, sets actuatorfrclimited="false" or turns
-/// autolimits off: there both attributes are left out with a warning (newer_mjcf.hpp).
+/// A joint that says actuatorfrclimited="false" itself (Unitree's free joints do) gets user values of
+/// zero, no range, whatever its class gives. Not where the file has joint user values of its own,
+/// sets actuatorfrclimited="false" in a default class or turns autolimits off: there both attributes
+/// are left out with a warning (newer_mjcf.hpp).
 #pragma once
 
 #include <optional>
@@ -19,8 +21,9 @@ namespace eomgen {
 /// Whether MuJoCo's error is its schema refusing actuatorfrcrange or actuatorfrclimited on a joint.
 bool refuses_joint_force_range(const std::string& mujoco_error);
 
-/// The text with every joint's actuatorfrcrange written as its user values and actuatorfrclimited
-/// left out; nothing where the text cannot be read so (see above).
+/// The text with every joint's actuatorfrcrange written as its user values (zeros where the joint
+/// says actuatorfrclimited="false") and actuatorfrclimited left out; nothing where the text cannot be
+/// read so (see above).
 std::optional<std::string> with_force_range_as_user(const std::string& mjcf);
 
 /// `r`'s hinges and slides with the ranges MuJoCo read as their user values (two numbers, not both

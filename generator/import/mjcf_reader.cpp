@@ -21,6 +21,7 @@
 #include <mujoco/mujoco.h>
 
 #include "common/independent_rows.hpp"
+#include "import/automatic_limits.hpp"
 #include "import/free_base.hpp"
 #include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
@@ -511,6 +512,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   }
   read_actuators(m, left_out, r);
   if (left_out.force_range_as_user) read_joint_force_ranges(m, r);
+  if (left_out.automatic_limits) note_automatic_limits(r);
   if (left_out.kv_as_user)
     r.notes.push_back(fmt::format("the position servos' kv (MuJoCo 3's velocity gain) read through MuJoCo {}'s actuator user "
                                   "values, which resolve defaults and classes alike",
@@ -537,7 +539,7 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
                                       "<inertial> (checked), and the animation draws no shape for them",
                                       left_out.unread_mesh_files, left_out.unread_mesh_names),
                           "", "", 0});
-  for (const NewerAttribute& a : left_out.newer)
+  for (const NewerMjcf& a : left_out.newer)
     r.warnings.push_back({fmt::format("'{}' is MuJoCo 2.3's or 3's, which MuJoCo {} does not read: left out; {}{}", a.name,
                                       mj_version_text(), a.consequence, a.enters_equations ? "" : ", which does not enter the equations"),
                           "", "", 0});

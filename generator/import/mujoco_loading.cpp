@@ -1,5 +1,5 @@
 // Loading a robot file with MuJoCo 2.2.2's compiler, from memory where the file needs changes
-// first: MuJoCo 3's attributes left out (newer_mjcf.hpp) or written as 2.2.2 reads them
+// first: MuJoCo 3's attributes and sensors left out (newer_mjcf.hpp) or written as 2.2.2 reads them
 // (carried_newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
 // for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
 // meshes left out (urdf_text.hpp).
@@ -111,7 +111,7 @@ std::variant<mjModel*, UnreadableRobot> without_massless_joints(mjModel* model, 
   return located(u, sources);
 }
 
-// an MJCF file, read again from memory without each attribute of a later MuJoCo that 2.2.2 refuses
+// an MJCF file, read again from memory without each attribute or sensor of a later MuJoCo that 2.2.2 refuses
 // (or with it written as 2.2.2 reads it: carried_newer_mjcf.hpp), in the file and in those it includes,
 // and with a placeholder for each mesh file it cannot read, kept only when no body takes its
 // inertia from a mesh (missing_meshes.hpp)
@@ -155,12 +155,12 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
         continue;
       }
     }
-    std::optional<NewerAttribute> newer = newer_attribute_refused(error);
+    std::optional<NewerMjcf> newer = newer_mjcf_refused(error);
     if (!newer) break;
     if (sources.empty()) sources = mjcf_sources(path);
     bool edited = false;
     for (auto& [name, text] : sources) {
-      std::string without = without_newer_attribute(text, *newer);
+      std::string without = without_newer_mjcf(text, *newer);
       edited = edited || without != text;
       text = without;
     }

@@ -49,12 +49,14 @@ struct LeftOut {
   bool mass_bounds = false;              // read with massless_bodies.hpp's bounds
   bool balanced_inertias = false;        // a URDF read with balanceinertia (unbalanced_inertias.hpp)
   bool positive_moments = false;         // a URDF read with its links of moments not above zero restated (the same)
-  std::vector<NewerAttribute> newer;     // attributes of later MuJoCo versions (newer_mjcf.hpp)
+  std::vector<NewerMjcf> newer;     // attributes and sensors of later MuJoCo versions (newer_mjcf.hpp)
   PassiveSwitches passive_flags;         // MuJoCo 3.3.6's spring and damper flags (passive_flags.hpp)
   GravityCompensations gravity_compensation;  // the bodies' gravcomp, read before it is left out
   bool kv_as_user = false;               // <position kv> read as the actuators' user values (servo_damping.hpp)
   bool force_range_as_user = false;      // joints' actuatorfrcrange read as their user values (joint_force_limits.hpp)
+  bool force_range_left_out = false;     // or, where they cannot be, left out with actuatorfrclimited
   bool inheritrange_as_group = false;    // <position inheritrange> read as the actuators' group (inherited_ranges.hpp)
+  bool automatic_limits = false;         // read with MuJoCo 3's default autolimits="true" (automatic_limits.hpp)
 };
 
 /// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in

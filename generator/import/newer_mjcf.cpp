@@ -1,5 +1,7 @@
 #include "import/newer_mjcf.hpp"
 
+#include <algorithm>
+
 #include "import/xml_text.hpp"
 
 namespace eomgen {
@@ -40,6 +42,12 @@ const Known known[] = {
     {"implicitfast", false, "MuJoCo's integrator (read as \"implicit\"; eomgen chooses its own)"},
 };
 
+// MuJoCo 3's sensors, which 2.2.2's schema refuses (tried one by one); a sensor measures and never
+// acts, and eomgen's import reads none
+const char* const newer_sensors[] = {"jointactuatorfrc", "tendonactuatorfrc", "camprojection", "insidesite", "distance",
+                                     "normal",           "fromto",            "contact",       "e_potential", "e_kinetic",
+                                     "tactile"};
+
 // the name quoted after `marker` in the message, or nothing
 std::optional<std::string> quoted_after(const std::string& message, const std::string& marker) {
   std::size_t at = message.find(marker);
@@ -49,18 +57,50 @@ std::optional<std::string> quoted_after(const std::string& message, const std::s
   return message.substr(start, end - start);
 }
 
+// the text without each `element` of its <sensor> sections, each replaced by its line breaks
+std::string without_sensor(const std::string& mjcf, const std::string& element) {
+  std::string text = mjcf;
+  for (std::size_t section = element_start(text, "sensor"); section != std::string::npos;
+       section = element_start(text, "sensor", section + 1)) {
+    std::size_t close = text.find("</sensor", section);
+    if (close == std::string::npos) break;
+    for (std::size_t at = element_start(text, element, section); at != std::string::npos && at < close;
+         at = element_start(text, element, at + 1)) {
+      std::size_t end = past_tag(text, at);
+      if (end == std::string::npos) return text;
+      if (text[end - 2] != '/') {
+        std::size_t closing = text.find("</" + element, end);
+        if (closing == std::string::npos || closing > close) return text;
+        end = past_tag(text, closing);
+      }
+      std::string breaks(std::size_t(std::count(text.begin() + long(at), text.begin() + long(end), '\n')), '\n');
+      text.replace(at, end - at, breaks);
+      close -= end - at - breaks.size();
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
-std::optional<NewerAttribute> newer_attribute_refused(const std::string& mujoco_error) {
+std::optional<NewerMjcf> newer_mjcf_refused(const std::string& mujoco_error) {
+  if (mujoco_error.find("unrecognized element") != std::string::npos) {
+    auto element = quoted_after(mujoco_error, "Element '");
+    for (const char* sensor : newer_sensors)
+      if (element && *element == sensor)
+        return NewerMjcf{sensor, false, "a sensor (eomgen's import reads none from any file)", true};
+    return std::nullopt;
+  }
   auto name = quoted_after(mujoco_error, "unrecognized attribute: '");
   if (!name) name = quoted_after(mujoco_error, "invalid keyword: '");
   if (!name) return std::nullopt;
   for (const Known& k : known)
-    if (*name == k.name) return NewerAttribute{k.name, k.enters_equations, k.consequence};
+    if (*name == k.name) return NewerMjcf{k.name, k.enters_equations, k.consequence};
   return std::nullopt;
 }
 
-std::string without_newer_attribute(const std::string& mjcf, const NewerAttribute& attribute) {
+std::string without_newer_mjcf(const std::string& mjcf, const NewerMjcf& attribute) {
+  if (attribute.sensor) return without_sensor(mjcf, attribute.name);
   std::string text = mjcf;
   if (attribute.name == "implicitfast") {
     for (std::size_t at = text.find("\"implicitfast\""); at != std::string::npos; at = text.find("\"implicitfast\"", at))

@@ -21,8 +21,12 @@ TEST(JointForceLimits, TheRangesAreWrittenAsTheJointsUserValues) {
   EXPECT_EQ(with_force_range_as_user("<default><joint actuatorfrcrange=\"-5 5\" actuatorfrclimited=\"true\"/></default>\n"
                                      "<!-- <joint actuatorfrcrange=\"-1 1\"/> -->\n<joint name=\"a\" actuatorfrcrange='-2 3'/>"),
             "<default><joint user=\"-5 5\" /></default>\n<!-- <joint actuatorfrcrange=\"-1 1\"/> -->\n<joint name=\"a\" user='-2 3'/>");
-  EXPECT_FALSE(with_force_range_as_user("<joint actuatorfrcrange=\"-5 5\" actuatorfrclimited=\"false\"/>"))
-      << "a range that does not clamp";
+  EXPECT_EQ(with_force_range_as_user("<default><joint actuatorfrcrange=\"-5 5\"/></default>\n"
+                                     "<joint actuatorfrcrange=\"-5 5\" actuatorfrclimited=\"false\"/><joint actuatorfrclimited='false'/>"),
+            "<default><joint user=\"-5 5\"/></default>\n<joint user=\"0 0\"  /><joint user=\"0 0\" />")
+      << "a joint's own range that does not clamp, and one that its class would give";
+  EXPECT_FALSE(with_force_range_as_user("<default><joint actuatorfrclimited=\"false\"/></default><joint actuatorfrcrange=\"-5 5\"/>"))
+      << "a class that switches the clamp off";
   EXPECT_FALSE(with_force_range_as_user("<compiler autolimits=\"false\"/><joint actuatorfrcrange=\"-5 5\"/>"));
   EXPECT_FALSE(with_force_range_as_user("<joint actuatorfrcrange=\"-5 5\"/><joint user=\"1 2\"/>")) << "the file's own user values";
   EXPECT_TRUE(with_force_range_as_user("<motor user=\"1\"/><joint actuatorfrcrange=\"-5 5\"/>")) << "an actuator's are another array";
@@ -57,7 +61,12 @@ TEST(JointForceLimits, TheJointsTotalIsClampedOrTheRangeWarnedOf) {
   EXPECT_NE(clamped.find("# note: the actuator force ranges (MuJoCo 3's actuatorfrcrange) of 1 joint(s)"), std::string::npos) << clamped;
   std::string unlimited = imported_hinge(limited_hinge(" actuatorfrclimited=\"false\""));
   EXPECT_NE(unlimited.find("generalized = { swing = \"10*drive\" }"), std::string::npos) << unlimited;
-  EXPECT_NE(unlimited.find("# not carried: 'actuatorfrcrange'"), std::string::npos) << unlimited;
+  EXPECT_EQ(unlimited.find("actuatorfrcrange"), std::string::npos) << "carried, as no clamp: " << unlimited;
+  std::string classed = limited_hinge(" class=\"loose\"");
+  classed.replace(classed.find("  <worldbody>"), 0, "  <default><default class=\"loose\"><joint actuatorfrclimited=\"false\"/></default></default>\n");
+  std::string warned = imported_hinge(classed);
+  EXPECT_NE(warned.find("generalized = { swing = \"10*drive\" }"), std::string::npos) << warned;
+  EXPECT_NE(warned.find("# not carried: 'actuatorfrcrange'"), std::string::npos) << warned;
 }
 
 }  // namespace

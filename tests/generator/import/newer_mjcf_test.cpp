@@ -16,28 +16,28 @@ namespace eomgen::test {
 namespace {
 
 TEST(NewerMjcf, TheRefusedAttributeIsNamedWhenItIsKnown) {
-  auto frc = newer_attribute_refused("Error: Schema violation: unrecognized attribute: 'actuatorfrcrange'\nElement 'joint', line 3\n");
+  auto frc = newer_mjcf_refused("Error: Schema violation: unrecognized attribute: 'actuatorfrcrange'\nElement 'joint', line 3\n");
   ASSERT_TRUE(frc);
   EXPECT_EQ(frc->name, "actuatorfrcrange");
   EXPECT_TRUE(frc->enters_equations);
-  auto integrator = newer_attribute_refused("Error: invalid keyword: 'implicitfast'\nElement 'option', line 2\n");
+  auto integrator = newer_mjcf_refused("Error: invalid keyword: 'implicitfast'\nElement 'option', line 2\n");
   ASSERT_TRUE(integrator);
   EXPECT_FALSE(integrator->enters_equations);
-  EXPECT_FALSE(newer_attribute_refused("Error: Schema violation: unrecognized attribute: 'dampin'\nElement 'joint', line 3\n"))
+  EXPECT_FALSE(newer_mjcf_refused("Error: Schema violation: unrecognized attribute: 'dampin'\nElement 'joint', line 3\n"))
       << "a typo is no newer attribute";
-  EXPECT_FALSE(newer_attribute_refused("Error: invalid keyword: 'hing'\nElement 'joint', line 3\n"));
+  EXPECT_FALSE(newer_mjcf_refused("Error: invalid keyword: 'hing'\nElement 'joint', line 3\n"));
 }
 
 TEST(NewerMjcf, OnlyTheAttributeGoesAndTheLinesStay) {
   std::string text = "<body gravcomp=\"1\" name='b'>\n  <joint actuatorgravcomp='true' actuatorfrcrange = \"-1 1\"\n"
                      "         damping=\"0.2\"/>\n<option integrator=\"implicitfast\"/>\n";
-  NewerAttribute frc{"actuatorfrcrange", true, ""}, gravcomp{"gravcomp", true, ""}, fast{"implicitfast", false, ""};
-  EXPECT_EQ(without_newer_attribute(text, frc), "<body gravcomp=\"1\" name='b'>\n  <joint actuatorgravcomp='true' \n"
+  NewerMjcf frc{"actuatorfrcrange", true, ""}, gravcomp{"gravcomp", true, ""}, fast{"implicitfast", false, ""};
+  EXPECT_EQ(without_newer_mjcf(text, frc), "<body gravcomp=\"1\" name='b'>\n  <joint actuatorgravcomp='true' \n"
                                                 "         damping=\"0.2\"/>\n<option integrator=\"implicitfast\"/>\n");
-  EXPECT_EQ(without_newer_attribute(text, gravcomp), "<body  name='b'>\n  <joint actuatorgravcomp='true' actuatorfrcrange = \"-1 1\"\n"
+  EXPECT_EQ(without_newer_mjcf(text, gravcomp), "<body  name='b'>\n  <joint actuatorgravcomp='true' actuatorfrcrange = \"-1 1\"\n"
                                                      "         damping=\"0.2\"/>\n<option integrator=\"implicitfast\"/>\n")
       << "actuatorgravcomp is another attribute";
-  EXPECT_NE(without_newer_attribute(text, fast).find("<option integrator=\"implicit\"/>"), std::string::npos);
+  EXPECT_NE(without_newer_mjcf(text, fast).find("<option integrator=\"implicit\"/>"), std::string::npos);
 }
 
 const char* const pendulum = R"(<mujoco model="newer">
@@ -85,6 +85,46 @@ TEST(NewerMjcf, AFileOfMujoco3IsReadWithoutItsNewerAttributes) {
   Diagnostics refused;
   EXPECT_FALSE(imported_model_text(newer_path, refused, false));
   EXPECT_NE(refused.format().find("unrecognized attribute: 'dampin'"), std::string::npos) << refused.format();
+}
+
+// MuJoCo 3's sensors (Unitree's files have a jointactuatorfrc for every joint): 2.2.2's schema
+// refuses the element, and a sensor never acts, so each such sensor is left out of the <sensor>
+// sections, with a warning; the same name elsewhere (a <contact> section) and a typo stay
+TEST(NewerMjcf, ASensorOfMujoco3IsLeftOutOfTheSensorSections) {
+  auto sensor = newer_mjcf_refused("Error: XML Error: Schema violation: unrecognized element\nElement 'jointactuatorfrc', line 12\n");
+  ASSERT_TRUE(sensor);
+  EXPECT_EQ(sensor->name, "jointactuatorfrc");
+  EXPECT_TRUE(sensor->sensor);
+  EXPECT_FALSE(sensor->enters_equations);
+  EXPECT_FALSE(newer_mjcf_refused("Error: XML Error: Schema violation: unrecognized element\nElement 'jointactuatorfrcs', line 12\n"));
+  std::string text = "<contact>\n  <contact name=\"kept\"/>\n</contact>\n<sensor>\n  <jointpos joint=\"j1\"/>\n"
+                     "  <contact name=\"c\"\n          geom1=\"g\"/>\n  <contact name=\"d\"><!-- x --></contact>\n</sensor>\n";
+  NewerMjcf contact{"contact", false, "", true};
+  EXPECT_EQ(without_newer_mjcf(text, contact),
+            "<contact>\n  <contact name=\"kept\"/>\n</contact>\n<sensor>\n  <jointpos joint=\"j1\"/>\n  \n\n  \n</sensor>\n");
+}
+
+TEST(NewerMjcf, AFileWithSensorsOfMujoco3IsReadWithoutThem) {
+  std::string older = pendulum;
+  older.replace(older.find("</mujoco>"), 9, "  <sensor>\n    <jointpos joint=\"j1\"/>\n  </sensor>\n</mujoco>");
+  std::string newer = older;
+  newer.replace(newer.find("    <jointpos"), 0, "    <jointactuatorfrc name=\"f1\" joint=\"j1\"/>\n    <e_kinetic name=\"T\"/>\n");
+  std::string newer_path = temporary_directory() + "/sensing.xml", older_path = temporary_directory() + "/sensed.xml";
+  std::ofstream(newer_path) << newer;
+  std::ofstream(older_path) << older;
+  Diagnostics newer_diagnostics, older_diagnostics;
+  auto newer_text = imported_model_text(newer_path, newer_diagnostics, false);
+  auto older_text = imported_model_text(older_path, older_diagnostics, false);
+  ASSERT_TRUE(newer_text) << newer_diagnostics.format();
+  ASSERT_TRUE(older_text) << older_diagnostics.format();
+  for (const char* name : {"'jointactuatorfrc'", "'e_kinetic'"})
+    EXPECT_NE(newer_text->find(std::string("# not carried: ") + name), std::string::npos) << name << " in\n" << *newer_text;
+  std::string without_notes = *newer_text;
+  for (std::size_t at = without_notes.find("a sensor ("); at != std::string::npos; at = without_notes.find("a sensor (")) {
+    std::size_t line = without_notes.rfind('\n', at) + 1;
+    without_notes.erase(line, without_notes.find('\n', at) + 1 - line);
+  }
+  EXPECT_EQ(without_notes.replace(without_notes.find("sensing.xml"), 11, "sensed.xml"), *older_text);
 }
 
 // mujoco_menagerie's scene.xml includes the robot's file, whose attributes are MuJoCo 3's
