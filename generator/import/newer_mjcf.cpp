@@ -12,6 +12,7 @@ struct Known {
   const char* name;
   bool enters_equations;
   const char* consequence;
+  const char* element = nullptr;  // the one element that has it, where the name is common (a light's type)
 };
 
 // attributes of MuJoCo 2.3 to 3.x seen in published robots, and what eomgen loses without them
@@ -40,6 +41,36 @@ const Known known[] = {
     {"eulerdamp", false, "a setting of MuJoCo's Euler integrator"},
     {"maxhullvert", false, "a setting of MuJoCo's convex hulls for contacts"},
     {"implicitfast", false, "MuJoCo's integrator (read as \"implicit\"; eomgen chooses its own)"},
+    // MuJoCo 3.x's, each tried on 2.2.2
+    {"island", false, "a setting of MuJoCo's constraint solver"},
+    {"nativeccd", false, "a setting of MuJoCo's collision detection"},
+    {"midphase", false, "a setting of MuJoCo's collision detection"},
+    {"o_friction", false, "an override of MuJoCo's contact friction"},
+    {"invdiscrete", false, "a setting of MuJoCo's inverse dynamics"},
+    {"autoreset", false, "a setting of MuJoCo's simulation loop"},
+    {"sleep", false, "a setting of MuJoCo's sleeping bodies"},
+    {"sleep_tolerance", false, "a setting of MuJoCo's sleeping bodies"},
+    {"memory", false, "MuJoCo's memory allocation"},
+    {"saveinertial", false, "an output of MuJoCo's compiler"},
+    {"assetdir", false,
+     "where MuJoCo finds meshes and textures (a mesh it cannot read is then a placeholder, where no body takes its inertia "
+     "from it)"},
+    {"alignfree", true, "free joints stay in their bodies' frames, not turned to the principal axes (the same motion)"},
+    {"realtime", false, "a setting of MuJoCo's viewer"},
+    {"ellipsoidinertia", false, "a setting of MuJoCo's viewer"},
+    {"bvactive", false, "a setting of MuJoCo's viewer"},
+    {"cameraid", false, "a setting of MuJoCo's viewer"},
+    {"orthographic", false, "a setting of MuJoCo's cameras"},
+    {"resolution", false, "a setting of MuJoCo's cameras"},
+    {"sensorsize", false, "a setting of MuJoCo's cameras"},
+    {"focal", false, "a setting of MuJoCo's cameras"},
+    {"focalpixel", false, "a setting of MuJoCo's cameras"},
+    {"principal", false, "a setting of MuJoCo's cameras"},
+    {"principalpixel", false, "a setting of MuJoCo's cameras"},
+    {"bulbradius", false, "a setting of MuJoCo's lights"},
+    {"intensity", false, "a setting of MuJoCo's lights"},
+    {"range", false, "a setting of MuJoCo's lights", "light"},
+    {"type", false, "a setting of MuJoCo's lights", "light"},
 };
 
 // MuJoCo 3's sensors, which 2.2.2's schema refuses (tried one by one); a sensor measures and never
@@ -88,19 +119,22 @@ std::optional<NewerMjcf> newer_mjcf_refused(const std::string& mujoco_error) {
     auto element = quoted_after(mujoco_error, "Element '");
     for (const char* sensor : newer_sensors)
       if (element && *element == sensor)
-        return NewerMjcf{sensor, false, "a sensor (eomgen's import reads none from any file)", true};
+        return NewerMjcf{sensor, false, "a sensor (eomgen's import reads none from any file)", true, ""};
     return std::nullopt;
   }
   auto name = quoted_after(mujoco_error, "unrecognized attribute: '");
   if (!name) name = quoted_after(mujoco_error, "invalid keyword: '");
   if (!name) return std::nullopt;
+  auto element = quoted_after(mujoco_error, "Element '");
   for (const Known& k : known)
-    if (*name == k.name) return NewerMjcf{k.name, k.enters_equations, k.consequence};
+    if (*name == k.name && (!k.element || element == std::string(k.element)))
+      return NewerMjcf{k.name, k.enters_equations, k.consequence, false, k.element ? k.element : ""};
   return std::nullopt;
 }
 
 std::string without_newer_mjcf(const std::string& mjcf, const NewerMjcf& attribute) {
   if (attribute.sensor) return without_sensor(mjcf, attribute.name);
+  if (!attribute.element.empty()) return with_attribute_removed(mjcf, attribute.element, attribute.name);
   std::string text = mjcf;
   if (attribute.name == "implicitfast") {
     for (std::size_t at = text.find("\"implicitfast\""); at != std::string::npos; at = text.find("\"implicitfast\"", at))

@@ -15,6 +15,7 @@ struct NewerMjcf {
   bool enters_equations;     // false: a solver or integrator setting of MuJoCo's own, or a sensor
   std::string consequence;   // what leaving it out means, for the warning
   bool sensor = false;       // an element of <sensor>, not an attribute
+  std::string element = {};  // the one element whose attribute it is ("light" for its type), or any
 };
 
 /// The newer attribute or sensor that MuJoCo's error names ("unrecognized attribute: 'X'", "invalid

@@ -40,6 +40,20 @@ TEST(NewerMjcf, OnlyTheAttributeGoesAndTheLinesStay) {
   EXPECT_NE(without_newer_mjcf(text, fast).find("<option integrator=\"implicit\"/>"), std::string::npos);
 }
 
+// a name as common as a light's `type` is known on that element alone, and left out of its tags alone
+TEST(NewerMjcf, ALightsTypeGoesFromTheLightsAlone) {
+  auto light = newer_mjcf_refused("Error: Schema violation: unrecognized attribute: 'type'\nElement 'light', line 3\n");
+  ASSERT_TRUE(light);
+  EXPECT_EQ(light->element, "light");
+  EXPECT_FALSE(light->enters_equations);
+  EXPECT_FALSE(newer_mjcf_refused("Error: Schema violation: unrecognized attribute: 'type'\nElement 'tendon', line 3\n"));
+  auto viewer = newer_mjcf_refused("Error: Schema violation: unrecognized attribute: 'realtime'\nElement 'global', line 3\n");
+  ASSERT_TRUE(viewer);
+  EXPECT_TRUE(viewer->element.empty());
+  EXPECT_EQ(without_newer_mjcf("<light type=\"spot\" pos=\"0 0 1\"/>\n<joint type=\"slide\"/>\n", *light),
+            "<light  pos=\"0 0 1\"/>\n<joint type=\"slide\"/>\n");
+}
+
 const char* const pendulum = R"(<mujoco model="newer">
   <option integrator="implicitfast" ls_iterations="5"/>
   <default><joint actuatorfrcrange="-10 10" damping="0.5"/></default>
