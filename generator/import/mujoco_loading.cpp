@@ -119,6 +119,9 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
   mjModel* model = mj_loadXML(path.c_str(), nullptr, error, size);
   Sources sources;
   std::vector<UnreadableMesh> meshes;
+  // the placeholders' edge, and twice it for the second reading: a metre, so that a mesh scaled from
+  // millimetres (scale="0.001 0.001 0.001", Robotiq's) still has a volume MuJoCo accepts (above 1e-15 m³)
+  const double edge = 1.0;
   auto load = [&](double mesh_size) {
     if (sources.empty()) sources = mjcf_sources(path);
     std::vector<std::pair<std::string, std::string>> placeholders;
@@ -138,20 +141,20 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
       if (bounded == sources[0].second) break;
       sources[0].second = bounded;
       left_out.mass_bounds = true;
-      model = load(0.01);
+      model = load(edge);
       continue;
     }
     if (std::optional<UnreadableMesh> mesh = unreadable_mesh(error); mesh && placeholder_mesh(*mesh, 1)) {
       auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
       if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
       meshes.push_back(*mesh);
-      model = load(0.01);
+      model = load(edge);
       continue;
     }
     if (refuses_carried_attribute(error)) {
       if (sources.empty()) sources = mjcf_sources(path);
       if (translate_carried_attribute(error, sources, left_out)) {
-        model = load(0.01);
+        model = load(edge);
         continue;
       }
     }
@@ -166,11 +169,11 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
     }
     if (!edited) break;
     left_out.newer.push_back(*newer);
-    model = load(0.01);
+    model = load(edge);
   }
   if (!model) return model;
   if (meshes.empty()) return without_massless_joints(model, left_out, sources);
-  std::unique_ptr<mjModel, void (*)(mjModel*)> larger(load(0.02), mj_deleteModel);
+  std::unique_ptr<mjModel, void (*)(mjModel*)> larger(load(2 * edge), mj_deleteModel);
   if (!larger) {
     mj_deleteModel(model);
     return nullptr;

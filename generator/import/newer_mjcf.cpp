@@ -55,6 +55,7 @@ const Known known[] = {
     {"assetdir", false,
      "where MuJoCo finds meshes and textures (a mesh it cannot read is then a placeholder, where no body takes its inertia "
      "from it)"},
+    {"content_type", false, "a file's format named (MuJoCo 2.2.2 takes it from the file's extension)"},
     {"alignfree", true, "free joints stay in their bodies' frames, not turned to the principal axes (the same motion)"},
     {"realtime", false, "a setting of MuJoCo's viewer"},
     {"ellipsoidinertia", false, "a setting of MuJoCo's viewer"},

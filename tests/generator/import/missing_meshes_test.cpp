@@ -91,6 +91,19 @@ TEST(MissingMeshes, ABodyWithItsInertialIsReadWithoutItsMeshes) {
       << "the robot is the file's without its meshes; the box fitted to a mesh is not drawn either";
 }
 
+// a mesh drawn in millimetres (scale 0.001, as Robotiq's gripper files have it) on a body without an
+// <inertial>: the placeholder scaled with it keeps a volume MuJoCo accepts (one of a centimetre's
+// edge had 1e-16 m³, and MuJoCo's "mesh volume is too small" hid the reason), so that the body is
+// refused by name
+TEST(MissingMeshes, AMeshScaledFromMillimetresStillNamesTheBodyThatNeedsIt) {
+  std::string millimetres = arm("\n        <geom type=\"mesh\" mesh=\"link2\"/>");
+  millimetres.replace(millimetres.find("file=\"link2.obj\""), 16, "file=\"link2.obj\" scale=\"0.001 0.001 0.001\"");
+  Diagnostics diagnostics;
+  EXPECT_FALSE(imported(millimetres, diagnostics));
+  EXPECT_NE(diagnostics.format().find("body 'b' takes its mass and inertia from its geoms, a mesh among them"), std::string::npos)
+      << diagnostics.format();
+}
+
 TEST(MissingMeshes, ABodyThatTakesItsInertiaFromAMeshIsRefusedByName) {
   Diagnostics diagnostics;
   EXPECT_FALSE(imported(arm("\n        <geom type=\"mesh\" mesh=\"link2\"/>"), diagnostics));
