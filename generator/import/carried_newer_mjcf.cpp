@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "import/automatic_limits.hpp"
+#include "import/frame_elements.hpp"
 #include "import/gravity_compensation.hpp"
 #include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
@@ -54,7 +55,8 @@ bool read_and_leave_out_gravcomp(std::vector<std::pair<std::string, std::string>
 
 bool refuses_carried_attribute(const std::string& mujoco_error) {
   return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error) ||
-         refuses_inheritrange(mujoco_error) || refuses_gravcomp(mujoco_error) || refuses_range_without_limited(mujoco_error);
+         refuses_inheritrange(mujoco_error) || refuses_gravcomp(mujoco_error) || refuses_range_without_limited(mujoco_error) ||
+         refuses_frame_element(mujoco_error);
 }
 
 bool translate_carried_attribute(const std::string& mujoco_error, std::vector<std::pair<std::string, std::string>>& sources,
@@ -78,6 +80,13 @@ bool translate_carried_attribute(const std::string& mujoco_error, std::vector<st
     return left_out.inheritrange_as_group = rewrite_every_source(sources, with_inheritrange_as_group);
   if (refuses_range_without_limited(mujoco_error) && !left_out.automatic_limits)
     return left_out.automatic_limits = with_automatic_limits(sources);
+  if (refuses_frame_element(mujoco_error) && left_out.frames_as_bodies == 0) {
+    int frames = 0;
+    for (const auto& source : sources) frames += frame_elements(source.second);
+    if (frames == 0 || !rewrite_every_source(sources, with_frames_as_bodies)) return false;
+    left_out.frames_as_bodies = frames;
+    return true;
+  }
   return false;
 }
 

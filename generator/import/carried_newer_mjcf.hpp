@@ -3,8 +3,9 @@
 /// and a joint's actuatorfrcrange read through user values (servo_damping.hpp, joint_force_limits.hpp)
 /// and a position servo's inheritrange through its group (inherited_ranges.hpp); a body's gravcomp
 /// is read from the text and then left out (gravity_compensation.hpp); and MuJoCo 3's default
-/// autolimits="true", set where 2.2.2 refuses a range without `limited` (automatic_limits.hpp). Every
-/// other newer attribute is left out with a warning (newer_mjcf.hpp).
+/// autolimits="true", set where 2.2.2 refuses a range without `limited` (automatic_limits.hpp); and the
+/// <frame> element, written as a welded <body> (frame_elements.hpp). Every other newer attribute is
+/// left out with a warning (newer_mjcf.hpp).
 #pragma once
 
 #include <string>

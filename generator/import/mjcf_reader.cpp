@@ -513,6 +513,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
   read_actuators(m, left_out, r);
   if (left_out.force_range_as_user) read_joint_force_ranges(m, r);
   if (left_out.automatic_limits) note_automatic_limits(r);
+  if (left_out.frames_as_bodies > 0)
+    r.notes.push_back(fmt::format("{} <frame> element(s) (MuJoCo 3) read as bodies welded to their parents at the frames' poses: "
+                                  "the same kinematics, and their geoms weigh what MuJoCo 3 has them weigh",
+                                  left_out.frames_as_bodies));
   if (left_out.kv_as_user)
     r.notes.push_back(fmt::format("the position servos' kv (MuJoCo 3's velocity gain) read through MuJoCo {}'s actuator user "
                                   "values, which resolve defaults and classes alike",

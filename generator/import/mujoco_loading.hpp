@@ -57,6 +57,7 @@ struct LeftOut {
   bool force_range_left_out = false;     // or, where they cannot be, left out with actuatorfrclimited
   bool inheritrange_as_group = false;    // <position inheritrange> read as the actuators' group (inherited_ranges.hpp)
   bool automatic_limits = false;         // read with MuJoCo 3's default autolimits="true" (automatic_limits.hpp)
+  int frames_as_bodies = 0;              // <frame> elements read as welded bodies (frame_elements.hpp)
 };
 
 /// The model of the file at `path` (a URDF's `urdf` text, empty for MJCF), with what was changed in
