@@ -37,6 +37,7 @@ set(EOMGEN_TEST_FILES
   generator/import/unbalanced_inertias_test.cpp     fast     sanitized
   generator/import/automatic_limits_test.cpp        fast     sanitized
   generator/import/frame_elements_test.cpp          fast     sanitized
+  generator/import/keyframe_text_test.cpp           fast     sanitized
   generator/import/free_base_test.cpp               fast     sanitized
   generator/import/right_angles_test.cpp            fast     sanitized
   generator/import/rounding_noise_test.cpp          fast     sanitized

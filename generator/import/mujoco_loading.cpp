@@ -1,8 +1,8 @@
 // Loading a robot file with MuJoCo 2.2.2's compiler, from memory where the file needs changes
 // first: MuJoCo 3's attributes and sensors left out (newer_mjcf.hpp) or written as 2.2.2 reads them
 // (carried_newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
-// for moving bodies without mass (massless_bodies.hpp), a URDF's fixed links kept and its unreadable
-// meshes left out (urdf_text.hpp).
+// for moving bodies without mass (massless_bodies.hpp), keyframes' trailing white space taken out
+// (keyframe_text.hpp), a URDF's fixed links kept and its unreadable meshes left out (urdf_text.hpp).
 #include "import/mujoco_loading.hpp"
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "import/carried_newer_mjcf.hpp"
+#include "import/keyframe_text.hpp"
 #include "import/massless_bodies.hpp"
 #include "import/missing_meshes.hpp"
 #include "import/unbalanced_inertias.hpp"
@@ -148,6 +149,18 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
       auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
       if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
       meshes.push_back(*mesh);
+      model = load(edge);
+      continue;
+    }
+    if (refuses_keyframe_length(error)) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      bool edited = false;
+      for (auto& source : sources) {
+        std::string trimmed = with_keyframe_values_trimmed(source.second);
+        edited = edited || trimmed != source.second;
+        source.second = trimmed;
+      }
+      if (!edited) break;
       model = load(edge);
       continue;
     }
