@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "import/model_writer.hpp"
 #include "pipeline.hpp"
 
 namespace eomgen::test {
@@ -190,6 +191,19 @@ std::string write_file(const std::string& file_name, const std::string& text) {
   std::string path = temporary_directory() + "/" + file_name;
   std::ofstream(path) << text;
   return path;
+}
+
+std::optional<std::string> imported_robot(const std::string& file_name, const std::string& text, Diagnostics& diagnostics) {
+  return imported_model_text(write_file(file_name, text), diagnostics, false);
+}
+
+std::string without_lines_starting(std::string text, const std::string& start) {
+  for (std::size_t at = text.find(start); at != std::string::npos; at = text.find(start, at))
+    if (at == 0 || text[at - 1] == '\n')
+      text.erase(at, text.find('\n', at) == std::string::npos ? std::string::npos : text.find('\n', at) + 1 - at);
+    else
+      ++at;
+  return text;
 }
 
 long line_breaks(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }

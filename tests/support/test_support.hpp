@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +67,14 @@ std::string temporary_directory();
 
 /// Writes `text` as the file FILE_NAME (a robot's `arm.urdf`) into a fresh temporary directory; its path.
 std::string write_file(const std::string& file_name, const std::string& text);
+
+/// The model text `eomgen import` writes for the robot file `text`, written as FILE_NAME (an
+/// MJCF's `arm.xml`) by write_file; nothing, and why in `diagnostics`, where it is refused.
+std::optional<std::string> imported_robot(const std::string& file_name, const std::string& text, Diagnostics& diagnostics);
+
+/// `text` without its lines that start with `start` ("# note: "): two files' imports compared but for
+/// what each says of itself.
+std::string without_lines_starting(std::string text, const std::string& start);
 
 /// How many line breaks the text has (an edit that keeps every line where it was keeps this).
 long line_breaks(const std::string& text);

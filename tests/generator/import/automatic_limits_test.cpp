@@ -4,7 +4,6 @@
 // ctrllimited="true" itself. A file that turns autolimits off keeps MuJoCo's error, as in MuJoCo 3.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "import/automatic_limits.hpp"
@@ -27,29 +26,21 @@ std::string ranged_hinge(const std::string& compiler, const std::string& limited
 )";
 }
 
-std::optional<std::string> imported_ranges_of(const std::string& name, const std::string& file, Diagnostics& diagnostics) {
-  std::string path = temporary_directory() + "/" + name + ".xml";
-  std::ofstream(path) << file;
-  return imported_model_text(path, diagnostics, false);
-}
-
 TEST(AutomaticLimits, ARangeWithoutLimitedLimitsAsInMujoco3) {
   EXPECT_TRUE(refuses_range_without_limited("Error: joint has `range` but not `limited`. set the autolimits=\"true\" compiler "
                                             "option, specify `limited` explicitly (\"true\" or \"false\"), or remove the `range` "
                                             "attribute.\nElement 'joint', line 5\n"));
   EXPECT_FALSE(refuses_range_without_limited("Error: Schema violation: unrecognized attribute: 'autolimit'\n"));
   Diagnostics automatic_diagnostics, stated_diagnostics, off_diagnostics;
-  auto automatic = imported_ranges_of("automatic", ranged_hinge("", "", ""), automatic_diagnostics);
-  auto stated = imported_ranges_of("stated", ranged_hinge("", " limited=\"true\"", " ctrllimited=\"true\""), stated_diagnostics);
+  auto automatic = imported_robot("automatic.xml", ranged_hinge("", "", ""), automatic_diagnostics);
+  auto stated = imported_robot("stated.xml", ranged_hinge("", " limited=\"true\"", " ctrllimited=\"true\""), stated_diagnostics);
   ASSERT_TRUE(automatic) << automatic_diagnostics.format();
   ASSERT_TRUE(stated) << stated_diagnostics.format();
   EXPECT_NE(automatic->find("generalized = { swing = \"10*clamp(drive, -0.5, 0.5)\" }"), std::string::npos) << *automatic;
-  std::string note = "# note: ranges without `limited`";
-  std::size_t at = automatic->find(note);
-  ASSERT_NE(at, std::string::npos) << *automatic;
-  std::string without_note = automatic->erase(at, automatic->find('\n', at) + 1 - at);
+  ASSERT_NE(automatic->find("# note: ranges without `limited`"), std::string::npos) << *automatic;
+  std::string without_note = without_lines_starting(*automatic, "# note: ");
   EXPECT_EQ(without_note.replace(without_note.find("automatic.xml"), 13, "stated.xml"), *stated);
-  EXPECT_FALSE(imported_ranges_of("off", ranged_hinge("  <compiler autolimits=\"false\"/>\n", "", ""), off_diagnostics));
+  EXPECT_FALSE(imported_robot("off.xml", ranged_hinge("  <compiler autolimits=\"false\"/>\n", "", ""), off_diagnostics));
   EXPECT_NE(off_diagnostics.format().find("but not `limited`"), std::string::npos) << off_diagnostics.format();
 }
 

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
 #include <random>
 #include <string>
@@ -60,8 +59,7 @@ std::string arm_text(const std::string& inertial, const std::string& contents) {
 using Model = std::unique_ptr<mjModel, void (*)(mjModel*)>;
 
 Model loaded(const std::string& name, const std::string& text) {
-  std::string path = temporary_directory() + "/" + name + ".xml";
-  std::ofstream(path) << text;
+  std::string path = write_file(name + ".xml", text);
   char error[500] = "";
   Model m(mj_loadXML(path.c_str(), nullptr, error, sizeof error), mj_deleteModel);
   EXPECT_TRUE(m) << error << "\n" << text;
@@ -108,10 +106,8 @@ TEST(FrameElements, AFrameIsAWeldedBodyThatWeighsAsInMujoco3) {
 }
 
 TEST(FrameElements, AFileWithFramesIsImported) {
-  std::string path = temporary_directory() + "/framed.xml";
-  std::ofstream(path) << arm_text("", in_a_frame);
   Diagnostics diagnostics;
-  auto text = imported_model_text(path, diagnostics, false);
+  auto text = imported_robot("framed.xml", arm_text("", in_a_frame), diagnostics);
   ASSERT_TRUE(text) << diagnostics.format();
   EXPECT_NE(text->find("# note: 1 <frame> element(s) (MuJoCo 3) read as bodies welded to their parents"), std::string::npos) << *text;
   EXPECT_NE(text->find("elbow"), std::string::npos) << *text;

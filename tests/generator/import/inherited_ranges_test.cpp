@@ -4,7 +4,6 @@
 // fractional value, or a file with groups of its own, leaves it out with a warning.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "import/inherited_ranges.hpp"
@@ -51,15 +50,11 @@ std::string ranged_file(const std::string& defaults, const std::string& actuator
 
 // the imported text, its file's name and its notes aside
 std::string imported_ranges(const std::string& name, const std::string& file) {
-  std::string path = temporary_directory() + "/" + name + ".xml";
-  std::ofstream(path) << file;
   Diagnostics diagnostics;
-  std::string text = imported_model_text(path, diagnostics, false).value_or("");
+  std::string text = imported_robot(name + ".xml", file, diagnostics).value_or("");
   EXPECT_FALSE(text.empty()) << diagnostics.format();
   if (std::size_t at = text.find(name + ".xml"); at != std::string::npos) text.replace(at, name.size() + 4, "ranges.xml");
-  for (std::size_t at = text.find("# note: "); at != std::string::npos; at = text.find("# note: ", at))
-    text.erase(at, text.find('\n', at) + 1 - at);
-  return text;
+  return without_lines_starting(text, "# note: ");
 }
 
 TEST(InheritedRanges, ServosTakeTheirJointsOrTendonsRangeThroughDefaultsAndClasses) {

@@ -4,7 +4,6 @@
 // MujocoImport.AJointsTotalActuatorForceIsClampedToItsRange.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "import/joint_force_limits.hpp"
@@ -47,10 +46,8 @@ std::string limited_hinge(const std::string& limited) {
 }
 
 std::string imported_hinge(const std::string& file) {
-  std::string path = temporary_directory() + "/clamp.xml";
-  std::ofstream(path) << file;
   Diagnostics diagnostics;
-  std::optional<std::string> text = imported_model_text(path, diagnostics, false);
+  std::optional<std::string> text = imported_robot("clamp.xml", file, diagnostics);
   EXPECT_TRUE(text) << diagnostics.format();
   return text.value_or("");
 }

@@ -3,7 +3,6 @@
 // file written on one line.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "import/keyframe_text.hpp"
@@ -41,12 +40,9 @@ std::string keyed_arm(const std::string& qpos, const std::string& ctrl) {
 }
 
 TEST(KeyframeText, AKeyWrittenOverSeveralLinesIsRead) {
-  std::string several = temporary_directory() + "/several.xml", one = temporary_directory() + "/oneline.xml";
-  std::ofstream(several) << keyed_arm("\n      0.3\n      -0.7\n    ", "0.5 ");
-  std::ofstream(one) << keyed_arm("0.3 -0.7", "0.5");
   Diagnostics several_diagnostics, one_diagnostics;
-  auto several_text = imported_model_text(several, several_diagnostics, false);
-  auto one_text = imported_model_text(one, one_diagnostics, false);
+  auto several_text = imported_robot("several.xml", keyed_arm("\n      0.3\n      -0.7\n    ", "0.5 "), several_diagnostics);
+  auto one_text = imported_robot("oneline.xml", keyed_arm("0.3 -0.7", "0.5"), one_diagnostics);
   ASSERT_TRUE(several_text) << several_diagnostics.format();
   ASSERT_TRUE(one_text) << one_diagnostics.format();
   EXPECT_NE(one_text->find("bent"), std::string::npos) << *one_text;

@@ -3,7 +3,6 @@
 // without the meshes; refused, naming the body, when a body takes its inertia from its geoms.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -71,9 +70,7 @@ std::string without_comments(const std::string& text) {
 }
 
 std::optional<std::string> imported(const std::string& xml, Diagnostics& diagnostics) {
-  std::string path = temporary_directory() + "/meshy.xml";
-  std::ofstream(path) << xml;
-  return imported_model_text(path, diagnostics, false);
+  return imported_robot("meshy.xml", xml, diagnostics);
 }
 
 TEST(MissingMeshes, ABodyWithItsInertialIsReadWithoutItsMeshes) {

@@ -123,12 +123,9 @@ TEST(NewerMjcf, AFileWithSensorsOfMujoco3IsReadWithoutThem) {
   older.replace(older.find("</mujoco>"), 9, "  <sensor>\n    <jointpos joint=\"j1\"/>\n  </sensor>\n</mujoco>");
   std::string newer = older;
   newer.replace(newer.find("    <jointpos"), 0, "    <jointactuatorfrc name=\"f1\" joint=\"j1\"/>\n    <e_kinetic name=\"T\"/>\n");
-  std::string newer_path = temporary_directory() + "/sensing.xml", older_path = temporary_directory() + "/sensed.xml";
-  std::ofstream(newer_path) << newer;
-  std::ofstream(older_path) << older;
   Diagnostics newer_diagnostics, older_diagnostics;
-  auto newer_text = imported_model_text(newer_path, newer_diagnostics, false);
-  auto older_text = imported_model_text(older_path, older_diagnostics, false);
+  auto newer_text = imported_robot("sensing.xml", newer, newer_diagnostics);
+  auto older_text = imported_robot("sensed.xml", older, older_diagnostics);
   ASSERT_TRUE(newer_text) << newer_diagnostics.format();
   ASSERT_TRUE(older_text) << older_diagnostics.format();
   for (const char* name : {"'jointactuatorfrc'", "'e_kinetic'"})

@@ -5,7 +5,6 @@
 // against files it reads that say the same: the springs or dampers left out, or passive="disable".
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "import/model_writer.hpp"
@@ -30,10 +29,8 @@ std::string sprung_pendulum_file(const std::string& option, const std::string& j
 }
 
 std::string imported_file(const std::string& file) {
-  std::string path = temporary_directory() + "/flags.xml";
-  std::ofstream(path) << file;
   Diagnostics diagnostics;
-  std::optional<std::string> text = imported_model_text(path, diagnostics, false);
+  std::optional<std::string> text = imported_robot("flags.xml", file, diagnostics);
   EXPECT_TRUE(text) << diagnostics.format();
   return text.value_or("");
 }

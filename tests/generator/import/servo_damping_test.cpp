@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "import/model_writer.hpp"
@@ -50,14 +49,10 @@ std::string servo_file(const std::string& defaults, const std::string& actuators
 }
 
 std::string imported_servos(const std::string& name, const std::string& file, Diagnostics& diagnostics, bool notes = false) {
-  std::string path = temporary_directory() + "/" + name + ".xml";
-  std::ofstream(path) << file;
-  std::string text = imported_model_text(path, diagnostics, false).value_or("");
+  std::string text = imported_robot(name + ".xml", file, diagnostics).value_or("");
   // the file's name and the notes aside
   if (std::size_t at = text.find(name + ".xml"); at != std::string::npos) text.replace(at, name.size() + 4, "servos.xml");
-  for (std::size_t at = text.find("# note: "); !notes && at != std::string::npos; at = text.find("# note: ", at))
-    text.erase(at, text.find('\n', at) + 1 - at);
-  return text;
+  return notes ? text : without_lines_starting(text, "# note: ");
 }
 
 TEST(ServoDamping, KvThroughDefaultsAndClassesIsTheVelocitysBias) {
