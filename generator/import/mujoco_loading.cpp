@@ -298,6 +298,7 @@ UnreadableRobot unreadable_robot(const std::string& text) {
 
 UnreadableRobot unreadable_mjcf(const std::string& mujoco_error, const std::string& path) {
   UnreadableRobot u = unreadable_robot(mujoco_error);
+  if (std::optional<std::string> hint = newer_element_hint(mujoco_error)) u.hint = *hint;
   return u.line > 0 || u.object.empty() ? u : located(u, mjcf_sources(path));
 }
 

@@ -133,6 +133,25 @@ std::optional<NewerMjcf> newer_mjcf_refused(const std::string& mujoco_error) {
   return std::nullopt;
 }
 
+std::optional<std::string> newer_element_hint(const std::string& mujoco_error) {
+  if (mujoco_error.find("unrecognized element") == std::string::npos) return std::nullopt;
+  auto element = quoted_after(mujoco_error, "Element '");
+  if (!element) return std::nullopt;
+  const std::pair<const char*, const char*> hints[] = {
+      {"replicate", "MuJoCo 3's <replicate> is not carried: write its copies out as bodies"},
+      {"attach", "MuJoCo 3's <attach> is not carried: write the attached model's bodies into the file"},
+      {"flexcomp", "MuJoCo 3's deformable bodies (flexes) are not carried: eomgen models rigid bodies"},
+      {"flex", "MuJoCo 3's deformable bodies (flexes) are not carried: eomgen models rigid bodies"},
+      {"plugin", "MuJoCo's plugins are not carried: leave them out, or write what they do as forces of the model"},
+      {"extension", "MuJoCo's plugins are not carried: leave them out, or write what they do as forces of the model"},
+      {"instance", "MuJoCo's plugins are not carried: leave them out, or write what they do as forces of the model"},
+      {"frame", "a <frame> is read as a body welded to its parent, which a joint or an <inertial> inside it would move: "
+                "put them in a <body> of their own"}};
+  for (const auto& [name, hint] : hints)
+    if (*element == name) return std::string(hint);
+  return std::nullopt;
+}
+
 std::string without_newer_mjcf(const std::string& mjcf, const NewerMjcf& attribute) {
   if (attribute.sensor) return without_sensor(mjcf, attribute.name);
   if (!attribute.element.empty()) return with_attribute_removed(mjcf, attribute.element, attribute.name);

@@ -27,6 +27,11 @@ std::optional<NewerMjcf> newer_mjcf_refused(const std::string& mujoco_error);
 /// moves, line breaks included.
 std::string without_newer_mjcf(const std::string& mjcf, const NewerMjcf& attribute);
 
+/// What to do about an element of a later MuJoCo that MuJoCo's error refuses and that eomgen does not
+/// carry (<replicate>, <attach>, flexes, plugins; a <frame> that holds a joint), for the error's hint;
+/// nothing for any other error.
+std::optional<std::string> newer_element_hint(const std::string& mujoco_error);
+
 /// The files an MJCF text includes (<include file="..."/>, outside comments), as written, in order.
 std::vector<std::string> included_files(const std::string& mjcf);
 

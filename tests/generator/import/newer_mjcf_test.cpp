@@ -138,6 +138,22 @@ TEST(NewerMjcf, AFileWithSensorsOfMujoco3IsReadWithoutThem) {
   EXPECT_EQ(without_notes.replace(without_notes.find("sensing.xml"), 11, "sensed.xml"), *older_text);
 }
 
+// an element of MuJoCo 3 that eomgen does not carry stays MuJoCo's error, with a hint that says so
+TEST(NewerMjcf, AnElementThatIsNotCarriedSaysWhatToDo) {
+  auto hint = newer_element_hint("Error: XML Error: Schema violation: unrecognized element\nElement 'replicate', line 27\n");
+  ASSERT_TRUE(hint);
+  EXPECT_NE(hint->find("write its copies out as bodies"), std::string::npos) << *hint;
+  EXPECT_FALSE(newer_element_hint("Error: XML Error: Schema violation: unrecognized element\nElement 'bodies', line 3\n"));
+  EXPECT_FALSE(newer_element_hint("Error: Schema violation: unrecognized attribute: 'replicate'\nElement 'body', line 3\n"));
+  std::string replicated = pendulum;
+  replicated.replace(replicated.find("  </worldbody>"), 0,
+                     "    <replicate count=\"3\" offset=\"0.5 0 0\">\n      <body name=\"c\"><joint/><geom size=\"0.1\"/></body>\n"
+                     "    </replicate>\n");
+  Diagnostics diagnostics;
+  EXPECT_FALSE(imported_robot("replicated.xml", replicated, diagnostics));
+  EXPECT_NE(diagnostics.format().find("hint: MuJoCo 3's <replicate> is not carried"), std::string::npos) << diagnostics.format();
+}
+
 // mujoco_menagerie's scene.xml includes the robot's file, whose attributes are MuJoCo 3's
 TEST(NewerMjcf, AnIncludedFileIsReadWithoutItsNewerAttributesToo) {
   EXPECT_EQ(included_files("<mujoco>\n<!-- <include file=\"no.xml\"/> -->\n  <include file=\"robot.xml\"/>\n"
