@@ -39,12 +39,6 @@ std::vector<Tag> tags_of(const std::string& text) {
   return tags;
 }
 
-// a frame's opening tag, and whether the welded body written for it weighs nothing
-struct FrameTag {
-  std::size_t tag;
-  bool weightless;
-};
-
 }  // namespace
 
 bool refuses_frame_element(const std::string& mujoco_error) {
@@ -66,7 +60,7 @@ std::optional<std::string> with_frames_as_bodies(const std::string& mjcf) {
   // the bodies that state their <inertial>, and for each frame the body around it (its tag, or none)
   std::set<std::size_t> stated;
   std::vector<std::size_t> open;  // tags of the open elements
-  std::vector<std::pair<std::size_t, long>> frames;
+  std::vector<std::pair<std::size_t, long>> frames;  // a frame's tag and the body's around it, or −1
   for (std::size_t k = 0; k < tags.size(); ++k) {
     const Tag& t = tags[k];
     if (t.closing) {
@@ -89,9 +83,10 @@ std::optional<std::string> with_frames_as_bodies(const std::string& mjcf) {
     if (!t.empty) open.push_back(k);
   }
   if (frames.empty()) return mjcf;
-  std::vector<FrameTag> rewritten;
+  // the frames whose welded bodies weigh nothing: those in a body that states its <inertial>, or in the world
+  std::set<std::size_t> weightless;
   for (const auto& [tag, around] : frames)
-    rewritten.push_back({tag, !geoms_always_weigh && (around < 0 || stated.count(std::size_t(around)) > 0)});
+    if (!geoms_always_weigh && (around < 0 || stated.count(std::size_t(around)) > 0)) weightless.insert(tag);
   // from the back, so that the tags' places stay valid
   std::string text = mjcf;
   for (std::size_t k = tags.size(); k-- > 0;) {
@@ -101,12 +96,10 @@ std::optional<std::string> with_frames_as_bodies(const std::string& mjcf) {
       text.replace(t.start, t.end - t.start, "</body>");
       continue;
     }
-    bool weightless = false;
-    for (const FrameTag& f : rewritten) weightless = weightless || (f.tag == k && f.weightless);
     std::string opening = text.substr(t.start, t.end - t.start);
     if (auto name = attribute_span(opening, 0, opening.size(), "name")) opening.erase(name->first, name->second - name->first);
     opening.replace(1, 5, "body");
-    if (weightless && !t.empty) opening += "<inertial pos=\"0 0 0\" mass=\"0\" diaginertia=\"0 0 0\"/>";
+    if (weightless.count(k) > 0 && !t.empty) opening += "<inertial pos=\"0 0 0\" mass=\"0\" diaginertia=\"0 0 0\"/>";
     text.replace(t.start, t.end - t.start, opening);
   }
   return text;

@@ -160,9 +160,10 @@ std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
 /// Straight-line code for them grows with the tree's pairs of joints, loops do not: a tree of
 /// more than 8 velocities and more than 32 pairs of a joint and one at or above it, counted by
 /// velocities (200 pairs for a tree that moves in one plane, spatial/planar_tree.hpp; the measured
-/// crossovers, in joint_tree_derivatives.cpp), whose joints
+/// crossovers, in gradient_form.cpp), whose joints
 /// are hinges and slides, those that follow another's coordinate too, below a root joint of any
-/// kind (a floating base), gets the loops' inputs instead.
+/// kind (a floating base), gets the loops' inputs instead, unless its straight-line gradient folds to
+/// no more operations than a seven-joint arm's (a few axes along the links' own, slides).
 JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                       const std::vector<GiNaC::ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                       std::vector<Intermediate>& out);
