@@ -47,7 +47,7 @@ std::optional<std::string> with_force_range_as_user(const std::string& mjcf) {
     };
     erase("actuatorfrclimited");
     // no clamp on this joint (a free joint's, often): zeros, whatever range its class gives
-    if (unclamped) erase("user"), text.insert(at + 6, " user=\"0 0\"");
+    if (unclamped) erase("user"), text.insert(at + std::string("<joint").size(), " user=\"0 0\"");
   }
   return text;
 }
