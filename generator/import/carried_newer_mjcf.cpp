@@ -54,7 +54,7 @@ bool read_and_leave_out_gravcomp(std::vector<std::pair<std::string, std::string>
 }  // namespace
 
 bool refuses_carried_attribute(const std::string& mujoco_error) {
-  return refuses_passive_flag(mujoco_error) || refuses_position_kv(mujoco_error) || refuses_joint_force_range(mujoco_error) ||
+  return refuses_passive_flag(mujoco_error) || refuses_position_damping(mujoco_error) || refuses_joint_force_range(mujoco_error) ||
          refuses_inheritrange(mujoco_error) || refuses_gravcomp(mujoco_error) || refuses_range_without_limited(mujoco_error) ||
          refuses_frame_element(mujoco_error);
 }
@@ -62,12 +62,12 @@ bool refuses_carried_attribute(const std::string& mujoco_error) {
 bool translate_carried_attribute(const std::string& mujoco_error, std::vector<std::pair<std::string, std::string>>& sources,
                                  LeftOut& left_out) {
   if (refuses_passive_flag(mujoco_error)) return translate_flags_of_every_source(sources, left_out.passive_flags);
-  if (refuses_position_kv(mujoco_error) && !left_out.kv_as_user) {
-    auto kv = [](const std::string& text) -> std::optional<std::string> {
+  if (refuses_position_damping(mujoco_error) && !left_out.servo_damping_as_user) {
+    auto damping = [](const std::string& text) -> std::optional<std::string> {
       if (has_actuator_user_values(text)) return std::nullopt;
-      return with_kv_as_user(text);
+      return with_servo_damping_as_user(text);
     };
-    return left_out.kv_as_user = rewrite_every_source(sources, kv);
+    return left_out.servo_damping_as_user = rewrite_every_source(sources, damping);
   }
   // once the ranges cannot be read, neither attribute is (actuatorfrclimited="false" in a class, say)
   if (refuses_joint_force_range(mujoco_error) && !left_out.force_range_as_user && !left_out.force_range_left_out) {

@@ -29,6 +29,7 @@
 #include "import/newer_mjcf.hpp"
 #include "import/option_forces.hpp"
 #include "import/right_angles.hpp"
+#include "import/servo_damping.hpp"
 #include "import/urdf_text.hpp"
 
 namespace eomgen {
@@ -276,7 +277,7 @@ void read_tendon_springs(const mjModel* m, Robot& r) {
   }
 }
 
-// MuJoCo 3's position servo with kv, read as its user value (servo_damping.hpp): bias [0, −kp, 0] as
+// MuJoCo 3's position servo with kv or dampratio, read as its user value (servo_damping.hpp): bias [0, −kp, 0] as
 // MuJoCo 2.2.2 sets it, and the velocity's −kv
 bool position_servo(const mjModel* m, int a) {
   const double* bias = m->actuator_biasprm + mjNBIAS * a;
@@ -294,6 +295,9 @@ void inherit_control_range(const mjModel* m, int a, RobotActuator& act, Robot& r
 }
 
 void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
+  // at qpos0, for a servo's damping ratio (servo_damping.hpp)
+  std::unique_ptr<mjData, void (*)(mjData*)> initial(left_out.servo_damping_as_user ? mj_makeData(m) : nullptr, mj_deleteData);
+  if (initial) mj_fwdPosition(m, initial.get());
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
     if (name.empty()) name = fmt::format("actuator{}", a);
@@ -323,7 +327,8 @@ void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
     act.gear = m->actuator_gear[6 * a];
     if (m->actuator_biastype[a] == mjBIAS_AFFINE)
       act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
-    if (left_out.kv_as_user && m->nuser_actuator > 0 && position_servo(m, a)) act.bias[2] = -m->actuator_user[m->nuser_actuator * a];
+    if (left_out.servo_damping_as_user && m->nuser_actuator > 0 && position_servo(m, a))
+      act.bias[2] = -servo_velocity_gain(m, initial.get(), a, m->actuator_user[m->nuser_actuator * a]);
     if (left_out.inheritrange_as_group && position_servo(m, a)) inherit_control_range(m, a, act, r);
     act.force_limited = m->actuator_forcelimited[a];
     act.force_range = {m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]};
@@ -517,9 +522,10 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
     r.notes.push_back(fmt::format("{} <frame> element(s) (MuJoCo 3) read as bodies welded to their parents at the frames' poses: "
                                   "the same kinematics, and their geoms weigh what MuJoCo 3 has them weigh",
                                   left_out.frames_as_bodies));
-  if (left_out.kv_as_user)
-    r.notes.push_back(fmt::format("the position servos' kv (MuJoCo 3's velocity gain) read through MuJoCo {}'s actuator user "
-                                  "values, which resolve defaults and classes alike",
+  if (left_out.servo_damping_as_user)
+    r.notes.push_back(fmt::format("the position servos' kv and dampratio (MuJoCo 3's velocity gain, and that gain as the damping "
+                                  "ratio ζ of kv = 2 ζ sqrt(kp m), m the inertia the servo sees at qpos0, as MuJoCo 3 takes it) "
+                                  "read through MuJoCo {}'s actuator user values, which resolve defaults and classes alike",
                                   mj_version_text()));
   read_tendon_springs(m, r);
   apply_option_forces(m, left_out.passive_flags, r);

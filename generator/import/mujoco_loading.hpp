@@ -52,7 +52,7 @@ struct LeftOut {
   std::vector<NewerMjcf> newer;     // attributes and sensors of later MuJoCo versions (newer_mjcf.hpp)
   PassiveSwitches passive_flags;         // MuJoCo 3.3.6's spring and damper flags (passive_flags.hpp)
   GravityCompensations gravity_compensation;  // the bodies' gravcomp, read before it is left out
-  bool kv_as_user = false;               // <position kv> read as the actuators' user values (servo_damping.hpp)
+  bool servo_damping_as_user = false;    // <position kv, dampratio> read as the actuators' user values (servo_damping.hpp)
   bool force_range_as_user = false;      // joints' actuatorfrcrange read as their user values (joint_force_limits.hpp)
   bool force_range_left_out = false;     // or, where they cannot be, left out with actuatorfrclimited
   bool inheritrange_as_group = false;    // <position inheritrange> read as the actuators' group (inherited_ranges.hpp)

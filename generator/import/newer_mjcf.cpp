@@ -27,7 +27,9 @@ const Known known[] = {
     {"inheritrange", true,
      "an actuator's control range taken from its joint's range is not carried (where the value is not a whole number or "
      "the file groups its actuators itself: inherited_ranges.hpp)"},
-    {"dampratio", true, "a position actuator's damping given as a ratio is not carried"},
+    {"dampratio", true,
+     "a position actuator's damping given as a ratio is not carried (the file's own user values leave no place to read it "
+     "through, or the ratio is negative: servo_damping.hpp)"},
     {"kv", true,
      "a position actuator's velocity gain is not carried (the file's own user values leave no place to read it through: "
      "servo_damping.hpp)"},

@@ -1,10 +1,13 @@
-// MuJoCo 3's kv on a position servo (generator/import/servo_damping.hpp), which MuJoCo 2.2.2 refuses:
-// read through the actuators' user values, which MuJoCo resolves through defaults and classes, so
-// that the import equals that of the file MuJoCo 2.2.2 reads with the same servos written as
-// <general> actuators with the velocity's bias; a file with user values of its own keeps them and
-// its kv is left out with a warning.
+// MuJoCo 3's kv and dampratio on a position servo (generator/import/servo_damping.hpp), which MuJoCo
+// 2.2.2 refuses: read through the actuators' user values, which MuJoCo resolves through defaults and
+// classes, so that the import equals that of the file MuJoCo 2.2.2 reads with the same servos written
+// as <general> actuators with the velocity's bias, a damping ratio's gain being the one that the
+// mass matrix at qpos0, worked out by hand here, gives; a file with user values of its own keeps them
+// and its kv is left out with a warning.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -16,12 +19,17 @@ namespace eomgen::test {
 namespace {
 
 TEST(ServoDamping, OnlyAPositionServosKvIsReadAsItsUserValue) {
-  EXPECT_TRUE(refuses_position_kv("Error: Schema violation: unrecognized attribute: 'kv'\nElement 'position', line 4\n"));
-  EXPECT_FALSE(refuses_position_kv("Error: Schema violation: unrecognized attribute: 'kv'\nElement 'motor', line 4\n"));
-  EXPECT_EQ(with_kv_as_user("<default><position kp=\"4\" kv='0.5'/></default>\n<!-- <position kv=\"1\"/> -->\n"
+  EXPECT_TRUE(refuses_position_damping("Error: Schema violation: unrecognized attribute: 'kv'\nElement 'position', line 4\n"));
+  EXPECT_FALSE(refuses_position_damping("Error: Schema violation: unrecognized attribute: 'kv'\nElement 'motor', line 4\n"));
+  EXPECT_EQ(with_servo_damping_as_user("<default><position kp=\"4\" kv='0.5'/></default>\n<!-- <position kv=\"1\"/> -->\n"
                             "<velocity kv=\"2\"/><position\n  joint=\"a\" kv=\"3\"/>"),
             "<default><position kp=\"4\" user='0.5'/></default>\n<!-- <position kv=\"1\"/> -->\n"
             "<velocity kv=\"2\"/><position\n  joint=\"a\" user=\"3\"/>");
+  EXPECT_TRUE(refuses_position_damping("Error: Schema violation: unrecognized attribute: 'dampratio'\nElement 'position', line 4\n"));
+  EXPECT_EQ(with_servo_damping_as_user("<position kp=\"4\" dampratio=' 0.5'/>\n<position joint=\"a\" dampratio=\"1\" kp=\"2\"/>"),
+            "<position kp=\"4\" user=' -0.5'/>\n<position joint=\"a\" user=\"-1\" kp=\"2\"/>")
+      << "a damping ratio is the user value's negative";
+  EXPECT_EQ(with_servo_damping_as_user("<position dampratio=\"-1\"/>"), std::nullopt) << "MuJoCo 3 refuses a negative ratio";
   EXPECT_TRUE(has_actuator_user_values("<mujoco>\n<general joint=\"a\" user=\"1 2\"/>"));
   EXPECT_FALSE(has_actuator_user_values("<size nuser_actuator=\"2\"/><!-- <motor user=\"1\"/> --><motor joint=\"a\"/>"));
   EXPECT_FALSE(has_actuator_user_values("<joint name=\"a\" user=\"1\"/>")) << "a joint's user values are another array";
@@ -73,7 +81,52 @@ TEST(ServoDamping, KvThroughDefaultsAndClassesIsTheVelocitysBias) {
   EXPECT_EQ(read, imported_servos("older_servos", older, diagnostics));
   EXPECT_NE(read.find("der(shoulder)"), std::string::npos) << "the servo's damping: " << read;
   std::string noted = imported_servos("newer_servos", newer, diagnostics, true);
-  EXPECT_NE(noted.find("# note: the position servos' kv (MuJoCo 3's velocity gain) read through"), std::string::npos) << noted;
+  EXPECT_NE(noted.find("# note: the position servos' kv and dampratio (MuJoCo 3's velocity gain, and that gain as the damping ratio"), std::string::npos) << noted;
+}
+
+// the number written just before `term` in the text's forces (its first occurrence), or NaN
+double coefficient_before(const std::string& text, const std::string& term) {
+  std::size_t at = text.find(term, text.find("[[forces]]"));
+  if (at == std::string::npos) return std::nan("");
+  std::size_t start = text.find_last_of(" (", at - 1) + 1;
+  return std::strtod(text.substr(start, at - start).c_str(), nullptr);
+}
+
+// kv = 2 ζ sqrt(kp m), m the servo's reflected inertia at qpos0 (MuJoCo 3's mj_setConst): the
+// shoulder sees the armature 0.01, the upper link's 0.01 + 1·0.2² and the lower's 0.005 + 0.5·0.6²
+// about its axis; the elbow the lower link's 0.005 + 0.5·0.2² about its oblique axis (the centre
+// on the axis's normal), over its gear's square; a tendon the sum over its joints of M_ii over
+// its coefficients' squares. The joint's damping is gear² kv.
+TEST(ServoDamping, ADampingRatioGivesTheGainOfTheInertiaAtTheInitialPose) {
+  const std::string newer = R"(<mujoco model="ratios">
+  <default><default class="arm"><position kp="40" dampratio="0.5" ctrlrange="-1 1" ctrllimited="true"/></default></default>
+  <worldbody>
+    <body name="upper" pos="0 0 1">
+      <joint name="shoulder" axis="0 1 0" armature="0.01"/>
+      <inertial pos="0 0 -0.2" mass="1" diaginertia="0.01 0.01 0.001"/>
+      <body name="lower" pos="0 0 -0.4">
+        <joint name="elbow" axis="0.3 1 0"/>
+        <joint name="reach" type="slide" axis="0 0 1"/>
+        <inertial pos="0 0 -0.2" mass="0.5" diaginertia="0.005 0.005 0.001"/>
+      </body>
+    </body>
+  </worldbody>
+  <tendon><fixed name="both"><joint joint="reach" coef="1"/><joint joint="elbow" coef="0.5"/></fixed></tendon>
+  <actuator>
+    <position name="lift" joint="shoulder" class="arm"/>
+    <position name="bend" joint="elbow" kp="15" dampratio="1" gear="2"/>
+    <position name="pull" tendon="both" kp="10" class="arm" dampratio="2"/>
+  </actuator>
+</mujoco>
+)";
+  Diagnostics diagnostics;
+  std::string read = imported_servos("ratios", newer, diagnostics);
+  ASSERT_FALSE(read.empty()) << diagnostics.format();
+  const double shoulder = 0.01 + (0.01 + 1 * 0.04) + (0.005 + 0.5 * 0.36), elbow = 0.005 + 0.5 * 0.04, reach = 0.5;
+  EXPECT_NEAR(coefficient_before(read, "*der(shoulder)"), 2 * 0.5 * std::sqrt(40 * shoulder), 1e-14) << read;
+  EXPECT_NEAR(coefficient_before(read, "*der(elbow)"), 4 * 2 * 1 * std::sqrt(15 * elbow / 4), 1e-14) << read;
+  EXPECT_NEAR(coefficient_before(read, "*(der(reach)"), 2 * 2 * std::sqrt(10 * (reach + elbow / 0.25)), 1e-14)
+      << "the actuator's own ratio over its class's: " << read;
 }
 
 TEST(ServoDamping, AFileWithUserValuesOfItsOwnLeavesKvOut) {
