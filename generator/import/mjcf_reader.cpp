@@ -549,6 +549,16 @@ std::variant<Robot, UnreadableRobot> read_with_mujoco(const std::string& path, R
                                       "<inertial> (checked), and the animation draws no shape for them",
                                       left_out.unread_mesh_files, left_out.unread_mesh_names),
                           "", "", 0});
+  if (!left_out.unread_drawing_files.empty()) {
+    const std::vector<std::string>& files = left_out.unread_drawing_files;
+    std::string named;
+    for (std::size_t k = 0; k < files.size() && k < 3; ++k) named += (k ? ", '" : "'") + files[k] + "'";
+    if (files.size() > 3) named += fmt::format(" and {} more", files.size() - 3);
+    r.warnings.push_back({fmt::format("{} texture or skin file(s) MuJoCo cannot read ({}): read as plain textures and without "
+                                      "the skins, which draw the robot and never act",
+                                      files.size(), named),
+                          "", "", 0});
+  }
   for (const NewerMjcf& a : left_out.newer)
     r.warnings.push_back({fmt::format("'{}' is MuJoCo 2.3's or 3's, which MuJoCo {} does not read: left out; {}{}", a.name,
                                       mj_version_text(), a.consequence, a.enters_equations ? "" : ", which does not enter the equations"),

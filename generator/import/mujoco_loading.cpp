@@ -1,6 +1,7 @@
 // Loading a robot file with MuJoCo 2.2.2's compiler, from memory where the file needs changes
 // first: MuJoCo 3's attributes and sensors left out (newer_mjcf.hpp) or written as 2.2.2 reads them
-// (carried_newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), mass bounds
+// (carried_newer_mjcf.hpp), placeholders for mesh files it cannot read (missing_meshes.hpp), plain textures
+// and no skins for texture and skin files it cannot read (missing_textures.hpp), mass bounds
 // for moving bodies without mass (massless_bodies.hpp), keyframes' trailing white space taken out
 // (keyframe_text.hpp), a URDF's fixed links kept and its unreadable meshes left out (urdf_text.hpp).
 #include "import/mujoco_loading.hpp"
@@ -20,6 +21,7 @@
 #include "import/keyframe_text.hpp"
 #include "import/massless_bodies.hpp"
 #include "import/missing_meshes.hpp"
+#include "import/missing_textures.hpp"
 #include "import/unbalanced_inertias.hpp"
 #include "import/urdf_text.hpp"
 
@@ -149,6 +151,12 @@ std::variant<mjModel*, UnreadableRobot> loaded_mjcf(const std::string& path, cha
       auto same = [&](const UnreadableMesh& m) { return m.file == mesh->file; };
       if (std::any_of(meshes.begin(), meshes.end(), same)) break;  // its placeholder did not help
       meshes.push_back(*mesh);
+      model = load(edge);
+      continue;
+    }
+    if (std::optional<UnreadableDrawing> drawing = unreadable_drawing(error)) {
+      if (sources.empty()) sources = mjcf_sources(path);
+      if (!without_unreadable_drawing(sources, *drawing, left_out.unread_drawing_files)) break;
       model = load(edge);
       continue;
     }

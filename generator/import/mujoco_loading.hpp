@@ -46,6 +46,7 @@ struct LeftOut {
   int unread_mesh_files = 0;             // MJCF: mesh files read as placeholders (missing_meshes.hpp)
   std::string unread_mesh_names;         // the first of them
   std::vector<int> mesh_sized_geoms;     // geoms that a placeholder sized: not drawn
+  std::vector<std::string> unread_drawing_files;  // texture and skin files MuJoCo cannot read (missing_textures.hpp)
   bool mass_bounds = false;              // read with massless_bodies.hpp's bounds
   bool balanced_inertias = false;        // a URDF read with balanceinertia (unbalanced_inertias.hpp)
   bool positive_moments = false;         // a URDF read with its links of moments not above zero restated (the same)

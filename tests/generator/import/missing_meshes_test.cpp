@@ -3,7 +3,6 @@
 // without the meshes; refused, naming the body, when a body takes its inertia from its geoms.
 #include <gtest/gtest.h>
 
-#include <sstream>
 #include <string>
 
 #include "import/missing_meshes.hpp"
@@ -61,13 +60,7 @@ std::string arm(const std::string& second_body, bool with_assets = true) {
 }
 
 // the model file without its comments, which name what was left out
-std::string without_comments(const std::string& text) {
-  std::istringstream in(text);
-  std::string out, line;
-  while (std::getline(in, line))
-    if (line.rfind("#", 0) != 0) out += line + "\n";
-  return out;
-}
+std::string without_comments(const std::string& text) { return without_lines_starting(text, "#"); }
 
 std::optional<std::string> imported(const std::string& xml, Diagnostics& diagnostics) {
   return imported_robot("meshy.xml", xml, diagnostics);
