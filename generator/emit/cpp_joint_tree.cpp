@@ -338,7 +338,7 @@ namespace {
 
 // The time of M and f by the loops, in operations of straight-line code (about 0.25 ns each, g++
 // -O2): each link of the tables (a fixed one too) about 95 ns, each pair of a joint and one at or
-// above it 3.4 ns (per pair of their columns), a root joint 570 ns, fit to the loops' times on
+// above it 3.4 ns (per pair of their columns), each root joint 570 ns, fit to the loops' times on
 // chains of 9 and 16 oblique hinges and checked on the others below. M and f alone, loops against
 // straight-line code (links, pairs, straight-line operations): chains of 9, 10, 12 and 16 oblique
 // hinges 0.92, 0.88, 0.77 and 0.68 (9, 45, 4,332 to 16, 136, 10,528); the 21-joint tree 0.87 (21,
@@ -360,7 +360,7 @@ long looped_mass_matrix_and_forcing_operations(const TreeLinkTables& links) {
     for (int j = int(k); j >= 0; j = links.parent[std::size_t(j)])
       pairs += long(links.velocity[k].size() * links.velocity[std::size_t(j)].size());
   }
-  return 380 * long(links.parent.size()) + 190 * more_columns + 14 * pairs + (links.root ? 2300 : 0);
+  return 380 * long(links.parent.size()) + 190 * more_columns + 14 * pairs + 2300 * long(links.roots.size());
 }
 
 // detail::mass_matrix_and_forcing's declaration, inlined where it is called: a call passed M

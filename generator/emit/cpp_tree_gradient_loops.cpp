@@ -211,13 +211,13 @@ void tree_root_pairs(const tree_jointed_root<T>& root, const T* C, const T* forc
 
 /// The tables of a tree whose joints' velocities all turn with their links (hinges, slides, ball
 /// joints), which the generated code fills: each link's parent, its joint's columns (velocities) and
-/// directions (coordinates), both 0 for a fixed link and for the first link when it is `rooted`
-/// (root_joint giving its joint); per column its velocity, its twist in the link's coordinates
-/// (axis; origin velocity) and rate; per direction its coordinate and, where a link may have several
+/// directions (coordinates), both 0 for a fixed link and for a root link whose joint is one of the
+/// Roots jointed ones (root_joint giving it, root_link its link); per column its velocity, its
+/// twist in the link's coordinates (axis; origin velocity) and rate; per direction its coordinate and, where a link may have several
 /// columns (Columns > 1), its twist's weights over them; the link's turn, offset and its bodies'
 /// inertia about its origin. With Columns = 1 every joint is a hinge or a slide, its direction's
 /// twist its column's.
-template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
+template <std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T>
 struct tree_link_tables {
   const int* parent;
   const int* columns;
@@ -226,8 +226,24 @@ struct tree_link_tables {
   const int (*coordinate)[Directions];
   T turn[L][9], offset[L][3], column[L][Columns][6], rate[L][Columns], inertia[L][10], gravity[3];
   T weight[Columns > 1 ? L : 1][Directions][Columns];
-  bool rooted;
-  tree_jointed_root<T> root_joint;  // the first link's joint, its motion at the accelerations
+  int root_link[Roots > 0 ? Roots : 1];
+  tree_jointed_root<T> root_joint[Roots > 0 ? Roots : 1];  // their motion at the accelerations
+  // the joint of link i when it is a jointed root, else null
+  const tree_jointed_root<T>* jointed(std::size_t i) const {
+    for (std::size_t r = 0; r != Roots; ++r)
+      if (std::size_t(root_link[r]) == i) return &root_joint[r];
+    return nullptr;
+  }
+  // the twist and the acceleration link i hangs from: its parent's (in v, a), its jointed root's, or
+  // the world's (at rest; falling against gravity)
+  const T* twist_above(std::size_t i, const T (*v)[6], const T* rest) const {
+    const tree_jointed_root<T>* root = parent[i] < 0 ? jointed(i) : nullptr;
+    return parent[i] >= 0 ? v[parent[i]] : root ? root->v : rest;
+  }
+  const T* acceleration_above(std::size_t i, const T (*a)[6], const T* fall) const {
+    const tree_jointed_root<T>* root = parent[i] < 0 ? jointed(i) : nullptr;
+    return parent[i] >= 0 ? a[parent[i]] : root ? root->a : fall;
+  }
   // whether link i has a column c, a direction d: bounded by the tables' extents, so that the loops
   // of a tree of hinges (one column) compile as its one column's code
   bool has_column(std::size_t i, int c) const { return c < int(Columns) && c < columns[i]; }
@@ -235,17 +251,16 @@ struct tree_link_tables {
 };
 
 /// The bodies' M (n x n, row-major) and f = -tau from the pass's S, composite C and forces, added:
-/// M_jk = S_j . C_k S_k for each column k and each column j of its link or a link above it (a root
-/// joint's columns above every link below it), f_k = -S_k . F_k; joints that follow one coordinate add
+/// M_jk = S_j . C_k S_k for each column k and each column j of its link or a link above it (a jointed
+/// root's columns above every link below it), f_k = -S_k . F_k; joints that follow one coordinate add
 /// their shares, a pair of two of them twice.
-template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
-void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, T>& tree, const T (&S)[L][Columns][6],
+template <std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T>
+void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, Roots, T>& tree, const T (&S)[L][Columns][6],
                                const T (&C)[L][10], const T (&force)[L][6], std::size_t n, T* M, T* f) {
   auto add = [&](std::size_t j, std::size_t k, const T& x) {
     M[j*n + k] = M[j*n + k] + x;
     if (j != k) M[k*n + j] = M[k*n + j] + x;
   };
-  const tree_jointed_root<T>& root = tree.root_joint;
   for (std::size_t k = 0; k < L; ++k)
     for (int r = 0; tree.has_column(k, r); ++r) {
       const std::size_t vk = std::size_t(tree.velocity[k][r]);
@@ -262,15 +277,19 @@ void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, T>
           add(vj, vk, j != int(k) && vj == vk ? T(2)*x : x);
         }
       }
-      for (std::size_t c = 0; tree.rooted && top == 0 && c < root.columns; ++c)
-        add(std::size_t(root.velocity[c]), vk, tree_power(root.S[c], CS));
+      if (const tree_jointed_root<T>* root = tree.jointed(std::size_t(top)))
+        for (std::size_t c = 0; c < root->columns; ++c) add(std::size_t(root->velocity[c]), vk, tree_power(root->S[c], CS));
     }
-  for (std::size_t c = 0; tree.rooted && c < root.columns; ++c) {
-    const std::size_t vc = std::size_t(root.velocity[c]);
-    T CS[6];
-    tree_inertia_times(C[0], root.S[c], CS);
-    f[vc] = f[vc] - tree_power(root.S[c], force[0]);
-    for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS));
+  for (std::size_t j = 0; j != Roots; ++j) {
+    const tree_jointed_root<T>& root = tree.root_joint[j];
+    const std::size_t i = std::size_t(tree.root_link[j]);
+    for (std::size_t c = 0; c < root.columns; ++c) {
+      const std::size_t vc = std::size_t(root.velocity[c]);
+      T CS[6];
+      tree_inertia_times(C[i], root.S[c], CS);
+      f[vc] = f[vc] - tree_power(root.S[c], force[i]);
+      for (std::size_t d = 0; d <= c; ++d) add(std::size_t(root.velocity[d]), vc, tree_power(root.S[d], CS));
+    }
   }
 }
 
@@ -278,8 +297,8 @@ void tree_mass_matrix_and_bias(const tree_link_tables<L, Columns, Directions, T>
 
 // the pass's callers, after it
 constexpr const char* bodies_gradient_template = R"(/// d tau/d(q, q') of the tree's bodies at the accelerations ddq, added into F (tree_gradient_pass).
-template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
-void tree_bodies_gradient(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
+template <std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T>
+void tree_bodies_gradient(const tree_link_tables<L, Columns, Directions, Roots, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
                           T* F) {
   tree_gradient_pass<false>(tree, ddq, nq, W, F, 0, static_cast<T*>(nullptr), static_cast<T*>(nullptr), [] {});
 }
@@ -288,22 +307,20 @@ void tree_bodies_gradient(const tree_link_tables<L, Columns, Directions, T>& tre
 
 // tree_gradient_pass's recursion at q'' = 0 for M and f alone, where they go by the loops
 constexpr const char* mass_matrix_template = R"(/// The bodies' M (n x n) and f = -tau at q'' = 0, added into M and f, for mass_matrix_and_forcing:
-/// tree_gradient_pass's world recursion at q'' = 0 with only what M and f need (the root joint's
+/// tree_gradient_pass's world recursion at q'' = 0 with only what M and f need (the jointed roots'
 /// motion in the tables at q'' = 0 too), composite inertias and forces, and tree_mass_matrix_and_bias.
-template <std::size_t L, std::size_t Columns, std::size_t Directions, class T>
-void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Directions, T>& tree, std::size_t n, T* M, T* f) {
+template <std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T>
+void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Directions, Roots, T>& tree, std::size_t n, T* M, T* f) {
   const int* parent = tree.parent;
-  const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
   T R[L][9], o[L][3], S[L][Columns][6], v[L][6], a[L][6], C[L][10], force[L][6];
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
   for (std::size_t i = 0; i < L; ++i) {
-    const bool on_root = parent[i] < 0 && i == 0 && root;
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
                tree.column[i][0], tree.inertia[i], R[i], o[i], S[i][0], C[i]);
-    const T* vp = parent[i] >= 0 ? v[parent[i]] : on_root ? root->v : rest;
-    const T* ap = parent[i] >= 0 ? a[parent[i]] : on_root ? root->a : fall;
+    const T* vp = tree.twist_above(i, v, rest);
+    const T* ap = tree.acceleration_above(i, a, fall);
     // v = v_p + V, a = a_p + v_p x V at q'' = 0, the joint's velocity V = S s
     if (tree.columns[i] == 0) {
       for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k];
@@ -392,37 +409,43 @@ std::string table(const std::vector<int>& entries) {
   return text;
 }
 
-// the tree's root_joint: its tables, constants
-void declare_jointed_root(BodyWriter& w, const JointedRoot& root) {
-  w.line(fmt::format("tree.root_joint.columns = {}; tree.root_joint.directions = {};", root.velocity.size(), root.coordinate.size()));
+// the tree's jointed root r: its link, its tables, constants
+void declare_jointed_root(BodyWriter& w, const JointedRoot& root, std::size_t r) {
+  const std::string joint = fmt::format("tree.root_joint[{}].", r);
+  w.line(fmt::format("tree.root_link[{}] = {}; {}columns = {}; {}directions = {};", r, root.link, joint, root.velocity.size(), joint,
+                     root.coordinate.size()));
   for (std::size_t c = 0; c < root.velocity.size(); ++c)
-    w.line(fmt::format("tree.root_joint.velocity[{0}] = {1}; tree.root_joint.turns[{0}] = {2};", c, root.velocity[c],
-                       root.turns[c] ? "true" : "false"));
-  for (std::size_t d = 0; d < root.coordinate.size(); ++d) w.line(fmt::format("tree.root_joint.coordinate[{}] = {};", d, root.coordinate[d]));
+    w.line(fmt::format("{0}velocity[{1}] = {2}; {0}turns[{1}] = {3};", joint, c, root.velocity[c], root.turns[c] ? "true" : "false"));
+  for (std::size_t d = 0; d < root.coordinate.size(); ++d) w.line(fmt::format("{}coordinate[{}] = {};", joint, d, root.coordinate[d]));
 }
 
-// the statements that set the tree's root_joint's motion at the accelerations ddq
+// the statements that set the tree's jointed roots' motion at the accelerations ddq
 std::string root_motion_body(const Equations& e) {
-  const JointedRoot& root = *e.gradient_loops()->root;
   BodyWriter w(e);
   std::vector<ex> values;
   std::vector<std::string> targets;
-  auto add = [&](const std::string& array, const std::array<ex, 6>& x) {
-    for (std::size_t k = 0; k < 6; ++k) values.push_back(x[k]), targets.push_back(fmt::format("tree.root_joint.{}[{}]", array, k));
-  };
-  auto add_rows = [&](const std::string& array, const std::vector<std::array<ex, 6>>& rows) {
-    for (std::size_t i = 0; i < rows.size(); ++i) add(fmt::format("{}[{}]", array, i), rows[i]);
-  };
-  add_rows("S", root.S), add_rows("A", root.A), add_rows("twist", root.twist), add_rows("dS", root.dS), add_rows("ddS", root.ddS);
-  add("v", root.v), add("a", root.a);
+  const std::vector<JointedRoot>& roots = e.gradient_loops()->roots;
+  for (std::size_t r = 0; r < roots.size(); ++r) {
+    const JointedRoot& root = roots[r];
+    auto add = [&](const std::string& array, const std::array<ex, 6>& x) {
+      for (std::size_t k = 0; k < 6; ++k)
+        values.push_back(x[k]), targets.push_back(fmt::format("tree.root_joint[{}].{}[{}]", r, array, k));
+    };
+    auto add_rows = [&](const std::string& array, const std::vector<std::array<ex, 6>>& rows) {
+      for (std::size_t i = 0; i < rows.size(); ++i) add(fmt::format("{}[{}]", array, i), rows[i]);
+    };
+    add_rows("S", root.S), add_rows("A", root.A), add_rows("twist", root.twist), add_rows("dS", root.dS), add_rows("ddS", root.ddS);
+    add("v", root.v), add("a", root.a);
+  }
   w.assign(values, targets);
   return without_unused_locals(w.finish(all_unused + std::string(" (void)ddq;")));
 }
 
-// L, Columns, Directions of detail::tree_link_tables: the links, the most columns and directions of one
+// L, Columns, Directions, Roots of detail::tree_link_tables: the links, the most columns and
+// directions of one, the jointed roots
 std::string tree_size(const Equations& e) {
   const TreeLinkTables& links = *e.gradient_loops();
-  return fmt::format("{}, {}, {}", links.parent.size(), links.most_columns(), links.most_directions());
+  return fmt::format("{}, {}, {}, {}", links.parent.size(), links.most_columns(), links.most_directions(), links.roots.size());
 }
 
 // per link its `entries` (columns' velocities or directions' coordinates), padded with −1 to `most`
@@ -478,8 +501,7 @@ std::string tree_tables_body(const Equations& e) {
     for (std::size_t k = 0; k < 10; ++k) add(fmt::format("inertia[{}][{}]", i, k), links.inertia[i][k]);
   }
   for (unsigned k = 0; k < 3; ++k) add(fmt::format("gravity[{}]", k), links.gravity[k]);
-  w.line(fmt::format("tree.rooted = {};", links.root ? "true" : "false"));
-  if (links.root) declare_jointed_root(w, *links.root);
+  for (std::size_t r = 0; r < links.roots.size(); ++r) declare_jointed_root(w, links.roots[r], r);
   w.assign(values, targets);
   return without_unused_locals(w.finish(all_unused));
 }
@@ -490,7 +512,7 @@ std::string tree_gradient_loops_function(const Equations& e, bool with_mass_matr
   if (!e.gradient_loops()) return "";
   std::string tree = "tree_link_tables<" + tree_size(e) + ", T>& tree";
   std::string root_motion =
-      e.gradient_loops()->root ? function("/// The tree's root joint's motion at the accelerations ddq.\n",
+      !e.gradient_loops()->roots.empty() ? function("/// The tree's jointed roots' motion at the accelerations ddq.\n",
                                           "void tree_root_motion(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, " + tree + ")",
                                           root_motion_body(e))
                                : "";
@@ -510,12 +532,12 @@ void call_tree_tables(BodyWriter& w, const Equations& e) {
 }
 
 void call_root_motion(BodyWriter& w, const Equations& e) {
-  if (e.gradient_loops()->root) w.line("detail::tree_root_motion(t, x, ddq, u, p, tree);");
+  if (!e.gradient_loops()->roots.empty()) w.line("detail::tree_root_motion(t, x, ddq, u, p, tree);");
 }
 
 void call_tree_mass_matrix_and_forcing(BodyWriter& w, const Equations& e) {
   std::size_t n = e.num_velocities();
-  if (e.gradient_loops()->root) w.line(fmt::format("const T ddq[{}] = {{}};", n));  // the root joint's motion at q'' = 0
+  if (!e.gradient_loops()->roots.empty()) w.line(fmt::format("const T ddq[{}] = {{}};", n));  // the roots' motion at q'' = 0
   call_tree_tables(w, e);
   w.line(fmt::format("tree_loops_mass_matrix_and_forcing(tree, {}, M, f);", n));
 }

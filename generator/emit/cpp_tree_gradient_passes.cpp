@@ -11,16 +11,15 @@ const char* one_column_gradient_pass() {
 /// its rate and its bodies' spatial inertia about the origin, at the accelerations ddq. With
 /// `Solves`, ddq are M^-1 f instead: the pass at the given ddq (zeros) adds the bodies' M (n x n)
 /// and f = -tau into M and f, which already hold the rest of them, and solve() then writes ddq
-/// (and, for a root joint, its motion at them) before the accelerations are formed again.
-template <bool Solves, std::size_t L, std::size_t Columns, std::size_t Directions, class T, class Solve>
-void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
+/// (and, for the jointed roots, their motion at them) before the accelerations are formed again.
+template <bool Solves, std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T, class Solve>
+void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, Roots, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
                         T* F, std::size_t n, T* M, T* f, Solve&& solve) {
   static_assert(Columns == 1 && Directions == 1, "a link of several columns takes the general pass");
   const int* parent = tree.parent;
   // a link's one velocity and coordinate, -1 for a fixed link
   auto velocity = [&](std::size_t i) { return tree.velocity[i][0]; };
   auto coordinate = [&](std::size_t i) { return tree.coordinate[i][0]; };
-  const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
   // world poses, twists S and inertias C; v, a (the root's a is -gravity), Psi' = v_p x S,
   // Psi'' = a_p x S + v_p x Psi'; each link's force C a + v x* C v, momentum P = C v and bias D,
   // summed into the composites; with Solves each link's own C and v x* C v, for its force again
@@ -29,12 +28,12 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
-  // the twist link i hangs from: its parent's, the root joint's or rest
-  auto parent_twist = [&](std::size_t i) -> const T* { return parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]]; };
+  auto parent_twist = [&](std::size_t i) { return tree.twist_above(i, v, rest); };
+  auto parent_acceleration = [&](std::size_t i) { return tree.acceleration_above(i, a, fall); };
   // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
   auto accelerate = [&](std::size_t i) {
     const T* vp = parent_twist(i);
-    const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
+    const T* ap = parent_acceleration(i);
     if (velocity(i) < 0) {
       for (int k = 0; k < 6; ++k) a[i][k] = ap[k], ddS[i][k] = T(0);
       return;
@@ -105,7 +104,8 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
       above[qk] = above[qk] + tree_power(S[j][0], G[k]);
       above[sk] = above[sk] + tree_power(S[j][0], H[k]);
     }
-    if (!root || top != 0) continue;
+    const tree_jointed_root<T>* root = tree.jointed(std::size_t(top));
+    if (!root) continue;
     for (std::size_t d = 0; d < root->directions; ++d) {
       T& x = row[root->coordinate[d]];
       x = x + tree_power(root->ddS[d], CS[k]) + tree_power(root->dS[d], BS[k]);
@@ -118,7 +118,10 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
       above[sk] = above[sk] + tree_power(root->S[c], H[k]);
     }
   }
-  if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
+  for (std::size_t r = 0; r != Roots; ++r) {
+    const std::size_t i = std::size_t(tree.root_link[r]);
+    tree_root_pairs(tree.root_joint[r], C[i], force[i], P[i], D[i], nq, W, F);
+  }
 }
 
 )";
@@ -132,13 +135,12 @@ const char* several_columns_gradient_pass() {
 /// Mansard 2018) in world coordinates, from each link's joint twists S, their rates and its bodies'
 /// spatial inertia about the origin, at the accelerations ddq. With `Solves`, ddq are M^-1 f
 /// instead: the pass at the given ddq (zeros) adds the bodies' M (n x n) and f = -tau into M and f,
-/// which already hold the rest of them, and solve() then writes ddq (and, for a root joint, its
-/// motion at them) before the accelerations are formed again.
-template <bool Solves, std::size_t L, std::size_t Columns, std::size_t Directions, class T, class Solve>
-void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
+/// which already hold the rest of them, and solve() then writes ddq (and, for the jointed roots,
+/// their motion at them) before the accelerations are formed again.
+template <bool Solves, std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T, class Solve>
+void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, Roots, T>& tree, const T* ddq, std::size_t nq, std::size_t W,
                         T* F, std::size_t n, T* M, T* f, Solve&& solve) {
   const int* parent = tree.parent;
-  const tree_jointed_root<T>* root = tree.rooted ? &tree.root_joint : nullptr;
   // world poses, the columns' twists S and inertias C; v, a (the root's a is -gravity), per direction
   // of twist T Psi' = v_p x T, Psi'' = a_p x T + v_p x Psi'; each link's force C a + v x* C v,
   // momentum P = C v and bias D, summed into the composites; with Solves each link's own C and
@@ -151,12 +153,12 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
-  // the twist link i hangs from: its parent's, the root joint's or rest
-  auto parent_twist = [&](std::size_t i) -> const T* { return parent[i] < 0 ? (i == 0 && root ? root->v : rest) : v[parent[i]]; };
+  auto parent_twist = [&](std::size_t i) { return tree.twist_above(i, v, rest); };
+  auto parent_acceleration = [&](std::size_t i) { return tree.acceleration_above(i, a, fall); };
   // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
   auto accelerate = [&](std::size_t i) {
     const T* vp = parent_twist(i);
-    const T* ap = parent[i] < 0 ? (i == 0 && root ? root->a : fall) : a[parent[i]];
+    const T* ap = parent_acceleration(i);
     if (tree.columns[i] == 0) {
       for (int k = 0; k < 6; ++k) a[i][k] = ap[k];
       return;
@@ -267,7 +269,8 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
       if (j == int(k)) continue;
       for (int c = 0; tree.has_column(j, c); ++c) into_the_row_above(S[j][c], tree.velocity[j][c]);
     }
-    if (!root || top != 0) continue;
+    const tree_jointed_root<T>* root = tree.jointed(std::size_t(top));
+    if (!root) continue;
     for (int r = 0; tree.has_column(k, r); ++r) {
       T* row = rows[r];
       for (std::size_t d = 0; d < root->directions; ++d) {
@@ -281,7 +284,10 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, T>& tree,
     }
     for (std::size_t c = 0; c < root->columns; ++c) into_the_row_above(root->S[c], root->velocity[c]);
   }
-  if (root) tree_root_pairs(*root, C[0], force[0], P[0], D[0], nq, W, F);
+  for (std::size_t r = 0; r != Roots; ++r) {
+    const std::size_t i = std::size_t(tree.root_link[r]);
+    tree_root_pairs(tree.root_joint[r], C[i], force[i], P[i], D[i], nq, W, F);
+  }
 }
 
 )";

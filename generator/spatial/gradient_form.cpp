@@ -79,8 +79,9 @@ std::size_t joint_pairs(const std::vector<TreeLink>& links) {
 
 bool beyond_straight_line_cut(const std::vector<TreeLink>& links, std::size_t velocities) {
   std::size_t pairs = joint_pairs(links);
-  bool ball_below_root = std::any_of(links.begin() + (links.empty() ? 0 : 1), links.end(),
-                                     [](const TreeLink& l) { return l.columns.size() > 1; });
+  // a root's joint of several velocities (a floating base, a free object beside it) is straight-line
+  // code in the loops too
+  bool ball_below_root = std::any_of(links.begin(), links.end(), [](const TreeLink& l) { return l.parent >= 0 && l.columns.size() > 1; });
   bool long_tree = ball_below_root ? pairs > loops_beyond_pairs_with_ball_joints
                                    : pairs > loops_beyond_pairs && (pairs > loops_beyond_pairs_in_a_plane || !moves_in_a_plane(links));
   return velocities > loops_beyond_velocities && long_tree;

@@ -220,10 +220,13 @@ class Gradient {
 
   // the loops' inputs (TreeLinkTables): the links' own data, their bodies summed about their origins;
   // a jointed root's table entries a fixed link's
-  TreeLinkTables loop_inputs(const Vector3& gravity, std::optional<JointedRoot> root) const {
+  TreeLinkTables loop_inputs(const Vector3& gravity, std::vector<JointedRoot> roots) const {
     TreeLinkTables in;
     in.gravity = gravity;
-    in.root = std::move(root);
+    in.roots = std::move(roots);
+    auto jointed = [&](std::size_t i) {
+      return std::any_of(in.roots.begin(), in.roots.end(), [&](const JointedRoot& r) { return r.link == i; });
+    };
     for (std::size_t i = 0; i < links_.size(); ++i) {
       const TreeLink& l = links_[i];
       in.parent.push_back(l.parent);
@@ -232,7 +235,7 @@ class Gradient {
       in.offset.push_back(l.offset);
       in.velocity.emplace_back(), in.column.emplace_back(), in.rate.emplace_back();
       in.coordinate.emplace_back(), in.weight.emplace_back();
-      if (!(i == 0 && in.root)) {
+      if (!jointed(i)) {
         for (const TreeLink::Column& c : l.columns) {
           in.velocity.back().push_back(c.velocity);
           in.rate.back().push_back(c.rate);
@@ -263,61 +266,69 @@ class Gradient {
     return in;
   }
 
-  // every joint but the first link's (which may be of any kind, a floating base) a hinge or a slide
-  // (the loops' one-column formulas: a joint that follows another's coordinate, URDF's mimic, is a
-  // hinge whose S carries its multiplier and whose rows and columns the loops add into its
-  // leader's, as pairs() does), a joint of several columns that all turn with its link (a ball
-  // joint: the loops' general formulas, A = (2 v_λ + V_b) × S), or none (a fixed link)
+  // every joint but a root link's (which may be of any kind: a floating base, a free object beside
+  // it) a hinge or a slide (the loops' one-column formulas: a joint that follows another's
+  // coordinate, URDF's mimic, is a hinge whose S carries its multiplier and whose rows and columns
+  // the loops add into its leader's, as pairs() does), a joint of several columns that all turn
+  // with its link (a ball joint: the loops' general formulas, A = (2 v_λ + V_b) × S), or none (a
+  // fixed link)
   bool loops_take_it() const {
-    for (std::size_t j = 1; j < links_.size(); ++j) {
+    for (std::size_t j = 0; j < links_.size(); ++j) {
       const TreeLink& l = links_[j];
+      if (l.parent < 0) continue;
       bool turning = std::all_of(l.columns.begin(), l.columns.end(), [](const TreeLink::Column& c) { return c.turns_with_link; });
       if (!l.columns.empty() && !is_loop_hinge(j) && !(l.columns.size() > 1 && turning)) return false;
     }
     return true;
   }
 
-  // the first link's joint when it is of several velocities: its motion, straight-line
-  std::optional<JointedRoot> jointed_root(const Vector3& gravity, const std::vector<ex>& ddq) {
-    if (links_.empty() || links_[0].columns.empty() || is_loop_hinge(0)) return std::nullopt;
-    place(0, gravity, ddq);
-    joint_motion(0);
+  // the joints of several velocities of the root links: their motion, straight-line
+  std::vector<JointedRoot> jointed_roots(const Vector3& gravity, const std::vector<ex>& ddq) {
+    std::vector<JointedRoot> roots;
+    for (std::size_t i = 0; i < links_.size(); ++i)
+      if (links_[i].parent < 0 && !links_[i].columns.empty() && !is_loop_hinge(i)) roots.push_back(jointed_root(i, gravity, ddq));
+    return roots;
+  }
+
+ private:
+  JointedRoot jointed_root(std::size_t i, const Vector3& gravity, const std::vector<ex>& ddq) {
+    place(i, gravity, ddq);
+    joint_motion(i);
     auto six = [](const SpatialVector& x) {
       return std::array<ex, 6>{x.top[0], x.top[1], x.top[2], x.bottom[0], x.bottom[1], x.bottom[2]};
     };
-    JointedRoot root{{}, {}, {}, {}, {}, {}, {}, {}, six(v_[0]), six(a_[0])};
-    const TreeLink& l = links_[0];
+    JointedRoot root{i, {}, {}, {}, {}, {}, {}, {}, {}, six(v_[i]), six(a_[i])};
+    const TreeLink& l = links_[i];
     for (std::size_t c = 0; c < l.columns.size(); ++c) {
       root.velocity.push_back(l.columns[c].velocity);
       root.turns.push_back(l.columns[c].turns_with_link);
-      root.S.push_back(six(S_[0][c]));
-      root.A.push_back(six(A_[0][c]));
+      root.S.push_back(six(S_[i][c]));
+      root.A.push_back(six(A_[i][c]));
     }
     for (std::size_t d = 0; d < l.directions.size(); ++d) {
-      if (translates_the_tree(d)) continue;
+      if (translates_the_tree(i, d)) continue;
       root.coordinate.push_back(l.directions[d].coordinate);
-      root.twist.push_back(six(twist_[0][d]));
-      root.dS.push_back(six(dS_[0][d]));
-      root.ddS.push_back(six(ddS_[0][d]));
+      root.twist.push_back(six(twist_[i][d]));
+      root.dS.push_back(six(dS_[i][d]));
+      root.ddS.push_back(six(ddS_[i][d]));
     }
     return root;
   }
 
- private:
-  // A direction of the first link's joint that slides the whole tree without turning it, T = (0, t)
+  // A direction of a root link i's joint that slides its whole tree without turning it, T = (0, t)
   // with Ψ' = Ψ'' = 0 (a free joint's position): every pair term of it vanishes, the rows that turn
   // with a link taking Ψ''·I S + Ψ'·Bᵀ S = 0 and the root's rows that keep its parent's axes, S =
   // (0, s), taking S·G = S·(T ×* F) = (0, s)·(t × f, 0) = 0 (uniform gravity does not see where the
   // tree is), so its column stays zero and the loops leave it out
-  bool translates_the_tree(std::size_t d) const {
+  bool translates_the_tree(std::size_t i, std::size_t d) const {
     auto zero = [](const Vector3& x) {
       return x[0].expand().is_zero() && x[1].expand().is_zero() && x[2].expand().is_zero();
     };
-    const TreeLink& l = links_[0];
+    const TreeLink& l = links_[i];
     for (std::size_t c = 0; c < l.columns.size(); ++c)
-      if (!l.columns[c].turns_with_link && !zero(S_[0][c].top)) return false;
-    return l.parent < 0 && zero(twist_[0][d].top) && zero(dS_[0][d].top) && zero(dS_[0][d].bottom) && zero(ddS_[0][d].top) &&
-           zero(ddS_[0][d].bottom);
+      if (!l.columns[c].turns_with_link && !zero(S_[i][c].top)) return false;
+    return l.parent < 0 && zero(twist_[i][d].top) && zero(dS_[i][d].top) && zero(dS_[i][d].bottom) && zero(ddS_[i][d].top) &&
+           zero(ddS_[i][d].bottom);
   }
 
   // A root hinge about gravity's direction (about any axis without gravity) or a root slide moves
@@ -467,10 +478,10 @@ std::vector<ex> written_expressions(const BodiesGradient& g) {
   add(l.turn), add(l.offset), add(l.inertia), add(l.rate);
   for (std::size_t i = 0; i < l.parent.size(); ++i) add(l.column[i]), add(l.weight[i]);
   out.insert(out.end(), l.gravity.begin(), l.gravity.end());
-  if (const std::optional<JointedRoot>& r = l.root) {
-    add(r->S), add(r->A), add(r->twist), add(r->dS), add(r->ddS);
-    out.insert(out.end(), r->v.begin(), r->v.end());
-    out.insert(out.end(), r->a.begin(), r->a.end());
+  for (const JointedRoot& r : l.roots) {
+    add(r.S), add(r.A), add(r.twist), add(r.dS), add(r.ddS);
+    out.insert(out.end(), r.v.begin(), r.v.end());
+    out.insert(out.end(), r.a.begin(), r.a.end());
   }
   return out;
 }
@@ -506,7 +517,7 @@ JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const 
     if (short_enough_for_straight_line(written_out_operations(out, first, written))) return written;
     out.resize(first);
   }
-  return g.loop_inputs(gravity, g.jointed_root(gravity, ddq));
+  return g.loop_inputs(gravity, g.jointed_roots(gravity, ddq));
 }
 
 }  // namespace eomgen

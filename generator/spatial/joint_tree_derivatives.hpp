@@ -80,12 +80,14 @@ struct TreeLink {
   std::optional<std::pair<GiNaC::matrix, Vector3>> rest_pose;
 };
 
-/// A root joint of several velocities (a floating base's free joint, a ball) in world Plücker
-/// coordinates, for the loops below: its motion depends on its own coordinates and velocities
-/// alone, so it is straight-line code, and the loops add what needs the composite quantities.
+/// A root joint of several velocities (a floating base's free joint, a ball; the joint of `link`, one
+/// without a parent) in world Plücker coordinates, for the loops below: its motion depends on its own
+/// coordinates and velocities alone, so it is straight-line code, and the loops add what needs the
+/// composite quantities.
 /// Per column (a velocity) its S and A = (w + u) × S, and whether it turns with the link; per
 /// direction (a coordinate) its twist T, Ψ' and Ψ''; the link's v and a (gravity included).
 struct JointedRoot {
+  std::size_t link = 0;
   std::vector<int> velocity;
   std::vector<bool> turns;
   std::vector<std::array<GiNaC::ex, 6>> S, A;
@@ -103,9 +105,9 @@ struct JointedRoot {
 /// component's Y = ∂s/∂q'); its turn E (row-major) and offset r; and its bodies' spatial inertia
 /// about its origin in its own coordinates (m, h = Σ m c, J's xx xy xz yy yz zz). The loops form the
 /// world poses, twists and inertias, v, a, Ψ', Ψ'', the composite quantities and the pairs from
-/// them. The first link's joint may be of any kind (`root`: a floating base, whose columns keep the
-/// parent's axes; its table entries are then a fixed link's, with its turn and offset those of its
-/// current pose).
+/// them. A root link's joint (one without a parent) may be of any kind (`roots`: a floating base, a
+/// free object beside it, whose columns keep the parent's axes; its table entries are then a fixed
+/// link's, with its turn and offset those of its current pose).
 struct TreeLinkTables {
   std::vector<int> parent;
   std::vector<std::vector<int>> velocity;    // per link, per column
@@ -117,7 +119,7 @@ struct TreeLinkTables {
   std::vector<std::vector<std::vector<GiNaC::ex>>> weight;    // per link, per direction, over its columns
   std::vector<std::array<GiNaC::ex, 10>> inertia;
   Vector3 gravity{0, 0, 0};
-  std::optional<JointedRoot> root;
+  std::vector<JointedRoot> roots;
   /// the most columns and directions of one link: 1 and 1 for a tree of hinges and slides, whose
   /// loops take each direction's twist as its column's
   std::size_t most_columns() const;
@@ -161,8 +163,8 @@ std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
 /// more than 8 velocities and more than 32 pairs of a joint and one at or above it, counted by
 /// velocities (200 pairs for a tree that moves in one plane, spatial/planar_tree.hpp; the measured
 /// crossovers, in gradient_form.cpp), whose joints
-/// are hinges and slides, those that follow another's coordinate too, below a root joint of any
-/// kind (a floating base), gets the loops' inputs instead, unless its straight-line gradient folds to
+/// are hinges, slides and ball joints, those that follow another's coordinate too, below root
+/// joints of any kind (a floating base, free objects beside it), gets the loops' inputs instead, unless its straight-line gradient folds to
 /// no more operations than a seven-joint arm's (a few axes along the links' own, slides).
 JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                       const std::vector<GiNaC::ex>& ddq, std::size_t velocities, std::size_t coordinates,

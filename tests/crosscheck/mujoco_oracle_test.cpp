@@ -50,7 +50,9 @@
 #include "mjcf_features_imported.hpp"
 #include "oblique_tree_imported.hpp"
 #include "quadruped_imported.hpp"
+#include "ragdoll_beside_free_objects_imported.hpp"
 #include "servo_arm_imported.hpp"
+#include "snake_beside_free_objects_imported.hpp"
 #include "switched_off_forces_imported.hpp"
 #include "tendon_gripper_imported.hpp"
 #include "seven_joint_arm_imported.hpp"
@@ -387,6 +389,14 @@ TEST(MujocoImport, BallBelowABallImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHE
 // a floating ragdoll of seven ball joints and four oblique hinges, whose M and f, like its gradient,
 // come from the loops over its links (links of three columns)
 TEST(MujocoImport, ABallJointedRagdollImportsAndMatchesMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(ball_ragdoll); }
+
+// several trees side by side, each from a joint of several velocities (a robot beside free objects,
+// as dm_control's dog and its ball): the loops take them all, each root's motion straight-line, over
+// links of one column (the snake) and of three (the ragdoll, and a lamp hung from a ball joint)
+TEST(MujocoImport, TreesBesideFreeObjectsImportAndMatchMujoco) {
+  EXPECT_IMPORT_MATCHES_MUJOCO(snake_beside_free_objects);
+  EXPECT_IMPORT_MATCHES_MUJOCO(ragdoll_beside_free_objects);
+}
 
 // position, velocity and affine servos beside a motor: each a generalized force affine in u, q and q'
 TEST(MujocoImport, ServosImportAndMatchMujoco) { EXPECT_IMPORT_MATCHES_MUJOCO(servo_arm); }

@@ -27,7 +27,9 @@
 #include "gantry_hand.hpp"
 #include "gyroscopic_arm.hpp"
 #include "quadruped.hpp"
+#include "ragdoll_beside_free_objects_imported.hpp"
 #include "seven_joint_arm.hpp"
+#include "snake_beside_free_objects_imported.hpp"
 
 namespace {
 
@@ -151,6 +153,14 @@ TEST(RobotJacobians, TheLoopsBelowABallJointAreTheComplexStepDerivative) {
 TEST(RobotJacobians, TheLoopsOverBallJointsBelowTheRootAreTheComplexStepDerivative) {
   EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP_IN(ball_ragdoll_imported, long double);
   EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(ball_ragdoll_imported);
+}
+
+// Trees beside free objects: three jointed roots in the loops, over links of one column and of three
+TEST(RobotJacobians, TheLoopsOverSeveralJointedRootsAreTheComplexStepDerivative) {
+  EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP(snake_beside_free_objects_imported);
+  EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(snake_beside_free_objects_imported);
+  EXPECT_JACOBIAN_IS_THE_COMPLEX_STEP_IN(ragdoll_beside_free_objects_imported, long double);
+  EXPECT_INVERSE_DYNAMICS_GRADIENT_IS_THE_COMPLEX_STEP(ragdoll_beside_free_objects_imported);
 }
 
 TEST(RobotJacobians, TheArmsStraightLineCodeIsTheComplexStepDerivative) {

@@ -419,11 +419,12 @@ TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   Equations nine = derive_text(hinge_chain(9, false));
   ASSERT_TRUE(nine.gradient_loops());
   EXPECT_EQ(nine.gradient_loops()->parent, (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 6, 7}));
-  EXPECT_FALSE(nine.gradient_loops()->root);
+  EXPECT_TRUE(nine.gradient_loops()->roots.empty());
   Equations ball = derive_text(hinge_chain(9, true));
   ASSERT_TRUE(ball.gradient_loops()) << "a ball joint at the root";
-  ASSERT_TRUE(ball.gradient_loops()->root);
-  const JointedRoot& root = *ball.gradient_loops()->root;
+  ASSERT_EQ(ball.gradient_loops()->roots.size(), 1u);
+  const JointedRoot& root = ball.gradient_loops()->roots[0];
+  EXPECT_EQ(root.link, 0u);
   EXPECT_EQ(root.velocity, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(root.turns, (std::vector<bool>{true, true, true}));
   EXPECT_EQ(root.coordinate, (std::vector<int>{0, 1, 2, 3})) << "the quaternion's four components";
@@ -463,6 +464,51 @@ TEST(JointTreeDerivatives, TreesOfMoreThanEightHingesTakeTheLoops) {
   EXPECT_EQ(coupled.equations->gradient_loops()->velocity,
             (std::vector<std::vector<int>>{{0}, {1}, {2}, {3}, {3}, {4}, {5}, {5}, {6}, {7}, {8}}))
       << "the fixed link folded into its parent's";
+}
+
+// A chain of nine hinges beside a body on a free joint and a body hung from a ball joint: each root's
+// joint of several velocities is a jointed root of the loops (its table entries a fixed link's),
+// and neither counts as a ball joint below a root, whose cut is 400 pairs
+TEST(JointTreeDerivatives, FreeObjectsBesideATreeAreJointedRootsOfTheLoops) {
+  std::string text = hinge_chain(9, false);
+  text.replace(text.find("[coordinates]\n"), 14,
+               "[coordinates]\nx = 0\ny = 0\nz = 0\nqw = 1\nqx = 0\nqy = 0\nqz = 0\nbw = 1\nbx = 0\nby = 0\nbz = 0\n");
+  text += R"toml(
+[[frames]]
+name = "box"
+origin = ["0.5", "0", "0"]
+joint = { type = "free", position = ["x", "y", "z"], quaternion = ["qw", "qx", "qy", "qz"], angular_velocity = ["wx", "wy", "wz"] }
+
+[[frames]]
+name = "lamp"
+origin = ["-0.5", "0", "1"]
+joint = { type = "ball", quaternion = ["bw", "bx", "by", "bz"], angular_velocity = ["ox", "oy", "oz"] }
+
+[[rigid_bodies]]
+name = "box_body"
+mass = "0.7"
+frame = "box"
+center = ["0.01", "0", "0.02"]
+inertia = ["0.01", "0.02", "0.015"]
+
+[[rigid_bodies]]
+name = "lamp_body"
+mass = "0.4"
+frame = "lamp"
+center = ["0", "0.01", "-0.3"]
+inertia = ["0.01", "0.012", "0.003"]
+)toml";
+  Equations e = derive_text(text);
+  ASSERT_TRUE(e.gradient_loops()) << "9 hinges, a free body and a ball: 18 velocities, 90 pairs";
+  const TreeLinkTables& links = *e.gradient_loops();
+  ASSERT_EQ(links.roots.size(), 2u);
+  std::vector<std::size_t> roots = {links.roots[0].link, links.roots[1].link};
+  for (std::size_t r : roots) {
+    EXPECT_EQ(links.parent[r], -1);
+    EXPECT_TRUE(links.velocity[r].empty()) << "a jointed root's table entries are a fixed link's";
+  }
+  EXPECT_EQ(links.roots[0].velocity.size() + links.roots[1].velocity.size(), 9u) << "six columns and three";
+  EXPECT_EQ(links.most_columns(), 1u) << "the hinges' one column: the one-column pass";
 }
 
 }  // namespace
