@@ -116,8 +116,8 @@ LdltCode loops(std::size_t n) {
 }  // namespace
 
 // Written out at every size: the same operations in loops over a parent table, measured on trees
-// of 17 to 62 coordinates (a quadruped, humanoids, chains, dm_control's dog, g++ -O2), factored
-// 1.3-2.8x and solved for many columns 5-6x slower, and saved at most 20 s of g++ where the whole
+// of 18 to 85 coordinates (a quadruped, humanoids, chains, dm_control's dog, g++ -O2), factored
+// 1.3-2.8x and solved for many columns 4.7-6.8x slower, and saved at most 20 s of g++ where the whole
 // header takes minutes.
 LdltCode tree_ldlt_code(const std::vector<int>& parent) {
   std::size_t n = parent.size();
