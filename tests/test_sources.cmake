@@ -34,6 +34,7 @@ set(EOMGEN_TEST_FILES
   generator/import/joint_follower_import_test.cpp   fast     sanitized
   generator/import/missing_meshes_test.cpp          fast     sanitized
   generator/import/missing_textures_test.cpp        fast     sanitized
+  generator/import/actuator_reasons_test.cpp        fast     sanitized
   generator/import/massless_bodies_test.cpp         fast     sanitized
   generator/import/unbalanced_inertias_test.cpp     fast     sanitized
   generator/import/automatic_limits_test.cpp        fast     sanitized

@@ -21,6 +21,7 @@
 #include <mujoco/mujoco.h>
 
 #include "common/independent_rows.hpp"
+#include "import/actuator_reasons.hpp"
 #include "import/automatic_limits.hpp"
 #include "import/free_base.hpp"
 #include "import/inherited_ranges.hpp"
@@ -301,18 +302,13 @@ void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
     if (name.empty()) name = fmt::format("actuator{}", a);
-    // a motor, or a servo whose force is affine in the control, the joint's position and its rate
-    bool on_joint = m->actuator_trntype[a] == mjTRN_JOINT,
-         plain = m->actuator_dyntype[a] == mjDYN_NONE && m->actuator_gaintype[a] == mjGAIN_FIXED &&
-                 (m->actuator_biastype[a] == mjBIAS_NONE || m->actuator_biastype[a] == mjBIAS_AFFINE);
     int j = m->actuator_trnid[2 * a];
     std::optional<std::vector<TendonJoint>> tendon;
     if (m->actuator_trntype[a] == mjTRN_TENDON) tendon = fixed_tendon(m, j);
-    if (!plain || (!on_joint && !tendon) || (on_joint && !one_dof_joint(m, j))) {
-      r.warnings.push_back({fmt::format("actuator '{}': only motors and servos on a hinge or slide, or on a fixed tendon of "
-                                        "them (a force affine in the control, the position and its rate; no dynamics) are "
-                                        "carried; it is left out",
-                                        name),
+    if (std::string why = actuator_left_out_because(m, a, tendon.has_value()); !why.empty()) {
+      r.warnings.push_back({fmt::format("actuator '{}' is left out: {}; eomgen carries motors and servos (a force affine in "
+                                        "the control, the position and its rate) on a hinge, a slide or a fixed tendon of them",
+                                        name, why),
                             "actuator", name_of(m, m->name_actuatoradr, a), a + 1});
       continue;
     }

@@ -1,0 +1,61 @@
+// Why an actuator is left out (generator/import/actuator_reasons.hpp): each of MuJoCo's actuators
+// that eomgen cannot carry is named in the imported file's opening comments with the one reason that
+// applies to it, and the motor beside them is carried.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "import/model_writer.hpp"
+#include "support/test_support.hpp"
+
+namespace eomgen::test {
+namespace {
+
+// a hinged arm with a ball-jointed tip, driven in every way MuJoCo 2.2.2 reads (the actuators with
+// states last, as it asks)
+const char* driven_arm = R"(<mujoco model="drives">
+  <worldbody>
+    <body name="arm" pos="0 0 1">
+      <joint name="swing" axis="0 1 0"/>
+      <inertial pos="0 0 -0.2" mass="1" diaginertia="0.01 0.01 0.001"/>
+      <site name="grip" pos="0 0 -0.4"/>
+      <body name="tip" pos="0 0 -0.4">
+        <joint name="wrist" type="ball"/>
+        <inertial pos="0 0 -0.1" mass="0.2" diaginertia="0.001 0.001 0.0005"/>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <motor name="drive" joint="swing" gear="3"/>
+    <general name="stiffening" joint="swing" gaintype="affine" gainprm="1 2 0"/>
+    <motor name="twist" joint="wrist" gear="0 0 1"/>
+    <motor name="push" site="grip" gear="1 0 0 0 0 0"/>
+    <general name="lagged" joint="swing" dyntype="filter" dynprm="0.05"/>
+    <general name="summed" joint="swing" dyntype="integrator"/>
+  </actuator>
+</mujoco>
+)";
+
+std::string imported_arm(Diagnostics& diagnostics) {
+  std::optional<std::string> text = imported_robot("drives.xml", driven_arm, diagnostics);
+  EXPECT_TRUE(text) << diagnostics.format();
+  return text.value_or("");
+}
+
+bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(ActuatorReasons, EachActuatorLeftOutIsNamedWithItsReason) {
+  Diagnostics diagnostics;
+  std::string text = imported_arm(diagnostics);
+  std::string warned = text + diagnostics.format();
+  EXPECT_TRUE(mentions(warned, "'lagged' is left out: its activation dynamics, a filter (da/dt = (u - a)/tau)")) << warned;
+  EXPECT_TRUE(mentions(warned, "'summed' is left out: its activation dynamics, an integrator (da/dt = u)")) << warned;
+  EXPECT_TRUE(mentions(warned, "'stiffening' is left out: its gain depends on the position and its rate")) << warned;
+  EXPECT_TRUE(mentions(warned, "'twist' is left out: it drives a ball or free joint")) << warned;
+  EXPECT_TRUE(mentions(warned, "'push' is left out: it acts through a site")) << warned;
+  EXPECT_FALSE(mentions(warned, "'drive' is left out")) << warned;
+  EXPECT_TRUE(mentions(text, "3*drive")) << "the motor beside them is carried: " << text;
+}
+
+}  // namespace
+}  // namespace eomgen::test
