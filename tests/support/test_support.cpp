@@ -197,6 +197,13 @@ std::optional<std::string> imported_robot(const std::string& file_name, const st
   return imported_model_text(write_file(file_name, text), diagnostics, false);
 }
 
+std::string imported_robot_text(const std::string& file_name, const std::string& text) {
+  Diagnostics diagnostics;
+  std::optional<std::string> model = imported_robot(file_name, text, diagnostics);
+  if (!model) ADD_FAILURE() << file_name << " did not import:\n" << diagnostics.format();
+  return model.value_or("");
+}
+
 std::string without_lines_starting(std::string text, const std::string& start) {
   for (std::size_t at = text.find(start); at != std::string::npos; at = text.find(start, at))
     if (at == 0 || text[at - 1] == '\n')

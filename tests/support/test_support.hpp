@@ -72,6 +72,9 @@ std::string write_file(const std::string& file_name, const std::string& text);
 /// MJCF's `arm.xml`) by write_file; nothing, and why in `diagnostics`, where it is refused.
 std::optional<std::string> imported_robot(const std::string& file_name, const std::string& text, Diagnostics& diagnostics);
 
+/// The same for a robot file that must import: its model file, or a test failure naming why and "".
+std::string imported_robot_text(const std::string& file_name, const std::string& text);
+
 /// `text` without its lines that start with `start` ("# note: "): two files' imports compared but for
 /// what each says of itself.
 std::string without_lines_starting(std::string text, const std::string& start);

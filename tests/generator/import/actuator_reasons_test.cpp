@@ -36,24 +36,16 @@ const char* driven_arm = R"(<mujoco model="drives">
 </mujoco>
 )";
 
-std::string imported_arm(Diagnostics& diagnostics) {
-  std::optional<std::string> text = imported_robot("drives.xml", driven_arm, diagnostics);
-  EXPECT_TRUE(text) << diagnostics.format();
-  return text.value_or("");
-}
-
 bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(ActuatorReasons, EachActuatorLeftOutIsNamedWithItsReason) {
-  Diagnostics diagnostics;
-  std::string text = imported_arm(diagnostics);
-  std::string warned = text + diagnostics.format();
-  EXPECT_TRUE(mentions(warned, "'lagged' is left out: its activation dynamics, a filter (da/dt = (u - a)/tau)")) << warned;
-  EXPECT_TRUE(mentions(warned, "'summed' is left out: its activation dynamics, an integrator (da/dt = u)")) << warned;
-  EXPECT_TRUE(mentions(warned, "'stiffening' is left out: its gain depends on the position and its rate")) << warned;
-  EXPECT_TRUE(mentions(warned, "'twist' is left out: it drives a ball or free joint")) << warned;
-  EXPECT_TRUE(mentions(warned, "'push' is left out: it acts through a site")) << warned;
-  EXPECT_FALSE(mentions(warned, "'drive' is left out")) << warned;
+  std::string text = imported_robot_text("drives.xml", driven_arm);
+  EXPECT_TRUE(mentions(text, "'lagged' is left out: its activation dynamics, a filter (da/dt = (u - a)/tau)")) << text;
+  EXPECT_TRUE(mentions(text, "'summed' is left out: its activation dynamics, an integrator (da/dt = u)")) << text;
+  EXPECT_TRUE(mentions(text, "'stiffening' is left out: its gain depends on the position and its rate")) << text;
+  EXPECT_TRUE(mentions(text, "'twist' is left out: it drives a ball or free joint")) << text;
+  EXPECT_TRUE(mentions(text, "'push' is left out: it acts through a site")) << text;
+  EXPECT_FALSE(mentions(text, "'drive' is left out")) << text;
   EXPECT_TRUE(mentions(text, "3*drive")) << "the motor beside them is carried: " << text;
 }
 

@@ -45,12 +45,7 @@ std::string limited_hinge(const std::string& limited) {
 )";
 }
 
-std::string imported_hinge(const std::string& file) {
-  Diagnostics diagnostics;
-  std::optional<std::string> text = imported_robot("clamp.xml", file, diagnostics);
-  EXPECT_TRUE(text) << diagnostics.format();
-  return text.value_or("");
-}
+std::string imported_hinge(const std::string& file) { return imported_robot_text("clamp.xml", file); }
 
 TEST(JointForceLimits, TheJointsTotalIsClampedOrTheRangeWarnedOf) {
   std::string clamped = imported_hinge(limited_hinge(""));

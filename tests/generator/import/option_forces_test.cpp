@@ -28,12 +28,7 @@ std::string sprung_pendulum_file(const std::string& option, const std::string& j
 )";
 }
 
-std::string imported_file(const std::string& file) {
-  Diagnostics diagnostics;
-  std::optional<std::string> text = imported_robot("flags.xml", file, diagnostics);
-  EXPECT_TRUE(text) << diagnostics.format();
-  return text.value_or("");
-}
+std::string imported_file(const std::string& file) { return imported_robot_text("flags.xml", file); }
 
 std::string imported_with(const std::string& option) { return imported_file(sprung_pendulum_file(option)); }
 
