@@ -16,7 +16,6 @@ const char* dynamics_name(int type) {
 
 const char* transmission_name(int type) {
   switch (type) {
-    case mjTRN_JOINTINPARENT: return "a joint in its parent's frame";
     case mjTRN_SLIDERCRANK: return "a slider-crank";
     case mjTRN_TENDON: return "a spatial tendon (or one through a ball or free joint)";
     case mjTRN_SITE: return "a site";
@@ -38,7 +37,8 @@ std::string actuator_left_out_because(const mjModel* m, int a, bool on_fixed_ten
   if (m->actuator_biastype[a] != mjBIAS_NONE && m->actuator_biastype[a] != mjBIAS_AFFINE)
     return "its bias is a muscle's or user-defined";
   int type = m->actuator_trntype[a];
-  if (type == mjTRN_JOINT) {
+  // on a hinge or slide, a joint's axis in its parent's frame is the axis in its own
+  if (type == mjTRN_JOINT || type == mjTRN_JOINTINPARENT) {
     if (on_hinge_or_slide(m, m->actuator_trnid[2 * a])) return "";
     return "it drives a ball or free joint";
   }

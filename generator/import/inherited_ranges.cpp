@@ -34,7 +34,8 @@ std::optional<std::array<double, 2>> inherited_control_range(const mjModel* m, i
   if (scale <= 0) return std::nullopt;
   int id = m->actuator_trnid[2 * a];
   const double* range = nullptr;
-  if (m->actuator_trntype[a] == mjTRN_JOINT && m->jnt_limited[id]) range = m->jnt_range + 2 * id;
+  bool on_joint = m->actuator_trntype[a] == mjTRN_JOINT || m->actuator_trntype[a] == mjTRN_JOINTINPARENT;
+  if (on_joint && m->jnt_limited[id]) range = m->jnt_range + 2 * id;
   if (m->actuator_trntype[a] == mjTRN_TENDON && m->tendon_limited[id]) range = m->tendon_range + 2 * id;
   if (!range) {
     why_not = "its joint or tendon has no range to inherit (MuJoCo 3 refuses the file)";

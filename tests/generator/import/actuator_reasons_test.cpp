@@ -1,6 +1,7 @@
 // Why an actuator is left out (generator/import/actuator_reasons.hpp): each of MuJoCo's actuators
 // that eomgen cannot carry is named in the imported file's opening comments with the one reason that
-// applies to it, and the motor beside them is carried.
+// applies to it, and the motors beside them are carried, one on a hinge given in its parent's frame
+// (the same axis; tests/crosscheck/mjcf/mjcf_features.xml has one against MuJoCo).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -27,6 +28,8 @@ const char* driven_arm = R"(<mujoco model="drives">
   </worldbody>
   <actuator>
     <motor name="drive" joint="swing" gear="3"/>
+    <general name="parented" jointinparent="swing" gear="2"/>
+    <general name="parented_ball" jointinparent="wrist" gear="0 1 0"/>
     <general name="stiffening" joint="swing" gaintype="affine" gainprm="1 2 0"/>
     <motor name="twist" joint="wrist" gear="0 0 1"/>
     <motor name="push" site="grip" gear="1 0 0 0 0 0"/>
@@ -46,7 +49,9 @@ TEST(ActuatorReasons, EachActuatorLeftOutIsNamedWithItsReason) {
   EXPECT_TRUE(mentions(text, "'twist' is left out: it drives a ball or free joint")) << text;
   EXPECT_TRUE(mentions(text, "'push' is left out: it acts through a site")) << text;
   EXPECT_FALSE(mentions(text, "'drive' is left out")) << text;
+  EXPECT_TRUE(mentions(text, "'parented_ball' is left out: it drives a ball or free joint")) << text;
   EXPECT_TRUE(mentions(text, "3*drive")) << "the motor beside them is carried: " << text;
+  EXPECT_TRUE(mentions(text, "2*parented")) << "a hinge's axis in its parent's frame is its own: " << text;
 }
 
 }  // namespace
