@@ -75,6 +75,9 @@ std::optional<std::string> imported_robot(const std::string& file_name, const st
 /// The same for a robot file that must import: its model file, or a test failure naming why and "".
 std::string imported_robot_text(const std::string& file_name, const std::string& text);
 
+/// Whether `text` (an imported model file, a message) holds `part`.
+inline bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
 /// `text` without its lines that start with `start` ("# note: "): two files' imports compared but for
 /// what each says of itself.
 std::string without_lines_starting(std::string text, const std::string& start);

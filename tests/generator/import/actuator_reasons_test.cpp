@@ -39,8 +39,6 @@ const char* driven_arm = R"(<mujoco model="drives">
 </mujoco>
 )";
 
-bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
 TEST(ActuatorReasons, EachActuatorLeftOutIsNamedWithItsReason) {
   std::string text = imported_robot_text("drives.xml", driven_arm);
   EXPECT_TRUE(mentions(text, "'lagged' is left out: its activation dynamics, a filter (da/dt = (u - a)/tau)")) << text;

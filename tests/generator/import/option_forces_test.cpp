@@ -32,8 +32,6 @@ std::string imported_file(const std::string& file) { return imported_robot_text(
 
 std::string imported_with(const std::string& option) { return imported_file(sprung_pendulum_file(option)); }
 
-bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
 TEST(OptionForces, WithNoFlagEveryForceIsCarried) {
   std::string text = imported_with("<option/>");
   EXPECT_TRUE(mentions(text, "acceleration = [\"0\", \"0\", \"-9.81\"]")) << text;
