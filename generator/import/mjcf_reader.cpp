@@ -295,9 +295,21 @@ void inherit_control_range(const mjModel* m, int a, RobotActuator& act, Robot& r
                           name_of(m, m->name_actuatoradr, a), a + 1});
 }
 
+// the first four names, quoted, and how many more
+std::string listed(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t k = 0; k < names.size() && k < 4; ++k) text += (k ? ", '" : "'") + names[k] + "'";
+  if (names.size() > 4) text += fmt::format(" and {} more", names.size() - 4);
+  return text;
+}
+
 void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
+  std::vector<std::string> ratios;  // actuators whose biasprm[2] MuJoCo 3 reads as a damping ratio
+  for (int a = 0; a < m->nu; ++a)
+    if (reads_bias_as_damping_ratio(m, a)) ratios.push_back(name_of(m, m->name_actuatoradr, a));
   // at qpos0, for a servo's damping ratio (servo_damping.hpp)
-  std::unique_ptr<mjData, void (*)(mjData*)> initial(left_out.servo_damping_as_user ? mj_makeData(m) : nullptr, mj_deleteData);
+  bool at_qpos0 = left_out.servo_damping_as_user || !ratios.empty();
+  std::unique_ptr<mjData, void (*)(mjData*)> initial(at_qpos0 ? mj_makeData(m) : nullptr, mj_deleteData);
   if (initial) mj_fwdPosition(m, initial.get());
   for (int a = 0; a < m->nu; ++a) {
     std::string name = name_of(m, m->name_actuatoradr, a);
@@ -325,11 +337,17 @@ void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
       act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
     if (left_out.servo_damping_as_user && m->nuser_actuator > 0 && position_servo(m, a))
       act.bias[2] = -servo_velocity_gain(m, initial.get(), a, m->actuator_user[m->nuser_actuator * a]);
+    if (reads_bias_as_damping_ratio(m, a)) act.bias[2] = -servo_velocity_gain(m, initial.get(), a, -act.bias[2]);
     if (left_out.inheritrange_as_group && position_servo(m, a)) inherit_control_range(m, a, act, r);
     act.force_limited = m->actuator_forcelimited[a];
     act.force_range = {m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]};
     r.actuators.push_back(act);
   }
+  if (!ratios.empty())
+    r.notes.push_back(fmt::format("{} actuator(s) of a position servo's shape with a positive velocity coefficient ({}) read as "
+                                  "MuJoCo 3 reads them: that coefficient is the damping ratio ζ of kv = 2 ζ sqrt(kp m), m the "
+                                  "inertia the servo sees at qpos0 (MuJoCo {} would feed the motion)",
+                                  ratios.size(), listed(ratios), mj_version_text()));
 }
 
 // the text of a URDF file, or nothing for another file
@@ -354,14 +372,6 @@ void read_mimics(const mjModel* m, const std::string& urdf, Robot& r) {
     c.coefficients = {mimic.offset, mimic.multiplier, 0, 0, 0};
     r.couplings.push_back(c);
   }
-}
-
-// the first four names, quoted, and how many more
-std::string listed(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t k = 0; k < names.size() && k < 4; ++k) text += (k ? ", '" : "'") + names[k] + "'";
-  if (names.size() > 4) text += fmt::format(" and {} more", names.size() - 4);
-  return text;
 }
 
 // a URDF's bodies given their links' inertias as the file states them (a link alone, or a link with

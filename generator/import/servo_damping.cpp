@@ -31,6 +31,11 @@ std::optional<std::string> with_servo_damping_as_user(const std::string& mjcf) {
   return out;
 }
 
+bool reads_bias_as_damping_ratio(const mjModel* m, int a) {
+  const double* bias = m->actuator_biasprm + mjNBIAS * a;
+  return m->actuator_gainprm[mjNGAIN * a] == -bias[1] && bias[2] > 0;
+}
+
 double servo_velocity_gain(const mjModel* m, const mjData* d, int a, double damping) {
   if (!(damping < 0)) return damping;
   // the inertia reflected through the transmission: Σ M_ii / moment_i² over the velocities it moves

@@ -27,6 +27,11 @@ bool has_actuator_user_values(const std::string& mjcf);
 /// dampratio="..." as user="-...": nothing where a dampratio is negative (MuJoCo 3 refuses it).
 std::optional<std::string> with_servo_damping_as_user(const std::string& mjcf);
 
+/// Whether actuator `a` is one whose positive velocity coefficient MuJoCo 3's mj_setConst reads as a
+/// damping ratio: position-like (its gain is minus its position coefficient, whatever its element) with
+/// biasprm[2] > 0, which MuJoCo 2.2.2 would take as a velocity feedback that feeds motion.
+bool reads_bias_as_damping_ratio(const mjModel* m, int a);
+
 /// The velocity gain kv of position servo `a` whose user value says `damping` (servo_damping.hpp's
 /// encoding: kv itself, or minus the damping ratio), `d` holding the model at qpos0 after
 /// mj_fwdPosition (its mass matrix and the actuators' moments).

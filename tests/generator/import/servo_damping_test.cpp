@@ -129,6 +129,35 @@ TEST(ServoDamping, ADampingRatioGivesTheGainOfTheInertiaAtTheInitialPose) {
       << "the actuator's own ratio over its class's: " << read;
 }
 
+// MuJoCo 3 reads biasprm[2] > 0 of any position-like actuator (gain = −bias₁) as a damping ratio, a
+// <general> one too: the same model as the <position dampratio> servos above, which take the user
+// values' way; a velocity coefficient of zero or below stays a gain.
+TEST(ServoDamping, APositiveVelocityCoefficientOfAPositionLikeActuatorIsItsDampingRatio) {
+  const std::string position = servo_file("", R"(
+    <position name="lift" joint="shoulder" kp="40" dampratio="0.5"/>
+    <position name="bend" joint="elbow" kp="15" dampratio="1" gear="2"/>
+    <position name="push" joint="reach" kp="10"/>)");
+  const std::string general = servo_file("", R"(
+    <general name="lift" joint="shoulder" gainprm="40" biasprm="0 -40 0.5" biastype="affine"/>
+    <general name="bend" joint="elbow" gainprm="15" biasprm="0 -15 1" biastype="affine" gear="2"/>
+    <general name="push" joint="reach" gainprm="10" biasprm="0 -10 -3" biastype="affine"/>)");
+  Diagnostics diagnostics;
+  std::string from_position = imported_servos("from_position", position, diagnostics, true);
+  std::string from_general = imported_servos("from_general", general, diagnostics, true);
+  ASSERT_FALSE(from_position.empty() || from_general.empty()) << diagnostics.format();
+  EXPECT_NE(from_general.find("# note: 2 actuator(s) of a position servo's shape with a positive velocity coefficient ('lift', "
+                              "'bend') read as MuJoCo 3 reads them"),
+            std::string::npos)
+      << from_general;
+  EXPECT_NE(from_position.find("*der(shoulder)"), std::string::npos) << from_position;
+  EXPECT_NEAR(coefficient_before(from_general, "*der(reach)"), 3, 1e-15) << "a gain kv = 3: " << from_general;
+  std::string position_with_gain = imported_servos("from_position", servo_file("", R"(
+    <position name="lift" joint="shoulder" kp="40" dampratio="0.5"/>
+    <position name="bend" joint="elbow" kp="15" dampratio="1" gear="2"/>
+    <position name="push" joint="reach" kp="10" kv="3"/>)"), diagnostics);
+  EXPECT_EQ(without_lines_starting(from_general, "#"), without_lines_starting(position_with_gain, "#"));
+}
+
 TEST(ServoDamping, AFileWithUserValuesOfItsOwnLeavesKvOut) {
   const std::string newer = servo_file("", R"(
     <position name="lift" joint="shoulder" kp="40" kv="4" user="9"/>)");
