@@ -213,8 +213,8 @@ void tree_root_pairs(const tree_jointed_root<T>& root, const T* C, const T* forc
 /// joints), which the generated code fills: each link's parent, its joint's columns (velocities) and
 /// directions (coordinates), both 0 for a fixed link and for a root link whose joint is one of the
 /// Roots jointed ones (root_joint giving it, root_link its link); per column its velocity, its
-/// twist in the link's coordinates (axis; origin velocity) and rate; per direction its coordinate and, where a link may have several
-/// columns (Columns > 1), its twist's weights over them; the link's turn, offset and its bodies'
+/// twist in the link's coordinates (axis; origin velocity) and rate; per direction its coordinate
+/// and, where a link may have several columns (Columns > 1), its twist's weights over them; the link's turn, offset and its bodies'
 /// inertia about its origin. With Columns = 1 every joint is a hinge or a slide, its direction's
 /// twist its column's.
 template <std::size_t L, std::size_t Columns, std::size_t Directions, std::size_t Roots, class T>

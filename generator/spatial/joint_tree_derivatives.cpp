@@ -327,7 +327,7 @@ class Gradient {
     const TreeLink& l = links_[i];
     for (std::size_t c = 0; c < l.columns.size(); ++c)
       if (!l.columns[c].turns_with_link && !zero(S_[i][c].top)) return false;
-    return l.parent < 0 && zero(twist_[i][d].top) && zero(dS_[i][d].top) && zero(dS_[i][d].bottom) && zero(ddS_[i][d].top) &&
+    return zero(twist_[i][d].top) && zero(dS_[i][d].top) && zero(dS_[i][d].bottom) && zero(ddS_[i][d].top) &&
            zero(ddS_[i][d].bottom);
   }
 

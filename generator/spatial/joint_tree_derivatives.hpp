@@ -164,8 +164,9 @@ std::vector<GiNaC::ex> written_expressions(const BodiesGradient& g);
 /// velocities (200 pairs for a tree that moves in one plane, spatial/planar_tree.hpp; the measured
 /// crossovers, in gradient_form.cpp), whose joints
 /// are hinges, slides and ball joints, those that follow another's coordinate too, below root
-/// joints of any kind (a floating base, free objects beside it), gets the loops' inputs instead, unless its straight-line gradient folds to
-/// no more operations than a seven-joint arm's (a few axes along the links' own, slides).
+/// joints of any kind (a floating base, free objects beside it), gets the loops' inputs instead,
+/// unless its straight-line gradient folds to no more operations than a seven-joint arm's (a few
+/// axes along the links' own, slides).
 JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const Vector3& gravity,
                                       const std::vector<GiNaC::ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                       std::vector<Intermediate>& out);
