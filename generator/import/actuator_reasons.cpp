@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "import/mujoco_model_parts.hpp"
+
 namespace eomgen {
 namespace {
 
@@ -24,11 +26,9 @@ const char* transmission_name(int type) {
   }
 }
 
-bool on_hinge_or_slide(const mjModel* m, int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); }
-
 }  // namespace
 
-std::string actuator_left_out_because(const mjModel* m, int a, bool on_fixed_tendon) {
+std::string actuator_left_out_because(const mjModel* m, int a) {
   if (m->actuator_dyntype[a] != mjDYN_NONE)
     return fmt::format("its activation dynamics, {}, add a state of the actuator's own", dynamics_name(m->actuator_dyntype[a]));
   if (m->actuator_gaintype[a] != mjGAIN_FIXED)
@@ -39,10 +39,10 @@ std::string actuator_left_out_because(const mjModel* m, int a, bool on_fixed_ten
   int type = m->actuator_trntype[a];
   // on a hinge or slide, a joint's axis in its parent's frame is the axis in its own
   if (type == mjTRN_JOINT || type == mjTRN_JOINTINPARENT) {
-    if (on_hinge_or_slide(m, m->actuator_trnid[2 * a])) return "";
+    if (one_dof_joint(m, m->actuator_trnid[2 * a])) return "";
     return "it drives a ball or free joint";
   }
-  if (type == mjTRN_TENDON && on_fixed_tendon) return "";
+  if (type == mjTRN_TENDON && fixed_tendon(m, m->actuator_trnid[2 * a])) return "";
   return fmt::format("it acts through {}", transmission_name(type));
 }
 

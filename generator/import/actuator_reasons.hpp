@@ -12,9 +12,8 @@
 
 namespace eomgen {
 
-/// Why actuator `a` of `m` is left out, as a clause ("its activation ... adds a state ..."), or
-/// empty when it is carried; `on_fixed_tendon`: its transmission is a tendon whose every wrap is
-/// a hinge or slide (import/mjcf_reader.cpp's fixed_tendon).
-std::string actuator_left_out_because(const mjModel* m, int a, bool on_fixed_tendon);
+/// Why actuator `a` of `m` is left out, as a clause ("its activation dynamics, ..., add a state ..."),
+/// or empty when it is carried.
+std::string actuator_left_out_because(const mjModel* m, int a);
 
 }  // namespace eomgen

@@ -21,25 +21,20 @@
 #include <mujoco/mujoco.h>
 
 #include "common/independent_rows.hpp"
-#include "import/actuator_reasons.hpp"
 #include "import/automatic_limits.hpp"
 #include "import/free_base.hpp"
-#include "import/inherited_ranges.hpp"
 #include "import/joint_force_limits.hpp"
 #include "import/joint_torques.hpp"
+#include "import/mjcf_actuators.hpp"
+#include "import/mujoco_model_parts.hpp"
 #include "import/newer_mjcf.hpp"
 #include "import/option_forces.hpp"
 #include "import/right_angles.hpp"
-#include "import/servo_damping.hpp"
 #include "import/urdf_text.hpp"
 
 namespace eomgen {
 
 namespace {
-
-std::string name_of(const mjModel* m, const int* addresses, int i) {
-  return addresses ? std::string(m->names + addresses[i]) : std::string();
-}
 
 Triple triple(const mjtNum* x) { return {x[0], x[1], x[2]}; }
 Quaternion quaternion(const mjtNum* x) { return {x[0], x[1], x[2], x[3]}; }
@@ -71,30 +66,6 @@ RobotJoint joint_of(const mjModel* m, int j, const mjtNum* qpos, const mjtNum* q
   joint.limited = m->jnt_limited[j];
   joint.range = {m->jnt_range[2 * j], m->jnt_range[2 * j + 1]};
   return joint;
-}
-
-bool one_dof_joint(const mjModel* m, int j) { return j >= 0 && (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE); }
-
-// joint j of the model as a body's index, the joint's place among that body's joints, and its qpos0
-void place_joint(const mjModel* m, int j, int& body, int& joint, double& reference) {
-  body = m->jnt_bodyid[j] - 1;
-  joint = j - m->body_jntadr[body + 1];
-  reference = m->qpos0[m->jnt_qposadr[j]];
-}
-
-// a fixed tendon's joints and coefficients (MJCF's <fixed>: every wrap a hinge or slide), or nothing
-std::optional<std::vector<TendonJoint>> fixed_tendon(const mjModel* m, int t) {
-  std::vector<TendonJoint> joints;
-  for (int w = m->tendon_adr[t]; w < m->tendon_adr[t] + m->tendon_num[t]; ++w) {
-    if (m->wrap_type[w] != mjWRAP_JOINT || !one_dof_joint(m, m->wrap_objid[w])) return std::nullopt;
-    TendonJoint joint;
-    double reference = 0;
-    place_joint(m, m->wrap_objid[w], joint.body, joint.joint, reference);
-    joint.coefficient = m->wrap_prm[w];
-    joints.push_back(joint);
-  }
-  if (joints.empty()) return std::nullopt;
-  return joints;
 }
 
 bool has_spherical_joints(const mjModel* m) {
@@ -276,78 +247,6 @@ void read_tendon_springs(const mjModel* m, Robot& r) {
     r.tendon_springs.push_back({name.empty() ? fmt::format("tendon{}", t + 1) : name, *joints, m->tendon_stiffness[t],
                                 m->tendon_damping[t], m->tendon_lengthspring[t]});
   }
-}
-
-// MuJoCo 3's position servo with kv or dampratio, read as its user value (servo_damping.hpp): bias [0, −kp, 0] as
-// MuJoCo 2.2.2 sets it, and the velocity's −kv
-bool position_servo(const mjModel* m, int a) {
-  const double* bias = m->actuator_biasprm + mjNBIAS * a;
-  return m->actuator_biastype[a] == mjBIAS_AFFINE && bias[0] == 0 && bias[1] == -m->actuator_gainprm[mjNGAIN * a] && bias[2] == 0;
-}
-
-// MuJoCo 3's inheritrange, read as the group (inherited_ranges.hpp): the control range from the
-// joint's or tendon's
-void inherit_control_range(const mjModel* m, int a, RobotActuator& act, Robot& r) {
-  std::string why_not;
-  if (auto inherited = inherited_control_range(m, a, why_not)) act.limited = true, act.range = *inherited;
-  else if (!why_not.empty())
-    r.warnings.push_back({fmt::format("actuator '{}': inheritrange: {}", act.name, why_not), "actuator",
-                          name_of(m, m->name_actuatoradr, a), a + 1});
-}
-
-// the first four names, quoted, and how many more
-std::string listed(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t k = 0; k < names.size() && k < 4; ++k) text += (k ? ", '" : "'") + names[k] + "'";
-  if (names.size() > 4) text += fmt::format(" and {} more", names.size() - 4);
-  return text;
-}
-
-void read_actuators(const mjModel* m, const LeftOut& left_out, Robot& r) {
-  std::vector<std::string> ratios;  // actuators whose biasprm[2] MuJoCo 3 reads as a damping ratio
-  for (int a = 0; a < m->nu; ++a)
-    if (reads_bias_as_damping_ratio(m, a)) ratios.push_back(name_of(m, m->name_actuatoradr, a));
-  // at qpos0, for a servo's damping ratio (servo_damping.hpp)
-  bool at_qpos0 = left_out.servo_damping_as_user || !ratios.empty();
-  std::unique_ptr<mjData, void (*)(mjData*)> initial(at_qpos0 ? mj_makeData(m) : nullptr, mj_deleteData);
-  if (initial) mj_fwdPosition(m, initial.get());
-  for (int a = 0; a < m->nu; ++a) {
-    std::string name = name_of(m, m->name_actuatoradr, a);
-    if (name.empty()) name = fmt::format("actuator{}", a);
-    int j = m->actuator_trnid[2 * a];
-    std::optional<std::vector<TendonJoint>> tendon;
-    if (m->actuator_trntype[a] == mjTRN_TENDON) tendon = fixed_tendon(m, j);
-    if (std::string why = actuator_left_out_because(m, a, tendon.has_value()); !why.empty()) {
-      r.warnings.push_back({fmt::format("actuator '{}' is left out: {}; eomgen carries motors and servos (a force affine in "
-                                        "the control, the position and its rate) on a hinge, a slide or a fixed tendon of them",
-                                        name, why),
-                            "actuator", name_of(m, m->name_actuatoradr, a), a + 1});
-      continue;
-    }
-    RobotActuator act;
-    act.name = name;
-    double reference = 0;
-    if (tendon) act.tendon = *tendon;
-    else place_joint(m, j, act.body, act.joint, reference);
-    act.gain = m->actuator_gainprm[mjNGAIN * a] * m->actuator_gear[6 * a];
-    act.limited = m->actuator_ctrllimited[a];
-    act.range = {m->actuator_ctrlrange[2 * a], m->actuator_ctrlrange[2 * a + 1]};
-    act.gear = m->actuator_gear[6 * a];
-    if (m->actuator_biastype[a] == mjBIAS_AFFINE)
-      act.bias = {m->actuator_biasprm[mjNBIAS * a], m->actuator_biasprm[mjNBIAS * a + 1], m->actuator_biasprm[mjNBIAS * a + 2]};
-    if (left_out.servo_damping_as_user && m->nuser_actuator > 0 && position_servo(m, a))
-      act.bias[2] = -servo_velocity_gain(m, initial.get(), a, m->actuator_user[m->nuser_actuator * a]);
-    if (reads_bias_as_damping_ratio(m, a)) act.bias[2] = -servo_velocity_gain(m, initial.get(), a, -act.bias[2]);
-    if (left_out.inheritrange_as_group && position_servo(m, a)) inherit_control_range(m, a, act, r);
-    act.force_limited = m->actuator_forcelimited[a];
-    act.force_range = {m->actuator_forcerange[2 * a], m->actuator_forcerange[2 * a + 1]};
-    r.actuators.push_back(act);
-  }
-  if (!ratios.empty())
-    r.notes.push_back(fmt::format("{} actuator(s) of a position servo's shape with a positive velocity coefficient ({}) read as "
-                                  "MuJoCo 3 reads them: that coefficient is the damping ratio ζ of kv = 2 ζ sqrt(kp m), m the "
-                                  "inertia the servo sees at qpos0 (MuJoCo {} would feed the motion)",
-                                  ratios.size(), listed(ratios), mj_version_text()));
 }
 
 // the text of a URDF file, or nothing for another file

@@ -33,7 +33,7 @@ std::optional<std::string> with_servo_damping_as_user(const std::string& mjcf) {
 
 bool reads_bias_as_damping_ratio(const mjModel* m, int a) {
   const double* bias = m->actuator_biasprm + mjNBIAS * a;
-  return m->actuator_gainprm[mjNGAIN * a] == -bias[1] && bias[2] > 0;
+  return m->actuator_biastype[a] == mjBIAS_AFFINE && m->actuator_gainprm[mjNGAIN * a] == -bias[1] && bias[2] > 0;
 }
 
 double servo_velocity_gain(const mjModel* m, const mjData* d, int a, double damping) {

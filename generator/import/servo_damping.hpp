@@ -28,8 +28,9 @@ bool has_actuator_user_values(const std::string& mjcf);
 std::optional<std::string> with_servo_damping_as_user(const std::string& mjcf);
 
 /// Whether actuator `a` is one whose positive velocity coefficient MuJoCo 3's mj_setConst reads as a
-/// damping ratio: position-like (its gain is minus its position coefficient, whatever its element) with
-/// biasprm[2] > 0, which MuJoCo 2.2.2 would take as a velocity feedback that feeds motion.
+/// damping ratio: position-like (its gain is minus its position coefficient, whatever its element),
+/// its bias affine, with biasprm[2] > 0, which MuJoCo 2.2.2 would take as a velocity feedback that
+/// feeds motion. (MuJoCo 3 converts it whatever the bias type; without an affine bias it acts nowhere.)
 bool reads_bias_as_damping_ratio(const mjModel* m, int a);
 
 /// The velocity gain kv of position servo `a` whose user value says `damping` (servo_damping.hpp's
