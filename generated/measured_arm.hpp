@@ -598,15 +598,11 @@ void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p
   const T k_link2_gF0v_x = -dq_q1*k_link2_gIvv_y + dq_q2*k_link2_gIvv_z + k_link3_gF0v_x;
   T M[9];
   M[0] = k_link1_gCJ22;
-  M[1] = k_link2_gISw_z;
   M[3] = k_link2_gISw_z;
-  M[2] = k_link3_gISw_z;
   M[6] = k_link3_gISw_z;
   M[4] = -n1*k_link2_gISv_x + k_link2_gISw_y;
+  M[7] = -n1*k_link3_gISv_x + k_link3_gISw_y;
   M[8] = cos_q_q2*k_link3_gISw_z + k_link3_gISv_y*k_link3_gSv_y + k_link3_gISw_x*sin_q_q2;
-  const T sym_M5 = -n1*k_link3_gISv_x + k_link3_gISw_y;
-  M[5] = sym_M5;
-  M[7] = sym_M5;
   T ddq[3];
   if (given_ddq) {
     for (std::size_t i = 0; i < 3; ++i) ddq[i] = given_ddq[i];
@@ -614,11 +610,13 @@ void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p
     ddq[0] = -n24*dq_q1 - k_link2_gF0w_z + u_tau1;
     ddq[1] = -n24*dq_q2 + n1*k_link2_gF0v_x - k_link2_gF0w_y + u_tau2;
     ddq[2] = -cos_q_q2*k_link3_gF0w_z - n24*dq_q3 - k_link3_gF0v_y*k_link3_gSv_y - k_link3_gF0w_x*sin_q_q2 + u_tau3;
-    T factor[9] = {};
+    T factor[9];
     T pivots[3];
     ldlt_factor(M, factor, pivots);
     ldlt_solve(factor, pivots, ddq);
-    for (std::size_t i = 0; i < 9; ++i) L[i] = factor[i];
+    L[3] = factor[3];
+    L[6] = factor[6];
+    L[7] = factor[7];
     for (std::size_t i = 0; i < 3; ++i) D[i] = pivots[i];
   }
   F[0] = T(0);

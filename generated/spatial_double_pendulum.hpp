@@ -687,22 +687,15 @@ void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p
   const T k_upper_gF0w_z = dq_b1*k_upper_gIvw_y + k_lower_gF0w_z + k_upper_gIJ12*k_upper_ga0w_y;
   T M[16];
   M[0] = k_upper_gCJ22;
-  M[1] = k_lower_gIJ02;
   M[4] = k_lower_gIJ02;
-  M[2] = k_lower_turn1_gISw_z;
   M[8] = k_lower_turn1_gISw_z;
-  M[3] = k_lower_gISw_z;
   M[12] = k_lower_gISw_z;
   M[5] = k_upper_gCJ00;
-  M[6] = k_lower_turn1_gISw_x;
   M[9] = k_lower_turn1_gISw_x;
-  M[7] = k_lower_gISw_x;
   M[13] = k_lower_gISw_x;
   M[10] = cos_q_b1*k_lower_turn1_gISw_z + k_lower_turn1_gISv_x*k_lower_turn1_gSv_x - k_lower_turn1_gISw_y*sin_q_b1;
+  M[14] = cos_q_b1*k_lower_gISw_z + k_lower_gISv_x*k_lower_turn1_gSv_x - k_lower_gISw_y*sin_q_b1;
   M[15] = cos_q_a2*k_lower_gISw_x + k_lower_gISv_x*k_lower_gSv_x + k_lower_gISv_y*k_lower_gSv_y + k_lower_gISv_z*k_lower_gSv_z + k_lower_gISw_y*k_lower_turn1_gR10 + k_lower_gISw_z*k_lower_turn1_gR20;
-  const T sym_M11 = cos_q_b1*k_lower_gISw_z + k_lower_gISv_x*k_lower_turn1_gSv_x - k_lower_gISw_y*sin_q_b1;
-  M[11] = sym_M11;
-  M[14] = sym_M11;
   T ddq[4];
   if (given_ddq) {
     for (std::size_t i = 0; i < 4; ++i) ddq[i] = given_ddq[i];
@@ -711,11 +704,16 @@ void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p
     ddq[1] = cos_q_a2*k_lower_Rxy*p_l*u_push - k_lower_W_b1_y*k_lower_turn1_Rxx*p_l*u_push + k_lower_turn1_V_b1_x*u_push - k_upper_gF0w_x;
     ddq[2] = -cos_q_b1*k_lower_gF0w_z - k_lower_gF0v_x*k_lower_turn1_gSv_x + k_lower_gF0w_y*sin_q_b1 - k_lower_turn1_Rxx*p_l*sin_q_b2*u_push;
     ddq[3] = -cos_q_a2*k_lower_gF0w_x + k_lower_Rxy*p_l*u_push - k_lower_gF0v_x*k_lower_gSv_x - k_lower_gF0v_y*k_lower_gSv_y - k_lower_gF0v_z*k_lower_gSv_z - k_lower_gF0w_y*k_lower_turn1_gR10 - k_lower_gF0w_z*k_lower_turn1_gR20;
-    T factor[16] = {};
+    T factor[16];
     T pivots[4];
     ldlt_factor(M, factor, pivots);
     ldlt_solve(factor, pivots, ddq);
-    for (std::size_t i = 0; i < 16; ++i) L[i] = factor[i];
+    L[4] = factor[4];
+    L[8] = factor[8];
+    L[9] = factor[9];
+    L[12] = factor[12];
+    L[13] = factor[13];
+    L[14] = factor[14];
     for (std::size_t i = 0; i < 4; ++i) D[i] = pivots[i];
   }
   F[0] = -k_lower_Rxy_d0*k_lower_turn1_W_a1_x*p_l*u_push + k_lower_W_a1_y*k_lower_turn1_Rxx_d0*p_l*u_push - k_lower_turn1_V_a1_x_d0*u_push;

@@ -388,6 +388,12 @@ void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::
     }
 }
 
+void write_lower_triangle(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target) {
+  std::size_t at = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = j; k < n; ++k, ++at) w.line(fmt::format("{}[{}] = {};", target, k * n + j, upper[at]));
+}
+
 std::string function(const std::string& doc, const std::string& signature, const std::string& body) {
   return doc + "template <class T>\n" + signature + " {\n" + with_zero_fills(signature, body) + "}\n\n";
 }

@@ -115,6 +115,9 @@ class BodyWriter {
 std::vector<GiNaC::ex> upper_triangle(const GiNaC::matrix& M, std::size_t n);
 /// Writes M (n×n, row-major) from its upper triangle into the array `target`.
 void write_symmetric(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target);
+/// Writes only the diagonal and the lower triangle of M (n×n, row-major) from its upper triangle:
+/// what ldlt_factor reads, for an M that nothing else reads.
+void write_lower_triangle(BodyWriter& w, const std::vector<std::string>& upper, std::size_t n, const std::string& target);
 /// A documented function template with the given signature and body.
 std::string function(const std::string& doc, const std::string& signature, const std::string& body);
 

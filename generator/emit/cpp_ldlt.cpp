@@ -221,4 +221,16 @@ std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
          fmt::format(fmt::runtime(functions), n, ldlt.factor, "L D L^T", ldlt.solve, solve_rows_functions(ldlt, n));
 }
 
+std::vector<std::size_t> factor_entries(const Equations& e, std::size_t n) {
+  std::vector<std::size_t> entries;
+  std::vector<int> tree = tree_of_mass_matrix(e, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      bool above = tree.empty();
+      for (int k = tree.empty() ? -1 : tree[i]; k >= 0 && !above; k = tree[std::size_t(k)]) above = std::size_t(k) == j;
+      if (above) entries.push_back(i * n + j);
+    }
+  return entries;
+}
+
 }  // namespace eomgen

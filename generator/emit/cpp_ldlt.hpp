@@ -42,4 +42,8 @@ std::string solve_rows_functions(const LdltCode& code, std::size_t n);
 /// filled them in), L D Lᵀ otherwise.
 std::string mass_matrix_factorization(const Equations& e, std::size_t n);
 
+/// The entries of L (row-major indices into n×n) that mass_matrix_factorization's ldlt_factor
+/// writes for `e`, in increasing order: those of the tree's chains, or all below the diagonal.
+std::vector<std::size_t> factor_entries(const Equations& e, std::size_t n);
+
 }  // namespace eomgen
