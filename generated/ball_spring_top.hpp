@@ -317,6 +317,9 @@ namespace detail {
 /// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
 /// ddq: 3; L: 3x3, row-major; D: 3.
 template <class T>
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
   T M[9];

@@ -690,6 +690,9 @@ namespace detail {
 /// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
 /// ddq: 5; L: 5x5, row-major; D: 5.
 template <class T>
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
   T M[25];

@@ -461,6 +461,9 @@ namespace detail {
 /// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
 /// ddq: 6; L: 6x6, row-major; D: 6.
 template <class T>
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
   T M[36];
