@@ -634,8 +634,9 @@ T potential_energy(T t, const T* x, const T* p) {
   const T k_top_Rzy = T(2)*q_qw*q_qx/c0 + T(2)*q_qy*q_qz/c0;
   const T k_top_Rzz = q_qw*q_qw/c0 - q_qx*q_qx/c0 - q_qy*q_qy/c0 + q_qz*q_qz/c0;
   const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/c0 - (T(1)/T(5))*q_qx*q_qz/c0 + T(1);
-  const T c1 = detail::atan_ratio(0, q_qx*q_qx + q_qy*q_qy + q_qz*q_qz, detail::magnitude(q_qw))*detail::atan_ratio(0, q_qx*q_qx + q_qy*q_qy + q_qz*q_qz, detail::magnitude(q_qw));
-  return (T(1)/T(4))*k_top_Rzz*p_g*p_m + (T(3)/T(100))*k_top_Rzy*p_g*p_m + (T(3)/T(25))*k_top_Rzx*p_g*p_m + T(2)*c1*p_k*q_qx*q_qx + T(2)*c1*p_k*q_qy*q_qy + T(2)*c1*p_k*q_qz*q_qz + k_top_oz*p_g*p_m;
+  const T c1 = detail::atan_ratio(0, q_qx*q_qx + q_qy*q_qy + q_qz*q_qz, detail::magnitude(q_qw));
+  const T c2 = c1*c1;
+  return (T(1)/T(4))*k_top_Rzz*p_g*p_m + (T(3)/T(100))*k_top_Rzy*p_g*p_m + (T(3)/T(25))*k_top_Rzx*p_g*p_m + T(2)*c2*p_k*q_qx*q_qx + T(2)*c2*p_k*q_qy*q_qy + T(2)*c2*p_k*q_qz*q_qz + k_top_oz*p_g*p_m;
 }
 
 /// The model's [outputs], in output_names order. y: 0.
@@ -668,8 +669,9 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T k_top_Rzy = T(2)*q_qw*q_qx/c0 + T(2)*q_qy*q_qz/c0;
   const T k_top_Rzz = q_qw*q_qw/c0 - q_qx*q_qx/c0 - q_qy*q_qy/c0 + q_qz*q_qz/c0;
   const T k_top_oz = (T(1)/T(5))*q_qw*q_qy/c0 - (T(1)/T(5))*q_qx*q_qz/c0 + T(1);
-  const T c1 = detail::atan_ratio(0, q_qx*q_qx + q_qy*q_qy + q_qz*q_qz, detail::magnitude(q_qw))*detail::atan_ratio(0, q_qx*q_qx + q_qy*q_qy + q_qz*q_qz, detail::magnitude(q_qw));
-  out[0] = (T(1)/T(100))*(T(100)*k_top_oz + T(12)*k_top_Rzx + T(25)*k_top_Rzz + T(3)*k_top_Rzy)*p_g*p_m - (T(1)/T(1000))*(T(2) + T(5)*p_m)*s_wx*s_wz + (T(1)/T(10000))*(T(100) + T(317)*p_m)*s_wx*s_wx + (T(1)/T(20000))*(T(13)*p_m + T(400))*s_wz*s_wz + (T(1)/T(20000))*(T(250) + T(629)*p_m)*s_wy*s_wy - (T(1)/T(5000))*(T(3)*p_m - T(5))*s_wx*s_wy + (T(3)/T(2000))*(T(1) - T(5)*p_m)*s_wy*s_wz + T(2)*c1*p_k*q_qx*q_qx + T(2)*c1*p_k*q_qy*q_qy + T(2)*c1*p_k*q_qz*q_qz;
+  const T c1 = detail::atan_ratio(0, q_qx*q_qx + q_qy*q_qy + q_qz*q_qz, detail::magnitude(q_qw));
+  const T c2 = c1*c1;
+  out[0] = (T(1)/T(100))*(T(100)*k_top_oz + T(12)*k_top_Rzx + T(25)*k_top_Rzz + T(3)*k_top_Rzy)*p_g*p_m - (T(1)/T(1000))*(T(2) + T(5)*p_m)*s_wx*s_wz + (T(1)/T(10000))*(T(100) + T(317)*p_m)*s_wx*s_wx + (T(1)/T(20000))*(T(13)*p_m + T(400))*s_wz*s_wz + (T(1)/T(20000))*(T(250) + T(629)*p_m)*s_wy*s_wy - (T(1)/T(5000))*(T(3)*p_m - T(5))*s_wx*s_wy + (T(3)/T(2000))*(T(1) - T(5)*p_m)*s_wy*s_wz + T(2)*c2*p_k*q_qx*q_qx + T(2)*c2*p_k*q_qy*q_qy + T(2)*c2*p_k*q_qz*q_qz;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x4, row-major.

@@ -481,8 +481,8 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T sin_q_beta = trig_sin[0];
   const T cos_q_beta = trig_cos[0];
   out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
-  out[1] = cos_q_beta*cos_q_beta*dq_alpha*p_A + dq_alpha*p_C*sin_q_beta*sin_q_beta + dq_gamma*p_C*sin_q_beta;
   out[2] = dq_alpha*p_C*sin_q_beta + dq_gamma*p_C;
+  out[1] = cos_q_beta*cos_q_beta*dq_alpha*p_A + dq_alpha*p_C*sin_q_beta*sin_q_beta + dq_gamma*p_C*sin_q_beta;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

@@ -525,8 +525,8 @@ void first_integrals(T t, const T* x, const T* p, T* out) {
   const T sin_q_theta = trig_sin[0];
   const T cos_q_theta = trig_cos[0];
   out[0] = kinetic_energy(t, x, p) + potential_energy(t, x, p);
-  out[1] = (p_A + p_m*p_s*p_s)*dq_psi*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*dq_psi*p_C + cos_q_theta*dq_phi*p_C;
   out[2] = cos_q_theta*dq_psi*p_C + dq_phi*p_C;
+  out[1] = (p_A + p_m*p_s*p_s)*dq_psi*sin_q_theta*sin_q_theta + cos_q_theta*cos_q_theta*dq_psi*p_C + cos_q_theta*dq_phi*p_C;
 }
 
 /// Constraint Jacobian C(q,t) of C q' + b = 0. C: 0x3, row-major.

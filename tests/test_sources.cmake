@@ -44,6 +44,7 @@ set(EOMGEN_TEST_FILES
   generator/import/right_angles_test.cpp            fast     sanitized
   generator/import/rounding_noise_test.cpp          fast     sanitized
   generator/symbolic/clamp_test.cpp                 fast     sanitized
+  generator/symbolic/cse_test.cpp                   fast     sanitized
   generator/symbolic/expression_cost_test.cpp       fast     sanitized
   generator/symbolic/magnitude_test.cpp             fast     sanitized
   generator/symbolic/rotation_angle_test.cpp        fast     sanitized

@@ -49,6 +49,16 @@ bool is_small_power_of_sum(const ex& e) {
          GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1))) <= 3;
 }
 
+// a power that the printer writes as its base repeated, f*f (emit/cpp_expression.cpp), of a
+// function: a call, which the compiler does not merge (std math functions may set errno), so the
+// call is a temporary even where the power is its only use (a ball spring's ½ k θ² called
+// atan_ratio twice)
+bool repeats_a_call(const ex& e) {
+  if (!GiNaC::is_a<GiNaC::power>(e) || !GiNaC::is_a<GiNaC::function>(e.op(0)) || !e.op(1).info(GiNaC::info_flags::integer)) return false;
+  GiNaC::numeric k = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1)));
+  return k >= 2 && k <= 4;
+}
+
 }  // namespace
 
 // The sign conventions below exist because GiNaC may hold c·(a − b) as
@@ -156,6 +166,7 @@ void CommonSubexpressions::count(const ex& original, std::map<ex, int, GiNaC::ex
   }
   if (uses[e]++ > 0) return;  // children counted on the first visit only
   for (std::size_t i = 0; i < e.nops(); ++i) count(e.op(i), uses);
+  if (repeats_a_call(e)) ++uses[e.op(0)];
 }
 
 ex CommonSubexpressions::reduce(const ex& original, const std::map<ex, int, GiNaC::ex_is_less>& uses, CseBatch& batch) {
