@@ -461,9 +461,6 @@ namespace detail {
 /// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.
 /// ddq: 6; L: 6x6, row-major; D: 6.
 template <class T>
-#if defined(__GNUC__)
-__attribute__((flatten))
-#endif
 void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D) {
   (void)t; (void)x; (void)u; (void)p;
   T M[36];
@@ -471,6 +468,13 @@ void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T*
   detail::ldlt_factor(M, L, D);
   detail::ldlt_solve(L, D, ddq);
 }
+
+#if defined(__GNUC__)
+/// factored_accelerations for double, with the factorization and the solve inlined.
+__attribute__((flatten)) inline void factored_accelerations(double t, const double* x, const double* u, const double* p, double* ddq, double* L, double* D) {
+  factored_accelerations<double>(t, x, u, p, ddq, L, D);
+}
+#endif
 
 }  // namespace detail
 

@@ -423,13 +423,6 @@ MassMatrixAndForcing mass_matrix_and_forcing_code(const Equations& e) {
 
 // q'' and the factors of M for jacobian_state of a tree, whose own code then is the sweep's call and
 // the solves: rhs's code is not written a second time (it was most of a 21-joint tree's header).
-// Flattened: ldlt_factor and ldlt_solve, which other functions call too, were left as calls, and M,
-// L and D went through memory between them (rhs, g++ -O2, one process: the 7-joint arm 240 → 209 ns,
-// the quadruped 1.29 → 0.93 µs, the 21-joint tree 1.96 → 1.91 µs, the oblique tree unchanged)
-constexpr const char* factored_accelerations_signature =
-    "#if defined(__GNUC__)\n__attribute__((flatten))\n#endif\n"
-    "void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D)";
-
 std::string factored_accelerations_function(const Equations& e) {
   if (dynamics_form(e) != DynamicsForm::newton_euler) return "";
   std::size_t n = e.num_velocities();
@@ -438,11 +431,25 @@ std::string factored_accelerations_function(const Equations& e) {
   w.line("detail::mass_matrix_and_forcing(t, x, u, p, M, ddq);");
   w.line("detail::ldlt_factor(M, L, D);");
   w.line("detail::ldlt_solve(L, D, ddq);");
+  // For double, flattened: ldlt_factor and ldlt_solve, which other functions call too, were left
+  // as calls, and M, L and D went through memory between them (rhs, g++ -O2, one process: the
+  // 7-joint arm 240 → 209 ns, the quadruped 1.29 → 0.93 µs, the 21-joint tree 1.96 → 1.91 µs, the
+  // oblique tree unchanged). Not the template: for a user's automatic-differentiation T, flatten
+  // would inline every operation's own code into M's thousands.
+  const char* for_double =
+      "#if defined(__GNUC__)\n"
+      "/// factored_accelerations for double, with the factorization and the solve inlined.\n"
+      "__attribute__((flatten)) inline void factored_accelerations(double t, const double* x, const double* u, const double* p, "
+      "double* ddq, double* L, double* D) {\n"
+      "  factored_accelerations<double>(t, x, u, p, ddq, L, D);\n"
+      "}\n"
+      "#endif\n\n";
   return "namespace detail {\n\n" +
          function(fmt::format("/// The accelerations M^-1 f into ddq and M = L^T D L (ldlt_factor) into L and D, as rhs computes them.\n"
                               "/// ddq: {0}; L: {0}x{0}, row-major; D: {0}.\n", n),
-                  factored_accelerations_signature, w.finish(all_unused)) +
-         "}  // namespace detail\n\n";
+                  "void factored_accelerations(T t, const T* x, const input_t<T>* u, const T* p, T* ddq, T* L, T* D)",
+                  w.finish(all_unused)) +
+         for_double + "}  // namespace detail\n\n";
 }
 
 }  // namespace eomgen
