@@ -1,5 +1,6 @@
 #include "emit/cpp_ldlt.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include <fmt/format.h>
@@ -222,14 +223,17 @@ std::string mass_matrix_factorization(const Equations& e, std::size_t n) {
 }
 
 std::vector<std::size_t> factor_entries(const Equations& e, std::size_t n) {
-  std::vector<std::size_t> entries;
   std::vector<int> tree = tree_of_mass_matrix(e, n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < i; ++j) {
-      bool above = tree.empty();
-      for (int k = tree.empty() ? -1 : tree[i]; k >= 0 && !above; k = tree[std::size_t(k)]) above = std::size_t(k) == j;
-      if (above) entries.push_back(i * n + j);
-    }
+  std::vector<std::size_t> entries;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::size_t> columns;  // of row i: every j < i, or the coordinates above i in the tree
+    if (tree.empty())
+      for (std::size_t j = 0; j < i; ++j) columns.push_back(j);
+    else
+      for (int j = tree[i]; j >= 0; j = tree[std::size_t(j)]) columns.push_back(std::size_t(j));
+    std::sort(columns.begin(), columns.end());
+    for (std::size_t j : columns) entries.push_back(i * n + j);
+  }
   return entries;
 }
 
