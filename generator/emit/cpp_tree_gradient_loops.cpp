@@ -234,15 +234,12 @@ struct tree_link_tables {
       if (std::size_t(root_link[r]) == i) return &root_joint[r];
     return nullptr;
   }
-  // the twist and the acceleration link i hangs from: its parent's (in v, a), its jointed root's, or
-  // the world's (at rest; falling against gravity)
-  const T* twist_above(std::size_t i, const T (*v)[6], const T* rest) const {
-    const tree_jointed_root<T>* root = parent[i] < 0 ? jointed(i) : nullptr;
-    return parent[i] >= 0 ? v[parent[i]] : root ? root->v : rest;
-  }
-  const T* acceleration_above(std::size_t i, const T (*a)[6], const T* fall) const {
-    const tree_jointed_root<T>* root = parent[i] < 0 ? jointed(i) : nullptr;
-    return parent[i] >= 0 ? a[parent[i]] : root ? root->a : fall;
+  // the motion (a twist or an acceleration) link i hangs from: its parent's in `links`, its jointed
+  // root's (`of_root`: &tree_jointed_root<T>::v or ::a), or the world's (at rest; falling against gravity)
+  const T* motion_above(std::size_t i, const T (*links)[6], T (tree_jointed_root<T>::*of_root)[6], const T* world) const {
+    if (parent[i] >= 0) return links[parent[i]];
+    const tree_jointed_root<T>* root = jointed(i);
+    return root ? root->*of_root : world;
   }
   // whether link i has a column c, a direction d: bounded by the tables' extents, so that the loops
   // of a tree of hinges (one column) compile as its one column's code
@@ -319,8 +316,8 @@ void tree_loops_mass_matrix_and_forcing(const tree_link_tables<L, Columns, Direc
   for (std::size_t i = 0; i < L; ++i) {
     tree_place(parent[i] < 0 ? identity : R[parent[i]], parent[i] < 0 ? rest : o[parent[i]], tree.turn[i], tree.offset[i],
                tree.column[i][0], tree.inertia[i], R[i], o[i], S[i][0], C[i]);
-    const T* vp = tree.twist_above(i, v, rest);
-    const T* ap = tree.acceleration_above(i, a, fall);
+    const T* vp = tree.motion_above(i, v, &tree_jointed_root<T>::v, rest);
+    const T* ap = tree.motion_above(i, a, &tree_jointed_root<T>::a, fall);
     // v = v_p + V, a = a_p + v_p x V at q'' = 0, the joint's velocity V = S s
     if (tree.columns[i] == 0) {
       for (int k = 0; k < 6; ++k) v[i][k] = vp[k], a[i][k] = ap[k];

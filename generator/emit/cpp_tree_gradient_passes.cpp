@@ -28,8 +28,8 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, Roots, T>
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
-  auto parent_twist = [&](std::size_t i) { return tree.twist_above(i, v, rest); };
-  auto parent_acceleration = [&](std::size_t i) { return tree.acceleration_above(i, a, fall); };
+  auto parent_twist = [&](std::size_t i) { return tree.motion_above(i, v, &tree_jointed_root<T>::v, rest); };
+  auto parent_acceleration = [&](std::size_t i) { return tree.motion_above(i, a, &tree_jointed_root<T>::a, fall); };
   // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
   auto accelerate = [&](std::size_t i) {
     const T* vp = parent_twist(i);
@@ -153,8 +153,8 @@ void tree_gradient_pass(const tree_link_tables<L, Columns, Directions, Roots, T>
   const T rest[6] = {T(0), T(0), T(0), T(0), T(0), T(0)};
   const T fall[6] = {T(0), T(0), T(0), -tree.gravity[0], -tree.gravity[1], -tree.gravity[2]};
   const T identity[9] = {T(1), T(0), T(0), T(0), T(1), T(0), T(0), T(0), T(1)};
-  auto parent_twist = [&](std::size_t i) { return tree.twist_above(i, v, rest); };
-  auto parent_acceleration = [&](std::size_t i) { return tree.acceleration_above(i, a, fall); };
+  auto parent_twist = [&](std::size_t i) { return tree.motion_above(i, v, &tree_jointed_root<T>::v, rest); };
+  auto parent_acceleration = [&](std::size_t i) { return tree.motion_above(i, a, &tree_jointed_root<T>::a, fall); };
   // link i's a and Psi'' at the accelerations ddq, into a[i] and ddS[i] (its motion formed)
   auto accelerate = [&](std::size_t i) {
     const T* vp = parent_twist(i);

@@ -20,7 +20,7 @@ namespace {
 // MuJoCo 2.2.2 sets it, and the velocity's −kv
 bool position_servo(const mjModel* m, int a) {
   const double* bias = m->actuator_biasprm + mjNBIAS * a;
-  return m->actuator_biastype[a] == mjBIAS_AFFINE && bias[0] == 0 && bias[1] == -m->actuator_gainprm[mjNGAIN * a] && bias[2] == 0;
+  return position_like(m, a) && bias[0] == 0 && bias[2] == 0;
 }
 
 // MuJoCo 3's inheritrange, read as the group (inherited_ranges.hpp): the control range from the

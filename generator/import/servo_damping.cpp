@@ -31,10 +31,11 @@ std::optional<std::string> with_servo_damping_as_user(const std::string& mjcf) {
   return out;
 }
 
-bool reads_bias_as_damping_ratio(const mjModel* m, int a) {
-  const double* bias = m->actuator_biasprm + mjNBIAS * a;
-  return m->actuator_biastype[a] == mjBIAS_AFFINE && m->actuator_gainprm[mjNGAIN * a] == -bias[1] && bias[2] > 0;
+bool position_like(const mjModel* m, int a) {
+  return m->actuator_biastype[a] == mjBIAS_AFFINE && m->actuator_gainprm[mjNGAIN * a] == -m->actuator_biasprm[mjNBIAS * a + 1];
 }
+
+bool reads_bias_as_damping_ratio(const mjModel* m, int a) { return position_like(m, a) && m->actuator_biasprm[mjNBIAS * a + 2] > 0; }
 
 double servo_velocity_gain(const mjModel* m, const mjData* d, int a, double damping) {
   if (!(damping < 0)) return damping;

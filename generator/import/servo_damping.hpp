@@ -27,6 +27,10 @@ bool has_actuator_user_values(const std::string& mjcf);
 /// dampratio="..." as user="-...": nothing where a dampratio is negative (MuJoCo 3 refuses it).
 std::optional<std::string> with_servo_damping_as_user(const std::string& mjcf);
 
+/// Whether actuator `a` has a position servo's shape: an affine bias whose position coefficient is
+/// minus its gain (bias₁ = −kp), whatever its element.
+bool position_like(const mjModel* m, int a);
+
 /// Whether actuator `a` is one whose positive velocity coefficient MuJoCo 3's mj_setConst reads as a
 /// damping ratio: position-like (its gain is minus its position coefficient, whatever its element),
 /// its bias affine, with biasprm[2] > 0, which MuJoCo 2.2.2 would take as a velocity feedback that
