@@ -288,11 +288,15 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
-/// tangent sweep through the frames' recursion). ddq: 3; F: 3x7, row-major.
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f at the given q''
+/// (linearization), or, for jacobian_state with given_ddq null, at q'' = M^-1 f, with M =
+/// L^T D L into L and D: M and f from the composite inertias and forces at q'' = 0 of the
+/// bodies' part in closed form (in the world's axes or a link's, whichever takes fewer
+/// operations), a tangent sweep through the rest.
+/// given_ddq: 3 or null; F: 3x7, row-major.
 template <class T>
-void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
-  (void)t; (void)x; (void)u; (void)p; (void)ddq;
+void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p, const T* given_ddq, T* L, T* D, T* F) {
+  (void)t; (void)x; (void)u; (void)p;
   const T q_qw = x[0];
   const T q_qx = x[1];
   const T q_qy = x[2];
@@ -303,120 +307,121 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T p_m = p[0];
   const T p_g = p[1];
   const T k_top_tqn = T(1)/(q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz);
-  const T k_top_tqn_d0 = -T(2)*k_top_tqn*k_top_tqn*q_qw;
-  const T k_top_tqn_d1 = -T(2)*k_top_tqn*k_top_tqn*q_qx;
-  const T k_top_tqn_d2 = -T(2)*k_top_tqn*k_top_tqn*q_qy;
-  const T k_top_tqn_d3 = -T(2)*k_top_tqn*k_top_tqn*q_qz;
-  const T c0_d0 = -k_top_tqn_d0*q_qx*q_qx;
-  const T c0_d1 = -T(2)*k_top_tqn*q_qx - k_top_tqn_d1*q_qx*q_qx;
-  const T c0_d2 = -k_top_tqn_d2*q_qx*q_qx;
-  const T c0_d3 = -k_top_tqn_d3*q_qx*q_qx;
-  const T c2_d0 = k_top_tqn_d0*q_qz*q_qz;
-  const T c2_d1 = k_top_tqn_d1*q_qz*q_qz;
-  const T c2_d2 = k_top_tqn_d2*q_qz*q_qz;
-  const T c2_d3 = T(2)*k_top_tqn*q_qz + k_top_tqn_d3*q_qz*q_qz;
-  const T c4_d0 = T(2)*k_top_tqn*q_qy + T(2)*k_top_tqn_d0*q_qw*q_qy;
-  const T c4_d1 = T(2)*k_top_tqn_d1*q_qw*q_qy;
-  const T c4_d2 = T(2)*k_top_tqn*q_qw + T(2)*k_top_tqn_d2*q_qw*q_qy;
-  const T c4_d3 = T(2)*k_top_tqn_d3*q_qw*q_qy;
-  const T c5_d0 = -k_top_tqn_d0*q_qy*q_qy;
-  const T c5_d1 = -k_top_tqn_d1*q_qy*q_qy;
-  const T c5_d2 = -T(2)*k_top_tqn*q_qy - k_top_tqn_d2*q_qy*q_qy;
-  const T c5_d3 = -k_top_tqn_d3*q_qy*q_qy;
-  const T c6_d0 = T(2)*k_top_tqn_d0*q_qy*q_qz;
-  const T c6_d1 = T(2)*k_top_tqn_d1*q_qy*q_qz;
-  const T c6_d2 = T(2)*k_top_tqn*q_qz + T(2)*k_top_tqn_d2*q_qy*q_qz;
-  const T c6_d3 = T(2)*k_top_tqn*q_qy + T(2)*k_top_tqn_d3*q_qy*q_qz;
-  const T k_top_tEzx_d0 = T(2)*k_top_tqn_d0*q_qx*q_qz - c4_d0;
-  const T k_top_tEzx_d1 = T(2)*k_top_tqn*q_qz + T(2)*k_top_tqn_d1*q_qx*q_qz - c4_d1;
-  const T k_top_tEzx_d2 = T(2)*k_top_tqn_d2*q_qx*q_qz - c4_d2;
-  const T k_top_tEzx_d3 = T(2)*k_top_tqn*q_qx + T(2)*k_top_tqn_d3*q_qx*q_qz - c4_d3;
-  const T k_top_tEzy_d0 = T(2)*k_top_tqn*q_qx + T(2)*k_top_tqn_d0*q_qw*q_qx + c6_d0;
-  const T k_top_tEzy_d1 = T(2)*k_top_tqn*q_qw + T(2)*k_top_tqn_d1*q_qw*q_qx + c6_d1;
-  const T k_top_tEzy_d2 = T(2)*k_top_tqn_d2*q_qw*q_qx + c6_d2;
-  const T k_top_tEzy_d3 = T(2)*k_top_tqn_d3*q_qw*q_qx + c6_d3;
-  const T k_top_tEzz_d0 = T(2)*k_top_tqn*q_qw + c0_d0 + c2_d0 + c5_d0 + k_top_tqn_d0*q_qw*q_qw;
-  const T k_top_tEzz_d1 = c0_d1 + c2_d1 + c5_d1 + k_top_tqn_d1*q_qw*q_qw;
-  const T k_top_tEzz_d2 = c0_d2 + c2_d2 + c5_d2 + k_top_tqn_d2*q_qw*q_qw;
-  const T k_top_tEzz_d3 = c0_d3 + c2_d3 + c5_d3 + k_top_tqn_d3*q_qw*q_qw;
-  const T k_top_tB0Iw_x = (T(1)/T(1000))*s_wy + (T(1)/T(50))*s_wx - (T(1)/T(500))*s_wz;
-  const T k_top_tB0Iw_y = (T(1)/T(1000))*s_wx + (T(1)/T(40))*s_wy + (T(3)/T(2000))*s_wz;
-  const T k_top_tB0Iw_z = (T(1)/T(25))*s_wz - (T(1)/T(500))*s_wx + (T(3)/T(2000))*s_wy;
-  const T k_top_ta_x_d0 = k_top_tEzx_d0*p_g;
-  const T k_top_ta_x_d1 = k_top_tEzx_d1*p_g;
-  const T k_top_ta_x_d2 = k_top_tEzx_d2*p_g;
-  const T k_top_ta_x_d3 = k_top_tEzx_d3*p_g;
-  const T k_top_ta_y_d0 = k_top_tEzy_d0*p_g;
-  const T k_top_ta_y_d1 = k_top_tEzy_d1*p_g;
-  const T k_top_ta_y_d2 = k_top_tEzy_d2*p_g;
-  const T k_top_ta_y_d3 = k_top_tEzy_d3*p_g;
-  const T k_top_ta_z_d0 = k_top_tEzz_d0*p_g;
-  const T k_top_ta_z_d1 = k_top_tEzz_d1*p_g;
-  const T k_top_ta_z_d2 = k_top_tEzz_d2*p_g;
-  const T k_top_ta_z_d3 = k_top_tEzz_d3*p_g;
-  const T k_top_tB0F_x_d0 = k_top_ta_x_d0*p_m;
-  const T k_top_tB0F_x_d1 = k_top_ta_x_d1*p_m;
-  const T k_top_tB0F_x_d2 = k_top_ta_x_d2*p_m;
-  const T k_top_tB0F_x_d3 = k_top_ta_x_d3*p_m;
-  const T k_top_tB0F_x_d4 = (T(1)/T(4))*p_m*s_wz + (T(3)/T(100))*p_m*s_wy;
-  const T k_top_tB0F_x_d5 = -(T(1)/T(25))*p_m*s_wy + (T(3)/T(100))*p_m*s_wx;
-  const T k_top_tB0F_x_d6 = -(T(1)/T(25))*p_m*s_wz + (T(1)/T(4))*p_m*s_wx;
-  const T k_top_tB0F_y_d0 = k_top_ta_y_d0*p_m;
-  const T k_top_tB0F_y_d1 = k_top_ta_y_d1*p_m;
-  const T k_top_tB0F_y_d2 = k_top_ta_y_d2*p_m;
-  const T k_top_tB0F_y_d3 = k_top_ta_y_d3*p_m;
-  const T k_top_tB0F_y_d4 = (T(1)/T(50))*p_m*s_wy - (T(3)/T(50))*p_m*s_wx;
-  const T k_top_tB0F_y_d5 = (T(1)/T(4))*p_m*s_wz + (T(1)/T(50))*p_m*s_wx;
-  const T k_top_tB0F_y_d6 = (T(1)/T(4))*p_m*s_wy - (T(3)/T(50))*p_m*s_wz;
-  const T k_top_tB0F_z_d0 = k_top_ta_z_d0*p_m;
-  const T k_top_tB0F_z_d1 = k_top_ta_z_d1*p_m;
-  const T k_top_tB0F_z_d2 = k_top_ta_z_d2*p_m;
-  const T k_top_tB0F_z_d3 = k_top_ta_z_d3*p_m;
-  const T k_top_tB0F_z_d4 = -(T(1)/T(2))*p_m*s_wx + (T(1)/T(50))*p_m*s_wz;
-  const T k_top_tB0F_z_d5 = -(T(1)/T(2))*p_m*s_wy + (T(3)/T(100))*p_m*s_wz;
-  const T k_top_tB0F_z_d6 = (T(1)/T(50))*p_m*s_wx + (T(3)/T(100))*p_m*s_wy;
-  const T k_top_tN_x_d0 = -(T(1)/T(4))*k_top_tB0F_y_d0 + (T(3)/T(100))*k_top_tB0F_z_d0;
-  const T k_top_tN_x_d1 = -(T(1)/T(4))*k_top_tB0F_y_d1 + (T(3)/T(100))*k_top_tB0F_z_d1;
-  const T k_top_tN_x_d2 = -(T(1)/T(4))*k_top_tB0F_y_d2 + (T(3)/T(100))*k_top_tB0F_z_d2;
-  const T k_top_tN_x_d3 = -(T(1)/T(4))*k_top_tB0F_y_d3 + (T(3)/T(100))*k_top_tB0F_z_d3;
-  const T k_top_tN_x_d4 = -(T(1)/T(1000))*s_wz - (T(1)/T(4))*k_top_tB0F_y_d4 - (T(1)/T(500))*s_wy + (T(3)/T(100))*k_top_tB0F_z_d4;
-  const T k_top_tN_x_d5 = -(T(1)/T(4))*k_top_tB0F_y_d5 - (T(1)/T(40))*s_wz + (T(3)/T(100))*k_top_tB0F_z_d5 + (T(3)/T(2000))*s_wy + k_top_tB0Iw_z;
-  const T k_top_tN_x_d6 = (T(1)/T(25))*s_wy - (T(1)/T(4))*k_top_tB0F_y_d6 + (T(3)/T(100))*k_top_tB0F_z_d6 - (T(3)/T(2000))*s_wz - k_top_tB0Iw_y;
-  const T k_top_tN_y_d0 = (T(1)/T(4))*k_top_tB0F_x_d0 - (T(1)/T(50))*k_top_tB0F_z_d0;
-  const T k_top_tN_y_d1 = (T(1)/T(4))*k_top_tB0F_x_d1 - (T(1)/T(50))*k_top_tB0F_z_d1;
-  const T k_top_tN_y_d2 = (T(1)/T(4))*k_top_tB0F_x_d2 - (T(1)/T(50))*k_top_tB0F_z_d2;
-  const T k_top_tN_y_d3 = (T(1)/T(4))*k_top_tB0F_x_d3 - (T(1)/T(50))*k_top_tB0F_z_d3;
-  const T k_top_tN_y_d4 = (T(1)/T(4))*k_top_tB0F_x_d4 - (T(1)/T(50))*k_top_tB0F_z_d4 + (T(1)/T(50))*s_wz + (T(1)/T(500))*s_wx - k_top_tB0Iw_z;
-  const T k_top_tN_y_d5 = (T(1)/T(1000))*s_wz + (T(1)/T(4))*k_top_tB0F_x_d5 - (T(1)/T(50))*k_top_tB0F_z_d5 - (T(3)/T(2000))*s_wx;
-  const T k_top_tN_y_d6 = -(T(1)/T(25))*s_wx + (T(1)/T(4))*k_top_tB0F_x_d6 - (T(1)/T(50))*k_top_tB0F_z_d6 - (T(1)/T(500))*s_wz + k_top_tB0Iw_x;
-  const T k_top_tN_z_d0 = (T(1)/T(50))*k_top_tB0F_y_d0 - (T(3)/T(100))*k_top_tB0F_x_d0;
-  const T k_top_tN_z_d1 = (T(1)/T(50))*k_top_tB0F_y_d1 - (T(3)/T(100))*k_top_tB0F_x_d1;
-  const T k_top_tN_z_d2 = (T(1)/T(50))*k_top_tB0F_y_d2 - (T(3)/T(100))*k_top_tB0F_x_d2;
-  const T k_top_tN_z_d3 = (T(1)/T(50))*k_top_tB0F_y_d3 - (T(3)/T(100))*k_top_tB0F_x_d3;
-  const T k_top_tN_z_d4 = (T(1)/T(1000))*s_wx + (T(1)/T(50))*k_top_tB0F_y_d4 - (T(1)/T(50))*s_wy - (T(3)/T(100))*k_top_tB0F_x_d4 + k_top_tB0Iw_y;
-  const T k_top_tN_z_d5 = -(T(1)/T(1000))*s_wy + (T(1)/T(40))*s_wx + (T(1)/T(50))*k_top_tB0F_y_d5 - (T(3)/T(100))*k_top_tB0F_x_d5 - k_top_tB0Iw_x;
-  const T k_top_tN_z_d6 = (T(1)/T(50))*k_top_tB0F_y_d6 + (T(1)/T(500))*s_wy - (T(3)/T(100))*k_top_tB0F_x_d6 + (T(3)/T(2000))*s_wx;
-  F[0] = k_top_tN_x_d0;
-  F[1] = k_top_tN_x_d1;
-  F[2] = k_top_tN_x_d2;
-  F[3] = k_top_tN_x_d3;
-  F[4] = k_top_tN_x_d4;
-  F[5] = k_top_tN_x_d5;
-  F[6] = k_top_tN_x_d6;
-  F[7] = k_top_tN_y_d0;
-  F[8] = k_top_tN_y_d1;
-  F[9] = k_top_tN_y_d2;
-  F[10] = k_top_tN_y_d3;
-  F[11] = k_top_tN_y_d4;
-  F[12] = k_top_tN_y_d5;
-  F[13] = k_top_tN_y_d6;
-  F[14] = k_top_tN_z_d0;
-  F[15] = k_top_tN_z_d1;
-  F[16] = k_top_tN_z_d2;
-  F[17] = k_top_tN_z_d3;
-  F[18] = k_top_tN_z_d4;
-  F[19] = k_top_tN_z_d5;
-  F[20] = k_top_tN_z_d6;
+  const T k_top_tEzx = -T(2)*k_top_tqn*q_qw*q_qy + T(2)*k_top_tqn*q_qx*q_qz;
+  const T k_top_tEzy = T(2)*k_top_tqn*q_qw*q_qx + T(2)*k_top_tqn*q_qy*q_qz;
+  const T k_top_tEzz = k_top_tqn*q_qw*q_qw - k_top_tqn*q_qx*q_qx - k_top_tqn*q_qy*q_qy + k_top_tqn*q_qz*q_qz;
+  const T k_top_ga0v_x = k_top_tEzx*p_g;
+  const T k_top_ga0v_y = k_top_tEzy*p_g;
+  const T k_top_ga0v_z = k_top_tEzz*p_g;
+  const T k_top_gIh_x = (T(1)/T(50))*p_m;
+  const T k_top_gIh_y = (T(3)/T(100))*p_m;
+  const T k_top_gIh_z = (T(1)/T(4))*p_m;
+  const T k_top_gIJ00 = (T(317)/T(5000))*p_m + T(1)/T(50);
+  const T k_top_gIJ01 = -(T(3)/T(5000))*p_m + T(1)/T(1000);
+  const T k_top_gIJ02 = -(T(1)/T(200))*p_m - T(1)/T(500);
+  const T k_top_gIJ11 = (T(629)/T(10000))*p_m + T(1)/T(40);
+  const T k_top_gIJ12 = -(T(3)/T(400))*p_m + T(3)/T(2000);
+  const T k_top_gIJ22 = (T(13)/T(10000))*p_m + T(1)/T(25);
+  const T k_top_gIvw_x = k_top_gIJ00*s_wx + k_top_gIJ01*s_wy + k_top_gIJ02*s_wz;
+  const T k_top_gIvw_y = k_top_gIJ01*s_wx + k_top_gIJ11*s_wy + k_top_gIJ12*s_wz;
+  const T k_top_gIvw_z = k_top_gIJ02*s_wx + k_top_gIJ12*s_wy + k_top_gIJ22*s_wz;
+  const T k_top_gF0w_x = k_top_gIh_y*k_top_ga0v_z - k_top_gIh_z*k_top_ga0v_y - k_top_gIvw_y*s_wz + k_top_gIvw_z*s_wy;
+  const T k_top_gF0w_y = -k_top_gIh_x*k_top_ga0v_z + k_top_gIh_z*k_top_ga0v_x + k_top_gIvw_x*s_wz - k_top_gIvw_z*s_wx;
+  const T k_top_gF0w_z = k_top_gIh_x*k_top_ga0v_y - k_top_gIh_y*k_top_ga0v_x - k_top_gIvw_x*s_wy + k_top_gIvw_y*s_wx;
+  T M[9];
+  M[0] = k_top_gIJ00;
+  M[3] = k_top_gIJ01;
+  M[6] = k_top_gIJ02;
+  M[4] = k_top_gIJ11;
+  M[7] = k_top_gIJ12;
+  M[8] = k_top_gIJ22;
+  T ddq[3];
+  if (given_ddq) {
+    for (std::size_t i = 0; i < 3; ++i) ddq[i] = given_ddq[i];
+  } else {
+    ddq[0] = -k_top_gF0w_x;
+    ddq[1] = -k_top_gF0w_y;
+    ddq[2] = -k_top_gF0w_z;
+    T factor[9];
+    T pivots[3];
+    ldlt_factor(M, factor, pivots);
+    ldlt_solve(factor, pivots, ddq);
+    L[3] = factor[3];
+    L[6] = factor[6];
+    L[7] = factor[7];
+    for (std::size_t i = 0; i < 3; ++i) D[i] = pivots[i];
+  }
+  const T cq2 = q_qw*q_qw + q_qx*q_qx + q_qy*q_qy + q_qz*q_qz;
+  const T k_top_gT0w_y = -T(2)*q_qy/cq2;
+  const T cq3 = -k_top_gT0w_y*k_top_ga0v_z;
+  const T k_top_gT0w_z = -T(2)*q_qz/cq2;
+  const T cq4 = k_top_gT0w_z*k_top_ga0v_y;
+  const T k_top_gddS0v_x = cq3 + cq4;
+  const T k_top_gT0w_x = -T(2)*q_qx/cq2;
+  const T k_top_gddS0v_y = k_top_gT0w_x*k_top_ga0v_z - k_top_gT0w_z*k_top_ga0v_x;
+  F[14] = k_top_gIh_x*k_top_gddS0v_y - k_top_gIh_y*k_top_gddS0v_x;
+  const T k_top_gddS0v_z = -k_top_gT0w_x*k_top_ga0v_y + k_top_gT0w_y*k_top_ga0v_x;
+  F[0] = k_top_gIh_y*k_top_gddS0v_z - k_top_gIh_z*k_top_gddS0v_y;
+  F[7] = -k_top_gIh_x*k_top_gddS0v_z + k_top_gIh_z*k_top_gddS0v_x;
+  const T cq5 = k_top_gT0w_y*k_top_ga0v_y;
+  const T cq6 = k_top_gT0w_z*k_top_ga0v_z;
+  const T k_top_gddS1v_x = -cq5 - cq6;
+  const T k_top_gT1w_x = T(2)*q_qw/cq2;
+  const T cq7 = k_top_gT1w_x*k_top_ga0v_z;
+  const T k_top_gddS1v_y = cq7 + k_top_gT0w_y*k_top_ga0v_x;
+  F[15] = k_top_gIh_x*k_top_gddS1v_y - k_top_gIh_y*k_top_gddS1v_x;
+  const T cq8 = k_top_gT1w_x*k_top_ga0v_y;
+  const T k_top_gddS1v_z = -cq8 + k_top_gT0w_z*k_top_ga0v_x;
+  F[1] = k_top_gIh_y*k_top_gddS1v_z - k_top_gIh_z*k_top_gddS1v_y;
+  F[8] = -k_top_gIh_x*k_top_gddS1v_z + k_top_gIh_z*k_top_gddS1v_x;
+  const T k_top_gddS2v_x = -cq7 + k_top_gT0w_x*k_top_ga0v_y;
+  const T cq9 = k_top_gT0w_x*k_top_ga0v_x;
+  const T k_top_gddS2v_y = -cq6 - cq9;
+  F[16] = k_top_gIh_x*k_top_gddS2v_y - k_top_gIh_y*k_top_gddS2v_x;
+  const T cq10 = k_top_gT1w_x*k_top_ga0v_x;
+  const T k_top_gddS2v_z = cq10 + cq4;
+  F[2] = k_top_gIh_y*k_top_gddS2v_z - k_top_gIh_z*k_top_gddS2v_y;
+  F[9] = -k_top_gIh_x*k_top_gddS2v_z + k_top_gIh_z*k_top_gddS2v_x;
+  const T k_top_gddS3v_x = cq8 + k_top_gT0w_x*k_top_ga0v_z;
+  const T k_top_gddS3v_y = -cq10 - cq3;
+  F[17] = k_top_gIh_x*k_top_gddS3v_y - k_top_gIh_y*k_top_gddS3v_x;
+  const T k_top_gddS3v_z = -cq5 - cq9;
+  F[3] = k_top_gIh_y*k_top_gddS3v_z - k_top_gIh_z*k_top_gddS3v_y;
+  F[10] = -k_top_gIh_x*k_top_gddS3v_z + k_top_gIh_z*k_top_gddS3v_x;
+  const T k_top_gD01 = k_top_gIJ00*s_wz - k_top_gIJ02*s_wx - k_top_gIJ11*s_wz + k_top_gIJ12*s_wy;
+  const T k_top_gBS0w_y = k_top_gD01 + k_top_gIvw_z;
+  F[5] = k_top_gBS0w_y - k_top_gIJ00*s_wz + k_top_gIJ02*s_wx;
+  const T k_top_gD02 = -k_top_gIJ00*s_wy + k_top_gIJ01*s_wx - k_top_gIJ12*s_wz + k_top_gIJ22*s_wy;
+  const T k_top_gBS0w_z = k_top_gD02 - k_top_gIvw_y;
+  F[6] = k_top_gBS0w_z + k_top_gIJ00*s_wy - k_top_gIJ01*s_wx;
+  const T k_top_gBS1w_x = k_top_gD01 - k_top_gIvw_z;
+  F[11] = k_top_gBS1w_x + k_top_gIJ11*s_wz - k_top_gIJ12*s_wy;
+  const T k_top_gD12 = -k_top_gIJ01*s_wy + k_top_gIJ02*s_wz + k_top_gIJ11*s_wx - k_top_gIJ22*s_wx;
+  const T k_top_gBS1w_z = k_top_gD12 + k_top_gIvw_x;
+  F[13] = k_top_gBS1w_z + k_top_gIJ01*s_wy - k_top_gIJ11*s_wx;
+  const T k_top_gBS2w_x = k_top_gD02 + k_top_gIvw_y;
+  F[18] = k_top_gBS2w_x + k_top_gIJ12*s_wz - k_top_gIJ22*s_wy;
+  const T k_top_gBS2w_y = k_top_gD12 - k_top_gIvw_x;
+  F[19] = k_top_gBS2w_y - k_top_gIJ02*s_wz + k_top_gIJ22*s_wx;
+  const T cq0 = -T(2)*k_top_gIJ01*s_wz;
+  const T k_top_gD00 = T(2)*k_top_gIJ02*s_wy + cq0;
+  const T cq11 = -k_top_gIJ01*s_wz;
+  F[4] = -cq11 + k_top_gD00 - k_top_gIJ02*s_wy;
+  const T cq1 = T(2)*k_top_gIJ12*s_wx;
+  const T k_top_gD11 = -cq0 - cq1;
+  const T cq12 = k_top_gIJ12*s_wx;
+  F[12] = cq11 + cq12 + k_top_gD11;
+  const T k_top_gD22 = -T(2)*k_top_gIJ02*s_wy + cq1;
+  F[20] = -cq12 + k_top_gD22 + k_top_gIJ02*s_wy;
+}
+
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held, by
+/// tree_acceleration_gradient at the given q''. ddq: 3; F: 3x7, row-major.
+template <class T>
+void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
+  T L[9];
+  T D[3];
+  tree_acceleration_gradient(t, x, u, p, ddq, L, D, F);
 }
 
 }  // namespace detail
@@ -433,10 +438,8 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   const T s_wx = x[4];
   const T s_wy = x[5];
   const T s_wz = x[6];
-  T ddq[3];
   T L[9];
   T D[3];
-  detail::factored_accelerations(t, x, u, p, ddq, L, D);
   J[0] = T(0);
   J[1] = -(T(1)/T(2))*s_wx;
   J[2] = -(T(1)/T(2))*s_wy;
@@ -466,7 +469,7 @@ void jacobian_state(T t, const T* x, const detail::input_t<T>* u, const T* p, T*
   J[26] = (T(1)/T(2))*q_qx;
   J[27] = (T(1)/T(2))*q_qw;
   T* rows = J + 28;
-  detail::inverse_dynamics_gradient(t, x, ddq, u, p, rows);
+  detail::tree_acceleration_gradient(t, x, u, p, static_cast<const T*>(nullptr), L, D, rows);
   detail::ldlt_solve_rows<7, true>(L, D, rows);
 }
 

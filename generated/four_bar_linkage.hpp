@@ -384,9 +384,8 @@ void rhs(T t, const T* x, const detail::input_t<T>* u, const T* p, T* xdot) {
 
 namespace detail {
 
-/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'
-/// part in closed form, in world coordinates; a tangent sweep through the rest).
-/// ddq: 3; F: 3x6, row-major.
+/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a
+/// tangent sweep through the frames' recursion). ddq: 3; F: 3x6, row-major.
 template <class T>
 void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* u, const T* p, T* F) {
   (void)t; (void)x; (void)u; (void)p; (void)ddq;
@@ -395,11 +394,9 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T q_rocker = x[2];
   const T dq_crank = x[3];
   const T dq_coupler = x[4];
-  const T dq_rocker = x[5];
   const T p_a = p[0];
   const T p_b = p[1];
   const T p_c = p[2];
-  const T p_d = p[3];
   const T p_g = p[4];
   const T trig_angle[3] = {q_crank, q_coupler, q_rocker};
   T trig_sin[3], trig_cos[3];
@@ -409,75 +406,70 @@ void inverse_dynamics_gradient(T t, const T* x, const T* ddq, const input_t<T>* 
   const T sin_q_coupler = trig_sin[1];
   const T cos_q_coupler = trig_cos[1];
   const T sin_q_rocker = trig_sin[2];
-  const T k_crank_link_gB0c_y = (T(1)/T(2))*p_a*sin_q_crank;
-  const T k_coupler_link_gR00 = cos_q_coupler*cos_q_crank - sin_q_coupler*sin_q_crank;
-  const T k_coupler_link_gR01 = -cos_q_coupler*sin_q_crank - cos_q_crank*sin_q_coupler;
-  const T k_coupler_link_go_x = cos_q_crank*p_a;
-  const T k_coupler_link_go_y = p_a*sin_q_crank;
-  const T k_coupler_link_gvw_z = dq_coupler + dq_crank;
-  const T k_coupler_link_galw_z = ddq[0] + ddq[1];
-  const T k_rocker_link_gvv_y = -dq_rocker*p_d;
-  const T k_rocker_link_gB0c_y = (T(1)/T(2))*p_c*sin_q_rocker;
-  const T k_crank_link_gIh_y = (T(3)/T(10))*k_crank_link_gB0c_y;
-  const T k_coupler_link_gvv_x = dq_coupler*k_coupler_link_go_y;
-  const T k_coupler_link_gvv_y = -dq_coupler*k_coupler_link_go_x;
-  const T k_coupler_link_galv_x = ddq[1]*k_coupler_link_go_y;
-  const T k_coupler_link_galv_y = -ddq[1]*k_coupler_link_go_x;
-  const T k_coupler_link_gdSv_x = dq_crank*k_coupler_link_go_x;
-  const T k_coupler_link_gdSv_y = dq_crank*k_coupler_link_go_y;
-  const T k_coupler_link_gB0c_x = (T(1)/T(100))*k_coupler_link_gR01 + (T(1)/T(2))*k_coupler_link_gR00*p_b + k_coupler_link_go_x;
-  const T k_coupler_link_gB0c_y = (T(1)/T(100))*k_coupler_link_gR00 - (T(1)/T(2))*k_coupler_link_gR01*p_b + k_coupler_link_go_y;
-  const T k_rocker_link_gIh_y = (T(1)/T(2))*k_rocker_link_gB0c_y;
-  const T k_coupler_link_ga0v_x = dq_coupler*k_coupler_link_gdSv_x;
-  const T k_coupler_link_ga0v_y = dq_coupler*k_coupler_link_gdSv_y + p_g;
-  const T k_coupler_link_gIh_x = (T(3)/T(5))*k_coupler_link_gB0c_x;
-  const T k_coupler_link_gIh_y = (T(3)/T(5))*k_coupler_link_gB0c_y;
-  const T k_rocker_link_gIvv_x = -dq_rocker*k_rocker_link_gIh_y;
-  const T k_rocker_link_gD22 = T(2)*k_rocker_link_gIh_y*k_rocker_link_gvv_y;
-  const T k_coupler_link_gddSv_x = ddq[0]*k_coupler_link_go_x - dq_crank*k_coupler_link_gdSv_y + p_g;
-  const T k_coupler_link_gddSv_y = ddq[0]*k_coupler_link_go_y + dq_crank*k_coupler_link_gdSv_x;
-  const T k_coupler_link_gAv_x = T(2)*k_coupler_link_gdSv_x;
-  const T k_coupler_link_gAv_y = T(2)*k_coupler_link_gdSv_y;
-  const T k_coupler_link_gIvv_x = (T(3)/T(5))*k_coupler_link_gvv_x - k_coupler_link_gIh_y*k_coupler_link_gvw_z;
-  const T k_coupler_link_gIvv_y = (T(3)/T(5))*k_coupler_link_gvv_y + k_coupler_link_gIh_x*k_coupler_link_gvw_z;
-  const T k_coupler_link_gYv_x = (T(3)/T(5))*k_coupler_link_galv_x - k_coupler_link_gIh_y*k_coupler_link_galw_z;
-  const T k_coupler_link_gYv_y = (T(3)/T(5))*k_coupler_link_galv_y + k_coupler_link_gIh_x*k_coupler_link_galw_z;
-  const T k_coupler_link_gD22 = T(2)*k_coupler_link_gIh_x*k_coupler_link_gvv_x + T(2)*k_coupler_link_gIh_y*k_coupler_link_gvv_y;
-  const T k_crank_link_gCh_y = k_coupler_link_gIh_y + k_crank_link_gIh_y;
-  const T k_coupler_link_gISv_x = (T(3)/T(5))*k_coupler_link_go_y - k_coupler_link_gIh_y;
-  const T k_coupler_link_gISv_y = -(T(3)/T(5))*k_coupler_link_go_x + k_coupler_link_gIh_x;
-  const T k_rocker_link_gDSw_z = k_rocker_link_gD22 - k_rocker_link_gIvv_x*p_d;
-  const T k_rocker_link_gSPw_z = k_rocker_link_gIvv_x*p_d;
-  const T c4 = k_coupler_link_gIvv_y*k_coupler_link_go_y;
-  const T c5 = k_coupler_link_gIvv_x*k_coupler_link_go_x;
-  const T k_coupler_link_gF0v_x = (T(3)/T(5))*k_coupler_link_ga0v_x - k_coupler_link_gIvv_y*k_coupler_link_gvw_z;
-  const T k_coupler_link_gF0v_y = (T(3)/T(5))*k_coupler_link_ga0v_y + k_coupler_link_gIvv_x*k_coupler_link_gvw_z;
-  const T k_coupler_link_gDSw_z = -c4 - c5 + k_coupler_link_gD22;
-  const T k_coupler_link_gSPw_z = c4 + c5;
-  const T k_rocker_link_gBSw_z = k_rocker_link_gDSw_z - k_rocker_link_gSPw_z;
-  const T k_coupler_link_gFv_x = k_coupler_link_gF0v_x + k_coupler_link_gYv_x;
-  const T k_coupler_link_gFv_y = k_coupler_link_gF0v_y + k_coupler_link_gYv_y;
-  const T k_coupler_link_gBSw_z = k_coupler_link_gDSw_z - k_coupler_link_gSPw_z;
-  const T k_coupler_link_gHw_z = -k_coupler_link_gAv_x*k_coupler_link_gIh_y + k_coupler_link_gAv_y*k_coupler_link_gIh_x + k_coupler_link_gDSw_z + k_coupler_link_gSPw_z;
-  const T k_coupler_link_gGw_z = k_coupler_link_gFv_x*k_coupler_link_go_x + k_coupler_link_gFv_y*k_coupler_link_go_y + k_coupler_link_gIh_x*k_coupler_link_gddSv_y - k_coupler_link_gIh_y*k_coupler_link_gddSv_x;
+  const T k_coupler_link_tw_z = dq_coupler + dq_crank;
+  const T k_crank_link_ta_x = p_g*sin_q_crank;
+  const T k_crank_link_ta_y = cos_q_crank*p_g;
+  const T k_coupler_link_tal_z = ddq[0] + ddq[1];
+  const T k_coupler_link_tx_x = -dq_crank*dq_crank*p_a + k_crank_link_ta_x;
+  const T k_coupler_link_tx_y = ddq[0]*p_a + k_crank_link_ta_y;
+  const T k_coupler_link_ta_x = cos_q_coupler*k_coupler_link_tx_x + k_coupler_link_tx_y*sin_q_coupler;
+  const T k_coupler_link_ta_y = cos_q_coupler*k_coupler_link_tx_y - k_coupler_link_tx_x*sin_q_coupler;
+  const T k_coupler_link_tB0F_x = -(T(3)/T(10))*k_coupler_link_tw_z*k_coupler_link_tw_z*p_b + (T(3)/T(5))*k_coupler_link_ta_x - (T(3)/T(500))*k_coupler_link_tal_z;
+  const T k_coupler_link_tB0F_y = (T(3)/T(10))*k_coupler_link_tal_z*p_b + (T(3)/T(5))*k_coupler_link_ta_y - (T(3)/T(500))*k_coupler_link_tw_z*k_coupler_link_tw_z;
+  const T k_crank_link_ta_x_d0 = cos_q_crank*p_g;
+  const T k_crank_link_ta_y_d0 = -p_g*sin_q_crank;
+  const T k_rocker_link_ta_y_d2 = -p_g*sin_q_rocker;
+  const T k_coupler_link_tx_x_d3 = -T(2)*dq_crank*p_a;
+  const T k_rocker_link_tB0F_y_d2 = (T(1)/T(2))*k_rocker_link_ta_y_d2;
+  const T k_crank_link_tB0F_y_d0 = (T(3)/T(10))*k_crank_link_ta_y_d0;
+  const T c0_d1 = cos_q_coupler;
+  const T c1_d1 = -sin_q_coupler;
+  const T k_coupler_link_ta_x_d0 = cos_q_coupler*k_crank_link_ta_x_d0 + k_crank_link_ta_y_d0*sin_q_coupler;
+  const T k_coupler_link_ta_x_d1 = c0_d1*k_coupler_link_tx_y + c1_d1*k_coupler_link_tx_x;
+  const T k_coupler_link_ta_x_d3 = cos_q_coupler*k_coupler_link_tx_x_d3;
+  const T k_coupler_link_ta_y_d0 = cos_q_coupler*k_crank_link_ta_y_d0 - k_crank_link_ta_x_d0*sin_q_coupler;
+  const T k_coupler_link_ta_y_d1 = -c0_d1*k_coupler_link_tx_x + c1_d1*k_coupler_link_tx_y;
+  const T k_coupler_link_ta_y_d3 = -k_coupler_link_tx_x_d3*sin_q_coupler;
+  const T k_rocker_link_tN_z_d2 = (T(1)/T(2))*k_rocker_link_tB0F_y_d2*p_c;
+  const T c2 = -(T(3)/T(5))*k_coupler_link_tw_z*p_b;
+  const T k_coupler_link_tB0F_x_d0 = (T(3)/T(5))*k_coupler_link_ta_x_d0;
+  const T k_coupler_link_tB0F_x_d1 = (T(3)/T(5))*k_coupler_link_ta_x_d1;
+  const T k_coupler_link_tB0F_x_d3 = (T(3)/T(5))*k_coupler_link_ta_x_d3 + c2;
+  const T k_coupler_link_tB0F_x_d4 = c2;
+  const T k_coupler_link_tB0F_y_d0 = (T(3)/T(5))*k_coupler_link_ta_y_d0;
+  const T k_coupler_link_tB0F_y_d1 = (T(3)/T(5))*k_coupler_link_ta_y_d1;
+  const T k_coupler_link_tB0F_y_d3 = -(T(3)/T(250))*k_coupler_link_tw_z + (T(3)/T(5))*k_coupler_link_ta_y_d3;
+  const T k_coupler_link_tB0F_y_d4 = -(T(3)/T(250))*k_coupler_link_tw_z;
+  const T k_coupler_link_tN_z_d0 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d0 + (T(1)/T(2))*k_coupler_link_tB0F_y_d0*p_b;
+  const T k_coupler_link_tN_z_d1 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d1 + (T(1)/T(2))*k_coupler_link_tB0F_y_d1*p_b;
+  const T k_coupler_link_tN_z_d3 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d3 + (T(1)/T(2))*k_coupler_link_tB0F_y_d3*p_b;
+  const T k_coupler_link_tN_z_d4 = -(T(1)/T(100))*k_coupler_link_tB0F_x_d4 + (T(1)/T(2))*k_coupler_link_tB0F_y_d4*p_b;
+  const T k_coupler_link_tFp_y_d0 = cos_q_coupler*k_coupler_link_tB0F_y_d0 + k_coupler_link_tB0F_x_d0*sin_q_coupler;
+  const T k_coupler_link_tFp_y_d1 = c0_d1*k_coupler_link_tB0F_x + c1_d1*k_coupler_link_tB0F_y + cos_q_coupler*k_coupler_link_tB0F_y_d1 + k_coupler_link_tB0F_x_d1*sin_q_coupler;
+  const T k_coupler_link_tFp_y_d3 = cos_q_coupler*k_coupler_link_tB0F_y_d3 + k_coupler_link_tB0F_x_d3*sin_q_coupler;
+  const T k_coupler_link_tFp_y_d4 = cos_q_coupler*k_coupler_link_tB0F_y_d4 + k_coupler_link_tB0F_x_d4*sin_q_coupler;
+  const T k_crank_link_tN_z_d0 = (T(1)/T(2))*k_crank_link_tB0F_y_d0*p_a + k_coupler_link_tFp_y_d0*p_a + k_coupler_link_tN_z_d0;
+  const T k_crank_link_tN_z_d1 = k_coupler_link_tFp_y_d1*p_a + k_coupler_link_tN_z_d1;
+  const T k_crank_link_tN_z_d3 = k_coupler_link_tFp_y_d3*p_a + k_coupler_link_tN_z_d3;
+  const T k_crank_link_tN_z_d4 = k_coupler_link_tFp_y_d4*p_a + k_coupler_link_tN_z_d4;
+  F[0] = k_crank_link_tN_z_d0;
+  F[1] = k_crank_link_tN_z_d1;
   F[2] = T(0);
+  F[3] = k_crank_link_tN_z_d3;
+  F[4] = k_crank_link_tN_z_d4;
   F[5] = T(0);
+  F[6] = k_coupler_link_tN_z_d0;
+  F[7] = k_coupler_link_tN_z_d1;
   F[8] = T(0);
+  F[9] = k_coupler_link_tN_z_d3;
+  F[10] = k_coupler_link_tN_z_d4;
   F[11] = T(0);
   F[12] = T(0);
   F[13] = T(0);
+  F[14] = k_rocker_link_tN_z_d2;
   F[15] = T(0);
   F[16] = T(0);
-  F[14] = -k_rocker_link_gIh_y*p_g;
-  F[3] = k_coupler_link_gD22;
-  F[0] = -k_crank_link_gCh_y*p_g;
-  F[6] = k_coupler_link_gISv_x*p_g;
-  F[7] = k_coupler_link_gISv_x*k_coupler_link_gddSv_x + k_coupler_link_gISv_y*k_coupler_link_gddSv_y;
-  F[17] = k_rocker_link_gBSw_z;
-  F[9] = k_coupler_link_gBSw_z;
-  F[10] = k_coupler_link_gAv_x*k_coupler_link_gISv_x + k_coupler_link_gAv_y*k_coupler_link_gISv_y + k_coupler_link_gBSw_z;
-  F[4] = k_coupler_link_gHw_z;
-  F[1] = k_coupler_link_gGw_z;
+  F[17] = T(0);
 }
 
 }  // namespace detail

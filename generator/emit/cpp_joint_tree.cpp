@@ -280,7 +280,8 @@ std::string closed_form_acceleration_gradient_functions(const Equations& e, long
   std::string fused = function(fmt::format("/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f at the given q''\n"
                                            "/// (linearization), or, for jacobian_state with given_ddq null, at q'' = M^-1 f, with M =\n"
                                            "/// L^T D L into L and D: M and f from the composite inertias and forces at q'' = 0 of the\n"
-                                           "/// bodies' part in closed form (in world coordinates), a tangent sweep through the rest.\n"
+                                           "/// bodies' part in closed form (in the world's axes or a link's, whichever takes fewer\n"
+                                           "/// operations), a tangent sweep through the rest.\n"
                                            "/// given_ddq: {0} or null; F: {0}x{1}, row-major.\n",
                                            n, W),
                                given_accelerations_signature, straight_tree_acceleration_gradient_body(e));
@@ -326,7 +327,7 @@ std::string newton_euler_gradient_function(const Equations& e) {
                                     "/// ddq: {0}; F: {0}x{1}, row-major.\n"
                                   : closed_form
                                   ? "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (the bodies'\n"
-                                    "/// part in closed form, in world coordinates; a tangent sweep through the rest).\n"
+                                    "/// part in closed form, in the world's axes or a link's; a tangent sweep through the rest).\n"
                                     "/// ddq: {0}; F: {0}x{1}, row-major.\n"
                                   : "/// d tau/d(q, q') of the Newton-Euler inverse dynamics tau = M q'' - f, q'' held (a\n"
                                     "/// tangent sweep through the frames' recursion). ddq: {0}; F: {0}x{1}, row-major.\n"),

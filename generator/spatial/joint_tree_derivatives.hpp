@@ -1,6 +1,8 @@
 /// @file ∂τ/∂q and ∂τ/∂q' of a joint tree's bodies in closed form (the analytic derivatives of the
 /// recursive Newton–Euler algorithm of Carpentier and Mansard, RSS 2018, derived here in world
-/// coordinates), for jacobian_state and linearization.
+/// coordinates), for jacobian_state and linearization. "World" is any frame at rest at this
+/// instant: the straight-line form writes them in the axes of the link (about its root's origin)
+/// where they take the fewest operations, or the world's (written_out_gradient).
 ///
 /// In world Plücker coordinates a joint j's motion subspace S_j turns with every joint above it, and
 /// a change of q_j moves its whole subtree Φ_j rigidly, by the twist S_j. Whatever turns with Φ_j
