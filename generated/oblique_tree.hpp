@@ -297,8 +297,8 @@ __attribute__((target("avx"), flatten)) inline void ldlt_solve_rows_avx(const do
 }
 template <std::size_t m, bool negated = false>
 inline void ldlt_solve_rows(const double* L, const double* D, double* B) {
-  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
-  if (m >= 8 && avx)
+  static const bool fast = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
+  if (m >= 8 && fast)
     ldlt_solve_rows_avx<m, negated>(L, D, B);
   else
     ldlt_solve_rows<m, negated, double>(L, D, B);
@@ -1418,15 +1418,17 @@ void tree_acceleration_gradient(T t, const T* x, const input_t<T>* u, const T* p
 }
 
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX__) && !defined(EOMGEN_NO_AVX_DISPATCH)
-/// tree_acceleration_gradient for double also as AVX code (a fifth smaller: more of it stays in the instruction cache;
-/// the same results to the last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.
-__attribute__((target("avx"), flatten)) inline void tree_acceleration_gradient_avx(double t, const double* x, const double* u, const double* p, const double* given_ddq, double* L, double* D, double* F) {
+/// tree_acceleration_gradient for double also as AVX2 code with fused multiply-adds (a fifth smaller, and a tenth of its
+/// time less), taken where the processor has AVX2 and FMA; results within rounding of the
+/// template's (the same bits with -ffp-contract=off). EOMGEN_NO_AVX_DISPATCH: not.
+__attribute__((target("avx2,fma"), flatten)) inline void tree_acceleration_gradient_fma(double t, const double* x, const double* u, const double* p, const double* given_ddq, double* L, double* D, double* F) {
   tree_acceleration_gradient<double>(t, x, u, p, given_ddq, L, D, F);
 }
 inline void tree_acceleration_gradient(double t, const double* x, const double* u, const double* p, const double* given_ddq, double* L, double* D, double* F) {
-  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
-  if (avx)
-    tree_acceleration_gradient_avx(t, x, u, p, given_ddq, L, D, F);
+  static const bool fast = (__builtin_cpu_init(), __builtin_cpu_supports("avx2") != 0 &&
+                            __builtin_cpu_supports("fma") != 0);
+  if (fast)
+    tree_acceleration_gradient_fma(t, x, u, p, given_ddq, L, D, F);
   else
     tree_acceleration_gradient<double>(t, x, u, p, given_ddq, L, D, F);
 }

@@ -278,8 +278,8 @@ __attribute__((target("avx"), flatten)) inline void ldlt_solve_rows_avx(const do
 }
 template <std::size_t m, bool negated = false>
 inline void ldlt_solve_rows(const double* L, const double* D, double* B) {
-  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
-  if (m >= 8 && avx)
+  static const bool fast = (__builtin_cpu_init(), __builtin_cpu_supports("avx") != 0);
+  if (m >= 8 && fast)
     ldlt_solve_rows_avx<m, negated>(L, D, B);
   else
     ldlt_solve_rows<m, negated, double>(L, D, B);

@@ -13,8 +13,18 @@ namespace {
 const char* const guard =
     "#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX__) && !defined(EOMGEN_NO_AVX_DISPATCH)\n";
 
-// asked once per program and function: whether this processor runs AVX code
-const char* const processor_has_avx = "  static const bool avx = (__builtin_cpu_init(), __builtin_cpu_supports(\"avx\") != 0);\n";
+// A copy's instruction set: the target attribute, the suffix of its name, and the question asked
+// once per program and function, whether this processor runs it (its answer named `fast`)
+struct InstructionSet {
+  const char* target;
+  const char* suffix;
+  const char* processor_runs_it;
+};
+
+const InstructionSet avx{"avx", "_avx", "  static const bool fast = (__builtin_cpu_init(), __builtin_cpu_supports(\"avx\") != 0);\n"};
+const InstructionSet avx2_fma{"avx2,fma", "_fma",
+                              "  static const bool fast = (__builtin_cpu_init(), __builtin_cpu_supports(\"avx2\") != 0 &&\n"
+                              "                            __builtin_cpu_supports(\"fma\") != 0);\n"};
 
 struct Parameter {
   std::string declaration, name;  // for double; its name
@@ -50,22 +60,23 @@ struct Dispatch {
   std::string instance;            // the template's double instance the copy inlines
   std::string template_arguments;  // in the overload's call of the copy
   std::string when;                // a condition the overload asks first, "" or "... && "
+  InstructionSet set;
 };
 
 std::string copy_and_overload(const Dispatch& d) {
-  return fmt::format("{0}{1}{2}__attribute__((target(\"avx\"), flatten)) inline void {3}_avx({4}) {{\n"
+  return fmt::format("{0}{1}{2}__attribute__((target(\"{10}\"), flatten)) inline void {3}{11}({4}) {{\n"
                      "  {6}({5});\n"
                      "}}\n"
                      "{2}inline void {3}({4}) {{\n"
                      "{7}"
-                     "  if ({8}avx)\n"
-                     "    {3}_avx{9}({5});\n"
+                     "  if ({8}fast)\n"
+                     "    {3}{11}{9}({5});\n"
                      "  else\n"
                      "    {6}({5});\n"
                      "}}\n"
                      "#endif\n\n",
-                     guard, d.comment, d.head, d.name, d.parameters, d.arguments, d.instance, processor_has_avx, d.when,
-                     d.template_arguments);
+                     guard, d.comment, d.head, d.name, d.parameters, d.arguments, d.instance, d.set.processor_runs_it, d.when,
+                     d.template_arguments, d.set.target, d.set.suffix);
 }
 
 }  // namespace
@@ -81,10 +92,11 @@ std::string with_avx_dispatch(const std::string& function) {
     declarations += (declarations.empty() ? "" : ", ") + p.declaration;
     arguments += (arguments.empty() ? "" : ", ") + p.name;
   }
-  return function + copy_and_overload({fmt::format("/// {} for double also as AVX code (a fifth smaller: more of it stays in the instruction cache;\n"
-                                                   "/// the same results to the last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.\n",
+  return function + copy_and_overload({fmt::format("/// {} for double also as AVX2 code with fused multiply-adds (a fifth smaller, and a tenth of its\n"
+                                                   "/// time less), taken where the processor has AVX2 and FMA; results within rounding of the\n"
+                                                   "/// template's (the same bits with -ffp-contract=off). EOMGEN_NO_AVX_DISPATCH: not.\n",
                                                    name),
-                                       "", name, declarations, arguments, name + "<double>", "", ""});
+                                       "", name, declarations, arguments, name + "<double>", "", "", avx2_fma});
 }
 
 std::string solve_rows_avx_dispatch() {
@@ -92,7 +104,7 @@ std::string solve_rows_avx_dispatch() {
                             "/// last bit), taken where the processor has AVX. EOMGEN_NO_AVX_DISPATCH: not.\n",
                             "template <std::size_t m, bool negated = false>\n", "ldlt_solve_rows",
                             "const double* L, const double* D, double* B", "L, D, B", "ldlt_solve_rows<m, negated, double>",
-                            "<m, negated>", "m >= 8 && "});
+                            "<m, negated>", "m >= 8 && ", avx});
 }
 
 }  // namespace eomgen
