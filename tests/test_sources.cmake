@@ -19,6 +19,7 @@ set(EOMGEN_TEST_FILES
   generator/spatial/joint_frames_test.cpp           fast     sanitized
   generator/spatial/joint_tree_dynamics_test.cpp    fast     sanitized
   generator/spatial/joint_tree_derivatives_test.cpp slow
+  generator/spatial/gradient_frames_test.cpp       fast
   generator/spatial/joint_tree_forward_dynamics_test.cpp slow
   generator/spatial/tree_constraints_test.cpp       slow     sanitized
   generator/spatial/spherical_joints_test.cpp       fast     sanitized

@@ -173,4 +173,11 @@ JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const 
                                       const std::vector<GiNaC::ex>& ddq, std::size_t velocities, std::size_t coordinates,
                                       std::vector<Intermediate>& out);
 
+/// The closed form above in the axes of link `reference` about its root's origin (none: the
+/// world's), which written_out_gradient chooses among by their operations: the same entries in
+/// every frame, since each is a product of a motion and a force.
+InverseDynamicsGradient gradient_in(const std::vector<TreeLink>& links, const Vector3& gravity, const std::vector<GiNaC::ex>& ddq,
+                                    std::size_t velocities, std::size_t coordinates, std::vector<Intermediate>& out,
+                                    std::optional<std::size_t> reference);
+
 }  // namespace eomgen
