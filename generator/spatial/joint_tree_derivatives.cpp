@@ -46,7 +46,8 @@ class Gradient {
   }
 
   // Every entry is a product of a motion and a force (S·F) or an inertia's quadratic form, the same
-  // in any frame that is at rest at this instant (Hiller §3.2): the frame that coincides with link
+  // in any frame that is at rest at this instant (a change of basis, which these pairings do not
+  // see; tests/generator/spatial/gradient_frames_test.cpp): the frame that coincides with link
   // `ref` now, moved to the origin of the root above it, serves as well as the world's. There the
   // links near `ref` turn by one or two joints only, whose rotations and twists fold, and the root's
   // origin is 0. The links from `ref` up to the root are placed from it (R_λ = R E^T, o_λ = o −
