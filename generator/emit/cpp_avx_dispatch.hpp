@@ -14,7 +14,7 @@
 /// multiply-adds the compiler forms by its default contraction: one rounding where there were two,
 /// and the arm's jacobian_state a tenth faster again (2.9 rhs against 3.2,
 /// tests/benchmarks/arm_jacobian_state.md). Its results therefore differ from the template's in
-/// the last bits (within the rounding of either; tested against long double), so that one program
+/// the last bits (within a few units of rounding of the largest result; tested), so that one program
 /// gives one result on every processor with AVX2 and FMA and another on older ones;
 /// -ffp-contract=off gives the template's bits again (tested), EOMGEN_NO_AVX_DISPATCH the template
 /// everywhere. The solve's copy is for AVX alone, where the same operations in the same order give

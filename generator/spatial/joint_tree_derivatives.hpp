@@ -2,7 +2,7 @@
 /// recursive Newton–Euler algorithm of Carpentier and Mansard, RSS 2018, derived here in world
 /// coordinates), for jacobian_state and linearization. "World" is any frame at rest at this
 /// instant: the straight-line form writes them in the axes of the link (about its root's origin)
-/// where they take the fewest operations, or the world's (written_out_gradient).
+/// where they take the fewest operations, or the world's (spatial/gradient_frame.hpp).
 ///
 /// In world Plücker coordinates a joint j's motion subspace S_j turns with every joint above it, and
 /// a change of q_j moves its whole subtree Φ_j rigidly, by the twist S_j. Whatever turns with Φ_j
@@ -174,8 +174,8 @@ JointTreeGradient joint_tree_gradient(const std::vector<TreeLink>& links, const 
                                       std::vector<Intermediate>& out);
 
 /// The closed form above in the axes of link `reference` about its root's origin (none: the
-/// world's), which written_out_gradient chooses among by their operations: the same entries in
-/// every frame, since each is a product of a motion and a force.
+/// world's), which written_out_gradient (spatial/gradient_frame.hpp) chooses among by their
+/// operations: the same entries in every frame, since each is a product of a motion and a force.
 InverseDynamicsGradient gradient_in(const std::vector<TreeLink>& links, const Vector3& gravity, const std::vector<GiNaC::ex>& ddq,
                                     std::size_t velocities, std::size_t coordinates, std::vector<Intermediate>& out,
                                     std::optional<std::size_t> reference);

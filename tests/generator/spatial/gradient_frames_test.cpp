@@ -114,7 +114,7 @@ TEST(GradientFrames, EveryLinksFrameGivesTheWorldsEntries) {
       std::vector<double> got = entries_at(g, in_link, point);
       ASSERT_EQ(got.size(), expected.size());
       for (std::size_t e = 0; e < got.size(); ++e)
-        EXPECT_NEAR(got[e], expected[e], 1e-12 * largest) << "entry " << e << " in link " << reference << "'s frame, trial " << trial;
+        EXPECT_NEAR(got[e], expected[e], 1e-14 * largest) << "entry " << e << " in link " << reference << "'s frame, trial " << trial;
     }
   }
 }
